@@ -1,0 +1,82 @@
+"""Critical speed (shaft whirl) of the screw from beam theory, and its remedies.
+
+omega_c = (beta / L)^2 sqrt(E I / (rho A)) with I / A = d_r^2 / 16 for a round shaft of
+root diameter d_r (Euler-Bernoulli beam, Blevins [5] table 8-1). Reduces to Thomson's
+n_c = 4.76e6 d_r / L^2 [rpm, in] for steel, simple-simple [3].
+"""
+
+import math
+
+#: First bending eigenvalue beta = lambda_1 for each end fixity [5].
+END_FIXITY_BETA: dict[str, float] = {
+    "fixed-free": 1.87510,
+    "simple-simple": math.pi,
+    "fixed-simple": 3.92660,
+    "fixed-fixed": 4.73004,
+}
+
+
+def critical_speed_rpm(root_diameter_m: float, length_m: float, youngs_modulus_pa: float,
+                       density_kg_m3: float, end_fixity: str) -> float:
+    """First whirling speed n_c [rpm] of a round shaft.
+
+    n_c = 60 / (2 pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4
+
+    root_diameter_m: d_r [m]; length_m: unsupported length L [m]; youngs_modulus_pa:
+    E [Pa]; density_kg_m3: rho [kg/m^3]; end_fixity: a key of END_FIXITY_BETA.
+    Source: Blevins [5] table 8-1; Thomson [3] gives 476 rpm for a 1 in steel root at
+    100 in, simple-simple.
+
+    >>> round(critical_speed_rpm(0.0254, 2.54, 206e9, 7850.0, "simple-simple"), 1)
+    475.2
+    """
+    beta = END_FIXITY_BETA[end_fixity]
+    omega = (beta / length_m) ** 2 * math.sqrt(youngs_modulus_pa / density_kg_m3) * (
+        root_diameter_m / 4.0
+    )
+    return omega * 60.0 / (2.0 * math.pi)
+
+
+def allowed_speed_rpm(critical_rpm: float, safety_factor: float) -> float:
+    """Allowed screw speed n_allowed = safety factor x n_c [rpm] (default factor 0.8).
+
+    Source: Thomson [3] (operate at most 80 % of critical speed).
+
+    >>> allowed_speed_rpm(1000.0, 0.8)
+    800.0
+    """
+    return safety_factor * critical_rpm
+
+
+def max_length_for_speed(length_m: float, allowed_rpm: float, operating_rpm: float) -> float:
+    """Longest unsupported length at which the operating speed is allowed [m].
+
+    n_c is proportional to 1 / L^2, so L_max = L sqrt(n_allowed / n).
+
+    >>> max_length_for_speed(1.0, 400.0, 100.0)
+    2.0
+    """
+    return length_m * math.sqrt(allowed_rpm / operating_rpm)
+
+
+def min_root_diameter_for_speed(root_diameter_m: float, allowed_rpm: float,
+                                operating_rpm: float) -> float:
+    """Smallest root diameter at which the operating speed is allowed [m].
+
+    n_c is proportional to d_r, so d_r,min = d_r n / n_allowed.
+
+    >>> min_root_diameter_for_speed(0.01, 500.0, 1000.0)
+    0.02
+    """
+    return root_diameter_m * operating_rpm / allowed_rpm
+
+
+def min_lead_for_speed(linear_speed_m_s: float, allowed_rpm: float) -> float:
+    """Shortest lead that keeps the screw at or below the allowed speed [m].
+
+    lead_min = 60 v / n_allowed (from n = 60 v / lead, seed [1]).
+
+    >>> min_lead_for_speed(0.1, 600.0)
+    0.01
+    """
+    return 60.0 * linear_speed_m_s / allowed_rpm

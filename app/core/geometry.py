@@ -1,0 +1,72 @@
+"""Screw geometry: lead, pitch diameter, thread depth, lead angle, speed [1]."""
+
+import math
+
+
+def lead_from_pitch(pitch_m: float, starts: int) -> float:
+    """Lead [m] = pitch [m] x number of starts [-].
+
+    Source: seed [1], "Lead = Pitch x Number of Starts".
+
+    >>> lead_from_pitch(0.002, 4)
+    0.008
+    """
+    return pitch_m * starts
+
+
+def pitch_diameter(outer_diameter_m: float, root_diameter_m: float) -> float:
+    """Pitch (mean) diameter d_p = (d_o + d_r) / 2 [m].
+
+    Source: seed [1] PV calculation, ``P_o = (O.D. + R.D.) / 2``.
+
+    >>> round(pitch_diameter(0.00635, 0.004953), 6)
+    0.005652
+    """
+    return 0.5 * (outer_diameter_m + root_diameter_m)
+
+
+def thread_depth(outer_diameter_m: float, root_diameter_m: float) -> float:
+    """Thread depth h = (d_o - d_r) / 2 [m], the seed's "thread thickness" term.
+
+    Source: seed [1] PV calculation, ``AT = H.T. x (O.D. - R.D.) / 2``.
+
+    >>> round(thread_depth(0.0127, 0.009906), 7)
+    0.001397
+    """
+    return 0.5 * (outer_diameter_m - root_diameter_m)
+
+
+def lead_angle(lead_m: float, pitch_diameter_m: float) -> float:
+    """Lead (helix) angle lambda = atan(lead / (pi d_p)) [rad].
+
+    Source: Shigley [2], eq. 8-1 geometry.
+
+    >>> round(math.degrees(lead_angle(0.001, 0.005652)), 3)
+    3.223
+    """
+    return math.atan(lead_m / (math.pi * pitch_diameter_m))
+
+
+def screw_speed_rpm(linear_speed_m_s: float, lead_m: float) -> float:
+    """Screw speed n [rpm] = 60 v / lead, v [m/s], lead [m].
+
+    Source: seed [1], ``RS = Linear Speed / Lead``, ``RPM = RS x 60``.
+    Nook's manual-lathe example: peak 7.2 in/s on a 0.2 in lead is 2160 rpm.
+
+    >>> round(screw_speed_rpm(0.05, 0.002), 6)
+    1500.0
+    """
+    return 60.0 * linear_speed_m_s / lead_m
+
+
+def helix_travel(lead_m: float, pitch_diameter_m: float) -> float:
+    """Thread surface travel per revolution H.T. = sqrt(lead^2 + (pi d_p)^2) [m].
+
+    Source: seed [1] PV calculation, "H.T. = Surface Travel per Rev." (the printed
+    formula is garbled by OCR; this is the helix length of one turn at the pitch
+    diameter, which is what the seed's words describe).
+
+    >>> round(helix_travel(0.0, 0.01), 6)
+    0.031416
+    """
+    return math.hypot(lead_m, math.pi * pitch_diameter_m)

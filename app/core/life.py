@@ -1,0 +1,26 @@
+"""Nut life of the anti-backlash assemblies, converted to service time [1]."""
+
+DAYS_PER_YEAR = 365.0
+
+
+def travel_per_year(stroke_m: float, cycles_per_day: float) -> float:
+    """Nut travel per year [m]: one cycle is out and back, 2 x stroke.
+
+    >>> travel_per_year(0.1, 100.0)
+    7300.0
+    """
+    return 2.0 * stroke_m * cycles_per_day * DAYS_PER_YEAR
+
+
+def life_years(life_travel_m: float, stroke_m: float, cycles_per_day: float) -> float:
+    """Service life [years] = life travel / (2 stroke x cycles per year).
+
+    life_travel_m: rated life distance [m] (seed table, million cm);
+    stroke_m [m]; cycles_per_day [1/day].
+    Source: seed [1] anti-backlash life table; the seed warns that life varies with
+    load, environment and duty cycle, and longer leads generally last longer.
+
+    >>> round(life_years(100e6 * 0.01, 0.1, 100.0), 1)
+    137.0
+    """
+    return life_travel_m / travel_per_year(stroke_m, cycles_per_day)

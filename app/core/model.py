@@ -1,0 +1,237 @@
+"""Plain data types of the core: the application, one screw, checks and results (SI)."""
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Literal
+
+EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
+Orientation = Literal["horizontal", "vertical"]
+CoatingChoice = Literal["auto", "tfe", "none"]
+RankBy = Literal["torque", "margin", "life", "size"]
+ProvenanceKind = Literal["seed", "handbook", "derived", "assumed", "user"]
+
+STANDARD_GRAVITY_M_S2 = 9.80665
+
+
+@dataclass(frozen=True, slots=True)
+class Provenance:
+    """Where a catalog value comes from: kind and the source or rule behind it."""
+
+    kind: ProvenanceKind
+    source: str
+
+
+@dataclass(frozen=True, slots=True)
+class Application:
+    """What the axis must do, in SI. Optional fields switch on optional checks."""
+
+    load_n: float
+    speed_m_s: float
+    length_m: float
+    lead_m: float | None = None
+    accel_m_s2: float = 1.0
+    moving_mass_kg: float = 0.0
+    end_fixity: EndFixity = "fixed-simple"
+    orientation: Orientation = "horizontal"
+    compression: bool = True
+    require_anti_backlash: bool = False
+    coating: CoatingChoice = "auto"
+    oil_present: bool = False
+    vacuum: bool = False
+    ambient_c: float = 20.0
+    stroke_m: float | None = None
+    cycles_per_day: float | None = None
+    critical_speed_safety_factor: float = 0.8
+    buckling_safety_factor: float = 0.5
+    torque_safety_factor: float = 1.0
+    max_torque_nm: float | None = None
+    required_life_years: float | None = None
+    positioning_tolerance_m: float | None = None
+    rank_by: RankBy = "torque"
+    limit: int = 10
+
+
+@dataclass(frozen=True, slots=True)
+class ScrewSpec:
+    """One screw-and-nut candidate (series x size x lead x coating), SI units.
+
+    Optional limits (None) are not checked: a custom screw may have no design load.
+    ``provenance`` maps each catalog field name to where its value comes from.
+    """
+
+    id: str
+    series_id: str
+    series_name: str
+    anti_backlash: bool
+    coated: bool
+    outer_diameter_m: float
+    root_diameter_m: float
+    lead_m: float
+    thread_half_angle_rad: float
+    friction_static: float
+    friction_dynamic: float
+    youngs_modulus_pa: float
+    density_kg_m3: float
+    screw_expansion_per_k: float
+    inertia_kg_m2_per_m: float
+    drag_torque_min_nm: float = 0.0
+    drag_torque_max_nm: float = 0.0
+    pv_limit_pa_m_s: float | None = None
+    design_load_n: float | None = None
+    max_length_m: float | None = None
+    backlash_min_m: float = 0.0
+    backlash_max_m: float = 0.0
+    life_min_m: float | None = None
+    life_max_m: float | None = None
+    lead_accuracy_m_per_m: float | None = None
+    repeatability_m: float | None = None
+    temperature_min_c: float | None = None
+    temperature_max_c: float | None = None
+    oil_compatible: bool = True
+    outgassing: tuple[tuple[float, float], ...] = ()
+    material_name: str = ""
+    nut_material: str = ""
+    provenance: Mapping[str, Provenance] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class Check:
+    """One limit check: value against limit, with the message and the fix.
+
+    ``utilization`` = value / limit (None for yes/no checks). ``sources`` names the
+    catalog fields the check uses, so a reader can trace their provenance.
+    ``input_limits`` gives, for a failed check, application inputs any one of which, set
+    to the given SI value, would make the check pass (e.g. {"load_n": 120.0}).
+    """
+
+    name: str
+    label: str
+    passed: bool
+    value: float | None
+    limit: float | None
+    unit: str
+    utilization: float | None
+    message: str
+    formula: str
+    sources: tuple[str, ...] = ()
+    fix: str | None = None
+    input_limits: Mapping[str, float] = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class Torque:
+    """Drive torque breakdown [N m] (seed: inertia + static drag + load)."""
+
+    inertia_screw_nm: float
+    inertia_mass_nm: float
+    inertia_nm: float
+    drag_nm: float
+    drag_min_nm: float
+    drag_max_nm: float
+    load_nm: float
+    total_nm: float
+    breakaway_nm: float
+    safety_factor: float
+    required_nm: float
+    angular_accel_rad_s2: float
+    inertia_kg_m2: float
+
+
+@dataclass(frozen=True, slots=True)
+class CriticalSpeed:
+    theoretical_rpm: float
+    allowed_rpm: float
+    safety_factor: float
+    end_fixity: str
+
+
+@dataclass(frozen=True, slots=True)
+class Buckling:
+    applies: bool
+    critical_load_n: float
+    allowed_load_n: float
+    safety_factor: float
+
+
+@dataclass(frozen=True, slots=True)
+class PV:
+    value_pa_m_s: float
+    limit_pa_m_s: float | None
+    pressure_pa: float
+    surface_speed_m_s: float
+    contact_area_m2: float
+    max_load_n: float | None
+    max_speed_m_s: float | None
+
+
+@dataclass(frozen=True, slots=True)
+class Life:
+    travel_min_m: float
+    travel_max_m: float
+    years_min: float | None
+    years_max: float | None
+
+
+@dataclass(frozen=True, slots=True)
+class Accuracy:
+    lead_error_m: float | None
+    repeatability_m: float | None
+    backlash_min_m: float
+    backlash_max_m: float
+    thermal_growth_m: float | None
+
+
+@dataclass(frozen=True, slots=True)
+class Evaluation:
+    """Everything computed for one screw against one application."""
+
+    screw: ScrewSpec
+    axial_load_n: float
+    rpm: float
+    lead_angle_rad: float
+    efficiency: float
+    efficiency_square_thread: float
+    backdrive_efficiency: float
+    self_locking: bool
+    seed_rule_no_backdrive: bool
+    max_self_locking_lead_m: float
+    holding_torque_seed_nm: float
+    holding_torque_physics_nm: float
+    torque: Torque
+    critical_speed: CriticalSpeed
+    buckling: Buckling
+    pv: PV
+    traverse_speed_limit_m_s: float
+    traverse_extrapolated: bool
+    life: Life | None
+    accuracy: Accuracy
+    checks: tuple[Check, ...]
+    passed: bool
+    governing_check: str | None
+    max_utilization: float
+
+    @property
+    def failed_checks(self) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if not c.passed)
+
+
+@dataclass(frozen=True, slots=True)
+class Summary:
+    """Why nothing (or little) passes, and the input change that would admit the best."""
+
+    most_excluding_check: str | None
+    most_excluding_count: int
+    best_rejected_id: str | None
+    input_change: Mapping[str, float]
+    message: str
+
+
+@dataclass(frozen=True, slots=True)
+class Selection:
+    application: Application
+    candidates: tuple[Evaluation, ...]
+    rejected: tuple[Evaluation, ...]
+    evaluated: int
+    passed: int
+    failed_by_check: Mapping[str, int]
+    summary: Summary

@@ -1,0 +1,72 @@
+"""PV (pressure x velocity) of the plastic nut by the seed's method [1].
+
+The seed assumes three threads in contact: area ATA = 3 x H.T. x h, surface speed
+V = n x H.T., pressure P = F / ATA. H.T. cancels, so PV = n F / (3 h) with n in rev/s.
+"""
+
+
+def contact_area(helix_travel_m: float, thread_depth_m: float, threads: int = 3) -> float:
+    """Total thread contact area ATA = threads x H.T. x h [m^2] (seed: 3 threads).
+
+    Source: seed [1], ``AT = H.T. x (O.D. - R.D.) / 2``, ``ATA = AT x 3``.
+
+    >>> round(contact_area(0.02, 0.001) * 1e6, 3)
+    60.0
+    """
+    return threads * helix_travel_m * thread_depth_m
+
+
+def contact_pressure(load_n: float, contact_area_m2: float) -> float:
+    """Nut contact pressure P = F / ATA [Pa].
+
+    Source: seed [1], ``PV = TS x Load / ATA``.
+
+    >>> contact_pressure(60.0, 60e-6)
+    1000000.0
+    """
+    return load_n / contact_area_m2
+
+
+def surface_speed(rpm: float, helix_travel_m: float) -> float:
+    """Thread sliding speed V = n H.T. [m/s], n in rpm.
+
+    Source: seed [1], ``TS = RPM x H.T. / 12`` (ft/min with H.T. in inches).
+
+    >>> round(surface_speed(600.0, 0.02), 6)
+    0.2
+    """
+    return rpm / 60.0 * helix_travel_m
+
+
+def pv_value(load_n: float, rpm: float, helix_travel_m: float, thread_depth_m: float) -> float:
+    """PV of the nut [Pa m/s] by the seed's three-thread method.
+
+    PV = (F / (3 H.T. h)) x (n H.T.) ; F [N], n [rpm], H.T. [m], h [m].
+    Source: seed [1], PV calculation. bnb-industries bushing example (5/8 in, 35 lb,
+    120 rpm, PV 1066 psi ft/min) checks the same P x V arithmetic.
+
+    >>> round(pv_value(100.0, 600.0, 0.02, 0.001), 1)
+    333333.3
+    """
+    area = contact_area(helix_travel_m, thread_depth_m)
+    return contact_pressure(load_n, area) * surface_speed(rpm, helix_travel_m)
+
+
+def max_load_for_pv(pv_limit_pa_m_s: float, rpm: float, thread_depth_m: float) -> float:
+    """Largest load the PV limit allows at this speed, F = PV_lim 3 h / n [N].
+
+    Inverse of ``pv_value`` (H.T. cancels); n in rev/s.
+
+    >>> round(max_load_for_pv(1.0e5, 600.0, 0.001), 3)
+    30.0
+    """
+    return pv_limit_pa_m_s * 3.0 * thread_depth_m / (rpm / 60.0)
+
+
+def max_rpm_for_pv(pv_limit_pa_m_s: float, load_n: float, thread_depth_m: float) -> float:
+    """Highest speed the PV limit allows at this load, n = 60 PV_lim 3 h / F [rpm].
+
+    >>> round(max_rpm_for_pv(1.0e5, 30.0, 0.001), 3)
+    600.0
+    """
+    return 60.0 * pv_limit_pa_m_s * 3.0 * thread_depth_m / load_n

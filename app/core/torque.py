@@ -1,0 +1,72 @@
+"""Drive torque: inertia + static drag + load, and break-away (seed, "Torque") [1]."""
+
+import math
+
+
+def angular_acceleration(linear_accel_m_s2: float, lead_m: float) -> float:
+    """Screw angular acceleration alpha = 2 pi a / lead [rad/s^2].
+
+    Source: seed [1] "Inertia Torque" (T = I alpha) with the screw kinematics v = n lead.
+
+    >>> round(angular_acceleration(1.0, 0.002 * math.pi), 3)
+    1000.0
+    """
+    return 2.0 * math.pi * linear_accel_m_s2 / lead_m
+
+
+def screw_inertia(inertia_per_length_kg_m2_per_m: float, length_m: float) -> float:
+    """Screw rotary inertia I = (inertia per length) x length [kg m^2].
+
+    Source: seed [1] screw-inertia table (per inch; the catalog loader converts to per m).
+
+    >>> screw_inertia(2.0e-6, 0.5)
+    1e-06
+    """
+    return inertia_per_length_kg_m2_per_m * length_m
+
+
+def reflected_mass_inertia(mass_kg: float, lead_m: float) -> float:
+    """Moving mass reflected to the screw, J = m (lead / 2 pi)^2 [kg m^2].
+
+    Source: standard kinematic equivalence, e.g. Shigley [2] ch. 8 / any motion-control
+    sizing guide (the mass moves lead / 2 pi metres per radian).
+
+    >>> round(reflected_mass_inertia(10.0, 2 * math.pi * 0.001), 9)
+    1e-05
+    """
+    return mass_kg * (lead_m / (2.0 * math.pi)) ** 2
+
+
+def inertia_torque(inertia_kg_m2: float, angular_accel_rad_s2: float) -> float:
+    """Inertia torque T = I alpha [N m].
+
+    Source: seed [1], "Inertia Torque: T = I alpha, where I = screw inertia".
+
+    >>> inertia_torque(1e-6, 1000.0)
+    0.001
+    """
+    return inertia_kg_m2 * angular_accel_rad_s2
+
+
+def load_torque(load_n: float, lead_m: float, efficiency: float) -> float:
+    """Torque to move the load, T = F lead / (2 pi eta) [N m].
+
+    load_n: axial force [N]; lead_m [m]; efficiency [-] in (0, 1].
+    Source: seed [1], "Torque To Move Load: TORQUE = Load x Lead / (2 pi x Efficiency)".
+
+    >>> round(load_torque(100.0, 0.002, 0.5), 6)
+    0.063662
+    """
+    return load_n * lead_m / (2.0 * math.pi * efficiency)
+
+
+def total_torque(inertia_nm: float, drag_nm: float, load_nm: float) -> float:
+    """Drive torque, the sum of the seed's three components [N m].
+
+    T_total = T_inertia + T_drag + T_load. Bearings, motor, misalignment are extra.
+    Source: seed [1], "Torque ... is the sum of three components".
+
+    >>> total_torque(0.001, 0.03, 0.05)
+    0.081
+    """
+    return inertia_nm + drag_nm + load_nm
