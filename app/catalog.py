@@ -99,8 +99,9 @@ class _Entry:
         raw = self.leaf(name)
         return Provenance(raw["provenance"], str(raw.get("source", "seed pages")))
 
-    def number(self, name: str, key: str = "value", *, positive: bool = True,
-               allow_zero: bool = False) -> float:
+    def number(
+        self, name: str, key: str = "value", *, positive: bool = True, allow_zero: bool = False
+    ) -> float:
         raw = self.leaf(name)
         value = raw.get(key)
         if isinstance(value, bool) or not isinstance(value, int | float):
@@ -109,7 +110,9 @@ class _Entry:
         if not math.isfinite(value):
             raise self.fail(name, f"'{key}' must be finite")
         if positive and (value < 0 or (value == 0 and not allow_zero)):
-            raise self.fail(name, f"'{key}' must be {'>= 0' if allow_zero else '> 0'}, got {value:g}")
+            raise self.fail(
+                name, f"'{key}' must be {'>= 0' if allow_zero else '> 0'}, got {value:g}"
+            )
         return value
 
     def range(self, name: str) -> tuple[float, float]:
@@ -154,7 +157,9 @@ def _materials(path: Path, data: Mapping[str, Any]) -> dict[str, Material]:
     for name, table in data.get("materials", {}).items():
         entry = _Entry(path.name, f"materials.{name}", table)
         out[name] = Material(
-            Sourced(entry.number("youngs_modulus_gpa") * 1e9, "Pa", entry.prov("youngs_modulus_gpa")),
+            Sourced(
+                entry.number("youngs_modulus_gpa") * 1e9, "Pa", entry.prov("youngs_modulus_gpa")
+            ),
             Sourced(entry.number("density_kg_m3"), "kg/m3", entry.prov("density_kg_m3")),
             Sourced(entry.number("expansion_per_c"), "1/K", entry.prov("expansion_per_c")),
         )
@@ -165,8 +170,9 @@ def _derived(source: str) -> Provenance:
     return Provenance("derived", source)
 
 
-def _build_series(file: str, family: Mapping[str, Any], entry: _Entry,
-                  materials: Mapping[str, Material]) -> Series:
+def _build_series(
+    file: str, family: Mapping[str, Any], entry: _Entry, materials: Mapping[str, Material]
+) -> Series:
     """Validate one merged entry, derive what it leaves out, expand leads x coatings."""
     sid = entry.entry
     kind = entry.text("type", SERIES_TYPES)
@@ -177,7 +183,9 @@ def _build_series(file: str, family: Mapping[str, Any], entry: _Entry,
     else:
         ratio = entry.number("root_diameter_ratio")
         rd_m = ratio * od_m
-        rd_prov = Provenance("assumed", f"{ratio:g} x OD: {entry.prov('root_diameter_ratio').source}")
+        rd_prov = Provenance(
+            "assumed", f"{ratio:g} x OD: {entry.prov('root_diameter_ratio').source}"
+        )
     if rd_m >= od_m:
         raise entry.fail("root_diameter_mm", "root diameter must be below the outer diameter")
     material_name = entry.text("screw_material")
@@ -191,8 +199,9 @@ def _build_series(file: str, family: Mapping[str, Any], entry: _Entry,
     friction_static = entry.number("friction_static")
     drag_min, drag_max = entry.range("drag_torque_nm")
     backlash_min, backlash_max = entry.range("backlash_mm")
-    t_min, t_max = entry.range("temperature_range_c") if "temperature_range_c" in entry.data else (
-        None, None)
+    t_min, t_max = (
+        entry.range("temperature_range_c") if "temperature_range_c" in entry.data else (None, None)
+    )
     coatings = entry.leaf("coatings").get("value")
     if not isinstance(coatings, list) or not coatings or any(c not in COATINGS for c in coatings):
         raise entry.fail("coatings", f"'value' must be a list drawn from {', '.join(COATINGS)}")
@@ -228,26 +237,35 @@ def _build_series(file: str, family: Mapping[str, Any], entry: _Entry,
         "backlash": Sourced((backlash_min * MM, backlash_max * MM), "m", entry.prov("backlash_mm")),
         "design_load": Sourced(design_load, "N", design_prov),
         "leads": Sourced(tuple(leads_m), "m", entry.prov("leads_mm")),
-        "lead_accuracy": Sourced(entry.number("lead_accuracy_mm_per_mm"), "m/m",
-                                 entry.prov("lead_accuracy_mm_per_mm")),
-        "repeatability": Sourced(entry.number("repeatability_mm") * MM, "m",
-                                 entry.prov("repeatability_mm")),
+        "lead_accuracy": Sourced(
+            entry.number("lead_accuracy_mm_per_mm"), "m/m", entry.prov("lead_accuracy_mm_per_mm")
+        ),
+        "repeatability": Sourced(
+            entry.number("repeatability_mm") * MM, "m", entry.prov("repeatability_mm")
+        ),
         "nut_material": Sourced(entry.text("nut_material"), "", entry.prov("nut_material")),
         "screw_material": Sourced(material_name, "", entry.prov("screw_material")),
     }
     if t_min is not None:
-        fields["temperature_range"] = Sourced((t_min, t_max), "C", entry.prov("temperature_range_c"))
+        fields["temperature_range"] = Sourced(
+            (t_min, t_max), "C", entry.prov("temperature_range_c")
+        )
     variants: dict[bool, dict[str, Sourced]] = {}
     for coating in coatings:
         key = "tfe" if coating == "tfe" else "uncoated"
         coated = coating == "tfe"
         v = {
-            "friction_dynamic": Sourced(entry.number(f"friction_dynamic_{key}"), "",
-                                        entry.prov(f"friction_dynamic_{key}")),
-            "pv_limit": Sourced(entry.number(f"pv_limit_{key}_mpa_m_s") * 1e6, "Pa m/s",
-                                entry.prov(f"pv_limit_{key}_mpa_m_s")),
-            "max_length": Sourced(entry.number(f"max_length_{key}_mm") * MM, "m",
-                                  entry.prov(f"max_length_{key}_mm")),
+            "friction_dynamic": Sourced(
+                entry.number(f"friction_dynamic_{key}"), "", entry.prov(f"friction_dynamic_{key}")
+            ),
+            "pv_limit": Sourced(
+                entry.number(f"pv_limit_{key}_mpa_m_s") * 1e6,
+                "Pa m/s",
+                entry.prov(f"pv_limit_{key}_mpa_m_s"),
+            ),
+            "max_length": Sourced(
+                entry.number(f"max_length_{key}_mm") * MM, "m", entry.prov(f"max_length_{key}_mm")
+            ),
         }
         if f"life_million_cm_{key}" in entry.data:
             low, high = entry.range(f"life_million_cm_{key}")
@@ -264,39 +282,61 @@ def _build_series(file: str, family: Mapping[str, Any], entry: _Entry,
             prov["lead"] = entry.prov("leads_mm")
             prov["coating"] = entry.prov("coatings")
             life = v.get("life")
-            screws.append(ScrewSpec(
-                id=f"{sid}-L{lead / MM:g}" + ("-TFE" if coated else ""),
-                series_id=sid, series_name=name, anti_backlash=kind == "anti-backlash",
-                coated=coated, outer_diameter_m=od_m, root_diameter_m=rd_m, lead_m=lead,
-                thread_half_angle_rad=math.radians(half_angle), friction_static=friction_static,
-                friction_dynamic=v["friction_dynamic"].value,
-                youngs_modulus_pa=material.youngs_modulus_pa.value,
-                density_kg_m3=material.density_kg_m3.value,
-                screw_expansion_per_k=material.expansion_per_k.value,
-                inertia_kg_m2_per_m=inertia_per_m, drag_torque_min_nm=drag_min,
-                drag_torque_max_nm=drag_max, pv_limit_pa_m_s=v["pv_limit"].value,
-                design_load_n=design_load, max_length_m=v["max_length"].value,
-                backlash_min_m=backlash_min * MM, backlash_max_m=backlash_max * MM,
-                life_min_m=life.value[0] if life else None,
-                life_max_m=life.value[1] if life else None,
-                lead_accuracy_m_per_m=fields["lead_accuracy"].value,
-                repeatability_m=fields["repeatability"].value,
-                temperature_min_c=t_min, temperature_max_c=t_max,
-                oil_compatible=not coated,
-                outgassing=tuple((float(a), float(b)) for a, b in outgassing),
-                material_name=material_name, nut_material=fields["nut_material"].value,
-                provenance=prov,
-            ))
+            screws.append(
+                ScrewSpec(
+                    id=f"{sid}-L{lead / MM:g}" + ("-TFE" if coated else ""),
+                    series_id=sid,
+                    series_name=name,
+                    anti_backlash=kind == "anti-backlash",
+                    coated=coated,
+                    outer_diameter_m=od_m,
+                    root_diameter_m=rd_m,
+                    lead_m=lead,
+                    thread_half_angle_rad=math.radians(half_angle),
+                    friction_static=friction_static,
+                    friction_dynamic=v["friction_dynamic"].value,
+                    youngs_modulus_pa=material.youngs_modulus_pa.value,
+                    density_kg_m3=material.density_kg_m3.value,
+                    screw_expansion_per_k=material.expansion_per_k.value,
+                    inertia_kg_m2_per_m=inertia_per_m,
+                    drag_torque_min_nm=drag_min,
+                    drag_torque_max_nm=drag_max,
+                    pv_limit_pa_m_s=v["pv_limit"].value,
+                    design_load_n=design_load,
+                    max_length_m=v["max_length"].value,
+                    backlash_min_m=backlash_min * MM,
+                    backlash_max_m=backlash_max * MM,
+                    life_min_m=life.value[0] if life else None,
+                    life_max_m=life.value[1] if life else None,
+                    lead_accuracy_m_per_m=fields["lead_accuracy"].value,
+                    repeatability_m=fields["repeatability"].value,
+                    temperature_min_c=t_min,
+                    temperature_max_c=t_max,
+                    oil_compatible=not coated,
+                    outgassing=tuple((float(a), float(b)) for a, b in outgassing),
+                    material_name=material_name,
+                    nut_material=fields["nut_material"].value,
+                    provenance=prov,
+                )
+            )
     return Series(
-        id=sid, name=name, family=str(family.get("id", file)),
-        family_name=str(family.get("name", family.get("id", file))), type=kind, file=file,
-        fields=fields, screws=tuple(screws),
+        id=sid,
+        name=name,
+        family=str(family.get("id", file)),
+        family_name=str(family.get("name", family.get("id", file))),
+        type=kind,
+        file=file,
+        fields=fields,
+        screws=tuple(screws),
     )
 
 
-def _load_dir(directory: Path, base_defaults: Mapping[str, Any],
-              base_materials: Mapping[str, Material], digest: Any) -> tuple[
-                  list[Series], dict[str, Material], str | None]:
+def _load_dir(
+    directory: Path,
+    base_defaults: Mapping[str, Any],
+    base_materials: Mapping[str, Material],
+    digest: Any,
+) -> tuple[list[Series], dict[str, Material], str | None]:
     if not directory.is_dir():
         raise CatalogError(str(directory), "-", "-", "catalog directory not found")
     defaults = dict(base_defaults)
@@ -328,7 +368,9 @@ def _load_dir(directory: Path, base_defaults: Mapping[str, Any],
             if not isinstance(sid, str) or not sid.strip():
                 raise CatalogError(path.name, f"series[{index}]", "id", "missing or not text")
             merged = {**file_defaults, **{k: v for k, v in raw.items() if k != "id"}}
-            series.append(_build_series(path.name, family, _Entry(path.name, sid, merged), materials))
+            series.append(
+                _build_series(path.name, family, _Entry(path.name, sid, merged), materials)
+            )
     return series, materials, version
 
 

@@ -20,8 +20,9 @@ def second_moment_round(diameter_m: float) -> float:
     return math.pi * diameter_m**4 / 64.0
 
 
-def euler_critical_load(youngs_modulus_pa: float, second_moment_m4: float, length_m: float,
-                        end_fixity: str) -> float:
+def euler_critical_load(
+    youngs_modulus_pa: float, second_moment_m4: float, length_m: float, end_fixity: str
+) -> float:
     """Euler buckling load F_cr = k pi^2 E I / L^2 [N].
 
     youngs_modulus_pa: E [Pa]; second_moment_m4: I [m^4]; length_m: L [m];
@@ -32,8 +33,8 @@ def euler_critical_load(youngs_modulus_pa: float, second_moment_m4: float, lengt
     >>> round(euler_critical_load(69e9, 241e-8, 5.0, "fixed-fixed") / 1000, 1)
     262.6
     """
-    return END_FIXITY_K[end_fixity] * math.pi**2 * youngs_modulus_pa * second_moment_m4 / (
-        length_m**2
+    return (
+        END_FIXITY_K[end_fixity] * math.pi**2 * youngs_modulus_pa * second_moment_m4 / (length_m**2)
     )
 
 
@@ -57,11 +58,12 @@ def max_length_for_load(length_m: float, allowed_load_n: float, load_n: float) -
     return length_m * math.sqrt(allowed_load_n / load_n)
 
 
-def min_root_diameter_for_load(root_diameter_m: float, allowed_load_n: float,
-                               load_n: float) -> float:
+def min_root_diameter_for_load(
+    root_diameter_m: float, allowed_load_n: float, load_n: float
+) -> float:
     """Smallest root diameter carrying the load: d_r (F / F_allowed)^(1/4) [m].
 
     >>> round(min_root_diameter_for_load(0.01, 100.0, 1600.0), 6)
     0.02
     """
-    return root_diameter_m * (load_n / allowed_load_n) ** 0.25
+    return root_diameter_m * float((load_n / allowed_load_n) ** 0.25)

@@ -20,21 +20,39 @@ def _mm_s(x_m_s: float) -> str:
     return f"{x_m_s * 1000:.4g} mm/s"
 
 
-def _numeric(name: str, label: str, value: float, limit: float, unit: str, formula: str,
-             sources: tuple[str, ...], ok_text: str, fail_text: str, fix: str | None,
-             input_limits: Mapping[str, float] | None = None) -> Check:
+def _numeric(
+    name: str,
+    label: str,
+    value: float,
+    limit: float,
+    unit: str,
+    formula: str,
+    sources: tuple[str, ...],
+    ok_text: str,
+    fail_text: str,
+    fix: str | None,
+    input_limits: Mapping[str, float] | None = None,
+) -> Check:
     utilization = value / limit
     passed = utilization <= 1.0
     return Check(
-        name=name, label=label, passed=passed, value=value, limit=limit, unit=unit,
-        utilization=utilization, message=ok_text if passed else fail_text, formula=formula,
-        sources=sources, fix=None if passed else fix,
+        name=name,
+        label=label,
+        passed=passed,
+        value=value,
+        limit=limit,
+        unit=unit,
+        utilization=utilization,
+        message=ok_text if passed else fail_text,
+        formula=formula,
+        sources=sources,
+        fix=None if passed else fix,
         input_limits={} if passed else dict(input_limits or {}),
     )
 
 
 def _stiffer_fixities(app: Application, ev: Evaluation, passes: Callable[[str], bool]) -> str:
-    found = [f for f in FIXITY_ORDER[FIXITY_ORDER.index(app.end_fixity) + 1:] if passes(f)]
+    found = [f for f in FIXITY_ORDER[FIXITY_ORDER.index(app.end_fixity) + 1 :] if passes(f)]
     return f"mount the ends {found[0]}" if found else "add an intermediate support"
 
 
@@ -59,7 +77,11 @@ def critical_speed_check(app: Application, ev: Evaluation) -> Check:
 
     support = _stiffer_fixities(app, ev, passes)
     return _numeric(
-        "critical_speed", "Critical speed", ev.rpm, c.allowed_rpm, "rpm",
+        "critical_speed",
+        "Critical speed",
+        ev.rpm,
+        c.allowed_rpm,
+        "rpm",
         "n = 60 v / lead; n_allowed = SF (60 / 2pi) (beta / L)^2 sqrt(E / rho) d_r / 4",
         ("root_diameter", "youngs_modulus", "density"),
         f"{ev.rpm:.0f} rpm is below the allowed {c.allowed_rpm:.0f} rpm "
@@ -81,13 +103,19 @@ def buckling_check(app: Application, ev: Evaluation) -> Check:
 
     def passes(fixity: str) -> bool:
         f_cr = buckling.euler_critical_load(
-            s.youngs_modulus_pa, buckling.second_moment_round(s.root_diameter_m),
-            app.length_m, fixity,
+            s.youngs_modulus_pa,
+            buckling.second_moment_round(s.root_diameter_m),
+            app.length_m,
+            fixity,
         )
         return ev.axial_load_n <= b.safety_factor * f_cr
 
     return _numeric(
-        "buckling", "Column buckling", ev.axial_load_n, b.allowed_load_n, "N",
+        "buckling",
+        "Column buckling",
+        ev.axial_load_n,
+        b.allowed_load_n,
+        "N",
         "F_allowed = SF k pi^2 E (pi d_r^4 / 64) / L^2",
         ("root_diameter", "youngs_modulus"),
         f"{ev.axial_load_n:.4g} N compression is within the allowed {b.allowed_load_n:.4g} N "
@@ -107,7 +135,11 @@ def pv_check(app: Application, ev: Evaluation) -> Check | None:
         return None
     coat = "" if ev.screw.coated else "; a TFE-coated screw has a higher limit"
     return _numeric(
-        "pv", "PV (nut material)", p.value_pa_m_s, p.limit_pa_m_s, "Pa m/s",
+        "pv",
+        "PV (nut material)",
+        p.value_pa_m_s,
+        p.limit_pa_m_s,
+        "Pa m/s",
         "PV = F / (3 H.T. h) x n H.T. = n F / (3 h)",
         ("pv_limit", "root_diameter", "outer_diameter"),
         f"PV {p.value_pa_m_s / 1e6:.3g} MPa m/s is within the nut limit "
@@ -128,7 +160,11 @@ def traverse_check(app: Application, ev: Evaluation) -> Check:
         f", or a lead of at least {_mm(faster[0][0])}" if faster and faster[0][2] > lim else ""
     )
     return _numeric(
-        "traverse_speed", "Traverse speed", app.speed_m_s, lim, "m/s",
+        "traverse_speed",
+        "Traverse speed",
+        app.speed_m_s,
+        lim,
+        "m/s",
         "seed table: lead 2.5-12 mm: 100 mm/s; 12-25 mm: 250 mm/s; 25-60 mm: 760 mm/s",
         ("lead",),
         f"{_mm_s(app.speed_m_s)} is within the recommended {_mm_s(lim)} for this lead{note}.",
@@ -143,8 +179,13 @@ def design_load_check(app: Application, ev: Evaluation) -> Check | None:
     if cap is None:
         return None
     return _numeric(
-        "design_load", "Design load", ev.axial_load_n, cap, "N",
-        "F <= design load of the size", ("design_load",),
+        "design_load",
+        "Design load",
+        ev.axial_load_n,
+        cap,
+        "N",
+        "F <= design load of the size",
+        ("design_load",),
         f"{ev.axial_load_n:.4g} N is within the design load {cap:.4g} N.",
         f"{ev.axial_load_n:.4g} N exceeds the design load {cap:.4g} N.",
         f"Reduce the load to at most {cap:.4g} N or choose a larger size.",
@@ -162,7 +203,12 @@ def length_check(app: Application, ev: Evaluation) -> Check | None:
         else "Shorten the screw to "
     )
     return _numeric(
-        "length", "Length", app.length_m, cap, "m", "L <= maximum length (4 m, 2.4 m coated)",
+        "length",
+        "Length",
+        app.length_m,
+        cap,
+        "m",
+        "L <= maximum length (4 m, 2.4 m coated)",
         ("max_length",),
         f"{_mm(app.length_m)} is within the maximum {_mm(cap)}.",
         f"{_mm(app.length_m)} exceeds the maximum length {_mm(cap)}.",
@@ -171,11 +217,27 @@ def length_check(app: Application, ev: Evaluation) -> Check | None:
     )
 
 
-def _flag(name: str, label: str, passed: bool, ok: str, fail: str, fix: str,
-          formula: str, sources: tuple[str, ...]) -> Check:
+def _flag(
+    name: str,
+    label: str,
+    passed: bool,
+    ok: str,
+    fail: str,
+    fix: str,
+    formula: str,
+    sources: tuple[str, ...],
+) -> Check:
     return Check(
-        name=name, label=label, passed=passed, value=None, limit=None, unit="",
-        utilization=None, message=ok if passed else fail, formula=formula, sources=sources,
+        name=name,
+        label=label,
+        passed=passed,
+        value=None,
+        limit=None,
+        unit="",
+        utilization=None,
+        message=ok if passed else fail,
+        formula=formula,
+        sources=sources,
         fix=None if passed else fix,
     )
 
@@ -184,8 +246,12 @@ def back_driving_check(app: Application, ev: Evaluation) -> Check:
     """Vertical axes must not drop the load: the screw must self-lock."""
     s = ev.screw
     return _numeric(
-        "back_driving", "Back-driving (vertical axis)", s.lead_m, ev.max_self_locking_lead_m,
-        "m", "self-locking when lead <= pi d_p mu_s / cos(a_n)",
+        "back_driving",
+        "Back-driving (vertical axis)",
+        s.lead_m,
+        ev.max_self_locking_lead_m,
+        "m",
+        "self-locking when lead <= pi d_p mu_s / cos(a_n)",
         ("friction_static", "thread_half_angle"),
         "Self-locking: the load cannot drive the screw down.",
         f"Back-drivable: the load can drive the screw down; holding torque "
@@ -201,7 +267,11 @@ def torque_check(app: Application, ev: Evaluation) -> Check | None:
         return None
     t = ev.torque
     return _numeric(
-        "torque", "Drive torque", t.required_nm, app.max_torque_nm, "N m",
+        "torque",
+        "Drive torque",
+        t.required_nm,
+        app.max_torque_nm,
+        "N m",
         "T_req = SF x max(T_inertia + T_drag + T_load, T_breakaway)",
         ("inertia_per_length", "drag_torque", "friction_dynamic", "friction_static"),
         f"{t.required_nm:.3g} N m required is within the {app.max_torque_nm:.3g} N m available.",
@@ -216,14 +286,24 @@ def life_check(app: Application, ev: Evaluation) -> Check | None:
         return None
     if ev.life is None or ev.life.years_min is None:
         return _flag(
-            "life", "Life", False, "", "No life rating is published for this series.",
+            "life",
+            "Life",
+            False,
+            "",
+            "No life rating is published for this series.",
             "Choose an anti-backlash series, whose life is rated.",
-            "life = rated travel / (2 stroke x cycles per year)", ("life",),
+            "life = rated travel / (2 stroke x cycles per year)",
+            ("life",),
         )
     years = ev.life.years_min
     check = _numeric(
-        "life", "Life", app.required_life_years, years, "year",
-        "life = rated travel / (2 stroke x cycles per year)", ("life",),
+        "life",
+        "Life",
+        app.required_life_years,
+        years,
+        "year",
+        "life = rated travel / (2 stroke x cycles per year)",
+        ("life",),
         f"At least {years:.3g} years rated, {app.required_life_years:g} required.",
         f"Only {years:.3g} years rated (low end), {app.required_life_years:g} required.",
         "Choose a TFE-coated screw or a series with a longer rated life, or shorten the "
@@ -239,13 +319,16 @@ def accuracy_check(app: Application, ev: Evaluation) -> Check | None:
         return None
     error = a.lead_error_m + a.backlash_max_m + (a.repeatability_m or 0.0)
     return _numeric(
-        "accuracy", "Positioning accuracy", error, tol, "m",
+        "accuracy",
+        "Positioning accuracy",
+        error,
+        tol,
+        "m",
         "error = lead accuracy x stroke + backlash (max) + repeatability",
         ("lead_accuracy", "backlash", "repeatability"),
         f"Worst-case error {_mm(error)} is within the {_mm(tol)} tolerance.",
         f"Worst-case error {_mm(error)} exceeds the {_mm(tol)} tolerance.",
-        "Choose an anti-backlash series (no backlash) or a precision lead grade "
-        "(to 0.0001 mm/mm).",
+        "Choose an anti-backlash series (no backlash) or a precision lead grade (to 0.0001 mm/mm).",
     )
 
 
@@ -262,29 +345,47 @@ def build_checks(app: Application, ev: Evaluation) -> tuple[Check, ...]:
         length_check(app, ev),
     ]
     if s.coated:
-        checks.append(_flag(
-            "coating_environment", "TFE coating and oil", limits.tfe_allowed(app.oil_present),
-            "No oil present: the TFE coating may be used.",
-            "TFE-coated screws must not be used where oil contamination is possible.",
-            "Use the uncoated screw.", "seed: no TFE where oil is possible", ("coating",),
-        ))
+        checks.append(
+            _flag(
+                "coating_environment",
+                "TFE coating and oil",
+                limits.tfe_allowed(app.oil_present),
+                "No oil present: the TFE coating may be used.",
+                "TFE-coated screws must not be used where oil contamination is possible.",
+                "Use the uncoated screw.",
+                "seed: no TFE where oil is possible",
+                ("coating",),
+            )
+        )
     if s.temperature_min_c is not None and s.temperature_max_c is not None:
-        checks.append(_flag(
-            "temperature", "Operating temperature",
-            limits.temperature_ok(app.ambient_c, s.temperature_min_c, s.temperature_max_c),
-            f"{app.ambient_c:g} C is within {s.temperature_min_c:g}-{s.temperature_max_c:g} C.",
-            f"{app.ambient_c:g} C is outside {s.temperature_min_c:g}-{s.temperature_max_c:g} C.",
-            "No series in this catalog is rated for this temperature: control the ambient.",
-            "T_min <= T_ambient <= T_max", ("temperature_range",),
-        ))
+        band = f"{s.temperature_min_c:g}-{s.temperature_max_c:g}"
+        checks.append(
+            _flag(
+                "temperature",
+                "Operating temperature",
+                limits.temperature_ok(app.ambient_c, s.temperature_min_c, s.temperature_max_c),
+                f"{app.ambient_c:g} C is within {band} C.",
+                f"{app.ambient_c:g} C is outside {band} C.",
+                "No series in this catalog is rated for this temperature: control the ambient.",
+                "T_min <= T_ambient <= T_max",
+                ("temperature_range",),
+            )
+        )
     if app.orientation == "vertical":
         checks.append(back_driving_check(app, ev))
     if app.require_anti_backlash:
-        checks.append(_flag(
-            "anti_backlash", "Anti-backlash", s.anti_backlash,
-            "Anti-backlash nut.", f"Free-wheeling nut with {_mm(s.backlash_max_m)} backlash.",
-            "Choose an anti-backlash series (ZBX, KHD, VHD).", "series type", ("type",),
-        ))
+        checks.append(
+            _flag(
+                "anti_backlash",
+                "Anti-backlash",
+                s.anti_backlash,
+                "Anti-backlash nut.",
+                f"Free-wheeling nut with {_mm(s.backlash_max_m)} backlash.",
+                "Choose an anti-backlash series (ZBX, KHD, VHD).",
+                "series type",
+                ("type",),
+            )
+        )
     checks.append(life_check(app, ev))
     checks.append(accuracy_check(app, ev))
     return tuple(c for c in checks if c is not None)

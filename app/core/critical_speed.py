@@ -16,8 +16,13 @@ END_FIXITY_BETA: dict[str, float] = {
 }
 
 
-def critical_speed_rpm(root_diameter_m: float, length_m: float, youngs_modulus_pa: float,
-                       density_kg_m3: float, end_fixity: str) -> float:
+def critical_speed_rpm(
+    root_diameter_m: float,
+    length_m: float,
+    youngs_modulus_pa: float,
+    density_kg_m3: float,
+    end_fixity: str,
+) -> float:
     """First whirling speed n_c [rpm] of a round shaft.
 
     n_c = 60 / (2 pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4
@@ -31,8 +36,10 @@ def critical_speed_rpm(root_diameter_m: float, length_m: float, youngs_modulus_p
     475.2
     """
     beta = END_FIXITY_BETA[end_fixity]
-    omega = (beta / length_m) ** 2 * math.sqrt(youngs_modulus_pa / density_kg_m3) * (
-        root_diameter_m / 4.0
+    omega = (
+        (beta / length_m) ** 2
+        * math.sqrt(youngs_modulus_pa / density_kg_m3)
+        * (root_diameter_m / 4.0)
     )
     return omega * 60.0 / (2.0 * math.pi)
 
@@ -59,8 +66,9 @@ def max_length_for_speed(length_m: float, allowed_rpm: float, operating_rpm: flo
     return length_m * math.sqrt(allowed_rpm / operating_rpm)
 
 
-def min_root_diameter_for_speed(root_diameter_m: float, allowed_rpm: float,
-                                operating_rpm: float) -> float:
+def min_root_diameter_for_speed(
+    root_diameter_m: float, allowed_rpm: float, operating_rpm: float
+) -> float:
     """Smallest root diameter at which the operating speed is allowed [m].
 
     n_c is proportional to d_r, so d_r,min = d_r n / n_allowed.

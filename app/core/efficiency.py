@@ -36,7 +36,7 @@ def backdrive_efficiency(lead_angle_rad: float, friction: float, half_angle_rad:
     Source: Shigley [2], sec. 8-2, lowering torque T_L set to the load's work.
 
     >>> round(backdrive_efficiency(math.atan(0.5 / math.pi), 0.09, 0.0), 4)
-    0.4355
+    0.4284
     >>> backdrive_efficiency(math.atan(0.001 / (math.pi * 0.0057)), 0.08, math.radians(14.5))
     0.0
     """
@@ -89,14 +89,15 @@ def seed_backdrive_rule(lead_m: float, outer_diameter_m: float) -> bool:
     Source: seed [1], "Back Driving": "when the screw lead is less than 1/8 the diameter,
     back driving will not occur". Diameter taken as the outer diameter.
 
-    >>> seed_backdrive_rule(0.001, 0.00635), seed_backdrive_rule(0.002, 0.00635)
+    >>> seed_backdrive_rule(0.0007, 0.00635), seed_backdrive_rule(0.001, 0.00635)
     (True, False)
     """
     return lead_m < outer_diameter_m / 8.0
 
 
-def max_self_locking_lead(pitch_diameter_m: float, friction_static: float,
-                          half_angle_rad: float) -> float:
+def max_self_locking_lead(
+    pitch_diameter_m: float, friction_static: float, half_angle_rad: float
+) -> float:
     """Largest lead that is still self-locking [m]: lead = pi d_p mu_s / cos a_n.
 
     Inverse of the self-locking condition (Shigley [2], sec. 8-2).

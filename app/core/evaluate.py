@@ -75,7 +75,10 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
     )
 
     n_c = critical_speed.critical_speed_rpm(
-        screw.root_diameter_m, app.length_m, screw.youngs_modulus_pa, screw.density_kg_m3,
+        screw.root_diameter_m,
+        app.length_m,
+        screw.youngs_modulus_pa,
+        screw.density_kg_m3,
         app.end_fixity,
     )
     crit = CriticalSpeed(
@@ -86,8 +89,10 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
     )
 
     f_cr = buckling.euler_critical_load(
-        screw.youngs_modulus_pa, buckling.second_moment_round(screw.root_diameter_m),
-        app.length_m, app.end_fixity,
+        screw.youngs_modulus_pa,
+        buckling.second_moment_round(screw.root_diameter_m),
+        app.length_m,
+        app.end_fixity,
     )
     buck = Buckling(
         applies=app.compression,
@@ -157,9 +162,7 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
         efficiency_square_thread=efficiency.square_thread_efficiency(lam, screw.friction_dynamic),
         backdrive_efficiency=eta_b,
         self_locking=self_locking,
-        seed_rule_no_backdrive=efficiency.seed_backdrive_rule(
-            screw.lead_m, screw.outer_diameter_m
-        ),
+        seed_rule_no_backdrive=efficiency.seed_backdrive_rule(screw.lead_m, screw.outer_diameter_m),
         max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, screw.friction_static, a_n),
         holding_torque_seed_nm=(
             0.0 if self_locking else efficiency.holding_torque(force_n, screw.lead_m, eta)
@@ -191,6 +194,9 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
     else:
         governing_name = governing.name if governing else None
     return replace(
-        partial, checks=checks, passed=not failed, governing_check=governing_name,
+        partial,
+        checks=checks,
+        passed=not failed,
+        governing_check=governing_name,
         max_utilization=max_u,
     )

@@ -31,7 +31,7 @@ def traverse_speed_limit(lead_m: float) -> TraverseLimit:
     TraverseLimit(speed_m_s=0.1, extrapolated=True)
     """
     low, high = TRAVERSE_BANDS[0][0], TRAVERSE_BANDS[-1][1]
-    for start, end, speed in reversed(TRAVERSE_BANDS):
+    for start, _end, speed in reversed(TRAVERSE_BANDS):
         if lead_m >= start:
             return TraverseLimit(speed, lead_m > high)
     return TraverseLimit(TRAVERSE_BANDS[0][2], lead_m < low)

@@ -28,7 +28,8 @@ def coating_matches(coated: bool, choice: str) -> bool:
 def eligible(app: Application, screws: Iterable[ScrewSpec]) -> list[ScrewSpec]:
     """Candidates that match the asked lead and coating choice."""
     return [
-        s for s in screws
+        s
+        for s in screws
         if lead_matches(s.lead_m, app.lead_m) and coating_matches(s.coated, app.coating)
     ]
 
@@ -98,19 +99,29 @@ def describe_change(app: Application, change: dict[str, float]) -> str:
     return " and ".join(parts)
 
 
-def summarize(app: Application, evaluated: int, passing: list[Evaluation],
-              failing: list[Evaluation], by_check: Counter[str]) -> Summary:
+def summarize(
+    app: Application,
+    evaluated: int,
+    passing: list[Evaluation],
+    failing: list[Evaluation],
+    by_check: Counter[str],
+) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix."""
     top = by_check.most_common(1)
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
         lead = "" if app.lead_m is None else f" with a {app.lead_m * 1000:g} mm lead"
-        return Summary(None, 0, None, {},
-                       f"No catalog screw{lead} matches the coating choice; try another lead "
-                       "or 'any'.")
+        return Summary(
+            None,
+            0,
+            None,
+            {},
+            f"No catalog screw{lead} matches the coating choice; try another lead or 'any'.",
+        )
     if passing:
-        return Summary(worst, worst_count, None, {},
-                       f"{len(passing)} of {evaluated} candidates pass.")
+        return Summary(
+            worst, worst_count, None, {}, f"{len(passing)} of {evaluated} candidates pass."
+        )
     best = failing[0]
     change = input_change(best)
     fixes = " ".join(c.fix for c in best.failed_checks if c.fix)

@@ -1,0 +1,49 @@
+"""Console script ``leadscrew-selector``: serve the app with uvicorn."""
+
+import argparse
+import json
+import os
+import sys
+from pathlib import Path
+
+import uvicorn
+
+from app.catalog import CatalogError, load_catalog
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="leadscrew-selector", description=__doc__)
+    parser.add_argument("--host", default="127.0.0.1")
+    parser.add_argument("--port", type=int, default=8000)
+    parser.add_argument("--workers", type=int, default=1)
+    parser.add_argument(
+        "--catalog-dir",
+        action="append",
+        type=Path,
+        default=[],
+        help="extra catalog directory merged into the built-in one (repeatable)",
+    )
+    args = parser.parse_args(argv)
+    try:
+        load_catalog(args.catalog_dir)  # fail before forking workers, with the file named
+    except CatalogError as exc:
+        print(f"catalog error: {exc}", file=sys.stderr)
+        return 2
+    if args.catalog_dir:
+        os.environ["LEADSCREW_CATALOG_DIRS"] = json.dumps(
+            [str(p.resolve()) for p in args.catalog_dir]
+        )
+    uvicorn.run(
+        "app.main:create_app",
+        factory=True,
+        host=args.host,
+        port=args.port,
+        workers=args.workers,
+        proxy_headers=True,
+        log_level="info",
+    )
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,254 @@
+"""Turn core results into the API's plain dicts (the same dicts feed the templates)."""
+
+import math
+from typing import Any
+
+from app.catalog import Series
+from app.core.model import Evaluation, Provenance, ScrewSpec, Selection
+from app.schemas import CustomScrewIn, MaterialIn
+from app.units import CHECK_UNITS
+
+LIFE_NOTE = (
+    "Life varies with load, environment and duty cycle; longer leads generally last longer (seed)."
+)
+
+
+def _mm(x_m: float) -> float:
+    return x_m * 1e3
+
+
+def _prov(p: Provenance) -> dict[str, str]:
+    return {"kind": p.kind, "source": p.source}
+
+
+def check_dict(check: Any) -> dict[str, Any]:
+    unit, scale = CHECK_UNITS[check.unit]
+    return {
+        "name": check.name,
+        "label": check.label,
+        "passed": check.passed,
+        "value": None if check.value is None else check.value * scale,
+        "limit": None if check.limit is None else check.limit * scale,
+        "unit": unit,
+        "utilization": check.utilization,
+        "message": check.message,
+        "formula": check.formula,
+        "sources": list(check.sources),
+        "fix": check.fix,
+    }
+
+
+def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
+    """One evaluated screw in API units (mm, mm/s, N, N m, MPa m/s)."""
+    s, t, pv = ev.screw, ev.torque, ev.pv
+    life = None
+    if ev.life is not None:
+        years = ev.life
+        life = {
+            "travel_million_cm": [years.travel_min_m / 1e4, years.travel_max_m / 1e4],
+            "years": (
+                None
+                if years.years_min is None or years.years_max is None
+                else [years.years_min, years.years_max]
+            ),
+            "note": LIFE_NOTE,
+        }
+    acc = ev.accuracy
+    fixes = [c.fix for c in ev.checks if c.fix]
+    used = {src for c in ev.checks for src in c.sources} | {
+        "outer_diameter",
+        "root_diameter",
+        "lead",
+        "friction_dynamic",
+        "friction_static",
+        "thread_half_angle",
+        "inertia_per_length",
+        "drag_torque",
+    }
+    return {
+        "id": s.id,
+        "series": s.series_id,
+        "series_name": s.series_name,
+        "anti_backlash": s.anti_backlash,
+        "outer_diameter_mm": _mm(s.outer_diameter_m),
+        "root_diameter_mm": _mm(s.root_diameter_m),
+        "pitch_diameter_mm": _mm((s.outer_diameter_m + s.root_diameter_m) / 2),
+        "lead_mm": _mm(s.lead_m),
+        "lead_angle_deg": math.degrees(ev.lead_angle_rad),
+        "coated": s.coated,
+        "axial_load_n": ev.axial_load_n,
+        "rpm": ev.rpm,
+        "efficiency": ev.efficiency,
+        "efficiency_square_thread": ev.efficiency_square_thread,
+        "backdrive_efficiency": ev.backdrive_efficiency,
+        "self_locking": ev.self_locking,
+        "seed_rule_no_backdrive": ev.seed_rule_no_backdrive,
+        "max_self_locking_lead_mm": _mm(ev.max_self_locking_lead_m),
+        "holding_torque": {
+            "seed_method_nm": ev.holding_torque_seed_nm,
+            "physics_nm": ev.holding_torque_physics_nm,
+        },
+        "torque": {
+            "inertia_nm": t.inertia_nm,
+            "inertia_screw_nm": t.inertia_screw_nm,
+            "inertia_mass_nm": t.inertia_mass_nm,
+            "drag_nm": t.drag_nm,
+            "drag_range_nm": [t.drag_min_nm, t.drag_max_nm],
+            "load_nm": t.load_nm,
+            "total_nm": t.total_nm,
+            "breakaway_nm": t.breakaway_nm,
+            "safety_factor": t.safety_factor,
+            "required_nm": t.required_nm,
+        },
+        "critical_speed": {
+            "theoretical_rpm": ev.critical_speed.theoretical_rpm,
+            "allowed_rpm": ev.critical_speed.allowed_rpm,
+            "safety_factor": ev.critical_speed.safety_factor,
+            "end_fixity": ev.critical_speed.end_fixity,
+        },
+        "buckling": {
+            "applies": ev.buckling.applies,
+            "critical_load_n": ev.buckling.critical_load_n,
+            "allowed_load_n": ev.buckling.allowed_load_n,
+            "safety_factor": ev.buckling.safety_factor,
+        },
+        "pv": {
+            "value_mpa_m_s": pv.value_pa_m_s / 1e6,
+            "limit_mpa_m_s": None if pv.limit_pa_m_s is None else pv.limit_pa_m_s / 1e6,
+            "pressure_mpa": pv.pressure_pa / 1e6,
+            "surface_speed_m_s": pv.surface_speed_m_s,
+            "max_load_n": pv.max_load_n,
+            "max_speed_mm_s": None if pv.max_speed_m_s is None else _mm(pv.max_speed_m_s),
+        },
+        "traverse_speed_limit_mm_s": _mm(ev.traverse_speed_limit_m_s),
+        "traverse_extrapolated": ev.traverse_extrapolated,
+        "life": life,
+        "accuracy": {
+            "lead_error_mm": None if acc.lead_error_m is None else _mm(acc.lead_error_m),
+            "repeatability_mm": None if acc.repeatability_m is None else _mm(acc.repeatability_m),
+            "backlash_mm": [_mm(acc.backlash_min_m), _mm(acc.backlash_max_m)],
+            "thermal_growth_mm": (
+                None if acc.thermal_growth_m is None else _mm(acc.thermal_growth_m)
+            ),
+        },
+        "outgassing": (
+            [{"hours": h, "weight_loss_percent": w} for h, w in s.outgassing] if vacuum else None
+        ),
+        "checks": [check_dict(c) for c in ev.checks],
+        "governing_check": ev.governing_check,
+        "passed": ev.passed,
+        "fix": " ".join(fixes) if fixes else None,
+        "provenance": {k: _prov(p) for k, p in s.provenance.items() if k in used},
+    }
+
+
+def selection_dict(sel: Selection) -> dict[str, Any]:
+    """Candidates, rejected, counts and summary of a selection (without inputs/links)."""
+    vacuum = sel.application.vacuum
+    return {
+        "candidates": [candidate_dict(e, vacuum) for e in sel.candidates],
+        "rejected": [candidate_dict(e, vacuum) for e in sel.rejected],
+        "counts": {
+            "evaluated": sel.evaluated,
+            "passed": sel.passed,
+            "rejected": sel.evaluated - sel.passed,
+            "failed_by_check": dict(sel.failed_by_check),
+        },
+        "summary": {
+            "message": sel.summary.message,
+            "most_excluding_check": sel.summary.most_excluding_check,
+            "best_rejected_id": sel.summary.best_rejected_id,
+            "input_change": _api_change(sel.summary.input_change),
+        },
+    }
+
+
+def _api_change(change: Any) -> dict[str, float]:
+    names = {
+        "load_n": ("load_n", 1.0),
+        "speed_m_s": ("speed_mm_s", 1e3),
+        "length_m": ("length_mm", 1e3),
+    }
+    return {names[k][0]: v * names[k][1] for k, v in change.items()}
+
+
+def _jsonable(value: Any) -> Any:
+    if isinstance(value, tuple):
+        return [_jsonable(v) for v in value]
+    return value
+
+
+def series_dict(series: Series) -> dict[str, Any]:
+    return {
+        "id": series.id,
+        "name": series.name,
+        "family": series.family,
+        "family_name": series.family_name,
+        "type": series.type,
+        "file": series.file,
+        "fields": {
+            k: {"value": _jsonable(v.value), "unit": v.unit, "provenance": _prov(v.provenance)}
+            for k, v in series.fields.items()
+        },
+        "candidate_ids": [s.id for s in series.screws],
+    }
+
+
+def custom_screw(data: CustomScrewIn) -> ScrewSpec:
+    """A ScrewSpec from a validated ``CustomScrewIn`` (user-given values)."""
+    materials = {"steel": (206e9, 7850.0, 11.7e-6), "stainless-303": (193e9, 8000.0, 17.3e-6)}
+    if isinstance(data.material, MaterialIn):
+        e, rho, alpha = data.material.youngs_modulus_pa, data.material.density_kg_m3, 12e-6
+        material_name = "custom"
+    else:
+        e, rho, alpha = materials[data.material]
+        material_name = data.material
+    rd = data.root_diameter_mm * 1e-3
+    inertia = data.inertia_kg_m2_per_m
+    if inertia is None:
+        inertia = rho * math.pi * rd**4 / 32  # solid rod at the root diameter, per metre
+    user = Provenance("user", "given in the request")
+    handbook = Provenance("handbook", f"{material_name}: E {e / 1e9:g} GPa, rho {rho:g} kg/m3")
+    return ScrewSpec(
+        id="custom",
+        series_id="custom",
+        series_name="Custom screw",
+        anti_backlash=False,
+        coated=False,
+        outer_diameter_m=data.outer_diameter_mm * 1e-3,
+        root_diameter_m=rd,
+        lead_m=data.lead_mm * 1e-3,
+        thread_half_angle_rad=math.radians(data.thread_half_angle_deg),
+        friction_static=data.friction_static,
+        friction_dynamic=data.friction_dynamic,
+        youngs_modulus_pa=e,
+        density_kg_m3=rho,
+        screw_expansion_per_k=alpha,
+        inertia_kg_m2_per_m=inertia,
+        drag_torque_min_nm=data.drag_torque_nm,
+        drag_torque_max_nm=data.drag_torque_nm,
+        pv_limit_pa_m_s=None if data.pv_limit_mpa_m_s is None else data.pv_limit_mpa_m_s * 1e6,
+        material_name=material_name,
+        provenance={
+            **{
+                k: user
+                for k in (
+                    "outer_diameter",
+                    "root_diameter",
+                    "lead",
+                    "friction_dynamic",
+                    "friction_static",
+                    "thread_half_angle",
+                    "drag_torque",
+                    "pv_limit",
+                )
+            },
+            "inertia_per_length": user
+            if data.inertia_kg_m2_per_m is not None
+            else Provenance(
+                "derived", "solid rod at the root diameter: rho pi d_r^4 / 32 per metre"
+            ),
+            "youngs_modulus": user if material_name == "custom" else handbook,
+            "density": user if material_name == "custom" else handbook,
+        },
+    )

@@ -1,0 +1,85 @@
+"""JSON API under /api/v1: thin over ``app.service`` and the core."""
+
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Query
+
+from app import __version__
+from app.deps import CatalogDep
+from app.errors import AppError
+from app.present import series_dict
+from app.schemas import (
+    ApplicationIn,
+    ErrorOut,
+    EvaluateIn,
+    EvaluateOut,
+    HealthOut,
+    SelectOut,
+    SeriesListOut,
+    SeriesOut,
+)
+from app.service import UnknownScrew, run_evaluation, run_selection
+
+ERRORS: dict[int | str, dict[str, Any]] = {
+    404: {"model": ErrorOut, "description": "Unknown id"},
+    422: {"model": ErrorOut, "description": "Invalid input, by field"},
+}
+router = APIRouter(prefix="/api/v1", tags=["api"], responses=ERRORS)
+
+
+@router.get("/health", response_model=HealthOut)
+async def health(catalog: CatalogDep) -> dict[str, Any]:
+    return {
+        "status": "ok",
+        "version": __version__,
+        "catalog_version": catalog.version,
+        "candidates": len(catalog.screws),
+    }
+
+
+@router.get("/series", response_model=SeriesListOut)
+async def list_series(catalog: CatalogDep) -> dict[str, Any]:
+    """Every series with its data and the provenance of each value."""
+    return {
+        "catalog_version": catalog.version,
+        "series": [series_dict(s) for s in catalog.series.values()],
+    }
+
+
+@router.get("/series/{series_id}", response_model=SeriesOut)
+async def get_series(series_id: str, catalog: CatalogDep) -> dict[str, Any]:
+    series = catalog.series.get(series_id)
+    if series is None:
+        raise AppError(
+            404,
+            "unknown series",
+            [{"field": "series_id", "message": f"no series '{series_id[:100]}'"}],
+        )
+    return series_dict(series)
+
+
+@router.post("/select", response_model=SelectOut)
+async def select_post(inputs: ApplicationIn, catalog: CatalogDep) -> dict[str, Any]:
+    """Rank every catalog candidate for the application in the JSON body."""
+    return run_selection(inputs, catalog)
+
+
+@router.get("/select", response_model=SelectOut)
+async def select_get(
+    inputs: Annotated[ApplicationIn, Query()], catalog: CatalogDep
+) -> dict[str, Any]:
+    """The same as POST, with the fields as query parameters (a shareable link)."""
+    return run_selection(inputs, catalog)
+
+
+@router.post("/evaluate", response_model=EvaluateOut)
+async def evaluate_post(body: EvaluateIn, catalog: CatalogDep) -> dict[str, Any]:
+    """One catalog screw (``catalog_id``) or a custom geometry against one application."""
+    try:
+        return run_evaluation(body.application, body.screw, catalog)
+    except UnknownScrew as exc:
+        raise AppError(
+            404,
+            "unknown screw",
+            [{"field": "screw.catalog_id", "message": f"no catalog screw '{str(exc)[:100]}'"}],
+        ) from exc

@@ -1,0 +1,368 @@
+"""Input and output models of the API, shared with the pages (pydantic v2).
+
+Field names carry their units. Inputs are validated here (finite, in range, known enum
+values); ``to_core`` converts to the SI ``Application`` of the core.
+"""
+
+import math
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Discriminator,
+    Field,
+    Tag,
+    ValidationInfo,
+    field_validator,
+    model_validator,
+)
+
+from app.core.model import Application
+
+EndFixityIn = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
+MM = 1e-3
+
+
+def _pos(le: float, description: str, gt: float = 0.0) -> Any:
+    return Field(gt=gt, le=le, allow_inf_nan=False, description=description)
+
+
+class ApplicationIn(BaseModel):
+    """The axis an engineer wants to drive. Lengths in mm, speeds in mm/s, forces in N."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    load_n: Annotated[float, _pos(1e6, "Axial load on the nut [N], > 0.")]
+    speed_mm_s: Annotated[float, _pos(1e5, "Linear speed [mm/s], > 0.")]
+    length_mm: Annotated[float, _pos(1e5, "Screw length between supports [mm], > 0.")]
+    lead_mm: Annotated[float | None, _pos(1000.0, "Lead [mm]; omit for any lead.")] = None
+    accel_mm_s2: Annotated[float, _pos(1e6, "Linear acceleration [mm/s^2].")] = 1000.0
+    moving_mass_kg: Annotated[
+        float, Field(ge=0, le=1e5, allow_inf_nan=False, description="Moving mass [kg].")
+    ] = 0.0
+    end_fixity: EndFixityIn = "fixed-simple"
+    orientation: Literal["horizontal", "vertical"] = "horizontal"
+    compression: bool = True
+    require_anti_backlash: bool = False
+    coating: Literal["auto", "tfe", "none"] = "auto"
+    oil_present: bool = False
+    vacuum: bool = False
+    ambient_c: Annotated[
+        float, Field(ge=-273.15, le=1000, allow_inf_nan=False, description="Ambient [C].")
+    ] = 20.0
+    stroke_mm: Annotated[float | None, _pos(1e5, "Stroke [mm], for life and accuracy.")] = None
+    cycles_per_day: Annotated[float | None, _pos(1e7, "Full cycles per day, for life.")] = None
+    critical_speed_safety_factor: Annotated[
+        float, _pos(1.0, "Fraction of critical speed allowed (0-1].")
+    ] = 0.8
+    buckling_safety_factor: Annotated[
+        float, _pos(1.0, "Fraction of the Euler load allowed (0-1].")
+    ] = 0.5
+    torque_safety_factor: Annotated[
+        float, Field(ge=1.0, le=10.0, allow_inf_nan=False, description="Torque margin, >= 1.")
+    ] = 1.0
+    max_torque_nm: Annotated[float | None, _pos(1e5, "Drive torque available [N m].")] = None
+    required_life_years: Annotated[float | None, _pos(1000.0, "Required life [years].")] = None
+    positioning_tolerance_mm: Annotated[
+        float | None, _pos(1000.0, "Allowed positioning error [mm].")
+    ] = None
+    rank_by: Literal["torque", "margin", "life", "size"] = "torque"
+    limit: Annotated[int, Field(ge=1, le=100, description="How many candidates.")] = 10
+
+    @model_validator(mode="after")
+    def _life_needs_duty(self) -> "ApplicationIn":
+        if self.required_life_years is not None and (
+            self.stroke_mm is None or self.cycles_per_day is None
+        ):
+            raise ValueError("required_life_years needs stroke_mm and cycles_per_day")
+        return self
+
+    def to_core(self) -> Application:
+        """The same application in SI for the core."""
+        return Application(
+            load_n=self.load_n,
+            speed_m_s=self.speed_mm_s * MM,
+            length_m=self.length_mm * MM,
+            lead_m=None if self.lead_mm is None else self.lead_mm * MM,
+            accel_m_s2=self.accel_mm_s2 * MM,
+            moving_mass_kg=self.moving_mass_kg,
+            end_fixity=self.end_fixity,
+            orientation=self.orientation,
+            compression=self.compression,
+            require_anti_backlash=self.require_anti_backlash,
+            coating=self.coating,
+            oil_present=self.oil_present,
+            vacuum=self.vacuum,
+            ambient_c=self.ambient_c,
+            stroke_m=None if self.stroke_mm is None else self.stroke_mm * MM,
+            cycles_per_day=self.cycles_per_day,
+            critical_speed_safety_factor=self.critical_speed_safety_factor,
+            buckling_safety_factor=self.buckling_safety_factor,
+            torque_safety_factor=self.torque_safety_factor,
+            max_torque_nm=self.max_torque_nm,
+            required_life_years=self.required_life_years,
+            positioning_tolerance_m=(
+                None
+                if self.positioning_tolerance_mm is None
+                else self.positioning_tolerance_mm * MM
+            ),
+            rank_by=self.rank_by,
+            limit=self.limit,
+        )
+
+
+class MaterialIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    youngs_modulus_pa: Annotated[float, _pos(1e13, "Young's modulus [Pa].")]
+    density_kg_m3: Annotated[float, _pos(1e5, "Density [kg/m^3].")]
+
+
+class CatalogScrewIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    catalog_id: str = Field(max_length=100, description="A screw id from /api/v1/select.")
+
+
+class CustomScrewIn(BaseModel):
+    """A screw that is not in the catalog. Diameters and lead in mm."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    outer_diameter_mm: Annotated[float, _pos(1000.0, "Outer diameter [mm].")]
+    root_diameter_mm: Annotated[float, _pos(1000.0, "Root (minor) diameter [mm].")]
+    lead_mm: Annotated[float, _pos(1000.0, "Lead [mm].")]
+    thread_half_angle_deg: Annotated[
+        float, Field(ge=0, le=30, allow_inf_nan=False, description="Flank half-angle [deg].")
+    ] = 14.5
+    friction_dynamic: Annotated[float, _pos(1.0, "Running friction coefficient.")]
+    friction_static: Annotated[float, _pos(1.0, "Static friction coefficient.")]
+    material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
+    drag_torque_nm: Annotated[
+        float, Field(ge=0, le=1e4, allow_inf_nan=False, description="Nut drag torque [N m].")
+    ] = 0.0
+    inertia_kg_m2_per_m: Annotated[
+        float | None, _pos(1e3, "Inertia per length [kg m^2/m]; default: rod at the root.")
+    ] = None
+    pv_limit_mpa_m_s: Annotated[float | None, _pos(1e3, "Nut PV limit [MPa m/s].")] = None
+
+    @field_validator("root_diameter_mm")
+    @classmethod
+    def _root_below_outer(cls, value: float, info: ValidationInfo) -> float:
+        outer = info.data.get("outer_diameter_mm")
+        if outer is not None and value >= outer:
+            raise ValueError("must be smaller than outer_diameter_mm")
+        return value
+
+    @field_validator("lead_mm")
+    @classmethod
+    def _lead_drivable(cls, value: float, info: ValidationInfo) -> float:
+        outer, root = info.data.get("outer_diameter_mm"), info.data.get("root_diameter_mm")
+        # past a 68 deg lead angle a sliding thread at friction <= 1 cannot be driven
+        if outer is not None and root is not None and value > 2.5 * math.pi * (outer + root) / 2:
+            raise ValueError("too long for this diameter (lead angle above 68 deg)")
+        return value
+
+
+def _screw_kind(data: Any) -> str:
+    has_id = isinstance(data, dict) and "catalog_id" in data
+    return "catalog" if has_id or isinstance(data, CatalogScrewIn) else "custom"
+
+
+ScrewIn = Annotated[
+    Annotated[CatalogScrewIn, Tag("catalog")] | Annotated[CustomScrewIn, Tag("custom")],
+    Discriminator(_screw_kind),
+]
+
+
+class EvaluateIn(BaseModel):
+    """One application and one screw: ``{"catalog_id": ...}`` or a custom geometry."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    application: ApplicationIn
+    screw: ScrewIn
+
+
+class CheckOut(BaseModel):
+    name: str
+    label: str
+    passed: bool
+    value: float | None
+    limit: float | None
+    unit: str
+    utilization: float | None
+    message: str
+    formula: str
+    sources: list[str]
+    fix: str | None
+
+
+class ProvenanceOut(BaseModel):
+    kind: Literal["seed", "handbook", "derived", "assumed", "user"]
+    source: str
+
+
+class TorqueOut(BaseModel):
+    inertia_nm: float
+    inertia_screw_nm: float
+    inertia_mass_nm: float
+    drag_nm: float
+    drag_range_nm: list[float]
+    load_nm: float
+    total_nm: float
+    breakaway_nm: float
+    safety_factor: float
+    required_nm: float
+
+
+class CriticalSpeedOut(BaseModel):
+    theoretical_rpm: float
+    allowed_rpm: float
+    safety_factor: float
+    end_fixity: str
+
+
+class BucklingOut(BaseModel):
+    applies: bool
+    critical_load_n: float
+    allowed_load_n: float
+    safety_factor: float
+
+
+class PVOut(BaseModel):
+    value_mpa_m_s: float
+    limit_mpa_m_s: float | None
+    pressure_mpa: float
+    surface_speed_m_s: float
+    max_load_n: float | None
+    max_speed_mm_s: float | None
+
+
+class HoldingTorqueOut(BaseModel):
+    seed_method_nm: float
+    physics_nm: float
+
+
+class LifeOut(BaseModel):
+    travel_million_cm: list[float]
+    years: list[float] | None
+    note: str
+
+
+class AccuracyOut(BaseModel):
+    lead_error_mm: float | None
+    repeatability_mm: float | None
+    backlash_mm: list[float]
+    thermal_growth_mm: float | None
+
+
+class OutgassingOut(BaseModel):
+    hours: float
+    weight_loss_percent: float
+
+
+class CandidateOut(BaseModel):
+    id: str
+    series: str
+    series_name: str
+    anti_backlash: bool
+    outer_diameter_mm: float
+    root_diameter_mm: float
+    pitch_diameter_mm: float
+    lead_mm: float
+    lead_angle_deg: float
+    coated: bool
+    axial_load_n: float
+    rpm: float
+    efficiency: float
+    efficiency_square_thread: float
+    backdrive_efficiency: float
+    self_locking: bool
+    seed_rule_no_backdrive: bool
+    max_self_locking_lead_mm: float
+    holding_torque: HoldingTorqueOut
+    torque: TorqueOut
+    critical_speed: CriticalSpeedOut
+    buckling: BucklingOut
+    pv: PVOut
+    traverse_speed_limit_mm_s: float
+    traverse_extrapolated: bool
+    life: LifeOut | None
+    accuracy: AccuracyOut
+    outgassing: list[OutgassingOut] | None
+    checks: list[CheckOut]
+    governing_check: str | None
+    passed: bool
+    fix: str | None
+    provenance: dict[str, ProvenanceOut]
+
+
+class CountsOut(BaseModel):
+    evaluated: int
+    passed: int
+    rejected: int
+    failed_by_check: dict[str, int]
+
+
+class SummaryOut(BaseModel):
+    message: str
+    most_excluding_check: str | None
+    best_rejected_id: str | None
+    input_change: dict[str, float]
+
+
+class SelectOut(BaseModel):
+    inputs: ApplicationIn
+    candidates: list[CandidateOut]
+    rejected: list[CandidateOut]
+    counts: CountsOut
+    summary: SummaryOut
+    catalog_version: str
+    share_url: str
+
+
+class EvaluateOut(BaseModel):
+    inputs: ApplicationIn
+    candidate: CandidateOut
+    catalog_version: str
+
+
+class SourcedOut(BaseModel):
+    value: Any
+    unit: str
+    provenance: ProvenanceOut
+
+
+class SeriesOut(BaseModel):
+    id: str
+    name: str
+    family: str
+    family_name: str
+    type: str
+    file: str
+    fields: dict[str, SourcedOut]
+    candidate_ids: list[str]
+
+
+class SeriesListOut(BaseModel):
+    catalog_version: str
+    series: list[SeriesOut]
+
+
+class HealthOut(BaseModel):
+    status: Literal["ok"]
+    version: str
+    catalog_version: str
+    candidates: int
+
+
+class ErrorDetail(BaseModel):
+    field: str
+    message: str
+
+
+class ErrorOut(BaseModel):
+    error: str
+    detail: list[ErrorDetail]

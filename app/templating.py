@@ -1,0 +1,7 @@
+"""The Jinja2 environment shared by page routes and error pages."""
+
+from fastapi.templating import Jinja2Templates
+
+from app.paths import resource_dir
+
+templates = Jinja2Templates(directory=str(resource_dir("templates")))

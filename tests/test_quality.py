@@ -1,0 +1,94 @@
+"""Repository rules: lint, format, types, and the core's independence from the web."""
+
+import ast
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+WEB_PACKAGES = {"fastapi", "starlette", "jinja2", "pydantic", "pydantic_settings", "plotly"}
+
+
+def _run(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", *args], cwd=ROOT, capture_output=True, text=True, check=False
+    )
+
+
+def test_ruff_lint() -> None:
+    result = _run("ruff", "check", "app", "tests", "bench")
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_ruff_format() -> None:
+    result = _run("ruff", "format", "--check", "app", "tests", "bench")
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_mypy_app() -> None:
+    result = _run("mypy", "app")
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def _imports(path: Path) -> set[str]:
+    tree = ast.parse(path.read_text(), filename=str(path))
+    names: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names.update(alias.name.split(".")[0] for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            names.add(node.module.split(".")[0])
+    return names
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "app" / "core").glob("*.py")), ids=lambda p: p.name)
+def test_core_has_no_web_imports(path: Path) -> None:
+    assert not _imports(path) & WEB_PACKAGES
+
+
+def test_import_scan_catches_a_web_import(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.py"
+    bad.write_text("from fastapi import FastAPI\nimport pydantic.fields\n")
+    assert _imports(bad) & WEB_PACKAGES == {"fastapi", "pydantic"}
+
+
+def test_dockerfile_copies_existing_paths() -> None:
+    lines = (ROOT / "Dockerfile").read_text().splitlines()
+    copied = [part for line in lines if line.startswith("COPY ") for part in line.split()[1:-1]]
+    assert copied, "Dockerfile copies nothing"
+    for path in copied:
+        assert (ROOT / path).exists(), f"Dockerfile copies missing {path}"
+    text = "\n".join(lines)
+    assert "USER " in text and "EXPOSE 8000" in text and "/api/v1/health" in text
+
+
+def test_ci_runs_the_readme_test_command() -> None:
+    readme = (ROOT / "README.md").read_text()
+    assert "python3 -m pip install -e '.[test]' && python3 -m pytest" in readme
+    assert "README.md" in (ROOT / ".ci" / "run").read_text()
+
+
+@pytest.mark.skipif(shutil.which("git") is None, reason="needs git")
+def test_wheel_carries_templates_static_and_catalog(tmp_path: Path) -> None:
+    result = _run(
+        "pip", "wheel", "--no-deps", "--no-build-isolation", "-w", str(tmp_path), str(ROOT)
+    )
+    if result.returncode != 0 and "hatchling" in (result.stdout + result.stderr):
+        result = _run("pip", "wheel", "--no-deps", "-w", str(tmp_path), str(ROOT))
+    assert result.returncode == 0, result.stdout + result.stderr
+    import zipfile
+
+    wheel = next(tmp_path.glob("*.whl"))
+    names = set(zipfile.ZipFile(wheel).namelist())
+    for required in (
+        "app/templates/index.html",
+        "app/static/css/app.css",
+        "app/catalog_data/common.toml",
+        "app/catalog_data/zbx-series.toml",
+        "app/core/selection.py",
+    ):
+        assert required in names
+    assert any(n.startswith("app/static/vendor/htmx-2") for n in names)
