@@ -16,6 +16,7 @@ from typing import Any
 
 from app.core import geometry, pv
 from app.core.model import Provenance, ScrewSpec
+from app.core.screening import CandidateTable
 from app.paths import resource_dir
 
 PROVENANCE_KINDS = ("seed", "handbook", "derived", "assumed")
@@ -59,9 +60,12 @@ class Series:
 
 @dataclass(frozen=True, slots=True)
 class Catalog:
+    """Every series, every expanded candidate, and the candidates as screening columns."""
+
     version: str
     series: Mapping[str, Series]
     screws: tuple[ScrewSpec, ...]
+    table: CandidateTable
     by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)
 
 
@@ -393,5 +397,6 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         version=f"{version or 'catalog'}+{digest.hexdigest()[:8]}",
         series=by_series,
         screws=screws,
+        table=CandidateTable.build(screws),
         by_id={screw.id: screw for screw in screws},
     )

@@ -16,7 +16,7 @@ class UnknownScrew(LookupError):
 
 def run_selection(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
     """Select and rank over the catalog; the API's select response as a dict."""
-    selection = select(inputs.to_core(), catalog.screws)
+    selection = select(inputs.to_core(), catalog.table)
     return {
         "inputs": inputs.model_dump(),
         **selection_dict(selection),

@@ -55,7 +55,8 @@ def max_length_for_load(length_m: float, allowed_load_n: float, load_n: float) -
     >>> max_length_for_load(1.0, 400.0, 100.0)
     2.0
     """
-    return length_m * math.sqrt(allowed_load_n / load_n)
+    ratio: float = (allowed_load_n / load_n) ** 0.5
+    return length_m * ratio
 
 
 def min_root_diameter_for_load(
@@ -66,4 +67,5 @@ def min_root_diameter_for_load(
     >>> round(min_root_diameter_for_load(0.01, 100.0, 1600.0), 6)
     0.02
     """
-    return root_diameter_m * float((load_n / allowed_load_n) ** 0.25)
+    ratio: float = (load_n / allowed_load_n) ** 0.25
+    return root_diameter_m * ratio

@@ -2,7 +2,8 @@
 
 omega_c = (beta / L)^2 sqrt(E I / (rho A)) with I / A = d_r^2 / 16 for a round shaft of
 root diameter d_r (Euler-Bernoulli beam, Blevins [5] table 8-1). Reduces to Thomson's
-n_c = 4.76e6 d_r / L^2 [rpm, in] for steel, simple-simple [3].
+n_c = 4.76e6 d_r / L^2 [rpm, in] for steel, simple-simple [3]. Arithmetic only: each
+formula accepts floats or NumPy arrays.
 """
 
 import math
@@ -36,9 +37,9 @@ def critical_speed_rpm(
     475.2
     """
     beta = END_FIXITY_BETA[end_fixity]
-    omega = (
+    omega: float = (
         (beta / length_m) ** 2
-        * math.sqrt(youngs_modulus_pa / density_kg_m3)
+        * (youngs_modulus_pa / density_kg_m3) ** 0.5
         * (root_diameter_m / 4.0)
     )
     return omega * 60.0 / (2.0 * math.pi)
@@ -63,7 +64,8 @@ def max_length_for_speed(length_m: float, allowed_rpm: float, operating_rpm: flo
     >>> max_length_for_speed(1.0, 400.0, 100.0)
     2.0
     """
-    return length_m * math.sqrt(allowed_rpm / operating_rpm)
+    ratio: float = (allowed_rpm / operating_rpm) ** 0.5
+    return length_m * ratio
 
 
 def min_root_diameter_for_speed(

@@ -34,14 +34,20 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
     force_n = axial_load(app)
     d_p = geometry.pitch_diameter(screw.outer_diameter_m, screw.root_diameter_m)
     h = geometry.thread_depth(screw.outer_diameter_m, screw.root_diameter_m)
+    tan_l = geometry.tan_lead_angle(screw.lead_m, d_p)
     lam = geometry.lead_angle(screw.lead_m, d_p)
     rpm = geometry.screw_speed_rpm(app.speed_m_s, screw.lead_m)
-    a_n = screw.thread_half_angle_rad
+    cos_a = math.cos(screw.thread_half_angle_rad)
 
-    eta = efficiency.forward_efficiency(lam, screw.friction_dynamic, a_n)
-    eta_static = efficiency.forward_efficiency(lam, screw.friction_static, a_n)
-    eta_b = efficiency.backdrive_efficiency(lam, screw.friction_static, a_n)
-    self_locking = efficiency.is_self_locking(lam, screw.friction_static, a_n)
+    eta = efficiency.forward_efficiency(tan_l, screw.friction_dynamic, cos_a)
+    eta_static = efficiency.forward_efficiency(tan_l, screw.friction_static, cos_a)
+    eta_b = efficiency.backdrive_efficiency(tan_l, screw.friction_static, cos_a)
+    self_locking = efficiency.is_self_locking(tan_l, screw.friction_static, cos_a)
+    if min(eta, eta_static) <= 0.0:
+        raise ValueError(
+            f"{screw.id}: lead angle {math.degrees(lam):.1f} deg is too steep to drive "
+            f"against friction {screw.friction_dynamic:g}"
+        )
 
     alpha = torque_.angular_acceleration(app.accel_m_s2, screw.lead_m)
     j_screw = torque_.screw_inertia(screw.inertia_kg_m2_per_m, app.length_m)
@@ -50,11 +56,6 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
     t_inertia_mass = torque_.inertia_torque(j_mass, alpha)
     t_inertia = t_inertia_screw + t_inertia_mass
     t_drag = screw.drag_torque_max_nm
-    if min(eta, eta_static) <= 0.0:
-        raise ValueError(
-            f"{screw.id}: lead angle {math.degrees(lam):.1f} deg is too steep to drive "
-            f"against friction {screw.friction_static:g}"
-        )
     t_load = torque_.load_torque(force_n, screw.lead_m, eta)
     t_total = torque_.total_torque(t_inertia, t_drag, t_load)
     t_break = torque_.load_torque(force_n, screw.lead_m, eta_static) + t_drag
@@ -159,11 +160,11 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
         rpm=rpm,
         lead_angle_rad=lam,
         efficiency=eta,
-        efficiency_square_thread=efficiency.square_thread_efficiency(lam, screw.friction_dynamic),
+        efficiency_square_thread=efficiency.square_thread_efficiency(tan_l, screw.friction_dynamic),
         backdrive_efficiency=eta_b,
         self_locking=self_locking,
         seed_rule_no_backdrive=efficiency.seed_backdrive_rule(screw.lead_m, screw.outer_diameter_m),
-        max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, screw.friction_static, a_n),
+        max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, screw.friction_static, cos_a),
         holding_torque_seed_nm=(
             0.0 if self_locking else efficiency.holding_torque(force_n, screw.lead_m, eta)
         ),

@@ -1,4 +1,7 @@
-"""Screw geometry: lead, pitch diameter, thread depth, lead angle, speed [1]."""
+"""Screw geometry: lead, pitch diameter, thread depth, lead angle, speed [1].
+
+The formulas use arithmetic only, so each accepts floats or NumPy arrays alike.
+"""
 
 import math
 
@@ -47,6 +50,17 @@ def lead_angle(lead_m: float, pitch_diameter_m: float) -> float:
     return math.atan(lead_m / (math.pi * pitch_diameter_m))
 
 
+def tan_lead_angle(lead_m: float, pitch_diameter_m: float) -> float:
+    """tan(lambda) = lead / (pi d_p) [-], the form the efficiency formulas use.
+
+    Source: Shigley [2], eq. 8-1 geometry.
+
+    >>> round(tan_lead_angle(0.5 * math.pi, 1.0), 6)
+    0.5
+    """
+    return lead_m / (math.pi * pitch_diameter_m)
+
+
 def screw_speed_rpm(linear_speed_m_s: float, lead_m: float) -> float:
     """Screw speed n [rpm] = 60 v / lead, v [m/s], lead [m].
 
@@ -69,4 +83,5 @@ def helix_travel(lead_m: float, pitch_diameter_m: float) -> float:
     >>> round(helix_travel(0.0, 0.01), 6)
     0.031416
     """
-    return math.hypot(lead_m, math.pi * pitch_diameter_m)
+    travel: float = (lead_m**2 + (math.pi * pitch_diameter_m) ** 2) ** 0.5
+    return travel

@@ -1,5 +1,6 @@
 """Seed limits: traverse speed by lead band, length, coating environment, temperature [1]."""
 
+from itertools import pairwise
 from typing import NamedTuple
 
 
@@ -18,6 +19,21 @@ TRAVERSE_BANDS: tuple[tuple[float, float, float], ...] = (
 )
 
 
+def traverse_speed_limit_m_s(lead_m: float) -> float:
+    """Recommended maximum linear speed [m/s] for a lead [m], seed table [1].
+
+    Written as a sum of steps so that it accepts floats or NumPy arrays: the first
+    band's speed, plus each faster band's increase where lead >= its start.
+
+    >>> traverse_speed_limit_m_s(0.012), traverse_speed_limit_m_s(0.0119)
+    (0.25, 0.1)
+    """
+    speed = TRAVERSE_BANDS[0][2]
+    for (_, _, slower), (start, _, faster) in pairwise(TRAVERSE_BANDS):
+        speed = speed + (faster - slower) * (lead_m >= start)
+    return speed
+
+
 def traverse_speed_limit(lead_m: float) -> TraverseLimit:
     """Recommended maximum linear speed for optimum nut life [m/s], by lead band.
 
@@ -31,10 +47,7 @@ def traverse_speed_limit(lead_m: float) -> TraverseLimit:
     TraverseLimit(speed_m_s=0.1, extrapolated=True)
     """
     low, high = TRAVERSE_BANDS[0][0], TRAVERSE_BANDS[-1][1]
-    for start, _end, speed in reversed(TRAVERSE_BANDS):
-        if lead_m >= start:
-            return TraverseLimit(speed, lead_m > high)
-    return TraverseLimit(TRAVERSE_BANDS[0][2], lead_m < low)
+    return TraverseLimit(traverse_speed_limit_m_s(lead_m), not low <= lead_m <= high)
 
 
 def tfe_allowed(oil_present: bool) -> bool:

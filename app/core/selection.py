@@ -1,12 +1,13 @@
-"""Selection: evaluate every candidate, rank the passing ones, explain the rejected."""
+"""Selection: screen every candidate, rank the passing ones, explain the rejected."""
 
 from collections import Counter
-from collections.abc import Callable, Iterable
+from collections.abc import Mapping, Sequence
+
+import numpy as np
 
 from app.core.evaluate import evaluate
 from app.core.model import Application, Evaluation, ScrewSpec, Selection, Summary
-
-LEAD_MATCH_TOLERANCE = 0.005  # relative; 12.7 mm and 12.5 mm are different leads
+from app.core.screening import CandidateTable, Screening, screen
 
 INPUT_LABELS = {
     "load_n": ("load", "N", 1.0),
@@ -15,57 +16,52 @@ INPUT_LABELS = {
 }
 
 
-def lead_matches(lead_m: float, wanted_m: float | None) -> bool:
-    """True when no lead is asked for, or the candidate's lead is that lead (0.5 %)."""
-    return wanted_m is None or abs(lead_m - wanted_m) <= LEAD_MATCH_TOLERANCE * wanted_m
+def _rank_order(app: Application, table: CandidateTable, s: Screening) -> np.ndarray:
+    """Positions of passing candidates (in ``s``) in rank order, stable.
+
+    torque: lowest total drive torque; margin: lowest worst utilisation; life: longest
+    rated life (unrated last); size: smallest outer diameter. Ties: lower torque.
+    """
+    pos = np.flatnonzero(s.passed)
+    idx = s.index[pos]
+    torque, util = s.total_torque_nm[pos], s.max_utilization[pos]
+    primary = {
+        "torque": torque,
+        "margin": util,
+        "life": -np.nan_to_num(table.life_min_m[idx]),
+        "size": table.outer_diameter_m[idx],
+    }[app.rank_by]
+    secondary = util if app.rank_by == "torque" else torque
+    return pos[np.lexsort((secondary, primary))]
 
 
-def coating_matches(coated: bool, choice: str) -> bool:
-    """auto: both; tfe: coated only; none: uncoated only."""
-    return choice == "auto" or coated == (choice == "tfe")
-
-
-def eligible(app: Application, screws: Iterable[ScrewSpec]) -> list[ScrewSpec]:
-    """Candidates that match the asked lead and coating choice."""
-    return [
-        s
-        for s in screws
-        if lead_matches(s.lead_m, app.lead_m) and coating_matches(s.coated, app.coating)
-    ]
-
-
-def _life_key(ev: Evaluation) -> float:
-    """Rated life travel, low end [m]; unrated (free-wheeling) series rank last."""
-    return 0.0 if ev.life is None else ev.life.travel_min_m
-
-
-RANK_KEYS: dict[str, Callable[[Evaluation], tuple[float, ...]]] = {
-    "torque": lambda ev: (ev.torque.total_nm, ev.max_utilization),
-    "margin": lambda ev: (ev.max_utilization, ev.torque.total_nm),
-    "life": lambda ev: (-_life_key(ev), ev.torque.total_nm),
-    "size": lambda ev: (ev.screw.outer_diameter_m, ev.torque.total_nm),
-}
-
-
-def select(app: Application, screws: Iterable[ScrewSpec]) -> Selection:
-    """Evaluate every eligible screw, rank passing ones by ``app.rank_by``.
+def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -> Selection:
+    """Screen every eligible candidate and rank the passing ones by ``app.rank_by``.
 
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
-    nearest-to-passing first (lowest worst utilization) and cut to the same limit;
-    counts cover everything evaluated.
+    nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
+    counts cover everything screened. Only the returned candidates are fully evaluated.
     """
-    evaluations = [evaluate(app, s) for s in eligible(app, screws)]
-    passing = sorted((e for e in evaluations if e.passed), key=RANK_KEYS[app.rank_by])
-    failing = sorted((e for e in evaluations if not e.passed), key=lambda e: e.max_utilization)
-    by_check: Counter[str] = Counter(c.name for e in failing for c in e.failed_checks)
+    table = (
+        candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)
+    )
+    s = screen(app, table)
+    ranked = _rank_order(app, table, s)[: app.limit]
+    failing = np.flatnonzero(~s.passed)
+    nearest = failing[np.argsort(s.max_utilization[failing], kind="stable")][: app.limit]
+    passing = tuple(evaluate(app, table.screws[s.index[p]]) for p in ranked)
+    rejected = tuple(evaluate(app, table.screws[s.index[p]]) for p in nearest)
+    by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
+    by_check = Counter({k: v for k, v in by_check.items() if v})
+    n_passed = int(s.passed.sum())
     return Selection(
         application=app,
-        candidates=tuple(passing[: app.limit]),
-        rejected=tuple(failing[: app.limit]),
-        evaluated=len(evaluations),
-        passed=len(passing),
+        candidates=passing,
+        rejected=rejected,
+        evaluated=len(s.index),
+        passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
-        summary=summarize(app, len(evaluations), passing, failing, by_check),
+        summary=summarize(app, len(s.index), n_passed, rejected[:1], by_check),
     )
 
 
@@ -73,7 +69,8 @@ def input_change(best: Evaluation) -> dict[str, float]:
     """Inputs that, changed together, clear every failed numeric check of ``best``.
 
     Each failed check offers alternatives (e.g. PV: lower load or lower speed); pick the
-    input that the most failed checks share, and its tightest value.
+    input that the most failed checks share, and its tightest value. Empty when a failed
+    check has no input remedy (e.g. a yes/no check).
     """
     failed = best.failed_checks
     if not failed or any(not c.input_limits for c in failed):
@@ -89,12 +86,11 @@ def input_change(best: Evaluation) -> dict[str, float]:
     return change
 
 
-def describe_change(app: Application, change: dict[str, float]) -> str:
+def describe_change(app: Application, change: Mapping[str, float]) -> str:
     parts = []
     for key, value in change.items():
         label, unit, scale = INPUT_LABELS[key]
-        current = getattr(app, key)
-        verb = "reduce" if value < current else "set"
+        verb = "reduce" if value < getattr(app, key) else "set"
         parts.append(f"{verb} the {label} to {value * scale:.4g} {unit}")
     return " and ".join(parts)
 
@@ -102,8 +98,8 @@ def describe_change(app: Application, change: dict[str, float]) -> str:
 def summarize(
     app: Application,
     evaluated: int,
-    passing: list[Evaluation],
-    failing: list[Evaluation],
+    passed: int,
+    nearest: Sequence[Evaluation],
     by_check: Counter[str],
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix."""
@@ -118,11 +114,9 @@ def summarize(
             {},
             f"No catalog screw{lead} matches the coating choice; try another lead or 'any'.",
         )
-    if passing:
-        return Summary(
-            worst, worst_count, None, {}, f"{len(passing)} of {evaluated} candidates pass."
-        )
-    best = failing[0]
+    if passed:
+        return Summary(worst, worst_count, None, {}, f"{passed} of {evaluated} candidates pass.")
+    best = nearest[0]
     change = input_change(best)
     fixes = " ".join(c.fix for c in best.failed_checks if c.fix)
     how = describe_change(app, change)
