@@ -25,6 +25,11 @@ COATINGS = ("none", "tfe")
 MM = 1e-3
 INCHES_PER_M = 1 / 0.0254
 COMMON = "common.toml"
+UNRATED_LIFE = Provenance(
+    "derived",
+    "no life rating in the catalog for this series (the seed lists N/A for the "
+    "free-wheeling B series)",
+)
 
 
 class CatalogError(ValueError):
@@ -283,6 +288,7 @@ def _build_series(
         for coated, v in variants.items():
             prov = {k: s.provenance for k, s in fields.items()}
             prov.update({k: s.provenance for k, s in v.items()})
+            prov.setdefault("life", UNRATED_LIFE)
             prov["lead"] = entry.prov("leads_mm")
             prov["coating"] = entry.prov("coatings")
             life = v.get("life")

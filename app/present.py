@@ -8,6 +8,11 @@ from app.core.model import Evaluation, Provenance, ScrewSpec, Selection
 from app.schemas import CustomScrewIn, MaterialIn
 from app.units import CHECK_UNITS
 
+TORQUE_NOTE = (
+    "Torque of the screw assembly alone; bearings, motor shaft, moving parts and "
+    "misalignment are extra (seed). The torque safety factor covers them: 1.0 by default, "
+    "1.3 to 2 is common at the planning stage."
+)
 LIFE_NOTE = (
     "Life varies with load, environment and duty cycle; longer leads generally last longer (seed)."
 )
@@ -99,6 +104,7 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
             "breakaway_nm": t.breakaway_nm,
             "safety_factor": t.safety_factor,
             "required_nm": t.required_nm,
+            "note": TORQUE_NOTE,
         },
         "critical_speed": {
             "theoretical_rpm": ev.critical_speed.theoretical_rpm,

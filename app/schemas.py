@@ -215,6 +215,7 @@ class TorqueOut(BaseModel):
     breakaway_nm: float
     safety_factor: float
     required_nm: float
+    note: str
 
 
 class CriticalSpeedOut(BaseModel):
@@ -313,6 +314,12 @@ class SummaryOut(BaseModel):
     input_change: dict[str, float]
 
 
+class FormulaOut(BaseModel):
+    formula: str
+    function: str
+    source: str
+
+
 class SelectOut(BaseModel):
     inputs: ApplicationIn
     candidates: list[CandidateOut]
@@ -321,12 +328,16 @@ class SelectOut(BaseModel):
     summary: SummaryOut
     catalog_version: str
     share_url: str
+    formulas: dict[str, FormulaOut] = Field(
+        description="Quantity (dotted path in a candidate) -> formula, core function, source."
+    )
 
 
 class EvaluateOut(BaseModel):
     inputs: ApplicationIn
     candidate: CandidateOut
     catalog_version: str
+    formulas: dict[str, FormulaOut]
 
 
 class SourcedOut(BaseModel):

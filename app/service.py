@@ -5,6 +5,7 @@ from typing import Any
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.selection import select
+from app.formulas import FORMULAS
 from app.present import candidate_dict, custom_screw, selection_dict
 from app.schemas import ApplicationIn, CatalogScrewIn, CustomScrewIn
 from app.share import share_query
@@ -22,6 +23,7 @@ def run_selection(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
         **selection_dict(selection),
         "catalog_version": catalog.version,
         "share_url": "/?" + share_query(inputs),
+        "formulas": FORMULAS,
     }
 
 
@@ -40,4 +42,5 @@ def run_evaluation(
         "inputs": inputs.model_dump(),
         "candidate": candidate_dict(evaluate(app, spec), app.vacuum),
         "catalog_version": catalog.version,
+        "formulas": FORMULAS,
     }

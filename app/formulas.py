@@ -1,0 +1,133 @@
+"""The formula behind each reported quantity: text, the core function, and the source.
+
+Served with every result (``formulas`` in the API, the detail view on the page), so each
+number can be traced to its formula and from there to the catalog values and provenance.
+"""
+
+from typing import TypedDict
+
+
+class Formula(TypedDict):
+    formula: str
+    function: str
+    source: str
+
+
+SEED = "seed catalog, Leadscrew Assemblies: Design and Engineering Data"
+SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed., sec. 8-2"
+
+
+def _f(formula: str, function: str, source: str) -> Formula:
+    return {"formula": formula, "function": f"app.core.{function}", "source": source}
+
+
+FORMULAS: dict[str, Formula] = {
+    "pitch_diameter_mm": _f("d_p = (OD + RD) / 2", "geometry.pitch_diameter", SEED),
+    "lead_angle_deg": _f("lambda = atan(lead / (pi d_p))", "geometry.lead_angle", SHIGLEY),
+    "rpm": _f("n = 60 v / lead", "geometry.screw_speed_rpm", SEED + " (RS = speed / lead)"),
+    "axial_load_n": _f("F = load (+ m g when vertical)", "evaluate.axial_load", "statics"),
+    "efficiency": _f(
+        "eta = (cos a_n - mu tan l) / (cos a_n + mu / tan l), mu dynamic",
+        "efficiency.forward_efficiency",
+        SHIGLEY + " (Acme form)",
+    ),
+    "efficiency_square_thread": _f(
+        "eta = tan l / tan(l + atan mu)",
+        "efficiency.square_thread_efficiency",
+        SHIGLEY + " (square thread, manufacturer's form)",
+    ),
+    "backdrive_efficiency": _f(
+        "eta_b = (cos a_n tan l - mu_s) / (tan l (cos a_n + mu_s tan l)), 0 if negative",
+        "efficiency.backdrive_efficiency",
+        SHIGLEY,
+    ),
+    "self_locking": _f("mu_s >= cos a_n tan l", "efficiency.is_self_locking", SHIGLEY),
+    "seed_rule_no_backdrive": _f(
+        "lead < OD / 8", "efficiency.seed_backdrive_rule", SEED + " (Back Driving)"
+    ),
+    "max_self_locking_lead_mm": _f(
+        "lead = pi d_p mu_s / cos a_n", "efficiency.max_self_locking_lead", SHIGLEY
+    ),
+    "holding_torque.seed_method_nm": _f(
+        "T_b = F lead eta / (2 pi), forward eta",
+        "efficiency.holding_torque",
+        SEED + " (Back Driving)",
+    ),
+    "holding_torque.physics_nm": _f(
+        "T_b = F lead eta_b / (2 pi), back-drive eta", "efficiency.holding_torque", SHIGLEY
+    ),
+    "torque.inertia_screw_nm": _f(
+        "T = (J/L x L) x 2 pi a / lead",
+        "torque.inertia_torque",
+        SEED + " (Inertia Torque T = I alpha)",
+    ),
+    "torque.inertia_mass_nm": _f(
+        "T = m (lead / 2 pi)^2 x 2 pi a / lead",
+        "torque.reflected_mass_inertia",
+        "kinematic equivalence",
+    ),
+    "torque.drag_nm": _f(
+        "top of the series' static drag range",
+        "evaluate.evaluate",
+        SEED + " (Static Frictional Torque)",
+    ),
+    "torque.load_nm": _f(
+        "T = F lead / (2 pi eta)", "torque.load_torque", SEED + " (Torque To Move Load)"
+    ),
+    "torque.total_nm": _f(
+        "T = T_inertia + T_drag + T_load",
+        "torque.total_torque",
+        SEED + " (Torque: sum of three components)",
+    ),
+    "torque.breakaway_nm": _f(
+        "T = F lead / (2 pi eta_static) + T_drag",
+        "torque.load_torque",
+        SEED + " with static friction",
+    ),
+    "torque.required_nm": _f(
+        "T = SF x max(T_total, T_breakaway)", "evaluate.evaluate", "user torque margin"
+    ),
+    "critical_speed.theoretical_rpm": _f(
+        "n_c = 60 / (2 pi) (beta / L)^2 sqrt(E / rho) d_r / 4",
+        "critical_speed.critical_speed_rpm",
+        "Blevins, Formulas for Natural Frequency, table 8-1; Thomson n_c = 4.76e6 d_r / L^2",
+    ),
+    "critical_speed.allowed_rpm": _f(
+        "n = SF x n_c", "critical_speed.allowed_speed_rpm", "Thomson (80 % of critical)"
+    ),
+    "buckling.critical_load_n": _f(
+        "F_cr = k pi^2 E (pi d_r^4 / 64) / L^2",
+        "buckling.euler_critical_load",
+        "Euler; Timoshenko & Gere",
+    ),
+    "buckling.allowed_load_n": _f(
+        "F = SF x F_cr", "buckling.allowed_buckling_load", "lead-screw practice (0.5)"
+    ),
+    "pv.value_mpa_m_s": _f(
+        "PV = F / (3 H.T. h) x n H.T.",
+        "pv.pv_value",
+        SEED + " (PV Calculation, 3 threads in contact)",
+    ),
+    "pv.pressure_mpa": _f("P = F / (3 H.T. h)", "pv.contact_pressure", SEED),
+    "pv.surface_speed_m_s": _f(
+        "V = n H.T., H.T. = sqrt(lead^2 + (pi d_p)^2)", "pv.surface_speed", SEED
+    ),
+    "pv.max_load_n": _f("F = PV_lim 3 h / n", "pv.max_load_for_pv", SEED + " (inverted)"),
+    "pv.max_speed_mm_s": _f("v = lead x PV_lim 3 h / F", "pv.max_rpm_for_pv", SEED + " (inverted)"),
+    "traverse_speed_limit_mm_s": _f(
+        "band table by lead", "limits.traverse_speed_limit", SEED + " (Traverse Speed)"
+    ),
+    "life.years": _f(
+        "years = rated travel / (2 stroke x cycles/day x 365)",
+        "life.life_years",
+        SEED + " (Anti-Backlash Life)",
+    ),
+    "accuracy.lead_error_mm": _f(
+        "e = lead accuracy x stroke", "accuracy.cumulative_lead_error", SEED + " (Screw Accuracy)"
+    ),
+    "accuracy.thermal_growth_mm": _f(
+        "dL = alpha stroke (T - 20 C)",
+        "accuracy.thermal_growth",
+        "303 stainless 17.3e-6 /K (ASM Handbook)",
+    ),
+}

@@ -1,0 +1,81 @@
+"""Rules that keep results traceable: formulas name real functions and real fields, and
+the catalog README's example is a catalog that loads."""
+
+import importlib
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.catalog import load_catalog
+from app.formulas import FORMULAS
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.mark.parametrize("key", sorted(FORMULAS))
+def test_formula_names_an_existing_core_function(key: str) -> None:
+    module, _, name = FORMULAS[key]["function"].rpartition(".")
+    assert callable(getattr(importlib.import_module(module), name))
+
+
+def _lookup(candidate: dict[str, Any], dotted: str) -> Any:
+    value: Any = candidate
+    for part in dotted.split("."):
+        value = value[part]
+    return value
+
+
+def test_every_formula_key_is_a_field_of_a_candidate(client: TestClient) -> None:
+    body = client.post(
+        "/api/v1/select",
+        json={
+            "load_n": 100,
+            "speed_mm_s": 50,
+            "length_mm": 500,
+            "lead_mm": 10,
+            "stroke_mm": 300,
+            "cycles_per_day": 100,
+            "require_anti_backlash": True,
+        },
+    ).json()
+    assert body["formulas"].keys() == FORMULAS.keys()
+    candidate = body["candidates"][0]
+    for key in FORMULAS:
+        _lookup(candidate, key)  # KeyError names a formula for a field that does not exist
+
+
+def test_candidate_provenance_covers_every_check_source(client: TestClient) -> None:
+    body = client.get(
+        "/api/v1/select",
+        params={
+            "load_n": 100,
+            "speed_mm_s": 50,
+            "length_mm": 500,
+            "orientation": "vertical",
+            "require_anti_backlash": True,
+            "max_torque_nm": 1,
+            "stroke_mm": 200,
+            "cycles_per_day": 50,
+            "required_life_years": 1,
+            "positioning_tolerance_mm": 0.5,
+        },
+    ).json()
+    for candidate in body["candidates"] + body["rejected"]:
+        for check in candidate["checks"]:
+            for source in check["sources"]:
+                assert source in candidate["provenance"], (candidate["id"], source)
+
+
+def test_catalog_readme_example_loads(tmp_path: Path) -> None:
+    readme = (ROOT / "catalog" / "README.md").read_text()
+    blocks = re.findall(r"```toml\n(.*?)```", readme, flags=re.S)
+    example = next(b for b in blocks if "[[series]]" in b)
+    (tmp_path / "my-series.toml").write_text(example)
+    catalog = load_catalog([tmp_path])
+    assert "MY10" in catalog.series
+    screw = catalog.by_id["MY10-L2"]
+    assert screw.root_diameter_m == pytest.approx(0.0075)
+    assert catalog.series["MY10"].fields["root_diameter"].provenance.kind == "handbook"
