@@ -71,6 +71,7 @@ class Catalog:
     series: Mapping[str, Series]
     screws: tuple[ScrewSpec, ...]
     table: CandidateTable
+    materials: Mapping[str, "Material"]
     by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)
 
 
@@ -391,7 +392,7 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
     series, materials, version = _load_dir(builtin, {}, {}, digest)
     base_defaults = _read_toml(builtin / COMMON).get("defaults", {})
     for directory in extra_dirs:
-        more, _, _ = _load_dir(Path(directory), base_defaults, materials, digest)
+        more, materials, _ = _load_dir(Path(directory), base_defaults, materials, digest)
         series.extend(more)
     by_series: dict[str, Series] = {}
     for s in series:
@@ -404,5 +405,6 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         series=by_series,
         screws=screws,
         table=CandidateTable.build(screws),
+        materials=materials,
         by_id={screw.id: screw for screw in screws},
     )

@@ -1,13 +1,25 @@
 """Turn core results into the API's plain dicts (the same dicts feed the templates)."""
 
 import math
+from collections.abc import Mapping
 from typing import Any
 
-from app.catalog import Series
+from app.catalog import Material, Series
 from app.core.model import Evaluation, Provenance, ScrewSpec, Selection
 from app.schemas import CustomScrewIn, MaterialIn
 from app.units import CHECK_UNITS
 
+#: Catalog fields behind the geometry, efficiency and torque of every candidate.
+GEOMETRY_SOURCES = (
+    "outer_diameter",
+    "root_diameter",
+    "lead",
+    "friction_dynamic",
+    "friction_static",
+    "thread_half_angle",
+    "inertia_per_length",
+    "drag_torque",
+)
 TORQUE_NOTE = (
     "Torque of the screw assembly alone; bearings, motor shaft, moving parts and "
     "misalignment are extra (seed). The torque safety factor covers them: 1.0 by default, "
@@ -60,16 +72,7 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
         }
     acc = ev.accuracy
     fixes = [c.fix for c in ev.checks if c.fix]
-    used = {src for c in ev.checks for src in c.sources} | {
-        "outer_diameter",
-        "root_diameter",
-        "lead",
-        "friction_dynamic",
-        "friction_static",
-        "thread_half_angle",
-        "inertia_per_length",
-        "drag_torque",
-    }
+    used = {src for c in ev.checks for src in c.sources} | set(GEOMETRY_SOURCES)
     return {
         "id": s.id,
         "series": s.series_id,
@@ -200,21 +203,27 @@ def series_dict(series: Series) -> dict[str, Any]:
     }
 
 
-def custom_screw(data: CustomScrewIn) -> ScrewSpec:
-    """A ScrewSpec from a validated ``CustomScrewIn`` (user-given values)."""
-    materials = {"steel": (206e9, 7850.0, 11.7e-6), "stainless-303": (193e9, 8000.0, 17.3e-6)}
+def custom_screw(data: CustomScrewIn, materials: Mapping[str, Material]) -> ScrewSpec:
+    """A ScrewSpec from a validated ``CustomScrewIn``; named materials from the catalog."""
+    user = Provenance("user", "given in the request")
     if isinstance(data.material, MaterialIn):
-        e, rho, alpha = data.material.youngs_modulus_pa, data.material.density_kg_m3, 12e-6
+        e, rho = data.material.youngs_modulus_pa, data.material.density_kg_m3
+        alpha = materials["steel"].expansion_per_k.value
         material_name = "custom"
+        e_prov = rho_prov = user
     else:
-        e, rho, alpha = materials[data.material]
+        material = materials[data.material]
+        e, rho = material.youngs_modulus_pa.value, material.density_kg_m3.value
+        alpha = material.expansion_per_k.value
         material_name = data.material
+        e_prov, rho_prov = material.youngs_modulus_pa.provenance, material.density_kg_m3.provenance
     rd = data.root_diameter_mm * 1e-3
     inertia = data.inertia_kg_m2_per_m
     if inertia is None:
         inertia = rho * math.pi * rd**4 / 32  # solid rod at the root diameter, per metre
-    user = Provenance("user", "given in the request")
-    handbook = Provenance("handbook", f"{material_name}: E {e / 1e9:g} GPa, rho {rho:g} kg/m3")
+        inertia_prov = Provenance("derived", "solid rod at the root diameter: rho pi d_r^4 / 32")
+    else:
+        inertia_prov = user
     return ScrewSpec(
         id="custom",
         series_id="custom",
@@ -236,25 +245,10 @@ def custom_screw(data: CustomScrewIn) -> ScrewSpec:
         pv_limit_pa_m_s=None if data.pv_limit_mpa_m_s is None else data.pv_limit_mpa_m_s * 1e6,
         material_name=material_name,
         provenance={
-            **{
-                k: user
-                for k in (
-                    "outer_diameter",
-                    "root_diameter",
-                    "lead",
-                    "friction_dynamic",
-                    "friction_static",
-                    "thread_half_angle",
-                    "drag_torque",
-                    "pv_limit",
-                )
-            },
-            "inertia_per_length": user
-            if data.inertia_kg_m2_per_m is not None
-            else Provenance(
-                "derived", "solid rod at the root diameter: rho pi d_r^4 / 32 per metre"
-            ),
-            "youngs_modulus": user if material_name == "custom" else handbook,
-            "density": user if material_name == "custom" else handbook,
+            **dict.fromkeys(GEOMETRY_SOURCES, user),
+            "pv_limit": user,
+            "inertia_per_length": inertia_prov,
+            "youngs_modulus": e_prov,
+            "density": rho_prov,
         },
     )

@@ -36,7 +36,7 @@ def run_evaluation(
         if spec is None:
             raise UnknownScrew(screw.catalog_id)
     else:
-        spec = custom_screw(screw)
+        spec = custom_screw(screw, catalog.materials)
     app = inputs.to_core()
     return {
         "inputs": inputs.model_dump(),
