@@ -189,10 +189,10 @@ class CheckOut(BaseModel):
     name: str
     label: str
     passed: bool
-    value: float | None
-    limit: float | None
+    value: float | None = Field(description="Demand, in ``unit``; null for yes/no checks.")
+    limit: float | None = Field(description="Capacity, in ``unit``; null for yes/no checks.")
     unit: str
-    utilization: float | None
+    utilization: float | None = Field(description="value / limit; above 1 fails.")
     message: str
     formula: str
     sources: list[str]
@@ -277,12 +277,18 @@ class CandidateOut(BaseModel):
     coated: bool
     axial_load_n: float
     rpm: float
-    efficiency: float
-    efficiency_square_thread: float
-    backdrive_efficiency: float
-    self_locking: bool
-    seed_rule_no_backdrive: bool
-    max_self_locking_lead_mm: float
+    efficiency: float = Field(
+        description="Forward efficiency, Shigley's Acme form, dynamic friction (0-1)."
+    )
+    efficiency_square_thread: float = Field(
+        description="The manufacturer's square-thread form, for comparison (0-1)."
+    )
+    backdrive_efficiency: float = Field(
+        description="Efficiency of the load driving the screw, static friction; 0 = locks."
+    )
+    self_locking: bool = Field(description="mu_static >= cos(a_n) tan(lambda).")
+    seed_rule_no_backdrive: bool = Field(description="The seed's rule of thumb: lead < OD / 8.")
+    max_self_locking_lead_mm: float = Field(description="Longest lead that still self-locks.")
     holding_torque: HoldingTorqueOut
     torque: TorqueOut
     critical_speed: CriticalSpeedOut
@@ -294,10 +300,14 @@ class CandidateOut(BaseModel):
     accuracy: AccuracyOut
     outgassing: list[OutgassingOut] | None
     checks: list[CheckOut]
-    governing_check: str | None
-    passed: bool
-    fix: str | None
-    provenance: dict[str, ProvenanceOut]
+    governing_check: str | None = Field(
+        description="The check with the highest utilisation (or a failed yes/no check)."
+    )
+    passed: bool = Field(description="True when every check passes.")
+    fix: str | None = Field(description="For a rejected candidate, what would make it pass.")
+    provenance: dict[str, ProvenanceOut] = Field(
+        description="Catalog field -> provenance, for the fields this candidate's numbers use."
+    )
 
 
 class CountsOut(BaseModel):
