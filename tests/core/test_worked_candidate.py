@@ -1,0 +1,120 @@
+"""One catalog candidate, every check, against a hand calculation written out here.
+
+ZBX8000 (1/2 in, root 0.78 OD assumed), 10 mm lead, uncoated; 200 N vertical load with a
+2 kg moving mass, 80 mm/s, 600 mm between fixed-simple supports, 1 m/s^2; stroke 300 mm,
+200 cycles/day, 1 year required, 0.5 mm tolerance, 0.5 N m drive. Hand arithmetic uses
+only the formulas of the engineering reference, not the app's functions.
+"""
+
+import math
+
+import pytest
+
+from app.catalog import Catalog
+from app.core.evaluate import evaluate
+from app.core.model import Application, Evaluation
+
+G = 9.80665
+OD, RD, LEAD = 0.0127, 0.78 * 0.0127, 0.010
+MU_D, MU_S, ALPHA_N = 0.15, 0.08, math.radians(14.5)
+E, RHO = 193e9, 8000.0
+F = 200.0 + 2.0 * G
+V, L = 0.080, 0.600
+APP = Application(
+    load_n=200.0,
+    speed_m_s=V,
+    length_m=L,
+    lead_m=LEAD,
+    accel_m_s2=1.0,
+    moving_mass_kg=2.0,
+    end_fixity="fixed-simple",
+    orientation="vertical",
+    stroke_m=0.3,
+    cycles_per_day=200.0,
+    required_life_years=1.0,
+    positioning_tolerance_m=0.5e-3,
+    max_torque_nm=0.5,
+)
+
+D_P = (OD + RD) / 2
+H = (OD - RD) / 2
+TAN_L = LEAD / (math.pi * D_P)
+C = math.cos(ALPHA_N)
+ETA = (C - MU_D * TAN_L) / (C + MU_D / TAN_L)
+ETA_S = (C - MU_S * TAN_L) / (C + MU_S / TAN_L)
+RPM = 60 * V / LEAD
+ALPHA = 2 * math.pi * 1.0 / LEAD
+J = 3.67e-7 / 0.0254 * L + 2.0 * (LEAD / (2 * math.pi)) ** 2
+TOTAL = J * ALPHA + 0.04 + F * LEAD / (2 * math.pi * ETA)
+BREAK = F * LEAD / (2 * math.pi * ETA_S) + 0.04
+N_C = (3.9266 / L) ** 2 * math.sqrt(E / RHO) * RD / 4 * 60 / (2 * math.pi)
+F_CR = 2 * math.pi**2 * E * (math.pi * RD**4 / 64) / L**2
+PV = F / (3 * H) * RPM / 60  # H.T. cancels
+DESIGN = 3e6 * 3 * math.pi * D_P * H
+LIFE_YEARS = 100e6 * 0.01 / (2 * 0.3 * 200 * 365)
+ERROR = 0.0006 * 0.3 + 0.0 + 0.0013e-3
+SELF_LOCK_LEAD = math.pi * D_P * MU_S / C
+
+#: check name -> (hand value, hand limit); SI units as the core reports them.
+HAND = {
+    "torque": (max(TOTAL, BREAK), 0.5),
+    "critical_speed": (RPM, 0.8 * N_C),
+    "buckling": (F, 0.5 * F_CR),
+    "pv": (PV, 0.105e6),
+    "traverse_speed": (V, 0.100),
+    "design_load": (F, DESIGN),
+    "length": (L, 4.0),
+    "back_driving": (LEAD, SELF_LOCK_LEAD),
+    "life": (1.0, LIFE_YEARS),
+    "accuracy": (ERROR, 0.5e-3),
+}
+
+
+@pytest.fixture(scope="module")
+def worked(catalog: Catalog) -> Evaluation:
+    return evaluate(APP, catalog.by_id["ZBX8000-L10"])
+
+
+@pytest.mark.parametrize("name", sorted(HAND))
+def test_check_matches_hand_calculation(worked: Evaluation, name: str) -> None:
+    check = next(c for c in worked.checks if c.name == name)
+    value, limit = HAND[name]
+    assert check.value == pytest.approx(value, rel=1e-3)
+    assert check.limit == pytest.approx(limit, rel=1e-3)
+    assert check.passed == (value <= limit)
+
+
+def test_yes_no_checks(worked: Evaluation) -> None:
+    flags = {c.name: c.passed for c in worked.checks if c.value is None}
+    assert flags == {"temperature": True}  # 20 C within 0-93 C; uncoated: no oil check
+
+
+def test_torque_breakdown_by_hand(worked: Evaluation) -> None:
+    t = worked.torque
+    assert t.inertia_nm == pytest.approx(J * ALPHA, rel=1e-9)
+    assert t.drag_nm == 0.04  # top of the seed's 0.020-0.04 N m for ZBX8000
+    assert t.load_nm == pytest.approx(F * LEAD / (2 * math.pi * ETA), rel=1e-9)
+    assert t.total_nm == pytest.approx(TOTAL, rel=1e-9)
+    assert t.breakaway_nm == pytest.approx(BREAK, rel=1e-9)
+
+
+def test_backdriving_by_hand(worked: Evaluation) -> None:
+    """lambda = 15.6 deg > friction angle: back-drivable; the d/8 rule agrees."""
+    eta_b = (C * TAN_L - MU_S) / (TAN_L * (C + MU_S * TAN_L))
+    assert worked.backdrive_efficiency == pytest.approx(eta_b, rel=1e-9)
+    assert not worked.self_locking and not worked.seed_rule_no_backdrive
+    assert worked.holding_torque_seed_nm == pytest.approx(F * LEAD * ETA / (2 * math.pi))
+    assert worked.holding_torque_physics_nm == pytest.approx(F * LEAD * eta_b / (2 * math.pi))
+
+
+def test_print_worked_table(worked: Evaluation, capsys: pytest.CaptureFixture[str]) -> None:
+    """The table quoted in the issue note (run with -s to see it)."""
+    with capsys.disabled():
+        print("\ncheck            app value      hand value     app limit      hand limit   pass")
+        for name, (value, limit) in HAND.items():
+            c = next(c for c in worked.checks if c.name == name)
+            print(
+                f"{name:16} {c.value:<14.6g} {value:<14.6g} {c.limit:<14.6g} {limit:<12.6g} "
+                f"{c.passed}"
+            )
+    assert len(HAND) == 10
