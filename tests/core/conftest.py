@@ -1,0 +1,45 @@
+"""Shared pieces of the core tests: unit factors for the test edge and a reference screw.
+
+The core is SI throughout; published examples are in inches, pounds, psi and ft/min, so the
+tests convert at their own edge with these exact factors.
+"""
+
+import math
+from dataclasses import replace
+
+import pytest
+
+from app.catalog import Catalog
+from app.core.model import Application, ScrewSpec
+
+IN = 0.0254  # m per inch (exact)
+LBF = 4.4482216152605  # N per pound-force (exact)
+PSI = 6894.757293168  # Pa per psi
+FT_PER_MIN = 0.00508  # m/s per ft/min (exact)
+PSI_FT_MIN = PSI * FT_PER_MIN  # Pa m/s per psi ft/min
+
+STEEL_E, STEEL_RHO = 206e9, 7850.0  # engineering.md section 4, carbon steel
+SS303_E, SS303_RHO = 193e9, 8000.0  # engineering.md section 4, 303 stainless
+
+FIXITIES = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
+
+#: Acme 29-deg thread: cos of the 14.5 deg flank half-angle (engineering.md section 2)
+COS_ACME = math.cos(math.radians(14.5))
+
+
+@pytest.fixture(scope="session")
+def zbx8000_l10(catalog: Catalog) -> ScrewSpec:
+    """ZBX8000 (1/2 in), 10 mm lead, uncoated: a mid-catalog anti-backlash screw."""
+    return catalog.by_id["ZBX8000-L10"]
+
+
+@pytest.fixture(scope="session")
+def b8000_l10(catalog: Catalog) -> ScrewSpec:
+    """B8000 (1/2 in), 10 mm lead, uncoated: free-wheeling, no drag, no life rating."""
+    return catalog.by_id["B8000-L10"]
+
+
+def light_app(**changes: object) -> Application:
+    """A light horizontal axis that every mid-size screw passes; tests change one thing."""
+    base = Application(load_n=50.0, speed_m_s=0.05, length_m=0.5)
+    return replace(base, **changes)  # type: ignore[arg-type]
