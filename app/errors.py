@@ -1,5 +1,6 @@
 """One error type with an HTTP status, shown as JSON on /api and as HTML on pages."""
 
+import re
 from typing import Any
 
 from fastapi import Request
@@ -15,18 +16,31 @@ class AppError(Exception):
         self.status, self.error, self.detail = status, error, detail or []
 
 
+# Union members that pydantic puts in an error's location: the screw's discriminator tags,
+# a Literal member ("literal['steel','stainless-303']") and an input model ("MaterialIn";
+# input models are named *In). They are not fields a user wrote.
+_UNION_TAG = re.compile(r"catalog|custom|literal\[.*\]|[A-Z][A-Za-z]*In")
+
+
 def _field(loc: tuple[Any, ...]) -> str:
     parts = [str(p) for p in loc if p not in ("body", "query", "path")]
-    # union tags are not fields a user wrote
-    parts = [p for p in parts if p not in ("catalog", "custom")]
+    parts = [p for p in parts if not _UNION_TAG.fullmatch(p)]
     return ".".join(parts) or "request"
+
+
+def _detail(error: Any) -> dict[str, str]:
+    loc = tuple(error.get("loc", ()))
+    if error.get("type") == "json_invalid":
+        # the location of a JSON syntax error is a character offset, not a field
+        reason = (error.get("ctx") or {}).get("error", "")
+        where = f" at character {loc[-1]}" if loc and isinstance(loc[-1], int) else ""
+        return {"field": "request", "message": f"Malformed JSON body{where}: {reason}".strip()}
+    return {"field": _field(loc), "message": str(error.get("msg", ""))}
 
 
 def validation_details(errors: Any) -> list[dict[str, str]]:
     """Field-level messages from pydantic errors: the dotted field and the reason."""
-    return [
-        {"field": _field(tuple(e.get("loc", ()))), "message": str(e.get("msg", ""))} for e in errors
-    ]
+    return [_detail(e) for e in errors]
 
 
 def _respond(request: Request, status: int, error: str, detail: list[dict[str, str]]) -> Response:

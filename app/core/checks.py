@@ -9,7 +9,12 @@ pass, and formatting is most of a check's cost.
 from collections.abc import Callable, Mapping
 
 from app.core import buckling, critical_speed, limits
-from app.core.model import STANDARD_GRAVITY_M_S2, Application, Check, Evaluation
+from app.core.model import (
+    STANDARD_GRAVITY_M_S2,
+    Application,
+    Check,
+    Evaluation,
+)
 
 FIXITY_ORDER = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
 Text = Callable[[], str]
@@ -52,7 +57,7 @@ def _numeric(
         formula,
         sources,
         fix(),
-        dict(input_limits()) if input_limits else {},
+        dict(input_limits()) if input_limits else None,
     )
 
 

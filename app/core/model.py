@@ -101,7 +101,8 @@ class Check:
     ``utilization`` = value / limit (None for yes/no checks). ``sources`` names the
     catalog fields the check uses, so a reader can trace their provenance.
     ``input_limits`` gives, for a failed check, application inputs any one of which, set
-    to the given SI value, would make the check pass (e.g. {"load_n": 120.0}).
+    to the given SI value, would make the check pass (e.g. {"load_n": 120.0}); None when
+    no input change is offered.
     """
 
     name: str
@@ -115,7 +116,7 @@ class Check:
     formula: str
     sources: tuple[str, ...] = ()
     fix: str | None = None
-    input_limits: Mapping[str, float] = field(default_factory=dict)
+    input_limits: Mapping[str, float] | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -72,17 +72,15 @@ def input_change(best: Evaluation) -> dict[str, float]:
     input that the most failed checks share, and its tightest value. Empty when a failed
     check has no input remedy (e.g. a yes/no check).
     """
-    failed = best.failed_checks
-    if not failed or any(not c.input_limits for c in failed):
+    options = [c.input_limits for c in best.failed_checks]
+    if not options or any(not o for o in options):
         return {}
     change: dict[str, float] = {}
-    remaining = list(failed)
+    remaining = [o for o in options if o]
     while remaining:
-        counts = Counter(k for c in remaining for k in c.input_limits)
-        key = counts.most_common(1)[0][0]
-        covered = [c for c in remaining if key in c.input_limits]
-        change[key] = min(c.input_limits[key] for c in covered)
-        remaining = [c for c in remaining if key not in c.input_limits]
+        key = Counter(k for o in remaining for k in o).most_common(1)[0][0]
+        change[key] = min(o[key] for o in remaining if key in o)
+        remaining = [o for o in remaining if key not in o]
     return change
 
 
