@@ -1,0 +1,164 @@
+"""Which checks apply, and what each says (app.core.checks, via evaluate)."""
+
+from dataclasses import replace
+
+import pytest
+
+from app.catalog import Catalog
+from app.core import limits
+from app.core.evaluate import evaluate
+from app.core.model import Application, Check, Evaluation, ScrewSpec
+from tests.core.conftest import light_app
+
+ALWAYS = ["critical_speed", "buckling", "pv", "traverse_speed", "design_load", "length"]
+
+
+def names(ev: Evaluation) -> list[str]:
+    return [c.name for c in ev.checks]
+
+
+def check(ev: Evaluation, name: str) -> Check:
+    return next(c for c in ev.checks if c.name == name)
+
+
+def test_default_application_runs_the_always_on_checks(zbx8000_l10: ScrewSpec) -> None:
+    """Uncoated, horizontal, no duty, no tolerance, no drive: the seed's limits plus the
+    temperature band (0-93 C), in a fixed order."""
+    assert names(evaluate(light_app(), zbx8000_l10)) == [*ALWAYS, "temperature"]
+
+
+def test_every_optional_check_switches_on(catalog: Catalog) -> None:
+    app = light_app(
+        max_torque_nm=1.0,
+        orientation="vertical",
+        require_anti_backlash=True,
+        stroke_m=0.2,
+        cycles_per_day=50.0,
+        required_life_years=2.0,
+        positioning_tolerance_m=1e-3,
+    )
+    ev = evaluate(app, catalog.by_id["ZBX8000-L10-TFE"])
+    assert names(ev) == [
+        "torque",
+        *ALWAYS,
+        "coating_environment",
+        "temperature",
+        "back_driving",
+        "anti_backlash",
+        "life",
+        "accuracy",
+    ]
+
+
+def test_no_buckling_check_in_tension(zbx8000_l10: ScrewSpec) -> None:
+    assert "buckling" not in names(evaluate(light_app(compression=False), zbx8000_l10))
+
+
+@pytest.mark.parametrize(
+    ("screw_id", "oil", "passed"),
+    [
+        pytest.param("ZBX8000-L10-TFE", True, False, id="TFE-with-oil-fails"),
+        pytest.param("ZBX8000-L10-TFE", False, True, id="TFE-dry-passes"),
+    ],
+)
+def test_tfe_and_oil(catalog: Catalog, screw_id: str, oil: bool, passed: bool) -> None:
+    """Seed, "TFE Coating": no additional lubrication, no oil contamination."""
+    c = check(evaluate(light_app(oil_present=oil), catalog.by_id[screw_id]), "coating_environment")
+    assert c.passed is passed
+
+
+def test_uncoated_screw_has_no_oil_check(zbx8000_l10: ScrewSpec) -> None:
+    assert "coating_environment" not in names(evaluate(light_app(oil_present=True), zbx8000_l10))
+
+
+def test_coated_screw_over_2_4_m_fails_the_length_check(catalog: Catalog) -> None:
+    """Seed: lengths up to 4 m, up to 2.4 m (8 ft) with TFE coating."""
+    app = light_app(length_m=3.0, speed_m_s=0.001, compression=False)
+    coated = check(evaluate(app, catalog.by_id["ZBX10000-L10-TFE"]), "length")
+    uncoated = check(evaluate(app, catalog.by_id["ZBX10000-L10"]), "length")
+    assert not coated.passed and coated.limit == pytest.approx(2.4)
+    assert coated.fix is not None and "4 m" in coated.fix
+    assert uncoated.passed and uncoated.limit == pytest.approx(4.0)
+
+
+@pytest.mark.parametrize(
+    ("ambient_c", "passed"),
+    [pytest.param(-5.0, False, id="-5C"), pytest.param(50.0, True, id="50C")],
+)
+def test_temperature_band(zbx8000_l10: ScrewSpec, ambient_c: float, passed: bool) -> None:
+    """Seed: standard operating temperature 0-93 C."""
+    assert check(evaluate(light_app(ambient_c=ambient_c), zbx8000_l10), "temperature").passed is (
+        passed
+    )
+
+
+def test_back_driving_check_uses_the_physical_self_locking_lead(catalog: Catalog) -> None:
+    """Vertical axis: passes iff lead <= pi d_p mu_s / cos(a_n)."""
+    app = light_app(orientation="vertical")
+    fine = evaluate(app, catalog.by_id["ZBX8000-L1"])
+    steep = evaluate(app, catalog.by_id["ZBX8000-L10"])
+    assert check(fine, "back_driving").passed and fine.self_locking
+    c = check(steep, "back_driving")
+    assert not c.passed and not steep.self_locking
+    assert c.limit == pytest.approx(steep.max_self_locking_lead_m)
+    assert "seed method" in c.message and "physics" in c.message
+
+
+def test_anti_backlash_requirement(catalog: Catalog) -> None:
+    """Free-wheeling B series: typical backlash 0.076-0.25 mm; anti-backlash series ~0."""
+    app = light_app(require_anti_backlash=True)
+    b = check(evaluate(app, catalog.by_id["B8000-L10"]), "anti_backlash")
+    assert not b.passed and "0.25 mm" in b.message
+    assert check(evaluate(app, catalog.by_id["ZBX8000-L10"]), "anti_backlash").passed
+
+
+def test_unrated_series_fails_a_required_life(b8000_l10: ScrewSpec) -> None:
+    app = light_app(stroke_m=0.1, cycles_per_day=10.0, required_life_years=1.0)
+    c = check(evaluate(app, b8000_l10), "life")
+    assert not c.passed and c.utilization is None
+
+
+def test_life_check_uses_the_low_end_of_the_rated_range(zbx8000_l10: ScrewSpec) -> None:
+    """ZBX8000 uncoated 100-150 million cm; 0.3 m stroke, 2000 cycles a day:
+    1e6 / (0.6 x 2000 x 365) = 2.283 years at the low end, 3.425 at the high end."""
+    app = light_app(stroke_m=0.3, cycles_per_day=2000.0, required_life_years=3.0)
+    c = check(evaluate(app, zbx8000_l10), "life")
+    assert c.limit == pytest.approx(2.283, rel=1e-3)
+    assert not c.passed
+
+
+def test_accuracy_sums_lead_error_backlash_and_repeatability(catalog: Catalog) -> None:
+    """Seed: lead accuracy 0.0006 mm/mm, repeatability 0.0013 mm; B series backlash up to
+    0.25 mm. Stroke 300 mm: 0.18 + 0.25 + 0.0013 = 0.4313 mm."""
+    app = light_app(stroke_m=0.3, positioning_tolerance_m=0.4e-3)
+    b = check(evaluate(app, catalog.by_id["B8000-L10"]), "accuracy")
+    zbx = check(evaluate(app, catalog.by_id["ZBX8000-L10"]), "accuracy")
+    assert b.value == pytest.approx(0.4313e-3, rel=1e-6) and not b.passed
+    assert zbx.value == pytest.approx(0.1813e-3, rel=1e-6) and zbx.passed
+
+
+def test_traverse_fix_offers_a_lead_band_that_allows_the_speed(catalog: Catalog) -> None:
+    """200 mm/s on a 10 mm lead exceeds the 100 mm/s band; the 12-25 mm band allows 250."""
+    c = check(evaluate(light_app(speed_m_s=0.2), catalog.by_id["ZBX8000-L10"]), "traverse_speed")
+    assert not c.passed
+    assert c.fix is not None and "lead of at least 12 mm" in c.fix
+    assert limits.traverse_speed_limit_m_s(0.012) >= 0.2
+
+
+def test_torque_check_against_the_available_drive(zbx8000_l10: ScrewSpec) -> None:
+    ev = evaluate(light_app(max_torque_nm=0.01), zbx8000_l10)
+    c = check(ev, "torque")
+    assert c.value == pytest.approx(ev.torque.required_nm)
+    assert not c.passed
+
+
+def test_vertical_load_remedy_subtracts_the_weight(zbx8000_l10: ScrewSpec) -> None:
+    """The design-load check offers a user load such that load + m g is the design load."""
+    app: Application = light_app(load_n=600.0, orientation="vertical", moving_mass_kg=5.0)
+    c = check(evaluate(app, zbx8000_l10), "design_load")
+    assert not c.passed and c.limit is not None and c.input_limits
+    assert c.input_limits["load_n"] == pytest.approx(c.limit - 5.0 * 9.80665)
+    again = check(
+        evaluate(replace(app, load_n=c.input_limits["load_n"]), zbx8000_l10), "design_load"
+    )
+    assert again.utilization == pytest.approx(1.0, rel=1e-9)

@@ -1,0 +1,271 @@
+"""Evaluating one screw against one application (app.core.evaluate): the whole picture.
+
+A single hand-calculated candidate is in test_worked_candidate.py; here the rules that hold
+for every candidate of the catalog, and the remedies the checks propose.
+"""
+
+import math
+from dataclasses import replace
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from app.catalog import Catalog
+from app.core import critical_speed, efficiency, geometry
+from app.core.evaluate import axial_load, evaluate
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, Evaluation, ScrewSpec
+from tests.core.conftest import light_app
+
+CATALOG_IDS = ("ZBX4000-L2", "ZBX8000-L10", "B12000-L25.4-TFE", "VHD10000-L5", "KHD6000-L12")
+
+
+def check(ev: Evaluation, name: str):  # type: ignore[no-untyped-def]
+    return next(c for c in ev.checks if c.name == name)
+
+
+def test_vertical_axis_adds_the_weight_of_the_moving_mass() -> None:
+    """A vertical axis carries the load plus m g (standard gravity 9.80665 m/s^2)."""
+    app = light_app(orientation="vertical", moving_mass_kg=3.0)
+    assert axial_load(app) == pytest.approx(50.0 + 3.0 * STANDARD_GRAVITY_M_S2)
+    assert axial_load(replace(app, orientation="horizontal")) == pytest.approx(50.0)
+
+
+@pytest.mark.parametrize("screw_id", CATALOG_IDS)
+def test_torque_is_the_seeds_three_components(catalog: Catalog, screw_id: str) -> None:
+    """Seed, "Torque": inertia + static drag + load. engineering.md section 3: the drag is the
+    top of the series' range, the moving mass is reflected as its own line, and the required
+    torque is the safety factor times the larger of running and break-away torque."""
+    screw = catalog.by_id[screw_id]
+    app = light_app(moving_mass_kg=4.0, accel_m_s2=2.0, torque_safety_factor=1.5)
+    t = evaluate(app, screw).torque
+    assert t.drag_nm == screw.drag_torque_max_nm
+    assert (t.drag_min_nm, t.drag_max_nm) == (screw.drag_torque_min_nm, screw.drag_torque_max_nm)
+    assert t.inertia_nm == pytest.approx(t.inertia_screw_nm + t.inertia_mass_nm, rel=1e-12)
+    assert t.inertia_mass_nm == pytest.approx(
+        4.0 * (screw.lead_m / (2 * math.pi)) ** 2 * 2 * math.pi * 2.0 / screw.lead_m, rel=1e-9
+    )
+    assert t.total_nm == pytest.approx(t.inertia_nm + t.drag_nm + t.load_nm, rel=1e-12)
+    assert t.required_nm == pytest.approx(1.5 * max(t.total_nm, t.breakaway_nm), rel=1e-12)
+
+
+@pytest.mark.parametrize("screw_id", CATALOG_IDS)
+def test_breakaway_uses_static_friction_and_running_uses_dynamic(
+    catalog: Catalog, screw_id: str
+) -> None:
+    """engineering.md section 2: dynamic friction for running torque, static for break-away
+    and self-locking."""
+    screw = catalog.by_id[screw_id]
+    ev = evaluate(light_app(), screw)
+    d_p = geometry.pitch_diameter(screw.outer_diameter_m, screw.root_diameter_m)
+    tan_l = geometry.tan_lead_angle(screw.lead_m, d_p)
+    cos_a = math.cos(screw.thread_half_angle_rad)
+    eta_run = efficiency.forward_efficiency(tan_l, screw.friction_dynamic, cos_a)
+    eta_static = efficiency.forward_efficiency(tan_l, screw.friction_static, cos_a)
+    assert ev.efficiency == pytest.approx(eta_run, rel=1e-12)
+    assert ev.torque.load_nm == pytest.approx(50.0 * screw.lead_m / (2 * math.pi * eta_run))
+    assert ev.torque.breakaway_nm == pytest.approx(
+        50.0 * screw.lead_m / (2 * math.pi * eta_static) + screw.drag_torque_max_nm
+    )
+    assert ev.self_locking == efficiency.is_self_locking(tan_l, screw.friction_static, cos_a)
+
+
+def test_buckling_only_in_compression(zbx8000_l10: ScrewSpec) -> None:
+    """engineering.md section 5: buckling applies only when the load compresses the screw."""
+    pushed = evaluate(light_app(compression=True), zbx8000_l10)
+    pulled = evaluate(light_app(compression=False), zbx8000_l10)
+    assert pushed.buckling.applies and "buckling" in {c.name for c in pushed.checks}
+    assert not pulled.buckling.applies
+    assert "buckling" not in {c.name for c in pulled.checks}
+
+
+def test_a_column_that_buckles_in_compression_is_fine_in_tension(zbx8000_l10: ScrewSpec) -> None:
+    """1/2 in screw, 3 m fixed-free, 400 N: far above 0.5 x Euler in compression."""
+    app = light_app(load_n=400.0, length_m=3.0, end_fixity="fixed-free", speed_m_s=0.001)
+    assert "buckling" in {c.name for c in evaluate(app, zbx8000_l10).failed_checks}
+    tension = evaluate(replace(app, compression=False), zbx8000_l10)
+    assert "buckling" not in {c.name for c in tension.failed_checks}
+
+
+def test_life_only_for_rated_series(b8000_l10: ScrewSpec, zbx8000_l10: ScrewSpec) -> None:
+    """Seed life table: B series N/A; ZBX8000 100-150 million cm (uncoated)."""
+    app = light_app(stroke_m=0.1, cycles_per_day=100.0)
+    assert evaluate(app, b8000_l10).life is None
+    rated = evaluate(app, zbx8000_l10).life
+    assert rated is not None
+    assert (rated.travel_min_m, rated.travel_max_m) == pytest.approx((1.0e6, 1.5e6))
+    assert rated.years_min == pytest.approx(137.0, rel=1e-3)
+
+
+def test_off_table_lead_is_marked_extrapolated(catalog: Catalog) -> None:
+    """engineering.md section 7: the 1 mm lead is below the 2.5-60 mm table."""
+    ev = evaluate(light_app(speed_m_s=0.01), catalog.by_id["ZBX4000-L1"])
+    assert ev.traverse_extrapolated
+    assert ev.traverse_speed_limit_m_s == pytest.approx(0.1)
+    assert "2.5-60 mm" in check(ev, "traverse_speed").message
+
+
+def test_holding_torques_are_labelled_seed_and_physics(catalog: Catalog) -> None:
+    """engineering.md section 2: T_b = F lead eta / (2 pi) with the forward efficiency (seed)
+    and with the back-drive efficiency (physics); 0 for the seed value when self-locking."""
+    steep = evaluate(light_app(orientation="vertical"), catalog.by_id["ZBX8000-L25.4"])
+    assert not steep.self_locking
+    f, lead = steep.axial_load_n, steep.screw.lead_m
+    assert steep.holding_torque_seed_nm == pytest.approx(
+        f * lead * steep.efficiency / (2 * math.pi)
+    )
+    assert steep.holding_torque_physics_nm == pytest.approx(
+        f * lead * steep.backdrive_efficiency / (2 * math.pi)
+    )
+    fine = evaluate(light_app(orientation="vertical"), catalog.by_id["ZBX8000-L1"])
+    assert fine.self_locking
+    assert fine.holding_torque_seed_nm == 0.0
+    assert fine.holding_torque_physics_nm == 0.0
+
+
+def test_seed_rule_never_claims_locking_the_physics_denies(catalog: Catalog) -> None:
+    """engineering.md section 2: the d/8 rule is the conservative one (about 2x margin), so
+    every catalog screw the rule calls non-back-drivable is self-locking by the physics."""
+    app = light_app()
+    for screw in catalog.screws:
+        ev = evaluate(app, screw)
+        if ev.seed_rule_no_backdrive:
+            assert ev.self_locking, screw.id
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "checks.back_driving_check recommends 'a brake of at least' the seed holding torque "
+        "F l eta / 2pi with the running (dynamic) friction; the physical holding torque with "
+        "static friction (eta_b) is larger for uncoated screws (mu_d 0.15 > mu_s 0.08) and for "
+        "lead angles above 45 deg, so the recommended brake is too small"
+    ),
+)
+def test_recommended_brake_holds_the_load(catalog: Catalog) -> None:
+    """engineering.md section 2 calls the seed value 'the safe side for sizing a brake';
+    for every back-drivable catalog candidate on a vertical axis the brake the app asks for
+    must be at least the physical holding torque. B4000-L25.4, 20 N: seed 0.057 N m,
+    physics 0.068 N m."""
+    app = light_app(load_n=20.0, orientation="vertical")
+    short = []
+    for screw in catalog.screws:
+        ev = evaluate(app, screw)
+        if not ev.self_locking and ev.holding_torque_seed_nm < ev.holding_torque_physics_nm:
+            short.append(screw.id)
+    assert short == []
+
+
+def _critical_speed_failure(screw: ScrewSpec) -> tuple[Application, Evaluation]:
+    app = light_app(load_n=10.0, speed_m_s=0.09, length_m=2.0, end_fixity="simple-simple")
+    ev = evaluate(app, screw)
+    assert not check(ev, "critical_speed").passed
+    return app, ev
+
+
+def test_critical_speed_remedies_bring_utilization_to_one(catalog: Catalog) -> None:
+    """engineering.md section 4 / seed: "use a longer lead, choose a larger diameter or increase
+    bearing mount support"; each remedy the core computes lands exactly on the limit."""
+    screw = catalog.by_id["ZBX4000-L2.5"]
+    app, ev = _critical_speed_failure(screw)
+    c = ev.critical_speed
+    lead = critical_speed.min_lead_for_speed(app.speed_m_s, c.allowed_rpm)
+    d_r = critical_speed.min_root_diameter_for_speed(screw.root_diameter_m, c.allowed_rpm, ev.rpm)
+    length = critical_speed.max_length_for_speed(app.length_m, c.allowed_rpm, ev.rpm)
+    for fixed_app, fixed_screw in (
+        (app, replace(screw, lead_m=lead)),
+        (app, replace(screw, root_diameter_m=d_r)),
+        (replace(app, length_m=length), screw),
+    ):
+        u = check(evaluate(fixed_app, fixed_screw), "critical_speed").utilization
+        assert u == pytest.approx(1.0, rel=1e-9)
+
+
+def test_critical_speed_fix_names_the_three_remedies(catalog: Catalog) -> None:
+    """The failed check says which of lead, diameter, support would fix it, and by how much."""
+    _, ev = _critical_speed_failure(catalog.by_id["ZBX4000-L2.5"])
+    fix = check(ev, "critical_speed").fix
+    assert fix is not None
+    assert "lead of at least" in fix and "root diameter of at least" in fix
+    assert "unsupported length at most" in fix
+
+
+def test_too_steep_a_lead_is_refused() -> None:
+    """A lead whose friction angle forbids driving (eta <= 0) cannot be evaluated."""
+    steep = ScrewSpec(
+        id="steep",
+        series_id="X",
+        series_name="X",
+        anti_backlash=False,
+        coated=False,
+        outer_diameter_m=0.01,
+        root_diameter_m=0.008,
+        lead_m=2.0,
+        thread_half_angle_rad=math.radians(14.5),
+        friction_static=0.9,
+        friction_dynamic=0.9,
+        youngs_modulus_pa=193e9,
+        density_kg_m3=8000.0,
+        screw_expansion_per_k=17.3e-6,
+        inertia_kg_m2_per_m=1e-6,
+    )
+    with pytest.raises(ValueError, match="too steep"):
+        evaluate(light_app(), steep)
+
+
+apps = st.builds(
+    Application,
+    load_n=st.floats(1.0, 3000.0),
+    speed_m_s=st.floats(0.001, 1.0),
+    length_m=st.floats(0.05, 4.5),
+    accel_m_s2=st.floats(0.0, 10.0),
+    moving_mass_kg=st.floats(0.0, 20.0),
+    end_fixity=st.sampled_from(["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]),
+    orientation=st.sampled_from(["horizontal", "vertical"]),
+    compression=st.booleans(),
+    stroke_m=st.none() | st.floats(0.01, 2.0),
+    cycles_per_day=st.none() | st.floats(1.0, 5000.0),
+    required_life_years=st.none() | st.floats(0.1, 20.0),
+    positioning_tolerance_m=st.none() | st.floats(1e-5, 2e-3),
+    max_torque_nm=st.none() | st.floats(0.01, 5.0),
+    ambient_c=st.floats(-20.0, 120.0),
+    oil_present=st.booleans(),
+)
+
+
+@settings(max_examples=60, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(app=apps, pick=st.integers(0, 10_000))
+def test_checks_are_consistent_with_their_numbers(
+    catalog: Catalog, app: Application, pick: int
+) -> None:
+    """Every numeric check: utilization = value / limit and it passes iff <= 1; the result
+    passes iff no check failed; the governing utilization is the largest one."""
+    ev = evaluate(app, catalog.screws[pick % len(catalog.screws)])
+    for c in ev.checks:
+        if c.utilization is not None:
+            assert c.value is not None and c.limit is not None
+            assert c.utilization == pytest.approx(c.value / c.limit, rel=1e-12)
+            assert c.passed == (c.utilization <= 1.0), c.name
+        assert (c.fix is None) == c.passed, c.name
+    assert ev.passed == all(c.passed for c in ev.checks)
+    numeric = [c.utilization for c in ev.checks if c.utilization is not None]
+    if ev.passed:
+        assert ev.max_utilization == pytest.approx(max(numeric, default=0.0))
+    else:
+        assert ev.max_utilization > 1.0
+
+
+@settings(max_examples=60, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(app=apps, pick=st.integers(0, 10_000))
+def test_each_input_remedy_clears_its_check(catalog: Catalog, app: Application, pick: int) -> None:
+    """Check.input_limits: setting any one of the offered inputs to the offered value makes
+    that check pass (it lands on its limit)."""
+    screw = catalog.screws[pick % len(catalog.screws)]
+    ev = evaluate(app, screw)
+    for c in ev.failed_checks:
+        for key, value in (c.input_limits or {}).items():
+            if value <= 0:
+                continue  # e.g. the weight alone exceeds the limit: no load can help
+            again = check(evaluate(replace(app, **{key: value}), screw), c.name)
+            assert again.utilization is not None
+            assert again.utilization <= 1.0 + 1e-9, (c.name, key, value)
