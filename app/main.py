@@ -2,16 +2,16 @@
 
 from fastapi import FastAPI
 from fastapi.exceptions import RequestValidationError
-from fastapi.staticfiles import StaticFiles
 from starlette.middleware.gzip import GZipMiddleware
 
 from app import __version__
 from app.catalog import load_catalog
 from app.errors import AppError, app_error_handler, validation_error_handler
 from app.paths import resource_dir
-from app.routes import api, pages
+from app.routes import api, docs, pages
 from app.security import SecurityMiddleware
 from app.settings import Settings, get_settings
+from app.staticfiles import PrecompressedStaticFiles
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -22,14 +22,21 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         version=__version__,
         description="Select a leadscrew and nut against every published limit. "
         "Lengths in mm, speeds in mm/s, forces in N, torques in N m.",
+        # the built-in pages load from a CDN with inline scripts; /docs is ours (routes/docs)
+        docs_url=None,
+        redoc_url=None,
     )
     app.state.catalog = load_catalog(settings.catalog_dirs)
     app.include_router(api.router)
     app.include_router(pages.router)
-    app.mount("/static", StaticFiles(directory=resource_dir("static")), name="static")
+    app.include_router(docs.router)
+    app.mount("/static", PrecompressedStaticFiles(directory=resource_dir("static")), name="static")
     app.add_exception_handler(AppError, app_error_handler)
     app.add_exception_handler(RequestValidationError, validation_error_handler)
-    app.add_middleware(GZipMiddleware, minimum_size=500)
+    # dynamic responses at level 1: the worker's CPU is the limit, and a select response
+    # (126 kB of JSON) compresses to 14 kB instead of 9 kB in half the time of level 6;
+    # static files come precompressed at level 9 (app.staticfiles)
+    app.add_middleware(GZipMiddleware, minimum_size=500, compresslevel=1)
     app.add_middleware(
         SecurityMiddleware,
         max_body_bytes=settings.max_body_bytes,

@@ -23,6 +23,10 @@ SECURITY_HEADERS = [
     (b"cross-origin-opener-policy", b"same-origin"),
 ]
 IMMUTABLE = (b"cache-control", b"public, max-age=31536000, immutable")
+# app.css and app.js change with the app and their URLs carry no version: browsers may
+# reuse them for ten minutes, then revalidate (ETag, 304). A ``?v=`` URL is immutable.
+SHORT = (b"cache-control", b"public, max-age=600")
+CACHED_STATUSES = (200, 304)
 
 
 class SecurityMiddleware:
@@ -48,8 +52,14 @@ class SecurityMiddleware:
             if name == b"content-length" and value.isdigit() and int(value) > self.max_body:
                 await self._refuse(send, 413, "request body too large")
                 return
-        versioned = scope["path"].startswith("/static/vendor/")
+        path: str = scope["path"]
+        cache = None
+        if path.startswith("/static/"):
+            versioned = path.startswith("/static/vendor/") or query.startswith(b"v=")
+            cache = IMMUTABLE if versioned else SHORT
+        api = path.startswith("/api/")
         received = 0
+        started = False
 
         async def limited_receive() -> Message:
             nonlocal received
@@ -61,29 +71,44 @@ class SecurityMiddleware:
             return message
 
         async def send_with_headers(message: Message) -> None:
+            nonlocal started
             if message["type"] == "http.response.start":
+                started = True
                 headers = list(message.get("headers", []))
                 headers += SECURITY_HEADERS
-                if versioned and message.get("status") == 200:
-                    headers = [h for h in headers if h[0] != b"cache-control"] + [IMMUTABLE]
+                if cache is not None and message.get("status") in CACHED_STATUSES:
+                    headers = [h for h in headers if h[0] != b"cache-control"] + [cache]
                 message["headers"] = headers
             await send(message)
 
         try:
             await self.app(scope, limited_receive, send_with_headers)
         except BodyTooLarge:
-            await self._refuse(send, 413, "request body too large")
+            if not started:
+                await self._refuse(send, 413, "request body too large")
+        except Exception:
+            # Starlette's own 500 page is sent from outside every middleware, so without
+            # this it would go out with no security headers. Send ours, then re-raise so
+            # the server still logs the traceback.
+            if not started:
+                await self._refuse(send, 500, "internal server error", json_body=api)
+            raise
 
-    async def _refuse(self, send: Send, status: int, reason: str) -> None:
-        body = json.dumps(
-            {"error": reason, "detail": [{"field": "request", "message": reason}]}
-        ).encode()
+    async def _refuse(self, send: Send, status: int, reason: str, json_body: bool = True) -> None:
+        if json_body:
+            body = json.dumps(
+                {"error": reason, "detail": [{"field": "request", "message": reason}]}
+            ).encode()
+            content_type = b"application/json"
+        else:
+            body = f"{status} {reason.capitalize()}".encode()
+            content_type = b"text/plain; charset=utf-8"
         await send(
             {
                 "type": "http.response.start",
                 "status": status,
                 "headers": [
-                    (b"content-type", b"application/json"),
+                    (b"content-type", content_type),
                     (b"content-length", str(len(body)).encode()),
                     *SECURITY_HEADERS,
                 ],

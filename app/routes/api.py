@@ -2,11 +2,13 @@
 
 from typing import Annotated, Any
 
+import pydantic_core
 from fastapi import APIRouter, Query
+from fastapi.responses import Response
 
 from app import __version__
 from app.deps import CatalogDep
-from app.errors import AppError
+from app.errors import ApiRoute, AppError
 from app.present import series_dict
 from app.schemas import (
     ApplicationIn,
@@ -22,11 +24,25 @@ from app.service import UnknownScrew, run_evaluation, run_selection
 
 ERRORS: dict[int | str, dict[str, Any]] = {
     404: {"model": ErrorOut, "description": "Unknown id"},
-    413: {"model": ErrorOut, "description": "Request body too large"},
-    414: {"model": ErrorOut, "description": "Query string too long or too many parameters"},
     422: {"model": ErrorOut, "description": "Invalid input, by field"},
 }
-router = APIRouter(prefix="/api/v1", tags=["api"], responses=ERRORS)
+router = APIRouter(prefix="/api/v1", tags=["api"], responses=ERRORS, route_class=ApiRoute)
+
+
+class ModelJSON(Response):
+    """JSON written by pydantic-core, the serializer FastAPI uses for a ``response_model``.
+
+    The select and evaluate dicts are built field for field to their output models by
+    ``app.service``; validating them again on every request cost more than serializing
+    them (1.5 ms of 2.3 ms for a select). They are served as they are, byte for byte what
+    the validated model would give (non-finite floats as null);
+    tests/test_api_serialization.py checks that the served JSON equals the model's.
+    """
+
+    media_type = "application/json"
+
+    def render(self, content: Any) -> bytes:
+        return pydantic_core.to_json(content)
 
 
 @router.get("/health", response_model=HealthOut)
@@ -61,24 +77,22 @@ async def get_series(series_id: str, catalog: CatalogDep) -> dict[str, Any]:
 
 
 @router.post("/select", response_model=SelectOut)
-async def select_post(inputs: ApplicationIn, catalog: CatalogDep) -> dict[str, Any]:
+async def select_post(inputs: ApplicationIn, catalog: CatalogDep) -> Response:
     """Rank every catalog candidate for the application in the JSON body."""
-    return run_selection(inputs, catalog)
+    return ModelJSON(run_selection(inputs, catalog))
 
 
 @router.get("/select", response_model=SelectOut)
-async def select_get(
-    inputs: Annotated[ApplicationIn, Query()], catalog: CatalogDep
-) -> dict[str, Any]:
+async def select_get(inputs: Annotated[ApplicationIn, Query()], catalog: CatalogDep) -> Response:
     """The same as POST, with the fields as query parameters (a shareable link)."""
-    return run_selection(inputs, catalog)
+    return ModelJSON(run_selection(inputs, catalog))
 
 
 @router.post("/evaluate", response_model=EvaluateOut)
-async def evaluate_post(body: EvaluateIn, catalog: CatalogDep) -> dict[str, Any]:
+async def evaluate_post(body: EvaluateIn, catalog: CatalogDep) -> Response:
     """One catalog screw (``catalog_id``) or a custom geometry against one application."""
     try:
-        return run_evaluation(body.application, body.screw, catalog)
+        return ModelJSON(run_evaluation(body.application, body.screw, catalog))
     except UnknownScrew as exc:
         raise AppError(
             404,

@@ -1,0 +1,271 @@
+"""HTTP figures: throughput and latency against a bare ceiling, page weight, memory, soak.
+
+Each server is a real uvicorn subprocess (``--loop uvloop --http httptools --workers 1``,
+access log off) pinned to CPU 0 when there are two or more CPUs; wrk runs pinned to the
+others, so the server and the load generator do not fight over one core.
+"""
+
+import gzip
+import http.client
+import os
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from html.parser import HTMLParser
+from pathlib import Path
+from urllib.parse import urlsplit
+
+from bench import wrk
+from bench.report import Report
+
+ROOT = Path(__file__).resolve().parents[1]
+HERE = Path(__file__).resolve().parent
+SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
+FRAGMENT = "/?load=100&speed=50&length=500&lead=10"
+HX = {"HX-Request": "true"}
+# Browsers and most HTTP clients ask for gzip; the app compresses, so measure that cost.
+GZIP = {"Accept-Encoding": "gzip"}
+SERVER_CPU = "0"
+CLIENT_CPUS = ",".join(str(i) for i in range(1, os.cpu_count() or 1)) or None
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+def fetch(
+    port: int, path: str, headers: dict[str, str] | None = None
+) -> tuple[int, dict[str, str], bytes]:
+    """One GET; the body as sent on the wire (still compressed)."""
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+    try:
+        conn.request("GET", path, headers=headers or {})
+        resp = conn.getresponse()
+        return resp.status, {k.lower(): v for k, v in resp.getheaders()}, resp.read()
+    finally:
+        conn.close()
+
+
+@contextmanager
+def server(target: str, *, factory: bool) -> Iterator[tuple[int, int]]:
+    """A uvicorn subprocess serving ``target``; yields (port, pid) once it answers."""
+    port = free_port()
+    cmd = [sys.executable, "-m", "uvicorn", target, *(["--factory"] if factory else [])]
+    cmd += ["--loop", "uvloop", "--http", "httptools", "--workers", "1"]
+    cmd += ["--host", "127.0.0.1", "--port", str(port), "--log-level", "warning"]
+    cmd += ["--no-access-log"]
+    if CLIENT_CPUS is not None:
+        cmd = ["taskset", "-c", SERVER_CPU, *cmd]
+    proc = subprocess.Popen(cmd, cwd=ROOT)
+    try:
+        probe = "/api/v1/health" if factory else "/ceiling"
+        deadline = time.monotonic() + 60
+        while True:
+            try:
+                if fetch(port, probe)[0] == 200:
+                    break
+            except OSError:
+                pass
+            if proc.poll() is not None or time.monotonic() > deadline:
+                raise RuntimeError(f"{target} did not start (exit {proc.poll()})")
+            time.sleep(0.1)
+        yield port, proc.pid
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+
+
+def rss_kib(pid: int) -> int:
+    for line in Path(f"/proc/{pid}/status").read_text().splitlines():
+        if line.startswith("VmRSS:"):
+            return int(line.split()[1])
+    raise RuntimeError(f"no VmRSS for {pid}")
+
+
+class _Assets(HTMLParser):
+    """Scripts and stylesheets a page references."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.urls: list[str] = []
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        a = dict(attrs)
+        if tag == "script" and a.get("src"):
+            self.urls.append(str(a["src"]))
+        elif tag == "link" and "stylesheet" in (a.get("rel") or "").split() and a.get("href"):
+            self.urls.append(str(a["href"]))
+
+
+def _wire(port: int, path: str, headers: dict[str, str]) -> tuple[int, int, dict[str, str]]:
+    """(status, body bytes on the wire, headers) of one GET accepting gzip."""
+    status, head, body = fetch(port, path, {**GZIP, **headers})
+    return status, len(body), head
+
+
+def page_weight(report: Report, port: int) -> None:
+    report.section("Page weight (bytes on the wire with Accept-Encoding: gzip)")
+    status, head, body = fetch(port, "/", GZIP)
+    if status != 200:
+        report.line("GET /", f"status {status}", "200", False)
+        return
+    html = gzip.decompress(body) if head.get("content-encoding") == "gzip" else body
+    parser = _Assets()
+    parser.feed(html.decode())
+    total = len(body)
+    report.info(f"/ ({head.get('content-encoding', 'identity')})", f"{len(body):,} B")
+    for url in parser.urls:
+        if urlsplit(url).netloc:
+            report.line(f"external asset {url}", "off-site", "none", False)
+            continue
+        status, size, ahead = _wire(port, url, {})
+        if status != 200:
+            report.line(f"GET {url}", f"status {status}", "200", False)
+        total += size
+        encoding = ahead.get("content-encoding", "identity")
+        report.info(f"{url} ({encoding})", f"{size:,} B")
+        report.info("", f"cache-control: {ahead.get('cache-control', '(none)')}")
+    report.line(
+        "first load of / (HTML+CSS+JS)",
+        f"{total / 1024:.1f} KiB",
+        "<= 500 KiB",
+        total <= 500 * 1024,
+    )
+    status, size, _ = _wire(port, FRAGMENT, HX)
+    report.line(
+        "one results fragment" + ("" if status == 200 else f" (status {status})"),
+        f"{size / 1024:.1f} KiB",
+        "<= 60 KiB",
+        status == 200 and size <= 60 * 1024,
+    )
+    status, size, _ = _wire(port, SELECT, {})
+    report.info(f"one select JSON response (status {status})", f"{size / 1024:.1f} KiB")
+
+
+def _show(report: Report, name: str, r: wrk.WrkResult) -> None:
+    report.info(
+        name,
+        f"{r.requests_per_s:8.0f} req/s  p50 {r.p50_ms:6.2f} ms  p99 {r.p99_ms:7.2f} ms  "
+        f"errors {r.errors} ({r.requests} requests)",
+    )
+
+
+def throughput(report: Report, seconds: int) -> None:
+    report.section(
+        f"HTTP, one uvicorn worker, wrk -t2 -c32 -d{seconds}s (gzip accepted; wrk on "
+        f"CPUs {CLIENT_CPUS or 'shared'}, server on CPU {SERVER_CPU if CLIENT_CPUS else 'shared'})"
+    )
+    with (
+        server("bench.ceiling_app:app", factory=False) as (ceiling_port, _),
+        server("app.main:create_app", factory=True) as (port, _),
+    ):
+        base = f"http://127.0.0.1:{port}"
+        runs = {
+            "ceiling": (f"http://127.0.0.1:{ceiling_port}/ceiling", GZIP),
+            "select": (base + SELECT, GZIP),
+            "fragment": (base + FRAGMENT, {**GZIP, **HX}),
+        }
+        for url, headers in runs.values():  # warm-up
+            wrk.run(url, 2, headers=headers, cpus=CLIENT_CPUS)
+        results = {
+            name: wrk.run(url, seconds, headers=headers, cpus=CLIENT_CPUS)
+            for name, (url, headers) in runs.items()
+        }
+        for name, r in results.items():
+            _show(report, name, r)
+        ceiling = results["ceiling"].requests_per_s
+        for name, share in (("select", 0.5), ("fragment", 0.3)):
+            r = results[name]
+            ratio = r.requests_per_s / ceiling
+            report.line(
+                f"{name}: throughput / ceiling",
+                f"{ratio * 100:.1f} %",
+                f">= {share * 100:.0f} %",
+                ratio >= share,
+            )
+            report.line(f"{name}: p99 latency", f"{r.p99_ms:.1f} ms", "< 50 ms", r.p99_ms < 50)
+            report.line(f"{name}: errors in the {seconds} s run", f"{r.errors}", "0", r.errors == 0)
+        page_weight(report, port)
+
+
+def memory(report: Report, first: int, second: int, max_seconds: int) -> None:
+    report.section(f"Memory: server RSS after {first:,} and {second:,} select requests")
+    report.info("requests", "GET /api/v1/select, load cycling over 1,000 values, lead 10 mm")
+    script = HERE / "count.lua"
+    with server("app.main:create_app", factory=True) as (port, pid):
+        url = f"http://127.0.0.1:{port}/api/v1/select"
+        report.info("RSS at start", f"{rss_kib(pid) / 1024:.1f} MiB")
+        done = 0
+        rss: list[int] = []
+        for goal in (first, second):
+            per_thread = str((goal - done) // 2)
+            r = wrk.run(
+                url, max_seconds, script=script, script_args=(per_thread,), cpus=CLIENT_CPUS
+            )
+            done += r.requests
+            rss.append(rss_kib(pid))
+            report.info(
+                f"RSS after {done:,} requests",
+                f"{rss[-1] / 1024:.1f} MiB ({r.requests_per_s:.0f} req/s, errors {r.errors})",
+            )
+            if done < goal:
+                report.line(
+                    f"reached {goal:,} requests within {max_seconds} s",
+                    f"{done:,}",
+                    f"{goal:,}",
+                    False,
+                )
+                return
+        growth = rss[1] / rss[0] - 1
+        report.line(
+            f"RSS growth {first:,} -> {second:,} requests",
+            f"{growth * 100:+.1f} %",
+            "within 10 %",
+            abs(growth) <= 0.10,
+        )
+
+
+def soak(report: Report, seconds: int) -> None:
+    report.section(f"Load test: wrk -t2 -c32 -d{seconds}s per endpoint, no errors allowed")
+    with (
+        server("bench.ceiling_app:app", factory=False) as (ceiling_port, _),
+        server("app.main:create_app", factory=True) as (port, _),
+    ):
+        base = f"http://127.0.0.1:{port}"
+        for name, url, headers in (
+            ("ceiling", f"http://127.0.0.1:{ceiling_port}/ceiling", GZIP),
+            ("select", base + SELECT, GZIP),
+            ("fragment", base + FRAGMENT, {**GZIP, **HX}),
+        ):
+            r = wrk.run(url, seconds, headers=headers, cpus=CLIENT_CPUS)
+            _show(report, name, r)
+            report.line(
+                f"{name}: non-2xx/3xx responses", f"{r.non_2xx_3xx}", "0", r.non_2xx_3xx == 0
+            )
+            socket_errors = sum(r.socket_errors.values())
+            detail = ", ".join(f"{k} {v}" for k, v in r.socket_errors.items())
+            report.line(f"{name}: socket errors", f"{socket_errors}", "0", socket_errors == 0)
+            report.info("", detail)
+
+
+def run(
+    report: Report, *, seconds: int, memory_requests: tuple[int, int], soak_seconds: int | None
+) -> None:
+    if not wrk.available():
+        report.section("HTTP")
+        print(f"  {wrk.INSTALL_HINT}")
+        report.line("HTTP figures", "not measured", "wrk installed", None)
+        return
+    throughput(report, seconds)
+    memory(report, *memory_requests, max_seconds=120)
+    if soak_seconds:
+        soak(report, soak_seconds)
