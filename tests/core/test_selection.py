@@ -1,0 +1,205 @@
+"""Selection over the catalog (app.core.selection, app.core.screening): filter, rank, explain.
+
+``select`` screens the catalog with arrays and fully evaluates only what it returns, so the
+screening must agree with ``evaluate`` candidate by candidate; that is tested here.
+"""
+
+from collections import Counter
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from app.catalog import Catalog
+from app.core.evaluate import evaluate
+from app.core.model import Application
+from app.core.screening import eligible_mask, screen
+from app.core.selection import input_change, select
+from tests.core.conftest import light_app
+
+apps = st.builds(
+    Application,
+    load_n=st.floats(1.0, 3000.0),
+    speed_m_s=st.floats(0.001, 1.0),
+    length_m=st.floats(0.05, 4.5),
+    accel_m_s2=st.floats(0.0, 10.0),
+    moving_mass_kg=st.floats(0.0, 20.0),
+    end_fixity=st.sampled_from(["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]),
+    orientation=st.sampled_from(["horizontal", "vertical"]),
+    compression=st.booleans(),
+    require_anti_backlash=st.booleans(),
+    coating=st.sampled_from(["auto", "tfe", "none"]),
+    oil_present=st.booleans(),
+    ambient_c=st.floats(-20.0, 120.0),
+    stroke_m=st.none() | st.floats(0.01, 2.0),
+    cycles_per_day=st.none() | st.floats(1.0, 5000.0),
+    required_life_years=st.none() | st.floats(0.1, 20.0),
+    positioning_tolerance_m=st.none() | st.floats(1e-5, 2e-3),
+    max_torque_nm=st.none() | st.floats(0.01, 5.0),
+    lead_m=st.none() | st.sampled_from([0.002, 0.01, 0.0127, 0.025]),
+)
+
+FIXTURE_OK = settings(
+    max_examples=15, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+
+
+@FIXTURE_OK
+@given(app=apps)
+def test_screening_agrees_with_full_evaluation(catalog: Catalog, app: Application) -> None:
+    """For every eligible candidate: same pass/fail, same failed checks, same worst
+    utilization, same total torque as ``evaluate`` (screening.py: "tests hold both paths
+    in agreement")."""
+    s = screen(app, catalog.table)
+    for k, i in enumerate(s.index):
+        ev = evaluate(app, catalog.table.screws[i])
+        assert bool(s.passed[k]) == ev.passed, ev.screw.id
+        failed = {name for name, mask in s.failed_by_check.items() if mask[k]}
+        assert failed == {c.name for c in ev.failed_checks}, ev.screw.id
+        assert s.max_utilization[k] == pytest.approx(ev.max_utilization, rel=1e-9)
+        assert s.total_torque_nm[k] == pytest.approx(ev.torque.total_nm, rel=1e-9)
+
+
+@FIXTURE_OK
+@given(app=apps)
+def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
+    """Counts cover every eligible candidate; passing ones come back ranked by drive torque,
+    rejected ones nearest-to-passing first; each list is cut to ``app.limit``."""
+    sel = select(app, catalog.table)
+    evaluations = [
+        evaluate(app, catalog.table.screws[i])
+        for i in np.flatnonzero(eligible_mask(app, catalog.table))
+    ]
+    assert sel.evaluated == len(evaluations)
+    assert sel.passed == sum(e.passed for e in evaluations)
+    expected_counts = Counter(c.name for e in evaluations for c in e.failed_checks)
+    assert sel.failed_by_check == dict(expected_counts)
+    assert len(sel.candidates) == min(app.limit, sel.passed)
+    assert len(sel.rejected) == min(app.limit, sel.evaluated - sel.passed)
+    assert all(e.passed for e in sel.candidates)
+    assert not any(e.passed for e in sel.rejected)
+    torques = [e.torque.total_nm for e in sel.candidates]
+    assert torques == sorted(torques)
+    if sel.candidates:
+        assert torques[0] == pytest.approx(min(e.torque.total_nm for e in evaluations if e.passed))
+    worst = [e.max_utilization for e in sel.rejected]
+    assert worst == sorted(worst)
+
+
+def test_sequence_and_table_give_the_same_selection(catalog: Catalog) -> None:
+    app = light_app()
+    a, b = select(app, catalog.screws), select(app, catalog.table)
+    assert [e.screw.id for e in a.candidates] == [e.screw.id for e in b.candidates]
+    assert (a.evaluated, a.passed) == (b.evaluated, b.passed)
+
+
+@pytest.mark.parametrize(
+    ("lead_mm", "expected_leads_mm"),
+    [
+        pytest.param(12.7, {12.7}, id="12.7mm-not-12mm"),
+        pytest.param(12.5, set(), id="12.5mm-not-offered"),
+        pytest.param(25.4, {25.4}, id="1in-not-25mm"),
+    ],
+)
+def test_lead_filter_is_exact_within_half_a_percent(
+    catalog: Catalog, lead_mm: float, expected_leads_mm: set[float]
+) -> None:
+    app = light_app(lead_m=lead_mm / 1000, limit=100)
+    sel = select(app, catalog.table)
+    got = {round(e.screw.lead_m * 1000, 3) for e in (*sel.candidates, *sel.rejected)}
+    assert got == expected_leads_mm
+
+
+def test_no_matching_lead_says_so(catalog: Catalog) -> None:
+    sel = select(light_app(lead_m=0.007), catalog.table)
+    assert sel.evaluated == 0 and sel.candidates == () and sel.rejected == ()
+    assert "7 mm lead" in sel.summary.message
+
+
+@pytest.mark.parametrize(
+    ("coating", "coated"),
+    [pytest.param("tfe", {True}, id="tfe-only"), pytest.param("none", {False}, id="none-only")],
+)
+def test_coating_filter(catalog: Catalog, coating: str, coated: set[bool]) -> None:
+    sel = select(light_app(coating=coating, limit=100), catalog.table)
+    assert {e.screw.coated for e in (*sel.candidates, *sel.rejected)} == coated
+
+
+def test_rank_by_size_life_and_margin(catalog: Catalog) -> None:
+    """size: smallest OD first; life: longest rated life first (VHD 760-880 million cm
+    with TFE), unrated B series last; margin: lowest worst utilization first."""
+    base = light_app(limit=100)
+    by_size = select(replace(base, rank_by="size"), catalog.table).candidates
+    ods = [e.screw.outer_diameter_m for e in by_size]
+    assert ods == sorted(ods)
+    by_life = select(replace(base, rank_by="life"), catalog.table).candidates
+    assert by_life[0].screw.series_id.startswith("VHD") and by_life[0].screw.coated
+    lives = [0.0 if e.life is None else e.life.travel_min_m for e in by_life]
+    assert lives == sorted(lives, reverse=True)
+    by_margin = select(replace(base, rank_by="margin"), catalog.table).candidates
+    margins = [e.max_utilization for e in by_margin]
+    assert margins == sorted(margins)
+
+
+def test_nothing_passes_and_the_summary_names_the_nearest_fix(catalog: Catalog) -> None:
+    """5 kN on a 4 m fixed-free column at 0.5 m/s: no candidate survives."""
+    app = Application(load_n=5000.0, speed_m_s=0.5, length_m=4.0, end_fixity="fixed-free")
+    sel = select(app, catalog.table)
+    assert sel.passed == 0 and sel.candidates == ()
+    assert sel.summary.best_rejected_id == sel.rejected[0].screw.id
+    assert sel.summary.message.startswith("No candidate passes.")
+    worst = max(sel.failed_by_check, key=lambda k: sel.failed_by_check[k])
+    assert sel.summary.most_excluding_check == worst
+
+
+@FIXTURE_OK
+@given(app=apps)
+def test_the_proposed_input_change_admits_the_nearest_candidate(
+    catalog: Catalog, app: Application
+) -> None:
+    """Summary.input_change: applying every proposed input change together makes the best
+    rejected candidate pass the checks that offered those inputs."""
+    sel = select(app, catalog.table)
+    if sel.passed or not sel.rejected:
+        return
+    best = sel.rejected[0]
+    change = input_change(best)
+    assert change == dict(sel.summary.input_change)
+    if not change or any(v <= 0 for v in change.values()):
+        return
+    again = evaluate(replace(app, **change), best.screw)
+    cleared = {c.name for c in best.failed_checks}
+    # the change lands on the limit; 1 + 2e-16 is rounding (see the xfail below)
+    still = {
+        c.name for c in again.checks if c.name in cleared and (c.utilization or 0.0) > 1 + 1e-9
+    }
+    assert still == set(), (best.screw.id, change, still)
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "checks.pv_check offers load_n = max_load_for_pv exactly on the limit; "
+        "pv_value at that load is 1.0000000000000002 x the limit, so the remedy the "
+        "summary proposes still fails by rounding (offered limits are not rounded inward)"
+    ),
+)
+def test_the_offered_load_limit_passes_when_applied(catalog: Catalog) -> None:
+    """Found by the property test above: B14000-L60-TFE, 944.06 N at 208.4 mm/s, fixed-free,
+    1.4625 m in tension: PV fails (utilization 2.55); the PV check offers load_n = 369.5 N
+    and the summary says "reduce the load to 369.5 N"; at exactly that load PV fails again."""
+    app = Application(
+        load_n=944.0647658429093,
+        speed_m_s=0.20840700579731275,
+        length_m=1.4625027148150647,
+        moving_mass_kg=15.737199035671892,
+        end_fixity="fixed-free",
+        compression=False,
+    )
+    screw = catalog.by_id["B14000-L60-TFE"]
+    pv = next(c for c in evaluate(app, screw).checks if c.name == "pv")
+    assert not pv.passed and pv.input_limits
+    again = evaluate(replace(app, load_n=pv.input_limits["load_n"]), screw)
+    assert next(c for c in again.checks if c.name == "pv").passed
