@@ -9,6 +9,8 @@ from collections.abc import Mapping
 from typing import Any
 from urllib.parse import urlencode
 
+from pydantic import ValidationError
+
 from app.schemas import ApplicationIn
 from app.units import (
     DEFAULT_UNITS,
@@ -17,6 +19,8 @@ from app.units import (
     TORQUE_UNITS,
     Quantity,
     from_api,
+    label,
+    sig,
     to_api,
 )
 
@@ -49,6 +53,55 @@ PAGE_FIELDS: dict[str, tuple[str, Quantity | None]] = {
 }
 API_TO_PAGE = {api: page for page, (api, _) in PAGE_FIELDS.items()}
 UNIT_CHOICES = {"force_unit": FORCE_UNITS, "length_unit": LENGTH_UNITS, "torque_unit": TORQUE_UNITS}
+#: page field -> the label shown on the form.
+PAGE_LABELS = {
+    "load": "Axial load",
+    "lead": "Lead",
+    "speed": "Linear speed",
+    "length": "Screw length",
+    "accel": "Acceleration",
+    "moving_mass_kg": "Moving mass",
+    "end_fixity": "End fixity",
+    "orientation": "Orientation",
+    "compression": "Load direction",
+    "require_anti_backlash": "Anti-backlash nut required",
+    "coating": "Coating",
+    "oil_present": "Oil present",
+    "vacuum": "Vacuum",
+    "ambient_c": "Ambient temperature",
+    "stroke": "Stroke",
+    "cycles_per_day": "Cycles per day",
+    "critical_speed_safety_factor": "Critical-speed factor",
+    "buckling_safety_factor": "Buckling factor",
+    "torque_safety_factor": "Torque safety factor",
+    "max_torque": "Max drive torque",
+    "required_life_years": "Required life",
+    "positioning_tolerance": "Positioning tolerance",
+    "rank_by": "Rank by",
+    "limit": "Number of results",
+}
+#: display-unit key -> the quantities whose numbers it sets.
+UNIT_QUANTITIES: dict[str, tuple[Quantity, ...]] = {
+    "force_unit": ("force",),
+    "length_unit": ("length", "speed", "accel"),
+    "torque_unit": ("torque",),
+}
+#: prefix of the hidden fields that record which units the form's numbers are in.
+ENTERED_PREFIX = "from_"
+#: pydantic error type -> (message template, context key of the bound).
+BOUND_MESSAGES = {
+    "greater_than": ("Must be more than {bound}.", "gt"),
+    "greater_than_equal": ("Must be at least {bound}.", "ge"),
+    "less_than": ("Must be less than {bound}.", "lt"),
+    "less_than_equal": ("Must be at most {bound}.", "le"),
+}
+PLAIN_MESSAGES = {
+    "missing": "Required.",
+    "float_parsing": "Enter a number.",
+    "int_parsing": "Enter a whole number.",
+    "int_from_float": "Enter a whole number.",
+    "finite_number": "Enter a finite number.",
+}
 BOOLEAN_FIELDS = {"compression", "require_anti_backlash", "oil_present", "vacuum"}
 TRUE_WORDS = {"1", "true", "on", "yes"}
 
@@ -88,6 +141,100 @@ def page_to_api(
             continue
         data[api] = to_api(value, quantity, units)
     return data, errors
+
+
+def entered_units(params: Mapping[str, str], units: dict[str, str]) -> dict[str, str]:
+    """Units the form's numbers were typed in (hidden ``from_*`` fields), else ``units``."""
+    return {
+        key: params.get(ENTERED_PREFIX + key, "")
+        if params.get(ENTERED_PREFIX + key, "") in UNIT_CHOICES[key]
+        else units[key]
+        for key in DEFAULT_UNITS
+    }
+
+
+def convert_entered(
+    params: Mapping[str, str], entered: dict[str, str], units: dict[str, str]
+) -> dict[str, str]:
+    """The page fields with every number re-expressed from ``entered`` into ``units``.
+
+    Text that is not a number (or 'any' lead) is kept as typed.
+
+    >>> convert_entered({"load": "100", "lead": "any"}, {"force_unit": "N", "length_unit": "mm",
+    ...     "torque_unit": "N_m"}, {"force_unit": "lbf", "length_unit": "in", "torque_unit": "N_m"})
+    {'load': '22.4809', 'lead': 'any'}
+    """
+    values = dict(params)
+    for page, (_, quantity) in PAGE_FIELDS.items():
+        raw = params.get(page, "").strip()
+        if quantity is None or entered == units or not raw:
+            continue
+        try:
+            number = float(raw)
+        except ValueError:
+            continue
+        values[page] = f"{from_api(to_api(number, quantity, entered), quantity, units):.6g}"
+    return values
+
+
+def form_defaults(units: dict[str, str]) -> dict[str, str]:
+    """Default of each optional page field as form text, numbers in display units.
+
+    Fields without a default (required, or optional like stroke) are left out.
+
+    >>> defaults = form_defaults({"force_unit": "N", "length_unit": "in", "torque_unit": "N_m"})
+    >>> defaults["accel"], defaults["compression"], defaults["end_fixity"]
+    ('39.3701', 'true', 'fixed-simple')
+    """
+    texts: dict[str, str] = {}
+    for page, (api, quantity) in PAGE_FIELDS.items():
+        default = ApplicationIn.model_fields[api].default
+        if isinstance(default, bool):
+            texts[page] = "true" if default else "false"
+        elif isinstance(default, int | float):
+            value = float(default) if quantity is None else from_api(default, quantity, units)
+            texts[page] = f"{value:.6g}"
+        elif isinstance(default, str):
+            texts[page] = default
+    return texts
+
+
+def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) -> str:
+    kind = str(error.get("type", ""))
+    if kind in BOUND_MESSAGES:
+        template, key = BOUND_MESSAGES[kind]
+        bound = float(error.get("ctx", {}).get(key, 0.0))
+        quantity = PAGE_FIELDS.get(page, ("", None))[1]
+        if quantity is not None:
+            return template.format(
+                bound=f"{sig(from_api(bound, quantity, units))} {label(quantity, units)}"
+            )
+        return template.format(bound=sig(bound))
+    if kind in PLAIN_MESSAGES:
+        return PLAIN_MESSAGES[kind]
+    message = str(error.get("msg", "")).removeprefix("Value error, ")
+    for api, name in sorted(API_TO_PAGE.items(), key=lambda item: -len(item[0])):
+        message = message.replace(api, PAGE_LABELS[name].lower())
+    return message[:1].upper() + message[1:].rstrip(".") + "."
+
+
+def parse_inputs(
+    params: Mapping[str, str], units: dict[str, str]
+) -> tuple[ApplicationIn | None, dict[str, str]]:
+    """Validate the page fields as an ``ApplicationIn``. Returns (inputs, errors by field).
+
+    Messages name bounds in the display units; an error of no one field is under 'form'.
+    """
+    data, errors = page_to_api(params, units)
+    try:
+        inputs = ApplicationIn.model_validate(data)
+    except ValidationError as exc:
+        for error in exc.errors():
+            loc = error.get("loc", ())
+            page = API_TO_PAGE.get(str(loc[0]), "form") if loc else "form"
+            errors.setdefault(page, _page_message(error, page, units))
+        return None, errors
+    return (inputs, {}) if not errors else (None, errors)
 
 
 def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:

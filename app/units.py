@@ -52,3 +52,94 @@ CHECK_UNITS = {
     "year": ("year", 1.0),
     "": ("", 1.0),
 }
+
+#: API unit of a check value -> the display quantity it is converted with.
+API_UNIT_QUANTITY: dict[str, Quantity] = {
+    "N": "force",
+    "mm": "length",
+    "mm/s": "speed",
+    "N m": "torque",
+}
+
+#: SI unit of a catalog value -> (display unit, factor from SI).
+CATALOG_UNITS = {
+    "m": ("mm", 1e3),
+    "Pa": ("GPa", 1e-9),
+    "Pa m/s": ("MPa m/s", 1e-6),
+    "1/K": ("µm/(m K)", 1e6),
+    "m/m": ("mm/m", 1e3),
+    "kg m2/m": ("kg m²/m", 1.0),
+    "kg/m3": ("kg/m³", 1.0),
+    "C": ("°C", 1.0),
+}
+#: catalog field-name prefix -> (display unit, factor from SI), where mm would mislead.
+CATALOG_FIELD_UNITS = {"max_length": ("m", 1.0), "life": ("km", 1e-3)}
+
+
+def sig(value: float, digits: int = 4) -> str:
+    """``value`` to ``digits`` significant figures; whole numbers past that, no exponent.
+
+    >>> sig(4298.213), sig(12345.6), sig(0.20705016), sig(22.480894)
+    ('4298', '12346', '0.2071', '22.48')
+    """
+    if abs(value) >= 10**digits:
+        return f"{round(value):d}"
+    return f"{value:.{digits}g}"
+
+
+def catalog_value(name: str, value: object, unit: str) -> tuple[str, str]:
+    """A catalog value (SI) as display text and unit: lengths in mm, moduli in GPa ...
+
+    Two-element tuples are ranges, longer ones lists.
+
+    >>> catalog_value("root_diameter", 0.009906, "m")
+    ('9.906', 'mm')
+    >>> catalog_value("leads", (0.001, 0.0025, 0.0127), "m")
+    ('1, 2.5, 12.7', 'mm')
+    >>> catalog_value("temperature_range", (0.0, 93.0), "C")
+    ('0 – 93', '°C')
+    """
+    shown, scale = next(
+        (u for prefix, u in CATALOG_FIELD_UNITS.items() if name.startswith(prefix)),
+        CATALOG_UNITS.get(unit, (unit, 1.0)),
+    )
+    if isinstance(value, tuple | list):
+        texts = [sig(float(v) * scale) for v in value]
+        return (" – " if len(texts) == 2 else ", ").join(texts), shown
+    if isinstance(value, int | float) and not isinstance(value, bool):
+        return sig(float(value) * scale), shown
+    return str(value), shown
+
+
+class Display:
+    """API-unit values (N, mm, mm/s, N m) shown in the user's display units."""
+
+    def __init__(self, units: dict[str, str]) -> None:
+        self.units = units
+
+    def value(self, api_value: float, quantity: Quantity) -> float:
+        """The number in display units."""
+        return from_api(api_value, quantity, self.units)
+
+    def text(self, api_value: float | None, quantity: Quantity, digits: int = 4) -> str:
+        """The number in display units as text; an em dash for None."""
+        if api_value is None:
+            return "—"
+        return sig(self.value(api_value, quantity), digits)
+
+    def label(self, quantity: Quantity) -> str:
+        return label(quantity, self.units)
+
+    def check(self, api_value: float | None, api_unit: str) -> str:
+        """A check's value or limit with its unit, converted where the unit is a display one.
+
+        >>> Display({"force_unit": "lbf", "length_unit": "in", "torque_unit": "N_m"}).check(
+        ...     100.0, "N")
+        '22.48 lbf'
+        """
+        if api_value is None:
+            return "—"
+        quantity = API_UNIT_QUANTITY.get(api_unit)
+        if quantity is None:
+            return f"{sig(api_value)} {api_unit}".strip()
+        return f"{self.text(api_value, quantity)} {self.label(quantity)}"

@@ -1,58 +1,174 @@
-"""HTML pages: the selector (full page or HTMX fragment) and the catalog."""
+"""HTML pages: the selector (full page or HTMX fragment), its exports, and the catalog."""
 
+from collections.abc import Mapping
 from typing import Any
 
 from fastapi import APIRouter, Request
-from fastapi.responses import HTMLResponse, Response
-from pydantic import ValidationError
+from fastapi.responses import HTMLResponse, JSONResponse, Response
 
+from app.catalog import Catalog
 from app.deps import CatalogDep
-from app.errors import validation_details
+from app.errors import AppError
+from app.export import results_csv
+from app.figures import chart_candidates, result_figures
+from app.present import series_dict
 from app.schemas import ApplicationIn
 from app.service import run_selection
-from app.share import API_TO_PAGE, page_to_api, parse_units, share_query
+from app.share import (
+    PAGE_FIELDS,
+    PAGE_LABELS,
+    TRUE_WORDS,
+    UNIT_CHOICES,
+    convert_entered,
+    entered_units,
+    form_defaults,
+    parse_inputs,
+    parse_units,
+    share_query,
+)
 from app.templating import templates
+from app.units import TORQUE_LABELS, Display, catalog_value
 
 router = APIRouter(include_in_schema=False)
 REQUIRED = ("load", "speed", "length")
+MAIN_FIELDS = ("load", "lead", "speed", "length")
+#: page field -> quantity, for the fields whose numbers follow the display units.
+UNIT_FIELDS = {page: quantity for page, (_, quantity) in PAGE_FIELDS.items() if quantity}
+EXPORT_NAME = "leadscrew-selection"
 
 
-def selector_context(params: dict[str, str], catalog: Any) -> dict[str, Any]:
-    """Parse the page query, run the selection when the form was filled in."""
+def _form(params: Mapping[str, str]) -> tuple[dict[str, str], dict[str, str], bool]:
+    """(display units, form values in those units, whether the units just changed)."""
     units = parse_units(params)
+    entered = entered_units(params, units)
+    return units, convert_entered(params, entered, units), entered != units
+
+
+def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
+    """Parse the page query, run the selection when the form was filled in."""
+    units, values, units_changed = _form(params)
     context: dict[str, Any] = {
         "units": units,
-        "values": params,
+        "values": values,
         "errors": {},
         "result": None,
         "share_url": None,
+        "query": "",
+        "figures": {},
+        "charting_passed": True,
+        "units_changed": units_changed,
+        "d": Display(units),
+        "defaults": form_defaults(units),
+        "labels": PAGE_LABELS,
+        "unit_fields": UNIT_FIELDS,
+        "true_words": TRUE_WORDS,
+        "rejected_groups": [],
+        "advanced_open": advanced_open,
+        "unit_choices": UNIT_CHOICES,
+        "torque_labels": TORQUE_LABELS,
     }
-    if not any(params.get(name) for name in REQUIRED):
+    if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
-    data, errors = page_to_api(params, units)
-    if not errors:
-        try:
-            inputs = ApplicationIn.model_validate(data)
-        except ValidationError as exc:
-            for item in validation_details(exc.errors()):
-                errors.setdefault(API_TO_PAGE.get(item["field"], "form"), item["message"])
-        else:
-            context["result"] = run_selection(inputs, catalog)
-            context["share_url"] = "/?" + share_query(inputs, units)
-    context["errors"] = errors
+    inputs, context["errors"] = parse_inputs(values, units)
+    if inputs is not None:
+        result = run_selection(inputs, catalog)
+        context["result"] = result
+        context["query"] = share_query(inputs, units)
+        context["share_url"] = "/?" + context["query"]
+        context["figures"] = result_figures(result, units)
+        context["charting_passed"] = chart_candidates(result)[1]
+        context["rejected_groups"] = rejected_groups(result["rejected"])
     return context
+
+
+def rejected_groups(rejected: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Rejected candidates grouped by governing (failing) check, nearest group first."""
+    groups: dict[str, dict[str, Any]] = {}
+    for c in rejected:
+        name = c["governing_check"] or "other"
+        label = next((k["label"] for k in c["checks"] if k["name"] == name), name)
+        groups.setdefault(name, {"name": name, "label": label, "candidates": []})
+        groups[name]["candidates"].append(c)
+    return list(groups.values())
+
+
+def advanced_open(
+    values: Mapping[str, str], errors: Mapping[str, str], defaults: Mapping[str, str]
+) -> bool:
+    """Open the Advanced section when one of its fields has an error or a non-default value."""
+    for name in PAGE_FIELDS:
+        text = values.get(name, "").strip().lower()
+        if name not in MAIN_FIELDS and (name in errors or text not in ("", defaults.get(name))):
+            return True
+    return False
+
+
+def _push_url(context: dict[str, Any]) -> str:
+    """The URL for the address bar: the result's share link; unchanged while input is bad."""
+    if context["share_url"]:
+        return str(context["share_url"])
+    return "false" if context["errors"] else "/"
 
 
 @router.get("/", response_class=HTMLResponse)
 async def selector(request: Request, catalog: CatalogDep) -> Response:
-    """The selector; an HTMX request gets only the results fragment."""
-    context = selector_context(dict(request.query_params), catalog)
-    fragment = request.headers.get("HX-Request") == "true"
-    return templates.TemplateResponse(
-        request, "partials/results.html" if fragment else "index.html", context
+    """The selector; an HTMX request gets the results fragment and out-of-band field errors."""
+    context = selector_context(request.query_params, catalog)
+    fragment = request.headers.get("HX-Request") == "true" and (
+        request.headers.get("HX-History-Restore-Request") != "true"
     )
+    response = templates.TemplateResponse(
+        request, "partials/htmx_response.html" if fragment else "index.html", context
+    )
+    response.headers["Vary"] = "HX-Request"
+    if fragment:
+        response.headers["HX-Push-Url"] = _push_url(context)
+    return response
+
+
+def _export_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
+    """Validated inputs and display units of an export link; a 422 page when invalid."""
+    units, values, _ = _form(params)
+    inputs, errors = parse_inputs(values, units)
+    if inputs is None:
+        detail = [{"field": PAGE_LABELS.get(k, k), "message": v} for k, v in errors.items()]
+        raise AppError(422, "invalid input", detail)
+    return inputs, units
+
+
+def _attachment(extension: str) -> dict[str, str]:
+    return {"Content-Disposition": f'attachment; filename="{EXPORT_NAME}.{extension}"'}
+
+
+@router.get("/export.csv")
+async def export_csv(request: Request, catalog: CatalogDep) -> Response:
+    """The result table as CSV in the link's display units."""
+    inputs, units = _export_inputs(request.query_params)
+    body = results_csv(run_selection(inputs, catalog), units)
+    return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
+
+
+@router.get("/export.json")
+async def export_json(request: Request, catalog: CatalogDep) -> Response:
+    """The API's select response (API units) for the link's inputs."""
+    inputs, _ = _export_inputs(request.query_params)
+    return JSONResponse(run_selection(inputs, catalog), headers=_attachment("json"))
+
+
+def _catalog_rows(series: dict[str, Any]) -> list[dict[str, str]]:
+    rows = []
+    for name, field in series["fields"].items():
+        text, unit = catalog_value(name, field["value"], field["unit"])
+        rows.append({"name": name, "value": text, "unit": unit, **field["provenance"]})
+    return rows
 
 
 @router.get("/catalog", response_class=HTMLResponse)
 async def catalog_page(request: Request, catalog: CatalogDep) -> Response:
-    return templates.TemplateResponse(request, "catalog.html", {"catalog": catalog})
+    """Every series and size with each value's provenance."""
+    series = [
+        {**series_dict(s), "rows": _catalog_rows(series_dict(s))} for s in catalog.series.values()
+    ]
+    return templates.TemplateResponse(
+        request, "catalog.html", {"version": catalog.version, "series": series}
+    )

@@ -1,0 +1,143 @@
+/*
+ * The page's one script. Draws every chart from its <script type="application/json">
+ * figure (on load and after each htmx swap), keeps aria-invalid in step with the inline
+ * error messages that htmx swaps out of band, copies share links, lets a click on a result
+ * row open its detail, and sizes the charts for the printed report. Nothing here is needed
+ * for the form to work.
+ */
+(function () {
+  "use strict";
+
+  var PLOT_CONFIG = {
+    responsive: true,
+    displaylogo: false,
+    modeBarButtonsToRemove: ["select2d", "lasso2d"],
+  };
+
+  function drawCharts(root) {
+    if (!window.Plotly) {
+      return;
+    }
+    root.querySelectorAll('script[type="application/json"][data-chart]').forEach(function (script) {
+      var target = document.getElementById(script.dataset.chart);
+      if (!target || target.classList.contains("js-plotly-plot")) {
+        return;
+      }
+      var figure = JSON.parse(script.textContent);
+      var config = Object.assign({}, PLOT_CONFIG, {
+        toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
+      });
+      window.Plotly.newPlot(target, figure.data, figure.layout, config);
+    });
+  }
+
+  function syncInvalid() {
+    var form = document.getElementById("selector");
+    if (!form) {
+      return;
+    }
+    form.querySelectorAll("input[name], select[name]").forEach(function (field) {
+      var message = document.getElementById("e-" + field.name);
+      if (!message) {
+        return;
+      }
+      if (message.textContent.trim()) {
+        field.setAttribute("aria-invalid", "true");
+      } else {
+        field.removeAttribute("aria-invalid");
+      }
+    });
+  }
+
+  function revealCopyButtons() {
+    document.querySelectorAll("button.copy-link[hidden]").forEach(function (button) {
+      button.hidden = false;
+    });
+  }
+
+  function copyWithSelection(text) {
+    var area = document.createElement("textarea");
+    area.value = text;
+    area.setAttribute("readonly", "");
+    area.className = "offscreen";
+    document.body.appendChild(area);
+    area.select();
+    var copied = false;
+    try {
+      copied = document.execCommand("copy");
+    } finally {
+      area.remove();
+    }
+    return copied ? Promise.resolve() : Promise.reject(new Error("copy refused"));
+  }
+
+  function copyText(text) {
+    if (navigator.clipboard && window.isSecureContext) {
+      return navigator.clipboard.writeText(text).catch(function () {
+        return copyWithSelection(text);
+      });
+    }
+    return copyWithSelection(text);
+  }
+
+  function onCopy(button) {
+    var url = new URL(button.dataset.url, window.location.href).href;
+    var status = button.parentElement.querySelector(".copy-status");
+    copyText(url).then(
+      function () {
+        status.textContent = "Link copied.";
+      },
+      function () {
+        status.textContent = "Copy this link: " + url;
+      }
+    );
+  }
+
+  function onClick(event) {
+    var button = event.target.closest("button.copy-link");
+    if (button) {
+      onCopy(button);
+      return;
+    }
+    var row = event.target.closest("tr.main[data-detail]");
+    if (row && !event.target.closest("a, button, summary, input, select")) {
+      var detail = document.getElementById(row.dataset.detail);
+      if (detail) {
+        detail.open = !detail.open;
+      }
+    }
+  }
+
+  var PRINT_SIZE = { width: 330, height: 230 };
+
+  function eachChart(action) {
+    if (!window.Plotly) {
+      return;
+    }
+    document.querySelectorAll(".chart.js-plotly-plot").forEach(action);
+  }
+
+  function sizeForPrint() {
+    eachChart(function (chart) {
+      window.Plotly.relayout(chart, PRINT_SIZE);
+    });
+  }
+
+  function sizeForScreen() {
+    eachChart(function (chart) {
+      window.Plotly.relayout(chart, { width: null, height: null, autosize: true });
+    });
+  }
+
+  function refresh() {
+    drawCharts(document);
+    syncInvalid();
+    revealCopyButtons();
+  }
+
+  document.addEventListener("DOMContentLoaded", refresh);
+  document.addEventListener("htmx:afterSettle", refresh);
+  document.addEventListener("click", onClick);
+  window.addEventListener("beforeprint", sizeForPrint);
+  window.addEventListener("afterprint", sizeForScreen);
+})();
