@@ -153,6 +153,17 @@ def entered_units(params: Mapping[str, str], units: dict[str, str]) -> dict[str,
     }
 
 
+def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str]:
+    """Page fields whose numbers change when going from ``entered`` to ``units``.
+
+    >>> converted_fields({"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"},
+    ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"})
+    ['load', 'max_torque']
+    """
+    changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
+    return [page for page, (_, quantity) in PAGE_FIELDS.items() if quantity in changed]
+
+
 def convert_entered(
     params: Mapping[str, str], entered: dict[str, str], units: dict[str, str]
 ) -> dict[str, str]:

@@ -20,6 +20,7 @@ from app.share import (
     TRUE_WORDS,
     UNIT_CHOICES,
     convert_entered,
+    converted_fields,
     entered_units,
     form_defaults,
     parse_inputs,
@@ -37,16 +38,16 @@ UNIT_FIELDS = {page: quantity for page, (_, quantity) in PAGE_FIELDS.items() if 
 EXPORT_NAME = "leadscrew-selection"
 
 
-def _form(params: Mapping[str, str]) -> tuple[dict[str, str], dict[str, str], bool]:
-    """(display units, form values in those units, whether the units just changed)."""
+def _form(params: Mapping[str, str]) -> tuple[dict[str, str], dict[str, str], list[str]]:
+    """(display units, form values in those units, fields whose units just changed)."""
     units = parse_units(params)
     entered = entered_units(params, units)
-    return units, convert_entered(params, entered, units), entered != units
+    return units, convert_entered(params, entered, units), converted_fields(entered, units)
 
 
 def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query, run the selection when the form was filled in."""
-    units, values, units_changed = _form(params)
+    units, values, converted = _form(params)
     context: dict[str, Any] = {
         "units": units,
         "values": values,
@@ -56,7 +57,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         "query": "",
         "figures": {},
         "charting_passed": True,
-        "units_changed": units_changed,
+        "converted": converted,
         "d": Display(units),
         "defaults": form_defaults(units),
         "labels": PAGE_LABELS,

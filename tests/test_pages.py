@@ -1,0 +1,406 @@
+"""The HTML side: full page vs HTMX fragment, units, inline errors, exports, catalog page.
+
+HTML is checked through CSS selectors (BeautifulSoup + soupsieve), not snapshots.
+"""
+
+import csv
+import io
+import json
+import math
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+from httpx import Response
+
+from app.catalog import Catalog
+from app.export import results_csv, safe_cell
+from app.share import PAGE_LABELS
+
+ROOT = Path(__file__).resolve().parents[1]
+AXIS = {"load": "100", "lead": "10", "speed": "50", "length": "500"}
+API_AXIS = {"load_n": 100, "lead_mm": 10, "speed_mm_s": 50, "length_mm": 500}
+HX = {"HX-Request": "true"}
+LBF = 4.4482216152605
+INCH = 25.4
+OZ_IN = 0.0070615518333
+
+
+def soup(response: Response) -> BeautifulSoup:
+    assert response.status_code == 200, response.text[:500]
+    return BeautifulSoup(response.text, "html.parser")
+
+
+def candidate_ids(page: BeautifulSoup) -> list[str]:
+    return [str(t["data-id"]) for t in page.select("table.candidates tbody.candidate")]
+
+
+def api_select(client: TestClient, **params: Any) -> dict[str, Any]:
+    body: dict[str, Any] = client.get("/api/v1/select", params={**API_AXIS, **params}).json()
+    return body
+
+
+# full page and fragment
+
+
+def test_empty_selector_is_a_form_with_a_label_on_every_field(client: TestClient) -> None:
+    page = soup(client.get("/"))
+    form = page.select_one("form#selector[action='/'][method='get']")
+    assert form is not None and form.select_one("button[type=submit]")
+    assert form["hx-get"] == "/" and "delay:400ms" in str(form["hx-trigger"])
+    for name in ("load", "lead", "speed", "length"):
+        assert page.select_one(f"#f-{name}[name={name}]")
+    for field in form.select("input:not([type=hidden]), select"):
+        labelled = field.find_parent("label") or page.select_one(f"label[for='{field['id']}']")
+        assert labelled, field
+    for name in PAGE_LABELS:
+        assert form.select(f"[name={name}]"), name
+    assert page.select_one("#results .prompt")
+    assert not page.select("table.candidates")
+
+
+def test_end_fixity_offers_four_drawn_cases(client: TestClient) -> None:
+    page = soup(client.get("/"))
+    radios = page.select("fieldset.fixity input[type=radio][name=end_fixity]")
+    assert [r["value"] for r in radios] == [
+        "fixed-free",
+        "simple-simple",
+        "fixed-simple",
+        "fixed-fixed",
+    ]
+    assert len(page.select("fieldset.fixity label svg.fixity-drawing")) == 4
+    assert page.select_one("input[name=end_fixity][checked]")["value"] == "fixed-simple"
+
+
+def test_full_page_renders_results_table_charts_and_counts(client: TestClient) -> None:
+    api = api_select(client)
+    page = soup(client.get("/", params=AXIS))
+    assert page.select_one("html form#selector")
+    assert candidate_ids(page) == [c["id"] for c in api["candidates"]]
+    counts = api["counts"]
+    assert page.select_one(".count-evaluated").text == str(counts["evaluated"])
+    assert page.select_one(".count-passed").text == str(counts["passed"])
+    assert page.select_one(".count-rejected").text == str(counts["rejected"])
+    charts = page.select("script[type='application/json'][data-chart]")
+    assert [c["id"] for c in charts] == ["fig-critical_speed", "fig-pv", "fig-torque"]
+    for script in charts:
+        assert page.select_one(f"#{script['data-chart']}.chart")
+        assert json.loads(script.string)["data"]
+
+
+def test_htmx_request_gets_fragment_with_push_url_and_oob_errors(client: TestClient) -> None:
+    response = client.get("/", params=AXIS, headers=HX)
+    page = soup(response)
+    assert not page.select("html, form#selector, h1")
+    assert page.select("table.candidates tbody tr")
+    assert response.headers["HX-Push-Url"] == "/?load=100&lead=10&speed=50&length=500"
+    assert "HX-Request" in response.headers["Vary"]
+    oob = {span["id"] for span in page.select("span.error[hx-swap-oob]")}
+    assert oob == {f"e-{name}" for name in PAGE_LABELS}
+    assert page.select_one("#status[hx-swap-oob]").text.strip().endswith("candidates pass.")
+
+
+def test_history_restore_request_gets_the_full_page(client: TestClient) -> None:
+    headers = {**HX, "HX-History-Restore-Request": "true"}
+    page = soup(client.get("/", params=AXIS, headers=headers))
+    assert page.select_one("html form#selector")
+
+
+def test_share_url_reopens_the_same_results(client: TestClient) -> None:
+    params = {**AXIS, "accel": "2000", "end_fixity": "fixed-fixed", "limit": "5"}
+    pushed = client.get("/", params=params, headers=HX).headers["HX-Push-Url"]
+    assert pushed.startswith("/?") and "end_fixity=fixed-fixed" in pushed
+    first = soup(client.get("/", params=params))
+    again = soup(client.get(pushed))
+    assert candidate_ids(again) == candidate_ids(first)
+    assert len(candidate_ids(again)) == 5
+    assert again.select_one("a.share-link")["href"] == pushed
+    assert again.select_one("button.copy-link")["data-url"] == pushed
+
+
+@pytest.mark.parametrize(
+    "path",
+    ["/", "/?load=100&lead=10&speed=50&length=500", "/?load=abc&speed=1&length=1", "/catalog"],
+    ids=["empty", "results", "error", "catalog"],
+)
+def test_no_inline_script_style_or_handler(client: TestClient, path: str) -> None:
+    """The CSP (script-src 'self'; style-src 'self') would block any of these."""
+    page = soup(client.get(path))
+    for script in page.select("script"):
+        assert script.get("src") or script.get("type") == "application/json", script
+    assert not page.select("style, [style]")
+    handlers = [a for tag in page.find_all(True) for a in tag.attrs if a.startswith("on")]
+    assert handlers == []
+
+
+# units
+
+
+@pytest.mark.parametrize(
+    ("params", "unit_text"),
+    [
+        ({"load": "22.4809", "force_unit": "lbf"}, "lbf"),
+        ({"load": "10.19716", "force_unit": "kgf"}, "kgf"),
+        (
+            {"lead": "0.393701", "speed": "1.968504", "length": "19.68504", "length_unit": "in"},
+            "in",
+        ),
+    ],
+    ids=["lbf", "kgf", "inch"],
+)
+def test_same_axis_in_other_units_gives_same_candidates(
+    client: TestClient, params: dict[str, str], unit_text: str
+) -> None:
+    metric = soup(client.get("/", params=AXIS))
+    other = soup(client.get("/", params={**AXIS, **params}))
+    assert candidate_ids(other) == candidate_ids(metric)
+    assert unit_text in other.select_one("dl.inputs").text
+
+
+def test_table_values_follow_the_display_units(client: TestClient) -> None:
+    api = api_select(client)["candidates"][0]
+    params = {
+        **AXIS,
+        "lead": "0.393701",
+        "speed": "1.968504",
+        "length": "19.68504",
+        "length_unit": "in",
+        "torque_unit": "oz_in",
+    }
+    page = soup(client.get("/", params=params))
+    head = page.select_one("table.candidates thead").text
+    assert "oz in" in head and "in" in head and "mm" not in head
+    row = page.select_one("tbody.candidate")
+    torque = float(row.select_one(".torque-total").text)
+    assert math.isclose(torque, api["torque"]["total_nm"] / OZ_IN, rel_tol=1e-3)
+    assert math.isclose(float(row.select_one(".lead").text), 10 / INCH, rel_tol=1e-3)
+    detail_values = [dd.text for dd in row.select("li.check[data-check=length] .check-value")]
+    assert detail_values == ["19.69 in"]
+
+
+def test_switching_units_converts_the_typed_values(client: TestClient) -> None:
+    params = {**AXIS, "force_unit": "lbf", "from_force_unit": "N", "from_length_unit": "mm"}
+    page = soup(client.get("/", params=params))
+    assert page.select_one("#f-load")["value"] == "22.4809"
+    assert page.select_one("#f-length")["value"] == "500"
+    assert page.select_one("input[name=from_force_unit]")["value"] == "lbf"
+    assert candidate_ids(page) == candidate_ids(soup(client.get("/", params=AXIS)))
+
+
+def test_switching_units_swaps_converted_fields_out_of_band(client: TestClient) -> None:
+    params = {**AXIS, "length_unit": "in", "from_length_unit": "mm"}
+    response = client.get("/", params=params, headers=HX)
+    page = soup(response)
+    assert page.select_one("#w-length[hx-swap-oob] #f-length")["value"] == "19.685"
+    assert page.select_one("#w-speed[hx-swap-oob] label .unit").text == "in/s"
+    assert page.select_one("#entered-units[hx-swap-oob] input[name=from_length_unit]")[
+        "value"
+    ] == ("in")
+    assert not page.select("#w-load")  # force fields did not change units
+    assert "length_unit=in" in response.headers["HX-Push-Url"]
+
+
+# inline errors
+
+
+def test_bad_number_is_shown_inline_and_kept(client: TestClient) -> None:
+    page = soup(client.get("/", params={**AXIS, "load": "12x"}))
+    field = page.select_one("#f-load")
+    assert field["value"] == "12x"
+    assert field["aria-invalid"] == "true"
+    assert "e-load" in field["aria-describedby"].split()
+    assert page.select_one("#e-load").text == "Enter a number."
+    assert not page.select("table.candidates")
+    assert page.select_one("#results .notice.invalid")
+
+
+def test_bad_number_in_htmx_request_updates_error_span_only(client: TestClient) -> None:
+    response = client.get("/", params={**AXIS, "load": "12x"}, headers=HX)
+    page = soup(response)
+    assert response.headers["HX-Push-Url"] == "false"
+    assert page.select_one("span#e-load[hx-swap-oob]").text == "Enter a number."
+    assert page.select_one("span#e-speed[hx-swap-oob]").text == ""
+    assert not page.select("input#f-load")  # the field being typed in is not replaced
+
+
+def test_bounds_are_stated_in_display_units(client: TestClient) -> None:
+    page = soup(client.get("/", params={**AXIS, "load": "300000", "force_unit": "lbf"}))
+    assert page.select_one("#e-load").text == "Must be at most 224809 lbf."
+    page = soup(client.get("/", params={**AXIS, "critical_speed_safety_factor": "2"}))
+    assert page.select_one("#e-critical_speed_safety_factor").text == "Must be at most 1."
+    assert page.select_one("details.advanced[open]")
+
+
+def test_missing_required_fields_are_named(client: TestClient) -> None:
+    page = soup(client.get("/", params={"load": "100"}))
+    assert page.select_one("#e-speed").text == "Required."
+    assert page.select_one("#e-length").text == "Required."
+    assert page.select_one("#f-load")["value"] == "100"
+
+
+def test_error_of_no_single_field_is_shown_in_the_results(client: TestClient) -> None:
+    page = soup(client.get("/", params={**AXIS, "required_life_years": "3"}))
+    assert page.select_one("#e-form").text == "Required life needs stroke and cycles per day."
+
+
+# advanced options
+
+
+def test_advanced_opens_only_for_non_default_values(client: TestClient) -> None:
+    defaults = {**AXIS, "orientation": "horizontal", "compression": "true", "accel": ""}
+    assert not soup(client.get("/", params=defaults)).select("details.advanced[open]")
+    page = soup(client.get("/", params={**AXIS, "compression": "false", "vacuum": "true"}))
+    assert page.select_one("details.advanced[open]")
+    assert page.select_one("#f-compression option[selected]")["value"] == "false"
+    assert page.select_one("#f-vacuum[checked]")
+    assert "tension" in page.select_one("dl.inputs").text
+
+
+# detail, rejected, no pass
+
+
+def test_detail_lists_every_check_with_formula_and_provenance(client: TestClient) -> None:
+    api = api_select(client)["candidates"][0]
+    page = soup(client.get("/", params=AXIS))
+    body = page.select_one("tbody.candidate")
+    assert body.select_one("tr.main")["data-detail"] == body.select_one("details.detail")["id"]
+    checks = body.select("details.detail li.check")
+    assert [c["data-check"] for c in checks] == [k["name"] for k in api["checks"]]
+    for item, check in zip(checks, api["checks"], strict=True):
+        assert item.select_one(".formula code").text == check["formula"]
+        assert item.select_one(".message").text == check["message"]
+        kinds = [k.text for k in item.select("ul.sources .kind")]
+        assert kinds == [api["provenance"][s]["kind"] for s in check["sources"]]
+        sources = [s.text for s in item.select("ul.sources .source")]
+        assert sources == [api["provenance"][s]["source"] for s in check["sources"]]
+
+
+def test_rejected_are_grouped_by_failing_check_with_fixes(client: TestClient) -> None:
+    api = api_select(client)
+    page = soup(client.get("/", params=AXIS))
+    section = page.select_one("details.rejected:not([open])")
+    groups = section.select("section.reject-group")
+    assert {g["data-check"] for g in groups} == {c["governing_check"] for c in api["rejected"]}
+    shown = [li["data-id"] for li in section.select("li.rejected-candidate")]
+    assert sorted(shown) == sorted(c["id"] for c in api["rejected"])
+    for item in section.select("li.rejected-candidate"):
+        assert item.select_one(".fix").text.startswith("Fix:")
+
+
+def test_no_passing_candidate_shows_the_summary_prominently(client: TestClient) -> None:
+    params = {"load": "10000", "speed": "500", "length": "3000"}
+    api = client.get(
+        "/api/v1/select", params={"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000}
+    ).json()
+    page = soup(client.get("/", params=params))
+    assert api["counts"]["passed"] == 0
+    assert page.select_one(".notice.no-pass .summary").text == api["summary"]["message"]
+    assert not page.select("table.candidates")
+    assert "nearest rejected" in page.select_one("#charts-heading").text
+
+
+# exports
+
+
+def test_csv_export_has_a_row_per_candidate_in_display_units(client: TestClient) -> None:
+    api = api_select(client)
+    response = client.get("/export.csv", params={**AXIS, "torque_unit": "lb_in"})
+    assert response.status_code == 200
+    assert response.headers["content-type"].startswith("text/csv")
+    assert "attachment" in response.headers["content-disposition"]
+    rows = list(csv.DictReader(io.StringIO(response.text)))
+    passed = [r for r in rows if r["status"] == "passed"]
+    assert [r["id"] for r in passed] == [c["id"] for c in api["candidates"]]
+    assert [r["rank"] for r in passed] == [str(i + 1) for i in range(len(passed))]
+    assert len(rows) == len(api["candidates"]) + len(api["rejected"])
+    total = float(passed[0]["torque_total [lb in]"])
+    assert math.isclose(total, api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617)
+
+
+def test_csv_cells_cannot_start_a_formula(client: TestClient) -> None:
+    result = api_select(client)
+    hostile = {**result["candidates"][0], "id": "=HYPERLINK(1)", "series": "@SUM(A1)"}
+    hostile["fix"] = "-2+3"
+    text = results_csv({**result, "candidates": [hostile], "rejected": []}, _METRIC)
+    row = next(csv.DictReader(io.StringIO(text)))
+    assert (row["id"], row["series"], row["fix"]) == ("'=HYPERLINK(1)", "'@SUM(A1)", "'-2+3")
+    assert safe_cell("+1") == "'+1" and safe_cell(-1.0) == -1.0
+
+
+_METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
+
+
+def test_json_export_is_the_api_selection(client: TestClient) -> None:
+    response = client.get("/export.json", params={**AXIS, "force_unit": "lbf", "load": "22.4809"})
+    assert response.status_code == 200
+    assert "attachment" in response.headers["content-disposition"]
+    body = response.json()
+    api = api_select(client)
+    assert math.isclose(body["inputs"]["load_n"], 100.0, rel_tol=1e-5)
+    assert [c["id"] for c in body["candidates"]] == [c["id"] for c in api["candidates"]]
+    assert body["counts"] == api["counts"]
+
+
+def test_export_with_bad_input_is_a_422_page(client: TestClient) -> None:
+    response = client.get("/export.csv", params={**AXIS, "load": "-1"})
+    assert response.status_code == 422
+    assert "Axial load" in response.text and "Must be more than 0 N." in response.text
+
+
+def test_export_links_carry_the_share_query(client: TestClient) -> None:
+    page = soup(client.get("/", params={**AXIS, "force_unit": "lbf", "load": "22.4809"}))
+    links = [a["href"] for a in page.select(".share a.export")]
+    query = page.select_one("a.share-link")["href"].removeprefix("/?")
+    assert links == [f"/export.csv?{query}", f"/export.json?{query}"]
+
+
+# catalog page
+
+
+def test_catalog_page_lists_every_series_with_provenance(
+    client: TestClient, catalog: Catalog
+) -> None:
+    page = soup(client.get("/catalog"))
+    sections = page.select("section.series")
+    assert [s["id"] for s in sections] == list(catalog.series)
+    for section in sections:
+        series = catalog.series[section["id"]]
+        rows = section.select("table.series-fields tbody tr")
+        assert [r["data-field"] for r in rows] == list(series.fields)
+        for row in rows:
+            field = series.fields[row["data-field"]]
+            assert row.select_one(".kind").text == field.provenance.kind
+            assert row.select_one(".source").text == field.provenance.source
+    root = page.select_one("section#ZBX8000 tr[data-field=root_diameter]")
+    value = catalog.series["ZBX8000"].fields["root_diameter"].value
+    assert float(root.select("td")[0].text) == pytest.approx(value * 1e3, rel=1e-3)
+    assert root.select("td")[1].text == "mm"
+
+
+# static assets
+
+
+def test_plotly_css_matches_the_bundles_style_rules() -> None:
+    """static/css/plotly-4.1.1.css holds exactly the rules Plotly would inject.
+
+    Plotly.js skips injecting its <style> when an element with id plotly.js-style-global
+    has class no-inline-styles; the page's <link> is that element, so style-src 'self' holds.
+    """
+    bundle = (ROOT / "static/vendor/plotly-basic-4.1.1.min.js").read_text()
+    start = bundle.index("pM={") + 3
+    rules = bundle[start : bundle.index("};for(Ng in pM)", start) + 1]
+    pairs = re.findall(r'"([^"]+)":(\'[^\']*\'|"[^"]*")', rules)
+    expected = [
+        re.sub(r"^,", " ,", key).replace("X", ".js-plotly-plot .plotly").replace(
+            "Y", ".plotly-notifier"
+        )
+        + "{"
+        + value[1:-1]
+        + "}"
+        for key, value in pairs
+    ]
+    css = (ROOT / "static/css/plotly-4.1.1.css").read_text()
+    assert [line for line in css.splitlines() if "{" in line] == expected
