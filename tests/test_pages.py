@@ -196,9 +196,8 @@ def test_switching_units_swaps_converted_fields_out_of_band(client: TestClient) 
     page = soup(response)
     assert page.select_one("#w-length[hx-swap-oob] #f-length")["value"] == "19.685"
     assert page.select_one("#w-speed[hx-swap-oob] label .unit").text == "in/s"
-    assert page.select_one("#entered-units[hx-swap-oob] input[name=from_length_unit]")[
-        "value"
-    ] == ("in")
+    entered = page.select_one("#entered-units[hx-swap-oob] input[name=from_length_unit]")
+    assert entered["value"] == "in"
     assert not page.select("#w-load")  # force fields did not change units
     assert "length_unit=in" in response.headers["HX-Push-Url"]
 
@@ -394,9 +393,9 @@ def test_plotly_css_matches_the_bundles_style_rules() -> None:
     rules = bundle[start : bundle.index("};for(Ng in pM)", start) + 1]
     pairs = re.findall(r'"([^"]+)":(\'[^\']*\'|"[^"]*")', rules)
     expected = [
-        re.sub(r"^,", " ,", key).replace("X", ".js-plotly-plot .plotly").replace(
-            "Y", ".plotly-notifier"
-        )
+        re.sub(r"^,", " ,", key)
+        .replace("X", ".js-plotly-plot .plotly")
+        .replace("Y", ".plotly-notifier")
         + "{"
         + value[1:-1]
         + "}"
