@@ -108,7 +108,8 @@
     }
   }
 
-  var PRINT_SIZE = { width: 330, height: 230 };
+  var PRINT_LAYOUT = { width: 345, height: 250, "font.size": 8 };
+  var SCREEN_LAYOUT = { width: null, height: null, autosize: true, "font.size": 12 };
 
   function eachChart(action) {
     if (!window.Plotly) {
@@ -119,13 +120,13 @@
 
   function sizeForPrint() {
     eachChart(function (chart) {
-      window.Plotly.relayout(chart, PRINT_SIZE);
+      window.Plotly.relayout(chart, PRINT_LAYOUT);
     });
   }
 
   function sizeForScreen() {
     eachChart(function (chart) {
-      window.Plotly.relayout(chart, { width: null, height: null, autosize: true });
+      window.Plotly.relayout(chart, SCREEN_LAYOUT);
     });
   }
 
