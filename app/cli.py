@@ -3,12 +3,24 @@
 import argparse
 import json
 import os
+import signal
 import sys
 from pathlib import Path
+from types import FrameType
 
 import uvicorn
 
 from app.catalog import CatalogError, load_catalog
+
+
+def _stopped(signum: int, frame: FrameType | None) -> None:
+    """A requested stop is a clean exit.
+
+    uvicorn shuts down gracefully on SIGTERM or SIGINT, then raises the signal again for
+    the handler that was there before it: this one, so that the process exits 0 instead
+    of dying by the signal (exit 143) or with a KeyboardInterrupt traceback.
+    """
+    raise SystemExit(0)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -33,6 +45,8 @@ def main(argv: list[str] | None = None) -> int:
         os.environ["LEADSCREW_CATALOG_DIRS"] = json.dumps(
             [str(p.resolve()) for p in args.catalog_dir]
         )
+    for stop in (signal.SIGTERM, signal.SIGINT):
+        signal.signal(stop, _stopped)
     uvicorn.run(
         "app.main:create_app",
         factory=True,

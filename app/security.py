@@ -59,19 +59,27 @@ class SecurityMiddleware:
             cache = IMMUTABLE if versioned else SHORT
         api = path.startswith("/api/")
         received = 0
-        started = False
+        too_large = started = False
 
         async def limited_receive() -> Message:
-            nonlocal received
+            nonlocal received, too_large
             message = await receive()
             if message["type"] == "http.request":
                 received += len(message.get("body", b""))
                 if received > self.max_body:
+                    too_large = not started
                     raise BodyTooLarge
             return message
 
         async def send_with_headers(message: Message) -> None:
             nonlocal started
+            if too_large:
+                # FastAPI catches errors raised while it reads a body and answers 400 (or
+                # the route turns that into a 422); the client should hear 413 instead
+                if message["type"] == "http.response.start":
+                    started = True
+                    await self._refuse(send, 413, "request body too large")
+                return
             if message["type"] == "http.response.start":
                 started = True
                 headers = list(message.get("headers", []))

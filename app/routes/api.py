@@ -42,7 +42,7 @@ class ModelJSON(Response):
     media_type = "application/json"
 
     def render(self, content: Any) -> bytes:
-        return pydantic_core.to_json(content)
+        return pydantic_core.to_json(content, inf_nan_mode="null")
 
 
 @router.get("/health", response_model=HealthOut)
