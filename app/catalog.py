@@ -25,6 +25,43 @@ COATINGS = ("none", "tfe")
 MM = 1e-3
 INCHES_PER_M = 1 / 0.0254
 COMMON = "common.toml"
+SERIES_FIELDS = frozenset(
+    {
+        "name",
+        "type",
+        "outer_diameter_mm",
+        "root_diameter_mm",
+        "root_diameter_ratio",
+        "inertia_kg_m2_per_in",
+        "drag_torque_nm",
+        "backlash_mm",
+        "life_million_cm_uncoated",
+        "life_million_cm_tfe",
+        "screw_material",
+        "nut_material",
+        "thread_half_angle_deg",
+        "friction_static",
+        "friction_dynamic_uncoated",
+        "friction_dynamic_tfe",
+        "pv_limit_uncoated_mpa_m_s",
+        "pv_limit_tfe_mpa_m_s",
+        "max_length_uncoated_mm",
+        "max_length_tfe_mm",
+        "coatings",
+        "leads_mm",
+        "max_lead_to_od",
+        "design_load_n",
+        "design_contact_pressure_mpa",
+        "design_load_factor",
+        "lead_accuracy_mm_per_mm",
+        "repeatability_mm",
+        "temperature_range_c",
+        "straightness_mm_per_300mm",
+        "nut_expansion_per_c",
+        "nut_tensile_strength_mpa",
+        "outgassing_percent",
+    }
+)
 UNRATED_LIFE = Provenance(
     "derived",
     "no life rating in the catalog for this series (the seed lists N/A for the "
@@ -140,6 +177,30 @@ class _Entry:
             raise self.fail(name, f"must be one of {', '.join(choices)}, got '{value}'")
         return value
 
+    def pairs(self, name: str) -> tuple[tuple[float, float], ...]:
+        value = self.leaf(name).get("value")
+        ok = isinstance(value, list) and all(
+            isinstance(pair, list)
+            and len(pair) == 2
+            and all(
+                isinstance(x, int | float)
+                and not isinstance(x, bool)
+                and math.isfinite(x)
+                and x >= 0
+                for x in pair
+            )
+            for pair in value
+        )
+        if not ok or not isinstance(value, list):
+            raise self.fail(name, "'value' must be a list of [number, number] pairs >= 0")
+        return tuple((float(a), float(b)) for a, b in value)
+
+    def check_known(self, known: frozenset[str]) -> None:
+        """Every field of the entry is one the loader reads (catches misspelt names)."""
+        for name in self.data:
+            if name not in known:
+                raise self.fail(name, "unknown field (see catalog/README.md for the fields)")
+
     def numbers(self, name: str) -> list[float]:
         value = self.leaf(name).get("value")
         if not isinstance(value, list) or not value:
@@ -185,6 +246,7 @@ def _build_series(
 ) -> Series:
     """Validate one merged entry, derive what it leaves out, expand leads x coatings."""
     sid = entry.entry
+    entry.check_known(SERIES_FIELDS)
     kind = entry.text("type", SERIES_TYPES)
     od_m = entry.number("outer_diameter_mm") * MM
     if "root_diameter_mm" in entry.data:
@@ -197,7 +259,10 @@ def _build_series(
             "assumed", f"{ratio:g} x OD: {entry.prov('root_diameter_ratio').source}"
         )
     if rd_m >= od_m:
-        raise entry.fail("root_diameter_mm", "root diameter must be below the outer diameter")
+        field_name = (
+            "root_diameter_mm" if "root_diameter_mm" in entry.data else ("root_diameter_ratio")
+        )
+        raise entry.fail(field_name, "root diameter must be below the outer diameter")
     material_name = entry.text("screw_material")
     if material_name not in materials:
         raise entry.fail("screw_material", f"unknown material '{material_name}'")
@@ -230,7 +295,7 @@ def _build_series(
             f"{factor:g} x {pressure / 1e6:g} MPa x 3 pi d_p h (seed three-thread area; "
             f"pressure and factor assumed)"
         )
-    outgassing = entry.leaf("outgassing_percent").get("value", [])
+    outgassing = entry.pairs("outgassing_percent")
 
     fields: dict[str, Sourced] = {
         "type": Sourced(kind, "", entry.prov("type")),
@@ -255,6 +320,20 @@ def _build_series(
         ),
         "nut_material": Sourced(entry.text("nut_material"), "", entry.prov("nut_material")),
         "screw_material": Sourced(material_name, "", entry.prov("screw_material")),
+        "straightness": Sourced(
+            entry.number("straightness_mm_per_300mm") * MM / 0.3,
+            "m/m",
+            entry.prov("straightness_mm_per_300mm"),
+        ),
+        "nut_expansion": Sourced(
+            entry.number("nut_expansion_per_c"), "1/K", entry.prov("nut_expansion_per_c")
+        ),
+        "nut_tensile_strength": Sourced(
+            entry.number("nut_tensile_strength_mpa") * 1e6,
+            "Pa",
+            entry.prov("nut_tensile_strength_mpa"),
+        ),
+        "outgassing": Sourced(outgassing, "h, %", entry.prov("outgassing_percent")),
     }
     if t_min is not None:
         fields["temperature_range"] = Sourced(
@@ -324,7 +403,7 @@ def _build_series(
                     temperature_min_c=t_min,
                     temperature_max_c=t_max,
                     oil_compatible=not coated,
-                    outgassing=tuple((float(a), float(b)) for a, b in outgassing),
+                    outgassing=outgassing,
                     material_name=material_name,
                     nut_material=fields["nut_material"].value,
                     provenance=prov,

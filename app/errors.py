@@ -1,11 +1,14 @@
 """One error type with an HTTP status, shown as JSON on /api and as HTML on pages."""
 
 import re
+from collections.abc import Callable, Coroutine
 from typing import Any
 
 from fastapi import Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse, Response
+from fastapi.routing import APIRoute
+from starlette.exceptions import HTTPException
 
 from app.templating import templates
 
@@ -62,3 +65,28 @@ async def app_error_handler(request: Request, exc: Exception) -> Response:
 async def validation_error_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, RequestValidationError)
     return _respond(request, 422, "invalid input", validation_details(exc.errors()))
+
+
+class ApiRoute(APIRoute):
+    """An API route whose unreadable request bodies come back as invalid input.
+
+    FastAPI answers a body it cannot even decode (bytes that are not UTF-8) with its own
+    400 ``{"detail": "There was an error parsing the body"}``; here it is malformed JSON
+    like any other: a 422 in the error shape.
+    """
+
+    def get_route_handler(self) -> Callable[[Request], Coroutine[Any, Any, Response]]:
+        handler = super().get_route_handler()
+
+        async def route(request: Request) -> Response:
+            try:
+                return await handler(request)
+            except HTTPException as exc:
+                if exc.status_code != 400:
+                    raise
+                reason = f"Malformed JSON body: {exc.__cause__ or exc.detail}"
+                raise AppError(
+                    422, "invalid input", [{"field": "request", "message": reason}]
+                ) from exc
+
+        return route

@@ -56,6 +56,11 @@ FORMULAS: dict[str, Formula] = {
     "holding_torque.physics_nm": _f(
         "T_b = F lead eta_b / (2 pi), back-drive eta", "efficiency.holding_torque", SHIGLEY
     ),
+    "holding_torque.brake_nm": _f(
+        "T = max(seed method, physics); 0 when self-locking",
+        "evaluate.evaluate",
+        "safe side of both",
+    ),
     "torque.inertia_screw_nm": _f(
         "T = (J/L x L) x 2 pi a / lead",
         "torque.inertia_torque",

@@ -95,6 +95,7 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
         "holding_torque": {
             "seed_method_nm": ev.holding_torque_seed_nm,
             "physics_nm": ev.holding_torque_physics_nm,
+            "brake_nm": ev.brake_torque_nm,
         },
         "torque": {
             "inertia_nm": t.inertia_nm,

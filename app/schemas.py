@@ -242,8 +242,9 @@ class PVOut(BaseModel):
 
 
 class HoldingTorqueOut(BaseModel):
-    seed_method_nm: float
-    physics_nm: float
+    seed_method_nm: float = Field(description="Seed: F lead eta / 2 pi, forward eta.")
+    physics_nm: float = Field(description="F lead eta_b / 2 pi, back-drive eta, static mu.")
+    brake_nm: float = Field(description="Brake to fit: the larger of the two; 0 if locking.")
 
 
 class LifeOut(BaseModel):

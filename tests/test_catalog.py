@@ -450,14 +450,6 @@ def test_missing_extra_directory(tmp_path: Path) -> None:
         load_catalog([tmp_path / "nowhere"])
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        "app/catalog.py _build_series: with root_diameter_ratio >= 1 (no root_diameter_mm "
-        "in the entry) the error names the field 'root_diameter_mm', which the file does not "
-        "have, instead of 'root_diameter_ratio'"
-    ),
-)
 def test_root_ratio_error_names_the_ratio(tmp_path: Path) -> None:
     text = _replace_line(
         "root_diameter_mm",
@@ -468,14 +460,6 @@ def test_root_ratio_error_names_the_ratio(tmp_path: Path) -> None:
     assert caught.value.field == "root_diameter_ratio"
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        "app/catalog.py _build_series reads outgassing_percent without validating it: a "
-        "malformed value raises a bare ValueError (tuple unpacking) instead of CatalogError "
-        "naming file, entry and field"
-    ),
-)
 def test_malformed_outgassing_is_a_catalog_error(tmp_path: Path) -> None:
     text = _with_line('outgassing_percent = { value = [[24.0]], provenance = "seed" }')
     with pytest.raises(CatalogError) as caught:
@@ -483,14 +467,6 @@ def test_malformed_outgassing_is_a_catalog_error(tmp_path: Path) -> None:
     assert (caught.value.entry, caught.value.field) == ("MY10", "outgassing_percent")
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        "app/catalog.py never reads straightness_mm_per_300mm, nut_expansion_per_c or "
-        "nut_tensile_strength_mpa (README: 'shown, not checked'), so their provenance is not "
-        "validated: a value without provenance loads silently"
-    ),
-)
 def test_every_field_provenance_is_validated_at_load(tmp_path: Path) -> None:
     """catalog-notes.md: every value in catalog/ must carry its provenance; DESIGN.md: the
     loader validates every file at start-up."""

@@ -10,6 +10,7 @@ from collections.abc import Callable, Mapping
 
 from app.core import buckling, critical_speed, limits
 from app.core.model import (
+    PASS_UTILIZATION,
     STANDARD_GRAVITY_M_S2,
     Application,
     Check,
@@ -43,7 +44,7 @@ def _numeric(
 ) -> Check:
     """A value-against-limit check."""
     utilization = value / limit
-    if utilization <= 1.0:
+    if utilization <= PASS_UTILIZATION:
         return Check(name, label, True, value, limit, unit, utilization, ok(), formula, sources)
     return Check(
         name,
@@ -309,7 +310,7 @@ def back_driving_check(app: Application, ev: Evaluation) -> Check:
             f"{ev.holding_torque_physics_nm:.3g} N m (physics)."
         ),
         lambda: (
-            f"Fit a brake of at least {ev.holding_torque_seed_nm:.3g} N m or use a lead of "
+            f"Fit a brake of at least {ev.brake_torque_nm:.3g} N m or use a lead of "
             f"at most {_mm(ev.max_self_locking_lead_m)}."
         ),
     )
@@ -339,8 +340,8 @@ def torque_check(app: Application, ev: Evaluation) -> Check | None:
 
 def life_check(app: Application, ev: Evaluation) -> Check | None:
     required = app.required_life_years
-    if required is None or app.stroke_m is None or app.cycles_per_day is None:
-        return None
+    if required is None or not app.stroke_m or not app.cycles_per_day:
+        return None  # no duty to convert the rated travel to years
     formula = "life = rated travel / (2 stroke x cycles per year)"
     if ev.life is None or ev.life.years_min is None:
         return _flag(

@@ -113,8 +113,10 @@ def max_self_locking_lead(
 def holding_torque(load_n: float, lead_m: float, efficiency: float) -> float:
     """Torque to hold a back-drivable load, T_b = F lead eta / (2 pi) [N m].
 
-    With eta = forward efficiency this is the seed's formula (safe side for sizing a
-    brake); with eta = back-drive efficiency it is the physically consistent value.
+    With eta = forward efficiency this is the seed's formula; with eta = back-drive
+    efficiency (static friction) it is the physically consistent value. Neither bounds the
+    other: at the seed's frictions the physics value is the larger for uncoated screws
+    (mu_d 0.15 > mu_s 0.08), so a brake is sized on the larger of the two.
     Source: seed [1], "Back Driving".
 
     >>> round(holding_torque(100.0, 0.01, 0.5), 5)

@@ -7,6 +7,7 @@ from app.core import accuracy, buckling, critical_speed, efficiency, geometry, l
 from app.core import torque as torque_
 from app.core.checks import build_checks
 from app.core.model import (
+    PASS_UTILIZATION,
     PV,
     STANDARD_GRAVITY_M_S2,
     Accuracy,
@@ -123,19 +124,15 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
 
     life_res = None
     if screw.life_min_m is not None and screw.life_max_m is not None:
-        have_duty = app.stroke_m is not None and app.cycles_per_day is not None
+        stroke_m, cycles = app.stroke_m, app.cycles_per_day
         life_res = Life(
             travel_min_m=screw.life_min_m,
             travel_max_m=screw.life_max_m,
             years_min=(
-                life.life_years(screw.life_min_m, app.stroke_m, app.cycles_per_day)
-                if have_duty and app.stroke_m and app.cycles_per_day
-                else None
+                life.life_years(screw.life_min_m, stroke_m, cycles) if stroke_m and cycles else None
             ),
             years_max=(
-                life.life_years(screw.life_max_m, app.stroke_m, app.cycles_per_day)
-                if have_duty and app.stroke_m and app.cycles_per_day
-                else None
+                life.life_years(screw.life_max_m, stroke_m, cycles) if stroke_m and cycles else None
             ),
         )
 
@@ -154,6 +151,11 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
         ),
     )
 
+    # The seed's holding torque uses the forward efficiency at running friction; the
+    # physical one, the back-drive efficiency at static friction, is larger for uncoated
+    # screws (mu_d 0.15 > mu_s 0.08) and steep leads. A brake must hold the larger.
+    holding_seed = 0.0 if self_locking else efficiency.holding_torque(force_n, screw.lead_m, eta)
+    holding_physics = efficiency.holding_torque(force_n, screw.lead_m, eta_b)
     partial = Evaluation(
         screw=screw,
         axial_load_n=force_n,
@@ -165,10 +167,9 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
         self_locking=self_locking,
         seed_rule_no_backdrive=efficiency.seed_backdrive_rule(screw.lead_m, screw.outer_diameter_m),
         max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, screw.friction_static, cos_a),
-        holding_torque_seed_nm=(
-            0.0 if self_locking else efficiency.holding_torque(force_n, screw.lead_m, eta)
-        ),
-        holding_torque_physics_nm=efficiency.holding_torque(force_n, screw.lead_m, eta_b),
+        holding_torque_seed_nm=holding_seed,
+        holding_torque_physics_nm=holding_physics,
+        brake_torque_nm=0.0 if self_locking else max(holding_seed, holding_physics),
         torque=torque,
         critical_speed=crit,
         buckling=buck,
@@ -187,7 +188,7 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
     governing = max(utilized, key=lambda c: c.utilization or 0.0) if utilized else None
     failed = [c for c in checks if not c.passed]
     max_u = max((c.utilization or 0.0 for c in utilized), default=0.0)
-    if failed and max_u <= 1.0:
+    if failed and max_u <= PASS_UTILIZATION:
         # a failed yes/no check ranks behind every numeric near-miss
         max_u = max(max_u, 1.0 + len(failed))
     if failed and (governing is None or governing.passed):

@@ -65,7 +65,6 @@ def screw_speed_rpm(linear_speed_m_s: float, lead_m: float) -> float:
     """Screw speed n [rpm] = 60 v / lead, v [m/s], lead [m].
 
     Source: seed [1], ``RS = Linear Speed / Lead``, ``RPM = RS x 60``.
-    Nook's manual-lathe example: peak 7.2 in/s on a 0.2 in lead is 2160 rpm.
 
     >>> round(screw_speed_rpm(0.05, 0.002), 6)
     1500.0

@@ -11,6 +11,9 @@ RankBy = Literal["torque", "margin", "life", "size"]
 ProvenanceKind = Literal["seed", "handbook", "derived", "assumed", "user"]
 
 STANDARD_GRAVITY_M_S2 = 9.80665
+#: A check passes up to this utilisation: 1 plus rounding, so that an offered remedy
+#: (e.g. "reduce the load to 369.5 N") passes when applied exactly.
+PASS_UTILIZATION = 1.0 + 1e-9
 
 
 @dataclass(frozen=True, slots=True)
@@ -198,6 +201,7 @@ class Evaluation:
     max_self_locking_lead_m: float
     holding_torque_seed_nm: float
     holding_torque_physics_nm: float
+    brake_torque_nm: float
     torque: Torque
     critical_speed: CriticalSpeed
     buckling: Buckling

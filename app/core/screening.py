@@ -24,7 +24,7 @@ from app.core import (
     torque,
 )
 from app.core.evaluate import axial_load
-from app.core.model import Application, ScrewSpec
+from app.core.model import PASS_UTILIZATION, Application, ScrewSpec
 
 Array = NDArray[np.float64]
 Mask = NDArray[np.bool_]
@@ -189,7 +189,7 @@ def screen(app: Application, table: CandidateTable) -> Screening:
         )
         util["accuracy"] = error / app.positioning_tolerance_m
 
-    failed = {name: u > 1.0 for name, u in util.items()}
+    failed = {name: u > PASS_UTILIZATION for name, u in util.items()}
     for name, flag in flags.items():
         failed[name] = failed[name] | flag if name in failed else flag
     any_failed = np.zeros(len(idx), dtype=bool)
@@ -201,5 +201,7 @@ def screen(app: Application, table: CandidateTable) -> Screening:
     for u in util.values():
         max_u = np.fmax(max_u, u)
     # a failed yes/no check ranks behind every numeric near-miss (as in evaluate)
-    max_u = np.where(any_failed & (max_u <= 1.0), np.maximum(max_u, 1.0 + n_failed), max_u)
+    max_u = np.where(
+        any_failed & (max_u <= PASS_UTILIZATION), np.maximum(max_u, 1.0 + n_failed), max_u
+    )
     return Screening(idx, ~any_failed, max_u, total, failed)

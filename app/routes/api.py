@@ -24,6 +24,8 @@ from app.service import UnknownScrew, run_evaluation, run_selection
 
 ERRORS: dict[int | str, dict[str, Any]] = {
     404: {"model": ErrorOut, "description": "Unknown id"},
+    413: {"model": ErrorOut, "description": "Request body too large"},
+    414: {"model": ErrorOut, "description": "Query string too long or too many parameters"},
     422: {"model": ErrorOut, "description": "Invalid input, by field"},
 }
 router = APIRouter(prefix="/api/v1", tags=["api"], responses=ERRORS, route_class=ApiRoute)

@@ -171,21 +171,13 @@ def test_the_proposed_input_change_admits_the_nearest_candidate(
         return
     again = evaluate(replace(app, **change), best.screw)
     cleared = {c.name for c in best.failed_checks}
-    # the change lands on the limit; 1 + 2e-16 is rounding (see the xfail below)
+    # the change lands on the limit; 1 + 2e-16 is rounding, within PASS_UTILIZATION
     still = {
         c.name for c in again.checks if c.name in cleared and (c.utilization or 0.0) > 1 + 1e-9
     }
     assert still == set(), (best.screw.id, change, still)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        "checks.pv_check offers load_n = max_load_for_pv exactly on the limit; "
-        "pv_value at that load is 1.0000000000000002 x the limit, so the remedy the "
-        "summary proposes still fails by rounding (offered limits are not rounded inward)"
-    ),
-)
 def test_the_offered_load_limit_passes_when_applied(catalog: Catalog) -> None:
     """Found by the property test above: B14000-L60-TFE, 944.06 N at 208.4 mm/s, fixed-free,
     1.4625 m in tension: PV fails (utilization 2.55); the PV check offers load_n = 369.5 N
@@ -205,15 +197,6 @@ def test_the_offered_load_limit_passes_when_applied(catalog: Catalog) -> None:
     assert next(c for c in again.checks if c.name == "pv").passed
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        "evaluate computes life years only when stroke_m and cycles_per_day are truthy, so a "
-        "zero stroke leaves years None and checks.life_check fails a rated series with 'No "
-        "life rating is published'; screening skips the life check then and passes it "
-        "(the API forbids a zero stroke; the core accepts it)"
-    ),
-)
 def test_zero_stroke_agrees_between_screening_and_evaluation(catalog: Catalog) -> None:
     app = light_app(stroke_m=0.0, cycles_per_day=10.0, required_life_years=1.0)
     screw = catalog.by_id["ZBX8000-L10"]
