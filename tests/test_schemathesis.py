@@ -1,0 +1,206 @@
+"""Schema fuzzing: schemathesis generates requests from the app's own OpenAPI schema.
+
+In-process over ASGI (no server). Valid and invalid requests (both generation modes, and
+schemathesis' examples, boundary-value coverage and fuzzing phases) for every operation;
+each response must not be a 5xx, must have a documented status code, the documented
+content type and the documented body schema, and a request the schema forbids must get a
+4xx. Deterministic (``derandomize``, no example database), so CI sees the same cases on
+every run.
+
+One known bug is fenced off, not hidden: positive numbers so small that the core's
+arithmetic underflows or overflows (5e-324 mm, the first boundary value schemathesis
+tries after ``exclusiveMinimum: 0``) give a 500. Cases carrying such a number are
+rejected here, and ``test_known_bug_reproductions`` replays the requests schemathesis
+found as strict xfails: when the bug is fixed they pass, fail as XPASS, and the fence
+comes out.
+"""
+
+from collections.abc import Iterator
+from types import SimpleNamespace
+from typing import Any
+
+import pytest
+import schemathesis
+from fastapi.testclient import TestClient
+from hypothesis import HealthCheck, reject, settings
+from schemathesis.checks import (
+    content_type_conformance,
+    negative_data_rejection,
+    not_a_server_error,
+    response_schema_conformance,
+    status_code_conformance,
+)
+from schemathesis.core import NOT_SET, NotSet
+from schemathesis.generation import GenerationMode
+
+from app.main import create_app
+
+#: At least this many generated requests over all operations (issue 4: 300).
+MIN_TOTAL_CASES = 300
+#: Examples per operation and phase; operations without parameters stop after one.
+EXAMPLES_PER_OPERATION = 100
+CHECKS = [
+    not_a_server_error,
+    status_code_conformance,
+    content_type_conformance,
+    response_schema_conformance,
+    negative_data_rejection,
+]
+#: Below this a positive input vanishes in the core's arithmetic (see the module doc).
+VANISHING = 1e-30
+
+app = create_app()
+schema = schemathesis.openapi.from_asgi("/openapi.json", app)
+schema.config.generation.update(modes=[GenerationMode.POSITIVE, GenerationMode.NEGATIVE])
+OPERATIONS = sorted(
+    f"{method.upper()} {path}"
+    for path, methods in schema.raw_schema["paths"].items()
+    for method in methods
+)
+cases_run: dict[str, int] = {}
+
+
+def _numbers(value: Any) -> Iterator[float]:
+    """Every number in a request part, including numbers written as query text."""
+    if isinstance(value, bool):
+        return
+    if isinstance(value, int | float):
+        yield float(value)
+    elif isinstance(value, str):
+        try:
+            yield float(value)
+        except ValueError:
+            return
+    elif isinstance(value, dict):
+        for item in value.values():
+            yield from _numbers(item)
+    elif isinstance(value, list):
+        for item in value:
+            yield from _numbers(item)
+
+
+def has_vanishing_number(case: Any) -> bool:
+    body = None if isinstance(case.body, NotSet) else case.body
+    parts = (body, case.query, case.path_parameters)
+    return any(0 < abs(x) < VANISHING for part in parts for x in _numbers(part))
+
+
+def test_vanishing_filter_sees_body_and_query_numbers() -> None:
+    def case(body: Any = NOT_SET, query: Any = None) -> Any:
+        return SimpleNamespace(body=body, query=query, path_parameters=None)
+
+    assert has_vanishing_number(case(body={"application": {"load_n": 5e-324}}))
+    assert has_vanishing_number(case(query={"length_mm": "5e-324", "rank_by": "torque"}))
+    assert not has_vanishing_number(
+        case(query={"length_mm": "0", "load_n": 1e-3, "compression": True, "speed_mm_s": "nan"})
+    )
+
+
+@schema.parametrize()
+@settings(
+    max_examples=EXAMPLES_PER_OPERATION,
+    derandomize=True,
+    database=None,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
+def test_api_conforms_to_its_schema(case: Any) -> None:
+    if has_vanishing_number(case):
+        reject()  # the known 500 below
+    # per documented operation; its cases include probes with undocumented methods
+    label = f"{case.operation.method.upper()} {case.operation.path}"
+    cases_run[label] = cases_run.get(label, 0) + 1
+    case.call_and_validate(checks=CHECKS)
+
+
+def test_enough_cases_were_generated() -> None:
+    """Runs after the fuzz test in this module; skipped when that did not run in full."""
+    if set(cases_run) != set(OPERATIONS):
+        pytest.skip("the fuzz test did not run for every operation in this process")
+    total = sum(cases_run.values())
+    print(f"\nschemathesis requests per operation: {cases_run}, total {total}")
+    assert total >= MIN_TOTAL_CASES, cases_run
+
+
+TINY = 5e-324
+TINY_APPLICATION = {
+    "load_n": TINY,
+    "speed_mm_s": TINY,
+    "length_mm": TINY,
+    "lead_mm": TINY,
+    "stroke_mm": TINY,
+    "cycles_per_day": TINY,
+    "max_torque_nm": TINY,
+    "required_life_years": TINY,
+    "positioning_tolerance_mm": TINY,
+}
+TINY_SCREW = {
+    "outer_diameter_mm": 999.0,
+    "root_diameter_mm": TINY,
+    "lead_mm": TINY,
+    "friction_dynamic": TINY,
+    "friction_static": TINY,
+    "inertia_kg_m2_per_m": TINY,
+    "pv_limit_mpa_m_s": TINY,
+}
+VANISHING_500 = pytest.mark.xfail(
+    strict=True,
+    reason="known bug: positive inputs the schema allows (exclusiveMinimum 0) vanish in the "
+    "core: 5e-324 mm -> 0 m, ZeroDivisionError in critical_speed_rpm / screw_speed_rpm -> 500",
+)
+STEEP_LEAD_500 = pytest.mark.xfail(
+    strict=True,
+    reason="known bug: CustomScrewIn allows lead angles up to 68 deg, but at friction 1 a "
+    "thread stops driving at about 44 deg: evaluate raises ValueError 'too steep' -> 500",
+)
+BOOL_ACCEPTED = pytest.mark.xfail(
+    strict=True,
+    reason="known bug: JSON true is accepted as a number (stroke_mm: true -> 1.0 mm), a "
+    "schema-violating request answered 200 (pydantic lax mode in app/schemas.py)",
+)
+EVALUATE = "/api/v1/evaluate"
+
+
+@pytest.mark.parametrize(
+    ("method", "path", "kwargs"),
+    [
+        pytest.param(
+            "POST", "/api/v1/select", {"json": TINY_APPLICATION},
+            marks=VANISHING_500, id="tiny-post-select",
+        ),
+        pytest.param(
+            "GET", "/api/v1/select", {"params": TINY_APPLICATION},
+            marks=VANISHING_500, id="tiny-get-select",
+        ),
+        pytest.param(
+            "POST", EVALUATE, {"json": {"application": TINY_APPLICATION, "screw": TINY_SCREW}},
+            marks=VANISHING_500, id="tiny-evaluate-custom",
+        ),
+        pytest.param(
+            "POST", EVALUATE,
+            {"json": {
+                "application": {"length_mm": 1.0, "load_n": 1.0, "speed_mm_s": 1.0,
+                                "ambient_c": 0.0},
+                "screw": {"friction_dynamic": 1.0, "friction_static": 1.0, "lead_mm": 5.0,
+                          "outer_diameter_mm": 2.0, "root_diameter_mm": 1.0},
+            }},
+            marks=STEEP_LEAD_500, id="steep-lead-evaluate",
+        ),
+        pytest.param(
+            "POST", "/api/v1/select",
+            {"json": {"coating": "none", "load_n": 315963.171200751, "lead_mm": None,
+                      "required_life_years": None, "speed_mm_s": 29550.73781430684,
+                      "limit": 100, "vacuum": True, "length_mm": 2.5, "stroke_mm": True,
+                      "critical_speed_safety_factor": 1.0}},
+            marks=BOOL_ACCEPTED, id="bool-as-number-select",
+        ),
+    ],
+)  # fmt: skip
+def test_known_bug_reproductions(method: str, path: str, kwargs: dict[str, Any]) -> None:
+    """Requests schemathesis reported (the vanishing ones minus fields at their defaults;
+    the other two from a 600-examples-per-operation run): no 5xx, schema-invalid is a 4xx."""
+    with TestClient(app, raise_server_exceptions=False) as client:
+        response = client.request(method, path, **kwargs)
+    assert response.status_code < 500, response.text
+    if any(v is True for v in kwargs.get("json", {}).values()):
+        assert 400 <= response.status_code < 500, response.text
