@@ -968,7 +968,7 @@ EXTREME: list[Any] = [
     pytest.param("evaluate", {**CUSTOM_SCREW, "lead_mm": 1e-300}, id="custom-tiny-lead"),
     pytest.param("evaluate", {**CUSTOM_SCREW, "root_diameter_mm": 1e-300}, id="custom-tiny-root",
                  marks=pytest.mark.xfail(strict=True, reason=SERVER_ERROR.format(
-                     "ZeroDivisionError in min_root_diameter_for_load: allowed load is 0"))),
+                     "ZeroDivisionError in the buckling check: the allowed load underflows to 0"))),
     pytest.param("evaluate", {**CUSTOM_SCREW, "outer_diameter_mm": 1e-300,
                               "root_diameter_mm": 5e-301, "lead_mm": 1e-300},
                  id="custom-tiny-geometry",
