@@ -87,10 +87,18 @@ def sig(value: float, digits: int = 4) -> str:
     return f"{value:.{digits}g}"
 
 
+def _catalog_text(value: object, scale: float) -> str:
+    if isinstance(value, tuple | list):
+        return "(" + ", ".join(_catalog_text(v, scale) for v in value) + ")"
+    if isinstance(value, int | float) and not isinstance(value, bool):
+        return sig(float(value) * scale)
+    return str(value)
+
+
 def catalog_value(name: str, value: object, unit: str) -> tuple[str, str]:
     """A catalog value (SI) as display text and unit: lengths in mm, moduli in GPa ...
 
-    Two-element tuples are ranges, longer ones lists.
+    Two numbers are a range, more a list; a list of tuples is a table of rows.
 
     >>> catalog_value("root_diameter", 0.009906, "m")
     ('9.906', 'mm')
@@ -98,17 +106,18 @@ def catalog_value(name: str, value: object, unit: str) -> tuple[str, str]:
     ('1, 2.5, 12.7', 'mm')
     >>> catalog_value("temperature_range", (0.0, 93.0), "C")
     ('0 – 93', '°C')
+    >>> catalog_value("outgassing", ((24.0, 0.2), (48.0, 0.26)), "h, %")
+    ('(24, 0.2), (48, 0.26)', 'h, %')
     """
     shown, scale = next(
         (u for prefix, u in CATALOG_FIELD_UNITS.items() if name.startswith(prefix)),
         CATALOG_UNITS.get(unit, (unit, 1.0)),
     )
-    if isinstance(value, tuple | list):
-        texts = [sig(float(v) * scale) for v in value]
-        return (" – " if len(texts) == 2 else ", ").join(texts), shown
-    if isinstance(value, int | float) and not isinstance(value, bool):
-        return sig(float(value) * scale), shown
-    return str(value), shown
+    if not isinstance(value, tuple | list):
+        return _catalog_text(value, scale), shown
+    texts = [_catalog_text(v, scale) for v in value]
+    is_range = len(texts) == 2 and not any(isinstance(v, tuple | list) for v in value)
+    return (" – " if is_range else ", ").join(texts), shown
 
 
 class Display:

@@ -1,0 +1,228 @@
+"""The selector in real Chromium: typing, URLs, units, errors, charts, sharing, layout.
+
+Every test also asserts that the browser reported no console error: a CSP violation
+(script-src 'self', style-src 'self') is reported there.
+"""
+
+import json
+import re
+import urllib.request
+from pathlib import Path
+from typing import Any
+
+AXIS = "load=100&lead=10&speed=50&length=500"
+OZ_IN = 0.0070615518333
+PNG_BUTTON = ".modebar-btn[data-title='Download plot as a PNG']"
+
+
+def ids(page: Any) -> list[str]:
+    return list(page.eval_on_selector_all("tbody.candidate", "rows => rows.map(r => r.dataset.id)"))
+
+
+def api_select(live_server: str) -> dict[str, Any]:
+    query = "load_n=100&lead_mm=10&speed_mm_s=50&length_mm=500"
+    with urllib.request.urlopen(f"{live_server}/api/v1/select?{query}") as response:
+        body: dict[str, Any] = json.load(response)
+    return body
+
+
+def open_results(page: Any, live_server: str, query: str = AXIS) -> None:
+    page.goto(f"{live_server}/?{query}")
+    page.wait_for_selector("#chart-torque .main-svg")
+
+
+def test_typing_updates_results_url_and_reload_shows_the_same(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    page.goto(live_server + "/")
+    for name, value in (("load", "100"), ("lead", "10"), ("speed", "50"), ("length", "500")):
+        page.locator(f"#f-{name}").press_sequentially(value, delay=30)
+    page.wait_for_function("() => location.search.includes('length=500')")
+    page.wait_for_selector("#results table.candidates tbody.candidate")
+    assert page.evaluate("() => document.activeElement.id") == "f-length"
+    shown = ids(page)
+    assert shown == [c["id"] for c in api_select(live_server)["candidates"]]
+    assert page.url.endswith("/?" + AXIS)
+    page.reload()
+    page.wait_for_selector("#results table.candidates tbody.candidate")
+    assert ids(page) == shown
+    assert page.input_value("#f-load") == "100"
+    assert console_errors == []
+
+
+def test_back_button_returns_to_the_previous_result(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    open_results(page, live_server)
+    first = ids(page)
+    page.fill("#f-load", "40")
+    page.wait_for_function("() => location.search.includes('load=40')")
+    page.wait_for_function("() => document.querySelector('dl.inputs').textContent.includes('40 N')")
+    page.go_back()
+    page.wait_for_function("() => location.search.includes('load=100')")
+    page.wait_for_selector("#results table.candidates tbody.candidate")
+    assert page.input_value("#f-load") == "100"
+    assert ids(page) == first
+    assert console_errors == []
+
+
+def test_switching_units_converts_form_table_and_charts(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    open_results(page, live_server)
+    before = ids(page)
+    torque_nm = float(page.inner_text("tbody.candidate .torque-total"))
+    page.focus("#f-force_unit")
+    page.select_option("#f-force_unit", "lbf")
+    page.wait_for_function("() => document.querySelector('#f-load').value === '22.4809'")
+    page.wait_for_function("() => location.search.includes('force_unit=lbf')")
+    assert page.evaluate("() => document.activeElement.id") == "f-force_unit"
+    assert "22.48 lbf" in page.inner_text("dl.inputs")
+    page.select_option("#f-torque_unit", "oz_in")
+    page.wait_for_function(
+        "() => document.querySelector('table.candidates thead').textContent.includes('oz in')"
+    )
+    torque_oz_in = float(page.inner_text("tbody.candidate .torque-total"))
+    assert abs(torque_oz_in - torque_nm / OZ_IN) / torque_oz_in < 2e-3
+    page.select_option("#f-length_unit", "in")
+    page.wait_for_function("() => document.querySelector('#f-length').value === '19.685'")
+    page.wait_for_selector("#chart-critical_speed .main-svg")
+    page.wait_for_function(
+        "() => document.querySelector('#chart-critical_speed .g-xtitle').textContent"
+        ".includes('[in]')"
+    )
+    assert page.input_value("#f-speed") == "1.9685"
+    assert "[in/s]" in page.text_content("#chart-pv .g-xtitle")
+    assert "[lbf]" in page.text_content("#chart-pv .g-ytitle")
+    assert ids(page) == before
+    page.reload()
+    page.wait_for_selector("#results table.candidates tbody.candidate")
+    assert page.input_value("#f-load") == "22.4809" and ids(page) == before
+    assert console_errors == []
+
+
+def test_invalid_input_shows_inline_message_and_keeps_typing(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    open_results(page, live_server)
+    field = page.locator("#f-load")
+    field.fill("")
+    field.press_sequentially("12x", delay=30)
+    page.wait_for_function("() => document.querySelector('#e-load').textContent.length > 0")
+    assert page.inner_text("#e-load") == "Enter a number."
+    assert field.input_value() == "12x"
+    assert field.get_attribute("aria-invalid") == "true"
+    assert "e-load" in (field.get_attribute("aria-describedby") or "")
+    assert page.evaluate("() => document.activeElement.id") == "f-load"
+    assert "load=100" in page.url  # the address keeps the last valid result
+    field.press("Backspace")
+    page.wait_for_selector("#results table.candidates tbody.candidate")
+    page.wait_for_function("() => !document.querySelector('#f-load[aria-invalid]')")
+    assert page.inner_text("#e-load") == ""
+    assert "load=12" in page.url
+    assert console_errors == []
+
+
+def test_each_chart_renders_its_traces_with_png_export(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    api = api_select(live_server)
+    top = api["candidates"][:5]
+    expected = {
+        "critical_speed": len(top) + 2,
+        "pv": sum(c["pv"]["max_load_n"] is not None for c in top) + 1,
+        "torque": 3,
+    }
+    open_results(page, live_server)
+    for chart, count in expected.items():
+        selector = f"#chart-{chart}"
+        page.wait_for_selector(f"{selector} .main-svg")
+        assert page.evaluate(f"() => document.querySelector('{selector}').data.length") == count
+        layer = ".barlayer" if chart == "torque" else ".scatterlayer"
+        assert page.locator(f"{selector} {layer} .trace").count() == count
+        assert page.locator(f"{selector} {PNG_BUTTON}").count() == 1
+        assert page.locator(f"{selector} .modebar-btn[data-title='Share chart...']").count() == 0
+    page.hover("#chart-torque")
+    with page.expect_download() as download:
+        page.click(f"#chart-torque {PNG_BUTTON}")
+    assert download.value.suggested_filename == "chart-torque.png"
+    assert console_errors == []
+
+
+def test_row_click_and_keyboard_open_the_detail(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    open_results(page, live_server)
+    page.click("tbody.candidate >> nth=0 >> tr.main td.num >> nth=0")
+    first = page.locator("#detail-1")
+    assert first.get_attribute("open") is not None
+    assert first.locator("li.check").first.is_visible()
+    assert first.locator("ul.sources .kind").first.is_visible()
+    page.focus("#detail-2 > summary")
+    page.keyboard.press("Enter")
+    assert page.locator("#detail-2").get_attribute("open") is not None
+    page.click("details.rejected > summary")
+    assert page.locator("li.rejected-candidate .fix").first.is_visible()
+    assert console_errors == []
+
+
+def test_copy_link_puts_the_share_url_on_the_clipboard(browser: Any, live_server: str) -> None:
+    context = browser.new_context(permissions=["clipboard-read", "clipboard-write"])
+    page = context.new_page()
+    errors: list[str] = []
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    open_results(page, live_server)
+    page.click("button.copy-link")
+    page.wait_for_function(
+        "() => document.querySelector('.copy-status').textContent === 'Link copied.'"
+    )
+    copied = page.evaluate("() => navigator.clipboard.readText()")
+    assert copied == f"{live_server}/?{AXIS}"
+    context.close()
+    assert errors == []
+
+
+def test_form_works_without_javascript(browser: Any, live_server: str) -> None:
+    context = browser.new_context(java_script_enabled=False)
+    page = context.new_page()
+    page.goto(live_server + "/")
+    page.fill("#f-load", "100")
+    page.fill("#f-speed", "50")
+    page.fill("#f-length", "500")
+    page.click("#selector button[type=submit]")
+    page.wait_for_selector("#results table.candidates tbody.candidate")
+    assert re.search(r"load=100&lead=&speed=50&length=500", page.url)
+    page.select_option("#f-force_unit", "lbf")
+    page.click("#selector button[type=submit]")
+    page.wait_for_function("() => document.querySelector('#f-load').value === '22.4809'")
+    context.close()
+
+
+def test_print_is_one_page(page: Any, live_server: str, console_errors: list[str]) -> None:
+    open_results(page, live_server)
+    pdf = page.pdf(prefer_css_page_size=True, print_background=True)
+    assert len(re.findall(rb"/Type\s*/Page[^s]", pdf)) == 1
+    assert console_errors == []
+
+
+def test_screenshots_desktop_and_phone(
+    page: Any, live_server: str, artifacts: Path, console_errors: list[str]
+) -> None:
+    open_results(page, live_server)
+    page.click("tbody.candidate >> nth=0 >> tr.main td.num >> nth=0")
+    page.screenshot(path=str(artifacts / "selector-desktop-1280.png"), full_page=True)
+    page.set_viewport_size({"width": 390, "height": 844})
+    page.wait_for_function(
+        "() => document.querySelector('#chart-torque .main-svg').getAttribute('width') <= 390"
+    )
+    assert page.evaluate("() => document.documentElement.scrollWidth") <= 390
+    page.screenshot(path=str(artifacts / "selector-phone-390.png"), full_page=True)
+    page.fill("#f-load", "abc")
+    page.wait_for_function("() => document.querySelector('#e-load').textContent.length > 0")
+    page.screenshot(path=str(artifacts / "selector-error-phone-390.png"))
+    page.goto(live_server + "/catalog")
+    assert page.evaluate("() => document.documentElement.scrollWidth") <= 390
+    page.screenshot(path=str(artifacts / "catalog-phone-390.png"))
+    page.set_viewport_size({"width": 1280, "height": 900})
+    page.screenshot(path=str(artifacts / "catalog-desktop-1280.png"))
+    assert console_errors == []
