@@ -66,6 +66,26 @@ def test_back_button_returns_to_the_previous_result(
     assert console_errors == []
 
 
+def test_advanced_options_update_results(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    open_results(page, live_server)
+    page.click("details.advanced > summary")
+    page.click("label.fixity-option:has-text('Fixed – fixed')")
+    page.wait_for_function("() => location.search.includes('end_fixity=fixed-fixed')")
+    page.wait_for_function(
+        "() => document.querySelector('dl.inputs').textContent.includes('fixed-fixed')"
+    )
+    page.check("#f-vacuum")
+    page.wait_for_function("() => location.search.includes('vacuum=true')")
+    page.uncheck("#f-vacuum")
+    page.wait_for_function("() => !location.search.includes('vacuum')")
+    page.select_option("#f-compression", "false")
+    page.wait_for_function("() => location.search.includes('compression=false')")
+    assert "tension" in page.inner_text("dl.inputs")
+    assert console_errors == []
+
+
 def test_switching_units_converts_form_table_and_charts(
     page: Any, live_server: str, console_errors: list[str]
 ) -> None:
