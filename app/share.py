@@ -5,6 +5,7 @@ of a result. This module maps it to and from the API's ``ApplicationIn`` fields,
 page and the API validate the same model.
 """
 
+import math
 from collections.abc import Mapping
 from typing import Any
 from urllib.parse import urlencode
@@ -138,6 +139,9 @@ def page_to_api(
             value = float(raw)
         except ValueError:
             errors[page] = "Enter a number."
+            continue
+        if not math.isfinite(value):
+            errors[page] = "Enter a finite number."
             continue
         data[api] = to_api(value, quantity, units)
     return data, errors
