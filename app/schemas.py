@@ -9,13 +9,13 @@ from typing import Annotated, Any, Literal
 
 from pydantic import (
     BaseModel,
+    BeforeValidator,
     ConfigDict,
     Discriminator,
     Field,
     Tag,
     ValidationInfo,
     field_validator,
-    model_validator,
 )
 
 from app.core.model import Application
@@ -24,23 +24,38 @@ EndFixityIn = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixe
 MM = 1e-3
 
 
-def _pos(le: float, description: str, gt: float = 0.0) -> Any:
-    return Field(gt=gt, le=le, allow_inf_nan=False, description=description)
+def _not_bool(value: Any) -> Any:
+    """JSON true/false is not a number (pydantic's lax mode would read it as 1/0)."""
+    if isinstance(value, bool):
+        raise ValueError("must be a number, not a boolean")
+    return value
+
+
+def _num(ge: float, le: float, description: str) -> Any:
+    """Finite number in [ge, le]; the bounds keep every result finite."""
+    return Field(ge=ge, le=le, allow_inf_nan=False, description=description)
+
+
+NotBool = BeforeValidator(_not_bool)
 
 
 class ApplicationIn(BaseModel):
-    """The axis an engineer wants to drive. Lengths in mm, speeds in mm/s, forces in N."""
+    """The axis an engineer wants to drive. Lengths in mm, speeds in mm/s, forces in N.
+
+    Lower bounds are physical (1 mN, 1 um/s, 1 mm ...) rather than "> 0", so that no
+    input can drive a result to overflow or to zero division.
+    """
 
     model_config = ConfigDict(extra="forbid")
 
-    load_n: Annotated[float, _pos(1e6, "Axial load on the nut [N], > 0.")]
-    speed_mm_s: Annotated[float, _pos(1e5, "Linear speed [mm/s], > 0.")]
-    length_mm: Annotated[float, _pos(1e5, "Screw length between supports [mm], > 0.")]
-    lead_mm: Annotated[float | None, _pos(1000.0, "Lead [mm]; omit for any lead.")] = None
-    accel_mm_s2: Annotated[float, _pos(1e6, "Linear acceleration [mm/s^2].")] = 1000.0
-    moving_mass_kg: Annotated[
-        float, Field(ge=0, le=1e5, allow_inf_nan=False, description="Moving mass [kg].")
-    ] = 0.0
+    load_n: Annotated[float, NotBool, _num(1e-3, 1e6, "Axial load on the nut [N].")]
+    speed_mm_s: Annotated[float, NotBool, _num(1e-3, 1e5, "Linear speed [mm/s].")]
+    length_mm: Annotated[float, NotBool, _num(1.0, 1e5, "Screw length between supports [mm].")]
+    lead_mm: (
+        Annotated[float, NotBool, _num(0.01, 1000.0, "Lead [mm]; omit for any lead.")] | None
+    ) = None
+    accel_mm_s2: Annotated[float, NotBool, _num(1e-3, 1e6, "Linear acceleration [mm/s^2].")] = 1000.0
+    moving_mass_kg: Annotated[float, NotBool, _num(0.0, 1e5, "Moving mass [kg].")] = 0.0
     end_fixity: EndFixityIn = "fixed-simple"
     orientation: Literal["horizontal", "vertical"] = "horizontal"
     compression: bool = True
@@ -48,35 +63,42 @@ class ApplicationIn(BaseModel):
     coating: Literal["auto", "tfe", "none"] = "auto"
     oil_present: bool = False
     vacuum: bool = False
-    ambient_c: Annotated[
-        float, Field(ge=-273.15, le=1000, allow_inf_nan=False, description="Ambient [C].")
-    ] = 20.0
-    stroke_mm: Annotated[float | None, _pos(1e5, "Stroke [mm], for life and accuracy.")] = None
-    cycles_per_day: Annotated[float | None, _pos(1e7, "Full cycles per day, for life.")] = None
+    ambient_c: Annotated[float, NotBool, _num(-273.15, 1000.0, "Ambient temperature [C].")] = 20.0
+    stroke_mm: (
+        Annotated[float, NotBool, _num(0.01, 1e5, "Stroke [mm], for life and accuracy.")] | None
+    ) = None
+    cycles_per_day: (
+        Annotated[float, NotBool, _num(1e-3, 1e7, "Full cycles (out and back) per day.")] | None
+    ) = None
     critical_speed_safety_factor: Annotated[
-        float, _pos(1.0, "Fraction of critical speed allowed (0-1].")
+        float, NotBool, _num(0.01, 1.0, "Fraction of the critical speed allowed.")
     ] = 0.8
     buckling_safety_factor: Annotated[
-        float, _pos(1.0, "Fraction of the Euler load allowed (0-1].")
+        float, NotBool, _num(0.01, 1.0, "Fraction of the Euler load allowed.")
     ] = 0.5
     torque_safety_factor: Annotated[
-        float, Field(ge=1.0, le=10.0, allow_inf_nan=False, description="Torque margin, >= 1.")
+        float, NotBool, _num(1.0, 10.0, "Torque margin over the computed torque.")
     ] = 1.0
-    max_torque_nm: Annotated[float | None, _pos(1e5, "Drive torque available [N m].")] = None
-    required_life_years: Annotated[float | None, _pos(1000.0, "Required life [years].")] = None
-    positioning_tolerance_mm: Annotated[
-        float | None, _pos(1000.0, "Allowed positioning error [mm].")
-    ] = None
+    max_torque_nm: (
+        Annotated[float, NotBool, _num(1e-6, 1e5, "Drive torque available [N m].")] | None
+    ) = None
+    required_life_years: (
+        Annotated[float, NotBool, _num(1e-3, 1000.0, "Required life [years].")] | None
+    ) = None
+    positioning_tolerance_mm: (
+        Annotated[float, NotBool, _num(1e-4, 1000.0, "Allowed positioning error [mm].")] | None
+    ) = None
     rank_by: Literal["torque", "margin", "life", "size"] = "torque"
-    limit: Annotated[int, Field(ge=1, le=100, description="How many candidates.")] = 10
+    limit: Annotated[int, NotBool, Field(ge=1, le=100, description="How many candidates.")] = 10
 
-    @model_validator(mode="after")
-    def _life_needs_duty(self) -> "ApplicationIn":
-        if self.required_life_years is not None and (
-            self.stroke_mm is None or self.cycles_per_day is None
+    @field_validator("required_life_years")
+    @classmethod
+    def _life_needs_duty(cls, value: float | None, info: ValidationInfo) -> float | None:
+        if value is not None and (
+            info.data.get("stroke_mm") is None or info.data.get("cycles_per_day") is None
         ):
-            raise ValueError("required_life_years needs stroke_mm and cycles_per_day")
-        return self
+            raise ValueError("needs stroke_mm and cycles_per_day")
+        return value
 
     def to_core(self) -> Application:
         """The same application in SI for the core."""
@@ -115,8 +137,8 @@ class ApplicationIn(BaseModel):
 class MaterialIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
-    youngs_modulus_pa: Annotated[float, _pos(1e13, "Young's modulus [Pa].")]
-    density_kg_m3: Annotated[float, _pos(1e5, "Density [kg/m^3].")]
+    youngs_modulus_pa: Annotated[float, NotBool, _num(1e6, 1e13, "Young's modulus [Pa].")]
+    density_kg_m3: Annotated[float, NotBool, _num(1.0, 1e5, "Density [kg/m^3].")]
 
 
 class CatalogScrewIn(BaseModel):
@@ -130,22 +152,29 @@ class CustomScrewIn(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
-    outer_diameter_mm: Annotated[float, _pos(1000.0, "Outer diameter [mm].")]
-    root_diameter_mm: Annotated[float, _pos(1000.0, "Root (minor) diameter [mm].")]
-    lead_mm: Annotated[float, _pos(1000.0, "Lead [mm].")]
+    outer_diameter_mm: Annotated[float, NotBool, _num(0.1, 1000.0, "Outer diameter [mm].")]
+    root_diameter_mm: Annotated[
+        float, NotBool, _num(0.05, 1000.0, "Root (minor) diameter [mm], below the outer.")
+    ]
+    lead_mm: Annotated[float, NotBool, _num(0.01, 1000.0, "Lead [mm].")]
     thread_half_angle_deg: Annotated[
-        float, Field(ge=0, le=30, allow_inf_nan=False, description="Flank half-angle [deg].")
+        float, NotBool, _num(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal.")
     ] = 14.5
-    friction_dynamic: Annotated[float, _pos(1.0, "Running friction coefficient.")]
-    friction_static: Annotated[float, _pos(1.0, "Static friction coefficient.")]
+    friction_dynamic: Annotated[float, NotBool, _num(1e-3, 1.0, "Running friction coefficient.")]
+    friction_static: Annotated[float, NotBool, _num(1e-3, 1.0, "Static friction coefficient.")]
     material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
-    drag_torque_nm: Annotated[
-        float, Field(ge=0, le=1e4, allow_inf_nan=False, description="Nut drag torque [N m].")
-    ] = 0.0
-    inertia_kg_m2_per_m: Annotated[
-        float | None, _pos(1e3, "Inertia per length [kg m^2/m]; default: rod at the root.")
-    ] = None
-    pv_limit_mpa_m_s: Annotated[float | None, _pos(1e3, "Nut PV limit [MPa m/s].")] = None
+    drag_torque_nm: Annotated[float, NotBool, _num(0.0, 1e4, "Nut drag torque [N m].")] = 0.0
+    inertia_kg_m2_per_m: (
+        Annotated[
+            float,
+            NotBool,
+            _num(1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."),
+        ]
+        | None
+    ) = None
+    pv_limit_mpa_m_s: (
+        Annotated[float, NotBool, _num(1e-6, 1e3, "Nut PV limit [MPa m/s].")] | None
+    ) = None
 
     @field_validator("root_diameter_mm")
     @classmethod
@@ -155,13 +184,21 @@ class CustomScrewIn(BaseModel):
             raise ValueError("must be smaller than outer_diameter_mm")
         return value
 
-    @field_validator("lead_mm")
+    @field_validator("friction_dynamic", "friction_static")
     @classmethod
-    def _lead_drivable(cls, value: float, info: ValidationInfo) -> float:
-        outer, root = info.data.get("outer_diameter_mm"), info.data.get("root_diameter_mm")
-        # past a 68 deg lead angle a sliding thread at friction <= 1 cannot be driven
-        if outer is not None and root is not None and value > 2.5 * math.pi * (outer + root) / 2:
-            raise ValueError("too long for this diameter (lead angle above 68 deg)")
+    def _thread_drivable(cls, value: float, info: ValidationInfo) -> float:
+        """A sliding thread can be driven only while mu tan(lambda) < cos(a_n) (Shigley)."""
+        names = ("outer_diameter_mm", "root_diameter_mm", "lead_mm", "thread_half_angle_deg")
+        if any(info.data.get(name) is None for name in names):
+            return value  # an earlier field is invalid and already reported
+        outer, root, lead, half_angle = (float(info.data[name]) for name in names)
+        tan_lead = lead / (math.pi * (outer + root) / 2)
+        limit = 0.99 * math.cos(math.radians(half_angle)) / tan_lead
+        if value >= limit:
+            raise ValueError(
+                f"with this lead ({math.degrees(math.atan(tan_lead)):.1f} deg lead angle) the "
+                f"thread cannot be driven at friction {value:g}: it must be below {limit:.3g}"
+            )
         return value
 
 
