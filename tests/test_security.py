@@ -520,3 +520,18 @@ def test_real_server_refuses_a_10mb_chunked_body(live_port: int) -> None:
     assert answer.startswith(b"HTTP/1.1 413"), answer[:200]
     assert sent < TEN_MB
     assert _status(live_port, "/api/v1/health") == 200
+
+
+def test_real_server_refuses_oversized_queries(live_port: int) -> None:
+    """A 100 KB request line stops in uvicorn's parser (400, before the app); 5,000
+    parameters in a shorter query reach the app and get its 414."""
+    with socket.create_connection(("127.0.0.1", live_port), timeout=10) as sock:
+        sock.sendall(
+            f"GET /api/v1/select?load_n={'1' * 100_000} HTTP/1.1\r\nHost: x\r\n\r\n".encode()
+        )
+        assert sock.recv(64).split(b" ")[1] in (b"400", b"414")
+    many = "&".join(["a=1"] * 5000)
+    response = httpx.get(f"http://127.0.0.1:{live_port}/api/v1/select?{many}", timeout=10)
+    assert response.status_code == 414
+    assert_security_headers(response)
+    assert _status(live_port, "/api/v1/health") == 200
