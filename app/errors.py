@@ -62,6 +62,21 @@ async def app_error_handler(request: Request, exc: Exception) -> Response:
     return _respond(request, exc.status, exc.error, exc.detail)
 
 
+async def http_error_handler(request: Request, exc: Exception) -> Response:
+    """Routing errors (unknown path, wrong method) in the same shape as every error."""
+    assert isinstance(exc, HTTPException)
+    reason = {404: "not found", 405: "method not allowed"}.get(exc.status_code, str(exc.detail))
+    response = _respond(
+        request,
+        exc.status_code,
+        reason,
+        [{"field": "request", "message": f"{request.method} {request.url.path}: {reason}"}],
+    )
+    if exc.headers:
+        response.headers.update(exc.headers)
+    return response
+
+
 async def validation_error_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, RequestValidationError)
     return _respond(request, 422, "invalid input", validation_details(exc.errors()))
@@ -84,7 +99,7 @@ class ApiRoute(APIRoute):
             except HTTPException as exc:
                 if exc.status_code != 400:
                     raise
-                reason = f"Malformed JSON body: {exc.__cause__ or exc.detail}"
+                reason = "Malformed JSON body: not readable as UTF-8 JSON"
                 raise AppError(
                     422, "invalid input", [{"field": "request", "message": reason}]
                 ) from exc

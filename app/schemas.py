@@ -54,7 +54,9 @@ class ApplicationIn(BaseModel):
     lead_mm: (
         Annotated[float, NotBool, _num(0.01, 1000.0, "Lead [mm]; omit for any lead.")] | None
     ) = None
-    accel_mm_s2: Annotated[float, NotBool, _num(1e-3, 1e6, "Linear acceleration [mm/s^2].")] = 1000.0
+    accel_mm_s2: Annotated[float, NotBool, _num(1e-3, 1e6, "Linear acceleration [mm/s^2].")] = (
+        1000.0
+    )
     moving_mass_kg: Annotated[float, NotBool, _num(0.0, 1e5, "Moving mass [kg].")] = 0.0
     end_fixity: EndFixityIn = "fixed-simple"
     orientation: Literal["horizontal", "vertical"] = "horizontal"

@@ -904,13 +904,6 @@ def test_oversized_query_is_414(api: Api) -> None:
     assert_error(api.get(f"{API}/select", params=params), 414, "request")
 
 
-ROUTING_ERRORS = pytest.mark.xfail(
-    strict=True,
-    reason="gap: Starlette's own 404/405 answer {'detail': 'Not Found'}, not the error shape; "
-    "app/main.py registers no handler for StarletteHTTPException",
-)
-
-
 @pytest.mark.parametrize(
     ("method", "path", "status"),
     [
@@ -921,7 +914,6 @@ ROUTING_ERRORS = pytest.mark.xfail(
     ],
     ids=["unknown-path", "get-evaluate", "delete-select", "put-series"],
 )
-@ROUTING_ERRORS
 def test_routing_errors_use_the_error_shape(api: Api, method: str, path: str, status: int) -> None:
     assert_error(api.request(method, path), status, "request")
 

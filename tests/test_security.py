@@ -103,7 +103,8 @@ RESPONSE_KINDS: list[tuple[str, str, str, dict[str, str], int]] = [
         200,
     ),
     ("api-gzip", "GET", SELECT, {"Accept-Encoding": "gzip"}, 200),
-    ("head-405", "HEAD", "/", {}, 405),  # FastAPI GET routes do not answer HEAD
+    ("head-page", "HEAD", "/", {}, 200),
+    ("api-405", "DELETE", SELECT, {}, 405),
     ("query-414", "GET", "/?" + "x" * 60_000, {}, 414),
 ]
 

@@ -111,7 +111,7 @@ def _push_url(context: dict[str, Any]) -> str:
     return "false" if context["errors"] else "/"
 
 
-@router.get("/", response_class=HTMLResponse)
+@router.api_route("/", methods=["GET", "HEAD"], response_class=HTMLResponse)
 async def selector(request: Request, catalog: CatalogDep) -> Response:
     """The selector; an HTMX request gets the results fragment and out-of-band field errors."""
     context = selector_context(request.query_params, catalog)
@@ -164,12 +164,10 @@ def _catalog_rows(series: dict[str, Any]) -> list[dict[str, str]]:
     return rows
 
 
-@router.get("/catalog", response_class=HTMLResponse)
+@router.api_route("/catalog", methods=["GET", "HEAD"], response_class=HTMLResponse)
 async def catalog_page(request: Request, catalog: CatalogDep) -> Response:
     """Every series and size with each value's provenance."""
-    series = [
-        {**series_dict(s), "rows": _catalog_rows(series_dict(s))} for s in catalog.series.values()
-    ]
+    series = [{**d, "rows": _catalog_rows(d)} for d in map(series_dict, catalog.series.values())]
     return templates.TemplateResponse(
         request, "catalog.html", {"version": catalog.version, "series": series}
     )
