@@ -13,6 +13,8 @@ class Settings(BaseSettings):
     max_body_bytes: int = 64 * 1024
     max_query_chars: int = 4096
     max_query_params: int = 100
+    #: whole responses kept per process for repeated selection queries; 0 turns it off
+    response_cache_entries: int = 512
 
 
 @lru_cache
