@@ -19,16 +19,19 @@ ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
 
 #: Request headers that change the response of a cached path.
 VARY = (b"hx-request", b"hx-history-restore-request")
-MAX_BODY_BYTES = 1 << 20
 
 
 class ResponseCache:
-    """LRU of complete 200 responses to GET on ``paths``, keyed by path, query, headers."""
+    """LRU of complete 200 responses to GET on ``paths``, keyed by path, query, headers.
 
-    def __init__(self, app: ASGIApp, paths: frozenset[str], max_entries: int) -> None:
+    Bounded by the total size of the bodies kept (``max_bytes``; 0 turns it off).
+    """
+
+    def __init__(self, app: ASGIApp, paths: frozenset[str], max_bytes: int) -> None:
         self.app = app
         self.paths = paths
-        self.max_entries = max_entries
+        self.max_bytes = max_bytes
+        self.size = 0
         self.entries: OrderedDict[tuple[Any, ...], tuple[Message, bytes]] = OrderedDict()
 
     def _key(self, scope: Scope) -> tuple[Any, ...]:
@@ -46,7 +49,7 @@ class ResponseCache:
             scope["type"] != "http"
             or scope["method"] != "GET"
             or scope["path"] not in self.paths
-            or self.max_entries <= 0
+            or self.max_bytes <= 0
         ):
             await self.app(scope, receive, send)
             return
@@ -75,11 +78,13 @@ class ResponseCache:
         await self.app(scope, receive, capture)
 
     def _store(self, key: tuple[Any, ...], start: Message, body: bytes) -> None:
-        if len(body) > MAX_BODY_BYTES:
+        if len(body) > self.max_bytes // 8 or key in self.entries:
             return
         self.entries[key] = (
             {"type": start["type"], "status": start["status"], "headers": list(start["headers"])},
             body,
         )
-        while len(self.entries) > self.max_entries:
-            self.entries.popitem(last=False)
+        self.size += len(body)
+        while self.size > self.max_bytes:
+            _, (_, evicted) = self.entries.popitem(last=False)
+            self.size -= len(evicted)

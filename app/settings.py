@@ -13,8 +13,8 @@ class Settings(BaseSettings):
     max_body_bytes: int = 64 * 1024
     max_query_chars: int = 4096
     max_query_params: int = 100
-    #: whole responses kept per process for repeated selection queries; 0 turns it off
-    response_cache_entries: int = 512
+    #: bytes of whole responses kept per process for repeated selection queries (0: off)
+    response_cache_bytes: int = 16 * 1024 * 1024
 
 
 @lru_cache

@@ -2,6 +2,7 @@
 
 from fastapi.testclient import TestClient
 
+from app.cache import ResponseCache
 from app.main import create_app
 from app.settings import Settings
 
@@ -38,11 +39,17 @@ def test_other_queries_errors_and_posts_are_not_served_from_cache() -> None:
     assert "x-cache" not in client.post("/api/v1/select", json=body).headers
 
 
-def test_cache_is_bounded_and_can_be_turned_off() -> None:
-    client = TestClient(create_app(Settings(response_cache_entries=2)))
-    for load in (100, 101, 102):
+def test_cache_is_bounded_by_bytes_and_can_be_turned_off() -> None:
+    app = create_app(Settings(response_cache_bytes=8 * 20_000))
+    client = TestClient(app, headers={"Accept-Encoding": "gzip"})
+    for load in range(100, 120):
         client.get(SELECT.replace("load_n=100", f"load_n={load}"))
+    cache = app.middleware_stack
+    while not isinstance(cache, ResponseCache):
+        cache = cache.app
+    assert 0 < cache.size <= 8 * 20_000
+    assert cache.size == sum(len(body) for _, body in cache.entries.values())
     assert client.get(SELECT).headers["x-cache"] == "miss"  # the oldest was evicted
-    off = TestClient(create_app(Settings(response_cache_entries=0)))
+    off = TestClient(create_app(Settings(response_cache_bytes=0)))
     off.get(SELECT)
     assert "x-cache" not in off.get(SELECT).headers
