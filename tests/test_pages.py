@@ -123,8 +123,14 @@ def test_share_url_reopens_the_same_results(client: TestClient) -> None:
 
 @pytest.mark.parametrize(
     "path",
-    ["/", "/?load=100&lead=10&speed=50&length=500", "/?load=abc&speed=1&length=1", "/catalog"],
-    ids=["empty", "results", "error", "catalog"],
+    [
+        "/",
+        "/?load=100&lead=10&speed=50&length=500",
+        "/?load=abc&speed=1&length=1",
+        "/catalog",
+        "/detail?load=100&lead=10&speed=50&length=500&id=B6000-L10-TFE",
+    ],
+    ids=["empty", "results", "error", "catalog", "detail"],
 )
 def test_no_inline_script_style_or_handler(client: TestClient, path: str) -> None:
     """The CSP (script-src 'self'; style-src 'self') would block any of these."""
@@ -177,7 +183,8 @@ def test_table_values_follow_the_display_units(client: TestClient) -> None:
     torque = float(row.select_one(".torque-total").text)
     assert math.isclose(torque, api["torque"]["total_nm"] / OZ_IN, rel_tol=1e-3)
     assert math.isclose(float(row.select_one(".lead").text), 10 / INCH, rel_tol=1e-3)
-    detail_values = [dd.text for dd in row.select("li.check[data-check=length] .check-value")]
+    detail = soup(client.get("/detail", params={**params, "id": api["id"]}, headers=HX))
+    detail_values = [dd.text for dd in detail.select("li.check[data-check=length] .check-value")]
     assert detail_values == ["19.69 in"]
 
 
@@ -272,12 +279,88 @@ def test_advanced_opens_only_for_non_default_values(client: TestClient) -> None:
 # detail, rejected, no pass
 
 
+def detail_url(query: str, cid: str) -> str:
+    return f"/detail?{query}&id={cid}"
+
+
+def test_results_link_each_detail_instead_of_embedding_it(client: TestClient) -> None:
+    """The checks load when a detail is opened (htmx), or open as a page without JS."""
+    api = api_select(client)
+    page = soup(client.get("/", params=AXIS, headers=HX))
+    query = "load=100&lead=10&speed=50&length=500"
+    assert not page.select("li.check, ol.checks, dl.facts")
+    bodies = page.select("table.candidates tbody.candidate")
+    for n, (body, c) in enumerate(zip(bodies, api["candidates"], strict=True), start=1):
+        details = body.select_one("details.detail")
+        assert body.select_one("tr.main")["data-detail"] == details["id"] == f"detail-{n}"
+        assert details["hx-get"] == detail_url(query, c["id"])
+        assert details["hx-trigger"] == "toggle once"
+        assert details["hx-target"] == "find .detail-body"
+        assert details["hx-swap"] == "outerHTML"
+        assert details.select_one("summary").text.endswith(f"provenance for {c['id']}")
+        assert details.select_one(".detail-body a[href]")["href"] == detail_url(query, c["id"])
+    rejected = page.select("li.rejected-candidate")
+    assert len(rejected) == len(api["rejected"])
+    for item in rejected:
+        details = item.select_one("details.detail[hx-trigger='toggle once']")
+        assert details["hx-get"] == detail_url(query, item["data-id"])
+        assert details.select_one(".detail-body a")["href"] == details["hx-get"]
+
+
+def test_detail_fragment_and_page(client: TestClient) -> None:
+    cid = api_select(client)["candidates"][1]["id"]
+    params = {**AXIS, "force_unit": "lbf", "load": "22.4809", "id": cid}
+    response = client.get("/detail", params=params, headers=HX)
+    fragment = soup(response)
+    assert "HX-Request" in response.headers["Vary"]
+    assert not fragment.select("html, h1, form")
+    assert fragment.select_one("div.detail-body:not(.pending) dl.facts")
+    assert fragment.select("div.detail-body ol.checks li.check")
+    assert "lbf" in fragment.select_one("li.check[data-check=buckling] .check-limit").text
+    full = soup(client.get("/detail", params=params))
+    assert full.select_one("html head title").text.startswith(cid)
+    assert full.select_one("main h1").text == f"Detail of {cid}"
+    assert full.select_one("main .verdict").text == "Passes every check."
+    back = full.select_one("main a.back-link")["href"]
+    assert back == "/?load=22.4809&lead=10&speed=50&length=500&force_unit=lbf"
+    assert str(full.select_one("main div.detail-body")) == str(
+        fragment.select_one("div.detail-body")
+    )
+    assert not full.select("form#selector")
+
+
+def test_detail_of_a_rejected_candidate_names_its_failures_and_fix(client: TestClient) -> None:
+    c = api_select(client)["rejected"][0]
+    page = soup(client.get("/detail", params={**AXIS, "id": c["id"]}))
+    failing = [k["name"] for k in c["checks"] if not k["passed"]]
+    assert [li["data-check"] for li in page.select("li.check.fail")] == failing
+    assert page.select_one("main .verdict").text.startswith("Rejected: fails")
+    assert page.select_one("main > p.fix").text == f"Fix: {c['fix']}"
+
+
+@pytest.mark.parametrize(
+    ("params", "status", "text"),
+    [
+        ({**AXIS, "id": "NO-SUCH-SCREW"}, 404, "no candidate &#39;NO-SUCH-SCREW&#39;"),
+        (AXIS, 404, "no candidate id given"),
+        ({**AXIS, "load": "-1", "id": "B6000-L10-TFE"}, 422, "Axial load"),
+    ],
+    ids=["unknown-id", "no-id", "invalid-input"],
+)
+def test_detail_errors_are_html_pages(
+    client: TestClient, params: dict[str, str], status: int, text: str
+) -> None:
+    for headers in ({}, HX):
+        response = client.get("/detail", params=params, headers=headers)
+        assert response.status_code == status
+        assert response.headers["content-type"].startswith("text/html")
+        assert text in response.text
+
+
 def test_detail_lists_every_check_with_formula_and_provenance(client: TestClient) -> None:
     api = api_select(client)["candidates"][0]
-    page = soup(client.get("/", params=AXIS))
-    body = page.select_one("tbody.candidate")
-    assert body.select_one("tr.main")["data-detail"] == body.select_one("details.detail")["id"]
-    checks = body.select("details.detail li.check")
+    page = soup(client.get("/detail", params={**AXIS, "id": api["id"]}, headers=HX))
+    checks = page.select("div.detail-body li.check")
     assert [c["data-check"] for c in checks] == [k["name"] for k in api["checks"]]
     for item, check in zip(checks, api["checks"], strict=True):
         assert item.select_one(".formula code").text == check["formula"]

@@ -1,4 +1,4 @@
-"""HTML pages: the selector (full page or HTMX fragment), its exports, and the catalog."""
+"""HTML pages: the selector (full page or HTMX fragment), a candidate's detail, exports, catalog."""
 
 from collections.abc import Mapping
 from typing import Any
@@ -111,13 +111,18 @@ def _push_url(context: dict[str, Any]) -> str:
     return "false" if context["errors"] else "/"
 
 
+def _is_fragment(request: Request) -> bool:
+    """An HTMX swap (not a history restore, which needs the whole page)."""
+    return request.headers.get("HX-Request") == "true" and (
+        request.headers.get("HX-History-Restore-Request") != "true"
+    )
+
+
 @router.api_route("/", methods=["GET", "HEAD"], response_class=HTMLResponse)
 async def selector(request: Request, catalog: CatalogDep) -> Response:
     """The selector; an HTMX request gets the results fragment and out-of-band field errors."""
     context = selector_context(request.query_params, catalog)
-    fragment = request.headers.get("HX-Request") == "true" and (
-        request.headers.get("HX-History-Restore-Request") != "true"
-    )
+    fragment = _is_fragment(request)
     response = templates.TemplateResponse(
         request, "partials/htmx_response.html" if fragment else "index.html", context
     )
@@ -127,8 +132,8 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
     return response
 
 
-def _export_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
-    """Validated inputs and display units of an export link; a 422 page when invalid."""
+def _link_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
+    """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
     units, values, _ = _form(params)
     inputs, errors = parse_inputs(values, units)
     if inputs is None:
@@ -141,10 +146,36 @@ def _attachment(extension: str) -> dict[str, str]:
     return {"Content-Disposition": f'attachment; filename="{EXPORT_NAME}.{extension}"'}
 
 
+def _candidate(result: dict[str, Any], cid: str) -> dict[str, Any]:
+    """The passing or rejected candidate of this result with id ``cid``; a 404 page if none."""
+    for c in result["candidates"] + result["rejected"]:
+        if c["id"] == cid:
+            return dict(c)
+    message = f"no candidate {cid!r} in this result" if cid else "no candidate id given"
+    raise AppError(404, "candidate not found", [{"field": "id", "message": message}])
+
+
+@router.api_route("/detail", methods=["GET", "HEAD"], response_class=HTMLResponse)
+async def detail(request: Request, catalog: CatalogDep) -> Response:
+    """One candidate's checks, formulas and provenance: the fragment a result row loads
+    when its detail is opened, or (without HTMX) a page of its own linking back."""
+    inputs, units = _link_inputs(request.query_params)
+    result = run_selection(inputs, catalog)
+    context = {
+        "c": _candidate(result, request.query_params.get("id", "")),
+        "d": Display(units),
+        "query": share_query(inputs, units),
+    }
+    template = "partials/detail.html" if _is_fragment(request) else "detail.html"
+    response = templates.TemplateResponse(request, template, context)
+    response.headers["Vary"] = "HX-Request"
+    return response
+
+
 @router.get("/export.csv")
 async def export_csv(request: Request, catalog: CatalogDep) -> Response:
     """The result table as CSV in the link's display units."""
-    inputs, units = _export_inputs(request.query_params)
+    inputs, units = _link_inputs(request.query_params)
     body = results_csv(run_selection(inputs, catalog), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
@@ -152,7 +183,7 @@ async def export_csv(request: Request, catalog: CatalogDep) -> Response:
 @router.get("/export.json")
 async def export_json(request: Request, catalog: CatalogDep) -> Response:
     """The API's select response (API units) for the link's inputs."""
-    inputs, _ = _export_inputs(request.query_params)
+    inputs, _ = _link_inputs(request.query_params)
     return JSONResponse(run_selection(inputs, catalog), headers=_attachment("json"))
 
 

@@ -2,8 +2,9 @@
  * The page's one script. Draws every chart from its <script type="application/json">
  * figure (on load and after each htmx swap), keeps aria-invalid in step with the inline
  * error messages that htmx swaps out of band, copies share links, lets a click on a result
- * row open its detail, and sizes the charts for the printed report. Nothing here is needed
- * for the form to work.
+ * row open its detail (whose body htmx loads on first opening), marks a detail busy while
+ * it loads, and sizes the charts for the printed report. Nothing here is needed for the
+ * form to work.
  */
 (function () {
   "use strict";
@@ -108,6 +109,18 @@
     }
   }
 
+  // a result's <details class="detail"> loads its body from /detail when first opened
+  function markLoading(event) {
+    var detail = event.detail.elt;
+    if (detail.matches("details.detail")) {
+      if (event.type === "htmx:beforeRequest") {
+        detail.setAttribute("aria-busy", "true");
+      } else {
+        detail.removeAttribute("aria-busy");
+      }
+    }
+  }
+
   var PRINT_LAYOUT = { width: 345, height: 250, "font.size": 8 };
   var SCREEN_LAYOUT = { width: null, height: null, autosize: true, "font.size": 12 };
 
@@ -139,6 +152,8 @@
   document.addEventListener("DOMContentLoaded", refresh);
   document.addEventListener("htmx:afterSettle", refresh);
   document.addEventListener("click", onClick);
+  document.addEventListener("htmx:beforeRequest", markLoading);
+  document.addEventListener("htmx:afterRequest", markLoading);
   window.addEventListener("beforeprint", sizeForPrint);
   window.addEventListener("afterprint", sizeForScreen);
 })();

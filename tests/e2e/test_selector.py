@@ -169,21 +169,54 @@ def test_each_chart_renders_its_traces_with_png_export(
     assert console_errors == []
 
 
-def test_row_click_and_keyboard_open_the_detail(
+def test_row_click_and_keyboard_load_the_detail(
     page: Any, live_server: str, console_errors: list[str]
 ) -> None:
+    api = api_select(live_server)
     open_results(page, live_server)
+    assert page.locator("li.check").count() == 0  # checks load on demand
     page.click("tbody.candidate >> nth=0 >> tr.main td.num >> nth=0")
     first = page.locator("#detail-1")
     assert first.get_attribute("open") is not None
-    assert first.locator("li.check").first.is_visible()
+    first.locator("li.check").first.wait_for()
     assert first.locator("ul.sources .kind").first.is_visible()
+    checks = first.locator("li.check").evaluate_all("items => items.map(i => i.dataset.check)")
+    assert checks == [k["name"] for k in api["candidates"][0]["checks"]]
+    page.wait_for_function("() => !document.querySelector('details.detail[aria-busy]')")
+    assert first.locator(".detail-body.pending").count() == 0
     page.focus("#detail-2 > summary")
     page.keyboard.press("Enter")
     assert page.locator("#detail-2").get_attribute("open") is not None
+    page.locator("#detail-2 li.check").first.wait_for()
+    loads: list[str] = []
+    page.on("request", lambda r: loads.append(r.url) if "/detail?" in r.url else None)
+    page.click("#detail-1 > summary")
+    page.click("#detail-1 > summary")
+    assert first.locator("li.check").first.is_visible()
     page.click("details.rejected > summary")
     assert page.locator("li.rejected-candidate .fix").first.is_visible()
+    assert loads == []  # reopening does not load again
+    item = page.locator("li.rejected-candidate").first
+    item.locator("details.detail > summary").click()
+    item.locator("details.detail li.check.fail").first.wait_for()
+    assert len(loads) == 1 and loads[0].endswith("&id=" + item.get_attribute("data-id"))
     assert console_errors == []
+
+
+def test_detail_opens_as_a_page_without_javascript(browser: Any, live_server: str) -> None:
+    context = browser.new_context(java_script_enabled=False)
+    page = context.new_page()
+    page.goto(f"{live_server}/?{AXIS}")
+    page.click("#detail-1 > summary")
+    page.click("#detail-1 .detail-body a")
+    page.wait_for_selector("main h1")
+    assert page.url.startswith(f"{live_server}/detail?{AXIS}&id=")
+    assert page.inner_text("main h1").startswith("Detail of")
+    assert page.locator("main li.check").count() > 0
+    page.click("main a.back-link")
+    page.wait_for_selector("#results table.candidates tbody.candidate")
+    assert page.url == f"{live_server}/?{AXIS}"
+    context.close()
 
 
 def test_copy_link_puts_the_share_url_on_the_clipboard(browser: Any, live_server: str) -> None:
@@ -230,6 +263,7 @@ def test_screenshots_desktop_and_phone(
 ) -> None:
     open_results(page, live_server)
     page.click("tbody.candidate >> nth=0 >> tr.main td.num >> nth=0")
+    page.locator("#detail-1 li.check").first.wait_for()
     page.screenshot(path=str(artifacts / "selector-desktop-1280.png"), full_page=True)
     page.set_viewport_size({"width": 390, "height": 844})
     page.wait_for_function(
