@@ -16,7 +16,7 @@ from app.settings import Settings, get_settings
 from app.staticfiles import PrecompressedStaticFiles
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
-CACHED_PATHS = frozenset({"/", "/api/v1/select", "/export.csv", "/export.json"})
+CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
