@@ -15,6 +15,7 @@ import subprocess
 import sys
 import time
 from collections.abc import Iterator
+from concurrent.futures import ThreadPoolExecutor
 from html.parser import HTMLParser
 from pathlib import Path
 from typing import Any
@@ -418,7 +419,10 @@ QUERIES: dict[str, tuple[str, bytes]] = {
 def test_oversized_queries_get_414(
     app: FastAPI, client: TestClient, path: str, query: bytes
 ) -> None:
-    status, headers = asyncio.run(_asgi_get(app, path, query))
+    # on a thread of its own: Playwright's sync API (browser tests earlier in the same
+    # session) keeps an event loop running on the main thread
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        status, headers = pool.submit(asyncio.run, _asgi_get(app, path, query)).result()
     assert status == 414
     assert headers["content-type"] == "application/json"
     assert "frame-ancestors 'none'" in headers["content-security-policy"]
