@@ -8,6 +8,7 @@ import math
 from dataclasses import replace
 
 import pytest
+from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.core.model import Application, ScrewSpec
@@ -43,3 +44,27 @@ def light_app(**changes: object) -> Application:
     """A light horizontal axis that every mid-size screw passes; tests change one thing."""
     base = Application(load_n=50.0, speed_m_s=0.05, length_m=0.5)
     return replace(base, **changes)  # type: ignore[arg-type]
+
+
+#: Applications over every option the core reads, for property tests.
+applications = st.builds(
+    Application,
+    load_n=st.floats(1.0, 3000.0),
+    speed_m_s=st.floats(0.001, 1.0),
+    length_m=st.floats(0.05, 4.5),
+    accel_m_s2=st.floats(0.0, 10.0),
+    moving_mass_kg=st.floats(0.0, 20.0),
+    end_fixity=st.sampled_from(["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]),
+    orientation=st.sampled_from(["horizontal", "vertical"]),
+    compression=st.booleans(),
+    require_anti_backlash=st.booleans(),
+    coating=st.sampled_from(["auto", "tfe", "none"]),
+    oil_present=st.booleans(),
+    ambient_c=st.floats(-20.0, 120.0),
+    stroke_m=st.none() | st.floats(0.01, 2.0),
+    cycles_per_day=st.none() | st.floats(1.0, 5000.0),
+    required_life_years=st.none() | st.floats(0.1, 20.0),
+    positioning_tolerance_m=st.none() | st.floats(1e-5, 2e-3),
+    max_torque_nm=st.none() | st.floats(0.01, 5.0),
+    lead_m=st.none() | st.sampled_from([0.002, 0.01, 0.0127, 0.025]),
+)

@@ -15,7 +15,7 @@ from app.catalog import Catalog
 from app.core import critical_speed, efficiency, geometry
 from app.core.evaluate import axial_load, evaluate
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, Evaluation, ScrewSpec
-from tests.core.conftest import light_app
+from tests.core.conftest import applications, light_app
 
 CATALOG_IDS = ("ZBX4000-L2", "ZBX8000-L10", "B12000-L25.4-TFE", "VHD10000-L5", "KHD6000-L12")
 
@@ -212,28 +212,8 @@ def test_too_steep_a_lead_is_refused() -> None:
         evaluate(light_app(), steep)
 
 
-apps = st.builds(
-    Application,
-    load_n=st.floats(1.0, 3000.0),
-    speed_m_s=st.floats(0.001, 1.0),
-    length_m=st.floats(0.05, 4.5),
-    accel_m_s2=st.floats(0.0, 10.0),
-    moving_mass_kg=st.floats(0.0, 20.0),
-    end_fixity=st.sampled_from(["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]),
-    orientation=st.sampled_from(["horizontal", "vertical"]),
-    compression=st.booleans(),
-    stroke_m=st.none() | st.floats(0.01, 2.0),
-    cycles_per_day=st.none() | st.floats(1.0, 5000.0),
-    required_life_years=st.none() | st.floats(0.1, 20.0),
-    positioning_tolerance_m=st.none() | st.floats(1e-5, 2e-3),
-    max_torque_nm=st.none() | st.floats(0.01, 5.0),
-    ambient_c=st.floats(-20.0, 120.0),
-    oil_present=st.booleans(),
-)
-
-
 @settings(max_examples=60, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(app=apps, pick=st.integers(0, 10_000))
+@given(app=applications, pick=st.integers(0, 10_000))
 def test_checks_are_consistent_with_their_numbers(
     catalog: Catalog, app: Application, pick: int
 ) -> None:
@@ -255,7 +235,7 @@ def test_checks_are_consistent_with_their_numbers(
 
 
 @settings(max_examples=60, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(app=apps, pick=st.integers(0, 10_000))
+@given(app=applications, pick=st.integers(0, 10_000))
 def test_each_input_remedy_clears_its_check(catalog: Catalog, app: Application, pick: int) -> None:
     """Check.input_limits: setting any one of the offered inputs to the offered value makes
     that check pass (it lands on its limit)."""

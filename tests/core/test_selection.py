@@ -10,36 +10,13 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.screening import eligible_mask, screen
 from app.core.selection import input_change, select
-from tests.core.conftest import light_app
-
-apps = st.builds(
-    Application,
-    load_n=st.floats(1.0, 3000.0),
-    speed_m_s=st.floats(0.001, 1.0),
-    length_m=st.floats(0.05, 4.5),
-    accel_m_s2=st.floats(0.0, 10.0),
-    moving_mass_kg=st.floats(0.0, 20.0),
-    end_fixity=st.sampled_from(["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]),
-    orientation=st.sampled_from(["horizontal", "vertical"]),
-    compression=st.booleans(),
-    require_anti_backlash=st.booleans(),
-    coating=st.sampled_from(["auto", "tfe", "none"]),
-    oil_present=st.booleans(),
-    ambient_c=st.floats(-20.0, 120.0),
-    stroke_m=st.none() | st.floats(0.01, 2.0),
-    cycles_per_day=st.none() | st.floats(1.0, 5000.0),
-    required_life_years=st.none() | st.floats(0.1, 20.0),
-    positioning_tolerance_m=st.none() | st.floats(1e-5, 2e-3),
-    max_torque_nm=st.none() | st.floats(0.01, 5.0),
-    lead_m=st.none() | st.sampled_from([0.002, 0.01, 0.0127, 0.025]),
-)
+from tests.core.conftest import applications, light_app
 
 FIXTURE_OK = settings(
     max_examples=15, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
@@ -47,7 +24,7 @@ FIXTURE_OK = settings(
 
 
 @FIXTURE_OK
-@given(app=apps)
+@given(app=applications)
 def test_screening_agrees_with_full_evaluation(catalog: Catalog, app: Application) -> None:
     """For every eligible candidate: same pass/fail, same failed checks, same worst
     utilization, same total torque as ``evaluate`` (screening.py: "tests hold both paths
@@ -63,7 +40,7 @@ def test_screening_agrees_with_full_evaluation(catalog: Catalog, app: Applicatio
 
 
 @FIXTURE_OK
-@given(app=apps)
+@given(app=applications)
 def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     """Counts cover every eligible candidate; passing ones come back ranked by drive torque,
     rejected ones nearest-to-passing first; each list is cut to ``app.limit``."""
@@ -155,7 +132,7 @@ def test_nothing_passes_and_the_summary_names_the_nearest_fix(catalog: Catalog) 
 
 
 @FIXTURE_OK
-@given(app=apps)
+@given(app=applications)
 def test_the_proposed_input_change_admits_the_nearest_candidate(
     catalog: Catalog, app: Application
 ) -> None:
