@@ -7,6 +7,7 @@ the tests use to validate them.
 
 from typing import Any
 
+from app.core import critical_speed, pv
 from app.units import Display
 
 #: Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
@@ -70,8 +71,8 @@ def critical_speed_figure(
 ) -> dict[str, Any]:
     """Allowed speed vs unsupported length (log-log) with the operating points.
 
-    n_allowed(L) = n_allowed(L_user) (L_user / L)^2, exact because n_c is proportional to
-    1 / L^2 for a given root diameter, material and end fixity (Blevins table 8-1).
+    Each curve moves the candidate's allowed speed at the user's length to other lengths
+    with ``app.core.critical_speed.speed_at_length`` (n proportional to 1 / L^2).
     """
     lengths_mm = _span(length_mm, CRITICAL_SPAN)
     x = [_round(d.value(length, "length")) for length in lengths_mm]
@@ -84,7 +85,10 @@ def critical_speed_figure(
                 "mode": "lines",
                 "name": c["id"],
                 "x": x,
-                "y": [_round(allowed * (length_mm / length) ** 2) for length in lengths_mm],
+                "y": [
+                    _round(critical_speed.speed_at_length(allowed, length_mm, length))
+                    for length in lengths_mm
+                ],
                 "line": {"color": colour, "width": 2},
                 "hovertemplate": f"%{{x:.4g}} {d.label('length')}<br>%{{y:.4g}} rpm"
                 f"<extra>{c['id']} allowed</extra>",
@@ -132,7 +136,8 @@ def pv_figure(
 ) -> dict[str, Any]:
     """PV limit of each nut as the largest load vs linear speed (log-log), and the operating point.
 
-    F_max = PV_lim 3 h / n with n = v / lead, so F_max(v) = F_max(v_user) v_user / v.
+    Each curve moves the PV-limited load at the user's speed to other speeds with
+    ``app.core.pv.max_load_at_speed`` (F_max proportional to 1 / v).
     """
     speeds = _span(speed_mm_s, PV_SPAN)
     x = [_round(d.value(v, "speed")) for v in speeds]
@@ -146,7 +151,10 @@ def pv_figure(
                 "mode": "lines",
                 "name": c["id"],
                 "x": x,
-                "y": [_round(d.value(max_load * speed_mm_s / v, "force")) for v in speeds],
+                "y": [
+                    _round(d.value(pv.max_load_at_speed(max_load, speed_mm_s, v), "force"))
+                    for v in speeds
+                ],
                 "line": {"color": colour, "width": 2},
                 "hovertemplate": f"%{{x:.4g}} {d.label('speed')}<br>max %{{y:.4g}} "
                 f"{d.label('force')}<extra>{c['id']} PV limit</extra>",

@@ -97,6 +97,11 @@ FORMULAS: dict[str, Formula] = {
         "critical_speed.critical_speed_rpm",
         "Blevins, Formulas for Natural Frequency, table 8-1; Thomson n_c = 4.76e6 d_r / L^2",
     ),
+    "critical_speed.margin": _f(
+        "margin = n_allowed / n",
+        "critical_speed.speed_margin",
+        "inverse of the critical-speed utilisation",
+    ),
     "critical_speed.allowed_rpm": _f(
         "n = SF x n_c", "critical_speed.allowed_speed_rpm", "Thomson (80 % of critical)"
     ),

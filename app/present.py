@@ -5,6 +5,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from app.catalog import Material, Series
+from app.core import geometry, torque
 from app.core.model import Evaluation, Provenance, ScrewSpec, Selection
 from app.schemas import CustomScrewIn, MaterialIn
 from app.units import CHECK_UNITS
@@ -80,7 +81,7 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
         "anti_backlash": s.anti_backlash,
         "outer_diameter_mm": _mm(s.outer_diameter_m),
         "root_diameter_mm": _mm(s.root_diameter_m),
-        "pitch_diameter_mm": _mm((s.outer_diameter_m + s.root_diameter_m) / 2),
+        "pitch_diameter_mm": _mm(geometry.pitch_diameter(s.outer_diameter_m, s.root_diameter_m)),
         "lead_mm": _mm(s.lead_m),
         "lead_angle_deg": math.degrees(ev.lead_angle_rad),
         "coated": s.coated,
@@ -113,6 +114,7 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
         "critical_speed": {
             "theoretical_rpm": ev.critical_speed.theoretical_rpm,
             "allowed_rpm": ev.critical_speed.allowed_rpm,
+            "margin": ev.critical_speed.margin,
             "safety_factor": ev.critical_speed.safety_factor,
             "end_fixity": ev.critical_speed.end_fixity,
         },
@@ -221,7 +223,7 @@ def custom_screw(data: CustomScrewIn, materials: Mapping[str, Material]) -> Scre
     rd = data.root_diameter_mm * 1e-3
     inertia = data.inertia_kg_m2_per_m
     if inertia is None:
-        inertia = rho * math.pi * rd**4 / 32  # solid rod at the root diameter, per metre
+        inertia = torque.solid_rod_inertia_per_length(rho, rd)
         inertia_prov = Provenance("derived", "solid rod at the root diameter: rho pi d_r^4 / 32")
     else:
         inertia_prov = user

@@ -260,6 +260,7 @@ class TorqueOut(BaseModel):
 class CriticalSpeedOut(BaseModel):
     theoretical_rpm: float
     allowed_rpm: float
+    margin: float = Field(description="allowed_rpm / rpm: how many times the speed fits.")
     safety_factor: float
     end_fixity: str
 

@@ -56,6 +56,30 @@ def allowed_speed_rpm(critical_rpm: float, safety_factor: float) -> float:
     return safety_factor * critical_rpm
 
 
+def speed_at_length(rpm_at_length: float, length_m: float, new_length_m: float) -> float:
+    """A critical (or allowed) speed moved to another unsupported length [rpm].
+
+    n_c is proportional to 1 / L^2 for a given root diameter, material and end fixity,
+    so n(L_new) = n(L) (L / L_new)^2 (Blevins [5] table 8-1). Draws the critical-speed
+    chart from one evaluated point.
+
+    >>> speed_at_length(1000.0, 1.0, 2.0)
+    250.0
+    """
+    return rpm_at_length * (length_m / new_length_m) ** 2
+
+
+def speed_margin(allowed_rpm: float, operating_rpm: float) -> float:
+    """How many times the operating speed fits under the allowed speed [-].
+
+    margin = n_allowed / n, the inverse of the critical-speed check's utilisation.
+
+    >>> speed_margin(900.0, 300.0)
+    3.0
+    """
+    return allowed_rpm / operating_rpm
+
+
 def max_length_for_speed(length_m: float, allowed_rpm: float, operating_rpm: float) -> float:
     """Longest unsupported length at which the operating speed is allowed [m].
 

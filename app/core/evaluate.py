@@ -83,9 +83,11 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
         screw.density_kg_m3,
         app.end_fixity,
     )
+    allowed_rpm = critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor)
     crit = CriticalSpeed(
         theoretical_rpm=n_c,
-        allowed_rpm=critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
+        allowed_rpm=allowed_rpm,
+        margin=critical_speed.speed_margin(allowed_rpm, rpm),
         safety_factor=app.critical_speed_safety_factor,
         end_fixity=app.end_fixity,
     )

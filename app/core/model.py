@@ -145,6 +145,7 @@ class Torque:
 class CriticalSpeed:
     theoretical_rpm: float
     allowed_rpm: float
+    margin: float
     safety_factor: float
     end_fixity: str
 

@@ -63,6 +63,18 @@ def max_load_for_pv(pv_limit_pa_m_s: float, rpm: float, thread_depth_m: float) -
     return pv_limit_pa_m_s * 3.0 * thread_depth_m / (rpm / 60.0)
 
 
+def max_load_at_speed(max_load_n: float, speed_m_s: float, new_speed_m_s: float) -> float:
+    """The PV-limited load moved to another linear speed [N].
+
+    F_max = PV_lim 3 h / n and n = 60 v / lead, so F_max(v_new) = F_max(v) v / v_new
+    (inverse of ``pv_value``, seed [1]). Draws the PV chart from one evaluated point.
+
+    >>> max_load_at_speed(100.0, 0.05, 0.1)
+    50.0
+    """
+    return max_load_n * speed_m_s / new_speed_m_s
+
+
 def max_rpm_for_pv(pv_limit_pa_m_s: float, load_n: float, thread_depth_m: float) -> float:
     """Highest speed the PV limit allows at this load, n = 60 PV_lim 3 h / F [rpm].
 

@@ -25,6 +25,18 @@ def screw_inertia(inertia_per_length_kg_m2_per_m: float, length_m: float) -> flo
     return inertia_per_length_kg_m2_per_m * length_m
 
 
+def solid_rod_inertia_per_length(density_kg_m3: float, diameter_m: float) -> float:
+    """Rotary inertia per length of a solid round rod, J / L = rho pi d^4 / 32 [kg m^2/m].
+
+    Used for a custom screw without a given inertia, at its root diameter (a lower bound
+    for a threaded shaft). Source: mass moment of a cylinder, m d^2 / 8.
+
+    >>> round(solid_rod_inertia_per_length(8000.0, 0.0127) * 0.0254, 10)
+    5.19e-07
+    """
+    return density_kg_m3 * math.pi * diameter_m**4 / 32.0
+
+
 def reflected_mass_inertia(mass_kg: float, lead_m: float) -> float:
     """Moving mass reflected to the screw, J = m (lead / 2 pi)^2 [kg m^2].
 

@@ -12,8 +12,8 @@ from app.errors import AppError
 from app.export import results_csv
 from app.figures import chart_candidates, result_figures
 from app.present import series_dict
-from app.schemas import ApplicationIn
-from app.service import run_selection
+from app.schemas import ApplicationIn, CatalogScrewIn
+from app.service import run_evaluation, run_selection
 from app.share import (
     PAGE_FIELDS,
     PAGE_LABELS,
@@ -146,13 +146,16 @@ def _attachment(extension: str) -> dict[str, str]:
     return {"Content-Disposition": f'attachment; filename="{EXPORT_NAME}.{extension}"'}
 
 
-def _candidate(result: dict[str, Any], cid: str) -> dict[str, Any]:
-    """The passing or rejected candidate of this result with id ``cid``; a 404 page if none."""
-    for c in result["candidates"] + result["rejected"]:
-        if c["id"] == cid:
-            return dict(c)
-    message = f"no candidate {cid!r} in this result" if cid else "no candidate id given"
-    raise AppError(404, "candidate not found", [{"field": "id", "message": message}])
+def _candidate(inputs: ApplicationIn, cid: str, catalog: Catalog) -> dict[str, Any]:
+    """Catalog screw ``cid`` evaluated for these inputs (the same dict the result lists
+    carry); a 404 page if there is no such screw."""
+    if cid not in catalog.by_id:
+        message = f"no candidate {cid!r} in this result" if cid else "no candidate id given"
+        raise AppError(404, "candidate not found", [{"field": "id", "message": message}])
+    candidate: dict[str, Any] = run_evaluation(inputs, CatalogScrewIn(catalog_id=cid), catalog)[
+        "candidate"
+    ]
+    return candidate
 
 
 @router.api_route("/detail", methods=["GET", "HEAD"], response_class=HTMLResponse)
@@ -160,9 +163,8 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
     inputs, units = _link_inputs(request.query_params)
-    result = run_selection(inputs, catalog)
     context = {
-        "c": _candidate(result, request.query_params.get("id", "")),
+        "c": _candidate(inputs, request.query_params.get("id", ""), catalog),
         "d": Display(units),
         "query": share_query(inputs, units),
     }
