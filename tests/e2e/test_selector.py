@@ -128,7 +128,11 @@ def test_invalid_input_shows_inline_message_and_keeps_typing(
     field = page.locator("#f-load")
     field.fill("")
     field.press_sequentially("12x", delay=30)
-    page.wait_for_function("() => document.querySelector('#e-load').textContent.length > 0")
+    # the message arrives with the swap, aria-invalid with htmx:afterSettle (app.js)
+    page.wait_for_function(
+        "() => document.querySelector('#e-load').textContent.length > 0"
+        " && document.querySelector('#f-load[aria-invalid]') !== null"
+    )
     assert page.inner_text("#e-load") == "Enter a number."
     assert field.input_value() == "12x"
     assert field.get_attribute("aria-invalid") == "true"
