@@ -62,6 +62,12 @@ SERIES_FIELDS = frozenset(
         "outgassing_percent",
     }
 )
+#: Seed table "Traverse Speed": (lead from [m], lead to [m], max linear speed [m/s]).
+SEED_TRAVERSE_BANDS: tuple[tuple[float, float, float], ...] = (
+    (0.0025, 0.012, 0.100),
+    (0.012, 0.025, 0.250),
+    (0.025, 0.060, 0.760),
+)
 UNRATED_LIFE = Provenance(
     "derived",
     "no life rating in the catalog for this series (the seed lists N/A for the "
@@ -406,6 +412,9 @@ def _build_series(
                     outgassing=outgassing,
                     material_name=material_name,
                     nut_material=fields["nut_material"].value,
+                    family_id=str(family.get("id", file)),
+                    variant=coating,
+                    traverse_bands=SEED_TRAVERSE_BANDS,
                     provenance=prov,
                 )
             )

@@ -125,7 +125,7 @@ FORMULAS: dict[str, Formula] = {
     "pv.max_load_n": _f("F = PV_lim 3 h / n", "pv.max_load_for_pv", SEED + " (inverted)"),
     "pv.max_speed_mm_s": _f("v = lead x PV_lim 3 h / F", "pv.max_rpm_for_pv", SEED + " (inverted)"),
     "traverse_speed_limit_mm_s": _f(
-        "band table by lead", "limits.traverse_speed_limit", SEED + " (Traverse Speed)"
+        "band table by lead (family data)", "limits.band_limit", SEED + " (Traverse Speed)"
     ),
     "life.years": _f(
         "years = rated travel / (2 stroke x cycles/day x 365)",

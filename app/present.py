@@ -132,7 +132,9 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
             "max_load_n": pv.max_load_n,
             "max_speed_mm_s": None if pv.max_speed_m_s is None else _mm(pv.max_speed_m_s),
         },
-        "traverse_speed_limit_mm_s": _mm(ev.traverse_speed_limit_m_s),
+        "traverse_speed_limit_mm_s": (
+            None if ev.traverse_speed_limit_m_s is None else _mm(ev.traverse_speed_limit_m_s)
+        ),
         "traverse_extrapolated": ev.traverse_extrapolated,
         "life": life,
         "accuracy": {

@@ -335,7 +335,7 @@ class CandidateOut(BaseModel):
     critical_speed: CriticalSpeedOut
     buckling: BucklingOut
     pv: PVOut
-    traverse_speed_limit_mm_s: float
+    traverse_speed_limit_mm_s: float | None
     traverse_extrapolated: bool
     life: LifeOut | None
     accuracy: AccuracyOut

@@ -92,7 +92,8 @@ CHECK_FIELDS = {
     "utilization": NUMBER,
     "message": TEXT,
 }
-NULLABLE = {"value", "limit", "utilization", "limit_mpa_m_s"}
+# a family without a traverse-speed table (a custom screw) has no traverse limit
+NULLABLE = {"value", "limit", "utilization", "limit_mpa_m_s", "traverse_speed_limit_mm_s"}
 
 CUSTOM_SCREW: dict[str, Any] = {
     "outer_diameter_mm": 12.7,
@@ -205,7 +206,7 @@ def assert_candidate(candidate: dict[str, Any]) -> None:
     name = candidate.get("id", "?")
     for field, kind in CANDIDATE_FIELDS.items():
         assert field in candidate, f"{name}: no {field}"
-        assert_type(candidate[field], kind, f"{name}.{field}")
+        assert_type(candidate[field], kind, f"{name}.{field}", field in NULLABLE)
     for group, fields in CANDIDATE_GROUPS.items():
         for field in fields:
             assert field in candidate[group], f"{name}: no {group}.{field}"
@@ -625,8 +626,9 @@ def test_evaluate_custom_screw_against_hand_calculation(api: Api) -> None:
         assert math.isclose(got, value, rel_tol=1e-9), f"{path}: {got} != {value}"
     assert math.isclose(rpm, 300.0)
     assert c["self_locking"] is (mu_s >= cos_a * tan_l) is False
-    # seed traverse table: leads of 2.5-12 mm run at up to 100 mm/s
-    assert c["traverse_speed_limit_mm_s"] == 100.0
+    # the seed's traverse table is the seed family's rule: a custom screw has none
+    assert c["traverse_speed_limit_mm_s"] is None
+    assert "traverse_speed" not in {check["name"] for check in c["checks"]}
     assert c["pv"]["limit_mpa_m_s"] is None  # no nut PV limit given, so no PV check
     assert "pv" not in {check["name"] for check in c["checks"]}
 

@@ -228,12 +228,14 @@ def pv_check(app: Application, ev: Evaluation) -> Check | None:
     )
 
 
-def traverse_check(app: Application, ev: Evaluation) -> Check:
+def traverse_check(app: Application, ev: Evaluation) -> Check | None:
     lim = ev.traverse_speed_limit_m_s
+    if lim is None:
+        return None
     note = " (lead outside the 2.5-60 mm table: nearest band)" if ev.traverse_extrapolated else ""
 
     def fix() -> str:
-        faster = [band for band in limits.TRAVERSE_BANDS if band[2] >= app.speed_m_s]
+        faster = [band for band in ev.screw.traverse_bands if band[2] >= app.speed_m_s]
         band = f", or a lead of at least {_mm(faster[0][0])}" if faster else ""
         return f"Run at most {_mm_s(lim)}{band}."
 
@@ -398,7 +400,7 @@ def coating_check(app: Application) -> Check:
     return _flag(
         "coating_environment",
         "TFE coating and oil",
-        limits.tfe_allowed(app.oil_present),
+        not app.oil_present,
         lambda: "No oil present: the TFE coating may be used.",
         lambda: "TFE-coated screws must not be used where oil contamination is possible.",
         "Use the uncoated screw.",

@@ -122,7 +122,9 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
         ),
     )
 
-    traverse = limits.traverse_speed_limit(screw.lead_m)
+    traverse = (
+        limits.band_limit(screw.lead_m, screw.traverse_bands) if screw.traverse_bands else None
+    )
 
     life_res = None
     if screw.life_min_m is not None and screw.life_max_m is not None:
@@ -176,8 +178,8 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
         critical_speed=crit,
         buckling=buck,
         pv=pv_res,
-        traverse_speed_limit_m_s=traverse.speed_m_s,
-        traverse_extrapolated=traverse.extrapolated,
+        traverse_speed_limit_m_s=None if traverse is None else traverse.speed_m_s,
+        traverse_extrapolated=traverse is not None and traverse.extrapolated,
         life=life_res,
         accuracy=acc,
         checks=(),

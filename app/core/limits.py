@@ -1,69 +1,55 @@
-"""Seed limits: traverse speed by lead band, length, coating environment, temperature [1]."""
+"""A family's rules as data: a limit that steps with the lead, and the temperature range.
 
+The core knows no family: the bands and ranges come from the catalog (``ScrewSpec``).
+"""
+
+from collections.abc import Sequence
 from itertools import pairwise
 from typing import NamedTuple
 
+#: (lead from [m], lead to [m], recommended maximum linear speed [m/s]), ascending.
+Bands = Sequence[tuple[float, float, float]]
 
-class TraverseLimit(NamedTuple):
-    """Recommended maximum linear speed for a lead, and whether the lead is off-table."""
+
+class BandLimit(NamedTuple):
+    """The limit of a lead's band, and whether the lead lies outside the table."""
 
     speed_m_s: float
     extrapolated: bool
 
 
-#: Seed table "Traverse Speed": (lead from [m], lead to [m], max linear speed [m/s]).
-TRAVERSE_BANDS: tuple[tuple[float, float, float], ...] = (
-    (0.0025, 0.012, 0.100),
-    (0.012, 0.025, 0.250),
-    (0.025, 0.060, 0.760),
-)
-
-
-def traverse_speed_limit_m_s(lead_m: float) -> float:
-    """Recommended maximum linear speed [m/s] for a lead [m], seed table [1].
+def band_speed_m_s(lead_m: float, bands: Bands) -> float:
+    """Recommended maximum linear speed [m/s] for a lead [m] from a band table.
 
     Written as a sum of steps so that it accepts floats or NumPy arrays: the first
-    band's speed, plus each faster band's increase where lead >= its start.
+    band's speed, plus each faster band's increase where lead >= its start. Band edges
+    belong to the faster band; leads outside the table take the nearest band.
 
-    >>> traverse_speed_limit_m_s(0.012), traverse_speed_limit_m_s(0.0119)
+    >>> seed = ((0.0025, 0.012, 0.100), (0.012, 0.025, 0.250), (0.025, 0.060, 0.760))
+    >>> band_speed_m_s(0.012, seed), band_speed_m_s(0.0119, seed)
     (0.25, 0.1)
     """
-    speed = TRAVERSE_BANDS[0][2]
-    for (_, _, slower), (start, _, faster) in pairwise(TRAVERSE_BANDS):
+    speed = bands[0][2]
+    for (_, _, slower), (start, _, faster) in pairwise(bands):
         speed = speed + (faster - slower) * (lead_m >= start)
     return speed
 
 
-def traverse_speed_limit(lead_m: float) -> TraverseLimit:
-    """Recommended maximum linear speed for optimum nut life [m/s], by lead band.
+def band_limit(lead_m: float, bands: Bands) -> BandLimit:
+    """The band limit [m/s] of a lead [m], marked extrapolated outside the table.
 
-    Bands (seed [1] "Traverse Speed"): 2.5-12 mm: 100 mm/s; 12-25 mm: 250 mm/s;
-    25-60 mm: 760 mm/s. Band edges belong to the faster band; leads outside 2.5-60 mm
-    take the nearest band and are marked extrapolated.
-
-    >>> traverse_speed_limit(0.012)
-    TraverseLimit(speed_m_s=0.25, extrapolated=False)
-    >>> traverse_speed_limit(0.001)
-    TraverseLimit(speed_m_s=0.1, extrapolated=True)
+    >>> seed = ((0.0025, 0.012, 0.100), (0.012, 0.025, 0.250), (0.025, 0.060, 0.760))
+    >>> band_limit(0.012, seed)
+    BandLimit(speed_m_s=0.25, extrapolated=False)
+    >>> band_limit(0.001, seed)
+    BandLimit(speed_m_s=0.1, extrapolated=True)
     """
-    low, high = TRAVERSE_BANDS[0][0], TRAVERSE_BANDS[-1][1]
-    return TraverseLimit(traverse_speed_limit_m_s(lead_m), not low <= lead_m <= high)
-
-
-def tfe_allowed(oil_present: bool) -> bool:
-    """TFE-coated screws must not be used where oil contamination is possible.
-
-    Source: seed [1] "TFE Coating": "should not be additionally lubricated or used in
-    environments where oils or other lubricant contamination is possible".
-
-    >>> tfe_allowed(True)
-    False
-    """
-    return not oil_present
+    low, high = bands[0][0], bands[-1][1]
+    return BandLimit(band_speed_m_s(lead_m, bands), not low <= lead_m <= high)
 
 
 def temperature_ok(ambient_c: float, min_c: float, max_c: float) -> bool:
-    """Ambient temperature within the assembly's operating range (seed: 0-93 C).
+    """Ambient temperature within the assembly's operating range.
 
     >>> temperature_ok(20.0, 0.0, 93.0), temperature_ok(-5.0, 0.0, 93.0)
     (True, False)

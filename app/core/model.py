@@ -58,7 +58,11 @@ class Application:
 class ScrewSpec:
     """One screw-and-nut candidate (series x size x lead x coating), SI units.
 
-    Optional limits (None) are not checked: a custom screw may have no design load.
+    Optional limits (None, or an empty table) are not checked: a custom screw may have no
+    design load. A family's own rules arrive as data: ``traverse_bands`` is its table of
+    recommended linear speed by lead, (lead from [m], lead to [m], speed [m/s]), and
+    ``max_length_m``, ``oil_compatible`` and the temperature range are per variant.
+    ``variant`` names the nut or coating option of the family (e.g. "tfe", "bronze").
     ``provenance`` maps each catalog field name to where its value comes from.
     """
 
@@ -94,6 +98,9 @@ class ScrewSpec:
     outgassing: tuple[tuple[float, float], ...] = ()
     material_name: str = ""
     nut_material: str = ""
+    family_id: str = ""
+    variant: str = ""
+    traverse_bands: tuple[tuple[float, float, float], ...] = ()
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
 
 
@@ -207,7 +214,7 @@ class Evaluation:
     critical_speed: CriticalSpeed
     buckling: Buckling
     pv: PV
-    traverse_speed_limit_m_s: float
+    traverse_speed_limit_m_s: float | None
     traverse_extrapolated: bool
     life: Life | None
     accuracy: Accuracy

@@ -103,7 +103,12 @@ class CandidateTable:
             efficiency=efficiency.forward_efficiency(tan_l, mu_d, cos_a),
             efficiency_static=efficiency.forward_efficiency(tan_l, mu_s, cos_a),
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
-            traverse_limit_m_s=np.asarray(limits.traverse_speed_limit_m_s(lead), dtype=float),
+            traverse_limit_m_s=_column(
+                [
+                    limits.band_speed_m_s(s.lead_m, s.traverse_bands) if s.traverse_bands else None
+                    for s in screws
+                ]
+            ),
         )
 
     def __len__(self) -> int:

@@ -142,7 +142,7 @@ def test_traverse_fix_offers_a_lead_band_that_allows_the_speed(catalog: Catalog)
     c = check(evaluate(light_app(speed_m_s=0.2), catalog.by_id["ZBX8000-L10"]), "traverse_speed")
     assert not c.passed
     assert c.fix is not None and "lead of at least 12 mm" in c.fix
-    assert limits.traverse_speed_limit_m_s(0.012) >= 0.2
+    assert limits.band_speed_m_s(0.012, catalog.by_id["ZBX8000-L10"].traverse_bands) >= 0.2
 
 
 def test_torque_check_against_the_available_drive(zbx8000_l10: ScrewSpec) -> None:

@@ -1,10 +1,13 @@
-"""Seed limits: traverse speed by lead band, TFE and oil, temperature (app.core.limits)."""
+"""A family's band table and temperature range (app.core.limits), on the seed's data."""
 
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 from app.core import limits
+
+#: Seed "Traverse Speed" table as the seed family's catalog data gives it.
+SEED_BANDS = ((0.0025, 0.012, 0.100), (0.012, 0.025, 0.250), (0.025, 0.060, 0.760))
 
 
 @pytest.mark.parametrize(
@@ -28,24 +31,17 @@ def test_seed_traverse_speed_table(lead_mm: float, speed_mm_s: float, extrapolat
     """Seed "Traverse Speed" table: lead 2.5-12 mm: 100 mm/s; 12-25 mm: 250 mm/s;
     25-60 mm: 760 mm/s. engineering.md section 7: band edges (12, 25) belong to the faster
     band; leads outside 2.5-60 mm take the nearest band and are marked extrapolated."""
-    result = limits.traverse_speed_limit(lead_mm / 1000)
+    result = limits.band_limit(lead_mm / 1000, SEED_BANDS)
     assert result.speed_m_s == pytest.approx(speed_mm_s / 1000)
     assert result.extrapolated is extrapolated
-    assert limits.traverse_speed_limit_m_s(lead_mm / 1000) == pytest.approx(speed_mm_s / 1000)
+    assert limits.band_speed_m_s(lead_mm / 1000, SEED_BANDS) == pytest.approx(speed_mm_s / 1000)
 
 
 @given(st.floats(1e-4, 0.2), st.floats(1e-4, 0.2))
 def test_traverse_limit_never_falls_with_a_longer_lead(a: float, b: float) -> None:
     """The seed's table is monotone: a longer lead is never allowed a lower speed."""
     short, long = sorted((a, b))
-    assert limits.traverse_speed_limit_m_s(short) <= limits.traverse_speed_limit_m_s(long)
-
-
-def test_tfe_coating_is_not_allowed_with_oil() -> None:
-    """Seed, "TFE Coating": TFE-coated screws "should not be additionally lubricated or used
-    in environments where oils or other lubricant contamination is possible"."""
-    assert limits.tfe_allowed(oil_present=False) is True
-    assert limits.tfe_allowed(oil_present=True) is False
+    assert limits.band_speed_m_s(short, SEED_BANDS) <= limits.band_speed_m_s(long, SEED_BANDS)
 
 
 @pytest.mark.parametrize(
