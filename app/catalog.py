@@ -16,7 +16,7 @@ from typing import Any
 
 from app.core import geometry, pv
 from app.core.model import Provenance, ScrewSpec
-from app.core.screening import CandidateTable
+from app.core.table import CandidateTable
 from app.paths import resource_dir
 
 PROVENANCE_KINDS = ("seed", "handbook", "derived", "assumed")
@@ -377,6 +377,8 @@ def _build_series(
             prov.setdefault("life", UNRATED_LIFE)
             prov["lead"] = entry.prov("leads_mm")
             prov["coating"] = entry.prov("coatings")
+            prov["oil_compatible"] = entry.prov("coatings")
+            prov["traverse_speed"] = Provenance("seed", "Traverse Speed table")
             life = v.get("life")
             screws.append(
                 ScrewSpec(

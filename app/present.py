@@ -2,13 +2,14 @@
 
 import math
 from collections.abc import Mapping
+from collections.abc import Mapping as Units
 from typing import Any
 
 from app.catalog import Material, Series
 from app.core import geometry, torque
-from app.core.model import Evaluation, Provenance, ScrewSpec, Selection
+from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, Selection
 from app.schemas import CustomScrewIn, MaterialIn
-from app.units import CHECK_UNITS
+from app.units import DEFAULT_UNITS, api_value, render
 
 #: Catalog fields behind the geometry, efficiency and torque of every candidate.
 GEOMETRY_SOURCES = (
@@ -39,25 +40,29 @@ def _prov(p: Provenance) -> dict[str, str]:
     return {"kind": p.kind, "source": p.source}
 
 
-def check_dict(check: Any) -> dict[str, Any]:
-    unit, scale = CHECK_UNITS[check.unit]
+def check_dict(check: CheckResult, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+    """A check in API units; its sentences in ``units`` (the API's by default)."""
+    _, unit = api_value(0.0, check.quantity)
     return {
         "name": check.name,
         "label": check.label,
+        "kind": check.kind,
         "passed": check.passed,
-        "value": None if check.value is None else check.value * scale,
-        "limit": None if check.limit is None else check.limit * scale,
+        "value": None if check.value is None else api_value(check.value, check.quantity)[0],
+        "limit": None if check.limit is None else api_value(check.limit, check.quantity)[0],
         "unit": unit,
         "utilization": check.utilization,
-        "message": check.message,
+        "message": render(check.message, units),
         "formula": check.formula,
         "sources": list(check.sources),
-        "fix": check.fix,
+        "fix": None if check.fix is None else render(check.fix, units),
     }
 
 
-def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
-    """One evaluated screw in API units (mm, mm/s, N, N m, MPa m/s)."""
+def candidate_dict(
+    ev: Evaluation, vacuum: bool = False, units: Units[str, str] = DEFAULT_UNITS
+) -> dict[str, Any]:
+    """One evaluated screw in API units (mm, mm/s, N, N m, MPa m/s); sentences in ``units``."""
     s, t, pv = ev.screw, ev.torque, ev.pv
     life = None
     if ev.life is not None:
@@ -72,7 +77,8 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
             "note": LIFE_NOTE,
         }
     acc = ev.accuracy
-    fixes = [c.fix for c in ev.checks if c.fix]
+    checks = [check_dict(c, units) for c in ev.checks]
+    fixes = [c["fix"] for c in checks if c["fix"]]
     used = {src for c in ev.checks for src in c.sources} | set(GEOMETRY_SOURCES)
     return {
         "id": s.id,
@@ -148,7 +154,7 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
         "outgassing": (
             [{"hours": h, "weight_loss_percent": w} for h, w in s.outgassing] if vacuum else None
         ),
-        "checks": [check_dict(c) for c in ev.checks],
+        "checks": checks,
         "governing_check": ev.governing_check,
         "passed": ev.passed,
         "fix": " ".join(fixes) if fixes else None,
@@ -156,12 +162,12 @@ def candidate_dict(ev: Evaluation, vacuum: bool = False) -> dict[str, Any]:
     }
 
 
-def selection_dict(sel: Selection) -> dict[str, Any]:
+def selection_dict(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
     """Candidates, rejected, counts and summary of a selection (without inputs/links)."""
     vacuum = sel.application.vacuum
     return {
-        "candidates": [candidate_dict(e, vacuum) for e in sel.candidates],
-        "rejected": [candidate_dict(e, vacuum) for e in sel.rejected],
+        "candidates": [candidate_dict(e, vacuum, units) for e in sel.candidates],
+        "rejected": [candidate_dict(e, vacuum, units) for e in sel.rejected],
         "counts": {
             "evaluated": sel.evaluated,
             "passed": sel.passed,
@@ -169,7 +175,7 @@ def selection_dict(sel: Selection) -> dict[str, Any]:
             "failed_by_check": dict(sel.failed_by_check),
         },
         "summary": {
-            "message": sel.summary.message,
+            "message": render(sel.summary.message, units),
             "most_excluding_check": sel.summary.most_excluding_check,
             "best_rejected_id": sel.summary.best_rejected_id,
             "input_change": _api_change(sel.summary.input_change),

@@ -227,6 +227,9 @@ class EvaluateIn(BaseModel):
 class CheckOut(BaseModel):
     name: str
     label: str
+    kind: Literal["limit", "advice"] = Field(
+        description="A limit rejects a candidate; advice is reported beside it."
+    )
     passed: bool
     value: float | None = Field(description="Demand, in ``unit``; null for yes/no checks.")
     limit: float | None = Field(description="Capacity, in ``unit``; null for yes/no checks.")

@@ -1,5 +1,6 @@
 """The one path from validated inputs to a result, shared by the API and the pages."""
 
+from collections.abc import Mapping
 from typing import Any
 
 from app.catalog import Catalog
@@ -9,18 +10,22 @@ from app.formulas import FORMULAS
 from app.present import candidate_dict, custom_screw, selection_dict
 from app.schemas import ApplicationIn, CatalogScrewIn, CustomScrewIn
 from app.share import share_query
+from app.units import DEFAULT_UNITS
 
 
 class UnknownScrew(LookupError):
     """A catalog id that the catalog does not hold."""
 
 
-def run_selection(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
-    """Select and rank over the catalog; the API's select response as a dict."""
+def run_selection(
+    inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str] = DEFAULT_UNITS
+) -> dict[str, Any]:
+    """Select and rank over the catalog; the API's select response as a dict, its
+    sentences in ``units`` (the API's own by default)."""
     selection = select(inputs.to_core(), catalog.table)
     return {
         "inputs": inputs.model_dump(),
-        **selection_dict(selection),
+        **selection_dict(selection, units),
         "catalog_version": catalog.version,
         "share_url": "/?" + share_query(inputs),
         "formulas": FORMULAS,
@@ -28,7 +33,10 @@ def run_selection(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
 
 
 def run_evaluation(
-    inputs: ApplicationIn, screw: CatalogScrewIn | CustomScrewIn, catalog: Catalog
+    inputs: ApplicationIn,
+    screw: CatalogScrewIn | CustomScrewIn,
+    catalog: Catalog,
+    units: Mapping[str, str] = DEFAULT_UNITS,
 ) -> dict[str, Any]:
     """Evaluate one catalog or custom screw; raise UnknownScrew for a bad catalog id."""
     if isinstance(screw, CatalogScrewIn):
@@ -40,7 +48,7 @@ def run_evaluation(
     app = inputs.to_core()
     return {
         "inputs": inputs.model_dump(),
-        "candidate": candidate_dict(evaluate(app, spec), app.vacuum),
+        "candidate": candidate_dict(evaluate(app, spec), app.vacuum, units),
         "catalog_version": catalog.version,
         "formulas": FORMULAS,
     }

@@ -2,7 +2,11 @@
 the page lets the user pick display units. One table per quantity: factor to the API unit.
 """
 
+from collections.abc import Mapping
 from typing import Literal
+
+from app.core.phrase import Amount, Phrase
+from app.core.phrase import Quantity as CoreQuantity
 
 Quantity = Literal["force", "length", "speed", "accel", "torque"]
 
@@ -14,7 +18,7 @@ TORQUE_LABELS = {"N_m": "N m", "oz_in": "oz in", "lb_in": "lb in"}
 DEFAULT_UNITS = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 
 
-def factor(quantity: Quantity, units: dict[str, str]) -> float:
+def factor(quantity: Quantity, units: Mapping[str, str]) -> float:
     """Factor from the chosen display unit of ``quantity`` to the API unit."""
     if quantity == "force":
         return FORCE_UNITS[units["force_unit"]]
@@ -23,7 +27,7 @@ def factor(quantity: Quantity, units: dict[str, str]) -> float:
     return LENGTH_UNITS[units["length_unit"]]
 
 
-def label(quantity: Quantity, units: dict[str, str]) -> str:
+def label(quantity: Quantity, units: Mapping[str, str]) -> str:
     """Display label of the chosen unit, e.g. 'in/s' for speed in inches."""
     if quantity == "force":
         return units["force_unit"]
@@ -33,25 +37,90 @@ def label(quantity: Quantity, units: dict[str, str]) -> str:
     return {"length": base, "speed": f"{base}/s", "accel": f"{base}/s²"}[quantity]
 
 
-def to_api(value: float, quantity: Quantity, units: dict[str, str]) -> float:
+def to_api(value: float, quantity: Quantity, units: Mapping[str, str]) -> float:
     return value * factor(quantity, units)
 
 
-def from_api(value: float, quantity: Quantity, units: dict[str, str]) -> float:
+def from_api(value: float, quantity: Quantity, units: Mapping[str, str]) -> float:
     return value / factor(quantity, units)
 
 
-#: SI unit of a core check value -> (API unit label, factor from SI).
-CHECK_UNITS = {
-    "m/s": ("mm/s", 1e3),
-    "m": ("mm", 1e3),
-    "Pa m/s": ("MPa m/s", 1e-6),
+#: core quantity -> (API unit label, factor from SI to the API unit).
+API_UNITS: dict[CoreQuantity, tuple[str, float]] = {
+    "force": ("N", 1.0),
+    "length": ("mm", 1e3),
+    "speed": ("mm/s", 1e3),
+    "accel": ("mm/s^2", 1e3),
+    "torque": ("N m", 1.0),
     "rpm": ("rpm", 1.0),
-    "N": ("N", 1.0),
-    "N m": ("N m", 1.0),
-    "year": ("year", 1.0),
-    "": ("", 1.0),
+    "pv": ("MPa m/s", 1e-6),
+    "years": ("years", 1.0),
+    "temperature": ("°C", 1.0),
+    "factor": ("", 1.0),
 }
+#: core quantity -> number format in sentences (a speed in rpm needs no decimals).
+TEXT_FORMATS: dict[CoreQuantity, str] = {
+    "force": ".4g",
+    "length": ".4g",
+    "speed": ".4g",
+    "accel": ".4g",
+    "torque": ".3g",
+    "rpm": ".0f",
+    "pv": ".3g",
+    "years": ".3g",
+    "temperature": "g",
+    "factor": "g",
+}
+SWITCHABLE: dict[CoreQuantity, Quantity] = {
+    "force": "force",
+    "length": "length",
+    "speed": "speed",
+    "accel": "accel",
+    "torque": "torque",
+}
+
+
+def api_value(value_si: float, quantity: CoreQuantity | None) -> tuple[float, str]:
+    """An SI value in the API's unit, with the unit's label.
+
+    >>> api_value(0.1, "speed")
+    (100.0, 'mm/s')
+    """
+    if quantity is None:
+        return value_si, ""
+    unit, scale = API_UNITS[quantity]
+    return value_si * scale, unit
+
+
+def amount_text(amount: Amount, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
+    """An amount in the reader's units: '4.5 in/s', '300 rpm', '0.175 MPa m/s'.
+
+    >>> amount_text(Amount(0.0254, "length"), {**DEFAULT_UNITS, "length_unit": "in"})
+    '1 in'
+    """
+    value, unit = api_value(amount.value, amount.quantity)
+    switch = SWITCHABLE.get(amount.quantity)
+    if switch is not None:
+        value, unit = from_api(value, switch, dict(units)), label(switch, dict(units))
+    return f"{value:{TEXT_FORMATS[amount.quantity]}} {unit}".strip()
+
+
+def render(phrase: Phrase, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
+    """A core sentence in the reader's units (the API's units by default).
+
+    >>> render(Phrase("Run at most {v}.", {"v": Amount(0.1, "speed")}))
+    'Run at most 100 mm/s.'
+    """
+    values = {
+        name: render(v, units)
+        if isinstance(v, Phrase)
+        else v
+        if isinstance(v, str)
+        else amount_text(v, units)
+        for name, v in phrase.values.items()
+    }
+    return phrase.template.format(**values)
+
 
 #: API unit of a check value -> the display quantity it is converted with.
 API_UNIT_QUANTITY: dict[str, Quantity] = {

@@ -16,7 +16,7 @@ from app.core.selection import select
 from bench.report import Report
 
 try:  # the core may screen through prebuilt columns; time that path too when it does
-    from app.core.screening import CandidateTable
+    from app.core.table import CandidateTable
 except ImportError:  # pragma: no cover - an older core
     CandidateTable = None
 

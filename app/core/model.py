@@ -4,6 +4,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
+from app.core.phrase import Phrase, Quantity
+
 EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
 Orientation = Literal["horizontal", "vertical"]
 CoatingChoice = Literal["auto", "tfe", "none"]
@@ -105,27 +107,27 @@ class ScrewSpec:
 
 
 @dataclass(frozen=True, slots=True)
-class Check:
-    """One limit check: value against limit, with the message and the fix.
+class CheckResult:
+    """One check of one candidate: demand against capacity, with the message and the fix.
 
-    ``utilization`` = value / limit (None for yes/no checks). ``sources`` names the
-    catalog fields the check uses, so a reader can trace their provenance.
-    ``input_limits`` gives, for a failed check, application inputs any one of which, set
-    to the given SI value, would make the check pass (e.g. {"load_n": 120.0}); None when
-    no input change is offered.
+    ``value`` (demand) and ``limit`` (capacity) are SI in ``quantity``; None for yes/no
+    checks. ``utilization`` = value / limit. ``sources`` names the catalog fields the check
+    uses. ``input_limits`` gives, for a failed check, application inputs any one of which,
+    set to the given SI value, would make the check pass (e.g. {"load_n": 120.0}).
     """
 
     name: str
     label: str
+    kind: str
     passed: bool
     value: float | None
     limit: float | None
-    unit: str
+    quantity: Quantity | None
     utilization: float | None
-    message: str
+    message: Phrase
     formula: str
     sources: tuple[str, ...] = ()
-    fix: str | None = None
+    fix: Phrase | None = None
     input_limits: Mapping[str, float] | None = None
 
 
@@ -218,13 +220,13 @@ class Evaluation:
     traverse_extrapolated: bool
     life: Life | None
     accuracy: Accuracy
-    checks: tuple[Check, ...]
+    checks: tuple[CheckResult, ...]
     passed: bool
     governing_check: str | None
     max_utilization: float
 
     @property
-    def failed_checks(self) -> tuple[Check, ...]:
+    def failed_checks(self) -> tuple[CheckResult, ...]:
         return tuple(c for c in self.checks if not c.passed)
 
 
@@ -236,7 +238,7 @@ class Summary:
     most_excluding_count: int
     best_rejected_id: str | None
     input_change: Mapping[str, float]
-    message: str
+    message: Phrase
 
 
 @dataclass(frozen=True, slots=True)

@@ -5,14 +5,18 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from app.core.evaluate import evaluate
+from app.core.evaluate import evaluation
 from app.core.model import Application, Evaluation, ScrewSpec, Selection, Summary
-from app.core.screening import CandidateTable, Screening, screen
+from app.core.phrase import Amount, Phrase, Quantity, join
+from app.core.screening import Screening, screen
+from app.core.table import CandidateTable
 
-INPUT_LABELS = {
-    "load_n": ("load", "N", 1.0),
-    "speed_m_s": ("speed", "mm/s", 1000.0),
-    "length_m": ("length", "mm", 1000.0),
+NO_MATCH = "No catalog screw{lead} matches the coating choice; try another lead or 'any'."
+#: Application inputs a summary may offer to change: (words, quantity).
+INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
+    "load_n": ("load", "force"),
+    "speed_m_s": ("speed", "speed"),
+    "length_m": ("length", "length"),
 }
 
 
@@ -23,13 +27,12 @@ def _rank_order(app: Application, table: CandidateTable, s: Screening) -> np.nda
     rated life (unrated last); size: smallest outer diameter. Ties: lower torque.
     """
     pos = np.flatnonzero(s.passed)
-    idx = s.index[pos]
     torque, util = s.total_torque_nm[pos], s.max_utilization[pos]
     primary = {
         "torque": torque,
         "margin": util,
-        "life": -np.nan_to_num(table.life_min_m[idx]),
-        "size": table.outer_diameter_m[idx],
+        "life": -np.nan_to_num(s.table.life_min_m[pos]),
+        "size": s.table.outer_diameter_m[pos],
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
     return pos[np.lexsort((secondary, primary))]
@@ -49,8 +52,8 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     ranked = _rank_order(app, table, s)[: app.limit]
     failing = np.flatnonzero(~s.passed)
     nearest = failing[np.argsort(s.max_utilization[failing], kind="stable")][: app.limit]
-    passing = tuple(evaluate(app, table.screws[s.index[p]]) for p in ranked)
-    rejected = tuple(evaluate(app, table.screws[s.index[p]]) for p in nearest)
+    passing = tuple(evaluation(app, s, int(p)) for p in ranked)
+    rejected = tuple(evaluation(app, s, int(p)) for p in nearest)
     by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(s.passed.sum())
@@ -84,13 +87,14 @@ def input_change(best: Evaluation) -> dict[str, float]:
     return change
 
 
-def describe_change(app: Application, change: Mapping[str, float]) -> str:
+def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
+    """The change in words: "reduce the load to {value}" per input."""
     parts = []
     for key, value in change.items():
-        label, unit, scale = INPUT_LABELS[key]
+        label, quantity = INPUT_LABELS[key]
         verb = "reduce" if value < getattr(app, key) else "set"
-        parts.append(f"{verb} the {label} to {value * scale:.4g} {unit}")
-    return " and ".join(parts)
+        parts.append(Phrase(f"{verb} the {label} to {{v}}", {"v": Amount(value, quantity)}))
+    return join(parts, " and ")
 
 
 def summarize(
@@ -104,23 +108,25 @@ def summarize(
     top = by_check.most_common(1)
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
-        lead = "" if app.lead_m is None else f" with a {app.lead_m * 1000:g} mm lead"
-        return Summary(
-            None,
-            0,
-            None,
-            {},
-            f"No catalog screw{lead} matches the coating choice; try another lead or 'any'.",
-        )
+        if app.lead_m is None:
+            return Summary(None, 0, None, {}, Phrase(NO_MATCH.format(lead="")))
+        lead = {"lead": Amount(app.lead_m, "length")}
+        return Summary(None, 0, None, {}, Phrase(NO_MATCH.format(lead=" with a {lead} lead"), lead))
     if passed:
-        return Summary(worst, worst_count, None, {}, f"{passed} of {evaluated} candidates pass.")
+        return Summary(
+            worst, worst_count, None, {}, Phrase(f"{passed} of {evaluated} candidates pass.")
+        )
     best = nearest[0]
     change = input_change(best)
-    fixes = " ".join(c.fix for c in best.failed_checks if c.fix)
-    how = describe_change(app, change)
-    message = (
-        f"No candidate passes. '{worst}' excludes {worst_count} of {evaluated}. "
-        f"Nearest: {best.screw.id}: {fixes}"
-        + (f" Or change the application: {how}." if how else "")
-    )
-    return Summary(worst, worst_count, best.screw.id, change, message)
+    parts = [
+        Phrase(
+            f"No candidate passes. '{worst}' excludes {worst_count} of {evaluated}. "
+            f"Nearest: {best.screw.id}:"
+        )
+    ]
+    parts += [c.fix for c in best.failed_checks if c.fix]
+    if change:
+        parts.append(
+            Phrase("Or change the application: {how}.", {"how": describe_change(app, change)})
+        )
+    return Summary(worst, worst_count, best.screw.id, change, join(parts))

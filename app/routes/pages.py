@@ -72,7 +72,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         return context
     inputs, context["errors"] = parse_inputs(values, units)
     if inputs is not None:
-        result = run_selection(inputs, catalog)
+        result = run_selection(inputs, catalog, units)
         context["result"] = result
         context["query"] = share_query(inputs, units)
         context["share_url"] = "/?" + context["query"]
@@ -146,15 +146,17 @@ def _attachment(extension: str) -> dict[str, str]:
     return {"Content-Disposition": f'attachment; filename="{EXPORT_NAME}.{extension}"'}
 
 
-def _candidate(inputs: ApplicationIn, cid: str, catalog: Catalog) -> dict[str, Any]:
+def _candidate(
+    inputs: ApplicationIn, cid: str, catalog: Catalog, units: Mapping[str, str]
+) -> dict[str, Any]:
     """Catalog screw ``cid`` evaluated for these inputs (the same dict the result lists
     carry); a 404 page if there is no such screw."""
     if cid not in catalog.by_id:
         message = f"no candidate {cid!r} in this result" if cid else "no candidate id given"
         raise AppError(404, "candidate not found", [{"field": "id", "message": message}])
-    candidate: dict[str, Any] = run_evaluation(inputs, CatalogScrewIn(catalog_id=cid), catalog)[
-        "candidate"
-    ]
+    candidate: dict[str, Any] = run_evaluation(
+        inputs, CatalogScrewIn(catalog_id=cid), catalog, units
+    )["candidate"]
     return candidate
 
 
@@ -164,7 +166,7 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
     when its detail is opened, or (without HTMX) a page of its own linking back."""
     inputs, units = _link_inputs(request.query_params)
     context = {
-        "c": _candidate(inputs, request.query_params.get("id", ""), catalog),
+        "c": _candidate(inputs, request.query_params.get("id", ""), catalog, units),
         "d": Display(units),
         "query": share_query(inputs, units),
     }
@@ -178,7 +180,7 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
 async def export_csv(request: Request, catalog: CatalogDep) -> Response:
     """The result table as CSV in the link's display units."""
     inputs, units = _link_inputs(request.query_params)
-    body = results_csv(run_selection(inputs, catalog), units)
+    body = results_csv(run_selection(inputs, catalog, units), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
 

@@ -7,7 +7,8 @@ import pytest
 from app.catalog import Catalog
 from app.core import limits
 from app.core.evaluate import evaluate
-from app.core.model import Application, Check, Evaluation, ScrewSpec
+from app.core.model import Application, CheckResult, Evaluation, ScrewSpec
+from app.units import render
 from tests.core.conftest import light_app
 
 ALWAYS = ["critical_speed", "buckling", "pv", "traverse_speed", "design_load", "length"]
@@ -17,7 +18,7 @@ def names(ev: Evaluation) -> list[str]:
     return [c.name for c in ev.checks]
 
 
-def check(ev: Evaluation, name: str) -> Check:
+def check(ev: Evaluation, name: str) -> CheckResult:
     return next(c for c in ev.checks if c.name == name)
 
 
@@ -77,7 +78,7 @@ def test_coated_screw_over_2_4_m_fails_the_length_check(catalog: Catalog) -> Non
     coated = check(evaluate(app, catalog.by_id["ZBX10000-L10-TFE"]), "length")
     uncoated = check(evaluate(app, catalog.by_id["ZBX10000-L10"]), "length")
     assert not coated.passed and coated.limit == pytest.approx(2.4)
-    assert coated.fix is not None and "4 m" in coated.fix
+    assert coated.fix is not None and "at most 2400 mm" in render(coated.fix)
     assert uncoated.passed and uncoated.limit == pytest.approx(4.0)
 
 
@@ -101,14 +102,14 @@ def test_back_driving_check_uses_the_physical_self_locking_lead(catalog: Catalog
     c = check(steep, "back_driving")
     assert not c.passed and not steep.self_locking
     assert c.limit == pytest.approx(steep.max_self_locking_lead_m)
-    assert "seed method" in c.message and "physics" in c.message
+    assert "seed method" in render(c.message) and "physics" in render(c.message)
 
 
 def test_anti_backlash_requirement(catalog: Catalog) -> None:
     """Free-wheeling B series: typical backlash 0.076-0.25 mm; anti-backlash series ~0."""
     app = light_app(require_anti_backlash=True)
     b = check(evaluate(app, catalog.by_id["B8000-L10"]), "anti_backlash")
-    assert not b.passed and "0.25 mm" in b.message
+    assert not b.passed and "0.25 mm" in render(b.message)
     assert check(evaluate(app, catalog.by_id["ZBX8000-L10"]), "anti_backlash").passed
 
 
@@ -141,7 +142,7 @@ def test_traverse_fix_offers_a_lead_band_that_allows_the_speed(catalog: Catalog)
     """200 mm/s on a 10 mm lead exceeds the 100 mm/s band; the 12-25 mm band allows 250."""
     c = check(evaluate(light_app(speed_m_s=0.2), catalog.by_id["ZBX8000-L10"]), "traverse_speed")
     assert not c.passed
-    assert c.fix is not None and "lead of at least 12 mm" in c.fix
+    assert c.fix is not None and "lead of at least 12 mm" in render(c.fix)
     assert limits.band_speed_m_s(0.012, catalog.by_id["ZBX8000-L10"].traverse_bands) >= 0.2
 
 

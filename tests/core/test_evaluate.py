@@ -15,6 +15,7 @@ from app.catalog import Catalog
 from app.core import critical_speed, efficiency, geometry
 from app.core.evaluate import axial_load, evaluate
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, Evaluation, ScrewSpec
+from app.units import render
 from tests.core.conftest import applications, light_app
 
 CATALOG_IDS = ("ZBX4000-L2", "ZBX8000-L10", "B12000-L25.4-TFE", "VHD10000-L5", "KHD6000-L12")
@@ -102,7 +103,7 @@ def test_off_table_lead_is_marked_extrapolated(catalog: Catalog) -> None:
     ev = evaluate(light_app(speed_m_s=0.01), catalog.by_id["ZBX4000-L1"])
     assert ev.traverse_extrapolated
     assert ev.traverse_speed_limit_m_s == pytest.approx(0.1)
-    assert "2.5-60 mm" in check(ev, "traverse_speed").message
+    assert "2.5 mm to 60 mm" in render(check(ev, "traverse_speed").message)
 
 
 def test_holding_torques_are_labelled_seed_and_physics(catalog: Catalog) -> None:
@@ -150,7 +151,7 @@ def test_recommended_brake_holds_the_load(catalog: Catalog) -> None:
         if ev.brake_torque_nm < needed:
             short.append(screw.id)
         fix = next(c.fix for c in ev.checks if c.name == "back_driving")
-        assert f"{ev.brake_torque_nm:.3g} N m" in (fix or "")
+        assert fix is not None and f"{ev.brake_torque_nm:.3g} N m" in render(fix)
     assert short == []
     assert seed_below_physics > 0  # the case that made the seed value alone unsafe
 
@@ -183,8 +184,9 @@ def test_critical_speed_remedies_bring_utilization_to_one(catalog: Catalog) -> N
 def test_critical_speed_fix_names_the_three_remedies(catalog: Catalog) -> None:
     """The failed check says which of lead, diameter, support would fix it, and by how much."""
     _, ev = _critical_speed_failure(catalog.by_id["ZBX4000-L2.5"])
-    fix = check(ev, "critical_speed").fix
-    assert fix is not None
+    phrase = check(ev, "critical_speed").fix
+    assert phrase is not None
+    fix = render(phrase)
     assert "lead of at least" in fix and "root diameter of at least" in fix
     assert "unsupported length at most" in fix
 

@@ -16,6 +16,7 @@ from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.screening import eligible_mask, screen
 from app.core.selection import input_change, select
+from app.units import render
 from tests.core.conftest import applications, light_app
 
 FIXTURE_OK = settings(
@@ -92,7 +93,7 @@ def test_lead_filter_is_exact_within_half_a_percent(
 def test_no_matching_lead_says_so(catalog: Catalog) -> None:
     sel = select(light_app(lead_m=0.007), catalog.table)
     assert sel.evaluated == 0 and sel.candidates == () and sel.rejected == ()
-    assert "7 mm lead" in sel.summary.message
+    assert "7 mm lead" in render(sel.summary.message)
 
 
 @pytest.mark.parametrize(
@@ -126,7 +127,7 @@ def test_nothing_passes_and_the_summary_names_the_nearest_fix(catalog: Catalog) 
     sel = select(app, catalog.table)
     assert sel.passed == 0 and sel.candidates == ()
     assert sel.summary.best_rejected_id == sel.rejected[0].screw.id
-    assert sel.summary.message.startswith("No candidate passes.")
+    assert render(sel.summary.message).startswith("No candidate passes.")
     worst = max(sel.failed_by_check, key=lambda k: sel.failed_by_check[k])
     assert sel.summary.most_excluding_check == worst
 

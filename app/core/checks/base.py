@@ -1,0 +1,127 @@
+"""What a check is: one unit that says when it applies, its demand and capacity over
+arrays, its explanation and fix, its formula and the catalog fields it reads.
+
+Utilisation is demand / capacity, so a value above 1 fails. A capacity of NaN means the
+limit does not exist for that candidate (e.g. no PV limit published): the check does not
+apply to it. A yes/no check has no demand or capacity, only ``flagged`` failures.
+"""
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import ClassVar, Literal
+
+import numpy as np
+
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, EndFixity, ScrewSpec
+from app.core.phrase import Phrase, Quantity
+from app.core.quantities import Quantities
+from app.core.table import Array, CandidateTable, Mask
+
+__all__ = [
+    "Application",
+    "Array",
+    "CandidateTable",
+    "Check",
+    "EndFixity",
+    "Mapping",
+    "Mask",
+    "Measure",
+    "Quantities",
+    "ScrewSpec",
+    "same",
+]
+
+#: A limit rejects a candidate; advice is reported beside it.
+Kind = Literal["limit", "advice"]
+#: End fixities from the most to the least flexible.
+FIXITY_ORDER: tuple[EndFixity, ...] = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
+
+
+@dataclass(frozen=True, slots=True)
+class Measure:
+    """A check over many candidates: where it applies, demand and capacity, or failures."""
+
+    applicable: Mask
+    demand: Array | None = None
+    capacity: Array | None = None
+    flagged: Mask | None = None
+
+    def utilization(self) -> Array | None:
+        """demand / capacity (NaN where the limit does not exist); None for yes/no."""
+        if self.demand is None or self.capacity is None:
+            return None
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return self.demand / self.capacity
+
+
+class Check:
+    """Base of every check. Subclasses set the class attributes and override the methods.
+
+    ``formula`` is the text shown beside the numbers. For a numeric check it is
+    ``"demand = ...; capacity = ..."``, each side an expression in the names that
+    ``symbols`` binds, so a test evaluates the text and compares it with ``measure``.
+    """
+
+    name: ClassVar[str]
+    label: ClassVar[str]
+    description: ClassVar[str]
+    kind: ClassVar[Kind] = "limit"
+    quantity: ClassVar[Quantity | None] = None
+    formula: ClassVar[str]
+    source: ClassVar[str]
+    sources: ClassVar[tuple[str, ...]] = ()
+    order: ClassVar[int]
+
+    def applies(self, app: Application) -> bool:
+        """Whether the check runs at all for this application (default: always)."""
+        return True
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        raise NotImplementedError
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        """Values of the names in ``formula`` (SI), for checking the text against the code."""
+        return {}
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        raise NotImplementedError
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase | None:
+        """What would make a failing candidate pass."""
+        return None
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float] | None:
+        """Application inputs (core names, SI), any one of which would clear the check."""
+        return None
+
+
+def everywhere(t: CandidateTable) -> Mask:
+    return np.ones(len(t), dtype=bool)
+
+
+def same(t: CandidateTable, value: float | None) -> Array:
+    """An application value for every candidate (NaN when not given)."""
+    return np.full(len(t), np.nan if value is None else value)
+
+
+def where_given(capacity: Array) -> Mask:
+    """Candidates that have this limit (not NaN)."""
+    return ~np.isnan(capacity)
+
+
+def load_input(app: Application, axial_limit_n: float) -> float:
+    """Largest user load whose axial force (incl. weight when vertical) meets a limit."""
+    if app.orientation == "vertical":
+        return axial_limit_n - app.moving_mass_kg * STANDARD_GRAVITY_M_S2
+    return axial_limit_n
+
+
+def stiffer_support(app: Application, passes: Callable[[EndFixity], bool]) -> str:
+    """The first stiffer end fixity that passes, else an intermediate support."""
+    stiffer = FIXITY_ORDER[FIXITY_ORDER.index(app.end_fixity) + 1 :]
+    found = [f for f in stiffer if passes(f)]
+    return f"mount the ends {found[0]}" if found else "add an intermediate support"

@@ -1,0 +1,103 @@
+"""Screw speed against the allowed fraction of its first whirling speed."""
+
+from app.core import critical_speed
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    EndFixity,
+    Mapping,
+    Measure,
+    Quantities,
+    ScrewSpec,
+    everywhere,
+    stiffer_support,
+)
+from app.core.phrase import Amount, Phrase
+
+
+@register
+class CriticalSpeed(Check):
+    name = "critical_speed"
+    label = "Critical speed"
+    description = (
+        "A long thin screw whirls when it turns near its first bending frequency; the "
+        "allowed speed is a fraction (the critical-speed factor) of that speed."
+    )
+    quantity = "rpm"
+    formula = (
+        "n = 60 * v / lead; n_allowed = SF * 60 / (2 * pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4"
+    )
+    source = "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; Thomson"
+    sources = ("root_diameter", "youngs_modulus", "density")
+    order = 20
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(everywhere(t), q.rpm, q.allowed_rpm)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "v": app.speed_m_s,
+            "lead": t.lead_m,
+            "SF": app.critical_speed_safety_factor,
+            "beta": critical_speed.END_FIXITY_BETA[app.end_fixity],
+            "L": app.length_m,
+            "E": t.youngs_modulus_pa,
+            "rho": t.density_kg_m3,
+            "d_r": t.root_diameter_m,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "is below" if passed else "exceeds"
+        return Phrase(
+            "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity}).",
+            {
+                "n": Amount(r.rpm, "rpm"),
+                "allowed": Amount(r.allowed_rpm, "rpm"),
+                "sf": Amount(app.critical_speed_safety_factor, "factor"),
+                "n_c": Amount(r.critical_rpm, "rpm"),
+                "fixity": app.end_fixity,
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+        def passes(fixity: EndFixity) -> bool:
+            n_c = critical_speed.critical_speed_rpm(
+                s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity
+            )
+            return r.rpm <= app.critical_speed_safety_factor * n_c
+
+        return Phrase(
+            "Use a lead of at least {lead}, or a root diameter of at least {d}, or {support} "
+            "(unsupported length at most {length}).",
+            {
+                "lead": Amount(
+                    critical_speed.min_lead_for_speed(app.speed_m_s, r.allowed_rpm), "length"
+                ),
+                "d": Amount(
+                    critical_speed.min_root_diameter_for_speed(
+                        s.root_diameter_m, r.allowed_rpm, r.rpm
+                    ),
+                    "length",
+                ),
+                "support": stiffer_support(app, passes),
+                "length": Amount(_max_length(app, r), "length"),
+            },
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        return {
+            "speed_m_s": r.allowed_rpm * s.lead_m / 60.0,
+            "length_m": _max_length(app, r),
+        }
+
+
+def _max_length(app: Application, r: Quantities[float]) -> float:
+    """Longest unsupported length at which this screw's speed is allowed [m]."""
+    return critical_speed.max_length_for_speed(app.length_m, r.allowed_rpm, r.rpm)

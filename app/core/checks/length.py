@@ -1,0 +1,58 @@
+"""Screw length against the longest screw the family makes in this variant."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    ScrewSpec,
+    same,
+    where_given,
+)
+from app.core.phrase import Amount, Phrase
+
+
+@register
+class Length(Check):
+    name = "length"
+    label = "Length"
+    description = "The screw length against the longest screw made in this variant."
+    quantity = "length"
+    formula = "L = L_screw; L_max = L_variant"
+    source = "the family's length limit per variant (catalog data)"
+    sources = ("max_length",)
+    order = 70
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(where_given(t.max_length_m), same(t, app.length_m), t.max_length_m)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {"L_screw": app.length_m, "L_variant": t.max_length_m}
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        template = (
+            "{L} is within the maximum {cap}."
+            if passed
+            else ("{L} exceeds the maximum length {cap}.")
+        )
+        return Phrase(
+            template,
+            {"L": Amount(app.length_m, "length"), "cap": Amount(s.max_length_m or 0.0, "length")},
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+        return Phrase(
+            "Shorten the screw to at most {cap}, or choose a variant made longer.",
+            {"cap": Amount(s.max_length_m or 0.0, "length")},
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        return {"length_m": s.max_length_m or 0.0}

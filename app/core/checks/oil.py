@@ -1,0 +1,46 @@
+"""A variant that must not meet oil (e.g. a dry-film coating) where oil may be present."""
+
+import numpy as np
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    ScrewSpec,
+)
+from app.core.phrase import Phrase
+
+
+@register
+class OilCompatibility(Check):
+    name = "coating_environment"
+    label = "Oil and lubricants"
+    description = (
+        "Some variants (a dry-film coating) must not be lubricated or run where oil may "
+        "reach them; the family's data says which."
+    )
+    formula = "passes when oil_compatible or not oil_present"
+    source = "the family's rule per variant (catalog data)"
+    sources = ("oil_compatible",)
+    order = 80
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(~t.oil_compatible, flagged=~t.oil_compatible & np.bool_(app.oil_present))
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {"oil_compatible": t.oil_compatible, "oil_present": app.oil_present}
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        if passed:
+            return Phrase("No oil present: this variant may be used.")
+        return Phrase("This variant must not be used where oil contamination is possible.")
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+        return Phrase("Use a variant rated for oil (uncoated).")

@@ -1,0 +1,67 @@
+"""PV of the nut (contact pressure times sliding speed) against the nut material's limit."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    ScrewSpec,
+    load_input,
+    where_given,
+)
+from app.core.phrase import Amount, Phrase
+
+
+@register
+class NutPV(Check):
+    name = "pv"
+    label = "PV (nut material)"
+    description = (
+        "A plastic nut heats and wears with pressure times sliding speed; above its PV "
+        "limit it fails early."
+    )
+    quantity = "pv"
+    formula = "PV = F / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut"
+    source = "seed catalog, PV Calculation (three threads in contact)"
+    sources = ("pv_limit", "root_diameter", "outer_diameter")
+    order = 40
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(where_given(t.pv_limit_pa_m_s), q.pv_pa_m_s, t.pv_limit_pa_m_s)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "F": q.force_n,
+            "H_T": t.helix_travel_m,
+            "h": t.thread_depth_m,
+            "n": q.rpm,
+            "PV_nut": t.pv_limit_pa_m_s,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "is within" if passed else "exceeds"
+        return Phrase(
+            "PV {pv} " + verb + " the nut limit {limit}.",
+            {"pv": Amount(r.pv_pa_m_s, "pv"), "limit": Amount(s.pv_limit_pa_m_s or 0.0, "pv")},
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+        return Phrase(
+            "At this speed the load may be at most {load}; at this load the speed may be at "
+            "most {speed}.",
+            {
+                "load": Amount(r.pv_max_load_n, "force"),
+                "speed": Amount(r.pv_max_speed_m_s, "speed"),
+            },
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        return {"load_n": load_input(app, r.pv_max_load_n), "speed_m_s": r.pv_max_speed_m_s}

@@ -1,0 +1,59 @@
+"""Drive torque against the torque the drive offers (when the user gives it)."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    ScrewSpec,
+    everywhere,
+    same,
+)
+from app.core.phrase import Amount, Phrase
+
+
+@register
+class DriveTorque(Check):
+    name = "torque"
+    label = "Drive torque"
+    description = "The torque the screw needs, with the torque safety factor, against the drive."
+    quantity = "torque"
+    formula = "T_req = SF * max(T_inertia + T_drag + T_load, T_breakaway); T_available = T_drive"
+    source = "seed catalog, Torque (inertia + static drag + load), with static friction"
+    sources = ("inertia_per_length", "drag_torque", "friction_dynamic", "friction_static")
+    order = 10
+
+    def applies(self, app: Application) -> bool:
+        return app.max_torque_nm is not None
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(everywhere(t), q.required_nm, same(t, app.max_torque_nm))
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "SF": app.torque_safety_factor,
+            "T_inertia": q.inertia_nm,
+            "T_drag": q.drag_nm,
+            "T_load": q.load_nm,
+            "T_breakaway": q.breakaway_nm,
+            "T_drive": app.max_torque_nm,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "is within" if passed else "exceeds"
+        return Phrase(
+            "{req} required " + verb + " the {avail} available.",
+            {"req": Amount(r.required_nm, "torque"), "avail": Amount(app.max_torque_nm, "torque")},
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+        return Phrase(
+            "A drive of at least {req}, or a shorter lead, lower load or acceleration.",
+            {"req": Amount(r.required_nm, "torque")},
+        )

@@ -1,0 +1,78 @@
+"""Linear speed against the family's recommended speed for the lead (a band table)."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    ScrewSpec,
+    same,
+    where_given,
+)
+from app.core.limits import band_speed_m_s
+from app.core.phrase import Amount, Phrase
+
+
+@register
+class TraverseSpeed(Check):
+    name = "traverse_speed"
+    label = "Traverse speed"
+    description = (
+        "The family's table of the highest linear speed recommended for each lead band "
+        "(only for families that publish one)."
+    )
+    quantity = "speed"
+    formula = "v = v_linear; v_allowed = v_band(lead)"
+    source = "the family's traverse-speed table (catalog data)"
+    sources = ("lead", "traverse_speed")
+    order = 50
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        limit = t.traverse_limit_m_s
+        return Measure(where_given(limit), same(t, app.speed_m_s), limit)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "v_linear": app.speed_m_s,
+            "v_band": lambda lead: band_speed_m_s(lead, t.screws[0].traverse_bands),
+            "lead": t.lead_m,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        limit = _limit(s)
+        verb = "is within" if passed else "exceeds"
+        note = ""
+        values: dict[str, Amount | str] = {
+            "v": Amount(app.speed_m_s, "speed"),
+            "limit": Amount(limit, "speed"),
+        }
+        if not s.traverse_bands[0][0] <= s.lead_m <= s.traverse_bands[-1][1]:
+            note = " (lead outside the table's {low} to {high}: nearest band)"
+            values["low"] = Amount(s.traverse_bands[0][0], "length")
+            values["high"] = Amount(s.traverse_bands[-1][1], "length")
+        return Phrase("{v} " + verb + " the recommended {limit} for this lead" + note + ".", values)
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+        faster = [band for band in s.traverse_bands if band[2] >= app.speed_m_s]
+        if not faster:
+            return Phrase("Run at most {limit}.", {"limit": Amount(_limit(s), "speed")})
+        return Phrase(
+            "Run at most {limit}, or a lead of at least {lead}.",
+            {"limit": Amount(_limit(s), "speed"), "lead": Amount(faster[0][0], "length")},
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        return {"speed_m_s": _limit(s)}
+
+
+def _limit(s: ScrewSpec) -> float:
+    """The screw's band limit [m/s]."""
+    return band_speed_m_s(s.lead_m, s.traverse_bands)

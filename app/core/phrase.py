@@ -1,0 +1,56 @@
+"""Sentences the core returns as numbers: a template and SI amounts, rendered at the edge.
+
+The core never writes a unit into text. A check's message or fix is a ``Phrase``: a
+``str.format`` template whose fields are ``Amount`` (an SI value and the quantity it
+measures) or plain words; ``app.units`` renders it in the units the reader chose.
+"""
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Literal
+
+#: What an amount measures; the edge picks the unit (e.g. "length": mm or in).
+Quantity = Literal[
+    "force",  # N
+    "length",  # m
+    "speed",  # m/s
+    "accel",  # m/s^2
+    "torque",  # N m
+    "rpm",  # rev/min
+    "pv",  # Pa m/s
+    "years",  # year
+    "temperature",  # deg C
+    "factor",  # dimensionless
+]
+
+
+@dataclass(frozen=True, slots=True)
+class Amount:
+    """An SI value of a quantity, for the edge to show in the reader's units."""
+
+    value: float
+    quantity: Quantity
+
+
+@dataclass(frozen=True, slots=True)
+class Phrase:
+    """``template`` with ``{name}`` fields filled from ``values`` at the edge.
+
+    >>> Phrase("Run at most {v}.", {"v": Amount(0.1, "speed")}).template
+    'Run at most {v}.'
+    """
+
+    template: str
+    values: Mapping[str, "Amount | str | Phrase"] = field(default_factory=dict)
+
+
+def join(parts: "list[Phrase]", separator: str = " ") -> Phrase:
+    """Several phrases as one, their fields renamed so that they cannot collide.
+
+    >>> join([Phrase("A {x}.", {"x": "1"}), Phrase("B {x}.", {"x": "2"})]).template
+    '{p0} {p1}'
+    """
+    names = [f"p{i}" for i in range(len(parts))]
+    return Phrase(
+        separator.join("{" + n + "}" for n in names), dict(zip(names, parts, strict=True))
+    )

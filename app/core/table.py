@@ -1,0 +1,136 @@
+"""Catalog candidates as columns, with every number that does not depend on the axis.
+
+Built once per catalog (at start-up for the built-in one). The formula functions of the
+core are plain arithmetic, so the same function serves one screw (a column of one) or
+the whole catalog.
+"""
+
+from collections.abc import Sequence
+from dataclasses import dataclass, fields
+
+import numpy as np
+from numpy.typing import NDArray
+
+from app.core import efficiency, geometry, limits
+from app.core.model import ScrewSpec
+
+Array = NDArray[np.float64]
+Mask = NDArray[np.bool_]
+
+
+def column(values: Sequence[float | None]) -> Array:
+    """Float column; None (no such limit) becomes NaN."""
+    return np.array([np.nan if v is None else v for v in values], dtype=np.float64)
+
+
+def _bands(screws: Sequence[ScrewSpec]) -> tuple[Array, Mask]:
+    """Each screw's family traverse limit [m/s] (NaN without a table) and off-table flag."""
+    found = [
+        limits.band_limit(s.lead_m, s.traverse_bands) if s.traverse_bands else None for s in screws
+    ]
+    speeds = column([None if b is None else b.speed_m_s for b in found])
+    return speeds, np.array([b is not None and b.extrapolated for b in found], dtype=bool)
+
+
+@dataclass(frozen=True, slots=True)
+class CandidateTable:
+    """One element per candidate: catalog values (SI) and axis-independent derived ones."""
+
+    screws: tuple[ScrewSpec, ...]
+    lead_m: Array
+    outer_diameter_m: Array
+    root_diameter_m: Array
+    pitch_diameter_m: Array
+    thread_depth_m: Array
+    helix_travel_m: Array
+    lead_angle_rad: Array
+    youngs_modulus_pa: Array
+    density_kg_m3: Array
+    screw_expansion_per_k: Array
+    inertia_kg_m2_per_m: Array
+    drag_max_nm: Array
+    pv_limit_pa_m_s: Array
+    design_load_n: Array
+    max_length_m: Array
+    life_min_m: Array
+    life_max_m: Array
+    lead_accuracy: Array
+    backlash_max_m: Array
+    repeatability_m: Array
+    temperature_min_c: Array
+    temperature_max_c: Array
+    coated: Mask
+    anti_backlash: Mask
+    oil_compatible: Mask
+    efficiency: Array
+    efficiency_static: Array
+    efficiency_square_thread: Array
+    backdrive_efficiency: Array
+    self_locking: Mask
+    seed_rule_no_backdrive: Mask
+    max_self_locking_lead_m: Array
+    traverse_limit_m_s: Array
+    traverse_extrapolated: Mask
+
+    @classmethod
+    def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
+        """Columns from screws, and the efficiencies and limits that follow from them."""
+        screws = tuple(screws)
+
+        def col(name: str) -> Array:
+            return column([getattr(s, name) for s in screws])
+
+        def flag(name: str) -> Mask:
+            return np.array([getattr(s, name) for s in screws], dtype=bool)
+
+        od, rd, lead = col("outer_diameter_m"), col("root_diameter_m"), col("lead_m")
+        d_p = geometry.pitch_diameter(od, rd)
+        tan_l = geometry.tan_lead_angle(lead, d_p)
+        cos_a = np.cos(col("thread_half_angle_rad"))
+        mu_s, mu_d = col("friction_static"), col("friction_dynamic")
+        traverse, extrapolated = _bands(screws)
+        return cls(
+            screws=screws,
+            lead_m=lead,
+            outer_diameter_m=od,
+            root_diameter_m=rd,
+            pitch_diameter_m=d_p,
+            thread_depth_m=geometry.thread_depth(od, rd),
+            helix_travel_m=geometry.helix_travel(lead, d_p),
+            lead_angle_rad=np.arctan(tan_l),
+            youngs_modulus_pa=col("youngs_modulus_pa"),
+            density_kg_m3=col("density_kg_m3"),
+            screw_expansion_per_k=col("screw_expansion_per_k"),
+            inertia_kg_m2_per_m=col("inertia_kg_m2_per_m"),
+            drag_max_nm=col("drag_torque_max_nm"),
+            pv_limit_pa_m_s=col("pv_limit_pa_m_s"),
+            design_load_n=col("design_load_n"),
+            max_length_m=col("max_length_m"),
+            life_min_m=col("life_min_m"),
+            life_max_m=col("life_max_m"),
+            lead_accuracy=col("lead_accuracy_m_per_m"),
+            backlash_max_m=col("backlash_max_m"),
+            repeatability_m=np.nan_to_num(col("repeatability_m")),
+            temperature_min_c=col("temperature_min_c"),
+            temperature_max_c=col("temperature_max_c"),
+            coated=flag("coated"),
+            anti_backlash=flag("anti_backlash"),
+            oil_compatible=flag("oil_compatible"),
+            efficiency=efficiency.forward_efficiency(tan_l, mu_d, cos_a),
+            efficiency_static=efficiency.forward_efficiency(tan_l, mu_s, cos_a),
+            efficiency_square_thread=efficiency.square_thread_efficiency(tan_l, mu_d),
+            backdrive_efficiency=efficiency.backdrive_efficiency(tan_l, mu_s, cos_a),
+            self_locking=mu_s >= efficiency.self_locking_limit_friction(tan_l, cos_a),
+            seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od),
+            max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
+            traverse_limit_m_s=traverse,
+            traverse_extrapolated=extrapolated,
+        )
+
+    def take(self, index: NDArray[np.intp]) -> "CandidateTable":
+        """The candidates at ``index``, in that order."""
+        picked = {f.name: getattr(self, f.name)[index] for f in fields(self) if f.name != "screws"}
+        return CandidateTable(screws=tuple(self.screws[i] for i in index), **picked)
+
+    def __len__(self) -> int:
+        return len(self.screws)
