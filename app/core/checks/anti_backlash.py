@@ -20,7 +20,7 @@ class AntiBacklash(Check):
     name = "anti_backlash"
     label = "Anti-backlash"
     description = "An anti-backlash (preloaded) nut when the axis must not have backlash."
-    formula = "passes when the nut type is anti-backlash"
+    formula = "passes when anti_backlash"
     source = "catalog nut type"
     sources = ("type",)
     order = 110

@@ -1,0 +1,145 @@
+"""The check registry (app.core.checks): one unit per check, and formula texts that agree
+with the code that computes them.
+
+Each numeric check's ``formula`` is "demand = ...; capacity = ...". Here both sides are
+evaluated from the names the check binds (``symbols``) for every catalog candidate and
+compared with what ``measure`` computes; a yes/no check's "passes when ..." condition is
+compared with its failures. A text that drifts from its function fails here.
+"""
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import pytest
+
+from app.catalog import Catalog
+from app.core.checks import BY_NAME, REGISTRY, Check
+from app.core.model import Application
+from app.core.quantities import operating_point
+from app.core.table import CandidateTable
+from tests.core.conftest import light_app
+
+#: Applications under which every check applies (each one switches on a group).
+APPS = {
+    "vertical-compression-torque": light_app(
+        orientation="vertical", max_torque_nm=0.5, moving_mass_kg=3.0, load_n=120.0
+    ),
+    "duty-tolerance-oil": light_app(
+        stroke_m=0.3,
+        cycles_per_day=500.0,
+        required_life_years=2.0,
+        positioning_tolerance_m=2e-4,
+        oil_present=True,
+        require_anti_backlash=True,
+        ambient_c=100.0,
+    ),
+    "long-fast-fixed-free": light_app(length_m=3.0, speed_m_s=0.4, end_fixity="fixed-free"),
+}
+FUNCTIONS: dict[str, Any] = {"pi": math.pi, "sqrt": math.sqrt, "cos": math.cos, "max": max}
+
+
+def _expression(side: str) -> Any:
+    """The right-hand side of 'name = expression', '^' as power, compiled."""
+    return compile(side.split("=", 1)[1].strip().replace("^", "**"), "<formula>", "eval")
+
+
+def _at(symbols: Mapping[str, object], i: int) -> dict[str, object]:
+    """Candidate i's value of each symbol (arrays per candidate, scalars shared)."""
+    return {
+        k: (v[i].item() if isinstance(v, np.ndarray) and v.ndim else v) for k, v in symbols.items()
+    }
+
+
+def _same(a: float, b: float) -> bool:
+    """Equal to rounding, or both not a number (a limit that does not exist)."""
+    return (math.isnan(a) and math.isnan(b)) or math.isclose(a, b, rel_tol=1e-9)
+
+
+def formula_mismatches(check: Check, app: Application, t: CandidateTable) -> list[str]:
+    """Candidates where the formula text gives another number (or verdict) than the code."""
+    q = operating_point(app, t)
+    m = check.measure(app, t, q)
+    symbols = check.symbols(app, t, q)
+    out = []
+    if m.demand is None:
+        condition = compile(check.formula.removeprefix("passes when "), "<formula>", "eval")
+        flagged = m.flagged if m.flagged is not None else np.zeros(len(t), dtype=bool)
+        for i in np.flatnonzero(m.applicable):
+            passes = bool(eval(condition, {**FUNCTIONS}, _at(symbols, i)))
+            if passes == bool(flagged[i]):
+                out.append(t.screws[i].id)
+        return out
+    assert m.capacity is not None
+    demand, capacity = (_expression(side) for side in check.formula.split(";"))
+    for i in np.flatnonzero(m.applicable):
+        scope = _at(symbols, i)
+        got = (eval(demand, {**FUNCTIONS}, scope), eval(capacity, {**FUNCTIONS}, scope))
+        if not (_same(got[0], m.demand[i]) and _same(got[1], m.capacity[i])):
+            out.append(t.screws[i].id)
+    return out
+
+
+def test_registry_lists_each_check_once_in_order() -> None:
+    names = [c.name for c in REGISTRY]
+    assert len(set(names)) == len(names) == 13
+    assert [c.order for c in REGISTRY] == sorted(c.order for c in REGISTRY)
+    for c in REGISTRY:
+        assert c.label and c.description and c.formula and c.source, c.name
+        assert c.kind in ("limit", "advice")
+
+
+@pytest.mark.parametrize(
+    ("name", "app_id"),
+    [
+        pytest.param(c.name, app_id, id=f"{c.name}-{app_id}")
+        for c in REGISTRY
+        for app_id, app in APPS.items()
+        if c.applies(app)
+    ],
+)
+def test_formula_text_agrees_with_the_code(catalog: Catalog, name: str, app_id: str) -> None:
+    assert formula_mismatches(BY_NAME[name], APPS[app_id], catalog.table) == []
+
+
+def test_every_check_applies_under_some_application(catalog: Catalog) -> None:
+    """The formula test above is not vacuous: each check runs on some candidates."""
+    for check in REGISTRY:
+        counts = [
+            int(
+                check.measure(
+                    app, catalog.table, operating_point(app, catalog.table)
+                ).applicable.sum()
+            )
+            for app in APPS.values()
+            if check.applies(app)
+        ]
+        assert counts and max(counts) > 0, check.name
+
+
+@pytest.mark.parametrize(
+    ("name", "wrong"),
+    [
+        pytest.param(
+            "buckling",
+            "F = F_axial; F_allowed = SF * k * pi^2 * E * (pi * d_r^4 / 32) / L^2",
+            id="buckling-I-as-polar-moment",
+        ),
+        pytest.param(
+            "critical_speed",
+            "n = 60 * v / lead; "
+            "n_allowed = SF * 60 / (2 * pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 2",
+            id="critical-speed-radius-of-gyration",
+        ),
+        pytest.param("oil", "passes when oil_compatible", id="oil-ignores-presence"),
+    ],
+)
+def test_a_wrong_formula_text_is_caught(
+    catalog: Catalog, name: str, wrong: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    check = BY_NAME["coating_environment" if name == "oil" else name]
+    # without oil the correct rule passes every variant; the wrong one fails the coated
+    app = light_app(oil_present=False) if name == "oil" else APPS["vertical-compression-torque"]
+    monkeypatch.setattr(type(check), "formula", wrong)
+    assert formula_mismatches(check, app, catalog.table) != []
