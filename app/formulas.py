@@ -6,6 +6,8 @@ number can be traced to its formula and from there to the catalog values and pro
 
 from typing import TypedDict
 
+from app.core.checks import REGISTRY
+
 
 class Formula(TypedDict):
     formula: str
@@ -141,3 +143,15 @@ FORMULAS: dict[str, Formula] = {
         "303 stainless 17.3e-6 /K (ASM Handbook)",
     ),
 }
+
+#: Each check's own formula, from the registry: ``checks.<name>``.
+FORMULAS.update(
+    {
+        f"checks.{c.name}": {
+            "formula": c.formula,
+            "function": f"{type(c).__module__}.{type(c).__name__}.measure",
+            "source": c.source,
+        }
+        for c in REGISTRY
+    }
+)

@@ -416,6 +416,21 @@ class SeriesListOut(BaseModel):
     series: list[SeriesOut]
 
 
+class CheckInfoOut(BaseModel):
+    name: str
+    label: str
+    kind: Literal["limit", "advice"]
+    description: str
+    formula: str = Field(description="demand = ...; capacity = ... (or: passes when ...).")
+    source: str
+    sources: list[str] = Field(description="Catalog fields the check reads.")
+    unit: str = Field(description="API unit of the check's value and limit.")
+
+
+class ChecksOut(BaseModel):
+    checks: list[CheckInfoOut]
+
+
 class HealthOut(BaseModel):
     status: Literal["ok"]
     version: str

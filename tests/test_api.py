@@ -1006,3 +1006,14 @@ def test_extreme_input_answers_finite_or_is_refused(
             assert_candidate(body["candidate"])
     else:
         assert_error(response, 422, response.json()["detail"][0]["field"])
+
+
+def test_checks_endpoint_lists_the_registry(client: Any) -> None:
+    """/api/v1/checks is the registry itself: every check the selection runs, in order."""
+    from app.core.checks import REGISTRY
+
+    body = client.get("/api/v1/checks").json()
+    assert [c["name"] for c in body["checks"]] == [c.name for c in REGISTRY]
+    buckling = next(c for c in body["checks"] if c["name"] == "buckling")
+    assert buckling["unit"] == "N" and "pi^2" in buckling["formula"]
+    assert buckling["sources"] == ["root_diameter", "youngs_modulus"]

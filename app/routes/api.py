@@ -9,9 +9,12 @@ from fastapi.responses import Response
 from app import __version__
 from app.deps import CatalogDep
 from app.errors import ApiRoute, AppError
+from app.core.checks import REGISTRY
 from app.present import series_dict
+from app.units import api_value
 from app.schemas import (
     ApplicationIn,
+    ChecksOut,
     ErrorOut,
     EvaluateIn,
     EvaluateOut,
@@ -54,6 +57,26 @@ async def health(catalog: CatalogDep) -> dict[str, Any]:
         "version": __version__,
         "catalog_version": catalog.version,
         "candidates": len(catalog.screws),
+    }
+
+
+@router.get("/checks", response_model=ChecksOut)
+async def list_checks() -> dict[str, Any]:
+    """Every check the selection runs, in order: what it means, its formula and source."""
+    return {
+        "checks": [
+            {
+                "name": c.name,
+                "label": c.label,
+                "kind": c.kind,
+                "description": c.description,
+                "formula": c.formula,
+                "source": c.source,
+                "sources": list(c.sources),
+                "unit": api_value(0.0, c.quantity)[1],
+            }
+            for c in REGISTRY
+        ]
     }
 
 
