@@ -5,6 +5,7 @@ import io
 from collections.abc import Callable
 from typing import Any
 
+from app.schemas import CandidateOut, CheckOut, SelectOut
 from app.units import Display, Quantity
 
 #: a text cell starting with one of these is a formula to a spreadsheet (CWE-1236).
@@ -22,71 +23,71 @@ def safe_cell(value: Any) -> Any:
     return value
 
 
-def _check(c: dict[str, Any], name: str) -> dict[str, Any] | None:
-    return next((check for check in c["checks"] if check["name"] == name), None)
+def _check(c: CandidateOut, name: str) -> CheckOut | None:
+    return next((check for check in c.checks if check.name == name), None)
 
 
-def _utilisation(name: str) -> Callable[[dict[str, Any]], Any]:
-    def get(c: dict[str, Any]) -> Any:
+def _utilisation(name: str) -> Callable[[CandidateOut], Any]:
+    def get(c: CandidateOut) -> Any:
         check = _check(c, name)
-        return None if check is None else check["utilization"]
+        return None if check is None else check.utilization
 
     return get
 
 
-def _years(index: int) -> Callable[[dict[str, Any]], Any]:
-    def get(c: dict[str, Any]) -> Any:
-        life = c["life"]
-        return None if life is None or life["years"] is None else life["years"][index]
+def _years(index: int) -> Callable[[CandidateOut], Any]:
+    def get(c: CandidateOut) -> Any:
+        life = c.life
+        return None if life is None or life.years is None else life.years[index]
 
     return get
 
 
-def _columns(d: Display) -> list[tuple[str, Callable[[dict[str, Any]], Any]]]:
-    def unit(quantity: Quantity, get: Callable[[dict[str, Any]], float]) -> Any:
+def _columns(d: Display) -> list[tuple[str, Callable[[CandidateOut], Any]]]:
+    def unit(quantity: Quantity, get: Callable[[CandidateOut], float]) -> Any:
         return lambda c: d.value(get(c), quantity)
 
     length, torque = d.label("length"), d.label("torque")
     return [
-        ("id", lambda c: c["id"]),
-        ("series", lambda c: c["series"]),
-        ("anti_backlash", lambda c: c["anti_backlash"]),
-        (f"outer_diameter [{length}]", unit("length", lambda c: c["outer_diameter_mm"])),
-        (f"root_diameter [{length}]", unit("length", lambda c: c["root_diameter_mm"])),
-        (f"lead [{length}]", unit("length", lambda c: c["lead_mm"])),
-        ("coating", lambda c: "TFE" if c["coated"] else "none"),
-        ("rpm", lambda c: c["rpm"]),
-        (f"torque_total [{torque}]", unit("torque", lambda c: c["torque"]["total_nm"])),
-        (f"torque_inertia [{torque}]", unit("torque", lambda c: c["torque"]["inertia_nm"])),
-        (f"torque_drag [{torque}]", unit("torque", lambda c: c["torque"]["drag_nm"])),
-        (f"torque_load [{torque}]", unit("torque", lambda c: c["torque"]["load_nm"])),
-        ("efficiency", lambda c: c["efficiency"]),
-        ("self_locking", lambda c: c["self_locking"]),
+        ("id", lambda c: c.id),
+        ("series", lambda c: c.series),
+        ("anti_backlash", lambda c: c.anti_backlash),
+        (f"outer_diameter [{length}]", unit("length", lambda c: c.outer_diameter_mm)),
+        (f"root_diameter [{length}]", unit("length", lambda c: c.root_diameter_mm)),
+        (f"lead [{length}]", unit("length", lambda c: c.lead_mm)),
+        ("coating", lambda c: "TFE" if c.coated else "none"),
+        ("rpm", lambda c: c.rpm),
+        (f"torque_total [{torque}]", unit("torque", lambda c: c.torque.total_nm)),
+        (f"torque_inertia [{torque}]", unit("torque", lambda c: c.torque.inertia_nm)),
+        (f"torque_drag [{torque}]", unit("torque", lambda c: c.torque.drag_nm)),
+        (f"torque_load [{torque}]", unit("torque", lambda c: c.torque.load_nm)),
+        ("efficiency", lambda c: c.efficiency),
+        ("self_locking", lambda c: c.self_locking),
         (
             f"holding_torque_seed [{torque}]",
-            unit("torque", lambda c: c["holding_torque"]["seed_method_nm"]),
+            unit("torque", lambda c: c.holding_torque.seed_method_nm),
         ),
         (
             f"holding_torque_physics [{torque}]",
-            unit("torque", lambda c: c["holding_torque"]["physics_nm"]),
+            unit("torque", lambda c: c.holding_torque.physics_nm),
         ),
-        ("critical_speed_allowed [rpm]", lambda c: c["critical_speed"]["allowed_rpm"]),
+        ("critical_speed_allowed [rpm]", lambda c: c.critical_speed.allowed_rpm),
         ("critical_speed_utilisation", _utilisation("critical_speed")),
         ("pv_utilisation", _utilisation("pv")),
         ("life_min [year]", _years(0)),
         ("life_max [year]", _years(1)),
-        ("governing_check", lambda c: c["governing_check"]),
-        ("fix", lambda c: c["fix"]),
+        ("governing_check", lambda c: c.governing_check),
+        ("fix", lambda c: c.fix),
     ]
 
 
-def results_csv(result: dict[str, Any], units: dict[str, str]) -> str:
+def results_csv(result: SelectOut, units: dict[str, str]) -> str:
     """Passing candidates (ranked) then the rejected ones shown, one row each."""
     columns = _columns(Display(units))
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
     writer.writerow(["status", "rank", *(name for name, _ in columns)])
-    groups = (("passed", result["candidates"]), ("rejected", result["rejected"]))
+    groups = (("passed", result.candidates), ("rejected", result.rejected))
     for status, candidates in groups:
         for rank, c in enumerate(candidates, start=1):
             cells = [get(c) for _, get in columns]

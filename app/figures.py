@@ -8,6 +8,7 @@ the tests use to validate them.
 from typing import Any
 
 from app.core import critical_speed, pv
+from app.schemas import CandidateOut, SelectOut
 from app.units import Display
 
 #: Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
@@ -59,15 +60,15 @@ def _layout(xaxis: dict[str, Any], yaxis: dict[str, Any], **extra: Any) -> dict[
     }
 
 
-def chart_candidates(result: dict[str, Any]) -> tuple[list[dict[str, Any]], bool]:
+def chart_candidates(result: SelectOut) -> tuple[list[CandidateOut], bool]:
     """Candidates to chart: the passing ones, else the nearest rejected. (list, passing?)"""
-    if result["candidates"]:
-        return result["candidates"], True
-    return result["rejected"], False
+    if result.candidates:
+        return result.candidates, True
+    return result.rejected, False
 
 
 def critical_speed_figure(
-    candidates: list[dict[str, Any]], length_mm: float, d: Display
+    candidates: list[CandidateOut], length_mm: float, d: Display
 ) -> dict[str, Any]:
     """Allowed speed vs unsupported length (log-log) with the operating points.
 
@@ -78,12 +79,12 @@ def critical_speed_figure(
     x = [_round(d.value(length, "length")) for length in lengths_mm]
     data: list[dict[str, Any]] = []
     for colour, c in zip(PALETTE, candidates[:TOP], strict=False):
-        allowed = c["critical_speed"]["allowed_rpm"]
+        allowed = c.critical_speed.allowed_rpm
         data.append(
             {
                 "type": "scatter",
                 "mode": "lines",
-                "name": c["id"],
+                "name": c.id,
                 "x": x,
                 "y": [
                     _round(critical_speed.speed_at_length(allowed, length_mm, length))
@@ -91,12 +92,12 @@ def critical_speed_figure(
                 ],
                 "line": {"color": colour, "width": 2},
                 "hovertemplate": f"%{{x:.4g}} {d.label('length')}<br>%{{y:.4g}} rpm"
-                f"<extra>{c['id']} allowed</extra>",
+                f"<extra>{c.id} allowed</extra>",
             }
         )
     shown = candidates[:TOP]
     user_x = _round(d.value(length_mm, "length"))
-    rpms = [_round(c["rpm"]) for c in shown]
+    rpms = [_round(c.rpm) for c in shown]
     data.append(
         {
             "type": "scatter",
@@ -104,7 +105,7 @@ def critical_speed_figure(
             "name": "Operating point",
             "x": [user_x] * len(shown),
             "y": rpms,
-            "text": [c["id"] for c in shown],
+            "text": [c.id for c in shown],
             "marker": {"size": 11, "symbol": "x", "color": list(PALETTE[: len(shown)])},
             "hovertemplate": "%{text}<br>%{y:.4g} rpm at %{x:.4g} "
             f"{d.label('length')}<extra>operating</extra>",
@@ -132,7 +133,7 @@ def critical_speed_figure(
 
 
 def pv_figure(
-    candidates: list[dict[str, Any]], speed_mm_s: float, load_n: float, d: Display
+    candidates: list[CandidateOut], speed_mm_s: float, load_n: float, d: Display
 ) -> dict[str, Any]:
     """PV limit of each nut as the largest load vs linear speed (log-log), and the operating point.
 
@@ -142,14 +143,13 @@ def pv_figure(
     speeds = _span(speed_mm_s, PV_SPAN)
     x = [_round(d.value(v, "speed")) for v in speeds]
     data: list[dict[str, Any]] = []
-    limited = [c for c in candidates[:TOP] if c["pv"]["max_load_n"] is not None]
-    for colour, c in zip(PALETTE, limited, strict=False):
-        max_load = c["pv"]["max_load_n"]
+    limited = [(c, c.pv.max_load_n) for c in candidates[:TOP] if c.pv.max_load_n is not None]
+    for colour, (c, max_load) in zip(PALETTE, limited, strict=False):
         data.append(
             {
                 "type": "scatter",
                 "mode": "lines",
-                "name": c["id"],
+                "name": c.id,
                 "x": x,
                 "y": [
                     _round(d.value(pv.max_load_at_speed(max_load, speed_mm_s, v), "force"))
@@ -157,7 +157,7 @@ def pv_figure(
                 ],
                 "line": {"color": colour, "width": 2},
                 "hovertemplate": f"%{{x:.4g}} {d.label('speed')}<br>max %{{y:.4g}} "
-                f"{d.label('force')}<extra>{c['id']} PV limit</extra>",
+                f"{d.label('force')}<extra>{c.id} PV limit</extra>",
             }
         )
     data.append(
@@ -182,20 +182,20 @@ def pv_figure(
 
 
 def torque_figure(
-    candidates: list[dict[str, Any]], max_torque_nm: float | None, d: Display
+    candidates: list[CandidateOut], max_torque_nm: float | None, d: Display
 ) -> dict[str, Any]:
     """Stacked bars of the running torque per candidate: inertia + drag + load.
 
     A dashed line marks the drive's maximum torque when the user gave one.
     """
-    ids = [c["id"] for c in candidates]
+    ids = [c.id for c in candidates]
     unit = d.label("torque")
     data = [
         {
             "type": "bar",
             "name": name,
             "x": ids,
-            "y": [_round(d.value(c["torque"][key], "torque")) for c in candidates],
+            "y": [_round(d.value(getattr(c.torque, key), "torque")) for c in candidates],
             "marker": {"color": colour},
             "hovertemplate": f"%{{x}}<br>{name} %{{y:.4g}} {unit}<extra></extra>",
         }
@@ -221,15 +221,15 @@ def torque_figure(
     }
 
 
-def result_figures(result: dict[str, Any], units: dict[str, str]) -> dict[str, dict[str, Any]]:
+def result_figures(result: SelectOut, units: dict[str, str]) -> dict[str, dict[str, Any]]:
     """The three charts of a result, keyed 'critical_speed', 'pv' and 'torque'."""
     candidates, _ = chart_candidates(result)
     if not candidates:
         return {}
     d = Display(units)
-    inputs = result["inputs"]
+    inputs = result.inputs
     return {
-        "critical_speed": critical_speed_figure(candidates, inputs["length_mm"], d),
-        "pv": pv_figure(candidates, inputs["speed_mm_s"], candidates[0]["axial_load_n"], d),
-        "torque": torque_figure(candidates, inputs["max_torque_nm"], d),
+        "critical_speed": critical_speed_figure(candidates, inputs.length_mm, d),
+        "pv": pv_figure(candidates, inputs.speed_mm_s, candidates[0].axial_load_n, d),
+        "torque": torque_figure(candidates, inputs.max_torque_nm, d),
     }

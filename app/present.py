@@ -1,4 +1,5 @@
-"""Turn core results into the API's plain dicts (the same dicts feed the templates)."""
+"""Core results as the API's typed output models; the same objects feed the templates,
+the figures and the CSV export."""
 
 import math
 from collections.abc import Mapping
@@ -8,7 +9,23 @@ from typing import Any
 from app.catalog import Material, Series
 from app.core import geometry, torque
 from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, Selection
-from app.schemas import CustomScrewIn, MaterialIn
+from app.schemas import (
+    AccuracyOut,
+    BucklingOut,
+    CandidateOut,
+    CheckOut,
+    CountsOut,
+    CriticalSpeedOut,
+    CustomScrewIn,
+    HoldingTorqueOut,
+    LifeOut,
+    MaterialIn,
+    OutgassingOut,
+    ProvenanceOut,
+    PVOut,
+    SummaryOut,
+    TorqueOut,
+)
 from app.units import DEFAULT_UNITS, api_value, render
 
 #: Catalog fields behind the geometry, efficiency and torque of every candidate.
@@ -40,150 +57,187 @@ def _prov(p: Provenance) -> dict[str, str]:
     return {"kind": p.kind, "source": p.source}
 
 
-def check_dict(check: CheckResult, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+def check_out(check: CheckResult, units: Units[str, str] = DEFAULT_UNITS) -> CheckOut:
     """A check in API units; its sentences in ``units`` (the API's by default)."""
     _, unit = api_value(0.0, check.quantity)
+    return CheckOut.model_construct(
+        name=check.name,
+        label=check.label,
+        kind=check.kind,
+        passed=check.passed,
+        value=None if check.value is None else api_value(check.value, check.quantity)[0],
+        limit=None if check.limit is None else api_value(check.limit, check.quantity)[0],
+        unit=unit,
+        utilization=check.utilization,
+        message=render(check.message, units),
+        formula=check.formula,
+        sources=list(check.sources),
+        fix=None if check.fix is None else render(check.fix, units),
+    )
+
+
+def _torque(ev: Evaluation) -> TorqueOut:
+    t = ev.torque
+    return TorqueOut.model_construct(
+        inertia_nm=t.inertia_nm,
+        inertia_screw_nm=t.inertia_screw_nm,
+        inertia_mass_nm=t.inertia_mass_nm,
+        drag_nm=t.drag_nm,
+        drag_range_nm=[t.drag_min_nm, t.drag_max_nm],
+        load_nm=t.load_nm,
+        total_nm=t.total_nm,
+        breakaway_nm=t.breakaway_nm,
+        safety_factor=t.safety_factor,
+        required_nm=t.required_nm,
+        note=TORQUE_NOTE,
+    )
+
+
+def _pv(ev: Evaluation) -> PVOut:
+    pv = ev.pv
+    return PVOut.model_construct(
+        value_mpa_m_s=pv.value_pa_m_s / 1e6,
+        limit_mpa_m_s=None if pv.limit_pa_m_s is None else pv.limit_pa_m_s / 1e6,
+        pressure_mpa=pv.pressure_pa / 1e6,
+        surface_speed_m_s=pv.surface_speed_m_s,
+        max_load_n=pv.max_load_n,
+        max_speed_mm_s=None if pv.max_speed_m_s is None else _mm(pv.max_speed_m_s),
+    )
+
+
+def _life(ev: Evaluation) -> LifeOut | None:
+    life = ev.life
+    if life is None:
+        return None
+    low, high = life.years_min, life.years_max
+    return LifeOut.model_construct(
+        travel_million_cm=[life.travel_min_m / 1e4, life.travel_max_m / 1e4],
+        years=[low, high] if low is not None and high is not None else None,
+        note=LIFE_NOTE,
+    )
+
+
+def _accuracy(ev: Evaluation) -> AccuracyOut:
+    acc = ev.accuracy
+
+    def mm(x: float | None) -> float | None:
+        return None if x is None else _mm(x)
+
+    return AccuracyOut.model_construct(
+        lead_error_mm=mm(acc.lead_error_m),
+        repeatability_mm=mm(acc.repeatability_m),
+        backlash_mm=[_mm(acc.backlash_min_m), _mm(acc.backlash_max_m)],
+        thermal_growth_mm=mm(acc.thermal_growth_m),
+    )
+
+
+def _column(ev: Evaluation) -> dict[str, Any]:
+    """Critical speed and buckling of the screw as a column."""
+    c, b = ev.critical_speed, ev.buckling
     return {
-        "name": check.name,
-        "label": check.label,
-        "kind": check.kind,
-        "passed": check.passed,
-        "value": None if check.value is None else api_value(check.value, check.quantity)[0],
-        "limit": None if check.limit is None else api_value(check.limit, check.quantity)[0],
-        "unit": unit,
-        "utilization": check.utilization,
-        "message": render(check.message, units),
-        "formula": check.formula,
-        "sources": list(check.sources),
-        "fix": None if check.fix is None else render(check.fix, units),
+        "critical_speed": CriticalSpeedOut.model_construct(
+            theoretical_rpm=c.theoretical_rpm,
+            allowed_rpm=c.allowed_rpm,
+            margin=c.margin,
+            safety_factor=c.safety_factor,
+            end_fixity=c.end_fixity,
+        ),
+        "buckling": BucklingOut.model_construct(
+            applies=b.applies,
+            critical_load_n=b.critical_load_n,
+            allowed_load_n=b.allowed_load_n,
+            safety_factor=b.safety_factor,
+        ),
     }
 
 
-def candidate_dict(
-    ev: Evaluation, vacuum: bool = False, units: Units[str, str] = DEFAULT_UNITS
-) -> dict[str, Any]:
-    """One evaluated screw in API units (mm, mm/s, N, N m, MPa m/s); sentences in ``units``."""
-    s, t, pv = ev.screw, ev.torque, ev.pv
-    life = None
-    if ev.life is not None:
-        years = ev.life
-        life = {
-            "travel_million_cm": [years.travel_min_m / 1e4, years.travel_max_m / 1e4],
-            "years": (
-                None
-                if years.years_min is None or years.years_max is None
-                else [years.years_min, years.years_max]
-            ),
-            "note": LIFE_NOTE,
-        }
-    acc = ev.accuracy
-    checks = [check_dict(c, units) for c in ev.checks]
-    fixes = [c["fix"] for c in checks if c["fix"]]
-    used = {src for c in ev.checks for src in c.sources} | set(GEOMETRY_SOURCES)
+def _thread(ev: Evaluation) -> dict[str, Any]:
+    """Geometry, efficiencies and holding of the thread."""
+    s = ev.screw
     return {
-        "id": s.id,
-        "series": s.series_id,
-        "series_name": s.series_name,
-        "anti_backlash": s.anti_backlash,
         "outer_diameter_mm": _mm(s.outer_diameter_m),
         "root_diameter_mm": _mm(s.root_diameter_m),
         "pitch_diameter_mm": _mm(geometry.pitch_diameter(s.outer_diameter_m, s.root_diameter_m)),
         "lead_mm": _mm(s.lead_m),
         "lead_angle_deg": math.degrees(ev.lead_angle_rad),
-        "coated": s.coated,
-        "axial_load_n": ev.axial_load_n,
-        "rpm": ev.rpm,
         "efficiency": ev.efficiency,
         "efficiency_square_thread": ev.efficiency_square_thread,
         "backdrive_efficiency": ev.backdrive_efficiency,
         "self_locking": ev.self_locking,
         "seed_rule_no_backdrive": ev.seed_rule_no_backdrive,
         "max_self_locking_lead_mm": _mm(ev.max_self_locking_lead_m),
-        "holding_torque": {
-            "seed_method_nm": ev.holding_torque_seed_nm,
-            "physics_nm": ev.holding_torque_physics_nm,
-            "brake_nm": ev.brake_torque_nm,
-        },
-        "torque": {
-            "inertia_nm": t.inertia_nm,
-            "inertia_screw_nm": t.inertia_screw_nm,
-            "inertia_mass_nm": t.inertia_mass_nm,
-            "drag_nm": t.drag_nm,
-            "drag_range_nm": [t.drag_min_nm, t.drag_max_nm],
-            "load_nm": t.load_nm,
-            "total_nm": t.total_nm,
-            "breakaway_nm": t.breakaway_nm,
-            "safety_factor": t.safety_factor,
-            "required_nm": t.required_nm,
-            "note": TORQUE_NOTE,
-        },
-        "critical_speed": {
-            "theoretical_rpm": ev.critical_speed.theoretical_rpm,
-            "allowed_rpm": ev.critical_speed.allowed_rpm,
-            "margin": ev.critical_speed.margin,
-            "safety_factor": ev.critical_speed.safety_factor,
-            "end_fixity": ev.critical_speed.end_fixity,
-        },
-        "buckling": {
-            "applies": ev.buckling.applies,
-            "critical_load_n": ev.buckling.critical_load_n,
-            "allowed_load_n": ev.buckling.allowed_load_n,
-            "safety_factor": ev.buckling.safety_factor,
-        },
-        "pv": {
-            "value_mpa_m_s": pv.value_pa_m_s / 1e6,
-            "limit_mpa_m_s": None if pv.limit_pa_m_s is None else pv.limit_pa_m_s / 1e6,
-            "pressure_mpa": pv.pressure_pa / 1e6,
-            "surface_speed_m_s": pv.surface_speed_m_s,
-            "max_load_n": pv.max_load_n,
-            "max_speed_mm_s": None if pv.max_speed_m_s is None else _mm(pv.max_speed_m_s),
-        },
-        "traverse_speed_limit_mm_s": (
-            None if ev.traverse_speed_limit_m_s is None else _mm(ev.traverse_speed_limit_m_s)
+        "holding_torque": HoldingTorqueOut.model_construct(
+            seed_method_nm=ev.holding_torque_seed_nm,
+            physics_nm=ev.holding_torque_physics_nm,
+            brake_nm=ev.brake_torque_nm,
         ),
-        "traverse_extrapolated": ev.traverse_extrapolated,
-        "life": life,
-        "accuracy": {
-            "lead_error_mm": None if acc.lead_error_m is None else _mm(acc.lead_error_m),
-            "repeatability_mm": None if acc.repeatability_m is None else _mm(acc.repeatability_m),
-            "backlash_mm": [_mm(acc.backlash_min_m), _mm(acc.backlash_max_m)],
-            "thermal_growth_mm": (
-                None if acc.thermal_growth_m is None else _mm(acc.thermal_growth_m)
-            ),
-        },
-        "outgassing": (
-            [{"hours": h, "weight_loss_percent": w} for h, w in s.outgassing] if vacuum else None
-        ),
-        "checks": checks,
-        "governing_check": ev.governing_check,
-        "passed": ev.passed,
-        "fix": " ".join(fixes) if fixes else None,
-        "provenance": {k: _prov(p) for k, p in s.provenance.items() if k in used},
     }
 
 
-def selection_dict(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
-    """Candidates, rejected, counts and summary of a selection (without inputs/links)."""
+def candidate_out(
+    ev: Evaluation, vacuum: bool = False, units: Units[str, str] = DEFAULT_UNITS
+) -> CandidateOut:
+    """One evaluated screw in API units (mm, mm/s, N, N m, MPa m/s); sentences in ``units``."""
+    s = ev.screw
+    checks = [check_out(c, units) for c in ev.checks]
+    fixes = [c.fix for c in checks if c.fix]
+    used = {src for c in ev.checks for src in c.sources} | set(GEOMETRY_SOURCES)
+    outgassing = [
+        OutgassingOut.model_construct(hours=h, weight_loss_percent=w) for h, w in s.outgassing
+    ]
+    traverse = ev.traverse_speed_limit_m_s
+    return CandidateOut.model_construct(
+        id=s.id,
+        series=s.series_id,
+        series_name=s.series_name,
+        anti_backlash=s.anti_backlash,
+        coated=s.coated,
+        axial_load_n=ev.axial_load_n,
+        rpm=ev.rpm,
+        **_thread(ev),
+        torque=_torque(ev),
+        **_column(ev),
+        pv=_pv(ev),
+        traverse_speed_limit_mm_s=None if traverse is None else _mm(traverse),
+        traverse_extrapolated=ev.traverse_extrapolated,
+        life=_life(ev),
+        accuracy=_accuracy(ev),
+        outgassing=outgassing if vacuum else None,
+        checks=checks,
+        governing_check=ev.governing_check,
+        passed=ev.passed,
+        fix=" ".join(fixes) if fixes else None,
+        provenance={
+            k: ProvenanceOut.model_construct(kind=p.kind, source=p.source)
+            for k, p in s.provenance.items()
+            if k in used
+        },
+    )
+
+
+def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+    """Candidates, rejected, counts and summary of a selection (the rest of SelectOut is
+    the caller's: inputs, links, catalog version)."""
     vacuum = sel.application.vacuum
     return {
-        "candidates": [candidate_dict(e, vacuum, units) for e in sel.candidates],
-        "rejected": [candidate_dict(e, vacuum, units) for e in sel.rejected],
-        "counts": {
-            "evaluated": sel.evaluated,
-            "passed": sel.passed,
-            "rejected": sel.evaluated - sel.passed,
-            "failed_by_check": dict(sel.failed_by_check),
-        },
-        "summary": {
-            "message": render(sel.summary.message, units),
-            "most_excluding_check": sel.summary.most_excluding_check,
-            "best_rejected_id": sel.summary.best_rejected_id,
-            "input_change": _api_change(sel.summary.input_change),
-        },
+        "candidates": [candidate_out(e, vacuum, units) for e in sel.candidates],
+        "rejected": [candidate_out(e, vacuum, units) for e in sel.rejected],
+        "counts": CountsOut.model_construct(
+            evaluated=sel.evaluated,
+            passed=sel.passed,
+            rejected=sel.evaluated - sel.passed,
+            failed_by_check=dict(sel.failed_by_check),
+        ),
+        "summary": SummaryOut.model_construct(
+            message=render(sel.summary.message, units),
+            most_excluding_check=sel.summary.most_excluding_check,
+            best_rejected_id=sel.summary.best_rejected_id,
+            input_change=_api_change(sel.summary.input_change),
+        ),
     }
 
 
-def _api_change(change: Any) -> dict[str, float]:
+def _api_change(change: Mapping[str, float]) -> dict[str, float]:
     names = {
         "load_n": ("load_n", 1.0),
         "speed_m_s": ("speed_mm_s", 1e3),

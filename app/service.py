@@ -1,16 +1,25 @@
 """The one path from validated inputs to a result, shared by the API and the pages."""
 
 from collections.abc import Mapping
-from typing import Any
 
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.selection import select
 from app.formulas import FORMULAS
-from app.present import candidate_dict, custom_screw, selection_dict
-from app.schemas import ApplicationIn, CatalogScrewIn, CustomScrewIn
+from app.present import candidate_out, custom_screw, selection_out
+from app.schemas import (
+    ApplicationIn,
+    CatalogScrewIn,
+    CustomScrewIn,
+    EvaluateOut,
+    FormulaOut,
+    SelectOut,
+)
 from app.share import share_query
 from app.units import DEFAULT_UNITS
+
+#: The formulas table as output models, built once.
+FORMULAS_OUT = {name: FormulaOut(**f) for name, f in FORMULAS.items()}
 
 
 class UnknownScrew(LookupError):
@@ -19,17 +28,17 @@ class UnknownScrew(LookupError):
 
 def run_selection(
     inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str] = DEFAULT_UNITS
-) -> dict[str, Any]:
-    """Select and rank over the catalog; the API's select response as a dict, its
-    sentences in ``units`` (the API's own by default)."""
+) -> SelectOut:
+    """Select and rank over the catalog: the API's select response, its sentences in
+    ``units`` (the API's own by default)."""
     selection = select(inputs.to_core(), catalog.table)
-    return {
-        "inputs": inputs.model_dump(),
-        **selection_dict(selection, units),
-        "catalog_version": catalog.version,
-        "share_url": "/?" + share_query(inputs),
-        "formulas": FORMULAS,
-    }
+    return SelectOut.model_construct(
+        inputs=inputs,
+        **selection_out(selection, units),
+        catalog_version=catalog.version,
+        share_url="/?" + share_query(inputs),
+        formulas=FORMULAS_OUT,
+    )
 
 
 def run_evaluation(
@@ -37,7 +46,7 @@ def run_evaluation(
     screw: CatalogScrewIn | CustomScrewIn,
     catalog: Catalog,
     units: Mapping[str, str] = DEFAULT_UNITS,
-) -> dict[str, Any]:
+) -> EvaluateOut:
     """Evaluate one catalog or custom screw; raise UnknownScrew for a bad catalog id."""
     if isinstance(screw, CatalogScrewIn):
         spec = catalog.by_id.get(screw.catalog_id)
@@ -46,9 +55,9 @@ def run_evaluation(
     else:
         spec = custom_screw(screw, catalog.materials)
     app = inputs.to_core()
-    return {
-        "inputs": inputs.model_dump(),
-        "candidate": candidate_dict(evaluate(app, spec), app.vacuum, units),
-        "catalog_version": catalog.version,
-        "formulas": FORMULAS,
-    }
+    return EvaluateOut.model_construct(
+        inputs=inputs,
+        candidate=candidate_out(evaluate(app, spec), app.vacuum, units),
+        catalog_version=catalog.version,
+        formulas=FORMULAS_OUT,
+    )

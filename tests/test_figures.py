@@ -10,7 +10,7 @@ import pytest
 from app.catalog import Catalog
 from app.core.critical_speed import critical_speed_rpm
 from app.figures import TOP, chart_candidates, result_figures
-from app.schemas import ApplicationIn
+from app.schemas import ApplicationIn, SelectOut
 from app.service import run_selection
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
@@ -18,14 +18,20 @@ IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
 LBF, INCH, OZ_IN = 4.4482216152605, 25.4, 0.0070615518333
 
 
+def plain(result: SelectOut) -> dict[str, Any]:
+    """The result as the API serves it (plain JSON values) for assertions."""
+    data: dict[str, Any] = json.loads(result.model_dump_json())
+    return data
+
+
 @pytest.fixture(scope="module")
-def result(catalog: Catalog) -> dict[str, Any]:
+def result(catalog: Catalog) -> SelectOut:
     inputs = ApplicationIn(load_n=100, speed_mm_s=50, length_mm=500, lead_mm=10, max_torque_nm=0.3)
     return run_selection(inputs, catalog)
 
 
 @pytest.mark.parametrize("units", [METRIC, IMPERIAL], ids=["metric", "imperial"])
-def test_every_figure_is_a_valid_plotly_figure(result: dict[str, Any], units: Any) -> None:
+def test_every_figure_is_a_valid_plotly_figure(result: SelectOut, units: Any) -> None:
     figures = result_figures(result, units)
     assert set(figures) == {"critical_speed", "pv", "torque"}
     for figure in figures.values():
@@ -37,7 +43,7 @@ def test_critical_speed_curves_follow_the_core_formula(
     result: dict[str, Any], catalog: Catalog
 ) -> None:
     figure = result_figures(result, METRIC)["critical_speed"]
-    top = result["candidates"][:TOP]
+    top = plain(result)["candidates"][:TOP]
     curves, points, line = figure["data"][:-2], figure["data"][-2], figure["data"][-1]
     assert [c["name"] for c in curves] == [c["id"] for c in top]
     assert figure["layout"]["xaxis"]["type"] == figure["layout"]["yaxis"]["type"] == "log"
@@ -46,22 +52,22 @@ def test_critical_speed_curves_follow_the_core_formula(
     assert line["x"] == [500.0, 500.0]
     for curve, candidate in zip(curves, top, strict=True):
         screw = catalog.by_id[candidate["id"]]
-        factor = result["inputs"]["critical_speed_safety_factor"]
+        factor = plain(result)["inputs"]["critical_speed_safety_factor"]
         for length_mm, rpm in zip(curve["x"][::10], curve["y"][::10], strict=True):
             expected = factor * critical_speed_rpm(
                 screw.root_diameter_m,
                 length_mm / 1e3,
                 screw.youngs_modulus_pa,
                 screw.density_kg_m3,
-                result["inputs"]["end_fixity"],
+                plain(result)["inputs"]["end_fixity"],
             )
             assert rpm == pytest.approx(expected, rel=1e-3)
 
 
-def test_pv_curves_pass_through_the_limit_at_the_operating_speed(result: dict[str, Any]) -> None:
+def test_pv_curves_pass_through_the_limit_at_the_operating_speed(result: SelectOut) -> None:
     figure = result_figures(result, METRIC)["pv"]
     curves, point = figure["data"][:-1], figure["data"][-1]
-    top = [c for c in result["candidates"][:TOP] if c["pv"]["max_load_n"] is not None]
+    top = [c for c in plain(result)["candidates"][:TOP] if c["pv"]["max_load_n"] is not None]
     assert len(curves) == len(top)
     assert point["x"] == [50.0] and point["y"] == [100.0]
     for curve, candidate in zip(curves, top, strict=True):
@@ -73,19 +79,19 @@ def test_pv_curves_pass_through_the_limit_at_the_operating_speed(result: dict[st
     assert figure["layout"]["xaxis"]["type"] == "log"
 
 
-def test_torque_bars_stack_to_the_total(result: dict[str, Any]) -> None:
+def test_torque_bars_stack_to_the_total(result: SelectOut) -> None:
     figure = result_figures(result, METRIC)["torque"]
     assert figure["layout"]["barmode"] == "stack"
     assert [t["name"] for t in figure["data"]] == ["Inertia", "Drag", "Load"]
     assert all(t["type"] == "bar" for t in figure["data"])
-    for i, candidate in enumerate(result["candidates"]):
+    for i, candidate in enumerate(plain(result)["candidates"]):
         stacked = sum(trace["y"][i] for trace in figure["data"])
         assert stacked == pytest.approx(candidate["torque"]["total_nm"], rel=1e-3)
     (limit,) = figure["layout"]["shapes"]
     assert limit["y0"] == limit["y1"] == 0.3
 
 
-def test_axes_and_values_follow_the_display_units(result: dict[str, Any]) -> None:
+def test_axes_and_values_follow_the_display_units(result: SelectOut) -> None:
     metric = result_figures(result, METRIC)
     imperial = result_figures(result, IMPERIAL)
     assert imperial["critical_speed"]["layout"]["xaxis"]["title"]["text"].endswith("[in]")
@@ -101,11 +107,11 @@ def test_axes_and_values_follow_the_display_units(result: dict[str, Any]) -> Non
 def test_nothing_passing_charts_the_nearest_rejected(catalog: Catalog) -> None:
     inputs = ApplicationIn(load_n=10000, speed_mm_s=500, length_mm=3000)
     result = run_selection(inputs, catalog)
-    assert result["candidates"] == []
+    assert plain(result)["candidates"] == []
     candidates, passing = chart_candidates(result)
-    assert not passing and candidates == result["rejected"]
+    assert not passing and candidates == result.rejected
     figures = result_figures(result, METRIC)
     names = [t["name"] for t in figures["critical_speed"]["data"][:-2]]
-    assert names == [c["id"] for c in result["rejected"][:TOP]]
+    assert names == [c["id"] for c in plain(result)["rejected"][:TOP]]
     assert "shapes" not in figures["torque"]["layout"]
     assert math.isfinite(figures["pv"]["data"][-1]["y"][0])

@@ -18,6 +18,7 @@ from httpx import Response
 
 from app.catalog import Catalog
 from app.export import results_csv, safe_cell
+from app.schemas import SelectOut
 from app.share import PAGE_LABELS
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -417,7 +418,8 @@ def test_csv_cells_cannot_start_a_formula(client: TestClient) -> None:
     result = api_select(client)
     hostile = {**result["candidates"][0], "id": "=HYPERLINK(1)", "series": "@SUM(A1)"}
     hostile["fix"] = "-2+3"
-    text = results_csv({**result, "candidates": [hostile], "rejected": []}, _METRIC)
+    typed = SelectOut.model_validate({**result, "candidates": [hostile], "rejected": []})
+    text = results_csv(typed, _METRIC)
     row = next(csv.DictReader(io.StringIO(text)))
     assert (row["id"], row["series"], row["fix"]) == ("'=HYPERLINK(1)", "'@SUM(A1)", "'-2+3")
     assert safe_cell("+1") == "'+1" and safe_cell(-1.0) == -1.0

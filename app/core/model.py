@@ -118,7 +118,7 @@ class CheckResult:
 
     name: str
     label: str
-    kind: str
+    kind: Literal["limit", "advice"]
     passed: bool
     value: float | None
     limit: float | None

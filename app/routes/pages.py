@@ -4,7 +4,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from fastapi import APIRouter, Request
-from fastapi.responses import HTMLResponse, JSONResponse, Response
+from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.deps import CatalogDep
@@ -12,7 +12,8 @@ from app.errors import AppError
 from app.export import results_csv
 from app.figures import chart_candidates, result_figures
 from app.present import series_dict
-from app.schemas import ApplicationIn, CatalogScrewIn
+from app.responses import ModelJSON
+from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.service import run_evaluation, run_selection
 from app.share import (
     PAGE_FIELDS,
@@ -78,16 +79,16 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["share_url"] = "/?" + context["query"]
         context["figures"] = result_figures(result, units)
         context["charting_passed"] = chart_candidates(result)[1]
-        context["rejected_groups"] = rejected_groups(result["rejected"])
+        context["rejected_groups"] = rejected_groups(result.rejected)
     return context
 
 
-def rejected_groups(rejected: list[dict[str, Any]]) -> list[dict[str, Any]]:
+def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
     """Rejected candidates grouped by governing (failing) check, nearest group first."""
     groups: dict[str, dict[str, Any]] = {}
     for c in rejected:
-        name = c["governing_check"] or "other"
-        label = next((k["label"] for k in c["checks"] if k["name"] == name), name)
+        name = c.governing_check or "other"
+        label = next((k.label for k in c.checks if k.name == name), name)
         groups.setdefault(name, {"name": name, "label": label, "candidates": []})
         groups[name]["candidates"].append(c)
     return list(groups.values())
@@ -148,16 +149,13 @@ def _attachment(extension: str) -> dict[str, str]:
 
 def _candidate(
     inputs: ApplicationIn, cid: str, catalog: Catalog, units: Mapping[str, str]
-) -> dict[str, Any]:
+) -> CandidateOut:
     """Catalog screw ``cid`` evaluated for these inputs (the same dict the result lists
     carry); a 404 page if there is no such screw."""
     if cid not in catalog.by_id:
         message = f"no candidate {cid!r} in this result" if cid else "no candidate id given"
         raise AppError(404, "candidate not found", [{"field": "id", "message": message}])
-    candidate: dict[str, Any] = run_evaluation(
-        inputs, CatalogScrewIn(catalog_id=cid), catalog, units
-    )["candidate"]
-    return candidate
+    return run_evaluation(inputs, CatalogScrewIn(catalog_id=cid), catalog, units).candidate
 
 
 @router.api_route("/detail", methods=["GET", "HEAD"], response_class=HTMLResponse)
@@ -188,7 +186,7 @@ async def export_csv(request: Request, catalog: CatalogDep) -> Response:
 async def export_json(request: Request, catalog: CatalogDep) -> Response:
     """The API's select response (API units) for the link's inputs."""
     inputs, _ = _link_inputs(request.query_params)
-    return JSONResponse(run_selection(inputs, catalog), headers=_attachment("json"))
+    return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 
 
 def _catalog_rows(series: dict[str, Any]) -> list[dict[str, str]]:
