@@ -1,6 +1,9 @@
 """Evaluate one screw, or one screened candidate: every number, every check, every fix."""
 
 import math
+from collections.abc import Sequence
+from functools import partial
+from typing import Any
 
 import numpy as np
 
@@ -21,29 +24,38 @@ from app.core.model import (
 )
 from app.core.quantities import Quantities, axial_load
 from app.core.screening import Screening, screen_table
-from app.core.table import CandidateTable
+from app.core.table import CandidateTable, Mask
 
-__all__ = ["axial_load", "evaluate", "evaluation"]
+__all__ = ["axial_load", "evaluate", "evaluations"]
 
 
 def _number(x: float) -> float | None:
     return None if math.isnan(x) else x
 
 
+#: One check of one candidate, gathered from the screening arrays:
+#: (applies, demand, capacity, failed).
+CheckRow = tuple[bool, float | None, float | None, bool]
+
+
+def _check_rows(m: Measure, failed: Mask, index: list[int]) -> list[CheckRow]:
+    """The screening's values of one check at ``index``, as plain Python values."""
+    n = len(index)
+    demand = [None] * n if m.demand is None else m.demand[index].tolist()
+    capacity = [None] * n if m.capacity is None else m.capacity[index].tolist()
+    return list(
+        zip(m.applicable[index].tolist(), demand, capacity, failed[index].tolist(), strict=True)
+    )
+
+
 def _result(
-    check: Check,
-    m: Measure,
-    failed: bool,
-    app: Application,
-    s: ScrewSpec,
-    r: Quantities[float],
-    i: int,
+    check: Check, row: CheckRow, app: Application, s: ScrewSpec, r: Quantities[float]
 ) -> CheckResult:
-    """Check ``check`` of candidate ``i`` as a result with its explanation and fix."""
-    value = None if m.demand is None else _number(float(m.demand[i]))
-    limit = None if m.capacity is None else _number(float(m.capacity[i]))
+    """One check of one candidate; its explanation and fix are written when read."""
+    _, demand, capacity, failed = row
+    value = None if demand is None else _number(demand)
+    limit = None if capacity is None else _number(capacity)
     numeric = value is not None and limit is not None
-    limits = check.input_limits(app, s, r) if failed else None
     return CheckResult(
         name=check.name,
         label=check.label,
@@ -53,11 +65,11 @@ def _result(
         limit=limit if numeric else None,
         quantity=check.quantity if numeric else None,
         utilization=value / limit if value is not None and limit else None,
-        message=check.explain(app, s, r, not failed),
         formula=check.formula,
         sources=check.sources,
-        fix=check.fix(app, s, r) if failed else None,
-        input_limits=dict(limits) if limits else None,
+        explanation=partial(check.explain, app, s, r, not failed),
+        remedy=partial(check.fix, app, s, r),
+        remedy_inputs=partial(check.input_limits, app, s, r),
     )
 
 
@@ -118,27 +130,68 @@ def _accuracy(s: ScrewSpec, r: Quantities[float]) -> Accuracy:
     )
 
 
-def evaluation(app: Application, sc: Screening, i: int) -> Evaluation:
-    """Candidate ``i`` of a screening (position in ``sc.table``) with every check."""
-    t, r = sc.table, sc.quantities.row(i)
-    s = t.screws[i]
-    checks = tuple(
-        _result(BY_NAME[name], m, bool(sc.failed_by_check[name][i]), app, s, r, i)
-        for name, m in sc.measures.items()
-        if m.applicable[i]
-    )
-    traverse = _number(float(t.traverse_limit_m_s[i]))
+#: Axis-independent numbers of the thread that every evaluation reports.
+THREAD_COLUMNS = (
+    "lead_angle_rad",
+    "efficiency",
+    "efficiency_square_thread",
+    "backdrive_efficiency",
+    "self_locking",
+    "seed_rule_no_backdrive",
+    "max_self_locking_lead_m",
+    "traverse_limit_m_s",
+    "traverse_extrapolated",
+)
+
+
+def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> list[Evaluation]:
+    """The candidates at ``positions`` of a screening (in ``sc.table``) with every check.
+
+    Reads the screening's arrays once for the whole batch; computes nothing again.
+    """
+    index = [int(i) for i in positions]
+    if not index:
+        return []
+    rows = sc.quantities.rows(index)
+    thread = {name: getattr(sc.table, name)[index].tolist() for name in THREAD_COLUMNS}
+    checks = {
+        name: _check_rows(m, sc.failed_by_check[name], index) for name, m in sc.measures.items()
+    }
+    worst = sc.max_utilization[index].tolist()
+    return [
+        _evaluation(
+            app,
+            sc.table.screws[i],
+            rows[k],
+            {name: column[k] for name, column in thread.items()},
+            {name: column[k] for name, column in checks.items() if column[k][0]},
+            worst[k],
+        )
+        for k, i in enumerate(index)
+    ]
+
+
+def _evaluation(
+    app: Application,
+    s: ScrewSpec,
+    r: Quantities[float],
+    thread: dict[str, Any],
+    check_rows: dict[str, CheckRow],
+    worst: float,
+) -> Evaluation:
+    checks = tuple(_result(BY_NAME[name], row, app, s, r) for name, row in check_rows.items())
+    traverse = _number(thread["traverse_limit_m_s"])
     return Evaluation(
         screw=s,
         axial_load_n=r.force_n,
         rpm=r.rpm,
-        lead_angle_rad=float(t.lead_angle_rad[i]),
-        efficiency=float(t.efficiency[i]),
-        efficiency_square_thread=float(t.efficiency_square_thread[i]),
-        backdrive_efficiency=float(t.backdrive_efficiency[i]),
-        self_locking=bool(t.self_locking[i]),
-        seed_rule_no_backdrive=bool(t.seed_rule_no_backdrive[i]),
-        max_self_locking_lead_m=float(t.max_self_locking_lead_m[i]),
+        lead_angle_rad=thread["lead_angle_rad"],
+        efficiency=thread["efficiency"],
+        efficiency_square_thread=thread["efficiency_square_thread"],
+        backdrive_efficiency=thread["backdrive_efficiency"],
+        self_locking=thread["self_locking"],
+        seed_rule_no_backdrive=thread["seed_rule_no_backdrive"],
+        max_self_locking_lead_m=thread["max_self_locking_lead_m"],
         holding_torque_seed_nm=r.holding_seed_nm,
         holding_torque_physics_nm=r.holding_physics_nm,
         brake_torque_nm=r.brake_nm,
@@ -155,13 +208,13 @@ def evaluation(app: Application, sc: Screening, i: int) -> Evaluation:
         ),
         pv=_pv(s, r),
         traverse_speed_limit_m_s=traverse,
-        traverse_extrapolated=traverse is not None and bool(t.traverse_extrapolated[i]),
+        traverse_extrapolated=traverse is not None and thread["traverse_extrapolated"],
         life=_life(s, r),
         accuracy=_accuracy(s, r),
         checks=checks,
-        passed=not any(not c.passed for c in checks),
+        passed=all(c.passed for c in checks),
         governing_check=_governing(checks),
-        max_utilization=float(sc.max_utilization[i]),
+        max_utilization=worst,
     )
 
 
@@ -173,4 +226,4 @@ def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
             f"{screw.id}: lead angle {math.degrees(table.lead_angle_rad[0]):.1f} deg is too "
             f"steep to drive against friction {screw.friction_dynamic:g}"
         )
-    return evaluation(app, screen_table(app, table, np.arange(1)), 0)
+    return evaluations(app, screen_table(app, table, np.arange(1)), [0])[0]

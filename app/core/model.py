@@ -1,6 +1,6 @@
 """Plain data types of the core: the application, one screw, checks and results (SI)."""
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -112,8 +112,9 @@ class CheckResult:
 
     ``value`` (demand) and ``limit`` (capacity) are SI in ``quantity``; None for yes/no
     checks. ``utilization`` = value / limit. ``sources`` names the catalog fields the check
-    uses. ``input_limits`` gives, for a failed check, application inputs any one of which,
-    set to the given SI value, would make the check pass (e.g. {"load_n": 120.0}).
+    uses. The message, the fix and ``input_limits`` (application inputs any one of which,
+    set to the given SI value, would make the check pass, e.g. {"load_n": 120.0}) are
+    written when read: most results are ranked or counted, not read.
     """
 
     name: str
@@ -124,11 +125,26 @@ class CheckResult:
     limit: float | None
     quantity: Quantity | None
     utilization: float | None
-    message: Phrase
     formula: str
-    sources: tuple[str, ...] = ()
-    fix: Phrase | None = None
-    input_limits: Mapping[str, float] | None = None
+    sources: tuple[str, ...]
+    explanation: Callable[[], Phrase] = field(repr=False, compare=False)
+    remedy: Callable[[], "Phrase | None"] = field(repr=False, compare=False)
+    remedy_inputs: Callable[[], "Mapping[str, float] | None"] = field(repr=False, compare=False)
+
+    @property
+    def message(self) -> Phrase:
+        return self.explanation()
+
+    @property
+    def fix(self) -> Phrase | None:
+        return None if self.passed else self.remedy()
+
+    @property
+    def input_limits(self) -> Mapping[str, float] | None:
+        if self.passed:
+            return None
+        limits = self.remedy_inputs()
+        return dict(limits) if limits else None
 
 
 @dataclass(frozen=True, slots=True)

@@ -6,6 +6,7 @@ serves one screw (a table of one) or the whole catalog; ``row(i)`` gives one
 candidate's numbers as plain floats.
 """
 
+from collections.abc import Sequence
 from dataclasses import dataclass, fields
 from typing import Any, Generic, TypeVar
 
@@ -61,9 +62,14 @@ class Quantities(Generic[V]):
     holding_physics_nm: V
     brake_nm: V
 
-    def row(self, i: int) -> "Quantities[float]":
-        """Candidate ``i``'s numbers as floats (NaN where a limit does not exist)."""
-        return Quantities(**{f.name: float(getattr(self, f.name)[i]) for f in fields(self)})
+    def rows(self, index: Sequence[int]) -> "list[Quantities[float]]":
+        """The numbers of the candidates at ``index`` as floats (NaN: no such limit)."""
+        columns = [getattr(self, name)[list(index)].tolist() for name in NAMES]
+        return [Quantities(*values) for values in zip(*columns, strict=True)]
+
+
+#: The fields of ``Quantities``, in declaration order.
+NAMES = tuple(f.name for f in fields(Quantities))
 
 
 def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:

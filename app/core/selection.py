@@ -5,7 +5,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from app.core.evaluate import evaluation
+from app.core.evaluate import evaluations
 from app.core.model import Application, Evaluation, ScrewSpec, Selection, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
 from app.core.screening import Screening, screen
@@ -52,8 +52,8 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     ranked = _rank_order(app, table, s)[: app.limit]
     failing = np.flatnonzero(~s.passed)
     nearest = failing[np.argsort(s.max_utilization[failing], kind="stable")][: app.limit]
-    passing = tuple(evaluation(app, s, int(p)) for p in ranked)
-    rejected = tuple(evaluation(app, s, int(p)) for p in nearest)
+    passing = tuple(evaluations(app, s, ranked.tolist()))
+    rejected = tuple(evaluations(app, s, nearest.tolist()))
     by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(s.passed.sum())

@@ -128,9 +128,15 @@ class CandidateTable:
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":
-        """The candidates at ``index``, in that order."""
-        picked = {f.name: getattr(self, f.name)[index] for f in fields(self) if f.name != "screws"}
+        """The candidates at ``index``, in that order (the table itself for all of them)."""
+        if len(index) == len(self) and bool(np.all(index == np.arange(len(self)))):
+            return self
+        picked = {name: getattr(self, name)[index] for name in COLUMNS}
         return CandidateTable(screws=tuple(self.screws[i] for i in index), **picked)
 
     def __len__(self) -> int:
         return len(self.screws)
+
+
+#: The array fields of a table, in declaration order.
+COLUMNS = tuple(f.name for f in fields(CandidateTable) if f.name != "screws")
