@@ -67,9 +67,10 @@ class Entry:
             )
         return value
 
-    def range(self, name: str) -> tuple[float, float]:
-        low = self.number(name, "min", allow_zero=True)
-        high = self.number(name, "max", allow_zero=True)
+    def range(self, name: str, *, positive: bool = True) -> tuple[float, float]:
+        """A min-max pair; temperatures pass ``positive=False`` (below 0 C is a range)."""
+        low = self.number(name, "min", positive=positive, allow_zero=True)
+        high = self.number(name, "max", positive=positive, allow_zero=True)
         if low > high:
             raise self.fail(name, f"min {low:g} is above max {high:g}")
         return low, high

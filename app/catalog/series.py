@@ -140,24 +140,47 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
     }
 
 
+#: Values a family may leave out (a vendor-neutral family has no vacuum or accuracy data):
+#: field name -> (catalog key, SI unit, factor from the catalog unit), in display order.
+ACCURACY_VALUES = {
+    "lead_accuracy": ("lead_accuracy_mm_per_mm", "m/m", 1.0),
+    "repeatability": ("repeatability_mm", "m", MM),
+}
+NUT_VALUES = {
+    "straightness": ("straightness_mm_per_300mm", "m/m", MM / 0.3),
+    "nut_expansion": ("nut_expansion_per_c", "1/K", 1.0),
+    "nut_tensile_strength": ("nut_tensile_strength_mpa", "Pa", 1e6),
+}
+
+
+def _optional(entry: Entry, values: Mapping[str, tuple[str, str, float]]) -> dict[str, Sourced]:
+    return {
+        name: _sourced(entry, key, unit, scale)
+        for name, (key, unit, scale) in values.items()
+        if entry.has(key)
+    }
+
+
 def _other_fields(entry: Entry) -> dict[str, Sourced]:
-    """Accuracy, nut and environment fields: shown, some checked."""
+    """Accuracy, material names, nut and environment fields: shown, some checked; the
+    optional ones only when the data gives them, so nothing unknown is shown as known."""
     fields = {
-        "lead_accuracy": _sourced(entry, "lead_accuracy_mm_per_mm", "m/m"),
-        "repeatability": _sourced(entry, "repeatability_mm", "m", MM),
+        **_optional(entry, ACCURACY_VALUES),
         "nut_material": Sourced(entry.text("nut_material"), "", entry.prov("nut_material")),
         "screw_material": Sourced(entry.text("screw_material"), "", entry.prov("screw_material")),
-        "straightness": _sourced(entry, "straightness_mm_per_300mm", "m/m", MM / 0.3),
-        "nut_expansion": _sourced(entry, "nut_expansion_per_c", "1/K"),
-        "nut_tensile_strength": _sourced(entry, "nut_tensile_strength_mpa", "Pa", 1e6),
-        "outgassing": Sourced(
-            entry.rows("outgassing_percent", 2), "h, %", entry.prov("outgassing_percent")
-        ),
+        **_optional(entry, NUT_VALUES),
     }
+    if entry.has("outgassing_percent"):
+        rows = entry.rows("outgassing_percent", 2)
+        fields["outgassing"] = Sourced(rows, "h, %", entry.prov("outgassing_percent"))
     if entry.has("temperature_range_c"):
-        t_range = entry.range("temperature_range_c")
+        t_range = entry.range("temperature_range_c", positive=False)
         fields["temperature_range"] = Sourced(t_range, "C", entry.prov("temperature_range_c"))
     return fields
+
+
+def _value_or_none(fields: Mapping[str, Sourced], name: str) -> Any:
+    return fields[name].value if name in fields else None
 
 
 def _variant(entry: Entry, key: str, family_data: Mapping[str, Any]) -> Variant:
@@ -205,7 +228,7 @@ def _screw(
     prov["coating"] = offered
     life = variant.fields.get("life")
     max_length = variant.fields.get("max_length")
-    t_range = fields.get("temperature_range")
+    t_min, t_max = _value_or_none(fields, "temperature_range") or (None, None)
     od, rd = fields["outer_diameter"].value, fields["root_diameter"].value
     return ScrewSpec(
         id=family.screw_id(series.id, lead_m, od, variant.id_part),
@@ -232,12 +255,12 @@ def _screw(
         backlash_max_m=fields["backlash"].value[1],
         life_min_m=None if life is None else life.value[0],
         life_max_m=None if life is None else life.value[1],
-        lead_accuracy_m_per_m=fields["lead_accuracy"].value,
-        repeatability_m=fields["repeatability"].value,
-        temperature_min_c=None if t_range is None else t_range.value[0],
-        temperature_max_c=None if t_range is None else t_range.value[1],
+        lead_accuracy_m_per_m=_value_or_none(fields, "lead_accuracy"),
+        repeatability_m=_value_or_none(fields, "repeatability"),
+        temperature_min_c=t_min,
+        temperature_max_c=t_max,
         oil_compatible=variant.fields["oil_compatible"].value,
-        outgassing=fields["outgassing"].value,
+        outgassing=_value_or_none(fields, "outgassing") or (),
         material_name=fields["screw_material"].value,
         nut_material=fields["nut_material"].value,
         family_id=family.id,
