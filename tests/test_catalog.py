@@ -334,8 +334,8 @@ def test_nut_tensile_strength_is_9700_psi() -> None:
 
 
 def test_an_extra_directory_adds_its_series(catalog: Catalog) -> None:
-    """README "Adding a series": a user's directory is merged in; its values keep their
-    provenance; the built-in defaults fill what it leaves out."""
+    """README "Adding a series to the seed's group": a user's directory is merged in; its
+    values keep their provenance; the seed group it extends fills what it leaves out."""
     merged = load_catalog([FIXTURES])
     assert set(merged.series) == set(catalog.series) | {"MY10"}
     mine = merged.series["MY10"]

@@ -3,12 +3,15 @@ own pattern, its screws carry its thread form and nut variants and none of the s
 rules, and the selection ranks it beside the seed's families (catalog/README.md)."""
 
 import math
+import re
 import tomllib
 from pathlib import Path
 
 import pytest
 
 from app.catalog import Catalog, CatalogError, load_catalog
+from app.catalog.family import DECLARATIONS, VARIANT_FIELDS
+from app.catalog.series import SERIES_FIELDS
 from app.core.model import Application
 from app.core.selection import select
 
@@ -128,3 +131,16 @@ def test_a_users_group_extends_the_seed_and_its_families_layer_over_it(
     assert {s.friction_static for s in catalog.series["MY10"].screws} == {0.1}
     assert {s.friction_dynamic for s in catalog.series["MY10"].screws} == {0.15, 0.09}
     assert {s.friction_static for s in catalog.series["B8000"].screws} == {0.08}
+
+
+def test_the_readme_schema_example_uses_the_loaders_names() -> None:
+    """catalog/README.md "Family file schema": the example's keys are the ones read."""
+    readme = (Path(__file__).resolve().parents[1] / "catalog" / "README.md").read_text()
+    section = readme.split("## Family file schema", 1)[1]
+    example = tomllib.loads(re.findall(r"```toml\n(.*?)```", section, flags=re.S)[0])
+    assert set(example["family"]) <= DECLARATIONS
+    for variant in example["variants"].values():
+        assert set(variant) <= VARIANT_FIELDS
+    for series in example["series"]:
+        assert set(series) - {"id"} <= SERIES_FIELDS
+    assert set(example["defaults"]) <= SERIES_FIELDS
