@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from app.catalog import PROVENANCE_KINDS, Catalog, CatalogError, load_catalog
+from app.core.model import ScrewSpec
 from app.paths import resource_dir
 
 CATALOG_DIR = resource_dir("catalog")
@@ -51,6 +52,17 @@ SEED_INERTIA_PER_IN = {
 }
 
 
+#: The seed's families (catalog/*-series.toml); values of the seed hold for their screws only.
+SEED_FAMILIES = {"B", "ZBX", "KHD", "VHD"}
+SEED_IDS = (Path(__file__).parent / "fixtures" / "seed_candidate_ids.txt").read_text().split()
+
+
+def seed_screws(catalog: Catalog) -> list[ScrewSpec]:
+    """The seed families' screws, so that another family in the catalog leaves the seed
+    assertions alone."""
+    return [s for s in catalog.screws if s.family_id in SEED_FAMILIES]
+
+
 def size_number(series_id: str) -> int:
     return int(re.sub(r"\D", "", series_id))
 
@@ -69,23 +81,55 @@ def test_the_built_in_catalog_loads(catalog: Catalog) -> None:
     assert set(catalog.series) == set(SEED_SERIES)
     assert len(catalog.screws) == len(catalog.by_id) > 0
     assert catalog.version.startswith("seed-")
+    assert {s.family_id for s in catalog.screws} == SEED_FAMILIES
+
+
+def test_seed_candidate_ids_are_unchanged_by_the_family_schema(catalog: Catalog) -> None:
+    """The ids users have saved and shared stay valid: the id pattern of the seed's group
+    gives, in the same order, every id the per-coating schema gave (the list was written
+    by that loader)."""
+    assert [s.id for s in seed_screws(catalog)] == SEED_IDS
+
+
+def test_seed_variants_carry_their_own_rules(catalog: Catalog) -> None:
+    """Seed: the traverse-speed table (2.5-12 mm lead 100 mm/s, 12-25 mm 250, 25-60 mm 760)
+    belongs to every seed screw; the variant key names the coating; TFE is kept from oil."""
+    bands = ((0.0025, 0.012, 0.100), (0.012, 0.025, 0.250), (0.025, 0.060, 0.760))
+    for s in seed_screws(catalog):
+        assert [pytest.approx(band) for band in bands] == list(s.traverse_bands)
+        assert s.variant == ("tfe" if s.coated else "none")
+        assert s.id.endswith("-TFE") is s.coated
+        assert s.oil_compatible is not s.coated
+        assert s.provenance["traverse_speed"].kind == "seed"
+        assert s.provenance["oil_compatible"].kind == "seed"
+
+
+def _values_of(entry: str, table: dict[str, object]) -> list[tuple[str, str, object]]:
+    """(entry, field, raw) for the values of one table; plain-text and true/false keys
+    (ids, names, id suffixes, classifications) name things rather than measure them."""
+    out: list[tuple[str, str, object]] = []
+    for name, raw in table.items():
+        if name == "variants" and isinstance(raw, dict):
+            for key, values in raw.items():
+                out += _values_of(f"{entry}.variants.{key}", values)
+        elif not isinstance(raw, str | bool):
+            out.append((entry, name, raw))
+    return out
 
 
 def _valued_tables(path: Path) -> list[tuple[str, str, object]]:
-    """(entry, field, raw) for every catalog value of a file: [defaults], [[series]] and
-    [materials.*]; plain-text ids and names are not values."""
+    """(entry, field, raw) for every catalog value of a file: [defaults], [[series]],
+    [variants.*], [rules.*], [materials.*] and the thread form."""
     with path.open("rb") as handle:
         data = tomllib.load(handle)
-    out: list[tuple[str, str, object]] = []
-    for name, raw in data.get("defaults", {}).items():
-        out.append(("defaults", name, raw))
+    out = _values_of("defaults", data.get("defaults", {}))
     for entry in data.get("series", []):
-        for name, raw in entry.items():
-            if name not in ("id", "name"):
-                out.append((entry["id"], name, raw))
-    for material, table in data.get("materials", {}).items():
-        for name, raw in table.items():
-            out.append((f"materials.{material}", name, raw))
+        out += _values_of(entry["id"], {k: v for k, v in entry.items() if k != "id"})
+    for table in ("variants", "rules", "materials"):
+        for name, values in data.get(table, {}).items():
+            out += _values_of(f"{table}.{name}", values)
+    if "thread_form" in data.get("family", {}):
+        out.append(("family", "thread_form", data["family"]["thread_form"]))
     return out
 
 
@@ -98,7 +142,8 @@ def test_every_value_carries_its_provenance(path: Path) -> None:
     for entry, name, raw in values:
         where = f"{path.name} {entry}.{name}"
         assert isinstance(raw, dict), where
-        assert "value" in raw or {"min", "max"} <= raw.keys(), where
+        number_keys = {"value"}, {"min", "max"}, {"half_angle_deg"}  # thread form
+        assert any(keys <= raw.keys() for keys in number_keys), where
         assert raw.get("provenance") in PROVENANCE_KINDS, where
         if raw["provenance"] != "seed":
             assert isinstance(raw.get("source"), str) and raw["source"].strip(), where
@@ -239,7 +284,7 @@ def test_coating_variants(
     """Seed physical properties: friction static 0.08, dynamic 0.09 with TFE, 0.15 uncoated;
     lengths up to 4 m, 2.4 m (8 ft) with TFE coating. engineering.md section 6: PV limits
     (assumed) 3,000 psi ft/min uncoated, 5,000 with TFE."""
-    screws = [s for s in catalog.screws if s.coated is coated]
+    screws = [s for s in seed_screws(catalog) if s.coated is coated]
     assert screws
     for s in screws:
         assert s.friction_static == 0.08
@@ -254,7 +299,7 @@ def test_common_seed_values(catalog: Catalog) -> None:
     0.0013 mm; 0-93 C; B series backlash 0.076-0.25 mm, anti-backlash none; vacuum weight
     loss 24/48/96/330 h: 0.20/0.26/0.35/0.37 %. Handbook: 303 E 193 GPa, 8000 kg/m^3,
     17.3e-6 /C; Acme 14.5 deg (assumed)."""
-    for s in catalog.screws:
+    for s in seed_screws(catalog):
         assert s.material_name == "stainless-303" and s.nut_material == "polyacetal"
         assert s.youngs_modulus_pa == 193e9 and s.density_kg_m3 == 8000.0
         assert s.screw_expansion_per_k == pytest.approx(17.3e-6)
@@ -289,8 +334,8 @@ def test_nut_tensile_strength_is_9700_psi() -> None:
 
 
 def test_an_extra_directory_adds_its_series(catalog: Catalog) -> None:
-    """README "Adding a series": a user's directory is merged in; its values keep their
-    provenance; the built-in defaults fill what it leaves out."""
+    """README "Adding a series to the seed's group": a user's directory is merged in; its
+    values keep their provenance; the seed group it extends fills what it leaves out."""
     merged = load_catalog([FIXTURES])
     assert set(merged.series) == set(catalog.series) | {"MY10"}
     mine = merged.series["MY10"]

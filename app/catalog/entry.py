@@ -1,0 +1,142 @@
+"""Typed reading of one catalog entry: every value is a table with its provenance.
+
+An ``Entry`` wraps the merged data of one entry (a series, a variant, a material, a
+family declaration) and names the file, the entry and the field in every error, so a
+user fixing a data file is told exactly where to look.
+"""
+
+import math
+from collections.abc import Iterable, Mapping
+from typing import Any, TypeGuard
+
+from app.catalog.errors import CatalogError
+from app.core.model import Provenance
+
+PROVENANCE_KINDS = ("seed", "handbook", "derived", "assumed")
+
+
+def _is_number(value: object) -> TypeGuard[int | float]:
+    """A TOML integer or float (TOML booleans are Python ints: not numbers here)."""
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+class Entry:
+    """Reads typed fields of one merged entry, naming the place on error."""
+
+    def __init__(self, file: str, entry: str, data: Mapping[str, Any]) -> None:
+        self.file, self.entry, self.data = file, entry, data
+
+    def fail(self, name: str, reason: str) -> CatalogError:
+        return CatalogError(self.file, self.entry, name, reason)
+
+    def has(self, name: str) -> bool:
+        return name in self.data
+
+    def leaf(self, name: str) -> Mapping[str, Any]:
+        """The raw value table of ``name``, after checking its provenance and source."""
+        if name not in self.data:
+            raise self.fail(name, "missing")
+        raw = self.data[name]
+        if not isinstance(raw, Mapping):
+            raise self.fail(name, "must be a table {value = ..., provenance = ..., source = ...}")
+        kind = raw.get("provenance")
+        if kind not in PROVENANCE_KINDS:
+            raise self.fail(name, f"provenance must be one of {', '.join(PROVENANCE_KINDS)}")
+        source = raw.get("source")
+        if kind != "seed" and not (isinstance(source, str) and source.strip()):
+            raise self.fail(name, f"a '{kind}' value needs a source or rule")
+        return raw
+
+    def prov(self, name: str) -> Provenance:
+        raw = self.leaf(name)
+        return Provenance(raw["provenance"], str(raw.get("source", "seed pages")))
+
+    def number(
+        self, name: str, key: str = "value", *, positive: bool = True, allow_zero: bool = False
+    ) -> float:
+        raw = self.leaf(name)
+        value = raw.get(key)
+        if not _is_number(value):
+            raise self.fail(name, f"'{key}' must be a number")
+        value = float(value)
+        if not math.isfinite(value):
+            raise self.fail(name, f"'{key}' must be finite")
+        if positive and (value < 0 or (value == 0 and not allow_zero)):
+            raise self.fail(
+                name, f"'{key}' must be {'>= 0' if allow_zero else '> 0'}, got {value:g}"
+            )
+        return value
+
+    def range(self, name: str, *, positive: bool = True) -> tuple[float, float]:
+        """A min-max pair; temperatures pass ``positive=False`` (below 0 C is a range)."""
+        low = self.number(name, "min", positive=positive, allow_zero=True)
+        high = self.number(name, "max", positive=positive, allow_zero=True)
+        if low > high:
+            raise self.fail(name, f"min {low:g} is above max {high:g}")
+        return low, high
+
+    def text(self, name: str, choices: Iterable[str] | None = None, key: str = "value") -> str:
+        value = self.leaf(name).get(key)
+        if not isinstance(value, str):
+            raise self.fail(name, f"'{key}' must be text")
+        if choices is not None and value not in choices:
+            raise self.fail(name, f"must be one of {', '.join(choices)}, got '{value}'")
+        return value
+
+    def flag(self, name: str) -> bool:
+        value = self.leaf(name).get("value")
+        if not isinstance(value, bool):
+            raise self.fail(name, "'value' must be true or false")
+        return value
+
+    def texts(self, name: str) -> list[str]:
+        value = self.leaf(name).get("value")
+        if not isinstance(value, list) or not value or not all(isinstance(v, str) for v in value):
+            raise self.fail(name, "'value' must be a non-empty list of text")
+        return list(value)
+
+    def rows(self, name: str, width: int) -> tuple[tuple[float, ...], ...]:
+        """A table of rows of ``width`` finite numbers >= 0 (outgassing, speed bands)."""
+        value = self.leaf(name).get("value")
+        ok = isinstance(value, list) and all(
+            isinstance(row, list)
+            and len(row) == width
+            and all(_is_number(x) and math.isfinite(x) and x >= 0 for x in row)
+            for row in value
+        )
+        if not ok or not isinstance(value, list):
+            raise self.fail(name, f"'value' must be a list of rows of {width} numbers >= 0")
+        return tuple(tuple(float(x) for x in row) for row in value)
+
+    def numbers(self, name: str) -> list[float]:
+        value = self.leaf(name).get("value")
+        if not isinstance(value, list) or not value:
+            raise self.fail(name, "'value' must be a non-empty list of numbers")
+        out = []
+        for item in value:
+            if not _is_number(item):
+                raise self.fail(name, "every item must be a number")
+            if not (math.isfinite(item) and item > 0):
+                raise self.fail(name, f"every item must be finite and > 0, got {item}")
+            out.append(float(item))
+        return out
+
+    def plain_text(self, name: str, default: str | None = None) -> str:
+        """A plain-text key (an id, a suffix): no provenance, it names rather than measures."""
+        value = self.data.get(name, default)
+        if not isinstance(value, str):
+            raise self.fail(name, "missing or not text")
+        return value
+
+    def plain_flag(self, name: str) -> bool:
+        """A plain true/false key that classifies (coated, anti-backlash)."""
+        value = self.data.get(name)
+        if not isinstance(value, bool):
+            raise self.fail(name, "missing or not true/false")
+        return value
+
+    def check_known(self, known: frozenset[str]) -> None:
+        """Every field of the entry is one the loader reads (catches misspelt names)."""
+        for name in self.data:
+            if name not in known:
+                raise self.fail(name, "unknown field (see catalog/README.md for the fields)")

@@ -1,0 +1,179 @@
+"""Catalog files on disk: finding them, reading them safely, and layering their tables.
+
+Every fault of the file system or of the TOML shape (unreadable file, symlink loop,
+invalid UTF-8, a table of the wrong type) becomes a ``CatalogError`` naming the file,
+so the app stops with a message instead of a traceback.
+
+Layering (catalog/README.md, "Layering"): a family file layers over one group, the
+group named by its ``[family] extends``, or else the ``common.toml`` of its own
+directory; a group may itself extend another group. Nothing is inherited otherwise,
+except by files of the first layout (no ``schema`` key), which keep their old meaning:
+they layer over the built-in seed group.
+"""
+
+import tomllib
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from app.catalog.errors import CatalogError
+
+SCHEMA = 2
+#: Files without a ``schema`` key are the first layout (series files over the seed group).
+FIRST_LAYOUT = 1
+GROUP_FILE = "common.toml"
+NESTED_TABLES = ("variants", "nut_types", "rules", "materials")
+LAYER_TABLES = ("family", "defaults", *NESTED_TABLES)
+GROUP_KEYS = frozenset({"schema", "catalog_version", "group", *LAYER_TABLES})
+FAMILY_KEYS = frozenset({"schema", "series", *LAYER_TABLES})
+
+
+@dataclass(frozen=True, slots=True)
+class CatalogFile:
+    """One parsed file: its name (as errors show it), its directory and its tables."""
+
+    name: str
+    directory: Path
+    data: Mapping[str, Any]
+
+
+@dataclass(frozen=True, slots=True)
+class Layer:
+    """The tables one file (or a file over its group) gives the families built on it."""
+
+    file: str
+    family: Mapping[str, Any] = field(default_factory=dict)
+    defaults: Mapping[str, Any] = field(default_factory=dict)
+    variants: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
+    nut_types: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
+    rules: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
+
+
+def _toml_type(value: object) -> str:
+    names = {bool: "a boolean", int: "an integer", float: "a float", str: "text", list: "an array"}
+    return names.get(type(value), type(value).__name__)
+
+
+def _reason(exc: OSError) -> str:
+    return exc.strerror or str(exc)
+
+
+def read_file(path: Path, digest: Any) -> CatalogFile:
+    """Parse one file; its bytes feed the version digest so any edit shows in results."""
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise CatalogError(path.name, "-", "-", f"cannot read the file: {_reason(exc)}") from exc
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise CatalogError(path.name, "-", "-", f"not valid UTF-8 at byte {exc.start}") from exc
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CatalogError(path.name, "-", "-", f"invalid TOML: {exc}") from exc
+    digest.update(raw)
+    return CatalogFile(path.name, path.parent, data)
+
+
+def _entries(directory: Path) -> list[Path]:
+    try:
+        return sorted(directory.iterdir())
+    except OSError as exc:
+        raise CatalogError(str(directory), "-", "-", f"cannot list: {_reason(exc)}") from exc
+
+
+def _resolved(directory: Path) -> Path:
+    try:
+        return directory.resolve(strict=True)
+    except (OSError, RuntimeError) as exc:
+        raise CatalogError(str(directory), "-", "-", f"cannot follow: {exc}") from exc
+
+
+def catalog_dirs(roots: Iterable[Path]) -> list[Path]:
+    """Each root and its immediate subdirectories (a maker's group of family files).
+
+    A directory reached twice (a symlink pointing back up, or a root given twice) is an
+    error rather than a second copy of every series.
+    """
+    seen: dict[Path, Path] = {}
+    out = []
+    for root in roots:
+        if not root.is_dir():
+            raise CatalogError(str(root), "-", "-", "catalog directory not found")
+        subdirs = [p for p in _entries(root) if p.is_dir() and not p.name.startswith(".")]
+        for directory in (root, *subdirs):
+            real = _resolved(directory)
+            if real in seen:
+                raise CatalogError(
+                    str(directory), "-", "-", f"reaches {seen[real]} again (a symlink loop?)"
+                )
+            seen[real] = directory
+            out.append(directory)
+    return out
+
+
+def toml_files(directory: Path) -> list[Path]:
+    """The ``*.toml`` entries of a directory; a dangling or looping link is kept so that
+    reading it reports the fault instead of skipping the file silently."""
+    return [p for p in _entries(directory) if p.suffix == ".toml" and not p.is_dir()]
+
+
+def table(data: Mapping[str, Any], key: str, file: str, entry: str = "-") -> dict[str, Any]:
+    """``data[key]`` as a table ({} when absent), or a CatalogError naming it."""
+    value = data.get(key, {})
+    if not isinstance(value, dict):
+        raise CatalogError(file, entry, key, f"must be a table, got {_toml_type(value)}")
+    return value
+
+
+def nested(data: Mapping[str, Any], key: str, file: str) -> dict[str, dict[str, Any]]:
+    """A table of tables such as ``[variants.NAME]``, each checked to be a table."""
+    outer = table(data, key, file)
+    for name in outer:
+        table(outer, name, file, key)
+    return outer
+
+
+def check_shape(source: CatalogFile, known: frozenset[str]) -> int:
+    """The file's layout version, after checking its top-level keys."""
+    for key in source.data:
+        if key not in known:
+            raise CatalogError(source.name, "-", key, "unknown top-level key or table")
+    schema = source.data.get("schema", FIRST_LAYOUT)
+    if schema not in (FIRST_LAYOUT, SCHEMA):
+        raise CatalogError(source.name, "-", "schema", f"must be {SCHEMA}; got {schema!r}")
+    return int(schema)
+
+
+def layer_of(source: CatalogFile) -> Layer:
+    """The layering tables of one file, each checked to be a table."""
+    data, name = source.data, source.name
+    return Layer(
+        file=name,
+        family=table(data, "family", name),
+        defaults=table(data, "defaults", name),
+        variants=nested(data, "variants", name),
+        nut_types=nested(data, "nut_types", name),
+        rules=nested(data, "rules", name),
+    )
+
+
+def _merge_nested(
+    base: Mapping[str, Mapping[str, Any]], top: Mapping[str, Mapping[str, Any]]
+) -> dict[str, Mapping[str, Any]]:
+    return {key: {**base.get(key, {}), **top.get(key, {})} for key in {**base, **top}}
+
+
+def over(base: Layer, top: Layer) -> Layer:
+    """``top`` layered over ``base``: per key, and per field inside variants, nut types and
+    rules, so a family can change one value of a group's variant."""
+    return Layer(
+        file=top.file,
+        family={**base.family, **top.family},
+        defaults={**base.defaults, **top.defaults},
+        variants=_merge_nested(base.variants, top.variants),
+        nut_types=_merge_nested(base.nut_types, top.nut_types),
+        rules=_merge_nested(base.rules, top.rules),
+    )

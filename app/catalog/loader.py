@@ -1,0 +1,122 @@
+"""Load the built-in catalog and any extra directories into one ``Catalog``."""
+
+import hashlib
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+from typing import Any
+
+from app.catalog.entry import Entry
+from app.catalog.errors import CatalogError
+from app.catalog.family import build_family
+from app.catalog.files import (
+    FAMILY_KEYS,
+    GROUP_FILE,
+    CatalogFile,
+    catalog_dirs,
+    check_shape,
+    layer_of,
+    nested,
+    over,
+    read_file,
+    toml_files,
+)
+from app.catalog.groups import Groups, read_group
+from app.catalog.models import Catalog, Material, Series, Sourced
+from app.catalog.series import build_series
+from app.core.table import CandidateTable
+from app.paths import resource_dir
+
+MATERIAL_FIELDS = frozenset({"youngs_modulus_gpa", "density_kg_m3", "expansion_per_c"})
+
+
+def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
+    entry = Entry(file, f"materials.{name}", table)
+    entry.check_known(MATERIAL_FIELDS)
+    return Material(
+        Sourced(entry.number("youngs_modulus_gpa") * 1e9, "Pa", entry.prov("youngs_modulus_gpa")),
+        Sourced(entry.number("density_kg_m3"), "kg/m3", entry.prov("density_kg_m3")),
+        Sourced(entry.number("expansion_per_c"), "1/K", entry.prov("expansion_per_c")),
+    )
+
+
+def _materials(sources: Iterable[CatalogFile]) -> dict[str, Material]:
+    """Materials are one namespace across all files: a series names the one it uses."""
+    out: dict[str, Material] = {}
+    for source in sources:
+        for name, table in nested(source.data, "materials", source.name).items():
+            if name in out:
+                raise CatalogError(source.name, f"materials.{name}", "-", "duplicate material")
+            out[name] = _material(source.name, name, table)
+    return out
+
+
+def _series_entries(source: CatalogFile) -> list[tuple[str, dict[str, Any]]]:
+    """(id, entry without its id) for each ``[[series]]`` of a family file."""
+    entries = source.data.get("series")
+    if not isinstance(entries, list) or not entries:
+        raise CatalogError(source.name, "-", "series", "no [[series]] entries")
+    out = []
+    for index, raw in enumerate(entries):
+        sid = raw.get("id") if isinstance(raw, dict) else None
+        if not isinstance(sid, str) or not sid.strip():
+            raise CatalogError(source.name, f"series[{index}]", "id", "missing or not text")
+        out.append((sid, {k: v for k, v in raw.items() if k != "id"}))
+    return out
+
+
+def _family_series(
+    source: CatalogFile, groups: Groups, materials: Mapping[str, Material]
+) -> list[Series]:
+    """Every series of one family file, built over the group the file layers on."""
+    schema = check_shape(source, FAMILY_KEYS)
+    own = layer_of(source)
+    family = build_family(over(groups.base_of(source, own.family, schema), own))
+    return [build_series(family, sid, data, materials) for sid, data in _series_entries(source)]
+
+
+def _unique(series: Iterable[Series]) -> dict[str, Series]:
+    """Series ids and candidate ids are unique across every directory."""
+    by_series: dict[str, Series] = {}
+    owner: dict[str, Series] = {}
+    for s in series:
+        if s.id in by_series:
+            raise CatalogError(s.file, s.id, "id", f"duplicate id (also in {by_series[s.id].file})")
+        by_series[s.id] = s
+        for screw in s.screws:
+            if screw.id in owner:
+                where = f"{owner[screw.id].id} in {owner[screw.id].file}"
+                raise CatalogError(
+                    s.file, s.id, "id_pattern", f"candidate id '{screw.id}' also made by {where}"
+                )
+            owner[screw.id] = s
+    return by_series
+
+
+def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
+    """Load the built-in catalog and any extra directories; raise CatalogError on any fault."""
+    digest = hashlib.sha256()
+    sources = [
+        read_file(path, digest)
+        for directory in catalog_dirs([resource_dir("catalog"), *map(Path, extra_dirs)])
+        for path in toml_files(directory)
+    ]
+    group_files = [s for s in sources if s.name == GROUP_FILE]
+    groups = Groups([read_group(s) for s in group_files])
+    materials = _materials(sources)
+    series = [
+        s
+        for source in sources
+        if source.name != GROUP_FILE
+        for s in _family_series(source, groups, materials)
+    ]
+    by_series = _unique(series)
+    screws = tuple(screw for s in by_series.values() for screw in s.screws)
+    versions = [s.data["catalog_version"] for s in group_files if "catalog_version" in s.data]
+    return Catalog(
+        version=f"{versions[0] if versions else 'catalog'}+{digest.hexdigest()[:8]}",
+        series=by_series,
+        screws=screws,
+        table=CandidateTable.build(screws),
+        materials=materials,
+        by_id={screw.id: screw for screw in screws},
+    )

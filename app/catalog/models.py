@@ -1,0 +1,52 @@
+"""What the loader hands to the rest of the app: sourced values, series, the catalog."""
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from app.core.model import Provenance, ScrewSpec
+from app.core.table import CandidateTable
+
+
+@dataclass(frozen=True, slots=True)
+class Sourced:
+    """A catalog value with its unit and provenance, as shown to users."""
+
+    value: Any
+    unit: str
+    provenance: Provenance
+
+
+@dataclass(frozen=True, slots=True)
+class Material:
+    """A screw material's constants in SI, each with its provenance."""
+
+    youngs_modulus_pa: Sourced
+    density_kg_m3: Sourced
+    expansion_per_k: Sourced
+
+
+@dataclass(frozen=True, slots=True)
+class Series:
+    """One catalog series (one size): display fields with provenance, and its screws."""
+
+    id: str
+    name: str
+    family: str
+    family_name: str
+    type: str
+    file: str
+    fields: Mapping[str, Sourced]
+    screws: tuple[ScrewSpec, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Catalog:
+    """Every series, every expanded candidate, and the candidates as screening columns."""
+
+    version: str
+    series: Mapping[str, Series]
+    screws: tuple[ScrewSpec, ...]
+    table: CandidateTable
+    materials: Mapping[str, Material]
+    by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)
