@@ -6,9 +6,9 @@ from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.selection import select
 from app.formulas import FORMULAS
+from app.page_form import share_query
 from app.present import candidate_dict, custom_screw, selection_dict
 from app.schemas import ApplicationIn, CatalogScrewIn, CustomScrewIn
-from app.share import share_query
 
 
 class UnknownScrew(LookupError):
