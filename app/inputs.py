@@ -8,7 +8,7 @@ hand-written base ``ApplicationInputs``: ``extra="forbid"``, the rule that a fie
 
 Typing: mypy cannot see the fields of a model made at run time, so for mypy
 ``ApplicationIn`` is the base class itself. Reading an input as an attribute
-(``inputs.load_n``) is then a type error on purpose; code reads ``inputs.to_core()``, a
+(``inputs.<api name>``) is then a type error on purpose; code reads ``inputs.to_core()``, a
 typed dataclass in SI, or goes through the table.
 
 Text numbers (a query string, or a string in JSON) must be plain ASCII decimals
@@ -84,8 +84,8 @@ def describe(field: InputField) -> str:
     """The field's API description from the table: label, API unit, help, and for a yes-no
     field shown as a choice what true and false mean.
 
-    >>> describe(BY_API["length_mm"])
-    'Screw length [mm]. Between the supports.'
+    >>> describe(BY_API["ambient_c"])
+    'Ambient temperature [°C]. Around the screw.'
     """
     unit = f" [{field.unit}]" if field.unit else ""
     meanings = "".join(f" {c.value}: {c.text}." for c in field.choices if field.kind == "yes-no")
@@ -129,7 +129,7 @@ class ApplicationInputs(BaseModel):
     @field_validator("*")
     @classmethod
     def _needs(cls, value: Any, info: ValidationInfo) -> Any:
-        """A field with ``needs`` (required life: stroke and cycles) is refused without them.
+        """A field with ``needs`` (the required life) is refused without those fields.
 
         Fields validate in table order, so the needed ones are already in ``info.data``.
         """

@@ -162,7 +162,7 @@ def value_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
     """An API value as the page writes it: numbers in display units to 6 figures,
     yes-no as 'true'/'false', choices as their value.
 
-    >>> value_text(BY_API["speed_mm_s"], 254.0, {**DEFAULT_UNITS, "length_unit": "in"})
+    >>> value_text(BY_PAGE["stroke"], 254.0, {**DEFAULT_UNITS, "length_unit": "in"})
     '10'
     """
     if isinstance(value, bool):
