@@ -9,7 +9,8 @@ bounds). The API model (``app.inputs``), the page form and its parser
 all generated from ``FIELDS``; none of them names an input.
 
 Choices come from the core's ``Literal`` types (``typing.get_args``); the table only adds
-their display texts, and ``_choices`` refuses a text table that misses or invents a value.
+their display texts (``texts``), and a text table that misses or invents a value is
+refused when the table is built.
 
 >>> BY_API["speed_mm_s"].core, BY_API["speed_mm_s"].si_factor, BY_PAGE["speed"].api
 ('speed_m_s', 0.001, 'speed_mm_s')
@@ -18,7 +19,7 @@ their display texts, and ``_choices`` refuses a text table that misses or invent
 """
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Literal, get_args
 
 from app.core.model import CoatingChoice, EndFixity, Orientation, RankBy
@@ -59,8 +60,11 @@ class InputField:
     text. ``bounds`` (low, high) are inclusive and in the API unit. A field with no
     ``default`` and ``required`` False is optional: leaving it out switches its check off.
     ``needs`` names API fields that must be given whenever this one is; ``none_word`` is
-    the word the page accepts for "no value" (lead: "any"). A ``drawn`` choice is shown
-    as radio buttons, each with a drawing of its value ("fixed-free": left end, right end).
+    the word the page accepts for "no value" (lead: "any"). ``options`` is the core's
+    Literal type of a choice field and ``texts`` the display text of each of its values;
+    a yes-no field with ``texts`` for "true" and "false" is shown as a two-way choice. A
+    ``drawn`` choice is shown as radio buttons, each with a drawing of its value
+    ("fixed-free": left end, right end).
     """
 
     api: str
@@ -76,11 +80,24 @@ class InputField:
     si_factor: float = 1.0
     quantity: Quantity | None = None
     unit: str = ""
-    choices: tuple[Choice, ...] = ()
     options: Any = None
+    texts: Mapping[str, str] = field(default_factory=dict)
     needs: tuple[str, ...] = ()
     none_word: str = ""
     drawn: bool = False
+
+    def __post_init__(self) -> None:
+        """Refuse display texts that miss or invent a value of the core's Literal."""
+        if self.options is not None and set(get_args(self.options)) != set(self.texts):
+            values = sorted(get_args(self.options))
+            raise ValueError(f"{self.api}: texts {sorted(self.texts)} do not match {values}")
+
+    @property
+    def choices(self) -> tuple[Choice, ...]:
+        """The allowed values with their texts: a Literal's in its order, or the yes-no
+        field's 'true' and 'false' when it is shown as a choice; none for other fields."""
+        values = get_args(self.options) if self.options is not None else tuple(self.texts)
+        return tuple(Choice(value, self.texts[value]) for value in values)
 
     def to_si(self, value: Any) -> Any:
         """The API value in the core's SI unit: numbers times ``si_factor``, others as given."""
@@ -103,23 +120,6 @@ class InputField:
     def choice_text(self, value: str) -> str:
         """The display text of one of the field's choices (the value itself if unknown)."""
         return next((c.text for c in self.choices if c.value == value), value)
-
-
-def _choices(options: Any, texts: Mapping[str, str]) -> tuple[Choice, ...]:
-    """Choices of a ``Literal`` type, in its order, each with its text from ``texts``.
-
-    >>> _choices(Orientation, {"horizontal": "Flat", "vertical": "Up"})[1]
-    Choice(value='vertical', text='Up')
-    """
-    values = get_args(options)
-    if set(values) != set(texts):
-        raise ValueError(f"choice texts {sorted(texts)} do not match {sorted(values)}")
-    return tuple(Choice(value, texts[value]) for value in values)
-
-
-def _yes_no(yes: str, no: str) -> tuple[Choice, ...]:
-    """Texts of a yes-no field shown as a two-way choice rather than a checkbox."""
-    return (Choice("true", yes), Choice("false", no))
 
 
 # fmt: off
@@ -159,22 +159,25 @@ FIELDS: tuple[InputField, ...] = (
         api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
         help="How the two screw ends are supported", group="Ends", kind="choice",
         default="fixed-simple", options=EndFixity, drawn=True,
-        choices=_choices(EndFixity, {
+        texts={
             "fixed-free": "Fixed – free", "simple-simple": "Simple – simple",
             "fixed-simple": "Fixed – simple", "fixed-fixed": "Fixed – fixed",
-        }),
+        },
     ),
     InputField(
         api="orientation", page="orientation", core="orientation", label="Orientation",
         help="Vertical adds the weight of the moving mass", group="Motion and load",
         kind="choice", default="horizontal", options=Orientation,
-        choices=_choices(Orientation, {"horizontal": "Horizontal", "vertical": "Vertical"}),
+        texts={"horizontal": "Horizontal", "vertical": "Vertical"},
     ),
     InputField(
         api="compression", page="compression", core="compression", label="Load direction",
         help="Only a pushed screw can buckle", group="Motion and load", kind="yes-no",
         default=True,
-        choices=_yes_no("Compression (pushes on the screw)", "Tension (pulls on the screw)"),
+        texts={
+            "true": "Compression (pushes on the screw)",
+            "false": "Tension (pulls on the screw)",
+        },
     ),
     InputField(
         api="require_anti_backlash", page="require_anti_backlash",
@@ -186,9 +189,9 @@ FIELDS: tuple[InputField, ...] = (
         api="coating", page="coating", core="coating", label="Coating",
         help="TFE lowers the friction", group="Nut and environment", kind="choice",
         default="auto", options=CoatingChoice,
-        choices=_choices(CoatingChoice, {
+        texts={
             "auto": "Auto (coated or not)", "tfe": "TFE coated", "none": "Uncoated",
-        }),
+        },
     ),
     InputField(
         api="oil_present", page="oil_present", core="oil_present", label="Oil present",
@@ -255,10 +258,10 @@ FIELDS: tuple[InputField, ...] = (
         api="rank_by", page="rank_by", core="rank_by", label="Rank by",
         help="Order of the passing screws", group="Results", kind="choice",
         default="torque", options=RankBy,
-        choices=_choices(RankBy, {
+        texts={
             "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
             "size": "Smallest size",
-        }),
+        },
     ),
     InputField(
         api="limit", page="limit", core="limit", label="Number of results",

@@ -18,9 +18,8 @@ from pydantic import (
     field_validator,
 )
 
-from app.inputs import ApplicationIn, NotBool, bounded_number
-
-__all__ = ["ApplicationIn"]
+from app.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
+from app.inputs import NotBool, bounded_number
 
 
 class MaterialIn(BaseModel):

@@ -101,6 +101,14 @@ def test_choices_are_the_cores_literals() -> None:
         assert properties[field.api]["enum"] == values, field.api
 
 
+def test_choice_texts_must_match_the_literal() -> None:
+    orientation = BY_API["orientation"]
+    with pytest.raises(ValueError, match="do not match"):
+        dataclasses.replace(orientation, texts={"horizontal": "Flat"})
+    with pytest.raises(ValueError, match="do not match"):
+        dataclasses.replace(orientation, texts={**orientation.texts, "diagonal": "Diagonal"})
+
+
 def test_every_default_round_trips_to_the_core() -> None:
     """Defaults through ApplicationIn and to_core equal the core's own defaults in SI."""
     core = ApplicationIn.model_validate(REQUIRED).to_core()
