@@ -87,7 +87,10 @@ class InputField:
     drawn: bool = False
 
     def __post_init__(self) -> None:
-        """Refuse display texts that miss or invent a value of the core's Literal."""
+        """Refuse a number without bounds (they keep every result finite) and display
+        texts that miss or invent a value of the core's Literal."""
+        if self.kind in ("number", "whole number") and self.bounds is None:
+            raise ValueError(f"{self.api}: a number needs bounds")
         if self.options is not None and set(get_args(self.options)) != set(self.texts):
             values = sorted(get_args(self.options))
             raise ValueError(f"{self.api}: texts {sorted(self.texts)} do not match {values}")

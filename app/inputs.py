@@ -95,13 +95,12 @@ def describe(field: InputField) -> str:
 def api_type(field: InputField) -> Any:
     """The pydantic type of one table field: bounded finite number, whole number, bool or
     the core's Literal; optional (``| None``) when it has no default and is not required."""
-    if field.kind == "number" and field.bounds is not None:
-        low, high = field.bounds
+    low, high = field.bounds or (0.0, 0.0)
+    if field.kind == "number":
         kind: Any = Annotated[
             float, NotBool, NUMBER_TEXT, bounded_number(low, high, describe(field))
         ]
-    elif field.kind == "whole number" and field.bounds is not None:
-        low, high = field.bounds
+    elif field.kind == "whole number":
         bounded = Field(ge=int(low), le=int(high), description=describe(field))
         kind = Annotated[int, NotBool, WHOLE_NUMBER_TEXT, bounded]
     elif field.kind == "yes-no":

@@ -107,6 +107,8 @@ def test_choice_texts_must_match_the_literal() -> None:
         dataclasses.replace(orientation, texts={"horizontal": "Flat"})
     with pytest.raises(ValueError, match="do not match"):
         dataclasses.replace(orientation, texts={**orientation.texts, "diagonal": "Diagonal"})
+    with pytest.raises(ValueError, match="needs bounds"):
+        dataclasses.replace(BY_API["ambient_c"], bounds=None)
 
 
 def test_every_default_round_trips_to_the_core() -> None:
