@@ -5,6 +5,7 @@ import io
 from collections.abc import Callable
 from typing import Any
 
+from app.fields import FIELDS
 from app.schemas import CandidateOut, CheckOut, SelectOut
 from app.units import Display, Quantity
 
@@ -81,11 +82,28 @@ def _columns(d: Display) -> list[tuple[str, Callable[[CandidateOut], Any]]]:
     ]
 
 
+def _input_rows(inputs: dict[str, Any], units: dict[str, str]) -> list[list[Any]]:
+    """One row per table input: page name, value in the display units, display unit.
+
+    An optional input left empty has an empty value cell.
+    """
+    return [
+        [field.page, field.display_value(inputs[field.api], units), field.display_unit(units)]
+        for field in FIELDS
+    ]
+
+
 def results_csv(result: SelectOut, units: dict[str, str]) -> str:
-    """Passing candidates (ranked) then the rejected ones shown, one row each."""
+    """The inputs (one row each), a blank row, then the passing candidates (ranked) and the
+    rejected ones shown, one row each."""
     columns = _columns(Display(units))
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
+    writer.writerow(["input", "value", "unit"])
+    writer.writerows(
+        [list(map(safe_cell, row)) for row in _input_rows(result.inputs.model_dump(), units)]
+    )
+    writer.writerow([])
     writer.writerow(["status", "rank", *(name for name, _ in columns)])
     groups = (("passed", result.candidates), ("rejected", result.rejected))
     for status, candidates in groups:

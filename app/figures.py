@@ -9,7 +9,7 @@ from typing import Any
 
 from app.core import critical_speed, pv
 from app.schemas import CandidateOut, SelectOut
-from app.units import Display
+from app.units import Display, api_value
 
 #: Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
 PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
@@ -227,9 +227,11 @@ def result_figures(result: SelectOut, units: dict[str, str]) -> dict[str, dict[s
     if not candidates:
         return {}
     d = Display(units)
-    inputs = result.inputs
+    app = result.inputs.to_core()
+    length_mm, _ = api_value(app.length_m, "length")
+    speed_mm_s, _ = api_value(app.speed_m_s, "speed")
     return {
-        "critical_speed": critical_speed_figure(candidates, inputs.length_mm, d),
-        "pv": pv_figure(candidates, inputs.speed_mm_s, candidates[0].axial_load_n, d),
-        "torque": torque_figure(candidates, inputs.max_torque_nm, d),
+        "critical_speed": critical_speed_figure(candidates, length_mm, d),
+        "pv": pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d),
+        "torque": torque_figure(candidates, app.max_torque_nm, d),
     }

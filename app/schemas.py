@@ -1,7 +1,8 @@
 """Input and output models of the API, shared with the pages (pydantic v2).
 
 Field names carry their units. Inputs are validated here (finite, in range, known enum
-values); ``to_core`` converts to the SI ``Application`` of the core.
+values); the application input ``ApplicationIn`` is generated from the field table in
+``app.inputs`` and converts itself to the SI ``Application`` of the core (``to_core``).
 """
 
 import math
@@ -9,7 +10,6 @@ from typing import Annotated, Any, Literal
 
 from pydantic import (
     BaseModel,
-    BeforeValidator,
     ConfigDict,
     Discriminator,
     Field,
@@ -18,129 +18,15 @@ from pydantic import (
     field_validator,
 )
 
-from app.core.model import Application
-
-EndFixityIn = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
-MM = 1e-3
-
-
-def _not_bool(value: Any) -> Any:
-    """JSON true/false is not a number (pydantic's lax mode would read it as 1/0)."""
-    if isinstance(value, bool):
-        raise ValueError("must be a number, not a boolean")
-    return value
-
-
-def _num(ge: float, le: float, description: str) -> Any:
-    """Finite number in [ge, le]; the bounds keep every result finite."""
-    return Field(ge=ge, le=le, allow_inf_nan=False, description=description)
-
-
-NotBool = BeforeValidator(_not_bool)
-
-
-class ApplicationIn(BaseModel):
-    """The axis an engineer wants to drive. Lengths in mm, speeds in mm/s, forces in N.
-
-    Lower bounds are physical (1 mN, 1 um/s, 1 mm ...) rather than "> 0", so that no
-    input can drive a result to overflow or to zero division.
-    """
-
-    model_config = ConfigDict(extra="forbid")
-
-    load_n: Annotated[float, NotBool, _num(1e-3, 1e6, "Axial load on the nut [N].")]
-    speed_mm_s: Annotated[float, NotBool, _num(1e-3, 1e5, "Linear speed [mm/s].")]
-    length_mm: Annotated[float, NotBool, _num(1.0, 1e5, "Screw length between supports [mm].")]
-    lead_mm: (
-        Annotated[float, NotBool, _num(0.01, 1000.0, "Lead [mm]; omit for any lead.")] | None
-    ) = None
-    accel_mm_s2: Annotated[float, NotBool, _num(1e-3, 1e6, "Linear acceleration [mm/s^2].")] = (
-        1000.0
-    )
-    moving_mass_kg: Annotated[float, NotBool, _num(0.0, 1e5, "Moving mass [kg].")] = 0.0
-    end_fixity: EndFixityIn = "fixed-simple"
-    orientation: Literal["horizontal", "vertical"] = "horizontal"
-    compression: bool = True
-    require_anti_backlash: bool = False
-    coating: Literal["auto", "tfe", "none"] = "auto"
-    oil_present: bool = False
-    vacuum: bool = False
-    ambient_c: Annotated[float, NotBool, _num(-273.15, 1000.0, "Ambient temperature [C].")] = 20.0
-    stroke_mm: (
-        Annotated[float, NotBool, _num(0.01, 1e5, "Stroke [mm], for life and accuracy.")] | None
-    ) = None
-    cycles_per_day: (
-        Annotated[float, NotBool, _num(1e-3, 1e7, "Full cycles (out and back) per day.")] | None
-    ) = None
-    critical_speed_safety_factor: Annotated[
-        float, NotBool, _num(0.01, 1.0, "Fraction of the critical speed allowed.")
-    ] = 0.8
-    buckling_safety_factor: Annotated[
-        float, NotBool, _num(0.01, 1.0, "Fraction of the Euler load allowed.")
-    ] = 0.5
-    torque_safety_factor: Annotated[
-        float, NotBool, _num(1.0, 10.0, "Torque margin over the computed torque.")
-    ] = 1.0
-    max_torque_nm: (
-        Annotated[float, NotBool, _num(1e-6, 1e5, "Drive torque available [N m].")] | None
-    ) = None
-    required_life_years: (
-        Annotated[float, NotBool, _num(1e-3, 1000.0, "Required life [years].")] | None
-    ) = None
-    positioning_tolerance_mm: (
-        Annotated[float, NotBool, _num(1e-4, 1000.0, "Allowed positioning error [mm].")] | None
-    ) = None
-    rank_by: Literal["torque", "margin", "life", "size"] = "torque"
-    limit: Annotated[int, NotBool, Field(ge=1, le=100, description="How many candidates.")] = 10
-
-    @field_validator("required_life_years")
-    @classmethod
-    def _life_needs_duty(cls, value: float | None, info: ValidationInfo) -> float | None:
-        if value is not None and (
-            info.data.get("stroke_mm") is None or info.data.get("cycles_per_day") is None
-        ):
-            raise ValueError("needs stroke_mm and cycles_per_day")
-        return value
-
-    def to_core(self) -> Application:
-        """The same application in SI for the core."""
-        return Application(
-            load_n=self.load_n,
-            speed_m_s=self.speed_mm_s * MM,
-            length_m=self.length_mm * MM,
-            lead_m=None if self.lead_mm is None else self.lead_mm * MM,
-            accel_m_s2=self.accel_mm_s2 * MM,
-            moving_mass_kg=self.moving_mass_kg,
-            end_fixity=self.end_fixity,
-            orientation=self.orientation,
-            compression=self.compression,
-            require_anti_backlash=self.require_anti_backlash,
-            coating=self.coating,
-            oil_present=self.oil_present,
-            vacuum=self.vacuum,
-            ambient_c=self.ambient_c,
-            stroke_m=None if self.stroke_mm is None else self.stroke_mm * MM,
-            cycles_per_day=self.cycles_per_day,
-            critical_speed_safety_factor=self.critical_speed_safety_factor,
-            buckling_safety_factor=self.buckling_safety_factor,
-            torque_safety_factor=self.torque_safety_factor,
-            max_torque_nm=self.max_torque_nm,
-            required_life_years=self.required_life_years,
-            positioning_tolerance_m=(
-                None
-                if self.positioning_tolerance_mm is None
-                else self.positioning_tolerance_mm * MM
-            ),
-            rank_by=self.rank_by,
-            limit=self.limit,
-        )
+from app.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
+from app.inputs import NotBool, bounded_number
 
 
 class MaterialIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
-    youngs_modulus_pa: Annotated[float, NotBool, _num(1e6, 1e13, "Young's modulus [Pa].")]
-    density_kg_m3: Annotated[float, NotBool, _num(1.0, 1e5, "Density [kg/m^3].")]
+    youngs_modulus_pa: Annotated[float, NotBool, bounded_number(1e6, 1e13, "Young's modulus [Pa].")]
+    density_kg_m3: Annotated[float, NotBool, bounded_number(1.0, 1e5, "Density [kg/m^3].")]
 
 
 class CatalogScrewIn(BaseModel):
@@ -154,28 +40,40 @@ class CustomScrewIn(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
-    outer_diameter_mm: Annotated[float, NotBool, _num(0.1, 1000.0, "Outer diameter [mm].")]
-    root_diameter_mm: Annotated[
-        float, NotBool, _num(0.05, 1000.0, "Root (minor) diameter [mm], below the outer.")
+    outer_diameter_mm: Annotated[
+        float, NotBool, bounded_number(0.1, 1000.0, "Outer diameter [mm].")
     ]
-    lead_mm: Annotated[float, NotBool, _num(0.01, 1000.0, "Lead [mm].")]
+    root_diameter_mm: Annotated[
+        float, NotBool, bounded_number(0.05, 1000.0, "Root (minor) diameter [mm], below the outer.")
+    ]
+    lead_mm: Annotated[float, NotBool, bounded_number(0.01, 1000.0, "Lead [mm].")]
     thread_half_angle_deg: Annotated[
-        float, NotBool, _num(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal.")
+        float,
+        NotBool,
+        bounded_number(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal."),
     ] = 14.5
-    friction_dynamic: Annotated[float, NotBool, _num(1e-3, 1.0, "Running friction coefficient.")]
-    friction_static: Annotated[float, NotBool, _num(1e-3, 1.0, "Static friction coefficient.")]
+    friction_dynamic: Annotated[
+        float, NotBool, bounded_number(1e-3, 1.0, "Running friction coefficient.")
+    ]
+    friction_static: Annotated[
+        float, NotBool, bounded_number(1e-3, 1.0, "Static friction coefficient.")
+    ]
     material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
-    drag_torque_nm: Annotated[float, NotBool, _num(0.0, 1e4, "Nut drag torque [N m].")] = 0.0
+    drag_torque_nm: Annotated[
+        float, NotBool, bounded_number(0.0, 1e4, "Nut drag torque [N m].")
+    ] = 0.0
     inertia_kg_m2_per_m: (
         Annotated[
             float,
             NotBool,
-            _num(1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."),
+            bounded_number(
+                1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."
+            ),
         ]
         | None
     ) = None
     pv_limit_mpa_m_s: (
-        Annotated[float, NotBool, _num(1e-6, 1e3, "Nut PV limit [MPa m/s].")] | None
+        Annotated[float, NotBool, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s].")] | None
     ) = None
 
     @field_validator("root_diameter_mm")

@@ -6,6 +6,7 @@ from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.selection import select
 from app.formulas import FORMULAS
+from app.page_form import share_query
 from app.present import candidate_out, custom_screw, selection_out
 from app.schemas import (
     ApplicationIn,
@@ -15,7 +16,6 @@ from app.schemas import (
     FormulaOut,
     SelectOut,
 )
-from app.share import share_query
 from app.units import DEFAULT_UNITS
 
 #: The formulas table as output models, built once.

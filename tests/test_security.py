@@ -1,6 +1,6 @@
 """Security headers on every kind of response, no reflected markup, bounded requests.
 
-Payloads go into every page parameter (``app.share`` field and unit names) and every API
+Payloads go into every page parameter (``app.page_form`` field and unit names) and every API
 field; whatever comes back must not carry them as live markup. Oversized requests get a
 4xx before the body is read, in process and from a real uvicorn, and the server answers
 its health check afterwards.
@@ -25,10 +25,11 @@ import pytest
 from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
+from app.fields import BY_PAGE
 from app.main import create_app
+from app.page_form import ENTERED_PREFIX, UNIT_CHOICES
 from app.schemas import ApplicationIn, CustomScrewIn
 from app.settings import Settings
-from app.share import ENTERED_PREFIX, PAGE_FIELDS, UNIT_CHOICES
 
 ROOT = Path(__file__).resolve().parents[1]
 PAYLOADS = ["<script>alert(1)</script>", '"><img src=x onerror=alert(1)>', "javascript:alert(1)"]
@@ -39,9 +40,7 @@ LIVE = re.compile(
     re.IGNORECASE,
 )
 PAGE_BASE = {"load": "100", "speed": "50", "length": "500", "lead": "10"}
-PAGE_PARAMS = sorted(
-    [*PAGE_FIELDS, *UNIT_CHOICES, *(ENTERED_PREFIX + unit for unit in UNIT_CHOICES)]
-)
+PAGE_PARAMS = sorted([*BY_PAGE, *UNIT_CHOICES, *(ENTERED_PREFIX + unit for unit in UNIT_CHOICES)])
 API_BASE: dict[str, Any] = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}
 API_FIELDS = sorted(ApplicationIn.model_fields)
 CUSTOM_SCREW: dict[str, Any] = {

@@ -10,14 +10,9 @@ from app.catalog import Catalog
 from app.deps import CatalogDep
 from app.errors import AppError
 from app.export import results_csv
+from app.fields import BY_PAGE, FIELDS, GROUPS
 from app.figures import chart_candidates, result_figures
-from app.present import series_dict
-from app.responses import ModelJSON
-from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
-from app.service import run_evaluation, run_selection
-from app.share import (
-    PAGE_FIELDS,
-    PAGE_LABELS,
+from app.page_form import (
     TRUE_WORDS,
     UNIT_CHOICES,
     convert_entered,
@@ -27,15 +22,20 @@ from app.share import (
     parse_inputs,
     parse_units,
     share_query,
+    summary_rows,
 )
+from app.present import series_dict
+from app.responses import ModelJSON
+from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
+from app.service import run_evaluation, run_selection
 from app.templating import templates
 from app.units import TORQUE_LABELS, Display, catalog_value
 
 router = APIRouter(include_in_schema=False)
-REQUIRED = ("load", "speed", "length")
-MAIN_FIELDS = ("load", "lead", "speed", "length")
-#: page field -> quantity, for the fields whose numbers follow the display units.
-UNIT_FIELDS = {page: quantity for page, (_, quantity) in PAGE_FIELDS.items() if quantity}
+#: page fields that must be filled in before a selection runs.
+REQUIRED = tuple(field.page for field in FIELDS if field.required)
+#: page fields of the first form group, shown outside the Advanced section.
+MAIN_FIELDS = tuple(field.page for field in FIELDS if field.group == GROUPS[0])
 EXPORT_NAME = "leadscrew-selection"
 
 
@@ -61,8 +61,9 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         "converted": converted,
         "d": Display(units),
         "defaults": form_defaults(units),
-        "labels": PAGE_LABELS,
-        "unit_fields": UNIT_FIELDS,
+        "fields": BY_PAGE,
+        "groups": GROUPS,
+        "input_rows": summary_rows,
         "true_words": TRUE_WORDS,
         "rejected_groups": [],
         "advanced_open": advanced_open,
@@ -98,7 +99,7 @@ def advanced_open(
     values: Mapping[str, str], errors: Mapping[str, str], defaults: Mapping[str, str]
 ) -> bool:
     """Open the Advanced section when one of its fields has an error or a non-default value."""
-    for name in PAGE_FIELDS:
+    for name in BY_PAGE:
         text = values.get(name, "").strip().lower()
         if name not in MAIN_FIELDS and (name in errors or text not in ("", defaults.get(name))):
             return True
@@ -138,9 +139,14 @@ def _link_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, st
     units, values, _ = _form(params)
     inputs, errors = parse_inputs(values, units)
     if inputs is None:
-        detail = [{"field": PAGE_LABELS.get(k, k), "message": v} for k, v in errors.items()]
+        detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
         raise AppError(422, "invalid input", detail)
     return inputs, units
+
+
+def _label(page: str) -> str:
+    """The form label of a page field; other keys ('form') as they are."""
+    return BY_PAGE[page].label if page in BY_PAGE else page
 
 
 def _attachment(extension: str) -> dict[str, str]:

@@ -1,0 +1,278 @@
+"""Every application input, declared once.
+
+One ``InputField`` per input of the core's ``Application`` says everything the edges need:
+the API name (unit in the name), the page and share-link name, the core attribute and the
+factor from the API unit to SI, how the page shows it (label, help, form group, display
+quantity or fixed unit, choices with their texts) and how it is validated (kind, default,
+bounds). The API model (``app.inputs``), the page form and its parser
+(``app.page_form``), the form templates, the printed inputs summary and the CSV export are
+all generated from ``FIELDS``; none of them names an input.
+
+Choices come from the core's ``Literal`` types (``typing.get_args``); the table only adds
+their display texts (``texts``), and a text table that misses or invents a value is
+refused when the table is built.
+
+>>> BY_API["speed_mm_s"].core, BY_API["speed_mm_s"].si_factor, BY_PAGE["speed"].api
+('speed_m_s', 0.001, 'speed_mm_s')
+>>> [choice.value for choice in BY_PAGE["end_fixity"].choices]
+['fixed-free', 'simple-simple', 'fixed-simple', 'fixed-fixed']
+"""
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any, Literal, get_args
+
+from app.core.model import CoatingChoice, EndFixity, Orientation, RankBy
+from app.units import Quantity, from_api, label
+
+Kind = Literal["number", "whole number", "yes-no", "choice"]
+Default = float | int | bool | str | None
+#: millimetres (and mm/s, mm/s²) to metres: the API's length unit to SI.
+MM = 1e-3
+
+#: form groups, in the order the form shows them; the first is always open.
+GROUPS = (
+    "Axis",
+    "Motion and load",
+    "Ends",
+    "Nut and environment",
+    "Duty and requirements",
+    "Safety factors",
+    "Results",
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Choice:
+    """One allowed value of a choice or yes-no field and the text the form shows for it."""
+
+    value: str
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class InputField:
+    """One application input at every edge.
+
+    ``api`` carries the API unit in its name (``speed_mm_s``); ``si_factor`` converts a
+    value in that unit to the SI unit of the core attribute ``core`` (``speed_m_s``).
+    ``quantity`` follows the page's unit switch; without one, ``unit`` is the fixed unit
+    text. ``bounds`` (low, high) are inclusive and in the API unit. A field with no
+    ``default`` and ``required`` False is optional: leaving it out switches its check off.
+    ``needs`` names API fields that must be given whenever this one is; ``none_word`` is
+    the word the page accepts for "no value" (lead: "any"). ``options`` is the core's
+    Literal type of a choice field and ``texts`` the display text of each of its values;
+    a yes-no field with ``texts`` for "true" and "false" is shown as a two-way choice. A
+    ``drawn`` choice is shown as radio buttons, each with a drawing of its value
+    ("fixed-free": left end, right end).
+    """
+
+    api: str
+    page: str
+    core: str
+    label: str
+    help: str
+    group: str
+    kind: Kind
+    required: bool = False
+    default: Default = None
+    bounds: tuple[float, float] | None = None
+    si_factor: float = 1.0
+    quantity: Quantity | None = None
+    unit: str = ""
+    options: Any = None
+    texts: Mapping[str, str] = field(default_factory=dict)
+    needs: tuple[str, ...] = ()
+    none_word: str = ""
+    drawn: bool = False
+
+    def __post_init__(self) -> None:
+        """Refuse a number without bounds (they keep every result finite) and display
+        texts that miss or invent a value of the core's Literal."""
+        if self.kind in ("number", "whole number") and self.bounds is None:
+            raise ValueError(f"{self.api}: a number needs bounds")
+        if self.options is not None and set(get_args(self.options)) != set(self.texts):
+            values = sorted(get_args(self.options))
+            raise ValueError(f"{self.api}: texts {sorted(self.texts)} do not match {values}")
+
+    @property
+    def choices(self) -> tuple[Choice, ...]:
+        """The allowed values with their texts: a Literal's in its order, or the yes-no
+        field's 'true' and 'false' when it is shown as a choice; none for other fields."""
+        values = get_args(self.options) if self.options is not None else tuple(self.texts)
+        return tuple(Choice(value, self.texts[value]) for value in values)
+
+    def to_si(self, value: Any) -> Any:
+        """The API value in the core's SI unit: numbers times ``si_factor``, others as given."""
+        if self.kind != "number" or value is None:
+            return value
+        return float(value) * self.si_factor
+
+    def display_unit(self, units: Mapping[str, str]) -> str:
+        """Unit text in the user's display units ('in/s'), the fixed unit ('kg'), or ''."""
+        if self.quantity is None:
+            return self.unit
+        return label(self.quantity, dict(units))
+
+    def display_value(self, value: Any, units: Mapping[str, str]) -> Any:
+        """An API value in the user's display units; values without a quantity as given."""
+        if self.quantity is None or value is None:
+            return value
+        return from_api(float(value), self.quantity, dict(units))
+
+    def choice_text(self, value: str) -> str:
+        """The display text of one of the field's choices (the value itself if unknown)."""
+        return next((c.text for c in self.choices if c.value == value), value)
+
+
+# fmt: off
+FIELDS: tuple[InputField, ...] = (
+    InputField(
+        api="load_n", page="load", core="load_n", label="Axial load",
+        help="Axial force on the nut", group="Axis", kind="number", required=True,
+        bounds=(1e-3, 1e6), quantity="force", unit="N",
+    ),
+    InputField(
+        api="lead_mm", page="lead", core="lead_m", label="Lead",
+        help="Travel per turn; empty or “any” for every lead", group="Axis", kind="number",
+        bounds=(0.01, 1000.0), si_factor=MM, quantity="length", unit="mm",
+        none_word="any",
+    ),
+    InputField(
+        api="speed_mm_s", page="speed", core="speed_m_s", label="Linear speed",
+        help="Speed of the nut along the screw", group="Axis", kind="number", required=True,
+        bounds=(1e-3, 1e5), si_factor=MM, quantity="speed", unit="mm/s",
+    ),
+    InputField(
+        api="length_mm", page="length", core="length_m", label="Screw length",
+        help="Between the supports", group="Axis", kind="number", required=True,
+        bounds=(1.0, 1e5), si_factor=MM, quantity="length", unit="mm",
+    ),
+    InputField(
+        api="accel_mm_s2", page="accel", core="accel_m_s2", label="Acceleration",
+        help="Linear, to reach the speed", group="Motion and load", kind="number",
+        default=1000.0, bounds=(1e-3, 1e6), si_factor=MM, quantity="accel", unit="mm/s²",
+    ),
+    InputField(
+        api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
+        label="Moving mass", help="Carried by the nut", group="Motion and load",
+        kind="number", default=0.0, bounds=(0.0, 1e5), unit="kg",
+    ),
+    InputField(
+        api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
+        help="How the two screw ends are supported", group="Ends", kind="choice",
+        default="fixed-simple", options=EndFixity, drawn=True,
+        texts={
+            "fixed-free": "Fixed – free", "simple-simple": "Simple – simple",
+            "fixed-simple": "Fixed – simple", "fixed-fixed": "Fixed – fixed",
+        },
+    ),
+    InputField(
+        api="orientation", page="orientation", core="orientation", label="Orientation",
+        help="Vertical adds the weight of the moving mass", group="Motion and load",
+        kind="choice", default="horizontal", options=Orientation,
+        texts={"horizontal": "Horizontal", "vertical": "Vertical"},
+    ),
+    InputField(
+        api="compression", page="compression", core="compression", label="Load direction",
+        help="Only a pushed screw can buckle", group="Motion and load", kind="yes-no",
+        default=True,
+        texts={
+            "true": "Compression (pushes on the screw)",
+            "false": "Tension (pulls on the screw)",
+        },
+    ),
+    InputField(
+        api="require_anti_backlash", page="require_anti_backlash",
+        core="require_anti_backlash", label="Anti-backlash nut required",
+        help="Only nuts that take up the play", group="Nut and environment", kind="yes-no",
+        default=False,
+    ),
+    InputField(
+        api="coating", page="coating", core="coating", label="Coating",
+        help="TFE lowers the friction", group="Nut and environment", kind="choice",
+        default="auto", options=CoatingChoice,
+        texts={
+            "auto": "Auto (coated or not)", "tfe": "TFE coated", "none": "Uncoated",
+        },
+    ),
+    InputField(
+        api="oil_present", page="oil_present", core="oil_present", label="Oil present",
+        help="Some nut plastics do not take oil", group="Nut and environment", kind="yes-no",
+        default=False,
+    ),
+    InputField(
+        api="vacuum", page="vacuum", core="vacuum", label="Vacuum",
+        help="Checks the outgassing of nut and coating", group="Nut and environment",
+        kind="yes-no", default=False,
+    ),
+    InputField(
+        api="ambient_c", page="ambient_c", core="ambient_c", label="Ambient temperature",
+        help="Around the screw", group="Nut and environment", kind="number", default=20.0,
+        bounds=(-273.15, 1000.0), unit="°C",
+    ),
+    InputField(
+        api="stroke_mm", page="stroke", core="stroke_m", label="Stroke",
+        help="Travel of one move, for life and accuracy", group="Duty and requirements",
+        kind="number", bounds=(0.01, 1e5), si_factor=MM, quantity="length", unit="mm",
+    ),
+    InputField(
+        api="cycles_per_day", page="cycles_per_day", core="cycles_per_day",
+        label="Cycles per day", help="Full cycles, out and back, for life",
+        group="Duty and requirements", kind="number", bounds=(1e-3, 1e7), unit="/day",
+    ),
+    InputField(
+        api="critical_speed_safety_factor", page="critical_speed_safety_factor",
+        core="critical_speed_safety_factor", label="Critical-speed factor",
+        help="Fraction of the theoretical critical speed allowed, 1 or below",
+        group="Safety factors", kind="number", default=0.8, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="buckling_safety_factor", page="buckling_safety_factor",
+        core="buckling_safety_factor", label="Buckling factor",
+        help="Fraction of the Euler buckling load allowed, 1 or below",
+        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="torque_safety_factor", page="torque_safety_factor",
+        core="torque_safety_factor", label="Torque safety factor",
+        help="Multiplier on the computed torque, 1 or more", group="Safety factors",
+        kind="number", default=1.0, bounds=(1.0, 10.0),
+    ),
+    InputField(
+        api="max_torque_nm", page="max_torque", core="max_torque_nm",
+        label="Max drive torque", help="What the motor gives; empty for no limit",
+        group="Duty and requirements", kind="number", bounds=(1e-6, 1e5),
+        quantity="torque", unit="N m",
+    ),
+    InputField(
+        api="required_life_years", page="required_life_years", core="required_life_years",
+        label="Required life", help="Needs stroke and cycles per day",
+        group="Duty and requirements", kind="number", bounds=(1e-3, 1000.0), unit="years",
+        needs=("stroke_mm", "cycles_per_day"),
+    ),
+    InputField(
+        api="positioning_tolerance_mm", page="positioning_tolerance",
+        core="positioning_tolerance_m", label="Positioning tolerance",
+        help="Allowed positioning error; empty for no check", group="Duty and requirements",
+        kind="number", bounds=(1e-4, 1000.0), si_factor=MM, quantity="length", unit="mm",
+    ),
+    InputField(
+        api="rank_by", page="rank_by", core="rank_by", label="Rank by",
+        help="Order of the passing screws", group="Results", kind="choice",
+        default="torque", options=RankBy,
+        texts={
+            "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
+            "size": "Smallest size",
+        },
+    ),
+    InputField(
+        api="limit", page="limit", core="limit", label="Number of results",
+        help="How many passing screws to list, 1–100", group="Results",
+        kind="whole number", default=10, bounds=(1, 100),
+    ),
+)
+# fmt: on
+
+BY_API = {field.api: field for field in FIELDS}
+BY_PAGE = {field.page: field for field in FIELDS}

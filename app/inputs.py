@@ -1,0 +1,155 @@
+"""The API's application input model, generated from the field table (``app.fields``).
+
+``ApplicationIn`` is built with ``pydantic.create_model`` from ``FIELDS``: one field per
+table row, with its bounds, default and description, so the API, the page and the share
+links cannot disagree about an input. Everything that is not per field lives in the
+hand-written base ``ApplicationInputs``: ``extra="forbid"``, the rule that a field's
+``needs`` are given, and ``to_core`` (the SI ``Application`` of the core).
+
+Typing: mypy cannot see the fields of a model made at run time, so for mypy
+``ApplicationIn`` is the base class itself. Reading an input as an attribute
+(``inputs.<api name>``) is then a type error on purpose; code reads ``inputs.to_core()``, a
+typed dataclass in SI, or goes through the table.
+
+Text numbers (a query string, or a string in JSON) must be plain ASCII decimals
+(``NUMBER_TEXT``): the page parses its form with the same rule, so both accept the same.
+"""
+
+import re
+from typing import TYPE_CHECKING, Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationInfo,
+    create_model,
+    field_validator,
+)
+from pydantic_core import PydanticCustomError
+
+from app.core.model import Application
+from app.fields import BY_API, FIELDS, InputField
+
+#: optional sign, digits with an optional point (or a point and digits), optional exponent.
+ASCII_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+ASCII_SPACE = " \t\n\r\f\v"
+#: pydantic's own error for text that is not a number, kept so the API answers as before.
+NOT_A_NUMBER = {
+    "float": (
+        "float_parsing",
+        "Input should be a valid number, unable to parse string as a number",
+    ),
+    "int": ("int_parsing", "Input should be a valid integer, unable to parse string as an integer"),
+}
+
+
+def _not_bool(value: Any) -> Any:
+    """JSON true/false is not a number (pydantic's lax mode would read it as 1/0)."""
+    if isinstance(value, bool):
+        raise ValueError("must be a number, not a boolean")
+    return value
+
+
+def _number_text(target: Literal["float", "int"]) -> BeforeValidator:
+    """Refuse number text other than an ASCII decimal: no '１００', '1_000', 'nan' or 'inf'.
+
+    Python's float() and pydantic's lax parsing accept all of those; the rule keeps the
+    API's query and the page's form to what an engineer types. Non-text passes unchanged.
+    """
+
+    def check(value: Any) -> Any:
+        if not isinstance(value, str):
+            return value
+        text = value.strip(ASCII_SPACE)
+        if not ASCII_NUMBER.fullmatch(text):
+            raise PydanticCustomError(*NOT_A_NUMBER[target])
+        return text
+
+    return BeforeValidator(check)
+
+
+NotBool = BeforeValidator(_not_bool)
+NUMBER_TEXT = _number_text("float")
+WHOLE_NUMBER_TEXT = _number_text("int")
+
+
+def bounded_number(ge: float, le: float, description: str) -> Any:
+    """Finite number in [ge, le]; the bounds keep every result finite."""
+    return Field(ge=ge, le=le, allow_inf_nan=False, description=description)
+
+
+def describe(field: InputField) -> str:
+    """The field's API description from the table: label, API unit, help, and for a yes-no
+    field shown as a choice what true and false mean.
+
+    >>> describe(BY_API["ambient_c"])
+    'Ambient temperature [°C]. Around the screw.'
+    """
+    unit = f" [{field.unit}]" if field.unit else ""
+    meanings = "".join(f" {c.value}: {c.text}." for c in field.choices if field.kind == "yes-no")
+    return f"{field.label}{unit}. {field.help}.{meanings}"
+
+
+def api_type(field: InputField) -> Any:
+    """The pydantic type of one table field: bounded finite number, whole number, bool or
+    the core's Literal; optional (``| None``) when it has no default and is not required."""
+    low, high = field.bounds or (0.0, 0.0)
+    if field.kind == "number":
+        kind: Any = Annotated[
+            float, NotBool, NUMBER_TEXT, bounded_number(low, high, describe(field))
+        ]
+    elif field.kind == "whole number":
+        bounded = Field(ge=int(low), le=int(high), description=describe(field))
+        kind = Annotated[int, NotBool, WHOLE_NUMBER_TEXT, bounded]
+    elif field.kind == "yes-no":
+        kind = Annotated[bool, Field(description=describe(field))]
+    else:
+        kind = Annotated[field.options, Field(description=describe(field))]
+    optional = not field.required and field.default is None
+    return kind | None if optional else kind
+
+
+def _definitions() -> dict[str, Any]:
+    """``create_model`` field definitions: API name -> (type, default or ``...``)."""
+    return {f.api: (api_type(f), ... if f.required else f.default) for f in FIELDS}
+
+
+class ApplicationInputs(BaseModel):
+    """The axis an engineer wants to drive, in the API units named by each field.
+
+    Lower bounds are physical (1 mN, 1 um/s, 1 mm ...) rather than "> 0", so that no
+    input can drive a result to overflow or to zero division.
+    """
+
+    model_config = ConfigDict(extra="forbid")
+
+    @field_validator("*")
+    @classmethod
+    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
+        """A field with ``needs`` (the required life) is refused without those fields.
+
+        Fields validate in table order, so the needed ones are already in ``info.data``.
+        """
+        needs = BY_API[str(info.field_name)].needs
+        if value is not None and any(info.data.get(name) is None for name in needs):
+            raise ValueError("needs " + " and ".join(needs))
+        return value
+
+    def to_core(self) -> Application:
+        """The same application in SI for the core: each value times its ``si_factor``."""
+        values = {f.core: f.to_si(getattr(self, f.api)) for f in FIELDS}
+        return Application(**values)
+
+
+if TYPE_CHECKING:
+    ApplicationIn = ApplicationInputs
+else:
+    ApplicationIn = create_model(
+        "ApplicationIn",
+        __base__=ApplicationInputs,
+        __module__=__name__,
+        __doc__=ApplicationInputs.__doc__,
+        **_definitions(),
+    )
