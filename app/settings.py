@@ -15,6 +15,8 @@ class Settings(BaseSettings):
     max_query_params: int = 100
     #: bytes of whole responses kept per process for repeated selection queries (0: off)
     response_cache_bytes: int = 16 * 1024 * 1024
+    #: responses kept at most, however small (0: off)
+    response_cache_entries: int = 4096
 
 
 @lru_cache
