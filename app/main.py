@@ -9,6 +9,7 @@ from app.cache import ResponseCache
 from app.catalog import load_catalog
 from app.compression import NegotiatedGZipMiddleware
 from app.errors import AppError, app_error_handler, http_error_handler, validation_error_handler
+from app.head import HeadAsGetMiddleware
 from app.paths import resource_dir
 from app.routes import api, docs, pages
 from app.security import SecurityMiddleware
@@ -58,4 +59,6 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_query_chars=settings.max_query_chars,
         max_query_params=settings.max_query_params,
     )
+    # outermost, so that every answer to a HEAD, the refusals above included, has no body
+    app.add_middleware(HeadAsGetMiddleware)
     return app
