@@ -10,6 +10,7 @@ from app.catalog import load_catalog
 from app.compression import NegotiatedGZipMiddleware
 from app.errors import AppError, app_error_handler, http_error_handler, validation_error_handler
 from app.head import HeadAsGetMiddleware
+from app.overload import OverloadMiddleware
 from app.paths import resource_dir
 from app.routes import api, docs, pages
 from app.security import SecurityMiddleware
@@ -20,6 +21,8 @@ from app.staticfiles import PrecompressedStaticFiles
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
 FRAGMENT_PATHS = frozenset({"/", "/detail"})
+#: Answered however busy the process is: a balancer must not take busy for down.
+NEVER_SHED = frozenset({"/api/v1/health"})
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -46,6 +49,13 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # (126 kB of JSON) compresses to 14 kB instead of 9 kB in half the time of level 6;
     # static files come precompressed at level 9 (app.staticfiles)
     app.add_middleware(NegotiatedGZipMiddleware, minimum_size=500, compresslevel=1)
+    # a cache hit costs next to nothing: it is answered outside the overload limit
+    app.add_middleware(
+        OverloadMiddleware,
+        max_in_flight=settings.max_requests_in_flight,
+        retry_after_s=settings.overload_retry_after_s,
+        exempt_paths=NEVER_SHED,
+    )
     app.add_middleware(
         ResponseCache,
         paths=CACHED_PATHS,
