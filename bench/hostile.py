@@ -3,7 +3,8 @@
 * Overload: 256 connections on one worker, every request a different query. The
   requests that are served must stay fast (p99 under 1 s) and no client may time out;
   the rest are shed with 503. Measured with ``bench.load`` (latency by status) and with
-  wrk (its own socket timeouts), while the health check is polled.
+  wrk (its own socket timeouts), while the health check is polled; wrk against the bare
+  ceiling app shows what the machine itself gives at 256 connections.
 * Hostile heads: 1,000 requests with a 1 MB HX-History-Restore-Request header, 20
   unfinished 20 MB headers, 10 concurrent 50 MB headers, and 1,000 header values just
   under the limit; the server's RSS before and after.
@@ -30,7 +31,7 @@ from pathlib import Path
 
 from bench import load, wrk
 from bench.report import Report
-from bench.web import CLIENT_CPUS, HERE, SERVER_CPU, fetch, free_port, rss_kib
+from bench.web import CLIENT_CPUS, HERE, SERVER_CPU, fetch, free_port, rss_kib, server
 
 ROOT = Path(__file__).resolve().parents[1]
 NGINX = "/usr/sbin/nginx"
@@ -173,6 +174,15 @@ def overload(report: Report, seconds: int) -> None:
         )
         timeouts = r.socket_errors["timeout"]
         report.line("wrk -c256: socket timeouts", f"{timeouts}", "0", timeouts == 0)
+    # the same load on a bare endpoint: what this machine and wrk give at 256 connections
+    with server("bench.ceiling_app:app", factory=False) as (ceiling_port, _):
+        url = f"http://127.0.0.1:{ceiling_port}/ceiling"
+        c = wrk.run(url, seconds, connections=256, headers=GZIP, cpus=CLIENT_CPUS)
+    report.info(
+        "wrk -t2 -c256, bare ceiling app",
+        f"{c.requests_per_s:.0f} answers/s, p99 {c.p99_ms:.0f} ms, "
+        f"socket timeouts {c.socket_errors['timeout']}",
+    )
 
 
 # --- hostile heads ---------------------------------------------------------------------
