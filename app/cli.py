@@ -11,6 +11,8 @@ from types import FrameType
 import uvicorn
 
 from app.catalog import CatalogError, load_catalog
+from app.protocol import BoundedHttpToolsProtocol
+from app.settings import get_settings
 
 
 def _stopped(signum: int, frame: FrameType | None) -> None:
@@ -28,6 +30,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--host", default="127.0.0.1")
     parser.add_argument("--port", type=int, default=8000)
     parser.add_argument("--workers", type=int, default=1)
+    parser.add_argument(
+        "--log-level",
+        default="info",
+        choices=("critical", "error", "warning", "info", "debug"),
+        help="info logs each request; warning and above do not",
+    )
     parser.add_argument(
         "--catalog-dir",
         action="append",
@@ -47,6 +55,7 @@ def main(argv: list[str] | None = None) -> int:
         )
     for stop in (signal.SIGTERM, signal.SIGINT):
         signal.signal(stop, _stopped)
+    settings = get_settings()
     uvicorn.run(
         "app.main:create_app",
         factory=True,
@@ -54,7 +63,11 @@ def main(argv: list[str] | None = None) -> int:
         port=args.port,
         workers=args.workers,
         proxy_headers=True,
-        log_level="info",
+        log_level=args.log_level,
+        # request-read deadline and head limits: app.protocol, from the same settings
+        http=BoundedHttpToolsProtocol,
+        timeout_keep_alive=settings.keep_alive_timeout_s,
+        limit_concurrency=settings.max_connections,
     )
     return 0
 

@@ -9,17 +9,25 @@ from app.fields import FIELDS
 from app.schemas import CandidateOut, CheckOut, SelectOut
 from app.units import Display, Quantity
 
-#: a text cell starting with one of these is a formula to a spreadsheet (CWE-1236).
-FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+#: a text cell starting with one of these is a formula to a spreadsheet (CWE-1236); the
+#: fullwidth forms count too, since spreadsheets in East Asian locales read them as ASCII.
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r", "＝", "＋", "－", "＠")
 
 
 def safe_cell(value: Any) -> Any:
     """Quote a text cell that a spreadsheet would run as a formula; numbers pass as numbers.
 
+    Leading blanks (spaces, no-break and ideographic spaces, line breaks) are skipped
+    before the test: spreadsheets skip them too, so `` =1+1`` is still a formula.
+
     >>> safe_cell("=HYPERLINK(1)"), safe_cell("-2+3"), safe_cell("B6000"), safe_cell(-1.5)
     ("'=HYPERLINK(1)", "'-2+3", 'B6000', -1.5)
+    >>> safe_cell(" =1+1"), safe_cell("＝1+1"), safe_cell("\u3000＠SUM(A1)"), safe_cell(" 12 mm")
+    ("' =1+1", "'＝1+1", "'\u3000＠SUM(A1)", ' 12 mm')
     """
-    if isinstance(value, str) and value.startswith(FORMULA_STARTS):
+    if isinstance(value, str) and (
+        value.startswith(FORMULA_STARTS) or value.lstrip().startswith(FORMULA_STARTS)
+    ):
         return "'" + value
     return value
 

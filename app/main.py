@@ -3,12 +3,14 @@
 from fastapi import FastAPI
 from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException
-from starlette.middleware.gzip import GZipMiddleware
 
 from app import __version__
 from app.cache import ResponseCache
 from app.catalog import load_catalog
+from app.compression import NegotiatedGZipMiddleware
 from app.errors import AppError, app_error_handler, http_error_handler, validation_error_handler
+from app.head import HeadAsGetMiddleware
+from app.overload import OverloadMiddleware
 from app.paths import resource_dir
 from app.routes import api, docs, pages
 from app.security import SecurityMiddleware
@@ -17,6 +19,10 @@ from app.staticfiles import PrecompressedStaticFiles
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
+#: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
+FRAGMENT_PATHS = frozenset({"/", "/detail"})
+#: Answered however busy the process is: a balancer must not take busy for down.
+NEVER_SHED = frozenset({"/api/v1/health"})
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -42,12 +48,27 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # dynamic responses at level 1: the worker's CPU is the limit, and a select response
     # (126 kB of JSON) compresses to 14 kB instead of 9 kB in half the time of level 6;
     # static files come precompressed at level 9 (app.staticfiles)
-    app.add_middleware(GZipMiddleware, minimum_size=500, compresslevel=1)
-    app.add_middleware(ResponseCache, paths=CACHED_PATHS, max_bytes=settings.response_cache_bytes)
+    app.add_middleware(NegotiatedGZipMiddleware, minimum_size=500, compresslevel=1)
+    # a cache hit costs next to nothing: it is answered outside the overload limit
+    app.add_middleware(
+        OverloadMiddleware,
+        max_in_flight=settings.max_requests_in_flight,
+        retry_after_s=settings.overload_retry_after_s,
+        exempt_paths=NEVER_SHED,
+    )
+    app.add_middleware(
+        ResponseCache,
+        paths=CACHED_PATHS,
+        fragment_paths=FRAGMENT_PATHS,
+        max_bytes=settings.response_cache_bytes,
+        max_entries=settings.response_cache_entries,
+    )
     app.add_middleware(
         SecurityMiddleware,
         max_body_bytes=settings.max_body_bytes,
         max_query_chars=settings.max_query_chars,
         max_query_params=settings.max_query_params,
     )
+    # outermost, so that every answer to a HEAD, the refusals above included, has no body
+    app.add_middleware(HeadAsGetMiddleware)
     return app

@@ -1,6 +1,8 @@
-"""Pure-ASGI middleware: security headers on every response, size limits on requests."""
+"""Pure-ASGI middleware: security headers on every response, size limits on requests,
+redirects that stay on the host the client used."""
 
 import json
+import re
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
@@ -27,6 +29,23 @@ IMMUTABLE = (b"cache-control", b"public, max-age=31536000, immutable")
 # reuse them for ten minutes, then revalidate (ETag, 304). A ``?v=`` URL is immutable.
 SHORT = (b"cache-control", b"public, max-age=600")
 CACHED_STATUSES = (200, 304)
+#: the scheme and authority of an absolute URL, and the slashes a browser would read as
+#: the start of another authority (``//host``, ``/\\host``)
+_ABSOLUTE = re.compile(rb"^[a-zA-Z][a-zA-Z0-9+.-]*://[^/?#]*")
+_LEADING_SLASHES = re.compile(rb"^[/\\]+")
+
+
+def path_only(location: bytes) -> bytes:
+    """A redirect target without scheme and host: the app only redirects within itself, and
+    Starlette builds its slash redirects from the request's Host header, which a client
+    chooses. Leading slashes collapse to one so the result cannot name another host.
+
+    >>> path_only(b"http://evil.example/static/"), path_only(b"http://h//evil.example")
+    (b'/static/', b'/evil.example')
+    >>> path_only(b"/docs?x=1"), path_only(b"https://h")
+    (b'/docs?x=1', b'/')
+    """
+    return _LEADING_SLASHES.sub(b"/", _ABSOLUTE.sub(b"", location)) or b"/"
 
 
 class SecurityMiddleware:
@@ -82,7 +101,10 @@ class SecurityMiddleware:
                 return
             if message["type"] == "http.response.start":
                 started = True
-                headers = list(message.get("headers", []))
+                headers = [
+                    (name, path_only(value) if name == b"location" else value)
+                    for name, value in message.get("headers", [])
+                ]
                 headers += SECURITY_HEADERS
                 if cache is not None and message.get("status") in CACHED_STATUSES:
                     headers = [h for h in headers if h[0] != b"cache-control"] + [cache]

@@ -15,6 +15,25 @@ class Settings(BaseSettings):
     max_query_params: int = 100
     #: bytes of whole responses kept per process for repeated selection queries (0: off)
     response_cache_bytes: int = 16 * 1024 * 1024
+    #: responses kept at most, however small (0: off)
+    response_cache_entries: int = 4096
+    #: requests one process works on at once; more are answered 503 at once (0: no limit).
+    #: 32 requests that each compute a page (about 15 ms) are all answered within half a
+    #: second; past that, a client does better to retry or go to another process.
+    max_requests_in_flight: int = 32
+    #: the Retry-After of those 503s
+    overload_retry_after_s: int = 1
+    # --- the server (app.cli, app.protocol) ---
+    #: a request's head and body must arrive within this many seconds of the connection
+    #: opening or of the request's first byte, else the connection is closed
+    request_read_timeout_s: float = 10.0
+    #: an idle connection between two requests is closed after this many seconds
+    keep_alive_timeout_s: int = 5
+    #: request line and headers together, in bytes, and the number of header lines (431)
+    max_header_bytes: int = 32 * 1024
+    max_headers: int = 100
+    #: open connections per process past which uvicorn answers every request 503
+    max_connections: int = 1024
 
 
 @lru_cache

@@ -16,6 +16,8 @@ from starlette.responses import FileResponse, Response
 from starlette.staticfiles import StaticFiles
 from starlette.types import Scope
 
+from app.headers import accepts_gzip
+
 COMPRESSIBLE = ("text/", "application/javascript", "application/json", "image/svg+xml")
 MINIMUM_SIZE = 500
 DROPPED = {"content-length", "content-type", "accept-ranges", "etag"}
@@ -34,7 +36,7 @@ class PrecompressedStaticFiles(StaticFiles):
         if (
             not isinstance(response, FileResponse)
             or response.status_code != 200
-            or "gzip" not in request.get("accept-encoding", "")
+            or not accepts_gzip(request)
             or "range" in request
             or not (response.media_type or "").startswith(COMPRESSIBLE)
             or response.stat_result is None

@@ -1,6 +1,6 @@
 """Run every benchmark and print each figure beside its target (PASS / MISS).
 
-    python3 bench/run.py            # core, HTTP, page weight, memory (about 3 minutes)
+    python3 bench/run.py            # core, HTTP, page weight, memory, hostile load
     python3 bench/run.py --soak     # plus a 60 s no-error load test per endpoint
 
 Figures are printed, never asserted: timing depends on the machine. The exit code is 0
@@ -12,6 +12,7 @@ import os
 import platform
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -37,11 +38,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--soak", action="store_true", help="add the 60 s load test per endpoint")
     parser.add_argument("--soak-seconds", type=int, default=60)
     parser.add_argument("--seconds", type=int, default=10, help="wrk duration per endpoint")
-    parser.add_argument("--only", choices=("core", "http"), help="run one part")
+    parser.add_argument("--only", choices=("core", "http", "hostile"), help="run one part")
     args = parser.parse_args(argv)
     # `python3 bench/run.py` puts bench/ first on the path; the repository root belongs there
     sys.path[:] = [str(ROOT), *(p for p in sys.path if Path(p or ".").resolve() != ROOT / "bench")]
-    from bench import core, web
+    from bench import core, hostile, web
     from bench.report import Report
 
     report = Report()
@@ -59,6 +60,9 @@ def main(argv: list[str] | None = None) -> int:
             memory_seconds=600 if args.soak else 60,
             soak_seconds=args.soak_seconds if args.soak else None,
         )
+    if args.only in (None, "hostile"):
+        with tempfile.TemporaryDirectory(prefix="leadscrew-bench-") as tmp:
+            hostile.run(report, seconds=args.seconds, tmp=Path(tmp))
     report.info("load average at the end", " ".join(f"{x:.2f}" for x in os.getloadavg()))
     report.summary()
     return 0

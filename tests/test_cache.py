@@ -1,5 +1,13 @@
-"""The per-process response cache: repeated selection queries are answered as computed."""
+"""The per-process response cache: repeated selection queries are answered as computed.
 
+Also what a hostile client cannot do to it: grow it with long header values, or store one
+kind of response (gzip, full page) where another kind (identity, fragment) is looked up
+by sending a header twice.
+"""
+
+import gzip
+
+from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
 from app.cache import ResponseCache
@@ -39,17 +47,109 @@ def test_other_queries_errors_and_posts_are_not_served_from_cache() -> None:
     assert "x-cache" not in client.post("/api/v1/select", json=body).headers
 
 
+def _cache(app: FastAPI) -> ResponseCache:
+    client = TestClient(app)
+    client.get("/api/v1/health")  # builds the middleware stack
+    layer = app.middleware_stack
+    while not isinstance(layer, ResponseCache):
+        layer = layer.app  # type: ignore[union-attr]
+    return layer
+
+
 def test_cache_is_bounded_by_bytes_and_can_be_turned_off() -> None:
     app = create_app(Settings(response_cache_bytes=8 * 20_000))
     client = TestClient(app, headers={"Accept-Encoding": "gzip"})
     for load in range(100, 120):
         client.get(SELECT.replace("load_n=100", f"load_n={load}"))
-    cache = app.middleware_stack
-    while not isinstance(cache, ResponseCache):
-        cache = cache.app
-    assert 0 < cache.size <= 8 * 20_000
-    assert cache.size == sum(len(body) for _, body in cache.entries.values())
+    cache = _cache(app)
+    assert 0 < cache.size_bytes <= 8 * 20_000
+    assert cache.size_bytes == sum(entry.held_bytes for entry in cache.entries.values())
+    # the count covers more than the body: key, status and headers too
+    assert all(entry.held_bytes > len(entry.body) + 500 for entry in cache.entries.values())
     assert client.get(SELECT).headers["x-cache"] == "miss"  # the oldest was evicted
     off = TestClient(create_app(Settings(response_cache_bytes=0)))
     off.get(SELECT)
     assert "x-cache" not in off.get(SELECT).headers
+
+
+def test_cache_is_bounded_by_entry_count() -> None:
+    app = create_app(Settings(response_cache_entries=5))
+    client = TestClient(app)
+    for load in range(100, 112):
+        client.get(SELECT.replace("load_n=100", f"load_n={load}"))
+    assert len(_cache(app).entries) == 5
+
+
+def test_megabyte_header_values_do_not_grow_the_cache() -> None:
+    """200 requests, each with its own 1 MB HX-History-Restore-Request value: the key is a
+    fixed-size digest, so the cache holds one entry of the same size whatever was sent."""
+    app = create_app(Settings())
+    client = TestClient(app)
+    cache = _cache(app)
+    for i in range(200):
+        value = f"{i:06d}" + "x" * 1_000_000
+        response = client.get(SELECT, headers={"HX-History-Restore-Request": value})
+        assert response.status_code == 200
+    assert len(cache.entries) == 1
+    assert cache.size_bytes == next(iter(cache.entries.values())).held_bytes < 200_000
+    assert all(len(key) == 32 for key in cache.entries)
+
+
+def test_megabyte_headers_on_many_queries_stay_within_both_bounds() -> None:
+    app = create_app(Settings(response_cache_bytes=2 * 1024 * 1024, response_cache_entries=50))
+    client = TestClient(app)
+    cache = _cache(app)
+    for load in range(100, 180):
+        query = PAGE.replace("load=100", f"load={load}")
+        client.get(query, headers={"HX-History-Restore-Request": "y" * 1_000_000})
+        assert cache.size_bytes <= 2 * 1024 * 1024 and len(cache.entries) <= 50
+    assert len(cache.entries) == 50
+
+
+def _raw_get(client: TestClient, url: str, headers: list[tuple[str, str]]) -> bytes:
+    """The body as sent (not decompressed), for a request that repeats header lines."""
+    with client.stream("GET", url, headers=headers) as response:
+        assert response.status_code == 200
+        return b"".join(response.iter_raw())
+
+
+def test_duplicated_accept_encoding_cannot_poison_plain_clients() -> None:
+    client = TestClient(create_app(Settings()))
+    _raw_get(client, SELECT, [("Accept-Encoding", "gzip"), ("Accept-Encoding", "identity")])
+    plain = client.get(SELECT, headers={"Accept-Encoding": "identity"})
+    assert "content-encoding" not in plain.headers
+    assert plain.content.startswith(b"{")
+    zipped = _raw_get(client, SELECT, [("Accept-Encoding", "gzip")])
+    assert gzip.decompress(zipped) == plain.content
+
+
+def test_duplicated_hx_request_cannot_poison_htmx_clients() -> None:
+    client = TestClient(create_app(Settings()))
+    first = client.get(PAGE, headers=[("HX-Request", "zzz"), ("HX-Request", "true")])
+    assert "<html" in first.text  # read by its first line, as the page route reads it
+    fragment = client.get(PAGE, headers={"HX-Request": "true"})
+    assert "<html" not in fragment.text and "hx-push-url" in fragment.headers
+    again = client.get(PAGE, headers=[("HX-Request", "true"), ("HX-Request", "zzz")])
+    assert again.headers["x-cache"] == "hit" and again.text == fragment.text
+
+
+def test_gzip_at_q0_is_not_gzip_for_the_cache_nor_the_response() -> None:
+    client = TestClient(create_app(Settings()))
+    client.get(SELECT, headers={"Accept-Encoding": "gzip"})
+    refused = client.get(SELECT, headers={"Accept-Encoding": "gzip;q=0, identity"})
+    assert "content-encoding" not in refused.headers
+    assert refused.headers["x-cache"] == "miss"
+
+
+def _vary(value: str) -> set[str]:
+    return {v.strip().lower() for v in value.split(",")}
+
+
+def test_vary_names_what_cached_responses_depend_on() -> None:
+    client = TestClient(create_app(Settings()))
+    page_vary = {"accept-encoding", "hx-request", "hx-history-restore-request"}
+    for headers in ({}, {"Accept-Encoding": "gzip"}, {"HX-Request": "true"}):
+        for _ in range(2):  # the miss, then the hit
+            assert _vary(client.get(PAGE, headers=headers).headers["vary"]) == page_vary
+    for _ in range(2):
+        assert _vary(client.get(SELECT).headers["vary"]) == {"accept-encoding"}

@@ -1,0 +1,147 @@
+"""uvicorn's httptools protocol with a request-read deadline and request-head limits.
+
+uvicorn bounds the time an idle connection stays open between requests
+(``timeout_keep_alive``), but not the time a client may take to send a request: a
+connection that sends nothing, or half a header and then a byte a minute, stays open for
+good. Nor does the httptools parser bound a request's head: it gathers a 50 MB header
+value in memory as readily as a short one. This protocol adds both bounds:
+
+* the request (head and body) must arrive within ``request_read_timeout_s`` of the
+  connection opening or of its first byte, else the connection is closed;
+* the request line and headers together may take ``max_header_bytes`` and there may be
+  ``max_headers`` of them, else the answer is 431 and the connection is closed, after
+  reading at most one socket read past the limit.
+
+The limits come from ``app.settings`` (``LEADSCREW_*``), so every worker process that
+uvicorn starts reads the same ones.
+"""
+
+import asyncio
+import logging
+from typing import Any
+
+from uvicorn.config import Config
+from uvicorn.protocols.http.httptools_impl import STATUS_LINE, HttpToolsProtocol
+from uvicorn.server import ServerState
+
+from app.settings import get_settings
+
+logger = logging.getLogger("uvicorn.error")
+#: what a header line adds to the head besides its name and value: ": " and CRLF
+HEADER_LINE_OVERHEAD_BYTES = 4
+
+
+class HeadTooLarge(Exception):
+    """Raised in a parser callback to stop parsing a request head past the limits."""
+
+
+class BoundedHttpToolsProtocol(HttpToolsProtocol):
+    """``HttpToolsProtocol`` with a deadline to read each request and a bounded head."""
+
+    def __init__(
+        self,
+        config: Config,
+        server_state: ServerState,
+        app_state: dict[str, Any],
+        _loop: asyncio.AbstractEventLoop | None = None,
+    ) -> None:
+        super().__init__(config, server_state, app_state, _loop)
+        settings = get_settings()
+        self.read_timeout_s = settings.request_read_timeout_s
+        self.max_header_bytes = settings.max_header_bytes
+        self.max_headers = settings.max_headers
+        self.read_deadline: asyncio.TimerHandle | None = None
+        self.reading_head = True
+        # bytes received while the head is incomplete (bounds memory before parsing ends),
+        # and the parsed head's exact size and header count
+        self.received_head_bytes = 0
+        self.head_bytes = 0
+        self.head_count = 0
+        self.head_too_large = False
+
+    # --- the read deadline ----------------------------------------------------------
+
+    def _start_read_deadline(self) -> None:
+        if self.read_deadline is None:
+            self.read_deadline = self.loop.call_later(self.read_timeout_s, self._read_timed_out)
+
+    def _stop_read_deadline(self) -> None:
+        if self.read_deadline is not None:
+            self.read_deadline.cancel()
+            self.read_deadline = None
+
+    def _read_timed_out(self) -> None:
+        """The client took too long to send its request: free the connection."""
+        self.read_deadline = None
+        if not self.transport.is_closing():
+            logger.info("Request not received within %s s, connection closed", self.read_timeout_s)
+            self.transport.close()
+
+    def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
+        super().connection_made(transport)
+        self._start_read_deadline()
+
+    def connection_lost(self, exc: Exception | None) -> None:
+        self._stop_read_deadline()
+        super().connection_lost(exc)
+
+    def on_message_begin(self) -> None:
+        super().on_message_begin()
+        self._start_read_deadline()
+
+    def on_message_complete(self) -> None:
+        super().on_message_complete()
+        self._stop_read_deadline()
+        self.reading_head = True
+
+    # --- the head limits ------------------------------------------------------------
+
+    def data_received(self, data: bytes) -> None:
+        if self.reading_head:
+            self.received_head_bytes += len(data)
+        super().data_received(data)
+        if (
+            self.reading_head
+            and self.received_head_bytes > self.max_header_bytes
+            and not self.transport.is_closing()
+        ):
+            self.head_too_large = True
+            self.send_400_response("Request header fields too large.")
+
+    def _count_head(self, size_bytes: int, lines: int) -> None:
+        self.head_bytes += size_bytes
+        self.head_count += lines
+        if self.head_bytes > self.max_header_bytes or self.head_count > self.max_headers:
+            self.head_too_large = True
+            raise HeadTooLarge
+
+    def on_url(self, url: bytes) -> None:
+        self._count_head(len(url), 0)
+        super().on_url(url)
+
+    def on_header(self, name: bytes, value: bytes) -> None:
+        self._count_head(len(name) + len(value) + HEADER_LINE_OVERHEAD_BYTES, 1)
+        super().on_header(name, value)
+
+    def on_headers_complete(self) -> None:
+        self.reading_head = False
+        self.received_head_bytes = self.head_bytes = self.head_count = 0
+        super().on_headers_complete()
+
+    def send_400_response(self, msg: str) -> None:
+        """uvicorn's answer to a request it cannot parse; 431 when the head is too large."""
+        if not self.head_too_large:
+            super().send_400_response(msg)
+            return
+        reason = b"Request header fields too large."
+        content = [STATUS_LINE[431]]
+        for name, value in self.server_state.default_headers:
+            content += [name, b": ", value, b"\r\n"]
+        content += [
+            b"content-type: text/plain; charset=utf-8\r\n",
+            b"content-length: " + str(len(reason)).encode() + b"\r\n",
+            b"connection: close\r\n\r\n",
+            reason,
+        ]
+        self.transport.write(b"".join(content))
+        self.transport.close()

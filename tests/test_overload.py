@@ -1,0 +1,171 @@
+"""Load shedding: past the in-flight limit a request gets 503 with Retry-After at once.
+
+Deterministic: the requests in progress are held by an app that waits on an event, or
+started together in one event loop, never raced against a clock.
+"""
+
+import asyncio
+import contextlib
+from collections.abc import Awaitable, Callable
+from concurrent.futures import ThreadPoolExecutor
+from typing import Any
+
+from app.main import create_app
+from app.overload import OverloadMiddleware
+from app.settings import Settings
+
+Message = dict[str, Any]
+SELECT = b"load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
+
+
+def _scope(path: str, query: bytes = b"") -> dict[str, Any]:
+    return {
+        "type": "http",
+        "asgi": {"version": "3.0"},
+        "http_version": "1.1",
+        "method": "GET",
+        "scheme": "http",
+        "path": path,
+        "raw_path": path.encode(),
+        "query_string": query,
+        "root_path": "",
+        "headers": [(b"host", b"testserver")],
+        "client": ("127.0.0.1", 1),
+        "server": ("testserver", 80),
+        "state": {},
+    }
+
+
+async def _call(
+    app: Callable[..., Awaitable[None]], path: str, query: bytes = b""
+) -> tuple[int, dict[str, str]]:
+    """One GET into an ASGI app: (status, headers)."""
+    sent: list[Message] = []
+
+    async def receive() -> Message:
+        return {"type": "http.request", "body": b"", "more_body": False}
+
+    async def send(message: Message) -> None:
+        sent.append(message)
+
+    await app(_scope(path, query), receive, send)
+    return sent[0]["status"], {k.decode(): v.decode() for k, v in sent[0]["headers"]}
+
+
+def _run(coroutine: Awaitable[Any]) -> Any:
+    """On a thread of its own: Playwright's sync API may hold the main thread's loop."""
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        return pool.submit(asyncio.run, coroutine).result()  # type: ignore[arg-type]
+
+
+class HeldApp:
+    """Answers 200, but only once ``release`` is set; counts the requests it has."""
+
+    def __init__(self) -> None:
+        self.release = asyncio.Event()
+        self.holding = 0
+
+    async def __call__(self, scope: Any, receive: Any, send: Any) -> None:
+        if scope["path"] != "/api/v1/health":
+            self.holding += 1
+            await self.release.wait()
+        await send({"type": "http.response.start", "status": 200, "headers": []})
+        await send({"type": "http.response.body", "body": b"ok"})
+
+
+async def _held_scenario() -> dict[str, Any]:
+    held = HeldApp()
+    shedder = OverloadMiddleware(
+        held, max_in_flight=3, retry_after_s=2, exempt_paths=frozenset({"/api/v1/health"})
+    )
+    waiting = [asyncio.create_task(_call(shedder, "/slow")) for _ in range(3)]
+    while held.holding < 3:
+        await asyncio.sleep(0)
+    over = await _call(shedder, "/slow")
+    health = await _call(shedder, "/api/v1/health")
+    in_flight_while_held = shedder.in_flight
+    held.release.set()
+    served = await asyncio.gather(*waiting)
+    after = await _call(shedder, "/slow")
+    return {
+        "over": over,
+        "health": health,
+        "served": served,
+        "after": after,
+        "in_flight_while_held": in_flight_while_held,
+        "in_flight_after": shedder.in_flight,
+        "shed": shedder.shed,
+    }
+
+
+def test_a_request_past_the_limit_gets_503_with_retry_after_at_once() -> None:
+    got = _run(_held_scenario())
+    status, headers = got["over"]
+    assert status == 503
+    assert headers["retry-after"] == "2"
+    assert headers["content-type"] == "application/json"
+    assert headers["cache-control"] == "no-store"
+    assert got["health"][0] == 200  # the health check is never shed
+    assert [s for s, _ in got["served"]] == [200, 200, 200]
+    assert got["after"][0] == 200  # capacity comes back as requests finish
+    assert (got["in_flight_while_held"], got["in_flight_after"], got["shed"]) == (3, 0, 1)
+
+
+async def _failing_scenario() -> tuple[int, int]:
+    async def broken(scope: Any, receive: Any, send: Any) -> None:
+        raise RuntimeError("a bug")
+
+    shedder = OverloadMiddleware(broken, max_in_flight=1, retry_after_s=1, exempt_paths=frozenset())
+    for _ in range(3):
+        with contextlib.suppress(RuntimeError):
+            await _call(shedder, "/x")
+    return shedder.in_flight, shedder.shed
+
+
+def test_a_failing_request_gives_its_place_back() -> None:
+    assert _run(_failing_scenario()) == (0, 0)
+
+
+async def _never_waits(scope: Any, receive: Any, send: Any) -> None:
+    """A route that computes without awaiting anything: it runs start to end in one go."""
+    await send({"type": "http.response.start", "status": 200, "headers": []})
+    await send({"type": "http.response.body", "body": b"ok"})
+
+
+async def _burst_without_awaits() -> list[tuple[int, dict[str, str]]]:
+    shedder = OverloadMiddleware(
+        _never_waits, max_in_flight=2, retry_after_s=1, exempt_paths=frozenset()
+    )
+    return await asyncio.gather(*(_call(shedder, "/x") for _ in range(5)))
+
+
+def test_requests_waiting_in_the_loop_count_even_if_the_route_never_awaits() -> None:
+    """Without a yield before the route runs, each of these would finish before the next
+    was counted: all five 'in flight' one at a time, the backlog invisible."""
+    answers = _run(_burst_without_awaits())
+    assert [status for status, _ in answers] == [200, 200, 503, 503, 503]
+
+
+async def _burst(limit: int, requests: int) -> list[tuple[int, dict[str, str]]]:
+    app = create_app(Settings(max_requests_in_flight=limit, response_cache_bytes=0))
+    calls = [_call(app, "/api/v1/select", SELECT) for _ in range(requests)]
+    calls.append(_call(app, "/api/v1/health"))
+    return await asyncio.gather(*calls)
+
+
+def test_a_burst_that_arrives_together_is_counted_before_any_is_computed() -> None:
+    """Six selects arriving in one loop turn, limit two: two computed, four shed, though
+    the route itself never waits; the health check answers 200 all the same."""
+    answers = _run(_burst(limit=2, requests=6))
+    *selects, health = answers
+    assert sorted(status for status, _ in selects) == [200, 200, 503, 503, 503, 503]
+    assert health[0] == 200
+    for status, headers in selects:
+        if status == 503:
+            assert headers["retry-after"] == "1"
+            assert "frame-ancestors 'none'" in headers["content-security-policy"]
+
+
+def test_the_limit_can_be_turned_off() -> None:
+    answers = _run(_burst(limit=0, requests=4))
+    assert [status for status, _ in answers] == [200] * 5
