@@ -5,13 +5,12 @@ no body; a spreadsheet runs `` =...`` and fullwidth ``＝...`` cells as formulas
 redirect built from the Host header would send a client wherever that header says.
 """
 
-import csv
-import io
-
 import pytest
 from fastapi.testclient import TestClient
 
 from app.export import results_csv, safe_cell
+from app.schemas import SelectOut
+from tests.test_pages import csv_candidates
 
 AXIS = "load=100&speed=50&length=500&lead=10"
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
@@ -90,8 +89,9 @@ def test_a_csv_export_quotes_spaced_and_fullwidth_formulas(client: TestClient) -
     result = client.get(SELECT).json()
     hostile = {**result["candidates"][0], "id": " =HYPERLINK(1)", "series": "＝SUM(A1)"}
     units = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
-    text = results_csv({**result, "candidates": [hostile], "rejected": []}, units)
-    row = next(csv.DictReader(io.StringIO(text)))
+    typed = SelectOut.model_validate({**result, "candidates": [hostile], "rejected": []})
+    text = results_csv(typed, units)
+    row = csv_candidates(text)[0]
     assert (row["id"], row["series"]) == ("' =HYPERLINK(1)", "'＝SUM(A1)")
 
 

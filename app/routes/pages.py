@@ -12,6 +12,7 @@ from app.errors import AppError
 from app.export import results_csv
 from app.fields import BY_PAGE, FIELDS, GROUPS
 from app.figures import chart_candidates, result_figures
+from app.headers import is_htmx_fragment
 from app.page_form import (
     TRUE_WORDS,
     UNIT_CHOICES,
@@ -114,10 +115,9 @@ def _push_url(context: dict[str, Any]) -> str:
 
 
 def _is_fragment(request: Request) -> bool:
-    """An HTMX swap (not a history restore, which needs the whole page)."""
-    return request.headers.get("HX-Request") == "true" and (
-        request.headers.get("HX-History-Restore-Request") != "true"
-    )
+    """An HTMX swap (not a history restore, which needs the whole page), read the way the
+    response cache reads it."""
+    return is_htmx_fragment(request.headers)
 
 
 @router.api_route("/", methods=["GET", "HEAD"], response_class=HTMLResponse)
