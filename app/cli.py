@@ -11,7 +11,7 @@ from types import FrameType
 import uvicorn
 
 from app.catalog import CatalogError, load_catalog
-from app.protocol import BoundedHttpToolsProtocol
+from app.server.protocol import BoundedHttpToolsProtocol
 from app.settings import get_settings
 
 
@@ -64,7 +64,7 @@ def main(argv: list[str] | None = None) -> int:
         workers=args.workers,
         proxy_headers=True,
         log_level=args.log_level,
-        # request-read deadline and head limits: app.protocol, from the same settings
+        # request-read deadline and head limits: app.server.protocol, from the same settings
         http=BoundedHttpToolsProtocol,
         timeout_keep_alive=settings.keep_alive_timeout_s,
         limit_concurrency=settings.max_connections,

@@ -10,7 +10,7 @@ from fastapi.responses import JSONResponse, Response
 from fastapi.routing import APIRoute
 from starlette.exceptions import HTTPException
 
-from app.templating import templates
+from app.web.templating import templates
 
 
 class AppError(Exception):

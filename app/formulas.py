@@ -19,15 +19,20 @@ SEED = "seed catalog, Leadscrew Assemblies: Design and Engineering Data"
 SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed., sec. 8-2"
 
 
+#: Modules of the core outside ``app.core.formulas``.
+CORE_MODULES = ("quantities", "evaluate", "selection")
+
+
 def _f(formula: str, function: str, source: str) -> Formula:
-    return {"formula": formula, "function": f"app.core.{function}", "source": source}
+    package = "app.core" if function.split(".")[0] in CORE_MODULES else "app.core.formulas"
+    return {"formula": formula, "function": f"{package}.{function}", "source": source}
 
 
 FORMULAS: dict[str, Formula] = {
     "pitch_diameter_mm": _f("d_p = (OD + RD) / 2", "geometry.pitch_diameter", SEED),
     "lead_angle_deg": _f("lambda = atan(lead / (pi d_p))", "geometry.lead_angle", SHIGLEY),
     "rpm": _f("n = 60 v / lead", "geometry.screw_speed_rpm", SEED + " (RS = speed / lead)"),
-    "axial_load_n": _f("F = load (+ m g when vertical)", "evaluate.axial_load", "statics"),
+    "axial_load_n": _f("F = load (+ m g when vertical)", "quantities.axial_load", "statics"),
     "efficiency": _f(
         "eta = (cos a_n - mu tan l) / (cos a_n + mu / tan l), mu dynamic",
         "efficiency.forward_efficiency",
@@ -60,7 +65,7 @@ FORMULAS: dict[str, Formula] = {
     ),
     "holding_torque.brake_nm": _f(
         "T = max(seed method, physics); 0 when self-locking",
-        "evaluate.evaluate",
+        "quantities.operating_point",
         "safe side of both",
     ),
     "torque.inertia_screw_nm": _f(
@@ -75,7 +80,7 @@ FORMULAS: dict[str, Formula] = {
     ),
     "torque.drag_nm": _f(
         "top of the series' static drag range",
-        "evaluate.evaluate",
+        "quantities.operating_point",
         SEED + " (Static Frictional Torque)",
     ),
     "torque.load_nm": _f(
@@ -92,7 +97,7 @@ FORMULAS: dict[str, Formula] = {
         SEED + " with static friction",
     ),
     "torque.required_nm": _f(
-        "T = SF x max(T_total, T_breakaway)", "evaluate.evaluate", "user torque margin"
+        "T = SF x max(T_total, T_breakaway)", "quantities.operating_point", "user torque margin"
     ),
     "critical_speed.theoretical_rpm": _f(
         "n_c = 60 / (2 pi) (beta / L)^2 sqrt(E / rho) d_r / 4",

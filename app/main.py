@@ -5,17 +5,19 @@ from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException
 
 from app import __version__
-from app.cache import ResponseCache
+from app.api import docs
+from app.api import routes as api
 from app.catalog import load_catalog
-from app.compression import NegotiatedGZipMiddleware
 from app.errors import AppError, app_error_handler, http_error_handler, validation_error_handler
-from app.head import HeadAsGetMiddleware
-from app.overload import OverloadMiddleware
 from app.paths import resource_dir
-from app.routes import api, docs, pages
-from app.security import SecurityMiddleware
+from app.server.cache import ResponseCache
+from app.server.compression import NegotiatedGZipMiddleware
+from app.server.head import HeadAsGetMiddleware
+from app.server.overload import OverloadMiddleware
+from app.server.security import SecurityMiddleware
+from app.server.staticfiles import PrecompressedStaticFiles
 from app.settings import Settings, get_settings
-from app.staticfiles import PrecompressedStaticFiles
+from app.web import pages
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})

@@ -7,7 +7,7 @@ from collections.abc import Mapping as Units
 from typing import Any
 
 from app.catalog import Material, Series
-from app.core import geometry, torque
+from app.core.formulas import geometry, torque
 from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, Selection
 from app.schemas import (
     AccuracyOut,

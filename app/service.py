@@ -6,7 +6,6 @@ from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.selection import select
 from app.formulas import FORMULAS
-from app.page_form import share_query
 from app.present import candidate_out, custom_screw, selection_out
 from app.schemas import (
     ApplicationIn,
@@ -17,6 +16,7 @@ from app.schemas import (
     SelectOut,
 )
 from app.units import DEFAULT_UNITS
+from app.web.form import share_query
 
 #: The formulas table as output models, built once.
 FORMULAS_OUT = {name: FormulaOut(**f) for name, f in FORMULAS.items()}

@@ -23,7 +23,7 @@ class Settings(BaseSettings):
     max_requests_in_flight: int = 32
     #: the Retry-After of those 503s
     overload_retry_after_s: int = 1
-    # --- the server (app.cli, app.protocol) ---
+    # --- the server (app.cli, app.server.protocol) ---
     #: a request's head and body must arrive within this many seconds of the connection
     #: opening or of the request's first byte, else the connection is closed
     request_read_timeout_s: float = 10.0

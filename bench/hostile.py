@@ -12,7 +12,7 @@
   requests while 200 sockets trickle half a request head.
 
 Servers here are started as ``leadscrew-selector`` starts them (``python -m app.cli``),
-so the server limits of ``app.protocol`` apply.
+so the server limits of ``app.server.protocol`` apply.
 """
 
 import getpass

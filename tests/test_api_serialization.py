@@ -1,4 +1,4 @@
-"""The select and evaluate routes skip response validation (``app.routes.api.ModelJSON``);
+"""The select and evaluate routes skip response validation (``app.responses.ModelJSON``);
 what they serve must still be, byte for byte, what the validated output model gives."""
 
 from typing import Any
@@ -79,7 +79,7 @@ def test_evaluate_serves_what_the_model_would(
 
 
 def test_non_finite_numbers_are_null_as_in_the_model() -> None:
-    from app.routes.api import ModelJSON
+    from app.api.routes import ModelJSON
 
     assert ModelJSON({"a": float("inf"), "b": float("nan"), "c": 1.5}).body == (
         b'{"a":null,"b":null,"c":1.5}'

@@ -10,8 +10,8 @@ import gzip
 from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
-from app.cache import ResponseCache
 from app.main import create_app
+from app.server.cache import ResponseCache
 from app.settings import Settings
 
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"

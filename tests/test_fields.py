@@ -24,12 +24,12 @@ from pydantic import BaseModel, ValidationError
 import app.schemas
 from app.catalog import Catalog
 from app.core.model import Application
-from app.export import results_csv
 from app.fields import BY_API, BY_PAGE, FIELDS, GROUPS, InputField
 from app.inputs import ApplicationIn
-from app.page_form import parse_inputs, parse_units, read_number, share_query
 from app.service import run_selection
 from app.units import DEFAULT_UNITS, FORCE_UNITS, LENGTH_UNITS, TORQUE_UNITS
+from app.web.export import results_csv
+from app.web.form import parse_inputs, parse_units, read_number, share_query
 
 ROOT = Path(__file__).resolve().parents[1]
 #: page names of today's share links; links already sent out must keep working.

@@ -8,10 +8,10 @@ import plotly.graph_objects as go
 import pytest
 
 from app.catalog import Catalog
-from app.core.critical_speed import critical_speed_rpm
-from app.figures import TOP, chart_candidates, result_figures
+from app.core.formulas.critical_speed import critical_speed_rpm
 from app.schemas import ApplicationIn, SelectOut
 from app.service import run_selection
+from app.web.figures import TOP, chart_candidates, result_figures
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}

@@ -8,8 +8,8 @@ redirect built from the Host header would send a client wherever that header say
 import pytest
 from fastapi.testclient import TestClient
 
-from app.export import results_csv, safe_cell
 from app.schemas import SelectOut
+from app.web.export import results_csv, safe_cell
 from tests.test_pages import csv_candidates
 
 AXIS = "load=100&speed=50&length=500&lead=10"

@@ -11,7 +11,7 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 from app.main import create_app
-from app.overload import OverloadMiddleware
+from app.server.overload import OverloadMiddleware
 from app.settings import Settings
 
 Message = dict[str, Any]

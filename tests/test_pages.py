@@ -17,9 +17,9 @@ from fastapi.testclient import TestClient
 from httpx import Response
 
 from app.catalog import Catalog
-from app.export import results_csv, safe_cell
 from app.fields import BY_PAGE
 from app.schemas import SelectOut
+from app.web.export import results_csv, safe_cell
 
 ROOT = Path(__file__).resolve().parents[1]
 AXIS = {"load": "100", "lead": "10", "speed": "50", "length": "500"}

@@ -27,9 +27,9 @@ from fastapi.testclient import TestClient
 
 from app.fields import BY_PAGE
 from app.main import create_app
-from app.page_form import ENTERED_PREFIX, UNIT_CHOICES
 from app.schemas import ApplicationIn, CustomScrewIn
 from app.settings import Settings
+from app.web.form import ENTERED_PREFIX, UNIT_CHOICES
 
 ROOT = Path(__file__).resolve().parents[1]
 PAYLOADS = ["<script>alert(1)</script>", '"><img src=x onerror=alert(1)>', "javascript:alert(1)"]

@@ -12,7 +12,7 @@ from typing import Any
 from app.catalog.entry import Entry
 from app.catalog.family import Family, IdVariant
 from app.catalog.models import Material, Series, Sourced
-from app.core import geometry, pv
+from app.core.formulas import geometry, pv
 from app.core.model import Provenance, ScrewSpec
 
 MM = 1e-3

@@ -7,9 +7,9 @@ from typing import Any
 
 import numpy as np
 
-from app.core import critical_speed
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check, Measure
+from app.core.formulas import critical_speed
 from app.core.model import (
     PV,
     Accuracy,

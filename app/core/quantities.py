@@ -12,7 +12,16 @@ from typing import Any, Generic, TypeVar
 
 import numpy as np
 
-from app.core import accuracy, buckling, critical_speed, efficiency, geometry, life, pv, torque
+from app.core.formulas import (
+    accuracy,
+    buckling,
+    critical_speed,
+    efficiency,
+    geometry,
+    life,
+    pv,
+    torque,
+)
 from app.core.model import STANDARD_GRAVITY_M_S2, Application
 from app.core.table import Array, CandidateTable
 

@@ -11,7 +11,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core import efficiency, geometry, limits
+from app.core.formulas import efficiency, geometry, limits
 from app.core.model import ScrewSpec
 
 Array = NDArray[np.float64]

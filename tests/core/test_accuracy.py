@@ -2,7 +2,7 @@
 
 import pytest
 
-from app.core import accuracy
+from app.core.formulas import accuracy
 
 
 @pytest.mark.parametrize(

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.core import buckling
+from app.core.formulas import buckling
 from tests.core.conftest import FIXITIES, STEEL_E
 
 

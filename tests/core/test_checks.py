@@ -5,8 +5,8 @@ from dataclasses import replace
 import pytest
 
 from app.catalog import Catalog
-from app.core import limits
 from app.core.evaluate import evaluate
+from app.core.formulas import limits
 from app.core.model import Application, CheckResult, Evaluation, ScrewSpec
 from app.units import render
 from tests.core.conftest import light_app

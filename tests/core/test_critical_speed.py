@@ -6,8 +6,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.core import critical_speed as cs
-from app.core import geometry
+from app.core.formulas import critical_speed as cs
+from app.core.formulas import geometry
 from tests.core.conftest import FIXITIES, IN, SS303_E, SS303_RHO, STEEL_E, STEEL_RHO
 
 

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import assume, given
 from hypothesis import strategies as st
 
-from app.core import efficiency, geometry
+from app.core.formulas import efficiency, geometry
 from tests.core.conftest import COS_ACME
 
 SQUARE = 1.0  # cos(0): square thread, no flank angle

@@ -12,8 +12,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
-from app.core import critical_speed, efficiency, geometry
 from app.core.evaluate import axial_load, evaluate
+from app.core.formulas import critical_speed, efficiency, geometry
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, Evaluation, ScrewSpec
 from app.units import render
 from tests.core.conftest import applications, light_app

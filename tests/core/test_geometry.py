@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.core import geometry
+from app.core.formulas import geometry
 from tests.core.conftest import IN
 
 

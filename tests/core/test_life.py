@@ -4,7 +4,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.core import life
+from app.core.formulas import life
 
 MILLION_CM = 1e6 * 0.01  # m
 

@@ -4,7 +4,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.core import limits
+from app.core.formulas import limits
 
 #: Seed "Traverse Speed" table as the seed family's catalog data gives it.
 SEED_BANDS = ((0.0025, 0.012, 0.100), (0.012, 0.025, 0.250), (0.025, 0.060, 0.760))

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.core import geometry, pv
+from app.core.formulas import geometry, pv
 from tests.core.conftest import FT_PER_MIN, IN, LBF, PSI, PSI_FT_MIN
 
 

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.core import efficiency, geometry, torque
+from app.core.formulas import efficiency, geometry, torque
 
 SQUARE = 1.0
 

@@ -4,7 +4,6 @@ import math
 
 import numpy as np
 
-from app.core import efficiency, geometry
 from app.core.checks import register
 from app.core.checks.base import (
     Application,
@@ -17,6 +16,7 @@ from app.core.checks.base import (
     ScrewSpec,
     everywhere,
 )
+from app.core.formulas import efficiency, geometry
 from app.core.phrase import Amount, Phrase
 
 

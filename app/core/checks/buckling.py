@@ -1,6 +1,5 @@
 """Compressive axial force against the allowed fraction of the Euler buckling load."""
 
-from app.core import buckling
 from app.core.checks import register
 from app.core.checks.base import (
     Application,
@@ -16,6 +15,7 @@ from app.core.checks.base import (
     load_input,
     stiffer_support,
 )
+from app.core.formulas import buckling
 from app.core.phrase import Amount, Phrase
 
 

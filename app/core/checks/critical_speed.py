@@ -1,6 +1,5 @@
 """Screw speed against the allowed fraction of its first whirling speed."""
 
-from app.core import critical_speed
 from app.core.checks import register
 from app.core.checks.base import (
     Application,
@@ -15,6 +14,7 @@ from app.core.checks.base import (
     everywhere,
     stiffer_support,
 )
+from app.core.formulas import critical_speed
 from app.core.phrase import Amount, Phrase
 
 

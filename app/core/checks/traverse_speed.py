@@ -13,7 +13,7 @@ from app.core.checks.base import (
     same,
     where_given,
 )
-from app.core.limits import band_speed_m_s
+from app.core.formulas.limits import band_speed_m_s
 from app.core.phrase import Amount, Phrase
 
 

@@ -20,7 +20,7 @@ from collections.abc import Awaitable, Callable, MutableMapping
 from dataclasses import dataclass
 from typing import Any
 
-from app.headers import accepts_gzip, is_htmx_fragment
+from app.server.headers import accepts_gzip, is_htmx_fragment
 
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]

@@ -7,7 +7,7 @@ the tests use to validate them.
 
 from typing import Any
 
-from app.core import critical_speed, pv
+from app.core.formulas import critical_speed, pv
 from app.schemas import CandidateOut, SelectOut
 from app.units import Display, api_value
 
@@ -73,7 +73,7 @@ def critical_speed_figure(
     """Allowed speed vs unsupported length (log-log) with the operating points.
 
     Each curve moves the candidate's allowed speed at the user's length to other lengths
-    with ``app.core.critical_speed.speed_at_length`` (n proportional to 1 / L^2).
+    with ``app.core.formulas.critical_speed.speed_at_length`` (n proportional to 1 / L^2).
     """
     lengths_mm = _span(length_mm, CRITICAL_SPAN)
     x = [_round(d.value(length, "length")) for length in lengths_mm]
@@ -138,7 +138,7 @@ def pv_figure(
     """PV limit of each nut as the largest load vs linear speed (log-log), and the operating point.
 
     Each curve moves the PV-limited load at the user's speed to other speeds with
-    ``app.core.pv.max_load_at_speed`` (F_max proportional to 1 / v).
+    ``app.core.formulas.pv.max_load_at_speed`` (F_max proportional to 1 / v).
     """
     speeds = _span(speed_mm_s, PV_SPAN)
     x = [_round(d.value(v, "speed")) for v in speeds]

@@ -16,7 +16,7 @@ from starlette.responses import FileResponse, Response
 from starlette.staticfiles import StaticFiles
 from starlette.types import Scope
 
-from app.headers import accepts_gzip
+from app.server.headers import accepts_gzip
 
 COMPRESSIBLE = ("text/", "application/javascript", "application/json", "image/svg+xml")
 MINIMUM_SIZE = 500

@@ -8,7 +8,7 @@ get, so here the choice is ``app.headers.accepts_gzip``, the function the cache 
 from starlette.middleware.gzip import GZipMiddleware, GZipResponder, IdentityResponder
 from starlette.types import Receive, Scope, Send
 
-from app.headers import accepts_gzip
+from app.server.headers import accepts_gzip
 
 
 class NegotiatedGZipMiddleware(GZipMiddleware):

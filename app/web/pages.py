@@ -9,11 +9,16 @@ from fastapi.responses import HTMLResponse, Response
 from app.catalog import Catalog
 from app.deps import CatalogDep
 from app.errors import AppError
-from app.export import results_csv
 from app.fields import BY_PAGE, FIELDS, GROUPS
-from app.figures import chart_candidates, result_figures
-from app.headers import is_htmx_fragment
-from app.page_form import (
+from app.present import series_dict
+from app.responses import ModelJSON
+from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
+from app.server.headers import is_htmx_fragment
+from app.service import run_evaluation, run_selection
+from app.units import TORQUE_LABELS, Display, catalog_value
+from app.web.export import results_csv
+from app.web.figures import chart_candidates, result_figures
+from app.web.form import (
     TRUE_WORDS,
     UNIT_CHOICES,
     convert_entered,
@@ -25,12 +30,7 @@ from app.page_form import (
     share_query,
     summary_rows,
 )
-from app.present import series_dict
-from app.responses import ModelJSON
-from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
-from app.service import run_evaluation, run_selection
-from app.templating import templates
-from app.units import TORQUE_LABELS, Display, catalog_value
+from app.web.templating import templates
 
 router = APIRouter(include_in_schema=False)
 #: page fields that must be filled in before a selection runs.

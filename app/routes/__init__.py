@@ -1,1 +1,0 @@
-"""HTTP routes: ``api`` (JSON under /api/v1) and ``pages`` (HTML with HTMX partials)."""

@@ -1,0 +1,1 @@
+"""HTTP plumbing around the app: limits, load shedding, caching, compression, static files."""

@@ -1,0 +1,1 @@
+"""The HTML pages: the selector form and results, HTMX fragments, figures and exports."""
