@@ -22,7 +22,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal, get_args
 
-from app.core.model import CoatingChoice, EndFixity, Orientation, RankBy
+from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
 from app.units import Quantity, from_api, label
 
 Kind = Literal["number", "whole number", "yes-no", "choice"]
@@ -129,8 +129,8 @@ class InputField:
 FIELDS: tuple[InputField, ...] = (
     InputField(
         api="load_n", page="load", core="load_n", label="Axial load",
-        help="Axial force on the nut", group="Axis", kind="number", required=True,
-        bounds=(1e-3, 1e6), quantity="force", unit="N",
+        help="External axial force on the nut; 0 for a pure-inertia axis", group="Axis",
+        kind="number", required=True, bounds=(0.0, 1e6), quantity="force", unit="N",
     ),
     InputField(
         api="lead_mm", page="lead", core="lead_m", label="Lead",
@@ -150,8 +150,9 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="accel_mm_s2", page="accel", core="accel_m_s2", label="Acceleration",
-        help="Linear, to reach the speed", group="Motion and load", kind="number",
-        default=1000.0, bounds=(1e-3, 1e6), si_factor=MM, quantity="accel", unit="mm/s²",
+        help="Linear, to reach the speed; 0 for constant speed", group="Motion and load",
+        kind="number", default=1000.0, bounds=(0.0, 1e6), si_factor=MM, quantity="accel",
+        unit="mm/s²",
     ),
     InputField(
         api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
@@ -230,7 +231,8 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="buckling_safety_factor", page="buckling_safety_factor",
         core="buckling_safety_factor", label="Buckling factor",
-        help="Fraction of the Euler buckling load allowed, 1 or below",
+        help="Fraction of the column's critical load (Euler, or Johnson for short screws) "
+        "and of the yield strength at the root allowed, 1 or below",
         group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
     ),
     InputField(
@@ -240,10 +242,25 @@ FIELDS: tuple[InputField, ...] = (
         kind="number", default=1.0, bounds=(1.0, 10.0),
     ),
     InputField(
+        api="self_locking_friction_factor", page="self_locking_friction_factor",
+        core="self_locking_friction_factor", label="Self-locking friction factor",
+        help="Fraction of the static friction trusted to hold a vertical load, 1 or below: "
+        "0.5 matches the seed's rule (lead under diameter / 8); friction falls with "
+        "vibration and lubrication",
+        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
+    ),
+    InputField(
         api="max_torque_nm", page="max_torque", core="max_torque_nm",
         label="Max drive torque", help="What the motor gives; empty for no limit",
         group="Duty and requirements", kind="number", bounds=(1e-6, 1e5),
         quantity="torque", unit="N m",
+    ),
+    InputField(
+        api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
+        label="Holding torque", group="Duty and requirements", kind="number",
+        help="Vertical axis: a brake's, or the motor's holding torque, at the screw; empty "
+        "when the screw must hold the load by itself",
+        bounds=(0.0, 1e5), quantity="torque", unit="N m",
     ),
     InputField(
         api="required_life_years", page="required_life_years", core="required_life_years",
@@ -265,6 +282,13 @@ FIELDS: tuple[InputField, ...] = (
             "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
             "size": "Smallest size",
         },
+    ),
+    InputField(
+        api="advice", page="advice", core="advice", label="Advice",
+        help="A failed recommendation (e.g. the traverse speed for a lead): a warning only, "
+        "rank such screws last, or reject them",
+        group="Results", kind="choice", default="warn", options=AdvicePolicy,
+        texts={"warn": "Warn", "rank": "Warn and rank last", "reject": "Reject"},
     ),
     InputField(
         api="limit", page="limit", core="limit", label="Number of results",

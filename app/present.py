@@ -9,10 +9,12 @@ from typing import Any
 from app.catalog import Material, Series
 from app.core.formulas import geometry, torque
 from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, Selection
+from app.fields import BY_API, FIELDS
 from app.schemas import (
     AccuracyOut,
     BucklingOut,
     CandidateOut,
+    ChangeOut,
     CheckOut,
     CountsOut,
     CriticalSpeedOut,
@@ -28,6 +30,7 @@ from app.schemas import (
 )
 from app.units import DEFAULT_UNITS, api_value, render
 
+BY_CORE = {field.core: field for field in FIELDS}
 #: Catalog fields behind the geometry, efficiency and torque of every candidate.
 GEOMETRY_SOURCES = (
     "outer_diameter",
@@ -147,11 +150,16 @@ def _column(ev: Evaluation) -> dict[str, Any]:
             critical_load_n=b.critical_load_n,
             allowed_load_n=b.allowed_load_n,
             safety_factor=b.safety_factor,
+            slenderness=b.slenderness,
+            transition_slenderness=b.transition_slenderness,
+            mode=b.mode,
+            root_stress_mpa=b.root_stress_pa / 1e6,
+            yield_strength_mpa=None if b.yield_strength_pa is None else b.yield_strength_pa / 1e6,
         ),
     }
 
 
-def _thread(ev: Evaluation) -> dict[str, Any]:
+def _thread(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
     """Geometry, efficiencies and holding of the thread."""
     s = ev.screw
     return {
@@ -163,19 +171,26 @@ def _thread(ev: Evaluation) -> dict[str, Any]:
         "efficiency": ev.efficiency,
         "efficiency_square_thread": ev.efficiency_square_thread,
         "backdrive_efficiency": ev.backdrive_efficiency,
+        "backdrive_efficiency_running": ev.backdrive_efficiency_running,
         "self_locking": ev.self_locking,
+        "self_locking_with_margin": ev.self_locking_with_margin,
         "seed_rule_no_backdrive": ev.seed_rule_no_backdrive,
         "max_self_locking_lead_mm": _mm(ev.max_self_locking_lead_m),
+        "max_self_locking_lead_with_margin_mm": _mm(ev.max_self_locking_lead_with_margin_m),
         "holding_torque": HoldingTorqueOut.model_construct(
             seed_method_nm=ev.holding_torque_seed_nm,
             physics_nm=ev.holding_torque_physics_nm,
             brake_nm=ev.brake_torque_nm,
+            available_nm=available_nm,
         ),
     }
 
 
 def candidate_out(
-    ev: Evaluation, vacuum: bool = False, units: Units[str, str] = DEFAULT_UNITS
+    ev: Evaluation,
+    vacuum: bool = False,
+    units: Units[str, str] = DEFAULT_UNITS,
+    brake_nm: float | None = None,
 ) -> CandidateOut:
     """One evaluated screw in API units (mm, mm/s, N, N m, MPa m/s); sentences in ``units``."""
     s = ev.screw
@@ -193,8 +208,9 @@ def candidate_out(
         anti_backlash=s.anti_backlash,
         coated=s.coated,
         axial_load_n=ev.axial_load_n,
+        peak_axial_load_n=ev.peak_axial_load_n,
         rpm=ev.rpm,
-        **_thread(ev),
+        **_thread(ev, brake_nm),
         torque=_torque(ev),
         **_column(ev),
         pv=_pv(ev),
@@ -205,7 +221,9 @@ def candidate_out(
         outgassing=outgassing if vacuum else None,
         checks=checks,
         governing_check=ev.governing_check,
+        governing_limit_provenance=ev.governing_limit_provenance,
         passed=ev.passed,
+        warnings=[c for c in checks if c.kind == "advice" and not c.passed],
         fix=" ".join(fixes) if fixes else None,
         provenance={
             k: ProvenanceOut.model_construct(kind=p.kind, source=p.source)
@@ -218,10 +236,11 @@ def candidate_out(
 def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
     """Candidates, rejected, counts and summary of a selection (the rest of SelectOut is
     the caller's: inputs, links, catalog version)."""
-    vacuum = sel.application.vacuum
+    app = sel.application
+    vacuum, brake = app.vacuum, app.brake_torque_nm
     return {
-        "candidates": [candidate_out(e, vacuum, units) for e in sel.candidates],
-        "rejected": [candidate_out(e, vacuum, units) for e in sel.rejected],
+        "candidates": [candidate_out(e, vacuum, units, brake) for e in sel.candidates],
+        "rejected": [candidate_out(e, vacuum, units, brake) for e in sel.rejected],
         "counts": CountsOut.model_construct(
             evaluated=sel.evaluated,
             passed=sel.passed,
@@ -233,17 +252,27 @@ def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dic
             most_excluding_check=sel.summary.most_excluding_check,
             best_rejected_id=sel.summary.best_rejected_id,
             input_change=_api_change(sel.summary.input_change),
+            changes=[
+                ChangeOut.model_construct(inputs=_api_change(c.inputs), admits=c.admits)
+                for c in sel.summary.changes
+                if feasible(_api_change(c.inputs))
+            ],
         ),
     }
 
 
 def _api_change(change: Mapping[str, float]) -> dict[str, float]:
-    names = {
-        "load_n": ("load_n", 1.0),
-        "speed_m_s": ("speed_mm_s", 1e3),
-        "length_m": ("length_mm", 1e3),
-    }
-    return {names[k][0]: v * names[k][1] for k, v in change.items()}
+    """Core input names and SI values as the API's names and units (the field table)."""
+    return {BY_CORE[k].api: v / BY_CORE[k].si_factor for k, v in change.items()}
+
+
+def feasible(change: Mapping[str, float]) -> bool:
+    """Every value of an API change lies within its input's bounds."""
+    for name, value in change.items():
+        bounds = BY_API[name].bounds
+        if bounds is not None and not bounds[0] <= value <= bounds[1]:
+            return False
+    return True
 
 
 def _jsonable(value: Any) -> Any:

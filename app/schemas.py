@@ -18,6 +18,7 @@ from pydantic import (
     field_validator,
 )
 
+from app.core.model import ProvenanceKind
 from app.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
 from app.inputs import NotBool, bounded_number
 
@@ -140,19 +141,23 @@ class CheckOut(BaseModel):
 
 
 class ProvenanceOut(BaseModel):
-    kind: Literal["seed", "handbook", "derived", "assumed", "user"]
+    kind: ProvenanceKind
     source: str
 
 
 class TorqueOut(BaseModel):
     inertia_nm: float
     inertia_screw_nm: float
-    inertia_mass_nm: float
+    inertia_mass_nm: float = Field(
+        description="m a lead / (2 pi eta): the accelerating force through the thread."
+    )
     drag_nm: float
     drag_range_nm: list[float]
     load_nm: float
     total_nm: float
-    breakaway_nm: float
+    breakaway_nm: float = Field(
+        description="Starting from rest: (F + m a) lead / (2 pi eta_static) + J alpha + drag."
+    )
     safety_factor: float
     required_nm: float
     note: str
@@ -168,9 +173,16 @@ class CriticalSpeedOut(BaseModel):
 
 class BucklingOut(BaseModel):
     applies: bool
-    critical_load_n: float
+    critical_load_n: float = Field(description="Euler, or Johnson below the transition.")
     allowed_load_n: float
     safety_factor: float
+    slenderness: float = Field(description="(L / sqrt(k)) / (d_r / 4).")
+    transition_slenderness: float | None = Field(
+        description="sqrt(2 pi^2 E / S_y): Johnson below it; null without a yield strength."
+    )
+    mode: Literal["euler", "johnson"]
+    root_stress_mpa: float = Field(description="Peak thrust over the root area.")
+    yield_strength_mpa: float | None
 
 
 class PVOut(BaseModel):
@@ -185,7 +197,11 @@ class PVOut(BaseModel):
 class HoldingTorqueOut(BaseModel):
     seed_method_nm: float = Field(description="Seed: F lead eta / 2 pi, forward eta.")
     physics_nm: float = Field(description="F lead eta_b / 2 pi, back-drive eta, static mu.")
-    brake_nm: float = Field(description="Brake to fit: the larger of the two; 0 if locking.")
+    brake_nm: float = Field(
+        description="Holding torque needed: the larger of the two; 0 when self-locking with "
+        "margin (before the torque safety factor)."
+    )
+    available_nm: float | None = Field(description="The brake or holding torque given.")
 
 
 class LifeOut(BaseModel):
@@ -217,7 +233,11 @@ class CandidateOut(BaseModel):
     lead_mm: float
     lead_angle_deg: float
     coated: bool
-    axial_load_n: float
+    axial_load_n: float = Field(description="Running thrust at constant speed (PV uses it).")
+    peak_axial_load_n: float = Field(
+        description="Peak thrust, accelerating or braking the moving mass: F + m a. "
+        "Buckling, root stress and the design load are judged on it."
+    )
     rpm: float
     efficiency: float = Field(
         description="Forward efficiency, Shigley's Acme form, dynamic friction (0-1)."
@@ -226,11 +246,19 @@ class CandidateOut(BaseModel):
         description="The manufacturer's square-thread form, for comparison (0-1)."
     )
     backdrive_efficiency: float = Field(
-        description="Efficiency of the load driving the screw, static friction; 0 = locks."
+        description="The load driving the screw from rest: static friction; 0 = locks. With "
+        "static friction below running friction (uncoated) it can exceed the forward value."
+    )
+    backdrive_efficiency_running: float = Field(
+        description="The load driving the screw while it runs: dynamic friction."
     )
     self_locking: bool = Field(description="mu_static >= cos(a_n) tan(lambda).")
+    self_locking_with_margin: bool = Field(
+        description="Self-locking with static friction reduced by the self-locking factor."
+    )
     seed_rule_no_backdrive: bool = Field(description="The seed's rule of thumb: lead < OD / 8.")
     max_self_locking_lead_mm: float = Field(description="Longest lead that still self-locks.")
+    max_self_locking_lead_with_margin_mm: float
     holding_torque: HoldingTorqueOut
     torque: TorqueOut
     critical_speed: CriticalSpeedOut
@@ -245,7 +273,12 @@ class CandidateOut(BaseModel):
     governing_check: str | None = Field(
         description="The check with the highest utilisation (or a failed yes/no check)."
     )
-    passed: bool = Field(description="True when every check passes.")
+    governing_limit_provenance: ProvenanceKind | None = Field(
+        description="How certain the governing check's limit is: the least certain "
+        "provenance of the values it rests on ('user' for the user's own limit)."
+    )
+    passed: bool = Field(description="True when every limit passes (advice only warns).")
+    warnings: list[CheckOut] = Field(description="Failed advice: reported, not rejected.")
     fix: str | None = Field(description="For a rejected candidate, what would make it pass.")
     provenance: dict[str, ProvenanceOut] = Field(
         description="Catalog field -> provenance, for the fields this candidate's numbers use."
@@ -259,11 +292,19 @@ class CountsOut(BaseModel):
     failed_by_check: dict[str, int]
 
 
+class ChangeOut(BaseModel):
+    inputs: dict[str, float] = Field(description="API input -> value that admits the screw.")
+    admits: str = Field(description="The candidate the change admits.")
+
+
 class SummaryOut(BaseModel):
     message: str
     most_excluding_check: str | None
     best_rejected_id: str | None
     input_change: dict[str, float]
+    changes: list[ChangeOut] = Field(
+        description="Feasible input changes, each admitting a near candidate (one click)."
+    )
 
 
 class FormulaOut(BaseModel):

@@ -3,6 +3,7 @@
 from collections.abc import Mapping
 
 from app.catalog import Catalog
+from app.core.checks.base import Reach
 from app.core.evaluate import evaluate
 from app.core.selection import select
 from app.formulas import FORMULAS
@@ -48,16 +49,18 @@ def run_evaluation(
     units: Mapping[str, str] = DEFAULT_UNITS,
 ) -> EvaluateOut:
     """Evaluate one catalog or custom screw; raise UnknownScrew for a bad catalog id."""
+    reach = None  # a screw of the user's own: any size can be made
     if isinstance(screw, CatalogScrewIn):
         spec = catalog.by_id.get(screw.catalog_id)
         if spec is None:
             raise UnknownScrew(screw.catalog_id)
+        reach = Reach.of(catalog.table)
     else:
         spec = custom_screw(screw, catalog.materials)
     app = inputs.to_core()
     return EvaluateOut.model_construct(
         inputs=inputs,
-        candidate=candidate_out(evaluate(app, spec), app.vacuum, units),
+        candidate=candidate_out(evaluate(app, spec, reach), app.vacuum, units, app.brake_torque_nm),
         catalog_version=catalog.version,
         formulas=FORMULAS_OUT,
     )

@@ -37,8 +37,9 @@ SHARE_LINK_NAMES = [
     "load", "lead", "speed", "length", "accel", "moving_mass_kg", "end_fixity",
     "orientation", "compression", "require_anti_backlash", "coating", "oil_present",
     "vacuum", "ambient_c", "stroke", "cycles_per_day", "critical_speed_safety_factor",
-    "buckling_safety_factor", "torque_safety_factor", "max_torque", "required_life_years",
-    "positioning_tolerance", "rank_by", "limit",
+    "buckling_safety_factor", "torque_safety_factor", "self_locking_friction_factor",
+    "max_torque", "brake_torque", "required_life_years", "positioning_tolerance", "rank_by",
+    "advice", "limit",
 ]  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")

@@ -26,7 +26,9 @@ from app.catalog.series import build_series
 from app.core.table import CandidateTable
 from app.paths import resource_dir
 
-MATERIAL_FIELDS = frozenset({"youngs_modulus_gpa", "density_kg_m3", "expansion_per_c"})
+MATERIAL_FIELDS = frozenset(
+    {"youngs_modulus_gpa", "density_kg_m3", "expansion_per_c", "yield_strength_mpa"}
+)
 
 
 def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
@@ -36,6 +38,13 @@ def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
         Sourced(entry.number("youngs_modulus_gpa") * 1e9, "Pa", entry.prov("youngs_modulus_gpa")),
         Sourced(entry.number("density_kg_m3"), "kg/m3", entry.prov("density_kg_m3")),
         Sourced(entry.number("expansion_per_c"), "1/K", entry.prov("expansion_per_c")),
+        (
+            Sourced(
+                entry.number("yield_strength_mpa") * 1e6, "Pa", entry.prov("yield_strength_mpa")
+            )
+            if "yield_strength_mpa" in table
+            else None
+        ),
     )
 
 

@@ -24,6 +24,7 @@ class Material:
     youngs_modulus_pa: Sourced
     density_kg_m3: Sourced
     expansion_per_k: Sourced
+    yield_strength_pa: Sourced | None = None
 
 
 @dataclass(frozen=True, slots=True)

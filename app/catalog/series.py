@@ -137,6 +137,7 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
         "backlash": Sourced((low * MM, high * MM), "m", entry.prov("backlash_mm")),
         "design_load": _design_load(entry, d_p, geometry.thread_depth(od.value, rd.value)),
         "leads": Sourced(_leads(entry, od.value), "m", entry.prov("leads_mm")),
+        **({"yield_strength": material.yield_strength_pa} if material.yield_strength_pa else {}),
     }
 
 
@@ -260,6 +261,7 @@ def _screw(
         temperature_min_c=t_min,
         temperature_max_c=t_max,
         oil_compatible=variant.fields["oil_compatible"].value,
+        yield_strength_pa=_value_or_none(fields, "yield_strength"),
         outgassing=_value_or_none(fields, "outgassing") or (),
         material_name=fields["screw_material"].value,
         nut_material=fields["nut_material"].value,

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from app.core.checks import BY_NAME
-from app.core.checks.base import Check, Measure
+from app.core.checks.base import Check, Measure, Reach
 from app.core.formulas import critical_speed
 from app.core.model import (
     PV,
@@ -19,6 +19,7 @@ from app.core.model import (
     CriticalSpeed,
     Evaluation,
     Life,
+    ProvenanceKind,
     ScrewSpec,
     Torque,
 )
@@ -49,7 +50,12 @@ def _check_rows(m: Measure, failed: Mask, index: list[int]) -> list[CheckRow]:
 
 
 def _result(
-    check: Check, row: CheckRow, app: Application, s: ScrewSpec, r: Quantities[float]
+    check: Check,
+    row: CheckRow,
+    app: Application,
+    s: ScrewSpec,
+    r: Quantities[float],
+    reach: Reach,
 ) -> CheckResult:
     """One check of one candidate; its explanation and fix are written when read."""
     _, demand, capacity, failed = row
@@ -68,19 +74,43 @@ def _result(
         formula=check.formula,
         sources=check.sources,
         explanation=partial(check.explain, app, s, r, not failed),
-        remedy=partial(check.fix, app, s, r),
+        remedy=partial(check.fix, app, s, r, reach),
         remedy_inputs=partial(check.input_limits, app, s, r),
     )
 
 
-def _governing(checks: tuple[CheckResult, ...]) -> str | None:
+def _governing(checks: tuple[CheckResult, ...]) -> CheckResult | None:
     """The check with the highest utilisation, or the first failed yes/no check."""
     utilized = [c for c in checks if c.utilization is not None]
     governing = max(utilized, key=lambda c: c.utilization or 0.0) if utilized else None
     failed = [c for c in checks if not c.passed]
     if failed and (governing is None or governing.passed):
-        return failed[0].name
-    return governing.name if governing else None
+        return failed[0]
+    return governing
+
+
+#: Provenance kinds from the least to the most certain.
+CERTAINTY: tuple[ProvenanceKind, ...] = (
+    "assumed",
+    "derived",
+    "user",
+    "vendor",
+    "handbook",
+    "seed",
+    "standard",
+)
+
+
+def limit_provenance(check: CheckResult | None, s: ScrewSpec) -> ProvenanceKind | None:
+    """How certain the governing check's limit is: the least certain provenance of the
+    catalog values its capacity rests on ("user" when the capacity is the user's input)."""
+    if check is None:
+        return None
+    fields = BY_NAME[check.name].capacity_sources
+    if not fields:
+        return "user"
+    kinds = [s.provenance[f].kind for f in fields if f in s.provenance]
+    return min(kinds, key=CERTAINTY.index) if kinds else None
 
 
 def _torque(app: Application, s: ScrewSpec, r: Quantities[float]) -> Torque:
@@ -141,6 +171,7 @@ THREAD_COLUMNS = (
     "max_self_locking_lead_m",
     "traverse_limit_m_s",
     "traverse_extrapolated",
+    "backdrive_efficiency_running",
 )
 
 
@@ -154,18 +185,25 @@ def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> li
         return []
     rows = sc.quantities.rows(index)
     thread = {name: getattr(sc.table, name)[index].tolist() for name in THREAD_COLUMNS}
-    checks = {
-        name: _check_rows(m, sc.failed_by_check[name], index) for name, m in sc.measures.items()
-    }
+    checks = {name: _check_rows(m, sc.failed[name], index) for name, m in sc.measures.items()}
     worst = sc.max_utilization[index].tolist()
+    passed = sc.passed[index].tolist()
+    results = [
+        tuple(
+            _result(BY_NAME[name], column[k], app, sc.table.screws[i], rows[k], sc.reach)
+            for name, column in checks.items()
+            if column[k][0]
+        )
+        for k, i in enumerate(index)
+    ]
     return [
         _evaluation(
             app,
             sc.table.screws[i],
             rows[k],
             {name: column[k] for name, column in thread.items()},
-            {name: column[k] for name, column in checks.items() if column[k][0]},
-            worst[k],
+            results[k],
+            (passed[k], worst[k]),
         )
         for k, i in enumerate(index)
     ]
@@ -176,22 +214,28 @@ def _evaluation(
     s: ScrewSpec,
     r: Quantities[float],
     thread: dict[str, Any],
-    check_rows: dict[str, CheckRow],
-    worst: float,
+    checks: tuple[CheckResult, ...],
+    verdict: tuple[bool, float],
 ) -> Evaluation:
-    checks = tuple(_result(BY_NAME[name], row, app, s, r) for name, row in check_rows.items())
+    """One candidate's report; ``verdict`` is (passed, worst utilisation) from screening."""
     traverse = _number(thread["traverse_limit_m_s"])
+    rejecting = tuple(c for c in checks if c.kind == "limit" or app.advice == "reject")
+    governing = _governing(rejecting)
     return Evaluation(
         screw=s,
         axial_load_n=r.force_n,
+        peak_axial_load_n=r.peak_force_n,
         rpm=r.rpm,
         lead_angle_rad=thread["lead_angle_rad"],
         efficiency=thread["efficiency"],
         efficiency_square_thread=thread["efficiency_square_thread"],
         backdrive_efficiency=thread["backdrive_efficiency"],
+        backdrive_efficiency_running=thread["backdrive_efficiency_running"],
         self_locking=thread["self_locking"],
+        self_locking_with_margin=bool(r.locks_with_margin),
         seed_rule_no_backdrive=thread["seed_rule_no_backdrive"],
         max_self_locking_lead_m=thread["max_self_locking_lead_m"],
+        max_self_locking_lead_with_margin_m=r.max_lock_lead_m,
         holding_torque_seed_nm=r.holding_seed_nm,
         holding_torque_physics_nm=r.holding_physics_nm,
         brake_torque_nm=r.brake_nm,
@@ -203,27 +247,43 @@ def _evaluation(
             app.critical_speed_safety_factor,
             app.end_fixity,
         ),
-        buckling=Buckling(
-            app.compression, r.critical_load_n, r.allowed_load_n, app.buckling_safety_factor
-        ),
+        buckling=_buckling(app, s, r),
         pv=_pv(s, r),
         traverse_speed_limit_m_s=traverse,
         traverse_extrapolated=traverse is not None and thread["traverse_extrapolated"],
         life=_life(s, r),
         accuracy=_accuracy(s, r),
         checks=checks,
-        passed=all(c.passed for c in checks),
-        governing_check=_governing(checks),
-        max_utilization=worst,
+        passed=verdict[0],
+        governing_check=None if governing is None else governing.name,
+        governing_limit_provenance=limit_provenance(governing, s),
+        max_utilization=verdict[1],
     )
 
 
-def evaluate(app: Application, screw: ScrewSpec) -> Evaluation:
-    """Compute torque, speeds, loads, PV, life, accuracy and all checks for one screw."""
+def _buckling(app: Application, s: ScrewSpec, r: Quantities[float]) -> Buckling:
+    transition = _number(r.transition_slenderness)
+    short = transition is not None and r.slenderness < transition
+    return Buckling(
+        applies=app.compression,
+        critical_load_n=r.critical_load_n,
+        allowed_load_n=r.allowed_load_n,
+        safety_factor=app.buckling_safety_factor,
+        slenderness=r.slenderness,
+        transition_slenderness=transition,
+        mode="johnson" if short else "euler",
+        root_stress_pa=r.root_stress_pa,
+        yield_strength_pa=s.yield_strength_pa,
+    )
+
+
+def evaluate(app: Application, screw: ScrewSpec, reach: Reach | None = None) -> Evaluation:
+    """Compute torque, speeds, loads, PV, life, accuracy and all checks for one screw;
+    ``reach`` is what the catalog offers, for the fixes (unbounded by default)."""
     table = CandidateTable.build([screw])
     if min(table.efficiency[0], table.efficiency_static[0]) <= 0.0:
         raise ValueError(
             f"{screw.id}: lead angle {math.degrees(table.lead_angle_rad[0]):.1f} deg is too "
             f"steep to drive against friction {screw.friction_dynamic:g}"
         )
-    return evaluations(app, screen_table(app, table, np.arange(1)), [0])[0]
+    return evaluations(app, screen_table(app, table, np.arange(1), reach), [0])[0]

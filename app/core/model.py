@@ -10,7 +10,9 @@ EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"
 Orientation = Literal["horizontal", "vertical"]
 CoatingChoice = Literal["auto", "tfe", "none"]
 RankBy = Literal["torque", "margin", "life", "size"]
-ProvenanceKind = Literal["seed", "handbook", "derived", "assumed", "user"]
+#: What a failed advice check does: a warning only, rank the candidate lower, or reject.
+AdvicePolicy = Literal["warn", "rank", "reject"]
+ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]
 
 STANDARD_GRAVITY_M_S2 = 9.80665
 #: A check passes up to this utilisation: 1 plus rounding, so that an offered remedy
@@ -50,6 +52,9 @@ class Application:
     buckling_safety_factor: float = 0.5
     torque_safety_factor: float = 1.0
     max_torque_nm: float | None = None
+    brake_torque_nm: float | None = None
+    self_locking_friction_factor: float = 0.5
+    advice: AdvicePolicy = "warn"
     required_life_years: float | None = None
     positioning_tolerance_m: float | None = None
     rank_by: RankBy = "torque"
@@ -104,6 +109,7 @@ class ScrewSpec:
     variant: str = ""
     traverse_bands: tuple[tuple[float, float, float], ...] = ()
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
+    yield_strength_pa: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -177,10 +183,17 @@ class CriticalSpeed:
 
 @dataclass(frozen=True, slots=True)
 class Buckling:
+    """The screw as a column under the peak thrust: Euler when slender, Johnson when short."""
+
     applies: bool
     critical_load_n: float
     allowed_load_n: float
     safety_factor: float
+    slenderness: float
+    transition_slenderness: float | None
+    mode: Literal["euler", "johnson"]
+    root_stress_pa: float
+    yield_strength_pa: float | None
 
 
 @dataclass(frozen=True, slots=True)
@@ -217,14 +230,18 @@ class Evaluation:
 
     screw: ScrewSpec
     axial_load_n: float
+    peak_axial_load_n: float
     rpm: float
     lead_angle_rad: float
     efficiency: float
     efficiency_square_thread: float
     backdrive_efficiency: float
+    backdrive_efficiency_running: float
     self_locking: bool
+    self_locking_with_margin: bool
     seed_rule_no_backdrive: bool
     max_self_locking_lead_m: float
+    max_self_locking_lead_with_margin_m: float
     holding_torque_seed_nm: float
     holding_torque_physics_nm: float
     brake_torque_nm: float
@@ -239,22 +256,38 @@ class Evaluation:
     checks: tuple[CheckResult, ...]
     passed: bool
     governing_check: str | None
+    governing_limit_provenance: ProvenanceKind | None
     max_utilization: float
 
     @property
     def failed_checks(self) -> tuple[CheckResult, ...]:
-        return tuple(c for c in self.checks if not c.passed)
+        """The failed limits: what rejects the candidate."""
+        return tuple(c for c in self.checks if not c.passed and c.kind == "limit")
+
+    @property
+    def warnings(self) -> tuple[CheckResult, ...]:
+        """Failed advice: reported beside the candidate, not a rejection."""
+        return tuple(c for c in self.checks if not c.passed and c.kind == "advice")
+
+
+@dataclass(frozen=True, slots=True)
+class Change:
+    """Application inputs (core names, SI) that, changed together, admit a candidate."""
+
+    inputs: Mapping[str, float]
+    admits: str
 
 
 @dataclass(frozen=True, slots=True)
 class Summary:
-    """Why nothing (or little) passes, and the input change that would admit the best."""
+    """Why nothing (or little) passes, and the input changes that would admit the nearest."""
 
     most_excluding_check: str | None
     most_excluding_count: int
     best_rejected_id: str | None
     input_change: Mapping[str, float]
     message: Phrase
+    changes: tuple[Change, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

@@ -18,6 +18,7 @@ Quantity = Literal[
     "torque",  # N m
     "rpm",  # rev/min
     "pv",  # Pa m/s
+    "pressure",  # Pa
     "years",  # year
     "temperature",  # deg C
     "factor",  # dimensionless

@@ -31,10 +31,24 @@ REFERENCE_TEMPERATURE_C = 20.0
 
 
 def axial_load(app: Application) -> float:
-    """Axial force on the nut [N]: the given load, plus m g on a vertical axis."""
+    """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical."""
     if app.orientation == "vertical":
         return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
     return app.load_n
+
+
+def peak_axial_load(app: Application) -> float:
+    """Peak thrust on the nut [N]: the running thrust plus the force m a that accelerates
+    (or decelerates) the moving mass, F_peak = F + m a (Newton's second law).
+
+    Accelerating against the load, or braking a mass that moves with it (a descending
+    vertical axis), adds m a to the thrust; the other two cases subtract it.
+
+    >>> peak_axial_load(Application(load_n=5.0, speed_m_s=0.1, length_m=0.5,
+    ...                             moving_mass_kg=50.0, accel_m_s2=5.0))
+    255.0
+    """
+    return axial_load(app) + app.moving_mass_kg * app.accel_m_s2
 
 
 @dataclass(frozen=True, slots=True)
@@ -42,6 +56,7 @@ class Quantities(Generic[V]):
     """One axis's numbers, SI; ``V`` is an array (one element per candidate) or a float."""
 
     force_n: V
+    peak_force_n: V
     rpm: V
     angular_accel_rad_s2: V
     inertia_kg_m2: V
@@ -57,6 +72,9 @@ class Quantities(Generic[V]):
     allowed_rpm: V
     critical_load_n: V
     allowed_load_n: V
+    slenderness: V
+    transition_slenderness: V
+    root_stress_pa: V
     pv_pa_m_s: V
     pressure_pa: V
     surface_speed_m_s: V
@@ -70,6 +88,8 @@ class Quantities(Generic[V]):
     holding_seed_nm: V
     holding_physics_nm: V
     brake_nm: V
+    locks_with_margin: V
+    max_lock_lead_m: V
 
     def rows(self, index: Sequence[int]) -> "list[Quantities[float]]":
         """The numbers of the candidates at ``index`` as floats (NaN: no such limit)."""
@@ -82,15 +102,23 @@ NAMES = tuple(f.name for f in fields(Quantities))
 
 
 def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
-    """Seed torque method: inertia + static drag + load through the thread's efficiency."""
+    """Motor torque: the screw's own inertia J alpha, and every force that passes through
+    the sliding thread (the load and the force m a that accelerates the moving mass) at
+    the thread's efficiency, plus the nut's drag. Starting from rest the thread is at
+    static friction while the load and m a already act."""
     alpha = torque.angular_acceleration(app.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     j_mass = torque.reflected_mass_inertia(app.moving_mass_kg, t.lead_m)
+    inertial_force_n = app.moving_mass_kg * app.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
-    t_mass = torque.inertia_torque(j_mass, alpha)
+    t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency)
     t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
     t_total = torque.total_torque(t_screw + t_mass, t.drag_max_nm, t_load)
-    t_break = torque.load_torque(force_n, t.lead_m, t.efficiency_static) + t.drag_max_nm
+    t_start = (
+        torque.load_torque(force_n + inertial_force_n, t.lead_m, t.efficiency_static)
+        + t_screw
+        + t.drag_max_nm
+    )
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
@@ -100,28 +128,36 @@ def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
         "drag_nm": t.drag_max_nm,
         "load_nm": t_load,
         "total_nm": t_total,
-        "breakaway_nm": t_break,
-        "required_nm": np.maximum(t_total, t_break) * app.torque_safety_factor,
+        "breakaway_nm": t_start,
+        "required_nm": np.maximum(t_total, t_start) * app.torque_safety_factor,
     }
 
 
-def _column_limits(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
-    """Critical speed and Euler buckling of the screw as a column between its supports."""
+def _column_limits(app: Application, t: CandidateTable, peak_n: float) -> dict[str, Any]:
+    """Critical speed, and the screw as a column under the peak thrust: Euler when slender,
+    Johnson's parabola when short, and the stress at the root."""
     n_c = critical_speed.critical_speed_rpm(
         t.root_diameter_m, app.length_m, t.youngs_modulus_pa, t.density_kg_m3, app.end_fixity
     )
-    f_cr = buckling.euler_critical_load(
-        t.youngs_modulus_pa,
-        buckling.second_moment_round(t.root_diameter_m),
-        app.length_m,
-        app.end_fixity,
+    f_cr = buckling.column_critical_load(
+        t.youngs_modulus_pa, t.root_diameter_m, app.length_m, app.end_fixity, t.yield_strength_pa
     )
+    with np.errstate(invalid="ignore"):
+        transition = buckling.transition_slenderness(t.youngs_modulus_pa, t.yield_strength_pa)
     return {
         "critical_rpm": n_c,
         "allowed_rpm": critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
         "critical_load_n": f_cr,
         "allowed_load_n": buckling.allowed_buckling_load(f_cr, app.buckling_safety_factor),
+        "slenderness": buckling.slenderness(t.root_diameter_m, app.length_m, app.end_fixity),
+        "transition_slenderness": transition,
+        "root_stress_pa": buckling.root_stress(peak_n, t.root_diameter_m),
     }
+
+
+def _finite(values: Array) -> Array:
+    """NaN where a limit is unbounded (e.g. the PV speed limit with no thrust at all)."""
+    return np.where(np.isfinite(values), values, np.nan)
 
 
 def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dict[str, Any]:
@@ -134,7 +170,9 @@ def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dic
         "surface_speed_m_s": pv.surface_speed(rpm, t.helix_travel_m),
         "contact_area_m2": area,
         "pv_max_load_n": pv.max_load_for_pv(limit, rpm, t.thread_depth_m),
-        "pv_max_speed_m_s": pv.max_rpm_for_pv(limit, force_n, t.thread_depth_m) * t.lead_m / 60.0,
+        "pv_max_speed_m_s": _finite(
+            pv.max_rpm_for_pv(limit, force_n, t.thread_depth_m) * t.lead_m / 60.0
+        ),
     }
 
 
@@ -154,33 +192,47 @@ def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
     }
 
 
-def _holding(t: CandidateTable, force_n: float) -> dict[str, Any]:
-    """Torque that keeps the load from turning the screw; 0 where the thread self-locks.
-
-    The seed's method uses the forward efficiency at running friction; the physical one,
-    the back-drive efficiency at static friction, is larger for uncoated screws
-    (mu_d 0.15 > mu_s 0.08) and steep leads. A brake must hold the larger.
-    """
-    seed = np.where(t.self_locking, 0.0, efficiency.holding_torque(force_n, t.lead_m, t.efficiency))
+def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+    """Holding the load at standstill. The thread counts as self-locking only with static
+    friction reduced by ``app.self_locking_friction_factor``; otherwise a brake (or the
+    motor's holding torque) must hold the larger of the seed's value (forward efficiency,
+    running friction) and the physical one (back-drive efficiency, static friction)."""
+    mu_margin = t.friction_static * app.self_locking_friction_factor
+    locks = mu_margin >= efficiency.self_locking_limit_friction(
+        np.tan(t.lead_angle_rad), t.cos_half_angle
+    )
+    seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
     physics = efficiency.holding_torque(force_n, t.lead_m, t.backdrive_efficiency)
     return {
-        "holding_seed_nm": seed,
+        "holding_seed_nm": np.where(locks, 0.0, seed),
         "holding_physics_nm": physics,
-        "brake_nm": np.where(t.self_locking, 0.0, np.maximum(seed, physics)),
+        "brake_nm": np.where(locks, 0.0, np.maximum(seed, physics)),
+        "locks_with_margin": locks,
+        "max_lock_lead_m": efficiency.max_self_locking_lead(
+            t.pitch_diameter_m, mu_margin, t.cos_half_angle
+        ),
     }
 
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
     """Every number of ``app`` for every candidate of ``t``, as arrays."""
-    force_n = axial_load(app)
+    force_n, peak_n = axial_load(app), peak_axial_load(app)
     rpm = geometry.screw_speed_rpm(app.speed_m_s, t.lead_m)
-    values = {
+    with np.errstate(divide="ignore", invalid="ignore"):  # no thrust: unbounded PV speed
+        values = _values(app, t, force_n, peak_n, rpm)
+    return Quantities(**{k: np.asarray(v, dtype=np.float64) for k, v in values.items()})
+
+
+def _values(
+    app: Application, t: CandidateTable, force_n: float, peak_n: float, rpm: Array
+) -> dict[str, Any]:
+    return {
         "force_n": np.full(len(t), force_n),
+        "peak_force_n": np.full(len(t), peak_n),
         "rpm": rpm,
         **_torques(app, t, force_n),
-        **_column_limits(app, t, force_n),
+        **_column_limits(app, t, peak_n),
         **_nut(app, t, force_n, rpm),
         **_duty(app, t),
-        **_holding(t, force_n),
+        **_holding(app, t, force_n),
     }
-    return Quantities(**{k: np.asarray(v, dtype=np.float64) for k, v in values.items()})

@@ -10,8 +10,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.checks import REGISTRY
-from app.core.checks.base import Measure
+from app.core.checks import BY_NAME, REGISTRY
+from app.core.checks.base import Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import Quantities, operating_point
 from app.core.table import Array, CandidateTable, Mask
@@ -19,15 +19,23 @@ from app.core.table import Array, CandidateTable, Mask
 
 @dataclass(frozen=True, slots=True)
 class Screening:
-    """Per eligible candidate (``index`` into the full table): its numbers and checks."""
+    """Per eligible candidate (``index`` into the full table): its numbers and checks.
+
+    ``failed`` holds every check's failures, ``failed_by_check`` those of the checks that
+    reject (limits, and advice when the user asks); ``warned`` marks failed advice.
+    """
 
     index: NDArray[np.intp]
     table: CandidateTable
     quantities: Quantities[Array]
     measures: dict[str, Measure]
+    failed: dict[str, Mask]
     failed_by_check: dict[str, Mask]
     passed: Mask
     max_utilization: Array
+    failed_limits: Array
+    warned: Mask
+    reach: Reach
 
     @property
     def total_torque_nm(self) -> Array:
@@ -55,35 +63,61 @@ def _failed(m: Measure) -> Mask:
     return m.applicable & failed
 
 
-def _worst(measures: dict[str, Measure], failed: dict[str, Mask], n: int) -> Array:
-    """Worst utilisation per candidate; a failed yes/no check ranks behind every numeric
-    near-miss (1 + the number of failed checks)."""
+def _worst(measures: dict[str, Measure], rejecting: dict[str, Mask], n: int) -> Array:
+    """Worst utilisation of the rejecting checks per candidate; a failed yes/no check ranks
+    behind every numeric near-miss (1 + the number of failed checks)."""
     worst = np.zeros(n)
     n_failed = np.zeros(n)
-    for name, m in measures.items():
-        utilization = m.utilization()
+    for name, failed in rejecting.items():
+        utilization = measures[name].utilization()
         if utilization is not None:
-            worst = np.fmax(worst, np.where(m.applicable, utilization, np.nan))
-        n_failed += failed[name]
+            worst = np.fmax(worst, np.where(measures[name].applicable, utilization, np.nan))
+        n_failed += failed
     return np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)
 
 
+def _rejects(app: Application, name: str) -> bool:
+    """A failed limit rejects; failed advice does only when the user asks for that."""
+    return BY_NAME[name].kind == "limit" or app.advice == "reject"
+
+
 def screen_table(
-    app: Application, table: CandidateTable, index: NDArray[np.intp] | None = None
+    app: Application,
+    table: CandidateTable,
+    index: NDArray[np.intp] | None = None,
+    reach: Reach | None = None,
 ) -> Screening:
-    """Every check that applies to ``app`` for every candidate of ``table``."""
+    """Every check that applies to ``app`` for every candidate of ``table``; ``reach`` is
+    what the whole catalog offers (unbounded for a screw of the user's own)."""
     index = np.arange(len(table)) if index is None else index
     q = operating_point(app, table)
     measures = {c.name: c.measure(app, table, q) for c in REGISTRY if c.applies(app)}
     failed = {name: _failed(m) for name, m in measures.items()}
-    any_failed = np.zeros(len(table), dtype=bool)
-    for mask in failed.values():
-        any_failed |= mask
-    worst = _worst(measures, failed, len(table))
-    return Screening(index, table, q, measures, failed, ~any_failed, worst)
+    rejecting = {name: mask for name, mask in failed.items() if _rejects(app, name)}
+    n_failed = np.zeros(len(table))
+    for mask in rejecting.values():
+        n_failed += mask
+    warned = np.zeros(len(table), dtype=bool)
+    for name, mask in failed.items():
+        if name not in rejecting:
+            warned |= mask
+    worst = _worst(measures, rejecting, len(table))
+    return Screening(
+        index,
+        table,
+        q,
+        measures,
+        failed,
+        rejecting,
+        n_failed == 0,
+        worst,
+        n_failed,
+        warned,
+        reach or Reach(),
+    )
 
 
 def screen(app: Application, table: CandidateTable) -> Screening:
     """Screen the candidates eligible for ``app`` (lead and coating choice)."""
     index = np.flatnonzero(eligible_mask(app, table))
-    return screen_table(app, table.take(index), index)
+    return screen_table(app, table.take(index), index, Reach.of(table))

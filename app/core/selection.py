@@ -5,13 +5,14 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from app.core.checks import BY_NAME
 from app.core.evaluate import evaluations
-from app.core.model import Application, Evaluation, ScrewSpec, Selection, Summary
+from app.core.model import Application, Change, Evaluation, ScrewSpec, Selection, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
 from app.core.screening import Screening, screen
 from app.core.table import CandidateTable
 
-NO_MATCH = "No catalog screw{lead} matches the coating choice; try another lead or 'any'."
+NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
 #: Application inputs a summary may offer to change: (words, quantity).
 INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
     "load_n": ("load", "force"),
@@ -20,11 +21,12 @@ INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
 }
 
 
-def _rank_order(app: Application, table: CandidateTable, s: Screening) -> np.ndarray:
+def _rank_order(app: Application, s: Screening) -> np.ndarray:
     """Positions of passing candidates (in ``s``) in rank order, stable.
 
     torque: lowest total drive torque; margin: lowest worst utilisation; life: longest
-    rated life (unrated last); size: smallest outer diameter. Ties: lower torque.
+    rated life (unrated last); size: smallest outer diameter. Ties: lower torque. With
+    ``advice="rank"`` candidates with a warning come after those without.
     """
     pos = np.flatnonzero(s.passed)
     torque, util = s.total_torque_nm[pos], s.max_utilization[pos]
@@ -35,7 +37,17 @@ def _rank_order(app: Application, table: CandidateTable, s: Screening) -> np.nda
         "size": s.table.outer_diameter_m[pos],
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
-    return pos[np.lexsort((secondary, primary))]
+    keys = [secondary, primary]
+    if app.advice == "rank":
+        keys.append(s.warned[pos].astype(np.float64))
+    return pos[np.lexsort(tuple(keys))]
+
+
+def _nearest_order(s: Screening) -> np.ndarray:
+    """Positions of rejected candidates, nearest first: fewest failed limits, then the
+    smallest worst utilisation (how far the worst limit is exceeded)."""
+    failing = np.flatnonzero(~s.passed)
+    return failing[np.lexsort((s.max_utilization[failing], s.failed_limits[failing]))]
 
 
 def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -> Selection:
@@ -49,9 +61,8 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
         candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)
     )
     s = screen(app, table)
-    ranked = _rank_order(app, table, s)[: app.limit]
-    failing = np.flatnonzero(~s.passed)
-    nearest = failing[np.argsort(s.max_utilization[failing], kind="stable")][: app.limit]
+    ranked = _rank_order(app, s)[: app.limit]
+    nearest = _nearest_order(s)[: app.limit]
     passing = tuple(evaluations(app, s, ranked.tolist()))
     rejected = tuple(evaluations(app, s, nearest.tolist()))
     by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
@@ -64,7 +75,7 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
         evaluated=len(s.index),
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
-        summary=summarize(app, len(s.index), n_passed, rejected[:1], by_check),
+        summary=summarize(app, table, len(s.index), n_passed, rejected, by_check),
     )
 
 
@@ -97,36 +108,71 @@ def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
     return join(parts, " and ")
 
 
+def feasible_changes(nearest: Sequence[Evaluation], count: int = 5) -> tuple[Change, ...]:
+    """Input changes that admit each of the nearest rejected candidates, one per distinct
+    change: each clears every failed limit of the candidate it names."""
+    changes: list[Change] = []
+    for ev in nearest:
+        change = input_change(ev)
+        if change and all(c.inputs != change for c in changes):
+            changes.append(Change(change, ev.screw.id))
+        if len(changes) == count:
+            break
+    return tuple(changes)
+
+
+def _no_match(app: Application, table: CandidateTable) -> Summary:
+    """Nothing eligible: name the nearest leads the catalog has, below and above."""
+    if app.lead_m is None:
+        return Summary(None, 0, None, {}, Phrase(NO_MATCH.format(lead="")))
+    leads = np.unique(table.lead_m)
+    below, above = leads[leads < app.lead_m], leads[leads > app.lead_m]
+    values: dict[str, Amount | str] = {"lead": Amount(app.lead_m, "length")}
+    nearest = []
+    if below.size:
+        values["below"] = Amount(float(below.max()), "length")
+        nearest.append("{below}")
+    if above.size:
+        values["above"] = Amount(float(above.min()), "length")
+        nearest.append("{above}")
+    near = (" Nearest leads: " + " and ".join(nearest) + ".") if nearest else ""
+    return Summary(
+        None, 0, None, {}, Phrase(NO_MATCH.format(lead=" with a {lead} lead") + near, values)
+    )
+
+
 def summarize(
     app: Application,
+    table: CandidateTable,
     evaluated: int,
     passed: int,
     nearest: Sequence[Evaluation],
     by_check: Counter[str],
 ) -> Summary:
-    """Say what limits the selection; when nothing passes, the nearest fix."""
+    """Say what limits the selection; when nothing passes, the nearest fix and the
+    feasible changes of the application."""
     top = by_check.most_common(1)
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
-        if app.lead_m is None:
-            return Summary(None, 0, None, {}, Phrase(NO_MATCH.format(lead="")))
-        lead = {"lead": Amount(app.lead_m, "length")}
-        return Summary(None, 0, None, {}, Phrase(NO_MATCH.format(lead=" with a {lead} lead"), lead))
+        return _no_match(app, table)
     if passed:
         return Summary(
             worst, worst_count, None, {}, Phrase(f"{passed} of {evaluated} candidates pass.")
         )
     best = nearest[0]
     change = input_change(best)
+    label = BY_NAME[worst].label if worst in BY_NAME else str(worst)
     parts = [
         Phrase(
-            f"No candidate passes. '{worst}' excludes {worst_count} of {evaluated}. "
+            f"No candidate passes. {label} excludes {worst_count} of {evaluated}. "
             f"Nearest: {best.screw.id}:"
         )
     ]
-    parts += [c.fix for c in best.failed_checks if c.fix]
+    parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
     if change:
         parts.append(
             Phrase("Or change the application: {how}.", {"how": describe_change(app, change)})
         )
-    return Summary(worst, worst_count, best.screw.id, change, join(parts))
+    return Summary(
+        worst, worst_count, best.screw.id, change, join(parts), feasible_changes(nearest)
+    )

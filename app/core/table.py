@@ -71,6 +71,10 @@ class CandidateTable:
     max_self_locking_lead_m: Array
     traverse_limit_m_s: Array
     traverse_extrapolated: Mask
+    friction_static: Array
+    cos_half_angle: Array
+    backdrive_efficiency_running: Array
+    yield_strength_pa: Array
 
     @classmethod
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
@@ -125,6 +129,10 @@ class CandidateTable:
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
             traverse_limit_m_s=traverse,
             traverse_extrapolated=extrapolated,
+            friction_static=mu_s,
+            cos_half_angle=cos_a,
+            backdrive_efficiency_running=efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
+            yield_strength_pa=col("yield_strength_pa"),
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":

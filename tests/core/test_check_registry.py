@@ -36,6 +36,10 @@ APPS = {
         ambient_c=100.0,
     ),
     "long-fast-fixed-free": light_app(length_m=3.0, speed_m_s=0.4, end_fixity="fixed-free"),
+    # short, heavily loaded columns (Johnson's branch) and a brake holding a vertical load
+    "short-heavy-braked": light_app(
+        orientation="vertical", load_n=3000.0, length_m=0.06, brake_torque_nm=0.3
+    ),
 }
 FUNCTIONS: dict[str, Any] = {"pi": math.pi, "sqrt": math.sqrt, "cos": math.cos, "max": max}
 
@@ -83,7 +87,7 @@ def formula_mismatches(check: Check, app: Application, t: CandidateTable) -> lis
 
 def test_registry_lists_each_check_once_in_order() -> None:
     names = [c.name for c in REGISTRY]
-    assert len(set(names)) == len(names) == 13
+    assert len(set(names)) == len(names) == 15
     assert [c.order for c in REGISTRY] == sorted(c.order for c in REGISTRY)
     for c in REGISTRY:
         assert c.label and c.description and c.formula and c.source, c.name
@@ -123,8 +127,9 @@ def test_every_check_applies_under_some_application(catalog: Catalog) -> None:
     [
         pytest.param(
             "buckling",
-            "F = F_axial; F_allowed = SF * k * pi^2 * E * (pi * d_r^4 / 32) / L^2",
-            id="buckling-I-as-polar-moment",
+            "F = F_peak; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / "
+            "S_y) else A * S_y)",
+            id="buckling-short-column-as-squash-load",
         ),
         pytest.param(
             "critical_speed",

@@ -11,7 +11,15 @@ from app.core.model import Application, CheckResult, Evaluation, ScrewSpec
 from app.units import render
 from tests.core.conftest import light_app
 
-ALWAYS = ["critical_speed", "buckling", "pv", "traverse_speed", "design_load", "length"]
+ALWAYS = [
+    "critical_speed",
+    "buckling",
+    "root_stress",
+    "pv",
+    "traverse_speed",
+    "design_load",
+    "length",
+]
 
 
 def names(ev: Evaluation) -> list[str]:
@@ -93,15 +101,18 @@ def test_temperature_band(zbx8000_l10: ScrewSpec, ambient_c: float, passed: bool
     )
 
 
-def test_back_driving_check_uses_the_physical_self_locking_lead(catalog: Catalog) -> None:
-    """Vertical axis: passes iff lead <= pi d_p mu_s / cos(a_n)."""
+def test_back_driving_check_uses_the_self_locking_lead_with_margin(catalog: Catalog) -> None:
+    """Vertical axis, no brake: passes iff lead <= pi d_p (f mu_s) / cos(a_n), f = 0.5.
+    ZBX8000: d_p = (12.7 + 9.906) / 2 = 11.303 mm, mu_s 0.08, a_n 14.5 deg:
+    pi x 11.303 x 0.04 / 0.96815 = 1.4671 mm (2.934 mm without the margin)."""
     app = light_app(orientation="vertical")
     fine = evaluate(app, catalog.by_id["ZBX8000-L1"])
     steep = evaluate(app, catalog.by_id["ZBX8000-L10"])
-    assert check(fine, "back_driving").passed and fine.self_locking
+    assert check(fine, "back_driving").passed and fine.self_locking_with_margin
     c = check(steep, "back_driving")
     assert not c.passed and not steep.self_locking
-    assert c.limit == pytest.approx(steep.max_self_locking_lead_m)
+    assert c.limit == pytest.approx(1.4671e-3, rel=1e-4)
+    assert steep.max_self_locking_lead_m == pytest.approx(2.9342e-3, rel=1e-4)
     assert "seed method" in render(c.message) and "physics" in render(c.message)
 
 
@@ -154,11 +165,12 @@ def test_torque_check_against_the_available_drive(zbx8000_l10: ScrewSpec) -> Non
 
 
 def test_vertical_load_remedy_subtracts_the_weight(zbx8000_l10: ScrewSpec) -> None:
-    """The design-load check offers a user load such that load + m g is the design load."""
+    """The design-load check offers a user load such that the peak thrust, load + m g + m a,
+    is the design load (a = 1 m/s^2 in light_app)."""
     app: Application = light_app(load_n=600.0, orientation="vertical", moving_mass_kg=5.0)
     c = check(evaluate(app, zbx8000_l10), "design_load")
     assert not c.passed and c.limit is not None and c.input_limits
-    assert c.input_limits["load_n"] == pytest.approx(c.limit - 5.0 * 9.80665)
+    assert c.input_limits["load_n"] == pytest.approx(c.limit - 5.0 * 9.80665 - 5.0 * 1.0)
     again = check(
         evaluate(replace(app, load_n=c.input_limits["load_n"]), zbx8000_l10), "design_load"
     )

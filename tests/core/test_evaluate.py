@@ -35,16 +35,23 @@ def test_vertical_axis_adds_the_weight_of_the_moving_mass() -> None:
 @pytest.mark.parametrize("screw_id", CATALOG_IDS)
 def test_torque_is_the_seeds_three_components(catalog: Catalog, screw_id: str) -> None:
     """Seed, "Torque": inertia + static drag + load. engineering.md section 3: the drag is the
-    top of the series' range, the moving mass is reflected as its own line, and the required
-    torque is the safety factor times the larger of running and break-away torque."""
+    top of the series' range, the moving mass is its own line, and the required torque is
+    the safety factor times the larger of running and break-away torque. The force m a that
+    accelerates the mass passes through the thread: T = m a lead / (2 pi eta)."""
     screw = catalog.by_id[screw_id]
     app = light_app(moving_mass_kg=4.0, accel_m_s2=2.0, torque_safety_factor=1.5)
     t = evaluate(app, screw).torque
     assert t.drag_nm == screw.drag_torque_max_nm
     assert (t.drag_min_nm, t.drag_max_nm) == (screw.drag_torque_min_nm, screw.drag_torque_max_nm)
     assert t.inertia_nm == pytest.approx(t.inertia_screw_nm + t.inertia_mass_nm, rel=1e-12)
+    d_p = geometry.pitch_diameter(screw.outer_diameter_m, screw.root_diameter_m)
+    eta = efficiency.forward_efficiency(
+        geometry.tan_lead_angle(screw.lead_m, d_p),
+        screw.friction_dynamic,
+        math.cos(screw.thread_half_angle_rad),
+    )
     assert t.inertia_mass_nm == pytest.approx(
-        4.0 * (screw.lead_m / (2 * math.pi)) ** 2 * 2 * math.pi * 2.0 / screw.lead_m, rel=1e-9
+        4.0 * 2.0 * screw.lead_m / (2 * math.pi * eta), rel=1e-9
     )
     assert t.total_nm == pytest.approx(t.inertia_nm + t.drag_nm + t.load_nm, rel=1e-12)
     assert t.required_nm == pytest.approx(1.5 * max(t.total_nm, t.breakaway_nm), rel=1e-12)
@@ -65,8 +72,12 @@ def test_breakaway_uses_static_friction_and_running_uses_dynamic(
     eta_static = efficiency.forward_efficiency(tan_l, screw.friction_static, cos_a)
     assert ev.efficiency == pytest.approx(eta_run, rel=1e-12)
     assert ev.torque.load_nm == pytest.approx(50.0 * screw.lead_m / (2 * math.pi * eta_run))
+    # from rest with no moving mass: the load through the static efficiency, the screw's
+    # own inertia torque (light_app accelerates at 1 m/s^2) and the drag
     assert ev.torque.breakaway_nm == pytest.approx(
-        50.0 * screw.lead_m / (2 * math.pi * eta_static) + screw.drag_torque_max_nm
+        50.0 * screw.lead_m / (2 * math.pi * eta_static)
+        + ev.torque.inertia_screw_nm
+        + screw.drag_torque_max_nm
     )
     assert ev.self_locking == efficiency.is_self_locking(tan_l, screw.friction_static, cos_a)
 

@@ -44,7 +44,8 @@ def test_screening_agrees_with_full_evaluation(catalog: Catalog, app: Applicatio
 @given(app=applications)
 def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     """Counts cover every eligible candidate; passing ones come back ranked by drive torque,
-    rejected ones nearest-to-passing first; each list is cut to ``app.limit``."""
+    rejected ones nearest-to-passing first (fewest failed limits, then the smallest worst
+    utilisation); each list is cut to ``app.limit``."""
     sel = select(app, catalog.table)
     evaluations = [
         evaluate(app, catalog.table.screws[i])
@@ -62,8 +63,8 @@ def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     assert torques == sorted(torques)
     if sel.candidates:
         assert torques[0] == pytest.approx(min(e.torque.total_nm for e in evaluations if e.passed))
-    worst = [e.max_utilization for e in sel.rejected]
-    assert worst == sorted(worst)
+    nearness = [(len(e.failed_checks), e.max_utilization) for e in sel.rejected]
+    assert nearness == sorted(nearness)
 
 
 def test_sequence_and_table_give_the_same_selection(catalog: Catalog) -> None:

@@ -18,7 +18,8 @@ G = 9.80665
 OD, RD, LEAD = 0.0127, 0.78 * 0.0127, 0.010
 MU_D, MU_S, ALPHA_N = 0.15, 0.08, math.radians(14.5)
 E, RHO = 193e9, 8000.0
-F = 200.0 + 2.0 * G
+F = 200.0 + 2.0 * G  # running thrust: load + m g
+PEAK = F + 2.0 * 1.0  # peak thrust: + m a
 V, L = 0.080, 0.600
 APP = Application(
     load_n=200.0,
@@ -44,25 +45,30 @@ ETA = (C - MU_D * TAN_L) / (C + MU_D / TAN_L)
 ETA_S = (C - MU_S * TAN_L) / (C + MU_S / TAN_L)
 RPM = 60 * V / LEAD
 ALPHA = 2 * math.pi * 1.0 / LEAD
-J = 3.67e-7 / 0.0254 * L + 2.0 * (LEAD / (2 * math.pi)) ** 2
-TOTAL = J * ALPHA + 0.04 + F * LEAD / (2 * math.pi * ETA)
-BREAK = F * LEAD / (2 * math.pi * ETA_S) + 0.04
+J_SCREW = 3.67e-7 / 0.0254 * L
+T_MASS = 2.0 * 1.0 * LEAD / (2 * math.pi * ETA)  # m a through the thread
+TOTAL = J_SCREW * ALPHA + T_MASS + 0.04 + F * LEAD / (2 * math.pi * ETA)
+BREAK = PEAK * LEAD / (2 * math.pi * ETA_S) + J_SCREW * ALPHA + 0.04  # from rest
 N_C = (3.9266 / L) ** 2 * math.sqrt(E / RHO) * RD / 4 * 60 / (2 * math.pi)
+S_Y = 240e6  # 303 annealed
+SLENDER = (L / math.sqrt(2)) / (RD / 4)  # 171, above sqrt(2 pi^2 E / S_y) = 126: Euler
 F_CR = 2 * math.pi**2 * E * (math.pi * RD**4 / 64) / L**2
+STRESS = PEAK / (math.pi * RD**2 / 4)
 PV = F / (3 * H) * RPM / 60  # H.T. cancels
 DESIGN = 3e6 * 3 * math.pi * D_P * H
 LIFE_YEARS = 100e6 * 0.01 / (2 * 0.3 * 200 * 365)
 ERROR = 0.0006 * 0.3 + 0.0 + 0.0013e-3
-SELF_LOCK_LEAD = math.pi * D_P * MU_S / C
+SELF_LOCK_LEAD = math.pi * D_P * (0.5 * MU_S) / C  # static friction at half, the default
 
 #: check name -> (hand value, hand limit); SI units as the core reports them.
 HAND = {
     "torque": (max(TOTAL, BREAK), 0.5),
     "critical_speed": (RPM, 0.8 * N_C),
-    "buckling": (F, 0.5 * F_CR),
+    "buckling": (PEAK, 0.5 * F_CR),
+    "root_stress": (STRESS, 0.5 * S_Y),
     "pv": (PV, 0.105e6),
     "traverse_speed": (V, 0.100),
-    "design_load": (F, DESIGN),
+    "design_load": (PEAK, DESIGN),
     "length": (L, 4.0),
     "back_driving": (LEAD, SELF_LOCK_LEAD),
     "life": (1.0, LIFE_YEARS),
@@ -91,7 +97,8 @@ def test_yes_no_checks(worked: Evaluation) -> None:
 
 def test_torque_breakdown_by_hand(worked: Evaluation) -> None:
     t = worked.torque
-    assert t.inertia_nm == pytest.approx(J * ALPHA, rel=1e-9)
+    assert t.inertia_screw_nm == pytest.approx(J_SCREW * ALPHA, rel=1e-9)
+    assert t.inertia_mass_nm == pytest.approx(T_MASS, rel=1e-9)
     assert t.drag_nm == 0.04  # top of the seed's 0.020-0.04 N m for ZBX8000
     assert t.load_nm == pytest.approx(F * LEAD / (2 * math.pi * ETA), rel=1e-9)
     assert t.total_nm == pytest.approx(TOTAL, rel=1e-9)
@@ -104,17 +111,7 @@ def test_backdriving_by_hand(worked: Evaluation) -> None:
     assert worked.backdrive_efficiency == pytest.approx(eta_b, rel=1e-9)
     assert not worked.self_locking and not worked.seed_rule_no_backdrive
     assert worked.holding_torque_seed_nm == pytest.approx(F * LEAD * ETA / (2 * math.pi))
+    assert math.sqrt(2 * math.pi**2 * E / S_Y) < SLENDER
+    assert worked.buckling.mode == "euler"
+    assert worked.buckling.slenderness == pytest.approx(SLENDER, rel=1e-9)
     assert worked.holding_torque_physics_nm == pytest.approx(F * LEAD * eta_b / (2 * math.pi))
-
-
-def test_print_worked_table(worked: Evaluation, capsys: pytest.CaptureFixture[str]) -> None:
-    """The table quoted in the issue note (run with -s to see it)."""
-    with capsys.disabled():
-        print("\ncheck            app value      hand value     app limit      hand limit   pass")
-        for name, (value, limit) in HAND.items():
-            c = next(c for c in worked.checks if c.name == name)
-            print(
-                f"{name:16} {c.value:<14.6g} {value:<14.6g} {c.limit:<14.6g} {limit:<12.6g} "
-                f"{c.passed}"
-            )
-    assert len(HAND) == 10

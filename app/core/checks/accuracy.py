@@ -9,6 +9,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     same,
     where_given,
@@ -60,5 +61,7 @@ class Accuracy(Check):
             },
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        if s.anti_backlash or not reach.anti_backlash:
+            return Phrase("Choose a precision lead grade, or widen the tolerance.")
         return Phrase("Choose an anti-backlash series (no backlash) or a precision lead grade.")

@@ -9,6 +9,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     everywhere,
 )
@@ -23,6 +24,7 @@ class AntiBacklash(Check):
     formula = "passes when anti_backlash"
     source = "catalog nut type"
     sources = ("type",)
+    capacity_sources = ("type",)
     order = 110
 
     def applies(self, app: Application) -> bool:
@@ -44,5 +46,5 @@ class AntiBacklash(Check):
             {"backlash": Amount(s.backlash_max_m, "length")},
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase("Choose an anti-backlash series.")

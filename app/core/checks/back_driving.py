@@ -1,6 +1,4 @@
-"""On a vertical axis, the load must not drive the screw down: the thread self-locks."""
-
-import math
+"""Vertical axis without a brake: the thread must self-lock, with a margin on friction."""
 
 import numpy as np
 
@@ -13,32 +11,37 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     everywhere,
 )
-from app.core.formulas import efficiency, geometry
+from app.core.formulas import efficiency
 from app.core.phrase import Amount, Phrase
 
 
 @register
 class BackDriving(Check):
     name = "back_driving"
-    label = "Back-driving (vertical axis)"
+    label = "Self-locking (vertical axis, no brake)"
     description = (
-        "On a vertical axis the load pushes the nut down; a thread whose lead angle is "
-        "below its static friction angle holds it (self-locking), otherwise a brake must."
+        "On a vertical axis with no brake the load pushes the nut down. The thread holds it "
+        "only while its lead angle stays below the static friction angle; since friction "
+        "drops with vibration and lubrication, the screw counts as self-locking only with "
+        "static friction reduced by the self-locking friction factor. Give a brake or "
+        "holding torque to judge holding instead."
     )
     quantity = "length"
-    formula = "lead = lead_screw; lead_max = pi * d_p * mu_s / cos(a_n)"
+    formula = "lead = lead_screw; lead_max = pi * d_p * f * mu_s / cos(a_n)"
     source = "Shigley's Mechanical Engineering Design, sec. 8-2 (self-locking condition)"
     sources = ("friction_static", "thread_half_angle")
+    capacity_sources = ("friction_static", "thread_half_angle")
     order = 100
 
     def applies(self, app: Application) -> bool:
-        return app.orientation == "vertical"
+        return app.orientation == "vertical" and app.brake_torque_nm is None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), t.lead_m, t.max_self_locking_lead_m)
+        return Measure(everywhere(t), t.lead_m, q.max_lock_lead_m)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -46,28 +49,45 @@ class BackDriving(Check):
         return {
             "lead_screw": t.lead_m,
             "d_p": t.pitch_diameter_m,
-            "mu_s": np.array([s.friction_static for s in t.screws]),
-            "a_n": np.array([s.thread_half_angle_rad for s in t.screws]),
+            "f": app.self_locking_friction_factor,
+            "mu_s": t.friction_static,
+            "a_n": np.arccos(t.cos_half_angle),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        seed = efficiency.seed_backdrive_rule(s.lead_m, s.outer_diameter_m)
+        rule = (
+            ""
+            if seed == passed
+            else (
+                " The seed's rule of thumb (lead under diameter / 8) says "
+                + ("it does not back-drive." if seed else "it back-drives.")
+            )
+        )
+        values = {"f": Amount(app.self_locking_friction_factor, "factor")}
         if passed:
-            return Phrase("Self-locking: the load cannot drive the screw down.")
+            return Phrase(
+                "Self-locking even with static friction at {f} x its value: the load cannot "
+                "drive the screw down." + rule,
+                values,
+            )
         return Phrase(
-            "Back-drivable: the load can drive the screw down; holding torque {seed} (seed "
-            "method), {physics} (physics).",
+            "Not reliably self-locking (static friction at {f} x its value): the load can "
+            "drive the screw down; holding torque {seed} (seed method), {physics} "
+            "(physics)." + rule,
             {
+                **values,
                 "seed": Amount(r.holding_seed_nm, "torque"),
                 "physics": Amount(r.holding_physics_nm, "torque"),
             },
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
-        d_p = geometry.pitch_diameter(s.outer_diameter_m, s.root_diameter_m)
-        lead = efficiency.max_self_locking_lead(
-            d_p, s.friction_static, math.cos(s.thread_half_angle_rad)
-        )
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
-            "Fit a brake of at least {brake} or use a lead of at most {lead}.",
-            {"brake": Amount(r.brake_nm, "torque"), "lead": Amount(lead, "length")},
+            "Give a brake (or the motor's holding torque) of at least {brake}, or use a lead "
+            "of at most {lead}.",
+            {
+                "brake": Amount(r.brake_nm * app.torque_safety_factor, "torque"),
+                "lead": Amount(r.max_lock_lead_m, "length"),
+            },
         )

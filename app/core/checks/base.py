@@ -6,6 +6,7 @@ limit does not exist for that candidate (e.g. no PV limit published): the check 
 apply to it. A yes/no check has no demand or capacity, only ``flagged`` failures.
 """
 
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import ClassVar, Literal
@@ -35,6 +36,33 @@ __all__ = [
 Kind = Literal["limit", "advice"]
 #: End fixities from the most to the least flexible.
 FIXITY_ORDER: tuple[EndFixity, ...] = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
+
+
+@dataclass(frozen=True, slots=True)
+class Reach:
+    """What the catalog offers, so that a fix never names a screw nobody makes."""
+
+    max_lead_m: float = math.inf
+    max_root_diameter_m: float = math.inf
+    max_design_load_n: float = math.inf
+    max_length_m: float = math.inf
+    anti_backlash: bool = True
+
+    @classmethod
+    def of(cls, t: CandidateTable) -> "Reach":
+        """The largest of each in a catalog table (unbounded where none is given)."""
+
+        def largest(values: Array) -> float:
+            given = values[~np.isnan(values)]
+            return float(given.max()) if given.size else math.inf
+
+        return cls(
+            max_lead_m=largest(t.lead_m),
+            max_root_diameter_m=largest(t.root_diameter_m),
+            max_design_load_n=largest(t.design_load_n),
+            max_length_m=largest(t.max_length_m),
+            anti_backlash=bool(t.anti_backlash.any()),
+        )
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,6 +98,8 @@ class Check:
     formula: ClassVar[str]
     source: ClassVar[str]
     sources: ClassVar[tuple[str, ...]] = ()
+    #: catalog fields the capacity rests on; empty: the capacity is the user's input
+    capacity_sources: ClassVar[tuple[str, ...]] = ()
     order: ClassVar[int]
 
     def applies(self, app: Application) -> bool:
@@ -88,8 +118,10 @@ class Check:
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         raise NotImplementedError
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase | None:
-        """What would make a failing candidate pass."""
+    def fix(
+        self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach
+    ) -> Phrase | None:
+        """What would make a failing candidate pass, within what the catalog offers."""
         return None
 
     def input_limits(

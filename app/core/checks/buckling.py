@@ -1,4 +1,5 @@
-"""Compressive axial force against the allowed fraction of the Euler buckling load."""
+"""Compressive peak thrust against the allowed fraction of the column's critical load:
+Euler when the screw is slender, Johnson's parabola when it is short."""
 
 from app.core.checks import register
 from app.core.checks.base import (
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     everywhere,
     load_input,
@@ -24,77 +26,100 @@ class ColumnBuckling(Check):
     name = "buckling"
     label = "Column buckling"
     description = (
-        "A screw pushed in compression buckles as a column; the allowed force is a fraction "
-        "(the buckling factor) of the Euler load at the root diameter."
+        "A screw pushed in compression buckles as a column. Slender screws follow Euler; "
+        "short ones (below the transition slenderness) follow Johnson's parabola, which "
+        "ends at the yield load of the root section. The allowed force is a fraction (the "
+        "buckling factor) of that critical load, judged at the peak thrust."
     )
     quantity = "force"
-    formula = "F = F_axial; F_allowed = SF * k * pi^2 * E * (pi * d_r^4 / 64) / L^2"
-    source = "Euler column; Timoshenko & Gere, Theory of Elastic Stability"
-    sources = ("root_diameter", "youngs_modulus")
+    formula = (
+        "F = F_peak; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / S_y) "
+        "else A * (S_y - (S_y * s / (2 * pi))^2 / E))"
+    )
+    source = (
+        "Euler column (Timoshenko & Gere); Johnson parabola and transition slenderness, "
+        "Shigley's Mechanical Engineering Design, 10th ed., sec. 4-11 to 4-13"
+    )
+    sources = ("root_diameter", "youngs_modulus", "yield_strength")
+    capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
     order = 30
 
     def applies(self, app: Application) -> bool:
         return app.compression
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.force_n, q.allowed_load_n)
+        return Measure(everywhere(t), q.peak_force_n, q.allowed_load_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_axial": q.force_n,
+            "F_peak": q.peak_force_n,
             "SF": app.buckling_safety_factor,
-            "k": buckling.END_FIXITY_K[app.end_fixity],
             "E": t.youngs_modulus_pa,
-            "d_r": t.root_diameter_m,
-            "L": app.length_m,
+            "A": buckling.root_area(t.root_diameter_m),
+            "s": buckling.slenderness(t.root_diameter_m, app.length_m, app.end_fixity),
+            "S_y": t.yield_strength_pa,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        short = r.slenderness < r.transition_slenderness
+        model = "Johnson, short column" if short else "Euler"
         return Phrase(
-            "{f} compression " + verb + " the allowed {allowed} ({sf} x Euler {f_cr}).",
+            "Peak thrust {f} in compression "
+            + verb
+            + " the allowed {allowed} ({sf} x "
+            + model
+            + " {f_cr}, slenderness {s}).",
             {
-                "f": Amount(r.force_n, "force"),
+                "f": Amount(r.peak_force_n, "force"),
                 "allowed": Amount(r.allowed_load_n, "force"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
                 "f_cr": Amount(r.critical_load_n, "force"),
+                "s": Amount(r.slenderness, "factor"),
             },
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         def passes(fixity: EndFixity) -> bool:
-            f_cr = buckling.euler_critical_load(
+            f_cr = buckling.column_critical_load(
                 s.youngs_modulus_pa,
-                buckling.second_moment_round(s.root_diameter_m),
+                s.root_diameter_m,
                 app.length_m,
                 fixity,
+                float("nan") if s.yield_strength_pa is None else s.yield_strength_pa,
             )
-            return r.force_n <= app.buckling_safety_factor * f_cr
+            return r.peak_force_n <= app.buckling_safety_factor * f_cr
 
-        return Phrase(
-            "Use a root diameter of at least {d}, or {support} (column at most {length}), "
-            "or load the screw in tension.",
-            {
-                "d": Amount(
-                    buckling.min_root_diameter_for_load(
-                        s.root_diameter_m, r.allowed_load_n, r.force_n
-                    ),
-                    "length",
-                ),
-                "support": stiffer_support(app, passes),
-                "length": Amount(
-                    buckling.max_length_for_load(app.length_m, r.allowed_load_n, r.force_n),
-                    "length",
-                ),
-            },
+        d_min = buckling.min_root_diameter_for_load(
+            s.root_diameter_m, r.allowed_load_n, r.peak_force_n
         )
+        values: dict[str, Amount | str] = {
+            "support": stiffer_support(app, passes),
+            "length": Amount(_max_length(app, s, r), "length"),
+        }
+        template = "{support} (column at most {length}), or load the screw in tension."
+        if d_min <= reach.max_root_diameter_m:
+            values["d"] = Amount(d_min, "length")
+            template = "Use a root diameter of at least {d}, or " + template
+        return Phrase(template[0].upper() + template[1:], values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return {
-            "load_n": load_input(app, r.allowed_load_n),
-            "length_m": buckling.max_length_for_load(app.length_m, r.allowed_load_n, r.force_n),
-        }
+        peak_over_running = r.peak_force_n - r.force_n
+        limits = {"load_n": load_input(app, r.allowed_load_n - peak_over_running)}
+        length = _max_length(app, s, r)
+        return {**limits, "length_m": length} if length > 0 else limits
+
+
+def _max_length(app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
+    """Longest column carrying the peak thrust with the buckling factor [m]."""
+    return buckling.max_length_for_column(
+        r.peak_force_n / app.buckling_safety_factor,
+        s.youngs_modulus_pa,
+        s.root_diameter_m,
+        app.end_fixity,
+        float("nan") if s.yield_strength_pa is None else s.yield_strength_pa,
+    )

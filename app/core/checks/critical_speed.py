@@ -10,6 +10,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     everywhere,
     stiffer_support,
@@ -32,6 +33,7 @@ class CriticalSpeed(Check):
     )
     source = "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; Thomson"
     sources = ("root_diameter", "youngs_modulus", "density")
+    capacity_sources = ("root_diameter", "youngs_modulus", "density")
     order = 20
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -64,30 +66,29 @@ class CriticalSpeed(Check):
             },
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         def passes(fixity: EndFixity) -> bool:
             n_c = critical_speed.critical_speed_rpm(
                 s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity
             )
             return r.rpm <= app.critical_speed_safety_factor * n_c
 
-        return Phrase(
-            "Use a lead of at least {lead}, or a root diameter of at least {d}, or {support} "
-            "(unsupported length at most {length}).",
-            {
-                "lead": Amount(
-                    critical_speed.min_lead_for_speed(app.speed_m_s, r.allowed_rpm), "length"
-                ),
-                "d": Amount(
-                    critical_speed.min_root_diameter_for_speed(
-                        s.root_diameter_m, r.allowed_rpm, r.rpm
-                    ),
-                    "length",
-                ),
-                "support": stiffer_support(app, passes),
-                "length": Amount(_max_length(app, r), "length"),
-            },
-        )
+        lead = critical_speed.min_lead_for_speed(app.speed_m_s, r.allowed_rpm)
+        d_min = critical_speed.min_root_diameter_for_speed(s.root_diameter_m, r.allowed_rpm, r.rpm)
+        options = []
+        values: dict[str, Amount | str] = {
+            "support": stiffer_support(app, passes),
+            "length": Amount(_max_length(app, r), "length"),
+        }
+        if lead <= reach.max_lead_m:
+            options.append("a lead of at least {lead}")
+            values["lead"] = Amount(lead, "length")
+        if d_min <= reach.max_root_diameter_m:
+            options.append("a root diameter of at least {d}")
+            values["d"] = Amount(d_min, "length")
+        use = ("Use " + ", or ".join(options) + ", or {support}") if options else "{support}"
+        template = use + " (unsupported length at most {length})."
+        return Phrase(template[0].upper() + template[1:], values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]

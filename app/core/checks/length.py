@@ -9,6 +9,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     same,
     where_given,
@@ -25,6 +26,7 @@ class Length(Check):
     formula = "L = L_screw; L_max = L_variant"
     source = "the family's length limit per variant (catalog data)"
     sources = ("max_length",)
+    capacity_sources = ("max_length",)
     order = 70
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -46,9 +48,14 @@ class Length(Check):
             {"L": Amount(app.length_m, "length"), "cap": Amount(s.max_length_m or 0.0, "length")},
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        longer = (
+            ", or choose a variant made longer"
+            if reach.max_length_m > (s.max_length_m or 0.0)
+            else ""
+        )
         return Phrase(
-            "Shorten the screw to at most {cap}, or choose a variant made longer.",
+            "Shorten the screw to at most {cap}" + longer + ".",
             {"cap": Amount(s.max_length_m or 0.0, "length")},
         )
 

@@ -11,6 +11,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     everywhere,
     same,
@@ -30,6 +31,7 @@ class Life(Check):
     formula = "life_required = Y_req; life = travel_min / (2 * stroke * cycles * 365)"
     source = "seed catalog, Anti-Backlash Life (rated travel)"
     sources = ("life",)
+    capacity_sources = ("life",)
     order = 120
 
     def applies(self, app: Application) -> bool:
@@ -63,7 +65,7 @@ class Life(Check):
             },
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         if np.isnan(r.life_years_min):
             return Phrase("Choose a series whose life is rated.")
         return Phrase(

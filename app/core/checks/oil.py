@@ -11,6 +11,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
 )
 from app.core.phrase import Phrase
@@ -27,6 +28,7 @@ class OilCompatibility(Check):
     formula = "passes when oil_compatible or not oil_present"
     source = "the family's rule per variant (catalog data)"
     sources = ("oil_compatible",)
+    capacity_sources = ("oil_compatible",)
     order = 80
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -42,5 +44,5 @@ class OilCompatibility(Check):
             return Phrase("No oil present: this variant may be used.")
         return Phrase("This variant must not be used where oil contamination is possible.")
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase("Use a variant rated for oil (uncoated).")

@@ -9,6 +9,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     load_input,
     where_given,
@@ -28,6 +29,7 @@ class NutPV(Check):
     formula = "PV = F / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut"
     source = "seed catalog, PV Calculation (three threads in contact)"
     sources = ("pv_limit", "root_diameter", "outer_diameter")
+    capacity_sources = ("pv_limit",)
     order = 40
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -51,7 +53,7 @@ class NutPV(Check):
             {"pv": Amount(r.pv_pa_m_s, "pv"), "limit": Amount(s.pv_limit_pa_m_s or 0.0, "pv")},
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "At this speed the load may be at most {load}; at this load the speed may be at "
             "most {speed}.",

@@ -11,6 +11,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     where_given,
 )
@@ -25,6 +26,7 @@ class Temperature(Check):
     formula = "passes when T_min <= T_ambient <= T_max"
     source = "catalog temperature range (see its provenance)"
     sources = ("temperature_range",)
+    capacity_sources = ("temperature_range",)
     order = 90
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -53,5 +55,5 @@ class Temperature(Check):
             },
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase("Choose a screw rated for this temperature, or control the ambient.")

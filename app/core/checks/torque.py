@@ -9,6 +9,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     everywhere,
     same,
@@ -52,7 +53,7 @@ class DriveTorque(Check):
             {"req": Amount(r.required_nm, "torque"), "avail": Amount(app.max_torque_nm, "torque")},
         )
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "A drive of at least {req}, or a shorter lead, lower load or acceleration.",
             {"req": Amount(r.required_nm, "torque")},

@@ -9,6 +9,7 @@ from app.core.checks.base import (
     Mapping,
     Measure,
     Quantities,
+    Reach,
     ScrewSpec,
     same,
     where_given,
@@ -23,12 +24,15 @@ class TraverseSpeed(Check):
     label = "Traverse speed"
     description = (
         "The family's table of the highest linear speed recommended for each lead band "
-        "(only for families that publish one)."
+        "for optimum nut life (only for families that publish one). Advice: a faster "
+        "screw is reported with a warning, not rejected, unless you ask for that."
     )
+    kind = "advice"
     quantity = "speed"
     formula = "v = v_linear; v_allowed = v_band(lead)"
     source = "the family's traverse-speed table (catalog data)"
     sources = ("lead", "traverse_speed")
+    capacity_sources = ("traverse_speed",)
     order = 50
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -58,7 +62,7 @@ class TraverseSpeed(Check):
             values["high"] = Amount(s.traverse_bands[-1][1], "length")
         return Phrase("{v} " + verb + " the recommended {limit} for this lead" + note + ".", values)
 
-    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         faster = [band for band in s.traverse_bands if band[2] >= app.speed_m_s]
         if not faster:
             return Phrase("Run at most {limit}.", {"limit": Amount(_limit(s), "speed")})

@@ -1,6 +1,10 @@
-"""Column buckling of a screw in compression (Euler) [4]."""
+"""The screw as a column: Euler buckling [4], Johnson's parabola for short columns and
+the stress at the root section (Shigley [2], sec. 4-11 to 4-13)."""
 
 import math
+from typing import cast
+
+import numpy as np
 
 #: Effective-length factor k in F_cr = k pi^2 E I / L^2 for each end fixity [4].
 END_FIXITY_K: dict[str, float] = {
@@ -69,3 +73,122 @@ def min_root_diameter_for_load(
     """
     ratio: float = (load_n / allowed_load_n) ** 0.25
     return root_diameter_m * ratio
+
+
+def root_area(root_diameter_m: float) -> float:
+    """Area of the root circle, A = pi d_r^2 / 4 [m^2].
+
+    >>> round(root_area(0.02) * 1e6, 3)
+    314.159
+    """
+    return math.pi * root_diameter_m**2 / 4.0
+
+
+def slenderness(root_diameter_m: float, length_m: float, end_fixity: str) -> float:
+    """Slenderness ratio of the screw as a column, s = (L / sqrt(k)) / (d_r / 4) [-].
+
+    The effective length L / sqrt(k) turns each end fixity into the pinned-pinned column
+    (Euler F_cr = k pi^2 E I / L^2 = pi^2 E I / (L / sqrt k)^2); r = d_r / 4 is the radius
+    of gyration of a round section. Source: Shigley [2], sec. 4-11 (C = k).
+
+    >>> slenderness(0.02, 1.0, "simple-simple")
+    200.0
+    """
+    effective_length: float = length_m / END_FIXITY_K[end_fixity] ** 0.5
+    return effective_length / (root_diameter_m / 4.0)
+
+
+def transition_slenderness(youngs_modulus_pa: float, yield_strength_pa: float) -> float:
+    """Slenderness below which Euler over-predicts, s_1 = sqrt(2 pi^2 E / S_y) [-].
+
+    Source: Shigley [2], sec. 4-12, eq. 4-45 (tangent point of the Johnson parabola).
+
+    >>> round(transition_slenderness(207e9, 310e6), 1)
+    114.8
+    """
+    ratio: float = (2.0 * math.pi**2 * youngs_modulus_pa / yield_strength_pa) ** 0.5
+    return ratio
+
+
+def johnson_critical_load(
+    area_m2: float, yield_strength_pa: float, youngs_modulus_pa: float, slenderness_ratio: float
+) -> float:
+    """Johnson's parabola for intermediate columns, F_cr = A (S_y - (S_y s / 2 pi)^2 / E) [N].
+
+    Valid below the transition slenderness; at s = 0 it is the squash load A S_y.
+    Source: Shigley [2], sec. 4-13, eq. 4-48 (with the effective length, C = 1).
+
+    >>> round(johnson_critical_load(1e-4, 310e6, 207e9, 50.0))
+    28060
+    """
+    parabola: float = (yield_strength_pa * slenderness_ratio / (2.0 * math.pi)) ** 2
+    return area_m2 * (yield_strength_pa - parabola / youngs_modulus_pa)
+
+
+def column_critical_load(
+    youngs_modulus_pa: float,
+    root_diameter_m: float,
+    length_m: float,
+    end_fixity: str,
+    yield_strength_pa: float,
+) -> float:
+    """Critical load of the screw as a column [N]: Euler when slender, Johnson when short.
+
+    F_cr = pi^2 E A / s^2 for s >= s_1, else A (S_y - (S_y s / 2 pi)^2 / E); Euler alone
+    when the yield strength is unknown (NaN). Works on floats or NumPy arrays.
+    Source: Shigley [2], sec. 4-11 to 4-13.
+
+    >>> round(column_critical_load(207e9, 0.02, 2.0, "simple-simple", 310e6))
+    4011
+    >>> round(column_critical_load(207e9, 0.025, 0.1, "fixed-simple", 310e6))
+    151432
+    """
+    area = root_area(root_diameter_m)
+    s = slenderness(root_diameter_m, length_m, end_fixity)
+    euler = euler_critical_load(
+        youngs_modulus_pa, second_moment_round(root_diameter_m), length_m, end_fixity
+    )
+    johnson = johnson_critical_load(area, yield_strength_pa, youngs_modulus_pa, s)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        short = s < transition_slenderness(youngs_modulus_pa, yield_strength_pa)
+    return cast(float, np.where(short, johnson, euler)[()])
+
+
+def root_stress(load_n: float, root_diameter_m: float) -> float:
+    """Axial stress at the root section, sigma = F / (pi d_r^2 / 4) [Pa].
+
+    The example of a 25 mm root carrying 200 kN: 407 MPa.
+
+    >>> round(root_stress(200e3, 0.025) / 1e6, 1)
+    407.4
+    """
+    return load_n / root_area(root_diameter_m)
+
+
+def max_length_for_column(
+    critical_load_n: float,
+    youngs_modulus_pa: float,
+    root_diameter_m: float,
+    end_fixity: str,
+    yield_strength_pa: float,
+) -> float:
+    """Longest column whose critical load is ``critical_load_n`` [m]: the inverse of
+    ``column_critical_load``; 0 when even a zero length cannot carry it (above A S_y).
+
+    Euler: s = pi sqrt(E A / F_cr); if that is below the transition slenderness, Johnson:
+    s = (2 pi / S_y) sqrt(E (S_y - F_cr / A)). L = s (d_r / 4) sqrt(k).
+
+    >>> round(max_length_for_column(4011.437, 207e9, 0.02, "simple-simple", 310e6), 4)
+    2.0
+    >>> round(max_length_for_column(151432.0, 207e9, 0.025, "fixed-simple", 310e6), 4)
+    0.1
+    """
+    area = root_area(root_diameter_m)
+    s: float = math.pi * (youngs_modulus_pa * area / critical_load_n) ** 0.5
+    if not math.isnan(yield_strength_pa) and s < transition_slenderness(
+        youngs_modulus_pa, yield_strength_pa
+    ):
+        squash = yield_strength_pa - critical_load_n / area
+        s = 2 * math.pi / yield_strength_pa * (youngs_modulus_pa * max(squash, 0.0)) ** 0.5
+    length: float = s * (root_diameter_m / 4.0) * END_FIXITY_K[end_fixity] ** 0.5
+    return length

@@ -1,0 +1,81 @@
+"""Axial stress at the root section under the peak thrust against the screw's yield."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    load_input,
+    where_given,
+)
+from app.core.formulas import buckling
+from app.core.phrase import Amount, Phrase
+
+
+@register
+class RootStress(Check):
+    name = "root_stress"
+    label = "Root stress (yield)"
+    description = (
+        "The peak thrust spread over the root section of the screw, pushed or pulled, "
+        "against a fraction (the buckling factor) of the screw material's yield strength."
+    )
+    quantity = "pressure"
+    formula = "sigma = F_peak / (pi * d_r^2 / 4); sigma_allowed = SF * S_y"
+    source = "axial stress of a round section; yield strength from the material (handbook)"
+    sources = ("root_diameter", "yield_strength")
+    capacity_sources = ("yield_strength",)
+    order = 35
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        allowed = app.buckling_safety_factor * t.yield_strength_pa
+        return Measure(where_given(allowed), q.root_stress_pa, allowed)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "F_peak": q.peak_force_n,
+            "d_r": t.root_diameter_m,
+            "SF": app.buckling_safety_factor,
+            "S_y": t.yield_strength_pa,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "is within" if passed else "exceeds"
+        return Phrase(
+            "{stress} at the root under the peak thrust " + verb + " {allowed} ({sf} x "
+            "yield {s_y}).",
+            {
+                "stress": Amount(r.root_stress_pa, "pressure"),
+                "allowed": Amount(_allowed(app, s), "pressure"),
+                "sf": Amount(app.buckling_safety_factor, "factor"),
+                "s_y": Amount(s.yield_strength_pa or 0.0, "pressure"),
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        d_min = s.root_diameter_m * (r.root_stress_pa / _allowed(app, s)) ** 0.5
+        if d_min > reach.max_root_diameter_m:
+            return Phrase("Reduce the load or the moving mass's acceleration.")
+        return Phrase(
+            "Use a root diameter of at least {d}, or reduce the load.",
+            {"d": Amount(d_min, "length")},
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        allowed_n = _allowed(app, s) * buckling.root_area(s.root_diameter_m)
+        return {"load_n": load_input(app, allowed_n - (r.peak_force_n - r.force_n))}
+
+
+def _allowed(app: Application, s: ScrewSpec) -> float:
+    """Allowed root stress [Pa]."""
+    return app.buckling_safety_factor * (s.yield_strength_pa or 0.0)
