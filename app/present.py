@@ -300,15 +300,20 @@ def series_dict(series: Series) -> dict[str, Any]:
 def custom_screw(data: CustomScrewIn, materials: Mapping[str, Material]) -> ScrewSpec:
     """A ScrewSpec from a validated ``CustomScrewIn``; named materials from the catalog."""
     user = Provenance("user", "given in the request")
+    yield_prov: Provenance | None = user
     if isinstance(data.material, MaterialIn):
         e, rho = data.material.youngs_modulus_pa, data.material.density_kg_m3
         alpha = materials["steel"].expansion_per_k.value
+        yield_pa = data.material.yield_strength_pa
         material_name = "custom"
         e_prov = rho_prov = user
     else:
         material = materials[data.material]
         e, rho = material.youngs_modulus_pa.value, material.density_kg_m3.value
         alpha = material.expansion_per_k.value
+        strength = material.yield_strength_pa
+        yield_pa = None if strength is None else strength.value
+        yield_prov = None if strength is None else strength.provenance
         material_name = data.material
         e_prov, rho_prov = material.youngs_modulus_pa.provenance, material.density_kg_m3.provenance
     rd = data.root_diameter_mm * 1e-3
@@ -338,7 +343,9 @@ def custom_screw(data: CustomScrewIn, materials: Mapping[str, Material]) -> Scre
         drag_torque_max_nm=data.drag_torque_nm,
         pv_limit_pa_m_s=None if data.pv_limit_mpa_m_s is None else data.pv_limit_mpa_m_s * 1e6,
         material_name=material_name,
+        yield_strength_pa=yield_pa,
         provenance={
+            **({"yield_strength": yield_prov} if yield_pa is not None and yield_prov else {}),
             **dict.fromkeys(GEOMETRY_SOURCES, user),
             "pv_limit": user,
             "inertia_per_length": inertia_prov,

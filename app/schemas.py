@@ -28,6 +28,14 @@ class MaterialIn(BaseModel):
 
     youngs_modulus_pa: Annotated[float, NotBool, bounded_number(1e6, 1e13, "Young's modulus [Pa].")]
     density_kg_m3: Annotated[float, NotBool, bounded_number(1.0, 1e5, "Density [kg/m^3].")]
+    yield_strength_pa: (
+        Annotated[
+            float,
+            NotBool,
+            bounded_number(1e6, 1e10, "Yield strength [Pa]; without it, Euler buckling only."),
+        ]
+        | None
+    ) = None
 
 
 class CatalogScrewIn(BaseModel):

@@ -584,7 +584,7 @@ def test_evaluate_custom_screw_per_material(api: Api, material: str) -> None:
 
 def test_custom_material_equal_to_steel_gives_steel_numbers(api: Api) -> None:
     steel = evaluate(api, {**CUSTOM_SCREW, "material": "steel"})["candidate"]
-    same = {"youngs_modulus_pa": 206e9, "density_kg_m3": 7850.0}
+    same = {"youngs_modulus_pa": 206e9, "density_kg_m3": 7850.0, "yield_strength_pa": 310e6}
     custom = evaluate(api, {**CUSTOM_SCREW, "material": same})["candidate"]
     for group in ("torque", "critical_speed", "buckling", "pv"):
         assert custom[group] == steel[group], group

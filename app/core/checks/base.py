@@ -14,7 +14,7 @@ from typing import ClassVar, Literal
 import numpy as np
 
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, EndFixity, ScrewSpec
-from app.core.phrase import Phrase, Quantity
+from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities
 from app.core.table import Array, CandidateTable, Mask
 
@@ -30,6 +30,7 @@ __all__ = [
     "Quantities",
     "ScrewSpec",
     "same",
+    "sentence",
 ]
 
 #: A limit rejects a candidate; advice is reported beside it.
@@ -150,6 +151,17 @@ def load_input(app: Application, axial_limit_n: float) -> float:
     if app.orientation == "vertical":
         return axial_limit_n - app.moving_mass_kg * STANDARD_GRAVITY_M_S2
     return axial_limit_n
+
+
+def sentence(template: str, values: dict[str, "Amount | str"]) -> Phrase:
+    """A phrase that starts with a capital, also when it starts with a word-valued field."""
+    if template.startswith("{"):
+        name = template[1 : template.index("}")]
+        word = values.get(name)
+        if isinstance(word, str):
+            values = {**values, name: word[:1].upper() + word[1:]}
+        return Phrase(template, values)
+    return Phrase(template[:1].upper() + template[1:], values)
 
 
 def stiffer_support(app: Application, passes: Callable[[EndFixity], bool]) -> str:

@@ -15,6 +15,7 @@ from app.core.checks.base import (
     ScrewSpec,
     everywhere,
     load_input,
+    sentence,
     stiffer_support,
 )
 from app.core.formulas import buckling
@@ -103,7 +104,7 @@ class ColumnBuckling(Check):
         if d_min <= reach.max_root_diameter_m:
             values["d"] = Amount(d_min, "length")
             template = "Use a root diameter of at least {d}, or " + template
-        return Phrase(template[0].upper() + template[1:], values)
+        return sentence(template, values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]

@@ -13,6 +13,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     everywhere,
+    sentence,
     stiffer_support,
 )
 from app.core.formulas import critical_speed
@@ -88,7 +89,7 @@ class CriticalSpeed(Check):
             values["d"] = Amount(d_min, "length")
         use = ("Use " + ", or ".join(options) + ", or {support}") if options else "{support}"
         template = use + " (unsupported length at most {length})."
-        return Phrase(template[0].upper() + template[1:], values)
+        return sentence(template, values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]

@@ -1,0 +1,247 @@
+"""Physics an engineer can stake a design on, through the API: each rule against hand
+arithmetic from the reference formulas (engineering.md; Shigley, Mechanical Engineering
+Design, 10th ed., sec. 4-11 to 4-13 and 8-2), never against the app's own output."""
+
+import math
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from fastapi import FastAPI
+from fastapi.testclient import TestClient
+
+from app.catalog import Catalog
+
+G = 9.80665
+COS_ACME = math.cos(math.radians(14.5))
+API = "/api/v1"
+
+
+@pytest.fixture(scope="module")
+def client(app: FastAPI) -> Iterator[TestClient]:
+    with TestClient(app) as test_client:
+        yield test_client
+
+
+def post(client: TestClient, path: str, body: dict[str, Any]) -> Any:
+    response = client.post(f"{API}/{path}", json=body)
+    assert response.status_code == 200, response.text
+    return response.json()
+
+
+def evaluate(client: TestClient, screw: str | dict[str, Any], **app: Any) -> Any:
+    target = {"catalog_id": screw} if isinstance(screw, str) else screw
+    return post(client, "evaluate", {"application": app, "screw": target})["candidate"]
+
+
+def check(candidate: dict[str, Any], name: str) -> dict[str, Any]:
+    return next(c for c in candidate["checks"] if c["name"] == name)
+
+
+def eta(lead: float, d_p: float, mu: float, cos_a: float = COS_ACME) -> float:
+    """Shigley's Acme-form efficiency (engineering.md section 2)."""
+    tan_l = lead / (math.pi * d_p)
+    return (cos_a - mu * tan_l) / (cos_a + mu / tan_l)
+
+
+# --- 1. the force that accelerates the moving mass reaches the nut ------------------------
+
+
+def test_peak_thrust_judges_the_design_load(client: TestClient) -> None:
+    """load 5 N, 50 kg at 5 m/s^2: peak thrust 5 + 50 x 5 = 255 N against the 1/4 in design
+    load 3 MPa x 3 pi d_p h = 111.6 N (d_p = 0.89 x 6.35 mm, h = 0.11 x 6.35 mm)."""
+    c = evaluate(client, "B4000-L2", load_n=5, speed_mm_s=20, length_mm=200,
+                 moving_mass_kg=50, accel_mm_s2=5000)  # fmt: skip
+    d_p, h = 0.89 * 6.35e-3, 0.11 * 6.35e-3
+    design = 3e6 * 3 * math.pi * d_p * h
+    assert c["axial_load_n"] == pytest.approx(5.0)
+    assert c["peak_axial_load_n"] == pytest.approx(255.0)
+    load = check(c, "design_load")
+    assert (load["value"], load["limit"]) == (pytest.approx(255.0), pytest.approx(design))
+    assert design == pytest.approx(111.6, rel=1e-3) and not load["passed"]
+    assert check(c, "buckling")["value"] == pytest.approx(255.0)
+    # PV stays on the running thrust: n F / (3 h) with F = 5 N, n = 10 rev/s
+    assert c["pv"]["value_mpa_m_s"] == pytest.approx(10 * 5.0 / (3 * h) / 1e6)
+
+
+# --- 2. the inertia torque of the moving mass passes through the thread --------------------
+
+
+def test_mass_inertia_torque_goes_through_the_efficiency(client: TestClient) -> None:
+    """ZBX8000-L10, 20 kg at 5 m/s^2: m a lead / (2 pi eta) = 100 x 0.01 / (2 pi x 0.617)
+    = 0.258 N m, where the reflected inertia alone, m a lead / 2 pi, gives 0.159 N m."""
+    c = evaluate(client, "ZBX8000-L10", load_n=10, speed_mm_s=50, length_mm=500,
+                 moving_mass_kg=20, accel_mm_s2=5000)  # fmt: skip
+    e = eta(0.010, (12.7e-3 + 0.78 * 12.7e-3) / 2, 0.15)
+    assert e == pytest.approx(0.617, abs=1e-3)
+    assert c["torque"]["inertia_mass_nm"] == pytest.approx(20 * 5 * 0.010 / (2 * math.pi * e))
+    assert c["torque"]["inertia_mass_nm"] == pytest.approx(0.258, abs=1e-3)
+
+
+# --- 3. vertical axes: a brake, and self-locking only with a margin -------------------------
+
+
+def test_a_vertical_lead_8_axis_passes_with_a_brake(client: TestClient) -> None:
+    """A Z axis: 2 kg, lead 8 mm, 20 mm/s. Without a brake nothing holds it; with 0.5 N m
+    holding torque the screws pass, each needing SF x max(seed, physics) holding torque."""
+    axis = {"load_n": 5, "moving_mass_kg": 2, "orientation": "vertical", "lead_mm": 8,
+            "speed_mm_s": 20, "length_mm": 300, "accel_mm_s2": 500}  # fmt: skip
+    free = post(client, "select", axis)
+    assert free["counts"]["passed"] == 0
+    assert free["counts"]["failed_by_check"]["back_driving"] == free["counts"]["evaluated"]
+    held = post(client, "select", {**axis, "brake_torque_nm": 0.5})
+    assert held["counts"]["passed"] > 0
+    c = held["candidates"][0]
+    hold = check(c, "holding")
+    force = 5 + 2 * G
+    lead, d_p = 0.008, c["pitch_diameter_mm"] / 1e3
+    tan_l = lead / (math.pi * d_p)
+    eta_b = (COS_ACME * tan_l - 0.08) / (tan_l * (COS_ACME + 0.08 * tan_l))
+    seed = force * lead * c["efficiency"] / (2 * math.pi)
+    physics = force * lead * eta_b / (2 * math.pi)
+    assert hold["value"] == pytest.approx(max(seed, physics))
+    assert hold["limit"] == 0.5 and hold["passed"]
+
+
+def test_self_locking_needs_a_margin_on_static_friction(client: TestClient) -> None:
+    """ZBX8000: the physical limit is pi d_p mu_s / cos a_n = 2.934 mm; a 2.5 mm lead sits at
+    0.85 of it, self-locking on paper but not with half the static friction (1.467 mm)."""
+    c = evaluate(client, "ZBX8000-L2.5", load_n=50, speed_mm_s=10, length_mm=300,
+                 orientation="vertical")  # fmt: skip
+    d_p = (12.7 + 0.78 * 12.7) / 2
+    assert c["max_self_locking_lead_mm"] == pytest.approx(math.pi * d_p * 0.08 / COS_ACME)
+    assert c["max_self_locking_lead_with_margin_mm"] == pytest.approx(
+        math.pi * d_p * 0.04 / COS_ACME
+    )
+    assert c["self_locking"] and not c["self_locking_with_margin"]
+    assert not check(c, "back_driving")["passed"]
+    # the seed's rule (lead under 12.7 / 8 = 1.59 mm) agrees with the margin here
+    assert not c["seed_rule_no_backdrive"]
+
+
+def test_backdrive_efficiency_is_labelled_by_its_friction(client: TestClient) -> None:
+    """Uncoated: static 0.08 below running 0.15, so the back-drive efficiency from rest can
+    exceed the forward one; the running back-drive efficiency uses 0.15 and cannot."""
+    c = evaluate(client, "ZBX8000-L25", load_n=50, speed_mm_s=10, length_mm=300)
+    d_p = (12.7 + 0.78 * 12.7) / 2e3
+    tan_l = 0.025 / (math.pi * d_p)
+
+    def eta_b(mu: float) -> float:
+        return (COS_ACME * tan_l - mu) / (tan_l * (COS_ACME + mu * tan_l))
+
+    assert c["backdrive_efficiency"] == pytest.approx(eta_b(0.08))
+    assert c["backdrive_efficiency_running"] == pytest.approx(eta_b(0.15))
+    assert c["backdrive_efficiency"] > c["efficiency"] > c["backdrive_efficiency_running"]
+
+
+# --- 4. short, heavily loaded columns -----------------------------------------------------
+
+
+def test_a_short_heavy_column_fails_on_yield(client: TestClient) -> None:
+    """Custom 30 mm steel screw, 25 mm root, 200 kN over 100 mm, fixed-simple: 407 MPa at the
+    root against 0.5 x 310 MPa; slenderness (0.1 / sqrt 2) / (0.025 / 4) = 11.3, far below
+    sqrt(2 pi^2 E / S_y) = 114.8, so Johnson: A (S_y - (S_y s / 2 pi)^2 / E)."""
+    screw = {"outer_diameter_mm": 30, "root_diameter_mm": 25, "lead_mm": 6,
+             "friction_dynamic": 0.15, "friction_static": 0.2, "material": "steel"}  # fmt: skip
+    c = evaluate(client, screw, load_n=200e3, speed_mm_s=10, length_mm=100)
+    area = math.pi * 0.025**2 / 4
+    s = (0.1 / math.sqrt(2)) / (0.025 / 4)
+    johnson = area * (310e6 - (310e6 * s / (2 * math.pi)) ** 2 / 206e9)
+    assert c["buckling"]["mode"] == "johnson"
+    assert c["buckling"]["slenderness"] == pytest.approx(s)
+    assert c["buckling"]["critical_load_n"] == pytest.approx(johnson)
+    stress = check(c, "root_stress")
+    assert stress["value"] == pytest.approx(200e3 / area / 1e6)
+    assert stress["value"] == pytest.approx(407.4, abs=0.1)
+    assert stress["limit"] == pytest.approx(155.0) and not stress["passed"]
+    assert not check(c, "buckling")["passed"] and not c["passed"]
+
+
+# --- 5. inputs an engineer sends ----------------------------------------------------------
+
+
+def test_constant_speed_and_a_pure_inertia_axis_are_accepted(client: TestClient) -> None:
+    body = post(client, "select", {"load_n": 0, "moving_mass_kg": 5, "accel_mm_s2": 0,
+                                   "speed_mm_s": 50, "length_mm": 500})  # fmt: skip
+    assert body["counts"]["passed"] > 0
+    c = body["candidates"][0]
+    assert c["torque"]["inertia_nm"] == 0.0 and c["peak_axial_load_n"] == 0.0
+    assert c["pv"]["max_speed_mm_s"] is None  # no thrust: no PV speed limit
+
+
+def test_a_lead_with_no_screw_names_the_nearest_leads(client: TestClient) -> None:
+    body = post(client, "select", {"load_n": 50, "speed_mm_s": 50, "length_mm": 500,
+                                   "lead_mm": 7})  # fmt: skip
+    assert body["counts"]["evaluated"] == 0
+    assert "Nearest leads: 6 mm and 8 mm" in body["summary"]["message"]
+
+
+# --- 6. advice versus limits ----------------------------------------------------------------
+
+
+def test_traverse_speed_is_advice(client: TestClient) -> None:
+    """200 mm/s on a 10 mm lead exceeds the seed's 100 mm/s band: a warning, not a reject,
+    unless the user asks to reject on advice."""
+    axis = {"load_n": 20, "speed_mm_s": 200, "length_mm": 300, "lead_mm": 10,
+            "coating": "none"}  # fmt: skip
+    warned = post(client, "select", axis)
+    assert warned["counts"]["passed"] > 0
+    c = warned["candidates"][0]
+    assert [w["name"] for w in c["warnings"]] == ["traverse_speed"]
+    assert c["warnings"][0]["kind"] == "advice" and c["passed"]
+    assert all(
+        [w["name"] for w in c["warnings"]] == ["traverse_speed"] for c in warned["candidates"]
+    )
+    strict = post(client, "select", {**axis, "advice": "reject"})
+    assert strict["counts"]["passed"] == 0  # every 10 mm lead runs above its 100 mm/s band
+
+
+# --- 7. honest nearest and feasible fixes -------------------------------------------------
+
+
+def test_fixes_stay_within_the_catalog(client: TestClient, catalog: Catalog) -> None:
+    """A long, fast axis: the lead that would clear critical speed is beyond the catalog's
+    largest (60 mm), so no fix offers it; an anti-backlash screw is never told to become one."""
+    axis = {"load_n": 3000, "speed_mm_s": 500, "length_mm": 3000,
+            "positioning_tolerance_mm": 0.01, "stroke_mm": 1000}  # fmt: skip
+    body = post(client, "select", axis)
+    largest_lead_mm = max(s.lead_m for s in catalog.screws) * 1e3
+    for c in body["rejected"]:
+        for k in c["checks"]:
+            fix = k["fix"] or ""
+            if "lead of at least" in fix:
+                wanted = float(fix.split("lead of at least ")[1].split(" mm")[0])
+                assert wanted <= largest_lead_mm, fix
+            if c["anti_backlash"]:
+                assert "anti-backlash" not in fix, fix
+    rejected = [(len([k for k in c["checks"] if not k["passed"] and k["kind"] == "limit"]))
+                for c in body["rejected"]]  # fmt: skip
+    assert rejected == sorted(rejected)
+
+
+def test_nothing_passes_lists_feasible_changes_as_data(client: TestClient) -> None:
+    """1500 N at 50 mm/s over 500 mm: no nut takes it; each offered change admits its screw."""
+    body = post(client, "select", {"load_n": 1500, "speed_mm_s": 50, "length_mm": 500})
+    assert body["counts"]["passed"] == 0
+    changes = body["summary"]["changes"]
+    assert changes
+    for change in changes:
+        again = post(client, "evaluate", {
+            "application": {"load_n": 1500, "speed_mm_s": 50, "length_mm": 500,
+                            **change["inputs"]},
+            "screw": {"catalog_id": change["admits"]},
+        })["candidate"]  # fmt: skip
+        assert again["passed"], change
+
+
+# --- 8. what a pass rests on ----------------------------------------------------------------
+
+
+def test_governing_limit_provenance(client: TestClient) -> None:
+    """PV governs a light slow axis on a plastic nut; its limit is an assumed value, while a
+    torque limit is the user's own."""
+    c = evaluate(client, "B8000-L10", load_n=100, speed_mm_s=50, length_mm=500)
+    assert c["governing_check"] == "pv" and c["governing_limit_provenance"] == "assumed"
+    t = evaluate(client, "B8000-L10", load_n=100, speed_mm_s=5, length_mm=500,
+                 max_torque_nm=0.05)  # fmt: skip
+    assert t["governing_check"] == "torque" and t["governing_limit_provenance"] == "user"
