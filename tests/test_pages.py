@@ -10,6 +10,7 @@ import math
 import re
 from pathlib import Path
 from typing import Any
+from urllib.parse import parse_qsl
 
 import pytest
 from bs4 import BeautifulSoup
@@ -17,7 +18,7 @@ from fastapi.testclient import TestClient
 from httpx import Response
 
 from app.catalog import Catalog
-from app.fields import BY_PAGE
+from app.fields import BY_API, BY_PAGE
 from app.schemas import SelectOut
 from app.web.export import results_csv, safe_cell
 
@@ -192,7 +193,8 @@ def test_table_values_follow_the_display_units(client: TestClient) -> None:
 def test_switching_units_converts_the_typed_values(client: TestClient) -> None:
     params = {**AXIS, "force_unit": "lbf", "from_force_unit": "N", "from_length_unit": "mm"}
     page = soup(client.get("/", params=params))
-    assert page.select_one("#f-load")["value"] == "22.4809"
+    assert page.select_one("#f-load")["value"] == "22.48"
+    assert page.select_one("input[name=typed_load]")["value"] == "100|N"
     assert page.select_one("#f-length")["value"] == "500"
     assert page.select_one("input[name=from_force_unit]")["value"] == "lbf"
     assert candidate_ids(page) == candidate_ids(soup(client.get("/", params=AXIS)))
@@ -202,7 +204,7 @@ def test_switching_units_swaps_converted_fields_out_of_band(client: TestClient) 
     params = {**AXIS, "length_unit": "in", "from_length_unit": "mm"}
     response = client.get("/", params=params, headers=HX)
     page = soup(response)
-    assert page.select_one("#w-length[hx-swap-oob] #f-length")["value"] == "19.685"
+    assert page.select_one("#w-length[hx-swap-oob] #f-length")["value"] == "19.69"
     assert page.select_one("#w-speed[hx-swap-oob] label .unit").text == "in/s"
     entered = page.select_one("#entered-units[hx-swap-oob] input[name=from_length_unit]")
     assert entered["value"] == "in"
@@ -388,16 +390,49 @@ def test_rejected_are_grouped_by_failing_check_with_fixes(client: TestClient) ->
         assert item.select_one(".fix").text.startswith("Fix:")
 
 
-def test_no_passing_candidate_shows_the_summary_prominently(client: TestClient) -> None:
+def test_no_passing_candidate_lists_changes_with_apply_links(client: TestClient) -> None:
     params = {"load": "10000", "speed": "500", "length": "3000"}
     api = client.get(
         "/api/v1/select", params={"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000}
     ).json()
     page = soup(client.get("/", params=params))
     assert api["counts"]["passed"] == 0
-    assert page.select_one(".notice.no-pass .summary").text == api["summary"]["message"]
+    notice = page.select_one(".notice.no-pass[role=region]")
+    most = api["summary"]["most_excluding_check"]
+    label = next(k["label"] for k in api["rejected"][0]["checks"] if k["name"] == most)
+    assert notice.select_one(".verdict strong").text == label
+    assert most not in notice.text  # internal names never reach the reader
+    changes = notice.select("ul.input-changes li")
+    assert {li["data-field"] for li in changes} == {
+        BY_API[k].page for k in api["summary"]["input_change"]
+    }
+    for li in changes:
+        field = BY_API[
+            next(k for k in api["summary"]["input_change"] if BY_API[k].page == li["data-field"])
+        ]
+        target = api["summary"]["input_change"][field.api]
+        href = li.select_one("a.apply")["href"]
+        query = dict(parse_qsl(href.split("?", 1)[1]))
+        assert float(query[field.page]) <= target  # rounded down: the change still clears
+        assert float(query[field.page]) >= target * 0.99
+        unchanged = {k: v for k, v in params.items() if k != field.page}
+        assert {k: v for k, v in query.items() if k != field.page} == unchanged
+    best = api["rejected"][0]
+    failed = [k for k in best["checks"] if not k["passed"]]
+    items = notice.select("ul.failed-fixes li")
+    assert [li.strong.text for li in items] == [k["label"] + "." for k in failed]
+    assert items[0].text.endswith(failed[0]["fix"])
     assert not page.select("table.candidates")
     assert "nearest rejected" in page.select_one("#charts-heading").text
+
+
+def test_apply_all_makes_every_change_and_the_nearest_screw_passes(client: TestClient) -> None:
+    page = soup(client.get("/", params={"load": "3000", "speed": "500", "length": "3000"}))
+    href = page.select_one("a.apply-all")["href"]
+    nearest = page.select_one(".no-pass .verdict .cid").text
+    after = soup(client.get(href))
+    assert not after.select(".no-pass")
+    assert nearest in candidate_ids(after)
 
 
 # exports
