@@ -87,7 +87,12 @@ def test_full_page_renders_results_table_charts_and_counts(client: TestClient) -
     assert page.select_one(".count-passed").text == str(counts["passed"])
     assert page.select_one(".count-rejected").text == str(counts["rejected"])
     charts = page.select("script[type='application/json'][data-chart]")
-    assert [c["id"] for c in charts] == ["fig-critical_speed", "fig-pv", "fig-torque"]
+    assert [c["id"] for c in charts] == [
+        "fig-critical_speed",
+        "fig-pv",
+        "fig-torque",
+        "fig-lead_sweep",
+    ]
     for script in charts:
         assert page.select_one(f"#{script['data-chart']}.chart")
         assert json.loads(script.string)["data"]

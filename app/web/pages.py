@@ -89,10 +89,12 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["result"] = result
         context["query"] = share_query(inputs, units)
         context["share_url"] = "/?" + context["query"]
-        context["figures"] = result_figures(result, units)
+        context["figures"] = result_figures(result, units, catalog)
         context["charting_passed"] = chart_candidates(result)[1]
         context["rejected_groups"] = rejected_groups(result.rejected)
-        context["rank_text"] = BY_PAGE["rank_by"].choice_text(str(inputs.model_dump()["rank_by"])).lower()
+        context["rank_text"] = (
+            BY_PAGE["rank_by"].choice_text(str(inputs.model_dump()["rank_by"])).lower()
+        )
         if not result.candidates:
             context["advice"] = no_pass_advice(result, units)
     return context
