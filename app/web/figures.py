@@ -378,7 +378,7 @@ def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) ->
     limits (per cent) on the right; the self-locking band shaded, the chosen lead dashed."""
     leads = [_round(d.value(ev.screw.lead_m * 1e3, "length")) for ev in sweep]
     unit = d.label("torque")
-    series = [
+    series: list[tuple[str, str, list[float | None], str, str]] = [
         (
             "Drive torque",
             "y",
