@@ -52,7 +52,7 @@ def test_empty_selector_is_a_form_with_a_label_on_every_field(client: TestClient
     page = soup(client.get("/"))
     form = page.select_one("form#selector[action='/'][method='get']")
     assert form is not None and form.select_one("button[type=submit]")
-    assert form["hx-get"] == "/" and "delay:400ms" in str(form["hx-trigger"])
+    assert form["hx-get"] == "/" and "delay:150ms" in str(form["hx-trigger"])
     for name in ("load", "lead", "speed", "length"):
         assert page.select_one(f"#f-{name}[name={name}]")
     for field in form.select("input:not([type=hidden]), select"):
@@ -443,6 +443,17 @@ def test_apply_all_makes_every_change_and_the_nearest_screw_passes(client: TestC
 # exports
 
 
+def test_csv_numbers_carry_six_significant_figures_at_most(client: TestClient) -> None:
+    text = client.get("/export.csv", params={**AXIS, "length_unit": "in", "force_unit": "lbf"}).text
+    numbers = re.findall(r"(?<![\w.])-?\d+\.\d+(?:e-?\d+)?", text)
+    assert numbers
+    for number in numbers:
+        digits = number.lstrip("-").split("e")[0].replace(".", "").lstrip("0")
+        assert len(digits) <= 6, number
+    inputs = text.split("\r\n\r\n", 1)[0]
+    assert "accel,39.3701,in/s²" in inputs  # 1000 mm/s², not 39.37007874015748
+
+
 def csv_candidates(text: str) -> list[dict[str, str]]:
     """The candidate table of a CSV export: the rows after the inputs and the blank row."""
     _, table = text.split("\r\n\r\n", 1)
@@ -461,7 +472,8 @@ def test_csv_export_has_a_row_per_candidate_in_display_units(client: TestClient)
     assert [r["rank"] for r in passed] == [str(i + 1) for i in range(len(passed))]
     assert len(rows) == len(api["candidates"]) + len(api["rejected"])
     total = float(passed[0]["torque_total [lb in]"])
-    assert math.isclose(total, api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617)
+    expected = api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617
+    assert math.isclose(total, expected, rel_tol=1e-5)  # written to 6 significant figures
 
 
 def test_csv_cells_cannot_start_a_formula(client: TestClient) -> None:
