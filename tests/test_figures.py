@@ -144,18 +144,22 @@ def test_lead_sweep_evaluates_every_lead_of_the_top_size(
         for s in catalog.series[top.series].screws
         if s.coated == top.coated and s.anti_backlash == top.anti_backlash
     ]
-    torque, speed, pv_used = figure["data"]
+    torque, speed, pv_used, limit = figure["data"]
     assert torque["x"] == sorted(round(s.lead_m * 1e3, 6) for s in same)
     chosen = torque["x"].index(top.lead_mm)
     assert torque["y"][chosen] == pytest.approx(top.torque.total_nm, rel=1e-4)
     assert speed["y"][chosen] == pytest.approx(100 / top.critical_speed.margin, rel=1e-3)
     pv_check = next(k for k in top.checks if k.name == "pv")
     assert pv_used["y"][chosen] == pytest.approx(pv_check.utilization * 100, rel=1e-3)
-    band, limit, marker = figure["layout"]["shapes"]
+    band, marker = figure["layout"]["shapes"]
     assert band["type"] == "rect" and band["x1"] == pytest.approx(
         min(top.max_self_locking_lead_mm, max(torque["x"])), rel=1e-4
     )
-    assert limit["y0"] == 100 and marker["x0"] == top.lead_mm
+    assert limit["y"] == [100, 100] and limit["yaxis"] == "y2" and marker["x0"] == top.lead_mm
+    assert (
+        figure["layout"]["yaxis2"]["type"] == "log"
+        and 100.0 in figure["layout"]["yaxis2"]["tickvals"]
+    )
 
 
 def test_torque_bars_stack_to_the_total(result: SelectOut) -> None:

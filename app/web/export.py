@@ -33,13 +33,14 @@ def safe_cell(value: Any) -> Any:
 
 
 def tidy(value: Any) -> Any:
-    """A float to 6 significant figures, so unit conversions leave no binary noise
-    (0.7500000000000001 is written 0.75); other values as they are.
+    """A float to 10 significant figures, so unit conversions leave no binary noise
+    (0.7500000000000001 is written 0.75) and a spreadsheet still recomputes the inputs
+    exactly enough; other values as they are.
 
-    >>> tidy(0.7500000000000001), tidy(11.240447154), tidy(True), tidy(3), tidy(None)
-    (0.75, 11.2404, True, 3, None)
+    >>> tidy(0.7500000000000001), tidy(1.968503937007874), tidy(True), tidy(3), tidy(None)
+    (0.75, 1.968503937, True, 3, None)
     """
-    return float(f"{value:.6g}") if isinstance(value, float) else value
+    return float(f"{value:.10g}") if isinstance(value, float) else value
 
 
 def cell(value: Any) -> Any:

@@ -328,19 +328,8 @@ def _utilisation(ev: Evaluation, name: str) -> float | None:
 
 
 def _sweep_shapes(leads: list[float], locking: float, chosen: float) -> list[dict[str, Any]]:
-    """The self-locking band (leads up to the longest that self-locks), the 100 % line and
-    the chosen lead."""
+    """The self-locking band (leads up to the longest that self-locks) and the chosen lead."""
     shapes: list[dict[str, Any]] = [
-        {
-            "type": "line",
-            "xref": "paper",
-            "x0": 0,
-            "x1": 1,
-            "yref": "y2",
-            "y0": 100,
-            "y1": 100,
-            "line": {"color": "#A00000", "dash": "dot", "width": 1},
-        },
         {
             "type": "line",
             "xref": "x",
@@ -414,11 +403,23 @@ def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) ->
     layout = _layout(
         _axis(f"Lead of {top.series} [{d.label('length')}]"), _axis(f"Drive torque [{unit}]")
     )
+    shares = [float(v) for _, axis, y, _, _ in series if axis == "y2" for v in y if v]
+    data.append(
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "name": "Limit, 100 %",
+            "x": [leads[0], leads[-1]],
+            "y": [100, 100],
+            "yaxis": "y2",
+            "line": {"color": "#A00000", "dash": "dot", "width": 1},
+            "hoverinfo": "skip",
+        }
+    )
     layout["yaxis2"] = {
-        **_axis("Share of limit [%]"),
+        **_axis("Share of limit [%]", True, [*shares, 100.0]),
         "overlaying": "y",
         "side": "right",
-        "rangemode": "tozero",
     }
     layout["shapes"] = _sweep_shapes(leads, locking, chosen)
     layout["annotations"] = [
