@@ -562,3 +562,44 @@ def test_plotly_css_matches_the_bundles_style_rules() -> None:
     ]
     css = (ROOT / "static/css/plotly-4.1.1.css").read_text()
     assert [line for line in css.splitlines() if "{" in line] == expected
+
+
+def test_fixes_and_proposals_follow_the_chosen_units(client: TestClient) -> None:
+    params = {"load": "674", "speed": "19.7", "length": "118", "force_unit": "lbf"}
+    page = soup(client.get("/", params={**params, "length_unit": "in"}))
+    notice = page.select_one(".notice.no-pass")
+    proposals = [p.text for p in notice.select(".proposed")]
+    assert proposals == ["66 in", "34.5 lbf"]
+    fixes = notice.select_one("ul.failed-fixes").text
+    assert " in" in fixes and "lbf" in fixes and " mm" not in fixes and " N " not in fixes
+    assert "(lbf, in, in/s, N m)" in page.select_one(".footnote").text
+
+
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [
+        ("critical_speed_safety_factor", ("0.8 allows 80 %", "1 or below", "smaller is safer")),
+        ("buckling_safety_factor", ("0.5 allows half", "1 or below", "smaller is safer")),
+        ("torque_safety_factor", ("1.5 asks for 50 % reserve", "1 or more", "larger is safer")),
+    ],
+)
+def test_safety_factor_help_states_its_convention(
+    client: TestClient, name: str, words: tuple[str, ...]
+) -> None:
+    hint = soup(client.get("/")).select_one(f"#h-{name}").text
+    assert all(word in hint for word in words), hint
+
+
+def test_results_columns_say_what_they_mean_in_plain_words(client: TestClient) -> None:
+    page = soup(client.get("/", params=AXIS))
+    heads = {a.text: a["title"] for a in page.select("table.candidates thead abbr.col-help")}
+    assert "motor off" in heads["Holds the load?"]
+    assert "above 1× passes" in heads["Critical speed margin"]
+    table = page.select_one("table.candidates").text
+    assert "seed" not in table and "physics" not in table
+    api = api_select(client)
+    for body, c in zip(page.select("tbody.candidate"), api["candidates"], strict=True):
+        cell = body.select_one("td.backdrive").text
+        assert ("Self-locking" in cell) == c["self_locking"]
+        if not c["self_locking"]:
+            assert "brake ≥" in cell

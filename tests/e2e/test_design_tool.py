@@ -63,7 +63,7 @@ def test_apply_links_lead_from_impossible_to_passing(
 
 
 def test_unit_switches_return_exactly_what_was_typed(
-    page: Any, live_server: str, console_errors: list[str]
+    page: Any, live_server: str, artifacts: Path, console_errors: list[str]
 ) -> None:
     page.goto(live_server + "/?load=50&speed=50&length=800")
     page.wait_for_selector("table.candidates tbody.candidate")
@@ -93,6 +93,10 @@ def test_unit_switches_return_exactly_what_was_typed(
     page.wait_for_function(
         "() => document.querySelector('dl.inputs').textContent.includes('11.24 lbf')"
     )
+    assert page.get_attribute("input[name=typed_load]", "value") == "50|N"
+    page.screenshot(path=str(artifacts / "units-desktop-1280.png"))
+    page.set_viewport_size(PHONE)
+    page.screenshot(path=str(artifacts / "units-phone-390.png"))
     assert console_errors == []
 
 
@@ -162,6 +166,11 @@ def test_lead_sweep_and_chart_layout(
     names = page.locator("#chart-critical_speed .legend .traces").all_text_contents()
     assert len(names) == len(set(names))
     page.screenshot(path=str(artifacts / "charts-desktop-1280.png"), full_page=True)
+    page.set_viewport_size(PHONE)
+    page.wait_for_function(
+        "() => document.querySelector('#chart-lead_sweep .main-svg').getAttribute('width') <= 390"
+    )
+    page.locator("#chart-lead_sweep").screenshot(path=str(artifacts / "lead-sweep-phone-390.png"))
     assert console_errors == []
 
 
