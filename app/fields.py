@@ -225,20 +225,24 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="critical_speed_safety_factor", page="critical_speed_safety_factor",
         core="critical_speed_safety_factor", label="Critical-speed factor",
-        help="Fraction of the theoretical critical speed allowed, 1 or below",
+        help="Share of the theoretical whirling speed the screw may run at: 0.8 allows "
+        "80 %. A fraction, 1 or below; smaller is safer",
         group="Safety factors", kind="number", default=0.8, bounds=(0.01, 1.0),
     ),
     InputField(
         api="buckling_safety_factor", page="buckling_safety_factor",
         core="buckling_safety_factor", label="Buckling factor",
-        help="Fraction of the column's critical load (Euler, or Johnson for short screws) "
-        "and of the yield strength at the root allowed, 1 or below",
+        help="Share of the column's critical load (Euler, or Johnson for short screws) and "
+        "of the root's yield strength the screw may carry: 0.5 allows half. A fraction, 1 "
+        "or below; smaller is safer",
         group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
     ),
     InputField(
         api="torque_safety_factor", page="torque_safety_factor",
         core="torque_safety_factor", label="Torque safety factor",
-        help="Multiplier on the computed torque, 1 or more", group="Safety factors",
+        help="Multiplier on the computed drive torque before it is compared with the "
+        "motor: 1.5 asks for 50 % reserve. 1 or more; larger is safer",
+        group="Safety factors",
         kind="number", default=1.0, bounds=(1.0, 10.0),
     ),
     InputField(

@@ -17,7 +17,7 @@ from app.server.overload import OverloadMiddleware
 from app.server.security import SecurityMiddleware
 from app.server.staticfiles import PrecompressedStaticFiles
 from app.settings import Settings, get_settings
-from app.web import pages
+from app.web import guide, pages
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
@@ -34,7 +34,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         title="leadscrew-selector",
         version=__version__,
         description="Select a leadscrew and nut against every published limit. "
-        "Lengths in mm, speeds in mm/s, forces in N, torques in N m.",
+        "Lengths in mm, speeds in mm/s, forces in N, torques in N m. "
+        "What each check, ranking and provenance kind means: [the guide](/guide).",
         # the built-in pages load from a CDN with inline scripts; /docs is ours (routes/docs)
         docs_url=None,
         redoc_url=None,
@@ -42,6 +43,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.catalog = load_catalog(settings.catalog_dirs)
     app.include_router(api.router)
     app.include_router(pages.router)
+    app.include_router(guide.router)
     app.include_router(docs.router)
     app.mount("/static", PrecompressedStaticFiles(directory=resource_dir("static")), name="static")
     app.add_exception_handler(AppError, app_error_handler)

@@ -39,20 +39,42 @@ def test_every_figure_is_a_valid_plotly_figure(result: SelectOut, units: Any) ->
         json.dumps(figure, allow_nan=False)
 
 
-def test_critical_speed_curves_follow_the_core_formula(
-    result: dict[str, Any], catalog: Catalog
+def curve_members(figure: dict[str, Any], candidates: list[dict[str, Any]]) -> list[list[str]]:
+    """The candidate ids each curve's legend names (series prefix written once)."""
+    members = []
+    for curve in figure["data"]:
+        if curve["name"] in ("Operating point", "Your length"):
+            continue
+        members.append([c["id"] for c in candidates if c["id"] in full_ids(curve["name"])])
+    return members
+
+
+def full_ids(name: str) -> set[str]:
+    """Ids a legend entry 'B14000: L60-TFE, L50-TFE' (or 'A, B') stands for."""
+    series, colon, rest = name.partition(": ")
+    if not colon:
+        return set(name.split(", "))
+    return {f"{series}-{part}" for part in rest.split(", ")}
+
+
+def test_critical_speed_draws_one_line_per_distinct_curve(
+    result: SelectOut, catalog: Catalog
 ) -> None:
     figure = result_figures(result, METRIC)["critical_speed"]
-    top = plain(result)["candidates"][:TOP]
-    curves, points, line = figure["data"][:-2], figure["data"][-2], figure["data"][-1]
-    assert [c["name"] for c in curves] == [c["id"] for c in top]
+    candidates = plain(result)["candidates"]
+    groups = curve_members(figure, candidates)
+    allowed = [
+        {round(c["critical_speed"]["allowed_rpm"], 1) for c in candidates if c["id"] in g}
+        for g in groups
+    ]
+    assert all(len(a) == 1 for a in allowed)  # one curve: one allowed speed
+    assert len({a.pop() for a in allowed}) == len(groups)  # no curve drawn twice
+    assert sum(map(len, groups)) >= len(groups)
     assert figure["layout"]["xaxis"]["type"] == figure["layout"]["yaxis"]["type"] == "log"
     assert figure["layout"]["xaxis"]["title"]["text"].endswith("[mm]")
-    assert points["x"] == [500.0] * len(top) and points["y"] == [c["rpm"] for c in top]
-    assert line["x"] == [500.0, 500.0]
-    for curve, candidate in zip(curves, top, strict=True):
-        screw = catalog.by_id[candidate["id"]]
-        factor = plain(result)["inputs"]["critical_speed_safety_factor"]
+    factor = plain(result)["inputs"]["critical_speed_safety_factor"]
+    for curve, group in zip(figure["data"], groups, strict=False):
+        screw = catalog.by_id[group[0]]
         for length_mm, rpm in zip(curve["x"][::10], curve["y"][::10], strict=True):
             expected = factor * critical_speed_rpm(
                 screw.root_diameter_m,
@@ -64,19 +86,80 @@ def test_critical_speed_curves_follow_the_core_formula(
             assert rpm == pytest.approx(expected, rel=1e-3)
 
 
+def test_operating_points_do_not_overlap_and_carry_their_margin(result: SelectOut) -> None:
+    figure = result_figures(result, METRIC)["critical_speed"]
+    points, line = figure["data"][-2], figure["data"][-1]
+    assert line["x"] == [500.0, 500.0]
+    assert set(points["x"]) == {500.0}
+    pairs = list(zip(points["y"], points["marker"]["color"], strict=True))
+    assert len(pairs) == len(set(pairs))  # no two markers drawn on one spot
+    by_id = {c["id"]: c for c in plain(result)["candidates"]}
+    for rpm, text in zip(points["y"], points["text"], strict=True):
+        for line_text in text.split("<br>"):
+            cid, margin = line_text.split(": margin ")
+            assert by_id[cid]["rpm"] == pytest.approx(rpm, rel=1e-4)
+            expected = by_id[cid]["critical_speed"]["margin"]
+            assert float(margin.rstrip("×")) == pytest.approx(expected, abs=0.006)
+
+
+def test_log_axes_label_each_decade_and_steps_between(result: SelectOut) -> None:
+    axis = result_figures(result, METRIC)["critical_speed"]["layout"]["xaxis"]
+    assert axis["tickvals"] == [100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0]
+    assert axis["ticktext"] == ["100", "200", "500", "1000", "2000", "5000"]
+    pv_axis = result_figures(result, METRIC)["pv"]["layout"]["xaxis"]
+    assert pv_axis["tickvals"] == [5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0]
+
+
 def test_pv_curves_pass_through_the_limit_at_the_operating_speed(result: SelectOut) -> None:
     figure = result_figures(result, METRIC)["pv"]
     curves, point = figure["data"][:-1], figure["data"][-1]
-    top = [c for c in plain(result)["candidates"][:TOP] if c["pv"]["max_load_n"] is not None]
-    assert len(curves) == len(top)
+    candidates = plain(result)["candidates"]
+    groups = curve_members(figure, candidates)
     assert point["x"] == [50.0] and point["y"] == [100.0]
-    for curve, candidate in zip(curves, top, strict=True):
+    by_id = {c["id"]: c for c in candidates}
+    for curve, group in zip(curves, groups, strict=True):
         middle = len(curve["x"]) // 2
         assert curve["x"][middle] == pytest.approx(50.0)
-        assert curve["y"][middle] == pytest.approx(candidate["pv"]["max_load_n"], rel=1e-4)
+        for cid in group:
+            assert curve["y"][middle] == pytest.approx(by_id[cid]["pv"]["max_load_n"], rel=1e-4)
         products = {round(x * y, 1) for x, y in zip(curve["x"], curve["y"], strict=True)}
         assert max(products) / min(products) == pytest.approx(1.0, abs=1e-3)
     assert figure["layout"]["xaxis"]["type"] == "log"
+
+
+def test_legend_sits_below_the_plot_clear_of_the_toolbar(result: SelectOut) -> None:
+    for figure in result_figures(result, METRIC).values():
+        legend = figure["layout"]["legend"]
+        assert legend["yref"] == "container" and legend["y"] == 0
+        assert figure["layout"]["margin"]["t"] >= 30
+
+
+def test_lead_sweep_evaluates_every_lead_of_the_top_size(
+    result: SelectOut, catalog: Catalog
+) -> None:
+    figure = result_figures(result, METRIC, catalog)["lead_sweep"]
+    top = result.candidates[0]
+    same = [
+        s
+        for s in catalog.series[top.series].screws
+        if s.coated == top.coated and s.anti_backlash == top.anti_backlash
+    ]
+    torque, speed, pv_used, limit = figure["data"]
+    assert torque["x"] == sorted(round(s.lead_m * 1e3, 6) for s in same)
+    chosen = torque["x"].index(top.lead_mm)
+    assert torque["y"][chosen] == pytest.approx(top.torque.total_nm, rel=1e-4)
+    assert speed["y"][chosen] == pytest.approx(100 / top.critical_speed.margin, rel=1e-3)
+    pv_check = next(k for k in top.checks if k.name == "pv")
+    assert pv_used["y"][chosen] == pytest.approx(pv_check.utilization * 100, rel=1e-3)
+    band, marker = figure["layout"]["shapes"]
+    assert band["type"] == "rect" and band["x1"] == pytest.approx(
+        min(top.max_self_locking_lead_mm, max(torque["x"])), rel=1e-4
+    )
+    assert limit["y"] == [100, 100] and limit["yaxis"] == "y2" and marker["x0"] == top.lead_mm
+    assert (
+        figure["layout"]["yaxis2"]["type"] == "log"
+        and 100.0 in figure["layout"]["yaxis2"]["tickvals"]
+    )
 
 
 def test_torque_bars_stack_to_the_total(result: SelectOut) -> None:
@@ -111,7 +194,17 @@ def test_nothing_passing_charts_the_nearest_rejected(catalog: Catalog) -> None:
     candidates, passing = chart_candidates(result)
     assert not passing and candidates == result.rejected
     figures = result_figures(result, METRIC)
-    names = [t["name"] for t in figures["critical_speed"]["data"][:-2]]
-    assert names == [c["id"] for c in plain(result)["rejected"][:TOP]]
+    groups = curve_members(figures["critical_speed"], plain(result)["rejected"])
+    assert groups[0][0] == plain(result)["rejected"][0]["id"]
+    assert 1 < len(groups) <= TOP
+    assert list(result_figures(result, METRIC)) == ["critical_speed", "pv", "torque"]
+    assert result.summary.most_excluding_check == "critical_speed"
     assert "shapes" not in figures["torque"]["layout"]
     assert math.isfinite(figures["pv"]["data"][-1]["y"][0])
+
+
+def test_nothing_passing_puts_the_most_excluding_checks_chart_first(catalog: Catalog) -> None:
+    result = run_selection(ApplicationIn(load_n=10000, speed_mm_s=500, length_mm=3000), catalog)
+    summary = result.summary.model_copy(update={"most_excluding_check": "pv"})
+    by_pv = result.model_copy(update={"summary": summary})
+    assert list(result_figures(by_pv, METRIC, catalog))[:3] == ["pv", "critical_speed", "torque"]

@@ -10,6 +10,7 @@ import math
 import re
 from pathlib import Path
 from typing import Any
+from urllib.parse import parse_qsl
 
 import pytest
 from bs4 import BeautifulSoup
@@ -17,7 +18,7 @@ from fastapi.testclient import TestClient
 from httpx import Response
 
 from app.catalog import Catalog
-from app.fields import BY_PAGE
+from app.fields import BY_API, BY_PAGE
 from app.schemas import SelectOut
 from app.web.export import results_csv, safe_cell
 
@@ -51,7 +52,7 @@ def test_empty_selector_is_a_form_with_a_label_on_every_field(client: TestClient
     page = soup(client.get("/"))
     form = page.select_one("form#selector[action='/'][method='get']")
     assert form is not None and form.select_one("button[type=submit]")
-    assert form["hx-get"] == "/" and "delay:400ms" in str(form["hx-trigger"])
+    assert form["hx-get"] == "/" and "delay:150ms" in str(form["hx-trigger"])
     for name in ("load", "lead", "speed", "length"):
         assert page.select_one(f"#f-{name}[name={name}]")
     for field in form.select("input:not([type=hidden]), select"):
@@ -86,7 +87,12 @@ def test_full_page_renders_results_table_charts_and_counts(client: TestClient) -
     assert page.select_one(".count-passed").text == str(counts["passed"])
     assert page.select_one(".count-rejected").text == str(counts["rejected"])
     charts = page.select("script[type='application/json'][data-chart]")
-    assert [c["id"] for c in charts] == ["fig-critical_speed", "fig-pv", "fig-torque"]
+    assert [c["id"] for c in charts] == [
+        "fig-critical_speed",
+        "fig-pv",
+        "fig-torque",
+        "fig-lead_sweep",
+    ]
     for script in charts:
         assert page.select_one(f"#{script['data-chart']}.chart")
         assert json.loads(script.string)["data"]
@@ -192,7 +198,8 @@ def test_table_values_follow_the_display_units(client: TestClient) -> None:
 def test_switching_units_converts_the_typed_values(client: TestClient) -> None:
     params = {**AXIS, "force_unit": "lbf", "from_force_unit": "N", "from_length_unit": "mm"}
     page = soup(client.get("/", params=params))
-    assert page.select_one("#f-load")["value"] == "22.4809"
+    assert page.select_one("#f-load")["value"] == "22.48"
+    assert page.select_one("input[name=typed_load]")["value"] == "100|N"
     assert page.select_one("#f-length")["value"] == "500"
     assert page.select_one("input[name=from_force_unit]")["value"] == "lbf"
     assert candidate_ids(page) == candidate_ids(soup(client.get("/", params=AXIS)))
@@ -202,7 +209,7 @@ def test_switching_units_swaps_converted_fields_out_of_band(client: TestClient) 
     params = {**AXIS, "length_unit": "in", "from_length_unit": "mm"}
     response = client.get("/", params=params, headers=HX)
     page = soup(response)
-    assert page.select_one("#w-length[hx-swap-oob] #f-length")["value"] == "19.685"
+    assert page.select_one("#w-length[hx-swap-oob] #f-length")["value"] == "19.69"
     assert page.select_one("#w-speed[hx-swap-oob] label .unit").text == "in/s"
     entered = page.select_one("#entered-units[hx-swap-oob] input[name=from_length_unit]")
     assert entered["value"] == "in"
@@ -388,19 +395,63 @@ def test_rejected_are_grouped_by_failing_check_with_fixes(client: TestClient) ->
         assert item.select_one(".fix").text.startswith("Fix:")
 
 
-def test_no_passing_candidate_shows_the_summary_prominently(client: TestClient) -> None:
+def test_no_passing_candidate_lists_changes_with_apply_links(client: TestClient) -> None:
     params = {"load": "10000", "speed": "500", "length": "3000"}
     api = client.get(
         "/api/v1/select", params={"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000}
     ).json()
     page = soup(client.get("/", params=params))
     assert api["counts"]["passed"] == 0
-    assert page.select_one(".notice.no-pass .summary").text == api["summary"]["message"]
+    notice = page.select_one(".notice.no-pass[role=region]")
+    most = api["summary"]["most_excluding_check"]
+    label = next(k["label"] for k in api["rejected"][0]["checks"] if k["name"] == most)
+    assert notice.select_one(".verdict strong").text == label
+    assert most not in notice.text  # internal names never reach the reader
+    changes = notice.select("ul.input-changes li")
+    assert {li["data-field"] for li in changes} == {
+        BY_API[k].page for k in api["summary"]["input_change"]
+    }
+    for li in changes:
+        field = BY_API[
+            next(k for k in api["summary"]["input_change"] if BY_API[k].page == li["data-field"])
+        ]
+        target = api["summary"]["input_change"][field.api]
+        href = li.select_one("a.apply")["href"]
+        query = dict(parse_qsl(href.split("?", 1)[1]))
+        assert float(query[field.page]) <= target  # rounded down: the change still clears
+        assert float(query[field.page]) >= target * 0.99
+        unchanged = {k: v for k, v in params.items() if k != field.page}
+        assert {k: v for k, v in query.items() if k != field.page} == unchanged
+    best = api["rejected"][0]
+    failed = [k for k in best["checks"] if not k["passed"]]
+    items = notice.select("ul.failed-fixes li")
+    assert [li.strong.text for li in items] == [k["label"] + "." for k in failed]
+    assert items[0].text.endswith(failed[0]["fix"])
     assert not page.select("table.candidates")
     assert "nearest rejected" in page.select_one("#charts-heading").text
 
 
+def test_apply_all_makes_every_change_and_the_nearest_screw_passes(client: TestClient) -> None:
+    page = soup(client.get("/", params={"load": "3000", "speed": "500", "length": "3000"}))
+    href = page.select_one("a.apply-all")["href"]
+    nearest = page.select_one(".no-pass .verdict .cid").text
+    after = soup(client.get(href))
+    assert not after.select(".no-pass")
+    assert nearest in candidate_ids(after)
+
+
 # exports
+
+
+def test_csv_numbers_carry_ten_significant_figures_at_most(client: TestClient) -> None:
+    text = client.get("/export.csv", params={**AXIS, "length_unit": "in", "force_unit": "lbf"}).text
+    numbers = re.findall(r"(?<![\w.])-?\d+\.\d+(?:e-?\d+)?", text)
+    assert numbers
+    for number in numbers:
+        digits = number.lstrip("-").split("e")[0].replace(".", "").lstrip("0")
+        assert len(digits) <= 10, number
+    inputs = text.split("\r\n\r\n", 1)[0]
+    assert "accel,39.37007874,in/s²" in inputs  # 1000 mm/s², not 39.37007874015748
 
 
 def csv_candidates(text: str) -> list[dict[str, str]]:
@@ -421,7 +472,8 @@ def test_csv_export_has_a_row_per_candidate_in_display_units(client: TestClient)
     assert [r["rank"] for r in passed] == [str(i + 1) for i in range(len(passed))]
     assert len(rows) == len(api["candidates"]) + len(api["rejected"])
     total = float(passed[0]["torque_total [lb in]"])
-    assert math.isclose(total, api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617)
+    expected = api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617
+    assert math.isclose(total, expected, rel_tol=1e-9)  # written to 10 significant figures
 
 
 def test_csv_cells_cannot_start_a_formula(client: TestClient) -> None:
@@ -510,3 +562,52 @@ def test_plotly_css_matches_the_bundles_style_rules() -> None:
     ]
     css = (ROOT / "static/css/plotly-4.1.1.css").read_text()
     assert [line for line in css.splitlines() if "{" in line] == expected
+
+
+def test_fixes_and_proposals_follow_the_chosen_units(client: TestClient) -> None:
+    params = {"load": "674", "speed": "19.7", "length": "118", "force_unit": "lbf"}
+    page = soup(client.get("/", params={**params, "length_unit": "in"}))
+    notice = page.select_one(".notice.no-pass")
+    proposals = [p.text for p in notice.select(".proposed")]
+    api = client.get(
+        "/api/v1/select",
+        params={"load_n": 674 * 4.4482216152605, "speed_mm_s": 19.7 * 25.4,
+                "length_mm": 118 * 25.4},
+    ).json()  # fmt: skip
+    units = {"load_n": " lbf", "speed_mm_s": " in/s", "length_mm": " in"}
+    assert [p.rsplit(" ", 1)[1] for p in proposals] == [
+        units[name].strip() for name in api["summary"]["input_change"]
+    ]
+    fixes = notice.select_one("ul.failed-fixes").text
+    assert " in" in fixes and "lbf" in fixes and " mm" not in fixes and " N " not in fixes
+    assert "(lbf, in, in/s, N m)" in page.select_one(".footnote").text
+
+
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [
+        ("critical_speed_safety_factor", ("0.8 allows 80 %", "1 or below", "smaller is safer")),
+        ("buckling_safety_factor", ("0.5 allows half", "1 or below", "smaller is safer")),
+        ("torque_safety_factor", ("1.5 asks for 50 % reserve", "1 or more", "larger is safer")),
+    ],
+)
+def test_safety_factor_help_states_its_convention(
+    client: TestClient, name: str, words: tuple[str, ...]
+) -> None:
+    hint = soup(client.get("/")).select_one(f"#h-{name}").text
+    assert all(word in hint for word in words), hint
+
+
+def test_results_columns_say_what_they_mean_in_plain_words(client: TestClient) -> None:
+    page = soup(client.get("/", params=AXIS))
+    heads = {a.text: a["title"] for a in page.select("table.candidates thead abbr.col-help")}
+    assert "motor off" in heads["Holds the load?"]
+    assert "above 1× passes" in heads["Critical speed margin"]
+    table = page.select_one("table.candidates").text
+    assert "seed" not in table and "physics" not in table
+    api = api_select(client)
+    for body, c in zip(page.select("tbody.candidate"), api["candidates"], strict=True):
+        cell = body.select_one("td.backdrive").text
+        assert ("Self-locking" in cell) == c["self_locking"]
+        if not c["self_locking"]:
+            assert "brake ≥" in cell

@@ -32,6 +32,22 @@ def safe_cell(value: Any) -> Any:
     return value
 
 
+def tidy(value: Any) -> Any:
+    """A float to 10 significant figures, so unit conversions leave no binary noise
+    (0.7500000000000001 is written 0.75) and a spreadsheet still recomputes the inputs
+    exactly enough; other values as they are.
+
+    >>> tidy(0.7500000000000001), tidy(1.968503937007874), tidy(True), tidy(3), tidy(None)
+    (0.75, 1.968503937, True, 3, None)
+    """
+    return float(f"{value:.10g}") if isinstance(value, float) else value
+
+
+def cell(value: Any) -> Any:
+    """A value as the CSV writes it: numbers tidied, formula-like text quoted."""
+    return safe_cell(tidy(value))
+
+
 def _check(c: CandidateOut, name: str) -> CheckOut | None:
     return next((check for check in c.checks if check.name == name), None)
 
@@ -109,7 +125,7 @@ def results_csv(result: SelectOut, units: dict[str, str]) -> str:
     writer = csv.writer(out, lineterminator="\r\n")
     writer.writerow(["input", "value", "unit"])
     writer.writerows(
-        [list(map(safe_cell, row)) for row in _input_rows(result.inputs.model_dump(), units)]
+        [list(map(cell, row)) for row in _input_rows(result.inputs.model_dump(), units)]
     )
     writer.writerow([])
     writer.writerow(["status", "rank", *(name for name, _ in columns)])
@@ -117,5 +133,5 @@ def results_csv(result: SelectOut, units: dict[str, str]) -> str:
     for status, candidates in groups:
         for rank, c in enumerate(candidates, start=1):
             cells = [get(c) for _, get in columns]
-            writer.writerow([status, rank if status == "passed" else "", *map(safe_cell, cells)])
+            writer.writerow([status, rank if status == "passed" else "", *map(cell, cells)])
     return out.getvalue()

@@ -5,11 +5,17 @@ Each figure is ``{"data": [...], "layout": {...}}`` in the user's display units,
 the tests use to validate them.
 """
 
+import math
+from collections.abc import Callable, Iterable
+from dataclasses import replace
 from typing import Any
 
+from app.catalog import Catalog
 from app.core.formulas import critical_speed, pv
+from app.core.model import Application, Evaluation
+from app.core.selection import select
 from app.schemas import CandidateOut, SelectOut
-from app.units import Display, api_value
+from app.units import Display, api_value, sig
 
 #: Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
 PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
@@ -20,6 +26,11 @@ CURVE_POINTS = 41
 CRITICAL_SPAN = 5.0
 PV_SPAN = 10.0
 TOP = 5
+#: mantissas labelled on log axes within each decade.
+LOG_STEPS = (1.0, 2.0, 5.0)
+#: chart key -> the check whose failures it explains.
+CHART_CHECKS = {"critical_speed": "critical_speed", "pv": "pv", "torque": "torque"}
+CHART_KEYS = ("critical_speed", "pv", "torque", "lead_sweep")
 
 
 def _round(value: float) -> float:
@@ -32,10 +43,33 @@ def _span(centre: float, factor: float) -> list[float]:
     return [centre * factor ** (2 * i / steps - 1) for i in range(CURVE_POINTS)]
 
 
-def _axis(title: str, log: bool = False) -> dict[str, Any]:
+def log_ticks(values: Iterable[float]) -> tuple[list[float], list[str]]:
+    """Tick positions and labels for a log axis over ``values``: every decade and the 2 and
+    5 between, so a reader never has to count unlabelled gridlines.
+
+    >>> log_ticks([30.0, 700.0])
+    ([20.0, 50.0, 100.0, 200.0, 500.0, 1000.0], ['20', '50', '100', '200', '500', '1000'])
+    """
+    positive = [v for v in values if v > 0]
+    if not positive:
+        return [], []
+    low, high = min(positive), max(positive)
+    ticks = [
+        float(f"{step * 10.0**exponent:.6g}")
+        for exponent in range(math.floor(math.log10(low)) - 1, math.ceil(math.log10(high)) + 1)
+        for step in LOG_STEPS
+    ]
+    below = max((t for t in ticks if t <= low), default=ticks[0])
+    above = min((t for t in ticks if t >= high), default=ticks[-1])
+    shown = [t for t in ticks if below <= t <= above]
+    return shown, [sig(t, 3) for t in shown]
+
+
+def _axis(title: str, log: bool = False, values: Iterable[float] = ()) -> dict[str, Any]:
     axis: dict[str, Any] = {"title": {"text": title}, "automargin": True, "zeroline": False}
     if log:
-        axis.update(type="log", dtick=1, minor={"showgrid": True, "gridcolor": "#f0f0f0"})
+        tickvals, ticktext = log_ticks(values)
+        axis.update(type="log", tickvals=tickvals, ticktext=ticktext, gridcolor="#e6e6e6")
     return axis
 
 
@@ -43,11 +77,12 @@ def _layout(xaxis: dict[str, Any], yaxis: dict[str, Any], **extra: Any) -> dict[
     return {
         "xaxis": xaxis,
         "yaxis": yaxis,
-        "margin": {"l": 8, "r": 8, "t": 8, "b": 8},
+        "margin": {"l": 8, "r": 8, "t": 36, "b": 8},
         "legend": {
             "orientation": "h",
             "x": 0,
-            "y": 1.02,
+            "y": 0,
+            "yref": "container",
             "yanchor": "bottom",
             "traceorder": "normal",
         },
@@ -67,24 +102,80 @@ def chart_candidates(result: SelectOut) -> tuple[list[CandidateOut], bool]:
     return result.rejected, False
 
 
+def by_curve(
+    candidates: list[CandidateOut], key: Callable[[CandidateOut], float | None]
+) -> list[list[CandidateOut]]:
+    """The first TOP distinct curves among ``candidates``, each with the screws it holds:
+    screws of one size and nut share a curve, and draw it once under all their ids."""
+    groups: dict[float, list[CandidateOut]] = {}
+    for c in candidates:
+        value = key(c)
+        if value is None:
+            continue
+        rounded = _round(value)
+        if rounded in groups or len(groups) < TOP:
+            groups.setdefault(rounded, []).append(c)
+    return list(groups.values())
+
+
+def curve_name(group: list[CandidateOut]) -> str:
+    """Legend text of a shared curve: the series, then each screw's id after it.
+
+    The ids are kept whole when they do not start with the series.
+    """
+    series = group[0].series
+    rest = [c.id.removeprefix(series).lstrip("-") or c.id for c in group]
+    return (
+        f"{series}: {', '.join(rest)}"
+        if all(c.id.startswith(series) for c in group)
+        else (", ".join(c.id for c in group))
+    )
+
+
+def _operating_points(groups: list[list[CandidateOut]], x: float, d: Display) -> dict[str, Any]:
+    """One marker per distinct operating speed (screws of one lead share one), coloured as
+    its curve, with each screw's margin in the hover text."""
+    points: dict[tuple[int, float], list[CandidateOut]] = {}
+    for index, group in enumerate(groups):
+        for c in group:
+            points.setdefault((index, _round(c.rpm)), []).append(c)
+    texts = [
+        "<br>".join(f"{c.id}: margin {c.critical_speed.margin:.2f}×" for c in members)
+        for members in points.values()
+    ]
+    return {
+        "type": "scatter",
+        "mode": "markers",
+        "name": "Operating point",
+        "x": [x] * len(points),
+        "y": [rpm for _, rpm in points],
+        "text": texts,
+        "marker": {"size": 11, "symbol": "x", "color": [PALETTE[i] for i, _ in points]},
+        "hovertemplate": "%{text}<br>%{y:.4g} rpm at %{x:.4g} "
+        f"{d.label('length')}<extra>operating</extra>",
+    }
+
+
 def critical_speed_figure(
     candidates: list[CandidateOut], length_mm: float, d: Display
 ) -> dict[str, Any]:
-    """Allowed speed vs unsupported length (log-log) with the operating points.
+    """Allowed speed vs unsupported length (log-log), one line per distinct size, with the
+    operating points and their margins.
 
-    Each curve moves the candidate's allowed speed at the user's length to other lengths
-    with ``app.core.formulas.critical_speed.speed_at_length`` (n proportional to 1 / L^2).
+    Each curve moves the allowed speed at the user's length to other lengths with
+    ``app.core.formulas.critical_speed.speed_at_length`` (n proportional to 1 / L^2).
     """
     lengths_mm = _span(length_mm, CRITICAL_SPAN)
     x = [_round(d.value(length, "length")) for length in lengths_mm]
+    groups = by_curve(candidates, lambda c: c.critical_speed.allowed_rpm)
     data: list[dict[str, Any]] = []
-    for colour, c in zip(PALETTE, candidates[:TOP], strict=False):
-        allowed = c.critical_speed.allowed_rpm
+    for colour, group in zip(PALETTE, groups, strict=False):
+        allowed = group[0].critical_speed.allowed_rpm
         data.append(
             {
                 "type": "scatter",
                 "mode": "lines",
-                "name": c.id,
+                "name": curve_name(group),
                 "x": x,
                 "y": [
                     _round(critical_speed.speed_at_length(allowed, length_mm, length))
@@ -92,25 +183,11 @@ def critical_speed_figure(
                 ],
                 "line": {"color": colour, "width": 2},
                 "hovertemplate": f"%{{x:.4g}} {d.label('length')}<br>%{{y:.4g}} rpm"
-                f"<extra>{c.id} allowed</extra>",
+                f"<extra>{group[0].series} allowed</extra>",
             }
         )
-    shown = candidates[:TOP]
     user_x = _round(d.value(length_mm, "length"))
-    rpms = [_round(c.rpm) for c in shown]
-    data.append(
-        {
-            "type": "scatter",
-            "mode": "markers",
-            "name": "Operating point",
-            "x": [user_x] * len(shown),
-            "y": rpms,
-            "text": [c.id for c in shown],
-            "marker": {"size": 11, "symbol": "x", "color": list(PALETTE[: len(shown)])},
-            "hovertemplate": "%{text}<br>%{y:.4g} rpm at %{x:.4g} "
-            f"{d.label('length')}<extra>operating</extra>",
-        }
-    )
+    data.append(_operating_points(groups, user_x, d))
     curve_values = [y for trace in data for y in trace["y"]]
     data.append(
         {
@@ -126,8 +203,8 @@ def critical_speed_figure(
     return {
         "data": data,
         "layout": _layout(
-            _axis(f"Screw length between supports [{d.label('length')}]", log=True),
-            _axis("Screw speed [rpm]", log=True),
+            _axis(f"Screw length between supports [{d.label('length')}]", True, x),
+            _axis("Screw speed [rpm]", True, curve_values),
         ),
     }
 
@@ -135,7 +212,8 @@ def critical_speed_figure(
 def pv_figure(
     candidates: list[CandidateOut], speed_mm_s: float, load_n: float, d: Display
 ) -> dict[str, Any]:
-    """PV limit of each nut as the largest load vs linear speed (log-log), and the operating point.
+    """PV limit of each nut as the largest load vs linear speed (log-log), one line per
+    distinct limit, and the operating point.
 
     Each curve moves the PV-limited load at the user's speed to other speeds with
     ``app.core.formulas.pv.max_load_at_speed`` (F_max proportional to 1 / v).
@@ -143,13 +221,18 @@ def pv_figure(
     speeds = _span(speed_mm_s, PV_SPAN)
     x = [_round(d.value(v, "speed")) for v in speeds]
     data: list[dict[str, Any]] = []
-    limited = [(c, c.pv.max_load_n) for c in candidates[:TOP] if c.pv.max_load_n is not None]
-    for colour, (c, max_load) in zip(PALETTE, limited, strict=False):
+    for colour, group in zip(
+        PALETTE, by_curve(candidates, lambda c: c.pv.max_load_n), strict=False
+    ):
+        max_load = group[0].pv.max_load_n or 0.0
+        used = ", ".join(
+            f"{c.id} {c.pv.value_mpa_m_s / (c.pv.limit_mpa_m_s or 1):.0%}" for c in group
+        )
         data.append(
             {
                 "type": "scatter",
                 "mode": "lines",
-                "name": c.id,
+                "name": curve_name(group),
                 "x": x,
                 "y": [
                     _round(d.value(pv.max_load_at_speed(max_load, speed_mm_s, v), "force"))
@@ -157,26 +240,28 @@ def pv_figure(
                 ],
                 "line": {"color": colour, "width": 2},
                 "hovertemplate": f"%{{x:.4g}} {d.label('speed')}<br>max %{{y:.4g}} "
-                f"{d.label('force')}<extra>{c.id} PV limit</extra>",
+                f"{d.label('force')}<extra>PV used: {used}</extra>",
             }
         )
+    point_y = _round(d.value(load_n, "force"))
     data.append(
         {
             "type": "scatter",
             "mode": "markers",
             "name": "Operating point",
             "x": [_round(d.value(speed_mm_s, "speed"))],
-            "y": [_round(d.value(load_n, "force"))],
+            "y": [point_y],
             "marker": {"size": 12, "symbol": "x", "color": "#000000"},
             "hovertemplate": f"%{{x:.4g}} {d.label('speed')}<br>%{{y:.4g}} "
             f"{d.label('force')}<extra>operating</extra>",
         }
     )
+    loads = [y for trace in data for y in trace["y"]]
     return {
         "data": data,
         "layout": _layout(
-            _axis(f"Linear speed [{d.label('speed')}]", log=True),
-            _axis(f"Axial load [{d.label('force')}]", log=True),
+            _axis(f"Linear speed [{d.label('speed')}]", True, x),
+            _axis(f"Axial load [{d.label('force')}]", True, loads),
         ),
     }
 
@@ -221,17 +306,185 @@ def torque_figure(
     }
 
 
-def result_figures(result: SelectOut, units: dict[str, str]) -> dict[str, dict[str, Any]]:
-    """The three charts of a result, keyed 'critical_speed', 'pv' and 'torque'."""
-    candidates, _ = chart_candidates(result)
+def lead_sweep(app: Application, top: CandidateOut, catalog: Catalog) -> list[Evaluation]:
+    """The top screw's size and nut with every lead the catalog offers, evaluated by the
+    core for this application (any lead), shortest lead first."""
+    series = catalog.series.get(top.series)
+    if series is None:
+        return []
+    screws = [
+        s for s in series.screws if s.coated == top.coated and s.anti_backlash == top.anti_backlash
+    ]
+    selection = select(replace(app, lead_m=None, limit=100), screws)
+    return sorted((*selection.candidates, *selection.rejected), key=lambda e: e.screw.lead_m)
+
+
+def _utilisation(ev: Evaluation, name: str) -> float | None:
+    """A check's utilisation in per cent, None when it does not apply."""
+    check = next((c for c in ev.checks if c.name == name), None)
+    if check is None or check.utilization is None:
+        return None
+    return _round(check.utilization * 100)
+
+
+def _sweep_shapes(leads: list[float], locking: float, chosen: float) -> list[dict[str, Any]]:
+    """The self-locking band (leads up to the longest that self-locks) and the chosen lead."""
+    shapes: list[dict[str, Any]] = [
+        {
+            "type": "line",
+            "xref": "x",
+            "x0": chosen,
+            "x1": chosen,
+            "yref": "paper",
+            "y0": 0,
+            "y1": 1,
+            "line": {"color": "#000000", "dash": "dash", "width": 1},
+        },
+    ]
+    if locking >= leads[0]:
+        shapes.insert(
+            0,
+            {
+                "type": "rect",
+                "xref": "x",
+                "x0": leads[0],
+                "x1": min(locking, leads[-1]),
+                "yref": "paper",
+                "y0": 0,
+                "y1": 1,
+                "fillcolor": "#009E73",
+                "opacity": 0.12,
+                "line": {"width": 0},
+                "layer": "below",
+            },
+        )
+    return shapes
+
+
+def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) -> dict[str, Any]:
+    """Torque, speed against the critical speed and PV use across the leads of one size:
+    the trade-off that picks the lead. Torque on the left axis, the two shares of their
+    limits (per cent) on the right; the self-locking band shaded, the chosen lead dashed."""
+    leads = [_round(d.value(ev.screw.lead_m * 1e3, "length")) for ev in sweep]
+    unit = d.label("torque")
+    series: list[tuple[str, str, list[float | None], str, str]] = [
+        (
+            "Drive torque",
+            "y",
+            [_round(d.value(ev.torque.total_nm, "torque")) for ev in sweep],
+            "#0072B2",
+            f"%{{y:.4g}} {unit}",
+        ),
+        (
+            "Speed, % of allowed",
+            "y2",
+            [_round(ev.rpm / ev.critical_speed.allowed_rpm * 100) for ev in sweep],
+            "#D55E00",
+            "%{y:.3g} %",
+        ),
+        ("PV, % of limit", "y2", [_utilisation(ev, "pv") for ev in sweep], "#009E73", "%{y:.3g} %"),
+    ]
+    data = [
+        {
+            "type": "scatter",
+            "mode": "lines+markers",
+            "name": name,
+            "x": leads,
+            "y": y,
+            "yaxis": axis,
+            "line": {"color": colour, "width": 2},
+            "hovertemplate": f"lead %{{x:.4g}} {d.label('length')}<br>{hover}<extra>{name}</extra>",
+        }
+        for name, axis, y, colour, hover in series
+        if any(v is not None for v in y)
+    ]
+    locking = _round(d.value(top.max_self_locking_lead_mm, "length"))
+    chosen = _round(d.value(top.lead_mm, "length"))
+    layout = _layout(
+        _axis(f"Lead of {top.series} [{d.label('length')}]"), _axis(f"Drive torque [{unit}]")
+    )
+    shares = [float(v) for _, axis, y, _, _ in series if axis == "y2" for v in y if v]
+    data.append(
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "name": "Limit, 100 %",
+            "x": [leads[0], leads[-1]],
+            "y": [100, 100],
+            "yaxis": "y2",
+            "line": {"color": "#A00000", "dash": "dot", "width": 1},
+            "hoverinfo": "skip",
+        }
+    )
+    layout["yaxis2"] = {
+        **_axis("Share of limit [%]", True, [*shares, 100.0]),
+        "overlaying": "y",
+        "side": "right",
+    }
+    layout["shapes"] = _sweep_shapes(leads, locking, chosen)
+    layout["annotations"] = [
+        {
+            "x": chosen,
+            "xref": "x",
+            "y": 1,
+            "yref": "paper",
+            "yanchor": "bottom",
+            "text": f"chosen {sig(chosen)}",
+            "showarrow": False,
+            "font": {"size": 11},
+        },
+    ]
+    if locking >= leads[0]:
+        layout["annotations"].append(
+            {
+                "x": leads[0],
+                "xref": "x",
+                "y": 1,
+                "yref": "paper",
+                "yanchor": "top",
+                "xanchor": "left",
+                "text": "self-locking",
+                "showarrow": False,
+                "font": {"size": 11, "color": "#0a5c2a"},
+            }
+        )
+    return {"data": data, "layout": layout}
+
+
+def chart_order(keys: Iterable[str], first_check: str | None) -> list[str]:
+    """Chart keys in page order; the chart of ``first_check`` first when it has one.
+
+    >>> chart_order(["critical_speed", "pv", "torque"], "pv")
+    ['pv', 'critical_speed', 'torque']
+    """
+    ordered = [k for k in CHART_KEYS if k in keys]
+    lead = next((k for k, check in CHART_CHECKS.items() if check == first_check), None)
+    if lead in ordered:
+        ordered.remove(lead)
+        ordered.insert(0, lead)
+    return ordered
+
+
+def result_figures(
+    result: SelectOut, units: dict[str, str], catalog: Catalog | None = None
+) -> dict[str, dict[str, Any]]:
+    """The charts of a result, keyed 'critical_speed', 'pv', 'torque' and, given the
+    catalog, 'lead_sweep'. When nothing passes, the chart of the check that excludes the
+    most screws comes first."""
+    candidates, passing = chart_candidates(result)
     if not candidates:
         return {}
     d = Display(units)
     app = result.inputs.to_core()
     length_mm, _ = api_value(app.length_m, "length")
     speed_mm_s, _ = api_value(app.speed_m_s, "speed")
-    return {
+    figures = {
         "critical_speed": critical_speed_figure(candidates, length_mm, d),
         "pv": pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d),
         "torque": torque_figure(candidates, app.max_torque_nm, d),
     }
+    sweep = lead_sweep(app, candidates[0], catalog) if catalog is not None else []
+    if len(sweep) > 1:
+        figures["lead_sweep"] = lead_sweep_figure(sweep, candidates[0], d)
+    first = None if passing else result.summary.most_excluding_check
+    return {key: figures[key] for key in chart_order(figures, first)}

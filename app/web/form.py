@@ -36,6 +36,8 @@ UNIT_QUANTITIES: dict[str, tuple[Quantity, ...]] = {
 }
 #: prefix of the hidden fields that record which units the form's numbers are in.
 ENTERED_PREFIX = "from_"
+#: prefix of the hidden fields that keep a number as typed, with its unit ('50|N').
+TYPED_PREFIX = "typed_"
 #: pydantic error type -> (message template, context key of the bound).
 BOUND_MESSAGES = {
     "greater_than": ("Must be more than {bound}.", "gt"),
@@ -135,27 +137,80 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
     return [field.page for field in FIELDS if field.quantity in changed]
 
 
+def unit_key(quantity: Quantity) -> str:
+    """The display-unit key that sets a quantity's unit ('length_unit' for a speed)."""
+    return next(key for key, qs in UNIT_QUANTITIES.items() if quantity in qs)
+
+
+def sig_figures(text: str) -> int:
+    """Significant digits written in a number text (leading zeros and exponent left out).
+
+    >>> sig_figures("50"), sig_figures("0.0125"), sig_figures("1.50e3")
+    (2, 3, 3)
+    """
+    mantissa = text.strip().lower().split("e")[0].lstrip("+-")
+    return len(mantissa.replace(".", "").lstrip("0")) or 1
+
+
+def convert_text(text: str, quantity: Quantity, source: str, target: str) -> str:
+    """A typed number re-expressed from unit ``source`` into unit ``target`` with one figure
+    more than was typed (at least 4, at most 6): '50' N is '11.24' lbf, not '11.2404'."""
+    number, _ = read_number(text)
+    if number is None:
+        return text
+    key = unit_key(quantity)
+    api = to_api(number, quantity, {**DEFAULT_UNITS, key: source})
+    digits = min(max(sig_figures(text) + 1, 4), 6)
+    return f"{from_api(api, quantity, {**DEFAULT_UNITS, key: target}):.{digits}g}"
+
+
+def read_typed(record: str) -> tuple[str, str] | None:
+    """(text, unit) of a ``typed_*`` record 'text|unit'; None when there is none."""
+    text, bar, unit = record.partition("|")
+    return (text, unit) if bar and text and unit else None
+
+
+def typed_origin(raw: str, record: str, quantity: Quantity, entered_unit: str) -> tuple[str, str]:
+    """(text, unit) the shown number came from: the recorded typed text while the field
+    still shows its conversion, else the field's own text in the unit it is shown in."""
+    typed = read_typed(record)
+    if typed is not None and convert_text(typed[0], quantity, typed[1], entered_unit) == raw:
+        return typed
+    return raw, entered_unit
+
+
 def convert_entered(
     params: Mapping[str, str], entered: dict[str, str], units: dict[str, str]
-) -> dict[str, str]:
-    """The page fields with every number re-expressed from ``entered`` into ``units``.
+) -> tuple[dict[str, str], dict[str, str]]:
+    """The page fields with every number re-expressed from ``entered`` into ``units``, and
+    the typed record ('text|unit') of each field now shown in another unit than typed.
 
-    Text that is not a number (or 'any' lead) is kept as typed.
+    Numbers convert from what was typed, not from the last conversion, and switching back
+    to the typed unit restores the typed text exactly. Text that is not a number (or
+    'any' lead) is kept as typed.
 
-    >>> convert_entered({"load": "100", "lead": "any"}, {"force_unit": "N", "length_unit": "mm",
-    ...     "torque_unit": "N_m"}, {"force_unit": "lbf", "length_unit": "in", "torque_unit": "N_m"})
-    {'load': '22.4809', 'lead': 'any'}
+    >>> units = {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "N_m"}
+    >>> convert_entered({"load": "50", "lead": "any"}, DEFAULT_UNITS, units)
+    ({'load': '11.24', 'lead': 'any'}, {'load': '50|N'})
+    >>> convert_entered({"load": "11.24", "typed_load": "50|N"}, units, DEFAULT_UNITS)[0]
+    {'load': '50', 'typed_load': '50|N'}
     """
-    values = dict(params)
+    values, typed = dict(params), {}
     for field in FIELDS:
         raw = params.get(field.page, "").strip()
-        if field.quantity is None or entered == units or not raw:
+        if field.quantity is None or not raw or read_number(raw)[0] is None:
             continue
-        number, _ = read_number(raw)
-        if number is not None:
-            api_value = to_api(number, field.quantity, entered)
-            values[field.page] = f"{from_api(api_value, field.quantity, units):.6g}"
-    return values
+        key = unit_key(field.quantity)
+        if entered[key] == units[key]:
+            continue
+        record = params.get(TYPED_PREFIX + field.page, "")
+        text, unit = typed_origin(raw, record, field.quantity, entered[key])
+        if unit == units[key]:
+            values[field.page] = text
+        else:
+            values[field.page] = convert_text(text, field.quantity, unit, units[key])
+            typed[field.page] = f"{text}|{unit}"
+    return values, typed
 
 
 def value_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:

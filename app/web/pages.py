@@ -16,6 +16,7 @@ from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.server.headers import is_htmx_fragment
 from app.service import run_evaluation, run_selection
 from app.units import TORQUE_LABELS, Display, catalog_value
+from app.web.advice import check_label, no_pass_advice
 from app.web.export import results_csv
 from app.web.figures import chart_candidates, result_figures
 from app.web.form import (
@@ -30,6 +31,7 @@ from app.web.form import (
     share_query,
     summary_rows,
 )
+from app.web.guide import BY_COLUMN
 from app.web.templating import templates
 
 router = APIRouter(include_in_schema=False)
@@ -40,17 +42,22 @@ MAIN_FIELDS = tuple(field.page for field in FIELDS if field.group == GROUPS[0])
 EXPORT_NAME = "leadscrew-selection"
 
 
-def _form(params: Mapping[str, str]) -> tuple[dict[str, str], dict[str, str], list[str]]:
-    """(display units, form values in those units, fields whose units just changed)."""
+def _form(
+    params: Mapping[str, str],
+) -> tuple[dict[str, str], dict[str, str], list[str], dict[str, str]]:
+    """(display units, form values in those units, fields whose units just changed, the
+    typed text and unit of each field shown converted)."""
     units = parse_units(params)
     entered = entered_units(params, units)
-    return units, convert_entered(params, entered, units), converted_fields(entered, units)
+    values, typed = convert_entered(params, entered, units)
+    return units, values, converted_fields(entered, units), typed
 
 
 def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query, run the selection when the form was filled in."""
-    units, values, converted = _form(params)
+    units, values, converted, typed = _form(params)
     context: dict[str, Any] = {
+        "typed": typed,
         "units": units,
         "values": values,
         "errors": {},
@@ -70,6 +77,9 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         "advanced_open": advanced_open,
         "unit_choices": UNIT_CHOICES,
         "torque_labels": TORQUE_LABELS,
+        "check_label": check_label,
+        "columns": BY_COLUMN,
+        "rank_text": "",
     }
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
@@ -79,9 +89,14 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["result"] = result
         context["query"] = share_query(inputs, units)
         context["share_url"] = "/?" + context["query"]
-        context["figures"] = result_figures(result, units)
+        context["figures"] = result_figures(result, units, catalog)
         context["charting_passed"] = chart_candidates(result)[1]
         context["rejected_groups"] = rejected_groups(result.rejected)
+        context["rank_text"] = (
+            BY_PAGE["rank_by"].choice_text(str(inputs.model_dump()["rank_by"])).lower()
+        )
+        if not result.candidates:
+            context["advice"] = no_pass_advice(result, units)
     return context
 
 
@@ -90,7 +105,7 @@ def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
     groups: dict[str, dict[str, Any]] = {}
     for c in rejected:
         name = c.governing_check or "other"
-        label = next((k.label for k in c.checks if k.name == name), name)
+        label = next((k.label for k in c.checks if k.name == name), check_label(name))
         groups.setdefault(name, {"name": name, "label": label, "candidates": []})
         groups[name]["candidates"].append(c)
     return list(groups.values())
@@ -136,7 +151,7 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
 
 def _link_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
-    units, values, _ = _form(params)
+    units, values, _, _ = _form(params)
     inputs, errors = parse_inputs(values, units)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]

@@ -1,10 +1,11 @@
 /*
  * The page's one script. Draws every chart from its <script type="application/json">
- * figure (on load and after each htmx swap), keeps aria-invalid in step with the inline
+ * figure (on load and after each htmx swap), loading Plotly only when the first chart
+ * arrives so the empty form stays light, keeps aria-invalid in step with the inline
  * error messages that htmx swaps out of band, copies share links, lets a click on a result
  * row open its detail (whose body htmx loads on first opening), marks a detail busy while
- * it loads, and sizes the charts for the printed report. Nothing here is needed for the
- * form to work.
+ * it loads, keeps the last results (dimmed) while a field is being retyped, and sizes
+ * the charts and dates the printed report. Nothing here is needed for the form to work.
  */
 (function () {
   "use strict";
@@ -14,12 +15,33 @@
     displaylogo: false,
     modeBarButtonsToRemove: ["select2d", "lasso2d", "sendChartToCloud"],
   };
+  var plotlyLoading = false;
 
-  function drawCharts(root) {
-    if (!window.Plotly) {
+  // Plotly is large: fetch it (a 'self' script, as the CSP allows) once charts need it
+  function loadPlotly() {
+    var results = document.getElementById("results");
+    if (plotlyLoading || !results || !results.dataset.plotly) {
       return;
     }
-    root.querySelectorAll('script[type="application/json"][data-chart]').forEach(function (script) {
+    plotlyLoading = true;
+    var script = document.createElement("script");
+    script.src = results.dataset.plotly;
+    script.addEventListener("load", function () {
+      drawCharts(document);
+    });
+    document.head.appendChild(script);
+  }
+
+  function drawCharts(root) {
+    var figures = root.querySelectorAll('script[type="application/json"][data-chart]');
+    if (!figures.length) {
+      return;
+    }
+    if (!window.Plotly) {
+      loadPlotly();
+      return;
+    }
+    figures.forEach(function (script) {
       var target = document.getElementById(script.dataset.chart);
       if (!target || target.classList.contains("js-plotly-plot")) {
         return;
@@ -131,7 +153,36 @@
     document.querySelectorAll(".chart.js-plotly-plot").forEach(action);
   }
 
+  function dateReport() {
+    var today = new Date().toISOString().slice(0, 10);
+    document.querySelectorAll("time.print-date").forEach(function (time) {
+      time.textContent = today;
+      time.setAttribute("datetime", today);
+    });
+    document.querySelectorAll("a.print-link").forEach(function (link) {
+      link.textContent = link.href;
+    });
+  }
+
+  // a field being retyped answers with errors only: keep the last results, dimmed
+  function keepStaleResults(event) {
+    var target = event.detail.target;
+    if (!target || target.id !== "results") {
+      return;
+    }
+    var keep = event.detail.serverResponse.indexOf("data-keep-results") !== -1;
+    var note = target.querySelector(".stale-note");
+    if (keep && note) {
+      event.detail.swapOverride = "none";
+      target.classList.add("stale");
+      note.hidden = false;
+    } else {
+      target.classList.remove("stale");
+    }
+  }
+
   function sizeForPrint() {
+    dateReport();
     eachChart(function (chart) {
       window.Plotly.relayout(chart, PRINT_LAYOUT);
     });
@@ -152,6 +203,7 @@
   document.addEventListener("DOMContentLoaded", refresh);
   document.addEventListener("htmx:afterSettle", refresh);
   document.addEventListener("click", onClick);
+  document.addEventListener("htmx:beforeSwap", keepStaleResults);
   document.addEventListener("htmx:beforeRequest", markLoading);
   document.addEventListener("htmx:afterRequest", markLoading);
   window.addEventListener("beforeprint", sizeForPrint);

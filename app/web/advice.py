@@ -1,0 +1,144 @@
+"""What to change when nothing passes, as a short list the engineer can act on.
+
+The core's summary names the input change that would admit the nearest rejected screw
+(``summary.input_change``, API names and units) and each failed check's fix. The page shows
+each change with an Apply link (the share link of the same inputs with that change made)
+and the nearest screw's failed checks by their labels, so no internal name reaches the
+reader.
+"""
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from app.core.checks import BY_NAME
+from app.fields import BY_API
+from app.schemas import ApplicationIn, CandidateOut, SelectOut
+from app.units import sig, to_api
+from app.web.form import share_query
+
+#: significant figures of a proposed value, rounded towards the side that still clears.
+PROPOSAL_DIGITS = 3
+
+
+@dataclass(frozen=True, slots=True)
+class Change:
+    """One proposed input change: what the reader sees and the link that makes it."""
+
+    field: str
+    label: str
+    verb: str
+    value: str
+    unit: str
+    href: str
+
+
+@dataclass(frozen=True, slots=True)
+class FailedCheck:
+    """A failed check of the nearest screw: its label and what would clear it."""
+
+    name: str
+    label: str
+    fix: str
+
+
+def check_label(name: str | None) -> str:
+    """The reader's name of a check ('Critical speed'); unknown names made readable."""
+    if name is None:
+        return ""
+    check = BY_NAME.get(name)
+    return check.label if check is not None else name.replace("_", " ")
+
+
+def round_towards(value: float, lower: bool, digits: int = PROPOSAL_DIGITS) -> float:
+    """``value`` to ``digits`` significant figures, rounded down when the change must lower
+    the input and up when it must raise it, so the rounded value still clears the check.
+
+    >>> round_towards(1677.74, True), round_towards(154.019, True), round_towards(25.61, False)
+    (1670.0, 154.0, 25.7)
+    """
+    if value <= 0:
+        return value
+    scale = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
+    steps = math.floor(value / scale) if lower else math.ceil(value / scale)
+    return float(f"{steps * scale:.{digits}g}")
+
+
+def _link(inputs: ApplicationIn, changes: dict[str, float], units: dict[str, str]) -> str:
+    """The page link of ``inputs`` with ``changes`` (API names, API units) made."""
+    changed = ApplicationIn.model_validate({**inputs.model_dump(), **changes})
+    return "/?" + share_query(changed, units)
+
+
+def _proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, str]) -> float:
+    """The proposed API value: the target rounded in display units towards the safe side."""
+    field = BY_API[api]
+    current = float(getattr(inputs, api))
+    shown = field.display_value(target, units)
+    rounded = round_towards(float(shown), target < current)
+    return to_api(rounded, field.quantity, units) if field.quantity else rounded
+
+
+def input_changes(result: SelectOut, units: dict[str, str]) -> list[Change]:
+    """Each input change of the summary, with a link that makes that one change."""
+    changes = []
+    for api, target in result.summary.input_change.items():
+        field = BY_API.get(api)
+        if field is None:
+            continue
+        value = _proposal(result.inputs, api, target, units)
+        lower = value < float(getattr(result.inputs, api))
+        changes.append(
+            Change(
+                field=field.page,
+                label=field.label,
+                verb="Reduce" if lower else "Raise",
+                value=sig(float(field.display_value(value, units))),
+                unit=field.display_unit(units),
+                href=_link(result.inputs, {api: value}, units),
+            )
+        )
+    return changes
+
+
+def all_changes_link(result: SelectOut, units: dict[str, str]) -> str | None:
+    """One link making every proposed change at once; None unless there are several."""
+    proposals = {
+        api: _proposal(result.inputs, api, target, units)
+        for api, target in result.summary.input_change.items()
+        if api in BY_API
+    }
+    return _link(result.inputs, proposals, units) if len(proposals) > 1 else None
+
+
+def failed_checks(candidate: CandidateOut | None) -> list[FailedCheck]:
+    """The failed checks of ``candidate`` by label, each with its fix."""
+    if candidate is None:
+        return []
+    return [
+        FailedCheck(name=k.name, label=k.label, fix=k.fix or "")
+        for k in candidate.checks
+        if not k.passed
+    ]
+
+
+def nearest(result: SelectOut) -> CandidateOut | None:
+    """The rejected screw closest to passing, the one the summary's changes are for."""
+    best = result.summary.best_rejected_id
+    return next((c for c in result.rejected if c.id == best), None) or (
+        result.rejected[0] if result.rejected else None
+    )
+
+
+def no_pass_advice(result: SelectOut, units: dict[str, str]) -> dict[str, Any]:
+    """Everything the 'nothing passes' notice shows."""
+    best = nearest(result)
+    most = result.summary.most_excluding_check
+    return {
+        "most_label": check_label(most),
+        "most_count": result.counts.failed_by_check.get(most, 0) if most else 0,
+        "nearest": best,
+        "changes": input_changes(result, units),
+        "apply_all": all_changes_link(result, units),
+        "failed": failed_checks(best),
+    }

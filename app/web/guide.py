@@ -1,0 +1,158 @@
+"""The guide (/guide) and the validation page (/validation): how to read the results.
+
+The guide iterates the check registry, so a new check appears here with its label,
+description, formula and source; the ranking text follows ``app.core.selection``'s rank
+order. The column help is shared with the results table's headers.
+"""
+
+from dataclasses import dataclass
+
+from fastapi import APIRouter, Request
+from fastapi.responses import HTMLResponse, Response
+
+from app.core.checks import REGISTRY
+from app.fields import BY_API
+from app.units import sig
+from app.web.templating import templates
+from app.web.validation import EXAMPLES, TOLERANCE
+
+router = APIRouter(include_in_schema=False)
+
+
+@dataclass(frozen=True, slots=True)
+class Column:
+    """One results column: its heading and what its number means."""
+
+    key: str
+    heading: str
+    help: str
+
+
+COLUMNS = (
+    Column(
+        "screw",
+        "Screw",
+        "Catalog id of the screw and nut; the tags say whether the "
+        "screw is TFE coated and whether the nut takes up the play (anti-backlash).",
+    ),
+    Column("od", "OD", "Outer (major) diameter of the thread."),
+    Column("lead", "Lead", "Travel of the nut per turn of the screw."),
+    Column("rpm", "Speed", "Screw speed that gives your linear speed: 60 × speed / lead."),
+    Column(
+        "torque",
+        "Torque",
+        "Motor torque while accelerating: inertia + drag + load, before the torque safety factor.",
+    ),
+    Column(
+        "breakdown",
+        "Breakdown",
+        "The torque's parts: accelerating the screw and the "
+        "moving mass, the nut's drag, and pushing the load through the thread.",
+    ),
+    Column(
+        "efficiency",
+        "Efficiency",
+        "Share of the motor's work that reaches the load "
+        "(running friction, thread flank angle included).",
+    ),
+    Column(
+        "holds",
+        "Holds the load?",
+        "Whether the load alone can turn the screw with the "
+        "motor off. “Self-locking” holds it; “back-drives” needs a brake of at least "
+        "the torque shown.",
+    ),
+    Column(
+        "critical",
+        "Critical speed margin",
+        "Allowed speed (whirling speed × your "
+        "critical-speed factor) over the operating speed; above 1× passes.",
+    ),
+    Column(
+        "pv",
+        "PV used",
+        "Nut contact pressure × sliding speed as a share of the nut "
+        "material's PV limit; up to 100 % passes.",
+    ),
+    Column(
+        "life",
+        "Life",
+        "Expected wear life: years at your stroke and cycles per day, else million cm of travel.",
+    ),
+    Column("governing", "Governing", "The check closest to its limit for this screw."),
+)
+BY_COLUMN = {c.key: c for c in COLUMNS}
+
+PROVENANCE = (
+    ("seed", "Printed in the leadscrew maker's catalog the app's data started from."),
+    ("handbook", "From an engineering handbook or textbook, such as a material's modulus."),
+    ("standard", "From a published standard, such as a thread form's dimensions."),
+    ("vendor", "From another maker's catalog or data sheet."),
+    ("derived", "Computed from other catalog values by the rule its source states."),
+    ("assumed", "Not published: an engineering assumption to confirm with the maker."),
+    ("user", "From a catalog file supplied at start-up, or from your own input."),
+)
+
+RANKING = {
+    "torque": "lowest drive torque first; equal torques: the larger margin first.",
+    "margin": "the screw furthest from every limit first (lowest worst utilisation); "
+    "equal margins: the lower torque first.",
+    "life": "longest rated life first, screws without a life rating last; equal lives: "
+    "the lower torque first.",
+    "size": "smallest outer diameter first; equal sizes: the lower torque first.",
+}
+
+CHARTS = (
+    (
+        "Critical speed",
+        "Each line is one screw size: the speed it may turn at against the "
+        "length between supports (log scales). A cross is a screw's operating speed at your "
+        "length; it passes while the cross lies below its line. The hover text gives the margin.",
+    ),
+    (
+        "PV limit",
+        "Each line is the largest load a nut's PV limit allows at each linear speed. "
+        "Your load and speed (the cross) must lie below a nut's line for it to pass.",
+    ),
+    (
+        "Torque breakdown",
+        "Stacked bars of the running torque per screw; the dashed line is "
+        "your motor's maximum torque when you give one.",
+    ),
+    (
+        "Lead sweep",
+        "The top screw's size with every lead the catalog offers: drive torque, "
+        "speed as a share of the allowed critical speed, and PV used. The shaded band holds "
+        "the leads that still self-lock; the ringed points are the chosen lead.",
+    ),
+)
+
+
+@router.get("/guide", response_class=HTMLResponse)
+async def guide(request: Request) -> Response:
+    """What each check, provenance kind, ranking order and chart means."""
+    rank_texts = {c.value: c.text for c in BY_API["rank_by"].choices}
+    context = {
+        "checks": REGISTRY,
+        "provenance": PROVENANCE,
+        "ranking": [(key, rank_texts[key], text) for key, text in RANKING.items()],
+        "columns": COLUMNS,
+        "charts": CHARTS,
+    }
+    return templates.TemplateResponse(request, "guide.html", context)
+
+
+@router.get("/validation", response_class=HTMLResponse)
+async def validation(request: Request) -> Response:
+    """Every published worked example beside the app's value, computed now."""
+    rows = [
+        {
+            "e": e,
+            "value": sig(e.value),
+            "ratio": f"{e.ratio:.4f}",
+            "within": abs(e.ratio - 1) <= TOLERANCE,
+        }
+        for e in EXAMPLES
+    ]
+    context = {"rows": rows, "tolerance": f"{TOLERANCE:.0%}"}
+    return templates.TemplateResponse(request, "validation.html", context)

@@ -1,0 +1,140 @@
+"""Published worked examples against the calculation core: the /validation page's table.
+
+Each example names its source, its inputs and the published value, and computes the app's
+value live by calling the core's formula functions, so the page always shows what the
+running code gives. ``tests/test_validation.py`` iterates this same list and holds every
+ratio within ``TOLERANCE``: the page and the test cannot drift apart.
+"""
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from app.core.formulas import buckling, efficiency, geometry, pv, torque
+from app.core.formulas import critical_speed as cs
+
+#: largest relative difference from a published value the app may show.
+TOLERANCE = 0.01
+IN = 0.0254
+LBF = 4.4482216152605
+PSI = 6894.757293168
+FT_PER_MIN = 0.00508
+STEEL_E, STEEL_RHO = 206e9, 7850.0
+SQUARE = 1.0
+
+
+@dataclass(frozen=True, slots=True)
+class Example:
+    """One published result: where it is printed, what goes in, what comes out."""
+
+    topic: str
+    source: str
+    inputs: str
+    published: float
+    unit: str
+    compute: Callable[[], float]
+
+    @property
+    def value(self) -> float:
+        """The app's value, computed now by the core."""
+        return self.compute()
+
+    @property
+    def ratio(self) -> float:
+        """App value over published value: 1 is exact agreement."""
+        return self.value / self.published
+
+
+def _shigley_thread_torque() -> float:
+    """Shigley ex. 8-1 raising torque of the thread alone (the core has no collar)."""
+    d_m = geometry.pitch_diameter(0.032, 0.028)
+    lead = geometry.lead_from_pitch(0.004, 2)
+    eta = efficiency.forward_efficiency(geometry.tan_lead_angle(lead, d_m), 0.08, SQUARE)
+    return torque.load_torque(6400.0, lead, eta)
+
+
+def _shigley_lowering_torque() -> float:
+    """Shigley ex. 8-1 lowering torque of the thread: minus the physical holding torque."""
+    lead = 0.008
+    eta_b = efficiency.backdrive_efficiency(geometry.tan_lead_angle(lead, 0.030), 0.08, SQUARE)
+    return -efficiency.holding_torque(6400.0, lead, eta_b)
+
+
+def _shigley_overall_efficiency() -> float:
+    """Shigley ex. 8-1 overall efficiency: the core's thread torque plus the printed collar
+    torque F f_c d_c / 2, which the core does not model."""
+    collar = 6400.0 * 0.08 * 0.040 / 2
+    return 6400.0 * 0.008 / (2 * math.pi * (_shigley_thread_torque() + collar))
+
+
+def _bnb_pv() -> float:
+    """bnb-industries bushing PV in psi ft/min, through the core's pressure and speed."""
+    d, length = 0.625 * IN, (1 + 1 / 32) * IN
+    p = pv.contact_pressure(35 * LBF, d * length)
+    v = pv.surface_speed(120.0, geometry.helix_travel(0.0, d))
+    return p * v / (PSI * FT_PER_MIN)
+
+
+def _euler(e_pa: float, d_or_i: float, length_m: float, fixity: str, round_d: bool) -> float:
+    i_m4 = buckling.second_moment_round(d_or_i) if round_d else d_or_i
+    return buckling.euler_critical_load(e_pa, i_m4, length_m, fixity)
+
+
+SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Example 8-1"
+MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
+NOOK = "Nook Industries, Acme and lead screw assembly application selection example"
+
+# fmt: off
+EXAMPLES: tuple[Example, ...] = (
+    Example("Critical speed", "Thomson, Screw critical speed (maximum RPM) calculation",
+            "steel, root 1 in, 100 in, simple–simple", 476.0, "rpm",
+            lambda: cs.critical_speed_rpm(1 * IN, 100 * IN, STEEL_E, STEEL_RHO, "simple-simple")),
+    Example("Allowed speed", f"{MISUMI}, 5-1 Critical Speed, p. 1677",
+            "root 12.5 mm, 790 mm, fixed–supported, factor 0.8", 3024.0, "rpm",
+            lambda: cs.allowed_speed_rpm(
+                cs.critical_speed_rpm(0.0125, 0.790, STEEL_E, 7800.0, "fixed-simple"), 0.8)),
+    Example("Euler buckling", "Engineering ToolBox, Euler's Column Formula",
+            "aluminium E 69 GPa, I 241 cm⁴, 5 m, fixed–fixed", 263e3, "N",
+            lambda: _euler(69e9, 241e-8, 5.0, "fixed-fixed", False)),
+    Example("Euler buckling", "engineeringprep.com problem 410, Column",
+            "E 10 GPa, I 400 cm⁴, 5 m, fixed–fixed", 63e3, "N",
+            lambda: _euler(10e9, 400e-8, 5.0, "fixed-fixed", False)),
+    Example("Allowed axial load", f"{MISUMI}, 4. Allowable Axial Load, p. 1676",
+            "root 12.5 mm, 820 mm, fixed–supported, factor 0.5", 3630.0, "N",
+            lambda: buckling.allowed_buckling_load(
+                _euler(STEEL_E, 0.0125, 0.820, "fixed-simple", True), 0.5)),
+    Example("Allowed axial load", "Makishinko screw jacks, E-19, example JA050",
+            "root 31.5 mm, 1000 mm, fixed–free, factor 0.25", 6135.0, "N",
+            lambda: buckling.allowed_buckling_load(
+                _euler(STEEL_E, 0.0315, 1.0, "fixed-free", True), 0.25)),
+    Example("Raising torque (thread)", SHIGLEY,
+            "square, d 32 mm, p 4 mm, double start, f 0.08, F 6.4 kN", 15.94, "N m",
+            _shigley_thread_torque),
+    Example("Lowering torque (thread)", SHIGLEY,
+            "square, d_m 30 mm, lead 8 mm, f 0.08, F 6.4 kN", -0.466, "N m",
+            _shigley_lowering_torque),
+    Example("Overall efficiency", SHIGLEY,
+            "as above, with the printed collar torque 10.24 N m", 0.311, "",
+            _shigley_overall_efficiency),
+    Example("Lead angle", SHIGLEY, "lead 8 mm, d_m 30 mm", 4.852, "°",
+            lambda: math.degrees(geometry.lead_angle(0.008, 0.030))),
+    Example("Torque to move a load", "engineeringprep.com problem 516, Power Screw Torque",
+            "20 kN, lead 10 mm, efficiency 70 %", 45.5, "N m",
+            lambda: torque.load_torque(20_000.0, 0.01, 0.70)),
+    Example("Square-thread efficiency", "Square-thread spot value (tan λ = (L/d_p)/π)",
+            "L/d_p 0.5, friction 0.09", 0.630, "",
+            lambda: efficiency.square_thread_efficiency(0.5 / math.pi, 0.09)),
+    Example("Square-thread efficiency", "Square-thread spot value (tan λ = (L/d_p)/π)",
+            "L/d_p 1.0, friction 0.15", 0.647, "",
+            lambda: efficiency.square_thread_efficiency(1.0 / math.pi, 0.15)),
+    Example("PV", "bnb-industries, Bearing Technical Information, Measuring Operating PV",
+            "shaft 5/8 in, bearing 1-1/32 in, 35 lb, 120 rpm", 1066.2, "psi ft/min",
+            _bnb_pv),
+    Example("Average travel rate", f"{NOOK}, steps 2–3",
+            "36 in in 10 s = 3.6 in/s, 1 in lead (rpm = in/min)", 216.0, "in/min",
+            lambda: geometry.screw_speed_rpm(36 * IN / 10.0, 1 * IN)),
+    Example("Peak travel rate", f"{NOOK}, steps 2–3",
+            "triangular profile, peak 2 × 3.6 in/s, 1 in lead", 432.0, "in/min",
+            lambda: geometry.screw_speed_rpm(2 * 36 * IN / 10.0, 1 * IN)),
+)
+# fmt: on
