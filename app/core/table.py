@@ -11,7 +11,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.formulas import efficiency, geometry, limits
+from app.core.formulas import bearing, efficiency, geometry, limits
 from app.core.model import ScrewSpec
 
 Array = NDArray[np.float64]
@@ -71,6 +71,15 @@ class CandidateTable:
     max_self_locking_lead_m: Array
     traverse_limit_m_s: Array
     traverse_extrapolated: Mask
+    pitch_m: Array
+    flank_pitch_diameter_m: Array
+    flank_height_m: Array
+    nut_length_m: Array
+    max_pressure_pa: Array
+    nut_pv_limit_pa_m_s: Array
+    max_sliding_speed_m_s: Array
+    bearing_area_m2: Array
+    flank_helix_travel_m: Array
 
     @classmethod
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
@@ -89,6 +98,8 @@ class CandidateTable:
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
         traverse, extrapolated = _bands(screws)
+        pitch, d2, h1 = col("pitch_m"), col("flank_pitch_diameter_m"), col("flank_height_m")
+        nut_length = col("nut_length_m")
         return cls(
             screws=screws,
             lead_m=lead,
@@ -125,6 +136,15 @@ class CandidateTable:
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
             traverse_limit_m_s=traverse,
             traverse_extrapolated=extrapolated,
+            pitch_m=pitch,
+            flank_pitch_diameter_m=d2,
+            flank_height_m=h1,
+            nut_length_m=nut_length,
+            max_pressure_pa=col("max_pressure_pa"),
+            nut_pv_limit_pa_m_s=col("nut_pv_limit_pa_m_s"),
+            max_sliding_speed_m_s=col("max_sliding_speed_m_s"),
+            bearing_area_m2=bearing.engaged_flank_area(nut_length, pitch, d2, h1),
+            flank_helix_travel_m=geometry.helix_travel(lead, d2),
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":
