@@ -64,7 +64,9 @@ class InputField:
     Literal type of a choice field and ``texts`` the display text of each of its values;
     a yes-no field with ``texts`` for "true" and "false" is shown as a two-way choice. A
     ``drawn`` choice is shown as radio buttons, each with a drawing of its value
-    ("fixed-free": left end, right end).
+    ("fixed-free": left end, right end). A ``text`` field is one id or name (``none_word``
+    meaning none); a ``list`` field is several, a list in JSON, a repeated query parameter,
+    or comma-separated text on the page and in share links.
     """
 
     api: str
