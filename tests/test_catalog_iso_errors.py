@@ -24,6 +24,7 @@ anti_backlash = false
 coated = false
 oil_compatible = { value = true, provenance = "handbook", source = "oiled" }
 friction_dynamic = { value = 0.13, range = [0.10, 0.16], @H }
+friction_static = { value = 0.16, @H }
 bearing_pressure_mpa_by_speed_m_s = { value = [[0.05, 11.0], [0.25, 1.0]], @H }
 
 [defaults]
@@ -31,7 +32,6 @@ type = { value = "plain", provenance = "handbook", source = "plain nut" }
 nut_variants = { value = ["bronze"], provenance = "handbook", source = "x" }
 screw_material = { value = "x-steel", provenance = "handbook", source = "x" }
 nut_material = { value = "bronze", provenance = "handbook", source = "x" }
-friction_static = { value = 0.16, provenance = "assumed", range = [0.13, 0.2], source = "x" }
 drag_torque_nm = { min = 0.0, max = 0.0, provenance = "assumed", source = "x" }
 backlash_mm = { min = 0.05, max = 0.3, provenance = "assumed", source = "x" }
 nut_length_to_d = { value = 2.0, range = [1.5, 2.5], provenance = "assumed", source = "x" }
@@ -152,6 +152,15 @@ def test_the_minimal_family_loads(tmp_path: Path) -> None:
             "nut_length_mm",
             "rated by contact pressure",
             id="bearing-limit-without-nut-length",
+        ),
+        pytest.param(
+            _changed(
+                'friction_static = { value = 0.16, provenance = "handbook", source = "S" }\n', ""
+            ),
+            "X10",
+            "friction_static",
+            "missing (here or in variant 'bronze')",
+            id="no-static-friction-anywhere",
         ),
         pytest.param(
             _changed("schema = 2\n", 'schema = 2\nprovenance = "handbook"\n'),

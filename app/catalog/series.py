@@ -255,7 +255,7 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
         "screw_expansion": material.expansion_per_k,
         "thread_half_angle": family.half_angle_deg,
         "thread_form": family.thread_form,
-        "friction_static": _sourced(entry, "friction_static", ""),
+        **_optional(entry, {"friction_static": ("friction_static", "", 1.0)}),
         "drag_torque": Sourced(entry.range("drag_torque_nm"), "N m", entry.prov("drag_torque_nm")),
         "backlash": Sourced((low * MM, high * MM), "m", entry.prov("backlash_mm")),
         **({} if load is None else {"design_load": load}),
@@ -514,6 +514,17 @@ def _check_bearing(entry: Entry, fields: Mapping[str, Sourced], variants: list[V
         )
 
 
+def _check_static_friction(
+    entry: Entry, fields: Mapping[str, Sourced], variants: list[Variant]
+) -> None:
+    """Static friction comes from the series, or from every variant it offers."""
+    if "friction_static" in fields:
+        return
+    missing = [v.key for v in variants if "friction_static" not in v.fields]
+    if missing:
+        raise entry.fail("friction_static", f"missing (here or in variant '{missing[0]}')")
+
+
 def build_series(
     family: Family, sid: str, data: Mapping[str, Any], materials: Mapping[str, Material]
 ) -> Series:
@@ -527,6 +538,7 @@ def build_series(
         fields["traverse_speed"] = family.traverse
     variants = _variants(entry, family)
     _check_bearing(entry, fields, variants)
+    _check_static_friction(entry, fields, variants)
     for v in variants:
         fields.update({f"{name}_{v.field_suffix}": s for name, s in v.fields.items()})
     series = Series(
