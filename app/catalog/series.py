@@ -428,6 +428,24 @@ def _field(fields: Mapping[str, Sourced], variant: Variant, name: str) -> Any:
     return (variant.fields.get(name) or fields[name]).value
 
 
+def _nut_spec(
+    fields: Mapping[str, Sourced], variant: Variant, context: "_Context"
+) -> dict[str, Any]:
+    """The ScrewSpec values of the thread and the nut rating, and the range ends."""
+    bearing = variant.fields.get("bearing_pressure")
+    return {
+        "pitch_m": _value_or_none(fields, "pitch"),
+        "flank_pitch_diameter_m": _value_or_none(fields, "flank_pitch_diameter"),
+        "flank_height_m": _value_or_none(fields, "flank_height"),
+        "nut_length_m": _value_or_none(fields, "nut_length"),
+        "bearing_pressure_table": () if bearing is None else bearing.value,
+        "max_pressure_pa": _value_or_none(variant.fields, "max_pressure"),
+        "nut_pv_limit_pa_m_s": _value_or_none(variant.fields, "bearing_pv_limit"),
+        "max_sliding_speed_m_s": _value_or_none(variant.fields, "max_sliding_speed"),
+        "assumption_ends": _ends(context.ends, variant),
+    }
+
+
 def _screw(
     family: Family, series: Series, variant: Variant, lead_m: float, context: "_Context"
 ) -> ScrewSpec:
@@ -444,10 +462,8 @@ def _screw(
     temperature = variant.fields.get("temperature_range") or fields.get("temperature_range")
     t_min, t_max = (None, None) if temperature is None else temperature.value
     od, rd = fields["outer_diameter"].value, fields["root_diameter"].value
-    pitch = _value_or_none(fields, "pitch")
-    bearing = variant.fields.get("bearing_pressure")
     return ScrewSpec(
-        id=family.screw_id(series.id, lead_m, od, variant.id_part, pitch),
+        id=family.screw_id(series.id, lead_m, od, variant.id_part, _value_or_none(fields, "pitch")),
         series_id=series.id,
         series_name=series.name,
         anti_backlash=family.anti_backlash_by_type[series.type],
@@ -483,15 +499,7 @@ def _screw(
         variant=variant.key,
         traverse_bands=() if family.traverse is None else family.traverse.value,
         provenance=prov,
-        pitch_m=pitch,
-        flank_pitch_diameter_m=_value_or_none(fields, "flank_pitch_diameter"),
-        flank_height_m=_value_or_none(fields, "flank_height"),
-        nut_length_m=_value_or_none(fields, "nut_length"),
-        bearing_pressure_table=() if bearing is None else bearing.value,
-        max_pressure_pa=_value_or_none(variant.fields, "max_pressure"),
-        nut_pv_limit_pa_m_s=_value_or_none(variant.fields, "bearing_pv_limit"),
-        max_sliding_speed_m_s=_value_or_none(variant.fields, "max_sliding_speed"),
-        assumption_ends=_ends(context.ends, variant),
+        **_nut_spec(fields, variant, context),
     )
 
 

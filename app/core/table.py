@@ -32,6 +32,22 @@ def _bands(screws: Sequence[ScrewSpec]) -> tuple[Array, Mask]:
     return speeds, np.array([b is not None and b.extrapolated for b in found], dtype=bool)
 
 
+def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]:
+    """Thread and nut-rating columns (NaN where a family gives none): pitch, d2, H1, nut
+    length, the polymer limits, the engaged flank area (L / P) pi d2 H1 and the helix
+    of one turn at d2."""
+    names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
+    names += ("max_pressure_pa", "nut_pv_limit_pa_m_s", "max_sliding_speed_m_s")
+    out = {name: column([getattr(s, name) for s in screws]) for name in names}
+    d2 = out["flank_pitch_diameter_m"]
+    area = bearing.engaged_flank_area(
+        out["nut_length_m"], out["pitch_m"], d2, out["flank_height_m"]
+    )
+    out["bearing_area_m2"] = np.asarray(area, dtype=np.float64)
+    out["flank_helix_travel_m"] = np.asarray(geometry.helix_travel(lead_m, d2), dtype=np.float64)
+    return out
+
+
 @dataclass(frozen=True, slots=True)
 class CandidateTable:
     """One element per candidate: catalog values (SI) and axis-independent derived ones."""
@@ -98,8 +114,6 @@ class CandidateTable:
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
         traverse, extrapolated = _bands(screws)
-        pitch, d2, h1 = col("pitch_m"), col("flank_pitch_diameter_m"), col("flank_height_m")
-        nut_length = col("nut_length_m")
         return cls(
             screws=screws,
             lead_m=lead,
@@ -136,15 +150,7 @@ class CandidateTable:
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
             traverse_limit_m_s=traverse,
             traverse_extrapolated=extrapolated,
-            pitch_m=pitch,
-            flank_pitch_diameter_m=d2,
-            flank_height_m=h1,
-            nut_length_m=nut_length,
-            max_pressure_pa=col("max_pressure_pa"),
-            nut_pv_limit_pa_m_s=col("nut_pv_limit_pa_m_s"),
-            max_sliding_speed_m_s=col("max_sliding_speed_m_s"),
-            bearing_area_m2=bearing.engaged_flank_area(nut_length, pitch, d2, h1),
-            flank_helix_travel_m=geometry.helix_travel(lead, d2),
+            **_nut_columns(screws, lead),
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":
