@@ -25,7 +25,7 @@ from typing import Any, Literal, get_args
 from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
 from app.units import Quantity, from_api, label
 
-Kind = Literal["number", "whole number", "yes-no", "choice"]
+Kind = Literal["number", "whole number", "yes-no", "choice", "text", "list"]
 Default = float | int | bool | str | None
 #: millimetres (and mm/s, mm/s²) to metres: the API's length unit to SI.
 MM = 1e-3
@@ -64,7 +64,9 @@ class InputField:
     Literal type of a choice field and ``texts`` the display text of each of its values;
     a yes-no field with ``texts`` for "true" and "false" is shown as a two-way choice. A
     ``drawn`` choice is shown as radio buttons, each with a drawing of its value
-    ("fixed-free": left end, right end).
+    ("fixed-free": left end, right end). A ``text`` field is one id or name (``none_word``
+    meaning none); a ``list`` field is several, a list in JSON, a repeated query parameter,
+    or comma-separated text on the page and in share links.
     """
 
     api: str
@@ -103,7 +105,16 @@ class InputField:
         return tuple(Choice(value, self.texts[value]) for value in values)
 
     def to_si(self, value: Any) -> Any:
-        """The API value in the core's SI unit: numbers times ``si_factor``, others as given."""
+        """The API value in the core's SI unit: numbers times ``si_factor``; a list as a
+        tuple (empty for none); text equal to ``none_word`` as None; others as given.
+
+        >>> BY_API["family"].to_si(["TR-C45", "B"]), BY_API["nut_material"].to_si("any")
+        (('TR-C45', 'B'), None)
+        """
+        if self.kind == "list":
+            return tuple(value or ())
+        if self.kind == "text" and self.none_word and value == self.none_word:
+            return None
         if self.kind != "number" or value is None:
             return value
         return float(value) * self.si_factor
@@ -298,6 +309,16 @@ FIELDS: tuple[InputField, ...] = (
         api="limit", page="limit", core="limit", label="Number of results",
         help="How many passing screws to list, 1–100", group="Results",
         kind="whole number", default=10, bounds=(1, 100),
+    ),
+    InputField(
+        api="family", page="family", core="families", label="Families",
+        help="Catalog family ids, comma-separated; empty for every family",
+        group="Nut and environment", kind="list",
+    ),
+    InputField(
+        api="nut_material", page="nut_material", core="nut_material", label="Nut material",
+        help="e.g. bronze, acetal or polyacetal; empty or “any” for every nut",
+        group="Nut and environment", kind="text", none_word="any",
     ),
 )
 # fmt: on

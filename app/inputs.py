@@ -19,11 +19,16 @@ import re
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import (
+    AfterValidator,
     BaseModel,
     BeforeValidator,
     ConfigDict,
     Field,
+    SerializationInfo,
+    SerializerFunctionWrapHandler,
     ValidationInfo,
+    WithJsonSchema,
+    WrapSerializer,
     create_model,
     field_validator,
 )
@@ -92,6 +97,52 @@ def describe(field: InputField) -> str:
     return f"{field.label}{unit}. {field.help}.{meanings}"
 
 
+#: Text inputs (ids, material names): letters, digits and a few separators, 1-60 long.
+TEXT_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9 ._()+/-]{0,59}$"
+#: At most this many items in a list input.
+MAX_ITEMS = 50
+
+
+def _split_text(value: Any) -> Any:
+    """A list input given as text ('TR-C45, B' from the page or a share link) as a list;
+    a repeated query parameter or a JSON list passes unchanged."""
+    if isinstance(value, str):
+        return [item.strip() for item in value.split(",") if item.strip()]
+    return value
+
+
+def _each_text(value: list[str]) -> list[str]:
+    """Every item of a list input is text of ``TEXT_PATTERN`` (the error names the field)."""
+    for item in value:
+        if not re.fullmatch(TEXT_PATTERN, item):
+            raise ValueError(f"'{item[:60]}' is not an id: letters, digits and . _ ( ) + / -")
+    return value
+
+
+def _list_out(
+    value: list[str], handler: SerializerFunctionWrapHandler, info: SerializationInfo
+) -> Any:
+    """A list input as JSON keeps its list; as Python values (share links, the printed
+    summary, CSV) it is the comma-separated text the page reads back."""
+    return handler(value) if info.mode_is_json() else ",".join(value)
+
+
+def text_type(field: InputField) -> Any:
+    """Text, or a list of texts, matching ``TEXT_PATTERN``; a list also as comma text."""
+    if field.kind == "text":
+        return Annotated[str, Field(pattern=TEXT_PATTERN, description=describe(field))]
+    schema = {"type": "array", "items": {"type": "string"}, "minItems": 1}
+    schema |= {"maxItems": MAX_ITEMS, "description": describe(field)}
+    return Annotated[
+        list[str],
+        BeforeValidator(_split_text),
+        AfterValidator(_each_text),
+        WrapSerializer(_list_out),
+        Field(min_length=1, max_length=MAX_ITEMS),
+        WithJsonSchema(schema),
+    ]
+
+
 def api_type(field: InputField) -> Any:
     """The pydantic type of one table field: bounded finite number, whole number, bool or
     the core's Literal; optional (``| None``) when it has no default and is not required."""
@@ -105,6 +156,8 @@ def api_type(field: InputField) -> Any:
         kind = Annotated[int, NotBool, WHOLE_NUMBER_TEXT, bounded]
     elif field.kind == "yes-no":
         kind = Annotated[bool, Field(description=describe(field))]
+    elif field.kind in ("text", "list"):
+        kind = text_type(field)
     else:
         kind = Annotated[field.options, Field(description=describe(field))]
     optional = not field.required and field.default is None

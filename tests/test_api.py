@@ -24,7 +24,7 @@ API = "/api/v1"
 BASE = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 CATALOG_SCREW = "ZBX8000-L10"
 SERIES_IDS = sorted(load_catalog().series)
-PROVENANCE_KINDS = {"seed", "handbook", "derived", "assumed", "user"}
+PROVENANCE_KINDS = {"seed", "standard", "handbook", "vendor", "derived", "assumed", "user"}
 
 #: Defaults of the optional application fields, as the issue states them.
 ISSUE_DEFAULTS: dict[str, Any] = {

@@ -43,7 +43,7 @@ def test_ids_follow_the_family_pattern(merged: Catalog) -> None:
     for series in ISO["series"]:
         d_mm = series["outer_diameter_mm"]["value"]
         leads = [x for x in series["leads_mm"]["value"] if x <= limit * d_mm]
-        expected = [f"Tr{d_mm:g}x{lead:g}-{v}" for lead in leads for v in variants]
+        expected = [f"Tr{d_mm:g}x{lead:g}-{v}-fixture" for lead in leads for v in variants]
         assert [s.id for s in merged.series[series["id"]].screws] == expected
 
 
@@ -83,11 +83,11 @@ def test_the_selection_ranks_the_family_beside_the_seed(merged: Catalog) -> None
             pv = app.speed_m_s / screw.lead_m * app.load_n / (3 * h_m)
             if pv <= _variant_value(series, screw.variant, "pv_limit_mpa_m_s") * 1e6:
                 expected.add(screw.id)
-    assert expected == {"Tr16x8-bronze"}
+    assert expected == {"Tr16x8-bronze-fixture"}
     ranked = select(app, merged.table).candidates
     assert {ev.screw.id for ev in ranked if ev.screw.family_id == "TR"} == expected
     assert {ev.screw.family_id for ev in ranked} >= SEED_FAMILIES
-    bronze = next(ev for ev in ranked if ev.screw.id == "Tr16x8-bronze")
+    bronze = next(ev for ev in ranked if ev.screw.id == "Tr16x8-bronze-fixture")
     assert bronze.traverse_speed_limit_m_s is None
 
 

@@ -82,10 +82,11 @@ def test_mass_inertia_torque_goes_through_the_efficiency(client: TestClient) -> 
 
 
 def test_a_vertical_lead_8_axis_passes_with_a_brake(client: TestClient) -> None:
-    """A Z axis: 2 kg, lead 8 mm, 20 mm/s. Without a brake nothing holds it; with 0.5 N m
-    holding torque the screws pass, each needing SF x max(seed, physics) holding torque."""
+    """A Z axis on the seed's screws: 2 kg, lead 8 mm, 20 mm/s. Without a brake none of them
+    holds it; with 0.5 N m holding torque they pass, each needing SF x max(seed, physics)."""
     axis = {"load_n": 5, "moving_mass_kg": 2, "orientation": "vertical", "lead_mm": 8,
-            "speed_mm_s": 20, "length_mm": 300, "accel_mm_s2": 500}  # fmt: skip
+            "speed_mm_s": 20, "length_mm": 300, "accel_mm_s2": 500,
+            "family": ["B", "ZBX", "KHD", "VHD"]}  # fmt: skip
     free = post(client, "select", axis)
     assert free["counts"]["passed"] == 0
     assert free["counts"]["failed_by_check"]["back_driving"] == free["counts"]["evaluated"]
@@ -171,9 +172,9 @@ def test_constant_speed_and_a_pure_inertia_axis_are_accepted(client: TestClient)
 
 def test_a_lead_with_no_screw_names_the_nearest_leads(client: TestClient) -> None:
     body = post(client, "select", {"load_n": 50, "speed_mm_s": 50, "length_mm": 500,
-                                   "lead_mm": 7})  # fmt: skip
+                                   "lead_mm": 7.5})  # fmt: skip
     assert body["counts"]["evaluated"] == 0
-    assert "Nearest leads: 6 mm and 8 mm" in body["summary"]["message"]
+    assert "Nearest leads: 7 mm and 8 mm" in body["summary"]["message"]
 
 
 # --- 6. advice versus limits ----------------------------------------------------------------
@@ -183,7 +184,7 @@ def test_traverse_speed_is_advice(client: TestClient) -> None:
     """200 mm/s on a 10 mm lead exceeds the seed's 100 mm/s band: a warning, not a reject,
     unless the user asks to reject on advice."""
     axis = {"load_n": 20, "speed_mm_s": 200, "length_mm": 300, "lead_mm": 10,
-            "coating": "none"}  # fmt: skip
+            "coating": "none", "family": ["B", "ZBX", "KHD", "VHD"]}  # fmt: skip
     warned = post(client, "select", axis)
     assert warned["counts"]["passed"] > 0
     c = warned["candidates"][0]
@@ -220,15 +221,15 @@ def test_fixes_stay_within_the_catalog(client: TestClient, catalog: Catalog) -> 
 
 
 def test_nothing_passes_lists_feasible_changes_as_data(client: TestClient) -> None:
-    """1500 N at 50 mm/s over 500 mm: no nut takes it; each offered change admits its screw."""
-    body = post(client, "select", {"load_n": 1500, "speed_mm_s": 50, "length_mm": 500})
+    """3000 N at 500 mm/s over 3 m: no screw takes it; each offered change admits its screw."""
+    axis = {"load_n": 3000, "speed_mm_s": 500, "length_mm": 3000}
+    body = post(client, "select", axis)
     assert body["counts"]["passed"] == 0
     changes = body["summary"]["changes"]
     assert changes
     for change in changes:
         again = post(client, "evaluate", {
-            "application": {"load_n": 1500, "speed_mm_s": 50, "length_mm": 500,
-                            **change["inputs"]},
+            "application": {**axis, **change["inputs"]},
             "screw": {"catalog_id": change["admits"]},
         })["candidate"]  # fmt: skip
         assert again["passed"], change

@@ -12,7 +12,7 @@ from typing import Any, TypeGuard
 from app.catalog.errors import CatalogError
 from app.core.model import Provenance
 
-PROVENANCE_KINDS = ("seed", "handbook", "derived", "assumed")
+PROVENANCE_KINDS = ("seed", "standard", "handbook", "vendor", "derived", "assumed", "user")
 
 
 def _is_number(value: object) -> TypeGuard[int | float]:
@@ -43,13 +43,44 @@ class Entry:
         if kind not in PROVENANCE_KINDS:
             raise self.fail(name, f"provenance must be one of {', '.join(PROVENANCE_KINDS)}")
         source = raw.get("source")
-        if kind != "seed" and not (isinstance(source, str) and source.strip()):
+        if kind not in ("seed", "user") and not (isinstance(source, str) and source.strip()):
             raise self.fail(name, f"a '{kind}' value needs a source or rule")
+        if "range" in raw:
+            self._check_range(name, raw)
         return raw
+
+    def _check_range(self, name: str, raw: Mapping[str, Any]) -> None:
+        """``range = [low, high]`` beside a number: finite, low <= value <= high."""
+        span, value = raw["range"], raw.get("value")
+        ok = (
+            isinstance(span, list)
+            and len(span) == 2
+            and all(_is_number(x) and math.isfinite(x) for x in span)
+        )
+        if not ok or not _is_number(value):
+            raise self.fail(name, "'range' must be [low, high], two numbers beside a number value")
+        if not span[0] <= value <= span[1]:
+            raise self.fail(
+                name, f"'value' {value:g} lies outside its range {span[0]:g}-{span[1]:g}"
+            )
+
+    def ends(self, name: str) -> tuple[float, float] | None:
+        """The (low, high) of a value given with a ``range``, else None."""
+        if not self.has(name) or "range" not in self.leaf(name):
+            return None
+        low, high = self.leaf(name)["range"]
+        return float(low), float(high)
+
+    def at(self, name: str, value: float) -> "Entry":
+        """The same entry with ``name``'s value replaced (to recompute what derives from it)."""
+        return Entry(
+            self.file, self.entry, {**self.data, name: {**self.leaf(name), "value": value}}
+        )
 
     def prov(self, name: str) -> Provenance:
         raw = self.leaf(name)
-        return Provenance(raw["provenance"], str(raw.get("source", "seed pages")))
+        default = "seed pages" if raw["provenance"] == "seed" else "the user's own value"
+        return Provenance(raw["provenance"], str(raw.get("source", default)))
 
     def number(
         self, name: str, key: str = "value", *, positive: bool = True, allow_zero: bool = False
@@ -120,6 +151,20 @@ class Entry:
                 raise self.fail(name, f"every item must be finite and > 0, got {item}")
             out.append(float(item))
         return out
+
+    def whole_numbers(self, name: str) -> list[int]:
+        """A non-empty list of distinct whole numbers >= 1 (thread starts)."""
+        value = self.leaf(name).get("value")
+        ok = (
+            isinstance(value, list)
+            and value
+            and all(isinstance(v, int) and not isinstance(v, bool) and v >= 1 for v in value)
+        )
+        if not ok or not isinstance(value, list):
+            raise self.fail(name, "'value' must be a non-empty list of whole numbers >= 1")
+        if len(set(value)) != len(value):
+            raise self.fail(name, "a number is listed twice")
+        return list(value)
 
     def plain_text(self, name: str, default: str | None = None) -> str:
         """A plain-text key (an id, a suffix): no provenance, it names rather than measures."""

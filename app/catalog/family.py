@@ -27,13 +27,32 @@ VARIANT_FIELDS = frozenset(
         "pv_limit_mpa_m_s",
         "max_length_mm",
         "life_million_cm",
+        "friction_static",
+        "nut_material",
+        "bearing_pressure_mpa_by_speed_m_s",
+        "max_pressure_mpa",
+        "bearing_pv_limit_mpa_m_s",
+        "max_sliding_speed_m_s",
+        "temperature_range_c",
     }
 )
 TRAVERSE_RULE = "traverse_speed"
 TRAVERSE_FIELD = "bands_lead_mm_speed_mm_s"
 RULES = {TRAVERSE_RULE: frozenset({TRAVERSE_FIELD})}
 #: Placeholders an id pattern may use; anything else (attribute walks included) is refused.
-ID_FIELDS = frozenset({"series", "lead_mm", "d_mm", "variant", "variant.key", "variant.suffix"})
+ID_FIELDS = frozenset(
+    {
+        "series",
+        "lead_mm",
+        "d_mm",
+        "pitch_mm",
+        "starts",
+        "multi_start",
+        "variant",
+        "variant.key",
+        "variant.suffix",
+    }
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -62,10 +81,22 @@ class Family:
     traverse: Sourced | None
     defaults: Mapping[str, Any]
 
-    def screw_id(self, series: str, lead_m: float, d_m: float, variant: IdVariant) -> str:
-        """A candidate's id from the family's pattern (seed: ``B4000-L2-TFE``)."""
+    def screw_id(
+        self, series: str, lead_m: float, d_m: float, variant: IdVariant, pitch_m: float | None
+    ) -> str:
+        """A candidate's id from the family's pattern (seed: ``B4000-L2-TFE``; ISO:
+        ``Tr8x8(P2)-acetal``, where ``{multi_start}`` is "(P2)" for a multi-start screw
+        and empty for a single start). Without a pitch, the pitch is the lead."""
+        pitch_mm = lead_m / MM if pitch_m is None else pitch_m / MM
+        starts = round(lead_m / MM / pitch_mm)
         return self.id_pattern.format(
-            series=series, lead_mm=lead_m / MM, d_mm=d_m / MM, variant=variant
+            series=series,
+            lead_mm=lead_m / MM,
+            d_mm=d_m / MM,
+            pitch_mm=pitch_mm,
+            starts=starts,
+            multi_start=f"(P{pitch_mm:g})" if starts > 1 else "",
+            variant=variant,
         )
 
 
@@ -77,7 +108,8 @@ def _id_pattern(entry: Entry) -> str:
         unknown = names - ID_FIELDS
         if unknown:
             raise entry.fail("id_pattern", f"unknown placeholder {sorted(unknown)[0]!r}")
-        pattern.format(series="S", lead_mm=1.0, d_mm=1.0, variant=IdVariant("v", "-V"))
+        sample = {"pitch_mm": 1.0, "starts": 1, "multi_start": ""}
+        pattern.format(series="S", lead_mm=1.0, d_mm=1.0, variant=IdVariant("v", "-V"), **sample)
     except (ValueError, IndexError) as exc:
         raise entry.fail("id_pattern", f"not a usable format string: {exc}") from exc
     if "lead_mm" not in names:

@@ -25,8 +25,8 @@ FIRST_LAYOUT = 1
 GROUP_FILE = "common.toml"
 NESTED_TABLES = ("variants", "nut_types", "rules", "materials")
 LAYER_TABLES = ("family", "defaults", *NESTED_TABLES)
-GROUP_KEYS = frozenset({"schema", "catalog_version", "group", *LAYER_TABLES})
-FAMILY_KEYS = frozenset({"schema", "series", *LAYER_TABLES})
+GROUP_KEYS = frozenset({"schema", "catalog_version", "group", "provenance", *LAYER_TABLES})
+FAMILY_KEYS = frozenset({"schema", "series", "provenance", *LAYER_TABLES})
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,6 +75,31 @@ def read_file(path: Path, digest: Any) -> CatalogFile:
         raise CatalogError(path.name, "-", "-", f"invalid TOML: {exc}") from exc
     digest.update(raw)
     return CatalogFile(path.name, path.parent, data)
+
+
+#: Keys that make a table a catalog value (a number, a min-max pair, a thread form).
+VALUE_KEYS = frozenset({"value", "min", "max", "half_angle_deg"})
+
+
+def _user_values(data: Any, file: str) -> Any:
+    """``data`` with provenance "user" on every value table that names none."""
+    if isinstance(data, list):
+        return [_user_values(item, file) for item in data]
+    if not isinstance(data, dict):
+        return data
+    out = {key: _user_values(value, file) for key, value in data.items()}
+    if VALUE_KEYS & out.keys() and "provenance" not in out:
+        out["provenance"] = "user"
+        out.setdefault("source", f"user catalog file {file}")
+    return out
+
+
+def as_user(data: Mapping[str, Any], file: str) -> dict[str, Any]:
+    """A user's file with provenance "user" on every value that names none, so a user's
+    own numbers show as theirs (catalog/README.md, "Your own catalog"). A value that
+    names its provenance keeps it; the file-wide ``provenance`` key itself is no value.
+    """
+    return {key: _user_values(value, file) for key, value in data.items() if key != "provenance"}
 
 
 def _entries(directory: Path) -> list[Path]:

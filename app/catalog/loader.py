@@ -12,6 +12,7 @@ from app.catalog.files import (
     FAMILY_KEYS,
     GROUP_FILE,
     CatalogFile,
+    as_user,
     catalog_dirs,
     check_shape,
     layer_of,
@@ -26,6 +27,7 @@ from app.catalog.series import build_series
 from app.core.table import CandidateTable
 from app.paths import resource_dir
 
+USER = "user"
 MATERIAL_FIELDS = frozenset(
     {"youngs_modulus_gpa", "density_kg_m3", "expansion_per_c", "yield_strength_mpa"}
 )
@@ -101,11 +103,23 @@ def _unique(series: Iterable[Series]) -> dict[str, Series]:
     return by_series
 
 
+def _file_default(source: CatalogFile) -> CatalogFile:
+    """A file with a top-level ``provenance = "user"``: every value in it that names no
+    provenance is the user's own (catalog/README.md, "Your own catalog")."""
+    if "provenance" not in source.data:
+        return source
+    if source.data["provenance"] != USER:
+        raise CatalogError(
+            source.name, "-", "provenance", f'a file-wide provenance must be "{USER}"'
+        )
+    return CatalogFile(source.name, source.directory, as_user(source.data, source.name))
+
+
 def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
     """Load the built-in catalog and any extra directories; raise CatalogError on any fault."""
     digest = hashlib.sha256()
     sources = [
-        read_file(path, digest)
+        _file_default(read_file(path, digest))
         for directory in catalog_dirs([resource_dir("catalog"), *map(Path, extra_dirs)])
         for path in toml_files(directory)
     ]

@@ -7,12 +7,13 @@ names its rule so a user can trace it.
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from itertools import pairwise
 from typing import Any
 
 from app.catalog.entry import Entry
 from app.catalog.family import Family, IdVariant
 from app.catalog.models import Material, Series, Sourced
-from app.core.formulas import geometry, pv
+from app.core.formulas import geometry, pv, trapezoidal
 from app.core.model import Provenance, ScrewSpec
 
 MM = 1e-3
@@ -44,8 +45,56 @@ SERIES_FIELDS = frozenset(
         "nut_expansion_per_c",
         "nut_tensile_strength_mpa",
         "outgassing_percent",
+        "pitch_mm",
+        "starts",
+        "nut_length_mm",
+        "nut_length_to_d",
     }
 )
+#: Half-angle of the ISO 2904 trapezoidal thread, the only form ``pitch_mm`` describes.
+ISO_HALF_ANGLE_DEG = 15.0
+#: Series values a range may be given for, whose ends change the candidate's numbers.
+RANGED_SERIES = (
+    "root_diameter_ratio",
+    "design_contact_pressure_mpa",
+    "design_load_factor",
+    "design_load_n",
+    "friction_static",
+    "nut_length_to_d",
+    "nut_length_mm",
+)
+#: Variant values a range may be given for: ScrewSpec field and factor to SI.
+RANGED_VARIANT = {
+    "friction_dynamic": ("friction_dynamic", 1.0),
+    "friction_static": ("friction_static", 1.0),
+    "pv_limit_mpa_m_s": ("pv_limit_pa_m_s", 1e6),
+    "max_pressure_mpa": ("max_pressure_pa", 1e6),
+    "bearing_pv_limit_mpa_m_s": ("nut_pv_limit_pa_m_s", 1e6),
+    "max_sliding_speed_m_s": ("max_sliding_speed_m_s", 1.0),
+    "max_length_mm": ("max_length_m", MM),
+}
+#: Variant values that rate the nut by its contact pressure (they need a nut length).
+BEARING_VALUES = {
+    "max_pressure": ("max_pressure_mpa", "Pa", 1e6),
+    "bearing_pv_limit": ("bearing_pv_limit_mpa_m_s", "Pa m/s", 1e6),
+    "max_sliding_speed": ("max_sliding_speed_m_s", "m/s", 1.0),
+}
+Ends = Mapping[str, tuple[Mapping[str, Any], Mapping[str, Any]]]
+#: What a candidate's provenance says for a nut rating or thread value its family gives
+#: none of (the check that reads it does not apply to the candidate).
+NOT_GIVEN = {
+    name: Provenance("derived", f"no {text} in the catalog for this screw and nut: not checked")
+    for name, text in (
+        ("bearing_pressure", "pressure-speed table"),
+        ("max_pressure", "maximum contact pressure"),
+        ("bearing_pv_limit", "PV limit over the engaged flanks"),
+        ("max_sliding_speed", "maximum sliding speed"),
+        ("nut_length", "nut length"),
+        ("pitch", "thread pitch"),
+        ("pv_limit", "three-thread PV limit"),
+        ("design_load", "design load"),
+    )
+}
 UNRATED_LIFE = Provenance(
     "derived",
     "no life rating in the catalog for this series (the seed lists N/A for the "
@@ -62,12 +111,32 @@ class Variant:
     field_suffix: str
     coated: bool
     fields: Mapping[str, Sourced]
+    ends: Ends
+
+
+def _iso_root(entry: Entry, od_m: float) -> Sourced:
+    """The root diameter d3 of an ISO 2904 screw from its pitch; its provenance kind is
+    the pitch's (a standard value, "standard")."""
+    if entry.has("root_diameter_mm"):
+        raise entry.fail("root_diameter_mm", "follows from pitch_mm (ISO 2904): leave it out")
+    pitch_m = entry.number("pitch_mm") * MM
+    try:
+        root_m = trapezoidal.minor_diameter(od_m, pitch_m)
+    except ValueError as exc:
+        raise entry.fail("pitch_mm", str(exc)) from exc
+    ac_mm = trapezoidal.crest_clearance(pitch_m) / MM
+    rule = f"ISO 2904: d3 = d - 2 (0.5 P + a_c), P = {pitch_m / MM:g} mm, a_c = {ac_mm:g} mm"
+    return Sourced(root_m, "m", Provenance(entry.prov("pitch_mm").kind, rule))
 
 
 def _diameters(entry: Entry) -> tuple[Sourced, Sourced]:
-    """Outer and root diameter; the root from ``root_diameter_ratio`` when not given."""
+    """Outer and root diameter; the root from the ISO pitch, else from
+    ``root_diameter_ratio`` when not given."""
     od_m = entry.number("outer_diameter_mm") * MM
-    if entry.has("root_diameter_mm"):
+    if entry.has("pitch_mm"):
+        rd_name = "pitch_mm"
+        root = _iso_root(entry, od_m)
+    elif entry.has("root_diameter_mm"):
         rd_name = "root_diameter_mm"
         root = Sourced(entry.number(rd_name) * MM, "m", entry.prov(rd_name))
     else:
@@ -80,10 +149,13 @@ def _diameters(entry: Entry) -> tuple[Sourced, Sourced]:
     return Sourced(od_m, "m", entry.prov("outer_diameter_mm")), root
 
 
-def _design_load(entry: Entry, d_p: float, h: float) -> Sourced:
-    """Given, or derived from contact pressure over the seed's three-thread area (rule 4)."""
+def _design_load(entry: Entry, d_p: float, h: float) -> Sourced | None:
+    """Given, or derived from contact pressure over the seed's three-thread area (rule 4);
+    None when the family rates its nuts otherwise (neither is given)."""
     if entry.has("design_load_n"):
         return Sourced(entry.number("design_load_n"), "N", entry.prov("design_load_n"))
+    if not entry.has("design_contact_pressure_mpa"):
+        return None
     pressure = entry.number("design_contact_pressure_mpa") * 1e6
     factor = entry.number("design_load_factor")
     load = factor * pressure * pv.contact_area(math.pi * d_p, h)
@@ -94,14 +166,63 @@ def _design_load(entry: Entry, d_p: float, h: float) -> Sourced:
     return Sourced(load, "N", Provenance("derived", rule))
 
 
-def _leads(entry: Entry, od_m: float) -> tuple[float, ...]:
-    """The offered leads up to ``max_lead_to_od`` x OD; a lead listed twice is an error."""
+def _listed_leads_mm(entry: Entry) -> list[float]:
+    """``leads_mm``, or the ``starts`` times ``pitch_mm`` of a standard thread."""
+    if entry.has("starts"):
+        if entry.has("leads_mm"):
+            raise entry.fail("leads_mm", "give either leads_mm or starts (with pitch_mm)")
+        return [n * entry.number("pitch_mm") for n in entry.whole_numbers("starts")]
     listed = entry.numbers("leads_mm")
     if len(set(listed)) != len(listed):
         repeated = next(x for x in listed if listed.count(x) > 1)
         raise entry.fail("leads_mm", f"lead {repeated:g} mm is listed twice")
+    return listed
+
+
+def _leads(entry: Entry, od_m: float) -> Sourced:
+    """The offered leads, up to ``max_lead_to_od`` x OD when the family limits them."""
+    listed = _listed_leads_mm(entry)
+    name = "starts" if entry.has("starts") else "leads_mm"
+    if not entry.has("max_lead_to_od"):
+        return Sourced(tuple(x * MM for x in listed), "m", entry.prov(name))
     max_lead_m = entry.number("max_lead_to_od") * od_m
-    return tuple(x * MM for x in listed if x * MM <= max_lead_m + 1e-12)
+    leads = tuple(x * MM for x in listed if x * MM <= max_lead_m + 1e-12)
+    return Sourced(leads, "m", entry.prov(name))
+
+
+def _inertia(entry: Entry, d2: Sourced | None, material: Material) -> Sourced:
+    """Inertia per length: given per inch; for a standard (ISO) screw that gives none, a
+    solid rod at its pitch diameter d2 (derived); otherwise required."""
+    if d2 is None or entry.has("inertia_kg_m2_per_in"):
+        inertia = entry.number("inertia_kg_m2_per_in") * INCHES_PER_M
+        return Sourced(inertia, "kg m2/m", entry.prov("inertia_kg_m2_per_in"))
+    inertia = trapezoidal.solid_rod_inertia_per_length(material.density_kg_m3.value, d2.value)
+    rule = f"solid rod rho pi d^4 / 32 at the pitch diameter d2 = {d2.value / MM:g} mm"
+    return Sourced(inertia, "kg m2/m", Provenance("derived", rule))
+
+
+def _thread_fields(entry: Entry, od_m: float, family: Family) -> dict[str, Sourced]:
+    """Pitch, pitch diameter d2, flank height H1 and nut length of an ISO 2904 screw."""
+    if not entry.has("pitch_mm"):
+        return {}
+    if not math.isclose(family.half_angle_deg.value, ISO_HALF_ANGLE_DEG):
+        raise entry.fail("pitch_mm", "pitch_mm describes an ISO 2904 thread (15 deg half-angle)")
+    pitch_m = entry.number("pitch_mm") * MM
+    rule = "ISO 2904 basic profile: d2 = d - 0.5 P, H1 = 0.5 P"
+    standard = Provenance(entry.prov("pitch_mm").kind, rule)
+    fields = {
+        "pitch": Sourced(pitch_m, "m", entry.prov("pitch_mm")),
+        "flank_pitch_diameter": Sourced(trapezoidal.pitch_diameter(od_m, pitch_m), "m", standard),
+        "flank_height": Sourced(trapezoidal.flank_height(pitch_m), "m", standard),
+    }
+    if entry.has("nut_length_mm"):
+        fields["nut_length"] = _sourced(entry, "nut_length_mm", "m", MM)
+    elif entry.has("nut_length_to_d"):
+        ratio = entry.number("nut_length_to_d")
+        rule = f"{ratio:g} x d: {entry.prov('nut_length_to_d').source}"
+        kind = entry.prov("nut_length_to_d").kind
+        fields["nut_length"] = Sourced(ratio * od_m, "m", Provenance(kind, rule))
+    return fields
 
 
 def _material(entry: Entry, materials: Mapping[str, Material]) -> Material:
@@ -119,24 +240,27 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
     """Size, thread, material, drag and load fields: what the core's geometry checks read."""
     od, rd = _diameters(entry)
     d_p = geometry.pitch_diameter(od.value, rd.value)
-    inertia = entry.number("inertia_kg_m2_per_in") * INCHES_PER_M
+    thread = _thread_fields(entry, od.value, family)
+    inertia = _inertia(entry, thread.get("flank_pitch_diameter"), material)
     low, high = entry.range("backlash_mm")
+    load = _design_load(entry, d_p, geometry.thread_depth(od.value, rd.value))
     return {
         "type": Sourced(entry.text("type", family.anti_backlash_by_type), "", entry.prov("type")),
         "outer_diameter": od,
         "root_diameter": rd,
         "pitch_diameter": Sourced(d_p, "m", Provenance("derived", "(OD + RD) / 2 (seed P_o)")),
-        "inertia_per_length": Sourced(inertia, "kg m2/m", entry.prov("inertia_kg_m2_per_in")),
+        "inertia_per_length": inertia,
         "youngs_modulus": material.youngs_modulus_pa,
         "density": material.density_kg_m3,
         "screw_expansion": material.expansion_per_k,
         "thread_half_angle": family.half_angle_deg,
         "thread_form": family.thread_form,
-        "friction_static": _sourced(entry, "friction_static", ""),
+        **_optional(entry, {"friction_static": ("friction_static", "", 1.0)}),
         "drag_torque": Sourced(entry.range("drag_torque_nm"), "N m", entry.prov("drag_torque_nm")),
         "backlash": Sourced((low * MM, high * MM), "m", entry.prov("backlash_mm")),
-        "design_load": _design_load(entry, d_p, geometry.thread_depth(od.value, rd.value)),
-        "leads": Sourced(_leads(entry, od.value), "m", entry.prov("leads_mm")),
+        **({} if load is None else {"design_load": load}),
+        "leads": _leads(entry, od.value),
+        **thread,
         **({"yield_strength": material.yield_strength_pa} if material.yield_strength_pa else {}),
     }
 
@@ -184,22 +308,64 @@ def _value_or_none(fields: Mapping[str, Sourced], name: str) -> Any:
     return fields[name].value if name in fields else None
 
 
-def _variant(entry: Entry, key: str, family_data: Mapping[str, Any]) -> Variant:
-    """One variant's values: the family's declaration under the series' own overrides."""
-    own = entry.data.get("variants", {}).get(key, {})
-    v = Entry(entry.file, f"{entry.entry}.variants.{key}", {**family_data, **own})
+def _bearing_table(v: Entry) -> Sourced:
+    """Allowable contact pressure by sliding speed, rows [speed m/s, pressure MPa] rising
+    in speed, to SI (m/s, Pa)."""
+    name = "bearing_pressure_mpa_by_speed_m_s"
+    rows = v.rows(name, 2)
+    speeds = [row[0] for row in rows]
+    if not rows or any(b <= a for a, b in pairwise(speeds)):
+        raise v.fail(name, "rows must rise in sliding speed, at least one row")
+    if any(row[1] <= 0 for row in rows):
+        raise v.fail(name, "every allowable pressure must be > 0")
+    table = tuple((speed, pressure * 1e6) for speed, pressure in rows)
+    return Sourced(table, "m/s, Pa", v.prov(name))
+
+
+def _variant_fields(v: Entry) -> dict[str, Sourced]:
+    """A variant's values in SI; the optional ones only when the data gives them."""
     fields = {
         "friction_dynamic": _sourced(v, "friction_dynamic", ""),
-        "pv_limit": _sourced(v, "pv_limit_mpa_m_s", "Pa m/s", 1e6),
         "oil_compatible": Sourced(v.flag("oil_compatible"), "", v.prov("oil_compatible")),
     }
+    if v.has("pv_limit_mpa_m_s"):
+        fields["pv_limit"] = _sourced(v, "pv_limit_mpa_m_s", "Pa m/s", 1e6)
     if v.has("max_length_mm"):
         fields["max_length"] = _sourced(v, "max_length_mm", "m", MM)
     if v.has("life_million_cm"):
         low, high = v.range("life_million_cm")
         fields["life"] = Sourced((low * 1e4, high * 1e4), "m", v.prov("life_million_cm"))
+    if v.has("friction_static"):
+        fields["friction_static"] = _sourced(v, "friction_static", "")
+    if v.has("nut_material"):
+        fields["nut_material"] = Sourced(v.text("nut_material"), "", v.prov("nut_material"))
+    if v.has("bearing_pressure_mpa_by_speed_m_s"):
+        fields["bearing_pressure"] = _bearing_table(v)
+    if v.has("temperature_range_c"):
+        t_range = v.range("temperature_range_c", positive=False)
+        fields["temperature_range"] = Sourced(t_range, "C", v.prov("temperature_range_c"))
+    fields.update(_optional(v, BEARING_VALUES))
+    return fields
+
+
+def _variant_ends(v: Entry) -> dict[str, tuple[dict[str, float], dict[str, float]]]:
+    """For each ranged variant value, its ScrewSpec field at the low and the high end."""
+    out = {}
+    for name, (spec_field, scale) in RANGED_VARIANT.items():
+        span = v.ends(name)
+        if span is not None:
+            out[name] = ({spec_field: span[0] * scale}, {spec_field: span[1] * scale})
+    return out
+
+
+def _variant(entry: Entry, key: str, family_data: Mapping[str, Any]) -> Variant:
+    """One variant's values: the family's declaration under the series' own overrides."""
+    own = entry.data.get("variants", {}).get(key, {})
+    v = Entry(entry.file, f"{entry.entry}.variants.{key}", {**family_data, **own})
+    fields = _variant_fields(v)
     id_part = IdVariant(key, v.plain_text("suffix", ""))
-    return Variant(key, id_part, v.plain_text("field_suffix", key), v.plain_flag("coated"), fields)
+    suffix = v.plain_text("field_suffix", key)
+    return Variant(key, id_part, suffix, v.plain_flag("coated"), fields, _variant_ends(v))
 
 
 def _variants(entry: Entry, family: Family) -> list[Variant]:
@@ -217,22 +383,88 @@ def _variants(entry: Entry, family: Family) -> list[Variant]:
     return [_variant(entry, key, family.variants[key]) for key in offered]
 
 
+#: Series fields that become ScrewSpec numbers, to compare at the ends of a range.
+SPEC_OF_FIELD = {
+    "root_diameter": "root_diameter_m",
+    "design_load": "design_load_n",
+    "friction_static": "friction_static",
+    "nut_length": "nut_length_m",
+    "inertia_per_length": "inertia_kg_m2_per_m",
+}
+
+
+def _spec_numbers(entry: Entry, family: Family, material: Material) -> dict[str, Any]:
+    """The ScrewSpec numbers that a series' own values derive (``SPEC_OF_FIELD``)."""
+    fields = {**_geometry_fields(entry, family, material)}
+    return {spec: _value_or_none(fields, name) for name, spec in SPEC_OF_FIELD.items()}
+
+
+def _series_ends(entry: Entry, family: Family, material: Material) -> Ends:
+    """For each ranged series value: the ScrewSpec numbers it changes, at each end,
+    derived values recomputed by the same rules (a low root ratio lowers the root and
+    the derived design load)."""
+    nominal = _spec_numbers(entry, family, material)
+    out = {}
+    for name in RANGED_SERIES:
+        span = entry.ends(name)
+        if span is None:
+            continue
+        ends = []
+        for value in span:
+            changed = _spec_numbers(entry.at(name, value), family, material)
+            ends.append({k: v for k, v in changed.items() if v != nominal[k]})
+        out[name] = (ends[0], ends[1])
+    return out
+
+
+def _ends(series_ends: Ends, variant: Variant) -> Ends:
+    """The candidate's ranged values: the series', then the variant's (a variant's own
+    static friction replaces the series' one)."""
+    own = {k: v for k, v in series_ends.items() if k not in variant.fields}
+    return {**own, **variant.ends}
+
+
+def _field(fields: Mapping[str, Sourced], variant: Variant, name: str) -> Any:
+    """A value the variant may set for itself (static friction, nut material)."""
+    return (variant.fields.get(name) or fields[name]).value
+
+
+def _nut_spec(
+    fields: Mapping[str, Sourced], variant: Variant, context: "_Context"
+) -> dict[str, Any]:
+    """The ScrewSpec values of the thread and the nut rating, and the range ends."""
+    bearing = variant.fields.get("bearing_pressure")
+    return {
+        "pitch_m": _value_or_none(fields, "pitch"),
+        "flank_pitch_diameter_m": _value_or_none(fields, "flank_pitch_diameter"),
+        "flank_height_m": _value_or_none(fields, "flank_height"),
+        "nut_length_m": _value_or_none(fields, "nut_length"),
+        "bearing_pressure_table": () if bearing is None else bearing.value,
+        "max_pressure_pa": _value_or_none(variant.fields, "max_pressure"),
+        "nut_pv_limit_pa_m_s": _value_or_none(variant.fields, "bearing_pv_limit"),
+        "max_sliding_speed_m_s": _value_or_none(variant.fields, "max_sliding_speed"),
+        "assumption_ends": _ends(context.ends, variant),
+    }
+
+
 def _screw(
-    family: Family, series: Series, variant: Variant, lead_m: float, offered: Provenance
+    family: Family, series: Series, variant: Variant, lead_m: float, context: "_Context"
 ) -> ScrewSpec:
     """One candidate: the series' fields with one variant's values at one lead."""
     fields = series.fields
     prov = {k: s.provenance for k, s in fields.items()}
     prov.update({k: s.provenance for k, s in variant.fields.items()})
     prov.setdefault("life", UNRATED_LIFE)
+    for name, not_given in NOT_GIVEN.items():
+        prov.setdefault(name, not_given)
     prov["lead"] = fields["leads"].provenance
-    prov["coating"] = offered
+    prov["coating"] = context.offered
     life = variant.fields.get("life")
-    max_length = variant.fields.get("max_length")
-    t_min, t_max = _value_or_none(fields, "temperature_range") or (None, None)
+    temperature = variant.fields.get("temperature_range") or fields.get("temperature_range")
+    t_min, t_max = (None, None) if temperature is None else temperature.value
     od, rd = fields["outer_diameter"].value, fields["root_diameter"].value
     return ScrewSpec(
-        id=family.screw_id(series.id, lead_m, od, variant.id_part),
+        id=family.screw_id(series.id, lead_m, od, variant.id_part, _value_or_none(fields, "pitch")),
         series_id=series.id,
         series_name=series.name,
         anti_backlash=family.anti_backlash_by_type[series.type],
@@ -241,7 +473,7 @@ def _screw(
         root_diameter_m=rd,
         lead_m=lead_m,
         thread_half_angle_rad=math.radians(family.half_angle_deg.value),
-        friction_static=fields["friction_static"].value,
+        friction_static=_field(fields, variant, "friction_static"),
         friction_dynamic=variant.fields["friction_dynamic"].value,
         youngs_modulus_pa=fields["youngs_modulus"].value,
         density_kg_m3=fields["density"].value,
@@ -249,9 +481,9 @@ def _screw(
         inertia_kg_m2_per_m=fields["inertia_per_length"].value,
         drag_torque_min_nm=fields["drag_torque"].value[0],
         drag_torque_max_nm=fields["drag_torque"].value[1],
-        pv_limit_pa_m_s=variant.fields["pv_limit"].value,
-        design_load_n=fields["design_load"].value,
-        max_length_m=None if max_length is None else max_length.value,
+        pv_limit_pa_m_s=_value_or_none(variant.fields, "pv_limit"),
+        design_load_n=_value_or_none(fields, "design_load"),
+        max_length_m=_value_or_none(variant.fields, "max_length"),
         backlash_min_m=fields["backlash"].value[0],
         backlash_max_m=fields["backlash"].value[1],
         life_min_m=None if life is None else life.value[0],
@@ -264,12 +496,43 @@ def _screw(
         yield_strength_pa=_value_or_none(fields, "yield_strength"),
         outgassing=_value_or_none(fields, "outgassing") or (),
         material_name=fields["screw_material"].value,
-        nut_material=fields["nut_material"].value,
+        nut_material=_field(fields, variant, "nut_material"),
         family_id=family.id,
         variant=variant.key,
         traverse_bands=() if family.traverse is None else family.traverse.value,
         provenance=prov,
+        **_nut_spec(fields, variant, context),
     )
+
+
+@dataclass(frozen=True, slots=True)
+class _Context:
+    """What every candidate of one series shares beyond its fields."""
+
+    offered: Provenance
+    ends: Ends
+
+
+def _check_bearing(entry: Entry, fields: Mapping[str, Sourced], variants: list[Variant]) -> None:
+    """A nut rated by contact pressure needs the engaged area: pitch and nut length."""
+    rated = [v.key for v in variants if {"bearing_pressure", *BEARING_VALUES} & v.fields.keys()]
+    if rated and not {"pitch", "nut_length"} <= fields.keys():
+        raise entry.fail(
+            "nut_length_mm",
+            f"variant '{rated[0]}' is rated by contact pressure: give pitch_mm and "
+            "nut_length_mm or nut_length_to_d",
+        )
+
+
+def _check_static_friction(
+    entry: Entry, fields: Mapping[str, Sourced], variants: list[Variant]
+) -> None:
+    """Static friction comes from the series, or from every variant it offers."""
+    if "friction_static" in fields:
+        return
+    missing = [v.key for v in variants if "friction_static" not in v.fields]
+    if missing:
+        raise entry.fail("friction_static", f"missing (here or in variant '{missing[0]}')")
 
 
 def build_series(
@@ -284,6 +547,8 @@ def build_series(
     if family.traverse is not None:
         fields["traverse_speed"] = family.traverse
     variants = _variants(entry, family)
+    _check_bearing(entry, fields, variants)
+    _check_static_friction(entry, fields, variants)
     for v in variants:
         fields.update({f"{name}_{v.field_suffix}": s for name, s in v.fields.items()})
     series = Series(
@@ -296,8 +561,8 @@ def build_series(
         fields=fields,
         screws=(),
     )
-    offered = entry.prov("nut_variants")
+    context = _Context(entry.prov("nut_variants"), _series_ends(entry, family, material))
     screws = tuple(
-        _screw(family, series, v, lead, offered) for lead in fields["leads"].value for v in variants
+        _screw(family, series, v, lead, context) for lead in fields["leads"].value for v in variants
     )
     return replace(series, screws=screws)

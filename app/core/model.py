@@ -59,6 +59,9 @@ class Application:
     positioning_tolerance_m: float | None = None
     rank_by: RankBy = "torque"
     limit: int = 10
+    #: Family ids to select from (empty: every family); a nut material (None: any).
+    families: tuple[str, ...] = ()
+    nut_material: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,6 +113,24 @@ class ScrewSpec:
     traverse_bands: tuple[tuple[float, float, float], ...] = ()
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
     yield_strength_pa: float | None = None
+    #: Thread pitch P, the standard's pitch diameter d2 and engaged flank height H1 [m],
+    #: and the nut length whose engaged turns carry the load (None: not given).
+    pitch_m: float | None = None
+    flank_pitch_diameter_m: float | None = None
+    flank_height_m: float | None = None
+    nut_length_m: float | None = None
+    #: The nut material's allowable contact pressure by sliding speed, rows of
+    #: (sliding speed [m/s], pressure [Pa]) interpolated; its maximum pressure [Pa], its PV
+    #: limit over the engaged flank area [Pa m/s] and its maximum sliding speed [m/s].
+    bearing_pressure_table: tuple[tuple[float, float], ...] = ()
+    max_pressure_pa: float | None = None
+    nut_pv_limit_pa_m_s: float | None = None
+    max_sliding_speed_m_s: float | None = None
+    #: For each catalog value given with a range: the ScrewSpec fields at its low and at
+    #: its high end (derived values recomputed), for re-screening at either end.
+    assumption_ends: Mapping[str, tuple[Mapping[str, float], Mapping[str, float]]] = field(
+        default_factory=dict
+    )
 
 
 @dataclass(frozen=True, slots=True)

@@ -43,8 +43,14 @@ class Screening:
 
 
 def eligible_mask(app: Application, table: CandidateTable) -> Mask:
-    """Candidates with the asked lead (0.5 %) and coating choice."""
+    """Candidates with the asked lead (0.5 %), coating choice, families (none asked: all)
+    and nut material (case-insensitive; None: any)."""
     mask = np.ones(len(table), dtype=bool)
+    if app.families:
+        mask &= np.array([s.family_id in app.families for s in table.screws], dtype=bool)
+    if app.nut_material is not None:
+        wanted = app.nut_material.casefold()
+        mask &= np.array([s.nut_material.casefold() == wanted for s in table.screws], dtype=bool)
     if app.lead_m is not None:
         mask &= np.abs(table.lead_m - app.lead_m) <= 0.005 * app.lead_m
     if app.coating != "auto":

@@ -11,7 +11,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.formulas import efficiency, geometry, limits
+from app.core.formulas import bearing, efficiency, geometry, limits
 from app.core.model import ScrewSpec
 
 Array = NDArray[np.float64]
@@ -30,6 +30,22 @@ def _bands(screws: Sequence[ScrewSpec]) -> tuple[Array, Mask]:
     ]
     speeds = column([None if b is None else b.speed_m_s for b in found])
     return speeds, np.array([b is not None and b.extrapolated for b in found], dtype=bool)
+
+
+def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]:
+    """Thread and nut-rating columns (NaN where a family gives none): pitch, d2, H1, nut
+    length, the polymer limits, the engaged flank area (L / P) pi d2 H1 and the helix
+    of one turn at d2."""
+    names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
+    names += ("max_pressure_pa", "nut_pv_limit_pa_m_s", "max_sliding_speed_m_s")
+    out = {name: column([getattr(s, name) for s in screws]) for name in names}
+    d2 = out["flank_pitch_diameter_m"]
+    area = bearing.engaged_flank_area(
+        out["nut_length_m"], out["pitch_m"], d2, out["flank_height_m"]
+    )
+    out["bearing_area_m2"] = np.asarray(area, dtype=np.float64)
+    out["flank_helix_travel_m"] = np.asarray(geometry.helix_travel(lead_m, d2), dtype=np.float64)
+    return out
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,6 +91,15 @@ class CandidateTable:
     cos_half_angle: Array
     backdrive_efficiency_running: Array
     yield_strength_pa: Array
+    pitch_m: Array
+    flank_pitch_diameter_m: Array
+    flank_height_m: Array
+    nut_length_m: Array
+    max_pressure_pa: Array
+    nut_pv_limit_pa_m_s: Array
+    max_sliding_speed_m_s: Array
+    bearing_area_m2: Array
+    flank_helix_travel_m: Array
 
     @classmethod
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
@@ -133,6 +158,7 @@ class CandidateTable:
             cos_half_angle=cos_a,
             backdrive_efficiency_running=efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
             yield_strength_pa=col("yield_strength_pa"),
+            **_nut_columns(screws, lead),
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":

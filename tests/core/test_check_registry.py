@@ -87,7 +87,7 @@ def formula_mismatches(check: Check, app: Application, t: CandidateTable) -> lis
 
 def test_registry_lists_each_check_once_in_order() -> None:
     names = [c.name for c in REGISTRY]
-    assert len(set(names)) == len(names) == 15
+    assert len(set(names)) == len(names) == 17
     assert [c.order for c in REGISTRY] == sorted(c.order for c in REGISTRY)
     for c in REGISTRY:
         assert c.label and c.description and c.formula and c.source, c.name

@@ -92,9 +92,9 @@ def test_lead_filter_is_exact_within_half_a_percent(
 
 
 def test_no_matching_lead_says_so(catalog: Catalog) -> None:
-    sel = select(light_app(lead_m=0.007), catalog.table)
+    sel = select(light_app(lead_m=0.0071), catalog.table)
     assert sel.evaluated == 0 and sel.candidates == () and sel.rejected == ()
-    assert "7 mm lead" in render(sel.summary.message)
+    assert "7.1 mm lead" in render(sel.summary.message)
 
 
 @pytest.mark.parametrize(

@@ -1,0 +1,79 @@
+"""Flank sliding speed of a polymer nut against the material's maximum sliding speed."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    where_given,
+)
+from app.core.checks.bearing_pressure import sliding_speed
+from app.core.formulas import geometry, pv
+from app.core.phrase import Amount, Phrase
+
+
+def _speed_one(s: ScrewSpec, rpm: float) -> float:
+    """Sliding speed [m/s] of one candidate at ``rpm`` (helix of one turn at d2)."""
+    d2 = s.flank_pitch_diameter_m or 0.0
+    return pv.surface_speed(rpm, geometry.helix_travel(s.lead_m, d2))
+
+
+@register
+class MaxSlidingSpeed(Check):
+    name = "max_sliding_speed"
+    label = "Nut sliding speed"
+    description = (
+        "The speed at which the nut's flanks slide on the screw (the helix at the pitch "
+        "diameter d2, n times per second) against the nut material's maximum."
+    )
+    quantity = "speed"
+    formula = "v = n / 60 * sqrt(lead^2 + (pi * d_2)^2); v_max = v_nut"
+    source = "the nut material's maximum sliding speed (catalog, see its provenance)"
+    sources = ("max_sliding_speed", "pitch")
+    order = 44
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        capacity = t.max_sliding_speed_m_s
+        speed = sliding_speed(q.rpm, t)
+        return Measure(where_given(capacity) & where_given(speed), speed, capacity)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "n": q.rpm,
+            "lead": t.lead_m,
+            "d_2": t.flank_pitch_diameter_m,
+            "v_nut": t.max_sliding_speed_m_s,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "is within" if passed else "exceeds"
+        return Phrase(
+            "The flank sliding speed {v} " + verb + " the nut material's maximum {cap}.",
+            {
+                "v": Amount(_speed_one(s, r.rpm), "speed"),
+                "cap": Amount(s.max_sliding_speed_m_s or 0.0, "speed"),
+            },
+        )
+
+    def _max_linear_speed(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
+        """The linear speed at which the sliding speed meets the maximum (proportional)."""
+        return app.speed_m_s * (s.max_sliding_speed_m_s or 0.0) / _speed_one(s, r.rpm)
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        return Phrase(
+            "Move at most {speed}, or choose a larger lead (fewer turns for the same travel).",
+            {"speed": Amount(self._max_linear_speed(app, s, r), "speed")},
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        return {"speed_m_s": self._max_linear_speed(app, s, r)}

@@ -1,0 +1,54 @@
+"""Robust or marginal: does a candidate still pass at either end of the range of every
+catalog value it depends on?
+
+The catalog gives assumed (and some handbook) values with a plausible range; the loader
+records, for each such value, the candidate's numbers at its low and at its high end
+(``ScrewSpec.assumption_ends``, derived values recomputed). Here the candidate is
+re-screened with those numbers through the same check registry, one value at a time, so
+a result can say which assumption it hinges on.
+"""
+
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
+from typing import Any
+
+from app.core.model import Application, ScrewSpec
+from app.core.screening import screen_table
+from app.core.table import CandidateTable
+
+
+@dataclass(frozen=True, slots=True)
+class Robustness:
+    """``robust``: passes, and still passes at both ends of every ranged value.
+    ``hinges_on``: the catalog values (as named in the catalog files, e.g.
+    ``pv_limit_mpa_m_s``) at one end of whose range it fails, in catalog order."""
+
+    robust: bool
+    hinges_on: tuple[str, ...]
+
+
+def passes(app: Application, screw: ScrewSpec) -> bool:
+    """Whether ``screw`` passes every check that applies to ``app``."""
+    return bool(screen_table(app, CandidateTable.build([screw])).passed[0])
+
+
+def at_values(screw: ScrewSpec, changes: Mapping[str, float]) -> ScrewSpec:
+    """``screw`` with some of its numbers replaced (one end of a range)."""
+    fields: dict[str, Any] = dict(changes)
+    return replace(screw, **fields)
+
+
+def robustness(app: Application, screw: ScrewSpec) -> Robustness:
+    """Re-screen ``screw`` at the low and the high end of each ranged value it uses.
+
+    A candidate that fails as catalogued is not robust and hinges on nothing named here
+    (it fails anyway). Each range is moved alone; the others stay at their values.
+    """
+    if not passes(app, screw):
+        return Robustness(False, ())
+    hinges = tuple(
+        name
+        for name, ends in screw.assumption_ends.items()
+        if any(changes and not passes(app, at_values(screw, changes)) for changes in ends)
+    )
+    return Robustness(not hinges, hinges)
