@@ -223,6 +223,8 @@ def candidate_out(
         governing_check=ev.governing_check,
         governing_limit_provenance=ev.governing_limit_provenance,
         passed=ev.passed,
+        robust=ev.robust,
+        hinges_on=list(ev.hinges_on),
         warnings=[c for c in checks if c.kind == "advice" and not c.passed],
         fix=" ".join(fixes) if fixes else None,
         provenance={

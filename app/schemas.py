@@ -286,6 +286,13 @@ class CandidateOut(BaseModel):
         "provenance of the values it rests on ('user' for the user's own limit)."
     )
     passed: bool = Field(description="True when every limit passes (advice only warns).")
+    robust: bool | None = Field(
+        description="A pass that holds at both ends of every ranged (assumed) catalog value "
+        "it rests on; false: marginal; null: not a pass."
+    )
+    hinges_on: list[str] = Field(
+        description="The ranged catalog values at one end of whose range the pass fails."
+    )
     warnings: list[CheckOut] = Field(description="Failed advice: reported, not rejected.")
     fix: str | None = Field(description="For a rejected candidate, what would make it pass.")
     provenance: dict[str, ProvenanceOut] = Field(

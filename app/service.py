@@ -5,7 +5,7 @@ from collections.abc import Mapping
 from app.catalog import Catalog
 from app.core.checks.base import Reach
 from app.core.evaluate import evaluate
-from app.core.selection import select
+from app.core.selection import select, with_robustness
 from app.formulas import FORMULAS
 from app.present import candidate_out, custom_screw, selection_out
 from app.schemas import (
@@ -58,9 +58,12 @@ def run_evaluation(
     else:
         spec = custom_screw(screw, catalog.materials)
     app = inputs.to_core()
+    ev = evaluate(app, spec, reach)
+    if ev.passed:
+        (ev,) = with_robustness(app, [ev])
     return EvaluateOut.model_construct(
         inputs=inputs,
-        candidate=candidate_out(evaluate(app, spec, reach), app.vacuum, units, app.brake_torque_nm),
+        candidate=candidate_out(ev, app.vacuum, units, app.brake_torque_nm),
         catalog_version=catalog.version,
         formulas=FORMULAS_OUT,
     )

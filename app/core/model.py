@@ -279,6 +279,10 @@ class Evaluation:
     governing_check: str | None
     governing_limit_provenance: ProvenanceKind | None
     max_utilization: float
+    #: for a passing candidate: still passes at both ends of every ranged catalog value,
+    #: and the values at one end of whose range it fails (None: not assessed)
+    robust: bool | None = None
+    hinges_on: tuple[str, ...] = ()
 
     @property
     def failed_checks(self) -> tuple[CheckResult, ...]:

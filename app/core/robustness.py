@@ -8,7 +8,7 @@ re-screened with those numbers through the same check registry, one value at a t
 a result can say which assumption it hinges on.
 """
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -36,6 +36,26 @@ def at_values(screw: ScrewSpec, changes: Mapping[str, float]) -> ScrewSpec:
     """``screw`` with some of its numbers replaced (one end of a range)."""
     fields: dict[str, Any] = dict(changes)
     return replace(screw, **fields)
+
+
+def robustness_of(app: Application, screws: Sequence[ScrewSpec]) -> list[Robustness]:
+    """``robustness`` of many passing screws with one screening of every variant: each
+    screw at the low and the high end of each of its ranged values, one at a time."""
+    variants: list[ScrewSpec] = []
+    owners: list[tuple[int, str]] = []
+    for k, screw in enumerate(screws):
+        for name, ends in screw.assumption_ends.items():
+            for changes in ends:
+                if changes:
+                    variants.append(at_values(screw, changes))
+                    owners.append((k, name))
+    hinges: list[list[str]] = [[] for _ in screws]
+    if variants:
+        passed = screen_table(app, CandidateTable.build(variants)).passed.tolist()
+        for (k, name), ok in zip(owners, passed, strict=True):
+            if not ok and name not in hinges[k]:
+                hinges[k].append(name)
+    return [Robustness(not h, tuple(h)) for h in hinges]
 
 
 def robustness(app: Application, screw: ScrewSpec) -> Robustness:

@@ -2,6 +2,7 @@
 
 from collections import Counter
 from collections.abc import Mapping, Sequence
+from dataclasses import replace
 
 import numpy as np
 
@@ -9,6 +10,7 @@ from app.core.checks import BY_NAME
 from app.core.evaluate import evaluations
 from app.core.model import Application, Change, Evaluation, ScrewSpec, Selection, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
+from app.core.robustness import robustness_of
 from app.core.screening import Screening, screen
 from app.core.table import CandidateTable
 
@@ -43,6 +45,15 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     return pos[np.lexsort(tuple(keys))]
 
 
+def with_robustness(app: Application, passing: Sequence[Evaluation]) -> tuple[Evaluation, ...]:
+    """Passing candidates with their robustness to the catalog's ranged values."""
+    found = robustness_of(app, [e.screw for e in passing])
+    return tuple(
+        replace(e, robust=r.robust, hinges_on=r.hinges_on)
+        for e, r in zip(passing, found, strict=True)
+    )
+
+
 def _nearest_order(s: Screening) -> np.ndarray:
     """Positions of rejected candidates, nearest first: fewest failed limits, then the
     smallest worst utilisation (how far the worst limit is exceeded)."""
@@ -63,7 +74,7 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     s = screen(app, table)
     ranked = _rank_order(app, s)[: app.limit]
     nearest = _nearest_order(s)[: app.limit]
-    passing = tuple(evaluations(app, s, ranked.tolist()))
+    passing = with_robustness(app, evaluations(app, s, ranked.tolist()))
     rejected = tuple(evaluations(app, s, nearest.tolist()))
     by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
