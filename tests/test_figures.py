@@ -153,7 +153,7 @@ def test_lead_sweep_evaluates_every_lead_of_the_top_size(
     assert pv_used["y"][chosen] == pytest.approx(pv_check.utilization * 100, rel=1e-3)
     band, marker = figure["layout"]["shapes"]
     assert band["type"] == "rect" and band["x1"] == pytest.approx(
-        min(top.max_self_locking_lead_mm, max(torque["x"])), rel=1e-4
+        min(top.max_self_locking_lead_with_margin_mm, max(torque["x"])), rel=1e-4
     )
     assert limit["y"] == [100, 100] and limit["yaxis"] == "y2" and marker["x0"] == top.lead_mm
     assert (

@@ -361,11 +361,8 @@ def _sweep_shapes(leads: list[float], locking: float, chosen: float) -> list[dic
     return shapes
 
 
-def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) -> dict[str, Any]:
-    """Torque, speed against the critical speed and PV use across the leads of one size:
-    the trade-off that picks the lead. Torque on the left axis, the two shares of their
-    limits (per cent) on the right; the self-locking band shaded, the chosen lead dashed."""
-    leads = [_round(d.value(ev.screw.lead_m * 1e3, "length")) for ev in sweep]
+def _sweep_traces(sweep: list[Evaluation], leads: list[float], d: Display) -> list[dict[str, Any]]:
+    """Torque on the left axis; speed and PV as shares of their limits on the right."""
     unit = d.label("torque")
     series: list[tuple[str, str, list[float | None], str, str]] = [
         (
@@ -384,7 +381,7 @@ def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) ->
         ),
         ("PV, % of limit", "y2", [_utilisation(ev, "pv") for ev in sweep], "#009E73", "%{y:.3g} %"),
     ]
-    data = [
+    return [
         {
             "type": "scatter",
             "mode": "lines+markers",
@@ -398,12 +395,53 @@ def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) ->
         for name, axis, y, colour, hover in series
         if any(v is not None for v in y)
     ]
-    locking = _round(d.value(top.max_self_locking_lead_mm, "length"))
+
+
+def _sweep_annotations(leads: list[float], locking: float, chosen: float) -> list[dict[str, Any]]:
+    """Labels of the chosen lead and of the self-locking band."""
+    notes: list[dict[str, Any]] = [
+        {
+            "x": chosen,
+            "xref": "x",
+            "y": 1,
+            "yref": "paper",
+            "yanchor": "bottom",
+            "text": f"chosen {sig(chosen)}",
+            "showarrow": False,
+            "font": {"size": 11},
+        },
+    ]
+    if locking >= leads[0]:
+        notes.append(
+            {
+                "x": leads[0],
+                "xref": "x",
+                "y": 1,
+                "yref": "paper",
+                "yanchor": "top",
+                "xanchor": "left",
+                "text": "self-locking",
+                "showarrow": False,
+                "font": {"size": 11, "color": "#0a5c2a"},
+            }
+        )
+    return notes
+
+
+def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) -> dict[str, Any]:
+    """Torque, speed against the critical speed and PV use across the leads of one size:
+    the trade-off that picks the lead. Torque on the left axis, the two shares of their
+    limits (per cent) on the right; the self-locking band (with the friction margin)
+    shaded, the chosen lead dashed."""
+    leads = [_round(d.value(ev.screw.lead_m * 1e3, "length")) for ev in sweep]
+    data = _sweep_traces(sweep, leads, d)
+    locking = _round(d.value(top.max_self_locking_lead_with_margin_mm, "length"))
     chosen = _round(d.value(top.lead_mm, "length"))
     layout = _layout(
-        _axis(f"Lead of {top.series} [{d.label('length')}]"), _axis(f"Drive torque [{unit}]")
+        _axis(f"Lead of {top.series} [{d.label('length')}]"),
+        _axis(f"Drive torque [{d.label('torque')}]"),
     )
-    shares = [float(v) for _, axis, y, _, _ in series if axis == "y2" for v in y if v]
+    shares = [float(v) for trace in data if trace["yaxis"] == "y2" for v in trace["y"] if v]
     data.append(
         {
             "type": "scatter",
@@ -422,32 +460,7 @@ def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) ->
         "side": "right",
     }
     layout["shapes"] = _sweep_shapes(leads, locking, chosen)
-    layout["annotations"] = [
-        {
-            "x": chosen,
-            "xref": "x",
-            "y": 1,
-            "yref": "paper",
-            "yanchor": "bottom",
-            "text": f"chosen {sig(chosen)}",
-            "showarrow": False,
-            "font": {"size": 11},
-        },
-    ]
-    if locking >= leads[0]:
-        layout["annotations"].append(
-            {
-                "x": leads[0],
-                "xref": "x",
-                "y": 1,
-                "yref": "paper",
-                "yanchor": "top",
-                "xanchor": "left",
-                "text": "self-locking",
-                "showarrow": False,
-                "font": {"size": 11, "color": "#0a5c2a"},
-            }
-        )
+    layout["annotations"] = _sweep_annotations(leads, locking, chosen)
     return {"data": data, "layout": layout}
 
 
