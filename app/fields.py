@@ -168,7 +168,7 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
         label="Moving mass", help="Carried by the nut", group="Motion and load",
-        kind="number", default=0.0, bounds=(0.0, 1e5), unit="kg",
+        kind="number", default=0.0, bounds=(0.0, 1e5), quantity="mass", unit="kg",
     ),
     InputField(
         api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",

@@ -8,13 +8,15 @@ from typing import Literal
 from app.core.phrase import Amount, Phrase
 from app.core.phrase import Quantity as CoreQuantity
 
-Quantity = Literal["force", "length", "speed", "accel", "torque"]
+Quantity = Literal["force", "length", "speed", "accel", "torque", "mass"]
 
 #: display unit -> factor that converts a value in that unit to the API unit.
 FORCE_UNITS = {"N": 1.0, "lbf": 4.4482216152605, "kgf": 9.80665}
 LENGTH_UNITS = {"mm": 1.0, "in": 25.4}
 TORQUE_UNITS = {"N_m": 1.0, "oz_in": 0.0070615518333, "lb_in": 0.112984829027617}
 TORQUE_LABELS = {"N_m": "N m", "oz_in": "oz in", "lb_in": "lb in"}
+#: a mass follows the force unit: pounds with pound-force, kilograms otherwise.
+MASS_UNITS = {"N": ("kg", 1.0), "lbf": ("lb", 0.45359237), "kgf": ("kg", 1.0)}
 DEFAULT_UNITS = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 
 
@@ -24,6 +26,8 @@ def factor(quantity: Quantity, units: Mapping[str, str]) -> float:
         return FORCE_UNITS[units["force_unit"]]
     if quantity == "torque":
         return TORQUE_UNITS[units["torque_unit"]]
+    if quantity == "mass":
+        return MASS_UNITS[units["force_unit"]][1]
     return LENGTH_UNITS[units["length_unit"]]
 
 
@@ -33,6 +37,8 @@ def label(quantity: Quantity, units: Mapping[str, str]) -> str:
         return units["force_unit"]
     if quantity == "torque":
         return TORQUE_LABELS[units["torque_unit"]]
+    if quantity == "mass":
+        return MASS_UNITS[units["force_unit"]][0]
     base = units["length_unit"]
     return {"length": base, "speed": f"{base}/s", "accel": f"{base}/s²"}[quantity]
 

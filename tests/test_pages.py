@@ -583,7 +583,7 @@ def test_fixes_and_proposals_follow_the_chosen_units(client: TestClient) -> None
     ]
     fixes = notice.select_one("ul.failed-fixes").text
     assert " in" in fixes and "lbf" in fixes and " mm" not in fixes and " N " not in fixes
-    assert "(lbf, in, in/s, N m)" in page.select_one(".footnote").text
+    assert "(lbf, in, in/s, N m, lb)" in page.select_one(".footnote").text
 
 
 @pytest.mark.parametrize(
@@ -614,3 +614,13 @@ def test_results_columns_say_what_they_mean_in_plain_words(client: TestClient) -
         assert ("Self-locking" in cell) == c["self_locking"]
         if not c["self_locking"]:
             assert "brake ≥" in cell
+
+
+def test_moving_mass_follows_the_force_unit(client: TestClient) -> None:
+    """10 kg typed with newtons shows as 22.05 lb after switching to pound-force
+    (1 lb = 0.45359237 kg exactly), and the label says lb."""
+    params = {**AXIS, "moving_mass_kg": "10", "force_unit": "lbf", "from_force_unit": "N"}
+    page = soup(client.get("/", params=params))
+    field = page.select_one("#f-moving_mass_kg")
+    assert field is not None and float(str(field["value"])) == pytest.approx(22.05, abs=0.01)
+    assert "lb" in page.select_one("#w-moving_mass_kg label").text

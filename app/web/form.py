@@ -30,7 +30,7 @@ from app.units import (
 UNIT_CHOICES = {"force_unit": FORCE_UNITS, "length_unit": LENGTH_UNITS, "torque_unit": TORQUE_UNITS}
 #: display-unit key -> the quantities whose numbers it sets.
 UNIT_QUANTITIES: dict[str, tuple[Quantity, ...]] = {
-    "force_unit": ("force",),
+    "force_unit": ("force", "mass"),
     "length_unit": ("length", "speed", "accel"),
     "torque_unit": ("torque",),
 }
