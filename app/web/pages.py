@@ -32,6 +32,7 @@ from app.web.form import (
     summary_rows,
 )
 from app.web.guide import BY_COLUMN
+from app.web.screw_form import catalog_screw_query
 from app.web.templating import templates
 
 router = APIRouter(include_in_schema=False)
@@ -42,7 +43,7 @@ MAIN_FIELDS = tuple(field.page for field in FIELDS if field.group == GROUPS[0])
 EXPORT_NAME = "leadscrew-selection"
 
 
-def _form(
+def form_state(
     params: Mapping[str, str],
 ) -> tuple[dict[str, str], dict[str, str], list[str], dict[str, str]]:
     """(display units, form values in those units, fields whose units just changed, the
@@ -55,7 +56,7 @@ def _form(
 
 def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query, run the selection when the form was filled in."""
-    units, values, converted, typed = _form(params)
+    units, values, converted, typed = form_state(params)
     context: dict[str, Any] = {
         "typed": typed,
         "units": units,
@@ -151,7 +152,7 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
 
 def _link_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
-    units, values, _, _ = _form(params)
+    units, values, _, _ = form_state(params)
     inputs, errors = parse_inputs(values, units)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
@@ -184,10 +185,14 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
     inputs, units = _link_inputs(request.query_params)
+    c = _candidate(inputs, request.query_params.get("id", ""), catalog, units)
+    query = share_query(inputs, units)
+    try_query = catalog_screw_query(catalog.by_id[c.id])
     context = {
-        "c": _candidate(inputs, request.query_params.get("id", ""), catalog, units),
+        "c": c,
         "d": Display(units),
-        "query": share_query(inputs, units),
+        "query": query,
+        "try_url": f"/custom?{try_query}&{query}",
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"
     response = templates.TemplateResponse(request, template, context)
