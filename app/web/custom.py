@@ -36,11 +36,6 @@ from app.web.screw_form import (
 from app.web.templating import templates
 
 router = APIRouter(include_in_schema=False)
-#: application inputs that only choose or order catalog screws: not asked for one's own.
-CATALOG_ONLY = frozenset(
-    {"lead", "coating", "family", "nut_material", "require_anti_backlash", "rank_by", "limit"}
-)
-APP_FIELDS = {name: field for name, field in BY_PAGE.items() if name not in CATALOG_ONLY}
 #: screw fields that must be filled in before an evaluation runs.
 SCREW_REQUIRED = tuple(f.name for f in SCREW_FIELDS if f.required)
 EXPORT_NAME = "leadscrew-custom"
@@ -73,11 +68,11 @@ def _base_context(params: Mapping[str, str]) -> dict[str, Any]:
         "query": "",
         "figures": {},
         "charting_passed": True,
-        "converted": [name for name in converted if name in APP_FIELDS],
+        "converted": converted,
         "d": Display(units),
         "defaults": form_defaults(units),
-        "fields": APP_FIELDS,
-        "groups": [g for g in GROUPS if any(f.group == g for f in APP_FIELDS.values())],
+        "fields": BY_PAGE,
+        "groups": GROUPS,
         "screw_fields": SCREW_FIELDS,
         "material_fields": MATERIAL_FIELDS,
         "materials": MATERIALS,

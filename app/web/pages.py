@@ -10,13 +10,13 @@ from app.catalog import Catalog
 from app.deps import CatalogDep
 from app.errors import AppError
 from app.fields import BY_PAGE, FIELDS, GROUPS
-from app.present import series_dict
 from app.responses import ModelJSON
 from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.server.headers import is_htmx_fragment
 from app.service import run_evaluation, run_selection
-from app.units import TORQUE_LABELS, Display, catalog_value
+from app.units import TORQUE_LABELS, Display
 from app.web.advice import check_label, no_pass_advice
+from app.web.catalog_view import KEY_FIELDS, family_sections
 from app.web.export import results_csv
 from app.web.figures import chart_candidates, result_figures
 from app.web.form import (
@@ -215,18 +215,12 @@ async def export_json(request: Request, catalog: CatalogDep) -> Response:
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 
 
-def _catalog_rows(series: dict[str, Any]) -> list[dict[str, str]]:
-    rows = []
-    for name, field in series["fields"].items():
-        text, unit = catalog_value(name, field["value"], field["unit"])
-        rows.append({"name": name, "value": text, "unit": unit, **field["provenance"]})
-    return rows
-
-
 @router.api_route("/catalog", methods=["GET", "HEAD"], response_class=HTMLResponse)
 async def catalog_page(request: Request, catalog: CatalogDep) -> Response:
-    """Every series and size with each value's provenance."""
-    series = [{**d, "rows": _catalog_rows(d)} for d in map(series_dict, catalog.series.values())]
-    return templates.TemplateResponse(
-        request, "catalog.html", {"version": catalog.version, "series": series}
-    )
+    """Every family, its sizes side by side, and every series' values with provenance."""
+    context = {
+        "version": catalog.version,
+        "families": family_sections(catalog),
+        "key_fields": KEY_FIELDS,
+    }
+    return templates.TemplateResponse(request, "catalog.html", context)
