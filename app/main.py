@@ -17,7 +17,7 @@ from app.server.overload import OverloadMiddleware
 from app.server.security import SecurityMiddleware
 from app.server.staticfiles import PrecompressedStaticFiles
 from app.settings import Settings, get_settings
-from app.web import guide, pages
+from app.web import custom, guide, pages
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
@@ -43,6 +43,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.catalog = load_catalog(settings.catalog_dirs)
     app.include_router(api.router)
     app.include_router(pages.router)
+    app.include_router(custom.router)
     app.include_router(guide.router)
     app.include_router(docs.router)
     app.mount("/static", PrecompressedStaticFiles(directory=resource_dir("static")), name="static")

@@ -136,8 +136,10 @@ def test_share_url_reopens_the_same_results(client: TestClient) -> None:
         "/?load=abc&speed=1&length=1",
         "/catalog",
         "/detail?load=100&lead=10&speed=50&length=500&id=B6000-L10-TFE",
+        "/custom?outer_diameter_mm=10&root_diameter_mm=8&lead_mm=2&friction_dynamic=0.15"
+        "&friction_static=0.2&load=100&speed=50&length=500",
     ],
-    ids=["empty", "results", "error", "catalog", "detail"],
+    ids=["empty", "results", "error", "catalog", "detail", "custom"],
 )
 def test_no_inline_script_style_or_handler(client: TestClient, path: str) -> None:
     """The CSP (script-src 'self'; style-src 'self') would block any of these."""
@@ -524,7 +526,7 @@ def test_catalog_page_lists_every_series_with_provenance(
     client: TestClient, catalog: Catalog
 ) -> None:
     page = soup(client.get("/catalog"))
-    sections = page.select("section.series")
+    sections = page.select("details.series")
     assert [s["id"] for s in sections] == list(catalog.series)
     for section in sections:
         series = catalog.series[section["id"]]
@@ -534,7 +536,7 @@ def test_catalog_page_lists_every_series_with_provenance(
             field = series.fields[row["data-field"]]
             assert row.select_one(".kind").text == field.provenance.kind
             assert row.select_one(".source").text == field.provenance.source
-    root = page.select_one("section#ZBX8000 tr[data-field=root_diameter]")
+    root = page.select_one("details#ZBX8000 tr[data-field=root_diameter]")
     value = catalog.series["ZBX8000"].fields["root_diameter"].value
     assert float(root.select("td")[0].text) == pytest.approx(value * 1e3, rel=1e-3)
     assert root.select("td")[1].text == "mm"

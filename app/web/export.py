@@ -135,3 +135,21 @@ def results_csv(result: SelectOut, units: dict[str, str]) -> str:
             cells = [get(c) for _, get in columns]
             writer.writerow([status, rank if status == "passed" else "", *map(cell, cells)])
     return out.getvalue()
+
+
+def candidate_csv(
+    inputs: dict[str, Any], screw_rows: list[list[Any]], c: CandidateOut, units: dict[str, str]
+) -> str:
+    """One screw of the user's own: the inputs, the screw's rows (name, value, unit), a
+    blank row, then the candidate's row with its status."""
+    columns = _columns(Display(units))
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\r\n")
+    writer.writerow(["input", "value", "unit"])
+    writer.writerows([list(map(cell, row)) for row in _input_rows(inputs, units)])
+    writer.writerows([list(map(cell, row)) for row in screw_rows])
+    writer.writerow([])
+    writer.writerow(["status", *(name for name, _ in columns)])
+    status = "passed" if c.passed else "rejected"
+    writer.writerow([status, *(cell(get(c)) for _, get in columns)])
+    return out.getvalue()

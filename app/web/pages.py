@@ -10,13 +10,13 @@ from app.catalog import Catalog
 from app.deps import CatalogDep
 from app.errors import AppError
 from app.fields import BY_PAGE, FIELDS, GROUPS
-from app.present import series_dict
 from app.responses import ModelJSON
 from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.server.headers import is_htmx_fragment
 from app.service import run_evaluation, run_selection
-from app.units import TORQUE_LABELS, Display, catalog_value
+from app.units import TORQUE_LABELS, Display
 from app.web.advice import check_label, no_pass_advice
+from app.web.catalog_view import KEY_FIELDS, family_sections
 from app.web.export import results_csv
 from app.web.figures import chart_candidates, result_figures
 from app.web.form import (
@@ -32,6 +32,7 @@ from app.web.form import (
     summary_rows,
 )
 from app.web.guide import BY_COLUMN
+from app.web.screw_form import catalog_screw_query
 from app.web.templating import templates
 
 router = APIRouter(include_in_schema=False)
@@ -42,7 +43,7 @@ MAIN_FIELDS = tuple(field.page for field in FIELDS if field.group == GROUPS[0])
 EXPORT_NAME = "leadscrew-selection"
 
 
-def _form(
+def form_state(
     params: Mapping[str, str],
 ) -> tuple[dict[str, str], dict[str, str], list[str], dict[str, str]]:
     """(display units, form values in those units, fields whose units just changed, the
@@ -55,7 +56,7 @@ def _form(
 
 def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query, run the selection when the form was filled in."""
-    units, values, converted, typed = _form(params)
+    units, values, converted, typed = form_state(params)
     context: dict[str, Any] = {
         "typed": typed,
         "units": units,
@@ -151,7 +152,7 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
 
 def _link_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
-    units, values, _, _ = _form(params)
+    units, values, _, _ = form_state(params)
     inputs, errors = parse_inputs(values, units)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
@@ -184,10 +185,14 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
     inputs, units = _link_inputs(request.query_params)
+    c = _candidate(inputs, request.query_params.get("id", ""), catalog, units)
+    query = share_query(inputs, units)
+    try_query = catalog_screw_query(catalog.by_id[c.id])
     context = {
-        "c": _candidate(inputs, request.query_params.get("id", ""), catalog, units),
+        "c": c,
         "d": Display(units),
-        "query": share_query(inputs, units),
+        "query": query,
+        "try_url": f"/custom?{try_query}&{query}",
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"
     response = templates.TemplateResponse(request, template, context)
@@ -210,18 +215,12 @@ async def export_json(request: Request, catalog: CatalogDep) -> Response:
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 
 
-def _catalog_rows(series: dict[str, Any]) -> list[dict[str, str]]:
-    rows = []
-    for name, field in series["fields"].items():
-        text, unit = catalog_value(name, field["value"], field["unit"])
-        rows.append({"name": name, "value": text, "unit": unit, **field["provenance"]})
-    return rows
-
-
 @router.api_route("/catalog", methods=["GET", "HEAD"], response_class=HTMLResponse)
 async def catalog_page(request: Request, catalog: CatalogDep) -> Response:
-    """Every series and size with each value's provenance."""
-    series = [{**d, "rows": _catalog_rows(d)} for d in map(series_dict, catalog.series.values())]
-    return templates.TemplateResponse(
-        request, "catalog.html", {"version": catalog.version, "series": series}
-    )
+    """Every family, its sizes side by side, and every series' values with provenance."""
+    context = {
+        "version": catalog.version,
+        "families": family_sections(catalog),
+        "key_fields": KEY_FIELDS,
+    }
+    return templates.TemplateResponse(request, "catalog.html", context)

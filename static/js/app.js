@@ -55,7 +55,7 @@
   }
 
   function syncInvalid() {
-    var form = document.getElementById("selector");
+    var form = document.querySelector("form[hx-get]");
     if (!form) {
       return;
     }

@@ -1,0 +1,178 @@
+"""The page of the user's own screw: its geometry, friction, material and nut with the
+selector's application inputs, evaluated as POST /api/v1/evaluate evaluates a custom
+screw, with the candidate's checks, charts, share link and exports."""
+
+from collections.abc import Mapping
+from typing import Any
+
+from fastapi import APIRouter, Request
+from fastapi.responses import HTMLResponse, Response
+
+from app.catalog import Catalog
+from app.deps import CatalogDep
+from app.errors import AppError
+from app.fields import BY_PAGE, GROUPS
+from app.responses import ModelJSON
+from app.schemas import ApplicationIn, CustomScrewIn, EvaluateOut
+from app.server.headers import is_htmx_fragment
+from app.service import run_evaluation
+from app.units import TORQUE_LABELS, Display, api_value
+from app.web.export import candidate_csv
+from app.web.figures import critical_speed_figure, pv_figure, torque_figure
+from app.web.form import TRUE_WORDS, UNIT_CHOICES, form_defaults, parse_inputs, share_query
+from app.web.form import summary_rows as input_rows
+from app.web.pages import REQUIRED, advanced_open, form_state
+from app.web.screw_form import (
+    BY_NAME,
+    DEFAULT_MATERIAL,
+    MATERIAL_FIELDS,
+    MATERIALS,
+    OWN_MATERIAL,
+    SCREW_FIELDS,
+    parse_screw,
+    screw_query,
+    screw_values,
+)
+from app.web.templating import templates
+
+router = APIRouter(include_in_schema=False)
+#: screw fields that must be filled in before an evaluation runs.
+SCREW_REQUIRED = tuple(f.name for f in SCREW_FIELDS if f.required)
+EXPORT_NAME = "leadscrew-custom"
+
+
+def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict[str, Any]]:
+    """The selector's critical-speed, PV and torque charts for one evaluated screw; PV only
+    when the nut has a PV limit."""
+    c, d = out.candidate, Display(units)
+    app = out.inputs.to_core()
+    length_mm, _ = api_value(app.length_m, "length")
+    speed_mm_s, _ = api_value(app.speed_m_s, "speed")
+    figures = {"critical_speed": critical_speed_figure([c], length_mm, d)}
+    if c.pv.max_load_n is not None:
+        figures["pv"] = pv_figure([c], speed_mm_s, c.axial_load_n, d)
+    figures["torque"] = torque_figure([c], app.max_torque_nm, d)
+    return figures
+
+
+def _base_context(params: Mapping[str, str]) -> dict[str, Any]:
+    """The form's state before any evaluation: typed values, units, the field tables."""
+    units, values, converted, typed = form_state(params)
+    return {
+        "typed": typed,
+        "units": units,
+        "values": values,
+        "errors": {},
+        "result": None,
+        "share_url": None,
+        "query": "",
+        "figures": {},
+        "charting_passed": True,
+        "converted": converted,
+        "d": Display(units),
+        "defaults": form_defaults(units),
+        "fields": BY_PAGE,
+        "groups": GROUPS,
+        "screw_fields": SCREW_FIELDS,
+        "material_fields": MATERIAL_FIELDS,
+        "materials": MATERIALS,
+        "own_material": OWN_MATERIAL,
+        "default_material": DEFAULT_MATERIAL,
+        "input_rows": input_rows,
+        "true_words": TRUE_WORDS,
+        "advanced_open": advanced_open,
+        "unit_choices": UNIT_CHOICES,
+        "torque_labels": TORQUE_LABELS,
+    }
+
+
+def _started(values: Mapping[str, str]) -> bool:
+    """Whether any required screw or application field was filled in."""
+    return any(values.get(name, "").strip() for name in (*SCREW_REQUIRED, *REQUIRED))
+
+
+def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
+    """Parse the page query; evaluate the screw once the form is filled in and valid."""
+    context = _base_context(params)
+    values = context["values"]
+    if not _started(values):
+        return context
+    inputs, app_errors = parse_inputs(values, context["units"])
+    screw, screw_errors = parse_screw(values)
+    context["errors"] = {**app_errors, **screw_errors}
+    if inputs is None or screw is None:
+        return context
+    result = run_evaluation(inputs, screw, catalog, context["units"])
+    query = _query(inputs, screw, context["units"])
+    context.update(result=result, query=query, share_url="/custom?" + query)
+    context["figures"] = candidate_figures(result, context["units"])
+    context.update(screw=screw, screw_rows=screw_rows(screw))
+    return context
+
+
+def _query(inputs: ApplicationIn, screw: CustomScrewIn, units: Mapping[str, str]) -> str:
+    """The share query: the screw, then the application in the display units."""
+    return "&".join(part for part in (screw_query(screw), share_query(inputs, units)) if part)
+
+
+def screw_rows(screw: CustomScrewIn) -> list[list[str]]:
+    """(name, value, unit) of each given screw value, for the summary and the CSV."""
+    rows = []
+    for name, value in screw_values(screw).items():
+        field = BY_NAME.get(name)
+        rows.append([name, value, field.unit if field is not None else ""])
+    return rows
+
+
+@router.api_route("/custom", methods=["GET", "HEAD"], response_class=HTMLResponse)
+async def custom_page(request: Request, catalog: CatalogDep) -> Response:
+    """The custom screw's page; an HTMX request gets the results and out-of-band errors."""
+    context = custom_context(request.query_params, catalog)
+    fragment = is_htmx_fragment(request.headers)
+    template = "partials/custom_response.html" if fragment else "custom.html"
+    response = templates.TemplateResponse(request, template, context)
+    response.headers["Vary"] = "HX-Request"
+    if fragment:
+        push = context["share_url"] or ("false" if context["errors"] else "/custom")
+        response.headers["HX-Push-Url"] = push
+    return response
+
+
+def _evaluated(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
+    """The evaluated context of an export link; a 422 page naming each bad field."""
+    context = custom_context(params, catalog)
+    if context["result"] is None:
+        errors = context["errors"] or {"form": "Enter the screw and the application."}
+        detail = [{"field": _label(name), "message": m} for name, m in errors.items()]
+        raise AppError(422, "invalid input", detail)
+    return context
+
+
+def _label(name: str) -> str:
+    """The form label of a screw or application field; other keys as they are."""
+    if name in BY_NAME:
+        return BY_NAME[name].label
+    return BY_PAGE[name].label if name in BY_PAGE else name
+
+
+def _attachment(extension: str) -> dict[str, str]:
+    return {"Content-Disposition": f'attachment; filename="{EXPORT_NAME}.{extension}"'}
+
+
+@router.get("/custom/export.csv")
+async def custom_csv(request: Request, catalog: CatalogDep) -> Response:
+    """The inputs, the screw and its evaluation as CSV in the link's display units."""
+    context = _evaluated(request.query_params, catalog)
+    result: EvaluateOut = context["result"]
+    body = candidate_csv(
+        result.inputs.model_dump(), context["screw_rows"], result.candidate, context["units"]
+    )
+    return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
+
+
+@router.get("/custom/export.json")
+async def custom_json(request: Request, catalog: CatalogDep) -> Response:
+    """The API's evaluate response (API units) for the link's screw and application."""
+    context = _evaluated(request.query_params, catalog)
+    result = run_evaluation(context["result"].inputs, context["screw"], catalog)
+    return ModelJSON(result, headers=_attachment("json"))
