@@ -66,7 +66,9 @@ class InputField:
     ``drawn`` choice is shown as radio buttons, each with a drawing of its value
     ("fixed-free": left end, right end). A ``text`` field is one id or name (``none_word``
     meaning none); a ``list`` field is several, a list in JSON, a repeated query parameter,
-    or comma-separated text on the page and in share links.
+    or comma-separated text on the page and in share links. A ``catalog_only`` field
+    filters or ranks catalog screws and means nothing for a screw of the user's own (the
+    /custom page leaves it out).
     """
 
     api: str
@@ -87,6 +89,7 @@ class InputField:
     needs: tuple[str, ...] = ()
     none_word: str = ""
     drawn: bool = False
+    catalog_only: bool = False
 
     def __post_init__(self) -> None:
         """Refuse a number without bounds (they keep every result finite) and display
@@ -148,6 +151,7 @@ FIELDS: tuple[InputField, ...] = (
         help="Travel per turn; empty or “any” for every lead", group="Axis", kind="number",
         bounds=(0.01, 1000.0), si_factor=MM, quantity="length", unit="mm",
         none_word="any",
+        catalog_only=True,
     ),
     InputField(
         api="speed_mm_s", page="speed", core="speed_m_s", label="Linear speed",
@@ -207,6 +211,7 @@ FIELDS: tuple[InputField, ...] = (
         texts={
             "auto": "Auto (coated or not)", "tfe": "TFE coated", "none": "Uncoated",
         },
+        catalog_only=True,
     ),
     InputField(
         api="oil_present", page="oil_present", core="oil_present", label="Oil present",
@@ -297,6 +302,7 @@ FIELDS: tuple[InputField, ...] = (
             "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
             "size": "Smallest size",
         },
+        catalog_only=True,
     ),
     InputField(
         api="advice", page="advice", core="advice", label="Advice",
@@ -304,21 +310,25 @@ FIELDS: tuple[InputField, ...] = (
         "rank such screws last, or reject them",
         group="Results", kind="choice", default="warn", options=AdvicePolicy,
         texts={"warn": "Warn", "rank": "Warn and rank last", "reject": "Reject"},
+        catalog_only=True,
     ),
     InputField(
         api="limit", page="limit", core="limit", label="Number of results",
         help="How many passing screws to list, 1–100", group="Results",
         kind="whole number", default=10, bounds=(1, 100),
+        catalog_only=True,
     ),
     InputField(
         api="family", page="family", core="families", label="Families",
         help="Catalog family ids, comma-separated; empty for every family",
         group="Nut and environment", kind="list",
+        catalog_only=True,
     ),
     InputField(
         api="nut_material", page="nut_material", core="nut_material", label="Nut material",
         help="e.g. bronze, acetal or polyacetal; empty or “any” for every nut",
         group="Nut and environment", kind="text", none_word="any",
+        catalog_only=True,
     ),
 )
 # fmt: on

@@ -9,6 +9,7 @@ from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog
+from app.fields import FIELDS
 from app.schemas import CustomScrewIn, MaterialIn
 from app.web.screw_form import BY_NAME, MATERIAL_FIELDS, SCREW_FIELDS
 
@@ -211,3 +212,14 @@ def test_catalog_regions_have_unique_labels(client: TestClient) -> None:
     assert all(labels) and len(set(labels)) == len(labels)
     captions = [c.text for c in page.select("caption")]
     assert len(set(captions)) == len(captions)
+
+
+def test_custom_page_leaves_out_the_catalog_filters(client: TestClient) -> None:
+    """Lead, coating, family, nut material and the ranking only choose among catalog
+    screws: the /custom form does not offer them, the selector does."""
+    custom = soup(client.get("/custom").text)
+    selector = soup(client.get("/").text)
+    for field in FIELDS:
+        named = f'[name="{field.page}"]'  # radio buttons share the name, not an id
+        assert selector.select_one(named) is not None, field.page
+        assert (custom.select_one(named) is not None) == (not field.catalog_only), field.page

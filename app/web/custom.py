@@ -71,7 +71,7 @@ def _base_context(params: Mapping[str, str]) -> dict[str, Any]:
         "converted": converted,
         "d": Display(units),
         "defaults": form_defaults(units),
-        "fields": BY_PAGE,
+        "fields": {page: f for page, f in BY_PAGE.items() if not f.catalog_only},
         "groups": GROUPS,
         "screw_fields": SCREW_FIELDS,
         "material_fields": MATERIAL_FIELDS,
