@@ -148,3 +148,13 @@ def test_a_wrong_formula_text_is_caught(
     app = light_app(oil_present=False) if name == "oil" else APPS["vertical-compression-torque"]
     monkeypatch.setattr(type(check), "formula", wrong)
     assert formula_mismatches(check, app, catalog.table) != []
+
+
+def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
+    """The governing limit's provenance is read from ``capacity_sources``: every check
+    whose capacity is a catalog value names it (among the fields it reads); only the
+    checks whose capacity is the user's own input leave it empty."""
+    user_limits = {c.name for c in REGISTRY if not c.capacity_sources}
+    assert user_limits == {"torque", "holding", "accuracy"}
+    for c in REGISTRY:
+        assert set(c.capacity_sources) <= set(c.sources), c.name

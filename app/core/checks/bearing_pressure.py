@@ -72,6 +72,7 @@ class BearingPressure(Check):
         "(after Rothbart) for bronze; the nut material's p_max and PV (catalog)"
     )
     sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length", "pitch")
+    capacity_sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length")
     order = 42
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:

@@ -36,6 +36,7 @@ class MaxSlidingSpeed(Check):
     formula = "v = n / 60 * sqrt(lead^2 + (pi * d_2)^2); v_max = v_nut"
     source = "the nut material's maximum sliding speed (catalog, see its provenance)"
     sources = ("max_sliding_speed", "pitch")
+    capacity_sources = ("max_sliding_speed",)
     order = 44
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
