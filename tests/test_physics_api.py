@@ -141,7 +141,7 @@ def test_backdrive_efficiency_is_labelled_by_its_friction(client: TestClient) ->
 def test_a_short_heavy_column_fails_on_yield(client: TestClient) -> None:
     """Custom 30 mm steel screw, 25 mm root, 200 kN over 100 mm, fixed-simple: 407 MPa at the
     root against 0.5 x 310 MPa; slenderness (0.1 / sqrt 2) / (0.025 / 4) = 11.3, far below
-    sqrt(2 pi^2 E / S_y) = 114.8, so Johnson: A (S_y - (S_y s / 2 pi)^2 / E)."""
+    sqrt(2 pi^2 E / S_y) = 114.5, so Johnson: A (S_y - (S_y s / 2 pi)^2 / E)."""
     screw = {"outer_diameter_mm": 30, "root_diameter_mm": 25, "lead_mm": 6,
              "friction_dynamic": 0.15, "friction_static": 0.2, "material": "steel"}  # fmt: skip
     c = evaluate(client, screw, load_n=200e3, speed_mm_s=10, length_mm=100)
