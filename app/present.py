@@ -235,6 +235,58 @@ def candidate_out(
     )
 
 
+def candidate_summary(ev: Evaluation) -> dict[str, Any]:
+    """A passing candidate in the compact form (``CandidateSummaryOut``), API units."""
+    s, life = ev.screw, ev.life
+    years = None if life is None else [life.years_min, life.years_max]
+    return {
+        "id": s.id,
+        "series": s.series_id,
+        "series_name": s.series_name,
+        "anti_backlash": s.anti_backlash,
+        "coated": s.coated,
+        "outer_diameter_mm": _mm(s.outer_diameter_m),
+        "lead_mm": _mm(s.lead_m),
+        "rpm": ev.rpm,
+        "total_torque_nm": ev.torque.total_nm,
+        "efficiency": ev.efficiency,
+        "self_locking": ev.self_locking,
+        "critical_speed_margin": ev.critical_speed.margin,
+        "life_years": None if years is None or None in years else years,
+        "utilization": {c.name: c.utilization for c in ev.checks},
+        "governing_check": ev.governing_check,
+        "governing_limit_provenance": ev.governing_limit_provenance,
+        "passed": ev.passed,
+        "robust": ev.robust,
+        "hinges_on": list(ev.hinges_on),
+        "warnings": [c.name for c in ev.checks if c.kind == "advice" and not c.passed],
+    }
+
+
+def rejected_summary(ev: Evaluation, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+    """A rejected candidate in the compact form (``RejectedSummaryOut``): its failed
+    checks with their utilisation and fix, and the fixes joined as in the full form."""
+    failed, fixes = [], []
+    for c in ev.checks:
+        if not c.passed:
+            fix = c.fix
+            text = None if fix is None else render(fix, units)
+            failed.append(
+                {"name": c.name, "kind": c.kind, "utilization": c.utilization, "fix": text}
+            )
+            fixes += [text] if text else []
+    return {"id": ev.screw.id, "failed": failed, "fix": " ".join(fixes) if fixes else None}
+
+
+def selection_summary(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+    """Candidates, rejected, counts and summary in the compact form (``SelectSummaryOut``)."""
+    return {
+        "candidates": [candidate_summary(e) for e in sel.candidates],
+        "rejected": [rejected_summary(e, units) for e in sel.rejected],
+        **_counts_and_summary(sel, units),
+    }
+
+
 def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
     """Candidates, rejected, counts and summary of a selection (the rest of SelectOut is
     the caller's: inputs, links, catalog version)."""
@@ -243,6 +295,13 @@ def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dic
     return {
         "candidates": [candidate_out(e, vacuum, units, brake) for e in sel.candidates],
         "rejected": [candidate_out(e, vacuum, units, brake) for e in sel.rejected],
+        **_counts_and_summary(sel, units),
+    }
+
+
+def _counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]:
+    """The counts and the summary of a selection, shared by the compact and full forms."""
+    return {
         "counts": CountsOut.model_construct(
             evaluated=sel.evaluated,
             passed=sel.passed,

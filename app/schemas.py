@@ -341,6 +341,94 @@ class SelectOut(BaseModel):
     )
 
 
+class FormulasOut(BaseModel):
+    formulas: dict[str, FormulaOut] = Field(
+        description="Quantity (dotted path in a candidate) -> formula, core function, source."
+    )
+
+
+class CandidateSummaryOut(BaseModel):
+    """A passing candidate as the compact select response gives it: the numbers the
+    results table shows; ``detail=full`` (or POST /api/v1/evaluate) gives everything."""
+
+    id: str
+    series: str
+    series_name: str
+    anti_backlash: bool
+    coated: bool
+    outer_diameter_mm: float
+    lead_mm: float
+    rpm: float
+    total_torque_nm: float
+    efficiency: float
+    self_locking: bool
+    critical_speed_margin: float
+    life_years: list[float] | None
+    utilization: dict[str, float | None] = Field(
+        description="Check name -> value / limit, for every check that applies."
+    )
+    governing_check: str | None
+    governing_limit_provenance: ProvenanceKind | None
+    passed: bool
+    robust: bool | None
+    hinges_on: list[str]
+    warnings: list[str] = Field(description="Names of the failed advice checks.")
+
+
+class SelectQuery(ApplicationIn):
+    """The GET select's query: the application's fields and the response's form."""
+
+    detail: Literal["summary", "full"] = Field(
+        "summary",
+        description="summary (default): passing candidates as the results table shows "
+        "them, rejected ones as their failed checks with utilisation and fix, formulas at "
+        "/api/v1/formulas (SelectSummaryOut); full: every number, check message, formula "
+        "and provenance of every candidate, and the formulas table (SelectOut).",
+    )
+
+    @field_validator("*")
+    @classmethod
+    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
+        """The application's fields as ``ApplicationIn`` checks them; ``detail`` as it is."""
+        if info.field_name == "detail":
+            return value
+        return super()._needs(value, info)
+
+    def application(self) -> ApplicationIn:
+        """The application's fields alone, as the body of a POST would give them."""
+        values = {name: getattr(self, name) for name in ApplicationIn.model_fields}
+        return ApplicationIn.model_construct(self.model_fields_set - {"detail"}, **values)
+
+
+class FailedCheckOut(BaseModel):
+    name: str
+    kind: Literal["limit", "advice"]
+    utilization: float | None = Field(description="value / limit; above 1 fails.")
+    fix: str | None
+
+
+class RejectedSummaryOut(BaseModel):
+    """A rejected candidate as the compact select response gives it."""
+
+    id: str
+    failed: list[FailedCheckOut] = Field(description="Every failed check, in check order.")
+    fix: str | None = Field(description="What would make it pass.")
+
+
+class SelectSummaryOut(BaseModel):
+    """The default select response; ``detail=full`` gives ``SelectOut``."""
+
+    detail: Literal["summary"]
+    inputs: ApplicationIn
+    candidates: list[CandidateSummaryOut]
+    rejected: list[RejectedSummaryOut]
+    counts: CountsOut
+    summary: SummaryOut
+    catalog_version: str
+    share_url: str
+    formulas_url: str = Field(description="The formulas table (GET), the same for every query.")
+
+
 class EvaluateOut(BaseModel):
     inputs: ApplicationIn
     candidate: CandidateOut

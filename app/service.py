@@ -1,13 +1,14 @@
 """The one path from validated inputs to a result, shared by the API and the pages."""
 
 from collections.abc import Mapping
+from typing import Any
 
 from app.catalog import Catalog
 from app.core.checks.base import Reach
 from app.core.evaluate import evaluate
 from app.core.selection import select, with_robustness
 from app.formulas import FORMULAS
-from app.present import candidate_out, custom_screw, selection_out
+from app.present import candidate_out, custom_screw, selection_out, selection_summary
 from app.schemas import (
     ApplicationIn,
     CatalogScrewIn,
@@ -21,6 +22,8 @@ from app.web.form import share_query
 
 #: The formulas table as output models, built once.
 FORMULAS_OUT = {name: FormulaOut(**f) for name, f in FORMULAS.items()}
+#: Where the compact select response points for the formulas table.
+FORMULAS_URL = "/api/v1/formulas"
 
 
 class UnknownScrew(LookupError):
@@ -40,6 +43,20 @@ def run_selection(
         share_url="/?" + share_query(inputs),
         formulas=FORMULAS_OUT,
     )
+
+
+def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
+    """Select and rank over the catalog: the API's compact select response
+    (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
+    selection = select(inputs.to_core(), catalog.table)
+    return {
+        "detail": "summary",
+        "inputs": inputs,
+        **selection_summary(selection),
+        "catalog_version": catalog.version,
+        "share_url": "/?" + share_query(inputs),
+        "formulas_url": FORMULAS_URL,
+    }
 
 
 def run_evaluation(

@@ -21,6 +21,8 @@ from app.catalog import Catalog, load_catalog
 from app.schemas import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 
 API = "/api/v1"
+#: The select response in its full form (every number, message and formula).
+FULL = {"detail": "full"}
 BASE = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 CATALOG_SCREW = "ZBX8000-L10"
 SERIES_IDS = sorted(load_catalog().series)
@@ -246,7 +248,7 @@ def select(api: Api, **fields: Any) -> Any:
     """POST /select, validated against SelectOut; cached per input for the module."""
     key = json.dumps(fields, sort_keys=True)
     if key not in _selections:
-        _selections[key] = ok(api.post(f"{API}/select", json=fields), SelectOut)
+        _selections[key] = ok(api.post(f"{API}/select", json=fields, params=FULL), SelectOut)
     return _selections[key]
 
 
@@ -310,7 +312,7 @@ def test_get_select_query_parameters_are_the_application_fields(api: Api) -> Non
     schema = ok(api.get("/openapi.json"))
     names = {p["name"] for p in schema["paths"]["/api/v1/select"]["get"]["parameters"]}
     body = set(schema["components"]["schemas"]["ApplicationIn"]["properties"])
-    assert names == body
+    assert names == body | {"detail"}
 
 
 # --- GET /api/v1/series -----------------------------------------------------------------
@@ -393,14 +395,14 @@ SELECT_INPUTS = {
 def test_select_get_and_post_give_the_same_result(api: Api, name: str) -> None:
     fields = SELECT_INPUTS[name]
     post = select(api, **fields)
-    get = ok(api.get(f"{API}/select", params=query(fields)), SelectOut)
+    get = ok(api.get(f"{API}/select", params={**query(fields), **FULL}), SelectOut)
     assert get == post
 
 
 @pytest.mark.parametrize("name", SELECT_INPUTS)
 def test_select_is_deterministic(api: Api, name: str) -> None:
     fields = SELECT_INPUTS[name]
-    assert ok(api.post(f"{API}/select", json=fields)) == select(api, **fields)
+    assert ok(api.post(f"{API}/select", json=fields, params=FULL)) == select(api, **fields)
 
 
 def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
@@ -1002,7 +1004,7 @@ def test_extreme_input_answers_finite_or_is_refused(
     api: Api, endpoint: str, fields: dict[str, Any]
 ) -> None:
     if endpoint == "select":
-        response = api.post(f"{API}/select", json=fields)
+        response = api.post(f"{API}/select", json=fields, params=FULL)
         model: type[BaseModel] = SelectOut
     else:
         response = api.post(f"{API}/evaluate", json={"application": BASE, "screw": fields})

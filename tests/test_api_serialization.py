@@ -7,7 +7,7 @@ import pytest
 from fastapi.testclient import TestClient
 from pydantic import BaseModel
 
-from app.schemas import EvaluateOut, SelectOut
+from app.schemas import EvaluateOut, SelectOut, SelectSummaryOut
 
 BASE: dict[str, Any] = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500}
 APPLICATIONS: dict[str, dict[str, Any]] = {
@@ -44,13 +44,26 @@ def _as_validated(model: type[BaseModel], served: bytes) -> bytes:
 
 @pytest.mark.parametrize("body", APPLICATIONS.values(), ids=APPLICATIONS.keys())
 def test_select_serves_what_the_model_would(client: TestClient, body: dict[str, Any]) -> None:
+    full = {"detail": "full"}
+    for response in (
+        client.post("/api/v1/select", json=body, params=full),
+        client.get("/api/v1/select", params={**body, **full}),
+    ):
+        assert response.status_code == 200, response.text
+        assert response.headers["content-type"] == "application/json"
+        assert response.content == _as_validated(SelectOut, response.content)
+
+
+@pytest.mark.parametrize("body", APPLICATIONS.values(), ids=APPLICATIONS.keys())
+def test_compact_select_serves_what_its_model_would(
+    client: TestClient, body: dict[str, Any]
+) -> None:
     for response in (
         client.post("/api/v1/select", json=body),
         client.get("/api/v1/select", params=body),
     ):
         assert response.status_code == 200, response.text
-        assert response.headers["content-type"] == "application/json"
-        assert response.content == _as_validated(SelectOut, response.content)
+        assert response.content == _as_validated(SelectSummaryOut, response.content)
 
 
 @pytest.mark.parametrize(

@@ -86,7 +86,7 @@ def test_plain_cells_pass_unchanged(value: object) -> None:
 
 
 def test_a_csv_export_quotes_spaced_and_fullwidth_formulas(client: TestClient) -> None:
-    result = client.get(SELECT).json()
+    result = client.get(SELECT + "&detail=full").json()
     hostile = {**result["candidates"][0], "id": " =HYPERLINK(1)", "series": "＝SUM(A1)"}
     units = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
     typed = SelectOut.model_validate({**result, "candidates": [hostile], "rejected": []})

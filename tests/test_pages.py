@@ -41,7 +41,9 @@ def candidate_ids(page: BeautifulSoup) -> list[str]:
 
 
 def api_select(client: TestClient, **params: Any) -> dict[str, Any]:
-    body: dict[str, Any] = client.get("/api/v1/select", params={**API_AXIS, **params}).json()
+    body: dict[str, Any] = client.get(
+        "/api/v1/select", params={**API_AXIS, **params, "detail": "full"}
+    ).json()
     return body
 
 
@@ -400,7 +402,8 @@ def test_rejected_are_grouped_by_failing_check_with_fixes(client: TestClient) ->
 def test_no_passing_candidate_lists_changes_with_apply_links(client: TestClient) -> None:
     params = {"load": "10000", "speed": "500", "length": "3000"}
     api = client.get(
-        "/api/v1/select", params={"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000}
+        "/api/v1/select",
+        params={"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000, "detail": "full"},
     ).json()
     page = soup(client.get("/", params=params))
     assert api["counts"]["passed"] == 0
@@ -577,7 +580,8 @@ def test_fixes_and_proposals_follow_the_chosen_units(client: TestClient) -> None
     api = client.get(
         "/api/v1/select",
         params={"load_n": 674 * 4.4482216152605, "speed_mm_s": 19.7 * 25.4,
-                "length_mm": 118 * 25.4, "family": ["B", "ZBX", "KHD", "VHD"]},
+                "length_mm": 118 * 25.4, "family": ["B", "ZBX", "KHD", "VHD"],
+                "detail": "full"},
     ).json()  # fmt: skip
     units = {"load_n": " lbf", "speed_mm_s": " in/s", "length_mm": " in"}
     assert [p.rsplit(" ", 1)[1] for p in proposals] == [

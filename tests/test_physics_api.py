@@ -24,7 +24,8 @@ def client(app: FastAPI) -> Iterator[TestClient]:
 
 
 def post(client: TestClient, path: str, body: dict[str, Any]) -> Any:
-    response = client.post(f"{API}/{path}", json=body)
+    params = {"detail": "full"} if path == "select" else {}
+    response = client.post(f"{API}/{path}", json=body, params=params)
     assert response.status_code == 200, response.text
     return response.json()
 

@@ -41,7 +41,7 @@ def _lookup(candidate: dict[str, Any], dotted: str) -> Any:
 
 def test_every_formula_key_is_a_field_of_a_candidate(client: TestClient) -> None:
     body = client.post(
-        "/api/v1/select",
+        "/api/v1/select?detail=full",
         json={
             "load_n": 100,
             "speed_mm_s": 50,
@@ -65,6 +65,7 @@ def test_candidate_provenance_covers_every_check_source(client: TestClient) -> N
     body = client.get(
         "/api/v1/select",
         params={
+            "detail": "full",
             "load_n": 100,
             "speed_mm_s": 50,
             "length_mm": 500,

@@ -1,6 +1,6 @@
 """JSON API under /api/v1: thin over ``app.service`` and the core."""
 
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Query
 from fastapi.responses import Response
@@ -17,12 +17,21 @@ from app.schemas import (
     ErrorOut,
     EvaluateIn,
     EvaluateOut,
+    FormulasOut,
     HealthOut,
     SelectOut,
+    SelectQuery,
+    SelectSummaryOut,
     SeriesListOut,
     SeriesOut,
 )
-from app.service import UnknownScrew, run_evaluation, run_selection
+from app.service import (
+    FORMULAS_OUT,
+    UnknownScrew,
+    run_evaluation,
+    run_selection,
+    run_selection_summary,
+)
 from app.units import api_value
 
 ERRORS: dict[int | str, dict[str, Any]] = {
@@ -85,16 +94,38 @@ async def get_series(series_id: str, catalog: CatalogDep) -> dict[str, Any]:
     return series_dict(series)
 
 
-@router.post("/select", response_model=SelectOut)
-async def select_post(inputs: ApplicationIn, catalog: CatalogDep) -> Response:
+DetailQuery = Annotated[
+    Literal["summary", "full"], Query(description=SelectQuery.model_fields["detail"].description)
+]
+
+
+def _selection(inputs: ApplicationIn, catalog: CatalogDep, detail: str) -> Response:
+    """The select response in the form asked for."""
+    if detail == "full":
+        return ModelJSON(run_selection(inputs, catalog))
+    return ModelJSON(run_selection_summary(inputs, catalog))
+
+
+@router.post("/select", response_model=SelectSummaryOut | SelectOut)
+async def select_post(
+    inputs: ApplicationIn, catalog: CatalogDep, detail: DetailQuery = "summary"
+) -> Response:
     """Rank every catalog candidate for the application in the JSON body."""
-    return ModelJSON(run_selection(inputs, catalog))
+    return _selection(inputs, catalog, detail)
 
 
-@router.get("/select", response_model=SelectOut)
-async def select_get(inputs: Annotated[ApplicationIn, Query()], catalog: CatalogDep) -> Response:
-    """The same as POST, with the fields as query parameters (a shareable link)."""
-    return ModelJSON(run_selection(inputs, catalog))
+@router.get("/select", response_model=SelectSummaryOut | SelectOut)
+async def select_get(query: Annotated[SelectQuery, Query()], catalog: CatalogDep) -> Response:
+    """The same as POST, with the fields (and ``detail``) as query parameters (a
+    shareable link)."""
+    return _selection(query.application(), catalog, query.detail)
+
+
+@router.get("/formulas", response_model=FormulasOut)
+async def list_formulas() -> dict[str, Any]:
+    """Every reported quantity's formula, core function and source: the same for every
+    selection, so the compact select response links here instead of repeating it."""
+    return {"formulas": FORMULAS_OUT}
 
 
 @router.post("/evaluate", response_model=EvaluateOut)

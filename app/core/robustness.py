@@ -38,17 +38,38 @@ def at_values(screw: ScrewSpec, changes: Mapping[str, float]) -> ScrewSpec:
     return replace(screw, **fields)
 
 
+#: Variants of the screws seen so far, by ``id`` of the screw (kept alive beside them).
+_VARIANTS: dict[int, tuple[ScrewSpec, tuple[tuple[str, ScrewSpec], ...]]] = {}
+_VARIANTS_MAX = 100_000
+
+
+def variants_of(screw: ScrewSpec) -> tuple[tuple[str, ScrewSpec], ...]:
+    """``screw`` at the low and the high end of each of its ranged values, one at a
+    time, with the value's name; built once per screw (catalog screws live on)."""
+    held = _VARIANTS.get(id(screw))
+    if held is not None and held[0] is screw:
+        return held[1]
+    found = tuple(
+        (name, at_values(screw, changes))
+        for name, ends in screw.assumption_ends.items()
+        for changes in ends
+        if changes
+    )
+    if len(_VARIANTS) >= _VARIANTS_MAX:
+        _VARIANTS.clear()
+    _VARIANTS[id(screw)] = (screw, found)
+    return found
+
+
 def robustness_of(app: Application, screws: Sequence[ScrewSpec]) -> list[Robustness]:
     """``robustness`` of many passing screws with one screening of every variant: each
     screw at the low and the high end of each of its ranged values, one at a time."""
     variants: list[ScrewSpec] = []
     owners: list[tuple[int, str]] = []
     for k, screw in enumerate(screws):
-        for name, ends in screw.assumption_ends.items():
-            for changes in ends:
-                if changes:
-                    variants.append(at_values(screw, changes))
-                    owners.append((k, name))
+        for name, variant in variants_of(screw):
+            variants.append(variant)
+            owners.append((k, name))
     hinges: list[list[str]] = [[] for _ in screws]
     if variants:
         passed = screen_table(app, CandidateTable.build(variants)).passed.tolist()

@@ -19,8 +19,8 @@ Mask = NDArray[np.bool_]
 
 
 def column(values: Sequence[float | None]) -> Array:
-    """Float column; None (no such limit) becomes NaN."""
-    return np.array([np.nan if v is None else v for v in values], dtype=np.float64)
+    """Float column; None (no such limit) becomes NaN (as numpy converts it)."""
+    return np.array(values, dtype=np.float64)
 
 
 def _bands(screws: Sequence[ScrewSpec]) -> tuple[Array, Mask]:

@@ -19,7 +19,7 @@ FIRST_LOAD_LIMIT = 60 * 1024
 
 
 def api(live_server: str, query: str) -> dict[str, Any]:
-    with urllib.request.urlopen(f"{live_server}/api/v1/select?{query}") as response:
+    with urllib.request.urlopen(f"{live_server}/api/v1/select?detail=full&{query}") as response:
         body: dict[str, Any] = json.load(response)
     return body
 
@@ -37,7 +37,7 @@ def _proposed_change(live_server: str) -> dict[str, float]:
     """The API's proposed change of the application for the impossible axis."""
     seed = "&".join(f"family={f}" for f in ("B", "ZBX", "KHD", "VHD"))
     query = f"load_n=3000&speed_mm_s=500&length_mm=3000&{seed}"
-    with urllib.request.urlopen(f"{live_server}/api/v1/select?{query}") as response:
+    with urllib.request.urlopen(f"{live_server}/api/v1/select?detail=full&{query}") as response:
         change: dict[str, float] = json.load(response)["summary"]["input_change"]
     return change
 

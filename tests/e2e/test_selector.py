@@ -21,7 +21,7 @@ def ids(page: Any) -> list[str]:
 
 def api_select(live_server: str) -> dict[str, Any]:
     query = "load_n=100&lead_mm=10&speed_mm_s=50&length_mm=500"
-    with urllib.request.urlopen(f"{live_server}/api/v1/select?{query}") as response:
+    with urllib.request.urlopen(f"{live_server}/api/v1/select?detail=full&{query}") as response:
         body: dict[str, Any] = json.load(response)
     return body
 
