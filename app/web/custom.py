@@ -11,17 +11,17 @@ from fastapi.responses import HTMLResponse, Response
 from app.catalog import Catalog
 from app.deps import CatalogDep
 from app.errors import AppError
-from app.fields import BY_PAGE, GROUPS
+from app.fields import BY_PAGE
 from app.responses import ModelJSON
 from app.schemas import ApplicationIn, CustomScrewIn, EvaluateOut
 from app.server.headers import is_htmx_fragment
 from app.service import run_evaluation
-from app.units import TORQUE_LABELS, Display, api_value
+from app.units import Display, api_value
 from app.web.export import candidate_csv
 from app.web.figures import critical_speed_figure, pv_figure, torque_figure
-from app.web.form import TRUE_WORDS, UNIT_CHOICES, form_defaults, parse_inputs, share_query
+from app.web.form import parse_inputs, share_query
 from app.web.form import summary_rows as input_rows
-from app.web.pages import REQUIRED, advanced_open, form_state
+from app.web.pages import REQUIRED, form_context
 from app.web.screw_form import (
     BY_NAME,
     DEFAULT_MATERIAL,
@@ -56,33 +56,17 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
 
 
 def _base_context(params: Mapping[str, str]) -> dict[str, Any]:
-    """The form's state before any evaluation: typed values, units, the field tables."""
-    units, values, converted, typed = form_state(params)
+    """The form's state before any evaluation: the selector's form context without the
+    catalog-only inputs, plus the screw's own fields."""
     return {
-        "typed": typed,
-        "units": units,
-        "values": values,
-        "errors": {},
-        "result": None,
-        "share_url": None,
-        "query": "",
-        "figures": {},
-        "charting_passed": True,
-        "converted": converted,
-        "d": Display(units),
-        "defaults": form_defaults(units),
+        **form_context(params),
         "fields": {page: f for page, f in BY_PAGE.items() if not f.catalog_only},
-        "groups": GROUPS,
         "screw_fields": SCREW_FIELDS,
         "material_fields": MATERIAL_FIELDS,
         "materials": MATERIALS,
         "own_material": OWN_MATERIAL,
         "default_material": DEFAULT_MATERIAL,
         "input_rows": input_rows,
-        "true_words": TRUE_WORDS,
-        "advanced_open": advanced_open,
-        "unit_choices": UNIT_CHOICES,
-        "torque_labels": TORQUE_LABELS,
     }
 
 

@@ -54,10 +54,11 @@ def form_state(
     return units, values, converted_fields(entered, units), typed
 
 
-def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
-    """Parse the page query, run the selection when the form was filled in."""
+def form_context(params: Mapping[str, str]) -> dict[str, Any]:
+    """What every page with the application form renders before any result: the typed
+    values and units, the field table and its groups, no result yet."""
     units, values, converted, typed = form_state(params)
-    context: dict[str, Any] = {
+    return {
         "typed": typed,
         "units": units,
         "values": values,
@@ -74,14 +75,17 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         "groups": GROUPS,
         "input_rows": summary_rows,
         "true_words": TRUE_WORDS,
-        "rejected_groups": [],
         "advanced_open": advanced_open,
         "unit_choices": UNIT_CHOICES,
         "torque_labels": TORQUE_LABELS,
-        "check_label": check_label,
-        "columns": BY_COLUMN,
-        "rank_text": "",
     }
+
+
+def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
+    """Parse the page query, run the selection when the form was filled in."""
+    context = form_context(params)
+    context.update(rejected_groups=[], check_label=check_label, columns=BY_COLUMN, rank_text="")
+    units, values = context["units"], context["values"]
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
     inputs, context["errors"] = parse_inputs(values, units)
