@@ -29,7 +29,11 @@ def _f(formula: str, function: str, source: str) -> Formula:
 
 
 FORMULAS: dict[str, Formula] = {
-    "pitch_diameter_mm": _f("d_p = (OD + RD) / 2", "geometry.pitch_diameter", SEED),
+    "pitch_diameter_mm": _f(
+        "d_p = d2 of a standard thread (ISO 2904: d - 0.5 P), else (OD + RD) / 2",
+        "geometry.pitch_diameter",
+        SEED + "; ISO 2904",
+    ),
     "lead_angle_deg": _f("lambda = atan(lead / (pi d_p))", "geometry.lead_angle", SHIGLEY),
     "rpm": _f("n = 60 v / lead", "geometry.screw_speed_rpm", SEED + " (RS = speed / lead)"),
     "axial_load_n": _f("F = load (+ m g when vertical)", "quantities.axial_load", "statics"),

@@ -7,7 +7,7 @@ from collections.abc import Mapping as Units
 from typing import Any
 
 from app.catalog import Material, Series
-from app.core.formulas import geometry, torque
+from app.core.formulas import torque
 from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, Selection
 from app.fields import BY_API, FIELDS
 from app.schemas import (
@@ -165,7 +165,7 @@ def _thread(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
     return {
         "outer_diameter_mm": _mm(s.outer_diameter_m),
         "root_diameter_mm": _mm(s.root_diameter_m),
-        "pitch_diameter_mm": _mm(geometry.pitch_diameter(s.outer_diameter_m, s.root_diameter_m)),
+        "pitch_diameter_mm": _mm(ev.pitch_diameter_m),
         "lead_mm": _mm(s.lead_m),
         "lead_angle_deg": math.degrees(ev.lead_angle_rad),
         "efficiency": ev.efficiency,

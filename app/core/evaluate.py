@@ -162,6 +162,7 @@ def _accuracy(s: ScrewSpec, r: Quantities[float]) -> Accuracy:
 
 #: Axis-independent numbers of the thread that every evaluation reports.
 THREAD_COLUMNS = (
+    "pitch_diameter_m",
     "lead_angle_rad",
     "efficiency",
     "efficiency_square_thread",
@@ -226,6 +227,7 @@ def _evaluation(
         axial_load_n=r.force_n,
         peak_axial_load_n=r.peak_force_n,
         rpm=r.rpm,
+        pitch_diameter_m=thread["pitch_diameter_m"],
         lead_angle_rad=thread["lead_angle_rad"],
         efficiency=thread["efficiency"],
         efficiency_square_thread=thread["efficiency_square_thread"],

@@ -253,6 +253,7 @@ class Evaluation:
     axial_load_n: float
     peak_axial_load_n: float
     rpm: float
+    pitch_diameter_m: float
     lead_angle_rad: float
     efficiency: float
     efficiency_square_thread: float

@@ -113,7 +113,10 @@ class CandidateTable:
             return np.array([getattr(s, name) for s in screws], dtype=bool)
 
         od, rd, lead = col("outer_diameter_m"), col("root_diameter_m"), col("lead_m")
-        d_p = geometry.pitch_diameter(od, rd)
+        # a standard thread states its pitch diameter (ISO 2904 d2 = d - 0.5 P); otherwise
+        # the seed's (OD + RD) / 2
+        d2 = col("flank_pitch_diameter_m")
+        d_p = np.where(np.isnan(d2), geometry.pitch_diameter(od, rd), d2)
         tan_l = geometry.tan_lead_angle(lead, d_p)
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
