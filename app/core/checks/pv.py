@@ -49,7 +49,7 @@ class NutPV(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         return Phrase(
-            "PV {pv} " + verb + " the nut limit {limit}.",
+            "PV at the running thrust, {pv}, " + verb + " the nut limit {limit}.",
             {"pv": Amount(r.pv_pa_m_s, "pv"), "limit": Amount(s.pv_limit_pa_m_s or 0.0, "pv")},
         )
 
