@@ -25,7 +25,7 @@ from typing import Any, Literal, get_args
 from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
 from app.units import Quantity, from_api, label
 
-Kind = Literal["number", "whole number", "yes-no", "choice", "text", "list"]
+Kind = Literal["number", "whole number", "yes-no", "choice", "text", "list", "curve"]
 Default = float | int | bool | str | None
 #: millimetres (and mm/s, mm/s²) to metres: the API's length unit to SI.
 MM = 1e-3
@@ -37,6 +37,7 @@ GROUPS = (
     "Ends",
     "Nut and environment",
     "Duty and requirements",
+    "Motor and move",
     "Safety factors",
     "Results",
 )
@@ -66,9 +67,10 @@ class InputField:
     ``drawn`` choice is shown as radio buttons, each with a drawing of its value
     ("fixed-free": left end, right end). A ``text`` field is one id or name (``none_word``
     meaning none); a ``list`` field is several, a list in JSON, a repeated query parameter,
-    or comma-separated text on the page and in share links. A ``catalog_only`` field
-    filters or ranks catalog screws and means nothing for a screw of the user's own (the
-    /custom page leaves it out).
+    or comma-separated text on the page and in share links. A ``curve`` field is points
+    (x, y): pairs in JSON, ``x:y,x:y`` in query strings and share links, lines of "x y"
+    on the page. A ``catalog_only`` field filters or ranks catalog screws and means nothing
+    for a screw of the user's own (the /custom page leaves it out).
     """
 
     api: str
@@ -113,9 +115,13 @@ class InputField:
 
         >>> BY_API["family"].to_si(["TR-C45", "B"]), BY_API["nut_material"].to_si("any")
         (('TR-C45', 'B'), None)
+        >>> BY_API["motor_curve"].to_si([[0, 0.5], [3000, 0.2]])
+        ((0.0, 0.5), (3000.0, 0.2))
         """
         if self.kind == "list":
             return tuple(value or ())
+        if self.kind == "curve":
+            return tuple((float(x), float(y)) for x, y in value or ())
         if self.kind == "text" and self.none_word and value == self.none_word:
             return None
         if self.kind != "number" or value is None:
@@ -155,7 +161,8 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="speed_mm_s", page="speed", core="speed_m_s", label="Linear speed",
-        help="Speed of the nut along the screw", group="Axis", kind="number", required=True,
+        help="Top speed of the nut along the screw", group="Axis", kind="number",
+        required=True,
         bounds=(1e-3, 1e5), si_factor=MM, quantity="speed", unit="mm/s",
     ),
     InputField(
@@ -300,7 +307,7 @@ FIELDS: tuple[InputField, ...] = (
         default="torque", options=RankBy,
         texts={
             "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
-            "size": "Smallest size",
+            "size": "Smallest size", "motor_margin": "Largest motor margin",
         },
         catalog_only=True,
     ),
@@ -329,6 +336,35 @@ FIELDS: tuple[InputField, ...] = (
         help="e.g. bronze, acetal or polyacetal; empty or “any” for every nut",
         group="Nut and environment", kind="text", none_word="any",
         catalog_only=True,
+    ),
+    InputField(
+        api="decel_mm_s2", page="decel", core="decel_m_s2", label="Deceleration",
+        help="Linear, to stop at the end of the stroke; empty for the acceleration",
+        group="Motor and move", kind="number", bounds=(0.0, 1e6), si_factor=MM,
+        quantity="accel", unit="mm/s²",
+    ),
+    InputField(
+        api="dwell_s", page="dwell", core="dwell_s", label="Dwell",
+        help="Rest after each move, out and back (needs a stroke)", group="Motor and move",
+        kind="number", default=0.0, bounds=(0.0, 1e6), unit="s",
+    ),
+    InputField(
+        api="motor_curve", page="motor_curve", core="motor_curve", label="Motor curve",
+        help="Torque the motor gives against speed: one point “rpm torque” per line, rpm "
+        "ascending, torque in N m; linear between points, nothing past the last",
+        group="Motor and move", kind="curve", unit="rpm : N m",
+    ),
+    InputField(
+        api="motor_inertia_kg_m2", page="motor_inertia", core="motor_inertia_kg_m2",
+        label="Rotor inertia", help="The motor's own, at the screw; empty for none",
+        group="Motor and move", kind="number", bounds=(0.0, 10.0), unit="kg m²",
+    ),
+    InputField(
+        api="motor_rms_torque_nm", page="motor_rms_torque", core="motor_rms_torque_nm",
+        label="Continuous torque", help="The motor's rating for the RMS torque of the "
+        "cycle (needs a stroke); empty for no check",
+        group="Motor and move", kind="number", bounds=(1e-6, 1e5), quantity="torque",
+        unit="N m", needs=("stroke_mm",),
     ),
 )
 # fmt: on

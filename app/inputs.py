@@ -15,6 +15,7 @@ Text numbers (a query string, or a string in JSON) must be plain ASCII decimals
 (``NUMBER_TEXT``): the page parses its form with the same rule, so both accept the same.
 """
 
+import math
 import re
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
@@ -143,6 +144,83 @@ def text_type(field: InputField) -> Any:
     ]
 
 
+#: At most this many points in a curve input.
+MAX_POINTS = 50
+#: One point of a curve as text: "x:y" (query strings) or "x y" (a line on the page).
+POINT_SEPARATOR = re.compile(r"\s*[:\s]\s*")
+
+
+def _point(text: str, number: int) -> list[float]:
+    """One point typed as 'x:y' or 'x y', as two numbers; the error names the point."""
+    parts = POINT_SEPARATOR.split(text.strip(ASCII_SPACE))
+    if len(parts) != 2 or not all(ASCII_NUMBER.fullmatch(p) for p in parts):
+        raise ValueError(f"point {number} '{text.strip()[:40]}' is not two numbers 'rpm torque'")
+    return [float(parts[0]), float(parts[1])]
+
+
+def _split_curve(value: Any) -> Any:
+    """A curve given as text (``rpm:torque,rpm:torque`` or lines of 'rpm torque') as a
+    list of pairs (a query parameter arrives as a list of such texts); a JSON list of
+    pairs passes unchanged, each item checked to be a pair of numbers."""
+    if isinstance(value, list) and value and all(isinstance(item, str) for item in value):
+        value = ",".join(value)
+    if isinstance(value, list):
+        for number, point in enumerate(value, start=1):
+            if not isinstance(point, list | tuple) or len(point) != 2:
+                raise ValueError(f"point {number} is not a pair [rpm, torque]")
+            if not all(isinstance(x, int | float) and not isinstance(x, bool) for x in point):
+                raise ValueError(f"point {number} is not two numbers [rpm, torque]")
+        return value
+    if not isinstance(value, str):
+        return value
+    items = [item for item in re.split(r"[,\n;]", value) if item.strip(ASCII_SPACE)]
+    return [_point(item, number) for number, item in enumerate(items, start=1)]
+
+
+def _curve_points(value: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """At least two points, finite, rpm not negative and strictly ascending, torque
+    positive, at most ``MAX_POINTS``; the error names the first point that is wrong."""
+    if not 2 <= len(value) <= MAX_POINTS:
+        raise ValueError(f"needs 2 to {MAX_POINTS} points (rpm, torque), not {len(value)}")
+    previous = -math.inf
+    for number, (rpm, torque) in enumerate(value, start=1):
+        point = f"point {number} ({rpm:g}, {torque:g})"
+        if not (math.isfinite(rpm) and math.isfinite(torque)):
+            raise ValueError(f"{point}: rpm and torque must be finite")
+        if rpm < 0.0 or torque <= 0.0:
+            raise ValueError(f"{point}: rpm must be 0 or more and torque above 0")
+        if rpm <= previous:
+            raise ValueError(f"{point}: rpm must ascend")
+        previous = rpm
+    return value
+
+
+def _curve_out(
+    value: list[tuple[float, float]],
+    handler: SerializerFunctionWrapHandler,
+    info: SerializationInfo,
+) -> Any:
+    """A curve as JSON keeps its pairs; as Python values (share links, the printed
+    summary, CSV) it is the compact ``rpm:torque,rpm:torque`` text the page reads back."""
+    if info.mode_is_json():
+        return handler(value)
+    return ",".join(f"{rpm:.12g}:{torque:.12g}" for rpm, torque in value)
+
+
+def curve_type(field: InputField) -> Any:
+    """Points (rpm, torque): JSON pairs, or text ``rpm:torque,...`` / lines 'rpm torque'."""
+    pair = {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2}
+    schema = {"type": "array", "items": pair, "minItems": 2, "maxItems": MAX_POINTS}
+    schema |= {"description": describe(field)}
+    return Annotated[
+        list[tuple[Annotated[float, NotBool], Annotated[float, NotBool]]],
+        BeforeValidator(_split_curve),
+        AfterValidator(_curve_points),
+        WrapSerializer(_curve_out),
+        WithJsonSchema(schema),
+    ]
+
+
 def api_type(field: InputField) -> Any:
     """The pydantic type of one table field: bounded finite number, whole number, bool or
     the core's Literal; optional (``| None``) when it has no default and is not required."""
@@ -158,6 +236,8 @@ def api_type(field: InputField) -> Any:
         kind = Annotated[bool, Field(description=describe(field))]
     elif field.kind in ("text", "list"):
         kind = text_type(field)
+    elif field.kind == "curve":
+        kind = curve_type(field)
     else:
         kind = Annotated[field.options, Field(description=describe(field))]
     optional = not field.required and field.default is None

@@ -23,8 +23,10 @@ from app.schemas import (
     LifeOut,
     MaterialIn,
     OutgassingOut,
+    ProfileOut,
     ProvenanceOut,
     PVOut,
+    SegmentOut,
     SummaryOut,
     TorqueOut,
 )
@@ -93,7 +95,38 @@ def _torque(ev: Evaluation) -> TorqueOut:
         safety_factor=t.safety_factor,
         required_nm=t.required_nm,
         note=TORQUE_NOTE,
+        peak_nm=None if ev.motion is None else ev.motion.peak_nm,
+        rms_nm=None if ev.motion is None else ev.motion.rms_nm,
     )
+
+
+def _motion(ev: Evaluation) -> dict[str, Any]:
+    """The move's profile and segments (null without a stroke)."""
+    if ev.motion is None:
+        return {"profile": None, "segments": None}
+    p = ev.motion.profile
+    return {
+        "profile": ProfileOut.model_construct(
+            kind=p.kind,
+            accel_time_s=p.accel_time_s,
+            constant_time_s=p.constant_time_s,
+            decel_time_s=p.decel_time_s,
+            move_time_s=p.move_time_s,
+            cycle_time_s=p.cycle_time_s,
+            peak_speed_mm_s=_mm(p.peak_speed_m_s),
+        ),
+        "segments": [
+            SegmentOut.model_construct(
+                name=g.name,
+                direction=g.direction,
+                duration_s=g.duration_s,
+                rpm=g.rpm,
+                thrust_n=g.thrust_n,
+                torque_nm=g.torque_nm,
+            )
+            for g in ev.motion.segments
+        ],
+    }
 
 
 def _pv(ev: Evaluation) -> PVOut:
@@ -232,6 +265,7 @@ def candidate_out(
             for k, p in s.provenance.items()
             if k in used
         },
+        **_motion(ev),
     )
 
 

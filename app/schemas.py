@@ -169,6 +169,33 @@ class TorqueOut(BaseModel):
     safety_factor: float
     required_nm: float
     note: str
+    peak_nm: float | None = Field(
+        default=None, description="Largest motor torque of the move's segments; null: no stroke."
+    )
+    rms_nm: float | None = Field(
+        default=None, description="RMS motor torque over the cycle; null: no stroke."
+    )
+
+
+class ProfileOut(BaseModel):
+    kind: Literal["trapezoid", "triangle"] = Field(
+        description="A triangle when the stroke is too short to reach the top speed."
+    )
+    accel_time_s: float
+    constant_time_s: float
+    decel_time_s: float
+    move_time_s: float
+    cycle_time_s: float = Field(description="Out and back (up and down), each with its dwell.")
+    peak_speed_mm_s: float = Field(description="The top speed, or the triangle's peak.")
+
+
+class SegmentOut(BaseModel):
+    name: Literal["accelerate", "constant", "decelerate", "dwell"]
+    direction: Literal["up", "down", "out", "back"]
+    duration_s: float
+    rpm: float = Field(description="The screw's top speed in the segment.")
+    thrust_n: float = Field(description="Against the motion; negative: the load drives.")
+    torque_nm: float = Field(description="Motor torque; negative: the motor brakes.")
 
 
 class CriticalSpeedOut(BaseModel):
@@ -297,6 +324,12 @@ class CandidateOut(BaseModel):
     fix: str | None = Field(description="For a rejected candidate, what would make it pass.")
     provenance: dict[str, ProvenanceOut] = Field(
         description="Catalog field -> provenance, for the fields this candidate's numbers use."
+    )
+    profile: ProfileOut | None = Field(
+        default=None, description="The move over the stroke; null without a stroke."
+    )
+    segments: list[SegmentOut] | None = Field(
+        default=None, description="Each segment of the cycle; null without a stroke."
     )
 
 

@@ -39,7 +39,8 @@ SHARE_LINK_NAMES = [
     "vacuum", "ambient_c", "stroke", "cycles_per_day", "critical_speed_safety_factor",
     "buckling_safety_factor", "torque_safety_factor", "self_locking_friction_factor",
     "max_torque", "brake_torque", "required_life_years", "positioning_tolerance", "rank_by",
-    "advice", "limit", "family", "nut_material",
+    "advice", "limit", "family", "nut_material", "decel", "dwell", "motor_curve",
+    "motor_inertia", "motor_rms_torque",
 ]  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")
@@ -210,6 +211,14 @@ def _value(field: InputField) -> st.SearchStrategy[Any]:
     if field.kind == "list":
         ids = st.sampled_from(["TR-C45", "TR-304", "B", "ZBX"])
         return st.none() | st.lists(ids, min_size=1, max_size=3)
+    if field.kind == "curve":
+        speeds = st.lists(st.integers(0, 6000), min_size=2, max_size=5, unique=True)
+        torques = st.floats(0.01, 5.0).map(lambda x: float(f"{x:.4g}"))
+        return st.none() | speeds.flatmap(
+            lambda rpm: st.lists(torques, min_size=len(rpm), max_size=len(rpm)).map(
+                lambda t: [[float(r), y] for r, y in zip(sorted(rpm), t, strict=True)]
+            )
+        )
     low, high = field.bounds or (0.0, 0.0)
     if field.kind == "whole number":
         return st.integers(int(low), int(high))
@@ -219,10 +228,11 @@ def _value(field: InputField) -> st.SearchStrategy[Any]:
 
 @st.composite
 def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
-    """Valid inputs over the whole table; a required life only with its duty."""
+    """Valid inputs over the whole table; a field with ``needs`` only with them."""
     data = {field.api: draw(_value(field)) for field in FIELDS}
-    if any(data[name] is None for name in BY_API["required_life_years"].needs):
-        data["required_life_years"] = None
+    for field in FIELDS:
+        if any(data[name] is None for name in field.needs):
+            data[field.api] = None
     return ApplicationIn.model_validate(data)
 
 

@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check, Measure, Reach
 from app.core.formulas import critical_speed
@@ -19,8 +20,10 @@ from app.core.model import (
     CriticalSpeed,
     Evaluation,
     Life,
+    Motion,
     ProvenanceKind,
     ScrewSpec,
+    Segment,
     Torque,
 )
 from app.core.quantities import Quantities, axial_load
@@ -188,6 +191,7 @@ def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> li
     thread = {name: getattr(sc.table, name)[index].tolist() for name in THREAD_COLUMNS}
     checks = {name: _check_rows(m, sc.failed[name], index) for name, m in sc.measures.items()}
     worst = sc.max_utilization[index].tolist()
+    moves = _motions(app, sc, index, rows)
     passed = sc.passed[index].tolist()
     results = [
         tuple(
@@ -205,8 +209,34 @@ def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> li
             {name: column[k] for name, column in thread.items()},
             results[k],
             (passed[k], worst[k]),
+            moves[k],
         )
         for k, i in enumerate(index)
+    ]
+
+
+def _motions(
+    app: Application, sc: Screening, index: list[int], rows: list[Quantities[float]]
+) -> list[Motion | None]:
+    """The move and its segments' torques for the candidates at ``index`` (None each
+    without a stroke)."""
+    p = motion.move_profile(app)
+    if p is None:
+        return [None] * len(index)
+    hold = np.array([r.brake_nm for r in rows])
+    parts = motion.segments(app, p, sc.table.take(np.array(index)), hold)
+    columns = [(s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist()) for s in parts]
+    return [
+        Motion(
+            profile=p,
+            segments=tuple(
+                Segment(s.name, s.direction, s.duration_s, rpm[k], thrust[k], torque[k])
+                for s, rpm, thrust, torque in columns
+            ),
+            peak_nm=r.motor_peak_nm,
+            rms_nm=r.motor_rms_nm,
+        )
+        for k, r in enumerate(rows)
     ]
 
 
@@ -217,6 +247,7 @@ def _evaluation(
     thread: dict[str, Any],
     checks: tuple[CheckResult, ...],
     verdict: tuple[bool, float],
+    move: Motion | None = None,
 ) -> Evaluation:
     """One candidate's report; ``verdict`` is (passed, worst utilisation) from screening."""
     traverse = _number(thread["traverse_limit_m_s"])
@@ -260,6 +291,7 @@ def _evaluation(
         governing_check=None if governing is None else governing.name,
         governing_limit_provenance=limit_provenance(governing, s),
         max_utilization=verdict[1],
+        motion=move,
     )
 
 

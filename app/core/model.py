@@ -2,14 +2,14 @@
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Generic, Literal, TypeVar
 
 from app.core.phrase import Phrase, Quantity
 
 EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
 Orientation = Literal["horizontal", "vertical"]
 CoatingChoice = Literal["auto", "tfe", "none"]
-RankBy = Literal["torque", "margin", "life", "size"]
+RankBy = Literal["torque", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
 ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]
@@ -62,6 +62,14 @@ class Application:
     #: Family ids to select from (empty: every family); a nut material (None: any).
     families: tuple[str, ...] = ()
     nut_material: str | None = None
+    #: The move: deceleration (None: the acceleration) and the dwell after each move [s].
+    decel_m_s2: float | None = None
+    dwell_s: float = 0.0
+    #: The motor: rotor inertia, torque-speed curve as (rpm, N m) points with rpm
+    #: ascending (empty: none), and continuous (RMS) torque rating.
+    motor_inertia_kg_m2: float | None = None
+    motor_curve: tuple[tuple[float, float], ...] = ()
+    motor_rms_torque_nm: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -245,6 +253,51 @@ class Accuracy:
     thermal_growth_m: float | None
 
 
+V = TypeVar("V")
+SegmentName = Literal["accelerate", "constant", "decelerate", "dwell"]
+Direction = Literal["up", "down", "out", "back"]
+
+
+@dataclass(frozen=True, slots=True)
+class Profile:
+    """One move of the stroke: a trapezoid, or a triangle when the stroke is too short to
+    reach the top speed; times [s] and the peak speed reached [m/s]. The cycle is the move
+    out (up) and back (down), each followed by the dwell."""
+
+    kind: Literal["trapezoid", "triangle"]
+    accel_time_s: float
+    constant_time_s: float
+    decel_time_s: float
+    move_time_s: float
+    cycle_time_s: float
+    peak_speed_m_s: float
+
+
+@dataclass(frozen=True, slots=True)
+class Segment(Generic[V]):
+    """One segment of the cycle: its duration [s], the screw's top speed in it [rpm], the
+    thrust against the motion [N] and the motor torque [N m] (negative: the motor brakes).
+    ``V`` is an array (one element per candidate) or a float."""
+
+    name: SegmentName
+    direction: Direction
+    duration_s: float
+    rpm: V
+    thrust_n: V
+    torque_nm: V
+
+
+@dataclass(frozen=True, slots=True)
+class Motion:
+    """The move and the motor torque over the cycle: its segments, the largest torque in
+    magnitude and the RMS torque [N m]."""
+
+    profile: Profile
+    segments: tuple[Segment[float], ...]
+    peak_nm: float
+    rms_nm: float
+
+
 @dataclass(frozen=True, slots=True)
 class Evaluation:
     """Everything computed for one screw against one application."""
@@ -284,6 +337,8 @@ class Evaluation:
     #: and the values at one end of whose range it fails (None: not assessed)
     robust: bool | None = None
     hinges_on: tuple[str, ...] = ()
+    #: the move profile and the torque of each segment (None: no stroke given)
+    motion: Motion | None = None
 
     @property
     def failed_checks(self) -> tuple[CheckResult, ...]:

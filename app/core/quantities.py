@@ -12,6 +12,7 @@ from typing import Any, Generic, TypeVar
 
 import numpy as np
 
+from app.core import motion
 from app.core.formulas import (
     accuracy,
     buckling,
@@ -90,6 +91,17 @@ class Quantities(Generic[V]):
     brake_nm: V
     locks_with_margin: V
     max_lock_lead_m: V
+    #: The move: the peak rpm (the top speed's without a stroke); the largest torque in
+    #: magnitude and the RMS torque over the cycle (NaN without a stroke); the segment
+    #: that uses the most of the motor curve (index in ``motion.segments``, -1 without a
+    #: stroke), its torque magnitude and rpm, the curve's torque there (NaN: no curve).
+    peak_rpm: V
+    motor_peak_nm: V
+    motor_rms_nm: V
+    motor_worst_segment: V
+    motor_worst_nm: V
+    motor_worst_rpm: V
+    motor_curve_nm: V
 
     def rows(self, index: Sequence[int]) -> "list[Quantities[float]]":
         """The numbers of the candidates at ``index`` as floats (NaN: no such limit)."""
@@ -226,13 +238,48 @@ def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
 def _values(
     app: Application, t: CandidateTable, force_n: float, peak_n: float, rpm: Array
 ) -> dict[str, Any]:
+    torques = _torques(app, t, force_n)
     return {
         "force_n": np.full(len(t), force_n),
         "peak_force_n": np.full(len(t), peak_n),
         "rpm": rpm,
-        **_torques(app, t, force_n),
+        **torques,
         **_column_limits(app, t, peak_n),
         **_nut(app, t, force_n, rpm),
         **_duty(app, t),
-        **_holding(app, t, force_n),
+        **(holding := _holding(app, t, force_n)),
+        **_motor(app, t, holding["brake_nm"], torques),
+    }
+
+
+def _motor(
+    app: Application, t: CandidateTable, hold_nm: Array, torques: dict[str, Any]
+) -> dict[str, Any]:
+    """The motor's view of the move: every segment's torque against the curve. Without a
+    stroke there is no profile: the one point is today's torque at the top speed."""
+    p = motion.move_profile(app)
+    if p is None:
+        nan = np.full(len(t), np.nan)
+        worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
+        rpm = geometry.screw_speed_rpm(app.speed_m_s, t.lead_m)
+        index, peak, rms = np.full(len(t), -1.0), nan, nan
+    else:
+        parts = motion.segments(app, p, t, hold_nm)
+        magnitude = np.abs(np.stack([s.torque_nm for s in parts]))
+        speeds = np.stack([s.rpm for s in parts])
+        load = magnitude / motion.curve_torque(app, speeds) if app.motor_curve else magnitude
+        index = np.argmax(load, axis=0)
+        columns = np.arange(len(t))
+        worst_nm, rpm = magnitude[index, columns], speeds[index, columns]
+        peak, rms = magnitude.max(axis=0), motion.rms(parts)
+    curve = motion.curve_torque(app, rpm) if app.motor_curve else np.full(len(t), np.nan)
+    top = app.speed_m_s if p is None else p.peak_speed_m_s
+    return {
+        "peak_rpm": geometry.screw_speed_rpm(top, t.lead_m),
+        "motor_peak_nm": peak,
+        "motor_rms_nm": rms,
+        "motor_worst_segment": index,
+        "motor_worst_nm": worst_nm,
+        "motor_worst_rpm": rpm,
+        "motor_curve_nm": curve,
     }

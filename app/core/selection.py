@@ -20,14 +20,31 @@ INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
     "load_n": ("load", "force"),
     "speed_m_s": ("speed", "speed"),
     "length_m": ("length", "length"),
+    "accel_m_s2": ("acceleration", "accel"),
 }
+#: The checks that judge the motor, for ranking by its margin.
+MOTOR_CHECKS = ("torque", "motor_curve", "motor_rms", "motor_speed")
+
+
+def motor_use(s: Screening) -> np.ndarray:
+    """Per candidate, the largest share of the motor it uses (torque, curve, RMS, speed);
+    the drive torque itself when no motor is given."""
+    shares = [
+        use
+        for name in MOTOR_CHECKS
+        if name in s.measures and (use := s.measures[name].utilization()) is not None
+    ]
+    if not shares:
+        return s.total_torque_nm
+    return np.asarray(np.nanmax(np.stack(shares), axis=0), dtype=np.float64)
 
 
 def _rank_order(app: Application, s: Screening) -> np.ndarray:
     """Positions of passing candidates (in ``s``) in rank order, stable.
 
     torque: lowest total drive torque; margin: lowest worst utilisation; life: longest
-    rated life (unrated last); size: smallest outer diameter. Ties: lower torque. With
+    rated life (unrated last); size: smallest outer diameter; motor_margin: the smallest
+    share of the motor used (``motor_use``). Ties: lower torque. With
     ``advice="rank"`` candidates with a warning come after those without.
     """
     pos = np.flatnonzero(s.passed)
@@ -37,6 +54,7 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
         "margin": util,
         "life": -np.nan_to_num(s.table.life_min_m[pos]),
         "size": s.table.outer_diameter_m[pos],
+        "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
     keys = [secondary, primary]

@@ -100,6 +100,8 @@ RANKING = {
     "life": "longest rated life first, screws without a life rating last; equal lives: "
     "the lower torque first.",
     "size": "smallest outer diameter first; equal sizes: the lower torque first.",
+    "motor_margin": "the smallest share of the motor used first (its torque, curve, "
+    "continuous rating and top speed); without a motor, the lower torque first.",
 }
 
 CHARTS = (

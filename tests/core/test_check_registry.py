@@ -40,6 +40,20 @@ APPS = {
     "short-heavy-braked": light_app(
         orientation="vertical", load_n=3000.0, length_m=0.06, brake_torque_nm=0.3
     ),
+    # a vertical move with a dwell against a motor curve and its continuous rating
+    "vertical-move-motor": light_app(
+        orientation="vertical",
+        moving_mass_kg=4.0,
+        stroke_m=0.2,
+        speed_m_s=0.2,
+        accel_m_s2=2.0,
+        decel_m_s2=4.0,
+        dwell_s=0.5,
+        motor_inertia_kg_m2=1e-5,
+        motor_curve=((0.0, 0.6), (1500.0, 0.4), (3000.0, 0.15)),
+        motor_rms_torque_nm=0.2,
+        torque_safety_factor=1.5,
+    ),
 }
 FUNCTIONS: dict[str, Any] = {"pi": math.pi, "sqrt": math.sqrt, "cos": math.cos, "max": max}
 
@@ -87,7 +101,7 @@ def formula_mismatches(check: Check, app: Application, t: CandidateTable) -> lis
 
 def test_registry_lists_each_check_once_in_order() -> None:
     names = [c.name for c in REGISTRY]
-    assert len(set(names)) == len(names) == 17
+    assert len(set(names)) == len(names) == 20
     assert [c.order for c in REGISTRY] == sorted(c.order for c in REGISTRY)
     for c in REGISTRY:
         assert c.label and c.description and c.formula and c.source, c.name
@@ -155,6 +169,7 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     whose capacity is a catalog value names it (among the fields it reads); only the
     checks whose capacity is the user's own input leave it empty."""
     user_limits = {c.name for c in REGISTRY if not c.capacity_sources}
-    assert user_limits == {"torque", "holding", "accuracy"}
+    motor = {"motor_curve", "motor_rms", "motor_speed"}
+    assert user_limits == {"torque", "holding", "accuracy", *motor}
     for c in REGISTRY:
         assert set(c.capacity_sources) <= set(c.sources), c.name

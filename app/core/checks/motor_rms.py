@@ -1,0 +1,65 @@
+"""The RMS torque of the cycle against the motor's continuous rating (its heating)."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    everywhere,
+    same,
+)
+from app.core.phrase import Amount, Phrase
+
+
+@register
+class MotorRms(Check):
+    name = "motor_rms"
+    label = "Motor RMS torque"
+    description = (
+        "The root-mean-square motor torque over the cycle (out and back, with the dwells), "
+        "times the torque safety factor, against the motor's continuous torque rating."
+    )
+    quantity = "torque"
+    formula = "T_need = SF * T_rms; T_motor = T_continuous"
+    source = "RMS torque sqrt(sum T_i^2 t_i / sum t_i), e.g. Oriental Motor, Motor Sizing"
+    sources = ("inertia_per_length", "drag_torque", "friction_dynamic")
+    order = 12
+
+    def applies(self, app: Application) -> bool:
+        return app.motor_rms_torque_nm is not None and app.stroke_m is not None
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        need = app.torque_safety_factor * q.motor_rms_nm
+        return Measure(everywhere(t), need, same(t, app.motor_rms_torque_nm))
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "SF": app.torque_safety_factor,
+            "T_rms": q.motor_rms_nm,
+            "T_continuous": app.motor_rms_torque_nm,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "is within" if passed else "exceeds"
+        return Phrase(
+            "The cycle's RMS torque {need} " + verb + " the motor's continuous {rating}.",
+            {
+                "need": Amount(app.torque_safety_factor * r.motor_rms_nm, "torque"),
+                "rating": Amount(app.motor_rms_torque_nm or 0.0, "torque"),
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        return Phrase(
+            "A motor rated for at least {need} continuous, or a longer dwell, lower "
+            "acceleration or load.",
+            {"need": Amount(app.torque_safety_factor * r.motor_rms_nm, "torque")},
+        )

@@ -1,0 +1,73 @@
+"""The move's top speed inside the motor's torque-speed curve."""
+
+from app.core.checks import register
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    everywhere,
+    same,
+)
+from app.core.phrase import Amount, Phrase
+
+
+def top_curve_rpm(app: Application) -> float:
+    """The curve's last speed: the motor cannot run faster [rpm]."""
+    return app.motor_curve[-1][0]
+
+
+@register
+class MotorSpeed(Check):
+    name = "motor_speed"
+    label = "Motor speed"
+    description = (
+        "The screw's top speed in the move (the triangle's peak when the stroke is short) "
+        "within the motor curve's last point: past it the motor cannot go."
+    )
+    quantity = "rpm"
+    formula = "n = 60 * v_peak / lead; n_motor = n_curve_max"
+    source = "screw kinematics n = 60 v / lead; motor torque-speed curve"
+    sources = ()
+    order = 13
+
+    def applies(self, app: Application) -> bool:
+        return bool(app.motor_curve)
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(everywhere(t), q.peak_rpm, same(t, top_curve_rpm(app)))
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "v_peak": q.peak_rpm * t.lead_m / 60.0,
+            "lead": t.lead_m,
+            "n_curve_max": top_curve_rpm(app),
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "is within" if passed else "exceeds"
+        return Phrase(
+            "The top speed {rpm} " + verb + " the motor curve's last point, {top}.",
+            {"rpm": Amount(r.peak_rpm, "rpm"), "top": Amount(top_curve_rpm(app), "rpm")},
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        return Phrase(
+            "A speed of at most {speed}, a lead of at least {lead}, or a faster motor.",
+            {
+                "speed": Amount(top_curve_rpm(app) * s.lead_m / 60.0, "speed"),
+                "lead": Amount(r.peak_rpm * s.lead_m / top_curve_rpm(app), "length"),
+            },
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float] | None:
+        return {"speed_m_s": top_curve_rpm(app) * s.lead_m / 60.0}
