@@ -208,3 +208,34 @@ def test_nothing_passing_puts_the_most_excluding_checks_chart_first(catalog: Cat
     summary = result.summary.model_copy(update={"most_excluding_check": "pv"})
     by_pv = result.model_copy(update={"summary": summary})
     assert list(result_figures(by_pv, METRIC, catalog))[:3] == ["pv", "critical_speed", "torque"]
+
+
+def test_motor_and_move_charts_follow_the_segments(catalog: Catalog) -> None:
+    """Given a stroke and a motor curve: the curve drawn as given, each moving segment of
+    each top screw at (rpm, |torque| x safety factor), and the top screw's cycle over time
+    lasting the profile's cycle time, its constant segment at the top rpm."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200,
+         "motor_curve": [[0, 0.4], [600, 0.3], [1200, 0.1]], "torque_safety_factor": 1.5}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    figures = result_figures(result, METRIC)
+    assert {"motor", "move"} <= set(figures)
+    motor, move = figures["motor"], figures["move"]
+    go.Figure(motor)
+    go.Figure(move)
+    assert motor["data"][0]["x"] == [0, 600, 1200] and motor["data"][0]["y"] == [0.4, 0.3, 0.1]
+    top = result.candidates[0]
+    assert top.segments is not None and top.profile is not None
+    moving = [s for s in top.segments if s.name != "dwell"]
+    points = motor["data"][1]
+    assert points["name"] == top.id
+    assert points["y"] == pytest.approx([abs(s.torque_nm) * 1.5 for s in moving])
+    times = move["data"][0]["x"]
+    assert times[-1] == pytest.approx(top.profile.cycle_time_s)
+    constant = next(i for i, s in enumerate(top.segments) if s.name == "constant")
+    assert move["data"][0]["y"][2 * constant] == pytest.approx(top.segments[constant].rpm)
+
+
+def test_no_stroke_no_move_charts(result: SelectOut) -> None:
+    assert not {"motor", "move"} & set(result_figures(result, METRIC))

@@ -16,6 +16,7 @@ from app.core.model import Application, Evaluation
 from app.core.selection import select
 from app.schemas import CandidateOut, SelectOut
 from app.units import Display, api_value, sig
+from app.web.motion_figures import motor_figure, move_figure
 
 #: Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
 PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
@@ -30,7 +31,7 @@ TOP = 5
 LOG_STEPS = (1.0, 2.0, 5.0)
 #: chart key -> the check whose failures it explains.
 CHART_CHECKS = {"critical_speed": "critical_speed", "pv": "pv", "torque": "torque"}
-CHART_KEYS = ("critical_speed", "pv", "torque", "lead_sweep")
+CHART_KEYS = ("critical_speed", "pv", "torque", "lead_sweep", "motor", "move")
 
 
 def _round(value: float) -> float:
@@ -499,5 +500,11 @@ def result_figures(
     sweep = lead_sweep(app, candidates[0], catalog) if catalog is not None else []
     if len(sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(sweep, candidates[0], d)
+    if candidates[0].segments:
+        if app.motor_curve:
+            figures["motor"] = motor_figure(
+                candidates, app.motor_curve, app.torque_safety_factor, d
+            )
+        figures["move"] = move_figure(candidates[0], d)
     first = None if passing else result.summary.most_excluding_check
     return {key: figures[key] for key in chart_order(figures, first)}

@@ -127,6 +127,18 @@ CHARTS = (
         "speed as a share of the allowed critical speed, and PV used. The shaded band holds "
         "the leads that still self-lock; the ringed points are the chosen lead.",
     ),
+    (
+        "Motor torque against speed",
+        "Given a stroke and a motor curve: the curve is the torque the motor can give at "
+        "each speed; each point is one segment of the move (accelerate, constant, "
+        "decelerate) of a screw, at its top speed, with the torque safety factor. Points "
+        "under the line: the motor drives the move.",
+    ),
+    (
+        "The move over time",
+        "Given a stroke: the top screw's speed and the motor's torque through one cycle, "
+        "out and back (up and down), with the dwells. Negative torque: the motor brakes.",
+    ),
 )
 
 

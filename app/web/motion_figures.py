@@ -1,0 +1,120 @@
+"""The motor and the move as Plotly figures (plain dicts): the motor's torque-speed curve
+with each candidate's segments as points, and the top candidate's speed and torque over
+one cycle. Numbers come from the core's segments; nothing is recomputed here."""
+
+from typing import Any
+
+from app.schemas import CandidateOut, SegmentOut
+from app.units import Display
+
+PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
+TOP = 5
+#: the speed at the start and end of each segment, as a share of its top speed.
+RAMPS = {"accelerate": (0.0, 1.0), "constant": (1.0, 1.0), "decelerate": (1.0, 0.0)}
+REVERSED = ("down", "back")
+
+
+def _layout(x_title: str, y_title: str, **extra: Any) -> dict[str, Any]:
+    return {
+        "xaxis": {"title": {"text": x_title}, "automargin": True, "zeroline": False},
+        "yaxis": {"title": {"text": y_title}, "automargin": True},
+        "margin": {"l": 8, "r": 8, "t": 8, "b": 8},
+        "legend": {"orientation": "h", "x": 0, "y": -0.25, "yanchor": "top"},
+        "font": {"size": 12},
+        "hovermode": "closest",
+        "autosize": True,
+        "paper_bgcolor": "#ffffff",
+        "plot_bgcolor": "#ffffff",
+        **extra,
+    }
+
+
+def motor_figure(
+    candidates: list[CandidateOut],
+    curve: tuple[tuple[float, float], ...],
+    safety_factor: float,
+    d: Display,
+) -> dict[str, Any]:
+    """The motor's torque against speed (its curve) and, for each top candidate, every
+    moving segment's top rpm and torque times the safety factor: a point above the line
+    is a segment the motor cannot drive."""
+    unit = d.label("torque")
+    data: list[dict[str, Any]] = [
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "name": "Motor curve",
+            "x": [rpm for rpm, _ in curve],
+            "y": [d.value(torque, "torque") for _, torque in curve],
+            "line": {"color": "#000000", "width": 2},
+            "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>motor</extra>",
+        }
+    ]
+    for colour, c in zip(PALETTE, candidates[:TOP], strict=False):
+        moving = [s for s in c.segments or [] if s.name != "dwell"]
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "markers",
+                "name": c.id,
+                "x": [s.rpm for s in moving],
+                "y": [d.value(abs(s.torque_nm) * safety_factor, "torque") for s in moving],
+                "text": [f"{s.name}, {s.direction}" for s in moving],
+                "marker": {"color": colour, "size": 9},
+                "hovertemplate": f"%{{text}}<br>%{{x:.4g}} rpm, %{{y:.4g}} {unit}"
+                f"<extra>{c.id}</extra>",
+            }
+        )
+    layout = _layout("Screw speed [rpm]", f"Torque [{unit}]")
+    layout["xaxis"]["rangemode"] = layout["yaxis"]["rangemode"] = "tozero"
+    return {"data": data, "layout": layout}
+
+
+def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float], list[float]]:
+    """Time, speed (rpm, signed by direction) and torque at each segment's start and end."""
+    times, speeds, torques = [], [], []
+    t = 0.0
+    for s in segments:
+        start, end = RAMPS.get(s.name, (0.0, 0.0))
+        sign = -1.0 if s.direction in REVERSED else 1.0
+        times += [t, t + s.duration_s]
+        speeds += [sign * start * s.rpm, sign * end * s.rpm]
+        torques += [s.torque_nm, s.torque_nm]
+        t += s.duration_s
+    return times, speeds, torques
+
+
+def move_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
+    """The top candidate's screw speed and motor torque over one cycle (out and back, or
+    up and down, with the dwells): speed on the left axis, torque steps on the right."""
+    times, speeds, torques = _trace_points(top.segments or [])
+    unit = d.label("torque")
+    data = [
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "name": "Screw speed",
+            "x": times,
+            "y": speeds,
+            "line": {"color": "#0072B2", "width": 2},
+            "hovertemplate": "%{x:.3g} s<br>%{y:.4g} rpm<extra>speed</extra>",
+        },
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "name": "Motor torque",
+            "x": times,
+            "y": [d.value(t, "torque") for t in torques],
+            "yaxis": "y2",
+            "line": {"color": "#D55E00", "width": 2},
+            "hovertemplate": f"%{{x:.3g}} s<br>%{{y:.4g}} {unit}<extra>torque</extra>",
+        },
+    ]
+    layout = _layout("Time [s]", "Screw speed [rpm]")
+    layout["yaxis2"] = {
+        "title": {"text": f"Motor torque [{unit}]"},
+        "overlaying": "y",
+        "side": "right",
+        "automargin": True,
+    }
+    return {"data": data, "layout": layout}
