@@ -20,7 +20,7 @@ SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed., sec. 8-2"
 
 
 #: Modules of the core outside ``app.core.formulas``.
-CORE_MODULES = ("quantities", "evaluate", "selection")
+CORE_MODULES = ("quantities", "evaluate", "selection", "motion")
 
 
 def _f(formula: str, function: str, source: str) -> Formula:
@@ -36,7 +36,12 @@ FORMULAS: dict[str, Formula] = {
     ),
     "lead_angle_deg": _f("lambda = atan(lead / (pi d_p))", "geometry.lead_angle", SHIGLEY),
     "rpm": _f("n = 60 v / lead", "geometry.screw_speed_rpm", SEED + " (RS = speed / lead)"),
-    "axial_load_n": _f("F = load (+ m g when vertical)", "quantities.axial_load", "statics"),
+    "axial_load_n": _f(
+        "F = load (+ m g when vertical), the running thrust", "quantities.axial_load", "statics"
+    ),
+    "peak_axial_load_n": _f(
+        "F_peak = F + m a", "quantities.peak_axial_load", "Newton's second law"
+    ),
     "efficiency": _f(
         "eta = (cos a_n - mu tan l) / (cos a_n + mu / tan l), mu dynamic",
         "efficiency.forward_efficiency",
@@ -56,6 +61,19 @@ FORMULAS: dict[str, Formula] = {
     "seed_rule_no_backdrive": _f(
         "lead < OD / 8", "efficiency.seed_backdrive_rule", SEED + " (Back Driving)"
     ),
+    "backdrive_efficiency_running": _f(
+        "eta_b at the running (dynamic) friction",
+        "efficiency.backdrive_efficiency",
+        SHIGLEY,
+    ),
+    "self_locking_with_margin": _f(
+        "f mu_s >= cos a_n tan l (f: the self-locking friction factor)",
+        "efficiency.self_locking_limit_friction",
+        SHIGLEY + "; margin as the seed's d/8 rule",
+    ),
+    "max_self_locking_lead_with_margin_mm": _f(
+        "lead = pi d_p f mu_s / cos a_n", "efficiency.max_self_locking_lead", SHIGLEY
+    ),
     "max_self_locking_lead_mm": _f(
         "lead = pi d_p mu_s / cos a_n", "efficiency.max_self_locking_lead", SHIGLEY
     ),
@@ -68,7 +86,7 @@ FORMULAS: dict[str, Formula] = {
         "T_b = F lead eta_b / (2 pi), back-drive eta", "efficiency.holding_torque", SHIGLEY
     ),
     "holding_torque.brake_nm": _f(
-        "T = max(seed method, physics); 0 when self-locking",
+        "T = max(seed method, physics); 0 when self-locking with the friction margin",
         "quantities.operating_point",
         "safe side of both",
     ),
@@ -78,9 +96,30 @@ FORMULAS: dict[str, Formula] = {
         SEED + " (Inertia Torque T = I alpha)",
     ),
     "torque.inertia_mass_nm": _f(
-        "T = m (lead / 2 pi)^2 x 2 pi a / lead",
-        "torque.reflected_mass_inertia",
-        "kinematic equivalence",
+        "T = m a lead / (2 pi eta): the accelerating force through the thread",
+        "torque.load_torque",
+        SEED + " (Torque To Move Load) with the force m a",
+    ),
+    "torque.inertia_nm": _f(
+        "T = T_inertia_screw + T_inertia_mass", "quantities.operating_point", SEED
+    ),
+    "torque.peak_nm": _f("T = max |T_segment| over the cycle", "motion.segments", "move profile"),
+    "torque.rms_nm": _f(
+        "T_rms = sqrt(sum T_i^2 t_i / sum t_i)",
+        "profile.rms_torque",
+        "root mean square over the cycle (motor vendors' continuous-duty rule)",
+    ),
+    "profile.peak_speed_mm_s": _f(
+        "v_peak = min(v, sqrt(2 s / (1/a + 1/d)))", "profile.peak_speed", "kinematics"
+    ),
+    "profile.accel_time_s": _f("t_a = v_peak / a", "profile.ramp_time", "kinematics"),
+    "profile.decel_time_s": _f("t_d = v_peak / d", "profile.ramp_time", "kinematics"),
+    "profile.constant_time_s": _f(
+        "t_c = (s - v_peak^2 / 2a - v_peak^2 / 2d) / v_peak", "profile.constant_time", "kinematics"
+    ),
+    "profile.move_time_s": _f("t = t_a + t_c + t_d", "motion.move_profile", "kinematics"),
+    "profile.cycle_time_s": _f(
+        "t = 2 (move + dwell), out and back", "motion.move_profile", "kinematics"
     ),
     "torque.drag_nm": _f(
         "top of the series' static drag range",
@@ -96,7 +135,7 @@ FORMULAS: dict[str, Formula] = {
         SEED + " (Torque: sum of three components)",
     ),
     "torque.breakaway_nm": _f(
-        "T = F lead / (2 pi eta_static) + T_drag",
+        "T = (F + m a) lead / (2 pi eta_static) + J_screw alpha + T_drag, starting from rest",
         "torque.load_torque",
         SEED + " with static friction",
     ),
@@ -117,9 +156,18 @@ FORMULAS: dict[str, Formula] = {
         "n = SF x n_c", "critical_speed.allowed_speed_rpm", "Thomson (80 % of critical)"
     ),
     "buckling.critical_load_n": _f(
-        "F_cr = k pi^2 E (pi d_r^4 / 64) / L^2",
-        "buckling.euler_critical_load",
-        "Euler; Timoshenko & Gere",
+        "F_cr = pi^2 E A / s^2 (Euler) for s >= s_1, else A (S_y - (S_y s / 2 pi)^2 / E)",
+        "buckling.column_critical_load",
+        "Euler (Timoshenko & Gere); Johnson, Shigley sec. 4-13",
+    ),
+    "buckling.slenderness": _f(
+        "s = (L / sqrt(k)) / (d_r / 4)", "buckling.slenderness", "Shigley sec. 4-11"
+    ),
+    "buckling.transition_slenderness": _f(
+        "s_1 = sqrt(2 pi^2 E / S_y)", "buckling.transition_slenderness", "Shigley sec. 4-12"
+    ),
+    "buckling.root_stress_mpa": _f(
+        "sigma = F_peak / (pi d_r^2 / 4)", "buckling.root_stress", "axial stress"
     ),
     "buckling.allowed_load_n": _f(
         "F = SF x F_cr", "buckling.allowed_buckling_load", "lead-screw practice (0.5)"

@@ -4,7 +4,6 @@ from collections.abc import Mapping
 from typing import Any
 
 from app.catalog import Catalog
-from app.core.checks.base import Reach
 from app.core.evaluate import evaluate
 from app.core.selection import select, with_robustness
 from app.formulas import FORMULAS
@@ -71,7 +70,7 @@ def run_evaluation(
         spec = catalog.by_id.get(screw.catalog_id)
         if spec is None:
             raise UnknownScrew(screw.catalog_id)
-        reach = Reach.of(catalog.table)
+        reach = catalog.table.reach
     else:
         spec = custom_screw(screw, catalog.materials)
     app = inputs.to_core()

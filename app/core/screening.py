@@ -126,4 +126,4 @@ def screen_table(
 def screen(app: Application, table: CandidateTable) -> Screening:
     """Screen the candidates eligible for ``app`` (lead and coating choice)."""
     index = np.flatnonzero(eligible_mask(app, table))
-    return screen_table(app, table.take(index), index, Reach.of(table))
+    return screen_table(app, table.take(index), index, table.reach)

@@ -5,6 +5,7 @@ core are plain arithmetic, so the same function serves one screw (a column of on
 the whole catalog.
 """
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, fields
 
@@ -46,6 +47,24 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
     out["bearing_area_m2"] = np.asarray(area, dtype=np.float64)
     out["flank_helix_travel_m"] = np.asarray(geometry.helix_travel(lead_m, d2), dtype=np.float64)
     return out
+
+
+@dataclass(frozen=True, slots=True)
+class Reach:
+    """What a catalog offers, so that a fix never names a screw nobody makes (unbounded
+    for a screw of the user's own)."""
+
+    max_lead_m: float = math.inf
+    max_root_diameter_m: float = math.inf
+    max_design_load_n: float = math.inf
+    max_length_m: float = math.inf
+    anti_backlash: bool = True
+
+
+def _largest(values: Array) -> float:
+    """The largest given value (NaN: not given); unbounded when none is."""
+    given = values[~np.isnan(values)]
+    return float(given.max()) if given.size else math.inf
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,6 +120,9 @@ class CandidateTable:
     bearing_area_m2: Array
     flank_helix_travel_m: Array
 
+    #: what the whole catalog offers; a subset (``take``) keeps its catalog's
+    reach: Reach
+
     @classmethod
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
         """Columns from screws, and the efficiencies and limits that follow from them."""
@@ -121,7 +143,15 @@ class CandidateTable:
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
         traverse, extrapolated = _bands(screws)
+        reach = Reach(
+            max_lead_m=_largest(lead),
+            max_root_diameter_m=_largest(rd),
+            max_design_load_n=_largest(col("design_load_n")),
+            max_length_m=_largest(col("max_length_m")),
+            anti_backlash=bool(flag("anti_backlash").any()),
+        )
         return cls(
+            reach=reach,
             screws=screws,
             lead_m=lead,
             outer_diameter_m=od,
@@ -169,11 +199,13 @@ class CandidateTable:
         if len(index) == len(self) and bool(np.all(index == np.arange(len(self)))):
             return self
         picked = {name: getattr(self, name)[index] for name in COLUMNS}
-        return CandidateTable(screws=tuple(self.screws[i] for i in index), **picked)
+        return CandidateTable(
+            screws=tuple(self.screws[i] for i in index), reach=self.reach, **picked
+        )
 
     def __len__(self) -> int:
         return len(self.screws)
 
 
 #: The array fields of a table, in declaration order.
-COLUMNS = tuple(f.name for f in fields(CandidateTable) if f.name != "screws")
+COLUMNS = tuple(f.name for f in fields(CandidateTable) if f.name not in ("screws", "reach"))

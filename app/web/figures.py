@@ -5,7 +5,6 @@ Each figure is ``{"data": [...], "layout": {...}}`` in the user's display units,
 the tests use to validate them.
 """
 
-import math
 from collections.abc import Callable, Iterable
 from dataclasses import replace
 from typing import Any
@@ -16,10 +15,12 @@ from app.core.model import Application, Evaluation
 from app.core.selection import select
 from app.schemas import CandidateOut, SelectOut
 from app.units import Display, api_value, sig
+from app.web.chart_style import PALETTE
+from app.web.chart_style import axis as _axis
+from app.web.chart_style import layout as _layout
+from app.web.chart_style import rounded as _round
 from app.web.motion_figures import motor_figure, move_figure
 
-#: Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
-PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
 TORQUE_PARTS = (("inertia_nm", "Inertia", "#56B4E9"), ("drag_nm", "Drag", "#E69F00"))
 LOAD_PART = ("load_nm", "Load", "#0072B2")
 CURVE_POINTS = 41
@@ -27,73 +28,15 @@ CURVE_POINTS = 41
 CRITICAL_SPAN = 5.0
 PV_SPAN = 10.0
 TOP = 5
-#: mantissas labelled on log axes within each decade.
-LOG_STEPS = (1.0, 2.0, 5.0)
 #: chart key -> the check whose failures it explains.
 CHART_CHECKS = {"critical_speed": "critical_speed", "pv": "pv", "torque": "torque"}
 CHART_KEYS = ("critical_speed", "pv", "torque", "lead_sweep", "motor", "move")
-
-
-def _round(value: float) -> float:
-    return float(f"{value:.5g}")
 
 
 def _span(centre: float, factor: float) -> list[float]:
     """CURVE_POINTS values spaced evenly in log from centre / factor to centre * factor."""
     steps = CURVE_POINTS - 1
     return [centre * factor ** (2 * i / steps - 1) for i in range(CURVE_POINTS)]
-
-
-def log_ticks(values: Iterable[float]) -> tuple[list[float], list[str]]:
-    """Tick positions and labels for a log axis over ``values``: every decade and the 2 and
-    5 between, so a reader never has to count unlabelled gridlines.
-
-    >>> log_ticks([30.0, 700.0])
-    ([20.0, 50.0, 100.0, 200.0, 500.0, 1000.0], ['20', '50', '100', '200', '500', '1000'])
-    """
-    positive = [v for v in values if v > 0]
-    if not positive:
-        return [], []
-    low, high = min(positive), max(positive)
-    ticks = [
-        float(f"{step * 10.0**exponent:.6g}")
-        for exponent in range(math.floor(math.log10(low)) - 1, math.ceil(math.log10(high)) + 1)
-        for step in LOG_STEPS
-    ]
-    below = max((t for t in ticks if t <= low), default=ticks[0])
-    above = min((t for t in ticks if t >= high), default=ticks[-1])
-    shown = [t for t in ticks if below <= t <= above]
-    return shown, [sig(t, 3) for t in shown]
-
-
-def _axis(title: str, log: bool = False, values: Iterable[float] = ()) -> dict[str, Any]:
-    axis: dict[str, Any] = {"title": {"text": title}, "automargin": True, "zeroline": False}
-    if log:
-        tickvals, ticktext = log_ticks(values)
-        axis.update(type="log", tickvals=tickvals, ticktext=ticktext, gridcolor="#e6e6e6")
-    return axis
-
-
-def _layout(xaxis: dict[str, Any], yaxis: dict[str, Any], **extra: Any) -> dict[str, Any]:
-    return {
-        "xaxis": xaxis,
-        "yaxis": yaxis,
-        "margin": {"l": 8, "r": 8, "t": 36, "b": 8},
-        "legend": {
-            "orientation": "h",
-            "x": 0,
-            "y": 0,
-            "yref": "container",
-            "yanchor": "bottom",
-            "traceorder": "normal",
-        },
-        "font": {"size": 12},
-        "hovermode": "closest",
-        "autosize": True,
-        "paper_bgcolor": "#ffffff",
-        "plot_bgcolor": "#ffffff",
-        **extra,
-    }
 
 
 def chart_candidates(result: SelectOut) -> tuple[list[CandidateOut], bool]:

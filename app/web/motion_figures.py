@@ -6,27 +6,12 @@ from typing import Any
 
 from app.schemas import CandidateOut, SegmentOut
 from app.units import Display
+from app.web.chart_style import PALETTE, axis, layout
 
-PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
 TOP = 5
 #: the speed at the start and end of each segment, as a share of its top speed.
 RAMPS = {"accelerate": (0.0, 1.0), "constant": (1.0, 1.0), "decelerate": (1.0, 0.0)}
 REVERSED = ("down", "back")
-
-
-def _layout(x_title: str, y_title: str, **extra: Any) -> dict[str, Any]:
-    return {
-        "xaxis": {"title": {"text": x_title}, "automargin": True, "zeroline": False},
-        "yaxis": {"title": {"text": y_title}, "automargin": True},
-        "margin": {"l": 8, "r": 8, "t": 8, "b": 8},
-        "legend": {"orientation": "h", "x": 0, "y": -0.25, "yanchor": "top"},
-        "font": {"size": 12},
-        "hovermode": "closest",
-        "autosize": True,
-        "paper_bgcolor": "#ffffff",
-        "plot_bgcolor": "#ffffff",
-        **extra,
-    }
 
 
 def motor_figure(
@@ -65,9 +50,9 @@ def motor_figure(
                 f"<extra>{c.id}</extra>",
             }
         )
-    layout = _layout("Screw speed [rpm]", f"Torque [{unit}]")
-    layout["xaxis"]["rangemode"] = layout["yaxis"]["rangemode"] = "tozero"
-    return {"data": data, "layout": layout}
+    x_axis = {**axis("Screw speed [rpm]"), "rangemode": "tozero"}
+    y_axis = {**axis(f"Torque [{unit}]"), "rangemode": "tozero"}
+    return {"data": data, "layout": layout(x_axis, y_axis)}
 
 
 def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float], list[float]]:
@@ -110,11 +95,8 @@ def move_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
             "hovertemplate": f"%{{x:.3g}} s<br>%{{y:.4g}} {unit}<extra>torque</extra>",
         },
     ]
-    layout = _layout("Time [s]", "Screw speed [rpm]")
-    layout["yaxis2"] = {
-        "title": {"text": f"Motor torque [{unit}]"},
-        "overlaying": "y",
-        "side": "right",
-        "automargin": True,
+    torque_axis = {**axis(f"Motor torque [{unit}]"), "overlaying": "y", "side": "right"}
+    return {
+        "data": data,
+        "layout": layout(axis("Time [s]"), axis("Screw speed [rpm]"), yaxis2=torque_axis),
     }
-    return {"data": data, "layout": layout}

@@ -6,7 +6,6 @@ limit does not exist for that candidate (e.g. no PV limit published): the check 
 apply to it. A yes/no check has no demand or capacity, only ``flagged`` failures.
 """
 
-import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import ClassVar, Literal
@@ -16,7 +15,7 @@ import numpy as np
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities
-from app.core.table import Array, CandidateTable, Mask
+from app.core.table import Array, CandidateTable, Mask, Reach
 
 __all__ = [
     "Application",
@@ -28,6 +27,7 @@ __all__ = [
     "Mask",
     "Measure",
     "Quantities",
+    "Reach",
     "ScrewSpec",
     "same",
     "sentence",
@@ -37,33 +37,6 @@ __all__ = [
 Kind = Literal["limit", "advice"]
 #: End fixities from the most to the least flexible.
 FIXITY_ORDER: tuple[EndFixity, ...] = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
-
-
-@dataclass(frozen=True, slots=True)
-class Reach:
-    """What the catalog offers, so that a fix never names a screw nobody makes."""
-
-    max_lead_m: float = math.inf
-    max_root_diameter_m: float = math.inf
-    max_design_load_n: float = math.inf
-    max_length_m: float = math.inf
-    anti_backlash: bool = True
-
-    @classmethod
-    def of(cls, t: CandidateTable) -> "Reach":
-        """The largest of each in a catalog table (unbounded where none is given)."""
-
-        def largest(values: Array) -> float:
-            given = values[~np.isnan(values)]
-            return float(given.max()) if given.size else math.inf
-
-        return cls(
-            max_lead_m=largest(t.lead_m),
-            max_root_diameter_m=largest(t.root_diameter_m),
-            max_design_load_n=largest(t.design_load_n),
-            max_length_m=largest(t.max_length_m),
-            anti_backlash=bool(t.anti_backlash.any()),
-        )
 
 
 @dataclass(frozen=True, slots=True)

@@ -15,6 +15,7 @@ from app.core.checks.base import (
     ScrewSpec,
     where_given,
 )
+from app.core.formulas import limits
 from app.core.phrase import Amount, Phrase
 
 
@@ -31,7 +32,7 @@ class Temperature(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         t_min, t_max = t.temperature_min_c, t.temperature_max_c
-        inside = (t_min <= app.ambient_c) & (app.ambient_c <= t_max)
+        inside = limits.temperature_ok(app.ambient_c, t_min, t_max)
         given = where_given(t_min)
         return Measure(given, flagged=given & ~inside)
 

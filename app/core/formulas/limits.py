@@ -49,9 +49,12 @@ def band_limit(lead_m: float, bands: Bands) -> BandLimit:
 
 
 def temperature_ok(ambient_c: float, min_c: float, max_c: float) -> bool:
-    """Ambient temperature within the assembly's operating range.
+    """Ambient temperature within the assembly's operating range, T_min <= T <= T_max.
+
+    Written with ``&`` so that it accepts floats or NumPy arrays of ranges.
 
     >>> temperature_ok(20.0, 0.0, 93.0), temperature_ok(-5.0, 0.0, 93.0)
     (True, False)
     """
-    return min_c <= ambient_c <= max_c
+    inside: bool = (min_c <= ambient_c) & (ambient_c <= max_c)
+    return inside

@@ -1,0 +1,72 @@
+"""What every chart shares: colours, axes (labelled log ticks) and the layout."""
+
+import math
+from collections.abc import Iterable
+from typing import Any
+
+from app.units import sig
+
+#: Okabe-Ito colours: distinguishable with the common colour-vision deficiencies.
+PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
+#: mantissas labelled on log axes within each decade.
+LOG_STEPS = (1.0, 2.0, 5.0)
+
+
+def rounded(value: float) -> float:
+    """A chart value to 5 significant figures (smaller JSON, no float noise)."""
+    return float(f"{value:.5g}")
+
+
+def log_ticks(values: Iterable[float]) -> tuple[list[float], list[str]]:
+    """Tick positions and labels for a log axis over ``values``: every decade and the 2 and
+    5 between, so a reader never has to count unlabelled gridlines.
+
+    >>> log_ticks([30.0, 700.0])
+    ([20.0, 50.0, 100.0, 200.0, 500.0, 1000.0], ['20', '50', '100', '200', '500', '1000'])
+    """
+    positive = [v for v in values if v > 0]
+    if not positive:
+        return [], []
+    low, high = min(positive), max(positive)
+    ticks = [
+        float(f"{step * 10.0**exponent:.6g}")
+        for exponent in range(math.floor(math.log10(low)) - 1, math.ceil(math.log10(high)) + 1)
+        for step in LOG_STEPS
+    ]
+    below = max((t for t in ticks if t <= low), default=ticks[0])
+    above = min((t for t in ticks if t >= high), default=ticks[-1])
+    shown = [t for t in ticks if below <= t <= above]
+    return shown, [sig(t, 3) for t in shown]
+
+
+def axis(title: str, log: bool = False, values: Iterable[float] = ()) -> dict[str, Any]:
+    """An axis with its title; a log axis labels each decade and the 2 and 5 between."""
+    spec: dict[str, Any] = {"title": {"text": title}, "automargin": True, "zeroline": False}
+    if log:
+        tickvals, ticktext = log_ticks(values)
+        spec.update(type="log", tickvals=tickvals, ticktext=ticktext, gridcolor="#e6e6e6")
+    return spec
+
+
+def layout(xaxis: dict[str, Any], yaxis: dict[str, Any], **extra: Any) -> dict[str, Any]:
+    """The layout every chart shares: white, compact, the legend below the plot (clear of
+    the toolbar)."""
+    return {
+        "xaxis": xaxis,
+        "yaxis": yaxis,
+        "margin": {"l": 8, "r": 8, "t": 36, "b": 8},
+        "legend": {
+            "orientation": "h",
+            "x": 0,
+            "y": 0,
+            "yref": "container",
+            "yanchor": "bottom",
+            "traceorder": "normal",
+        },
+        "font": {"size": 12},
+        "hovermode": "closest",
+        "autosize": True,
+        "paper_bgcolor": "#ffffff",
+        "plot_bgcolor": "#ffffff",
+        **extra,
+    }
