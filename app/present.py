@@ -8,7 +8,8 @@ from typing import Any
 
 from app.catalog import Material, Series
 from app.core.formulas import torque
-from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, Selection
+from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec
+from app.core.selection import Selection
 from app.fields import BY_API, FIELDS
 from app.schemas import (
     AccuracyOut,

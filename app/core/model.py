@@ -369,14 +369,3 @@ class Summary:
     input_change: Mapping[str, float]
     message: Phrase
     changes: tuple[Change, ...] = ()
-
-
-@dataclass(frozen=True, slots=True)
-class Selection:
-    application: Application
-    candidates: tuple[Evaluation, ...]
-    rejected: tuple[Evaluation, ...]
-    evaluated: int
-    passed: int
-    failed_by_check: Mapping[str, int]
-    summary: Summary

@@ -6,11 +6,17 @@ records, for each such value, the candidate's numbers at its low and at its high
 (``ScrewSpec.assumption_ends``, derived values recomputed). Here the candidate is
 re-screened with those numbers through the same check registry, one value at a time, so
 a result can say which assumption it hinges on.
+
+The variants of a whole catalog are built into one table once (``variants_for``); a
+selection then screens only the rows of the candidates it returns.
 """
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
 
 from app.core.model import Application, ScrewSpec
 from app.core.screening import screen_table
@@ -27,6 +33,17 @@ class Robustness:
     hinges_on: tuple[str, ...]
 
 
+@dataclass(frozen=True, slots=True)
+class Variants:
+    """Every screw of a table at the low and the high end of each of its ranged values,
+    one at a time: rows ``start[i]:start[i + 1]`` of ``table`` are screw ``i``'s, and
+    ``names`` gives the ranged value of each row."""
+
+    table: CandidateTable
+    names: tuple[str, ...]
+    start: NDArray[np.intp]
+
+
 def passes(app: Application, screw: ScrewSpec) -> bool:
     """Whether ``screw`` passes every check that applies to ``app``."""
     return bool(screen_table(app, CandidateTable.build([screw])).passed[0])
@@ -38,45 +55,61 @@ def at_values(screw: ScrewSpec, changes: Mapping[str, float]) -> ScrewSpec:
     return replace(screw, **fields)
 
 
-#: Variants of the screws seen so far, by ``id`` of the screw (kept alive beside them).
-_VARIANTS: dict[int, tuple[ScrewSpec, tuple[tuple[str, ScrewSpec], ...]]] = {}
-_VARIANTS_MAX = 100_000
+def build_variants(screws: Sequence[ScrewSpec]) -> Variants:
+    """The variants of ``screws`` as one table (see ``Variants``)."""
+    rows: list[ScrewSpec] = []
+    names: list[str] = []
+    start = [0]
+    for screw in screws:
+        for name, ends in screw.assumption_ends.items():
+            for changes in ends:
+                if changes:
+                    rows.append(at_values(screw, changes))
+                    names.append(name)
+        start.append(len(rows))
+    return Variants(CandidateTable.build(rows), tuple(names), np.array(start, dtype=np.intp))
 
 
-def variants_of(screw: ScrewSpec) -> tuple[tuple[str, ScrewSpec], ...]:
-    """``screw`` at the low and the high end of each of its ranged values, one at a
-    time, with the value's name; built once per screw (catalog screws live on)."""
-    held = _VARIANTS.get(id(screw))
-    if held is not None and held[0] is screw:
+#: The variants of the tables seen so far (the catalog's lives as long as the app), by
+#: ``id`` of the table, kept beside it so the id stays its own.
+_BY_TABLE: dict[int, tuple[CandidateTable, Variants]] = {}
+_BY_TABLE_MAX = 8
+
+
+def variants_for(table: CandidateTable) -> Variants:
+    """``build_variants`` of ``table``'s screws, built once per table."""
+    held = _BY_TABLE.get(id(table))
+    if held is not None and held[0] is table:
         return held[1]
-    found = tuple(
-        (name, at_values(screw, changes))
-        for name, ends in screw.assumption_ends.items()
-        for changes in ends
-        if changes
-    )
-    if len(_VARIANTS) >= _VARIANTS_MAX:
-        _VARIANTS.clear()
-    _VARIANTS[id(screw)] = (screw, found)
+    found = build_variants(table.screws)
+    if len(_BY_TABLE) >= _BY_TABLE_MAX:
+        _BY_TABLE.clear()
+    _BY_TABLE[id(table)] = (table, found)
+    return found
+
+
+def judge(app: Application, variants: Variants, positions: Sequence[int]) -> list[Robustness]:
+    """``Robustness`` of the (passing) screws at ``positions`` of the variants' source,
+    with one screening of all their variants."""
+    start = variants.start
+    spans = [range(start[p], start[p + 1]) for p in positions]
+    rows = np.fromiter((r for span in spans for r in span), dtype=np.intp)
+    passed = screen_table(app, variants.table.take(rows)).passed.tolist() if rows.size else []
+    found, k = [], 0
+    for span in spans:
+        hinges: list[str] = []
+        for r in span:
+            name = variants.names[r]
+            if not passed[k] and name not in hinges:
+                hinges.append(name)
+            k += 1
+        found.append(Robustness(not hinges, tuple(hinges)))
     return found
 
 
 def robustness_of(app: Application, screws: Sequence[ScrewSpec]) -> list[Robustness]:
-    """``robustness`` of many passing screws with one screening of every variant: each
-    screw at the low and the high end of each of its ranged values, one at a time."""
-    variants: list[ScrewSpec] = []
-    owners: list[tuple[int, str]] = []
-    for k, screw in enumerate(screws):
-        for name, variant in variants_of(screw):
-            variants.append(variant)
-            owners.append((k, name))
-    hinges: list[list[str]] = [[] for _ in screws]
-    if variants:
-        passed = screen_table(app, CandidateTable.build(variants)).passed.tolist()
-        for (k, name), ok in zip(owners, passed, strict=True):
-            if not ok and name not in hinges[k]:
-                hinges[k].append(name)
-    return [Robustness(not h, tuple(h)) for h in hinges]
+    """``Robustness`` of passing screws not in a prebuilt table (a screw of the user's)."""
+    return judge(app, build_variants(screws), range(len(screws)))
 
 
 def robustness(app: Application, screw: ScrewSpec) -> Robustness:
@@ -87,9 +120,4 @@ def robustness(app: Application, screw: ScrewSpec) -> Robustness:
     """
     if not passes(app, screw):
         return Robustness(False, ())
-    hinges = tuple(
-        name
-        for name, ends in screw.assumption_ends.items()
-        if any(changes and not passes(app, at_values(screw, changes)) for changes in ends)
-    )
-    return Robustness(not hinges, hinges)
+    return robustness_of(app, [screw])[0]

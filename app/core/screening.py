@@ -29,6 +29,8 @@ class Screening:
     table: CandidateTable
     quantities: Quantities[Array]
     measures: dict[str, Measure]
+    #: each check's demand / capacity (None for a yes/no check)
+    utilization: dict[str, Array | None]
     failed: dict[str, Mask]
     failed_by_check: dict[str, Mask]
     passed: Mask
@@ -58,27 +60,26 @@ def eligible_mask(app: Application, table: CandidateTable) -> Mask:
     return mask
 
 
-def _failed(m: Measure) -> Mask:
+def _failed(m: Measure, utilization: Array | None) -> Mask:
     """Where a check applies and fails: over its limit, or a yes/no failure."""
-    failed = np.zeros(len(m.applicable), dtype=bool)
-    utilization = m.utilization()
-    if utilization is not None:
-        failed |= utilization > PASS_UTILIZATION
+    if utilization is None:
+        failed = np.zeros(len(m.applicable), dtype=bool)
+    else:
+        failed = utilization > PASS_UTILIZATION
     if m.flagged is not None:
         failed |= m.flagged
     return m.applicable & failed
 
 
-def _worst(measures: dict[str, Measure], rejecting: dict[str, Mask], n: int) -> Array:
+def _worst(
+    measures: dict[str, Measure], utilization: dict[str, Array | None], n_failed: Array
+) -> Array:
     """Worst utilisation of the rejecting checks per candidate; a failed yes/no check ranks
     behind every numeric near-miss (1 + the number of failed checks)."""
-    worst = np.zeros(n)
-    n_failed = np.zeros(n)
-    for name, failed in rejecting.items():
-        utilization = measures[name].utilization()
-        if utilization is not None:
-            worst = np.fmax(worst, np.where(measures[name].applicable, utilization, np.nan))
-        n_failed += failed
+    worst = np.zeros(len(n_failed))
+    for name, u in utilization.items():
+        if u is not None:
+            worst = np.fmax(worst, np.where(measures[name].applicable, u, np.nan))
     return np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)
 
 
@@ -98,7 +99,9 @@ def screen_table(
     index = np.arange(len(table)) if index is None else index
     q = operating_point(app, table)
     measures = {c.name: c.measure(app, table, q) for c in REGISTRY if c.applies(app)}
-    failed = {name: _failed(m) for name, m in measures.items()}
+    with np.errstate(invalid="ignore", divide="ignore"):
+        utilization = {name: m.utilization() for name, m in measures.items()}
+    failed = {name: _failed(m, utilization[name]) for name, m in measures.items()}
     rejecting = {name: mask for name, mask in failed.items() if _rejects(app, name)}
     n_failed = np.zeros(len(table))
     for mask in rejecting.values():
@@ -107,12 +110,13 @@ def screen_table(
     for name, mask in failed.items():
         if name not in rejecting:
             warned |= mask
-    worst = _worst(measures, rejecting, len(table))
+    worst = _worst(measures, {k: utilization[k] for k in rejecting}, n_failed)
     return Screening(
         index,
         table,
         q,
         measures,
+        utilization,
         failed,
         rejecting,
         n_failed == 0,

@@ -1,16 +1,18 @@
 """Selection: screen every candidate, rank the passing ones, explain the rejected."""
 
 from collections import Counter
-from collections.abc import Mapping, Sequence
-from dataclasses import replace
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, replace
+from functools import partial
+from typing import overload
 
 import numpy as np
 
 from app.core.checks import BY_NAME
 from app.core.evaluate import evaluations
-from app.core.model import Application, Change, Evaluation, ScrewSpec, Selection, Summary
+from app.core.model import Application, Change, Evaluation, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
-from app.core.robustness import robustness_of
+from app.core.robustness import Robustness, judge, robustness_of, variants_for
 from app.core.screening import Screening, screen
 from app.core.table import CandidateTable
 
@@ -29,11 +31,7 @@ MOTOR_CHECKS = ("torque", "motor_curve", "motor_rms", "motor_speed")
 def motor_use(s: Screening) -> np.ndarray:
     """Per candidate, the largest share of the motor it uses (torque, curve, RMS, speed);
     the drive torque itself when no motor is given."""
-    shares = [
-        use
-        for name in MOTOR_CHECKS
-        if name in s.measures and (use := s.measures[name].utilization()) is not None
-    ]
+    shares = [use for name in MOTOR_CHECKS if (use := s.utilization.get(name)) is not None]
     if not shares:
         return s.total_torque_nm
     return np.asarray(np.nanmax(np.stack(shares), axis=0), dtype=np.float64)
@@ -65,11 +63,64 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
 
 def with_robustness(app: Application, passing: Sequence[Evaluation]) -> tuple[Evaluation, ...]:
     """Passing candidates with their robustness to the catalog's ranged values."""
-    found = robustness_of(app, [e.screw for e in passing])
+    return _attach(passing, robustness_of(app, [e.screw for e in passing]))
+
+
+def _attach(passing: Sequence[Evaluation], found: Sequence[Robustness]) -> tuple[Evaluation, ...]:
     return tuple(
         replace(e, robust=r.robust, hinges_on=r.hinges_on)
         for e, r in zip(passing, found, strict=True)
     )
+
+
+class Built(Sequence[Evaluation]):
+    """Evaluations built when first read: a caller that only ranks or counts, or reads
+    the screening's arrays, never pays for messages and breakdowns it does not show."""
+
+    __slots__ = ("_build", "_items", "_n")
+
+    def __init__(self, n: int, build: Callable[[], Sequence[Evaluation]]) -> None:
+        self._n, self._build = n, build
+        self._items: tuple[Evaluation, ...] | None = None
+
+    def _all(self) -> tuple[Evaluation, ...]:
+        if self._items is None:
+            self._items = tuple(self._build())
+        return self._items
+
+    def __len__(self) -> int:
+        return self._n
+
+    @overload
+    def __getitem__(self, i: int) -> Evaluation: ...
+    @overload
+    def __getitem__(self, i: slice) -> Sequence[Evaluation]: ...
+    def __getitem__(self, i: int | slice) -> Evaluation | Sequence[Evaluation]:
+        return self._all()[i]
+
+    def __iter__(self) -> Iterator[Evaluation]:
+        return iter(self._all())
+
+
+@dataclass(frozen=True, slots=True)
+class Selection:
+    """A selection's answer: the ranked passing candidates (``candidates``, cut to the
+    limit) and the nearest rejected ones, built when read; the counts and the summary;
+    and the screening they come from, with the positions (in ``screening``) of the
+    returned candidates and the robustness of each passing one, for callers that read
+    the arrays directly."""
+
+    application: Application
+    candidates: Sequence[Evaluation]
+    rejected: Sequence[Evaluation]
+    evaluated: int
+    passed: int
+    failed_by_check: Mapping[str, int]
+    summary: Summary
+    screening: Screening
+    ranked: tuple[int, ...]
+    nearest: tuple[int, ...]
+    robustness: tuple[Robustness, ...]
 
 
 def _nearest_order(s: Screening) -> np.ndarray:
@@ -90,21 +141,25 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
         candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)
     )
     s = screen(app, table)
-    ranked = _rank_order(app, s)[: app.limit]
-    nearest = _nearest_order(s)[: app.limit]
-    passing = with_robustness(app, evaluations(app, s, ranked.tolist()))
-    rejected = tuple(evaluations(app, s, nearest.tolist()))
+    ranked = _rank_order(app, s)[: app.limit].tolist()
+    nearest = _nearest_order(s)[: app.limit].tolist()
+    found = judge(app, variants_for(table), s.index[ranked].tolist())
+    rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
     by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(s.passed.sum())
     return Selection(
         application=app,
-        candidates=passing,
+        candidates=Built(len(ranked), lambda: _attach(evaluations(app, s, ranked), found)),
         rejected=rejected,
         evaluated=len(s.index),
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
         summary=summarize(app, table, len(s.index), n_passed, rejected, by_check),
+        screening=s,
+        ranked=tuple(ranked),
+        nearest=tuple(nearest),
+        robustness=tuple(found),
     )
 
 

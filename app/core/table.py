@@ -199,8 +199,9 @@ class CandidateTable:
         if len(index) == len(self) and bool(np.all(index == np.arange(len(self)))):
             return self
         picked = {name: getattr(self, name)[index] for name in COLUMNS}
+        screws = self.screws
         return CandidateTable(
-            screws=tuple(self.screws[i] for i in index), reach=self.reach, **picked
+            screws=tuple([screws[i] for i in index.tolist()]), reach=self.reach, **picked
         )
 
     def __len__(self) -> int:

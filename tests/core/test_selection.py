@@ -14,6 +14,7 @@ from hypothesis import HealthCheck, given, settings
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
+from app.core.robustness import robustness
 from app.core.screening import eligible_mask, screen
 from app.core.selection import input_change, select
 from app.units import render
@@ -93,7 +94,7 @@ def test_lead_filter_is_exact_within_half_a_percent(
 
 def test_no_matching_lead_says_so(catalog: Catalog) -> None:
     sel = select(light_app(lead_m=0.0071), catalog.table)
-    assert sel.evaluated == 0 and sel.candidates == () and sel.rejected == ()
+    assert sel.evaluated == 0 and not sel.candidates and not sel.rejected
     assert "7.1 mm lead" in render(sel.summary.message)
 
 
@@ -126,7 +127,7 @@ def test_nothing_passes_and_the_summary_names_the_nearest_fix(catalog: Catalog) 
     """5 kN on a 4 m fixed-free column at 0.5 m/s: no candidate survives."""
     app = Application(load_n=5000.0, speed_m_s=0.5, length_m=4.0, end_fixity="fixed-free")
     sel = select(app, catalog.table)
-    assert sel.passed == 0 and sel.candidates == ()
+    assert sel.passed == 0 and not sel.candidates
     assert sel.summary.best_rejected_id == sel.rejected[0].screw.id
     assert render(sel.summary.message).startswith("No candidate passes.")
     worst = max(sel.failed_by_check, key=lambda k: sel.failed_by_check[k])
@@ -182,3 +183,27 @@ def test_zero_stroke_agrees_between_screening_and_evaluation(catalog: Catalog) -
     s = screen(app, catalog.table)
     k = list(s.index).index(catalog.screws.index(screw))
     assert bool(s.passed[k]) == evaluate(app, screw).passed
+
+
+@FIXTURE_OK
+@given(app=applications)
+def test_robustness_from_the_catalog_variants_matches_one_screw(
+    catalog: Catalog, app: Application
+) -> None:
+    """``select`` reads robustness from the catalog's prebuilt variant table; each passing
+    candidate's verdict equals re-screening that screw alone at each end of its ranges."""
+    sel = select(replace(app, limit=5), catalog.table)
+    for ev, found in zip(sel.candidates, sel.robustness, strict=True):
+        alone = robustness(app, ev.screw)
+        assert (found.robust, found.hinges_on) == (alone.robust, alone.hinges_on), ev.screw.id
+        assert (ev.robust, ev.hinges_on) == (alone.robust, alone.hinges_on)
+
+
+def test_a_marginal_candidate_is_reported_from_the_variants(catalog: Catalog) -> None:
+    """At least one seed candidate hinges on an assumed value for a loaded axis (so the
+    comparison above is not only between robust verdicts)."""
+    app = Application(load_n=400.0, speed_m_s=0.02, length_m=0.4, lead_m=None, limit=50)
+    sel = select(app, catalog.table)
+    assert any(r.hinges_on for r in sel.robustness)
+    for ev, found in zip(sel.candidates, sel.robustness, strict=True):
+        assert found.hinges_on == robustness(app, ev.screw).hinges_on
