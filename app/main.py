@@ -8,7 +8,6 @@ from app import __version__
 from app.api import docs
 from app.api import routes as api
 from app.catalog import load_catalog
-from app.core.robustness import variants_for
 from app.errors import AppError, app_error_handler, http_error_handler, validation_error_handler
 from app.paths import resource_dir
 from app.server.cache import ResponseCache
@@ -42,7 +41,6 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         redoc_url=None,
     )
     app.state.catalog = load_catalog(settings.catalog_dirs)
-    variants_for(app.state.catalog.table)  # the robustness rows, before the first query
     app.include_router(api.router)
     app.include_router(pages.router)
     app.include_router(custom.router)

@@ -7,8 +7,8 @@ records, for each such value, the candidate's numbers at its low and at its high
 re-screened with those numbers through the same check registry, one value at a time, so
 a result can say which assumption it hinges on.
 
-The variants of a whole catalog are built into one table once (``variants_for``); a
-selection then screens only the rows of the candidates it returns.
+The variants of a whole catalog are built into one table once (``variants_for``, at
+start-up); a selection then screens only the rows of the candidates it returns.
 """
 
 from collections.abc import Mapping, Sequence
@@ -77,7 +77,8 @@ _BY_TABLE_MAX = 8
 
 
 def variants_for(table: CandidateTable) -> Variants:
-    """``build_variants`` of ``table``'s screws, built once per table."""
+    """``build_variants`` of ``table``'s screws, built once per table and kept: for a
+    table that serves many queries (the catalog's, at start-up)."""
     held = _BY_TABLE.get(id(table))
     if held is not None and held[0] is table:
         return held[1]
@@ -86,6 +87,17 @@ def variants_for(table: CandidateTable) -> Variants:
         _BY_TABLE.clear()
     _BY_TABLE[id(table)] = (table, found)
     return found
+
+
+def robustness_in(
+    app: Application, table: CandidateTable, positions: Sequence[int]
+) -> list[Robustness]:
+    """``Robustness`` of the screws at ``positions`` of ``table``: from its kept variants
+    (``variants_for``) when it has them, else from variants of those screws alone."""
+    held = _BY_TABLE.get(id(table))
+    if held is not None and held[0] is table:
+        return judge(app, held[1], positions)
+    return robustness_of(app, [table.screws[p] for p in positions])
 
 
 def judge(app: Application, variants: Variants, positions: Sequence[int]) -> list[Robustness]:

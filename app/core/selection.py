@@ -12,7 +12,7 @@ from app.core.checks import BY_NAME
 from app.core.evaluate import evaluations
 from app.core.model import Application, Change, Evaluation, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
-from app.core.robustness import Robustness, judge, robustness_of, variants_for
+from app.core.robustness import Robustness, robustness_in, robustness_of
 from app.core.screening import Screening, screen
 from app.core.table import CandidateTable
 
@@ -143,7 +143,7 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     s = screen(app, table)
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
-    found = judge(app, variants_for(table), s.index[ranked].tolist())
+    found = robustness_in(app, table, s.index[ranked].tolist())
     rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
     by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})

@@ -6,13 +6,15 @@ the tests use to validate them.
 """
 
 from collections.abc import Callable, Iterable
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
+
+import numpy as np
 
 from app.catalog import Catalog
 from app.core.formulas import critical_speed, pv
-from app.core.model import Application, Evaluation
-from app.core.selection import select
+from app.core.model import Application
+from app.core.screening import screen_table
 from app.schemas import CandidateOut, SelectOut
 from app.units import Display, api_value, sig
 from app.web.chart_style import PALETTE
@@ -250,25 +252,47 @@ def torque_figure(
     }
 
 
-def lead_sweep(app: Application, top: CandidateOut, catalog: Catalog) -> list[Evaluation]:
-    """The top screw's size and nut with every lead the catalog offers, evaluated by the
+@dataclass(frozen=True, slots=True)
+class LeadPoint:
+    """One lead of the top screw's size for this application: drive torque [N m], the
+    screw speed as a share of the allowed speed and the PV as a share of its limit (None:
+    no PV limit)."""
+
+    lead_m: float
+    total_nm: float
+    speed_share: float
+    pv_share: float | None
+
+
+def lead_sweep(app: Application, top: CandidateOut, catalog: Catalog) -> list[LeadPoint]:
+    """The top screw's size and nut with every lead the catalog offers, screened by the
     core for this application (any lead), shortest lead first."""
-    series = catalog.series.get(top.series)
-    if series is None:
+    index = np.array(
+        [
+            i
+            for i, s in enumerate(catalog.table.screws)
+            if s.series_id == top.series
+            and s.coated == top.coated
+            and s.anti_backlash == top.anti_backlash
+        ],
+        dtype=np.intp,
+    )
+    if not index.size:
         return []
-    screws = [
-        s for s in series.screws if s.coated == top.coated and s.anti_backlash == top.anti_backlash
+    sc = screen_table(replace(app, lead_m=None), catalog.table.take(index))
+    q, pv_use = sc.quantities, sc.utilization.get("pv")
+    points = [
+        LeadPoint(
+            lead_m=float(sc.table.lead_m[k]),
+            total_nm=float(q.total_nm[k]),
+            speed_share=float(q.rpm[k] / q.allowed_rpm[k]),
+            pv_share=None
+            if pv_use is None or not sc.measures["pv"].applicable[k]
+            else float(pv_use[k]),
+        )
+        for k in range(len(index))
     ]
-    selection = select(replace(app, lead_m=None, limit=100), screws)
-    return sorted((*selection.candidates, *selection.rejected), key=lambda e: e.screw.lead_m)
-
-
-def _utilisation(ev: Evaluation, name: str) -> float | None:
-    """A check's utilisation in per cent, None when it does not apply."""
-    check = next((c for c in ev.checks if c.name == name), None)
-    if check is None or check.utilization is None:
-        return None
-    return _round(check.utilization * 100)
+    return sorted(points, key=lambda p: p.lead_m)
 
 
 def _sweep_shapes(leads: list[float], locking: float, chosen: float) -> list[dict[str, Any]]:
@@ -305,25 +329,29 @@ def _sweep_shapes(leads: list[float], locking: float, chosen: float) -> list[dic
     return shapes
 
 
-def _sweep_traces(sweep: list[Evaluation], leads: list[float], d: Display) -> list[dict[str, Any]]:
+def _percent(share: float | None) -> float | None:
+    return None if share is None else _round(share * 100)
+
+
+def _sweep_traces(sweep: list[LeadPoint], leads: list[float], d: Display) -> list[dict[str, Any]]:
     """Torque on the left axis; speed and PV as shares of their limits on the right."""
     unit = d.label("torque")
     series: list[tuple[str, str, list[float | None], str, str]] = [
         (
             "Drive torque",
             "y",
-            [_round(d.value(ev.torque.total_nm, "torque")) for ev in sweep],
+            [_round(d.value(p.total_nm, "torque")) for p in sweep],
             "#0072B2",
             f"%{{y:.4g}} {unit}",
         ),
         (
             "Speed, % of allowed",
             "y2",
-            [_round(ev.rpm / ev.critical_speed.allowed_rpm * 100) for ev in sweep],
+            [_round(p.speed_share * 100) for p in sweep],
             "#D55E00",
             "%{y:.3g} %",
         ),
-        ("PV, % of limit", "y2", [_utilisation(ev, "pv") for ev in sweep], "#009E73", "%{y:.3g} %"),
+        ("PV, % of limit", "y2", [_percent(p.pv_share) for p in sweep], "#009E73", "%{y:.3g} %"),
     ]
     return [
         {
@@ -372,12 +400,12 @@ def _sweep_annotations(leads: list[float], locking: float, chosen: float) -> lis
     return notes
 
 
-def lead_sweep_figure(sweep: list[Evaluation], top: CandidateOut, d: Display) -> dict[str, Any]:
+def lead_sweep_figure(sweep: list[LeadPoint], top: CandidateOut, d: Display) -> dict[str, Any]:
     """Torque, speed against the critical speed and PV use across the leads of one size:
     the trade-off that picks the lead. Torque on the left axis, the two shares of their
     limits (per cent) on the right; the self-locking band (with the friction margin)
     shaded, the chosen lead dashed."""
-    leads = [_round(d.value(ev.screw.lead_m * 1e3, "length")) for ev in sweep]
+    leads = [_round(d.value(p.lead_m * 1e3, "length")) for p in sweep]
     data = _sweep_traces(sweep, leads, d)
     locking = _round(d.value(top.max_self_locking_lead_with_margin_mm, "length"))
     chosen = _round(d.value(top.lead_mm, "length"))

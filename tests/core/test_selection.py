@@ -14,7 +14,7 @@ from hypothesis import HealthCheck, given, settings
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
-from app.core.robustness import robustness
+from app.core.robustness import robustness, variants_for
 from app.core.screening import eligible_mask, screen
 from app.core.selection import input_change, select
 from app.units import render
@@ -192,6 +192,7 @@ def test_robustness_from_the_catalog_variants_matches_one_screw(
 ) -> None:
     """``select`` reads robustness from the catalog's prebuilt variant table; each passing
     candidate's verdict equals re-screening that screw alone at each end of its ranges."""
+    variants_for(catalog.table)
     sel = select(replace(app, limit=5), catalog.table)
     for ev, found in zip(sel.candidates, sel.robustness, strict=True):
         alone = robustness(app, ev.screw)
@@ -203,6 +204,7 @@ def test_a_marginal_candidate_is_reported_from_the_variants(catalog: Catalog) ->
     """At least one seed candidate hinges on an assumed value for a loaded axis (so the
     comparison above is not only between robust verdicts)."""
     app = Application(load_n=400.0, speed_m_s=0.02, length_m=0.4, lead_m=None, limit=50)
+    variants_for(catalog.table)
     sel = select(app, catalog.table)
     assert any(r.hinges_on for r in sel.robustness)
     for ev, found in zip(sel.candidates, sel.robustness, strict=True):
