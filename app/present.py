@@ -7,9 +7,10 @@ from collections.abc import Mapping as Units
 from typing import Any
 
 from app.catalog import Material, Series
+from app.core.brief import Brief
 from app.core.formulas import torque
 from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec
-from app.core.selection import Selection
+from app.core.selection import Selection, short_forms
 from app.fields import BY_API, FIELDS
 from app.schemas import (
     AccuracyOut,
@@ -270,10 +271,9 @@ def candidate_out(
     )
 
 
-def candidate_summary(ev: Evaluation) -> dict[str, Any]:
+def candidate_summary(b: Brief) -> dict[str, Any]:
     """A passing candidate in the compact form (``CandidateSummaryOut``), API units."""
-    s, life = ev.screw, ev.life
-    years = None if life is None else [life.years_min, life.years_max]
+    s, r = b.screw, b.quantities
     return {
         "id": s.id,
         "series": s.series_id,
@@ -282,27 +282,27 @@ def candidate_summary(ev: Evaluation) -> dict[str, Any]:
         "coated": s.coated,
         "outer_diameter_mm": _mm(s.outer_diameter_m),
         "lead_mm": _mm(s.lead_m),
-        "rpm": ev.rpm,
-        "total_torque_nm": ev.torque.total_nm,
-        "efficiency": ev.efficiency,
-        "self_locking": ev.self_locking,
-        "critical_speed_margin": ev.critical_speed.margin,
-        "life_years": None if years is None or None in years else years,
-        "utilization": {c.name: c.utilization for c in ev.checks},
-        "governing_check": ev.governing_check,
-        "governing_limit_provenance": ev.governing_limit_provenance,
-        "passed": ev.passed,
-        "robust": ev.robust,
-        "hinges_on": list(ev.hinges_on),
-        "warnings": [c.name for c in ev.checks if c.kind == "advice" and not c.passed],
+        "rpm": r.rpm,
+        "total_torque_nm": r.total_nm,
+        "efficiency": b.efficiency,
+        "self_locking": b.self_locking,
+        "critical_speed_margin": b.critical_speed_margin,
+        "life_years": None if b.life_years is None else list(b.life_years),
+        "utilization": {c.name: c.utilization for c in b.checks},
+        "governing_check": b.governing_check,
+        "governing_limit_provenance": b.governing_limit_provenance,
+        "passed": b.passed,
+        "robust": b.robust,
+        "hinges_on": list(b.hinges_on),
+        "warnings": [c.name for c in b.checks if c.kind == "advice" and not c.passed],
     }
 
 
-def rejected_summary(ev: Evaluation, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+def rejected_summary(b: Brief, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
     """A rejected candidate in the compact form (``RejectedSummaryOut``): its failed
     checks with their utilisation and fix, and the fixes joined as in the full form."""
     failed, fixes = [], []
-    for c in ev.checks:
+    for c in b.checks:
         if not c.passed:
             fix = c.fix
             text = None if fix is None else render(fix, units)
@@ -310,14 +310,15 @@ def rejected_summary(ev: Evaluation, units: Units[str, str] = DEFAULT_UNITS) -> 
                 {"name": c.name, "kind": c.kind, "utilization": c.utilization, "fix": text}
             )
             fixes += [text] if text else []
-    return {"id": ev.screw.id, "failed": failed, "fix": " ".join(fixes) if fixes else None}
+    return {"id": b.screw.id, "failed": failed, "fix": " ".join(fixes) if fixes else None}
 
 
 def selection_summary(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
     """Candidates, rejected, counts and summary in the compact form (``SelectSummaryOut``)."""
+    passing, rejected = short_forms(sel)
     return {
-        "candidates": [candidate_summary(e) for e in sel.candidates],
-        "rejected": [rejected_summary(e, units) for e in sel.rejected],
+        "candidates": [candidate_summary(b) for b in passing],
+        "rejected": [rejected_summary(b, units) for b in rejected],
         **_counts_and_summary(sel, units),
     }
 

@@ -8,8 +8,9 @@ from typing import Any
 import numpy as np
 
 from app.core import motion
+from app.core.brief import CheckRow, check_rows, governing, limit_provenance, number, ratio
 from app.core.checks import BY_NAME
-from app.core.checks.base import Check, Measure, Reach
+from app.core.checks.base import Check, Reach
 from app.core.formulas import critical_speed
 from app.core.model import (
     PV,
@@ -21,35 +22,15 @@ from app.core.model import (
     Evaluation,
     Life,
     Motion,
-    ProvenanceKind,
     ScrewSpec,
     Segment,
     Torque,
 )
 from app.core.quantities import Quantities, axial_load
 from app.core.screening import Screening, screen_table
-from app.core.table import CandidateTable, Mask
+from app.core.table import CandidateTable
 
 __all__ = ["axial_load", "evaluate", "evaluations"]
-
-
-def _number(x: float) -> float | None:
-    return None if math.isnan(x) else x
-
-
-#: One check of one candidate, gathered from the screening arrays:
-#: (applies, demand, capacity, failed).
-CheckRow = tuple[bool, float | None, float | None, bool]
-
-
-def _check_rows(m: Measure, failed: Mask, index: list[int]) -> list[CheckRow]:
-    """The screening's values of one check at ``index``, as plain Python values."""
-    n = len(index)
-    demand = [None] * n if m.demand is None else m.demand[index].tolist()
-    capacity = [None] * n if m.capacity is None else m.capacity[index].tolist()
-    return list(
-        zip(m.applicable[index].tolist(), demand, capacity, failed[index].tolist(), strict=True)
-    )
 
 
 def _result(
@@ -62,8 +43,7 @@ def _result(
 ) -> CheckResult:
     """One check of one candidate; its explanation and fix are written when read."""
     _, demand, capacity, failed = row
-    value = None if demand is None else _number(demand)
-    limit = None if capacity is None else _number(capacity)
+    value, limit = number(demand), number(capacity)
     numeric = value is not None and limit is not None
     return CheckResult(
         name=check.name,
@@ -73,47 +53,13 @@ def _result(
         value=value if numeric else None,
         limit=limit if numeric else None,
         quantity=check.quantity if numeric else None,
-        utilization=value / limit if value is not None and limit else None,
+        utilization=ratio(demand, capacity),
         formula=check.formula,
         sources=check.sources,
         explanation=partial(check.explain, app, s, r, not failed),
         remedy=partial(check.fix, app, s, r, reach),
         remedy_inputs=partial(check.input_limits, app, s, r),
     )
-
-
-def _governing(checks: tuple[CheckResult, ...]) -> CheckResult | None:
-    """The check with the highest utilisation, or the first failed yes/no check."""
-    utilized = [c for c in checks if c.utilization is not None]
-    governing = max(utilized, key=lambda c: c.utilization or 0.0) if utilized else None
-    failed = [c for c in checks if not c.passed]
-    if failed and (governing is None or governing.passed):
-        return failed[0]
-    return governing
-
-
-#: Provenance kinds from the least to the most certain.
-CERTAINTY: tuple[ProvenanceKind, ...] = (
-    "assumed",
-    "derived",
-    "user",
-    "vendor",
-    "handbook",
-    "seed",
-    "standard",
-)
-
-
-def limit_provenance(check: CheckResult | None, s: ScrewSpec) -> ProvenanceKind | None:
-    """How certain the governing check's limit is: the least certain provenance of the
-    catalog values its capacity rests on ("user" when the capacity is the user's input)."""
-    if check is None:
-        return None
-    fields = BY_NAME[check.name].capacity_sources
-    if not fields:
-        return "user"
-    kinds = [s.provenance[f].kind for f in fields if f in s.provenance]
-    return min(kinds, key=CERTAINTY.index) if kinds else None
 
 
 def _torque(app: Application, s: ScrewSpec, r: Quantities[float]) -> Torque:
@@ -150,12 +96,12 @@ def _pv(s: ScrewSpec, r: Quantities[float]) -> PV:
 def _life(s: ScrewSpec, r: Quantities[float]) -> Life | None:
     if s.life_min_m is None or s.life_max_m is None:
         return None
-    return Life(s.life_min_m, s.life_max_m, _number(r.life_years_min), _number(r.life_years_max))
+    return Life(s.life_min_m, s.life_max_m, number(r.life_years_min), number(r.life_years_max))
 
 
 def _accuracy(s: ScrewSpec, r: Quantities[float]) -> Accuracy:
     return Accuracy(
-        lead_error_m=_number(r.lead_error_m),
+        lead_error_m=number(r.lead_error_m),
         repeatability_m=s.repeatability_m,
         backlash_min_m=s.backlash_min_m,
         backlash_max_m=s.backlash_max_m,
@@ -189,7 +135,7 @@ def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> li
         return []
     rows = sc.quantities.rows(index)
     thread = {name: getattr(sc.table, name)[index].tolist() for name in THREAD_COLUMNS}
-    checks = {name: _check_rows(m, sc.failed[name], index) for name, m in sc.measures.items()}
+    checks = {name: check_rows(m, sc.failed[name], index) for name, m in sc.measures.items()}
     worst = sc.max_utilization[index].tolist()
     moves = _motions(app, sc, index, rows)
     passed = sc.passed[index].tolist()
@@ -250,9 +196,8 @@ def _evaluation(
     move: Motion | None = None,
 ) -> Evaluation:
     """One candidate's report; ``verdict`` is (passed, worst utilisation) from screening."""
-    traverse = _number(thread["traverse_limit_m_s"])
-    rejecting = tuple(c for c in checks if c.kind == "limit" or app.advice == "reject")
-    governing = _governing(rejecting)
+    traverse = number(thread["traverse_limit_m_s"])
+    top = governing(app, checks)
     return Evaluation(
         screw=s,
         axial_load_n=r.force_n,
@@ -288,15 +233,15 @@ def _evaluation(
         accuracy=_accuracy(s, r),
         checks=checks,
         passed=verdict[0],
-        governing_check=None if governing is None else governing.name,
-        governing_limit_provenance=limit_provenance(governing, s),
+        governing_check=None if top is None else top.name,
+        governing_limit_provenance=limit_provenance(top, s),
         max_utilization=verdict[1],
         motion=move,
     )
 
 
 def _buckling(app: Application, s: ScrewSpec, r: Quantities[float]) -> Buckling:
-    transition = _number(r.transition_slenderness)
+    transition = number(r.transition_slenderness)
     short = transition is not None and r.slenderness < transition
     return Buckling(
         applies=app.compression,

@@ -8,6 +8,7 @@ from typing import overload
 
 import numpy as np
 
+from app.core.brief import Brief, briefs
 from app.core.checks import BY_NAME
 from app.core.evaluate import evaluations
 from app.core.model import Application, Change, Evaluation, ScrewSpec, Summary
@@ -121,6 +122,14 @@ class Selection:
     ranked: tuple[int, ...]
     nearest: tuple[int, ...]
     robustness: tuple[Robustness, ...]
+
+
+def short_forms(sel: Selection) -> tuple[list[Brief], list[Brief]]:
+    """The returned passing and rejected candidates in short (``brief.briefs``), read
+    from the selection's screening without building the full evaluations."""
+    app, s = sel.application, sel.screening
+    found = [(r.robust, r.hinges_on) for r in sel.robustness]
+    return briefs(app, s, sel.ranked, found), briefs(app, s, sel.nearest)
 
 
 def _nearest_order(s: Screening) -> np.ndarray:
