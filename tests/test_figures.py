@@ -235,6 +235,18 @@ def test_motor_and_move_charts_follow_the_segments(catalog: Catalog) -> None:
     assert times[-1] == pytest.approx(top.profile.cycle_time_s)
     constant = next(i for i, s in enumerate(top.segments) if s.name == "constant")
     assert move["data"][0]["y"][2 * constant] == pytest.approx(top.segments[constant].rpm)
+    # the back move turns the shaft the other way: speed and torque both change sign, and
+    # the two axes share their zero (ranges symmetric about it)
+    back = next(i for i, s in enumerate(top.segments) if s.direction == "back")
+    speed, torque = move["data"][0]["y"], move["data"][1]["y"]
+    assert speed[2 * back + 1] < 0 and torque[2 * back] == pytest.approx(
+        -top.segments[back].torque_nm
+    )
+    for axis in ("yaxis", "yaxis2"):
+        low, high = move["layout"][axis]["range"]
+        assert low == -high and high > 0
+    assert move["layout"]["yaxis"]["range"][1] >= max(abs(v) for v in speed)
+    assert move["layout"]["yaxis2"]["range"][1] >= max(abs(v) for v in torque)
 
 
 def test_no_stroke_no_move_charts(result: SelectOut) -> None:

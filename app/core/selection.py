@@ -144,7 +144,9 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
 
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
-    counts cover everything screened. Only the returned candidates are fully evaluated.
+    counts cover everything screened. The passing ones' robustness is screened now; full
+    evaluations of the returned candidates are built when first read (``short_forms``
+    reads the same arrays without them).
     """
     table = (
         candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)

@@ -56,7 +56,9 @@ def motor_figure(
 
 
 def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float], list[float]]:
-    """Time, speed (rpm, signed by direction) and torque at each segment's start and end."""
+    """Time, speed and motor torque at each segment's start and end, both signed by the
+    shaft's direction (the back or down move turns the shaft the other way), so that a
+    torque of the speed's sign drives and one of the opposite sign brakes."""
     times, speeds, torques = [], [], []
     t = 0.0
     for s in segments:
@@ -64,7 +66,7 @@ def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float],
         sign = -1.0 if s.direction in REVERSED else 1.0
         times += [t, t + s.duration_s]
         speeds += [sign * start * s.rpm, sign * end * s.rpm]
-        torques += [s.torque_nm, s.torque_nm]
+        torques += [sign * s.torque_nm, sign * s.torque_nm]
         t += s.duration_s
     return times, speeds, torques
 
@@ -73,6 +75,7 @@ def move_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
     """The top candidate's screw speed and motor torque over one cycle (out and back, or
     up and down, with the dwells): speed on the left axis, torque steps on the right."""
     times, speeds, torques = _trace_points(top.segments or [])
+    shown = [d.value(t, "torque") for t in torques]
     unit = d.label("torque")
     data = [
         {
@@ -89,14 +92,24 @@ def move_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
             "mode": "lines",
             "name": "Motor torque",
             "x": times,
-            "y": [d.value(t, "torque") for t in torques],
+            "y": shown,
             "yaxis": "y2",
             "line": {"color": "#D55E00", "width": 2},
             "hovertemplate": f"%{{x:.3g}} s<br>%{{y:.4g}} {unit}<extra>torque</extra>",
         },
     ]
-    torque_axis = {**axis(f"Motor torque [{unit}]"), "overlaying": "y", "side": "right"}
-    return {
-        "data": data,
-        "layout": layout(axis("Time [s]"), axis("Screw speed [rpm]"), yaxis2=torque_axis),
+    speed_axis = {**axis("Screw speed [rpm]"), **_about_zero(speeds)}
+    torque_axis = {
+        **axis(f"Motor torque [{unit}]"),
+        **_about_zero(shown),
+        "overlaying": "y",
+        "side": "right",
     }
+    return {"data": data, "layout": layout(axis("Time [s]"), speed_axis, yaxis2=torque_axis)}
+
+
+def _about_zero(values: list[float]) -> dict[str, Any]:
+    """A range symmetric about zero (10 % headroom) with the zero line drawn, so that the
+    speed and the torque axes share their zero."""
+    top = max((abs(v) for v in values), default=0.0) * 1.1 or 1.0
+    return {"range": [-top, top], "zeroline": True, "zerolinecolor": "#999999"}
