@@ -8,6 +8,7 @@ the whole catalog.
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, fields
+from operator import attrgetter
 
 import numpy as np
 from numpy.typing import NDArray
@@ -24,13 +25,17 @@ def column(values: Sequence[float | None]) -> Array:
     return np.array(values, dtype=np.float64)
 
 
-def _bands(screws: Sequence[ScrewSpec]) -> tuple[Array, Mask]:
-    """Each screw's family traverse limit [m/s] (NaN without a table) and off-table flag."""
-    found = [
-        limits.band_limit(s.lead_m, s.traverse_bands) if s.traverse_bands else None for s in screws
-    ]
-    speeds = column([None if b is None else b.speed_m_s for b in found])
-    return speeds, np.array([b is not None and b.extrapolated for b in found], dtype=bool)
+def _bands(screws: Sequence[ScrewSpec], lead_m: Array) -> tuple[Array, Mask]:
+    """Each screw's family traverse limit [m/s] (NaN without a table) and off-table flag;
+    screws sharing a table are looked up together."""
+    speeds, off = np.full(len(screws), np.nan), np.zeros(len(screws), dtype=bool)
+    groups: dict[limits.Bands, list[int]] = {}
+    for i, s in enumerate(screws):
+        if s.traverse_bands:
+            groups.setdefault(s.traverse_bands, []).append(i)
+    for bands, index in groups.items():
+        speeds[index], off[index] = limits.band_limit(lead_m[index], bands)
+    return speeds, off
 
 
 def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]:
@@ -39,7 +44,7 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
     of one turn at d2."""
     names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
     names += ("max_pressure_pa", "nut_pv_limit_pa_m_s", "max_sliding_speed_m_s")
-    out = {name: column([getattr(s, name) for s in screws]) for name in names}
+    out = {name: column(list(map(attrgetter(name), screws))) for name in names}
     d2 = out["flank_pitch_diameter_m"]
     area = bearing.engaged_flank_area(
         out["nut_length_m"], out["pitch_m"], d2, out["flank_height_m"]
@@ -129,10 +134,10 @@ class CandidateTable:
         screws = tuple(screws)
 
         def col(name: str) -> Array:
-            return column([getattr(s, name) for s in screws])
+            return column(list(map(attrgetter(name), screws)))
 
         def flag(name: str) -> Mask:
-            return np.array([getattr(s, name) for s in screws], dtype=bool)
+            return np.array(list(map(attrgetter(name), screws)), dtype=bool)
 
         od, rd, lead = col("outer_diameter_m"), col("root_diameter_m"), col("lead_m")
         # a standard thread states its pitch diameter (ISO 2904 d2 = d - 0.5 P); otherwise
@@ -142,7 +147,7 @@ class CandidateTable:
         tan_l = geometry.tan_lead_angle(lead, d_p)
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
-        traverse, extrapolated = _bands(screws)
+        traverse, extrapolated = _bands(screws, lead)
         reach = Reach(
             max_lead_m=_largest(lead),
             max_root_diameter_m=_largest(rd),

@@ -36,7 +36,8 @@ def band_speed_m_s(lead_m: float, bands: Bands) -> float:
 
 
 def band_limit(lead_m: float, bands: Bands) -> BandLimit:
-    """The band limit [m/s] of a lead [m], marked extrapolated outside the table.
+    """The band limit [m/s] of a lead [m], marked extrapolated outside the table (floats
+    or NumPy arrays of leads).
 
     >>> seed = ((0.0025, 0.012, 0.100), (0.012, 0.025, 0.250), (0.025, 0.060, 0.760))
     >>> band_limit(0.012, seed)
@@ -45,7 +46,7 @@ def band_limit(lead_m: float, bands: Bands) -> BandLimit:
     BandLimit(speed_m_s=0.1, extrapolated=True)
     """
     low, high = bands[0][0], bands[-1][1]
-    return BandLimit(band_speed_m_s(lead_m, bands), not low <= lead_m <= high)
+    return BandLimit(band_speed_m_s(lead_m, bands), (lead_m < low) | (lead_m > high))
 
 
 def temperature_ok(ambient_c: float, min_c: float, max_c: float) -> bool:
