@@ -11,7 +11,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import partial
-from typing import Literal, Protocol, TypeVar
+from typing import Literal, NamedTuple, Protocol, TypeVar
 
 from app.core.checks import BY_NAME
 from app.core.checks.base import Measure
@@ -101,19 +101,19 @@ def check_rows(m: Measure, failed: Mask, index: list[int]) -> list[CheckRow]:
     )
 
 
-@dataclass(frozen=True, slots=True)
-class CheckBrief:
-    """One applicable check of one candidate: passed, utilisation, and its fix."""
+class CheckBrief(NamedTuple):
+    """One applicable check of one candidate: passed, utilisation, and, failed, its fix
+    (``remedy`` writes it when called)."""
 
     name: str
     kind: Literal["limit", "advice"]
     passed: bool
     utilization: float | None
-    remedy: Callable[[], Phrase | None]
+    remedy: Callable[[], Phrase | None] | None
 
     @property
     def fix(self) -> Phrase | None:
-        return None if self.passed else self.remedy()
+        return None if self.passed or self.remedy is None else self.remedy()
 
 
 @dataclass(frozen=True, slots=True)
@@ -159,7 +159,7 @@ def briefs(
                 BY_NAME[name].kind,
                 not failed,
                 ratio(demand, capacity),
-                partial(BY_NAME[name].fix, app, s, r, sc.reach),
+                partial(BY_NAME[name].fix, app, s, r, sc.reach) if failed else None,
             )
             for name, column in columns.items()
             for applies, demand, capacity, failed in (column[k],)
