@@ -273,7 +273,7 @@ def candidate_out(
 
 def candidate_summary(b: Brief) -> dict[str, Any]:
     """A passing candidate in the compact form (``CandidateSummaryOut``), API units."""
-    s, r = b.screw, b.quantities
+    s = b.screw
     return {
         "id": s.id,
         "series": s.series_id,
@@ -282,8 +282,8 @@ def candidate_summary(b: Brief) -> dict[str, Any]:
         "coated": s.coated,
         "outer_diameter_mm": _mm(s.outer_diameter_m),
         "lead_mm": _mm(s.lead_m),
-        "rpm": r.rpm,
-        "total_torque_nm": r.total_nm,
+        "rpm": b.rpm,
+        "total_torque_nm": b.total_torque_nm,
         "efficiency": b.efficiency,
         "self_locking": b.self_locking,
         "critical_speed_margin": b.critical_speed_margin,

@@ -2,10 +2,11 @@
 
 from typing import Annotated, Any, Literal
 
-from fastapi import APIRouter, Query
+from fastapi import APIRouter, Query, Request
 from fastapi.responses import Response
 
 from app import __version__
+from app.api.query import parse_query, query_parameters
 from app.core.checks import REGISTRY
 from app.deps import CatalogDep
 from app.errors import ApiRoute, AppError
@@ -114,10 +115,15 @@ async def select_post(
     return _selection(inputs, catalog, detail)
 
 
-@router.get("/select", response_model=SelectSummaryOut | SelectOut)
-async def select_get(query: Annotated[SelectQuery, Query()], catalog: CatalogDep) -> Response:
+@router.get(
+    "/select",
+    response_model=SelectSummaryOut | SelectOut,
+    openapi_extra={"parameters": query_parameters(SelectQuery)},
+)
+async def select_get(request: Request, catalog: CatalogDep) -> Response:
     """The same as POST, with the fields (and ``detail``) as query parameters (a
     shareable link)."""
+    query = parse_query(SelectQuery, request.query_params)
     return _selection(query.application(), catalog, query.detail)
 
 

@@ -9,18 +9,18 @@ the full form from the same arrays and picks the governing check with the same r
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from functools import partial
-from typing import Literal, NamedTuple, Protocol, TypeVar
+from typing import Any, Literal, NamedTuple, Protocol, TypeVar
+
+import numpy as np
 
 from app.core.checks import BY_NAME
 from app.core.checks.base import Measure
 from app.core.formulas import critical_speed
 from app.core.model import Application, ProvenanceKind, ScrewSpec
 from app.core.phrase import Phrase
-from app.core.quantities import Quantities
 from app.core.screening import Screening
-from app.core.table import Mask
+from app.core.table import Array, Mask
 
 #: Provenance kinds from the least to the most certain.
 CERTAINTY: tuple[ProvenanceKind, ...] = (
@@ -116,12 +116,12 @@ class CheckBrief(NamedTuple):
         return None if self.passed or self.remedy is None else self.remedy()
 
 
-@dataclass(frozen=True, slots=True)
-class Brief:
-    """One screened candidate in short: its numbers (``quantities``), checks and verdict."""
+class Brief(NamedTuple):
+    """One screened candidate in short: its speed, drive torque, checks and verdict."""
 
     screw: ScrewSpec
-    quantities: Quantities[float]
+    rpm: float
+    total_torque_nm: float
     efficiency: float
     self_locking: bool
     critical_speed_margin: float
@@ -134,6 +134,29 @@ class Brief:
     hinges_on: tuple[str, ...] = ()
 
 
+def _utilizations(values: Array | None, index: list[int]) -> list[float | None]:
+    """A check's utilisation at ``index`` as ``ratio`` gives it: None for a yes/no check
+    and where it is not a finite number (no demand or limit, or a zero limit)."""
+    if values is None:
+        return [None] * len(index)
+    picked = values[index]
+    finite = np.isfinite(picked).tolist()
+    return [v if ok else None for v, ok in zip(picked.tolist(), finite, strict=True)]
+
+
+def _numbers(sc: Screening, index: list[int]) -> list[tuple[float, float, float, Any]]:
+    """(rpm, drive torque, critical-speed margin, rated life in years or None) per
+    candidate at ``index``."""
+    q = sc.quantities
+    rpm, allowed = q.rpm[index].tolist(), q.allowed_rpm[index].tolist()
+    margin = [critical_speed.speed_margin(a, n) for a, n in zip(allowed, rpm, strict=True)]
+    low, high = q.life_years_min[index].tolist(), q.life_years_max[index].tolist()
+    years = [
+        None if math.isnan(a) or math.isnan(b) else (a, b) for a, b in zip(low, high, strict=True)
+    ]
+    return list(zip(rpm, q.total_nm[index].tolist(), margin, years, strict=True))
+
+
 def briefs(
     app: Application,
     sc: Screening,
@@ -141,46 +164,59 @@ def briefs(
     robustness: Sequence[tuple[bool, tuple[str, ...]]] | None = None,
 ) -> list[Brief]:
     """The candidates at ``positions`` of a screening in short; ``robustness`` gives
-    (robust, hinges_on) per position for passing candidates."""
+    (robust, hinges_on) per position for passing candidates. A candidate's full numbers
+    (for its fixes) are gathered only when one of its checks fails."""
     index = list(positions)
     if not index:
         return []
-    rows = sc.quantities.rows(index)
-    efficiency = sc.table.efficiency[index].tolist()
-    locking = sc.table.self_locking[index].tolist()
-    passed = sc.passed[index].tolist()
-    columns = {name: check_rows(m, sc.failed[name], index) for name, m in sc.measures.items()}
+    columns = [
+        (
+            name,
+            BY_NAME[name].kind,
+            m.applicable[index].tolist(),
+            _utilizations(sc.utilization[name], index),
+            sc.failed[name][index].tolist(),
+        )
+        for name, m in sc.measures.items()
+    ]
+    failing = [k for k in range(len(index)) if any(c[4][k] for c in columns)]
+    rows = dict(zip(failing, sc.quantities.rows([index[k] for k in failing]), strict=True))
+    thread = zip(
+        sc.table.efficiency[index].tolist(), sc.table.self_locking[index].tolist(), strict=True
+    )
+    verdicts = sc.passed[index].tolist()
     out = []
-    for k, i in enumerate(index):
-        s, r = sc.table.screws[i], rows[k]
+    for k, (i, numbers, (efficiency, locking)) in enumerate(
+        zip(index, _numbers(sc, index), thread, strict=True)
+    ):
+        s, r = sc.table.screws[i], rows.get(k)
         checks = tuple(
             CheckBrief(
                 name,
-                BY_NAME[name].kind,
-                not failed,
-                ratio(demand, capacity),
-                partial(BY_NAME[name].fix, app, s, r, sc.reach) if failed else None,
+                kind,
+                not failed[k],
+                utilization[k],
+                partial(BY_NAME[name].fix, app, s, r, sc.reach)
+                if failed[k] and r is not None
+                else None,
             )
-            for name, column in columns.items()
-            for applies, demand, capacity, failed in (column[k],)
-            if applies
+            for name, kind, applies, utilization, failed in columns
+            if applies[k]
         )
         top = governing(app, checks)
-        years = (r.life_years_min, r.life_years_max)
         out.append(
             Brief(
-                screw=s,
-                quantities=r,
-                efficiency=efficiency[k],
-                self_locking=locking[k],
-                critical_speed_margin=critical_speed.speed_margin(r.allowed_rpm, r.rpm),
-                life_years=None if any(math.isnan(y) for y in years) else years,
-                checks=checks,
-                passed=passed[k],
-                governing_check=None if top is None else top.name,
-                governing_limit_provenance=limit_provenance(top, s),
-                robust=None if robustness is None else robustness[k][0],
-                hinges_on=() if robustness is None else robustness[k][1],
+                s,
+                *numbers[:2],
+                efficiency,
+                locking,
+                *numbers[2:],
+                checks,
+                verdicts[k],
+                None if top is None else top.name,
+                limit_provenance(top, s),
+                None if robustness is None else robustness[k][0],
+                () if robustness is None else robustness[k][1],
             )
         )
     return out
