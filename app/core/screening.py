@@ -127,7 +127,29 @@ def screen_table(
     )
 
 
-def screen(app: Application, table: CandidateTable) -> Screening:
-    """Screen the candidates eligible for ``app`` (lead and coating choice)."""
+#: The eligible rows of the tables seen, by the filters that pick them: (table, index,
+#: the table of those rows); most queries repeat a lead and a family, not a load.
+_ELIGIBLE: dict[tuple[object, ...], tuple[CandidateTable, NDArray[np.intp], CandidateTable]] = {}
+_ELIGIBLE_MAX = 64
+
+
+def eligible(app: Application, table: CandidateTable) -> tuple[NDArray[np.intp], CandidateTable]:
+    """The positions (in ``table``) of the candidates eligible for ``app``, and their
+    table; kept per table and filters."""
+    key = (id(table), app.lead_m, app.coating, app.families, app.nut_material)
+    held = _ELIGIBLE.get(key)
+    if held is not None and held[0] is table:
+        return held[1], held[2]
     index = np.flatnonzero(eligible_mask(app, table))
-    return screen_table(app, table.take(index), index, table.reach)
+    index.setflags(write=False)  # shared by every query with these filters
+    found = (table, index, table.take(index))
+    if len(_ELIGIBLE) >= _ELIGIBLE_MAX:
+        _ELIGIBLE.clear()
+    _ELIGIBLE[key] = found
+    return index, found[2]
+
+
+def screen(app: Application, table: CandidateTable) -> Screening:
+    """Screen the candidates eligible for ``app`` (lead, coating, family, nut material)."""
+    index, rows = eligible(app, table)
+    return screen_table(app, rows, index, table.reach)

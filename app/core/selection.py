@@ -156,9 +156,9 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     nearest = _nearest_order(s)[: app.limit].tolist()
     found = robustness_in(app, table, s.index[ranked].tolist())
     rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
-    by_check = Counter({name: int(mask.sum()) for name, mask in s.failed_by_check.items()})
+    by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
-    n_passed = int(s.passed.sum())
+    n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
         candidates=Built(len(ranked), lambda: _attach(evaluations(app, s, ranked), found)),

@@ -15,7 +15,7 @@ from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.robustness import robustness, variants_for
-from app.core.screening import eligible_mask, screen
+from app.core.screening import eligible_mask, screen, screen_table
 from app.core.selection import input_change, select
 from app.units import render
 from tests.core.conftest import applications, light_app
@@ -209,3 +209,18 @@ def test_a_marginal_candidate_is_reported_from_the_variants(catalog: Catalog) ->
     assert any(r.hinges_on for r in sel.robustness)
     for ev, found in zip(sel.candidates, sel.robustness, strict=True):
         assert found.hinges_on == robustness(app, ev.screw).hinges_on
+
+
+def test_eligible_rows_are_kept_per_filters_and_match_a_fresh_take(catalog: Catalog) -> None:
+    """Queries that differ only in load share the eligible rows; the screening over the
+    kept rows equals one over a fresh ``take`` of the eligible mask."""
+    first = Application(load_n=50.0, speed_m_s=0.05, length_m=0.5, lead_m=0.01)
+    second = replace(first, load_n=80.0)
+    a, b = screen(first, catalog.table), screen(second, catalog.table)
+    assert a.index is b.index and a.table is b.table
+    index = np.flatnonzero(eligible_mask(second, catalog.table))
+    fresh = screen_table(second, catalog.table.take(index), index)
+    assert np.array_equal(b.passed, fresh.passed)
+    assert np.array_equal(b.max_utilization, fresh.max_utilization, equal_nan=True)
+    other = screen(replace(first, lead_m=0.002), catalog.table)
+    assert not np.array_equal(other.index, a.index)

@@ -49,11 +49,11 @@ class Measure:
     flagged: Mask | None = None
 
     def utilization(self) -> Array | None:
-        """demand / capacity (NaN where the limit does not exist); None for yes/no."""
+        """demand / capacity (NaN where the limit does not exist); None for yes/no. The
+        caller silences NumPy's warnings for the missing limits (``np.errstate``)."""
         if self.demand is None or self.capacity is None:
             return None
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return self.demand / self.capacity
+        return self.demand / self.capacity
 
 
 class Check:
