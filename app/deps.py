@@ -7,7 +7,8 @@ from fastapi import Depends, Request
 from app.catalog import Catalog
 
 
-def get_catalog(request: Request) -> Catalog:
+async def get_catalog(request: Request) -> Catalog:
+    """The catalog of the running app (async: no thread hop for a lookup)."""
     catalog: Catalog = request.app.state.catalog
     return catalog
 
