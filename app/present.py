@@ -4,6 +4,7 @@ the figures and the CSV export."""
 import math
 from collections.abc import Mapping
 from collections.abc import Mapping as Units
+from functools import lru_cache
 from typing import Any
 
 from app.catalog import Material, Series
@@ -221,6 +222,13 @@ def _thread(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
     }
 
 
+@lru_cache(maxsize=8192)
+def provenance_out(p: Provenance) -> ProvenanceOut:
+    """A catalog value's provenance as its output model: the same few hundred for every
+    response, so built once each (output models are never changed once built)."""
+    return ProvenanceOut.model_construct(kind=p.kind, source=p.source)
+
+
 def candidate_out(
     ev: Evaluation,
     vacuum: bool = False,
@@ -262,11 +270,7 @@ def candidate_out(
         hinges_on=list(ev.hinges_on),
         warnings=[c for c in checks if c.kind == "advice" and not c.passed],
         fix=" ".join(fixes) if fixes else None,
-        provenance={
-            k: ProvenanceOut.model_construct(kind=p.kind, source=p.source)
-            for k, p in s.provenance.items()
-            if k in used
-        },
+        provenance={k: provenance_out(p) for k, p in s.provenance.items() if k in used},
         **_motion(ev),
     )
 
