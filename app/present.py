@@ -314,7 +314,12 @@ def rejected_summary(b: Brief, units: Units[str, str] = DEFAULT_UNITS) -> dict[s
                 {"name": c.name, "kind": c.kind, "utilization": c.utilization, "fix": text}
             )
             fixes += [text] if text else []
-    return {"id": b.screw.id, "failed": failed, "fix": " ".join(fixes) if fixes else None}
+    return {
+        "id": b.screw.id,
+        "governing_check": b.governing_check,
+        "failed": failed,
+        "fix": " ".join(fixes) if fixes else None,
+    }
 
 
 def selection_summary(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
@@ -327,14 +332,18 @@ def selection_summary(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) ->
     }
 
 
-def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+def selection_out(
+    sel: Selection, units: Units[str, str] = DEFAULT_UNITS, full_rejected: bool = True
+) -> dict[str, Any]:
     """Candidates, rejected, counts and summary of a selection (the rest of SelectOut is
-    the caller's: inputs, links, catalog version)."""
+    the caller's: inputs, links, catalog version); without ``full_rejected`` the rejected
+    list is left empty (the caller shows them in the compact form)."""
     app = sel.application
     vacuum, brake = app.vacuum, app.brake_torque_nm
+    rejected = sel.rejected if full_rejected else ()
     return {
         "candidates": [candidate_out(e, vacuum, units, brake) for e in sel.candidates],
-        "rejected": [candidate_out(e, vacuum, units, brake) for e in sel.rejected],
+        "rejected": [candidate_out(e, vacuum, units, brake) for e in rejected],
         **_counts_and_summary(sel, units),
     }
 

@@ -444,6 +444,10 @@ class RejectedSummaryOut(BaseModel):
     """A rejected candidate as the compact select response gives it."""
 
     id: str
+    governing_check: str | None = Field(
+        description="The failed limit with the highest utilisation (or the first failed "
+        "yes/no check): what rejects it most."
+    )
     failed: list[FailedCheckOut] = Field(description="Every failed check, in check order.")
     fix: str | None = Field(description="What would make it pass.")
 

@@ -5,15 +5,22 @@ from typing import Any
 
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
-from app.core.selection import select, with_robustness
+from app.core.selection import select, short_forms, with_robustness
 from app.formulas import FORMULAS
-from app.present import candidate_out, custom_screw, selection_out, selection_summary
+from app.present import (
+    candidate_out,
+    custom_screw,
+    rejected_summary,
+    selection_out,
+    selection_summary,
+)
 from app.schemas import (
     ApplicationIn,
     CatalogScrewIn,
     CustomScrewIn,
     EvaluateOut,
     FormulaOut,
+    RejectedSummaryOut,
     SelectOut,
 )
 from app.units import DEFAULT_UNITS
@@ -35,13 +42,36 @@ def run_selection(
     """Select and rank over the catalog: the API's select response, its sentences in
     ``units`` (the API's own by default)."""
     selection = select(inputs.to_core(), catalog.table)
+    return construct_select_out(inputs, catalog, selection_out(selection, units))
+
+
+def construct_select_out(
+    inputs: ApplicationIn, catalog: Catalog, selected: dict[str, Any]
+) -> SelectOut:
+    """The select response around ``selection_out``'s candidates, counts and summary."""
     return SelectOut.model_construct(
         inputs=inputs,
-        **selection_out(selection, units),
+        **selected,
         catalog_version=catalog.version,
         share_url="/?" + share_query(inputs),
         formulas=FORMULAS_OUT,
     )
+
+
+def run_page_selection(
+    inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
+) -> tuple[SelectOut, list[RejectedSummaryOut]]:
+    """The results page's selection: the passing candidates in full (table, charts) and
+    the rejected ones in the compact form (the list; each one's detail loads when
+    opened), sentences in ``units``. The rejected are in full too only when nothing
+    passes: then the charts and the advice are about them."""
+    selection = select(inputs.to_core(), catalog.table)
+    out = construct_select_out(
+        inputs, catalog, selection_out(selection, units, full_rejected=not selection.passed)
+    )
+    _, rejected = short_forms(selection)
+    rows = [RejectedSummaryOut.model_construct(**rejected_summary(b, units)) for b in rejected]
+    return out, rows
 
 
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:

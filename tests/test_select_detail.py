@@ -56,9 +56,10 @@ def test_compact_rejected_carry_failed_checks_utilisation_and_fix(
 ) -> None:
     compact, full = _select(client, **axis), _select(client, **axis, detail="full")
     assert compact["rejected"], "the axis has rejected candidates"
-    assert set(compact["rejected"][0]) == {"id", "failed", "fix"}
+    assert set(compact["rejected"][0]) == {"id", "governing_check", "failed", "fix"}
     for small, big in zip(compact["rejected"], full["rejected"], strict=True):
         assert small["id"] == big["id"]
+        assert small["governing_check"] == big["governing_check"]
         failed = [c for c in big["checks"] if not c["passed"]]
         assert small["failed"] == [
             {k: c[k] for k in ("name", "kind", "utilization", "fix")} for c in failed

@@ -11,9 +11,9 @@ from app.deps import CatalogDep
 from app.errors import AppError
 from app.fields import BY_PAGE, FIELDS, GROUPS
 from app.responses import ModelJSON
-from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
+from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn, RejectedSummaryOut
 from app.server.headers import is_htmx_fragment
-from app.service import run_evaluation, run_selection
+from app.service import run_evaluation, run_page_selection, run_selection
 from app.units import TORQUE_LABELS, Display
 from app.web.advice import check_label, no_pass_advice
 from app.web.catalog_view import KEY_FIELDS, family_sections
@@ -90,13 +90,13 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         return context
     inputs, context["errors"] = parse_inputs(values, units)
     if inputs is not None:
-        result = run_selection(inputs, catalog, units)
-        context["result"] = result
+        result, rejected = run_page_selection(inputs, catalog, units)
+        context["result"], context["rejected"] = result, rejected
         context["query"] = share_query(inputs, units)
         context["share_url"] = "/?" + context["query"]
         context["figures"] = result_figures(result, units, catalog)
         context["charting_passed"] = chart_candidates(result)[1]
-        context["rejected_groups"] = rejected_groups(result.rejected)
+        context["rejected_groups"] = rejected_groups(rejected)
         context["rank_text"] = (
             BY_PAGE["rank_by"].choice_text(str(inputs.model_dump()["rank_by"])).lower()
         )
@@ -105,13 +105,12 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
     return context
 
 
-def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
+def rejected_groups(rejected: list[RejectedSummaryOut]) -> list[dict[str, Any]]:
     """Rejected candidates grouped by governing (failing) check, nearest group first."""
     groups: dict[str, dict[str, Any]] = {}
     for c in rejected:
         name = c.governing_check or "other"
-        label = next((k.label for k in c.checks if k.name == name), check_label(name))
-        groups.setdefault(name, {"name": name, "label": label, "candidates": []})
+        groups.setdefault(name, {"name": name, "label": check_label(name), "candidates": []})
         groups[name]["candidates"].append(c)
     return list(groups.values())
 
