@@ -1,5 +1,7 @@
 """Application factory: load the catalog (fail fast), wire routes and middleware."""
 
+import gc
+
 from fastapi import FastAPI
 from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException
@@ -76,4 +78,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     # outermost, so that every answer to a HEAD, the refusals above included, has no body
     app.add_middleware(HeadAsGetMiddleware)
+    # the catalog, its tables and variant rows live as long as the process: keep them out
+    # of the cyclic collector's full passes (each took about 30 ms every hundred queries)
+    gc.collect()
+    gc.freeze()
     return app
