@@ -22,6 +22,7 @@ from app.schemas import (
     CountsOut,
     CriticalSpeedOut,
     CustomScrewIn,
+    FailedCheckOut,
     HoldingTorqueOut,
     LifeOut,
     MaterialIn,
@@ -29,6 +30,7 @@ from app.schemas import (
     ProfileOut,
     ProvenanceOut,
     PVOut,
+    RejectedSummaryOut,
     SegmentOut,
     SummaryOut,
     TorqueOut,
@@ -320,6 +322,13 @@ def rejected_summary(b: Brief, units: Units[str, str] = DEFAULT_UNITS) -> dict[s
         "failed": failed,
         "fix": " ".join(fixes) if fixes else None,
     }
+
+
+def rejected_out(b: Brief, units: Units[str, str] = DEFAULT_UNITS) -> RejectedSummaryOut:
+    """``rejected_summary`` as its output model (for templates, which read attributes)."""
+    row = rejected_summary(b, units)
+    failed = [FailedCheckOut.model_construct(**f) for f in row.pop("failed")]
+    return RejectedSummaryOut.model_construct(**row, failed=failed)
 
 
 def selection_summary(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:

@@ -10,7 +10,7 @@ from app.formulas import FORMULAS
 from app.present import (
     candidate_out,
     custom_screw,
-    rejected_summary,
+    rejected_out,
     selection_out,
     selection_summary,
 )
@@ -70,8 +70,7 @@ def run_page_selection(
         inputs, catalog, selection_out(selection, units, full_rejected=not selection.passed)
     )
     _, rejected = short_forms(selection)
-    rows = [RejectedSummaryOut.model_construct(**rejected_summary(b, units)) for b in rejected]
-    return out, rows
+    return out, [rejected_out(b, units) for b in rejected]
 
 
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
