@@ -121,6 +121,28 @@ FORMULAS: dict[str, Formula] = {
     "profile.cycle_time_s": _f(
         "t = 2 (move + dwell), out and back", "motion.move_profile", "kinematics"
     ),
+    "segments.duration_s": _f(
+        "t_a, t_c, t_d of the profile for the moving segments; the dwell as given",
+        "motion.move_profile",
+        "kinematics",
+    ),
+    "segments.rpm": _f(
+        "n = 60 v_peak / lead while moving (its top speed); 0 in a dwell",
+        "geometry.screw_speed_rpm",
+        SEED + " (RS = speed / lead)",
+    ),
+    "segments.thrust_n": _f(
+        "F = s F_steady + m a, a = +a, 0, -d along the motion; F_steady = load (+ m g "
+        "when vertical), s = +1 out, back and up, -1 down; in a dwell F_steady when vertical",
+        "motion.segments",
+        "statics and Newton's second law",
+    ),
+    "segments.torque_nm": _f(
+        "T = F lead / (2 pi eta) if F >= 0 else F lead eta_b / (2 pi), + T_drag "
+        "+ (J_screw + J_rotor) alpha; in a dwell the holding torque when vertical, else 0",
+        "profile.thread_torque",
+        SHIGLEY + " (raising and lowering torque); " + SEED + " (Back Driving)",
+    ),
     "torque.drag_nm": _f(
         "top of the series' static drag range",
         "quantities.operating_point",

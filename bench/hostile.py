@@ -15,7 +15,6 @@ Servers here are started as ``leadscrew-selector`` starts them (``python -m app.
 so the server limits of ``app.server.protocol`` apply.
 """
 
-import getpass
 import multiprocessing
 import os
 import select
@@ -34,36 +33,16 @@ from app.settings import Settings
 from bench import load, wrk
 from bench.report import Report
 from bench.web import CLIENT_CPUS, HERE, SERVER_CPU, fetch, free_port, rss_kib, server
+from deploy.local import NGINX, nginx_in_front, wait_until_healthy
+from deploy.local import slow_header_flood as trickle
+from deploy.local import stop as stop_process
 
 ROOT = Path(__file__).resolve().parents[1]
-NGINX = "/usr/sbin/nginx"
 SELECT = "/api/v1/select?load_n=%s&speed_mm_s=50&length_mm=500&lead_mm=10"
 FRAGMENT = "/?load=%s&speed=50&length=500&lead=10"
 GZIP = {"Accept-Encoding": "gzip"}
 MB = 1024 * 1024
 SPAWN = multiprocessing.get_context("spawn")
-
-
-def _wait_until_healthy(port: int, proc: subprocess.Popen[bytes], what: str) -> None:
-    deadline = time.monotonic() + 60
-    while True:
-        try:
-            if fetch(port, "/api/v1/health")[0] == 200:
-                return
-        except OSError:
-            pass
-        if proc.poll() is not None or time.monotonic() > deadline:
-            raise RuntimeError(f"{what} did not start (exit {proc.poll()})")
-        time.sleep(0.1)
-
-
-def _stop(proc: subprocess.Popen[bytes]) -> None:
-    proc.terminate()
-    try:
-        proc.wait(timeout=10)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        proc.wait()
 
 
 @contextmanager
@@ -75,10 +54,10 @@ def cli_server() -> Iterator[tuple[int, int]]:
         cmd = ["taskset", "-c", SERVER_CPU, *cmd]
     proc = subprocess.Popen(cmd, cwd=ROOT)
     try:
-        _wait_until_healthy(port, proc, "app.cli")
+        wait_until_healthy(port, proc, "app.cli")
         yield port, proc.pid
     finally:
-        _stop(proc)
+        stop_process(proc)
 
 
 def _load_on_client_cpus(
@@ -270,69 +249,16 @@ def hostile_heads(report: Report) -> None:
 # --- slow-header flood through nginx ----------------------------------------------------
 
 
-@contextmanager
-def proxied(prefix: Path) -> Iterator[int]:
-    """nginx from deploy/ in front of two ``app.cli`` processes; yields nginx's port."""
-    apps: list[subprocess.Popen[bytes]] = []
-    nginx = None
-    try:
-        upstreams = []
-        for _ in range(2):
-            port = free_port()
-            cmd = [sys.executable, "-m", "app.cli", "--port", str(port), "--log-level", "warning"]
-            apps.append(subprocess.Popen(cmd, cwd=ROOT))
-            upstreams += ["--upstream", f"127.0.0.1:{port}"]
-            _wait_until_healthy(port, apps[-1], "app.cli")
-        listen = free_port()
-        render = [sys.executable, str(ROOT / "deploy" / "render.py"), "--listen"]
-        render += [f"127.0.0.1:{listen}", *upstreams, "--static-root", str(ROOT / "static")]
-        render += ["--user", getpass.getuser()]
-        (prefix / "logs").mkdir(exist_ok=True)
-        (prefix / "temp").mkdir(exist_ok=True)
-        config = subprocess.run(render, capture_output=True, text=True, check=True).stdout
-        (prefix / "nginx.conf").write_text(config)
-        args = [NGINX, "-p", str(prefix), "-c", str(prefix / "nginx.conf")]
-        args += ["-e", str(prefix / "logs" / "error.log"), "-g", "daemon off;"]
-        nginx = subprocess.Popen(args)
-        _wait_until_healthy(listen, nginx, "nginx")
-        yield listen
-    finally:
-        if nginx is not None:
-            _stop(nginx)
-        for proc in apps:
-            _stop(proc)
-
-
-def _trickle(port: int, sockets: int, stop: threading.Event, still_open: list[int]) -> None:
-    """``sockets`` connections sending half a head, then a header byte a second."""
-    flood = []
-    for _ in range(sockets):
-        sock = socket.create_connection(("127.0.0.1", port), timeout=5)
-        sock.sendall(b"GET /api/v1/health HTTP/1.1\r\nHost: bench\r\nX-Slow: ")
-        flood.append(sock)
-    while not stop.wait(1.0):
-        alive = 0
-        for sock in flood:
-            try:
-                sock.sendall(b"a")
-                alive += 1
-            except OSError:
-                pass
-        still_open.append(alive)
-    for sock in flood:
-        sock.close()
-
-
-def slow_header_flood(report: Report, tmp: Path) -> None:
+def flood_through_nginx(report: Report, tmp: Path) -> None:
     report.section("Slow-header flood through nginx (deploy/) in front of two app processes")
     if not Path(NGINX).exists():
         print("  nginx not found: install it with `apt-get install nginx`.")
         report.line("slow-header flood", "not measured", "nginx installed", None)
         return
-    with proxied(tmp) as port:
+    with nginx_in_front(tmp) as port:
         stop = threading.Event()
         still_open: list[int] = []
-        flood = threading.Thread(target=_trickle, args=(port, 200, stop, still_open))
+        flood = threading.Thread(target=trickle, args=(port, 200, stop, still_open))
         flood.start()
         latencies, statuses = [], []
         try:
@@ -362,4 +288,4 @@ def run(report: Report, *, seconds: int, tmp: Path) -> None:
         return
     overload(report, seconds)
     hostile_heads(report)
-    slow_header_flood(report, tmp)
+    flood_through_nginx(report, tmp)

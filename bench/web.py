@@ -9,10 +9,8 @@ import gzip
 import http.client
 import math
 import os
-import socket
 import subprocess
 import sys
-import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from html.parser import HTMLParser
@@ -21,6 +19,7 @@ from urllib.parse import urlsplit
 
 from bench import wrk
 from bench.report import Report
+from deploy.local import free_port, stop, wait_until_healthy
 
 ROOT = Path(__file__).resolve().parents[1]
 HERE = Path(__file__).resolve().parent
@@ -31,12 +30,6 @@ HX = {"HX-Request": "true"}
 GZIP = {"Accept-Encoding": "gzip"}
 SERVER_CPU = "0"
 CLIENT_CPUS = ",".join(str(i) for i in range(1, os.cpu_count() or 1)) or None
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def fetch(
@@ -71,24 +64,10 @@ def server(target: str, *, factory: bool, workers: int = 1) -> Iterator[tuple[in
     proc = subprocess.Popen(cmd, cwd=ROOT, env=env)
     try:
         probe = "/api/v1/health" if factory else "/ceiling"
-        deadline = time.monotonic() + 60
-        while True:
-            try:
-                if fetch(port, probe)[0] == 200:
-                    break
-            except OSError:
-                pass
-            if proc.poll() is not None or time.monotonic() > deadline:
-                raise RuntimeError(f"{target} did not start (exit {proc.poll()})")
-            time.sleep(0.1)
+        wait_until_healthy(port, proc, target, probe)
         yield port, proc.pid
     finally:
-        proc.terminate()
-        try:
-            proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
+        stop(proc)
 
 
 def rss_kib(pid: int) -> int:

@@ -7,12 +7,8 @@ locally and fail in CI (CI=true). The Kubernetes manifests are checked against t
 Kubernetes schemas that ``kubernetes-validate`` ships (no network needed).
 """
 
-import getpass
 import gzip
 import os
-import socket
-import subprocess
-import sys
 import threading
 import time
 from collections.abc import Iterator
@@ -24,40 +20,13 @@ import kubernetes_validate
 import pytest
 import yaml
 
+from deploy.local import NGINX, nginx_in_front, slow_header_flood
+
 ROOT = Path(__file__).resolve().parents[1]
-NGINX = "/usr/sbin/nginx"
 K8S = ROOT / "deploy" / "k8s"
 #: a Kubernetes release whose schemas kubernetes-validate carries
 K8S_VERSION = "1.33.0"
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
-def _wait_for(url: str, proc: subprocess.Popen[bytes], what: str) -> None:
-    deadline = time.monotonic() + 60
-    while True:
-        try:
-            if httpx.get(url, timeout=2).status_code == 200:
-                return
-        except httpx.HTTPError:
-            pass
-        assert proc.poll() is None, f"{what} exited with {proc.returncode}"
-        assert time.monotonic() < deadline, f"{what} did not start"
-        time.sleep(0.1)
-
-
-def _stop(proc: subprocess.Popen[bytes]) -> None:
-    proc.terminate()
-    try:
-        proc.wait(timeout=10)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        proc.wait()
 
 
 @pytest.fixture(scope="module")
@@ -67,36 +36,8 @@ def proxy(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
         if os.environ.get("CI") == "true":
             pytest.fail(f"{NGINX} is missing in CI: the proxy tests must run")
         pytest.skip(f"{NGINX} not installed (apt-get install nginx)")
-    prefix = tmp_path_factory.mktemp("nginx")
-    (prefix / "logs").mkdir()
-    (prefix / "temp").mkdir()
-    apps: list[subprocess.Popen[bytes]] = []
-    nginx = None
-    try:
-        upstreams = []
-        for _ in range(2):
-            port = _free_port()
-            cmd = [sys.executable, "-m", "app.cli", "--port", str(port), "--log-level", "warning"]
-            apps.append(subprocess.Popen(cmd, cwd=ROOT))
-            upstreams += ["--upstream", f"127.0.0.1:{port}"]
-        for proc, address in zip(apps, upstreams[1::2], strict=True):
-            _wait_for(f"http://{address}/api/v1/health", proc, "app")
-        listen = f"127.0.0.1:{_free_port()}"
-        render = [sys.executable, str(ROOT / "deploy" / "render.py"), "--listen", listen]
-        render += [*upstreams, "--static-root", str(ROOT / "static"), "--user", getpass.getuser()]
-        config = subprocess.run(render, capture_output=True, text=True, check=True).stdout
-        (prefix / "nginx.conf").write_text(config)
-        args = [NGINX, "-p", str(prefix), "-c", str(prefix / "nginx.conf")]
-        args += ["-e", str(prefix / "logs" / "error.log")]
-        subprocess.run([*args, "-t"], check=True, capture_output=True)
-        nginx = subprocess.Popen([*args, "-g", "daemon off;"])
-        _wait_for(f"http://{listen}/api/v1/health", nginx, "nginx")
-        yield f"http://{listen}"
-    finally:
-        if nginx is not None:
-            _stop(nginx)
-        for proc in apps:
-            _stop(proc)
+    with nginx_in_front(tmp_path_factory.mktemp("nginx")) as port:
+        yield f"http://127.0.0.1:{port}"
 
 
 def test_the_proxy_serves_the_app(proxy: str) -> None:
@@ -127,36 +68,11 @@ def test_the_proxy_refuses_oversized_heads_and_bodies(proxy: str) -> None:
     assert body.status_code == 413
 
 
-def _slow_header_flood(
-    address: tuple[str, int], sockets: int, stop: threading.Event, open_counts: list[int]
-) -> None:
-    """Open ``sockets`` connections that send half a request head, then one header byte
-    a second each until ``stop``; ``open_counts`` gets how many took the byte, each second."""
-    flood = []
-    for _ in range(sockets):
-        sock = socket.create_connection(address, timeout=5)
-        sock.sendall(b"GET /api/v1/health HTTP/1.1\r\nHost: x\r\nX-Slow: ")
-        flood.append(sock)
-    while not stop.wait(1.0):
-        alive = 0
-        for sock in flood:
-            try:
-                sock.sendall(b"a")
-                alive += 1
-            except OSError:
-                pass
-        open_counts.append(alive)
-    for sock in flood:
-        sock.close()
-
-
 def test_a_slow_header_flood_does_not_stop_normal_requests(proxy: str) -> None:
-    host, port = proxy.removeprefix("http://").split(":")
+    port = int(proxy.rsplit(":", 1)[1])
     stop = threading.Event()
     open_counts: list[int] = []
-    flood = threading.Thread(
-        target=_slow_header_flood, args=((host, int(port)), 200, stop, open_counts)
-    )
+    flood = threading.Thread(target=slow_header_flood, args=(port, 200, stop, open_counts))
     flood.start()
     try:
         deadline = time.monotonic() + 30

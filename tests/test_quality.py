@@ -19,12 +19,12 @@ def _run(*args: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_ruff_lint() -> None:
-    result = _run("ruff", "check", "app", "tests", "bench")
+    result = _run("ruff", "check", "app", "tests", "bench", "deploy")
     assert result.returncode == 0, result.stdout + result.stderr
 
 
 def test_ruff_format() -> None:
-    result = _run("ruff", "format", "--check", "app", "tests", "bench")
+    result = _run("ruff", "format", "--check", "app", "tests", "bench", "deploy")
     assert result.returncode == 0, result.stdout + result.stderr
 
 

@@ -9,7 +9,6 @@ import os
 import re
 import shlex
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -17,6 +16,8 @@ from pathlib import Path
 
 import httpx
 import pytest
+
+from deploy.local import free_port
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -77,14 +78,8 @@ def test_the_install_leaves_out_tests_and_benchmarks(installed: Path) -> None:
     assert "leadscrew-selector = app.cli:main" in entry_points.read_text()
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
 def _serve_select_stop(args: list[str], cwd: Path, env: dict[str, str]) -> None:
-    port = _free_port()
+    port = free_port()
     proc = subprocess.Popen(
         [*args, "--port", str(port)],
         cwd=cwd,

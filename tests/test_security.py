@@ -30,6 +30,7 @@ from app.main import create_app
 from app.schemas import ApplicationIn, CustomScrewIn
 from app.settings import Settings
 from app.web.form import ENTERED_PREFIX, UNIT_CHOICES
+from deploy.local import free_port
 
 ROOT = Path(__file__).resolve().parents[1]
 PAYLOADS = ["<script>alert(1)</script>", '"><img src=x onerror=alert(1)>', "javascript:alert(1)"]
@@ -448,15 +449,9 @@ def test_a_large_body_within_the_limit_is_read(client: TestClient) -> None:
 # --- oversized bodies against a real uvicorn -------------------------------------------
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
 @pytest.fixture(scope="module")
 def live_port() -> Iterator[int]:
-    port = _free_port()
+    port = free_port()
     cmd = [sys.executable, "-m", "uvicorn", "app.main:create_app", "--factory"]
     proc = subprocess.Popen([*cmd, "--port", str(port), "--log-level", "warning"], cwd=ROOT)
     try:

@@ -19,6 +19,8 @@ from pathlib import Path
 import httpx
 import pytest
 
+from deploy.local import free_port
+
 ROOT = Path(__file__).resolve().parents[1]
 READ_TIMEOUT_S = 2
 KEEP_ALIVE_S = 1
@@ -26,12 +28,6 @@ KEEP_ALIVE_S = 1
 CLOSE_WITHIN_S = 10
 MAX_HEADER_BYTES = 32 * 1024
 MB = 1024 * 1024
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 def _status(port: int, path: str) -> int | None:
@@ -43,7 +39,7 @@ def _status(port: int, path: str) -> int | None:
 
 @pytest.fixture(scope="module")
 def port() -> Iterator[int]:
-    free = _free_port()
+    free = free_port()
     env = {
         **os.environ,
         "LEADSCREW_REQUEST_READ_TIMEOUT_S": str(READ_TIMEOUT_S),

@@ -33,9 +33,10 @@ def test_formula_names_an_existing_core_function(key: str) -> None:
 
 
 def _lookup(candidate: dict[str, Any], dotted: str) -> Any:
+    """The field at a dotted path; through a list (e.g. ``segments``), its first item's."""
     value: Any = candidate
     for part in dotted.split("."):
-        value = value[part]
+        value = value[0][part] if isinstance(value, list) else value[part]
     return value
 
 

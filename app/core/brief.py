@@ -15,12 +15,11 @@ from typing import Any, Literal, NamedTuple, Protocol, TypeVar
 import numpy as np
 
 from app.core.checks import BY_NAME
-from app.core.checks.base import Measure
 from app.core.formulas import critical_speed
 from app.core.model import Application, ProvenanceKind, ScrewSpec
 from app.core.phrase import Phrase
 from app.core.screening import Screening
-from app.core.table import Array, Mask
+from app.core.table import Array
 
 #: Provenance kinds from the least to the most certain.
 CERTAINTY: tuple[ProvenanceKind, ...] = (
@@ -55,13 +54,6 @@ def number(x: float | None) -> float | None:
     return None if x is None or math.isnan(x) else x
 
 
-def ratio(demand: float | None, capacity: float | None) -> float | None:
-    """A check's utilisation demand / capacity; None when either is missing or the
-    capacity is zero (a yes/no check)."""
-    value, limit = number(demand), number(capacity)
-    return value / limit if value is not None and limit else None
-
-
 def governing(app: Application, checks: Sequence[J]) -> J | None:
     """Among the checks that reject (limits; advice too when the user asks), the one with
     the highest utilisation, or the first failed yes/no check when no numeric one fails."""
@@ -87,17 +79,24 @@ def limit_provenance(check: Judged | None, s: ScrewSpec) -> ProvenanceKind | Non
 
 
 #: One check of one candidate, gathered from the screening arrays:
-#: (applies, demand, capacity, failed).
-CheckRow = tuple[bool, float | None, float | None, bool]
+#: (applies, demand, capacity, utilisation, failed).
+CheckRow = tuple[bool, float | None, float | None, float | None, bool]
 
 
-def check_rows(m: Measure, failed: Mask, index: list[int]) -> list[CheckRow]:
+def check_rows(sc: Screening, name: str, index: list[int]) -> list[CheckRow]:
     """The screening's values of one check at ``index``, as plain Python values."""
-    n = len(index)
+    m, n = sc.measures[name], len(index)
     demand = [None] * n if m.demand is None else m.demand[index].tolist()
     capacity = [None] * n if m.capacity is None else m.capacity[index].tolist()
     return list(
-        zip(m.applicable[index].tolist(), demand, capacity, failed[index].tolist(), strict=True)
+        zip(
+            m.applicable[index].tolist(),
+            demand,
+            capacity,
+            _utilizations(sc.utilization[name], index),
+            sc.failed[name][index].tolist(),
+            strict=True,
+        )
     )
 
 
@@ -135,8 +134,8 @@ class Brief(NamedTuple):
 
 
 def _utilizations(values: Array | None, index: list[int]) -> list[float | None]:
-    """A check's utilisation at ``index`` as ``ratio`` gives it: None for a yes/no check
-    and where it is not a finite number (no demand or limit, or a zero limit)."""
+    """A check's utilisation (demand / capacity) at ``index``: None for a yes/no check and
+    where it is not a finite number (no demand or limit, or a zero limit)."""
     if values is None:
         return [None] * len(index)
     picked = values[index]
@@ -169,17 +168,8 @@ def briefs(
     index = list(positions)
     if not index:
         return []
-    columns = [
-        (
-            name,
-            BY_NAME[name].kind,
-            m.applicable[index].tolist(),
-            _utilizations(sc.utilization[name], index),
-            sc.failed[name][index].tolist(),
-        )
-        for name, m in sc.measures.items()
-    ]
-    failing = [k for k in range(len(index)) if any(c[4][k] for c in columns)]
+    columns = {name: check_rows(sc, name, index) for name in sc.measures}
+    failing = [k for k in range(len(index)) if any(c[k][4] for c in columns.values())]
     rows = dict(zip(failing, sc.quantities.rows([index[k] for k in failing]), strict=True))
     thread = zip(
         sc.table.efficiency[index].tolist(), sc.table.self_locking[index].tolist(), strict=True
@@ -193,15 +183,16 @@ def briefs(
         checks = tuple(
             CheckBrief(
                 name,
-                kind,
-                not failed[k],
-                utilization[k],
+                BY_NAME[name].kind,
+                not failed,
+                utilization,
                 partial(BY_NAME[name].fix, app, s, r, sc.reach)
-                if failed[k] and r is not None
+                if failed and r is not None
                 else None,
             )
-            for name, kind, applies, utilization, failed in columns
-            if applies[k]
+            for name, column in columns.items()
+            for applies, _, _, utilization, failed in (column[k],)
+            if applies
         )
         top = governing(app, checks)
         out.append(

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from app.core import motion
-from app.core.brief import CheckRow, check_rows, governing, limit_provenance, number, ratio
+from app.core.brief import CheckRow, check_rows, governing, limit_provenance, number
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check, Reach
 from app.core.formulas import critical_speed
@@ -42,7 +42,7 @@ def _result(
     reach: Reach,
 ) -> CheckResult:
     """One check of one candidate; its explanation and fix are written when read."""
-    _, demand, capacity, failed = row
+    _, demand, capacity, utilization, failed = row
     value, limit = number(demand), number(capacity)
     numeric = value is not None and limit is not None
     return CheckResult(
@@ -53,7 +53,7 @@ def _result(
         value=value if numeric else None,
         limit=limit if numeric else None,
         quantity=check.quantity if numeric else None,
-        utilization=ratio(demand, capacity),
+        utilization=utilization,
         formula=check.formula,
         sources=check.sources,
         explanation=partial(check.explain, app, s, r, not failed),
@@ -135,7 +135,7 @@ def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> li
         return []
     rows = sc.quantities.rows(index)
     thread = {name: getattr(sc.table, name)[index].tolist() for name in THREAD_COLUMNS}
-    checks = {name: check_rows(m, sc.failed[name], index) for name, m in sc.measures.items()}
+    checks = {name: check_rows(sc, name, index) for name in sc.measures}
     worst = sc.max_utilization[index].tolist()
     moves = _motions(app, sc, index, rows)
     passed = sc.passed[index].tolist()

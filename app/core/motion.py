@@ -77,13 +77,6 @@ def steady_load(app: Application) -> float:
     return app.load_n
 
 
-def _backdrive(t: CandidateTable) -> Array:
-    """Signed back-drive efficiency at running friction, per candidate."""
-    mu_d = np.array([s.friction_dynamic for s in t.screws], dtype=np.float64)
-    eta_b = profile.signed_backdrive_efficiency(np.tan(t.lead_angle_rad), mu_d, t.cos_half_angle)
-    return np.asarray(eta_b, dtype=np.float64)
-
-
 def _move(
     app: Application, p: Profile, t: CandidateTable, direction: tuple[Direction, float]
 ) -> list[Segment[Array]]:
@@ -91,14 +84,15 @@ def _move(
     rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
-    eta_b = _backdrive(t)
     rates = {"accelerate": app.accel_m_s2, "constant": 0.0, "decelerate": decel(app)}
     times = {"accelerate": p.accel_time_s, "constant": p.constant_time_s}
     out: list[Segment[Array]] = []
     for name, sign in RAMPS:
         accel = sign * rates[name]
         thrust = direction[1] * steady_load(app) + app.moving_mass_kg * accel
-        thread = profile.thread_torque(thrust, t.lead_m, t.efficiency, eta_b)
+        thread = profile.thread_torque(
+            thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
+        )
         spin = torque.inertia_torque(inertia, torque.angular_acceleration(accel, t.lead_m))
         out.append(
             Segment(

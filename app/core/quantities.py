@@ -89,6 +89,8 @@ class Quantities(Generic[V]):
     holding_seed_nm: V
     holding_physics_nm: V
     brake_nm: V
+    #: the brake torque to fit: ``brake_nm`` times the torque safety factor
+    brake_needed_nm: V
     locks_with_margin: V
     max_lock_lead_m: V
     #: The move: the peak rpm (the top speed's without a stroke); the largest torque in
@@ -215,10 +217,12 @@ def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
     )
     seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
     physics = efficiency.holding_torque(force_n, t.lead_m, t.backdrive_efficiency)
+    brake = np.where(locks, 0.0, np.maximum(seed, physics))
     return {
         "holding_seed_nm": np.where(locks, 0.0, seed),
         "holding_physics_nm": physics,
-        "brake_nm": np.where(locks, 0.0, np.maximum(seed, physics)),
+        "brake_nm": brake,
+        "brake_needed_nm": brake * app.torque_safety_factor,
         "locks_with_margin": locks,
         "max_lock_lead_m": efficiency.max_self_locking_lead(
             t.pitch_diameter_m, mu_margin, t.cos_half_angle

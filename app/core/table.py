@@ -13,7 +13,7 @@ from operator import attrgetter
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.formulas import bearing, efficiency, geometry, limits
+from app.core.formulas import bearing, efficiency, geometry, limits, profile
 from app.core.model import ScrewSpec
 
 Array = NDArray[np.float64]
@@ -114,6 +114,9 @@ class CandidateTable:
     friction_static: Array
     cos_half_angle: Array
     backdrive_efficiency_running: Array
+    #: running back-drive efficiency without the clip at 0 (negative: self-locking), for
+    #: the torque of a segment where the load drives
+    backdrive_efficiency_signed: Array
     yield_strength_pa: Array
     pitch_m: Array
     flank_pitch_diameter_m: Array
@@ -195,6 +198,7 @@ class CandidateTable:
             friction_static=mu_s,
             cos_half_angle=cos_a,
             backdrive_efficiency_running=efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
+            backdrive_efficiency_signed=profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
             yield_strength_pa=col("yield_strength_pa"),
             **_nut_columns(screws, lead),
         )

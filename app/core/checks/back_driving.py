@@ -87,7 +87,7 @@ class BackDriving(Check):
             "Give a brake (or the motor's holding torque) of at least {brake}, or use a lead "
             "of at most {lead}.",
             {
-                "brake": Amount(r.brake_nm * app.torque_safety_factor, "torque"),
+                "brake": Amount(r.brake_needed_nm, "torque"),
                 "lead": Amount(r.max_lock_lead_m, "length"),
             },
         )

@@ -39,8 +39,7 @@ class Holding(Check):
         return app.orientation == "vertical" and app.brake_torque_nm is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        needed = q.brake_nm * app.torque_safety_factor
-        return Measure(everywhere(t), needed, same(t, app.brake_torque_nm))
+        return Measure(everywhere(t), q.brake_needed_nm, same(t, app.brake_torque_nm))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -62,7 +61,7 @@ class Holding(Check):
             "{seed} (seed method) and {physics} (physics)).",
             {
                 "brake": Amount(app.brake_torque_nm or 0.0, "torque"),
-                "needed": Amount(r.brake_nm * app.torque_safety_factor, "torque"),
+                "needed": Amount(r.brake_needed_nm, "torque"),
                 "sf": Amount(app.torque_safety_factor, "factor"),
                 "seed": Amount(r.holding_seed_nm, "torque"),
                 "physics": Amount(r.holding_physics_nm, "torque"),
@@ -74,7 +73,7 @@ class Holding(Check):
             "Fit a brake of at least {needed}, or use a lead of at most {lead} "
             "(self-locking with margin).",
             {
-                "needed": Amount(r.brake_nm * app.torque_safety_factor, "torque"),
+                "needed": Amount(r.brake_needed_nm, "torque"),
                 "lead": Amount(r.max_lock_lead_m, "length"),
             },
         )
