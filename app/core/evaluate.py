@@ -28,7 +28,7 @@ from app.core.model import (
 )
 from app.core.quantities import Quantities, axial_load
 from app.core.screening import Screening, screen_table
-from app.core.table import CandidateTable
+from app.core.table import table_of
 
 __all__ = ["axial_load", "evaluate", "evaluations"]
 
@@ -259,7 +259,7 @@ def _buckling(app: Application, s: ScrewSpec, r: Quantities[float]) -> Buckling:
 def evaluate(app: Application, screw: ScrewSpec, reach: Reach | None = None) -> Evaluation:
     """Compute torque, speeds, loads, PV, life, accuracy and all checks for one screw;
     ``reach`` is what the catalog offers, for the fixes (unbounded by default)."""
-    table = CandidateTable.build([screw])
+    table = table_of(screw)
     if min(table.efficiency[0], table.efficiency_static[0]) <= 0.0:
         raise ValueError(
             f"{screw.id}: lead angle {math.degrees(table.lead_angle_rad[0]):.1f} deg is too "

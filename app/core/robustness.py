@@ -19,8 +19,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from app.core.model import Application, ScrewSpec
-from app.core.screening import screen_table
-from app.core.table import CandidateTable
+from app.core.screening import eligible, filters, screen_table
+from app.core.table import CandidateTable, table_of
 
 
 @dataclass(frozen=True, slots=True)
@@ -46,7 +46,7 @@ class Variants:
 
 def passes(app: Application, screw: ScrewSpec) -> bool:
     """Whether ``screw`` passes every check that applies to ``app``."""
-    return bool(screen_table(app, CandidateTable.build([screw])).passed[0])
+    return bool(screen_table(app, table_of(screw)).passed[0])
 
 
 def at_values(screw: ScrewSpec, changes: Mapping[str, float]) -> ScrewSpec:
@@ -100,23 +100,81 @@ def robustness_in(
     return robustness_of(app, [table.screws[p] for p in positions])
 
 
+def verdicts(
+    names: Sequence[str], spans: Sequence[range], passed: NDArray[np.bool_]
+) -> list[Robustness]:
+    """``Robustness`` per span of variant rows: the names of the rows that fail, once
+    each, in row order (``names[r]`` and ``passed[r]`` are row ``r``'s)."""
+    found = []
+    for span in spans:
+        hinges: list[str] = []
+        for r in span:
+            if not passed[r] and names[r] not in hinges:
+                hinges.append(names[r])
+        found.append(Robustness(not hinges, tuple(hinges)))
+    return found
+
+
 def judge(app: Application, variants: Variants, positions: Sequence[int]) -> list[Robustness]:
     """``Robustness`` of the (passing) screws at ``positions`` of the variants' source,
     with one screening of all their variants."""
     start = variants.start
     spans = [range(start[p], start[p + 1]) for p in positions]
     rows = np.fromiter((r for span in spans for r in span), dtype=np.intp)
-    passed = screen_table(app, variants.table.take(rows)).passed.tolist() if rows.size else []
-    found, k = [], 0
-    for span in spans:
-        hinges: list[str] = []
-        for r in span:
-            name = variants.names[r]
-            if not passed[k] and name not in hinges:
-                hinges.append(name)
-            k += 1
-        found.append(Robustness(not hinges, tuple(hinges)))
-    return found
+    passed = np.zeros(len(variants.table), dtype=bool)
+    if rows.size:
+        passed[rows] = screen_table(app, variants.table.take(rows)).passed
+    return verdicts(variants.names, spans, passed)
+
+
+@dataclass(frozen=True, slots=True)
+class Joint:
+    """The eligible rows of a table (its first ``n``) followed by the variants of each,
+    to screen together: the variants of eligible row ``k`` are rows
+    ``n + start[k]`` to ``n + start[k + 1]``, ``names`` (from ``n`` on) their values."""
+
+    table: CandidateTable
+    n: int
+    names: tuple[str, ...]
+    start: NDArray[np.intp]
+
+    def robustness(self, passed: NDArray[np.bool_], positions: Sequence[int]) -> list[Robustness]:
+        """``Robustness`` of the eligible rows at ``positions``, from ``passed`` of a
+        screening of the whole joint table."""
+        spans = [range(self.start[k], self.start[k + 1]) for k in positions]
+        return verdicts(self.names, spans, passed[self.n :])
+
+
+#: A joint table stays worth screening in one pass up to about this many variant rows
+#: (a screening costs about as much for a few rows as for a few hundred).
+JOINT_MAX_VARIANTS = 600
+_JOINT: dict[tuple[object, ...], tuple[CandidateTable, Joint | None]] = {}
+_JOINT_MAX = 64
+
+
+def joint_for(app: Application, table: CandidateTable) -> Joint | None:
+    """The ``Joint`` of the rows of ``table`` eligible for ``app``, kept per table and
+    filters; None when the table has no kept variants (``variants_for``) or too many."""
+    held_variants = _BY_TABLE.get(id(table))
+    if held_variants is None or held_variants[0] is not table:
+        return None
+    key = (id(table), *filters(app))
+    held = _JOINT.get(key)
+    if held is not None and held[0] is table:
+        return held[1]
+    variants = held_variants[1]
+    index, rows = eligible(app, table)
+    spans = [np.arange(variants.start[p], variants.start[p + 1]) for p in index.tolist()]
+    picked = np.concatenate(spans) if spans else np.zeros(0, dtype=np.intp)
+    joint = None
+    if len(picked) <= JOINT_MAX_VARIANTS:
+        start = np.cumsum([0, *map(len, spans)]).astype(np.intp)
+        names = tuple(variants.names[r] for r in picked.tolist())
+        joint = Joint(rows.join(variants.table.take(picked)), len(index), names, start)
+    if len(_JOINT) >= _JOINT_MAX:
+        _JOINT.clear()
+    _JOINT[key] = (table, joint)
+    return joint
 
 
 def robustness_of(app: Application, screws: Sequence[ScrewSpec]) -> list[Robustness]:

@@ -13,7 +13,7 @@ from numpy.typing import NDArray
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
-from app.core.quantities import Quantities, operating_point
+from app.core.quantities import NAMES, Quantities, operating_point
 from app.core.table import Array, CandidateTable, Mask
 
 
@@ -42,6 +42,25 @@ class Screening:
     @property
     def total_torque_nm(self) -> Array:
         return self.quantities.total_nm
+
+    def head(self, n: int, index: NDArray[np.intp], table: CandidateTable) -> "Screening":
+        """The screening of the first ``n`` rows alone (views), as rows ``index`` of
+        ``table``: for a table screened together with rows that follow them."""
+        cut = slice(0, n)
+        return Screening(
+            index,
+            table,
+            Quantities(*(getattr(self.quantities, name)[cut] for name in NAMES)),
+            {name: m.head(n) for name, m in self.measures.items()},
+            {name: None if u is None else u[cut] for name, u in self.utilization.items()},
+            {name: mask[cut] for name, mask in self.failed.items()},
+            {name: mask[cut] for name, mask in self.failed_by_check.items()},
+            self.passed[cut],
+            self.max_utilization[cut],
+            self.failed_limits[cut],
+            self.warned[cut],
+            self.reach,
+        )
 
 
 def eligible_mask(app: Application, table: CandidateTable) -> Mask:
@@ -133,10 +152,15 @@ _ELIGIBLE: dict[tuple[object, ...], tuple[CandidateTable, NDArray[np.intp], Cand
 _ELIGIBLE_MAX = 64
 
 
+def filters(app: Application) -> tuple[object, ...]:
+    """What picks the eligible candidates of a table (``eligible_mask``)."""
+    return (app.lead_m, app.coating, app.families, app.nut_material)
+
+
 def eligible(app: Application, table: CandidateTable) -> tuple[NDArray[np.intp], CandidateTable]:
     """The positions (in ``table``) of the candidates eligible for ``app``, and their
     table; kept per table and filters."""
-    key = (id(table), app.lead_m, app.coating, app.families, app.nut_material)
+    key = (id(table), *filters(app))
     held = _ELIGIBLE.get(key)
     if held is not None and held[0] is table:
         return held[1], held[2]

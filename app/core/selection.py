@@ -13,8 +13,8 @@ from app.core.checks import BY_NAME
 from app.core.evaluate import evaluations
 from app.core.model import Application, Change, Evaluation, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
-from app.core.robustness import Robustness, robustness_in, robustness_of
-from app.core.screening import Screening, screen
+from app.core.robustness import Robustness, joint_for, robustness_in, robustness_of
+from app.core.screening import Screening, eligible, screen, screen_table
 from app.core.table import CandidateTable
 
 NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
@@ -139,6 +139,21 @@ def _nearest_order(s: Screening) -> np.ndarray:
     return failing[np.lexsort((s.max_utilization[failing], s.failed_limits[failing]))]
 
 
+def _screen(
+    app: Application, table: CandidateTable
+) -> tuple[Screening, Callable[[Sequence[int]], list[Robustness]]]:
+    """The screening of the candidates eligible for ``app``, and how to judge the
+    robustness of those at given positions in it: when the table keeps its variants and
+    they are few, candidates and variants are screened in one pass (``joint_for``)."""
+    joint = joint_for(app, table)
+    if joint is None:
+        s = screen(app, table)
+        return s, lambda positions: robustness_in(app, table, s.index[list(positions)].tolist())
+    index, rows = eligible(app, table)
+    both = screen_table(app, joint.table, reach=table.reach)
+    return both.head(joint.n, index, rows), partial(joint.robustness, both.passed)
+
+
 def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -> Selection:
     """Screen every eligible candidate and rank the passing ones by ``app.rank_by``.
 
@@ -151,10 +166,10 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     table = (
         candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)
     )
-    s = screen(app, table)
+    s, robust = _screen(app, table)
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
-    found = robustness_in(app, table, s.index[ranked].tolist())
+    found = robust(ranked)
     rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})

@@ -213,9 +213,37 @@ class CandidateTable:
             screws=tuple([screws[i] for i in index.tolist()]), reach=self.reach, **picked
         )
 
+    def join(self, other: "CandidateTable") -> "CandidateTable":
+        """This table's candidates followed by ``other``'s (this table's reach)."""
+        joined = {
+            name: np.concatenate((getattr(self, name), getattr(other, name))) for name in COLUMNS
+        }
+        return CandidateTable(screws=self.screws + other.screws, reach=self.reach, **joined)
+
     def __len__(self) -> int:
         return len(self.screws)
 
 
 #: The array fields of a table, in declaration order.
 COLUMNS = tuple(f.name for f in fields(CandidateTable) if f.name not in ("screws", "reach"))
+
+
+#: One-screw tables built so far, by ``id`` of the screw, kept beside it so the id stays
+#: its own (the catalog's screws live as long as the app; a user's screw, one request).
+_OF_ONE: dict[int, tuple[ScrewSpec, CandidateTable]] = {}
+_OF_ONE_MAX = 1024
+
+
+def table_of(screw: ScrewSpec) -> CandidateTable:
+    """``CandidateTable.build([screw])``, kept per screw: the fixes and explanations of one
+    candidate read its derived columns (flank area, helix, efficiencies) again and again."""
+    held = _OF_ONE.get(id(screw))
+    if held is not None and held[0] is screw:
+        return held[1]
+    table = CandidateTable.build([screw])
+    for name in COLUMNS:  # shared by every later reader
+        getattr(table, name).setflags(write=False)
+    if len(_OF_ONE) >= _OF_ONE_MAX:
+        _OF_ONE.clear()
+    _OF_ONE[id(screw)] = (screw, table)
+    return table

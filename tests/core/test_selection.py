@@ -14,7 +14,7 @@ from hypothesis import HealthCheck, given, settings
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
-from app.core.robustness import robustness, variants_for
+from app.core.robustness import joint_for, judge, robustness, variants_for
 from app.core.screening import eligible_mask, screen, screen_table
 from app.core.selection import input_change, select
 from app.units import render
@@ -224,3 +224,33 @@ def test_eligible_rows_are_kept_per_filters_and_match_a_fresh_take(catalog: Cata
     assert np.array_equal(b.max_utilization, fresh.max_utilization, equal_nan=True)
     other = screen(replace(first, lead_m=0.002), catalog.table)
     assert not np.array_equal(other.index, a.index)
+
+
+def test_joint_screening_equals_screening_candidates_and_variants_apart(
+    catalog: Catalog,
+) -> None:
+    """With a lead chosen, ``select`` screens the eligible candidates and their variants
+    in one pass (``joint_for``); its head equals a screening of the candidates alone and
+    its robustness equals ``judge`` on the variant table. With any lead the variants are
+    too many and the two are screened apart."""
+    variants_for(catalog.table)
+    app = Application(load_n=60.0, speed_m_s=0.04, length_m=0.6, lead_m=0.01, limit=50)
+    joint = joint_for(app, catalog.table)
+    assert joint is not None and len(joint.table) > joint.n
+    both = screen_table(app, joint.table, reach=catalog.table.reach)
+    alone = screen(app, catalog.table)
+    head = both.head(joint.n, alone.index, alone.table)
+    assert np.array_equal(head.passed, alone.passed)
+    assert np.array_equal(head.max_utilization, alone.max_utilization, equal_nan=True)
+    assert np.array_equal(head.total_torque_nm, alone.total_torque_nm)
+    for name, mask in alone.failed.items():
+        assert np.array_equal(head.failed[name], mask), name
+    passing = np.flatnonzero(alone.passed).tolist()
+    assert passing
+    found = joint.robustness(both.passed, passing)
+    apart = judge(app, variants_for(catalog.table), alone.index[passing].tolist())
+    assert found == apart
+    assert any(r.hinges_on for r in found) and any(r.robust for r in found)
+    sel = select(app, catalog.table)
+    assert list(sel.robustness) == [found[passing.index(k)] for k in sel.ranked]
+    assert joint_for(replace(app, lead_m=None), catalog.table) is None

@@ -15,7 +15,7 @@ import numpy as np
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities
-from app.core.table import Array, CandidateTable, Mask, Reach
+from app.core.table import Array, CandidateTable, Mask, Reach, table_of
 
 __all__ = [
     "Application",
@@ -31,6 +31,7 @@ __all__ = [
     "ScrewSpec",
     "same",
     "sentence",
+    "table_of",
 ]
 
 #: A limit rejects a candidate; advice is reported beside it.
@@ -47,6 +48,15 @@ class Measure:
     demand: Array | None = None
     capacity: Array | None = None
     flagged: Mask | None = None
+
+    def head(self, n: int) -> "Measure":
+        """The first ``n`` candidates' part (views)."""
+        return Measure(
+            self.applicable[:n],
+            None if self.demand is None else self.demand[:n],
+            None if self.capacity is None else self.capacity[:n],
+            None if self.flagged is None else self.flagged[:n],
+        )
 
     def utilization(self) -> Array | None:
         """demand / capacity (NaN where the limit does not exist); None for yes/no. The

@@ -15,6 +15,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     load_input,
+    table_of,
     where_given,
 )
 from app.core.formulas import bearing, pv
@@ -49,7 +50,7 @@ def allowed_pressure(t: CandidateTable, speed_m_s: Array) -> Array:
 
 def _one(s: ScrewSpec, rpm: float) -> tuple[float, float]:
     """(sliding speed [m/s], allowed load [N]) of one candidate at ``rpm``."""
-    t = CandidateTable.build([s])
+    t = table_of(s)
     speed = sliding_speed(np.array([rpm]), t)
     load = allowed_pressure(t, speed) * t.bearing_area_m2
     return float(speed[0]), float(load[0])

@@ -15,6 +15,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     everywhere,
+    table_of,
 )
 from app.core.model import Segment
 from app.core.phrase import Amount, Phrase
@@ -36,9 +37,7 @@ def accel_that_fits(app: Application, s: ScrewSpec, r: Quantities[float]) -> flo
     p = motion.move_profile(app)
     if p is None or app.accel_m_s2 <= 0.0 or not worst_segment(app, r).startswith("accel"):
         return None
-    parts: list[Segment[Array]] = motion.segments(
-        app, p, CandidateTable.build([s]), np.array([r.brake_nm])
-    )
+    parts: list[Segment[Array]] = motion.segments(app, p, table_of(s), np.array([r.brake_nm]))
     index = int(r.motor_worst_segment)
     t_acc, t_run = float(parts[index].torque_nm[0]), float(parts[index + 1].torque_nm[0])
     slope = (t_acc - t_run) / app.accel_m_s2
