@@ -17,6 +17,8 @@ from pathlib import Path
 import httpx
 import pytest
 
+from app import cli
+from app.server.protocol import BoundedHttpToolsProtocol
 from deploy.local import free_port
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -125,3 +127,19 @@ def test_installed_console_script_serves_and_stops_cleanly(installed: Path) -> N
 def test_the_same_entry_point_from_the_checkout_stops_cleanly() -> None:
     """``app.cli:main`` without installing: the SIGTERM exit code, even offline."""
     _serve_select_stop([sys.executable, "-m", "app.cli"], cwd=ROOT, env={})
+
+
+def test_the_command_serves_on_the_loop_that_accepts_every_waiting_connection(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """``leadscrew-selector`` runs uvicorn on asyncio's event loop (``app.cli.EVENT_LOOP``:
+    uvloop accepts one connection per loop iteration, which the bench's p99 shows), with
+    the bounded protocol and the settings' limits."""
+    seen: dict[str, object] = {}
+    monkeypatch.setattr(cli.uvicorn, "run", lambda target, **kw: seen.update(kw, target=target))
+    monkeypatch.setattr(cli.signal, "signal", lambda *args: None)
+    assert cli.main(["--port", "8123"]) == 0
+    assert seen["loop"] == "asyncio" == cli.EVENT_LOOP
+    assert seen["http"] is BoundedHttpToolsProtocol
+    assert seen["target"] == "app.main:create_app" and seen["factory"] is True
+    assert seen["port"] == 8123
