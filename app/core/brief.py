@@ -15,6 +15,7 @@ from typing import Any, Literal, NamedTuple, Protocol, TypeVar
 import numpy as np
 
 from app.core.checks import BY_NAME
+from app.core.checks.base import Check
 from app.core.formulas import critical_speed
 from app.core.model import Application, ProvenanceKind, ScrewSpec
 from app.core.phrase import Phrase
@@ -156,21 +157,25 @@ def _numbers(sc: Screening, index: list[int]) -> list[tuple[float, float, float,
     return list(zip(rpm, q.total_nm[index].tolist(), margin, years, strict=True))
 
 
+def _fix(check: Check, app: Application, sc: Screening, i: int) -> Phrase | None:
+    """The fix of a failed check of the candidate at ``i``, from its numbers."""
+    return check.fix(app, sc.table.screws[i], sc.quantities.row(i), sc.reach)
+
+
 def briefs(
     app: Application,
     sc: Screening,
     positions: Sequence[int],
-    robustness: Sequence[tuple[bool, tuple[str, ...]]] | None = None,
+    robustness: Sequence[tuple[bool, tuple[str, ...]] | None] | None = None,
 ) -> list[Brief]:
     """The candidates at ``positions`` of a screening in short; ``robustness`` gives
-    (robust, hinges_on) per position for passing candidates. A candidate's full numbers
-    (for its fixes) are gathered only when one of its checks fails."""
+    (robust, hinges_on) per position for passing candidates (None: not judged). A
+    candidate's full numbers (for its fixes) are gathered only when one of its checks
+    fails."""
     index = list(positions)
     if not index:
         return []
     columns = {name: check_rows(sc, name, index) for name in sc.measures}
-    failing = [k for k in range(len(index)) if any(c[k][4] for c in columns.values())]
-    rows = dict(zip(failing, sc.quantities.rows([index[k] for k in failing]), strict=True))
     thread = zip(
         sc.table.efficiency[index].tolist(), sc.table.self_locking[index].tolist(), strict=True
     )
@@ -179,22 +184,21 @@ def briefs(
     for k, (i, numbers, (efficiency, locking)) in enumerate(
         zip(index, _numbers(sc, index), thread, strict=True)
     ):
-        s, r = sc.table.screws[i], rows.get(k)
+        s = sc.table.screws[i]
         checks = tuple(
             CheckBrief(
                 name,
                 BY_NAME[name].kind,
                 not failed,
                 utilization,
-                partial(BY_NAME[name].fix, app, s, r, sc.reach)
-                if failed and r is not None
-                else None,
+                partial(_fix, BY_NAME[name], app, sc, i) if failed else None,
             )
             for name, column in columns.items()
             for applies, _, _, utilization, failed in (column[k],)
             if applies
         )
         top = governing(app, checks)
+        judged = None if robustness is None else robustness[k]
         out.append(
             Brief(
                 s,
@@ -206,8 +210,8 @@ def briefs(
                 verdicts[k],
                 None if top is None else top.name,
                 limit_provenance(top, s),
-                None if robustness is None else robustness[k][0],
-                () if robustness is None else robustness[k][1],
+                None if judged is None else judged[0],
+                () if judged is None else judged[1],
             )
         )
     return out

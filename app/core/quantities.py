@@ -105,6 +105,10 @@ class Quantities(Generic[V]):
     motor_worst_rpm: V
     motor_curve_nm: V
 
+    def row(self, i: int) -> "Quantities[float]":
+        """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
+        return Quantities(*(float(getattr(self, name)[i]) for name in NAMES))
+
     def rows(self, index: Sequence[int]) -> "list[Quantities[float]]":
         """The numbers of the candidates at ``index`` as floats (NaN: no such limit)."""
         columns = [getattr(self, name)[list(index)].tolist() for name in NAMES]

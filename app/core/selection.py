@@ -125,11 +125,14 @@ class Selection:
 
 
 def short_forms(sel: Selection) -> tuple[list[Brief], list[Brief]]:
-    """The returned passing and rejected candidates in short (``brief.briefs``), read
-    from the selection's screening without building the full evaluations."""
-    app, s = sel.application, sel.screening
-    found = [(r.robust, r.hinges_on) for r in sel.robustness]
-    return briefs(app, s, sel.ranked, found), briefs(app, s, sel.nearest)
+    """The returned passing and rejected candidates in short (``brief.briefs``, in one
+    pass), read from the selection's screening without building the full evaluations."""
+    found: list[tuple[bool, tuple[str, ...]] | None] = [
+        (r.robust, r.hinges_on) for r in sel.robustness
+    ]
+    found += [None] * len(sel.nearest)
+    both = briefs(sel.application, sel.screening, sel.ranked + sel.nearest, found)
+    return both[: len(sel.ranked)], both[len(sel.ranked) :]
 
 
 def _nearest_order(s: Screening) -> np.ndarray:

@@ -6,9 +6,10 @@ the whole catalog.
 """
 
 import math
-from collections.abc import Sequence
-from dataclasses import dataclass, fields
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field, fields
 from operator import attrgetter
+from typing import Any, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -130,6 +131,8 @@ class CandidateTable:
 
     #: what the whole catalog offers; a subset (``take``) keeps its catalog's
     reach: Reach
+    #: what ``per_table`` worked out for these candidates
+    memo: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
 
     @classmethod
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
@@ -225,7 +228,7 @@ class CandidateTable:
 
 
 #: The array fields of a table, in declaration order.
-COLUMNS = tuple(f.name for f in fields(CandidateTable) if f.name not in ("screws", "reach"))
+COLUMNS = tuple(f.name for f in fields(CandidateTable) if f.name not in ("screws", "reach", "memo"))
 
 
 #: One-screw tables built so far, by ``id`` of the screw, kept beside it so the id stays
@@ -247,3 +250,16 @@ def table_of(screw: ScrewSpec) -> CandidateTable:
         _OF_ONE.clear()
     _OF_ONE[id(screw)] = (screw, table)
     return table
+
+
+T = TypeVar("T")
+
+
+def per_table(table: CandidateTable, name: str, work: Callable[[CandidateTable], T]) -> T:
+    """``work(table)``, kept with the table: for what depends on its candidates alone and
+    is read at every screening of a table that serves many (the catalog's, its eligible
+    rows)."""
+    if name not in table.memo:
+        table.memo[name] = work(table)
+    found: T = table.memo[name]
+    return found

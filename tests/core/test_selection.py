@@ -254,3 +254,15 @@ def test_joint_screening_equals_screening_candidates_and_variants_apart(
     sel = select(app, catalog.table)
     assert list(sel.robustness) == [found[passing.index(k)] for k in sel.ranked]
     assert joint_for(replace(app, lead_m=None), catalog.table) is None
+
+
+def test_one_candidates_numbers_equal_those_read_for_many(catalog: Catalog) -> None:
+    """``Quantities.row`` (the numbers a compact fix is written from) equals the same
+    candidate's entry in ``Quantities.rows`` (what the full form reads), NaN included."""
+    app = Application(load_n=300.0, speed_m_s=0.1, length_m=0.8, lead_m=0.01)
+    q = screen(app, catalog.table).quantities
+    picks = [0, 3, len(q.rpm) - 1]
+    for i, many in zip(picks, q.rows(picks), strict=True):
+        one = q.row(i)
+        assert all(isinstance(v, float) for v in one)
+        assert np.allclose(np.array(one), np.array(many), rtol=0, atol=0, equal_nan=True)

@@ -15,6 +15,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     load_input,
+    per_table,
     table_of,
     where_given,
 )
@@ -27,15 +28,20 @@ def sliding_speed(rpm: Array, t: CandidateTable) -> Array:
     return np.asarray(pv.surface_speed(rpm, t.flank_helix_travel_m), dtype=np.float64)
 
 
-def _table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
-    """Each candidate's table pressure at its sliding speed [Pa] (NaN without a table);
-    candidates sharing a material table are interpolated together."""
-    out = np.full(len(t), np.nan)
+def _by_material_table(t: CandidateTable) -> dict[tuple[tuple[float, float], ...], list[int]]:
+    """The candidates of ``t`` that have a pressure-speed table, grouped by table."""
     groups: dict[tuple[tuple[float, float], ...], list[int]] = {}
     for i, s in enumerate(t.screws):
         if s.bearing_pressure_table:
             groups.setdefault(s.bearing_pressure_table, []).append(i)
-    for table, index in groups.items():
+    return groups
+
+
+def _table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
+    """Each candidate's table pressure at its sliding speed [Pa] (NaN without a table);
+    candidates sharing a material table are interpolated together."""
+    out = np.full(len(t), np.nan)
+    for table, index in per_table(t, "material tables", _by_material_table).items():
         out[index] = bearing.table_pressure(speed_m_s[index], table)
     return out
 
