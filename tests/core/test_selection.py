@@ -14,6 +14,7 @@ from hypothesis import HealthCheck, given, settings
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
+from app.core.quantities import NAMES
 from app.core.robustness import joint_for, judge, robustness, variants_for
 from app.core.screening import eligible_mask, screen, screen_table
 from app.core.selection import input_change, select
@@ -263,6 +264,7 @@ def test_one_candidates_numbers_equal_those_read_for_many(catalog: Catalog) -> N
     q = screen(app, catalog.table).quantities
     picks = [0, 3, len(q.rpm) - 1]
     for i, many in zip(picks, q.rows(picks), strict=True):
-        one = q.row(i)
-        assert all(isinstance(v, float) for v in one)
-        assert np.allclose(np.array(one), np.array(many), rtol=0, atol=0, equal_nan=True)
+        one = [getattr(q.row(i), name) for name in NAMES]
+        assert all(type(v) is float for v in one)
+        expected = [getattr(many, name) for name in NAMES]
+        assert np.array_equal(np.array(one), np.array(expected), equal_nan=True)
