@@ -8,6 +8,7 @@ from functools import lru_cache
 from typing import Any
 
 from app.catalog import Material, Series
+from app.construct import construct
 from app.core.brief import Brief
 from app.core.formulas import torque
 from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec
@@ -70,7 +71,8 @@ def _prov(p: Provenance) -> dict[str, str]:
 def check_out(check: CheckResult, units: Units[str, str] = DEFAULT_UNITS) -> CheckOut:
     """A check in API units; its sentences in ``units`` (the API's by default)."""
     _, unit = api_value(0.0, check.quantity)
-    return CheckOut.model_construct(
+    return construct(
+        CheckOut,
         name=check.name,
         label=check.label,
         kind=check.kind,
@@ -88,7 +90,8 @@ def check_out(check: CheckResult, units: Units[str, str] = DEFAULT_UNITS) -> Che
 
 def _torque(ev: Evaluation) -> TorqueOut:
     t = ev.torque
-    return TorqueOut.model_construct(
+    return construct(
+        TorqueOut,
         inertia_nm=t.inertia_nm,
         inertia_screw_nm=t.inertia_screw_nm,
         inertia_mass_nm=t.inertia_mass_nm,
@@ -111,7 +114,8 @@ def _motion(ev: Evaluation) -> dict[str, Any]:
         return {"profile": None, "segments": None}
     p = ev.motion.profile
     return {
-        "profile": ProfileOut.model_construct(
+        "profile": construct(
+            ProfileOut,
             kind=p.kind,
             accel_time_s=p.accel_time_s,
             constant_time_s=p.constant_time_s,
@@ -121,7 +125,8 @@ def _motion(ev: Evaluation) -> dict[str, Any]:
             peak_speed_mm_s=_mm(p.peak_speed_m_s),
         ),
         "segments": [
-            SegmentOut.model_construct(
+            construct(
+                SegmentOut,
                 name=g.name,
                 direction=g.direction,
                 duration_s=g.duration_s,
@@ -136,7 +141,8 @@ def _motion(ev: Evaluation) -> dict[str, Any]:
 
 def _pv(ev: Evaluation) -> PVOut:
     pv = ev.pv
-    return PVOut.model_construct(
+    return construct(
+        PVOut,
         value_mpa_m_s=pv.value_pa_m_s / 1e6,
         limit_mpa_m_s=None if pv.limit_pa_m_s is None else pv.limit_pa_m_s / 1e6,
         pressure_mpa=pv.pressure_pa / 1e6,
@@ -151,7 +157,8 @@ def _life(ev: Evaluation) -> LifeOut | None:
     if life is None:
         return None
     low, high = life.years_min, life.years_max
-    return LifeOut.model_construct(
+    return construct(
+        LifeOut,
         travel_million_cm=[life.travel_min_m / 1e4, life.travel_max_m / 1e4],
         years=[low, high] if low is not None and high is not None else None,
         note=LIFE_NOTE,
@@ -164,7 +171,8 @@ def _accuracy(ev: Evaluation) -> AccuracyOut:
     def mm(x: float | None) -> float | None:
         return None if x is None else _mm(x)
 
-    return AccuracyOut.model_construct(
+    return construct(
+        AccuracyOut,
         lead_error_mm=mm(acc.lead_error_m),
         repeatability_mm=mm(acc.repeatability_m),
         backlash_mm=[_mm(acc.backlash_min_m), _mm(acc.backlash_max_m)],
@@ -176,14 +184,16 @@ def _column(ev: Evaluation) -> dict[str, Any]:
     """Critical speed and buckling of the screw as a column."""
     c, b = ev.critical_speed, ev.buckling
     return {
-        "critical_speed": CriticalSpeedOut.model_construct(
+        "critical_speed": construct(
+            CriticalSpeedOut,
             theoretical_rpm=c.theoretical_rpm,
             allowed_rpm=c.allowed_rpm,
             margin=c.margin,
             safety_factor=c.safety_factor,
             end_fixity=c.end_fixity,
         ),
-        "buckling": BucklingOut.model_construct(
+        "buckling": construct(
+            BucklingOut,
             applies=b.applies,
             critical_load_n=b.critical_load_n,
             allowed_load_n=b.allowed_load_n,
@@ -215,7 +225,8 @@ def _thread(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
         "seed_rule_no_backdrive": ev.seed_rule_no_backdrive,
         "max_self_locking_lead_mm": _mm(ev.max_self_locking_lead_m),
         "max_self_locking_lead_with_margin_mm": _mm(ev.max_self_locking_lead_with_margin_m),
-        "holding_torque": HoldingTorqueOut.model_construct(
+        "holding_torque": construct(
+            HoldingTorqueOut,
             seed_method_nm=ev.holding_torque_seed_nm,
             physics_nm=ev.holding_torque_physics_nm,
             brake_nm=ev.brake_torque_nm,
@@ -228,7 +239,7 @@ def _thread(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
 def provenance_out(p: Provenance) -> ProvenanceOut:
     """A catalog value's provenance as its output model: the same few hundred for every
     response, so built once each (output models are never changed once built)."""
-    return ProvenanceOut.model_construct(kind=p.kind, source=p.source)
+    return construct(ProvenanceOut, kind=p.kind, source=p.source)
 
 
 def candidate_out(
@@ -242,11 +253,10 @@ def candidate_out(
     checks = [check_out(c, units) for c in ev.checks]
     fixes = [c.fix for c in checks if c.fix]
     used = {src for c in ev.checks for src in c.sources} | set(GEOMETRY_SOURCES)
-    outgassing = [
-        OutgassingOut.model_construct(hours=h, weight_loss_percent=w) for h, w in s.outgassing
-    ]
+    outgassing = [construct(OutgassingOut, hours=h, weight_loss_percent=w) for h, w in s.outgassing]
     traverse = ev.traverse_speed_limit_m_s
-    return CandidateOut.model_construct(
+    return construct(
+        CandidateOut,
         id=s.id,
         series=s.series_id,
         series_name=s.series_name,
@@ -327,8 +337,8 @@ def rejected_summary(b: Brief, units: Units[str, str] = DEFAULT_UNITS) -> dict[s
 def rejected_out(b: Brief, units: Units[str, str] = DEFAULT_UNITS) -> RejectedSummaryOut:
     """``rejected_summary`` as its output model (for templates, which read attributes)."""
     row = rejected_summary(b, units)
-    failed = [FailedCheckOut.model_construct(**f) for f in row.pop("failed")]
-    return RejectedSummaryOut.model_construct(**row, failed=failed)
+    failed = [construct(FailedCheckOut, **f) for f in row.pop("failed")]
+    return construct(RejectedSummaryOut, **row, failed=failed)
 
 
 def selection_summary(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
@@ -360,19 +370,21 @@ def selection_out(
 def _counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]:
     """The counts and the summary of a selection, shared by the compact and full forms."""
     return {
-        "counts": CountsOut.model_construct(
+        "counts": construct(
+            CountsOut,
             evaluated=sel.evaluated,
             passed=sel.passed,
             rejected=sel.evaluated - sel.passed,
             failed_by_check=dict(sel.failed_by_check),
         ),
-        "summary": SummaryOut.model_construct(
+        "summary": construct(
+            SummaryOut,
             message=render(sel.summary.message, units),
             most_excluding_check=sel.summary.most_excluding_check,
             best_rejected_id=sel.summary.best_rejected_id,
             input_change=_api_change(sel.summary.input_change),
             changes=[
-                ChangeOut.model_construct(inputs=_api_change(c.inputs), admits=c.admits)
+                construct(ChangeOut, inputs=_api_change(c.inputs), admits=c.admits)
                 for c in sel.summary.changes
                 if feasible(_api_change(c.inputs))
             ],

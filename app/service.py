@@ -4,6 +4,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from app.catalog import Catalog
+from app.construct import construct
 from app.core.evaluate import evaluate
 from app.core.selection import select, short_forms, with_robustness
 from app.formulas import FORMULAS
@@ -49,7 +50,8 @@ def construct_select_out(
     inputs: ApplicationIn, catalog: Catalog, selected: dict[str, Any]
 ) -> SelectOut:
     """The select response around ``selection_out``'s candidates, counts and summary."""
-    return SelectOut.model_construct(
+    return construct(
+        SelectOut,
         inputs=inputs,
         **selected,
         catalog_version=catalog.version,
@@ -106,7 +108,8 @@ def run_evaluation(
     ev = evaluate(app, spec, reach)
     if ev.passed:
         (ev,) = with_robustness(app, [ev])
-    return EvaluateOut.model_construct(
+    return construct(
+        EvaluateOut,
         inputs=inputs,
         candidate=candidate_out(ev, app.vacuum, units, app.brake_torque_nm),
         catalog_version=catalog.version,
