@@ -13,6 +13,7 @@ from functools import partial
 from typing import Any, Literal, NamedTuple, Protocol, TypeVar
 
 import numpy as np
+from numpy.typing import NDArray
 
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
@@ -79,12 +80,22 @@ def limit_provenance(check: Judged | None, s: ScrewSpec) -> ProvenanceKind | Non
     return min(kinds, key=CERTAINTY.index) if kinds else None
 
 
+#: Positions in a screening, as an index array (NumPy picks with one four times faster
+#: than with a list).
+Positions = NDArray[np.intp]
+
+
+def positions_array(positions: Sequence[int]) -> Positions:
+    """``positions`` as an index array."""
+    return np.asarray(positions, dtype=np.intp)
+
+
 #: One check of one candidate, gathered from the screening arrays:
 #: (applies, demand, capacity, utilisation, failed).
 CheckRow = tuple[bool, float | None, float | None, float | None, bool]
 
 
-def check_rows(sc: Screening, name: str, index: list[int]) -> list[CheckRow]:
+def check_rows(sc: Screening, name: str, index: Positions) -> list[CheckRow]:
     """The screening's values of one check at ``index``, as plain Python values."""
     m, n = sc.measures[name], len(index)
     demand = [None] * n if m.demand is None else m.demand[index].tolist()
@@ -134,7 +145,7 @@ class Brief(NamedTuple):
     hinges_on: tuple[str, ...] = ()
 
 
-def _utilizations(values: Array | None, index: list[int]) -> list[float | None]:
+def _utilizations(values: Array | None, index: Positions) -> list[float | None]:
     """A check's utilisation (demand / capacity) at ``index``: None for a yes/no check and
     where it is not a finite number (no demand or limit, or a zero limit)."""
     if values is None:
@@ -144,7 +155,7 @@ def _utilizations(values: Array | None, index: list[int]) -> list[float | None]:
     return [v if ok else None for v, ok in zip(picked.tolist(), finite, strict=True)]
 
 
-def _numbers(sc: Screening, index: list[int]) -> list[tuple[float, float, float, Any]]:
+def _numbers(sc: Screening, index: Positions) -> list[tuple[float, float, float, Any]]:
     """(rpm, drive torque, critical-speed margin, rated life in years or None) per
     candidate at ``index``."""
     q = sc.quantities
@@ -175,14 +186,13 @@ def briefs(
     index = list(positions)
     if not index:
         return []
-    columns = {name: check_rows(sc, name, index) for name in sc.measures}
-    thread = zip(
-        sc.table.efficiency[index].tolist(), sc.table.self_locking[index].tolist(), strict=True
-    )
-    verdicts = sc.passed[index].tolist()
+    at = positions_array(index)
+    columns = {name: check_rows(sc, name, at) for name in sc.measures}
+    thread = zip(sc.table.efficiency[at].tolist(), sc.table.self_locking[at].tolist(), strict=True)
+    verdicts = sc.passed[at].tolist()
     out = []
     for k, (i, numbers, (efficiency, locking)) in enumerate(
-        zip(index, _numbers(sc, index), thread, strict=True)
+        zip(index, _numbers(sc, at), thread, strict=True)
     ):
         s = sc.table.screws[i]
         checks = tuple(

@@ -8,7 +8,14 @@ from typing import Any
 import numpy as np
 
 from app.core import motion
-from app.core.brief import CheckRow, check_rows, governing, limit_provenance, number
+from app.core.brief import (
+    CheckRow,
+    check_rows,
+    governing,
+    limit_provenance,
+    number,
+    positions_array,
+)
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check, Reach
 from app.core.formulas import critical_speed
@@ -133,12 +140,13 @@ def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> li
     index = [int(i) for i in positions]
     if not index:
         return []
-    rows = sc.quantities.rows(index)
-    thread = {name: getattr(sc.table, name)[index].tolist() for name in THREAD_COLUMNS}
-    checks = {name: check_rows(sc, name, index) for name in sc.measures}
-    worst = sc.max_utilization[index].tolist()
+    at = positions_array(index)
+    rows = sc.quantities.rows(at)
+    thread = {name: getattr(sc.table, name)[at].tolist() for name in THREAD_COLUMNS}
+    checks = {name: check_rows(sc, name, at) for name in sc.measures}
+    worst = sc.max_utilization[at].tolist()
     moves = _motions(app, sc, index, rows)
-    passed = sc.passed[index].tolist()
+    passed = sc.passed[at].tolist()
     results = [
         tuple(
             _result(BY_NAME[name], column[k], app, sc.table.screws[i], rows[k], sc.reach)

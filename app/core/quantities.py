@@ -11,6 +11,7 @@ from dataclasses import dataclass, fields
 from typing import Any, Generic, TypeVar
 
 import numpy as np
+from numpy.typing import NDArray
 
 from app.core import motion
 from app.core.formulas import (
@@ -109,9 +110,10 @@ class Quantities(Generic[V]):
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
         return Quantities(*(float(getattr(self, name)[i]) for name in NAMES))
 
-    def rows(self, index: Sequence[int]) -> "list[Quantities[float]]":
+    def rows(self, index: Sequence[int] | NDArray[np.intp]) -> "list[Quantities[float]]":
         """The numbers of the candidates at ``index`` as floats (NaN: no such limit)."""
-        columns = [getattr(self, name)[list(index)].tolist() for name in NAMES]
+        at = np.asarray(index, dtype=np.intp)
+        columns = [getattr(self, name)[at].tolist() for name in NAMES]
         return [Quantities(*values) for values in zip(*columns, strict=True)]
 
 
