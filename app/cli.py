@@ -14,13 +14,21 @@ from app.catalog import CatalogError, load_catalog
 from app.server.protocol import BoundedHttpToolsProtocol
 from app.settings import get_settings
 
-#: The event loop the server runs on. asyncio's own loop accepts every connection that is
-#: waiting when the listening socket turns readable; uvloop's (libuv 1.45 and later,
-#: libuv/libuv#3696) accepts one per loop iteration, so while the worker is busy a new
-#: connection waits behind as many iterations as there are connections in use. With 32
-#: connections opening at once on the results fragment that put its p99 at 1.2 s against
-#: 0.22 s on asyncio's loop, at the same throughput (``python3 bench/run.py``).
-EVENT_LOOP = "asyncio"
+
+def event_loop(workers: int) -> str:
+    """The event loop for ``workers`` processes.
+
+    One process (a pod, the default): asyncio's own loop, which accepts every connection
+    waiting when the listening socket turns readable. uvloop's (libuv 1.45 and later,
+    libuv/libuv#3696) accepts one per loop iteration, so while the worker is busy a new
+    connection waits behind as many iterations as there are connections in use: with 32
+    connections opening at once on the results fragment, p99 1.2 s against 0.2 s on
+    asyncio's loop at the same throughput (``python3 bench/run.py``). Several processes
+    sharing one socket: uvloop, for the same reason the other way round: the first
+    process to wake would take every waiting connection on asyncio's loop (two workers
+    served 1.0 times one), one at a time they spread (2.1 times).
+    """
+    return "asyncio" if workers == 1 else "uvloop"
 
 
 def _stopped(signum: int, frame: FrameType | None) -> None:
@@ -71,7 +79,7 @@ def main(argv: list[str] | None = None) -> int:
         port=args.port,
         workers=args.workers,
         proxy_headers=True,
-        loop=EVENT_LOOP,
+        loop=event_loop(args.workers),
         log_level=args.log_level,
         # request-read deadline and head limits: app.server.protocol, from the same settings
         http=BoundedHttpToolsProtocol,

@@ -3,8 +3,8 @@
 Each server is a real uvicorn subprocess (``--http httptools --workers 1``, access log
 off) pinned to CPU 0 when there are two or more CPUs; wrk runs pinned to the others, so
 the server and the load generator do not fight over one core. The app runs on the event
-loop it is served on (``app.cli.EVENT_LOOP``); the bare ceiling on uvloop, the faster of
-the two for it.
+loop the command serves it on (``app.cli.event_loop``: asyncio's for one worker, uvloop
+for several); the bare ceiling on uvloop, the faster of the two for it.
 """
 
 import gzip
@@ -19,7 +19,7 @@ from html.parser import HTMLParser
 from pathlib import Path
 from urllib.parse import urlsplit
 
-from app.cli import EVENT_LOOP
+from app.cli import event_loop
 from bench import wrk
 from bench.report import Report
 from deploy.local import free_port, stop, wait_until_healthy
@@ -55,7 +55,7 @@ def server(target: str, *, factory: bool, workers: int = 1) -> Iterator[tuple[in
     more share every CPU with wrk."""
     port = free_port()
     cmd = [sys.executable, "-m", "uvicorn", target, *(["--factory"] if factory else [])]
-    loop = EVENT_LOOP if factory else "uvloop"
+    loop = event_loop(workers) if factory else "uvloop"
     cmd += ["--loop", loop, "--http", "httptools", "--workers", str(workers)]
     cmd += ["--host", "127.0.0.1", "--port", str(port), "--log-level", "warning"]
     cmd += ["--no-access-log"]

@@ -129,17 +129,19 @@ def test_the_same_entry_point_from_the_checkout_stops_cleanly() -> None:
     _serve_select_stop([sys.executable, "-m", "app.cli"], cwd=ROOT, env={})
 
 
-def test_the_command_serves_on_the_loop_that_accepts_every_waiting_connection(
-    monkeypatch: pytest.MonkeyPatch,
+@pytest.mark.parametrize(("workers", "loop"), [(1, "asyncio"), (2, "uvloop"), (4, "uvloop")])
+def test_the_command_serves_on_the_loop_that_suits_its_workers(
+    monkeypatch: pytest.MonkeyPatch, workers: int, loop: str
 ) -> None:
-    """``leadscrew-selector`` runs uvicorn on asyncio's event loop (``app.cli.EVENT_LOOP``:
-    uvloop accepts one connection per loop iteration, which the bench's p99 shows), with
-    the bounded protocol and the settings' limits."""
+    """``leadscrew-selector`` runs one worker on asyncio's event loop (it accepts every
+    waiting connection at once) and several on uvloop (one connection per iteration, so
+    workers sharing a socket share the connections): ``app.cli.event_loop``. The bench
+    shows both effects. It keeps the bounded protocol and the app factory."""
     seen: dict[str, object] = {}
     monkeypatch.setattr(cli.uvicorn, "run", lambda target, **kw: seen.update(kw, target=target))
     monkeypatch.setattr(cli.signal, "signal", lambda *args: None)
-    assert cli.main(["--port", "8123"]) == 0
-    assert seen["loop"] == "asyncio" == cli.EVENT_LOOP
+    assert cli.main(["--port", "8123", "--workers", str(workers)]) == 0
+    assert seen["loop"] == loop == cli.event_loop(workers)
+    assert seen["workers"] == workers and seen["port"] == 8123
     assert seen["http"] is BoundedHttpToolsProtocol
     assert seen["target"] == "app.main:create_app" and seen["factory"] is True
-    assert seen["port"] == 8123
