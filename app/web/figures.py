@@ -15,6 +15,7 @@ from app.catalog import Catalog
 from app.core.formulas import critical_speed, pv
 from app.core.model import Application
 from app.core.screening import screen_table
+from app.core.table import CandidateTable, per_table
 from app.schemas import CandidateOut, SelectOut
 from app.units import Display, api_value, sig
 from app.web.chart_style import PALETTE
@@ -264,22 +265,31 @@ class LeadPoint:
     pv_share: float | None
 
 
+def _leads_of(
+    series: str, coated: bool, anti_backlash: bool
+) -> Callable[[CandidateTable], CandidateTable]:
+    """The rows of one size and nut (every lead), to take from a table."""
+
+    def rows(table: CandidateTable) -> CandidateTable:
+        index = [
+            i
+            for i, s in enumerate(table.screws)
+            if (s.series_id, s.coated, s.anti_backlash) == (series, coated, anti_backlash)
+        ]
+        return table.take(np.array(index, dtype=np.intp))
+
+    return rows
+
+
 def lead_sweep(app: Application, top: CandidateOut, catalog: Catalog) -> list[LeadPoint]:
     """The top screw's size and nut with every lead the catalog offers, screened by the
-    core for this application (any lead), shortest lead first."""
-    index = np.array(
-        [
-            i
-            for i, s in enumerate(catalog.table.screws)
-            if s.series_id == top.series
-            and s.coated == top.coated
-            and s.anti_backlash == top.anti_backlash
-        ],
-        dtype=np.intp,
-    )
-    if not index.size:
+    core for this application (any lead), shortest lead first. The rows of each size and
+    nut are taken from the catalog's table once."""
+    key = (top.series, top.coated, top.anti_backlash)
+    rows = per_table(catalog.table, f"leads of {key}", _leads_of(*key))
+    if not len(rows):
         return []
-    sc = screen_table(replace(app, lead_m=None), catalog.table.take(index))
+    sc = screen_table(replace(app, lead_m=None), rows)
     q, pv_use = sc.quantities, sc.utilization.get("pv")
     points = [
         LeadPoint(
@@ -290,7 +300,7 @@ def lead_sweep(app: Application, top: CandidateOut, catalog: Catalog) -> list[Le
             if pv_use is None or not sc.measures["pv"].applicable[k]
             else float(pv_use[k]),
         )
-        for k in range(len(index))
+        for k in range(len(rows))
     ]
     return sorted(points, key=lambda p: p.lead_m)
 

@@ -1,5 +1,8 @@
 """The Jinja2 environment shared by page routes and error pages."""
 
+from typing import Any
+
+import pydantic_core
 from fastapi.templating import Jinja2Templates
 
 from app.paths import resource_dir
@@ -7,3 +10,13 @@ from app.paths import resource_dir
 templates = Jinja2Templates(directory=str(resource_dir("templates")))
 # templates are part of the installed package: no per-render file checks
 templates.env.auto_reload = False
+
+
+def _json(value: Any, **_: Any) -> str:
+    """The JSON of ``tojson`` (which then escapes it for HTML): pydantic-core's encoder,
+    about four times faster than the standard library's on the charts, and NaN or
+    infinity as null (JSON has neither, and a browser's JSON.parse refuses them)."""
+    return pydantic_core.to_json(value, inf_nan_mode="null").decode()
+
+
+templates.env.policies["json.dumps_function"] = _json
