@@ -18,6 +18,7 @@ from app.schemas import (
     AccuracyOut,
     BucklingOut,
     CandidateOut,
+    CandidateRowOut,
     ChangeOut,
     CheckOut,
     CountsOut,
@@ -180,50 +181,50 @@ def _accuracy(ev: Evaluation) -> AccuracyOut:
     )
 
 
-def _column(ev: Evaluation) -> dict[str, Any]:
-    """Critical speed and buckling of the screw as a column."""
-    c, b = ev.critical_speed, ev.buckling
-    return {
-        "critical_speed": construct(
-            CriticalSpeedOut,
-            theoretical_rpm=c.theoretical_rpm,
-            allowed_rpm=c.allowed_rpm,
-            margin=c.margin,
-            safety_factor=c.safety_factor,
-            end_fixity=c.end_fixity,
-        ),
-        "buckling": construct(
-            BucklingOut,
-            applies=b.applies,
-            critical_load_n=b.critical_load_n,
-            allowed_load_n=b.allowed_load_n,
-            safety_factor=b.safety_factor,
-            slenderness=b.slenderness,
-            transition_slenderness=b.transition_slenderness,
-            mode=b.mode,
-            root_stress_mpa=b.root_stress_pa / 1e6,
-            yield_strength_mpa=None if b.yield_strength_pa is None else b.yield_strength_pa / 1e6,
-        ),
-    }
+def _critical_speed(ev: Evaluation) -> CriticalSpeedOut:
+    c = ev.critical_speed
+    return construct(
+        CriticalSpeedOut,
+        theoretical_rpm=c.theoretical_rpm,
+        allowed_rpm=c.allowed_rpm,
+        margin=c.margin,
+        safety_factor=c.safety_factor,
+        end_fixity=c.end_fixity,
+    )
 
 
-def _thread(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
-    """Geometry, efficiencies and holding of the thread."""
+def _buckling(ev: Evaluation) -> BucklingOut:
+    b = ev.buckling
+    return construct(
+        BucklingOut,
+        applies=b.applies,
+        critical_load_n=b.critical_load_n,
+        allowed_load_n=b.allowed_load_n,
+        safety_factor=b.safety_factor,
+        slenderness=b.slenderness,
+        transition_slenderness=b.transition_slenderness,
+        mode=b.mode,
+        root_stress_mpa=b.root_stress_pa / 1e6,
+        yield_strength_mpa=None if b.yield_strength_pa is None else b.yield_strength_pa / 1e6,
+    )
+
+
+def _shown(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
+    """What every form of a candidate shows (``CandidateBaseOut``), API units."""
     s = ev.screw
     return {
+        "id": s.id,
+        "series": s.series_id,
+        "series_name": s.series_name,
+        "anti_backlash": s.anti_backlash,
         "outer_diameter_mm": _mm(s.outer_diameter_m),
-        "root_diameter_mm": _mm(s.root_diameter_m),
-        "pitch_diameter_mm": _mm(ev.pitch_diameter_m),
         "lead_mm": _mm(s.lead_m),
-        "lead_angle_deg": math.degrees(ev.lead_angle_rad),
+        "coated": s.coated,
+        "axial_load_n": ev.axial_load_n,
+        "rpm": ev.rpm,
         "efficiency": ev.efficiency,
-        "efficiency_square_thread": ev.efficiency_square_thread,
-        "backdrive_efficiency": ev.backdrive_efficiency,
-        "backdrive_efficiency_running": ev.backdrive_efficiency_running,
         "self_locking": ev.self_locking,
-        "self_locking_with_margin": ev.self_locking_with_margin,
         "seed_rule_no_backdrive": ev.seed_rule_no_backdrive,
-        "max_self_locking_lead_mm": _mm(ev.max_self_locking_lead_m),
         "max_self_locking_lead_with_margin_mm": _mm(ev.max_self_locking_lead_with_margin_m),
         "holding_torque": construct(
             HoldingTorqueOut,
@@ -232,6 +233,16 @@ def _thread(ev: Evaluation, available_nm: float | None) -> dict[str, Any]:
             brake_nm=ev.brake_torque_nm,
             available_nm=available_nm,
         ),
+        "torque": _torque(ev),
+        "critical_speed": _critical_speed(ev),
+        "pv": _pv(ev),
+        "life": _life(ev),
+        "governing_check": ev.governing_check,
+        "governing_limit_provenance": ev.governing_limit_provenance,
+        "passed": ev.passed,
+        "robust": ev.robust,
+        "hinges_on": list(ev.hinges_on),
+        **_motion(ev),
     }
 
 
@@ -257,33 +268,36 @@ def candidate_out(
     traverse = ev.traverse_speed_limit_m_s
     return construct(
         CandidateOut,
-        id=s.id,
-        series=s.series_id,
-        series_name=s.series_name,
-        anti_backlash=s.anti_backlash,
-        coated=s.coated,
-        axial_load_n=ev.axial_load_n,
+        **_shown(ev, brake_nm),
+        root_diameter_mm=_mm(s.root_diameter_m),
+        pitch_diameter_mm=_mm(ev.pitch_diameter_m),
+        lead_angle_deg=math.degrees(ev.lead_angle_rad),
         peak_axial_load_n=ev.peak_axial_load_n,
-        rpm=ev.rpm,
-        **_thread(ev, brake_nm),
-        torque=_torque(ev),
-        **_column(ev),
-        pv=_pv(ev),
+        efficiency_square_thread=ev.efficiency_square_thread,
+        backdrive_efficiency=ev.backdrive_efficiency,
+        backdrive_efficiency_running=ev.backdrive_efficiency_running,
+        self_locking_with_margin=ev.self_locking_with_margin,
+        max_self_locking_lead_mm=_mm(ev.max_self_locking_lead_m),
+        buckling=_buckling(ev),
         traverse_speed_limit_mm_s=None if traverse is None else _mm(traverse),
         traverse_extrapolated=ev.traverse_extrapolated,
-        life=_life(ev),
         accuracy=_accuracy(ev),
         outgassing=outgassing if vacuum else None,
         checks=checks,
-        governing_check=ev.governing_check,
-        governing_limit_provenance=ev.governing_limit_provenance,
-        passed=ev.passed,
-        robust=ev.robust,
-        hinges_on=list(ev.hinges_on),
         warnings=[c for c in checks if c.kind == "advice" and not c.passed],
         fix=" ".join(fixes) if fixes else None,
         provenance={k: provenance_out(p) for k, p in s.provenance.items() if k in used},
-        **_motion(ev),
+    )
+
+
+def candidate_row(ev: Evaluation, brake_nm: float | None = None) -> CandidateRowOut:
+    """One evaluated screw as a row of the results table (``CandidateRowOut``): what every
+    form shows, and each check's utilisation instead of its sentences."""
+    return construct(
+        CandidateRowOut,
+        **_shown(ev, brake_nm),
+        utilization={c.name: c.utilization for c in ev.checks},
+        warned=[c.name for c in ev.checks if c.kind == "advice" and not c.passed],
     )
 
 
@@ -347,27 +361,23 @@ def selection_summary(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) ->
     return {
         "candidates": [candidate_summary(b) for b in passing],
         "rejected": [rejected_summary(b, units) for b in rejected],
-        **_counts_and_summary(sel, units),
+        **counts_and_summary(sel, units),
     }
 
 
-def selection_out(
-    sel: Selection, units: Units[str, str] = DEFAULT_UNITS, full_rejected: bool = True
-) -> dict[str, Any]:
-    """Candidates, rejected, counts and summary of a selection (the rest of SelectOut is
-    the caller's: inputs, links, catalog version); without ``full_rejected`` the rejected
-    list is left empty (the caller shows them in the compact form)."""
+def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
+    """Candidates, rejected, counts and summary of a selection in full (the rest of
+    SelectOut is the caller's: inputs, links, catalog version)."""
     app = sel.application
     vacuum, brake = app.vacuum, app.brake_torque_nm
-    rejected = sel.rejected if full_rejected else ()
     return {
         "candidates": [candidate_out(e, vacuum, units, brake) for e in sel.candidates],
-        "rejected": [candidate_out(e, vacuum, units, brake) for e in rejected],
-        **_counts_and_summary(sel, units),
+        "rejected": [candidate_out(e, vacuum, units, brake) for e in sel.rejected],
+        **counts_and_summary(sel, units),
     }
 
 
-def _counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]:
+def counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]:
     """The counts and the summary of a selection, shared by the compact and full forms."""
     return {
         "counts": construct(

@@ -257,54 +257,30 @@ class OutgassingOut(BaseModel):
     weight_loss_percent: float
 
 
-class CandidateOut(BaseModel):
+class CandidateBaseOut(BaseModel):
+    """What every form of a candidate shows: its numbers as the results table and the
+    charts read them, and its verdict."""
+
     id: str
     series: str
     series_name: str
     anti_backlash: bool
     outer_diameter_mm: float
-    root_diameter_mm: float
-    pitch_diameter_mm: float
     lead_mm: float
-    lead_angle_deg: float
     coated: bool
     axial_load_n: float = Field(description="Running thrust at constant speed (PV uses it).")
-    peak_axial_load_n: float = Field(
-        description="Peak thrust, accelerating or braking the moving mass: F + m a. "
-        "Buckling, root stress and the design load are judged on it."
-    )
     rpm: float
     efficiency: float = Field(
         description="Forward efficiency, Shigley's Acme form, dynamic friction (0-1)."
     )
-    efficiency_square_thread: float = Field(
-        description="The manufacturer's square-thread form, for comparison (0-1)."
-    )
-    backdrive_efficiency: float = Field(
-        description="The load driving the screw from rest: static friction; 0 = locks. With "
-        "static friction below running friction (uncoated) it can exceed the forward value."
-    )
-    backdrive_efficiency_running: float = Field(
-        description="The load driving the screw while it runs: dynamic friction."
-    )
     self_locking: bool = Field(description="mu_static >= cos(a_n) tan(lambda).")
-    self_locking_with_margin: bool = Field(
-        description="Self-locking with static friction reduced by the self-locking factor."
-    )
     seed_rule_no_backdrive: bool = Field(description="The seed's rule of thumb: lead < OD / 8.")
-    max_self_locking_lead_mm: float = Field(description="Longest lead that still self-locks.")
     max_self_locking_lead_with_margin_mm: float
     holding_torque: HoldingTorqueOut
     torque: TorqueOut
     critical_speed: CriticalSpeedOut
-    buckling: BucklingOut
     pv: PVOut
-    traverse_speed_limit_mm_s: float | None
-    traverse_extrapolated: bool
     life: LifeOut | None
-    accuracy: AccuracyOut
-    outgassing: list[OutgassingOut] | None
-    checks: list[CheckOut]
     governing_check: str | None = Field(
         description="The check with the highest utilisation (or a failed yes/no check)."
     )
@@ -320,17 +296,60 @@ class CandidateOut(BaseModel):
     hinges_on: list[str] = Field(
         description="The ranged catalog values at one end of whose range the pass fails."
     )
-    warnings: list[CheckOut] = Field(description="Failed advice: reported, not rejected.")
-    fix: str | None = Field(description="For a rejected candidate, what would make it pass.")
-    provenance: dict[str, ProvenanceOut] = Field(
-        description="Catalog field -> provenance, for the fields this candidate's numbers use."
-    )
     profile: ProfileOut | None = Field(
         default=None, description="The move over the stroke; null without a stroke."
     )
     segments: list[SegmentOut] | None = Field(
         default=None, description="Each segment of the cycle; null without a stroke."
     )
+
+
+class CandidateOut(CandidateBaseOut):
+    """A candidate in full: every number, every check with its message, formula and fix,
+    and the provenance of the catalog values it uses."""
+
+    root_diameter_mm: float
+    pitch_diameter_mm: float
+    lead_angle_deg: float
+    peak_axial_load_n: float = Field(
+        description="Peak thrust, accelerating or braking the moving mass: F + m a. "
+        "Buckling, root stress and the design load are judged on it."
+    )
+    efficiency_square_thread: float = Field(
+        description="The manufacturer's square-thread form, for comparison (0-1)."
+    )
+    backdrive_efficiency: float = Field(
+        description="The load driving the screw from rest: static friction; 0 = locks. With "
+        "static friction below running friction (uncoated) it can exceed the forward value."
+    )
+    backdrive_efficiency_running: float = Field(
+        description="The load driving the screw while it runs: dynamic friction."
+    )
+    self_locking_with_margin: bool = Field(
+        description="Self-locking with static friction reduced by the self-locking factor."
+    )
+    max_self_locking_lead_mm: float = Field(description="Longest lead that still self-locks.")
+    buckling: BucklingOut
+    traverse_speed_limit_mm_s: float | None
+    traverse_extrapolated: bool
+    accuracy: AccuracyOut
+    outgassing: list[OutgassingOut] | None
+    checks: list[CheckOut]
+    warnings: list[CheckOut] = Field(description="Failed advice: reported, not rejected.")
+    fix: str | None = Field(description="For a rejected candidate, what would make it pass.")
+    provenance: dict[str, ProvenanceOut] = Field(
+        description="Catalog field -> provenance, for the fields this candidate's numbers use."
+    )
+
+
+class CandidateRowOut(CandidateBaseOut):
+    """A candidate as a row of the results table (and a curve of its charts): each
+    check's utilisation, not its message; the row's detail loads when opened."""
+
+    utilization: dict[str, float | None] = Field(
+        description="Check -> demand / capacity (null for a yes/no check)."
+    )
+    warned: list[str] = Field(description="The advice checks it fails: reported, not rejected.")
 
 
 class CountsOut(BaseModel):
@@ -361,17 +380,30 @@ class FormulaOut(BaseModel):
     source: str
 
 
-class SelectOut(BaseModel):
+class SelectionBaseOut(BaseModel):
+    """What every form of a selection gives besides its candidates."""
+
     inputs: ApplicationIn
-    candidates: list[CandidateOut]
-    rejected: list[CandidateOut]
     counts: CountsOut
     summary: SummaryOut
     catalog_version: str
     share_url: str
+
+
+class SelectOut(SelectionBaseOut):
+    candidates: list[CandidateOut]
+    rejected: list[CandidateOut]
     formulas: dict[str, FormulaOut] = Field(
         description="Quantity (dotted path in a candidate) -> formula, core function, source."
     )
+
+
+class PageSelectionOut(SelectionBaseOut):
+    """The results page's selection: the passing candidates as table rows; the rejected
+    in full only when nothing passes (the charts and the advice are then about them)."""
+
+    candidates: list[CandidateRowOut]
+    rejected: list[CandidateOut]
 
 
 class FormulasOut(BaseModel):

@@ -10,6 +10,8 @@ from app.core.selection import select, short_forms, with_robustness
 from app.formulas import FORMULAS
 from app.present import (
     candidate_out,
+    candidate_row,
+    counts_and_summary,
     custom_screw,
     rejected_out,
     selection_out,
@@ -21,6 +23,7 @@ from app.schemas import (
     CustomScrewIn,
     EvaluateOut,
     FormulaOut,
+    PageSelectionOut,
     RejectedSummaryOut,
     SelectOut,
 )
@@ -62,17 +65,26 @@ def construct_select_out(
 
 def run_page_selection(
     inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
-) -> tuple[SelectOut, list[RejectedSummaryOut]]:
-    """The results page's selection: the passing candidates in full (table, charts) and
-    the rejected ones in the compact form (the list; each one's detail loads when
-    opened), sentences in ``units``. The rejected are in full too only when nothing
-    passes: then the charts and the advice are about them."""
+) -> tuple[PageSelectionOut, list[RejectedSummaryOut]]:
+    """The results page's selection: the passing candidates as table rows (their checks'
+    sentences load with each row's detail) and the rejected ones in the compact form
+    (the list; each one's detail loads when opened), sentences in ``units``. The rejected
+    are in full too only when nothing passes: then the charts and the advice are about
+    them."""
     selection = select(inputs.to_core(), catalog.table)
-    out = construct_select_out(
-        inputs, catalog, selection_out(selection, units, full_rejected=not selection.passed)
+    app = selection.application
+    rejected = selection.rejected if not selection.passed else ()
+    out = construct(
+        PageSelectionOut,
+        inputs=inputs,
+        candidates=[candidate_row(e, app.brake_torque_nm) for e in selection.candidates],
+        rejected=[candidate_out(e, app.vacuum, units, app.brake_torque_nm) for e in rejected],
+        **counts_and_summary(selection, units),
+        catalog_version=catalog.version,
+        share_url="/?" + share_query(inputs),
     )
-    _, rejected = short_forms(selection)
-    return out, [rejected_out(b, units) for b in rejected]
+    _, compact = short_forms(selection)
+    return out, [rejected_out(b, units) for b in compact]
 
 
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:

@@ -13,7 +13,7 @@ from typing import Any
 
 from app.core.checks import BY_NAME
 from app.fields import BY_API
-from app.schemas import ApplicationIn, CandidateOut, SelectOut
+from app.schemas import ApplicationIn, CandidateOut, PageSelectionOut, SelectOut
 from app.units import sig, to_api
 from app.web.form import share_query
 
@@ -79,7 +79,7 @@ def _proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, s
     return to_api(rounded, field.quantity, units) if field.quantity else rounded
 
 
-def input_changes(result: SelectOut, units: dict[str, str]) -> list[Change]:
+def input_changes(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> list[Change]:
     """Each input change of the summary, with a link that makes that one change."""
     changes = []
     for api, target in result.summary.input_change.items():
@@ -101,7 +101,7 @@ def input_changes(result: SelectOut, units: dict[str, str]) -> list[Change]:
     return changes
 
 
-def all_changes_link(result: SelectOut, units: dict[str, str]) -> str | None:
+def all_changes_link(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> str | None:
     """One link making every proposed change at once; None unless there are several."""
     proposals = {
         api: _proposal(result.inputs, api, target, units)
@@ -122,7 +122,7 @@ def failed_checks(candidate: CandidateOut | None) -> list[FailedCheck]:
     ]
 
 
-def nearest(result: SelectOut) -> CandidateOut | None:
+def nearest(result: SelectOut | PageSelectionOut) -> CandidateOut | None:
     """The rejected screw closest to passing, the one the summary's changes are for."""
     best = result.summary.best_rejected_id
     return next((c for c in result.rejected if c.id == best), None) or (
@@ -130,7 +130,7 @@ def nearest(result: SelectOut) -> CandidateOut | None:
     )
 
 
-def no_pass_advice(result: SelectOut, units: dict[str, str]) -> dict[str, Any]:
+def no_pass_advice(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> dict[str, Any]:
     """Everything the 'nothing passes' notice shows."""
     best = nearest(result)
     most = result.summary.most_excluding_check

@@ -5,7 +5,7 @@ Each figure is ``{"data": [...], "layout": {...}}`` in the user's display units,
 the tests use to validate them.
 """
 
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -16,7 +16,7 @@ from app.core.formulas import critical_speed, pv
 from app.core.model import Application
 from app.core.screening import screen_table
 from app.core.table import CandidateTable, per_table
-from app.schemas import CandidateOut, SelectOut
+from app.schemas import CandidateBaseOut, PageSelectionOut, SelectOut
 from app.units import Display, api_value, sig
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
@@ -42,7 +42,9 @@ def _span(centre: float, factor: float) -> list[float]:
     return [centre * factor ** (2 * i / steps - 1) for i in range(CURVE_POINTS)]
 
 
-def chart_candidates(result: SelectOut) -> tuple[list[CandidateOut], bool]:
+def chart_candidates(
+    result: SelectOut | PageSelectionOut,
+) -> tuple[Sequence[CandidateBaseOut], bool]:
     """Candidates to chart: the passing ones, else the nearest rejected. (list, passing?)"""
     if result.candidates:
         return result.candidates, True
@@ -50,11 +52,11 @@ def chart_candidates(result: SelectOut) -> tuple[list[CandidateOut], bool]:
 
 
 def by_curve(
-    candidates: list[CandidateOut], key: Callable[[CandidateOut], float | None]
-) -> list[list[CandidateOut]]:
+    candidates: Sequence[CandidateBaseOut], key: Callable[[CandidateBaseOut], float | None]
+) -> list[list[CandidateBaseOut]]:
     """The first TOP distinct curves among ``candidates``, each with the screws it holds:
     screws of one size and nut share a curve, and draw it once under all their ids."""
-    groups: dict[float, list[CandidateOut]] = {}
+    groups: dict[float, list[CandidateBaseOut]] = {}
     for c in candidates:
         value = key(c)
         if value is None:
@@ -65,7 +67,7 @@ def by_curve(
     return list(groups.values())
 
 
-def curve_name(group: list[CandidateOut]) -> str:
+def curve_name(group: Sequence[CandidateBaseOut]) -> str:
     """Legend text of a shared curve: the series, then each screw's id after it.
 
     The ids are kept whole when they do not start with the series.
@@ -79,10 +81,10 @@ def curve_name(group: list[CandidateOut]) -> str:
     )
 
 
-def _operating_points(groups: list[list[CandidateOut]], x: float, d: Display) -> dict[str, Any]:
+def _operating_points(groups: list[list[CandidateBaseOut]], x: float, d: Display) -> dict[str, Any]:
     """One marker per distinct operating speed (screws of one lead share one), coloured as
     its curve, with each screw's margin in the hover text."""
-    points: dict[tuple[int, float], list[CandidateOut]] = {}
+    points: dict[tuple[int, float], list[CandidateBaseOut]] = {}
     for index, group in enumerate(groups):
         for c in group:
             points.setdefault((index, _round(c.rpm)), []).append(c)
@@ -104,7 +106,7 @@ def _operating_points(groups: list[list[CandidateOut]], x: float, d: Display) ->
 
 
 def critical_speed_figure(
-    candidates: list[CandidateOut], length_mm: float, d: Display
+    candidates: Sequence[CandidateBaseOut], length_mm: float, d: Display
 ) -> dict[str, Any]:
     """Allowed speed vs unsupported length (log-log), one line per distinct size, with the
     operating points and their margins.
@@ -157,7 +159,7 @@ def critical_speed_figure(
 
 
 def pv_figure(
-    candidates: list[CandidateOut], speed_mm_s: float, load_n: float, d: Display
+    candidates: Sequence[CandidateBaseOut], speed_mm_s: float, load_n: float, d: Display
 ) -> dict[str, Any]:
     """PV limit of each nut as the largest load vs linear speed (log-log), one line per
     distinct limit, and the operating point.
@@ -214,7 +216,7 @@ def pv_figure(
 
 
 def torque_figure(
-    candidates: list[CandidateOut], max_torque_nm: float | None, d: Display
+    candidates: Sequence[CandidateBaseOut], max_torque_nm: float | None, d: Display
 ) -> dict[str, Any]:
     """Stacked bars of the running torque per candidate: inertia + drag + load.
 
@@ -281,7 +283,7 @@ def _leads_of(
     return rows
 
 
-def lead_sweep(app: Application, top: CandidateOut, catalog: Catalog) -> list[LeadPoint]:
+def lead_sweep(app: Application, top: CandidateBaseOut, catalog: Catalog) -> list[LeadPoint]:
     """The top screw's size and nut with every lead the catalog offers, screened by the
     core for this application (any lead), shortest lead first. The rows of each size and
     nut are taken from the catalog's table once."""
@@ -410,7 +412,7 @@ def _sweep_annotations(leads: list[float], locking: float, chosen: float) -> lis
     return notes
 
 
-def lead_sweep_figure(sweep: list[LeadPoint], top: CandidateOut, d: Display) -> dict[str, Any]:
+def lead_sweep_figure(sweep: list[LeadPoint], top: CandidateBaseOut, d: Display) -> dict[str, Any]:
     """Torque, speed against the critical speed and PV use across the leads of one size:
     the trade-off that picks the lead. Torque on the left axis, the two shares of their
     limits (per cent) on the right; the self-locking band (with the friction margin)
@@ -461,7 +463,7 @@ def chart_order(keys: Iterable[str], first_check: str | None) -> list[str]:
 
 
 def result_figures(
-    result: SelectOut, units: dict[str, str], catalog: Catalog | None = None
+    result: SelectOut | PageSelectionOut, units: dict[str, str], catalog: Catalog | None = None
 ) -> dict[str, dict[str, Any]]:
     """The charts of a result, keyed 'critical_speed', 'pv', 'torque' and, given the
     catalog, 'lead_sweep'. When nothing passes, the chart of the check that excludes the
