@@ -132,8 +132,14 @@ THREAD_COLUMNS = (
 )
 
 
-def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> list[Evaluation]:
-    """The candidates at ``positions`` of a screening (in ``sc.table``) with every check.
+def evaluations(
+    app: Application,
+    sc: Screening,
+    positions: Sequence[int],
+    judged: Sequence[tuple[bool, tuple[str, ...]]] | None = None,
+) -> list[Evaluation]:
+    """The candidates at ``positions`` of a screening (in ``sc.table``) with every check;
+    ``judged`` gives each one's (robust, hinges_on) when their robustness is known.
 
     Reads the screening's arrays once for the whole batch; computes nothing again.
     """
@@ -164,6 +170,7 @@ def evaluations(app: Application, sc: Screening, positions: Sequence[int]) -> li
             results[k],
             (passed[k], worst[k]),
             moves[k],
+            None if judged is None else judged[k],
         )
         for k, i in enumerate(index)
     ]
@@ -202,8 +209,10 @@ def _evaluation(
     checks: tuple[CheckResult, ...],
     verdict: tuple[bool, float],
     move: Motion | None = None,
+    judged: tuple[bool, tuple[str, ...]] | None = None,
 ) -> Evaluation:
-    """One candidate's report; ``verdict`` is (passed, worst utilisation) from screening."""
+    """One candidate's report; ``verdict`` is (passed, worst utilisation) from screening,
+    ``judged`` (robust, hinges_on) when known."""
     traverse = number(thread["traverse_limit_m_s"])
     top = governing(app, checks)
     return Evaluation(
@@ -245,6 +254,8 @@ def _evaluation(
         governing_limit_provenance=limit_provenance(top, s),
         max_utilization=verdict[1],
         motion=move,
+        robust=None if judged is None else judged[0],
+        hinges_on=() if judged is None else judged[1],
     )
 
 

@@ -173,13 +173,14 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
     found = robust(ranked)
+    judged = [(r.robust, r.hinges_on) for r in found]
     rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
-        candidates=Built(len(ranked), lambda: _attach(evaluations(app, s, ranked), found)),
+        candidates=Built(len(ranked), partial(evaluations, app, s, ranked, judged)),
         rejected=rejected,
         evaluated=len(s.index),
         passed=n_passed,
