@@ -8,7 +8,10 @@ re-screened with those numbers through the same check registry, one value at a t
 a result can say which assumption it hinges on.
 
 The variants of a whole catalog are built into one table once (``variants_for``, at
-start-up); a selection then screens only the rows of the candidates it returns.
+start-up). When the eligible candidates' variants are few (a lead chosen), a selection
+screens them in the same pass as the candidates (``joint_for``: one screening costs about
+as much for a few rows as for a few hundred); otherwise it screens only the rows of the
+candidates it returns (``judge``).
 """
 
 from collections.abc import Mapping, Sequence
