@@ -4,6 +4,7 @@ partial responses, with and without a client that takes gzip."""
 import asyncio
 import gzip
 import zlib
+from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 import pytest
@@ -35,7 +36,10 @@ def _run(app: Any, accept: bytes | None) -> tuple[dict[bytes, bytes], bytes]:
 
     request = [] if accept is None else [(b"accept-encoding", accept)]
     scope = {"type": "http", "method": "GET", "path": "/", "headers": request}
-    asyncio.run(NegotiatedGZipMiddleware(app, minimum_size=500)(scope, receive, send))
+    # a thread of its own: the browser tests leave an event loop running on this one
+    with ThreadPoolExecutor(1) as pool:
+        call = NegotiatedGZipMiddleware(app, minimum_size=500)(scope, receive, send)
+        pool.submit(asyncio.run, call).result()  # type: ignore[arg-type]
     assert sent[0]["type"] == "http.response.start"
     headers = dict(sent[0]["headers"])
     return headers, b"".join(m.get("body", b"") for m in sent[1:])
