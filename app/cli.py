@@ -19,14 +19,14 @@ def event_loop(workers: int) -> str:
     """The event loop for ``workers`` processes.
 
     One process (a pod, the default): asyncio's own loop, which accepts every connection
-    waiting when the listening socket turns readable. uvloop's (libuv 1.45 and later,
-    libuv/libuv#3696) accepts one per loop iteration, so while the worker is busy a new
-    connection waits behind as many iterations as there are connections in use: with 32
-    connections opening at once on the results fragment, p99 1.2 s against 0.2 s on
-    asyncio's loop at the same throughput (``python3 bench/run.py``). Several processes
-    sharing one socket: uvloop, for the same reason the other way round: the first
-    process to wake would take every waiting connection on asyncio's loop (two workers
-    served 1.0 times one), one at a time they spread (2.1 times).
+    waiting when the listening socket turns readable. uvloop's (libuv since
+    libuv/libuv#3696; seen here with uvloop 0.23) accepts one per loop iteration, so while
+    the worker is busy a new connection waits behind as many iterations as there are
+    connections in use: with 32 connections opening at once on the results fragment, p99
+    1.2 s against 0.2 s on asyncio's loop at the same throughput (``python3 bench/run.py``).
+    Several processes sharing one socket: uvloop, for the same reason the other way round:
+    the first process to wake would take every waiting connection on asyncio's loop (two
+    workers served 1.0 times one), one at a time they spread (2.1 times).
     """
     return "asyncio" if workers == 1 else "uvloop"
 
