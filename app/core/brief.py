@@ -20,6 +20,7 @@ from app.core.checks.base import Check
 from app.core.formulas import critical_speed
 from app.core.model import Application, ProvenanceKind, ScrewSpec
 from app.core.phrase import Phrase
+from app.core.robustness import Robustness
 from app.core.screening import Screening
 from app.core.table import Array
 
@@ -177,10 +178,10 @@ def briefs(
     app: Application,
     sc: Screening,
     positions: Sequence[int],
-    robustness: Sequence[tuple[bool, tuple[str, ...]] | None] | None = None,
+    robustness: Sequence[Robustness | None] | None = None,
 ) -> list[Brief]:
-    """The candidates at ``positions`` of a screening in short; ``robustness`` gives
-    (robust, hinges_on) per position for passing candidates (None: not judged). A
+    """The candidates at ``positions`` of a screening in short; ``robustness`` gives the
+    robustness per position of passing candidates (None: not judged). A
     candidate's full numbers (for its fixes) are gathered only when one of its checks
     fails."""
     index = list(positions)
@@ -220,8 +221,8 @@ def briefs(
                 verdicts[k],
                 None if top is None else top.name,
                 limit_provenance(top, s),
-                None if judged is None else judged[0],
-                () if judged is None else judged[1],
+                None if judged is None else judged.robust,
+                () if judged is None else judged.hinges_on,
             )
         )
     return out

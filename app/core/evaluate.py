@@ -34,6 +34,7 @@ from app.core.model import (
     Torque,
 )
 from app.core.quantities import Quantities, axial_load
+from app.core.robustness import Robustness
 from app.core.screening import Screening, screen_table
 from app.core.table import table_of
 
@@ -136,10 +137,10 @@ def evaluations(
     app: Application,
     sc: Screening,
     positions: Sequence[int],
-    judged: Sequence[tuple[bool, tuple[str, ...]]] | None = None,
+    judged: Sequence[Robustness] | None = None,
 ) -> list[Evaluation]:
     """The candidates at ``positions`` of a screening (in ``sc.table``) with every check;
-    ``judged`` gives each one's (robust, hinges_on) when their robustness is known.
+    ``judged`` gives each one's robustness when it is known.
 
     Reads the screening's arrays once for the whole batch; computes nothing again.
     """
@@ -209,10 +210,10 @@ def _evaluation(
     checks: tuple[CheckResult, ...],
     verdict: tuple[bool, float],
     move: Motion | None = None,
-    judged: tuple[bool, tuple[str, ...]] | None = None,
+    judged: Robustness | None = None,
 ) -> Evaluation:
     """One candidate's report; ``verdict`` is (passed, worst utilisation) from screening,
-    ``judged`` (robust, hinges_on) when known."""
+    ``judged`` its robustness when known."""
     traverse = number(thread["traverse_limit_m_s"])
     top = governing(app, checks)
     return Evaluation(
@@ -254,8 +255,8 @@ def _evaluation(
         governing_limit_provenance=limit_provenance(top, s),
         max_utilization=verdict[1],
         motion=move,
-        robust=None if judged is None else judged[0],
-        hinges_on=() if judged is None else judged[1],
+        robust=None if judged is None else judged.robust,
+        hinges_on=() if judged is None else judged.hinges_on,
     )
 
 

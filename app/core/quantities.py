@@ -98,11 +98,14 @@ class Quantities(Generic[V]):
     #: magnitude and the RMS torque over the cycle (NaN without a stroke); the segment
     #: that uses the most of the motor curve (index in ``motion.segments``, -1 without a
     #: stroke), its torque magnitude and rpm, the curve's torque there (NaN: no curve).
+    #: The ``_needed`` torques are the motor's to give: times the torque safety factor.
     peak_rpm: V
     motor_peak_nm: V
     motor_rms_nm: V
+    motor_rms_needed_nm: V
     motor_worst_segment: V
     motor_worst_nm: V
+    motor_worst_needed_nm: V
     motor_worst_rpm: V
     motor_curve_nm: V
 
@@ -191,7 +194,7 @@ def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dic
         "contact_area_m2": area,
         "pv_max_load_n": pv.max_load_for_pv(limit, rpm, t.thread_depth_m),
         "pv_max_speed_m_s": _finite(
-            pv.max_rpm_for_pv(limit, force_n, t.thread_depth_m) * t.lead_m / 60.0
+            geometry.linear_speed(pv.max_rpm_for_pv(limit, force_n, t.thread_depth_m), t.lead_m)
         ),
     }
 
@@ -258,38 +261,40 @@ def _values(
         **_nut(app, t, force_n, rpm),
         **_duty(app, t),
         **(holding := _holding(app, t, force_n)),
-        **_motor(app, t, holding["brake_nm"], torques),
+        **_motor(app, t, rpm, holding["brake_nm"], torques),
     }
 
 
 def _motor(
-    app: Application, t: CandidateTable, hold_nm: Array, torques: dict[str, Any]
+    app: Application, t: CandidateTable, rpm: Array, hold_nm: Array, torques: dict[str, Any]
 ) -> dict[str, Any]:
     """The motor's view of the move: every segment's torque against the curve. Without a
-    stroke there is no profile: the one point is today's torque at the top speed."""
+    stroke there is no profile: the one point is today's torque at the top speed, ``rpm``."""
     p = motion.move_profile(app)
+    peak_rpm = worst_rpm = rpm
     if p is None:
         nan = np.full(len(t), np.nan)
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
-        rpm = geometry.screw_speed_rpm(app.speed_m_s, t.lead_m)
         index, peak, rms = np.full(len(t), -1.0), nan, nan
     else:
+        peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = motion.segments(app, p, t, hold_nm)
         magnitude = np.abs(np.stack([s.torque_nm for s in parts]))
         speeds = np.stack([s.rpm for s in parts])
         load = magnitude / motion.curve_torque(app, speeds) if app.motor_curve else magnitude
         index = np.argmax(load, axis=0)
         columns = np.arange(len(t))
-        worst_nm, rpm = magnitude[index, columns], speeds[index, columns]
+        worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
         peak, rms = magnitude.max(axis=0), motion.rms(parts)
-    curve = motion.curve_torque(app, rpm) if app.motor_curve else np.full(len(t), np.nan)
-    top = app.speed_m_s if p is None else p.peak_speed_m_s
+    curve = motion.curve_torque(app, worst_rpm) if app.motor_curve else np.full(len(t), np.nan)
     return {
-        "peak_rpm": geometry.screw_speed_rpm(top, t.lead_m),
+        "peak_rpm": peak_rpm,
         "motor_peak_nm": peak,
         "motor_rms_nm": rms,
+        "motor_rms_needed_nm": rms * app.torque_safety_factor,
         "motor_worst_segment": index,
         "motor_worst_nm": worst_nm,
-        "motor_worst_rpm": rpm,
+        "motor_worst_needed_nm": worst_nm * app.torque_safety_factor,
+        "motor_worst_rpm": worst_rpm,
         "motor_curve_nm": curve,
     }

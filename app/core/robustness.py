@@ -22,8 +22,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from app.core.model import Application, ScrewSpec
-from app.core.screening import eligible, filters, screen_table
-from app.core.table import CandidateTable, table_of
+from app.core.screening import eligible, per_filters, screen_table
+from app.core.table import CandidateTable, kept, per_table, table_of
+
+#: The name the catalog's variant rows are kept under, with its table.
+VARIANTS = "variants"
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,23 +76,10 @@ def build_variants(screws: Sequence[ScrewSpec]) -> Variants:
     return Variants(CandidateTable.build(rows), tuple(names), np.array(start, dtype=np.intp))
 
 
-#: The variants of the tables seen so far (the catalog's lives as long as the app), by
-#: ``id`` of the table, kept beside it so the id stays its own.
-_BY_TABLE: dict[int, tuple[CandidateTable, Variants]] = {}
-_BY_TABLE_MAX = 8
-
-
 def variants_for(table: CandidateTable) -> Variants:
-    """``build_variants`` of ``table``'s screws, built once per table and kept: for a
-    table that serves many queries (the catalog's, at start-up)."""
-    held = _BY_TABLE.get(id(table))
-    if held is not None and held[0] is table:
-        return held[1]
-    found = build_variants(table.screws)
-    if len(_BY_TABLE) >= _BY_TABLE_MAX:
-        _BY_TABLE.clear()
-    _BY_TABLE[id(table)] = (table, found)
-    return found
+    """``build_variants`` of ``table``'s screws, built once per table and kept with it:
+    for a table that serves many queries (the catalog's, at start-up)."""
+    return per_table(table, VARIANTS, lambda t: build_variants(t.screws))
 
 
 def robustness_in(
@@ -97,9 +87,9 @@ def robustness_in(
 ) -> list[Robustness]:
     """``Robustness`` of the screws at ``positions`` of ``table``: from its kept variants
     (``variants_for``) when it has them, else from variants of those screws alone."""
-    held = _BY_TABLE.get(id(table))
-    if held is not None and held[0] is table:
-        return judge(app, held[1], positions)
+    variants: Variants | None = kept(table, VARIANTS)
+    if variants is not None:
+        return judge(app, variants, positions)
     return robustness_of(app, [table.screws[p] for p in positions])
 
 
@@ -151,33 +141,26 @@ class Joint:
 #: A joint table stays worth screening in one pass up to about this many variant rows
 #: (a screening costs about as much for a few rows as for a few hundred).
 JOINT_MAX_VARIANTS = 600
-_JOINT: dict[tuple[object, ...], tuple[CandidateTable, Joint | None]] = {}
-_JOINT_MAX = 64
 
 
 def joint_for(app: Application, table: CandidateTable) -> Joint | None:
     """The ``Joint`` of the rows of ``table`` eligible for ``app``, kept per table and
     filters; None when the table has no kept variants (``variants_for``) or too many."""
-    held_variants = _BY_TABLE.get(id(table))
-    if held_variants is None or held_variants[0] is not table:
+    variants: Variants | None = kept(table, VARIANTS)
+    if variants is None:
         return None
-    key = (id(table), *filters(app))
-    held = _JOINT.get(key)
-    if held is not None and held[0] is table:
-        return held[1]
-    variants = held_variants[1]
+    return per_filters(app, table, "joint", lambda: _joint(app, table, variants))
+
+
+def _joint(app: Application, table: CandidateTable, variants: Variants) -> Joint | None:
     index, rows = eligible(app, table)
     spans = [np.arange(variants.start[p], variants.start[p + 1]) for p in index.tolist()]
     picked = np.concatenate(spans) if spans else np.zeros(0, dtype=np.intp)
-    joint = None
-    if len(picked) <= JOINT_MAX_VARIANTS:
-        start = np.cumsum([0, *map(len, spans)]).astype(np.intp)
-        names = tuple(variants.names[r] for r in picked.tolist())
-        joint = Joint(rows.join(variants.table.take(picked)), len(index), names, start)
-    if len(_JOINT) >= _JOINT_MAX:
-        _JOINT.clear()
-    _JOINT[key] = (table, joint)
-    return joint
+    if len(picked) > JOINT_MAX_VARIANTS:
+        return None
+    start = np.cumsum([0, *map(len, spans)]).astype(np.intp)
+    names = tuple(variants.names[r] for r in picked.tolist())
+    return Joint(rows.join(variants.table.take(picked)), len(index), names, start)
 
 
 def robustness_of(app: Application, screws: Sequence[ScrewSpec]) -> list[Robustness]:

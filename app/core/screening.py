@@ -5,7 +5,9 @@
 screw is screened as a table of one. So a check is computed by one piece of code.
 """
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -146,10 +148,11 @@ def screen_table(
     )
 
 
-#: The eligible rows of the tables seen, by the filters that pick them: (table, index,
-#: the table of those rows); most queries repeat a lead and a family, not a load.
-_ELIGIBLE: dict[tuple[object, ...], tuple[CandidateTable, NDArray[np.intp], CandidateTable]] = {}
-_ELIGIBLE_MAX = 64
+#: Work kept per table, filters (``filters``) and name: (table, the work); most queries
+#: repeat a lead and a family, not a load. Bounded, since the filters are the user's.
+_BY_FILTERS: dict[tuple[object, ...], tuple[CandidateTable, Any]] = {}
+_BY_FILTERS_MAX = 128
+T = TypeVar("T")
 
 
 def filters(app: Application) -> tuple[object, ...]:
@@ -157,20 +160,33 @@ def filters(app: Application) -> tuple[object, ...]:
     return (app.lead_m, app.coating, app.families, app.nut_material)
 
 
+def per_filters(app: Application, table: CandidateTable, name: str, work: Callable[[], T]) -> T:
+    """``work()``, kept per table, ``filters(app)`` and ``name`` (keyed by the table's
+    ``id``, held beside it so the id stays its own)."""
+    key = (id(table), name, *filters(app))
+    held = _BY_FILTERS.get(key)
+    if held is not None and held[0] is table:
+        found: T = held[1]
+        return found
+    found = work()
+    if len(_BY_FILTERS) >= _BY_FILTERS_MAX:
+        _BY_FILTERS.clear()
+    _BY_FILTERS[key] = (table, found)
+    return found
+
+
 def eligible(app: Application, table: CandidateTable) -> tuple[NDArray[np.intp], CandidateTable]:
     """The positions (in ``table``) of the candidates eligible for ``app``, and their
     table; kept per table and filters."""
-    key = (id(table), *filters(app))
-    held = _ELIGIBLE.get(key)
-    if held is not None and held[0] is table:
-        return held[1], held[2]
+    return per_filters(app, table, "eligible", lambda: _eligible_rows(app, table))
+
+
+def _eligible_rows(
+    app: Application, table: CandidateTable
+) -> tuple[NDArray[np.intp], CandidateTable]:
     index = np.flatnonzero(eligible_mask(app, table))
     index.setflags(write=False)  # shared by every query with these filters
-    found = (table, index, table.take(index))
-    if len(_ELIGIBLE) >= _ELIGIBLE_MAX:
-        _ELIGIBLE.clear()
-    _ELIGIBLE[key] = found
-    return index, found[2]
+    return index, table.take(index)
 
 
 def screen(app: Application, table: CandidateTable) -> Screening:

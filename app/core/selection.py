@@ -127,10 +127,7 @@ class Selection:
 def short_forms(sel: Selection) -> tuple[list[Brief], list[Brief]]:
     """The returned passing and rejected candidates in short (``brief.briefs``, in one
     pass), read from the selection's screening without building the full evaluations."""
-    found: list[tuple[bool, tuple[str, ...]] | None] = [
-        (r.robust, r.hinges_on) for r in sel.robustness
-    ]
-    found += [None] * len(sel.nearest)
+    found = [*sel.robustness, *[None] * len(sel.nearest)]
     both = briefs(sel.application, sel.screening, sel.ranked + sel.nearest, found)
     return both[: len(sel.ranked)], both[len(sel.ranked) :]
 
@@ -173,14 +170,13 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
     found = robust(ranked)
-    judged = [(r.robust, r.hinges_on) for r in found]
     rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
-        candidates=Built(len(ranked), partial(evaluations, app, s, ranked, judged)),
+        candidates=Built(len(ranked), partial(evaluations, app, s, ranked, found)),
         rejected=rejected,
         evaluated=len(s.index),
         passed=n_passed,

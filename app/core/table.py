@@ -263,3 +263,8 @@ def per_table(table: CandidateTable, name: str, work: Callable[[CandidateTable],
         table.memo[name] = work(table)
     found: T = table.memo[name]
     return found
+
+
+def kept(table: CandidateTable, name: str) -> Any:
+    """What ``per_table`` keeps under ``name`` for ``table``, or None when nothing did."""
+    return table.memo.get(name)

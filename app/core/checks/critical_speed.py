@@ -16,7 +16,7 @@ from app.core.checks.base import (
     sentence,
     stiffer_support,
 )
-from app.core.formulas import critical_speed
+from app.core.formulas import critical_speed, geometry
 from app.core.phrase import Amount, Phrase
 
 
@@ -95,7 +95,7 @@ class CriticalSpeed(Check):
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
         return {
-            "speed_m_s": r.allowed_rpm * s.lead_m / 60.0,
+            "speed_m_s": geometry.linear_speed(r.allowed_rpm, s.lead_m),
             "length_m": _max_length(app, r),
         }
 

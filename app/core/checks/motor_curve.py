@@ -64,7 +64,7 @@ class MotorCurve(Check):
         return bool(app.motor_curve)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), app.torque_safety_factor * q.motor_worst_nm, q.motor_curve_nm)
+        return Measure(everywhere(t), q.motor_worst_needed_nm, q.motor_curve_nm)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -82,17 +82,16 @@ class MotorCurve(Check):
             "{curve} there.",
             {
                 "segment": worst_segment(app, r),
-                "need": Amount(app.torque_safety_factor * r.motor_worst_nm, "torque"),
+                "need": Amount(r.motor_worst_needed_nm, "torque"),
                 "rpm": Amount(r.motor_worst_rpm, "rpm"),
                 "curve": Amount(r.motor_curve_nm, "torque"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        need = app.torque_safety_factor * r.motor_worst_nm
         values: dict[str, Amount | str] = {
-            "short": Amount(need - r.motor_curve_nm, "torque"),
-            "need": Amount(need, "torque"),
+            "short": Amount(r.motor_worst_needed_nm - r.motor_curve_nm, "torque"),
+            "need": Amount(r.motor_worst_needed_nm, "torque"),
             "rpm": Amount(r.motor_worst_rpm, "rpm"),
             "segment": worst_segment(app, r),
         }

@@ -35,8 +35,7 @@ class MotorRms(Check):
         return app.motor_rms_torque_nm is not None and app.stroke_m is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        need = app.torque_safety_factor * q.motor_rms_nm
-        return Measure(everywhere(t), need, same(t, app.motor_rms_torque_nm))
+        return Measure(everywhere(t), q.motor_rms_needed_nm, same(t, app.motor_rms_torque_nm))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -52,7 +51,7 @@ class MotorRms(Check):
         return Phrase(
             "The cycle's RMS torque {need} " + verb + " the motor's continuous {rating}.",
             {
-                "need": Amount(app.torque_safety_factor * r.motor_rms_nm, "torque"),
+                "need": Amount(r.motor_rms_needed_nm, "torque"),
                 "rating": Amount(app.motor_rms_torque_nm or 0.0, "torque"),
             },
         )
@@ -61,5 +60,5 @@ class MotorRms(Check):
         return Phrase(
             "A motor rated for at least {need} continuous, or a longer dwell, lower "
             "acceleration or load.",
-            {"need": Amount(app.torque_safety_factor * r.motor_rms_nm, "torque")},
+            {"need": Amount(r.motor_rms_needed_nm, "torque")},
         )

@@ -14,6 +14,7 @@ from app.core.checks.base import (
     everywhere,
     same,
 )
+from app.core.formulas import geometry
 from app.core.phrase import Amount, Phrase
 
 
@@ -46,7 +47,7 @@ class MotorSpeed(Check):
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "v_peak": q.peak_rpm * t.lead_m / 60.0,
+            "v_peak": geometry.linear_speed(q.peak_rpm, t.lead_m),
             "lead": t.lead_m,
             "n_curve_max": top_curve_rpm(app),
         }
@@ -62,7 +63,7 @@ class MotorSpeed(Check):
         return Phrase(
             "A speed of at most {speed}, a lead of at least {lead}, or a faster motor.",
             {
-                "speed": Amount(top_curve_rpm(app) * s.lead_m / 60.0, "speed"),
+                "speed": Amount(geometry.linear_speed(top_curve_rpm(app), s.lead_m), "speed"),
                 "lead": Amount(r.peak_rpm * s.lead_m / top_curve_rpm(app), "length"),
             },
         )
@@ -70,4 +71,4 @@ class MotorSpeed(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float] | None:
-        return {"speed_m_s": top_curve_rpm(app) * s.lead_m / 60.0}
+        return {"speed_m_s": geometry.linear_speed(top_curve_rpm(app), s.lead_m)}

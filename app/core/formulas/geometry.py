@@ -72,6 +72,16 @@ def screw_speed_rpm(linear_speed_m_s: float, lead_m: float) -> float:
     return 60.0 * linear_speed_m_s / lead_m
 
 
+def linear_speed(screw_speed_rpm: float, lead_m: float) -> float:
+    """Linear speed v [m/s] = n lead / 60 at a screw speed n [rpm]: ``screw_speed_rpm``
+    turned round, for the speed a speed limit allows.
+
+    >>> linear_speed(1500.0, 0.002)
+    0.05
+    """
+    return screw_speed_rpm * lead_m / 60.0
+
+
 def helix_travel(lead_m: float, pitch_diameter_m: float) -> float:
     """Thread surface travel per revolution H.T. = sqrt(lead^2 + (pi d_p)^2) [m].
 
