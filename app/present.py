@@ -11,7 +11,7 @@ from app.catalog import Material, Series
 from app.construct import construct
 from app.core.brief import Brief
 from app.core.formulas import torque
-from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec
+from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, failed_advice
 from app.core.selection import Selection, short_forms
 from app.fields import BY_API, FIELDS
 from app.schemas import (
@@ -284,7 +284,7 @@ def candidate_out(
         accuracy=_accuracy(ev),
         outgassing=outgassing if vacuum else None,
         checks=checks,
-        warnings=[c for c in checks if c.kind == "advice" and not c.passed],
+        warnings=failed_advice(checks),
         fix=" ".join(fixes) if fixes else None,
         provenance={k: provenance_out(p) for k, p in s.provenance.items() if k in used},
     )
@@ -297,7 +297,7 @@ def candidate_row(ev: Evaluation, brake_nm: float | None = None) -> CandidateRow
         CandidateRowOut,
         **_shown(ev, brake_nm),
         utilization={c.name: c.utilization for c in ev.checks},
-        warned=[c.name for c in ev.checks if c.kind == "advice" and not c.passed],
+        warned=[c.name for c in ev.warnings],
     )
 
 
@@ -324,7 +324,7 @@ def candidate_summary(b: Brief) -> dict[str, Any]:
         "passed": b.passed,
         "robust": b.robust,
         "hinges_on": list(b.hinges_on),
-        "warnings": [c.name for c in b.checks if c.kind == "advice" and not c.passed],
+        "warnings": [c.name for c in failed_advice(b.checks)],
     }
 
 

@@ -10,7 +10,7 @@ the full form from the same arrays and picks the governing check with the same r
 import math
 from collections.abc import Callable, Sequence
 from functools import partial
-from typing import Any, Literal, NamedTuple, Protocol, TypeVar
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -18,7 +18,7 @@ from numpy.typing import NDArray
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
 from app.core.formulas import critical_speed
-from app.core.model import Application, ProvenanceKind, ScrewSpec
+from app.core.model import Application, J, Judged, ProvenanceKind, ScrewSpec
 from app.core.phrase import Phrase
 from app.core.robustness import Robustness
 from app.core.screening import Screening
@@ -34,22 +34,6 @@ CERTAINTY: tuple[ProvenanceKind, ...] = (
     "seed",
     "standard",
 )
-
-
-class Judged(Protocol):
-    """What picking the governing check reads of a check's result (full or brief)."""
-
-    @property
-    def name(self) -> str: ...
-    @property
-    def kind(self) -> Literal["limit", "advice"]: ...
-    @property
-    def passed(self) -> bool: ...
-    @property
-    def utilization(self) -> float | None: ...
-
-
-J = TypeVar("J", bound=Judged)
 
 
 def number(x: float | None) -> float | None:

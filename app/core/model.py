@@ -1,8 +1,8 @@
 """Plain data types of the core: the application, one screw, checks and results (SI)."""
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Generic, Literal, TypeVar
+from typing import Generic, Literal, Protocol, TypeVar
 
 from app.core.phrase import Phrase, Quantity
 
@@ -139,6 +139,27 @@ class ScrewSpec:
     assumption_ends: Mapping[str, tuple[Mapping[str, float], Mapping[str, float]]] = field(
         default_factory=dict
     )
+
+
+class Judged(Protocol):
+    """What reading a check's verdict needs of its result (full or brief)."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def kind(self) -> Literal["limit", "advice"]: ...
+    @property
+    def passed(self) -> bool: ...
+    @property
+    def utilization(self) -> float | None: ...
+
+
+J = TypeVar("J", bound=Judged)
+
+
+def failed_advice(checks: Iterable[J]) -> list[J]:
+    """The advice checks that fail: reported beside the result, not rejecting it."""
+    return [c for c in checks if c.kind == "advice" and not c.passed]
 
 
 @dataclass(frozen=True, slots=True)
@@ -348,7 +369,7 @@ class Evaluation:
     @property
     def warnings(self) -> tuple[CheckResult, ...]:
         """Failed advice: reported beside the candidate, not a rejection."""
-        return tuple(c for c in self.checks if not c.passed and c.kind == "advice")
+        return tuple(failed_advice(self.checks))
 
 
 @dataclass(frozen=True, slots=True)
