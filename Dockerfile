@@ -1,11 +1,11 @@
 FROM python:3.11-slim
 WORKDIR /srv/leadscrew-selector
-COPY pyproject.toml README.md ./
+COPY pyproject.toml README.md constraints.txt ./
 COPY app ./app
 COPY templates ./templates
 COPY static ./static
 COPY catalog ./catalog
-RUN python3 -m pip install --no-cache-dir . \
+RUN python3 -m pip install --no-cache-dir -c constraints.txt . \
     && useradd --create-home --uid 10001 selector
 USER selector
 EXPOSE 8000

@@ -82,7 +82,11 @@ WHOLE_NUMBER_TEXT = _number_text("int")
 
 
 def bounded_number(ge: float, le: float, description: str) -> Any:
-    """Finite number in [ge, le]; the bounds keep every result finite."""
+    """Finite number in [ge, le]; the bounds keep every result finite.
+
+    Put it first in ``Annotated``, before any validator: pydantic writes the bounds as JSON
+    Schema's ``minimum`` and ``maximum`` only on the inner type.
+    """
     return Field(ge=ge, le=le, allow_inf_nan=False, description=description)
 
 
@@ -226,12 +230,14 @@ def api_type(field: InputField) -> Any:
     the core's Literal; optional (``| None``) when it has no default and is not required."""
     low, high = field.bounds or (0.0, 0.0)
     if field.kind == "number":
+        # the bounds before the validators: pydantic publishes them as minimum and maximum
+        # only on the inner type (after a validator they would be ge/le, not JSON Schema)
         kind: Any = Annotated[
-            float, NotBool, NUMBER_TEXT, bounded_number(low, high, describe(field))
+            float, bounded_number(low, high, describe(field)), NotBool, NUMBER_TEXT
         ]
     elif field.kind == "whole number":
         bounded = Field(ge=int(low), le=int(high), description=describe(field))
-        kind = Annotated[int, NotBool, WHOLE_NUMBER_TEXT, bounded]
+        kind = Annotated[int, bounded, NotBool, WHOLE_NUMBER_TEXT]
     elif field.kind == "yes-no":
         kind = Annotated[bool, Field(description=describe(field))]
     elif field.kind in ("text", "list"):

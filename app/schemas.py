@@ -26,13 +26,13 @@ from app.inputs import NotBool, bounded_number
 class MaterialIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
-    youngs_modulus_pa: Annotated[float, NotBool, bounded_number(1e6, 1e13, "Young's modulus [Pa].")]
-    density_kg_m3: Annotated[float, NotBool, bounded_number(1.0, 1e5, "Density [kg/m^3].")]
+    youngs_modulus_pa: Annotated[float, bounded_number(1e6, 1e13, "Young's modulus [Pa]."), NotBool]
+    density_kg_m3: Annotated[float, bounded_number(1.0, 1e5, "Density [kg/m^3]."), NotBool]
     yield_strength_pa: (
         Annotated[
             float,
-            NotBool,
             bounded_number(1e6, 1e10, "Yield strength [Pa]; without it, Euler buckling only."),
+            NotBool,
         ]
         | None
     ) = None
@@ -50,39 +50,39 @@ class CustomScrewIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     outer_diameter_mm: Annotated[
-        float, NotBool, bounded_number(0.1, 1000.0, "Outer diameter [mm].")
+        float, bounded_number(0.1, 1000.0, "Outer diameter [mm]."), NotBool
     ]
     root_diameter_mm: Annotated[
-        float, NotBool, bounded_number(0.05, 1000.0, "Root (minor) diameter [mm], below the outer.")
+        float, bounded_number(0.05, 1000.0, "Root (minor) diameter [mm], below the outer."), NotBool
     ]
-    lead_mm: Annotated[float, NotBool, bounded_number(0.01, 1000.0, "Lead [mm].")]
+    lead_mm: Annotated[float, bounded_number(0.01, 1000.0, "Lead [mm]."), NotBool]
     thread_half_angle_deg: Annotated[
         float,
-        NotBool,
         bounded_number(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal."),
+        NotBool,
     ] = 14.5
     friction_dynamic: Annotated[
-        float, NotBool, bounded_number(1e-3, 1.0, "Running friction coefficient.")
+        float, bounded_number(1e-3, 1.0, "Running friction coefficient."), NotBool
     ]
     friction_static: Annotated[
-        float, NotBool, bounded_number(1e-3, 1.0, "Static friction coefficient.")
+        float, bounded_number(1e-3, 1.0, "Static friction coefficient."), NotBool
     ]
     material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
     drag_torque_nm: Annotated[
-        float, NotBool, bounded_number(0.0, 1e4, "Nut drag torque [N m].")
+        float, bounded_number(0.0, 1e4, "Nut drag torque [N m]."), NotBool
     ] = 0.0
     inertia_kg_m2_per_m: (
         Annotated[
             float,
-            NotBool,
             bounded_number(
                 1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."
             ),
+            NotBool,
         ]
         | None
     ) = None
     pv_limit_mpa_m_s: (
-        Annotated[float, NotBool, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s].")] | None
+        Annotated[float, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s]."), NotBool] | None
     ) = None
 
     @field_validator("root_diameter_mm")

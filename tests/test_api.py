@@ -18,6 +18,7 @@ from fastapi.testclient import TestClient
 from pydantic import BaseModel
 
 from app.catalog import Catalog, load_catalog
+from app.fields import FIELDS
 from app.schemas import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 
 API = "/api/v1"
@@ -306,6 +307,32 @@ def test_openapi_custom_screw_fields_and_defaults(api: Api) -> None:
         assert field in properties, field
         if default is not ...:
             assert properties[field].get("default") == default, field
+
+
+def _number_schemas(node: object) -> list[dict[str, object]]:
+    """Every schema of type number or integer anywhere under ``node``."""
+    if isinstance(node, list):
+        return [found for item in node for found in _number_schemas(item)]
+    if not isinstance(node, dict):
+        return []
+    own = [node] if node.get("type") in ("number", "integer") else []
+    return own + [found for value in node.values() for found in _number_schemas(value)]
+
+
+def test_openapi_bounds_are_json_schema_minimum_and_maximum(api: Api) -> None:
+    """JSON Schema names bounds minimum/maximum; pydantic's ge/le would be unknown keywords
+    that clients and schemathesis ignore."""
+    schema = ok(api.get("/openapi.json"))
+    numbers = _number_schemas(schema)
+    assert not [n for n in numbers if {"ge", "le", "gt", "lt"} & set(n)]
+    properties = schema["components"]["schemas"]["ApplicationIn"]["properties"]
+    for field in FIELDS:
+        if field.kind in ("number", "whole number"):
+            bounded = _number_schemas(properties[field.api])
+            assert bounded, field.api
+            low, high = field.bounds or (None, None)
+            assert bounded[0].get("minimum") == low, field.api
+            assert bounded[0].get("maximum") == high, field.api
 
 
 def test_get_select_query_parameters_are_the_application_fields(api: Api) -> None:

@@ -90,7 +90,8 @@ def test_dockerfile_copies_existing_paths() -> None:
 
 def test_ci_runs_the_readme_test_command() -> None:
     readme = (ROOT / "README.md").read_text()
-    assert "python3 -m pip install -e '.[test]' && python3 -m pytest" in readme
+    command = "python3 -m pip install -c constraints.txt -e '.[test]' && python3 -m pytest"
+    assert command in readme
     assert "README.md" in (ROOT / ".ci" / "run").read_text()
 
 

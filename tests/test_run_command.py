@@ -12,6 +12,7 @@ import signal
 import subprocess
 import sys
 import time
+import tomllib
 from pathlib import Path
 
 import httpx
@@ -35,8 +36,23 @@ def readme_run_command() -> tuple[list[str], list[str]]:
 
 def test_the_readme_run_command_is_install_then_serve() -> None:
     install, serve = readme_run_command()
-    assert install[-3:] == ["pip", "install", "."]
+    assert install == ["python3", "-m", "pip", "install", "-c", "constraints.txt", "."]
+    assert (ROOT / "constraints.txt").is_file()
     assert serve == ["leadscrew-selector"]
+
+
+def test_the_constraints_pin_every_dependency_exactly() -> None:
+    """Every line of constraints.txt is name==version, and every dependency the project
+    names (app and tests) is among them, so a fresh install gets what was tested."""
+    lines = (ROOT / "constraints.txt").read_text().splitlines()
+    pins = [line for line in lines if line and not line.startswith("#")]
+    assert all(re.fullmatch(r"[A-Za-z0-9_.\-]+==[0-9][A-Za-z0-9_.+]*", pin) for pin in pins), pins
+    pinned = {re.sub(r"[-_.]+", "-", pin.split("==")[0]).lower() for pin in pins}
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    named = project["dependencies"] + project["optional-dependencies"]["test"]
+    for requirement in named:
+        name = re.split(r"[\[<>=!~ ]", requirement, maxsplit=1)[0]
+        assert re.sub(r"[-_.]+", "-", name).lower() in pinned, requirement
 
 
 @pytest.fixture(scope="module")
@@ -44,6 +60,7 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The README's install step, into a temporary target, run from outside the checkout."""
     install, _ = readme_run_command()
     target = tmp_path_factory.mktemp("site")
+    install = [str(ROOT / arg) if arg.endswith(".txt") else arg for arg in install]
     args = [sys.executable, *install[1:-1], "--no-deps", "--target", str(target), str(ROOT)]
     done = subprocess.run(
         args, cwd=target, capture_output=True, text=True, timeout=600, check=False
