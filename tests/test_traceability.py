@@ -11,6 +11,7 @@ from fastapi.testclient import TestClient
 
 from app.catalog import load_catalog
 from app.core.checks import BY_NAME
+from app.core.formulas.declare import formula_of
 from app.formulas import FORMULAS
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -30,6 +31,31 @@ def test_formula_names_an_existing_core_function(key: str) -> None:
         assert callable(target)
         return
     pytest.fail(f"no module in {FORMULAS[key]['function']}")
+
+
+FORMULA_MODULES = sorted(
+    path.stem
+    for path in (ROOT / "app" / "core" / "formulas").glob("*.py")
+    if path.stem not in ("__init__", "declare")
+)
+
+
+@pytest.mark.parametrize("module", FORMULA_MODULES)
+def test_every_reported_formula_function_declares_its_formula(module: str) -> None:
+    """A function of a formula module that the formulas table names carries its formula
+    and source (``@formula``), and an entry that gives no text of its own shows them."""
+    named = {
+        f["function"]: f
+        for f in FORMULAS.values()
+        if f["function"].startswith(f"app.core.formulas.{module}.")
+    }
+    imported = importlib.import_module(f"app.core.formulas.{module}")
+    for path in named:
+        declared = formula_of(getattr(imported, path.rsplit(".", 1)[1]))
+        assert declared.text and declared.source, path
+    for entry in FORMULAS.values():
+        if entry["function"] in named:
+            assert entry["source"], entry
 
 
 def _lookup(candidate: dict[str, Any], dotted: str) -> Any:

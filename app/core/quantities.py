@@ -24,6 +24,7 @@ from app.core.formulas import (
     pv,
     torque,
 )
+from app.core.formulas.declare import formula
 from app.core.model import STANDARD_GRAVITY_M_S2, Application
 from app.core.table import Array, CandidateTable
 
@@ -32,6 +33,7 @@ V = TypeVar("V")
 REFERENCE_TEMPERATURE_C = 20.0
 
 
+@formula("F = load (+ m g when vertical), the running thrust", "statics")
 def axial_load(app: Application) -> float:
     """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical."""
     if app.orientation == "vertical":
@@ -39,6 +41,7 @@ def axial_load(app: Application) -> float:
     return app.load_n
 
 
+@formula("F_peak = F + m a", "Newton's second law")
 def peak_axial_load(app: Application) -> float:
     """Peak thrust on the nut [N]: the running thrust plus the force m a that accelerates
     (or decelerates) the moving mass, F_peak = F + m a (Newton's second law).

@@ -1,6 +1,9 @@
 """Positioning accuracy terms: lead error, thermal growth [1]."""
 
+from app.core.formulas.declare import SEED, formula
 
+
+@formula("e = lead accuracy x stroke", SEED + " (Screw Accuracy)")
 def cumulative_lead_error(lead_accuracy_m_per_m: float, stroke_m: float) -> float:
     """Cumulative lead error over a stroke = lead accuracy x stroke [m].
 
@@ -12,6 +15,7 @@ def cumulative_lead_error(lead_accuracy_m_per_m: float, stroke_m: float) -> floa
     return lead_accuracy_m_per_m * stroke_m
 
 
+@formula("dL = alpha stroke (T - 20 C)", "303 stainless 17.3e-6 /K (ASM Handbook)")
 def thermal_growth(expansion_per_k: float, length_m: float, delta_t_k: float) -> float:
     """Free thermal growth dL = alpha L dT [m].
 

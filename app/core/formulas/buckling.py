@@ -6,6 +6,8 @@ from typing import cast
 
 import numpy as np
 
+from app.core.formulas.declare import formula
+
 #: Effective-length factor k in F_cr = k pi^2 E I / L^2 for each end fixity [4].
 END_FIXITY_K: dict[str, float] = {
     "fixed-free": 0.25,
@@ -42,6 +44,7 @@ def euler_critical_load(
     )
 
 
+@formula("F = SF x F_cr", "lead-screw practice (0.5)")
 def allowed_buckling_load(critical_load_n: float, safety_factor: float) -> float:
     """Allowed compressive load = safety factor x F_cr [N] (default factor 0.5).
 
@@ -84,6 +87,7 @@ def root_area(root_diameter_m: float) -> float:
     return math.pi * root_diameter_m**2 / 4.0
 
 
+@formula("s = (L / sqrt(k)) / (d_r / 4)", "Shigley sec. 4-11")
 def slenderness(root_diameter_m: float, length_m: float, end_fixity: str) -> float:
     """Slenderness ratio of the screw as a column, s = (L / sqrt(k)) / (d_r / 4) [-].
 
@@ -98,6 +102,7 @@ def slenderness(root_diameter_m: float, length_m: float, end_fixity: str) -> flo
     return effective_length / (root_diameter_m / 4.0)
 
 
+@formula("s_1 = sqrt(2 pi^2 E / S_y)", "Shigley sec. 4-12")
 def transition_slenderness(youngs_modulus_pa: float, yield_strength_pa: float) -> float:
     """Slenderness below which Euler over-predicts, s_1 = sqrt(2 pi^2 E / S_y) [-].
 
@@ -125,6 +130,10 @@ def johnson_critical_load(
     return area_m2 * (yield_strength_pa - parabola / youngs_modulus_pa)
 
 
+@formula(
+    "F_cr = pi^2 E A / s^2 (Euler) for s >= s_1, else A (S_y - (S_y s / 2 pi)^2 / E)",
+    "Euler (Timoshenko & Gere); Johnson, Shigley sec. 4-13",
+)
 def column_critical_load(
     youngs_modulus_pa: float,
     root_diameter_m: float,
@@ -154,6 +163,7 @@ def column_critical_load(
     return cast(float, np.where(short, johnson, euler)[()])
 
 
+@formula("sigma = F_peak / (pi d_r^2 / 4)", "axial stress")
 def root_stress(load_n: float, root_diameter_m: float) -> float:
     """Axial stress at the root section, sigma = F / (pi d_r^2 / 4) [Pa].
 

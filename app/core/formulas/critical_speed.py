@@ -8,6 +8,8 @@ formula accepts floats or NumPy arrays.
 
 import math
 
+from app.core.formulas.declare import formula
+
 #: First bending eigenvalue beta = lambda_1 for each end fixity [5].
 END_FIXITY_BETA: dict[str, float] = {
     "fixed-free": 1.87510,
@@ -17,6 +19,10 @@ END_FIXITY_BETA: dict[str, float] = {
 }
 
 
+@formula(
+    "n_c = 60 / (2 pi) (beta / L)^2 sqrt(E / rho) d_r / 4",
+    "Blevins, Formulas for Natural Frequency, table 8-1; Thomson n_c = 4.76e6 d_r / L^2",
+)
 def critical_speed_rpm(
     root_diameter_m: float,
     length_m: float,
@@ -45,6 +51,7 @@ def critical_speed_rpm(
     return omega * 60.0 / (2.0 * math.pi)
 
 
+@formula("n = SF x n_c", "Thomson (80 % of critical)")
 def allowed_speed_rpm(critical_rpm: float, safety_factor: float) -> float:
     """Allowed screw speed n_allowed = safety factor x n_c [rpm] (default factor 0.8).
 
@@ -69,6 +76,7 @@ def speed_at_length(rpm_at_length: float, length_m: float, new_length_m: float) 
     return rpm_at_length * (length_m / new_length_m) ** 2
 
 
+@formula("margin = n_allowed / n", "inverse of the critical-speed utilisation")
 def speed_margin(allowed_rpm: float, operating_rpm: float) -> float:
     """How many times the operating speed fits under the allowed speed [-].
 

@@ -8,12 +8,17 @@ The manufacturer's square-thread form is ``square_thread_efficiency`` for compar
 
 import math
 
+from app.core.formulas.declare import SEED, SHIGLEY, formula
+
 
 def _positive_part(x: float) -> float:
     """max(x, 0) by arithmetic, valid for floats and arrays."""
     return (x + abs(x)) * 0.5
 
 
+@formula(
+    "eta = (cos a_n - mu tan l) / (cos a_n + mu / tan l), mu dynamic", SHIGLEY + " (Acme form)"
+)
 def forward_efficiency(tan_lead: float, friction: float, cos_half_angle: float) -> float:
     """Efficiency of driving the load by turning the screw [-].
 
@@ -34,6 +39,7 @@ def forward_efficiency(tan_lead: float, friction: float, cos_half_angle: float) 
     return _positive_part(eta)
 
 
+@formula("eta_b = (cos a_n tan l - mu_s) / (tan l (cos a_n + mu_s tan l)), 0 if negative", SHIGLEY)
 def backdrive_efficiency(tan_lead: float, friction: float, cos_half_angle: float) -> float:
     """Efficiency of the load turning the screw (back-driving) [-].
 
@@ -50,6 +56,7 @@ def backdrive_efficiency(tan_lead: float, friction: float, cos_half_angle: float
     return numerator / (tan_lead * (cos_half_angle + friction * tan_lead))
 
 
+@formula("eta = tan l / tan(l + atan mu)", SHIGLEY + " (square thread, manufacturer's form)")
 def square_thread_efficiency(tan_lead: float, friction: float) -> float:
     """Manufacturer-style square-thread efficiency tan(l) / tan(l + atan(mu)) [-].
 
@@ -62,6 +69,10 @@ def square_thread_efficiency(tan_lead: float, friction: float) -> float:
     return tan_lead * (1.0 - friction * tan_lead) / (tan_lead + friction)
 
 
+@formula(
+    "f mu_s >= cos a_n tan l (f: the self-locking friction factor)",
+    SHIGLEY + "; margin as the seed's d/8 rule",
+)
 def self_locking_limit_friction(tan_lead: float, cos_half_angle: float) -> float:
     """Static friction at and above which the screw cannot be back-driven [-].
 
@@ -74,6 +85,7 @@ def self_locking_limit_friction(tan_lead: float, cos_half_angle: float) -> float
     return cos_half_angle * tan_lead
 
 
+@formula("mu_s >= cos a_n tan l", SHIGLEY)
 def is_self_locking(tan_lead: float, friction_static: float, cos_half_angle: float) -> bool:
     """True when mu_static >= cos(a_n) tan(lambda): the load cannot turn the screw.
 
@@ -85,6 +97,7 @@ def is_self_locking(tan_lead: float, friction_static: float, cos_half_angle: flo
     return friction_static >= self_locking_limit_friction(tan_lead, cos_half_angle)
 
 
+@formula("lead < OD / 8", SEED + " (Back Driving)")
 def seed_backdrive_rule(lead_m: float, outer_diameter_m: float) -> bool:
     """Seed rule of thumb: back-driving will not occur when lead < diameter / 8.
 
@@ -97,6 +110,7 @@ def seed_backdrive_rule(lead_m: float, outer_diameter_m: float) -> bool:
     return lead_m < outer_diameter_m / 8.0
 
 
+@formula("lead = pi d_p mu / cos a_n", SHIGLEY)
 def max_self_locking_lead(
     pitch_diameter_m: float, friction_static: float, cos_half_angle: float
 ) -> float:
@@ -110,6 +124,7 @@ def max_self_locking_lead(
     return math.pi * pitch_diameter_m * friction_static / cos_half_angle
 
 
+@formula("T_b = F lead eta / (2 pi)", SEED + " (Back Driving)")
 def holding_torque(load_n: float, lead_m: float, efficiency: float) -> float:
     """Torque to hold a back-drivable load, T_b = F lead eta / (2 pi) [N m].
 

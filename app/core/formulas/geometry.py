@@ -5,6 +5,8 @@ The formulas use arithmetic only, so each accepts floats or NumPy arrays alike.
 
 import math
 
+from app.core.formulas.declare import SEED, SHIGLEY, formula
+
 
 def lead_from_pitch(pitch_m: float, starts: int) -> float:
     """Lead [m] = pitch [m] x number of starts [-].
@@ -17,6 +19,9 @@ def lead_from_pitch(pitch_m: float, starts: int) -> float:
     return pitch_m * starts
 
 
+@formula(
+    "d_p = d2 of a standard thread (ISO 2904: d - 0.5 P), else (OD + RD) / 2", SEED + "; ISO 2904"
+)
 def pitch_diameter(outer_diameter_m: float, root_diameter_m: float) -> float:
     """Pitch (mean) diameter d_p = (d_o + d_r) / 2 [m].
 
@@ -39,6 +44,7 @@ def thread_depth(outer_diameter_m: float, root_diameter_m: float) -> float:
     return 0.5 * (outer_diameter_m - root_diameter_m)
 
 
+@formula("lambda = atan(lead / (pi d_p))", SHIGLEY)
 def lead_angle(lead_m: float, pitch_diameter_m: float) -> float:
     """Lead (helix) angle lambda = atan(lead / (pi d_p)) [rad].
 
@@ -61,6 +67,7 @@ def tan_lead_angle(lead_m: float, pitch_diameter_m: float) -> float:
     return lead_m / (math.pi * pitch_diameter_m)
 
 
+@formula("n = 60 v / lead", SEED + " (RS = speed / lead)")
 def screw_speed_rpm(linear_speed_m_s: float, lead_m: float) -> float:
     """Screw speed n [rpm] = 60 v / lead, v [m/s], lead [m].
 

@@ -1,5 +1,7 @@
 """Nut life of the anti-backlash assemblies, converted to service time [1]."""
 
+from app.core.formulas.declare import SEED, formula
+
 DAYS_PER_YEAR = 365.0
 
 
@@ -12,6 +14,7 @@ def travel_per_year(stroke_m: float, cycles_per_day: float) -> float:
     return 2.0 * stroke_m * cycles_per_day * DAYS_PER_YEAR
 
 
+@formula("years = rated travel / (2 stroke x cycles/day x 365)", SEED + " (Anti-Backlash Life)")
 def life_years(life_travel_m: float, stroke_m: float, cycles_per_day: float) -> float:
     """Service life [years] = life travel / (2 stroke x cycles per year).
 

@@ -7,6 +7,8 @@ from collections.abc import Sequence
 from itertools import pairwise
 from typing import NamedTuple
 
+from app.core.formulas.declare import SEED, formula
+
 #: (lead from [m], lead to [m], recommended maximum linear speed [m/s]), ascending.
 Bands = Sequence[tuple[float, float, float]]
 
@@ -35,6 +37,7 @@ def band_speed_m_s(lead_m: float, bands: Bands) -> float:
     return speed
 
 
+@formula("band table by lead (family data)", SEED + " (Traverse Speed)")
 def band_limit(lead_m: float, bands: Bands) -> BandLimit:
     """The band limit [m/s] of a lead [m], marked extrapolated outside the table (floats
     or NumPy arrays of leads).

@@ -17,6 +17,8 @@ drive the load down.
 
 import math
 
+from app.core.formulas.declare import SEED, SHIGLEY, formula
+
 #: Accelerations above 0 count as at least this [m/s^2], so that every time stays finite.
 MIN_ACCEL_M_S2 = 1e-9
 
@@ -31,6 +33,7 @@ def inverse(accel_m_s2: float) -> float:
     return 1.0 / max(accel_m_s2, MIN_ACCEL_M_S2) if accel_m_s2 > 0.0 else 0.0
 
 
+@formula("v_peak = min(v, sqrt(2 s / (1/a + 1/d)))", "kinematics")
 def peak_speed(
     stroke_m: float, top_speed_m_s: float, accel_m_s2: float, decel_m_s2: float
 ) -> float:
@@ -50,6 +53,7 @@ def peak_speed(
     return min(top_speed_m_s, math.sqrt(2.0 * stroke_m / ramps))
 
 
+@formula("t_a = v_peak / a", "kinematics")
 def ramp_time(speed_m_s: float, accel_m_s2: float) -> float:
     """Time to reach ``speed_m_s`` from rest, t = v / a (0 when a = 0) [s].
 
@@ -68,6 +72,7 @@ def ramp_distance(speed_m_s: float, accel_m_s2: float) -> float:
     return speed_m_s**2 * 0.5 * inverse(accel_m_s2)
 
 
+@formula("t_c = (s - v_peak^2 / 2a - v_peak^2 / 2d) / v_peak", "kinematics")
 def constant_time(
     stroke_m: float, peak_speed_m_s: float, accel_m_s2: float, decel_m_s2: float
 ) -> float:
@@ -81,6 +86,10 @@ def constant_time(
     return max(0.0, (stroke_m - ramps) / peak_speed_m_s)
 
 
+@formula(
+    "T = F lead / (2 pi eta) if F >= 0 else F lead eta_b / (2 pi)",
+    SHIGLEY + " (raising and lowering torque); " + SEED + " (Back Driving)",
+)
 def thread_torque(
     thrust_n: float, lead_m: float, efficiency: float, backdrive_efficiency: float
 ) -> float:
@@ -119,6 +128,10 @@ def signed_backdrive_efficiency(tan_lead: float, friction: float, cos_half_angle
     )
 
 
+@formula(
+    "T_rms = sqrt(sum T_i^2 t_i / sum t_i)",
+    "root mean square over the cycle (motor vendors' continuous-duty rule)",
+)
 def rms_torque(torques_nm: list[float], durations_s: list[float]) -> float:
     """Root-mean-square torque over a cycle, sqrt(sum T_i^2 t_i / sum t_i) [N m]
     (the motor's heating; compare with its continuous rating). Floats or arrays.

@@ -4,6 +4,8 @@ The seed assumes three threads in contact: area ATA = 3 x H.T. x h, surface spee
 V = n x H.T., pressure P = F / ATA. H.T. cancels, so PV = n F / (3 h) with n in rev/s.
 """
 
+from app.core.formulas.declare import SEED, formula
+
 
 def contact_area(helix_travel_m: float, thread_depth_m: float, threads: int = 3) -> float:
     """Total thread contact area ATA = threads x H.T. x h [m^2] (seed: 3 threads).
@@ -16,6 +18,7 @@ def contact_area(helix_travel_m: float, thread_depth_m: float, threads: int = 3)
     return threads * helix_travel_m * thread_depth_m
 
 
+@formula("P = F / (3 H.T. h)", SEED)
 def contact_pressure(load_n: float, contact_area_m2: float) -> float:
     """Nut contact pressure P = F / ATA [Pa].
 
@@ -27,6 +30,7 @@ def contact_pressure(load_n: float, contact_area_m2: float) -> float:
     return load_n / contact_area_m2
 
 
+@formula("V = n H.T., H.T. = sqrt(lead^2 + (pi d_p)^2)", SEED)
 def surface_speed(rpm: float, helix_travel_m: float) -> float:
     """Thread sliding speed V = n H.T. [m/s], n in rpm.
 
@@ -38,6 +42,7 @@ def surface_speed(rpm: float, helix_travel_m: float) -> float:
     return rpm / 60.0 * helix_travel_m
 
 
+@formula("PV = F / (3 H.T. h) x n H.T.", SEED + " (PV Calculation, 3 threads in contact)")
 def pv_value(load_n: float, rpm: float, helix_travel_m: float, thread_depth_m: float) -> float:
     """PV of the nut [Pa m/s] by the seed's three-thread method.
 
@@ -52,6 +57,7 @@ def pv_value(load_n: float, rpm: float, helix_travel_m: float, thread_depth_m: f
     return contact_pressure(load_n, area) * surface_speed(rpm, helix_travel_m)
 
 
+@formula("F = PV_lim 3 h / n", SEED + " (inverted)")
 def max_load_for_pv(pv_limit_pa_m_s: float, rpm: float, thread_depth_m: float) -> float:
     """Largest load the PV limit allows at this speed, F = PV_lim 3 h / n [N].
 
@@ -75,6 +81,7 @@ def max_load_at_speed(max_load_n: float, speed_m_s: float, new_speed_m_s: float)
     return max_load_n * speed_m_s / new_speed_m_s
 
 
+@formula("v = lead x PV_lim 3 h / F", SEED + " (inverted)")
 def max_rpm_for_pv(pv_limit_pa_m_s: float, load_n: float, thread_depth_m: float) -> float:
     """Highest speed the PV limit allows at this load, n = 60 PV_lim 3 h / F [rpm].
 

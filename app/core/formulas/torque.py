@@ -2,6 +2,8 @@
 
 import math
 
+from app.core.formulas.declare import SEED, formula
+
 
 def angular_acceleration(linear_accel_m_s2: float, lead_m: float) -> float:
     """Screw angular acceleration alpha = 2 pi a / lead [rad/s^2].
@@ -49,6 +51,7 @@ def reflected_mass_inertia(mass_kg: float, lead_m: float) -> float:
     return mass_kg * (lead_m / (2.0 * math.pi)) ** 2
 
 
+@formula("T = (J/L x L) x 2 pi a / lead", SEED + " (Inertia Torque T = I alpha)")
 def inertia_torque(inertia_kg_m2: float, angular_accel_rad_s2: float) -> float:
     """Inertia torque T = I alpha [N m].
 
@@ -60,6 +63,7 @@ def inertia_torque(inertia_kg_m2: float, angular_accel_rad_s2: float) -> float:
     return inertia_kg_m2 * angular_accel_rad_s2
 
 
+@formula("T = F lead / (2 pi eta)", SEED + " (Torque To Move Load)")
 def load_torque(load_n: float, lead_m: float, efficiency: float) -> float:
     """Torque to move the load, T = F lead / (2 pi eta) [N m].
 
@@ -72,6 +76,7 @@ def load_torque(load_n: float, lead_m: float, efficiency: float) -> float:
     return load_n * lead_m / (2.0 * math.pi * efficiency)
 
 
+@formula("T = T_inertia + T_drag + T_load", SEED + " (Torque: sum of three components)")
 def total_torque(inertia_nm: float, drag_nm: float, load_nm: float) -> float:
     """Drive torque, the sum of the seed's three components [N m].
 
