@@ -1,29 +1,56 @@
-"""The check registry: every module of this package defines one check and registers it.
+"""The check registry: every check, listed once, in the order results list them.
 
 Screening, evaluation, the formulas table, the API's check list and the page iterate
-``REGISTRY`` in its order. Adding a check is adding one module here (and its test).
+``REGISTRY`` in its order. Adding a check is adding its module here, one line in
+``REGISTRY`` and its test (a module of this package that is not listed fails the tests).
 """
 
-import importlib
-import pkgutil
-
+from app.core.checks.accuracy import Accuracy
+from app.core.checks.anti_backlash import AntiBacklash
+from app.core.checks.back_driving import BackDriving
 from app.core.checks.base import Check
+from app.core.checks.bearing_pressure import BearingPressure
+from app.core.checks.buckling import ColumnBuckling
+from app.core.checks.critical_speed import CriticalSpeed
+from app.core.checks.design_load import DesignLoad
+from app.core.checks.holding import Holding
+from app.core.checks.length import Length
+from app.core.checks.life import Life
+from app.core.checks.max_sliding_speed import MaxSlidingSpeed
+from app.core.checks.motor_curve import MotorCurve
+from app.core.checks.motor_rms import MotorRms
+from app.core.checks.motor_speed import MotorSpeed
+from app.core.checks.oil import OilCompatibility
+from app.core.checks.pv import NutPV
+from app.core.checks.root_stress import RootStress
+from app.core.checks.temperature import Temperature
+from app.core.checks.torque import DriveTorque
+from app.core.checks.traverse_speed import TraverseSpeed
 
-_found: list[Check] = []
-
-
-def register(cls: type[Check]) -> type[Check]:
-    """Class decorator: add one instance of ``cls`` to the registry."""
-    _found.append(cls())
-    return cls
-
-
-for _module in pkgutil.iter_modules(__path__):
-    if _module.name != "base":
-        importlib.import_module(f"{__name__}.{_module.name}")
-
-#: Every check, in the order results list them.
-REGISTRY: tuple[Check, ...] = tuple(sorted(_found, key=lambda c: c.order))
+#: Every check, in the order results list them: the motor's, the screw's, the nut's,
+#: the catalog's limits, then back-driving and the advice.
+REGISTRY: tuple[Check, ...] = (
+    DriveTorque(),
+    MotorCurve(),
+    MotorRms(),
+    MotorSpeed(),
+    CriticalSpeed(),
+    ColumnBuckling(),
+    RootStress(),
+    NutPV(),
+    BearingPressure(),
+    MaxSlidingSpeed(),
+    TraverseSpeed(),
+    DesignLoad(),
+    Length(),
+    OilCompatibility(),
+    Temperature(),
+    BackDriving(),
+    Holding(),
+    AntiBacklash(),
+    Life(),
+    Accuracy(),
+)
 BY_NAME: dict[str, Check] = {c.name: c for c in REGISTRY}
 
-__all__ = ["BY_NAME", "REGISTRY", "Check", "register"]
+__all__ = ["BY_NAME", "REGISTRY", "Check"]

@@ -1,6 +1,5 @@
 """Worst-case positioning error over the stroke against the user's tolerance."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,7 +16,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class Accuracy(Check):
     name = "accuracy"
     label = "Positioning accuracy"
@@ -29,7 +27,6 @@ class Accuracy(Check):
     formula = "e = a_lead * stroke + b_max + r; e_allowed = tol"
     source = "seed catalog, Screw Accuracy"
     sources = ("lead_accuracy", "backlash", "repeatability")
-    order = 130
 
     def applies(self, app: Application) -> bool:
         return app.positioning_tolerance_m is not None

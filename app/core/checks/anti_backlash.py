@@ -1,6 +1,5 @@
 """An anti-backlash nut when the user asks for one."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -16,7 +15,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class AntiBacklash(Check):
     name = "anti_backlash"
     label = "Anti-backlash"
@@ -25,7 +23,6 @@ class AntiBacklash(Check):
     source = "catalog nut type"
     sources = ("type",)
     capacity_sources = ("type",)
-    order = 110
 
     def applies(self, app: Application) -> bool:
         return app.require_anti_backlash

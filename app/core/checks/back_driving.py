@@ -2,7 +2,6 @@
 
 import numpy as np
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -19,7 +18,6 @@ from app.core.formulas import efficiency
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class BackDriving(Check):
     name = "back_driving"
     label = "Self-locking (vertical axis, no brake)"
@@ -35,7 +33,6 @@ class BackDriving(Check):
     source = "Shigley's Mechanical Engineering Design, sec. 8-2 (self-locking condition)"
     sources = ("friction_static", "thread_half_angle")
     capacity_sources = ("friction_static", "thread_half_angle")
-    order = 100
 
     def applies(self, app: Application) -> bool:
         return app.orientation == "vertical" and app.brake_torque_nm is None

@@ -85,7 +85,6 @@ class Check:
     sources: ClassVar[tuple[str, ...]] = ()
     #: catalog fields the capacity rests on; empty: the capacity is the user's input
     capacity_sources: ClassVar[tuple[str, ...]] = ()
-    order: ClassVar[int]
 
     def applies(self, app: Application) -> bool:
         """Whether the check runs at all for this application (default: always)."""

@@ -3,7 +3,6 @@ material allows at the sliding speed (bronze by a table, polymers by p_max and P
 
 import numpy as np
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -62,7 +61,6 @@ def _one(s: ScrewSpec, rpm: float) -> tuple[float, float]:
     return float(speed[0]), float(load[0])
 
 
-@register
 class BearingPressure(Check):
     name = "bearing_pressure"
     label = "Nut contact pressure"
@@ -80,7 +78,6 @@ class BearingPressure(Check):
     )
     sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length", "pitch")
     capacity_sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length")
-    order = 42
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         speed = sliding_speed(q.rpm, t)

@@ -1,7 +1,6 @@
 """Compressive peak thrust against the allowed fraction of the column's critical load:
 Euler when the screw is slender, Johnson's parabola when it is short."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -22,7 +21,6 @@ from app.core.formulas import buckling
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class ColumnBuckling(Check):
     name = "buckling"
     label = "Column buckling"
@@ -43,7 +41,6 @@ class ColumnBuckling(Check):
     )
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
-    order = 30
 
     def applies(self, app: Application) -> bool:
         return app.compression

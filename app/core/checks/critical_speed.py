@@ -1,6 +1,5 @@
 """Screw speed against the allowed fraction of its first whirling speed."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -20,7 +19,6 @@ from app.core.formulas import critical_speed, geometry
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class CriticalSpeed(Check):
     name = "critical_speed"
     label = "Critical speed"
@@ -35,7 +33,6 @@ class CriticalSpeed(Check):
     source = "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; Thomson"
     sources = ("root_diameter", "youngs_modulus", "density")
     capacity_sources = ("root_diameter", "youngs_modulus", "density")
-    order = 20
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), q.rpm, q.allowed_rpm)

@@ -1,6 +1,5 @@
 """Axial force against the design load of the size (when the catalog gives one)."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,7 +16,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class DesignLoad(Check):
     name = "design_load"
     label = "Design load"
@@ -30,7 +28,6 @@ class DesignLoad(Check):
     source = "catalog design load of the size (see its provenance)"
     sources = ("design_load",)
     capacity_sources = ("design_load",)
-    order = 60
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(where_given(t.design_load_n), q.peak_force_n, t.design_load_n)

@@ -2,7 +2,6 @@
 
 import numpy as np
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -20,7 +19,6 @@ from app.core.formulas import efficiency
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class Holding(Check):
     name = "holding"
     label = "Holding torque (vertical axis)"
@@ -33,7 +31,6 @@ class Holding(Check):
     formula = "T_hold = 0 if locks else SF * max(T_seed, T_physics); T_available = T_brake"
     source = "seed catalog, Back Driving (T_b = F lead eta / 2 pi); Shigley sec. 8-2"
     sources = ("friction_static", "friction_dynamic", "thread_half_angle")
-    order = 101
 
     def applies(self, app: Application) -> bool:
         return app.orientation == "vertical" and app.brake_torque_nm is not None

@@ -1,6 +1,5 @@
 """Screw length against the longest screw the family makes in this variant."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,7 +16,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class Length(Check):
     name = "length"
     label = "Length"
@@ -27,7 +25,6 @@ class Length(Check):
     source = "the family's length limit per variant (catalog data)"
     sources = ("max_length",)
     capacity_sources = ("max_length",)
-    order = 70
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(where_given(t.max_length_m), same(t, app.length_m), t.max_length_m)

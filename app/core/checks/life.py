@@ -2,7 +2,6 @@
 
 import numpy as np
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -19,7 +18,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class Life(Check):
     name = "life"
     label = "Life"
@@ -32,7 +30,6 @@ class Life(Check):
     source = "seed catalog, Anti-Backlash Life (rated travel)"
     sources = ("life",)
     capacity_sources = ("life",)
-    order = 120
 
     def applies(self, app: Application) -> bool:
         # without a duty there is nothing to turn the rated travel into years

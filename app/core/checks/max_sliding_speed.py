@@ -1,6 +1,5 @@
 """Flank sliding speed of a polymer nut against the material's maximum sliding speed."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -24,7 +23,6 @@ def _speed_one(s: ScrewSpec, rpm: float) -> float:
     return pv.surface_speed(rpm, geometry.helix_travel(s.lead_m, d2))
 
 
-@register
 class MaxSlidingSpeed(Check):
     name = "max_sliding_speed"
     label = "Nut sliding speed"
@@ -37,7 +35,6 @@ class MaxSlidingSpeed(Check):
     source = "the nut material's maximum sliding speed (catalog, see its provenance)"
     sources = ("max_sliding_speed", "pitch")
     capacity_sources = ("max_sliding_speed",)
-    order = 44
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         capacity = t.max_sliding_speed_m_s

@@ -3,7 +3,6 @@
 import numpy as np
 
 from app.core import motion
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -45,7 +44,6 @@ def accel_that_fits(app: Application, s: ScrewSpec, r: Quantities[float]) -> flo
     return room / slope if slope > 0.0 and room > 0.0 else None
 
 
-@register
 class MotorCurve(Check):
     name = "motor_curve"
     label = "Motor torque-speed curve"
@@ -58,7 +56,6 @@ class MotorCurve(Check):
     formula = "T_need = SF * T_seg; T_motor = T_curve"
     source = "Shigley sec. 8-2 (thread torque by the flow of power); motor torque-speed curve"
     sources = ("inertia_per_length", "drag_torque", "friction_dynamic")
-    order = 11
 
     def applies(self, app: Application) -> bool:
         return bool(app.motor_curve)

@@ -1,6 +1,5 @@
 """The RMS torque of the cycle against the motor's continuous rating (its heating)."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,7 +16,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class MotorRms(Check):
     name = "motor_rms"
     label = "Motor RMS torque"
@@ -29,7 +27,6 @@ class MotorRms(Check):
     formula = "T_need = SF * T_rms; T_motor = T_continuous"
     source = "RMS torque sqrt(sum T_i^2 t_i / sum t_i), e.g. Oriental Motor, Motor Sizing"
     sources = ("inertia_per_length", "drag_torque", "friction_dynamic")
-    order = 12
 
     def applies(self, app: Application) -> bool:
         return app.motor_rms_torque_nm is not None and app.stroke_m is not None

@@ -1,6 +1,5 @@
 """The move's top speed inside the motor's torque-speed curve."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -23,7 +22,6 @@ def top_curve_rpm(app: Application) -> float:
     return app.motor_curve[-1][0]
 
 
-@register
 class MotorSpeed(Check):
     name = "motor_speed"
     label = "Motor speed"
@@ -35,7 +33,6 @@ class MotorSpeed(Check):
     formula = "n = 60 * v_peak / lead; n_motor = n_curve_max"
     source = "screw kinematics n = 60 v / lead; motor torque-speed curve"
     sources = ()
-    order = 13
 
     def applies(self, app: Application) -> bool:
         return bool(app.motor_curve)

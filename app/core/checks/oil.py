@@ -2,7 +2,6 @@
 
 import numpy as np
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,7 +16,6 @@ from app.core.checks.base import (
 from app.core.phrase import Phrase
 
 
-@register
 class OilCompatibility(Check):
     name = "coating_environment"
     label = "Oil and lubricants"
@@ -29,7 +27,6 @@ class OilCompatibility(Check):
     source = "the family's rule per variant (catalog data)"
     sources = ("oil_compatible",)
     capacity_sources = ("oil_compatible",)
-    order = 80
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(~t.oil_compatible, flagged=~t.oil_compatible & np.bool_(app.oil_present))

@@ -1,6 +1,5 @@
 """PV of the nut (contact pressure times sliding speed) against the nut material's limit."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,7 +16,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class NutPV(Check):
     name = "pv"
     label = "PV (nut material)"
@@ -30,7 +28,6 @@ class NutPV(Check):
     source = "seed catalog, PV Calculation (three threads in contact)"
     sources = ("pv_limit", "root_diameter", "outer_diameter")
     capacity_sources = ("pv_limit",)
-    order = 40
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(where_given(t.pv_limit_pa_m_s), q.pv_pa_m_s, t.pv_limit_pa_m_s)

@@ -1,6 +1,5 @@
 """Axial stress at the root section under the peak thrust against the screw's yield."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -18,7 +17,6 @@ from app.core.formulas import buckling
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class RootStress(Check):
     name = "root_stress"
     label = "Root stress (yield)"
@@ -31,7 +29,6 @@ class RootStress(Check):
     source = "axial stress of a round section; yield strength from the material (handbook)"
     sources = ("root_diameter", "yield_strength")
     capacity_sources = ("yield_strength",)
-    order = 35
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         allowed = app.buckling_safety_factor * t.yield_strength_pa

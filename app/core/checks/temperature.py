@@ -2,7 +2,6 @@
 
 import numpy as np
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -19,7 +18,6 @@ from app.core.formulas import limits
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class Temperature(Check):
     name = "temperature"
     label = "Operating temperature"
@@ -28,7 +26,6 @@ class Temperature(Check):
     source = "catalog temperature range (see its provenance)"
     sources = ("temperature_range",)
     capacity_sources = ("temperature_range",)
-    order = 90
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         t_min, t_max = t.temperature_min_c, t.temperature_max_c

@@ -1,6 +1,5 @@
 """Drive torque against the torque the drive offers (when the user gives it)."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,7 +16,6 @@ from app.core.checks.base import (
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class DriveTorque(Check):
     name = "torque"
     label = "Drive torque"
@@ -26,7 +24,6 @@ class DriveTorque(Check):
     formula = "T_req = SF * max(T_inertia + T_drag + T_load, T_breakaway); T_available = T_drive"
     source = "seed catalog, Torque (inertia + static drag + load), with static friction"
     sources = ("inertia_per_length", "drag_torque", "friction_dynamic", "friction_static")
-    order = 10
 
     def applies(self, app: Application) -> bool:
         return app.max_torque_nm is not None

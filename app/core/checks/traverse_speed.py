@@ -1,6 +1,5 @@
 """Linear speed against the family's recommended speed for the lead (a band table)."""
 
-from app.core.checks import register
 from app.core.checks.base import (
     Application,
     Array,
@@ -18,7 +17,6 @@ from app.core.formulas.limits import band_speed_m_s
 from app.core.phrase import Amount, Phrase
 
 
-@register
 class TraverseSpeed(Check):
     name = "traverse_speed"
     label = "Traverse speed"
@@ -33,7 +31,6 @@ class TraverseSpeed(Check):
     source = "the family's traverse-speed table (catalog data)"
     sources = ("lead", "traverse_speed")
     capacity_sources = ("traverse_speed",)
-    order = 50
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         limit = t.traverse_limit_m_s
