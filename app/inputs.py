@@ -246,8 +246,11 @@ def api_type(field: InputField) -> Any:
         kind = curve_type(field)
     else:
         kind = Annotated[field.options, Field(description=describe(field))]
-    optional = not field.required and field.default is None
-    return kind | None if optional else kind
+    if field.required or field.default is not None:
+        return kind
+    # the description again outside the union: OpenAPI shows a parameter's own
+    # description, not the one inside anyOf's first branch
+    return Annotated[kind | None, Field(description=describe(field))]
 
 
 def _definitions() -> dict[str, Any]:

@@ -18,7 +18,8 @@ from fastapi.testclient import TestClient
 from pydantic import BaseModel
 
 from app.catalog import Catalog, load_catalog
-from app.fields import FIELDS
+from app.fields import BY_API, FIELDS
+from app.inputs import describe
 from app.schemas import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 
 API = "/api/v1"
@@ -333,6 +334,17 @@ def test_openapi_bounds_are_json_schema_minimum_and_maximum(api: Api) -> None:
             low, high = field.bounds or (None, None)
             assert bounded[0].get("minimum") == low, field.api
             assert bounded[0].get("maximum") == high, field.api
+
+
+def test_get_select_documents_every_query_parameter(api: Api) -> None:
+    """Each parameter of GET /select carries its description (label, unit and help from
+    the field table), optional ones included."""
+    schema = ok(api.get("/openapi.json"))
+    for parameter in schema["paths"]["/api/v1/select"]["get"]["parameters"]:
+        if parameter["name"] == "detail":
+            continue
+        text = parameter.get("description") or parameter["schema"].get("description")
+        assert text == describe(BY_API[parameter["name"]]), parameter["name"]
 
 
 def test_get_select_query_parameters_are_the_application_fields(api: Api) -> None:
