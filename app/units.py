@@ -157,14 +157,15 @@ UNIT_QUANTITIES: dict[str, tuple[Quantity, ...]] = {
 SWITCHED: frozenset[Quantity] = frozenset(q for qs in UNIT_QUANTITIES.values() for q in qs)
 
 
-def _ratio(symbol: str, dimension: Quantity) -> float:
+def _ratio(symbol: str) -> float:
     """Factor from a unit to the API's unit of its dimension, from the exact factors."""
-    return float(UNITS[symbol].exact / UNITS[API_SYSTEM[dimension]].exact)
+    unit = UNITS[symbol]
+    return float(unit.exact / UNITS[API_SYSTEM[unit.dimension]].exact)
 
 
 def _choice_factors(key: str, main: Quantity) -> dict[str, float]:
-    """Choice -> factor from its unit of ``main`` to the API unit (the page's checks)."""
-    return {c: _ratio(units[main], main) for c, units in DISPLAY_CHOICES[key].items()}
+    """Choice of a page switch -> factor from its unit of ``main`` to the API unit."""
+    return {c: _ratio(units[main]) for c, units in DISPLAY_CHOICES[key].items()}
 
 
 #: choice -> factor from the chosen unit to the API unit, per switch.
@@ -180,7 +181,7 @@ def _system(choices: tuple[str, ...]) -> dict[Quantity, tuple[str, float]]:
     chosen = dict(API_SYSTEM)
     for key, choice in zip(DISPLAY_CHOICES, choices, strict=True):
         chosen.update(DISPLAY_CHOICES[key][choice])
-    return {d: (u, _ratio(u, d)) for d, u in chosen.items()}
+    return {d: (u, _ratio(u)) for d, u in chosen.items()}
 
 
 #: every display system the page offers, by its choices in ``DISPLAY_CHOICES`` order.
