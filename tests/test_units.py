@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 
 import app.core.phrase
 import app.units
+from app.core.model import STANDARD_GRAVITY_M_S2
 from app.fields import FIELDS, InputField
 from app.units import (
     API_SYSTEM,
@@ -79,6 +80,11 @@ def test_derived_units_follow_from_their_definitions() -> None:
     assert UNITS["psi"].exact * UNITS["in"].exact ** 2 == UNITS["lbf"].exact
     assert UNITS["in/s"].exact == UNITS["in"].exact
     assert UNITS["mm/300 mm"].exact * 300 == 1
+
+
+def test_the_cores_standard_gravity_is_the_kilogram_forces() -> None:
+    """The core weighs the moving mass with the g_n that defines the kgf and the lbf."""
+    assert UNITS["kgf"].si == STANDARD_GRAVITY_M_S2
 
 
 def test_both_factors_are_the_correctly_rounded_exact_ones() -> None:
