@@ -66,9 +66,9 @@ class InputField:
     choice. A ``drawn`` choice is shown as radio buttons, each with a drawing of its value
     ("fixed-free": left end, right end). A ``text`` field is one id or name (``none_word``
     meaning none); a ``list`` field is several, a list in JSON, a repeated query parameter,
-    or comma-separated text on the page and in share links. A ``curve`` field is points (x,
-    y): pairs in JSON, ``x:y,x:y`` in query strings and share links, lines of "x y" on the
-    page. A ``catalog_only`` field filters or ranks catalog screws and means nothing for a
+    or comma-separated text on the page and in share links. A ``curve`` field is points
+    (x, y): pairs in JSON, ``x:y,x:y`` in query strings and share links, lines of "x y" on
+    the page. A ``catalog_only`` field filters or ranks catalog screws and means nothing for a
     screw of the user's own (the /custom page leaves it out).
     """
 

@@ -46,9 +46,10 @@ _PER_MINUTE = Fraction(1, 60)
 
 @dataclass(frozen=True, slots=True)
 class Unit:
-    """One unit: its symbol, the dimension it measures and its factors to and from the
-    core's unit of that dimension (``si``: a value in this unit times ``si`` is the core's
-    value; ``from_si`` the other way, each the correctly rounded float of the exact one)."""
+    """One unit: its symbol, the dimension it measures, its ``exact`` factor to the core's
+    unit of that dimension, and the float factors each way (``si``: a value in this unit
+    times ``si`` is the core's value; ``from_si`` the other way), each the correctly
+    rounded float of the exact one."""
 
     symbol: str
     dimension: Quantity

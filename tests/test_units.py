@@ -140,6 +140,14 @@ def test_field_names_carry_their_dimensions_api_unit(field: InputField) -> None:
     assert field.si_factor == UNITS[field.unit].si
 
 
+def test_a_field_takes_its_unit_from_its_dimension_only() -> None:
+    with pytest.raises(ValueError, match="the dimension gives the unit"):
+        InputField(
+            api="x_mm", page="x", core="x_m", label="X", help="X", group="Axis",
+            kind="number", bounds=(0.0, 1.0), dimension="length", unit="in",
+        )  # fmt: skip
+
+
 def test_the_default_display_units_are_the_apis() -> None:
     assert display_system(DEFAULT_UNITS) == {d: (u, 1.0) for d, u in API_SYSTEM.items()}
 
