@@ -1,10 +1,10 @@
 """Every application input, declared once.
 
 One ``InputField`` per input of the core's ``Application`` says everything the edges need:
-the API name (unit in the name), the page and share-link name, the core attribute and the
-factor from the API unit to SI, how the page shows it (label, help, form group, display
-quantity or fixed unit, choices with their texts) and how it is validated (kind, default,
-bounds). The API model (``app.inputs``), the page form and its parser
+the API name (unit in the name), the page and share-link name, the core attribute and its
+dimension (whose API unit and factor to SI ``app.units`` holds), how the page shows it
+(label, help, form group, choices with their texts) and how it is validated (kind,
+default, bounds). The API model (``app.inputs``), the page form and its parser
 (``app.page_form``), the form templates, the printed inputs summary and the CSV export are
 all generated from ``FIELDS``; none of them names an input.
 
@@ -23,12 +23,10 @@ from dataclasses import dataclass, field
 from typing import Any, Literal, get_args
 
 from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
-from app.units import Quantity, from_api, label
+from app.units import API_SYSTEM, SWITCHED, UNITS, Quantity, from_api, label
 
 Kind = Literal["number", "whole number", "yes-no", "choice", "text", "list", "curve"]
 Default = float | int | bool | str | None
-#: millimetres (and mm/s, mm/s²) to metres: the API's length unit to SI.
-MM = 1e-3
 
 #: form groups, in the order the form shows them; the first is always open.
 GROUPS = (
@@ -55,22 +53,23 @@ class Choice:
 class InputField:
     """One application input at every edge.
 
-    ``api`` carries the API unit in its name (``speed_mm_s``); ``si_factor`` converts a
-    value in that unit to the SI unit of the core attribute ``core`` (``speed_m_s``).
-    ``quantity`` follows the page's unit switch; without one, ``unit`` is the fixed unit
-    text. ``bounds`` (low, high) are inclusive and in the API unit. A field with no
-    ``default`` and ``required`` False is optional: leaving it out switches its check off.
-    ``needs`` names API fields that must be given whenever this one is; ``none_word`` is
-    the word the page accepts for "no value" (lead: "any"). ``options`` is the core's
-    Literal type of a choice field and ``texts`` the display text of each of its values;
-    a yes-no field with ``texts`` for "true" and "false" is shown as a two-way choice. A
-    ``drawn`` choice is shown as radio buttons, each with a drawing of its value
+    ``api`` carries the API unit in its name (``speed_mm_s``), the API unit of its
+    ``dimension``; from it ``si_factor`` converts a value to the core's unit of the core
+    attribute ``core`` (``speed_m_s``) and ``unit`` is the unit's text. ``quantity`` is the
+    dimension where a page switch sets its unit, else None. A field without a dimension may
+    name a fixed ``unit`` text ('/day'). ``bounds`` (low, high) are inclusive and in the API
+    unit. A field with no ``default`` and ``required`` False is optional: leaving it out
+    switches its check off. ``needs`` names API fields that must be given whenever this one
+    is; ``none_word`` is the word the page accepts for "no value" (lead: "any"). ``options``
+    is the core's Literal type of a choice field and ``texts`` the display text of each of
+    its values; a yes-no field with ``texts`` for "true" and "false" is shown as a two-way
+    choice. A ``drawn`` choice is shown as radio buttons, each with a drawing of its value
     ("fixed-free": left end, right end). A ``text`` field is one id or name (``none_word``
     meaning none); a ``list`` field is several, a list in JSON, a repeated query parameter,
     or comma-separated text on the page and in share links. A ``curve`` field is points
-    (x, y): pairs in JSON, ``x:y,x:y`` in query strings and share links, lines of "x y"
-    on the page. A ``catalog_only`` field filters or ranks catalog screws and means nothing
-    for a screw of the user's own (the /custom page leaves it out).
+    (x, y): pairs in JSON, ``x:y,x:y`` in query strings and share links, lines of "x y" on
+    the page. A ``catalog_only`` field filters or ranks catalog screws and means nothing for a
+    screw of the user's own (the /custom page leaves it out).
     """
 
     api: str
@@ -83,8 +82,7 @@ class InputField:
     required: bool = False
     default: Default = None
     bounds: tuple[float, float] | None = None
-    si_factor: float = 1.0
-    quantity: Quantity | None = None
+    dimension: Quantity | None = None
     unit: str = ""
     options: Any = None
     texts: Mapping[str, str] = field(default_factory=dict)
@@ -92,12 +90,23 @@ class InputField:
     none_word: str = ""
     drawn: bool = False
     catalog_only: bool = False
+    si_factor: float = field(init=False, default=1.0)
+    quantity: Quantity | None = field(init=False, default=None)
 
     def __post_init__(self) -> None:
-        """Refuse a number without bounds (they keep every result finite) and display
-        texts that miss or invent a value of the core's Literal."""
+        """Take the unit, the factor to SI and the page's switch from the dimension;
+        refuse a number without bounds (they keep every result finite), a unit beside a
+        dimension, and display texts that miss or invent a value of the core's Literal."""
         if self.kind in ("number", "whole number") and self.bounds is None:
             raise ValueError(f"{self.api}: a number needs bounds")
+        if self.dimension is not None:
+            if self.unit:
+                raise ValueError(f"{self.api}: the dimension gives the unit")
+            api_unit = UNITS[API_SYSTEM[self.dimension]]
+            object.__setattr__(self, "unit", api_unit.symbol)
+            object.__setattr__(self, "si_factor", api_unit.si)
+            switched = self.dimension if self.dimension in SWITCHED else None
+            object.__setattr__(self, "quantity", switched)
         if self.options is not None and set(get_args(self.options)) != set(self.texts):
             values = sorted(get_args(self.options))
             raise ValueError(f"{self.api}: texts {sorted(self.texts)} do not match {values}")
@@ -150,12 +159,12 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="load_n", page="load", core="load_n", label="Axial load",
         help="External axial force on the nut; 0 for a pure-inertia axis", group="Axis",
-        kind="number", required=True, bounds=(0.0, 1e6), quantity="force", unit="N",
+        kind="number", required=True, bounds=(0.0, 1e6), dimension="force",
     ),
     InputField(
         api="lead_mm", page="lead", core="lead_m", label="Lead",
         help="Travel per turn; empty or “any” for every lead", group="Axis", kind="number",
-        bounds=(0.01, 1000.0), si_factor=MM, quantity="length", unit="mm",
+        bounds=(0.01, 1000.0), dimension="length",
         none_word="any",
         catalog_only=True,
     ),
@@ -163,23 +172,22 @@ FIELDS: tuple[InputField, ...] = (
         api="speed_mm_s", page="speed", core="speed_m_s", label="Linear speed",
         help="Top speed of the nut along the screw", group="Axis", kind="number",
         required=True,
-        bounds=(1e-3, 1e5), si_factor=MM, quantity="speed", unit="mm/s",
+        bounds=(1e-3, 1e5), dimension="speed",
     ),
     InputField(
         api="length_mm", page="length", core="length_m", label="Screw length",
         help="Between the supports", group="Axis", kind="number", required=True,
-        bounds=(1.0, 1e5), si_factor=MM, quantity="length", unit="mm",
+        bounds=(1.0, 1e5), dimension="length",
     ),
     InputField(
         api="accel_mm_s2", page="accel", core="accel_m_s2", label="Acceleration",
         help="Linear, to reach the speed; 0 for constant speed", group="Motion and load",
-        kind="number", default=1000.0, bounds=(0.0, 1e6), si_factor=MM, quantity="accel",
-        unit="mm/s²",
+        kind="number", default=1000.0, bounds=(0.0, 1e6), dimension="accel",
     ),
     InputField(
         api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
         label="Moving mass", help="Carried by the nut", group="Motion and load",
-        kind="number", default=0.0, bounds=(0.0, 1e5), quantity="mass", unit="kg",
+        kind="number", default=0.0, bounds=(0.0, 1e5), dimension="mass",
     ),
     InputField(
         api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
@@ -233,12 +241,12 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="ambient_c", page="ambient_c", core="ambient_c", label="Ambient temperature",
         help="Around the screw", group="Nut and environment", kind="number", default=20.0,
-        bounds=(-273.15, 1000.0), unit="°C",
+        bounds=(-273.15, 1000.0), dimension="temperature",
     ),
     InputField(
         api="stroke_mm", page="stroke", core="stroke_m", label="Stroke",
         help="Travel of one move, for life and accuracy", group="Duty and requirements",
-        kind="number", bounds=(0.01, 1e5), si_factor=MM, quantity="length", unit="mm",
+        kind="number", bounds=(0.01, 1e5), dimension="length",
     ),
     InputField(
         api="cycles_per_day", page="cycles_per_day", core="cycles_per_day",
@@ -280,26 +288,26 @@ FIELDS: tuple[InputField, ...] = (
         api="max_torque_nm", page="max_torque", core="max_torque_nm",
         label="Max drive torque", help="What the motor gives; empty for no limit",
         group="Duty and requirements", kind="number", bounds=(1e-6, 1e5),
-        quantity="torque", unit="N m",
+        dimension="torque",
     ),
     InputField(
         api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
         label="Holding torque", group="Duty and requirements", kind="number",
         help="Vertical axis: a brake's, or the motor's holding torque, at the screw; empty "
         "when the screw must hold the load by itself",
-        bounds=(0.0, 1e5), quantity="torque", unit="N m",
+        bounds=(0.0, 1e5), dimension="torque",
     ),
     InputField(
         api="required_life_years", page="required_life_years", core="required_life_years",
         label="Required life", help="Needs stroke and cycles per day",
-        group="Duty and requirements", kind="number", bounds=(1e-3, 1000.0), unit="years",
+        group="Duty and requirements", kind="number", bounds=(1e-3, 1000.0), dimension="years",
         needs=("stroke_mm", "cycles_per_day"),
     ),
     InputField(
         api="positioning_tolerance_mm", page="positioning_tolerance",
         core="positioning_tolerance_m", label="Positioning tolerance",
         help="Allowed positioning error; empty for no check", group="Duty and requirements",
-        kind="number", bounds=(1e-4, 1000.0), si_factor=MM, quantity="length", unit="mm",
+        kind="number", bounds=(1e-4, 1000.0), dimension="length",
     ),
     InputField(
         api="rank_by", page="rank_by", core="rank_by", label="Rank by",
@@ -340,13 +348,12 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="decel_mm_s2", page="decel", core="decel_m_s2", label="Deceleration",
         help="Linear, to stop at the end of the stroke; empty for the acceleration",
-        group="Motor and move", kind="number", bounds=(0.0, 1e6), si_factor=MM,
-        quantity="accel", unit="mm/s²",
+        group="Motor and move", kind="number", bounds=(0.0, 1e6), dimension="accel",
     ),
     InputField(
         api="dwell_s", page="dwell", core="dwell_s", label="Dwell",
         help="Rest after each move, out and back (needs a stroke)", group="Motor and move",
-        kind="number", default=0.0, bounds=(0.0, 1e6), unit="s",
+        kind="number", default=0.0, bounds=(0.0, 1e6), dimension="time",
     ),
     InputField(
         api="motor_curve", page="motor_curve", core="motor_curve", label="Motor curve",
@@ -357,14 +364,14 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="motor_inertia_kg_m2", page="motor_inertia", core="motor_inertia_kg_m2",
         label="Rotor inertia", help="The motor's own, at the screw; empty for none",
-        group="Motor and move", kind="number", bounds=(0.0, 10.0), unit="kg m²",
+        group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
     ),
     InputField(
         api="motor_rms_torque_nm", page="motor_rms_torque", core="motor_rms_torque_nm",
         label="Continuous torque", help="The motor's rating for the RMS torque of the "
         "cycle (needs a stroke); empty for no check",
-        group="Motor and move", kind="number", bounds=(1e-6, 1e5), quantity="torque",
-        unit="N m", needs=("stroke_mm",),
+        group="Motor and move", kind="number", bounds=(1e-6, 1e5), dimension="torque",
+        needs=("stroke_mm",),
     ),
 )
 # fmt: on

@@ -1,94 +1,273 @@
-"""Unit conversion at the edge. The core is SI; the API speaks mm, mm/s, N, N m, MPa m/s;
-the page lets the user pick display units. One table per quantity: factor to the API unit.
+"""Units at the edge: one table of units, the API's unit system, the page's display units.
+
+The core holds every dimension (``app.core.phrase.Quantity``, the app's one list of
+them) in one unit, SI but for speeds of rotation in rpm, life in years and temperatures in
+°C. ``UNITS`` defines every other unit the app reads or shows by its exact factor to that
+unit, derived as the definitions are (pint's shape: 1 lbf = 1 lb x g_n, 1 psi = 1 lbf/in²),
+with the float factors both ways computed once from the exact fractions.
+``API_SYSTEM`` names the unit of each dimension in the API (mm, mm/s, N, N m, MPa m/s);
+``DISPLAY_CHOICES`` the units the page's three switches offer, each a selection from the
+same table. Values convert at the edges only, by one float multiplication or division:
+``to_si``/``from_si`` by unit, ``api_to_si``/``si_to_api`` by dimension, and
+``to_api``/``from_api`` between the API's and the reader's units.
+
+References
+----------
+1. NIST SP 811 (2008), Guide for the Use of the International System of Units, appendix
+   B.8: 1 in = 0.0254 m, 1 ft = 0.3048 m, 1 lb = 0.45359237 kg, standard acceleration of
+   gravity g_n = 9.80665 m/s², 1 kgf = g_n N, 1 lbf = 4.4482216152605 N (lb x g_n),
+   1 psi = 1 lbf/in², 1 ozf in = 1/16 lbf in, all exact.
 """
 
 from collections.abc import Mapping
-from typing import Literal
+from dataclasses import dataclass
+from fractions import Fraction
+from itertools import product
+from typing import get_args
 
 from app.core.phrase import Amount, Phrase
-from app.core.phrase import Quantity as CoreQuantity
+from app.core.phrase import Quantity as Quantity
 
-Quantity = Literal["force", "length", "speed", "accel", "torque", "mass"]
+#: one inch [m], exactly (NIST SP 811 B.8).
+_IN = Fraction("0.0254")
+#: one foot [m], 12 in.
+_FT = 12 * _IN
+#: one avoirdupois pound [kg], exactly.
+_LB = Fraction("0.45359237")
+#: standard acceleration of gravity [m/s²], exactly.
+_G_N = Fraction("9.80665")
+#: one pound-force [N]: the pound's weight at g_n.
+_LBF = _LB * _G_N
+_PSI = _LBF / _IN**2
+_MM = Fraction(1, 1000)
+_MEGA = Fraction(10**6)
+_PER_MINUTE = Fraction(1, 60)
 
-#: display unit -> factor that converts a value in that unit to the API unit.
-FORCE_UNITS = {"N": 1.0, "lbf": 4.4482216152605, "kgf": 9.80665}
-LENGTH_UNITS = {"mm": 1.0, "in": 25.4}
-TORQUE_UNITS = {"N_m": 1.0, "oz_in": 0.0070615518333, "lb_in": 0.112984829027617}
-TORQUE_LABELS = {"N_m": "N m", "oz_in": "oz in", "lb_in": "lb in"}
-#: a mass follows the force unit: pounds with pound-force, kilograms otherwise.
-MASS_UNITS = {"N": ("kg", 1.0), "lbf": ("lb", 0.45359237), "kgf": ("kg", 1.0)}
+
+@dataclass(frozen=True, slots=True)
+class Unit:
+    """One unit: its symbol, the dimension it measures, its ``exact`` factor to the core's
+    unit of that dimension, and the float factors each way (``si``: a value in this unit
+    times ``si`` is the core's value; ``from_si`` the other way), each the correctly
+    rounded float of the exact one."""
+
+    symbol: str
+    dimension: Quantity
+    exact: Fraction
+    si: float
+    from_si: float
+
+
+def _unit(symbol: str, dimension: Quantity, exact: Fraction | int) -> Unit:
+    value = Fraction(exact)
+    return Unit(symbol, dimension, value, float(value), float(1 / value))
+
+
+#: every unit the app reads or shows: symbol -> unit. The core's own unit of each
+#: dimension comes first, with factor 1.
+UNITS: dict[str, Unit] = {
+    u.symbol: u
+    for u in (
+        _unit("N", "force", 1),
+        _unit("lbf", "force", _LBF),
+        _unit("kgf", "force", _G_N),
+        _unit("m", "length", 1),
+        _unit("mm", "length", _MM),
+        _unit("in", "length", _IN),
+        _unit("km", "length", 1000),
+        _unit("million cm", "length", 10**4),
+        _unit("m/s", "speed", 1),
+        _unit("mm/s", "speed", _MM),
+        _unit("in/s", "speed", _IN),
+        _unit("ft/min", "speed", _FT * _PER_MINUTE),
+        _unit("m/s²", "accel", 1),
+        _unit("mm/s²", "accel", _MM),
+        _unit("in/s²", "accel", _IN),
+        _unit("N m", "torque", 1),
+        _unit("oz in", "torque", _LBF / 16 * _IN),
+        _unit("lb in", "torque", _LBF * _IN),
+        _unit("kg", "mass", 1),
+        _unit("lb", "mass", _LB),
+        _unit("kg m²", "inertia", 1),
+        _unit("kg m²/m", "inertia_per_length", 1),
+        _unit("kg m²/in", "inertia_per_length", 1 / _IN),
+        _unit("kg/m³", "density", 1),
+        _unit("rpm", "rpm", 1),
+        _unit("Pa m/s", "pv", 1),
+        _unit("MPa m/s", "pv", _MEGA),
+        _unit("psi ft/min", "pv", _PSI * _FT * _PER_MINUTE),
+        _unit("Pa", "pressure", 1),
+        _unit("MPa", "pressure", _MEGA),
+        _unit("GPa", "pressure", 1000 * _MEGA),
+        _unit("psi", "pressure", _PSI),
+        _unit("1/K", "expansion", 1),
+        _unit("µm/(m K)", "expansion", 1 / _MEGA),
+        _unit("m/m", "strain", 1),
+        _unit("mm/m", "strain", _MM),
+        _unit("mm/300 mm", "strain", _MM / Fraction("0.3")),
+        _unit("s", "time", 1),
+        _unit("years", "years", 1),
+        _unit("°C", "temperature", 1),
+        _unit("", "factor", 1),
+    )
+}
+#: dimension -> the core's unit of it (the one with factor 1).
+SI_UNITS: dict[Quantity, str] = {u.dimension: u.symbol for u in UNITS.values() if u.exact == 1}
+
+#: the API's unit system: dimension -> unit (the unit every API field name carries).
+API_SYSTEM: dict[Quantity, str] = {
+    **SI_UNITS,
+    "length": "mm",
+    "speed": "mm/s",
+    "accel": "mm/s²",
+    "pv": "MPa m/s",
+    "pressure": "MPa",
+}
+#: dimension -> (API unit symbol, factor from the core's unit to the API unit).
+API_UNITS: dict[Quantity, tuple[str, float]] = {
+    d: (u, UNITS[u].from_si) for d, u in API_SYSTEM.items()
+}
+_API_TO_SI: dict[Quantity, float] = {d: UNITS[u].si for d, u in API_SYSTEM.items()}
+
+#: the page's unit switches: switch -> choice -> the unit it gives each dimension it sets
+#: (a mass follows the force: pounds with pound-force). Dimensions no switch sets are
+#: shown in the API's unit.
+DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
+    "force_unit": {
+        "N": {"force": "N", "mass": "kg"},
+        "lbf": {"force": "lbf", "mass": "lb"},
+        "kgf": {"force": "kgf", "mass": "kg"},
+    },
+    "length_unit": {
+        "mm": {"length": "mm", "speed": "mm/s", "accel": "mm/s²"},
+        "in": {"length": "in", "speed": "in/s", "accel": "in/s²"},
+    },
+    "torque_unit": {
+        "N_m": {"torque": "N m"},
+        "oz_in": {"torque": "oz in"},
+        "lb_in": {"torque": "lb in"},
+    },
+}
+#: the page's default choices: the API's units.
 DEFAULT_UNITS = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
+#: switch -> the dimensions it sets.
+UNIT_QUANTITIES: dict[str, tuple[Quantity, ...]] = {
+    key: tuple(choices[DEFAULT_UNITS[key]]) for key, choices in DISPLAY_CHOICES.items()
+}
+#: the dimensions a page switch sets.
+SWITCHED: frozenset[Quantity] = frozenset(q for qs in UNIT_QUANTITIES.values() for q in qs)
+
+
+def _ratio(symbol: str) -> float:
+    """Factor from a unit to the API's unit of its dimension, from the exact factors."""
+    unit = UNITS[symbol]
+    return float(unit.exact / UNITS[API_SYSTEM[unit.dimension]].exact)
+
+
+def _choice_factors(key: str, main: Quantity) -> dict[str, float]:
+    """Choice of a page switch -> factor from its unit of ``main`` to the API unit."""
+    return {c: _ratio(units[main]) for c, units in DISPLAY_CHOICES[key].items()}
+
+
+#: choice -> factor from the chosen unit to the API unit, per switch.
+FORCE_UNITS = _choice_factors("force_unit", "force")
+LENGTH_UNITS = _choice_factors("length_unit", "length")
+TORQUE_UNITS = _choice_factors("torque_unit", "torque")
+#: torque choice -> its symbol, for the page's switch.
+TORQUE_LABELS = {c: u["torque"] for c, u in DISPLAY_CHOICES["torque_unit"].items()}
+
+
+def _system(choices: tuple[str, ...]) -> dict[Quantity, tuple[str, float]]:
+    """One display system: dimension -> (unit symbol, factor from it to the API unit)."""
+    chosen = dict(API_SYSTEM)
+    for key, choice in zip(DISPLAY_CHOICES, choices, strict=True):
+        chosen.update(DISPLAY_CHOICES[key][choice])
+    return {d: (u, _ratio(u)) for d, u in chosen.items()}
+
+
+#: every display system the page offers, by its choices in ``DISPLAY_CHOICES`` order.
+DISPLAY_SYSTEMS = {c: _system(c) for c in product(*map(list, DISPLAY_CHOICES.values()))}
+
+
+def display_system(units: Mapping[str, str]) -> dict[Quantity, tuple[str, float]]:
+    """The display system of the page's choices: dimension -> (symbol, factor to API).
+
+    >>> display_system({"force_unit": "lbf", "length_unit": "in", "torque_unit": "N_m"})[
+    ...     "speed"]
+    ('in/s', 25.4)
+    """
+    return DISPLAY_SYSTEMS[units["force_unit"], units["length_unit"], units["torque_unit"]]
+
+
+def to_si(value: float, unit: str) -> float:
+    """A value in ``unit`` in the core's unit of its dimension.
+
+    >>> to_si(10.0, "mm"), to_si(2.0, "MPa")
+    (0.01, 2000000.0)
+    """
+    return value * UNITS[unit].si
+
+
+def from_si(value: float, unit: str) -> float:
+    """A value in the core's unit in ``unit``.
+
+    >>> from_si(0.0254, "in"), from_si(2e6, "MPa m/s")
+    (1.0, 2.0)
+    """
+    return value * UNITS[unit].from_si
+
+
+def api_to_si(value: float, quantity: Quantity) -> float:
+    """A value in the API's unit of ``quantity`` in the core's unit.
+
+    >>> api_to_si(50.0, "speed")
+    0.05
+    """
+    return value * _API_TO_SI[quantity]
+
+
+def si_to_api(value: float, quantity: Quantity) -> float:
+    """A value in the core's unit in the API's unit of ``quantity``.
+
+    >>> si_to_api(0.01, "length"), si_to_api(2.5e6, "pv")
+    (10.0, 2.5)
+    """
+    return value * API_UNITS[quantity][1]
 
 
 def factor(quantity: Quantity, units: Mapping[str, str]) -> float:
     """Factor from the chosen display unit of ``quantity`` to the API unit."""
-    if quantity == "force":
-        return FORCE_UNITS[units["force_unit"]]
-    if quantity == "torque":
-        return TORQUE_UNITS[units["torque_unit"]]
-    if quantity == "mass":
-        return MASS_UNITS[units["force_unit"]][1]
-    return LENGTH_UNITS[units["length_unit"]]
+    return display_system(units)[quantity][1]
 
 
 def label(quantity: Quantity, units: Mapping[str, str]) -> str:
     """Display label of the chosen unit, e.g. 'in/s' for speed in inches."""
-    if quantity == "force":
-        return units["force_unit"]
-    if quantity == "torque":
-        return TORQUE_LABELS[units["torque_unit"]]
-    if quantity == "mass":
-        return MASS_UNITS[units["force_unit"]][0]
-    base = units["length_unit"]
-    return {"length": base, "speed": f"{base}/s", "accel": f"{base}/s²"}[quantity]
+    return display_system(units)[quantity][0]
 
 
 def to_api(value: float, quantity: Quantity, units: Mapping[str, str]) -> float:
-    return value * factor(quantity, units)
+    """A value in the reader's unit of ``quantity`` in the API's unit."""
+    return value * display_system(units)[quantity][1]
 
 
 def from_api(value: float, quantity: Quantity, units: Mapping[str, str]) -> float:
-    return value / factor(quantity, units)
+    """A value in the API's unit of ``quantity`` in the reader's unit."""
+    return value / display_system(units)[quantity][1]
 
 
-#: core quantity -> (API unit label, factor from SI to the API unit).
-API_UNITS: dict[CoreQuantity, tuple[str, float]] = {
-    "force": ("N", 1.0),
-    "length": ("mm", 1e3),
-    "speed": ("mm/s", 1e3),
-    "accel": ("mm/s^2", 1e3),
-    "torque": ("N m", 1.0),
-    "rpm": ("rpm", 1.0),
-    "pv": ("MPa m/s", 1e-6),
-    "pressure": ("MPa", 1e-6),
-    "years": ("years", 1.0),
-    "temperature": ("°C", 1.0),
-    "factor": ("", 1.0),
-}
-#: core quantity -> number format in sentences (a speed in rpm needs no decimals).
-TEXT_FORMATS: dict[CoreQuantity, str] = {
-    "force": ".4g",
-    "length": ".4g",
-    "speed": ".4g",
-    "accel": ".4g",
+#: dimension -> number format in sentences (a speed in rpm needs no decimals).
+TEXT_FORMATS: dict[Quantity, str] = {
+    **dict.fromkeys(get_args(Quantity), ".4g"),
     "torque": ".3g",
     "rpm": ".0f",
     "pv": ".3g",
-    "pressure": ".4g",
     "years": ".3g",
     "temperature": "g",
     "factor": "g",
 }
-SWITCHABLE: dict[CoreQuantity, Quantity] = {
-    "force": "force",
-    "length": "length",
-    "speed": "speed",
-    "accel": "accel",
-    "torque": "torque",
-}
 
 
-def api_value(value_si: float, quantity: CoreQuantity | None) -> tuple[float, str]:
+def api_value(value_si: float, quantity: Quantity | None) -> tuple[float, str]:
     """An SI value in the API's unit, with the unit's label.
 
     >>> api_value(0.1, "speed")
@@ -106,11 +285,9 @@ def amount_text(amount: Amount, units: Mapping[str, str] = DEFAULT_UNITS) -> str
     >>> amount_text(Amount(0.0254, "length"), {**DEFAULT_UNITS, "length_unit": "in"})
     '1 in'
     """
-    value, unit = api_value(amount.value, amount.quantity)
-    switch = SWITCHABLE.get(amount.quantity)
-    if switch is not None:
-        value, unit = from_api(value, switch, dict(units)), label(switch, dict(units))
-    return f"{value:{TEXT_FORMATS[amount.quantity]}} {unit}".strip()
+    value, _ = api_value(amount.value, amount.quantity)
+    unit, scale = display_system(units)[amount.quantity]
+    return f"{value / scale:{TEXT_FORMATS[amount.quantity]}} {unit}".strip()
 
 
 def render(phrase: Phrase, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
@@ -130,27 +307,22 @@ def render(phrase: Phrase, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
     return phrase.template.format(**values)
 
 
-#: API unit of a check value -> the display quantity it is converted with.
-API_UNIT_QUANTITY: dict[str, Quantity] = {
-    "N": "force",
-    "mm": "length",
-    "mm/s": "speed",
-    "N m": "torque",
-}
+#: API unit of a check value -> the display dimension it is converted with.
+API_UNIT_QUANTITY: dict[str, Quantity] = {API_SYSTEM[q]: q for q in sorted(SWITCHED)}
 
-#: SI unit of a catalog value -> (display unit, factor from SI).
+#: SI unit text of a catalog value -> the unit it is shown in.
 CATALOG_UNITS = {
-    "m": ("mm", 1e3),
-    "Pa": ("GPa", 1e-9),
-    "Pa m/s": ("MPa m/s", 1e-6),
-    "1/K": ("µm/(m K)", 1e6),
-    "m/m": ("mm/m", 1e3),
-    "kg m2/m": ("kg m²/m", 1.0),
-    "kg/m3": ("kg/m³", 1.0),
-    "C": ("°C", 1.0),
+    "m": "mm",
+    "Pa": "GPa",
+    "Pa m/s": "MPa m/s",
+    "1/K": "µm/(m K)",
+    "m/m": "mm/m",
+    "kg m2/m": "kg m²/m",
+    "kg/m3": "kg/m³",
+    "C": "°C",
 }
-#: catalog field-name prefix -> (display unit, factor from SI), where mm would mislead.
-CATALOG_FIELD_UNITS = {"max_length": ("m", 1.0), "life": ("km", 1e-3)}
+#: catalog field-name prefix -> the unit it is shown in, where mm would mislead.
+CATALOG_FIELD_UNITS = {"max_length": "m", "life": "km"}
 
 
 def sig(value: float, digits: int = 4) -> str:
@@ -186,10 +358,12 @@ def catalog_value(name: str, value: object, unit: str) -> tuple[str, str]:
     >>> catalog_value("outgassing", ((24.0, 0.2), (48.0, 0.26)), "h, %")
     ('(24, 0.2), (48, 0.26)', 'h, %')
     """
-    shown, scale = next(
+    shown = next(
         (u for prefix, u in CATALOG_FIELD_UNITS.items() if name.startswith(prefix)),
-        CATALOG_UNITS.get(unit, (unit, 1.0)),
+        CATALOG_UNITS.get(unit),
     )
+    scale = 1.0 if shown is None else UNITS[shown].from_si
+    shown = unit if shown is None else shown
     if not isinstance(value, tuple | list):
         return _catalog_text(value, scale), shown
     texts = [_catalog_text(v, scale) for v in value]

@@ -15,7 +15,7 @@ from app.web.figures import TOP, chart_candidates, result_figures
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
-LBF, INCH, OZ_IN = 4.4482216152605, 25.4, 0.0070615518333
+LBF, INCH, OZ_IN = 4.4482216152605, 25.4, 0.0070615518142260435  # N, mm, N m (NIST SP 811)
 
 
 def plain(result: SelectOut) -> dict[str, Any]:

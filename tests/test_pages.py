@@ -28,7 +28,7 @@ API_AXIS = {"load_n": 100, "lead_mm": 10, "speed_mm_s": 50, "length_mm": 500}
 HX = {"HX-Request": "true"}
 LBF = 4.4482216152605
 INCH = 25.4
-OZ_IN = 0.0070615518333
+OZ_IN = 0.0070615518142260435  # N m: 4.4482216152605 N x 0.0254 m / 16 (NIST SP 811)
 
 
 def soup(response: Response) -> BeautifulSoup:

@@ -14,8 +14,8 @@ from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.files import Layer
 from app.catalog.models import Sourced
+from app.units import from_si, to_si
 
-MM = 1e-3
 DECLARATIONS = frozenset({"id", "name", "extends", "id_pattern", "thread_form"})
 VARIANT_FIELDS = frozenset(
     {
@@ -87,12 +87,13 @@ class Family:
         """A candidate's id from the family's pattern (seed: ``B4000-L2-TFE``; ISO:
         ``Tr8x8(P2)-acetal``, where ``{multi_start}`` is "(P2)" for a multi-start screw
         and empty for a single start). Without a pitch, the pitch is the lead."""
-        pitch_mm = lead_m / MM if pitch_m is None else pitch_m / MM
-        starts = round(lead_m / MM / pitch_mm)
+        lead_mm = from_si(lead_m, "mm")
+        pitch_mm = lead_mm if pitch_m is None else from_si(pitch_m, "mm")
+        starts = round(lead_mm / pitch_mm)
         return self.id_pattern.format(
             series=series,
-            lead_mm=lead_m / MM,
-            d_mm=d_m / MM,
+            lead_mm=lead_mm,
+            d_mm=from_si(d_m, "mm"),
             pitch_mm=pitch_mm,
             starts=starts,
             multi_start=f"(P{pitch_mm:g})" if starts > 1 else "",
@@ -158,7 +159,9 @@ def _traverse(layer: Layer) -> Sourced | None:
         if not (low < high and speed > 0 and low >= previous_to - 1e-12):
             raise entry.fail(TRAVERSE_FIELD, "bands must run upward in lead, from < to, speed > 0")
         previous_to = high
-    bands = tuple((low * MM, high * MM, speed * MM) for low, high, speed in rows)
+    bands = tuple(
+        (to_si(low, "mm"), to_si(high, "mm"), to_si(speed, "mm/s")) for low, high, speed in rows
+    )
     return Sourced(bands, "m, m, m/s", entry.prov(TRAVERSE_FIELD))
 
 

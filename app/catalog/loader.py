@@ -27,6 +27,7 @@ from app.catalog.series import build_series
 from app.core.robustness import variants_for
 from app.core.table import CandidateTable
 from app.paths import resource_dir
+from app.units import to_si
 
 USER = "user"
 MATERIAL_FIELDS = frozenset(
@@ -38,12 +39,18 @@ def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
     entry = Entry(file, f"materials.{name}", table)
     entry.check_known(MATERIAL_FIELDS)
     return Material(
-        Sourced(entry.number("youngs_modulus_gpa") * 1e9, "Pa", entry.prov("youngs_modulus_gpa")),
+        Sourced(
+            to_si(entry.number("youngs_modulus_gpa"), "GPa"),
+            "Pa",
+            entry.prov("youngs_modulus_gpa"),
+        ),
         Sourced(entry.number("density_kg_m3"), "kg/m3", entry.prov("density_kg_m3")),
         Sourced(entry.number("expansion_per_c"), "1/K", entry.prov("expansion_per_c")),
         (
             Sourced(
-                entry.number("yield_strength_mpa") * 1e6, "Pa", entry.prov("yield_strength_mpa")
+                to_si(entry.number("yield_strength_mpa"), "MPa"),
+                "Pa",
+                entry.prov("yield_strength_mpa"),
             )
             if "yield_strength_mpa" in table
             else None

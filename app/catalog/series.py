@@ -15,9 +15,8 @@ from app.catalog.family import Family, IdVariant
 from app.catalog.models import Material, Series, Sourced
 from app.core.formulas import geometry, pv, trapezoidal
 from app.core.model import Provenance, ScrewSpec
+from app.units import SI_UNITS, UNITS, from_si, to_si
 
-MM = 1e-3
-INCHES_PER_M = 1 / 0.0254
 SERIES_FIELDS = frozenset(
     {
         "name",
@@ -63,21 +62,21 @@ RANGED_SERIES = (
     "nut_length_to_d",
     "nut_length_mm",
 )
-#: Variant values a range may be given for: ScrewSpec field and factor to SI.
+#: Variant values a range may be given for: ScrewSpec field and the catalog's unit.
 RANGED_VARIANT = {
-    "friction_dynamic": ("friction_dynamic", 1.0),
-    "friction_static": ("friction_static", 1.0),
-    "pv_limit_mpa_m_s": ("pv_limit_pa_m_s", 1e6),
-    "max_pressure_mpa": ("max_pressure_pa", 1e6),
-    "bearing_pv_limit_mpa_m_s": ("nut_pv_limit_pa_m_s", 1e6),
-    "max_sliding_speed_m_s": ("max_sliding_speed_m_s", 1.0),
-    "max_length_mm": ("max_length_m", MM),
+    "friction_dynamic": ("friction_dynamic", ""),
+    "friction_static": ("friction_static", ""),
+    "pv_limit_mpa_m_s": ("pv_limit_pa_m_s", "MPa m/s"),
+    "max_pressure_mpa": ("max_pressure_pa", "MPa"),
+    "bearing_pv_limit_mpa_m_s": ("nut_pv_limit_pa_m_s", "MPa m/s"),
+    "max_sliding_speed_m_s": ("max_sliding_speed_m_s", "m/s"),
+    "max_length_mm": ("max_length_m", "mm"),
 }
 #: Variant values that rate the nut by its contact pressure (they need a nut length).
 BEARING_VALUES = {
-    "max_pressure": ("max_pressure_mpa", "Pa", 1e6),
-    "bearing_pv_limit": ("bearing_pv_limit_mpa_m_s", "Pa m/s", 1e6),
-    "max_sliding_speed": ("max_sliding_speed_m_s", "m/s", 1.0),
+    "max_pressure": ("max_pressure_mpa", "MPa"),
+    "bearing_pv_limit": ("bearing_pv_limit_mpa_m_s", "MPa m/s"),
+    "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
 }
 Ends = Mapping[str, tuple[Mapping[str, Any], Mapping[str, Any]]]
 #: What a candidate's provenance says for a nut rating or thread value its family gives
@@ -119,26 +118,27 @@ def _iso_root(entry: Entry, od_m: float) -> Sourced:
     the pitch's (a standard value, "standard")."""
     if entry.has("root_diameter_mm"):
         raise entry.fail("root_diameter_mm", "follows from pitch_mm (ISO 2904): leave it out")
-    pitch_m = entry.number("pitch_mm") * MM
+    pitch_m = to_si(entry.number("pitch_mm"), "mm")
     try:
         root_m = trapezoidal.minor_diameter(od_m, pitch_m)
     except ValueError as exc:
         raise entry.fail("pitch_mm", str(exc)) from exc
-    ac_mm = trapezoidal.crest_clearance(pitch_m) / MM
-    rule = f"ISO 2904: d3 = d - 2 (0.5 P + a_c), P = {pitch_m / MM:g} mm, a_c = {ac_mm:g} mm"
+    ac_mm = from_si(trapezoidal.crest_clearance(pitch_m), "mm")
+    p_mm = entry.number("pitch_mm")
+    rule = f"ISO 2904: d3 = d - 2 (0.5 P + a_c), P = {p_mm:g} mm, a_c = {ac_mm:g} mm"
     return Sourced(root_m, "m", Provenance(entry.prov("pitch_mm").kind, rule))
 
 
 def _diameters(entry: Entry) -> tuple[Sourced, Sourced]:
     """Outer and root diameter; the root from the ISO pitch, else from
     ``root_diameter_ratio`` when not given."""
-    od_m = entry.number("outer_diameter_mm") * MM
+    od_m = to_si(entry.number("outer_diameter_mm"), "mm")
     if entry.has("pitch_mm"):
         rd_name = "pitch_mm"
         root = _iso_root(entry, od_m)
     elif entry.has("root_diameter_mm"):
         rd_name = "root_diameter_mm"
-        root = Sourced(entry.number(rd_name) * MM, "m", entry.prov(rd_name))
+        root = _sourced(entry, rd_name, "mm")
     else:
         rd_name = "root_diameter_ratio"
         ratio = entry.number(rd_name)
@@ -156,11 +156,11 @@ def _design_load(entry: Entry, d_p: float, h: float) -> Sourced | None:
         return Sourced(entry.number("design_load_n"), "N", entry.prov("design_load_n"))
     if not entry.has("design_contact_pressure_mpa"):
         return None
-    pressure = entry.number("design_contact_pressure_mpa") * 1e6
+    pressure_mpa = entry.number("design_contact_pressure_mpa")
     factor = entry.number("design_load_factor")
-    load = factor * pressure * pv.contact_area(math.pi * d_p, h)
+    load = factor * to_si(pressure_mpa, "MPa") * pv.contact_area(math.pi * d_p, h)
     rule = (
-        f"{factor:g} x {pressure / 1e6:g} MPa x 3 pi d_p h (seed three-thread area; "
+        f"{factor:g} x {pressure_mpa:g} MPa x 3 pi d_p h (seed three-thread area; "
         f"pressure and factor assumed)"
     )
     return Sourced(load, "N", Provenance("derived", rule))
@@ -184,9 +184,9 @@ def _leads(entry: Entry, od_m: float) -> Sourced:
     listed = _listed_leads_mm(entry)
     name = "starts" if entry.has("starts") else "leads_mm"
     if not entry.has("max_lead_to_od"):
-        return Sourced(tuple(x * MM for x in listed), "m", entry.prov(name))
+        return Sourced(tuple(to_si(x, "mm") for x in listed), "m", entry.prov(name))
     max_lead_m = entry.number("max_lead_to_od") * od_m
-    leads = tuple(x * MM for x in listed if x * MM <= max_lead_m + 1e-12)
+    leads = tuple(to_si(x, "mm") for x in listed if to_si(x, "mm") <= max_lead_m + 1e-12)
     return Sourced(leads, "m", entry.prov(name))
 
 
@@ -194,10 +194,11 @@ def _inertia(entry: Entry, d2: Sourced | None, material: Material) -> Sourced:
     """Inertia per length: given per inch; for a standard (ISO) screw that gives none, a
     solid rod at its pitch diameter d2 (derived); otherwise required."""
     if d2 is None or entry.has("inertia_kg_m2_per_in"):
-        inertia = entry.number("inertia_kg_m2_per_in") * INCHES_PER_M
+        inertia = to_si(entry.number("inertia_kg_m2_per_in"), "kg m²/in")
         return Sourced(inertia, "kg m2/m", entry.prov("inertia_kg_m2_per_in"))
     inertia = trapezoidal.solid_rod_inertia_per_length(material.density_kg_m3.value, d2.value)
-    rule = f"solid rod rho pi d^4 / 32 at the pitch diameter d2 = {d2.value / MM:g} mm"
+    d2_mm = from_si(d2.value, "mm")
+    rule = f"solid rod rho pi d^4 / 32 at the pitch diameter d2 = {d2_mm:g} mm"
     return Sourced(inertia, "kg m2/m", Provenance("derived", rule))
 
 
@@ -207,7 +208,7 @@ def _thread_fields(entry: Entry, od_m: float, family: Family) -> dict[str, Sourc
         return {}
     if not math.isclose(family.half_angle_deg.value, ISO_HALF_ANGLE_DEG):
         raise entry.fail("pitch_mm", "pitch_mm describes an ISO 2904 thread (15 deg half-angle)")
-    pitch_m = entry.number("pitch_mm") * MM
+    pitch_m = to_si(entry.number("pitch_mm"), "mm")
     rule = "ISO 2904 basic profile: d2 = d - 0.5 P, H1 = 0.5 P"
     standard = Provenance(entry.prov("pitch_mm").kind, rule)
     fields = {
@@ -216,7 +217,7 @@ def _thread_fields(entry: Entry, od_m: float, family: Family) -> dict[str, Sourc
         "flank_height": Sourced(trapezoidal.flank_height(pitch_m), "m", standard),
     }
     if entry.has("nut_length_mm"):
-        fields["nut_length"] = _sourced(entry, "nut_length_mm", "m", MM)
+        fields["nut_length"] = _sourced(entry, "nut_length_mm", "mm")
     elif entry.has("nut_length_to_d"):
         ratio = entry.number("nut_length_to_d")
         rule = f"{ratio:g} x d: {entry.prov('nut_length_to_d').source}"
@@ -232,8 +233,10 @@ def _material(entry: Entry, materials: Mapping[str, Material]) -> Material:
     return materials[name]
 
 
-def _sourced(entry: Entry, name: str, unit: str, scale: float = 1.0) -> Sourced:
-    return Sourced(entry.number(name) * scale, unit, entry.prov(name))
+def _sourced(entry: Entry, name: str, unit: str = "") -> Sourced:
+    """A catalog number given in ``unit``, in SI with its SI unit."""
+    si_unit = SI_UNITS[UNITS[unit].dimension]
+    return Sourced(to_si(entry.number(name), unit), si_unit, entry.prov(name))
 
 
 def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[str, Sourced]:
@@ -255,9 +258,9 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
         "screw_expansion": material.expansion_per_k,
         "thread_half_angle": family.half_angle_deg,
         "thread_form": family.thread_form,
-        **_optional(entry, {"friction_static": ("friction_static", "", 1.0)}),
+        **_optional(entry, {"friction_static": ("friction_static", "")}),
         "drag_torque": Sourced(entry.range("drag_torque_nm"), "N m", entry.prov("drag_torque_nm")),
-        "backlash": Sourced((low * MM, high * MM), "m", entry.prov("backlash_mm")),
+        "backlash": Sourced((to_si(low, "mm"), to_si(high, "mm")), "m", entry.prov("backlash_mm")),
         **({} if load is None else {"design_load": load}),
         "leads": _leads(entry, od.value),
         **thread,
@@ -266,23 +269,21 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
 
 
 #: Values a family may leave out (a vendor-neutral family has no vacuum or accuracy data):
-#: field name -> (catalog key, SI unit, factor from the catalog unit), in display order.
+#: field name -> (catalog key, the catalog's unit), in display order.
 ACCURACY_VALUES = {
-    "lead_accuracy": ("lead_accuracy_mm_per_mm", "m/m", 1.0),
-    "repeatability": ("repeatability_mm", "m", MM),
+    "lead_accuracy": ("lead_accuracy_mm_per_mm", "m/m"),
+    "repeatability": ("repeatability_mm", "mm"),
 }
 NUT_VALUES = {
-    "straightness": ("straightness_mm_per_300mm", "m/m", MM / 0.3),
-    "nut_expansion": ("nut_expansion_per_c", "1/K", 1.0),
-    "nut_tensile_strength": ("nut_tensile_strength_mpa", "Pa", 1e6),
+    "straightness": ("straightness_mm_per_300mm", "mm/300 mm"),
+    "nut_expansion": ("nut_expansion_per_c", "1/K"),
+    "nut_tensile_strength": ("nut_tensile_strength_mpa", "MPa"),
 }
 
 
-def _optional(entry: Entry, values: Mapping[str, tuple[str, str, float]]) -> dict[str, Sourced]:
+def _optional(entry: Entry, values: Mapping[str, tuple[str, str]]) -> dict[str, Sourced]:
     return {
-        name: _sourced(entry, key, unit, scale)
-        for name, (key, unit, scale) in values.items()
-        if entry.has(key)
+        name: _sourced(entry, key, unit) for name, (key, unit) in values.items() if entry.has(key)
     }
 
 
@@ -318,7 +319,7 @@ def _bearing_table(v: Entry) -> Sourced:
         raise v.fail(name, "rows must rise in sliding speed, at least one row")
     if any(row[1] <= 0 for row in rows):
         raise v.fail(name, "every allowable pressure must be > 0")
-    table = tuple((speed, pressure * 1e6) for speed, pressure in rows)
+    table = tuple((speed, to_si(pressure, "MPa")) for speed, pressure in rows)
     return Sourced(table, "m/s, Pa", v.prov(name))
 
 
@@ -329,12 +330,13 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
         "oil_compatible": Sourced(v.flag("oil_compatible"), "", v.prov("oil_compatible")),
     }
     if v.has("pv_limit_mpa_m_s"):
-        fields["pv_limit"] = _sourced(v, "pv_limit_mpa_m_s", "Pa m/s", 1e6)
+        fields["pv_limit"] = _sourced(v, "pv_limit_mpa_m_s", "MPa m/s")
     if v.has("max_length_mm"):
-        fields["max_length"] = _sourced(v, "max_length_mm", "m", MM)
+        fields["max_length"] = _sourced(v, "max_length_mm", "mm")
     if v.has("life_million_cm"):
         low, high = v.range("life_million_cm")
-        fields["life"] = Sourced((low * 1e4, high * 1e4), "m", v.prov("life_million_cm"))
+        life = (to_si(low, "million cm"), to_si(high, "million cm"))
+        fields["life"] = Sourced(life, "m", v.prov("life_million_cm"))
     if v.has("friction_static"):
         fields["friction_static"] = _sourced(v, "friction_static", "")
     if v.has("nut_material"):
@@ -351,10 +353,10 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
 def _variant_ends(v: Entry) -> dict[str, tuple[dict[str, float], dict[str, float]]]:
     """For each ranged variant value, its ScrewSpec field at the low and the high end."""
     out = {}
-    for name, (spec_field, scale) in RANGED_VARIANT.items():
+    for name, (spec_field, unit) in RANGED_VARIANT.items():
         span = v.ends(name)
         if span is not None:
-            out[name] = ({spec_field: span[0] * scale}, {spec_field: span[1] * scale})
+            out[name] = ({spec_field: to_si(span[0], unit)}, {spec_field: to_si(span[1], unit)})
     return out
 
 

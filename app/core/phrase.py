@@ -9,16 +9,24 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
-#: What an amount measures; the edge picks the unit (e.g. "length": mm or in).
+#: What an amount measures: the one list of dimensions in the app. The core holds each in
+#: the unit after it; ``app.units`` holds every unit of each and converts at the edges.
 Quantity = Literal[
     "force",  # N
     "length",  # m
     "speed",  # m/s
     "accel",  # m/s^2
     "torque",  # N m
+    "mass",  # kg
+    "inertia",  # kg m^2
+    "inertia_per_length",  # kg m^2/m
+    "density",  # kg/m^3
     "rpm",  # rev/min
     "pv",  # Pa m/s
     "pressure",  # Pa
+    "expansion",  # 1/K
+    "strain",  # m/m
+    "time",  # s
     "years",  # year
     "temperature",  # deg C
     "factor",  # dimensionless

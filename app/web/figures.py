@@ -17,7 +17,7 @@ from app.core.model import Application
 from app.core.screening import screen_table
 from app.core.table import CandidateTable, per_table
 from app.schemas import CandidateBaseOut, PageSelectionOut, SelectOut
-from app.units import Display, api_value, sig
+from app.units import Display, api_value, si_to_api, sig
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
 from app.web.chart_style import layout as _layout
@@ -417,7 +417,7 @@ def lead_sweep_figure(sweep: list[LeadPoint], top: CandidateBaseOut, d: Display)
     the trade-off that picks the lead. Torque on the left axis, the two shares of their
     limits (per cent) on the right; the self-locking band (with the friction margin)
     shaded, the chosen lead dashed."""
-    leads = [_round(d.value(p.lead_m * 1e3, "length")) for p in sweep]
+    leads = [_round(d.value(si_to_api(p.lead_m, "length"), "length")) for p in sweep]
     data = _sweep_traces(sweep, leads, d)
     locking = _round(d.value(top.max_self_locking_lead_with_margin_mm, "length"))
     chosen = _round(d.value(top.lead_mm, "length"))

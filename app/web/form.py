@@ -21,6 +21,7 @@ from app.units import (
     FORCE_UNITS,
     LENGTH_UNITS,
     TORQUE_UNITS,
+    UNIT_QUANTITIES,
     Quantity,
     from_api,
     sig,
@@ -28,12 +29,6 @@ from app.units import (
 )
 
 UNIT_CHOICES = {"force_unit": FORCE_UNITS, "length_unit": LENGTH_UNITS, "torque_unit": TORQUE_UNITS}
-#: display-unit key -> the quantities whose numbers it sets.
-UNIT_QUANTITIES: dict[str, tuple[Quantity, ...]] = {
-    "force_unit": ("force", "mass"),
-    "length_unit": ("length", "speed", "accel"),
-    "torque_unit": ("torque",),
-}
 #: prefix of the hidden fields that record which units the form's numbers are in.
 ENTERED_PREFIX = "from_"
 #: prefix of the hidden fields that keep a number as typed, with its unit ('50|N').

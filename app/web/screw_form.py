@@ -18,7 +18,7 @@ from pydantic.fields import FieldInfo
 
 from app.core.model import ScrewSpec
 from app.schemas import CustomScrewIn, MaterialIn
-from app.units import sig
+from app.units import si_to_api, sig
 from app.web.form import BOUND_MESSAGES, PLAIN_MESSAGES, read_number
 
 #: the material choice that takes the user's own modulus, density and yield strength.
@@ -187,14 +187,14 @@ def catalog_screw_query(spec: ScrewSpec) -> str:
     custom form's query (API units), to try the same screw with other values."""
     pv_limit = spec.pv_limit_pa_m_s or spec.nut_pv_limit_pa_m_s
     values = {
-        "outer_diameter_mm": spec.outer_diameter_m * 1e3,
-        "root_diameter_mm": spec.root_diameter_m * 1e3,
-        "lead_mm": spec.lead_m * 1e3,
+        "outer_diameter_mm": si_to_api(spec.outer_diameter_m, "length"),
+        "root_diameter_mm": si_to_api(spec.root_diameter_m, "length"),
+        "lead_mm": si_to_api(spec.lead_m, "length"),
         "thread_half_angle_deg": math.degrees(spec.thread_half_angle_rad),
         "friction_dynamic": spec.friction_dynamic,
         "friction_static": spec.friction_static,
         "drag_torque_nm": spec.drag_torque_max_nm,
-        "pv_limit_mpa_m_s": None if pv_limit is None else pv_limit * 1e-6,
+        "pv_limit_mpa_m_s": None if pv_limit is None else si_to_api(pv_limit, "pv"),
         **_material_values(spec),
     }
     return urlencode(

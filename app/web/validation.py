@@ -12,13 +12,13 @@ from dataclasses import dataclass
 
 from app.core.formulas import buckling, efficiency, geometry, pv, torque
 from app.core.formulas import critical_speed as cs
+from app.units import from_si, to_si
 
 #: largest relative difference from a published value the app may show.
 TOLERANCE = 0.01
-IN = 0.0254
-LBF = 4.4482216152605
-PSI = 6894.757293168
-FT_PER_MIN = 0.00508
+#: one inch [m] and one pound-force [N], for the examples printed in inches and pounds.
+IN = to_si(1.0, "in")
+LBF = to_si(1.0, "lbf")
 STEEL_E, STEEL_RHO = 206e9, 7850.0
 SQUARE = 1.0
 
@@ -72,7 +72,7 @@ def _bnb_pv() -> float:
     d, length = 0.625 * IN, (1 + 1 / 32) * IN
     p = pv.contact_pressure(35 * LBF, d * length)
     v = pv.surface_speed(120.0, geometry.helix_travel(0.0, d))
-    return p * v / (PSI * FT_PER_MIN)
+    return from_si(p * v, "psi ft/min")
 
 
 def _euler(e_pa: float, d_or_i: float, length_m: float, fixity: str, round_d: bool) -> float:

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 AXIS = "load=100&lead=10&speed=50&length=500"
-OZ_IN = 0.0070615518333
+OZ_IN = 0.0070615518142260435  # N m: 4.4482216152605 N x 0.0254 m / 16 (NIST SP 811)
 PNG_BUTTON = ".modebar-btn[data-title='Download plot as a PNG']"
 
 

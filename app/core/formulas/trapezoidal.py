@@ -24,7 +24,8 @@ def crest_clearance(pitch_m: float) -> float:
     for largest_pitch_m, clearance_m in CREST_CLEARANCE_BY_PITCH_M:
         if pitch_m <= largest_pitch_m + 1e-12:
             return clearance_m
-    raise ValueError(f"pitch {pitch_m * 1e3:g} mm is above the ISO 2904 range (44 mm)")
+    largest_m = CREST_CLEARANCE_BY_PITCH_M[-1][0]
+    raise ValueError(f"pitch {pitch_m:g} m is above the ISO 2904 range (up to {largest_m:g} m)")
 
 
 def pitch_diameter(nominal_diameter_m: float, pitch_m: float) -> float:
