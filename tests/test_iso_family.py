@@ -12,8 +12,8 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog, load_catalog
-from app.core.model import Application
 from app.core.evaluate import evaluate
+from app.core.model import Application
 from app.core.robustness import at_values, robustness
 from app.core.selection import select
 from app.inputs import ApplicationIn
