@@ -149,14 +149,19 @@ class CatalogIndex:
 
 
 def _sizes(table: CandidateTable) -> Mapping[SizeKey, NDArray[np.intp]]:
-    """The rows of each size and nut of ``table``, shortest lead first."""
-    groups: dict[SizeKey, list[int]] = {}
-    for i, s in enumerate(table.screws):
-        groups.setdefault((s.series_id, s.coated, s.anti_backlash), []).append(i)
-    sizes = {}
-    for key, rows in groups.items():
-        at = np.array(rows, dtype=np.intp)
-        at = at[np.argsort(table.lead_m[at], kind="stable")]
-        at.setflags(write=False)
-        sizes[key] = at
-    return MappingProxyType(sizes)
+    """The rows of each size and nut of ``table``, shortest lead first (one stable sort
+    by size, then lead)."""
+    codes: dict[SizeKey, int] = {}
+    code = np.array(
+        [
+            codes.setdefault((s.series_id, s.coated, s.anti_backlash), len(codes))
+            for s in table.screws
+        ],
+        dtype=np.intp,
+    )
+    if not codes:
+        return MappingProxyType({})
+    order = np.lexsort((table.lead_m, code))
+    order.setflags(write=False)  # the groups below are views of it
+    groups = np.split(order, np.flatnonzero(np.diff(code[order])) + 1)
+    return MappingProxyType(dict(zip(codes, groups, strict=True)))
