@@ -99,11 +99,10 @@ class CatalogIndex:
     def build(cls, screws: Sequence[ScrewSpec], with_variants: bool = True) -> "CatalogIndex":
         """The index of ``screws``: columns, variant rows (unless ``with_variants`` is
         False), rows by id and by size; every array read-only."""
-        table = CandidateTable.build(screws)
+        table = _read_only(CandidateTable.build(screws))
         variants = build_variants(table.screws) if with_variants else None
-        for frozen in (table, *([variants.table] if variants else [])):
-            for name in COLUMNS:
-                getattr(frozen, name).setflags(write=False)
+        if variants is not None:
+            _read_only(variants.table)
         return cls(
             table=table,
             variants=variants,
@@ -118,12 +117,15 @@ class CatalogIndex:
         return self.eligible_rows.get(filters(app), lambda: self._eligible(app))
 
     def _eligible(self, app: Application) -> Eligible:
+        """The eligible rows, read-only: every query with these filters reads them."""
         index = np.flatnonzero(eligible_mask(app, self.table))
-        index.setflags(write=False)  # shared by every query with these filters
-        rows = self.table.take(index)
+        index.setflags(write=False)
+        rows = _read_only(self.table.take(index))
         return Eligible(index, rows, self._joint(index, rows))
 
     def _joint(self, index: NDArray[np.intp], rows: CandidateTable) -> Joint | None:
+        """``rows`` (at ``index`` of ``table``) followed by their variant rows, when the
+        index has variant rows and these are at most ``JOINT_MAX_VARIANTS``."""
         if self.variants is None:
             return None
         picked = self.variants.rows(index.tolist())
@@ -132,8 +134,8 @@ class CatalogIndex:
         counts = np.diff(self.variants.start)[index]
         start = np.concatenate(([0], np.cumsum(counts))).astype(np.intp)
         names = tuple(self.variants.names[r] for r in picked.tolist())
-        own = Variants(self.variants.table.take(picked), names, start)
-        return Joint(rows.join(own.table), len(index), own)
+        own = Variants(_read_only(self.variants.table.take(picked)), names, start)
+        return Joint(_read_only(rows.join(own.table)), len(index), own)
 
     def row(self, position: int) -> CandidateTable:
         """The candidate at ``position`` of ``table`` as a table of one."""
@@ -146,6 +148,13 @@ class CatalogIndex:
             return self.variants, positions
         screws = self.table.screws
         return build_variants([screws[p] for p in positions]), range(len(positions))
+
+
+def _read_only(table: CandidateTable) -> CandidateTable:
+    """``table``, its columns made read-only (shared by every query that reads it)."""
+    for name in COLUMNS:
+        getattr(table, name).setflags(write=False)
+    return table
 
 
 def _sizes(table: CandidateTable) -> Mapping[SizeKey, NDArray[np.intp]]:

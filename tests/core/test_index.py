@@ -131,11 +131,14 @@ def test_the_index_is_built_once_at_load(monkeypatch: pytest.MonkeyPatch) -> Non
 
 
 def test_the_index_is_read_only(catalog: Catalog) -> None:
-    """Every column of the table and of the variant rows refuses writes; the rows by id
-    and by size are read-only mappings of read-only arrays."""
+    """Every column of the table and of the variant rows refuses writes, and so do the
+    eligible rows kept for a set of filters and their joint table; the rows by id and by
+    size are read-only mappings of read-only arrays."""
     index = catalog.index
     assert index.variants is not None
-    for table in (index.table, index.variants.table):
+    kept = index.eligible(Application(load_n=50.0, speed_m_s=0.05, length_m=0.5, lead_m=0.01))
+    assert kept.joint is not None
+    for table in (index.table, index.variants.table, kept.table, kept.joint.table):
         for name in COLUMNS:
             with pytest.raises(ValueError, match="read-only"):
                 getattr(table, name)[:1] = 0
