@@ -23,6 +23,8 @@ CORE = Path(__file__).resolve().parents[2] / "app" / "core"
 MUTATORS = frozenset(
     {"append", "extend", "insert", "add", "update", "setdefault", "pop", "popitem", "clear"}
 )
+#: Decorators that keep results between calls.
+MEMOIZERS = frozenset({"cache", "lru_cache", "cached_property"})
 #: The check registry fills this list as its modules import (one entry per check), once.
 IMPORT_TIME_REGISTRIES = {("checks/__init__.py", "_found")}
 
@@ -41,13 +43,18 @@ def _module_names(tree: ast.Module) -> set[str]:
 def _state_writes(source: str, where: str) -> set[str]:
     """Where a function of the module ``source`` (at ``where`` under app/core) calls
     ``id()``, changes a module-level name in place (``NAME[k] = v``, ``NAME.append(v)``,
-    ...) or rebinds one (``global``)."""
+    ...), rebinds one (``global``) or keeps its results (``functools.lru_cache``)."""
     tree = ast.parse(source)
     module = _module_names(tree)
     found = []
     for func in ast.walk(tree):
         if not isinstance(func, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda):
             continue
+        for deco in getattr(func, "decorator_list", []):
+            called = deco.func if isinstance(deco, ast.Call) else deco
+            label = called.attr if isinstance(called, ast.Attribute) else getattr(called, "id", "")
+            if label in MEMOIZERS:
+                found.append(f"{label} on {func.name} at line {deco.lineno}")
         for node in ast.walk(func):
             name = None
             call = node.func if isinstance(node, ast.Call) else None
@@ -66,8 +73,9 @@ def _state_writes(source: str, where: str) -> set[str]:
 
 
 def test_the_core_keeps_no_state_between_queries() -> None:
-    """No function of app/core changes a module-level dict, list or set or keys anything
-    by ``id()``: what a query reads is passed in (the catalog index), not remembered."""
+    """No function of app/core changes a module-level dict, list or set, keys anything
+    by ``id()`` or keeps its results: what a query reads is passed in (the catalog
+    index), not remembered."""
     modules = sorted(CORE.rglob("*.py"))
     assert len(modules) > 20
     found = {
