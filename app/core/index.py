@@ -128,10 +128,10 @@ class CatalogIndex:
         index has variant rows and these are at most ``JOINT_MAX_VARIANTS``."""
         if self.variants is None:
             return None
-        picked = self.variants.rows(index.tolist())
-        if len(picked) > JOINT_MAX_VARIANTS:
-            return None
         counts = np.diff(self.variants.start)[index]
+        if counts.sum() > JOINT_MAX_VARIANTS:
+            return None
+        picked = self.variants.rows(index.tolist())
         start = np.concatenate(([0], np.cumsum(counts))).astype(np.intp)
         names = tuple(self.variants.names[r] for r in picked.tolist())
         own = Variants(_read_only(self.variants.table.take(picked)), names, start)
