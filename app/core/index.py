@@ -22,8 +22,9 @@ from app.core.robustness import Variants, build_variants
 from app.core.screening import Filters, eligible_mask, filters
 from app.core.table import COLUMNS, CandidateTable
 
-#: One size and nut of a series, every lead: (series id, coated, anti-backlash).
-SizeKey = tuple[str, bool, bool]
+#: One size and nut of a series, every lead: (series id, nut material, coated,
+#: anti-backlash).
+SizeKey = tuple[str, str, bool, bool]
 #: Eligible candidates whose variant rows number at most this are screened together with
 #: them (a screening costs about as much for a few rows as for a few hundred).
 JOINT_MAX_VARIANTS = 600
@@ -150,6 +151,11 @@ class CatalogIndex:
         return build_variants([screws[p] for p in positions]), range(len(positions))
 
 
+def size_of(screw: ScrewSpec) -> SizeKey:
+    """The size and nut ``screw`` is one lead of."""
+    return (screw.series_id, screw.nut_material, screw.coated, screw.anti_backlash)
+
+
 def _read_only(table: CandidateTable) -> CandidateTable:
     """``table``, its columns made read-only (shared by every query that reads it)."""
     for name in COLUMNS:
@@ -162,10 +168,7 @@ def _sizes(table: CandidateTable) -> Mapping[SizeKey, NDArray[np.intp]]:
     by size, then lead)."""
     codes: dict[SizeKey, int] = {}
     code = np.array(
-        [
-            codes.setdefault((s.series_id, s.coated, s.anti_backlash), len(codes))
-            for s in table.screws
-        ],
+        [codes.setdefault(size_of(s), len(codes)) for s in table.screws],
         dtype=np.intp,
     )
     if not codes:

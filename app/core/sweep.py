@@ -22,8 +22,8 @@ class LeadPoint:
 
 
 def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[LeadPoint]:
-    """Every lead of ``size`` (series id, coated, anti-backlash) in ``index``, screened
-    for ``app`` at any lead, shortest lead first; empty for a size the index lacks.
+    """Every lead of ``size`` (``index.size_of`` a screw) in ``index``, screened for
+    ``app`` at any lead, shortest lead first; empty for a size the index lacks.
 
     The speed share is n / n_allowed (the critical speed with its safety factor); the PV
     share is the PV check's utilisation, PV / PV_limit.

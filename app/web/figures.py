@@ -10,6 +10,7 @@ from typing import Any
 
 from app.catalog import Catalog
 from app.core.formulas import critical_speed, pv
+from app.core.index import size_of
 from app.core.sweep import LeadPoint, lead_sweep
 from app.schemas import CandidateBaseOut, PageSelectionOut, SelectOut
 from app.units import Display, api_value, sig
@@ -424,8 +425,11 @@ def result_figures(
         "torque": torque_figure(candidates, app.max_torque_nm, d),
     }
     top = candidates[0]
-    size = (top.series, top.coated, top.anti_backlash)
-    sweep = lead_sweep(app, catalog.index, size) if catalog is not None else []
+    sweep = (
+        lead_sweep(app, catalog.index, size_of(catalog.by_id[top.id]))
+        if catalog is not None
+        else []
+    )
     if len(sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(sweep, top, d)
     if candidates[0].segments:

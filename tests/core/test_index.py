@@ -12,7 +12,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog
-from app.core.index import CatalogIndex
+from app.core.index import CatalogIndex, size_of
 from app.core.model import Application
 from app.core.quantities import operating_point
 from app.core.table import COLUMNS, CandidateTable
@@ -129,7 +129,7 @@ def test_the_index_is_built_once_at_load(monkeypatch: pytest.MonkeyPatch) -> Non
         assert len(built) == 1 and app.state.catalog.index is built[0]
         for params in (query, {**query, "lead_mm": 10.0}):
             assert client.get("/api/v1/select", params=params).status_code == 200
-        page = {"load": "120", "speed": "40", "length": "400"}
+        page = {"load": "120", "speed": "40", "length": "400", "lead": "10"}
         assert "lead_sweep" in client.get("/", params=page).text
         assert client.get("/detail", params={**page, "id": "ZBX8000-L10"}).status_code == 200
         for screw in ({"catalog_id": "ZBX8000-L10"}, custom):
@@ -163,13 +163,12 @@ def test_rows_by_id_and_by_size(catalog: Catalog) -> None:
     assert len(index.positions) == len(index.table) == len(catalog.screws)
     for sid, row in index.positions.items():
         assert index.table.screws[row].id == sid
-    rows = index.sizes[("B8000", False, False)]
+    rows = index.sizes[("B8000", "polyacetal", False, False)]
     leads_mm = [round(float(index.table.lead_m[r]) * 1e3, 6) for r in rows]
     assert leads_mm == [1, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 12.7, 15, 20, 25, 25.4, 30, 40, 50]
     assert sum(map(len, index.sizes.values())) == len(index.table)
-    for (series, coated, anti_backlash), at in index.sizes.items():
-        for s in (index.table.screws[r] for r in at):
-            assert (s.series_id, s.coated, s.anti_backlash) == (series, coated, anti_backlash)
+    for size, at in index.sizes.items():
+        assert all(size_of(index.table.screws[r]) == size for r in at)
 
 
 def test_each_screw_owns_its_variant_rows(catalog: Catalog) -> None:

@@ -8,11 +8,12 @@ import pytest
 
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
+from app.core.index import size_of
 from app.core.model import Application
 from app.core.sweep import lead_sweep
 
 APP = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5, lead_m=0.01)
-B8000 = ("B8000", False, False)
+B8000 = ("B8000", "polyacetal", False, False)
 
 
 def test_every_lead_of_the_size_in_order(catalog: Catalog) -> None:
@@ -59,4 +60,15 @@ def test_the_speed_share_at_10_mm_by_hand(catalog: Catalog) -> None:
 
 
 def test_a_size_the_catalog_lacks_has_no_sweep(catalog: Catalog) -> None:
-    assert lead_sweep(APP, catalog.index, ("B8000", True, True)) == []
+    assert lead_sweep(APP, catalog.index, ("B8000", "polyacetal", True, True)) == []
+
+
+def test_a_trapezoidal_size_sweeps_its_own_nut_material(catalog: Catalog) -> None:
+    """Tr12 P3 comes with bronze, acetal and PTFE nuts at leads 3 and 6 mm (one and two
+    starts); the sweep of the bronze nut holds the bronze screws alone, one per lead."""
+    size = size_of(catalog.by_id["Tr12x3-bronze"])
+    sweep = lead_sweep(APP, catalog.index, size)
+    assert [round(p.lead_m * 1e3, 6) for p in sweep] == [3.0, 6.0]
+    for point, sid in zip(sweep, ("Tr12x3-bronze", "Tr12x6(P3)-bronze"), strict=True):
+        ev = evaluate(APP, catalog.by_id[sid])
+        assert point.total_nm == pytest.approx(ev.torque.total_nm, rel=1e-12)
