@@ -78,7 +78,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     # outermost, so that every answer to a HEAD, the refusals above included, has no body
     app.add_middleware(HeadAsGetMiddleware)
-    # the catalog, its tables and variant rows live as long as the process: keep them out
+    # the catalog and its index (table, variant rows) live as long as the process: keep them out
     # of the cyclic collector's full passes (each took about 30 ms every hundred queries)
     gc.collect()
     gc.freeze()

@@ -6,6 +6,7 @@ from typing import Any
 from app.catalog import Catalog
 from app.construct import construct
 from app.core.evaluate import evaluate
+from app.core.robustness import build_variants
 from app.core.selection import select, short_forms, with_robustness
 from app.formulas import FORMULAS
 from app.present import (
@@ -45,7 +46,7 @@ def run_selection(
 ) -> SelectOut:
     """Select and rank over the catalog: the API's select response, its sentences in
     ``units`` (the API's own by default)."""
-    selection = select(inputs.to_core(), catalog.table)
+    selection = select(inputs.to_core(), catalog.index)
     return construct_select_out(inputs, catalog, selection_out(selection, units))
 
 
@@ -71,7 +72,7 @@ def run_page_selection(
     (the list; each one's detail loads when opened), sentences in ``units``. The rejected
     are in full too only when nothing passes: then the charts and the advice are about
     them."""
-    selection = select(inputs.to_core(), catalog.table)
+    selection = select(inputs.to_core(), catalog.index)
     app = selection.application
     rejected = selection.rejected if not selection.passed else ()
     out = construct(
@@ -90,7 +91,7 @@ def run_page_selection(
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
     """Select and rank over the catalog: the API's compact select response
     (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
-    selection = select(inputs.to_core(), catalog.table)
+    selection = select(inputs.to_core(), catalog.index)
     return {
         "detail": "summary",
         "inputs": inputs,
@@ -107,19 +108,22 @@ def run_evaluation(
     catalog: Catalog,
     units: Mapping[str, str] = DEFAULT_UNITS,
 ) -> EvaluateOut:
-    """Evaluate one catalog or custom screw; raise UnknownScrew for a bad catalog id."""
-    reach = None  # a screw of the user's own: any size can be made
+    """Evaluate one catalog or custom screw and, when it passes, its robustness (from the
+    catalog's variant rows; a custom screw's are built here); raise UnknownScrew for a
+    bad catalog id."""
+    index = catalog.index
+    app = inputs.to_core()
     if isinstance(screw, CatalogScrewIn):
-        spec = catalog.by_id.get(screw.catalog_id)
-        if spec is None:
+        position = index.positions.get(screw.catalog_id)
+        if position is None:
             raise UnknownScrew(screw.catalog_id)
-        reach = catalog.table.reach
+        ev = evaluate(app, index.row(position), index.table.reach)
+        variants, (at,) = index.variants_at([position])
     else:
         spec = custom_screw(screw, catalog.materials)
-    app = inputs.to_core()
-    ev = evaluate(app, spec, reach)
-    if ev.passed:
-        (ev,) = with_robustness(app, [ev])
+        ev = evaluate(app, spec)  # a screw of the user's own: any size can be made
+        variants, at = build_variants([spec]), 0
+    ev = with_robustness(app, ev, variants, at)
     return construct(
         EvaluateOut,
         inputs=inputs,

@@ -84,7 +84,7 @@ def test_the_selection_ranks_the_family_beside_the_seed(merged: Catalog) -> None
             if pv <= _variant_value(series, screw.variant, "pv_limit_mpa_m_s") * 1e6:
                 expected.add(screw.id)
     assert expected == {"Tr16x8-bronze-fixture"}
-    ranked = select(app, merged.table).candidates
+    ranked = select(app, merged.index).candidates
     assert {ev.screw.id for ev in ranked if ev.screw.family_id == "TR"} == expected
     assert {ev.screw.family_id for ev in ranked} >= SEED_FAMILIES
     bronze = next(ev for ev in ranked if ev.screw.id == "Tr16x8-bronze-fixture")

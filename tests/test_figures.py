@@ -162,6 +162,16 @@ def test_lead_sweep_evaluates_every_lead_of_the_top_size(
     )
 
 
+def test_a_size_with_one_lead_of_its_nut_has_no_sweep(catalog: Catalog) -> None:
+    """Tr8x1.5 is made in one lead, with a bronze, an acetal or a PTFE nut: the top
+    (bronze) screw's size and nut has nothing to sweep, so the chart is left out rather
+    than drawn as three nuts stacked on one lead."""
+    inputs = ApplicationIn(load_n=100, speed_mm_s=50, length_mm=500)
+    result = run_selection(inputs, catalog)
+    assert result.candidates[0].id == "Tr8x1.5-bronze"
+    assert "lead_sweep" not in result_figures(result, METRIC, catalog)
+
+
 def test_torque_bars_stack_to_the_total(result: SelectOut) -> None:
     figure = result_figures(result, METRIC)["torque"]
     assert figure["layout"]["barmode"] == "stack"

@@ -12,8 +12,9 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog, load_catalog
+from app.core.evaluate import evaluate
 from app.core.model import Application
-from app.core.robustness import at_values, passes, robustness
+from app.core.robustness import at_values, robustness
 from app.core.selection import select
 from app.inputs import ApplicationIn
 from app.web.form import parse_inputs, parse_units, share_query
@@ -139,7 +140,7 @@ def test_an_iso_screw_wins_where_no_seed_nut_carries_the_load(catalog: Catalog) 
     Tr10x2 slides at 5 x 28.345 = 0.1417 m/s where 5.5 MPa is allowed: it fails.
     """
     app = Application(load_n=2000.0, speed_m_s=0.01, length_m=0.3, compression=False)
-    sel = select(Application(**{**_fields(app), "rank_by": "size", "limit": 100}), catalog.table)
+    sel = select(Application(**{**_fields(app), "rank_by": "size", "limit": 100}), catalog.index)
     vhd12000 = 1.5 * 3e6 * 3 * math.pi * 16.9545e-3 * 2.0955e-3
     b14000 = 3e6 * 3 * math.pi * 19.780e-3 * 2.4448e-3
     assert (round(vhd12000), round(b14000)) == (1507, 1367)
@@ -171,7 +172,7 @@ def test_a_seed_screw_wins_where_it_is_the_smallest(catalog: Catalog) -> None:
     95 443 Pa m/s, within TFE's 0.175 MPa m/s (0.545 used); at 1 mm lead PV doubles to
     0.191 MPa m/s, over both limits, so L1 fails."""
     app = Application(load_n=20.0, speed_m_s=0.02, length_m=0.2, rank_by="size", limit=20)
-    sel = select(app, catalog.table)
+    sel = select(app, catalog.index)
     winner = sel.candidates[0]
     assert winner.screw.family_id in SEED_FAMILIES
     assert winner.screw.outer_diameter_m == pytest.approx(0.00635)
@@ -234,18 +235,21 @@ def test_robust_flips_when_an_assumed_limit_moves_inside_its_range(catalog: Cata
     end of its range (0.07), nor with h = (6.35 - 0.81 x 6.35) / 2 = 0.60325 mm at the high
     root ratio (110 513 Pa m/s): marginal. At 14 N, PV = 66 810 and 77 359 Pa m/s: robust."""
     screw = catalog.by_id["B4000-L2"]
+    at = catalog.index.positions[screw.id]
+    variants = catalog.index.variants
+    assert variants is not None
     light = Application(load_n=14.0, speed_m_s=0.02, length_m=0.2)
     heavier = Application(load_n=20.0, speed_m_s=0.02, length_m=0.2)
     h_low = (6.35 - 0.81 * 6.35) / 2 * 1e-3
     assert round(10 * 20 / (3 * h_low)) == 110513 and round(10 * 14 / (3 * h_low)) == 77359
     assert round(10 * 14 / (3 * 0.6985e-3)) == 66810
-    assert robustness(light, screw).robust
-    marginal = robustness(heavier, screw)
-    assert passes(heavier, screw) and not marginal.robust
+    assert evaluate(light, screw).passed and robustness(light, variants, [at])[0].robust
+    (marginal,) = robustness(heavier, variants, [at])
+    assert evaluate(heavier, screw).passed and not marginal.robust
     assert marginal.hinges_on == ("root_diameter_ratio", "pv_limit_mpa_m_s")
     low_end = at_values(screw, screw.assumption_ends["pv_limit_mpa_m_s"][0])
     assert low_end.pv_limit_pa_m_s == pytest.approx(0.07e6)
-    assert not passes(heavier, low_end) and passes(light, low_end)
+    assert not evaluate(heavier, low_end).passed and evaluate(light, low_end).passed
 
 
 def test_design_pressure_range_reaches_the_published_cmp_rating(catalog: Catalog) -> None:

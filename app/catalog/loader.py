@@ -24,8 +24,7 @@ from app.catalog.files import (
 from app.catalog.groups import Groups, read_group
 from app.catalog.models import Catalog, Material, Series, Sourced
 from app.catalog.series import build_series
-from app.core.robustness import variants_for
-from app.core.table import CandidateTable
+from app.core.index import CatalogIndex
 from app.paths import resource_dir
 from app.units import to_si
 
@@ -143,13 +142,11 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
     by_series = _unique(series)
     screws = tuple(screw for s in by_series.values() for screw in s.screws)
     versions = [s.data["catalog_version"] for s in group_files if "catalog_version" in s.data]
-    table = CandidateTable.build(screws)
-    variants_for(table)  # every query's robustness reads these rows
     return Catalog(
         version=f"{versions[0] if versions else 'catalog'}+{digest.hexdigest()[:8]}",
         series=by_series,
         screws=screws,
-        table=table,
+        index=CatalogIndex.build(screws),
         materials=materials,
         by_id={screw.id: screw for screw in screws},
     )

@@ -4,8 +4,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from app.core.index import CatalogIndex
 from app.core.model import Provenance, ScrewSpec
-from app.core.table import CandidateTable
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,11 +43,11 @@ class Series:
 
 @dataclass(frozen=True, slots=True)
 class Catalog:
-    """Every series, every expanded candidate, and the candidates as screening columns."""
+    """Every series, every expanded candidate, and the index the core's queries read."""
 
     version: str
     series: Mapping[str, Series]
     screws: tuple[ScrewSpec, ...]
-    table: CandidateTable
+    index: CatalogIndex
     materials: Mapping[str, Material]
     by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)

@@ -36,7 +36,7 @@ from app.core.model import (
 from app.core.quantities import Quantities, axial_load
 from app.core.robustness import Robustness
 from app.core.screening import Screening, screen_table
-from app.core.table import table_of
+from app.core.table import CandidateTable
 
 __all__ = ["axial_load", "evaluate", "evaluations"]
 
@@ -276,10 +276,14 @@ def _buckling(app: Application, s: ScrewSpec, r: Quantities[float]) -> Buckling:
     )
 
 
-def evaluate(app: Application, screw: ScrewSpec, reach: Reach | None = None) -> Evaluation:
-    """Compute torque, speeds, loads, PV, life, accuracy and all checks for one screw;
-    ``reach`` is what the catalog offers, for the fixes (unbounded by default)."""
-    table = table_of(screw)
+def evaluate(
+    app: Application, screw: ScrewSpec | CandidateTable, reach: Reach | None = None
+) -> Evaluation:
+    """Compute torque, speeds, loads, PV, life, accuracy and all checks for one screw, or
+    for the one screw of a table (a catalog's row, ``CatalogIndex.row``); ``reach`` is
+    what the catalog offers, for the fixes (unbounded by default)."""
+    table = screw if isinstance(screw, CandidateTable) else CandidateTable.build([screw])
+    screw = table.screws[0]
     if min(table.efficiency[0], table.efficiency_static[0]) <= 0.0:
         raise ValueError(
             f"{screw.id}: lead angle {math.degrees(table.lead_angle_rad[0]):.1f} deg is too "

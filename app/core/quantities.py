@@ -16,6 +16,7 @@ from numpy.typing import NDArray
 from app.core import motion
 from app.core.formulas import (
     accuracy,
+    bearing,
     buckling,
     critical_speed,
     efficiency,
@@ -25,7 +26,7 @@ from app.core.formulas import (
     torque,
 )
 from app.core.formulas.declare import formula
-from app.core.model import STANDARD_GRAVITY_M_S2, Application
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, Segment
 from app.core.table import Array, CandidateTable
 
 V = TypeVar("V")
@@ -86,6 +87,12 @@ class Quantities(Generic[V]):
     contact_area_m2: V
     pv_max_load_n: V
     pv_max_speed_m_s: V
+    #: The nut's engaged flanks: their sliding speed (the helix at d2; NaN without d2),
+    #: the contact pressure the nut material allows there and the load that pressure
+    #: carries over the engaged flank area (NaN: the nut gives no rating).
+    sliding_speed_m_s: V
+    nut_allowed_pressure_pa: V
+    nut_allowed_load_n: V
     life_years_min: V
     life_years_max: V
     lead_error_m: V
@@ -111,6 +118,9 @@ class Quantities(Generic[V]):
     motor_worst_needed_nm: V
     motor_worst_rpm: V
     motor_curve_nm: V
+    #: the acceleration at which the worst segment fits the curve when that segment is an
+    #: acceleration (NaN otherwise, or when no acceleration fits)
+    motor_fitting_accel_m_s2: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -202,6 +212,32 @@ def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dic
     }
 
 
+def _table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
+    """Each candidate's pressure-speed table value at its sliding speed [Pa] (NaN without
+    a table); candidates sharing a table are interpolated together."""
+    out = np.full(len(t), np.nan)
+    for position, table in enumerate(t.pressure_tables):
+        rows = np.flatnonzero(t.pressure_table == position)
+        if rows.size:
+            out[rows] = bearing.table_pressure(speed_m_s[rows], table)
+    return out
+
+
+def _flanks(t: CandidateTable, rpm: Array) -> dict[str, Any]:
+    """The engaged flanks of the nut: sliding speed n / 60 times the helix of one turn at
+    d2, the pressure the nut material allows at it (the lowest of its table value, p_max
+    and PV_lim / v) and that pressure over the engaged flank area."""
+    speed = pv.surface_speed(rpm, t.flank_helix_travel_m)
+    allowed = bearing.allowable_pressure(
+        _table_pressures(t, speed), t.max_pressure_pa, t.nut_pv_limit_pa_m_s, speed
+    )
+    return {
+        "sliding_speed_m_s": speed,
+        "nut_allowed_pressure_pa": allowed,
+        "nut_allowed_load_n": allowed * t.bearing_area_m2,
+    }
+
+
 def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
     """Rated life in years for the duty, lead error and thermal growth over the stroke."""
     nan = np.full(len(t), np.nan)
@@ -262,6 +298,7 @@ def _values(
         **torques,
         **_column_limits(app, t, peak_n),
         **_nut(app, t, force_n, rpm),
+        **_flanks(t, rpm),
         **_duty(app, t),
         **(holding := _holding(app, t, force_n)),
         **_motor(app, t, rpm, holding["brake_nm"], torques),
@@ -275,21 +312,25 @@ def _motor(
     stroke there is no profile: the one point is today's torque at the top speed, ``rpm``."""
     p = motion.move_profile(app)
     peak_rpm = worst_rpm = rpm
+    nan = np.full(len(t), np.nan)
+    fitting = nan
     if p is None:
-        nan = np.full(len(t), np.nan)
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
         index, peak, rms = np.full(len(t), -1.0), nan, nan
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = motion.segments(app, p, t, hold_nm)
-        magnitude = np.abs(np.stack([s.torque_nm for s in parts]))
+        signed = np.stack([s.torque_nm for s in parts])
+        magnitude = np.abs(signed)
         speeds = np.stack([s.rpm for s in parts])
         load = magnitude / motion.curve_torque(app, speeds) if app.motor_curve else magnitude
         index = np.argmax(load, axis=0)
         columns = np.arange(len(t))
         worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
         peak, rms = magnitude.max(axis=0), motion.rms(parts)
-    curve = motion.curve_torque(app, worst_rpm) if app.motor_curve else np.full(len(t), np.nan)
+        if app.motor_curve and app.accel_m_s2 > 0.0:
+            fitting = _fitting_accel(app, parts, signed, index, worst_rpm)
+    curve = motion.curve_torque(app, worst_rpm) if app.motor_curve else nan
     return {
         "peak_rpm": peak_rpm,
         "motor_peak_nm": peak,
@@ -300,4 +341,24 @@ def _motor(
         "motor_worst_needed_nm": worst_nm * app.torque_safety_factor,
         "motor_worst_rpm": worst_rpm,
         "motor_curve_nm": curve,
+        "motor_fitting_accel_m_s2": fitting,
     }
+
+
+def _fitting_accel(
+    app: Application, parts: list[Segment[Array]], torque_nm: Array, worst: Array, rpm: Array
+) -> Array:
+    """The acceleration [m/s^2] at which each candidate's worst segment fits the motor
+    curve, where that segment accelerates: its torque is affine in the acceleration,
+    T(a) = T_run + k a with T_run the constant-speed segment's that follows, so
+    a = (T_curve / SF - T_run) / k, the curve read at the segment's speed ``rpm``. NaN
+    where another segment is the worst, or where no acceleration fits (k <= 0, or T_run
+    alone over the curve)."""
+    columns = np.arange(torque_nm.shape[1])
+    accelerating = np.array([s.name == "accelerate" for s in parts])[worst]
+    after = np.minimum(worst + 1, len(parts) - 1)
+    t_acc, t_run = torque_nm[worst, columns], torque_nm[after, columns]
+    slope = (t_acc - t_run) / app.accel_m_s2
+    room = motion.curve_torque(app, rpm) / app.torque_safety_factor - t_run
+    fits = accelerating & (slope > 0.0) & (room > 0.0)
+    return np.where(fits, room / np.where(fits, slope, 1.0), np.nan)

@@ -5,9 +5,7 @@
 screw is screened as a table of one. So a check is computed by one piece of code.
 """
 
-from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -63,6 +61,15 @@ class Screening:
             self.warned[cut],
             self.reach,
         )
+
+
+#: What picks the eligible candidates of a table: (lead [m], coating, families, nut material).
+Filters = tuple[float | None, str, tuple[str, ...], str | None]
+
+
+def filters(app: Application) -> Filters:
+    """The values of ``app`` that ``eligible_mask`` reads."""
+    return (app.lead_m, app.coating, app.families, app.nut_material)
 
 
 def eligible_mask(app: Application, table: CandidateTable) -> Mask:
@@ -146,50 +153,3 @@ def screen_table(
         warned,
         reach or Reach(),
     )
-
-
-#: Work kept per table, filters (``filters``) and name: (table, the work); most queries
-#: repeat a lead and a family, not a load. Bounded, since the filters are the user's.
-_BY_FILTERS: dict[tuple[object, ...], tuple[CandidateTable, Any]] = {}
-_BY_FILTERS_MAX = 128
-T = TypeVar("T")
-
-
-def filters(app: Application) -> tuple[object, ...]:
-    """What picks the eligible candidates of a table (``eligible_mask``)."""
-    return (app.lead_m, app.coating, app.families, app.nut_material)
-
-
-def per_filters(app: Application, table: CandidateTable, name: str, work: Callable[[], T]) -> T:
-    """``work()``, kept per table, ``filters(app)`` and ``name`` (keyed by the table's
-    ``id``, held beside it so the id stays its own)."""
-    key = (id(table), name, *filters(app))
-    held = _BY_FILTERS.get(key)
-    if held is not None and held[0] is table:
-        found: T = held[1]
-        return found
-    found = work()
-    if len(_BY_FILTERS) >= _BY_FILTERS_MAX:
-        _BY_FILTERS.clear()
-    _BY_FILTERS[key] = (table, found)
-    return found
-
-
-def eligible(app: Application, table: CandidateTable) -> tuple[NDArray[np.intp], CandidateTable]:
-    """The positions (in ``table``) of the candidates eligible for ``app``, and their
-    table; kept per table and filters."""
-    return per_filters(app, table, "eligible", lambda: _eligible_rows(app, table))
-
-
-def _eligible_rows(
-    app: Application, table: CandidateTable
-) -> tuple[NDArray[np.intp], CandidateTable]:
-    index = np.flatnonzero(eligible_mask(app, table))
-    index.setflags(write=False)  # shared by every query with these filters
-    return index, table.take(index)
-
-
-def screen(app: Application, table: CandidateTable) -> Screening:
-    """Screen the candidates eligible for ``app`` (lead, coating, family, nut material)."""
-    index, rows = eligible(app, table)
-    return screen_table(app, rows, index, table.reach)

@@ -11,10 +11,11 @@ import numpy as np
 from app.core.brief import Brief, briefs
 from app.core.checks import BY_NAME
 from app.core.evaluate import evaluations
+from app.core.index import CatalogIndex
 from app.core.model import Application, Change, Evaluation, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
-from app.core.robustness import Robustness, joint_for, robustness_in, robustness_of
-from app.core.screening import Screening, eligible, screen, screen_table
+from app.core.robustness import Robustness, Variants, robustness
+from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable
 
 NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
@@ -62,16 +63,15 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     return pos[np.lexsort(tuple(keys))]
 
 
-def with_robustness(app: Application, passing: Sequence[Evaluation]) -> tuple[Evaluation, ...]:
-    """Passing candidates with their robustness to the catalog's ranged values."""
-    return _attach(passing, robustness_of(app, [e.screw for e in passing]))
-
-
-def _attach(passing: Sequence[Evaluation], found: Sequence[Robustness]) -> tuple[Evaluation, ...]:
-    return tuple(
-        replace(e, robust=r.robust, hinges_on=r.hinges_on)
-        for e, r in zip(passing, found, strict=True)
-    )
+def with_robustness(
+    app: Application, ev: Evaluation, variants: Variants, position: int
+) -> Evaluation:
+    """``ev`` with its robustness, read from the variant rows of the screw at ``position``
+    of ``variants``, when it passes (as it is otherwise: it fails anyway)."""
+    if not ev.passed:
+        return ev
+    (found,) = robustness(app, variants, [position])
+    return replace(ev, robust=found.robust, hinges_on=found.hinges_on)
 
 
 class Built(Sequence[Evaluation]):
@@ -139,34 +139,47 @@ def _nearest_order(s: Screening) -> np.ndarray:
     return failing[np.lexsort((s.max_utilization[failing], s.failed_limits[failing]))]
 
 
+def screen(app: Application, index: CatalogIndex) -> Screening:
+    """Screen the candidates of ``index`` eligible for ``app`` (lead, coating, family, nut
+    material)."""
+    rows = index.eligible(app)
+    return screen_table(app, rows.table, rows.index, index.table.reach)
+
+
 def _screen(
-    app: Application, table: CandidateTable
+    app: Application, index: CatalogIndex
 ) -> tuple[Screening, Callable[[Sequence[int]], list[Robustness]]]:
     """The screening of the candidates eligible for ``app``, and how to judge the
-    robustness of those at given positions in it: when the table keeps its variants and
-    they are few, candidates and variants are screened in one pass (``joint_for``)."""
-    joint = joint_for(app, table)
+    robustness of those at given positions in it. When their variant rows are few, the
+    candidates and their variants are screened in one pass (``Eligible.joint``)."""
+    rows = index.eligible(app)
+    joint = rows.joint
     if joint is None:
-        s = screen(app, table)
-        return s, lambda positions: robustness_in(app, table, s.index[list(positions)].tolist())
-    index, rows = eligible(app, table)
-    both = screen_table(app, joint.table, reach=table.reach)
-    return both.head(joint.n, index, rows), partial(joint.robustness, both.passed)
+        s = screen(app, index)
+        return s, lambda at: robustness(app, *index.variants_at(s.index[list(at)].tolist()))
+    both = screen_table(app, joint.table, reach=index.table.reach)
+    passed = both.passed[joint.n :]
+    return both.head(joint.n, rows.index, rows.table), partial(
+        robustness, app, joint.variants, screened=passed
+    )
 
 
-def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -> Selection:
+def select(app: Application, candidates: CatalogIndex | Sequence[ScrewSpec]) -> Selection:
     """Screen every eligible candidate and rank the passing ones by ``app.rank_by``.
 
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
     counts cover everything screened. The passing ones' robustness is screened now; full
     evaluations of the returned candidates are built when first read (``short_forms``
-    reads the same arrays without them).
+    reads the same arrays without them). A sequence of screws is indexed here, without
+    variant rows: those of the passing ones returned are built when they are judged.
     """
-    table = (
-        candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)
+    index = (
+        candidates
+        if isinstance(candidates, CatalogIndex)
+        else CatalogIndex.build(candidates, with_variants=False)
     )
-    s, robust = _screen(app, table)
+    s, robust = _screen(app, index)
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
     found = robust(ranked)
@@ -181,7 +194,7 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
         evaluated=len(s.index),
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
-        summary=summarize(app, table, len(s.index), n_passed, rejected, by_check),
+        summary=summarize(app, index.table, len(s.index), n_passed, rejected, by_check),
         screening=s,
         ranked=tuple(ranked),
         nearest=tuple(nearest),

@@ -6,10 +6,9 @@ the whole catalog.
 """
 
 import math
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field, fields
+from collections.abc import Sequence
+from dataclasses import dataclass, fields
 from operator import attrgetter
-from typing import Any, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -53,6 +52,23 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
     out["bearing_area_m2"] = np.asarray(area, dtype=np.float64)
     out["flank_helix_travel_m"] = np.asarray(geometry.helix_travel(lead_m, d2), dtype=np.float64)
     return out
+
+
+#: A nut material's allowable pressure by sliding speed: (speed [m/s], pressure [Pa]) rows.
+PressureTable = tuple[tuple[float, float], ...]
+
+
+def _pressure_tables(
+    screws: Sequence[ScrewSpec],
+) -> tuple[tuple[PressureTable, ...], NDArray[np.intp]]:
+    """The distinct nut pressure-speed tables, in first use, and each screw's position in
+    them (-1: none)."""
+    tables: dict[PressureTable, int] = {}
+    which = [
+        tables.setdefault(s.bearing_pressure_table, len(tables)) if s.bearing_pressure_table else -1
+        for s in screws
+    ]
+    return tuple(tables), np.array(which, dtype=np.intp)
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,10 +145,14 @@ class CandidateTable:
     bearing_area_m2: Array
     flank_helix_travel_m: Array
 
+    #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
+    #: (-1: none), so that candidates sharing a table are interpolated together
+    pressure_table: NDArray[np.intp]
+
     #: what the whole catalog offers; a subset (``take``) keeps its catalog's
     reach: Reach
-    #: what ``per_table`` worked out for these candidates
-    memo: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
+    #: the distinct nut pressure-speed tables, (sliding speed [m/s], pressure [Pa]) rows
+    pressure_tables: tuple[PressureTable, ...]
 
     @classmethod
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
@@ -154,6 +174,7 @@ class CandidateTable:
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
         traverse, extrapolated = _bands(screws, lead)
+        tables, which = _pressure_tables(screws)
         reach = Reach(
             max_lead_m=_largest(lead),
             max_root_diameter_m=_largest(rd),
@@ -163,6 +184,8 @@ class CandidateTable:
         )
         return cls(
             reach=reach,
+            pressure_tables=tables,
+            pressure_table=which,
             screws=screws,
             lead_m=lead,
             outer_diameter_m=od,
@@ -213,7 +236,10 @@ class CandidateTable:
         picked = {name: getattr(self, name)[index] for name in COLUMNS}
         screws = self.screws
         return CandidateTable(
-            screws=tuple([screws[i] for i in index.tolist()]), reach=self.reach, **picked
+            screws=tuple([screws[i] for i in index.tolist()]),
+            reach=self.reach,
+            pressure_tables=self.pressure_tables,
+            **picked,
         )
 
     def join(self, other: "CandidateTable") -> "CandidateTable":
@@ -221,50 +247,23 @@ class CandidateTable:
         joined = {
             name: np.concatenate((getattr(self, name), getattr(other, name))) for name in COLUMNS
         }
-        return CandidateTable(screws=self.screws + other.screws, reach=self.reach, **joined)
+        tables = self.pressure_tables
+        tables += tuple(t for t in other.pressure_tables if t not in tables)
+        # position -1 (no table) reads the appended -1
+        renumber = np.array([*map(tables.index, other.pressure_tables), -1], dtype=np.intp)
+        joined["pressure_table"][len(self) :] = renumber[other.pressure_table]
+        return CandidateTable(
+            screws=self.screws + other.screws,
+            reach=self.reach,
+            pressure_tables=tables,
+            **joined,
+        )
 
     def __len__(self) -> int:
         return len(self.screws)
 
 
 #: The array fields of a table, in declaration order.
-COLUMNS = tuple(f.name for f in fields(CandidateTable) if f.name not in ("screws", "reach", "memo"))
-
-
-#: One-screw tables built so far, by ``id`` of the screw, kept beside it so the id stays
-#: its own (the catalog's screws live as long as the app; a user's screw, one request).
-_OF_ONE: dict[int, tuple[ScrewSpec, CandidateTable]] = {}
-_OF_ONE_MAX = 1024
-
-
-def table_of(screw: ScrewSpec) -> CandidateTable:
-    """``CandidateTable.build([screw])``, kept per screw: the fixes and explanations of one
-    candidate read its derived columns (flank area, helix, efficiencies) again and again."""
-    held = _OF_ONE.get(id(screw))
-    if held is not None and held[0] is screw:
-        return held[1]
-    table = CandidateTable.build([screw])
-    for name in COLUMNS:  # shared by every later reader
-        getattr(table, name).setflags(write=False)
-    if len(_OF_ONE) >= _OF_ONE_MAX:
-        _OF_ONE.clear()
-    _OF_ONE[id(screw)] = (screw, table)
-    return table
-
-
-T = TypeVar("T")
-
-
-def per_table(table: CandidateTable, name: str, work: Callable[[CandidateTable], T]) -> T:
-    """``work(table)``, kept with the table: for what depends on its candidates alone and
-    is read at every screening of a table that serves many (the catalog's, its eligible
-    rows)."""
-    if name not in table.memo:
-        table.memo[name] = work(table)
-    found: T = table.memo[name]
-    return found
-
-
-def kept(table: CandidateTable, name: str) -> Any:
-    """What ``per_table`` keeps under ``name`` for ``table``, or None when nothing did."""
-    return table.memo.get(name)
+COLUMNS = tuple(
+    f.name for f in fields(CandidateTable) if f.name not in ("screws", "reach", "pressure_tables")
+)

@@ -6,16 +6,12 @@ the tests use to validate them.
 """
 
 from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass, replace
 from typing import Any
-
-import numpy as np
 
 from app.catalog import Catalog
 from app.core.formulas import critical_speed, pv
-from app.core.model import Application
-from app.core.screening import screen_table
-from app.core.table import CandidateTable, per_table
+from app.core.index import size_of
+from app.core.sweep import LeadPoint, lead_sweep
 from app.schemas import CandidateBaseOut, PageSelectionOut, SelectOut
 from app.units import Display, api_value, si_to_api, sig
 from app.web.chart_style import PALETTE
@@ -255,58 +251,6 @@ def torque_figure(
     }
 
 
-@dataclass(frozen=True, slots=True)
-class LeadPoint:
-    """One lead of the top screw's size for this application: drive torque [N m], the
-    screw speed as a share of the allowed speed and the PV as a share of its limit (None:
-    no PV limit)."""
-
-    lead_m: float
-    total_nm: float
-    speed_share: float
-    pv_share: float | None
-
-
-def _leads_of(
-    series: str, coated: bool, anti_backlash: bool
-) -> Callable[[CandidateTable], CandidateTable]:
-    """The rows of one size and nut (every lead), to take from a table."""
-
-    def rows(table: CandidateTable) -> CandidateTable:
-        index = [
-            i
-            for i, s in enumerate(table.screws)
-            if (s.series_id, s.coated, s.anti_backlash) == (series, coated, anti_backlash)
-        ]
-        return table.take(np.array(index, dtype=np.intp))
-
-    return rows
-
-
-def lead_sweep(app: Application, top: CandidateBaseOut, catalog: Catalog) -> list[LeadPoint]:
-    """The top screw's size and nut with every lead the catalog offers, screened by the
-    core for this application (any lead), shortest lead first. The rows of each size and
-    nut are taken from the catalog's table once."""
-    key = (top.series, top.coated, top.anti_backlash)
-    rows = per_table(catalog.table, f"leads of {key}", _leads_of(*key))
-    if not len(rows):
-        return []
-    sc = screen_table(replace(app, lead_m=None), rows)
-    q, pv_use = sc.quantities, sc.utilization.get("pv")
-    points = [
-        LeadPoint(
-            lead_m=float(sc.table.lead_m[k]),
-            total_nm=float(q.total_nm[k]),
-            speed_share=float(q.rpm[k] / q.allowed_rpm[k]),
-            pv_share=None
-            if pv_use is None or not sc.measures["pv"].applicable[k]
-            else float(pv_use[k]),
-        )
-        for k in range(len(rows))
-    ]
-    return sorted(points, key=lambda p: p.lead_m)
-
-
 def _sweep_shapes(leads: list[float], locking: float, chosen: float) -> list[dict[str, Any]]:
     """The self-locking band (leads up to the longest that self-locks) and the chosen lead."""
     shapes: list[dict[str, Any]] = [
@@ -480,9 +424,14 @@ def result_figures(
         "pv": pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d),
         "torque": torque_figure(candidates, app.max_torque_nm, d),
     }
-    sweep = lead_sweep(app, candidates[0], catalog) if catalog is not None else []
+    top = candidates[0]
+    sweep = (
+        lead_sweep(app, catalog.index, size_of(catalog.by_id[top.id]))
+        if catalog is not None
+        else []
+    )
     if len(sweep) > 1:
-        figures["lead_sweep"] = lead_sweep_figure(sweep, candidates[0], d)
+        figures["lead_sweep"] = lead_sweep_figure(sweep, top, d)
     if candidates[0].segments:
         if app.motor_curve:
             figures["motor"] = motor_figure(

@@ -133,7 +133,7 @@ def test_registry_lists_each_check_module_once() -> None:
     ],
 )
 def test_formula_text_agrees_with_the_code(catalog: Catalog, name: str, app_id: str) -> None:
-    assert formula_mismatches(BY_NAME[name], APPS[app_id], catalog.table) == []
+    assert formula_mismatches(BY_NAME[name], APPS[app_id], catalog.index.table) == []
 
 
 def test_every_check_applies_under_some_application(catalog: Catalog) -> None:
@@ -142,7 +142,7 @@ def test_every_check_applies_under_some_application(catalog: Catalog) -> None:
         counts = [
             int(
                 check.measure(
-                    app, catalog.table, operating_point(app, catalog.table)
+                    app, catalog.index.table, operating_point(app, catalog.index.table)
                 ).applicable.sum()
             )
             for app in APPS.values()
@@ -176,7 +176,7 @@ def test_a_wrong_formula_text_is_caught(
     # without oil the correct rule passes every variant; the wrong one fails the coated
     app = light_app(oil_present=False) if name == "oil" else APPS["vertical-compression-torque"]
     monkeypatch.setattr(type(check), "formula", wrong)
-    assert formula_mismatches(check, app, catalog.table) != []
+    assert formula_mismatches(check, app, catalog.index.table) != []
 
 
 def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:

@@ -29,7 +29,7 @@ def test_select_equals_evaluating_everything(catalog: Catalog, rank_by: str) -> 
         "size": lambda e: (e.screw.outer_diameter_m, e.torque.total_nm),
     }[rank_by]
     expected = [e.screw.id for e in sorted(passing, key=key)][:100]
-    result = select(app, catalog.table)
+    result = select(app, catalog.index)
     assert [e.screw.id for e in result.candidates] == expected
     assert result.passed == len(passing)
     assert result.evaluated == len(everything)

@@ -13,11 +13,13 @@ from hypothesis import HealthCheck, given, settings
 
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
+from app.core.index import Eligible, EligibleCache
 from app.core.model import Application
 from app.core.quantities import NAMES
-from app.core.robustness import joint_for, judge, robustness, variants_for
-from app.core.screening import eligible_mask, screen, screen_table
-from app.core.selection import input_change, select
+from app.core.robustness import build_variants, robustness
+from app.core.screening import eligible_mask, screen_table
+from app.core.selection import input_change, screen, select
+from app.core.table import CandidateTable
 from app.units import render
 from tests.core.conftest import applications, light_app
 
@@ -32,9 +34,9 @@ def test_screening_agrees_with_full_evaluation(catalog: Catalog, app: Applicatio
     """For every eligible candidate: same pass/fail, same failed checks, same worst
     utilization, same total torque as ``evaluate`` (screening.py: "tests hold both paths
     in agreement")."""
-    s = screen(app, catalog.table)
+    s = screen(app, catalog.index)
     for k, i in enumerate(s.index):
-        ev = evaluate(app, catalog.table.screws[i])
+        ev = evaluate(app, catalog.index.table.screws[i])
         assert bool(s.passed[k]) == ev.passed, ev.screw.id
         failed = {name for name, mask in s.failed_by_check.items() if mask[k]}
         assert failed == {c.name for c in ev.failed_checks}, ev.screw.id
@@ -48,10 +50,10 @@ def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     """Counts cover every eligible candidate; passing ones come back ranked by drive torque,
     rejected ones nearest-to-passing first (fewest failed limits, then the smallest worst
     utilisation); each list is cut to ``app.limit``."""
-    sel = select(app, catalog.table)
+    sel = select(app, catalog.index)
     evaluations = [
-        evaluate(app, catalog.table.screws[i])
-        for i in np.flatnonzero(eligible_mask(app, catalog.table))
+        evaluate(app, catalog.index.table.screws[i])
+        for i in np.flatnonzero(eligible_mask(app, catalog.index.table))
     ]
     assert sel.evaluated == len(evaluations)
     assert sel.passed == sum(e.passed for e in evaluations)
@@ -71,7 +73,7 @@ def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
 
 def test_sequence_and_table_give_the_same_selection(catalog: Catalog) -> None:
     app = light_app()
-    a, b = select(app, catalog.screws), select(app, catalog.table)
+    a, b = select(app, catalog.screws), select(app, catalog.index)
     assert [e.screw.id for e in a.candidates] == [e.screw.id for e in b.candidates]
     assert (a.evaluated, a.passed) == (b.evaluated, b.passed)
 
@@ -88,13 +90,13 @@ def test_lead_filter_is_exact_within_half_a_percent(
     catalog: Catalog, lead_mm: float, expected_leads_mm: set[float]
 ) -> None:
     app = light_app(lead_m=lead_mm / 1000, limit=100)
-    sel = select(app, catalog.table)
+    sel = select(app, catalog.index)
     got = {round(e.screw.lead_m * 1000, 3) for e in (*sel.candidates, *sel.rejected)}
     assert got == expected_leads_mm
 
 
 def test_no_matching_lead_says_so(catalog: Catalog) -> None:
-    sel = select(light_app(lead_m=0.0071), catalog.table)
+    sel = select(light_app(lead_m=0.0071), catalog.index)
     assert sel.evaluated == 0 and not sel.candidates and not sel.rejected
     assert "7.1 mm lead" in render(sel.summary.message)
 
@@ -104,7 +106,7 @@ def test_no_matching_lead_says_so(catalog: Catalog) -> None:
     [pytest.param("tfe", {True}, id="tfe-only"), pytest.param("none", {False}, id="none-only")],
 )
 def test_coating_filter(catalog: Catalog, coating: str, coated: set[bool]) -> None:
-    sel = select(light_app(coating=coating, limit=100), catalog.table)
+    sel = select(light_app(coating=coating, limit=100), catalog.index)
     assert {e.screw.coated for e in (*sel.candidates, *sel.rejected)} == coated
 
 
@@ -112,14 +114,14 @@ def test_rank_by_size_life_and_margin(catalog: Catalog) -> None:
     """size: smallest OD first; life: longest rated life first (VHD 760-880 million cm
     with TFE), unrated B series last; margin: lowest worst utilization first."""
     base = light_app(limit=100)
-    by_size = select(replace(base, rank_by="size"), catalog.table).candidates
+    by_size = select(replace(base, rank_by="size"), catalog.index).candidates
     ods = [e.screw.outer_diameter_m for e in by_size]
     assert ods == sorted(ods)
-    by_life = select(replace(base, rank_by="life"), catalog.table).candidates
+    by_life = select(replace(base, rank_by="life"), catalog.index).candidates
     assert by_life[0].screw.series_id.startswith("VHD") and by_life[0].screw.coated
     lives = [0.0 if e.life is None else e.life.travel_min_m for e in by_life]
     assert lives == sorted(lives, reverse=True)
-    by_margin = select(replace(base, rank_by="margin"), catalog.table).candidates
+    by_margin = select(replace(base, rank_by="margin"), catalog.index).candidates
     margins = [e.max_utilization for e in by_margin]
     assert margins == sorted(margins)
 
@@ -127,7 +129,7 @@ def test_rank_by_size_life_and_margin(catalog: Catalog) -> None:
 def test_nothing_passes_and_the_summary_names_the_nearest_fix(catalog: Catalog) -> None:
     """5 kN on a 4 m fixed-free column at 0.5 m/s: no candidate survives."""
     app = Application(load_n=5000.0, speed_m_s=0.5, length_m=4.0, end_fixity="fixed-free")
-    sel = select(app, catalog.table)
+    sel = select(app, catalog.index)
     assert sel.passed == 0 and not sel.candidates
     assert sel.summary.best_rejected_id == sel.rejected[0].screw.id
     assert render(sel.summary.message).startswith("No candidate passes.")
@@ -142,7 +144,7 @@ def test_the_proposed_input_change_admits_the_nearest_candidate(
 ) -> None:
     """Summary.input_change: applying every proposed input change together makes the best
     rejected candidate pass the checks that offered those inputs."""
-    sel = select(app, catalog.table)
+    sel = select(app, catalog.index)
     if sel.passed or not sel.rejected:
         return
     best = sel.rejected[0]
@@ -181,7 +183,7 @@ def test_the_offered_load_limit_passes_when_applied(catalog: Catalog) -> None:
 def test_zero_stroke_agrees_between_screening_and_evaluation(catalog: Catalog) -> None:
     app = light_app(stroke_m=0.0, cycles_per_day=10.0, required_life_years=1.0)
     screw = catalog.by_id["ZBX8000-L10"]
-    s = screen(app, catalog.table)
+    s = screen(app, catalog.index)
     k = list(s.index).index(catalog.screws.index(screw))
     assert bool(s.passed[k]) == evaluate(app, screw).passed
 
@@ -191,12 +193,12 @@ def test_zero_stroke_agrees_between_screening_and_evaluation(catalog: Catalog) -
 def test_robustness_from_the_catalog_variants_matches_one_screw(
     catalog: Catalog, app: Application
 ) -> None:
-    """``select`` reads robustness from the catalog's prebuilt variant table; each passing
-    candidate's verdict equals re-screening that screw alone at each end of its ranges."""
-    variants_for(catalog.table)
-    sel = select(replace(app, limit=5), catalog.table)
+    """``select`` reads robustness from the index's variant rows; each passing
+    candidate's verdict equals re-screening that screw alone at each end of its ranges
+    (its variants built on the fly, as for a screw of the user's own)."""
+    sel = select(replace(app, limit=5), catalog.index)
     for ev, found in zip(sel.candidates, sel.robustness, strict=True):
-        alone = robustness(app, ev.screw)
+        (alone,) = robustness(app, build_variants([ev.screw]), [0])
         assert (found.robust, found.hinges_on) == (alone.robust, alone.hinges_on), ev.screw.id
         assert (ev.robust, ev.hinges_on) == (alone.robust, alone.hinges_on)
 
@@ -205,11 +207,10 @@ def test_a_marginal_candidate_is_reported_from_the_variants(catalog: Catalog) ->
     """At least one seed candidate hinges on an assumed value for a loaded axis (so the
     comparison above is not only between robust verdicts)."""
     app = Application(load_n=400.0, speed_m_s=0.02, length_m=0.4, lead_m=None, limit=50)
-    variants_for(catalog.table)
-    sel = select(app, catalog.table)
+    sel = select(app, catalog.index)
     assert any(r.hinges_on for r in sel.robustness)
     for ev, found in zip(sel.candidates, sel.robustness, strict=True):
-        assert found.hinges_on == robustness(app, ev.screw).hinges_on
+        assert found.hinges_on == robustness(app, build_variants([ev.screw]), [0])[0].hinges_on
 
 
 def test_eligible_rows_are_kept_per_filters_and_match_a_fresh_take(catalog: Catalog) -> None:
@@ -217,29 +218,46 @@ def test_eligible_rows_are_kept_per_filters_and_match_a_fresh_take(catalog: Cata
     kept rows equals one over a fresh ``take`` of the eligible mask."""
     first = Application(load_n=50.0, speed_m_s=0.05, length_m=0.5, lead_m=0.01)
     second = replace(first, load_n=80.0)
-    a, b = screen(first, catalog.table), screen(second, catalog.table)
+    a, b = screen(first, catalog.index), screen(second, catalog.index)
     assert a.index is b.index and a.table is b.table
-    index = np.flatnonzero(eligible_mask(second, catalog.table))
-    fresh = screen_table(second, catalog.table.take(index), index)
+    index = np.flatnonzero(eligible_mask(second, catalog.index.table))
+    fresh = screen_table(second, catalog.index.table.take(index), index)
     assert np.array_equal(b.passed, fresh.passed)
     assert np.array_equal(b.max_utilization, fresh.max_utilization, equal_nan=True)
-    other = screen(replace(first, lead_m=0.002), catalog.table)
+    other = screen(replace(first, lead_m=0.002), catalog.index)
     assert not np.array_equal(other.index, a.index)
+
+
+def test_the_kept_eligible_rows_are_bounded() -> None:
+    """The cache of eligible rows keeps the most recently used sets of filters, no more."""
+    cache = EligibleCache(2)
+    built: list[float] = []
+
+    def rows(lead_m: float) -> Eligible:
+        built.append(lead_m)
+        return Eligible(np.zeros(0, dtype=np.intp), CandidateTable.build([]), None)
+
+    keys = {lead: (lead, "auto", (), None) for lead in (0.002, 0.005, 0.01)}
+    first = cache.get(keys[0.002], lambda: rows(0.002))
+    cache.get(keys[0.005], lambda: rows(0.005))
+    assert cache.get(keys[0.002], lambda: rows(0.002)) is first  # kept, now the newest
+    cache.get(keys[0.01], lambda: rows(0.01))  # drops 0.005, the least recently used
+    cache.get(keys[0.005], lambda: rows(0.005))
+    assert built == [0.002, 0.005, 0.01, 0.005] and len(cache) == 2
 
 
 def test_joint_screening_equals_screening_candidates_and_variants_apart(
     catalog: Catalog,
 ) -> None:
     """With a lead chosen, ``select`` screens the eligible candidates and their variants
-    in one pass (``joint_for``); its head equals a screening of the candidates alone and
-    its robustness equals ``judge`` on the variant table. With any lead the variants are
-    too many and the two are screened apart."""
-    variants_for(catalog.table)
+    in one pass (``Eligible.joint``); its head equals a screening of the candidates alone
+    and its robustness equals re-screening the variant rows of the index apart. With any
+    lead the variants are too many and the two are screened apart."""
     app = Application(load_n=60.0, speed_m_s=0.04, length_m=0.6, lead_m=0.01, limit=50)
-    joint = joint_for(app, catalog.table)
+    joint = catalog.index.eligible(app).joint
     assert joint is not None and len(joint.table) > joint.n
-    both = screen_table(app, joint.table, reach=catalog.table.reach)
-    alone = screen(app, catalog.table)
+    both = screen_table(app, joint.table, reach=catalog.index.table.reach)
+    alone = screen(app, catalog.index)
     head = both.head(joint.n, alone.index, alone.table)
     assert np.array_equal(head.passed, alone.passed)
     assert np.array_equal(head.max_utilization, alone.max_utilization, equal_nan=True)
@@ -248,20 +266,21 @@ def test_joint_screening_equals_screening_candidates_and_variants_apart(
         assert np.array_equal(head.failed[name], mask), name
     passing = np.flatnonzero(alone.passed).tolist()
     assert passing
-    found = joint.robustness(both.passed, passing)
-    apart = judge(app, variants_for(catalog.table), alone.index[passing].tolist())
+    found = robustness(app, joint.variants, passing, screened=both.passed[joint.n :])
+    assert catalog.index.variants is not None
+    apart = robustness(app, catalog.index.variants, alone.index[passing].tolist())
     assert found == apart
     assert any(r.hinges_on for r in found) and any(r.robust for r in found)
-    sel = select(app, catalog.table)
+    sel = select(app, catalog.index)
     assert list(sel.robustness) == [found[passing.index(k)] for k in sel.ranked]
-    assert joint_for(replace(app, lead_m=None), catalog.table) is None
+    assert catalog.index.eligible(replace(app, lead_m=None)).joint is None
 
 
 def test_one_candidates_numbers_equal_those_read_for_many(catalog: Catalog) -> None:
     """``Quantities.row`` (the numbers a compact fix is written from) equals the same
     candidate's entry in ``Quantities.rows`` (what the full form reads), NaN included."""
     app = Application(load_n=300.0, speed_m_s=0.1, length_m=0.8, lead_m=0.01)
-    q = screen(app, catalog.table).quantities
+    q = screen(app, catalog.index).quantities
     picks = [0, 3, len(q.rpm) - 1]
     for i, many in zip(picks, q.rows(picks), strict=True):
         one = [getattr(q.row(i), name) for name in NAMES]

@@ -15,7 +15,7 @@ import numpy as np
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities
-from app.core.table import Array, CandidateTable, Mask, Reach, per_table, table_of
+from app.core.table import Array, CandidateTable, Mask, Reach
 
 __all__ = [
     "Application",
@@ -29,10 +29,8 @@ __all__ = [
     "Quantities",
     "Reach",
     "ScrewSpec",
-    "per_table",
     "same",
     "sentence",
-    "table_of",
 ]
 
 #: A limit rejects a candidate; advice is reported beside it.

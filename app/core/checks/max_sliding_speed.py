@@ -12,15 +12,7 @@ from app.core.checks.base import (
     ScrewSpec,
     where_given,
 )
-from app.core.checks.bearing_pressure import sliding_speed
-from app.core.formulas import geometry, pv
 from app.core.phrase import Amount, Phrase
-
-
-def _speed_one(s: ScrewSpec, rpm: float) -> float:
-    """Sliding speed [m/s] of one candidate at ``rpm`` (helix of one turn at d2)."""
-    d2 = s.flank_pitch_diameter_m or 0.0
-    return pv.surface_speed(rpm, geometry.helix_travel(s.lead_m, d2))
 
 
 class MaxSlidingSpeed(Check):
@@ -38,7 +30,7 @@ class MaxSlidingSpeed(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         capacity = t.max_sliding_speed_m_s
-        speed = sliding_speed(q.rpm, t)
+        speed = q.sliding_speed_m_s
         return Measure(where_given(capacity) & where_given(speed), speed, capacity)
 
     def symbols(
@@ -56,14 +48,14 @@ class MaxSlidingSpeed(Check):
         return Phrase(
             "The flank sliding speed {v} " + verb + " the nut material's maximum {cap}.",
             {
-                "v": Amount(_speed_one(s, r.rpm), "speed"),
+                "v": Amount(r.sliding_speed_m_s, "speed"),
                 "cap": Amount(s.max_sliding_speed_m_s or 0.0, "speed"),
             },
         )
 
     def _max_linear_speed(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
         """The linear speed at which the sliding speed meets the maximum (proportional)."""
-        return app.speed_m_s * (s.max_sliding_speed_m_s or 0.0) / _speed_one(s, r.rpm)
+        return app.speed_m_s * (s.max_sliding_speed_m_s or 0.0) / r.sliding_speed_m_s
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(

@@ -1,6 +1,6 @@
 """Every segment of the move under the motor's torque-speed curve."""
 
-import numpy as np
+import math
 
 from app.core import motion
 from app.core.checks.base import (
@@ -14,9 +14,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     everywhere,
-    table_of,
 )
-from app.core.model import Segment
 from app.core.phrase import Amount, Phrase
 
 
@@ -30,18 +28,11 @@ def worst_segment(app: Application, r: Quantities[float]) -> str:
     return f"{name} {direction}"
 
 
-def accel_that_fits(app: Application, s: ScrewSpec, r: Quantities[float]) -> float | None:
+def accel_that_fits(r: Quantities[float]) -> float | None:
     """The acceleration at which the accelerate segment fits the curve, when that segment
-    governs: its torque is affine in the acceleration, T(a) = T_0 + k a [m/s^2]."""
-    p = motion.move_profile(app)
-    if p is None or app.accel_m_s2 <= 0.0 or not worst_segment(app, r).startswith("accel"):
-        return None
-    parts: list[Segment[Array]] = motion.segments(app, p, table_of(s), np.array([r.brake_nm]))
-    index = int(r.motor_worst_segment)
-    t_acc, t_run = float(parts[index].torque_nm[0]), float(parts[index + 1].torque_nm[0])
-    slope = (t_acc - t_run) / app.accel_m_s2
-    room = r.motor_curve_nm / app.torque_safety_factor - t_run
-    return room / slope if slope > 0.0 and room > 0.0 else None
+    governs [m/s^2] (``Quantities.motor_fitting_accel_m_s2``; None: none fits)."""
+    accel = r.motor_fitting_accel_m_s2
+    return None if math.isnan(accel) else accel
 
 
 class MotorCurve(Check):
@@ -92,7 +83,7 @@ class MotorCurve(Check):
             "rpm": Amount(r.motor_worst_rpm, "rpm"),
             "segment": worst_segment(app, r),
         }
-        accel = accel_that_fits(app, s, r)
+        accel = accel_that_fits(r)
         if accel is None:
             return Phrase(
                 "The {segment} segment is {short} short: a motor giving {need} at {rpm}, or "
@@ -109,5 +100,5 @@ class MotorCurve(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float] | None:
-        accel = accel_that_fits(app, s, r)
+        accel = accel_that_fits(r)
         return None if accel is None else {"accel_m_s2": accel}

@@ -1,0 +1,179 @@
+"""The catalog as every query reads it, built once when the catalog loads and passed in.
+
+``CatalogIndex`` holds the candidates as columns (``CandidateTable``), the variant rows
+that robustness re-screens (every screw at both ends of each ranged value), the rows of
+each size and nut by lead (the lead sweep) and each candidate's row by id. Nothing in it
+changes after it is built, except one bounded cache of what a query's filters pick
+(``EligibleCache``), keyed by the filter values: most queries repeat a lead and a family
+and vary the load.
+"""
+
+import threading
+from collections import OrderedDict
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+import numpy as np
+from numpy.typing import NDArray
+
+from app.core.model import Application, ScrewSpec
+from app.core.robustness import Variants, build_variants
+from app.core.screening import Filters, eligible_mask, filters
+from app.core.table import COLUMNS, CandidateTable
+
+#: One size and nut of a series, every lead: (series id, nut material, coated,
+#: anti-backlash).
+SizeKey = tuple[str, str, bool, bool]
+#: Eligible candidates whose variant rows number at most this are screened together with
+#: them (a screening costs about as much for a few rows as for a few hundred).
+JOINT_MAX_VARIANTS = 600
+#: Sets of filters whose eligible rows are kept (the most recently used).
+ELIGIBLE_KEPT = 128
+
+
+@dataclass(frozen=True, slots=True)
+class Joint:
+    """Eligible rows (the first ``n`` rows of ``table``) followed by all their variant
+    rows; ``variants`` gives eligible row ``k``'s variants as its screw ``k`` (its table
+    is rows ``n`` on of ``table``)."""
+
+    table: CandidateTable
+    n: int
+    variants: Variants
+
+
+@dataclass(frozen=True, slots=True)
+class Eligible:
+    """The candidates one set of filters admits: their rows of the catalog table
+    (``index``), those rows as a table, and the ``Joint`` to screen them with their
+    variants in one pass (None: their variant rows are too many, or the index has none)."""
+
+    index: NDArray[np.intp]
+    table: CandidateTable
+    joint: Joint | None
+
+
+class EligibleCache:
+    """``Eligible`` rows by filter values, the ``size`` most recently used kept."""
+
+    def __init__(self, size: int) -> None:
+        self._size = size
+        self._held: OrderedDict[Filters, Eligible] = OrderedDict()
+        self._lock = threading.Lock()
+
+    def get(self, key: Filters, build: Callable[[], Eligible]) -> Eligible:
+        """The rows kept for ``key``, else ``build()``'s, kept."""
+        with self._lock:
+            found = self._held.get(key)
+            if found is not None:
+                self._held.move_to_end(key)
+                return found
+        found = build()
+        with self._lock:
+            self._held[key] = found
+            if len(self._held) > self._size:
+                self._held.popitem(last=False)
+        return found
+
+    def __len__(self) -> int:
+        return len(self._held)
+
+
+@dataclass(frozen=True, slots=True)
+class CatalogIndex:
+    """A catalog's candidates as the queries read them; see the module docstring.
+
+    ``variants`` is None for an index built without them (a synthetic catalog screened
+    once): then the variants of the screws judged are built when they are judged.
+    """
+
+    table: CandidateTable
+    variants: Variants | None
+    #: each candidate's row of ``table``, by id
+    positions: Mapping[str, int]
+    #: the rows of each size and nut, shortest lead first
+    sizes: Mapping[SizeKey, NDArray[np.intp]]
+    eligible_rows: EligibleCache = field(compare=False, repr=False)
+
+    @classmethod
+    def build(cls, screws: Sequence[ScrewSpec], with_variants: bool = True) -> "CatalogIndex":
+        """The index of ``screws``: columns, variant rows (unless ``with_variants`` is
+        False), rows by id and by size; every array read-only."""
+        table = _read_only(CandidateTable.build(screws))
+        variants = build_variants(table.screws) if with_variants else None
+        if variants is not None:
+            _read_only(variants.table)
+        return cls(
+            table=table,
+            variants=variants,
+            positions=MappingProxyType({s.id: i for i, s in enumerate(table.screws)}),
+            sizes=_sizes(table),
+            eligible_rows=EligibleCache(ELIGIBLE_KEPT),
+        )
+
+    def eligible(self, app: Application) -> Eligible:
+        """The candidates eligible for ``app`` (``screening.eligible_mask``), kept per
+        set of filters."""
+        return self.eligible_rows.get(filters(app), lambda: self._eligible(app))
+
+    def _eligible(self, app: Application) -> Eligible:
+        """The eligible rows, read-only: every query with these filters reads them."""
+        index = np.flatnonzero(eligible_mask(app, self.table))
+        index.setflags(write=False)
+        rows = _read_only(self.table.take(index))
+        return Eligible(index, rows, self._joint(index, rows))
+
+    def _joint(self, index: NDArray[np.intp], rows: CandidateTable) -> Joint | None:
+        """``rows`` (at ``index`` of ``table``) followed by their variant rows, when the
+        index has variant rows and these are at most ``JOINT_MAX_VARIANTS``."""
+        if self.variants is None:
+            return None
+        counts = np.diff(self.variants.start)[index]
+        if counts.sum() > JOINT_MAX_VARIANTS:
+            return None
+        picked = self.variants.rows(index.tolist())
+        start = np.concatenate(([0], np.cumsum(counts))).astype(np.intp)
+        names = tuple(self.variants.names[r] for r in picked.tolist())
+        own = Variants(_read_only(self.variants.table.take(picked)), names, start)
+        return Joint(_read_only(rows.join(own.table)), len(index), own)
+
+    def row(self, position: int) -> CandidateTable:
+        """The candidate at ``position`` of ``table`` as a table of one."""
+        return self.table.take(np.array([position], dtype=np.intp))
+
+    def variants_at(self, positions: Sequence[int]) -> tuple[Variants, Sequence[int]]:
+        """Variant rows holding those of the screws at ``positions`` of ``table``, and
+        where those screws are in them: the index's own, or (without) theirs built now."""
+        if self.variants is not None:
+            return self.variants, positions
+        screws = self.table.screws
+        return build_variants([screws[p] for p in positions]), range(len(positions))
+
+
+def size_of(screw: ScrewSpec) -> SizeKey:
+    """The size and nut ``screw`` is one lead of."""
+    return (screw.series_id, screw.nut_material, screw.coated, screw.anti_backlash)
+
+
+def _read_only(table: CandidateTable) -> CandidateTable:
+    """``table``, its columns made read-only (shared by every query that reads it)."""
+    for name in COLUMNS:
+        getattr(table, name).setflags(write=False)
+    return table
+
+
+def _sizes(table: CandidateTable) -> Mapping[SizeKey, NDArray[np.intp]]:
+    """The rows of each size and nut of ``table``, shortest lead first (one stable sort
+    by size, then lead)."""
+    codes: dict[SizeKey, int] = {}
+    code = np.array(
+        [codes.setdefault(size_of(s), len(codes)) for s in table.screws],
+        dtype=np.intp,
+    )
+    if not codes:
+        return MappingProxyType({})
+    order = np.lexsort((table.lead_m, code))
+    order.setflags(write=False)  # the groups below are views of it
+    groups = np.split(order, np.flatnonzero(np.diff(code[order])) + 1)
+    return MappingProxyType(dict(zip(codes, groups, strict=True)))

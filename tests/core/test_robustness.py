@@ -1,0 +1,72 @@
+"""Robustness (app.core.robustness) through its one function, on every path that uses it.
+
+``fixtures/robustness_queries.json`` holds, for twelve queries (a lead chosen, so the
+candidates and their variants are screened together, and any lead, so the variants of
+the returned ones are screened after; families, a nut material, a vertical axis, a move
+with a motor curve, advice that rejects), the ranked candidates with their verdicts as
+the selector gave them when each path kept its own code and caches. Every path must
+still give them: select, a catalog screw evaluated alone, and a screw outside the
+catalog with the same values (its variant rows built on the fly).
+"""
+
+import json
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from app.catalog import Catalog
+from app.core.evaluate import evaluate
+from app.core.model import Application
+from app.core.robustness import build_variants
+from app.core.selection import select, with_robustness
+
+QUERIES: dict[str, Any] = json.loads(
+    (Path(__file__).parents[1] / "fixtures" / "robustness_queries.json").read_text()
+)
+
+
+def _application(fields: dict[str, Any]) -> Application:
+    """The recorded application (lists back to the tuples the core takes)."""
+    tuples = {"families": tuple, "motor_curve": lambda v: tuple(map(tuple, v))}
+    return Application(**{k: tuples.get(k, lambda v: v)(v) for k, v in fields.items()})
+
+
+@pytest.mark.parametrize("name", QUERIES)
+def test_select_gives_the_recorded_verdicts(catalog: Catalog, name: str) -> None:
+    app = _application(QUERIES[name]["application"])
+    sel = select(app, catalog.index)
+    found = [
+        [ev.screw.id, r.robust, list(r.hinges_on)]
+        for ev, r in zip(sel.candidates, sel.robustness, strict=True)
+    ]
+    assert found == QUERIES[name]["ranked"]
+
+
+@pytest.mark.parametrize("name", QUERIES)
+def test_one_screw_gives_the_recorded_verdicts(catalog: Catalog, name: str) -> None:
+    """The first three ranked screws alone: from the index's variant rows (a catalog
+    screw's detail and POST /evaluate) and from rows built for a copy of it that the
+    catalog does not hold (a screw of the user's own)."""
+    app = _application(QUERIES[name]["application"])
+    index = catalog.index
+    assert index.variants is not None
+    for sid, robust, hinges_on in QUERIES[name]["ranked"][:3]:
+        at = index.positions[sid]
+        ev = with_robustness(app, evaluate(app, index.row(at)), index.variants, at)
+        assert (ev.passed, ev.robust, list(ev.hinges_on)) == (True, robust, hinges_on), sid
+        mine = replace(index.table.screws[at], id="mine")
+        own = with_robustness(app, evaluate(app, mine), build_variants([mine]), 0)
+        assert (own.robust, list(own.hinges_on)) == (robust, hinges_on), sid
+
+
+def test_a_failing_screw_is_left_unjudged(catalog: Catalog) -> None:
+    """A screw that fails as catalogued is not re-screened: it fails anyway."""
+    app = Application(load_n=3000.0, speed_m_s=0.5, length_m=2.0)
+    at = catalog.index.positions["B4000-L2"]
+    ev = evaluate(app, catalog.index.row(at))
+    assert not ev.passed
+    assert catalog.index.variants is not None
+    judged = with_robustness(app, ev, catalog.index.variants, at)
+    assert judged is ev and judged.robust is None and judged.hinges_on == ()

@@ -1,0 +1,74 @@
+"""The lead sweep (app.core.sweep): one size and nut at every lead, screened for an
+application; each point equals the full evaluation of that screw."""
+
+import math
+from dataclasses import replace
+
+import pytest
+
+from app.catalog import Catalog
+from app.core.evaluate import evaluate
+from app.core.index import size_of
+from app.core.model import Application
+from app.core.sweep import lead_sweep
+
+APP = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5, lead_m=0.01)
+B8000 = ("B8000", "polyacetal", False, False)
+
+
+def test_every_lead_of_the_size_in_order(catalog: Catalog) -> None:
+    """B8000 uncoated: its 18 leads, shortest first, whatever lead the application asks
+    for (the sweep is about choosing it)."""
+    sweep = lead_sweep(APP, catalog.index, B8000)
+    leads_mm = [round(p.lead_m * 1e3, 6) for p in sweep]
+    assert leads_mm == [1, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 12.7, 15, 20, 25, 25.4, 30, 40, 50]
+    assert lead_sweep(replace(APP, lead_m=0.002), catalog.index, B8000) == sweep
+
+
+def test_each_point_equals_the_evaluation_of_its_screw(catalog: Catalog) -> None:
+    """Drive torque, speed share (n / n_allowed) and PV share (the PV check's
+    utilisation) of every lead equal ``evaluate`` of that screw."""
+    screws = [s for s in catalog.series["B8000"].screws if not s.coated]
+    by_lead = {s.lead_m: s for s in screws}
+    sweep = lead_sweep(APP, catalog.index, B8000)
+    assert len(sweep) == len(screws)
+    for point in sweep:
+        ev = evaluate(APP, by_lead[point.lead_m])
+        assert point.total_nm == pytest.approx(ev.torque.total_nm, rel=1e-12)
+        allowed = ev.critical_speed.allowed_rpm
+        assert point.speed_share == pytest.approx(ev.rpm / allowed, rel=1e-12)
+        pv = next(c for c in ev.checks if c.name == "pv")
+        assert point.pv_share == pytest.approx(pv.utilization, rel=1e-12)
+
+
+def test_the_speed_share_at_10_mm_by_hand(catalog: Catalog) -> None:
+    """50 mm/s on a 10 mm lead is n = 300 rpm. The critical speed of the 500 mm screw
+    fixed-simple is n_c = 60 / (2 pi) (beta / L)^2 sqrt(E / rho) d_r / 4 with
+    beta = 3.92660 (Blevins, table 8-1), allowed at 0.8 n_c."""
+    screw = catalog.by_id["B8000-L10"]
+    beta, length = 3.92660, 0.5
+    n_c = (
+        60
+        / (2 * math.pi)
+        * (beta / length) ** 2
+        * math.sqrt(screw.youngs_modulus_pa / screw.density_kg_m3)
+        * screw.root_diameter_m
+        / 4
+    )
+    (point,) = [p for p in lead_sweep(APP, catalog.index, B8000) if p.lead_m == 0.01]
+    assert point.speed_share == pytest.approx(300.0 / (0.8 * n_c), rel=1e-5)
+
+
+def test_a_size_the_catalog_lacks_has_no_sweep(catalog: Catalog) -> None:
+    assert lead_sweep(APP, catalog.index, ("B8000", "polyacetal", True, True)) == []
+
+
+def test_a_trapezoidal_size_sweeps_its_own_nut_material(catalog: Catalog) -> None:
+    """Tr12 P3 comes with bronze, acetal and PTFE nuts at leads 3 and 6 mm (one and two
+    starts); the sweep of the bronze nut holds the bronze screws alone, one per lead."""
+    size = size_of(catalog.by_id["Tr12x3-bronze"])
+    sweep = lead_sweep(APP, catalog.index, size)
+    assert [round(p.lead_m * 1e3, 6) for p in sweep] == [3.0, 6.0]
+    for point, sid in zip(sweep, ("Tr12x3-bronze", "Tr12x6(P3)-bronze"), strict=True):
+        ev = evaluate(APP, catalog.by_id[sid])
+        assert point.total_nm == pytest.approx(ev.torque.total_nm, rel=1e-12)
