@@ -164,16 +164,22 @@ def convert_text(text: str, quantity: Quantity, source: str, target: str) -> str
     return f"{from_api(api, quantity, {**DEFAULT_UNITS, key: target}):.{digits}g}"
 
 
-def read_typed(record: str) -> tuple[str, str] | None:
-    """(text, unit) of a ``typed_*`` record 'text|unit'; None when there is none."""
+def read_typed(record: str, quantity: Quantity) -> tuple[str, str] | None:
+    """(text, unit) of a ``typed_*`` record 'text|unit'; None when there is none or it
+    names no unit of ``quantity`` (a record is page state, so a bad one is ignored).
+
+    >>> read_typed("50|N", "force"), read_typed("50|evil", "force"), read_typed("50", "force")
+    (('50', 'N'), None, None)
+    """
     text, bar, unit = record.partition("|")
-    return (text, unit) if bar and text and unit else None
+    known = unit in UNIT_CHOICES[unit_key(quantity)]
+    return (text, unit) if bar and text and known else None
 
 
 def typed_origin(raw: str, record: str, quantity: Quantity, entered_unit: str) -> tuple[str, str]:
     """(text, unit) the shown number came from: the recorded typed text while the field
     still shows its conversion, else the field's own text in the unit it is shown in."""
-    typed = read_typed(record)
+    typed = read_typed(record, quantity)
     if typed is not None and convert_text(typed[0], quantity, typed[1], entered_unit) == raw:
         return typed
     return raw, entered_unit
