@@ -480,9 +480,12 @@ def test_an_infeasible_change_is_not_offered_but_said(client: TestClient) -> Non
 )
 def test_every_apply_link_is_accepted(client: TestClient, params: dict[str, str]) -> None:
     """Each proposed change lies within its field's bounds: every Apply link renders a page
-    without an input error."""
+    without an input error, and carries the proposal as shown (3 figures), in any unit."""
     page = soup(client.get("/", params=params))
+    assert page.select("a.apply")
     for link in page.select("a.apply, a.apply-all"):
+        changed = set(parse_qsl(link["href"].split("?", 1)[1])) - set(params.items())
+        assert changed and all(float(v) == float(f"{float(v):.3g}") for _, v in changed)
         after = client.get(link["href"])
         assert after.status_code == 200, link["href"]
         assert not soup(after).select(".error:not(:empty)"), link["href"]
@@ -508,6 +511,30 @@ def test_a_bad_typed_record_is_ignored(client: TestClient, record: str) -> None:
     response = client.get("/", params=params)
     assert response.status_code == 200
     assert soup(response).select_one("#f-load")["value"] == "22.48"
+
+
+@pytest.mark.parametrize(
+    "typed",
+    [
+        {"length": "3937.0078", "length_unit": "in"},  # 6 figures (3937.01 in) exceed 100 m
+        {"load": "100.4824", "force_unit": "lbf"},
+        {"load": "100.4824", "speed": "50.00004"},
+    ],
+    ids=["length-at-bound", "load-lbf", "many-figures"],
+)
+def test_every_link_of_a_result_reproduces_it(client: TestClient, typed: dict[str, str]) -> None:
+    """The share, detail and export links carry the typed numbers exactly: each answers,
+    and the share link shows the same candidates as the page it came from."""
+    page = soup(client.get("/", params={**AXIS, **typed}))
+    share = page.select_one("a.share-link")["href"]
+    again = soup(client.get(share))
+    assert candidate_ids(again) == candidate_ids(page)
+    verdict = ".counts, .no-pass .verdict"
+    assert again.select_one(verdict).text == page.select_one(verdict).text
+    links = [a["href"] for a in page.select("a.export, a.detail-link")]
+    assert len(links) >= 2
+    for href in links:
+        assert client.get(href).status_code == 200, href
 
 
 # exports

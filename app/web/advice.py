@@ -14,8 +14,8 @@ from typing import Any
 from app.core.checks import BY_NAME
 from app.fields import BY_API
 from app.schemas import ApplicationIn, CandidateOut, PageSelectionOut, SelectOut
-from app.units import sig, to_api
-from app.web.form import share_query
+from app.units import sig
+from app.web.form import page_value, share_query
 
 #: significant figures of a proposed value, rounded towards the side that still clears.
 PROPOSAL_DIGITS = 3
@@ -77,7 +77,7 @@ def proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, st
     current = float(getattr(inputs, api))
     shown = field.display_value(target, units)
     rounded = round_towards(float(shown), target < current)
-    value = to_api(rounded, field.quantity, units) if field.quantity else rounded
+    value = page_value(field, repr(rounded), units)  # as the page reads the rounded text
     low, high = field.bounds or (-math.inf, math.inf)
     return min(max(value, low), high)
 
