@@ -5,6 +5,7 @@ import json
 import os
 import signal
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from types import FrameType
 
@@ -15,6 +16,9 @@ from pydantic_settings import SettingsError
 from app.catalog import CatalogError, load_catalog
 from app.server.protocol import BoundedHttpToolsProtocol
 from app.settings import Settings, get_settings
+
+#: worker processes at most: one per core is the advice, and each holds the catalog
+MAX_WORKERS = 64
 
 
 def event_loop(workers: int) -> str:
@@ -43,11 +47,31 @@ def _stopped(signum: int, frame: FrameType | None) -> None:
     raise SystemExit(0)
 
 
+def whole_number(low: int, high: int) -> Callable[[str], int]:
+    """An argparse type: a whole number from ``low`` to ``high``, else a usage error
+    (exit 2, one line) rather than a traceback or a server that starts on nonsense.
+
+    >>> whole_number(1, 65535)("8000")
+    8000
+    """
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"must be {low} to {high}, got {value}")
+        return value
+
+    return parse
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="leadscrew-selector", description=__doc__)
     parser.add_argument("--host", default="127.0.0.1")
-    parser.add_argument("--port", type=int, default=8000)
-    parser.add_argument("--workers", type=int, default=1)
+    parser.add_argument("--port", type=whole_number(1, 65535), default=8000)
+    parser.add_argument("--workers", type=whole_number(1, MAX_WORKERS), default=1)
     parser.add_argument(
         "--log-level",
         default="info",
