@@ -142,7 +142,6 @@ def main(argv: list[str] | None = None) -> int:
         # request-read deadline and head limits: app.server.protocol, from the same settings
         http=BoundedHttpToolsProtocol,
         timeout_keep_alive=settings.keep_alive_timeout_s,
-        limit_concurrency=settings.max_connections,
     )
     return 0
 

@@ -32,7 +32,8 @@ class Settings(BaseSettings):
     #: request line and headers together, in bytes, and the number of header lines (431)
     max_header_bytes: int = 32 * 1024
     max_headers: int = 100
-    #: open connections per process past which uvicorn answers every request 503
+    #: open connections per process past which a request (not the health check) is
+    #: answered 503 with Retry-After and its connection closed (app.server.protocol)
     max_connections: int = 1024
 
 

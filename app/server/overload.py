@@ -20,6 +20,8 @@ Receive = Callable[[], Awaitable[Message]]
 Send = Callable[[Message], Awaitable[None]]
 ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
 
+#: Answered however busy the process is: a balancer must not take busy for down.
+NEVER_SHED = frozenset({"/api/v1/health"})
 BUSY = json.dumps(
     {"error": "server busy", "detail": [{"field": "request", "message": "server busy, retry"}]}
 ).encode()
@@ -61,16 +63,22 @@ class OverloadMiddleware:
             self.in_flight -= 1
 
     async def _busy(self, send: Send) -> None:
-        await send(
-            {
-                "type": "http.response.start",
-                "status": 503,
-                "headers": [
-                    (b"content-type", b"application/json"),
-                    (b"content-length", str(len(BUSY)).encode()),
-                    (b"retry-after", str(self.retry_after_s).encode()),
-                    (b"cache-control", b"no-store"),
-                ],
-            }
-        )
-        await send({"type": "http.response.body", "body": BUSY})
+        await send_busy(send, self.retry_after_s)
+
+
+async def send_busy(send: Send, retry_after_s: int, *extra: tuple[bytes, bytes]) -> None:
+    """Answer 503 with Retry-After (and ``extra`` headers): come back, or go elsewhere."""
+    await send(
+        {
+            "type": "http.response.start",
+            "status": 503,
+            "headers": [
+                (b"content-type", b"application/json"),
+                (b"content-length", str(len(BUSY)).encode()),
+                (b"retry-after", str(retry_after_s).encode()),
+                (b"cache-control", b"no-store"),
+                *extra,
+            ],
+        }
+    )
+    await send({"type": "http.response.body", "body": BUSY})
