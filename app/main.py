@@ -15,7 +15,7 @@ from app.paths import resource_dir
 from app.server.cache import ResponseCache
 from app.server.compression import NegotiatedGZipMiddleware
 from app.server.head import HeadAsGetMiddleware
-from app.server.overload import NEVER_SHED, OverloadMiddleware
+from app.server.overload import NEVER_SHED, OverloadMiddleware, request_cost
 from app.server.security import SecurityMiddleware
 from app.server.staticfiles import PrecompressedStaticFiles
 from app.settings import Settings, get_settings
@@ -60,6 +60,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_in_flight=settings.max_requests_in_flight,
         retry_after_s=settings.overload_retry_after_s,
         exempt_paths=NEVER_SHED,
+        cost=request_cost,
     )
     app.add_middleware(
         ResponseCache,
