@@ -170,7 +170,7 @@ def test_manifests_are_valid_kubernetes(path: Path) -> None:
 
 def test_the_manifests_fit_together() -> None:
     docs = _manifests()
-    assert set(docs) == {"Deployment", "Service", "HorizontalPodAutoscaler"}
+    assert set(docs) == {"Deployment", "Service", "HorizontalPodAutoscaler", "PodDisruptionBudget"}
     deployment, service, hpa = docs["Deployment"], docs["Service"], docs["HorizontalPodAutoscaler"]
     spec = deployment["spec"]
     assert spec["replicas"] >= 2
@@ -185,6 +185,35 @@ def test_the_manifests_fit_together() -> None:
     assert hpa["apiVersion"] == "autoscaling/v2"
     assert hpa["spec"]["scaleTargetRef"]["name"] == deployment["metadata"]["name"]
     assert hpa["spec"]["minReplicas"] >= 2
+
+
+def test_pods_stop_and_are_disrupted_gracefully() -> None:
+    """A preStop pause within the grace period (requests already routed are answered),
+    and a disruption budget over the same pods that keeps most replicas serving."""
+    docs = _manifests()
+    spec = docs["Deployment"]["spec"]
+    pod = spec["template"]["spec"]
+    (container,) = pod["containers"]
+    pause = container["lifecycle"]["preStop"]["sleep"]["seconds"]
+    assert 0 < pause < pod["terminationGracePeriodSeconds"]
+    budget = docs["PodDisruptionBudget"]["spec"]
+    assert (
+        budget["selector"]["matchLabels"].items() <= spec["template"]["metadata"]["labels"].items()
+    )
+    assert budget["maxUnavailable"] < spec["replicas"]
+
+
+def test_probe_timeouts_leave_room_for_a_busy_pod() -> None:
+    """A probe waits longer than the health check took under costly load (at most 1.5 s
+    in attack 2 of ``bench/run.py --only attacks``), and liveness, which restarts the pod,
+    is the more patient of the two."""
+    (container,) = _manifests()["Deployment"]["spec"]["template"]["spec"]["containers"]
+    ready, live = container["readinessProbe"], container["livenessProbe"]
+    assert ready["timeoutSeconds"] >= 3
+    assert live["timeoutSeconds"] >= ready["timeoutSeconds"]
+    assert live["timeoutSeconds"] * live["failureThreshold"] > ready["timeoutSeconds"] * 2
+    for probe in (ready, live):
+        assert probe["periodSeconds"] >= probe["timeoutSeconds"]
 
 
 def test_an_invalid_manifest_is_caught() -> None:
