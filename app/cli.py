@@ -89,6 +89,10 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+class StartError(Exception):
+    """A fault that stops start-up, with the line to print."""
+
+
 def _checked_settings(catalog_dirs: list[Path]) -> Settings:
     """The settings, and the catalog they name loaded once: every fault stops start-up
     here, before any worker is forked (a worker failing at start-up is started again,
@@ -112,13 +116,7 @@ def _checked_settings(catalog_dirs: list[Path]) -> Settings:
 
 def _one_line(exc: ValidationError) -> str:
     """A settings error as the variable and the reason, on one line."""
-    return "; ".join(
-        f"LEADSCREW_{'_'.join(map(str, e['loc'][:1])).upper()}: {e['msg']}" for e in exc.errors()
-    )
-
-
-class StartError(Exception):
-    """A fault that stops start-up, with the line to print."""
+    return "; ".join(f"LEADSCREW_{str(e['loc'][0]).upper()}: {e['msg']}" for e in exc.errors())
 
 
 def main(argv: list[str] | None = None) -> int:
