@@ -166,9 +166,9 @@ def select(
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
     counts cover everything screened; the summary offers input changes within ``ranges``
-    only. The passing ones' robustness is screened now; full
-    evaluations of the returned candidates are built when first read (``short_forms``
-    reads the same arrays without them).
+    only. The passing ones' robustness is screened now; full evaluations of the returned
+    candidates are built when first read (``short_forms`` reads the same arrays without
+    them).
     """
     table = (
         candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)
