@@ -130,29 +130,6 @@ def health_figures(health: list[tuple[int, float]]) -> tuple[int, float, float]:
     return ok, statistics.median(latencies), latencies[-1]
 
 
-# --- 2. costly valid queries --------------------------------------------------------------
-
-
-def costly_queries(report: Report, seconds: float) -> float:
-    """Attack 2; returns the slowest health check [s] (the probes' timeout must exceed it)."""
-    report.section("2. Health under costly valid queries: 64 connections, detail=full&limit=100")
-    with cli_server() as (port, _):
-        result, health = under_load(port, COSTLY.replace("%s", "%.3f"), 64, seconds)
-    ok, p50, slowest = health_figures(health)
-    report.info("answers", _statuses(result))
-    report.info("health checks", f"{ok} of {len(health)} answered 200")
-    report.info("health p50", f"{p50 * 1e3:.0f} ms")
-    timeout = container()["readinessProbe"]["timeoutSeconds"]
-    held(report, f"2. health slowest (readiness timeout {timeout} s)", f"{slowest * 1e3:.0f} ms",
-         ok == len(health) > 0 and slowest < timeout)  # fmt: skip
-    return slowest
-
-
-def _statuses(result: load.LoadResult) -> str:
-    counts = ", ".join(f"{s}: {len(v):,}" for s, v in sorted(result.latencies_s.items()))
-    return f"{counts}; timeouts {result.timeouts}, errors {result.errors}"
-
-
 # --- 1. overload through nginx ------------------------------------------------------------
 
 
@@ -209,6 +186,29 @@ def overload_through_nginx(report: Report, seconds: float, tmp: Path) -> None:
     report.info("error.log", f"{log_bytes:,} bytes, {limiting} lines about limiting")
     held(report, "1. error.log quiet under refusals", f"{log_bytes:,} B",
          limiting == 0 and log_bytes < 1024 * 1024)  # fmt: skip
+
+
+# --- 2. costly valid queries --------------------------------------------------------------
+
+
+def costly_queries(report: Report, seconds: float) -> float:
+    """Attack 2; returns the slowest health check [s] (the probes' timeout must exceed it)."""
+    report.section("2. Health under costly valid queries: 64 connections, detail=full&limit=100")
+    with cli_server() as (port, _):
+        result, health = under_load(port, COSTLY.replace("%s", "%.3f"), 64, seconds)
+    ok, p50, slowest = health_figures(health)
+    report.info("answers", _statuses(result))
+    report.info("health checks", f"{ok} of {len(health)} answered 200")
+    report.info("health p50", f"{p50 * 1e3:.0f} ms")
+    timeout = container()["readinessProbe"]["timeoutSeconds"]
+    held(report, f"2. health slowest (readiness timeout {timeout} s)", f"{slowest * 1e3:.0f} ms",
+         ok == len(health) > 0 and slowest < timeout)  # fmt: skip
+    return slowest
+
+
+def _statuses(result: load.LoadResult) -> str:
+    counts = ", ".join(f"{s}: {len(v):,}" for s, v in sorted(result.latencies_s.items()))
+    return f"{counts}; timeouts {result.timeouts}, errors {result.errors}"
 
 
 # --- 3. idle sockets past the connection limit --------------------------------------------
