@@ -5,14 +5,20 @@ import json
 import os
 import signal
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from types import FrameType
 
 import uvicorn
+from pydantic import ValidationError
+from pydantic_settings import SettingsError
 
 from app.catalog import CatalogError, load_catalog
 from app.server.protocol import BoundedHttpToolsProtocol
-from app.settings import get_settings
+from app.settings import Settings, get_settings
+
+#: worker processes at most: one per core is the advice, and each holds the catalog
+MAX_WORKERS = 64
 
 
 def event_loop(workers: int) -> str:
@@ -41,11 +47,31 @@ def _stopped(signum: int, frame: FrameType | None) -> None:
     raise SystemExit(0)
 
 
-def main(argv: list[str] | None = None) -> int:
+def whole_number(low: int, high: int) -> Callable[[str], int]:
+    """An argparse type: a whole number from ``low`` to ``high``, else a usage error
+    (exit 2, one line) rather than a traceback or a server that starts on nonsense.
+
+    >>> whole_number(1, 65535)("8000")
+    8000
+    """
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"must be {low} to {high}, got {value}")
+        return value
+
+    return parse
+
+
+def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="leadscrew-selector", description=__doc__)
     parser.add_argument("--host", default="127.0.0.1")
-    parser.add_argument("--port", type=int, default=8000)
-    parser.add_argument("--workers", type=int, default=1)
+    parser.add_argument("--port", type=whole_number(1, 65535), default=8000)
+    parser.add_argument("--workers", type=whole_number(1, MAX_WORKERS), default=1)
     parser.add_argument(
         "--log-level",
         default="info",
@@ -57,21 +83,51 @@ def main(argv: list[str] | None = None) -> int:
         action="append",
         type=Path,
         default=[],
-        help="extra catalog directory merged into the built-in one (repeatable)",
+        help="extra catalog directory merged into the built-in one (repeatable; "
+        "default: LEADSCREW_CATALOG_DIRS)",
     )
-    args = parser.parse_args(argv)
+    return parser
+
+
+class StartError(Exception):
+    """A fault that stops start-up, with the line to print."""
+
+
+def _checked_settings(catalog_dirs: list[Path]) -> Settings:
+    """The settings, and the catalog they name loaded once: every fault stops start-up
+    here, before any worker is forked (a worker failing at start-up is started again,
+    for ever), as one line naming the setting or the catalog file. ``catalog_dirs`` (the
+    command line's) replace the environment's."""
     try:
-        load_catalog(args.catalog_dir)  # fail before forking workers, with the file named
+        settings = get_settings()
+    except ValidationError as exc:
+        raise StartError(f"settings error: {_one_line(exc)}") from exc
+    except SettingsError as exc:  # a value that is not JSON where JSON is needed
+        raise StartError(f"settings error: {exc}") from exc
+    dirs = catalog_dirs or settings.catalog_dirs
+    try:
+        load_catalog(dirs)
     except CatalogError as exc:
-        print(f"catalog error: {exc}", file=sys.stderr)
+        raise StartError(f"catalog error: {exc}") from exc
+    if catalog_dirs:
+        os.environ["LEADSCREW_CATALOG_DIRS"] = json.dumps([str(p.resolve()) for p in dirs])
+    return settings
+
+
+def _one_line(exc: ValidationError) -> str:
+    """A settings error as the variable and the reason, on one line."""
+    return "; ".join(f"LEADSCREW_{str(e['loc'][0]).upper()}: {e['msg']}" for e in exc.errors())
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        settings = _checked_settings(args.catalog_dir)
+    except StartError as exc:
+        print(exc, file=sys.stderr)
         return 2
-    if args.catalog_dir:
-        os.environ["LEADSCREW_CATALOG_DIRS"] = json.dumps(
-            [str(p.resolve()) for p in args.catalog_dir]
-        )
     for stop in (signal.SIGTERM, signal.SIGINT):
         signal.signal(stop, _stopped)
-    settings = get_settings()
     uvicorn.run(
         "app.main:create_app",
         factory=True,
@@ -84,7 +140,6 @@ def main(argv: list[str] | None = None) -> int:
         # request-read deadline and head limits: app.server.protocol, from the same settings
         http=BoundedHttpToolsProtocol,
         timeout_keep_alive=settings.keep_alive_timeout_s,
-        limit_concurrency=settings.max_connections,
     )
     return 0
 

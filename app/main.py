@@ -15,7 +15,7 @@ from app.paths import resource_dir
 from app.server.cache import ResponseCache
 from app.server.compression import NegotiatedGZipMiddleware
 from app.server.head import HeadAsGetMiddleware
-from app.server.overload import OverloadMiddleware
+from app.server.overload import NEVER_SHED, OverloadMiddleware, request_cost
 from app.server.security import SecurityMiddleware
 from app.server.staticfiles import PrecompressedStaticFiles
 from app.settings import Settings, get_settings
@@ -25,8 +25,6 @@ from app.web import custom, guide, pages
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
 FRAGMENT_PATHS = frozenset({"/", "/detail"})
-#: Answered however busy the process is: a balancer must not take busy for down.
-NEVER_SHED = frozenset({"/api/v1/health"})
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -62,6 +60,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_in_flight=settings.max_requests_in_flight,
         retry_after_s=settings.overload_retry_after_s,
         exempt_paths=NEVER_SHED,
+        cost=request_cost,
     )
     app.add_middleware(
         ResponseCache,

@@ -13,7 +13,7 @@ from app.core.brief import Brief
 from app.core.formulas import torque
 from app.core.model import CheckResult, Evaluation, Provenance, ScrewSpec, failed_advice
 from app.core.selection import Selection, short_forms
-from app.fields import BY_API, FIELDS
+from app.fields import FIELDS
 from app.schemas import (
     AccuracyOut,
     BucklingOut,
@@ -396,7 +396,6 @@ def counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]
             changes=[
                 construct(ChangeOut, inputs=_api_change(c.inputs), admits=c.admits)
                 for c in sel.summary.changes
-                if feasible(_api_change(c.inputs))
             ],
         ),
     }
@@ -405,15 +404,6 @@ def counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]
 def _api_change(change: Mapping[str, float]) -> dict[str, float]:
     """Core input names and SI values as the API's names and units (the field table)."""
     return {BY_CORE[k].api: v / BY_CORE[k].si_factor for k, v in change.items()}
-
-
-def feasible(change: Mapping[str, float]) -> bool:
-    """Every value of an API change lies within its input's bounds."""
-    for name, value in change.items():
-        bounds = BY_API[name].bounds
-        if bounds is not None and not bounds[0] <= value <= bounds[1]:
-            return False
-    return True
 
 
 def _jsonable(value: Any) -> Any:

@@ -8,6 +8,7 @@ from app.construct import construct
 from app.core.evaluate import evaluate
 from app.core.robustness import build_variants
 from app.core.selection import select, short_forms, with_robustness
+from app.fields import FIELDS
 from app.formulas import FORMULAS
 from app.present import (
     candidate_out,
@@ -33,6 +34,13 @@ from app.web.form import share_query
 
 #: The formulas table as output models, built once.
 FORMULAS_OUT = {name: FormulaOut(**f) for name, f in FORMULAS.items()}
+#: Each input's accepted range (the field table's bounds) in the core's SI units: the
+#: summary never proposes a value the form or the API would refuse.
+INPUT_RANGES = {
+    f.core: (f.bounds[0] * f.si_factor, f.bounds[1] * f.si_factor)
+    for f in FIELDS
+    if f.bounds is not None
+}
 #: Where the compact select response points for the formulas table.
 FORMULAS_URL = "/api/v1/formulas"
 
@@ -46,7 +54,7 @@ def run_selection(
 ) -> SelectOut:
     """Select and rank over the catalog: the API's select response, its sentences in
     ``units`` (the API's own by default)."""
-    selection = select(inputs.to_core(), catalog.index)
+    selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
     return construct_select_out(inputs, catalog, selection_out(selection, units))
 
 
@@ -72,7 +80,7 @@ def run_page_selection(
     (the list; each one's detail loads when opened), sentences in ``units``. The rejected
     are in full too only when nothing passes: then the charts and the advice are about
     them."""
-    selection = select(inputs.to_core(), catalog.index)
+    selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
     app = selection.application
     rejected = selection.rejected if not selection.passed else ()
     out = construct(
@@ -91,7 +99,7 @@ def run_page_selection(
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
     """Select and rank over the catalog: the API's compact select response
     (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
-    selection = select(inputs.to_core(), catalog.index)
+    selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
     return {
         "detail": "summary",
         "inputs": inputs,

@@ -17,10 +17,14 @@ class Settings(BaseSettings):
     response_cache_bytes: int = 16 * 1024 * 1024
     #: responses kept at most, however small (0: off)
     response_cache_entries: int = 4096
-    #: requests one process works on at once; more are answered 503 at once (0: no limit).
-    #: 32 requests that each compute a page (about 15 ms) are all answered within half a
-    #: second; past that, a client does better to retry or go to another process.
+    #: requests one process works on at once, counted by cost (a page or a compact select
+    #: 1, an answer with every number 1 + limit / 8: app.server.overload); more are
+    #: answered 503 at once (0: no limit). 32 units of work (about 4 ms each) are all
+    #: answered within a fraction of a second; past that, a client does better to retry or
+    #: go to another process.
     max_requests_in_flight: int = 32
+    #: threads that compute selections and pages, off the event loop (app.server.compute)
+    compute_threads: int = 2
     #: the Retry-After of those 503s
     overload_retry_after_s: int = 1
     # --- the server (app.cli, app.server.protocol) ---
@@ -32,7 +36,8 @@ class Settings(BaseSettings):
     #: request line and headers together, in bytes, and the number of header lines (431)
     max_header_bytes: int = 32 * 1024
     max_headers: int = 100
-    #: open connections per process past which uvicorn answers every request 503
+    #: open connections per process past which a request (not the health check) is
+    #: answered 503 with Retry-After and its connection closed (app.server.protocol)
     max_connections: int = 1024
 
 

@@ -21,6 +21,12 @@ class Report:
         print(f"  {name:<44} {value:>16}   target {target:<18} {verdict}", flush=True)
         self.rows.append((name, passed))
 
+    def attack(self, name: str, value: str, held: bool) -> None:
+        """An attack run again: "held" when the defence holds, "BROKEN" when it gets
+        through (counted as PASS and MISS in the summary)."""
+        print(f"  {name:<44} {value:>28}   {'held' if held else 'BROKEN'}", flush=True)
+        self.rows.append((name, held))
+
     def summary(self) -> None:
         passed = [n for n, ok in self.rows if ok]
         missed = [n for n, ok in self.rows if ok is False]

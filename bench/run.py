@@ -38,11 +38,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--soak", action="store_true", help="add the 60 s load test per endpoint")
     parser.add_argument("--soak-seconds", type=int, default=60)
     parser.add_argument("--seconds", type=int, default=10, help="wrk duration per endpoint")
-    parser.add_argument("--only", choices=("core", "http", "hostile"), help="run one part")
+    parser.add_argument(
+        "--only", choices=("core", "http", "hostile", "attacks"), help="run one part"
+    )
     args = parser.parse_args(argv)
     # `python3 bench/run.py` puts bench/ first on the path; the repository root belongs there
     sys.path[:] = [str(ROOT), *(p for p in sys.path if Path(p or ".").resolve() != ROOT / "bench")]
-    from bench import core, hostile, web
+    from bench import attacks, core, hostile, web
     from bench.report import Report
 
     report = Report()
@@ -63,6 +65,9 @@ def main(argv: list[str] | None = None) -> int:
     if args.only in (None, "hostile"):
         with tempfile.TemporaryDirectory(prefix="leadscrew-bench-") as tmp:
             hostile.run(report, seconds=args.seconds, tmp=Path(tmp))
+    if args.only in (None, "hostile", "attacks"):
+        with tempfile.TemporaryDirectory(prefix="leadscrew-attacks-") as tmp:
+            attacks.run(report, seconds=min(args.seconds, 5), tmp=Path(tmp))
     report.info("load average at the end", " ".join(f"{x:.2f}" for x in os.getloadavg()))
     report.summary()
     return 0

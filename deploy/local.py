@@ -6,12 +6,13 @@ against it. The deploy tests (tests/test_deploy.py) and the hostile-load bench
 
 import getpass
 import http.client
+import os
 import socket
 import subprocess
 import sys
 import threading
 import time
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -61,23 +62,27 @@ def stop(proc: subprocess.Popen[bytes]) -> None:
         proc.wait()
 
 
-def start_app(port: int) -> subprocess.Popen[bytes]:
-    """One app process on ``port``, started as ``leadscrew-selector`` starts it."""
+def start_app(port: int, env: Mapping[str, str] | None = None) -> subprocess.Popen[bytes]:
+    """One app process on ``port``, started as ``leadscrew-selector`` starts it, with
+    ``env`` added to the environment (settings: ``LEADSCREW_*``)."""
     cmd = [sys.executable, "-m", "app.cli", "--port", str(port), "--log-level", "warning"]
-    return subprocess.Popen(cmd, cwd=ROOT)
+    return subprocess.Popen(cmd, cwd=ROOT, env={**os.environ, **(env or {})})
 
 
 @contextmanager
-def nginx_in_front(prefix: Path, apps: int = 2) -> Iterator[int]:
+def nginx_in_front(
+    prefix: Path, apps: int = 2, env: Mapping[str, str] | None = None
+) -> Iterator[int]:
     """nginx (config from ``deploy/render.py``, checked with ``nginx -t``) in front of
-    ``apps`` app processes, run from the prefix folder ``prefix``; yields nginx's port."""
+    ``apps`` app processes (``env`` added to their environment), run from the prefix
+    folder ``prefix``; yields nginx's port."""
     started: list[subprocess.Popen[bytes]] = []
     nginx = None
     try:
         upstreams = []
         for _ in range(apps):
             port = free_port()
-            started.append(start_app(port))
+            started.append(start_app(port, env))
             upstreams += ["--upstream", f"127.0.0.1:{port}"]
         for proc, address in zip(started, upstreams[1::2], strict=True):
             wait_until_healthy(int(address.rsplit(":", 1)[1]), proc, "app.cli")

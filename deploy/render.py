@@ -17,9 +17,7 @@ TEMPLATE = Path(__file__).resolve().with_name("nginx.conf.template")
 
 def render(listen: str, upstreams: list[str], static_root: Path, user: str | None) -> str:
     """The configuration text; ``user`` None leaves the worker user to nginx's default."""
-    servers = "\n".join(
-        f"        server {address} max_fails=3 fail_timeout=10s;" for address in upstreams
-    )
+    servers = "\n".join(f"        server {address} max_fails=0;" for address in upstreams)
     fields = {
         "{{USER}}": f"user {user};" if user else "",
         "{{LISTEN}}": listen,

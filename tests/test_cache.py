@@ -18,35 +18,6 @@ SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
 PAGE = "/?load=100&speed=50&length=500&lead=10"
 
 
-def test_repeated_select_is_a_hit_with_the_same_bytes() -> None:
-    client = TestClient(create_app(Settings()))
-    first, second = client.get(SELECT), client.get(SELECT)
-    assert (first.headers["x-cache"], second.headers["x-cache"]) == ("miss", "hit")
-    assert first.content == second.content
-    assert second.headers["content-security-policy"].startswith("default-src 'self'")
-
-
-def test_fragment_and_full_page_are_cached_apart() -> None:
-    client = TestClient(create_app(Settings()))
-    fragment = client.get(PAGE, headers={"HX-Request": "true"})
-    full = client.get(PAGE)
-    assert full.headers["x-cache"] == "miss"
-    assert "<html" in full.text and "<html" not in fragment.text
-    again = client.get(PAGE, headers={"HX-Request": "true"})
-    assert again.headers["x-cache"] == "hit" and again.text == fragment.text
-    assert again.headers["hx-push-url"] == fragment.headers["hx-push-url"]
-
-
-def test_other_queries_errors_and_posts_are_not_served_from_cache() -> None:
-    client = TestClient(create_app(Settings()))
-    client.get(SELECT)
-    assert client.get(SELECT.replace("load_n=100", "load_n=101")).headers["x-cache"] == "miss"
-    client.get("/api/v1/select?load_n=abc")
-    assert client.get("/api/v1/select?load_n=abc").headers["x-cache"] == "miss"
-    body = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500}
-    assert "x-cache" not in client.post("/api/v1/select", json=body).headers
-
-
 def _cache(app: FastAPI) -> ResponseCache:
     client = TestClient(app)
     client.get("/api/v1/health")  # builds the middleware stack
@@ -54,6 +25,53 @@ def _cache(app: FastAPI) -> ResponseCache:
     while not isinstance(layer, ResponseCache):
         layer = layer.app  # type: ignore[union-attr]
     return layer
+
+
+def _cached(settings: Settings | None = None) -> tuple[TestClient, ResponseCache]:
+    """A client and the cache of its app, to count hits and misses."""
+    app = create_app(settings or Settings())
+    return TestClient(app), _cache(app)
+
+
+def test_repeated_select_is_a_hit_with_the_same_bytes() -> None:
+    client, cache = _cached()
+    first, second = client.get(SELECT), client.get(SELECT)
+    assert (cache.misses, cache.hits) == (1, 1)
+    assert first.content == second.content and first.headers == second.headers
+    assert second.headers["content-security-policy"].startswith("default-src 'self'")
+
+
+def test_a_hit_looks_like_a_miss() -> None:
+    """Nothing in a response says whether it came from the cache: whether someone else
+    ran these inputs is theirs to know."""
+    client, cache = _cached()
+    for path in (SELECT, PAGE):
+        first, second = client.get(path), client.get(path)
+        assert cache.hits and "x-cache" not in second.headers
+        assert sorted(first.headers.keys()) == sorted(second.headers.keys())
+
+
+def test_fragment_and_full_page_are_cached_apart() -> None:
+    client, cache = _cached()
+    fragment = client.get(PAGE, headers={"HX-Request": "true"})
+    full = client.get(PAGE)
+    assert (cache.misses, cache.hits) == (2, 0)
+    assert "<html" in full.text and "<html" not in fragment.text
+    again = client.get(PAGE, headers={"HX-Request": "true"})
+    assert cache.hits == 1 and again.text == fragment.text
+    assert again.headers["hx-push-url"] == fragment.headers["hx-push-url"]
+
+
+def test_other_queries_errors_and_posts_are_not_served_from_cache() -> None:
+    client, cache = _cached()
+    client.get(SELECT)
+    client.get(SELECT.replace("load_n=100", "load_n=101"))
+    client.get("/api/v1/select?load_n=abc")
+    client.get("/api/v1/select?load_n=abc")
+    assert (cache.misses, cache.hits) == (4, 0)
+    body = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500}
+    client.post("/api/v1/select", json=body)
+    assert (cache.misses, cache.hits) == (4, 0)
 
 
 def test_cache_is_bounded_by_bytes_and_can_be_turned_off() -> None:
@@ -67,10 +85,13 @@ def test_cache_is_bounded_by_bytes_and_can_be_turned_off() -> None:
     assert cache.size_bytes == sum(entry.held_bytes for entry in cache.entries.values())
     # the count covers more than the body: key, status and headers too
     assert all(entry.held_bytes > len(entry.body) + 500 for entry in cache.entries.values())
-    assert client.get(full).headers["x-cache"] == "miss"  # the oldest was evicted
-    off = TestClient(create_app(Settings(response_cache_bytes=0)))
+    misses = cache.misses
+    client.get(full)
+    assert cache.misses == misses + 1  # the oldest was evicted
+    off, off_cache = _cached(Settings(response_cache_bytes=0))
     off.get(SELECT)
-    assert "x-cache" not in off.get(SELECT).headers
+    off.get(SELECT)
+    assert (off_cache.misses, off_cache.hits, off_cache.entries) == (0, 0, {})
 
 
 def test_cache_is_bounded_by_entry_count() -> None:
@@ -125,21 +146,21 @@ def test_duplicated_accept_encoding_cannot_poison_plain_clients() -> None:
 
 
 def test_duplicated_hx_request_cannot_poison_htmx_clients() -> None:
-    client = TestClient(create_app(Settings()))
+    client, cache = _cached()
     first = client.get(PAGE, headers=[("HX-Request", "zzz"), ("HX-Request", "true")])
     assert "<html" in first.text  # read by its first line, as the page route reads it
     fragment = client.get(PAGE, headers={"HX-Request": "true"})
     assert "<html" not in fragment.text and "hx-push-url" in fragment.headers
     again = client.get(PAGE, headers=[("HX-Request", "true"), ("HX-Request", "zzz")])
-    assert again.headers["x-cache"] == "hit" and again.text == fragment.text
+    assert cache.hits == 1 and again.text == fragment.text
 
 
 def test_gzip_at_q0_is_not_gzip_for_the_cache_nor_the_response() -> None:
-    client = TestClient(create_app(Settings()))
+    client, cache = _cached()
     client.get(SELECT, headers={"Accept-Encoding": "gzip"})
     refused = client.get(SELECT, headers={"Accept-Encoding": "gzip;q=0, identity"})
     assert "content-encoding" not in refused.headers
-    assert refused.headers["x-cache"] == "miss"
+    assert (cache.misses, cache.hits) == (2, 0)
 
 
 def _vary(value: str) -> set[str]:

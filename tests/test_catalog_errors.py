@@ -7,6 +7,7 @@ import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -75,14 +76,14 @@ def test_invalid_utf8(tmp_path: Path) -> None:
 def test_an_unreadable_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Permission denied (simulated: the tests may run as root, who reads anything)."""
     directory = _dir(tmp_path, {"tr-family.toml": ISO_TEXT})
-    real_read = Path.read_bytes
+    real_open = Path.open
 
-    def read_bytes(path: Path) -> bytes:
+    def open_file(path: Path, *args: Any, **kwargs: Any) -> Any:
         if path.name == "tr-family.toml":
             raise PermissionError(13, "Permission denied", str(path))
-        return real_read(path)
+        return real_open(path, *args, **kwargs)
 
-    monkeypatch.setattr(Path, "read_bytes", read_bytes)
+    monkeypatch.setattr(Path, "open", open_file)
     error = _error(directory)
     assert (error.file, error.entry, error.field) == ("tr-family.toml", *FILE_LEVEL)
     assert "Permission denied" in str(error)

@@ -29,7 +29,14 @@ from app.inputs import ApplicationIn
 from app.service import run_selection
 from app.units import DEFAULT_UNITS, FORCE_UNITS, LENGTH_UNITS, TORQUE_UNITS
 from app.web.export import results_csv
-from app.web.form import parse_inputs, parse_units, read_number, share_query
+from app.web.form import (
+    link_number,
+    page_value,
+    parse_inputs,
+    parse_units,
+    read_number,
+    share_query,
+)
 
 ROOT = Path(__file__).resolve().parents[1]
 #: page names of today's share links; links already sent out must keep working.
@@ -259,22 +266,30 @@ def test_share_links_round_trip(inputs: ApplicationIn) -> None:
 def test_share_links_round_trip_in_display_units(
     inputs: ApplicationIn, units: dict[str, str]
 ) -> None:
-    """In other units the link holds 6 figures: equal to 1e-5, except where that rounding
-    crosses a bound (then the page names the field)."""
+    """In any units the link reproduces the inputs exactly (the page reads a number as the
+    decimal times the unit's factor, rounded once, and the link writes enough figures)."""
     params = dict(parse_qsl(share_query(inputs, units)))
     assert parse_units(params) == units
     parsed, errors = parse_inputs(params, units)
-    if parsed is None:
-        # a field that needs a refused one (the life needs the stroke) is refused with it
-        allowed = {f.page for f in FIELDS if f.quantity or f.needs}
-        assert set(errors) <= allowed, errors
-        return
-    for name, value in inputs.model_dump().items():
-        got = parsed.model_dump()[name]
-        if isinstance(value, float):
-            assert got == pytest.approx(value, rel=1e-5), name
-        else:
-            assert got == value, name
+    assert errors == {}
+    assert parsed is not None and parsed.model_dump() == inputs.model_dump()
+
+
+@pytest.mark.parametrize(
+    ("api", "value", "units"),
+    [
+        ("length_mm", 100000.0, {"length_unit": "in"}),  # 3937.0078 in: 6 figures exceed it
+        ("load_n", 100.4824, {"force_unit": "lbf"}),
+        ("load_n", 1e6, {"force_unit": "kgf"}),
+        ("speed_mm_s", 1e-3, {"length_unit": "in"}),
+        ("moving_mass_kg", 12.3456789, {"force_unit": "lbf"}),
+    ],
+    ids=["length-at-bound-in", "load-lbf", "load-bound-kgf", "speed-bound-in", "mass-lb"],
+)
+def test_a_link_number_reads_back_exactly(api: str, value: float, units: dict[str, str]) -> None:
+    field = BY_API[api]
+    shown = {**DEFAULT_UNITS, **units}
+    assert page_value(field, link_number(field, value, shown), shown) == value
 
 
 # --- CSV export --------------------------------------------------------------------------

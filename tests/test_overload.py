@@ -10,8 +10,10 @@ from collections.abc import Awaitable, Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
+import pytest
+
 from app.main import create_app
-from app.server.overload import OverloadMiddleware
+from app.server.overload import OverloadMiddleware, request_cost
 from app.settings import Settings
 
 Message = dict[str, Any]
@@ -169,3 +171,71 @@ def test_a_burst_that_arrives_together_is_counted_before_any_is_computed() -> No
 def test_the_limit_can_be_turned_off() -> None:
     answers = _run(_burst(limit=0, requests=4))
     assert [status for status, _ in answers] == [200] * 5
+
+
+FULL = SELECT + b"&detail=full&limit=100"
+
+
+@pytest.mark.parametrize(
+    ("path", "query", "cost"),
+    [
+        ("/api/v1/select", SELECT, 1),
+        ("/api/v1/select", SELECT + b"&limit=100", 1),  # the compact form stays cheap
+        ("/api/v1/select", SELECT + b"&detail=full", 2),  # 10 candidates
+        ("/api/v1/select", FULL, 13),
+        ("/api/v1/select", SELECT + b"&detail=full&limit=99999999", 2),  # refused: 422
+        ("/api/v1/select", SELECT + b"&detail=full&limit=x", 2),
+        ("/export.json", b"load=100&speed=50&length=500&limit=100", 13),
+        ("/export.csv", b"load=100&speed=50&length=500", 2),
+        ("/", b"load=100&speed=50&length=500&limit=100", 1),
+    ],
+    ids=[
+        "compact",
+        "compact-100",
+        "full",
+        "full-100",
+        "full-out-of-bounds",
+        "full-bad-limit",
+        "export-json-100",
+        "export-csv",
+        "page",
+    ],
+)
+def test_a_request_costs_by_the_work_it_asks_for(path: str, query: bytes, cost: int) -> None:
+    assert request_cost(_scope(path, query)) == cost
+
+
+async def _full_burst() -> list[tuple[int, dict[str, str]]]:
+    app = create_app(Settings(max_requests_in_flight=32, response_cache_bytes=0))
+    return await asyncio.gather(*(_call(app, "/api/v1/select", FULL) for _ in range(4)))
+
+
+def test_costly_requests_are_shed_by_their_cost() -> None:
+    """Four full forms of a hundred candidates (13 units each) against 32 units: two are
+    taken, two shed, where four cheap requests would all have been taken."""
+    answers = _run(_full_burst())
+    assert sorted(status for status, _ in answers) == [200, 200, 503, 503]
+
+
+async def _health_beside_full_forms() -> list[str]:
+    app = create_app(Settings(response_cache_bytes=0))
+    finished: list[str] = []
+
+    async def call(name: str, path: str, query: bytes = b"") -> None:
+        await _call(app, path, query)
+        finished.append(name)
+
+    queries = [FULL.replace(b"load_n=100", b"load_n=%d" % (101 + i)) for i in range(2)]
+    started = [asyncio.create_task(call("full", "/api/v1/select", q)) for q in queries]
+    for _ in range(10):  # loop turns: the full forms are admitted and computing
+        await asyncio.sleep(0)
+    await call("health", "/api/v1/health")
+    await asyncio.gather(*started)
+    return finished
+
+
+def test_the_health_check_is_answered_while_full_forms_compute() -> None:
+    """The full forms compute on threads of their own: the health check, asked once they
+    are computing, is answered first. Computed on the loop, they would have finished
+    before the health check was even read."""
+    assert _run(_health_beside_full_forms())[0] == "health"

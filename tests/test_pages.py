@@ -19,7 +19,10 @@ from httpx import Response
 
 from app.catalog import Catalog
 from app.fields import BY_API, BY_PAGE
+from app.inputs import ApplicationIn
 from app.schemas import SelectOut
+from app.units import DEFAULT_UNITS
+from app.web.advice import proposal
 from app.web.export import results_csv, safe_cell
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -445,6 +448,93 @@ def test_apply_all_makes_every_change_and_the_nearest_screw_passes(client: TestC
     after = soup(client.get(href))
     assert not after.select(".no-pass")
     assert nearest in candidate_ids(after)
+
+
+#: No load clears self-locking here (the 800 kg weight alone is too much): the core's
+#: target would be a negative load.
+HEAVY_VERTICAL = {"load": "0", "speed": "50", "length": "500", "moving_mass_kg": "800",
+                  "orientation": "vertical"}  # fmt: skip
+
+
+def test_an_infeasible_change_is_not_offered_but_said(client: TestClient) -> None:
+    """The nearest screw would need a load below zero: the page answers, offers no change
+    and says that no accepted load admits it; the API proposes nothing out of bounds."""
+    page = client.get("/", params=HEAVY_VERTICAL)
+    assert page.status_code == 200
+    notice = soup(page).select_one(".notice.no-pass")
+    assert notice is not None and not notice.select("ul.input-changes li")
+    api = client.get("/api/v1/select", params={"load_n": 0, "speed_mm_s": 50, "length_mm": 500,
+                     "moving_mass_kg": 800, "orientation": "vertical"}).json()  # fmt: skip
+    assert api["summary"]["input_change"] == {}
+    assert "No load within the accepted inputs admits it." in api["summary"]["message"]
+    assert not re.search(r" -\d", api["summary"]["message"])
+
+
+@pytest.mark.parametrize(
+    "params",
+    [
+        {"length": "3000", "speed": "500", "load": "10000"},
+        {"length": "3000", "speed": "500", "load": "10000", "length_unit": "in"},
+    ],
+    ids=["metric", "inch"],
+)
+def test_every_apply_link_is_accepted(client: TestClient, params: dict[str, str]) -> None:
+    """Each proposed change lies within its field's bounds: every Apply link renders a page
+    without an input error, and carries the proposal as shown (3 figures), in any unit."""
+    page = soup(client.get("/", params=params))
+    assert page.select("a.apply")
+    for link in page.select("a.apply, a.apply-all"):
+        changed = set(parse_qsl(link["href"].split("?", 1)[1])) - set(params.items())
+        assert changed and all(float(v) == float(f"{float(v):.3g}") for _, v in changed)
+        after = client.get(link["href"])
+        assert after.status_code == 200, link["href"]
+        assert not soup(after).select(".error:not(:empty)"), link["href"]
+
+
+def test_a_proposal_rounded_past_its_bound_is_held_at_the_bound() -> None:
+    """A target just above the slowest accepted speed (0.001 mm/s), shown in in/s and
+    rounded down to 3 figures, would fall below it: the proposal stops at the bound, which
+    still clears (the target lies above it)."""
+    inputs = ApplicationIn(load_n=100, speed_mm_s=100, length_mm=500)
+    target = 1.0001e-3
+    value = proposal(inputs, "speed_mm_s", target, {**DEFAULT_UNITS, "length_unit": "in"})
+    assert value == BY_API["speed_mm_s"].bounds[0]
+    assert value <= target
+
+
+@pytest.mark.parametrize("record", ["50|evil", "50|", "|N", "50|lbf|x", "x|N"])
+def test_a_bad_typed_record_is_ignored(client: TestClient, record: str) -> None:
+    """The typed record is page state: one naming no unit (or no number) of the field's
+    quantity is ignored, and the shown number is converted instead of failing the page."""
+    params = {**AXIS, "load": "100", "typed_load": record, "from_force_unit": "N",
+              "force_unit": "lbf"}  # fmt: skip
+    response = client.get("/", params=params)
+    assert response.status_code == 200
+    assert soup(response).select_one("#f-load")["value"] == "22.48"
+
+
+@pytest.mark.parametrize(
+    "typed",
+    [
+        {"length": "3937.0078", "length_unit": "in"},  # 6 figures (3937.01 in) exceed 100 m
+        {"load": "100.4824", "force_unit": "lbf"},
+        {"load": "100.4824", "speed": "50.00004"},
+    ],
+    ids=["length-at-bound", "load-lbf", "many-figures"],
+)
+def test_every_link_of_a_result_reproduces_it(client: TestClient, typed: dict[str, str]) -> None:
+    """The share, detail and export links carry the typed numbers exactly: each answers,
+    and the share link shows the same candidates as the page it came from."""
+    page = soup(client.get("/", params={**AXIS, **typed}))
+    share = page.select_one("a.share-link")["href"]
+    again = soup(client.get(share))
+    assert candidate_ids(again) == candidate_ids(page)
+    verdict = ".counts, .no-pass .verdict"
+    assert again.select_one(verdict).text == page.select_one(verdict).text
+    links = [a["href"] for a in page.select("a.export, a.detail-link")]
+    assert len(links) >= 2
+    for href in links:
+        assert client.get(href).status_code == 200, href
 
 
 # exports

@@ -162,3 +162,28 @@ def test_the_command_serves_on_the_loop_that_suits_its_workers(
     assert seen["workers"] == workers and seen["port"] == 8123
     assert seen["http"] is BoundedHttpToolsProtocol
     assert seen["target"] == "app.main:create_app" and seen["factory"] is True
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--port", "80000"], "--port: must be 1 to 65535, got 80000"),
+        (["--port", "0"], "--port: must be 1 to 65535, got 0"),
+        (["--port", "eighty"], "--port: not a whole number: 'eighty'"),
+        (["--workers", "-3"], f"--workers: must be 1 to {cli.MAX_WORKERS}, got -3"),
+        (["--workers", "0"], f"--workers: must be 1 to {cli.MAX_WORKERS}, got 0"),
+    ],
+    ids=["port-too-high", "port-zero", "port-text", "workers-negative", "workers-zero"],
+)
+def test_bad_options_are_a_usage_error(
+    args: list[str],
+    message: str,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Refused before anything starts: exit 2 and one line, no traceback, no server."""
+    monkeypatch.setattr(cli.uvicorn, "run", lambda *a, **k: pytest.fail("the server started"))
+    with pytest.raises(SystemExit) as stopped:
+        cli.main(args)
+    assert stopped.value.code == 2
+    assert message in capsys.readouterr().err

@@ -19,6 +19,7 @@ from pathlib import Path
 import httpx
 import pytest
 
+from app.server.security import SECURITY_HEADERS
 from deploy.local import free_port
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -28,6 +29,8 @@ KEEP_ALIVE_S = 1
 CLOSE_WITHIN_S = 10
 MAX_HEADER_BYTES = 32 * 1024
 MB = 1024 * 1024
+#: open connections past which requests are refused (1,024 by default; fewer sockets here)
+MAX_CONNECTIONS = 64
 
 
 def _status(port: int, path: str) -> int | None:
@@ -45,6 +48,7 @@ def port() -> Iterator[int]:
         "LEADSCREW_REQUEST_READ_TIMEOUT_S": str(READ_TIMEOUT_S),
         "LEADSCREW_KEEP_ALIVE_TIMEOUT_S": str(KEEP_ALIVE_S),
         "LEADSCREW_MAX_HEADER_BYTES": str(MAX_HEADER_BYTES),
+        "LEADSCREW_MAX_CONNECTIONS": str(MAX_CONNECTIONS),
     }
     cmd = [sys.executable, "-m", "app.cli", "--port", str(free), "--log-level", "warning"]
     proc = subprocess.Popen(cmd, cwd=ROOT, env=env)
@@ -183,3 +187,32 @@ def test_head_on_the_real_server_sends_no_body(port: int) -> None:
     first, _, rest = answer.partition(b"\r\n\r\n")
     assert first.startswith(b"HTTP/1.1 200") and b"content-length: " in first
     assert rest.startswith(b"HTTP/1.1 200")
+
+
+def test_idle_sockets_past_the_connection_limit_leave_health_and_headers(port: int) -> None:
+    """More idle sockets than the connection limit: the health check is still answered;
+    any other request gets a 503 with Retry-After and the security headers, and its
+    connection is closed (the place it held goes back)."""
+    idle = [socket.create_connection(("127.0.0.1", port), timeout=5) for _ in range(70)]
+    try:
+        with httpx.Client(timeout=5) as client:
+            refused = client.get(f"http://127.0.0.1:{port}/api/v1/select?load_n=1")
+            # not every idle socket accepted yet (or some closed by the read timeout): more
+            while refused.status_code != 503:
+                assert len(idle) < 200, "no 503 past the connection limit"
+                idle.append(socket.create_connection(("127.0.0.1", port), timeout=5))
+                refused = client.get(f"http://127.0.0.1:{port}/api/v1/select?load_n=1")
+            health = client.get(f"http://127.0.0.1:{port}/api/v1/health")
+    finally:
+        for sock in idle:
+            sock.close()
+    assert health.status_code == 200
+    assert refused.status_code == 503 and refused.headers["retry-after"] == "1"
+    assert refused.headers["connection"] == "close"
+    assert refused.json()["error"] == "server busy"
+    for name, value in SECURITY_HEADERS:
+        assert refused.headers[name.decode()] == value.decode()
+    deadline = time.monotonic() + CLOSE_WITHIN_S
+    while _status(port, "/api/v1/select?load_n=1") != 422:  # served again once they close
+        assert time.monotonic() < deadline
+        time.sleep(0.2)

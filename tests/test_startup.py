@@ -5,6 +5,7 @@ operator sees: ``create_app`` raising ``CatalogError``, and the console script a
 exiting non-zero with the file and the field on stderr.
 """
 
+import json
 import os
 import subprocess
 import sys
@@ -14,6 +15,7 @@ from pathlib import Path
 import pytest
 
 from app.catalog import CatalogError
+from app.catalog.files import MAX_FILE_BYTES
 from app.main import create_app
 from app.settings import Settings
 
@@ -161,3 +163,103 @@ def test_uvicorn_with_a_bad_catalog_in_the_environment_exits_non_zero(tmp_path: 
     )
     assert result.returncode != 0
     assert "tst-series.toml" in result.stderr and "outer_diameter_mm" in result.stderr
+
+
+# --- files the loader must refuse before reading them whole -------------------------------
+
+EXAMPLE = ROOT / "examples" / "my-family" / "my-family.toml"
+
+
+def _deep(tmp: Path) -> list[Path]:
+    """Arrays nested 5,000 deep: tomllib would recurse past Python's limit."""
+    return _one_dir("a = " + "[" * 5000 + "]" * 5000 + "\n", "deep.toml")(tmp)
+
+
+def _nested_a_little_too_deep(tmp: Path) -> list[Path]:
+    """Parsed without trouble, but nested past the loader's limit (17 levels)."""
+    return _one_dir("a = " + "[" * 17 + "]" * 17 + "\n", "nested.toml")(tmp)
+
+
+def _device(tmp: Path) -> list[Path]:
+    """A .toml linked to /dev/zero: read whole, it would fill memory."""
+    (tmp / "extra").mkdir()
+    (tmp / "extra" / "zero.toml").symlink_to("/dev/zero")
+    return [tmp / "extra"]
+
+
+def _fifo(tmp: Path) -> list[Path]:
+    """A FIFO: opening it waits for a writer, for ever."""
+    (tmp / "extra").mkdir()
+    os.mkfifo(tmp / "extra" / "pipe.toml")
+    return [tmp / "extra"]
+
+
+def _large(tmp: Path) -> list[Path]:
+    """A file past the size limit (sparse: it costs no disk)."""
+    (tmp / "extra").mkdir()
+    with (tmp / "extra" / "large.toml").open("wb") as file:
+        file.truncate(MAX_FILE_BYTES + 1)
+    return [tmp / "extra"]
+
+
+def _many_starts(tmp: Path) -> list[Path]:
+    """A thread of 4e9 starts (the example family with its 4 starts made 4,000,000,000)."""
+    text = EXAMPLE.read_text().replace(
+        "starts = { value = [4] }", "starts = { value = [4000000000] }"
+    )
+    return _one_dir(text, "my-family.toml")(tmp)
+
+
+HOSTILE: list[tuple[str, Callable[[Path], list[Path]], str, str]] = [
+    ("deep", _deep, "deep.toml", "nested deeper than 16"),
+    ("nested", _nested_a_little_too_deep, "nested.toml", "nested deeper than 16"),
+    ("device", _device, "zero.toml", "not a regular file"),
+    ("fifo", _fifo, "pipe.toml", "not a regular file"),
+    ("large", _large, "large.toml", f"larger than {MAX_FILE_BYTES} bytes"),
+    ("many-starts", _many_starts, "my-family.toml", "starts"),
+]
+HOSTILE_IDS = [case for case, *_ in HOSTILE]
+
+
+def test_the_example_family_loads_as_the_many_starts_case_starts(tmp_path: Path) -> None:
+    assert "starts = { value = [4] }" in EXAMPLE.read_text()
+    assert "MY-Tr8-P2" in create_app(Settings(catalog_dirs=[EXAMPLE.parent])).state.catalog.series
+
+
+@pytest.mark.parametrize(("case", "make", "file", "reason"), HOSTILE, ids=HOSTILE_IDS)
+def test_the_loader_refuses_a_hostile_file(
+    tmp_path: Path, case: str, make: Callable[[Path], list[Path]], file: str, reason: str
+) -> None:
+    with pytest.raises(CatalogError) as info:
+        create_app(Settings(catalog_dirs=make(tmp_path)))
+    assert file in str(info.value) and reason in str(info.value), str(info.value)
+
+
+@pytest.mark.parametrize(
+    ("case", "make", "file", "reason"), [HOSTILE[0], HOSTILE[3]], ids=["deep", "fifo"]
+)
+def test_catalog_dirs_from_the_environment_are_checked_before_workers_start(
+    tmp_path: Path, case: str, make: Callable[[Path], list[Path]], file: str, reason: str
+) -> None:
+    """LEADSCREW_CATALOG_DIRS gets the command line's checks: two workers would each fail
+    and be started again, for ever; the script exits 2 first, naming the file."""
+    dirs = make(tmp_path)
+    result = _run(
+        [sys.executable, "-m", "app.cli", "--port", "1", "--workers", "2"],
+        env={"LEADSCREW_CATALOG_DIRS": json.dumps([str(d) for d in dirs])},
+    )
+    assert result.returncode == 2, result.stderr
+    assert file in result.stderr and reason in result.stderr, result.stderr
+    assert "Traceback" not in result.stderr
+
+
+@pytest.mark.parametrize(
+    ("variable", "value"),
+    [("LEADSCREW_CATALOG_DIRS", "not json"), ("LEADSCREW_MAX_CONNECTIONS", "many")],
+    ids=["not-json", "not-a-number"],
+)
+def test_a_bad_setting_stops_the_script_naming_it(variable: str, value: str) -> None:
+    result = _run([sys.executable, "-m", "app.cli", "--port", "1"], env={variable: value})
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.startswith("settings error:") and "Traceback" not in result.stderr
+    assert variable.removeprefix("LEADSCREW_").lower() in result.stderr.lower()

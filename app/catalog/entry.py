@@ -152,16 +152,17 @@ class Entry:
             out.append(float(item))
         return out
 
-    def whole_numbers(self, name: str) -> list[int]:
-        """A non-empty list of distinct whole numbers >= 1 (thread starts)."""
+    def whole_numbers(self, name: str, most: int) -> list[int]:
+        """A non-empty list of distinct whole numbers from 1 to ``most`` (thread starts)."""
         value = self.leaf(name).get("value")
         ok = (
             isinstance(value, list)
             and value
-            and all(isinstance(v, int) and not isinstance(v, bool) and v >= 1 for v in value)
+            and all(isinstance(v, int) and not isinstance(v, bool) for v in value)
+            and all(1 <= v <= most for v in value)
         )
         if not ok or not isinstance(value, list):
-            raise self.fail(name, "'value' must be a non-empty list of whole numbers >= 1")
+            raise self.fail(name, f"'value' must be a non-empty list of whole numbers 1 to {most}")
         if len(set(value)) != len(value):
             raise self.fail(name, "a number is listed twice")
         return list(value)

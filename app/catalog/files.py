@@ -11,6 +11,7 @@ except by files of the first layout (no ``schema`` key), which keep their old me
 they layer over the built-in seed group.
 """
 
+import stat
 import tomllib
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
@@ -27,6 +28,10 @@ NESTED_TABLES = ("variants", "nut_types", "rules", "materials")
 LAYER_TABLES = ("family", "defaults", *NESTED_TABLES)
 GROUP_KEYS = frozenset({"schema", "catalog_version", "group", "provenance", *LAYER_TABLES})
 FAMILY_KEYS = frozenset({"schema", "series", "provenance", *LAYER_TABLES})
+#: A catalog file's size at most (the largest built-in file is under 10 kB).
+MAX_FILE_BYTES = 1024 * 1024
+#: Tables and arrays nested at most this deep (the built-in files nest 6 deep).
+MAX_DEPTH = 16
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,12 +64,44 @@ def _reason(exc: OSError) -> str:
     return exc.strerror or str(exc)
 
 
-def read_file(path: Path, digest: Any) -> CatalogFile:
-    """Parse one file; its bytes feed the version digest so any edit shows in results."""
+def _read_regular(path: Path) -> bytes:
+    """The bytes of a regular file (a link is followed) of at most ``MAX_FILE_BYTES``.
+
+    A device (a link to /dev/zero would read until memory runs out) or a FIFO (opening it
+    waits for a writer) is refused before it is opened; a file that grows past the limit
+    while it is read is refused after one read past it.
+    """
     try:
-        raw = path.read_bytes()
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode):
+            raise CatalogError(path.name, "-", "-", "not a regular file")
+        if info.st_size > MAX_FILE_BYTES:
+            raise CatalogError(path.name, "-", "-", f"larger than {MAX_FILE_BYTES} bytes")
+        with path.open("rb") as file:
+            raw = file.read(MAX_FILE_BYTES + 1)
     except OSError as exc:
         raise CatalogError(path.name, "-", "-", f"cannot read the file: {_reason(exc)}") from exc
+    if len(raw) > MAX_FILE_BYTES:
+        raise CatalogError(path.name, "-", "-", f"larger than {MAX_FILE_BYTES} bytes")
+    return raw
+
+
+def depth(data: object) -> int:
+    """How deeply tables and arrays nest in ``data`` (a plain value: 0).
+
+    >>> depth({"a": [1, {"b": 2}]}), depth(3)
+    (3, 0)
+    """
+    if isinstance(data, dict):
+        return 1 + max(map(depth, data.values()), default=0)
+    if isinstance(data, list):
+        return 1 + max(map(depth, data), default=0)
+    return 0
+
+
+def read_file(path: Path, digest: Any) -> CatalogFile:
+    """Parse one file; its bytes feed the version digest so any edit shows in results."""
+    raw = _read_regular(path)
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -73,6 +110,10 @@ def read_file(path: Path, digest: Any) -> CatalogFile:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CatalogError(path.name, "-", "-", f"invalid TOML: {exc}") from exc
+    except RecursionError as exc:
+        raise CatalogError(path.name, "-", "-", f"nested deeper than {MAX_DEPTH}") from exc
+    if depth(data) > MAX_DEPTH:
+        raise CatalogError(path.name, "-", "-", f"nested deeper than {MAX_DEPTH}")
     digest.update(raw)
     return CatalogFile(path.name, path.parent, data)
 

@@ -50,6 +50,9 @@ SERIES_FIELDS = frozenset(
         "nut_length_to_d",
     }
 )
+#: Thread starts at most: a lead of thousands of pitches is a typing error, and its
+#: numbers (a screw turning once per kilometre) would fail later, at a request.
+MAX_STARTS = 16
 #: Half-angle of the ISO 2904 trapezoidal thread, the only form ``pitch_mm`` describes.
 ISO_HALF_ANGLE_DEG = 15.0
 #: Series values a range may be given for, whose ends change the candidate's numbers.
@@ -171,7 +174,7 @@ def _listed_leads_mm(entry: Entry) -> list[float]:
     if entry.has("starts"):
         if entry.has("leads_mm"):
             raise entry.fail("leads_mm", "give either leads_mm or starts (with pitch_mm)")
-        return [n * entry.number("pitch_mm") for n in entry.whole_numbers("starts")]
+        return [n * entry.number("pitch_mm") for n in entry.whole_numbers("starts", MAX_STARTS)]
     listed = entry.numbers("leads_mm")
     if len(set(listed)) != len(listed):
         repeated = next(x for x in listed if listed.count(x) > 1)

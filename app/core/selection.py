@@ -1,5 +1,6 @@
 """Selection: screen every candidate, rank the passing ones, explain the rejected."""
 
+import math
 from collections import Counter
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -26,6 +27,9 @@ INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
     "length_m": ("length", "length"),
     "accel_m_s2": ("acceleration", "accel"),
 }
+#: Each input's accepted range in SI, (low, high) by core name: a change outside it is
+#: never offered (the edge passes its field table's bounds; none: any value).
+Ranges = Mapping[str, tuple[float, float]]
 #: The checks that judge the motor, for ranking by its margin.
 MOTOR_CHECKS = ("torque", "motor_curve", "motor_rms", "motor_speed")
 
@@ -164,15 +168,18 @@ def _screen(
     )
 
 
-def select(app: Application, candidates: CatalogIndex | Sequence[ScrewSpec]) -> Selection:
+def select(
+    app: Application, candidates: CatalogIndex | Sequence[ScrewSpec], ranges: Ranges | None = None
+) -> Selection:
     """Screen every eligible candidate and rank the passing ones by ``app.rank_by``.
 
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
-    counts cover everything screened. The passing ones' robustness is screened now; full
-    evaluations of the returned candidates are built when first read (``short_forms``
-    reads the same arrays without them). A sequence of screws is indexed here, without
-    variant rows: those of the passing ones returned are built when they are judged.
+    counts cover everything screened; the summary offers input changes within ``ranges``
+    only. The passing ones' robustness is screened now; full evaluations of the returned
+    candidates are built when first read (``short_forms`` reads the same arrays without
+    them). A sequence of screws is indexed here, without variant rows: those of the
+    passing ones returned are built when they are judged.
     """
     index = (
         candidates
@@ -194,7 +201,9 @@ def select(app: Application, candidates: CatalogIndex | Sequence[ScrewSpec]) -> 
         evaluated=len(s.index),
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
-        summary=summarize(app, index.table, len(s.index), n_passed, rejected, by_check),
+        summary=summarize(
+            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}
+        ),
         screening=s,
         ranked=tuple(ranked),
         nearest=tuple(nearest),
@@ -221,6 +230,18 @@ def input_change(best: Evaluation) -> dict[str, float]:
     return change
 
 
+def within(change: Mapping[str, float], ranges: Ranges) -> bool:
+    """Every value of ``change`` lies within its input's range (inclusive).
+
+    >>> within({"load_n": -5.0}, {"load_n": (0.0, 1e6)}), within({"load_n": 5.0}, {})
+    (False, True)
+    """
+    unbounded = (-math.inf, math.inf)
+    return all(
+        ranges.get(k, unbounded)[0] <= v <= ranges.get(k, unbounded)[1] for k, v in change.items()
+    )
+
+
 def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
     """The change in words: "reduce the load to {value}" per input."""
     parts = []
@@ -231,13 +252,15 @@ def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
     return join(parts, " and ")
 
 
-def feasible_changes(nearest: Sequence[Evaluation], count: int = 5) -> tuple[Change, ...]:
-    """Input changes that admit each of the nearest rejected candidates, one per distinct
-    change: each clears every failed limit of the candidate it names."""
+def feasible_changes(
+    nearest: Sequence[Evaluation], ranges: Ranges, count: int = 5
+) -> tuple[Change, ...]:
+    """Input changes within ``ranges`` that admit each of the nearest rejected candidates,
+    one per distinct change: each clears every failed limit of the candidate it names."""
     changes: list[Change] = []
     for ev in nearest:
         change = input_change(ev)
-        if change and all(c.inputs != change for c in changes):
+        if change and within(change, ranges) and all(c.inputs != change for c in changes):
             changes.append(Change(change, ev.screw.id))
         if len(changes) == count:
             break
@@ -271,9 +294,11 @@ def summarize(
     passed: int,
     nearest: Sequence[Evaluation],
     by_check: Counter[str],
+    ranges: Ranges,
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix and the
-    feasible changes of the application."""
+    feasible changes of the application (within ``ranges``; when the nearest screw's
+    change lies outside them, the summary says so and offers none)."""
     top = by_check.most_common(1)
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
@@ -292,10 +317,14 @@ def summarize(
         )
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
-    if change:
+    if change and not within(change, ranges):
+        labels = " and ".join(INPUT_LABELS[k][0] for k in change)
+        parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
+        change = {}
+    elif change:
         parts.append(
             Phrase("Or change the application: {how}.", {"how": describe_change(app, change)})
         )
     return Summary(
-        worst, worst_count, best.screw.id, change, join(parts), feasible_changes(nearest)
+        worst, worst_count, best.screw.id, change, join(parts), feasible_changes(nearest, ranges)
     )

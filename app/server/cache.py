@@ -4,7 +4,9 @@ A selection is a pure function of its query string and the catalog, which is rea
 at start-up and never changes while the process runs; so the response to a repeated
 query (a share link opened again, a script polling the same axis) can be sent as it was
 computed. Nothing is shared between processes: each worker fills its own cache, and a
-restart with an edited catalog starts empty. ``X-Cache: hit|miss`` says which happened.
+restart with an edited catalog starts empty. Whether a response came from the cache is
+counted (``hits``, ``misses``) but never said in it: an ``X-Cache: hit`` would tell anyone
+that someone else had run the same inputs.
 
 An entry is keyed by a digest of exactly what its response depends on: the path, the
 query, whether the body is gzip-compressed and (on pages) whether it is an HTMX
@@ -89,6 +91,8 @@ class ResponseCache:
         self.max_bytes = max_bytes
         self.max_entries = max_entries
         self.size_bytes = 0
+        self.hits = 0
+        self.misses = 0
         self.entries: OrderedDict[bytes, Entry] = OrderedDict()
 
     def _vary(self, path: str) -> tuple[str, ...]:
@@ -116,10 +120,12 @@ class ResponseCache:
         cached = self.entries.get(key)
         if cached is not None:
             self.entries.move_to_end(key)
-            start = cached.start
-            await send({**start, "headers": [*start["headers"], (b"x-cache", b"hit")]})
+            self.hits += 1
+            # a copy: the layers outside may rewrite the message they are sent
+            await send({**cached.start, "headers": list(cached.start["headers"])})
             await send({"type": "http.response.body", "body": cached.body})
             return
+        self.misses += 1
         vary = self._vary(scope["path"])
         start_message: Message = {}
         chunks: list[bytes] = []
@@ -130,7 +136,7 @@ class ResponseCache:
                 headers = list(message.get("headers", []))
                 merge_vary(headers, vary)
                 start_message = {**message, "headers": headers}
-                message = {**start_message, "headers": [*headers, (b"x-cache", b"miss")]}
+                message = {**start_message, "headers": list(headers)}
             elif message["type"] == "http.response.body":
                 chunks.append(message.get("body", b""))
                 if not message.get("more_body", False) and start_message.get("status") == 200:

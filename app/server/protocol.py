@@ -12,6 +12,11 @@ value in memory as readily as a short one. This protocol adds both bounds:
   ``max_headers`` of them, else the answer is 431 and the connection is closed, after
   reading at most one socket read past the limit.
 
+* past ``max_connections`` open connections, a request other than the health check is
+  answered 503 with Retry-After and the security headers, and its connection closed
+  (uvicorn's own limit answers every request a bare 503, the health check included, so
+  a thousand idle sockets would make a balancer take the process for dead).
+
 The limits come from ``app.settings`` (``LEADSCREW_*``), so every worker process that
 uvicorn starts reads the same ones.
 """
@@ -24,6 +29,8 @@ from uvicorn.config import Config
 from uvicorn.protocols.http.httptools_impl import STATUS_LINE, HttpToolsProtocol
 from uvicorn.server import ServerState
 
+from app.server.overload import NEVER_SHED, ASGIApp, Receive, Scope, Send, send_busy
+from app.server.security import SECURITY_HEADERS
 from app.settings import get_settings
 
 logger = logging.getLogger("uvicorn.error")
@@ -33,6 +40,22 @@ HEADER_LINE_OVERHEAD_BYTES = 4
 
 class HeadTooLarge(Exception):
     """Raised in a parser callback to stop parsing a request head past the limits."""
+
+
+class OverLimit:
+    """The app as a connection past the connection limit meets it: the health check as
+    ever, every other request 503 with Retry-After and the security headers (the app's
+    own layers are not reached), and the connection closed to free its place."""
+
+    def __init__(self, app: ASGIApp, retry_after_s: int) -> None:
+        self.app = app
+        self.retry_after_s = retry_after_s
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["path"] in NEVER_SHED:
+            await self.app(scope, receive, send)
+            return
+        await send_busy(send, self.retry_after_s, *SECURITY_HEADERS, (b"connection", b"close"))
 
 
 class BoundedHttpToolsProtocol(HttpToolsProtocol):
@@ -47,6 +70,8 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
     ) -> None:
         super().__init__(config, server_state, app_state, _loop)
         settings = get_settings()
+        self.max_connections = settings.max_connections
+        self.over_limit = OverLimit(self.app, settings.overload_retry_after_s)
         self.read_timeout_s = settings.request_read_timeout_s
         self.max_header_bytes = settings.max_header_bytes
         self.max_headers = settings.max_headers
@@ -126,7 +151,14 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
     def on_headers_complete(self) -> None:
         self.reading_head = False
         self.received_head_bytes = self.head_bytes = self.head_count = 0
-        super().on_headers_complete()
+        if len(self.connections) <= self.max_connections:
+            super().on_headers_complete()
+            return
+        app, self.app = self.app, self.over_limit  # uvicorn starts ``self.app`` for the request
+        try:
+            super().on_headers_complete()
+        finally:
+            self.app = app
 
     def send_400_response(self, msg: str) -> None:
         """uvicorn's answer to a request it cannot parse; 431 when the head is too large."""

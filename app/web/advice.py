@@ -14,8 +14,8 @@ from typing import Any
 from app.core.checks import BY_NAME
 from app.fields import BY_API
 from app.schemas import ApplicationIn, CandidateOut, PageSelectionOut, SelectOut
-from app.units import sig, to_api
-from app.web.form import share_query
+from app.units import sig
+from app.web.form import page_value, share_query
 
 #: significant figures of a proposed value, rounded towards the side that still clears.
 PROPOSAL_DIGITS = 3
@@ -70,13 +70,16 @@ def _link(inputs: ApplicationIn, changes: dict[str, float], units: dict[str, str
     return "/?" + share_query(changed, units)
 
 
-def _proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, str]) -> float:
-    """The proposed API value: the target rounded in display units towards the safe side."""
+def proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, str]) -> float:
+    """The proposed API value: the target rounded in display units towards the safe side,
+    kept within the field's bounds (the target lies within them, so the bound still clears)."""
     field = BY_API[api]
     current = float(getattr(inputs, api))
     shown = field.display_value(target, units)
     rounded = round_towards(float(shown), target < current)
-    return to_api(rounded, field.quantity, units) if field.quantity else rounded
+    value = page_value(field, repr(rounded), units)  # as the page reads the rounded text
+    low, high = field.bounds or (-math.inf, math.inf)
+    return min(max(value, low), high)
 
 
 def input_changes(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> list[Change]:
@@ -86,7 +89,7 @@ def input_changes(result: SelectOut | PageSelectionOut, units: dict[str, str]) -
         field = BY_API.get(api)
         if field is None:
             continue
-        value = _proposal(result.inputs, api, target, units)
+        value = proposal(result.inputs, api, target, units)
         lower = value < float(getattr(result.inputs, api))
         changes.append(
             Change(
@@ -104,7 +107,7 @@ def input_changes(result: SelectOut | PageSelectionOut, units: dict[str, str]) -
 def all_changes_link(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> str | None:
     """One link making every proposed change at once; None unless there are several."""
     proposals = {
-        api: _proposal(result.inputs, api, target, units)
+        api: proposal(result.inputs, api, target, units)
         for api, target in result.summary.input_change.items()
         if api in BY_API
     }

@@ -9,6 +9,8 @@ exactly the number texts the API's query string accepts.
 """
 
 from collections.abc import Mapping
+from decimal import Decimal, localcontext
+from fractions import Fraction
 from typing import Annotated, Any
 from urllib.parse import urlencode
 
@@ -48,6 +50,11 @@ PLAIN_MESSAGES = {
     "finite_number": "Enter a finite number.",
 }
 TRUE_WORDS = {"1", "true", "on", "yes"}
+#: figures enough for any decimal to read back to the float it was written from (17 are
+#: enough for a float; the display unit's factor takes one more).
+LINK_DIGITS = 24
+#: decimal exponents read exactly: wider than any float times a unit's factor.
+EXPONENT_REACH = 400
 #: a typed number read as the API reads a query parameter: ASCII decimal, finite.
 PAGE_NUMBER: TypeAdapter[float] = TypeAdapter(
     Annotated[float, NUMBER_TEXT, Field(allow_inf_nan=False)]
@@ -84,9 +91,9 @@ def _api_value(field: InputField, raw: str, units: dict[str, str]) -> tuple[Any,
     if field.kind != "number":
         return raw, ""
     number, error = read_number(raw)
-    if number is None or field.quantity is None:
+    if number is None:
         return number, error
-    return to_api(number, field.quantity, units), ""
+    return page_value(field, raw, units), ""
 
 
 def page_to_api(
@@ -159,16 +166,22 @@ def convert_text(text: str, quantity: Quantity, source: str, target: str) -> str
     return f"{from_api(api, quantity, {**DEFAULT_UNITS, key: target}):.{digits}g}"
 
 
-def read_typed(record: str) -> tuple[str, str] | None:
-    """(text, unit) of a ``typed_*`` record 'text|unit'; None when there is none."""
+def read_typed(record: str, quantity: Quantity) -> tuple[str, str] | None:
+    """(text, unit) of a ``typed_*`` record 'text|unit'; None when there is none or it
+    names no unit of ``quantity`` (a record is page state, so a bad one is ignored).
+
+    >>> read_typed("50|N", "force"), read_typed("50|evil", "force"), read_typed("50", "force")
+    (('50', 'N'), None, None)
+    """
     text, bar, unit = record.partition("|")
-    return (text, unit) if bar and text and unit else None
+    known = unit in UNIT_CHOICES[unit_key(quantity)]
+    return (text, unit) if bar and text and known else None
 
 
 def typed_origin(raw: str, record: str, quantity: Quantity, entered_unit: str) -> tuple[str, str]:
     """(text, unit) the shown number came from: the recorded typed text while the field
     still shows its conversion, else the field's own text in the unit it is shown in."""
-    typed = read_typed(record)
+    typed = read_typed(record, quantity)
     if typed is not None and convert_text(typed[0], quantity, typed[1], entered_unit) == raw:
         return typed
     return raw, entered_unit
@@ -283,9 +296,66 @@ def shown_inputs(inputs: Mapping[str, Any]) -> list[tuple[InputField, Any]]:
     ]
 
 
+def _factor(field: InputField, units: Mapping[str, str]) -> Fraction:
+    """The factor from ``field``'s display unit to its API unit, as the decimal it is
+    defined as (25.4, not the binary float nearest to it)."""
+    return Fraction(repr(to_api(1.0, field.quantity, units))) if field.quantity else Fraction(1)
+
+
+def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
+    """The API value of finite number ``text`` typed in ``field``'s display unit: the
+    decimal times the unit's factor, rounded once, so that every API value has a text
+    that reads back to it exactly (``link_number``). A decimal beyond any float's reach
+    (``1e-99999999``) is read as a float, without its exact value.
+
+    >>> page_value(BY_PAGE["length"], "3937.0078", {**DEFAULT_UNITS, "length_unit": "in"})
+    99999.99812
+    """
+    number = Decimal(text.strip())
+    if not -EXPONENT_REACH <= number.adjusted() <= EXPONENT_REACH:
+        return float(number)
+    return float(Fraction(number) * _factor(field, units))
+
+
+def _trimmed(text: str) -> str:
+    """A formatted decimal without the trailing zeros of its mantissa ('1.500e+6': '1.5e+6')."""
+    mantissa, e, exponent = text.partition("e")
+    if "." in mantissa:
+        mantissa = mantissa.rstrip("0").rstrip(".")
+    return mantissa + e + exponent
+
+
+def link_number(field: InputField, value: float, units: Mapping[str, str]) -> str:
+    """A number of a link in display units, with the fewest figures (6 at least) that the
+    page reads back (``page_value``) to exactly ``value``.
+
+    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
+    >>> link_number(BY_PAGE["length"], 100000.0, inch), link_number(BY_PAGE["load"], 100.4824, {})
+    ('3937.007874015748', '100.4824')
+    """
+    units = {**DEFAULT_UNITS, **units}
+    exact = Fraction(value) / _factor(field, units)
+    with localcontext(prec=LINK_DIGITS):
+        shown = Decimal(exact.numerator) / Decimal(exact.denominator)
+    for digits in range(6, LINK_DIGITS):
+        text = _trimmed(f"{shown:.{digits}g}")
+        if page_value(field, text, units) == value:
+            break
+    return text
+
+
+def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
+    """An API value as a link carries it: numbers exactly (``link_number``), the rest as
+    the page writes them."""
+    if isinstance(value, float):
+        return link_number(field, value, units)
+    return value_text(field, value, units)
+
+
 def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
-    """Query string of the page link for these inputs: required fields and non-defaults."""
-    pairs = [(f.page, value_text(f, v, units)) for f, v in shown_inputs(inputs.model_dump())]
+    """Query string of the page link for these inputs: required fields and non-defaults,
+    each number reproducing the input exactly."""
+    pairs = [(f.page, link_text(f, v, units)) for f, v in shown_inputs(inputs.model_dump())]
     pairs += [(k, v) for k, v in units.items() if v != DEFAULT_UNITS[k]]
     return urlencode(pairs)
 

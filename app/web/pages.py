@@ -12,6 +12,7 @@ from app.errors import AppError
 from app.fields import BY_PAGE, FIELDS, GROUPS
 from app.responses import ModelJSON
 from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn, RejectedSummaryOut
+from app.server.compute import computed
 from app.server.headers import is_htmx_fragment
 from app.service import run_evaluation, run_page_selection, run_selection
 from app.units import TORQUE_LABELS, Display
@@ -206,6 +207,10 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
 @router.get("/export.csv")
 async def export_csv(request: Request, catalog: CatalogDep) -> Response:
     """The result table as CSV in the link's display units."""
+    return await computed(_export_csv, request, catalog)
+
+
+def _export_csv(request: Request, catalog: Catalog) -> Response:
     inputs, units = _link_inputs(request.query_params)
     body = results_csv(run_selection(inputs, catalog, units), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
@@ -214,6 +219,10 @@ async def export_csv(request: Request, catalog: CatalogDep) -> Response:
 @router.get("/export.json")
 async def export_json(request: Request, catalog: CatalogDep) -> Response:
     """The API's select response (API units) for the link's inputs."""
+    return await computed(_export_json, request, catalog)
+
+
+def _export_json(request: Request, catalog: Catalog) -> Response:
     inputs, _ = _link_inputs(request.query_params)
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 

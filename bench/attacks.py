@@ -1,0 +1,387 @@
+"""The attacks of issue 23, each run again against the server as shipped: "held" when
+the defence holds, "BROKEN" when the attack gets through.
+
+1. Overload through nginx (deploy/): 256 connections of distinct selects; shedding must
+   not turn into 502s, the health check must stay up, 429s carry Retry-After and
+   error.log stays small.
+2. Costly valid queries: 64 connections on ``detail=full&limit=100`` while the health
+   check is polled; its latency against the probes' timeout (deploy/k8s).
+3. Idle sockets past the connection limit: the health check answers, other requests get
+   503 with Retry-After and the security headers.
+4. Advice at the edge of the inputs and a forged typed record: no 500.
+5. Share links of numbers typed with many figures: the same answer, every link served.
+6. Hostile catalog files from LEADSCREW_CATALOG_DIRS: exit 2 naming the file.
+7. X-Cache and bad command-line values.
+8. The Kubernetes manifests: preStop, PodDisruptionBudget, probe timeouts above the
+   health latency measured in 2.
+
+Figures are taken on whatever else the machine is doing; each attack runs seconds.
+"""
+
+import http.client
+import json
+import multiprocessing
+import os
+import re
+import socket
+import statistics
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Callable
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from bench import load
+from bench.hostile import cli_server
+from bench.report import Report
+from deploy.local import NGINX, nginx_in_front
+
+ROOT = Path(__file__).resolve().parents[1]
+SELECT = "/api/v1/select?load_n=%s&speed_mm_s=50&length_mm=500&lead_mm=10"
+COSTLY = SELECT.replace("&lead_mm=10", "") + "&detail=full&limit=100"
+HEALTH = "/api/v1/health"
+#: how often the health check is polled during an attack, as a balancer or kubelet would
+POLL_S = 0.25
+SPAWN = multiprocessing.get_context("spawn")
+PROBE_ADDRESS = "127.0.0.2"
+
+
+def held(report: Report, name: str, value: str, ok: bool) -> None:
+    """One attack's verdict: held, or broken."""
+    report.attack(name, value, ok)
+
+
+def manifests() -> dict[str, dict[str, Any]]:
+    """The Kubernetes manifests of deploy/k8s by kind."""
+    docs = [
+        doc
+        for path in sorted((ROOT / "deploy" / "k8s").glob("*.yaml"))
+        for doc in yaml.safe_load_all(path.read_text())
+        if doc
+    ]
+    return {doc["kind"]: doc for doc in docs}
+
+
+def container() -> dict[str, Any]:
+    """The app's container in the Deployment."""
+    (app,) = manifests()["Deployment"]["spec"]["template"]["spec"]["containers"]
+    return app
+
+
+def get(
+    port: int, path: str, headers: dict[str, str] | None = None, source: str = "127.0.0.1"
+) -> tuple[int, dict[str, str], bytes]:
+    """One GET on a new connection from address ``source``: (status, headers in lower
+    case, body)."""
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10, source_address=(source, 0))
+    try:
+        conn.request("GET", path, headers=headers or {})
+        resp = conn.getresponse()
+        return resp.status, {k.lower(): v for k, v in resp.getheaders()}, resp.read()
+    finally:
+        conn.close()
+
+
+def poll_health(port: int, stop: threading.Event, answers: list[tuple[int, float]]) -> None:
+    """Ask for the health check every ``POLL_S`` until ``stop``, from an address of its own
+    (127.0.0.2: nginx limits per address, and a balancer is not the attacker): (status,
+    seconds) each; status 0 when it was not answered within 10 s."""
+    while not stop.wait(POLL_S):
+        started = time.monotonic()
+        try:
+            status = get(port, HEALTH, source=PROBE_ADDRESS)[0]
+        except OSError:
+            status = 0
+        answers.append((status, time.monotonic() - started))
+
+
+def _load(port: int, path: str, connections: int, seconds: float) -> load.LoadResult:
+    return load.run(port, path, connections=connections, seconds=seconds, timeout_s=10)
+
+
+def under_load(
+    port: int, path: str, connections: int, seconds: float
+) -> tuple[load.LoadResult, list[tuple[int, float]]]:
+    """``connections`` clients on ``path`` for ``seconds`` while the health check is polled."""
+    stop = threading.Event()
+    health: list[tuple[int, float]] = []
+    poller = threading.Thread(target=poll_health, args=(port, stop, health))
+    poller.start()
+    try:
+        # the clients in a process of their own: here they would hold the GIL the poller
+        # needs, and its timings would be the client's, not the server's
+        with ProcessPoolExecutor(max_workers=1, mp_context=SPAWN) as pool:
+            result = pool.submit(_load, port, path, connections, seconds).result()
+    finally:
+        stop.set()
+        poller.join()
+    return result, health
+
+
+def health_figures(health: list[tuple[int, float]]) -> tuple[int, float, float]:
+    """(checks answered 200, p50 and slowest latency [s] of all checks)."""
+    latencies = sorted(latency for _, latency in health) or [float("nan")]
+    ok = sum(1 for status, _ in health if status == 200)
+    return ok, statistics.median(latencies), latencies[-1]
+
+
+# --- 1. overload through nginx ------------------------------------------------------------
+
+
+def _refusal(port: int) -> tuple[int, dict[str, str]]:
+    """Static files from one address faster than nginx's rate: (how many of 600 were
+    refused 429, the headers of one refusal)."""
+    refused: list[dict[str, str]] = []
+
+    def burst(_: int) -> None:
+        conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+        for _ in range(100):
+            conn.request("GET", "/static/css/app.css")
+            response = conn.getresponse()
+            response.read()
+            if response.status == 429:
+                refused.append({k.lower(): v for k, v in response.getheaders()})
+        conn.close()
+
+    threads = [threading.Thread(target=burst, args=(i,)) for i in range(6)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    return len(refused), refused[0] if refused else {}
+
+
+def overload_through_nginx(report: Report, seconds: float, tmp: Path) -> None:
+    report.section("1. Overload through nginx: 256 connections, a different select each")
+    report.info("apps", "two, MAX_REQUESTS_IN_FLIGHT=4 (the 64 connections nginx admits shed)")
+    if not Path(NGINX).exists():
+        report.line("1. nginx", "not measured", "nginx installed", None)
+        return
+    tmp.mkdir()
+    # per-address limits let 64 connections through; processes that take 4 units of work
+    # at a time shed most of them, as many more addresses would make them shed
+    with nginx_in_front(tmp, env={"LEADSCREW_MAX_REQUESTS_IN_FLIGHT": "4"}) as port:
+        result, health = under_load(port, SELECT.replace("%s", "%.3f"), 256, seconds)
+        refused, headers = _refusal(port)
+        log = tmp / "logs" / "error.log"
+        log_bytes = log.stat().st_size
+        limiting = log.read_text(errors="replace").count("limiting")
+    ok, p50, slowest = health_figures(health)
+    report.info("answers", _statuses(result))
+    report.info("health checks (from another address)", f"{ok} of {len(health)} answered 200")
+    report.info("health p50, slowest", f"{p50 * 1e3:.0f} ms, {slowest * 1e3:.0f} ms")
+    bad_gateway = len(result.latencies_s.get(502, []))
+    held(report, "1. no 502 while the apps shed", f"{bad_gateway} x 502", bad_gateway == 0)
+    held(report, "1. health checks through nginx", f"{ok} of {len(health)}",
+         ok == len(health) > 0)  # fmt: skip
+    retry = headers.get("retry-after", "none")
+    report.info("429s in a 600-request static burst", f"{refused}")
+    held(report, "1. 429 carries Retry-After and CSP", f"Retry-After {retry}",
+         refused > 0 and retry == "1" and "content-security-policy" in headers)  # fmt: skip
+    report.info("error.log", f"{log_bytes:,} bytes, {limiting} lines about limiting")
+    held(report, "1. error.log quiet under refusals", f"{log_bytes:,} B",
+         limiting == 0 and log_bytes < 1024 * 1024)  # fmt: skip
+
+
+# --- 2. costly valid queries --------------------------------------------------------------
+
+
+def costly_queries(report: Report, seconds: float) -> float:
+    """Attack 2; returns the slowest health check [s] (the probes' timeout must exceed it)."""
+    report.section("2. Health under costly valid queries: 64 connections, detail=full&limit=100")
+    with cli_server() as (port, _):
+        result, health = under_load(port, COSTLY.replace("%s", "%.3f"), 64, seconds)
+    ok, p50, slowest = health_figures(health)
+    report.info("answers", _statuses(result))
+    report.info("health checks", f"{ok} of {len(health)} answered 200")
+    report.info("health p50", f"{p50 * 1e3:.0f} ms")
+    timeout = container()["readinessProbe"]["timeoutSeconds"]
+    held(report, f"2. health slowest (readiness timeout {timeout} s)", f"{slowest * 1e3:.0f} ms",
+         ok == len(health) > 0 and slowest < timeout)  # fmt: skip
+    return slowest
+
+
+def _statuses(result: load.LoadResult) -> str:
+    counts = ", ".join(f"{s}: {len(v):,}" for s, v in sorted(result.latencies_s.items()))
+    return f"{counts}; timeouts {result.timeouts}, errors {result.errors}"
+
+
+# --- 3. idle sockets past the connection limit --------------------------------------------
+
+
+def idle_sockets(report: Report) -> None:
+    report.section("3. 1,030 idle sockets against one worker (connection limit 1,024)")
+    with cli_server() as (port, _):
+        idle = [socket.create_connection(("127.0.0.1", port), timeout=5) for _ in range(1030)]
+        try:
+            time.sleep(0.5)  # every socket accepted
+            health = get(port, HEALTH)
+            refused = get(port, SELECT % 100)
+        finally:
+            for sock in idle:
+                sock.close()
+    report.info("health, select", f"{health[0]}, {refused[0]}")
+    held(report, "3. health answered past the limit", f"{health[0]}", health[0] == 200)
+    headers = refused[1]
+    ok = refused[0] == 503 and headers.get("retry-after") == "1"
+    held(report, "3. 503 with Retry-After and CSP", f"{refused[0]}",
+         ok and "content-security-policy" in headers)  # fmt: skip
+
+
+# --- 4. advice at the edge of the inputs ----------------------------------------------------
+
+EDGE_PAGES = {
+    "no load admits the screw": "/?load=0&speed=50&length=500&moving_mass_kg=800"
+    "&orientation=vertical",
+    "forged typed record": "/?load=50&speed=50&length=500&typed_load=50|evil"
+    "&from_force_unit=N&force_unit=lbf",
+}
+
+
+def advice(report: Report) -> None:
+    report.section("4. Advice at the edge of the inputs, and a forged typed record")
+    with cli_server() as (port, _):
+        api = json.loads(get(port, "/api/v1/select?load_n=0&speed_mm_s=50&length_mm=500"
+                                   "&moving_mass_kg=800&orientation=vertical")[2])  # fmt: skip
+        for name, path in EDGE_PAGES.items():
+            status, _, body = get(port, path)
+            held(report, f"4. {name}", f"{status}, {len(body):,} B", status == 200)
+    message = api["summary"]["message"]
+    negative = re.findall(r" -\d[\d.]*", message)
+    held(report, "4. no negative value proposed", f"{len(negative)} found", not negative)
+
+
+# --- 5. share links -------------------------------------------------------------------------
+
+TYPED_PAGES = (
+    "/?load=100&lead=10&speed=50&length=3937.0078&length_unit=in",
+    "/?load=100.4824&lead=10&speed=50&length=500&force_unit=lbf",
+    "/?load=100.4824&speed=50.00004&length=500",
+)
+VERDICT = re.compile(r'class="count-passed">(\d+)<|class="verdict"')
+
+
+def _links(page: str) -> tuple[str, list[str]]:
+    """(the share link, the detail and export links) of a results page."""
+    share = re.search(r'class="share-link" href="([^"]+)"', page)
+    others = re.findall(r'class="(?:export|detail-link)" href="([^"]+)"', page)
+    return share.group(1).replace("&amp;", "&") if share else "", [
+        o.replace("&amp;", "&") for o in others
+    ]
+
+
+def share_links(report: Report) -> None:
+    report.section("5. Share links of numbers typed with many figures")
+    with cli_server() as (port, _):
+        for path in TYPED_PAGES:
+            page = get(port, path)[2].decode()
+            share, others = _links(page)
+            again = get(port, share)[2].decode() if share else ""
+            same = bool(share) and VERDICT.findall(page) == VERDICT.findall(again)
+            statuses = [get(port, link)[0] for link in others]
+            ok = same and bool(statuses) and set(statuses) == {200}
+            held(report, f"5. {path[2:34]}...", f"link {'same' if same else 'differs'}, "
+                 f"{statuses.count(200)}/{len(statuses)} links 200", ok)  # fmt: skip
+
+
+# --- 6. hostile catalog files -----------------------------------------------------------------
+
+
+def _catalog_cases(tmp: Path) -> dict[str, Path]:
+    """A directory per hostile file: name -> directory."""
+    cases: dict[str, Callable[[Path], None]] = {
+        "deep.toml": lambda p: p.write_text("a = " + "[" * 5000 + "]" * 5000 + "\n"),
+        "zero.toml": lambda p: p.symlink_to("/dev/zero"),
+        "fifo.toml": lambda p: os.mkfifo(p),
+        "large.toml": lambda p: p.write_bytes(b"# " + b"x" * 100 * 1024 * 1024),
+        "my-family.toml": lambda p: p.write_text(
+            (ROOT / "examples" / "my-family" / "my-family.toml")
+            .read_text()
+            .replace("starts = { value = [4] }", "starts = { value = [4000000000] }")
+        ),
+    }
+    dirs = {}
+    for name, make in cases.items():
+        directory = tmp / f"catalog-{name}"
+        directory.mkdir()
+        make(directory / name)
+        dirs[name] = directory
+    return dirs
+
+
+def _start(args: list[str], env: dict[str, str]) -> tuple[int, str, float]:
+    """``python -m app.cli ARGS`` until it exits (at most 60 s): (exit status, stderr, s)."""
+    started = time.monotonic()
+    try:
+        done = subprocess.run(
+            [sys.executable, "-m", "app.cli", *args],
+            cwd=ROOT,
+            env={**os.environ, **env},
+            capture_output=True,
+            text=True,
+            timeout=60,
+            check=False,
+        )
+    except subprocess.TimeoutExpired:
+        return -1, "still running after 60 s", time.monotonic() - started
+    return done.returncode, done.stderr, time.monotonic() - started
+
+
+def catalog_files(report: Report, tmp: Path) -> None:
+    report.section("6. Hostile catalog files in LEADSCREW_CATALOG_DIRS, two workers")
+    for name, directory in _catalog_cases(tmp).items():
+        env = {"LEADSCREW_CATALOG_DIRS": json.dumps([str(directory)])}
+        status, err, seconds = _start(["--port", "1", "--workers", "2"], env)
+        ok = status == 2 and name in err and "Traceback" not in err
+        held(report, f"6. {name}", f"exit {status} in {seconds:.1f} s", ok)
+        report.info("   says", err.strip().splitlines()[-1][:90] if err.strip() else "")
+
+
+# --- 7. X-Cache and bad command-line values -------------------------------------------------
+
+
+def leaks_and_options(report: Report) -> None:
+    report.section("7. Whether someone ran these inputs; bad command-line values")
+    with cli_server() as (port, _):
+        answers = [get(port, SELECT % 123.456)[1] for _ in range(2)]
+    told = [h["x-cache"] for h in answers if "x-cache" in h]
+    held(report, "7. a repeated query looks like a new one", f"X-Cache {told or 'absent'}",
+         not told and answers[0].keys() == answers[1].keys())  # fmt: skip
+    for args in (["--port", "80000"], ["--workers", "-3"]):
+        status, err, _ = _start(args, {})
+        held(report, f"7. {' '.join(args)}", f"exit {status}",
+             status == 2 and "Traceback" not in err)  # fmt: skip
+
+
+# --- 8. Kubernetes ----------------------------------------------------------------------------
+
+
+def kubernetes(report: Report, slowest_health_s: float) -> None:
+    report.section("8. Kubernetes manifests against the health latency of attack 2")
+    kinds = manifests()
+    app = container()
+    stop = app.get("lifecycle", {}).get("preStop")
+    held(report, "8. preStop pause", f"{stop}", stop is not None)
+    held(report, "8. PodDisruptionBudget", "present" if "PodDisruptionBudget" in kinds else
+         "absent", "PodDisruptionBudget" in kinds)  # fmt: skip
+    for probe in ("readinessProbe", "livenessProbe"):
+        timeout = app[probe]["timeoutSeconds"]
+        held(report, f"8. {probe} timeout vs health slowest",
+             f"{timeout} s vs {slowest_health_s:.2f} s", timeout > slowest_health_s)  # fmt: skip
+
+
+def run(report: Report, *, seconds: float, tmp: Path) -> None:
+    """Every attack, each for a few seconds."""
+    overload_through_nginx(report, seconds, tmp / "nginx")
+    slowest = costly_queries(report, seconds)
+    idle_sockets(report)
+    advice(report)
+    share_links(report)
+    catalog_files(report, tmp)
+    leaks_and_options(report)
+    kubernetes(report, slowest)
