@@ -15,7 +15,7 @@ from pydantic_settings import SettingsError
 
 from app.catalog import CatalogError, load_catalog
 from app.server.protocol import BoundedHttpToolsProtocol
-from app.settings import Settings, get_settings
+from app.server.settings import Settings, get_settings
 
 #: worker processes at most: one per core is the advice, and each holds the catalog
 MAX_WORKERS = 64

@@ -10,16 +10,17 @@ from app import __version__
 from app.api import docs
 from app.api import routes as api
 from app.catalog import load_catalog
-from app.errors import AppError, app_error_handler, http_error_handler, validation_error_handler
-from app.paths import resource_dir
 from app.server.cache import ResponseCache
 from app.server.compression import NegotiatedGZipMiddleware
+from app.server.errors import AppError
 from app.server.head import HeadAsGetMiddleware
 from app.server.overload import NEVER_SHED, OverloadMiddleware, request_cost
+from app.server.paths import resource_dir
 from app.server.security import SecurityMiddleware
+from app.server.settings import Settings, get_settings
 from app.server.staticfiles import PrecompressedStaticFiles
-from app.settings import Settings, get_settings
 from app.web import custom, guide, pages
+from app.web.errors import app_error_handler, http_error_handler, validation_error_handler
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})

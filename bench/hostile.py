@@ -29,7 +29,7 @@ from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
 from contextlib import contextmanager
 from pathlib import Path
 
-from app.settings import Settings
+from app.server.settings import Settings
 from bench import load, wrk
 from bench.report import Report
 from bench.web import CLIENT_CPUS, HERE, SERVER_CPU, fetch, free_port, rss_kib, server

@@ -1,4 +1,4 @@
-"""The select and evaluate routes skip response validation (``app.responses.ModelJSON``);
+"""The select and evaluate routes skip response validation (``app.server.responses.ModelJSON``);
 what they serve must still be, byte for byte, what the validated output model gives."""
 
 from typing import Any

@@ -12,7 +12,7 @@ from fastapi.testclient import TestClient
 
 from app.main import create_app
 from app.server.cache import ResponseCache
-from app.settings import Settings
+from app.server.settings import Settings
 
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
 PAGE = "/?load=100&speed=50&length=500&lead=10"

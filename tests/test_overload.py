@@ -14,7 +14,7 @@ import pytest
 
 from app.main import create_app
 from app.server.overload import OverloadMiddleware, request_cost
-from app.settings import Settings
+from app.server.settings import Settings
 
 Message = dict[str, Any]
 SELECT = b"load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"

@@ -28,7 +28,7 @@ from fastapi.testclient import TestClient
 from app.fields import BY_PAGE
 from app.main import create_app
 from app.schemas import ApplicationIn, CustomScrewIn
-from app.settings import Settings
+from app.server.settings import Settings
 from app.web.form import ENTERED_PREFIX, UNIT_CHOICES
 from deploy.local import free_port
 

@@ -17,7 +17,7 @@ import pytest
 from app.catalog import CatalogError
 from app.catalog.files import MAX_FILE_BYTES
 from app.main import create_app
-from app.settings import Settings
+from app.server.settings import Settings
 
 ROOT = Path(__file__).resolve().parents[1]
 

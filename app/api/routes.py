@@ -8,10 +8,7 @@ from fastapi.responses import Response
 from app import __version__
 from app.api.query import parse_query, query_parameters
 from app.core.checks import REGISTRY
-from app.deps import CatalogDep
-from app.errors import ApiRoute, AppError
 from app.present import series_dict
-from app.responses import ModelJSON
 from app.schemas import (
     ApplicationIn,
     ChecksOut,
@@ -27,6 +24,9 @@ from app.schemas import (
     SeriesOut,
 )
 from app.server.compute import computed
+from app.server.deps import CatalogDep
+from app.server.errors import ApiRoute, AppError
+from app.server.responses import ModelJSON
 from app.service import (
     FORMULAS_OUT,
     UnknownScrew,

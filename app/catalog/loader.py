@@ -25,7 +25,7 @@ from app.catalog.groups import Groups, read_group
 from app.catalog.models import Catalog, Material, Series, Sourced
 from app.catalog.series import build_series
 from app.core.index import CatalogIndex
-from app.paths import resource_dir
+from app.server.paths import resource_dir
 from app.units import to_si
 
 USER = "user"

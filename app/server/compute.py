@@ -17,7 +17,7 @@ from concurrent.futures import ThreadPoolExecutor
 from functools import cache, partial
 from typing import ParamSpec, TypeVar
 
-from app.settings import get_settings
+from app.server.settings import get_settings
 
 P = ParamSpec("P")
 T = TypeVar("T")

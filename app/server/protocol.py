@@ -17,7 +17,7 @@ value in memory as readily as a short one. This protocol adds both bounds:
   (uvicorn's own limit answers every request a bare 503, the health check included, so
   a thousand idle sockets would make a balancer take the process for dead).
 
-The limits come from ``app.settings`` (``LEADSCREW_*``), so every worker process that
+The limits come from ``app.server.settings`` (``LEADSCREW_*``), so every worker process that
 uvicorn starts reads the same ones.
 """
 
@@ -31,7 +31,7 @@ from uvicorn.server import ServerState
 
 from app.server.overload import NEVER_SHED, ASGIApp, Receive, Scope, Send, send_busy
 from app.server.security import SECURITY_HEADERS
-from app.settings import get_settings
+from app.server.settings import get_settings
 
 logger = logging.getLogger("uvicorn.error")
 #: what a header line adds to the head besides its name and value: ": " and CRLF

@@ -9,12 +9,12 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
-from app.deps import CatalogDep
-from app.errors import AppError
 from app.fields import BY_PAGE
-from app.responses import ModelJSON
 from app.schemas import ApplicationIn, CustomScrewIn, EvaluateOut
+from app.server.deps import CatalogDep
+from app.server.errors import AppError
 from app.server.headers import is_htmx_fragment
+from app.server.responses import ModelJSON
 from app.service import run_evaluation
 from app.units import Display, api_value
 from app.web.export import candidate_csv

@@ -7,13 +7,13 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
-from app.deps import CatalogDep
-from app.errors import AppError
 from app.fields import BY_PAGE, FIELDS, GROUPS
-from app.responses import ModelJSON
 from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn, RejectedSummaryOut
 from app.server.compute import computed
+from app.server.deps import CatalogDep
+from app.server.errors import AppError
 from app.server.headers import is_htmx_fragment
+from app.server.responses import ModelJSON
 from app.service import run_evaluation, run_page_selection, run_selection
 from app.units import TORQUE_LABELS, Display
 from app.web.advice import check_label, no_pass_advice

@@ -5,7 +5,7 @@ from typing import Any
 import pydantic_core
 from fastapi.templating import Jinja2Templates
 
-from app.paths import resource_dir
+from app.server.paths import resource_dir
 
 templates = Jinja2Templates(directory=str(resource_dir("templates")))
 # templates are part of the installed package: no per-render file checks

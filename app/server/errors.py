@@ -1,16 +1,15 @@
-"""One error type with an HTTP status, shown as JSON on /api and as HTML on pages."""
+"""One error type with an HTTP status, the field-level details of invalid input, and the
+API route that answers an unreadable body as invalid input. ``app.web.errors`` shows them
+as JSON on /api and as HTML on pages."""
 
 import re
 from collections.abc import Callable, Coroutine
 from typing import Any
 
 from fastapi import Request
-from fastapi.exceptions import RequestValidationError
-from fastapi.responses import JSONResponse, Response
+from fastapi.responses import Response
 from fastapi.routing import APIRoute
 from starlette.exceptions import HTTPException
-
-from app.web.templating import templates
 
 
 class AppError(Exception):
@@ -44,42 +43,6 @@ def _detail(error: Any) -> dict[str, str]:
 def validation_details(errors: Any) -> list[dict[str, str]]:
     """Field-level messages from pydantic errors: the dotted field and the reason."""
     return [_detail(e) for e in errors]
-
-
-def _respond(request: Request, status: int, error: str, detail: list[dict[str, str]]) -> Response:
-    if request.url.path.startswith("/api/"):
-        return JSONResponse({"error": error, "detail": detail}, status_code=status)
-    return templates.TemplateResponse(
-        request,
-        "error.html",
-        {"status": status, "error": error, "detail": detail},
-        status_code=status,
-    )
-
-
-async def app_error_handler(request: Request, exc: Exception) -> Response:
-    assert isinstance(exc, AppError)
-    return _respond(request, exc.status, exc.error, exc.detail)
-
-
-async def http_error_handler(request: Request, exc: Exception) -> Response:
-    """Routing errors (unknown path, wrong method) in the same shape as every error."""
-    assert isinstance(exc, HTTPException)
-    reason = {404: "not found", 405: "method not allowed"}.get(exc.status_code, str(exc.detail))
-    response = _respond(
-        request,
-        exc.status_code,
-        reason,
-        [{"field": "request", "message": f"{request.method} {request.url.path}: {reason}"}],
-    )
-    if exc.headers:
-        response.headers.update(exc.headers)
-    return response
-
-
-async def validation_error_handler(request: Request, exc: Exception) -> Response:
-    assert isinstance(exc, RequestValidationError)
-    return _respond(request, 422, "invalid input", validation_details(exc.errors()))
 
 
 class ApiRoute(APIRoute):

@@ -2,11 +2,16 @@
 
 In a source checkout they sit beside ``app/``; in an installed wheel they are packaged
 inside it (``app/templates``, ``app/static``, ``app/catalog_data``).
+
+>>> resource_dir("templates").name
+'templates'
+
 """
 
 from pathlib import Path
 
-_PACKAGE = Path(__file__).resolve().parent
+#: the ``app`` package's folder (this module sits in ``app/server``)
+_PACKAGE = Path(__file__).resolve().parents[1]
 _INSTALLED = {"templates": "templates", "static": "static", "catalog": "catalog_data"}
 
 
