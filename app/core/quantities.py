@@ -282,7 +282,8 @@ def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
     """Every number of ``app`` for every candidate of ``t``, as arrays."""
     force_n, peak_n = axial_load(app), peak_axial_load(app)
     rpm = geometry.screw_speed_rpm(app.speed_m_s, t.lead_m)
-    with np.errstate(divide="ignore", invalid="ignore"):  # no thrust: unbounded PV speed
+    # no (or vanishing) thrust: an unbounded PV speed, NaN after ``_finite``
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         values = _values(app, t, force_n, peak_n, rpm)
     return Quantities(**{k: np.asarray(v, dtype=np.float64) for k, v in values.items()})
 
