@@ -6,12 +6,14 @@ started together in one event loop, never raced against a clock.
 
 import asyncio
 import contextlib
+import threading
 from collections.abc import Awaitable, Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 import pytest
 
+from app.api import routes
 from app.main import create_app
 from app.server.overload import OverloadMiddleware, request_cost
 from app.server.settings import Settings
@@ -217,7 +219,7 @@ def test_costly_requests_are_shed_by_their_cost() -> None:
     assert sorted(status for status, _ in answers) == [200, 200, 503, 503]
 
 
-async def _health_beside_full_forms() -> list[str]:
+async def _health_beside_full_forms(release: threading.Event) -> list[str]:
     app = create_app(Settings(response_cache_bytes=0))
     finished: list[str] = []
 
@@ -230,12 +232,25 @@ async def _health_beside_full_forms() -> list[str]:
     for _ in range(10):  # loop turns: the full forms are admitted and computing
         await asyncio.sleep(0)
     await call("health", "/api/v1/health")
+    release.set()
     await asyncio.gather(*started)
     return finished
 
 
-def test_the_health_check_is_answered_while_full_forms_compute() -> None:
+def test_the_health_check_is_answered_while_full_forms_compute(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     """The full forms compute on threads of their own: the health check, asked once they
-    are computing, is answered first. Computed on the loop, they would have finished
-    before the health check was even read."""
-    assert _run(_health_beside_full_forms())[0] == "health"
+    are computing, is answered first. Each full form here waits (5 s at most) until the
+    health check has been answered: on threads that wait leaves the loop free; computed
+    on the loop, the forms would hold it until they finished, before the health check
+    was even read."""
+    release = threading.Event()
+    full_selection = routes._full_selection
+
+    def held(*args: Any) -> Any:
+        release.wait(timeout=5.0)
+        return full_selection(*args)
+
+    monkeypatch.setattr(routes, "_full_selection", held)
+    assert _run(_health_beside_full_forms(release)) == ["health", "full", "full"]
