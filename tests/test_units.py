@@ -61,6 +61,7 @@ NIST = {
     "MPa": (1e6, True),
     "GPa": (1e9, True),
     "km": (1e3, True),
+    "mm³/(N m)": (1e-9, True),
 }
 
 

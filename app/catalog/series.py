@@ -71,12 +71,19 @@ RANGED_VARIANT = {
     "bearing_pv_limit_mpa_m_s": ("nut_pv_limit_pa_m_s", "MPa m/s"),
     "max_sliding_speed_m_s": ("max_sliding_speed_m_s", "m/s"),
     "max_length_mm": ("max_length_m", "mm"),
+    "specific_wear_rate_mm3_n_m": ("wear_rate_m2_n", "mm³/(N m)"),
+    "allowed_wear_to_flank_height": ("allowed_wear_fraction", ""),
 }
 #: Variant values that rate the nut by its contact pressure (they need a nut length).
 BEARING_VALUES = {
     "max_pressure": ("max_pressure_mpa", "MPa"),
     "bearing_pv_limit": ("bearing_pv_limit_mpa_m_s", "MPa m/s"),
     "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
+}
+#: Variant values that rate the nut's wear life (Archard's law, both needed).
+WEAR_VALUES = {
+    "wear_rate": ("specific_wear_rate_mm3_n_m", "mm³/(N m)"),
+    "allowed_wear": ("allowed_wear_to_flank_height", ""),
 }
 Ends = Mapping[str, tuple[Mapping[str, Any], Mapping[str, Any]]]
 #: What a candidate's provenance says for a nut rating or thread value its family gives
@@ -92,6 +99,8 @@ NOT_GIVEN = {
         ("pitch", "thread pitch"),
         ("pv_limit", "three-thread PV limit"),
         ("design_load", "design load"),
+        ("wear_rate", "specific wear rate"),
+        ("allowed_wear", "allowed wear depth"),
     )
 }
 UNRATED_LIFE = Provenance(
@@ -347,6 +356,12 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
         t_range = v.range("temperature_range_c", positive=False)
         fields["temperature_range"] = Sourced(t_range, "C", v.prov("temperature_range_c"))
     fields.update(_optional(v, BEARING_VALUES))
+    fields.update(_optional(v, WEAR_VALUES))
+    if len(WEAR_VALUES.keys() & fields.keys()) == 1:
+        missing = next(key for name, (key, _) in WEAR_VALUES.items() if name not in fields)
+        raise v.fail(missing, "a wear rating needs both the wear rate and the allowed wear")
+    if fields.get("allowed_wear") and not 0.0 < fields["allowed_wear"].value <= 1.0:
+        raise v.fail("allowed_wear_to_flank_height", "must be a fraction, above 0 and at most 1")
     return fields
 
 
@@ -445,6 +460,8 @@ def _nut_spec(
         "max_pressure_pa": _value_or_none(variant.fields, "max_pressure"),
         "nut_pv_limit_pa_m_s": _value_or_none(variant.fields, "bearing_pv_limit"),
         "max_sliding_speed_m_s": _value_or_none(variant.fields, "max_sliding_speed"),
+        "wear_rate_m2_n": _value_or_none(variant.fields, "wear_rate"),
+        "allowed_wear_fraction": _value_or_none(variant.fields, "allowed_wear"),
         "assumption_ends": _ends(context.ends, variant),
     }
 

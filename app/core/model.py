@@ -134,6 +134,10 @@ class ScrewSpec:
     max_pressure_pa: float | None = None
     nut_pv_limit_pa_m_s: float | None = None
     max_sliding_speed_m_s: float | None = None
+    #: The nut's specific wear rate against the screw [m^2/N = m^3/(N m)] and the wear
+    #: depth it may lose, as a fraction of its flank height (None: no wear rating).
+    wear_rate_m2_n: float | None = None
+    allowed_wear_fraction: float | None = None
     #: For each catalog value given with a range: the ScrewSpec fields at its low and at
     #: its high end (derived values recomputed), for re-screening at either end.
     assumption_ends: Mapping[str, tuple[Mapping[str, float], Mapping[str, float]]] = field(

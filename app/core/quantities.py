@@ -23,6 +23,7 @@ from app.core.formulas import (
     life,
     pv,
     torque,
+    wear,
 )
 from app.core.formulas.declare import formula
 from app.core.model import STANDARD_GRAVITY_M_S2, Application
@@ -88,6 +89,10 @@ class Quantities(Generic[V]):
     pv_max_speed_m_s: V
     life_years_min: V
     life_years_max: V
+    #: Nut wear (Archard): nut travel until the allowed wear depth [m] and that travel in
+    #: years of the duty (NaN: no wear rating, no thrust, or no duty)
+    wear_travel_m: V
+    wear_life_years: V
     lead_error_m: V
     thermal_growth_m: V
     holding_seed_nm: V
@@ -202,6 +207,23 @@ def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dic
     }
 
 
+def _wear(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+    """Nut travel until its flanks have worn the allowed depth (Archard's law at the
+    running thrust): over the engaged flanks and flank height of a standard thread, else
+    over the seed's three threads and thread depth."""
+    flanks = ~np.isnan(t.bearing_area_m2)
+    area = np.where(flanks, t.bearing_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
+    height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
+    helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
+    sliding = wear.wear_life_sliding(
+        t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
+    )
+    travel = _finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
+    rated = bool(app.stroke_m and app.cycles_per_day)
+    years = life.life_years(travel, app.stroke_m, app.cycles_per_day) if rated else travel * np.nan
+    return {"wear_travel_m": travel, "wear_life_years": years}
+
+
 def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
     """Rated life in years for the duty, lead error and thermal growth over the stroke."""
     nan = np.full(len(t), np.nan)
@@ -263,6 +285,7 @@ def _values(
         **_column_limits(app, t, peak_n),
         **_nut(app, t, force_n, rpm),
         **_duty(app, t),
+        **_wear(app, t, force_n),
         **(holding := _holding(app, t, force_n)),
         **_motor(app, t, rpm, holding["brake_nm"], torques),
     }

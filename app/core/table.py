@@ -45,6 +45,7 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
     of one turn at d2."""
     names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
     names += ("max_pressure_pa", "nut_pv_limit_pa_m_s", "max_sliding_speed_m_s")
+    names += ("wear_rate_m2_n", "allowed_wear_fraction")
     out = {name: column(list(map(attrgetter(name), screws))) for name in names}
     d2 = out["flank_pitch_diameter_m"]
     area = bearing.engaged_flank_area(
@@ -126,6 +127,8 @@ class CandidateTable:
     max_pressure_pa: Array
     nut_pv_limit_pa_m_s: Array
     max_sliding_speed_m_s: Array
+    wear_rate_m2_n: Array
+    allowed_wear_fraction: Array
     bearing_area_m2: Array
     flank_helix_travel_m: Array
 
