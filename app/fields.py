@@ -373,6 +373,24 @@ FIELDS: tuple[InputField, ...] = (
         group="Motor and move", kind="number", bounds=(1e-6, 1e5), dimension="torque",
         needs=("stroke_mm",),
     ),
+    InputField(
+        api="step_angle_deg", page="step_angle", core="step_angle_deg", label="Step angle",
+        help="The stepper's full step: 1.8 for 200 steps a turn, 0.9 for 400; empty for "
+        "no step rate or resolution check",
+        group="Motor and move", kind="number", bounds=(0.01, 90.0), unit="deg",
+    ),
+    InputField(
+        api="microsteps", page="microsteps", core="microsteps", label="Microsteps",
+        help="Step pulses per full step, as the driver is set: 1 for full steps",
+        group="Motor and move", kind="whole number", default=1, bounds=(1, 256),
+    ),
+    InputField(
+        api="max_step_rate_hz", page="max_step_rate", core="max_step_rate_hz",
+        label="Max step rate", help="The controller's highest step pulse rate, per "
+        "second; needs a step angle",
+        group="Motor and move", kind="number", bounds=(1.0, 1e8), dimension="frequency",
+        needs=("step_angle_deg",),
+    ),
 )
 # fmt: on
 

@@ -109,6 +109,7 @@ UNITS: dict[str, Unit] = {
         _unit("years", "years", 1),
         _unit("°C", "temperature", 1),
         _unit("", "factor", 1),
+        _unit("Hz", "frequency", 1),
         _unit("m³/(N m)", "wear_rate", 1),
         _unit("mm³/(N m)", "wear_rate", _MM**3),
         # RTP's wear factor: W [in³] = K F [lbf] V [ft/min] T [h], sliding 60 V T ft

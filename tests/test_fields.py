@@ -40,7 +40,7 @@ SHARE_LINK_NAMES = [
     "buckling_safety_factor", "torque_safety_factor", "self_locking_friction_factor",
     "max_torque", "brake_torque", "required_life_years", "positioning_tolerance", "rank_by",
     "advice", "limit", "family", "nut_material", "decel", "dwell", "motor_curve",
-    "motor_inertia", "motor_rms_torque",
+    "motor_inertia", "motor_rms_torque", "step_angle", "microsteps", "max_step_rate",
 ]  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")
@@ -84,7 +84,7 @@ def test_api_model_fields_are_the_tables() -> None:
 @pytest.mark.parametrize("field", [f for f in FIELDS if f.bounds], ids=lambda f: f.api)
 def test_bounds_are_enforced_by_the_api_model(field: InputField) -> None:
     low, high = field.bounds or (0.0, 0.0)
-    duty = {"stroke_mm": 100.0, "cycles_per_day": 10.0}
+    duty = {"stroke_mm": 100.0, "cycles_per_day": 10.0, "step_angle_deg": 1.8}
     for value, valid in ((low, True), (high, True), (high * 2 + 1, False)):
         data = {**REQUIRED, **duty, field.api: value}
         try:

@@ -128,6 +128,7 @@ NAME_SUFFIX = {
     "years": "_years",
     "s": "_s",
     "kg m²": "_kg_m2",
+    "Hz": "_hz",
 }
 
 

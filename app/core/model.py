@@ -70,6 +70,11 @@ class Application:
     motor_inertia_kg_m2: float | None = None
     motor_curve: tuple[tuple[float, float], ...] = ()
     motor_rms_torque_nm: float | None = None
+    #: The stepper's controller: full step angle [deg] (None: no controller checks),
+    #: microsteps per full step, and the controller's highest step rate [1/s].
+    step_angle_deg: float | None = None
+    microsteps: int = 1
+    max_step_rate_hz: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -22,6 +22,7 @@ from app.core.formulas import (
     geometry,
     life,
     pv,
+    stepping,
     torque,
     wear,
 )
@@ -116,6 +117,10 @@ class Quantities(Generic[V]):
     motor_worst_needed_nm: V
     motor_worst_rpm: V
     motor_curve_nm: V
+    #: The stepper's controller: step pulses per second at the peak rpm and the travel
+    #: of one pulse [m] (NaN without a step angle).
+    step_rate_hz: V
+    step_resolution_m: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -287,7 +292,20 @@ def _values(
         **_duty(app, t),
         **_wear(app, t, force_n),
         **(holding := _holding(app, t, force_n)),
-        **_motor(app, t, rpm, holding["brake_nm"], torques),
+        **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),
+        **_controller(app, t, motor["peak_rpm"]),
+    }
+
+
+def _controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str, Any]:
+    """The step rate the peak speed needs and the travel of one step pulse."""
+    if app.step_angle_deg is None:
+        nan = np.full(len(t), np.nan)
+        return {"step_rate_hz": nan, "step_resolution_m": nan}
+    per_rev = stepping.steps_per_rev(app.step_angle_deg, app.microsteps)
+    return {
+        "step_rate_hz": stepping.step_rate(peak_rpm, per_rev),
+        "step_resolution_m": 1.0 / stepping.steps_per_metre(per_rev, t.lead_m),
     }
 
 

@@ -23,6 +23,8 @@ from app.core.checks.motor_speed import MotorSpeed
 from app.core.checks.oil import OilCompatibility
 from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
+from app.core.checks.step_rate import StepRate
+from app.core.checks.step_resolution import StepResolution
 from app.core.checks.temperature import Temperature
 from app.core.checks.torque import DriveTorque
 from app.core.checks.traverse_speed import TraverseSpeed
@@ -35,6 +37,7 @@ REGISTRY: tuple[Check, ...] = (
     MotorCurve(),
     MotorRms(),
     MotorSpeed(),
+    StepRate(),
     CriticalSpeed(),
     ColumnBuckling(),
     RootStress(),
@@ -52,6 +55,7 @@ REGISTRY: tuple[Check, ...] = (
     Life(),
     WearLife(),
     Accuracy(),
+    StepResolution(),
 )
 BY_NAME: dict[str, Check] = {c.name: c for c in REGISTRY}
 
