@@ -89,6 +89,7 @@ UNITS: dict[str, Unit] = {
         _unit("kg", "mass", 1),
         _unit("lb", "mass", _LB),
         _unit("kg m²", "inertia", 1),
+        _unit("g cm²", "inertia", Fraction(1, 10**7)),
         _unit("kg m²/m", "inertia_per_length", 1),
         _unit("kg m²/in", "inertia_per_length", 1 / _IN),
         _unit("kg/m³", "density", 1),
@@ -110,6 +111,8 @@ UNITS: dict[str, Unit] = {
         _unit("°C", "temperature", 1),
         _unit("", "factor", 1),
         _unit("Hz", "frequency", 1),
+        _unit("H", "inductance", 1),
+        _unit("mH", "inductance", _MM),
         _unit("m³/(N m)", "wear_rate", 1),
         _unit("mm³/(N m)", "wear_rate", _MM**3),
         # RTP's wear factor: W [in³] = K F [lbf] V [ft/min] T [h], sliding 60 V T ft
@@ -128,6 +131,7 @@ API_SYSTEM: dict[Quantity, str] = {
     "pv": "MPa m/s",
     "pressure": "MPa",
     "wear_rate": "mm³/(N m)",
+    "inductance": "mH",
 }
 #: dimension -> (API unit symbol, factor from the core's unit to the API unit).
 API_UNITS: dict[Quantity, tuple[str, float]] = {
@@ -270,6 +274,7 @@ TEXT_FORMATS: dict[Quantity, str] = {
     "years": ".3g",
     "temperature": "g",
     "factor": "g",
+    "frequency": ".6g",
 }
 
 

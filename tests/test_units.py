@@ -129,6 +129,7 @@ NAME_SUFFIX = {
     "s": "_s",
     "kg m²": "_kg_m2",
     "Hz": "_hz",
+    "mH": "_mh",
 }
 
 

@@ -23,6 +23,7 @@ from app.catalog.files import (
 )
 from app.catalog.groups import Groups, read_group
 from app.catalog.models import Catalog, Material, Series, Sourced
+from app.catalog.motors import MOTOR_FILE, library
 from app.catalog.series import build_series
 from app.core.robustness import variants_for
 from app.core.table import CandidateTable
@@ -130,7 +131,9 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         _file_default(read_file(path, digest))
         for directory in catalog_dirs([resource_dir("catalog"), *map(Path, extra_dirs)])
         for path in toml_files(directory)
+        if path.name != MOTOR_FILE
     ]
+    library()  # the motor library is validated with the catalog
     group_files = [s for s in sources if s.name == GROUP_FILE]
     groups = Groups([read_group(s) for s in group_files])
     materials = _materials(sources)

@@ -75,6 +75,15 @@ class Application:
     step_angle_deg: float | None = None
     microsteps: int = 1
     max_step_rate_hz: float | None = None
+    #: A library motor's id (its curve and inertia arrive in the fields above), and a
+    #: stepper's datasheet values for the pull-out model: drive voltage [V], phase
+    #: current [A], winding resistance [ohm] and inductance [H], holding torque [N m].
+    motor: str | None = None
+    motor_supply_v: float | None = None
+    motor_phase_current_a: float | None = None
+    motor_resistance_ohm: float | None = None
+    motor_inductance_h: float | None = None
+    motor_holding_torque_nm: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

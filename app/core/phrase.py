@@ -31,6 +31,7 @@ Quantity = Literal[
     "temperature",  # deg C
     "factor",  # dimensionless
     "frequency",  # 1/s (step pulses per second)
+    "inductance",  # H
     "wear_rate",  # m^2/N: wear volume per load and sliding distance, m^3/(N m)
 ]
 

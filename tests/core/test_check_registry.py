@@ -189,7 +189,7 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     whose capacity is a catalog value names it (among the fields it reads); only the
     checks whose capacity is the user's own input leave it empty."""
     user_limits = {c.name for c in REGISTRY if not c.capacity_sources}
-    motor = {"motor_curve", "motor_rms", "motor_speed"}
+    motor = {"motor_curve", "motor_rms", "motor_speed", "inertia_ratio"}
     controller = {"step_rate", "step_resolution"}
     assert user_limits == {"torque", "holding", "accuracy", *motor, *controller}
     for c in REGISTRY:

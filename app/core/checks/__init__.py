@@ -14,6 +14,7 @@ from app.core.checks.buckling import ColumnBuckling
 from app.core.checks.critical_speed import CriticalSpeed
 from app.core.checks.design_load import DesignLoad
 from app.core.checks.holding import Holding
+from app.core.checks.inertia_ratio import InertiaRatio
 from app.core.checks.length import Length
 from app.core.checks.life import Life
 from app.core.checks.max_sliding_speed import MaxSlidingSpeed
@@ -37,6 +38,7 @@ REGISTRY: tuple[Check, ...] = (
     MotorCurve(),
     MotorRms(),
     MotorSpeed(),
+    InertiaRatio(),
     StepRate(),
     CriticalSpeed(),
     ColumnBuckling(),
