@@ -32,7 +32,13 @@ from app.units import to_si
 
 USER = "user"
 MATERIAL_FIELDS = frozenset(
-    {"youngs_modulus_gpa", "density_kg_m3", "expansion_per_c", "yield_strength_mpa"}
+    {
+        "youngs_modulus_gpa",
+        "density_kg_m3",
+        "expansion_per_c",
+        "yield_strength_mpa",
+        "thermal_conductivity_w_m_k",
+    }
 )
 
 
@@ -54,6 +60,15 @@ def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
                 entry.prov("yield_strength_mpa"),
             )
             if "yield_strength_mpa" in table
+            else None
+        ),
+        (
+            Sourced(
+                entry.number("thermal_conductivity_w_m_k"),
+                "W/(m K)",
+                entry.prov("thermal_conductivity_w_m_k"),
+            )
+            if "thermal_conductivity_w_m_k" in table
             else None
         ),
     )

@@ -99,6 +99,7 @@ NOT_GIVEN = {
         ("pitch", "thread pitch"),
         ("pv_limit", "three-thread PV limit"),
         ("design_load", "design load"),
+        ("thermal_conductivity", "screw thermal conductivity"),
         ("wear_rate", "specific wear rate"),
         ("allowed_wear", "allowed wear depth"),
     )
@@ -274,6 +275,11 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
         "leads": _leads(entry, od.value),
         **thread,
         **({"yield_strength": material.yield_strength_pa} if material.yield_strength_pa else {}),
+        **(
+            {"thermal_conductivity": material.thermal_conductivity_w_m_k}
+            if material.thermal_conductivity_w_m_k
+            else {}
+        ),
     }
 
 
@@ -513,6 +519,7 @@ def _screw(
         temperature_max_c=t_max,
         oil_compatible=variant.fields["oil_compatible"].value,
         yield_strength_pa=_value_or_none(fields, "yield_strength"),
+        thermal_conductivity_w_m_k=_value_or_none(fields, "thermal_conductivity"),
         outgassing=_value_or_none(fields, "outgassing") or (),
         material_name=fields["screw_material"].value,
         nut_material=_field(fields, variant, "nut_material"),

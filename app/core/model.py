@@ -135,6 +135,8 @@ class ScrewSpec:
     traverse_bands: tuple[tuple[float, float, float], ...] = ()
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
     yield_strength_pa: float | None = None
+    #: The screw material's thermal conductivity [W/(m K)] (None: no heat balance).
+    thermal_conductivity_w_m_k: float | None = None
     #: Thread pitch P, the standard's pitch diameter d2 and engaged flank height H1 [m],
     #: and the nut length whose engaged turns carry the load (None: not given).
     pitch_m: float | None = None

@@ -20,6 +20,7 @@ from app.core.formulas import (
     critical_speed,
     efficiency,
     geometry,
+    heat,
     life,
     pv,
     stepping,
@@ -94,6 +95,10 @@ class Quantities(Generic[V]):
     #: years of the duty (NaN: no wear rating, no thrust, or no duty)
     wear_travel_m: V
     wear_life_years: V
+    #: Heat: the thread's friction power, the cycle's mean [W] (at the top speed without
+    #: a stroke), and the nut's steady rise over the ambient [K] (NaN: no heat balance)
+    friction_power_w: V
+    nut_temperature_rise_k: V
     lead_error_m: V
     thermal_growth_m: V
     holding_seed_nm: V
@@ -229,6 +234,19 @@ def _wear(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
     return {"wear_travel_m": travel, "wear_life_years": years}
 
 
+def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+    """Friction power at the cycle's mean speed and the nut's steady temperature rise:
+    the screw conducts the heat away both ways as a fin, the nut's surface convects it."""
+    p = motion.move_profile(app)
+    mean_speed = app.speed_m_s if p is None else 2.0 * (app.stroke_m or 0.0) / p.cycle_time_s
+    power = _finite(heat.friction_power(force_n, mean_speed, t.efficiency))
+    h = heat.FREE_CONVECTION_W_M2_K
+    fin = heat.fin_conductance(t.root_diameter_m, t.thermal_conductivity_w_m_k, h)
+    nut_d = heat.NUT_OUTER_TO_D * t.outer_diameter_m
+    rise = heat.temperature_rise(power, fin, t.nut_length_m, nut_d, h)
+    return {"friction_power_w": power, "nut_temperature_rise_k": rise}
+
+
 def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
     """Rated life in years for the duty, lead error and thermal growth over the stroke."""
     nan = np.full(len(t), np.nan)
@@ -291,6 +309,7 @@ def _values(
         **_nut(app, t, force_n, rpm),
         **_duty(app, t),
         **_wear(app, t, force_n),
+        **_heat(app, t, force_n),
         **(holding := _holding(app, t, force_n)),
         **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),
         **_controller(app, t, motor["peak_rpm"]),

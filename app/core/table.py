@@ -120,6 +120,7 @@ class CandidateTable:
     #: the torque of a segment where the load drives
     backdrive_efficiency_signed: Array
     yield_strength_pa: Array
+    thermal_conductivity_w_m_k: Array
     pitch_m: Array
     flank_pitch_diameter_m: Array
     flank_height_m: Array
@@ -206,6 +207,7 @@ class CandidateTable:
             backdrive_efficiency_running=efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
             backdrive_efficiency_signed=profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
             yield_strength_pa=col("yield_strength_pa"),
+            thermal_conductivity_w_m_k=col("thermal_conductivity_w_m_k"),
             **_nut_columns(screws, lead),
         )
 

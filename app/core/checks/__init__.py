@@ -21,6 +21,7 @@ from app.core.checks.max_sliding_speed import MaxSlidingSpeed
 from app.core.checks.motor_curve import MotorCurve
 from app.core.checks.motor_rms import MotorRms
 from app.core.checks.motor_speed import MotorSpeed
+from app.core.checks.nut_heat import NutHeat
 from app.core.checks.oil import OilCompatibility
 from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
@@ -51,6 +52,7 @@ REGISTRY: tuple[Check, ...] = (
     Length(),
     OilCompatibility(),
     Temperature(),
+    NutHeat(),
     BackDriving(),
     Holding(),
     AntiBacklash(),
