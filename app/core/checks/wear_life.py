@@ -23,15 +23,15 @@ from app.core.phrase import Amount, Phrase
 WEAR_RATE = "specific_wear_rate_mm3_n_m"
 
 
-def _band(s: ScrewSpec, travel_m: float) -> tuple[float, float]:
-    """Life travel [m] at the high and the low end of the wear rate's range (the life
-    is inversely proportional to the rate); the nominal travel twice without a range."""
+def life_band(s: ScrewSpec) -> tuple[float, float]:
+    """The life at the high and at the low end of the wear rate's range, as shares of the
+    nominal life (inversely proportional to the rate); (1, 1) without a range."""
     ends = s.assumption_ends.get(WEAR_RATE)
     nominal = s.wear_rate_m2_n
     if ends is None or nominal is None:
-        return travel_m, travel_m
+        return 1.0, 1.0
     low_rate, high_rate = (end["wear_rate_m2_n"] for end in ends)
-    return travel_m * nominal / high_rate, travel_m * nominal / low_rate
+    return nominal / high_rate, nominal / low_rate
 
 
 class WearLife(Check):
@@ -77,7 +77,7 @@ class WearLife(Check):
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        low_m, high_m = _band(s, r.wear_travel_m)
+        low_m, high_m = (r.wear_travel_m * share for share in life_band(s))
         cycle_m = 2.0 * (app.stroke_m or 0.0)
         verb = "meets" if passed else "falls short of"
         return Phrase(
