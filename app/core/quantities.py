@@ -225,9 +225,10 @@ def _wear(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
     area = np.where(flanks, t.bearing_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
     helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
-    sliding = wear.wear_life_sliding(
-        t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
-    )
+    with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
+        sliding = wear.wear_life_sliding(
+            t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
+        )
     travel = _finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
     rated = bool(app.stroke_m and app.cycles_per_day)
     years = life.life_years(travel, app.stroke_m, app.cycles_per_day) if rated else travel * np.nan
