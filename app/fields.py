@@ -22,6 +22,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal, get_args
 
+from app.catalog.motors import library
 from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
 from app.units import API_SYSTEM, SWITCHED, UNITS, Quantity, from_api, label
 
@@ -372,6 +373,63 @@ FIELDS: tuple[InputField, ...] = (
         "cycle (needs a stroke); empty for no check",
         group="Motor and move", kind="number", bounds=(1e-6, 1e5), dimension="torque",
         needs=("stroke_mm",),
+    ),
+    InputField(
+        api="motor", page="motor", core="motor", label="Library motor",
+        help="A motor of the library (catalog/motors.toml: " + ", ".join(library())
+        + "): its pull-out curve, rotor inertia and step angle unless given here; empty "
+        "or “none” for no motor",
+        group="Motor and move", kind="text", none_word="none",
+    ),
+    InputField(
+        api="step_angle_deg", page="step_angle", core="step_angle_deg", label="Step angle",
+        help="The stepper's full step: 1.8 for 200 steps a turn, 0.9 for 400; empty for "
+        "no step rate or resolution check",
+        group="Motor and move", kind="number", bounds=(0.01, 90.0), unit="deg",
+    ),
+    InputField(
+        api="microsteps", page="microsteps", core="microsteps", label="Microsteps",
+        help="Step pulses per full step, as the driver is set: 1 for full steps",
+        group="Motor and move", kind="whole number", default=1, bounds=(1, 256),
+    ),
+    InputField(
+        api="max_step_rate_hz", page="max_step_rate", core="max_step_rate_hz",
+        label="Max step rate", help="The controller's highest step pulse rate, per "
+        "second; needs a step angle or a library motor",
+        group="Motor and move", kind="number", bounds=(1.0, 1e8), dimension="frequency",
+    ),
+    InputField(
+        api="motor_supply_v", page="motor_supply", core="motor_supply_v",
+        label="Drive voltage", help="A stepper's drive supply, for its pull-out curve from "
+        "the datasheet values below", group="Motor and move", kind="number",
+        bounds=(1.0, 400.0), unit="V",
+    ),
+    InputField(
+        api="motor_phase_current_a", page="motor_phase_current",
+        core="motor_phase_current_a", label="Phase current",
+        help="Set on the driver, per phase", group="Motor and move", kind="number",
+        bounds=(0.01, 50.0), unit="A",
+    ),
+    InputField(
+        api="motor_resistance_ohm", page="motor_resistance", core="motor_resistance_ohm",
+        label="Winding resistance", help="Per phase, from the datasheet",
+        group="Motor and move", kind="number", bounds=(0.0, 1000.0), unit="Ω",
+    ),
+    InputField(
+        api="motor_inductance_mh", page="motor_inductance", core="motor_inductance_h",
+        label="Winding inductance", help="Per phase, from the datasheet",
+        group="Motor and move", kind="number", bounds=(0.01, 1000.0), dimension="inductance",
+    ),
+    InputField(
+        api="motor_holding_torque_nm", page="motor_holding_torque",
+        core="motor_holding_torque_nm", label="Holding torque",
+        help="At the phase current: with the step angle and the four values above it "
+        "draws the stepper's pull-out curve (when no curve is given)",
+        group="Motor and move", kind="number", bounds=(1e-4, 100.0), dimension="torque",
+        needs=(
+            "step_angle_deg", "motor_supply_v", "motor_phase_current_a",
+            "motor_resistance_ohm", "motor_inductance_mh",
+        ),
     ),
 )
 # fmt: on

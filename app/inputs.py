@@ -35,6 +35,7 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
+from app.catalog.motors import check_motor, with_motor
 from app.core.model import Application
 from app.fields import BY_API, FIELDS, InputField
 
@@ -258,6 +259,15 @@ def _definitions() -> dict[str, Any]:
     return {f.api: (api_type(f), ... if f.required else f.default) for f in FIELDS}
 
 
+def check_drivable(value: float | None, supply_v: float, current_a: float, ohm: float) -> None:
+    """The drive voltage must exceed the winding's I R, or the current is never reached."""
+    if value is not None and supply_v <= current_a * ohm:
+        raise ValueError(
+            f"a {supply_v:g} V drive cannot push {current_a:g} A through {ohm:g} ohm: "
+            "raise the drive voltage or lower the phase current"
+        )
+
+
 class ApplicationInputs(BaseModel):
     """The axis an engineer wants to drive, in the API units named by each field.
 
@@ -279,10 +289,34 @@ class ApplicationInputs(BaseModel):
             raise ValueError("needs " + " and ".join(needs))
         return value
 
+    @field_validator("motor", check_fields=False)
+    @classmethod
+    def _known_motor(cls, value: str | None) -> str | None:
+        return check_motor(BY_API["motor"].to_si(value))
+
+    @field_validator("max_step_rate_hz", check_fields=False)
+    @classmethod
+    def _step_angle_known(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """A step rate limit needs the step angle, given or the library motor's."""
+        known = info.data.get("step_angle_deg") is not None or info.data.get("motor")
+        if value is not None and not known:
+            raise ValueError("needs step_angle_deg or a library motor")
+        return value
+
+    @field_validator("motor_holding_torque_nm", check_fields=False)
+    @classmethod
+    def _drivable(cls, value: float | None, info: ValidationInfo) -> float | None:
+        names = ("motor_supply_v", "motor_phase_current_a", "motor_resistance_ohm")
+        given = [info.data.get(name) for name in names]
+        if all(v is not None for v in given):
+            check_drivable(value, *(float(v or 0.0) for v in given))
+        return value
+
     def to_core(self) -> Application:
-        """The same application in SI for the core: each value times its ``si_factor``."""
+        """The same application in SI for the core: each value times its ``si_factor``,
+        with the motor's curve, inertia and step angle filled in (``with_motor``)."""
         values = {f.core: f.to_si(getattr(self, f.api)) for f in FIELDS}
-        return Application(**values)
+        return with_motor(Application(**values))
 
 
 if TYPE_CHECKING:

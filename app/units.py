@@ -89,6 +89,7 @@ UNITS: dict[str, Unit] = {
         _unit("kg", "mass", 1),
         _unit("lb", "mass", _LB),
         _unit("kg m²", "inertia", 1),
+        _unit("g cm²", "inertia", Fraction(1, 10**7)),
         _unit("kg m²/m", "inertia_per_length", 1),
         _unit("kg m²/in", "inertia_per_length", 1 / _IN),
         _unit("kg/m³", "density", 1),
@@ -109,6 +110,15 @@ UNITS: dict[str, Unit] = {
         _unit("years", "years", 1),
         _unit("°C", "temperature", 1),
         _unit("", "factor", 1),
+        _unit("Hz", "frequency", 1),
+        _unit("H", "inductance", 1),
+        _unit("W", "power", 1),
+        _unit("W/(m K)", "conductivity", 1),
+        _unit("mH", "inductance", _MM),
+        _unit("m³/(N m)", "wear_rate", 1),
+        _unit("mm³/(N m)", "wear_rate", _MM**3),
+        # RTP's wear factor: W [in³] = K F [lbf] V [ft/min] T [h], sliding 60 V T ft
+        _unit("in³ min/(ft lbf h)", "wear_rate", _IN**3 / (_LBF * _FT) * _PER_MINUTE),
     )
 }
 #: dimension -> the core's unit of it (the one with factor 1).
@@ -122,6 +132,8 @@ API_SYSTEM: dict[Quantity, str] = {
     "accel": "mm/s²",
     "pv": "MPa m/s",
     "pressure": "MPa",
+    "wear_rate": "mm³/(N m)",
+    "inductance": "mH",
 }
 #: dimension -> (API unit symbol, factor from the core's unit to the API unit).
 API_UNITS: dict[Quantity, tuple[str, float]] = {
@@ -264,6 +276,7 @@ TEXT_FORMATS: dict[Quantity, str] = {
     "years": ".3g",
     "temperature": "g",
     "factor": "g",
+    "frequency": ".6g",
 }
 
 
@@ -320,6 +333,7 @@ CATALOG_UNITS = {
     "kg m2/m": "kg m²/m",
     "kg/m3": "kg/m³",
     "C": "°C",
+    "m³/(N m)": "mm³/(N m)",
 }
 #: catalog field-name prefix -> the unit it is shown in, where mm would mislead.
 CATALOG_FIELD_UNITS = {"max_length": "m", "life": "km"}

@@ -448,8 +448,14 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     inputs = select(api, **BASE)["inputs"]
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
     # fields beyond the issue's list are optional and stay off unless given
-    # the self-locking margin, the advice policy and the dwell have defaults of their own
-    later = {"self_locking_friction_factor": 0.5, "advice": "warn", "dwell_s": 0.0}
+    # the self-locking margin, the advice policy, the dwell and the microsteps have
+    # defaults of their own
+    later = {
+        "self_locking_friction_factor": 0.5,
+        "advice": "warn",
+        "dwell_s": 0.0,
+        "microsteps": 1,
+    }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
     assert all(inputs[k] is None for k in rest)

@@ -87,6 +87,29 @@ def test_the_minimal_family_loads(tmp_path: Path) -> None:
             id="table-row-short",
         ),
         pytest.param(
+            _changed(
+                "[defaults]",
+                'specific_wear_rate_mm3_n_m = { value = 1e-8, provenance = "assumed", '
+                'source = "x" }\n\n[defaults]',
+            ),
+            "X10.variants.bronze",
+            "allowed_wear_to_flank_height",
+            "needs both the wear rate and the allowed wear",
+            id="wear-rate-without-allowed-wear",
+        ),
+        pytest.param(
+            _changed(
+                "[defaults]",
+                'specific_wear_rate_mm3_n_m = { value = 1e-8, provenance = "assumed", '
+                'source = "x" }\nallowed_wear_to_flank_height = { value = 1.5, '
+                'provenance = "assumed", source = "x" }\n\n[defaults]',
+            ),
+            "X10.variants.bronze",
+            "allowed_wear_to_flank_height",
+            "must be a fraction",
+            id="allowed-wear-above-one",
+        ),
+        pytest.param(
             _changed("range = [0.10, 0.16]", "range = [0.14, 0.16]"),
             "X10.variants.bronze",
             "friction_dynamic",

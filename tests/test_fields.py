@@ -23,6 +23,7 @@ from pydantic import BaseModel, ValidationError
 
 import app.schemas
 from app.catalog import Catalog
+from app.catalog.motors import library
 from app.core.model import Application
 from app.fields import BY_API, BY_PAGE, FIELDS, GROUPS, InputField
 from app.inputs import ApplicationIn
@@ -47,7 +48,9 @@ SHARE_LINK_NAMES = [
     "buckling_safety_factor", "torque_safety_factor", "self_locking_friction_factor",
     "max_torque", "brake_torque", "required_life_years", "positioning_tolerance", "rank_by",
     "advice", "limit", "family", "nut_material", "decel", "dwell", "motor_curve",
-    "motor_inertia", "motor_rms_torque",
+    "motor_inertia", "motor_rms_torque", "motor", "step_angle", "microsteps",
+    "max_step_rate", "motor_supply", "motor_phase_current", "motor_resistance",
+    "motor_inductance", "motor_holding_torque",
 ]  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")
@@ -91,7 +94,9 @@ def test_api_model_fields_are_the_tables() -> None:
 @pytest.mark.parametrize("field", [f for f in FIELDS if f.bounds], ids=lambda f: f.api)
 def test_bounds_are_enforced_by_the_api_model(field: InputField) -> None:
     low, high = field.bounds or (0.0, 0.0)
-    duty = {"stroke_mm": 100.0, "cycles_per_day": 10.0}
+    duty = {"stroke_mm": 100.0, "cycles_per_day": 10.0, "step_angle_deg": 1.8}
+    duty |= {"motor_supply_v": 400.0, "motor_phase_current_a": 1.0}
+    duty |= {"motor_resistance_ohm": 1.0, "motor_inductance_mh": 1.0}
     for value, valid in ((low, True), (high, True), (high * 2 + 1, False)):
         data = {**REQUIRED, **duty, field.api: value}
         try:
@@ -213,6 +218,8 @@ def _value(field: InputField) -> st.SearchStrategy[Any]:
         return st.booleans()
     if field.kind == "choice":
         return st.sampled_from([choice.value for choice in field.choices])
+    if field.api == "motor":
+        return st.none() | st.sampled_from(sorted(library()))
     if field.kind == "text":
         return st.none() | st.sampled_from(["bronze", "acetal", "PTFE-filled polymer"])
     if field.kind == "list":
@@ -240,6 +247,13 @@ def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
     for field in FIELDS:
         if any(data[name] is None for name in field.needs):
             data[field.api] = None
+    if data["step_angle_deg"] is None and data["motor"] is None:
+        data["max_step_rate_hz"] = None  # a step rate limit needs a step angle
+    if data["motor_holding_torque_nm"] is not None:
+        # the drive must exceed the winding's I R (else a 422 on the holding torque)
+        resistive_v = data["motor_phase_current_a"] * data["motor_resistance_ohm"]
+        if data["motor_supply_v"] <= resistive_v:
+            data["motor_holding_torque_nm"] = None
     return ApplicationIn.model_validate(data)
 
 

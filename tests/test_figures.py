@@ -261,3 +261,45 @@ def test_motor_and_move_charts_follow_the_segments(catalog: Catalog) -> None:
 
 def test_no_stroke_no_move_charts(result: SelectOut) -> None:
     assert not {"motor", "move"} & set(result_figures(result, METRIC))
+
+
+def test_life_chart_falls_as_one_over_thrust(catalog: Catalog) -> None:
+    """With a duty, each wear-rated top screw's life in years against thrust: Archard's
+    life is inversely proportional to the thrust, so thrust x life is the same all along
+    the line, and at the axis's thrust it is the wear check's number; the band spans the
+    wear rate's range (3.3e-7 to 3e-6 against 1e-6 for acetal: 1/3 to 3.03 times)."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 200, "speed_mm_s": 20, "length_mm": 500, "stroke_mm": 200,
+         "cycles_per_day": 100, "required_life_years": 1, "family": ["TR-C45"],
+         "nut_material": "acetal"}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    figures = result_figures(result, METRIC, catalog)
+    life = figures["life"]
+    go.Figure(life)
+    json.dumps(life, allow_nan=False)
+    low, high, line = life["data"][:3]
+    top = result.candidates[0]
+    assert line["name"] == top.id
+    products = [x * y for x, y in zip(line["x"], line["y"], strict=True)]
+    assert products == pytest.approx([products[0]] * len(products))
+    wear = next(c for c in top.checks or [] if c.name == "wear_life")
+    middle = len(line["x"]) // 2
+    assert line["x"][middle] == pytest.approx(top.axial_load_n)
+    assert line["y"][middle] == pytest.approx(wear.limit)
+    assert high["y"][middle] / line["y"][middle] == pytest.approx(1e-6 / 3.3e-7)
+    assert low["y"][middle] / line["y"][middle] == pytest.approx(1 / 3)
+    assert life["layout"]["yaxis"]["title"]["text"] == "Wear life [years]"
+
+
+def test_a_library_motor_draws_its_model_curve(catalog: Catalog) -> None:
+    """The motor chart draws the library motor's pull-out curve from the stepper model:
+    the 17HS19-2004S1 holds 0.59 N m to its 530 rpm corner on 24 V."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200,
+         "motor": "17hs19-2004s1"}
+    )  # fmt: skip
+    figures = result_figures(run_selection(inputs, catalog), METRIC, catalog)
+    curve = figures["motor"]["data"][0]
+    assert curve["x"][:2] == pytest.approx([0.0, 530.0])
+    assert curve["y"][:2] == pytest.approx([0.59, 0.59])

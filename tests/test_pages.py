@@ -97,6 +97,7 @@ def test_full_page_renders_results_table_charts_and_counts(client: TestClient) -
         "fig-pv",
         "fig-torque",
         "fig-lead_sweep",
+        "fig-life",
     ]
     for script in charts:
         assert page.select_one(f"#{script['data-chart']}.chart")

@@ -61,6 +61,7 @@ NIST = {
     "MPa": (1e6, True),
     "GPa": (1e9, True),
     "km": (1e3, True),
+    "mm³/(N m)": (1e-9, True),
 }
 
 
@@ -127,6 +128,8 @@ NAME_SUFFIX = {
     "years": "_years",
     "s": "_s",
     "kg m²": "_kg_m2",
+    "Hz": "_hz",
+    "mH": "_mh",
 }
 
 

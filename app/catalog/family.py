@@ -34,6 +34,8 @@ VARIANT_FIELDS = frozenset(
         "bearing_pv_limit_mpa_m_s",
         "max_sliding_speed_m_s",
         "temperature_range_c",
+        "specific_wear_rate_mm3_n_m",
+        "allowed_wear_to_flank_height",
     }
 )
 TRAVERSE_RULE = "traverse_speed"

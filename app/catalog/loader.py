@@ -23,6 +23,7 @@ from app.catalog.files import (
 )
 from app.catalog.groups import Groups, read_group
 from app.catalog.models import Catalog, Material, Series, Sourced
+from app.catalog.motors import MOTOR_FILE, library
 from app.catalog.series import build_series
 from app.core.index import CatalogIndex
 from app.server.paths import resource_dir
@@ -30,7 +31,13 @@ from app.units import to_si
 
 USER = "user"
 MATERIAL_FIELDS = frozenset(
-    {"youngs_modulus_gpa", "density_kg_m3", "expansion_per_c", "yield_strength_mpa"}
+    {
+        "youngs_modulus_gpa",
+        "density_kg_m3",
+        "expansion_per_c",
+        "yield_strength_mpa",
+        "thermal_conductivity_w_m_k",
+    }
 )
 
 
@@ -52,6 +59,15 @@ def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
                 entry.prov("yield_strength_mpa"),
             )
             if "yield_strength_mpa" in table
+            else None
+        ),
+        (
+            Sourced(
+                entry.number("thermal_conductivity_w_m_k"),
+                "W/(m K)",
+                entry.prov("thermal_conductivity_w_m_k"),
+            )
+            if "thermal_conductivity_w_m_k" in table
             else None
         ),
     )
@@ -129,7 +145,9 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         _file_default(read_file(path, digest))
         for directory in catalog_dirs([resource_dir("catalog"), *map(Path, extra_dirs)])
         for path in toml_files(directory)
+        if path.name != MOTOR_FILE
     ]
+    library()  # the motor library is validated with the catalog
     group_files = [s for s in sources if s.name == GROUP_FILE]
     groups = Groups([read_group(s) for s in group_files])
     materials = _materials(sources)

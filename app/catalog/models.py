@@ -25,6 +25,7 @@ class Material:
     density_kg_m3: Sourced
     expansion_per_k: Sourced
     yield_strength_pa: Sourced | None = None
+    thermal_conductivity_w_m_k: Sourced | None = None
 
 
 @dataclass(frozen=True, slots=True)

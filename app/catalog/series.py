@@ -74,12 +74,19 @@ RANGED_VARIANT = {
     "bearing_pv_limit_mpa_m_s": ("nut_pv_limit_pa_m_s", "MPa m/s"),
     "max_sliding_speed_m_s": ("max_sliding_speed_m_s", "m/s"),
     "max_length_mm": ("max_length_m", "mm"),
+    "specific_wear_rate_mm3_n_m": ("wear_rate_m2_n", "mm³/(N m)"),
+    "allowed_wear_to_flank_height": ("allowed_wear_fraction", ""),
 }
 #: Variant values that rate the nut by its contact pressure (they need a nut length).
 BEARING_VALUES = {
     "max_pressure": ("max_pressure_mpa", "MPa"),
     "bearing_pv_limit": ("bearing_pv_limit_mpa_m_s", "MPa m/s"),
     "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
+}
+#: Variant values that rate the nut's wear life (Archard's law, both needed).
+WEAR_VALUES = {
+    "wear_rate": ("specific_wear_rate_mm3_n_m", "mm³/(N m)"),
+    "allowed_wear": ("allowed_wear_to_flank_height", ""),
 }
 Ends = Mapping[str, tuple[Mapping[str, Any], Mapping[str, Any]]]
 #: What a candidate's provenance says for a nut rating or thread value its family gives
@@ -95,6 +102,9 @@ NOT_GIVEN = {
         ("pitch", "thread pitch"),
         ("pv_limit", "three-thread PV limit"),
         ("design_load", "design load"),
+        ("thermal_conductivity", "screw thermal conductivity"),
+        ("wear_rate", "specific wear rate"),
+        ("allowed_wear", "allowed wear depth"),
     )
 }
 UNRATED_LIFE = Provenance(
@@ -268,6 +278,11 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
         "leads": _leads(entry, od.value),
         **thread,
         **({"yield_strength": material.yield_strength_pa} if material.yield_strength_pa else {}),
+        **(
+            {"thermal_conductivity": material.thermal_conductivity_w_m_k}
+            if material.thermal_conductivity_w_m_k
+            else {}
+        ),
     }
 
 
@@ -350,6 +365,12 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
         t_range = v.range("temperature_range_c", positive=False)
         fields["temperature_range"] = Sourced(t_range, "C", v.prov("temperature_range_c"))
     fields.update(_optional(v, BEARING_VALUES))
+    fields.update(_optional(v, WEAR_VALUES))
+    if len(WEAR_VALUES.keys() & fields.keys()) == 1:
+        missing = next(key for name, (key, _) in WEAR_VALUES.items() if name not in fields)
+        raise v.fail(missing, "a wear rating needs both the wear rate and the allowed wear")
+    if fields.get("allowed_wear") and not 0.0 < fields["allowed_wear"].value <= 1.0:
+        raise v.fail("allowed_wear_to_flank_height", "must be a fraction, above 0 and at most 1")
     return fields
 
 
@@ -448,6 +469,8 @@ def _nut_spec(
         "max_pressure_pa": _value_or_none(variant.fields, "max_pressure"),
         "nut_pv_limit_pa_m_s": _value_or_none(variant.fields, "bearing_pv_limit"),
         "max_sliding_speed_m_s": _value_or_none(variant.fields, "max_sliding_speed"),
+        "wear_rate_m2_n": _value_or_none(variant.fields, "wear_rate"),
+        "allowed_wear_fraction": _value_or_none(variant.fields, "allowed_wear"),
         "assumption_ends": _ends(context.ends, variant),
     }
 
@@ -499,6 +522,7 @@ def _screw(
         temperature_max_c=t_max,
         oil_compatible=variant.fields["oil_compatible"].value,
         yield_strength_pa=_value_or_none(fields, "yield_strength"),
+        thermal_conductivity_w_m_k=_value_or_none(fields, "thermal_conductivity"),
         outgassing=_value_or_none(fields, "outgassing") or (),
         material_name=fields["screw_material"].value,
         nut_material=_field(fields, variant, "nut_material"),

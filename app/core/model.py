@@ -70,6 +70,20 @@ class Application:
     motor_inertia_kg_m2: float | None = None
     motor_curve: tuple[tuple[float, float], ...] = ()
     motor_rms_torque_nm: float | None = None
+    #: The stepper's controller: full step angle [deg] (None: no controller checks),
+    #: microsteps per full step, and the controller's highest step rate [1/s].
+    step_angle_deg: float | None = None
+    microsteps: int = 1
+    max_step_rate_hz: float | None = None
+    #: A library motor's id (its curve and inertia arrive in the fields above), and a
+    #: stepper's datasheet values for the pull-out model: drive voltage [V], phase
+    #: current [A], winding resistance [ohm] and inductance [H], holding torque [N m].
+    motor: str | None = None
+    motor_supply_v: float | None = None
+    motor_phase_current_a: float | None = None
+    motor_resistance_ohm: float | None = None
+    motor_inductance_h: float | None = None
+    motor_holding_torque_nm: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -121,6 +135,8 @@ class ScrewSpec:
     traverse_bands: tuple[tuple[float, float, float], ...] = ()
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
     yield_strength_pa: float | None = None
+    #: The screw material's thermal conductivity [W/(m K)] (None: no heat balance).
+    thermal_conductivity_w_m_k: float | None = None
     #: Thread pitch P, the standard's pitch diameter d2 and engaged flank height H1 [m],
     #: and the nut length whose engaged turns carry the load (None: not given).
     pitch_m: float | None = None
@@ -134,6 +150,10 @@ class ScrewSpec:
     max_pressure_pa: float | None = None
     nut_pv_limit_pa_m_s: float | None = None
     max_sliding_speed_m_s: float | None = None
+    #: The nut's specific wear rate against the screw [m^2/N = m^3/(N m)] and the wear
+    #: depth it may lose, as a fraction of its flank height (None: no wear rating).
+    wear_rate_m2_n: float | None = None
+    allowed_wear_fraction: float | None = None
     #: For each catalog value given with a range: the ScrewSpec fields at its low and at
     #: its high end (derived values recomputed), for re-screening at either end.
     assumption_ends: Mapping[str, tuple[Mapping[str, float], Mapping[str, float]]] = field(

@@ -30,6 +30,11 @@ Quantity = Literal[
     "years",  # year
     "temperature",  # deg C
     "factor",  # dimensionless
+    "frequency",  # 1/s (step pulses per second)
+    "inductance",  # H
+    "power",  # W
+    "conductivity",  # W/(m K)
+    "wear_rate",  # m^2/N: wear volume per load and sliding distance, m^3/(N m)
 ]
 
 

@@ -21,9 +21,12 @@ from app.core.formulas import (
     critical_speed,
     efficiency,
     geometry,
+    heat,
     life,
     pv,
+    stepping,
     torque,
+    wear,
 )
 from app.core.formulas.declare import formula
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, Segment
@@ -95,6 +98,14 @@ class Quantities(Generic[V]):
     nut_allowed_load_n: V
     life_years_min: V
     life_years_max: V
+    #: Nut wear (Archard): nut travel until the allowed wear depth [m] and that travel in
+    #: years of the duty (NaN: no wear rating, no thrust, or no duty)
+    wear_travel_m: V
+    wear_life_years: V
+    #: Heat: the thread's friction power, the cycle's mean [W] (at the top speed without
+    #: a stroke), and the nut's steady rise over the ambient [K] (NaN: no heat balance)
+    friction_power_w: V
+    nut_temperature_rise_k: V
     lead_error_m: V
     thermal_growth_m: V
     holding_seed_nm: V
@@ -121,6 +132,10 @@ class Quantities(Generic[V]):
     #: the acceleration at which the worst segment fits the curve when that segment is an
     #: acceleration (NaN otherwise, or when no acceleration fits)
     motor_fitting_accel_m_s2: V
+    #: The stepper's controller: step pulses per second at the peak rpm and the travel
+    #: of one pulse [m] (NaN without a step angle).
+    step_rate_hz: V
+    step_resolution_m: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -238,6 +253,37 @@ def _flanks(t: CandidateTable, rpm: Array) -> dict[str, Any]:
     }
 
 
+def _wear(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+    """Nut travel until its flanks have worn the allowed depth (Archard's law at the
+    running thrust): over the engaged flanks and flank height of a standard thread, else
+    over the seed's three threads and thread depth."""
+    flanks = ~np.isnan(t.bearing_area_m2)
+    area = np.where(flanks, t.bearing_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
+    height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
+    helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
+    with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
+        sliding = wear.wear_life_sliding(
+            t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
+        )
+    travel = _finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
+    rated = bool(app.stroke_m and app.cycles_per_day)
+    years = life.life_years(travel, app.stroke_m, app.cycles_per_day) if rated else travel * np.nan
+    return {"wear_travel_m": travel, "wear_life_years": years}
+
+
+def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+    """Friction power at the cycle's mean speed and the nut's steady temperature rise:
+    the screw conducts the heat away both ways as a fin, the nut's surface convects it."""
+    p = motion.move_profile(app)
+    mean_speed = app.speed_m_s if p is None else 2.0 * (app.stroke_m or 0.0) / p.cycle_time_s
+    power = _finite(heat.friction_power(force_n, mean_speed, t.efficiency))
+    h = heat.FREE_CONVECTION_W_M2_K
+    fin = heat.fin_conductance(t.root_diameter_m, t.thermal_conductivity_w_m_k, h)
+    nut_d = heat.NUT_OUTER_TO_D * t.outer_diameter_m
+    rise = heat.temperature_rise(power, fin, t.nut_length_m, nut_d, h)
+    return {"friction_power_w": power, "nut_temperature_rise_k": rise}
+
+
 def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
     """Rated life in years for the duty, lead error and thermal growth over the stroke."""
     nan = np.full(len(t), np.nan)
@@ -301,8 +347,23 @@ def _values(
         **_nut(app, t, force_n, rpm),
         **_flanks(t, rpm),
         **_duty(app, t),
+        **_wear(app, t, force_n),
+        **_heat(app, t, force_n),
         **(holding := _holding(app, t, force_n)),
-        **_motor(app, t, rpm, holding["brake_nm"], torques),
+        **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),
+        **_controller(app, t, motor["peak_rpm"]),
+    }
+
+
+def _controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str, Any]:
+    """The step rate the peak speed needs and the travel of one step pulse."""
+    if app.step_angle_deg is None:
+        nan = np.full(len(t), np.nan)
+        return {"step_rate_hz": nan, "step_resolution_m": nan}
+    per_rev = stepping.steps_per_rev(app.step_angle_deg, app.microsteps)
+    return {
+        "step_rate_hz": stepping.step_rate(peak_rpm, per_rev),
+        "step_resolution_m": 1.0 / stepping.steps_per_metre(per_rev, t.lead_m),
     }
 
 

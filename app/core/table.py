@@ -44,6 +44,7 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
     of one turn at d2."""
     names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
     names += ("max_pressure_pa", "nut_pv_limit_pa_m_s", "max_sliding_speed_m_s")
+    names += ("wear_rate_m2_n", "allowed_wear_fraction")
     out = {name: column(list(map(attrgetter(name), screws))) for name in names}
     d2 = out["flank_pitch_diameter_m"]
     area = bearing.engaged_flank_area(
@@ -135,6 +136,7 @@ class CandidateTable:
     #: the torque of a segment where the load drives
     backdrive_efficiency_signed: Array
     yield_strength_pa: Array
+    thermal_conductivity_w_m_k: Array
     pitch_m: Array
     flank_pitch_diameter_m: Array
     flank_height_m: Array
@@ -142,6 +144,8 @@ class CandidateTable:
     max_pressure_pa: Array
     nut_pv_limit_pa_m_s: Array
     max_sliding_speed_m_s: Array
+    wear_rate_m2_n: Array
+    allowed_wear_fraction: Array
     bearing_area_m2: Array
     flank_helix_travel_m: Array
 
@@ -226,6 +230,7 @@ class CandidateTable:
             backdrive_efficiency_running=efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
             backdrive_efficiency_signed=profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
             yield_strength_pa=col("yield_strength_pa"),
+            thermal_conductivity_w_m_k=col("thermal_conductivity_w_m_k"),
             **_nut_columns(screws, lead),
         )
 

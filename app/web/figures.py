@@ -18,6 +18,7 @@ from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
 from app.web.chart_style import layout as _layout
 from app.web.chart_style import rounded as _round
+from app.web.life_figures import life_figure
 from app.web.motion_figures import motor_figure, move_figure
 
 TORQUE_PARTS = (("inertia_nm", "Inertia", "#56B4E9"), ("drag_nm", "Drag", "#E69F00"))
@@ -29,7 +30,7 @@ PV_SPAN = 10.0
 TOP = 5
 #: chart key -> the check whose failures it explains.
 CHART_CHECKS = {"critical_speed": "critical_speed", "pv": "pv", "torque": "torque"}
-CHART_KEYS = ("critical_speed", "pv", "torque", "lead_sweep", "motor", "move")
+CHART_KEYS = ("critical_speed", "pv", "torque", "lead_sweep", "motor", "move", "life")
 
 
 def _span(centre: float, factor: float) -> list[float]:
@@ -410,8 +411,8 @@ def result_figures(
     result: SelectOut | PageSelectionOut, units: dict[str, str], catalog: Catalog | None = None
 ) -> dict[str, dict[str, Any]]:
     """The charts of a result, keyed 'critical_speed', 'pv', 'torque' and, given the
-    catalog, 'lead_sweep'. When nothing passes, the chart of the check that excludes the
-    most screws comes first."""
+    catalog, 'lead_sweep' and 'life' (wear-rated nuts). When nothing passes, the chart of
+    the check that excludes the most screws comes first."""
     candidates, passing = chart_candidates(result)
     if not candidates:
         return {}
@@ -432,6 +433,9 @@ def result_figures(
     )
     if len(sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(sweep, top, d)
+    life = life_figure(candidates, app, catalog, d) if catalog is not None else None
+    if life is not None:
+        figures["life"] = life
     if candidates[0].segments:
         if app.motor_curve:
             figures["motor"] = motor_figure(

@@ -37,6 +37,8 @@ APPS = {
         oil_present=True,
         require_anti_backlash=True,
         ambient_c=100.0,
+        step_angle_deg=1.8,
+        microsteps=4,
     ),
     "long-fast-fixed-free": light_app(length_m=3.0, speed_m_s=0.4, end_fixity="fixed-free"),
     # short, heavily loaded columns (Johnson's branch) and a brake holding a vertical load
@@ -56,6 +58,9 @@ APPS = {
         motor_curve=((0.0, 0.6), (1500.0, 0.4), (3000.0, 0.15)),
         motor_rms_torque_nm=0.2,
         torque_safety_factor=1.5,
+        step_angle_deg=0.9,
+        microsteps=16,
+        max_step_rate_hz=50_000.0,
     ),
 }
 FUNCTIONS: dict[str, Any] = {"pi": math.pi, "sqrt": math.sqrt, "cos": math.cos, "max": max}
@@ -184,7 +189,8 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     whose capacity is a catalog value names it (among the fields it reads); only the
     checks whose capacity is the user's own input leave it empty."""
     user_limits = {c.name for c in REGISTRY if not c.capacity_sources}
-    motor = {"motor_curve", "motor_rms", "motor_speed"}
-    assert user_limits == {"torque", "holding", "accuracy", *motor}
+    motor = {"motor_curve", "motor_rms", "motor_speed", "inertia_ratio"}
+    controller = {"step_rate", "step_resolution"}
+    assert user_limits == {"torque", "holding", "accuracy", *motor, *controller}
     for c in REGISTRY:
         assert set(c.capacity_sources) <= set(c.sources), c.name

@@ -124,10 +124,16 @@ def test_anti_backlash_requirement(catalog: Catalog) -> None:
     assert check(evaluate(app, catalog.by_id["ZBX8000-L10"]), "anti_backlash").passed
 
 
-def test_unrated_series_fails_a_required_life(b8000_l10: ScrewSpec) -> None:
+def test_unrated_screw_fails_a_required_life(b8000_l10: ScrewSpec) -> None:
+    """A screw with neither a rated travel nor a wear rate (the B8000 without its nut's
+    wear rating) fails a required life as unrated; the catalog's B8000 is judged by its
+    nut's wear life instead."""
     app = light_app(stroke_m=0.1, cycles_per_day=10.0, required_life_years=1.0)
-    c = check(evaluate(app, b8000_l10), "life")
+    unrated = replace(b8000_l10, wear_rate_m2_n=None, allowed_wear_fraction=None)
+    c = check(evaluate(app, unrated), "life")
     assert not c.passed and c.utilization is None
+    names = {c.name for c in evaluate(app, b8000_l10).checks}
+    assert "wear_life" in names and "life" not in names
 
 
 def test_life_check_uses_the_low_end_of_the_rated_range(zbx8000_l10: ScrewSpec) -> None:

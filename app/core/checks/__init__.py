@@ -14,18 +14,23 @@ from app.core.checks.buckling import ColumnBuckling
 from app.core.checks.critical_speed import CriticalSpeed
 from app.core.checks.design_load import DesignLoad
 from app.core.checks.holding import Holding
+from app.core.checks.inertia_ratio import InertiaRatio
 from app.core.checks.length import Length
 from app.core.checks.life import Life
 from app.core.checks.max_sliding_speed import MaxSlidingSpeed
 from app.core.checks.motor_curve import MotorCurve
 from app.core.checks.motor_rms import MotorRms
 from app.core.checks.motor_speed import MotorSpeed
+from app.core.checks.nut_heat import NutHeat
 from app.core.checks.oil import OilCompatibility
 from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
+from app.core.checks.step_rate import StepRate
+from app.core.checks.step_resolution import StepResolution
 from app.core.checks.temperature import Temperature
 from app.core.checks.torque import DriveTorque
 from app.core.checks.traverse_speed import TraverseSpeed
+from app.core.checks.wear_life import WearLife
 
 #: Every check, in the order results list them: the motor's, the screw's, the nut's,
 #: the catalog's limits, then back-driving and the advice.
@@ -34,6 +39,8 @@ REGISTRY: tuple[Check, ...] = (
     MotorCurve(),
     MotorRms(),
     MotorSpeed(),
+    InertiaRatio(),
+    StepRate(),
     CriticalSpeed(),
     ColumnBuckling(),
     RootStress(),
@@ -45,11 +52,14 @@ REGISTRY: tuple[Check, ...] = (
     Length(),
     OilCompatibility(),
     Temperature(),
+    NutHeat(),
     BackDriving(),
     Holding(),
     AntiBacklash(),
     Life(),
+    WearLife(),
     Accuracy(),
+    StepResolution(),
 )
 BY_NAME: dict[str, Check] = {c.name: c for c in REGISTRY}
 

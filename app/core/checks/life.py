@@ -12,7 +12,6 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    everywhere,
     same,
 )
 from app.core.phrase import Amount, Phrase
@@ -23,7 +22,8 @@ class Life(Check):
     label = "Life"
     description = (
         "The rated travel of the nut (low end of its range) in years of the given stroke "
-        "and cycles per day, against the life required."
+        "and cycles per day, against the life required; a nut rated by its wear rate "
+        "instead is judged by the nut wear life."
     )
     quantity = "years"
     formula = "life_required = Y_req; life = travel_min / (2 * stroke * cycles * 365)"
@@ -37,8 +37,9 @@ class Life(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         unrated = np.isnan(q.life_years_min)
+        worn = ~np.isnan(t.wear_rate_m2_n)  # the wear-life check judges these
         required = same(t, app.required_life_years)
-        return Measure(everywhere(t), required, q.life_years_min, flagged=unrated)
+        return Measure(~(unrated & worn), required, q.life_years_min, flagged=unrated & ~worn)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

@@ -1,0 +1,74 @@
+"""The load's inertia at the motor against the rotor's: a stepper keeps in step, and a
+servo stays stable, only while the ratio is moderate (advice)."""
+
+import numpy as np
+
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    everywhere,
+    same,
+)
+from app.core.phrase import Amount, Phrase
+
+#: Load-to-rotor inertia ratio a stepping motor is sized for (Oriental Motor's guide).
+MAX_INERTIA_RATIO = 10.0
+
+
+class InertiaRatio(Check):
+    name = "inertia_ratio"
+    label = "Load-to-rotor inertia ratio"
+    kind = "advice"
+    description = (
+        "The screw's inertia and the moving mass reflected to the screw, over the motor's "
+        "rotor inertia, against 10: above it a stepper loses steps in fast starts and "
+        "stops and a servo needs careful tuning."
+    )
+    quantity = "factor"
+    formula = "r = (J_screw + m * (lead / (2 * pi))^2) / J_rotor; r_max = 10"
+    source = "Oriental Motor, Technical Reference, Motor Sizing Calculations (inertia ratio)"
+    sources = ("inertia_per_length",)
+
+    def applies(self, app: Application) -> bool:
+        return bool(app.motor_inertia_kg_m2)
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        ratio = q.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
+        return Measure(everywhere(t), ratio, same(t, MAX_INERTIA_RATIO))
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "J_screw": t.inertia_kg_m2_per_m * app.length_m,
+            "m": app.moving_mass_kg,
+            "lead": t.lead_m,
+            "J_rotor": app.motor_inertia_kg_m2,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "within" if passed else "above"
+        return Phrase(
+            "The load's {load} at the motor is {ratio} times the rotor's {rotor}, "
+            + verb
+            + " the guide of {limit}.",
+            {
+                "load": Amount(r.inertia_kg_m2, "inertia"),
+                "ratio": f"{r.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan):.3g}",
+                "rotor": Amount(app.motor_inertia_kg_m2 or 0.0, "inertia"),
+                "limit": f"{MAX_INERTIA_RATIO:g}",
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        return Phrase(
+            "A motor with a larger rotor, a shorter lead (the mass reflects with the lead "
+            "squared), or a lighter moving mass."
+        )

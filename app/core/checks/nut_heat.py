@@ -1,0 +1,95 @@
+"""The nut's temperature from its friction heat against the nut's rated maximum: a heat
+balance of the friction power with the screw (a fin both ways) and the nut's surface."""
+
+import numpy as np
+
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    where_given,
+)
+from app.core.formulas import heat
+from app.core.phrase import Amount, Phrase
+
+
+def headroom(app: Application, t: CandidateTable) -> Array:
+    """The nut's rated maximum less the ambient [K]; NaN where there is none (no rating,
+    or the ambient already at or above it: the temperature check says so)."""
+    room = t.temperature_max_c - app.ambient_c
+    return np.where(room > 0.0, room, np.nan)
+
+
+class NutHeat(Check):
+    name = "nut_heat"
+    label = "Nut heat"
+    description = (
+        "With a stroke (the duty: moves and dwells), the thread's friction power at the "
+        "cycle's mean speed, F v (1 / eta - 1), heats "
+        "the nut until the screw (conducting both ways, a fin of its root diameter and "
+        "material) and the nut's surface (free convection, 10 W/(m^2 K)) carry it away: "
+        "the nut's rise over the ambient against the room to its rated maximum "
+        "temperature."
+    )
+    quantity = "temperature"
+    formula = (
+        "dT = F * v * (1 / eta - 1) / (2 * sqrt(h * pi * d_3 * k * pi * d_3^2 / 4) + h * pi * "
+        "D_nut * L_nut); dT_allowed = T_max - T_ambient"
+    )
+    source = (
+        "Incropera, Fundamentals of Heat and Mass Transfer, sec. 3.6 (infinite fin) and "
+        "Table 1.1 (free convection); Shigley sec. 8-2 (thread efficiency)"
+    )
+    sources = ("thermal_conductivity", "friction_dynamic", "nut_length", "temperature_range")
+    capacity_sources = ("temperature_range",)
+
+    def applies(self, app: Application) -> bool:
+        # the heat depends on the duty: without a stroke (and its dwells) there is none
+        return bool(app.stroke_m)
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        room = headroom(app, t)
+        applicable = where_given(q.nut_temperature_rise_k) & where_given(room)
+        return Measure(applicable, q.nut_temperature_rise_k, room)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "F": q.force_n,
+            "v": q.friction_power_w / q.force_n / (1.0 / t.efficiency - 1.0),
+            "eta": t.efficiency,
+            "h": heat.FREE_CONVECTION_W_M2_K,
+            "d_3": t.root_diameter_m,
+            "k": t.thermal_conductivity_w_m_k,
+            "D_nut": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
+            "L_nut": t.nut_length_m,
+            "T_max": t.temperature_max_c,
+            "T_ambient": app.ambient_c,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "within" if passed else "above"
+        return Phrase(
+            "Friction turns {power} into heat: the nut runs {rise} above the ambient, at "
+            "{nut}, " + verb + " its rated {limit}.",
+            {
+                "power": Amount(r.friction_power_w, "power"),
+                "rise": Amount(r.nut_temperature_rise_k, "temperature"),
+                "nut": Amount(app.ambient_c + r.nut_temperature_rise_k, "temperature"),
+                "limit": Amount(s.temperature_max_c or 0.0, "temperature"),
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        return Phrase(
+            "Less heat or more cooling: longer dwells or a lower speed, a steeper lead "
+            "(higher efficiency), a lubricated or lower-friction nut, a larger screw or a "
+            "nut rated hotter."
+        )

@@ -1,0 +1,76 @@
+"""The step pulse rate the top speed needs against the controller's maximum."""
+
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    everywhere,
+    same,
+)
+from app.core.formulas import geometry, stepping
+from app.core.phrase import Amount, Phrase
+
+
+def _steps_per_rev(app: Application) -> float:
+    return stepping.steps_per_rev(app.step_angle_deg or 0.0, app.microsteps)
+
+
+class StepRate(Check):
+    name = "step_rate"
+    label = "Controller step rate"
+    description = (
+        "The step pulses per second the peak screw speed needs (360 / step angle x "
+        "microsteps per turn) against the controller's maximum step rate."
+    )
+    quantity = "frequency"
+    formula = "f = n_peak / 60 * 360 / step_angle * microsteps; f_max = f_ctrl"
+    source = "Prusa calculators (steps per mm); kinematics"
+    sources = ()
+
+    def applies(self, app: Application) -> bool:
+        return app.step_angle_deg is not None and app.max_step_rate_hz is not None
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(everywhere(t), q.step_rate_hz, same(t, app.max_step_rate_hz))
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {
+            "n_peak": q.peak_rpm,
+            "step_angle": app.step_angle_deg,
+            "microsteps": app.microsteps,
+            "f_ctrl": app.max_step_rate_hz,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "within" if passed else "above"
+        return Phrase(
+            "{steps} steps per turn at {rpm} need a step rate of {rate}, " + verb + " the "
+            "controller's {limit}.",
+            {
+                "steps": f"{_steps_per_rev(app):g}",
+                "rpm": Amount(r.peak_rpm, "rpm"),
+                "rate": Amount(r.step_rate_hz, "frequency"),
+                "limit": Amount(app.max_step_rate_hz or 0.0, "frequency"),
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        limit = app.max_step_rate_hz or 0.0
+        rpm = limit / _steps_per_rev(app) * stepping.SECONDS_PER_MINUTE
+        return Phrase(
+            "At a step rate of {limit} the screw turns at most {rpm} ({speed} on this "
+            "lead): fewer microsteps, a longer lead or a lower speed.",
+            {
+                "limit": Amount(limit, "frequency"),
+                "rpm": Amount(rpm, "rpm"),
+                "speed": Amount(geometry.linear_speed(rpm, s.lead_m), "speed"),
+            },
+        )

@@ -1,0 +1,110 @@
+"""Wear life of a sliding nut (Archard's law), in years of the user's duty, against the
+life required; shown as a band over the published scatter of the wear rate."""
+
+import numpy as np
+
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    load_input,
+    same,
+    where_given,
+)
+from app.core.phrase import Amount, Phrase
+
+#: The catalog's name of the ranged wear rate (its ends give the life band).
+WEAR_RATE = "specific_wear_rate_mm3_n_m"
+
+
+def life_band(s: ScrewSpec) -> tuple[float, float]:
+    """The life at the high and at the low end of the wear rate's range, as shares of the
+    nominal life (inversely proportional to the rate); (1, 1) without a range."""
+    ends = s.assumption_ends.get(WEAR_RATE)
+    nominal = s.wear_rate_m2_n
+    if ends is None or nominal is None:
+        return 1.0, 1.0
+    low_rate, high_rate = (end["wear_rate_m2_n"] for end in ends)
+    return nominal / high_rate, nominal / low_rate
+
+
+class WearLife(Check):
+    name = "wear_life"
+    label = "Nut wear life"
+    description = (
+        "Archard's law: the running thrust over the nut's loaded flanks wears them by the "
+        "nut material's specific wear rate per metre slid; the nut travel until the wear "
+        "reaches the allowed fraction of the flank height, in years of the given stroke "
+        "and cycles per day, against the life required. Published wear rates scatter "
+        "2-3:1, so the life is shown as a band."
+    )
+    quantity = "years"
+    formula = "Y = Y_req; Y_wear = f_w * H / (k * p) / (helix / lead) / (2 * stroke * cycles * 365)"
+    source = (
+        "Archard's law h = k p s; Neale, Tribology Handbook A5 (wear depth rate K P V); "
+        "wear rates by nut material (catalog)"
+    )
+    sources = ("wear_rate", "allowed_wear", "nut_length", "pitch")
+    capacity_sources = ("wear_rate", "allowed_wear", "nut_length")
+
+    def applies(self, app: Application) -> bool:
+        return bool(app.required_life_years is not None and app.stroke_m and app.cycles_per_day)
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        required = same(t, app.required_life_years)
+        return Measure(where_given(q.wear_life_years), required, q.wear_life_years)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        flanks = ~np.isnan(t.bearing_area_m2)
+        return {
+            "Y_req": app.required_life_years,
+            "f_w": t.allowed_wear_fraction,
+            "H": np.where(flanks, t.flank_height_m, t.thread_depth_m),
+            "k": t.wear_rate_m2_n,
+            "p": q.force_n / np.where(flanks, t.bearing_area_m2, q.contact_area_m2),
+            "helix": np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m),
+            "lead": t.lead_m,
+            "stroke": app.stroke_m,
+            "cycles": app.cycles_per_day,
+        }
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        low_m, high_m = (r.wear_travel_m * share for share in life_band(s))
+        cycle_m = 2.0 * (app.stroke_m or 0.0)
+        verb = "meets" if passed else "falls short of"
+        return Phrase(
+            "Nut wear life {travel} of travel ({low} to {high} over the wear rate's "
+            "scatter), {cycles} cycles: {years}, which " + verb + " the {required} required.",
+            {
+                "travel": Amount(r.wear_travel_m, "length"),
+                "low": Amount(low_m, "length"),
+                "high": Amount(high_m, "length"),
+                "cycles": f"{r.wear_travel_m / cycle_m:.3g}",
+                "years": Amount(r.wear_life_years, "years"),
+                "required": Amount(app.required_life_years or 0.0, "years"),
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        return Phrase(
+            "Wear falls with the flank pressure and the sliding per metre: a longer nut, a "
+            "larger size, a longer lead or a nut material that wears less (bronze, oiled); "
+            "or a lighter load, a shorter stroke or fewer cycles."
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float] | None:
+        # the life is inversely proportional to the thrust on the flanks
+        years = app.required_life_years
+        if not years or not np.isfinite(r.wear_life_years):
+            return None
+        return {"load_n": load_input(app, r.force_n * r.wear_life_years / years)}

@@ -1,0 +1,75 @@
+"""Wear life of a sliding nut: Archard's law over the engaged flanks [1, 2].
+
+Steady sliding wear removes a volume proportional to the load and the sliding distance,
+V = k F s, with k the specific wear rate of the pair [m^3/(N m) = m^2/N]. Spread over the
+loaded flank area A, the depth worn is h = k p s with p = F / A: the "depth per unit time
+= K P V" of dry rubbing bearings [1] (the PV form of the same law). A nut is worn out
+when h reaches the wear it may lose, a fraction of its flank height. Published wear rates
+of one material pair scatter 2-3:1 [1, 2], so a life is a band, not a number.
+
+References
+----------
+1. M. J. Neale (ed.), The Tribology Handbook, 2nd ed., section A5 "Dry rubbing
+   bearings": steady-state wear depth rate = K P V; order-of-magnitude wear rates of dry
+   bearing material groups against smooth mild steel.
+2. RTP Company, "Wear factor and friction data" (ASTM D3702 thrust-washer test): wear
+   volume W = K F V T, K given in 1e-10 in^3 min/(ft lbf h) and in 1e-8 mm^3/(N m).
+"""
+
+from app.core.formulas.declare import formula
+
+
+@formula("s_per_travel = sqrt(lead^2 + (pi d_2)^2) / lead", "helix geometry")
+def sliding_per_travel(helix_travel_m: float, lead_m: float) -> float:
+    """Flank sliding distance per metre of nut travel [m/m]: one turn of the screw slides
+    the flanks one helix turn, sqrt(lead^2 + (pi d2)^2), and moves the nut one lead.
+
+    For a one-start screw (lead = P) this is pi d2 / P per metre, near enough: a
+    Tr8x8(P2) four-start screw slides a quarter as far per metre as a Tr8x2.
+
+    >>> round(sliding_per_travel(0.0226, 0.002), 2)
+    11.3
+    """
+    return helix_travel_m / lead_m
+
+
+@formula("h = k p s", "Archard's law; Neale, Tribology Handbook A5 (depth rate = K P V)")
+def wear_depth(wear_rate_m2_n: float, pressure_pa: float, sliding_m: float) -> float:
+    """Depth worn off the loaded flanks [m] = k [m^2/N] x p [Pa] x s [m].
+
+    Valid in steady mild wear, below the material's PV limit (above it wear turns severe
+    and the rate jumps); running-in wear is not included.
+    Source: Archard's law V = k F s over the contact area; Neale [1] A5.
+
+    RTP's ASTM D3702 test in its metric unit: K = 26e-8 mm^3/(N m) (unfilled POM) at
+    0.90 MPa for 1000 h at 0.25 m/s wears
+
+    >>> round(wear_depth(26e-8 * 1e-9, 0.90e6, 0.25 * 3600 * 1000) * 1e3, 3)
+    0.211
+
+    millimetres.
+    """
+    return wear_rate_m2_n * pressure_pa * sliding_m
+
+
+@formula("s_life = f_w H / (k p)", "Archard's law solved for the sliding distance")
+def wear_life_sliding(allowed_depth_m: float, wear_rate_m2_n: float, pressure_pa: float) -> float:
+    """Sliding distance [m] until the flanks have lost ``allowed_depth_m`` [m]: the
+    inverse of ``wear_depth``, s = h / (k p) with k [m^2/N] and p [Pa].
+
+    Unbounded (inf) without pressure; the caller decides what that means.
+
+    >>> round(wear_life_sliding(0.25 * 1e-3, 1e-15, 1e6) / 1e3, 1)
+    250.0
+    """
+    return allowed_depth_m / (wear_rate_m2_n * pressure_pa)
+
+
+@formula("L_wear = s_life / s_per_travel", "helix geometry")
+def wear_life_travel(sliding_life_m: float, sliding_per_travel_m_m: float) -> float:
+    """Nut travel [m] in a sliding life [m]: divided by the sliding per metre of travel.
+
+    >>> wear_life_travel(250e3, 10.0)
+    25000.0
+    """
+    return sliding_life_m / sliding_per_travel_m_m
