@@ -6,25 +6,23 @@ from typing import Any
 from app.catalog import Catalog
 from app.construct import construct
 from app.core.evaluate import evaluate
-from app.core.selection import select, short_forms, with_robustness
+from app.core.selection import select, with_robustness
 from app.formulas import FORMULAS
 from app.present import (
-    candidate_out,
-    candidate_row,
+    candidate_view,
     counts_and_summary,
     custom_screw,
-    rejected_out,
     selection_out,
     selection_summary,
 )
 from app.schemas import (
     ApplicationIn,
+    CandidateOut,
     CatalogScrewIn,
     CustomScrewIn,
     EvaluateOut,
     FormulaOut,
     PageSelectionOut,
-    RejectedSummaryOut,
     SelectOut,
 )
 from app.units import DEFAULT_UNITS
@@ -65,26 +63,24 @@ def construct_select_out(
 
 def run_page_selection(
     inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
-) -> tuple[PageSelectionOut, list[RejectedSummaryOut]]:
-    """The results page's selection: the passing candidates as table rows (their checks'
-    sentences load with each row's detail) and the rejected ones in the compact form
-    (the list; each one's detail loads when opened), sentences in ``units``. The rejected
-    are in full too only when nothing passes: then the charts and the advice are about
-    them."""
+) -> tuple[PageSelectionOut, list[CandidateOut]]:
+    """The results page's selection: the passing candidates as table rows (the ``row``
+    view; their checks' sentences load with each row's detail) and the rejected ones in
+    the ``rejected`` view (the list; each one's detail loads when opened), sentences in
+    ``units``. The rejected are in full too only when nothing passes: then the charts and
+    the advice are about them."""
     selection = select(inputs.to_core(), catalog.table)
-    app = selection.application
     rejected = selection.rejected if not selection.passed else ()
     out = construct(
         PageSelectionOut,
         inputs=inputs,
-        candidates=[candidate_row(e, app.brake_torque_nm) for e in selection.candidates],
-        rejected=[candidate_out(e, app.vacuum, units, app.brake_torque_nm) for e in rejected],
+        candidates=[candidate_view(c, "row", units) for c in selection.candidates],
+        rejected=[candidate_view(c, "full", units) for c in rejected],
         **counts_and_summary(selection, units),
         catalog_version=catalog.version,
         share_url="/?" + share_query(inputs),
     )
-    _, compact = short_forms(selection)
-    return out, [rejected_out(b, units) for b in compact]
+    return out, [candidate_view(c, "rejected", units) for c in selection.rejected]
 
 
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
@@ -117,13 +113,13 @@ def run_evaluation(
     else:
         spec = custom_screw(screw, catalog.materials)
     app = inputs.to_core()
-    ev = evaluate(app, spec, reach)
-    if ev.passed:
-        (ev,) = with_robustness(app, [ev])
+    candidate = evaluate(app, spec, reach)
+    if candidate.passed:
+        (candidate,) = with_robustness(app, [candidate])
     return construct(
         EvaluateOut,
         inputs=inputs,
-        candidate=candidate_out(ev, app.vacuum, units, app.brake_torque_nm),
+        candidate=candidate_view(candidate, "full", units),
         catalog_version=catalog.version,
         formulas=FORMULAS_OUT,
     )

@@ -1,18 +1,16 @@
 """Selection: screen every candidate, rank the passing ones, explain the rejected."""
 
 from collections import Counter
-from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, replace
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
 from functools import partial
-from typing import overload
 
 import numpy as np
 
-from app.core.brief import Brief, briefs
 from app.core.checks import BY_NAME
-from app.core.evaluate import evaluations
-from app.core.model import Application, Change, Evaluation, ScrewSpec, Summary
+from app.core.model import Application, Change, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
+from app.core.record import Candidate, records
 from app.core.robustness import Robustness, joint_for, robustness_in, robustness_of
 from app.core.screening import Screening, eligible, screen, screen_table
 from app.core.table import CandidateTable
@@ -62,58 +60,23 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     return pos[np.lexsort(tuple(keys))]
 
 
-def with_robustness(app: Application, passing: Sequence[Evaluation]) -> tuple[Evaluation, ...]:
+def with_robustness(app: Application, passing: Sequence[Candidate]) -> tuple[Candidate, ...]:
     """Passing candidates with their robustness to the catalog's ranged values."""
-    return _attach(passing, robustness_of(app, [e.screw for e in passing]))
-
-
-def _attach(passing: Sequence[Evaluation], found: Sequence[Robustness]) -> tuple[Evaluation, ...]:
-    return tuple(
-        replace(e, robust=r.robust, hinges_on=r.hinges_on)
-        for e, r in zip(passing, found, strict=True)
-    )
-
-
-class Built(Sequence[Evaluation]):
-    """Evaluations built when first read: a caller that only ranks or counts, or reads
-    the screening's arrays, never pays for messages and breakdowns it does not show."""
-
-    __slots__ = ("_build", "_items", "_n")
-
-    def __init__(self, n: int, build: Callable[[], Sequence[Evaluation]]) -> None:
-        self._n, self._build = n, build
-        self._items: tuple[Evaluation, ...] | None = None
-
-    def _all(self) -> tuple[Evaluation, ...]:
-        if self._items is None:
-            self._items = tuple(self._build())
-        return self._items
-
-    def __len__(self) -> int:
-        return self._n
-
-    @overload
-    def __getitem__(self, i: int) -> Evaluation: ...
-    @overload
-    def __getitem__(self, i: slice) -> Sequence[Evaluation]: ...
-    def __getitem__(self, i: int | slice) -> Evaluation | Sequence[Evaluation]:
-        return self._all()[i]
-
-    def __iter__(self) -> Iterator[Evaluation]:
-        return iter(self._all())
+    found = robustness_of(app, [c.screw for c in passing])
+    return tuple(c.with_robustness(r) for c, r in zip(passing, found, strict=True))
 
 
 @dataclass(frozen=True, slots=True)
 class Selection:
     """A selection's answer: the ranked passing candidates (``candidates``, cut to the
-    limit) and the nearest rejected ones, built when read; the counts and the summary;
-    and the screening they come from, with the positions (in ``screening``) of the
-    returned candidates and the robustness of each passing one, for callers that read
-    the arrays directly."""
+    limit, with their robustness) and the nearest rejected ones, as records that read
+    their numbers when first asked; the counts and the summary; and the screening they
+    come from, with the positions (in ``screening``) of the returned candidates, for
+    callers that read the arrays directly."""
 
     application: Application
-    candidates: Sequence[Evaluation]
-    rejected: Sequence[Evaluation]
+    candidates: Sequence[Candidate]
+    rejected: Sequence[Candidate]
     evaluated: int
     passed: int
     failed_by_check: Mapping[str, int]
@@ -122,14 +85,6 @@ class Selection:
     ranked: tuple[int, ...]
     nearest: tuple[int, ...]
     robustness: tuple[Robustness, ...]
-
-
-def short_forms(sel: Selection) -> tuple[list[Brief], list[Brief]]:
-    """The returned passing and rejected candidates in short (``brief.briefs``, in one
-    pass), read from the selection's screening without building the full evaluations."""
-    found = [*sel.robustness, *[None] * len(sel.nearest)]
-    both = briefs(sel.application, sel.screening, sel.ranked + sel.nearest, found)
-    return both[: len(sel.ranked)], both[len(sel.ranked) :]
 
 
 def _nearest_order(s: Screening) -> np.ndarray:
@@ -159,9 +114,8 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
 
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
-    counts cover everything screened. The passing ones' robustness is screened now; full
-    evaluations of the returned candidates are built when first read (``short_forms``
-    reads the same arrays without them).
+    counts cover everything screened. The passing ones' robustness is screened now; the
+    returned candidates' numbers and sections are read when first asked for.
     """
     table = (
         candidates if isinstance(candidates, CandidateTable) else CandidateTable.build(candidates)
@@ -170,13 +124,13 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
     found = robust(ranked)
-    rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
+    rejected = records(app, s, nearest)
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
-        candidates=Built(len(ranked), partial(evaluations, app, s, ranked, found)),
+        candidates=records(app, s, ranked, found),
         rejected=rejected,
         evaluated=len(s.index),
         passed=n_passed,
@@ -189,7 +143,7 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     )
 
 
-def input_change(best: Evaluation) -> dict[str, float]:
+def input_change(best: Candidate) -> dict[str, float]:
     """Inputs that, changed together, clear every failed numeric check of ``best``.
 
     Each failed check offers alternatives (e.g. PV: lower load or lower speed); pick the
@@ -218,7 +172,7 @@ def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
     return join(parts, " and ")
 
 
-def feasible_changes(nearest: Sequence[Evaluation], count: int = 5) -> tuple[Change, ...]:
+def feasible_changes(nearest: Sequence[Candidate], count: int = 5) -> tuple[Change, ...]:
     """Input changes that admit each of the nearest rejected candidates, one per distinct
     change: each clears every failed limit of the candidate it names."""
     changes: list[Change] = []
@@ -256,7 +210,7 @@ def summarize(
     table: CandidateTable,
     evaluated: int,
     passed: int,
-    nearest: Sequence[Evaluation],
+    nearest: Sequence[Candidate],
     by_check: Counter[str],
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix and the

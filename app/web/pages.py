@@ -11,7 +11,7 @@ from app.deps import CatalogDep
 from app.errors import AppError
 from app.fields import BY_PAGE, FIELDS, GROUPS
 from app.responses import ModelJSON
-from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn, RejectedSummaryOut
+from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.server.headers import is_htmx_fragment
 from app.service import run_evaluation, run_page_selection, run_selection
 from app.units import TORQUE_LABELS, Display
@@ -105,7 +105,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
     return context
 
 
-def rejected_groups(rejected: list[RejectedSummaryOut]) -> list[dict[str, Any]]:
+def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
     """Rejected candidates grouped by governing (failing) check, nearest group first."""
     groups: dict[str, dict[str, Any]] = {}
     for c in rejected:

@@ -1,0 +1,511 @@
+"""One screened candidate as a record: every number of it, read from the screening's
+arrays when first asked for.
+
+``records(app, sc, positions)`` gives the candidates at ``positions`` of a screening. A
+record reads its numbers through ``quantities`` (one column of the screening, taken for
+every record of the batch at once, when first read) and builds its sections (torque,
+critical speed, buckling, PV, life, accuracy, checks, the move) when first read too: the
+compact forms, which read a few numbers and the checks' utilisation, never pay for the
+messages, breakdowns and segments of the full one. Every form of a candidate reads the
+same record, so they cannot disagree.
+"""
+
+import math
+from collections.abc import Mapping, Sequence
+from functools import cached_property
+from typing import Any, Generic, Literal, NamedTuple, TypeVar, cast
+
+import numpy as np
+from numpy.typing import NDArray
+
+from app.core import motion
+from app.core.checks import BY_NAME
+from app.core.checks.base import Check
+from app.core.formulas import critical_speed
+from app.core.model import (
+    PV,
+    Accuracy,
+    Application,
+    Buckling,
+    CriticalSpeed,
+    J,
+    Judged,
+    Life,
+    Motion,
+    Provenance,
+    ProvenanceKind,
+    ScrewSpec,
+    Segment,
+    Torque,
+    failed_advice,
+)
+from app.core.phrase import Phrase, Quantity
+from app.core.quantities import Quantities
+from app.core.robustness import Robustness
+from app.core.screening import Screening
+from app.core.table import Array
+
+#: Provenance kinds from the least to the most certain.
+CERTAINTY: tuple[ProvenanceKind, ...] = (
+    "assumed",
+    "derived",
+    "user",
+    "vendor",
+    "handbook",
+    "seed",
+    "standard",
+)
+#: Catalog fields behind the geometry, efficiency and torque of every candidate.
+GEOMETRY_SOURCES = (
+    "outer_diameter",
+    "root_diameter",
+    "lead",
+    "friction_dynamic",
+    "friction_static",
+    "thread_half_angle",
+    "inertia_per_length",
+    "drag_torque",
+)
+#: The screening's per-candidate verdicts a record reads as columns.
+VERDICTS = frozenset({"passed", "max_utilization"})
+#: Positions in a screening, as an index array (NumPy picks with one four times faster
+#: than with a list).
+Positions = NDArray[np.intp]
+
+
+def number(x: float | None) -> float | None:
+    """None for a missing or NaN value."""
+    return None if x is None or math.isnan(x) else x
+
+
+def positions_array(positions: Sequence[int]) -> Positions:
+    """``positions`` as an index array."""
+    return np.asarray(positions, dtype=np.intp)
+
+
+def governing(app: Application, checks: Sequence[J]) -> J | None:
+    """Among the checks that reject (limits; advice too when the user asks), the one with
+    the highest utilisation, or the first failed yes/no check when no numeric one fails."""
+    rejecting = [c for c in checks if c.kind == "limit" or app.advice == "reject"]
+    utilized = [c for c in rejecting if c.utilization is not None]
+    top = max(utilized, key=lambda c: c.utilization or 0.0) if utilized else None
+    failed = [c for c in rejecting if not c.passed]
+    if failed and (top is None or top.passed):
+        return failed[0]
+    return top
+
+
+def limit_provenance(check: Judged | None, s: ScrewSpec) -> ProvenanceKind | None:
+    """How certain the governing check's limit is: the least certain provenance of the
+    catalog values its capacity rests on ("user" when the capacity is the user's input)."""
+    if check is None:
+        return None
+    fields = BY_NAME[check.name].capacity_sources
+    if not fields:
+        return "user"
+    kinds = [s.provenance[f].kind for f in fields if f in s.provenance]
+    return min(kinds, key=CERTAINTY.index) if kinds else None
+
+
+class Batch:
+    """The screening's arrays at the positions of some candidates: each column taken for
+    all of them at once, when first read."""
+
+    def __init__(self, app: Application, sc: Screening, positions: Sequence[int]) -> None:
+        self.app, self.screening = app, sc
+        self.positions = [int(i) for i in positions]
+        self.at = positions_array(self.positions)
+        self._columns: dict[str, list[Any]] = {}
+
+    def column(self, name: str) -> list[Any]:
+        """A column of the screening at the batch's positions, as Python values: a
+        quantity (``Quantities``), else a verdict (``passed``, ``max_utilization``), else
+        a column of the table."""
+        values = self._columns.get(name)
+        if values is None:
+            sc = self.screening
+            source = getattr(sc.quantities, name, None)
+            if source is None:
+                source = getattr(sc, name) if name in VERDICTS else getattr(sc.table, name)
+            values = self._columns[name] = source[self.at].tolist()
+        return values
+
+    @cached_property
+    def rows(self) -> list[Quantities[float]]:
+        """Every quantity of each candidate, as the checks' sentences read them."""
+        return self.screening.quantities.rows(self.at)
+
+    @cached_property
+    def checks(self) -> dict[str, list[tuple[bool, float, float, float | None, bool]]]:
+        """Per check, per candidate: (applies, demand, capacity, utilisation, failed),
+        demand and capacity NaN for a yes/no check; utilisation None where it is not a
+        finite number (no demand or limit, or a zero limit)."""
+        sc, n = self.screening, len(self.at)
+        out = {}
+        for name, m in sc.measures.items():
+            nan = [math.nan] * n
+            demand = nan if m.demand is None else m.demand[self.at].tolist()
+            capacity = nan if m.capacity is None else m.capacity[self.at].tolist()
+            out[name] = list(
+                zip(
+                    m.applicable[self.at].tolist(),
+                    demand,
+                    capacity,
+                    _utilizations(sc.utilization[name], self.at),
+                    sc.failed[name][self.at].tolist(),
+                    strict=True,
+                )
+            )
+        return out
+
+    @cached_property
+    def motions(self) -> list[Motion | None]:
+        """The move and its segments' torques per candidate (None each without a stroke)."""
+        p = motion.move_profile(self.app)
+        if p is None:
+            return [None] * len(self.at)
+        hold = np.array(self.column("brake_nm"))
+        parts = motion.segments(self.app, p, self.screening.table.take(self.at), hold)
+        columns = [(s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist()) for s in parts]
+        peak, rms = self.column("motor_peak_nm"), self.column("motor_rms_nm")
+        return [
+            Motion(
+                profile=p,
+                segments=tuple(
+                    Segment(s.name, s.direction, s.duration_s, rpm[k], thrust[k], torque[k])
+                    for s, rpm, thrust, torque in columns
+                ),
+                peak_nm=peak[k],
+                rms_nm=rms[k],
+            )
+            for k in range(len(self.at))
+        ]
+
+
+def _utilizations(values: Array | None, index: Positions) -> list[float | None]:
+    if values is None:
+        return [None] * len(index)
+    picked = values[index]
+    finite = np.isfinite(picked).tolist()
+    return [v if ok else None for v, ok in zip(picked.tolist(), finite, strict=True)]
+
+
+class Numbers:
+    """One candidate's quantities (``Quantities``' names, SI), each read when first asked
+    for: ``record.quantities.total_nm``."""
+
+    __slots__ = ("_batch", "_k")
+
+    def __init__(self, batch: Batch, k: int) -> None:
+        self._batch, self._k = batch, k
+
+    def __getattr__(self, name: str) -> float:
+        return float(self._batch.column(name)[self._k])
+
+
+class CheckResult(NamedTuple):
+    """One check of one candidate: demand against capacity, with the message and the fix.
+
+    ``value`` (demand) and ``limit`` (capacity) are SI in ``quantity``; None for yes/no
+    checks. ``utilization`` = value / limit. The message, the fix and ``input_limits``
+    (application inputs any one of which, set to the given SI value, would make the check
+    pass, e.g. {"load_n": 120.0}) are written when read: most results are ranked or
+    counted, not read.
+    """
+
+    check: Check
+    passed: bool
+    demand: float
+    capacity: float
+    utilization: float | None
+    record: "Candidate"
+
+    @property
+    def name(self) -> str:
+        return self.check.name
+
+    @property
+    def kind(self) -> Literal["limit", "advice"]:
+        return self.check.kind
+
+    @property
+    def label(self) -> str:
+        return self.check.label
+
+    @property
+    def formula(self) -> str:
+        return self.check.formula
+
+    @property
+    def sources(self) -> tuple[str, ...]:
+        return self.check.sources
+
+    @property
+    def numeric(self) -> bool:
+        return not (math.isnan(self.demand) or math.isnan(self.capacity))
+
+    @property
+    def value(self) -> float | None:
+        return self.demand if self.numeric else None
+
+    @property
+    def limit(self) -> float | None:
+        return self.capacity if self.numeric else None
+
+    @property
+    def quantity(self) -> Quantity | None:
+        return self.check.quantity if self.numeric else None
+
+    @property
+    def message(self) -> Phrase:
+        r = self.record
+        return self.check.explain(r.app, r.screw, r.row, self.passed)
+
+    @property
+    def fix(self) -> Phrase | None:
+        if self.passed:
+            return None
+        r = self.record
+        return self.check.fix(r.app, r.screw, r.row, r.screening.reach)
+
+    @property
+    def input_limits(self) -> Mapping[str, float] | None:
+        if self.passed:
+            return None
+        r = self.record
+        limits = self.check.input_limits(r.app, r.screw, r.row)
+        return dict(limits) if limits else None
+
+
+T = TypeVar("T")
+
+
+class Column(Generic[T]):
+    """A record's attribute read from one column of the screening (quantities or table)."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __get__(self, record: "Candidate", owner: type) -> T:
+        return cast(T, record.batch.column(self.name)[record.k])
+
+
+class Candidate:
+    """One screened candidate against one application, SI; its numbers are read and its
+    sections built when first read. ``judged`` is its robustness when known."""
+
+    axial_load_n = Column[float]("force_n")
+    peak_axial_load_n = Column[float]("peak_force_n")
+    rpm = Column[float]("rpm")
+    pitch_diameter_m = Column[float]("pitch_diameter_m")
+    lead_angle_rad = Column[float]("lead_angle_rad")
+    efficiency = Column[float]("efficiency")
+    efficiency_square_thread = Column[float]("efficiency_square_thread")
+    backdrive_efficiency = Column[float]("backdrive_efficiency")
+    backdrive_efficiency_running = Column[float]("backdrive_efficiency_running")
+    self_locking = Column[bool]("self_locking")
+    seed_rule_no_backdrive = Column[bool]("seed_rule_no_backdrive")
+    max_self_locking_lead_m = Column[float]("max_self_locking_lead_m")
+    max_self_locking_lead_with_margin_m = Column[float]("max_lock_lead_m")
+    holding_torque_seed_nm = Column[float]("holding_seed_nm")
+    holding_torque_physics_nm = Column[float]("holding_physics_nm")
+    brake_torque_nm = Column[float]("brake_nm")
+    max_utilization = Column[float]("max_utilization")
+    passed = Column[bool]("passed")
+
+    def __init__(self, batch: Batch, k: int, judged: Robustness | None = None) -> None:
+        self.batch, self.k, self.judged = batch, k, judged
+        self.app, self.screening = batch.app, batch.screening
+        self.screw: ScrewSpec = batch.screening.table.screws[batch.positions[k]]
+        self.quantities = Numbers(batch, k)
+
+    def with_robustness(self, judged: Robustness) -> "Candidate":
+        """The same candidate with its robustness known."""
+        return Candidate(self.batch, self.k, judged)
+
+    @property
+    def robust(self) -> bool | None:
+        return None if self.judged is None else self.judged.robust
+
+    @property
+    def hinges_on(self) -> tuple[str, ...]:
+        return () if self.judged is None else self.judged.hinges_on
+
+    @cached_property
+    def row(self) -> Quantities[float]:
+        """Every quantity as a float (NaN: no such limit), as the checks' sentences read
+        them (taken for the whole batch)."""
+        return self.batch.rows[self.k]
+
+    @cached_property
+    def checks(self) -> tuple[CheckResult, ...]:
+        """Every check that applies, in registry order."""
+        k = self.k
+        return tuple(
+            CheckResult(BY_NAME[name], not failed, demand, capacity, utilization, self)
+            for name, column in self.batch.checks.items()
+            for applies, demand, capacity, utilization, failed in (column[k],)
+            if applies
+        )
+
+    @cached_property
+    def governing(self) -> CheckResult | None:
+        return governing(self.app, self.checks)
+
+    @property
+    def governing_check(self) -> str | None:
+        return None if self.governing is None else self.governing.name
+
+    @property
+    def governing_limit_provenance(self) -> ProvenanceKind | None:
+        return limit_provenance(self.governing, self.screw)
+
+    @property
+    def failed_checks(self) -> tuple[CheckResult, ...]:
+        """The failed limits: what rejects the candidate."""
+        return tuple(c for c in self.checks if not c.passed and c.kind == "limit")
+
+    @property
+    def failed(self) -> tuple[CheckResult, ...]:
+        """Every failed check, limits and advice, in check order."""
+        return tuple(c for c in self.checks if not c.passed)
+
+    @property
+    def warnings(self) -> tuple[CheckResult, ...]:
+        """Failed advice: reported beside the candidate, not a rejection."""
+        return tuple(failed_advice(self.checks))
+
+    @property
+    def warned(self) -> tuple[str, ...]:
+        return tuple(c.name for c in failed_advice(self.checks))
+
+    @property
+    def utilization(self) -> dict[str, float | None]:
+        """Check -> demand / capacity (None for a yes/no check)."""
+        return {c.name: c.utilization for c in self.checks}
+
+    @property
+    def fixes(self) -> tuple[Phrase, ...]:
+        """What would make each failed check pass, where the catalog offers it."""
+        return tuple(fix for c in self.checks if (fix := c.fix) is not None)
+
+    @property
+    def provenance(self) -> dict[str, Provenance]:
+        """Catalog field -> provenance, for the fields this candidate's numbers use."""
+        used = {src for c in self.checks for src in c.sources} | set(GEOMETRY_SOURCES)
+        return {k: p for k, p in self.screw.provenance.items() if k in used}
+
+    @property
+    def outgassing(self) -> tuple[tuple[float, float], ...] | None:
+        """(hours, weight loss [%]) in a vacuum; None otherwise."""
+        return self.screw.outgassing if self.app.vacuum else None
+
+    @property
+    def self_locking_with_margin(self) -> bool:
+        return bool(self.quantities.locks_with_margin)
+
+    @property
+    def traverse_speed_limit_m_s(self) -> float | None:
+        return number(self.batch.column("traverse_limit_m_s")[self.k])
+
+    @property
+    def traverse_extrapolated(self) -> bool:
+        extrapolated = bool(self.batch.column("traverse_extrapolated")[self.k])
+        return self.traverse_speed_limit_m_s is not None and extrapolated
+
+    @cached_property
+    def torque(self) -> Torque:
+        """Drive torque breakdown [N m] (seed: inertia + static drag + load)."""
+        q, s = self.quantities, self.screw
+        return Torque(
+            inertia_screw_nm=q.inertia_screw_nm,
+            inertia_mass_nm=q.inertia_mass_nm,
+            inertia_nm=q.inertia_nm,
+            drag_nm=q.drag_nm,
+            drag_min_nm=s.drag_torque_min_nm,
+            drag_max_nm=s.drag_torque_max_nm,
+            load_nm=q.load_nm,
+            total_nm=q.total_nm,
+            breakaway_nm=q.breakaway_nm,
+            safety_factor=self.app.torque_safety_factor,
+            required_nm=q.required_nm,
+            angular_accel_rad_s2=q.angular_accel_rad_s2,
+            inertia_kg_m2=q.inertia_kg_m2,
+        )
+
+    @cached_property
+    def critical_speed(self) -> CriticalSpeed:
+        q, app = self.quantities, self.app
+        return CriticalSpeed(
+            q.critical_rpm,
+            q.allowed_rpm,
+            critical_speed.speed_margin(q.allowed_rpm, q.rpm),
+            app.critical_speed_safety_factor,
+            app.end_fixity,
+        )
+
+    @cached_property
+    def buckling(self) -> Buckling:
+        q = self.quantities
+        transition = number(q.transition_slenderness)
+        short = transition is not None and q.slenderness < transition
+        return Buckling(
+            applies=self.app.compression,
+            critical_load_n=q.critical_load_n,
+            allowed_load_n=q.allowed_load_n,
+            safety_factor=self.app.buckling_safety_factor,
+            slenderness=q.slenderness,
+            transition_slenderness=transition,
+            mode="johnson" if short else "euler",
+            root_stress_pa=q.root_stress_pa,
+            yield_strength_pa=self.screw.yield_strength_pa,
+        )
+
+    @cached_property
+    def pv(self) -> PV:
+        q, limit = self.quantities, self.screw.pv_limit_pa_m_s
+        return PV(
+            value_pa_m_s=q.pv_pa_m_s,
+            limit_pa_m_s=limit,
+            pressure_pa=q.pressure_pa,
+            surface_speed_m_s=q.surface_speed_m_s,
+            contact_area_m2=q.contact_area_m2,
+            max_load_n=None if limit is None else q.pv_max_load_n,
+            max_speed_m_s=None if limit is None else q.pv_max_speed_m_s,
+        )
+
+    @cached_property
+    def life(self) -> Life | None:
+        s, q = self.screw, self.quantities
+        if s.life_min_m is None or s.life_max_m is None:
+            return None
+        return Life(s.life_min_m, s.life_max_m, number(q.life_years_min), number(q.life_years_max))
+
+    @cached_property
+    def accuracy(self) -> Accuracy:
+        s, q = self.screw, self.quantities
+        return Accuracy(
+            lead_error_m=number(q.lead_error_m),
+            repeatability_m=s.repeatability_m,
+            backlash_min_m=s.backlash_min_m,
+            backlash_max_m=s.backlash_max_m,
+            thermal_growth_m=q.thermal_growth_m,
+        )
+
+    @property
+    def motion(self) -> Motion | None:
+        """The move profile and the torque of each segment (None: no stroke given)."""
+        return self.batch.motions[self.k]
+
+
+def records(
+    app: Application,
+    sc: Screening,
+    positions: Sequence[int],
+    judged: Sequence[Robustness | None] | None = None,
+) -> list[Candidate]:
+    """The candidates at ``positions`` of a screening (in ``sc.table``), one batch;
+    ``judged`` gives each one's robustness when it is known."""
+    batch = Batch(app, sc, positions)
+    found = judged if judged is not None else [None] * len(batch.positions)
+    return [Candidate(batch, k, r) for k, r in enumerate(found)]

@@ -1,0 +1,67 @@
+"""Where each field of a candidate's output model comes from in the core's candidate
+record (``app.core.record.Candidate``), declared on the field itself:
+
+    rpm: Annotated[float, From("rpm")]
+    outer_diameter_mm: Annotated[float, From("screw.outer_diameter_m", "length")]
+
+A path is dotted attribute names (a digit picks an item of a tuple), read from the
+model's source: the record for the candidate model, the value its own ``From`` gives for
+a nested model (a section, each item of a list, each value of a dict; ``From()``: the
+parent's source). A path starting with ``/`` is read from the record whatever the
+source. A tuple of paths gives a list (None when one of them is None). ``quantity`` names
+the core quantity of an SI number, converted to the API's unit (``app.units.API_UNITS``).
+``via`` computes a value the paths cannot name, from the value at the path and the
+reader's display units (for sentences).
+"""
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from app.core.phrase import Phrase
+from app.core.phrase import Quantity as CoreQuantity
+from app.units import api_value, render
+
+#: A computed value: (the value at the path, the reader's display units) -> output value.
+Via = Callable[[Any, Mapping[str, str]], Any]
+
+
+@dataclass(frozen=True, slots=True)
+class From:
+    """The source of an output field: a path in the record, its SI quantity, or ``via``."""
+
+    path: str | tuple[str, ...] = ""
+    quantity: CoreQuantity | None = None
+    via: Via | None = None
+
+
+def degrees(angle_rad: float, units: Mapping[str, str]) -> float:
+    """An angle [rad] in degrees."""
+    return math.degrees(angle_rad)
+
+
+def million_cm(travel_m: tuple[float, float], units: Mapping[str, str]) -> list[float]:
+    """Rated travel [m] in millions of cm, the catalog's unit (1e6 cm = 1e4 m)."""
+    return [t / 1e4 for t in travel_m]
+
+
+def check_value(check: Any, units: Mapping[str, str]) -> float | None:
+    """A check's demand in the API unit of its quantity (None for a yes/no check)."""
+    return None if check.value is None else api_value(check.value, check.quantity)[0]
+
+
+def check_limit(check: Any, units: Mapping[str, str]) -> float | None:
+    """A check's capacity in the API unit of its quantity (None for a yes/no check)."""
+    return None if check.limit is None else api_value(check.limit, check.quantity)[0]
+
+
+def check_unit(check: Any, units: Mapping[str, str]) -> str:
+    """The API unit of a check's value and limit ("" for a yes/no check)."""
+    return api_value(0.0, check.quantity)[1]
+
+
+def joined(phrases: tuple[Phrase, ...], units: Mapping[str, str]) -> str | None:
+    """Sentences in the reader's units, joined by spaces (None when there are none)."""
+    text = [render(p, units) for p in phrases]
+    return " ".join(text) if text else None
