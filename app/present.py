@@ -2,45 +2,35 @@
 the figures and the CSV export.
 
 A candidate's output (``CandidateOut``) is read from the core's candidate record field by
-field, as each field's ``From`` declares (``app.source``); a view (``VIEWS``) reads only
-its fields, so a compact form never builds the sections it does not show.
+field, as each field's ``From`` declares (``app.source``), by ``app.reader``; a view
+(``VIEWS``) reads only its fields, so a compact form never builds the sections it does
+not show.
 """
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from collections.abc import Mapping as Units
-from functools import cache, partial
-from operator import attrgetter, itemgetter
-from types import UnionType
-from typing import Any, Union, cast, get_args, get_origin
-
-from pydantic import BaseModel
-from pydantic.fields import FieldInfo
+from typing import Any, cast
 
 from app.catalog import Material, Series
 from app.construct import construct
 from app.core.formulas import torque
 from app.core.model import Provenance, ScrewSpec
-from app.core.phrase import Phrase
 from app.core.record import GEOMETRY_SOURCES, Candidate
 from app.core.selection import Selection
 from app.fields import BY_API, FIELDS
+from app.reader import reader
 from app.schemas import (
-    VIEWS,
     CandidateOut,
     ChangeOut,
     CountsOut,
     CustomScrewIn,
     MaterialIn,
     SummaryOut,
-    View,
 )
-from app.source import From
-from app.units import API_UNITS, DEFAULT_UNITS, render
+from app.units import DEFAULT_UNITS, render
 
 BY_CORE = {field.core: field for field in FIELDS}
-#: One field of a view: (source, record, display units) -> its value.
-Step = Callable[[Any, Candidate, Units[str, str]], Any]
 
 
 def _prov(p: Provenance) -> dict[str, str]:
@@ -50,8 +40,7 @@ def _prov(p: Provenance) -> dict[str, str]:
 def candidate_view(c: Candidate, view: str, units: Units[str, str] = DEFAULT_UNITS) -> CandidateOut:
     """One candidate as ``CandidateOut`` holding the fields of ``VIEWS[view]`` alone (in
     API units, sentences in ``units``): what the templates, charts and CSV read."""
-    steps = _steps(CandidateOut, view, (), False)
-    return cast(CandidateOut, _build(CandidateOut, steps, c, c, units, False))
+    return cast(CandidateOut, reader(CandidateOut, view)(c, c, units))
 
 
 def candidate_json(
@@ -59,150 +48,7 @@ def candidate_json(
 ) -> dict[str, Any]:
     """One candidate's ``VIEWS[view]`` as plain JSON values (nested dicts): the compact
     select response, byte for byte what the view's model would serialise."""
-    steps = _steps(CandidateOut, view, (), True)
-    return cast(dict[str, Any], _build(CandidateOut, steps, c, c, units, True))
-
-
-def _build(
-    model: type[BaseModel],
-    steps: tuple[tuple[str, Step], ...],
-    source: Any,
-    record: Candidate,
-    units: Units[str, str],
-    as_dict: bool,
-) -> Any:
-    values = {name: step(source, record, units) for name, step in steps}
-    return values if as_dict else construct(model, **values)
-
-
-def _view(model: type[BaseModel], view: str, path: tuple[str, ...]) -> View:
-    """The part of ``VIEWS[view]`` at ``path`` (field names), every field of ``model``
-    where the view takes a nested model whole."""
-    part: Any = VIEWS[view]
-    for name in path:
-        part = part[name]
-        if part is True:
-            return dict.fromkeys(model.model_fields, True)
-    return cast(View, part)
-
-
-@cache
-def _steps(
-    model: type[BaseModel], view: str, path: tuple[str, ...], as_dict: bool
-) -> tuple[tuple[str, Step], ...]:
-    """How to read each field of ``model`` in the view at ``path``, worked out once."""
-    shown = _view(model, view, path)
-    return tuple(
-        (name, _step(info, view, (*path, name), as_dict))
-        for name, info in model.model_fields.items()
-        if name in shown
-    )
-
-
-def _step(info: FieldInfo, view: str, path: tuple[str, ...], as_dict: bool) -> Step:
-    """Read one field: its ``From`` path, then its nested model, ``via``, quantity or
-    plain value; a field without ``From`` has its default."""
-    source = next((m for m in info.metadata if isinstance(m, From)), None)
-    if source is None:
-        default = info.default
-        return lambda s, r, u: default
-    get = _getter(source.path)
-    nested, shape = _nested(info.annotation)
-    if nested is not None:
-        steps = _steps(nested, view, path, as_dict)
-        one = partial(_build, nested, steps)
-        return _shaped(get, shape, one, as_dict)
-    via = source.via
-    if via is not None:
-        return lambda s, r, u: via(get(s, r), u)
-    if source.quantity is not None:
-        scale = API_UNITS[source.quantity][1]
-        return lambda s, r, u: _scaled(get(s, r), scale)
-    return lambda s, r, u: _plain(get(s, r), u)
-
-
-def _shaped(
-    get: Callable[[Any, Candidate], Any],
-    shape: str,
-    one: Callable[[Any, Candidate, Units[str, str], bool], Any],
-    as_dict: bool,
-) -> Step:
-    """A nested model's step: one model, a list of them or a dict of them (None: None)."""
-    if shape == "list":
-        return lambda s, r, u: (
-            None if (v := get(s, r)) is None else [one(x, r, u, as_dict) for x in v]
-        )
-    if shape == "dict":
-        return lambda s, r, u: (
-            None if (v := get(s, r)) is None else {k: one(x, r, u, as_dict) for k, x in v.items()}
-        )
-    return lambda s, r, u: None if (v := get(s, r)) is None else one(v, r, u, as_dict)
-
-
-def _nested(annotation: Any) -> tuple[type[BaseModel] | None, str]:
-    """The output model in a field's type and how it is held: ("one", "list" or "dict");
-    (None, "") for a plain value."""
-    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return annotation, "one"
-    origin, args = get_origin(annotation), get_args(annotation)
-    if origin in (UnionType, Union):
-        return next(
-            ((m, shape) for a in args for m, shape in [_nested(a)] if m is not None), (None, "")
-        )
-    model = args[-1] if origin in (list, dict) else None
-    if isinstance(model, type) and issubclass(model, BaseModel):
-        return model, origin.__name__
-    return None, ""
-
-
-def _getter(path: str | tuple[str, ...]) -> Callable[[Any, Candidate], Any]:
-    """(source, record) -> the value at ``path`` (see ``app.source``); None past a None."""
-    if isinstance(path, tuple):
-        parts = [_getter(p) for p in path]
-
-        def both(s: Any, r: Candidate) -> Any:
-            values = tuple(get(s, r) for get in parts)
-            return None if any(v is None for v in values) else values
-
-        return both
-    if path.startswith("/"):
-        inner = _getter(path[1:])
-        return lambda s, r: inner(r, r)
-    if not path:
-        return lambda s, r: s
-    steps = [itemgetter(int(n)) if n.isdigit() else attrgetter(n) for n in path.split(".")]
-    if len(steps) == 1:
-        step = steps[0]
-        return lambda s, r: step(s)
-
-    def walk(s: Any, r: Candidate) -> Any:
-        for step in steps:
-            if s is None:
-                return None
-            s = step(s)
-        return s
-
-    return walk
-
-
-def _scaled(value: Any, scale: float) -> Any:
-    """An SI number (or a tuple of them) in the API unit; NaN as None."""
-    if value is None:
-        return None
-    if isinstance(value, tuple):
-        return [v * scale for v in value]
-    return None if math.isnan(value) else value * scale
-
-
-def _plain(value: Any, units: Units[str, str]) -> Any:
-    """A value as JSON holds it: NaN as None, tuples as lists, sentences in ``units``."""
-    if isinstance(value, float):
-        return None if math.isnan(value) else value
-    if isinstance(value, tuple):
-        return [_plain(v, units) for v in value]
-    if isinstance(value, Phrase):
-        return render(value, units)
-    return value
+    return cast(dict[str, Any], reader(CandidateOut, view, as_dict=True)(c, c, units))
 
 
 def selection_summary(sel: Selection) -> dict[str, Any]:

@@ -187,6 +187,8 @@ class FailedCheckOut(BaseModel):
 
 
 class ProvenanceOut(BaseModel):
+    model_config = ConfigDict(frozen=True)
+
     kind: Annotated[ProvenanceKind, From("kind")]
     source: Annotated[str, From("source")]
 
@@ -336,9 +338,6 @@ class CandidateOut(BaseModel):
     lead_mm: Annotated[float, From("screw.lead_m", "length")]
     lead_angle_deg: Annotated[float, From("lead_angle_rad", via=degrees)]
     coated: Annotated[bool, From("screw.coated")]
-    nut_material: Annotated[str, From("screw.nut_material")] = Field(
-        description="The nut's material (the catalog's name); empty for a custom screw."
-    )
     axial_load_n: Annotated[float, From("axial_load_n", "force")] = Field(
         description="Running thrust at constant speed (PV uses it)."
     )
@@ -385,10 +384,10 @@ class CandidateOut(BaseModel):
     life: Annotated[LifeOut | None, From("life")]
     accuracy: Annotated[AccuracyOut, From("accuracy")]
     outgassing: Annotated[list[OutgassingOut] | None, From("outgassing")]
-    profile: Annotated[ProfileOut | None, From("motion.profile")] = Field(
+    profile: Annotated[ProfileOut | None, From("profile")] = Field(
         default=None, description="The move over the stroke; null without a stroke."
     )
-    segments: Annotated[list[SegmentOut] | None, From("motion.segments")] = Field(
+    segments: Annotated[list[SegmentOut] | None, From("segments")] = Field(
         default=None, description="Each segment of the cycle; null without a stroke."
     )
     checks: Annotated[list[CheckOut], From("checks")]
@@ -434,73 +433,33 @@ class CandidateOut(BaseModel):
 
 #: A view of a model: field name -> True (the whole field) or the view of a nested model.
 View = Mapping[str, Any]
+
+
+def whole(*groups: str) -> dict[str, Any]:
+    """A view taking whole each field named in ``groups`` (names separated by spaces)."""
+    return dict.fromkeys((name for group in groups for name in group.split()), True)
+
+
+#: What names a candidate, and its verdict: in the row and the summary alike.
+NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated"
+VERDICT = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
 #: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
 VIEWS: dict[str, View] = {
-    "row": {
-        **dict.fromkeys(
-            (
-                "id",
-                "series",
-                "series_name",
-                "anti_backlash",
-                "outer_diameter_mm",
-                "lead_mm",
-                "coated",
-                "nut_material",
-                "axial_load_n",
-                "rpm",
-                "efficiency",
-                "self_locking",
-                "seed_rule_no_backdrive",
-                "max_self_locking_lead_with_margin_mm",
-                "holding_torque",
-                "torque",
-                "critical_speed",
-                "pv",
-                "life",
-                "profile",
-                "segments",
-                "utilization",
-                "governing_check",
-                "governing_limit_provenance",
-                "passed",
-                "robust",
-                "hinges_on",
-                "warned",
-            ),
-            True,
-        ),
-    },
+    "row": whole(
+        NAMED,
+        "axial_load_n rpm efficiency self_locking seed_rule_no_backdrive "
+        "max_self_locking_lead_with_margin_mm holding_torque torque critical_speed pv life "
+        "profile segments",
+        VERDICT,
+    ),
     "summary": {
-        **dict.fromkeys(
-            (
-                "id",
-                "series",
-                "series_name",
-                "anti_backlash",
-                "outer_diameter_mm",
-                "lead_mm",
-                "coated",
-                "nut_material",
-                "rpm",
-                "efficiency",
-                "self_locking",
-                "utilization",
-                "governing_check",
-                "governing_limit_provenance",
-                "passed",
-                "robust",
-                "hinges_on",
-                "warned",
-            ),
-            True,
-        ),
-        "torque": dict.fromkeys(("total_nm", "peak_nm", "rms_nm"), True),
-        "critical_speed": {"margin": True},
-        "life": {"years": True},
+        **whole(NAMED, "rpm efficiency self_locking", VERDICT),
+        "torque": whole("total_nm"),
+        "critical_speed": whole("margin"),
+        "life": whole("years"),
     },
-    "rejected": dict.fromkeys(("id", "governing_check", "failed", "fix"), True),
-    "full": dict.fromkeys(CandidateOut.model_fields, True),
+    "rejected": whole("id governing_check failed fix"),
+    "full": whole(*CandidateOut.model_fields),
 }
 
 
@@ -508,6 +467,9 @@ def view_model(model: type[BaseModel], view: View, name: str) -> type[BaseModel]
     """The model of one view of ``model``: its fields in the view, in the model's order,
     each with its description and default; a nested model cut to its own view (named
     ``<Model><name>``, e.g. TorqueSummaryOut). For OpenAPI and for validating a view."""
+    unknown = set(view) - set(model.model_fields)
+    if unknown:
+        raise ValueError(f"{model.__name__} has no field {', '.join(sorted(unknown))}")
     fields: dict[str, Any] = {}
     for field_name, info in model.model_fields.items():
         part = view.get(field_name)

@@ -163,34 +163,6 @@ def failed_advice(checks: Iterable[J]) -> list[J]:
 
 
 @dataclass(frozen=True, slots=True)
-class Torque:
-    """Drive torque breakdown [N m] (seed: inertia + static drag + load)."""
-
-    inertia_screw_nm: float
-    inertia_mass_nm: float
-    inertia_nm: float
-    drag_nm: float
-    drag_min_nm: float
-    drag_max_nm: float
-    load_nm: float
-    total_nm: float
-    breakaway_nm: float
-    safety_factor: float
-    required_nm: float
-    angular_accel_rad_s2: float
-    inertia_kg_m2: float
-
-
-@dataclass(frozen=True, slots=True)
-class CriticalSpeed:
-    theoretical_rpm: float
-    allowed_rpm: float
-    margin: float
-    safety_factor: float
-    end_fixity: str
-
-
-@dataclass(frozen=True, slots=True)
 class Buckling:
     """The screw as a column under the peak thrust: Euler when slender, Johnson when short."""
 
@@ -214,14 +186,6 @@ class PV:
     contact_area_m2: float
     max_load_n: float | None
     max_speed_m_s: float | None
-
-
-@dataclass(frozen=True, slots=True)
-class Life:
-    travel_min_m: float
-    travel_max_m: float
-    years_min: float | None
-    years_max: float | None
 
 
 @dataclass(frozen=True, slots=True)

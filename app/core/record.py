@@ -11,8 +11,7 @@ same record, so they cannot disagree.
 """
 
 import math
-from collections.abc import Mapping, Sequence
-from functools import cached_property
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, Generic, Literal, NamedTuple, TypeVar, cast
 
 import numpy as np
@@ -27,16 +26,14 @@ from app.core.model import (
     Accuracy,
     Application,
     Buckling,
-    CriticalSpeed,
     J,
     Judged,
-    Life,
     Motion,
+    Profile,
     Provenance,
     ProvenanceKind,
     ScrewSpec,
     Segment,
-    Torque,
     failed_advice,
 )
 from app.core.phrase import Phrase, Quantity
@@ -44,6 +41,24 @@ from app.core.quantities import Quantities
 from app.core.robustness import Robustness
 from app.core.screening import Screening
 from app.core.table import Array
+
+Owner = TypeVar("Owner")
+T = TypeVar("T")
+
+
+class once(Generic[Owner, T]):
+    """A value computed when first read, then kept on the instance: ``cached_property``
+    without its per-instance lock (Python 3.11 takes one on every first read, about a
+    microsecond; a record is read from one thread)."""
+
+    def __init__(self, compute: Callable[[Owner], T]) -> None:
+        self.compute, self.name = compute, compute.__name__
+
+    def __get__(self, owner: Owner, cls: type) -> T:
+        value = self.compute(owner)
+        owner.__dict__[self.name] = value
+        return value
+
 
 #: Provenance kinds from the least to the most certain.
 CERTAINTY: tuple[ProvenanceKind, ...] = (
@@ -130,12 +145,7 @@ class Batch:
             values = self._columns[name] = source[self.at].tolist()
         return values
 
-    @cached_property
-    def rows(self) -> list[Quantities[float]]:
-        """Every quantity of each candidate, as the checks' sentences read them."""
-        return self.screening.quantities.rows(self.at)
-
-    @cached_property
+    @once
     def checks(self) -> dict[str, list[tuple[bool, float, float, float | None, bool]]]:
         """Per check, per candidate: (applies, demand, capacity, utilisation, failed),
         demand and capacity NaN for a yes/no check; utilisation None where it is not a
@@ -158,7 +168,7 @@ class Batch:
             )
         return out
 
-    @cached_property
+    @once
     def motions(self) -> list[Motion | None]:
         """The move and its segments' torques per candidate (None each without a stroke)."""
         p = motion.move_profile(self.app)
@@ -218,7 +228,7 @@ class CheckResult(NamedTuple):
     demand: float
     capacity: float
     utilization: float | None
-    record: "Candidate"
+    slot: "Slot"
 
     @property
     def name(self) -> str:
@@ -258,36 +268,141 @@ class CheckResult(NamedTuple):
 
     @property
     def message(self) -> Phrase:
-        r = self.record
-        return self.check.explain(r.app, r.screw, r.row, self.passed)
+        at = self.slot
+        return self.check.explain(at.app, at.screw, at.row, self.passed)
 
     @property
     def fix(self) -> Phrase | None:
-        if self.passed:
-            return None
-        r = self.record
-        return self.check.fix(r.app, r.screw, r.row, r.screening.reach)
+        return None if self.passed else self.slot.fix_of(self.check)
 
     @property
     def input_limits(self) -> Mapping[str, float] | None:
         if self.passed:
             return None
-        r = self.record
-        limits = self.check.input_limits(r.app, r.screw, r.row)
+        at = self.slot
+        limits = self.check.input_limits(at.app, at.screw, at.row)
         return dict(limits) if limits else None
 
 
-T = TypeVar("T")
+class Slot:
+    """A candidate's place in its batch, and what its sections and checks read there: the
+    application, its screw, its quantities as the checks' sentences read them, and its
+    fixes, each written once. (Sections and checks keep the slot, not the candidate, so
+    a record holds no reference cycle and is freed as soon as it is dropped.)"""
+
+    __slots__ = ("_fixes", "_row", "app", "batch", "k", "screw")
+
+    def __init__(self, batch: "Batch", k: int) -> None:
+        self.batch, self.k, self.app = batch, k, batch.app
+        self.screw: ScrewSpec = batch.screening.table.screws[batch.positions[k]]
+        self._row: Quantities[float] | None = None
+        self._fixes: dict[str, Phrase | None] = {}
+
+    @property
+    def row(self) -> Quantities[float]:
+        """Every quantity as a float (NaN: no such limit)."""
+        if self._row is None:
+            self._row = self.batch.screening.quantities.row(self.batch.positions[self.k])
+        return self._row
+
+    def fix_of(self, check: Check) -> Phrase | None:
+        """What would make ``check`` pass, within what the catalog offers."""
+        if check.name not in self._fixes:
+            reach = self.batch.screening.reach
+            self._fixes[check.name] = check.fix(self.app, self.screw, self.row, reach)
+        return self._fixes[check.name]
 
 
 class Column(Generic[T]):
-    """A record's attribute read from one column of the screening (quantities or table)."""
+    """An attribute of a record or of one of its sections read from one column of the
+    screening (quantities, verdicts or table) when read."""
 
     def __init__(self, name: str) -> None:
         self.name = name
 
-    def __get__(self, record: "Candidate", owner: type) -> T:
-        return cast(T, record.batch.column(self.name)[record.k])
+    def __get__(self, owner: "Candidate | Section", cls: type) -> T:
+        return cast(T, owner.batch.column(self.name)[owner.k])
+
+
+class Section:
+    """A part of a candidate's record (SI) whose numbers are read when first asked for."""
+
+    __slots__ = ("app", "batch", "k", "screw")
+
+    def __init__(self, slot: Slot) -> None:
+        self.batch, self.k, self.app, self.screw = slot.batch, slot.k, slot.app, slot.screw
+
+
+class Torque(Section):
+    """Drive torque breakdown [N m] (seed: inertia + static drag + load); the angular
+    acceleration [rad/s^2] and the inertia the motor sees [kg m^2]."""
+
+    __slots__ = ()
+    inertia_screw_nm = Column[float]("inertia_screw_nm")
+    inertia_mass_nm = Column[float]("inertia_mass_nm")
+    inertia_nm = Column[float]("inertia_nm")
+    drag_nm = Column[float]("drag_nm")
+    load_nm = Column[float]("load_nm")
+    total_nm = Column[float]("total_nm")
+    breakaway_nm = Column[float]("breakaway_nm")
+    required_nm = Column[float]("required_nm")
+    angular_accel_rad_s2 = Column[float]("angular_accel_rad_s2")
+    inertia_kg_m2 = Column[float]("inertia_kg_m2")
+
+    @property
+    def drag_min_nm(self) -> float:
+        return self.screw.drag_torque_min_nm
+
+    @property
+    def drag_max_nm(self) -> float:
+        return self.screw.drag_torque_max_nm
+
+    @property
+    def safety_factor(self) -> float:
+        return self.app.torque_safety_factor
+
+
+class CriticalSpeed(Section):
+    """The screw's critical speed and the speed allowed [rpm], and the margin
+    allowed / running speed."""
+
+    __slots__ = ()
+    theoretical_rpm = Column[float]("critical_rpm")
+    allowed_rpm = Column[float]("allowed_rpm")
+
+    @property
+    def margin(self) -> float:
+        return critical_speed.speed_margin(self.allowed_rpm, self.batch.column("rpm")[self.k])
+
+    @property
+    def safety_factor(self) -> float:
+        return self.app.critical_speed_safety_factor
+
+    @property
+    def end_fixity(self) -> str:
+        return self.app.end_fixity
+
+
+class Life(Section):
+    """The rated travel [m] and, with a stroke and a duty, the life in years."""
+
+    __slots__ = ()
+
+    @property
+    def travel_min_m(self) -> float:
+        return cast(float, self.screw.life_min_m)
+
+    @property
+    def travel_max_m(self) -> float:
+        return cast(float, self.screw.life_max_m)
+
+    @property
+    def years_min(self) -> float | None:
+        return number(self.batch.column("life_years_min")[self.k])
+
+    @property
+    def years_max(self) -> float | None:
+        return number(self.batch.column("life_years_max")[self.k])
 
 
 class Candidate:
@@ -316,7 +431,8 @@ class Candidate:
     def __init__(self, batch: Batch, k: int, judged: Robustness | None = None) -> None:
         self.batch, self.k, self.judged = batch, k, judged
         self.app, self.screening = batch.app, batch.screening
-        self.screw: ScrewSpec = batch.screening.table.screws[batch.positions[k]]
+        self.slot = Slot(batch, k)
+        self.screw = self.slot.screw
         self.quantities = Numbers(batch, k)
 
     def with_robustness(self, judged: Robustness) -> "Candidate":
@@ -331,24 +447,24 @@ class Candidate:
     def hinges_on(self) -> tuple[str, ...]:
         return () if self.judged is None else self.judged.hinges_on
 
-    @cached_property
+    @property
     def row(self) -> Quantities[float]:
         """Every quantity as a float (NaN: no such limit), as the checks' sentences read
-        them (taken for the whole batch)."""
-        return self.batch.rows[self.k]
+        them."""
+        return self.slot.row
 
-    @cached_property
+    @once
     def checks(self) -> tuple[CheckResult, ...]:
         """Every check that applies, in registry order."""
         k = self.k
         return tuple(
-            CheckResult(BY_NAME[name], not failed, demand, capacity, utilization, self)
+            CheckResult(BY_NAME[name], not failed, demand, capacity, utilization, self.slot)
             for name, column in self.batch.checks.items()
             for applies, demand, capacity, utilization, failed in (column[k],)
             if applies
         )
 
-    @cached_property
+    @once
     def governing(self) -> CheckResult | None:
         return governing(self.app, self.checks)
 
@@ -413,38 +529,15 @@ class Candidate:
         extrapolated = bool(self.batch.column("traverse_extrapolated")[self.k])
         return self.traverse_speed_limit_m_s is not None and extrapolated
 
-    @cached_property
+    @once
     def torque(self) -> Torque:
-        """Drive torque breakdown [N m] (seed: inertia + static drag + load)."""
-        q, s = self.quantities, self.screw
-        return Torque(
-            inertia_screw_nm=q.inertia_screw_nm,
-            inertia_mass_nm=q.inertia_mass_nm,
-            inertia_nm=q.inertia_nm,
-            drag_nm=q.drag_nm,
-            drag_min_nm=s.drag_torque_min_nm,
-            drag_max_nm=s.drag_torque_max_nm,
-            load_nm=q.load_nm,
-            total_nm=q.total_nm,
-            breakaway_nm=q.breakaway_nm,
-            safety_factor=self.app.torque_safety_factor,
-            required_nm=q.required_nm,
-            angular_accel_rad_s2=q.angular_accel_rad_s2,
-            inertia_kg_m2=q.inertia_kg_m2,
-        )
+        return Torque(self.slot)
 
-    @cached_property
+    @once
     def critical_speed(self) -> CriticalSpeed:
-        q, app = self.quantities, self.app
-        return CriticalSpeed(
-            q.critical_rpm,
-            q.allowed_rpm,
-            critical_speed.speed_margin(q.allowed_rpm, q.rpm),
-            app.critical_speed_safety_factor,
-            app.end_fixity,
-        )
+        return CriticalSpeed(self.slot)
 
-    @cached_property
+    @once
     def buckling(self) -> Buckling:
         q = self.quantities
         transition = number(q.transition_slenderness)
@@ -461,7 +554,7 @@ class Candidate:
             yield_strength_pa=self.screw.yield_strength_pa,
         )
 
-    @cached_property
+    @once
     def pv(self) -> PV:
         q, limit = self.quantities, self.screw.pv_limit_pa_m_s
         return PV(
@@ -474,14 +567,13 @@ class Candidate:
             max_speed_m_s=None if limit is None else q.pv_max_speed_m_s,
         )
 
-    @cached_property
+    @once
     def life(self) -> Life | None:
-        s, q = self.screw, self.quantities
-        if s.life_min_m is None or s.life_max_m is None:
-            return None
-        return Life(s.life_min_m, s.life_max_m, number(q.life_years_min), number(q.life_years_max))
+        """The rated life; None for a nut without a rating."""
+        s = self.screw
+        return None if s.life_min_m is None or s.life_max_m is None else Life(self.slot)
 
-    @cached_property
+    @once
     def accuracy(self) -> Accuracy:
         s, q = self.screw, self.quantities
         return Accuracy(
@@ -496,6 +588,16 @@ class Candidate:
     def motion(self) -> Motion | None:
         """The move profile and the torque of each segment (None: no stroke given)."""
         return self.batch.motions[self.k]
+
+    @property
+    def profile(self) -> Profile | None:
+        """The move over the stroke (None: no stroke given)."""
+        return None if self.motion is None else self.motion.profile
+
+    @property
+    def segments(self) -> tuple[Segment[float], ...] | None:
+        """Each segment of the cycle with its torque (None: no stroke given)."""
+        return None if self.motion is None else self.motion.segments
 
 
 def records(

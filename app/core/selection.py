@@ -124,18 +124,18 @@ def select(app: Application, candidates: CandidateTable | Sequence[ScrewSpec]) -
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
     found = robust(ranked)
-    rejected = records(app, s, nearest)
+    returned = records(app, s, ranked + nearest, [*found, *[None] * len(nearest)])
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
-        candidates=records(app, s, ranked, found),
-        rejected=rejected,
+        candidates=returned[: len(ranked)],
+        rejected=returned[len(ranked) :],
         evaluated=len(s.index),
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
-        summary=summarize(app, table, len(s.index), n_passed, rejected, by_check),
+        summary=summarize(app, table, len(s.index), n_passed, returned[len(ranked) :], by_check),
         screening=s,
         ranked=tuple(ranked),
         nearest=tuple(nearest),
