@@ -28,6 +28,7 @@ from app.schemas import (
     MaterialIn,
     SummaryOut,
 )
+from app.source import Writer
 from app.units import DEFAULT_UNITS, render
 
 BY_CORE = {field.core: field for field in FIELDS}
@@ -40,7 +41,7 @@ def _prov(p: Provenance) -> dict[str, str]:
 def candidate_view(c: Candidate, view: str, units: Units[str, str] = DEFAULT_UNITS) -> CandidateOut:
     """One candidate as ``CandidateOut`` holding the fields of ``VIEWS[view]`` alone (in
     API units, sentences in ``units``): what the templates, charts and CSV read."""
-    return cast(CandidateOut, reader(CandidateOut, view)(c, c, units))
+    return cast(CandidateOut, reader(CandidateOut, view)(c, c, Writer(units)))
 
 
 def candidate_json(
@@ -48,7 +49,7 @@ def candidate_json(
 ) -> dict[str, Any]:
     """One candidate's ``VIEWS[view]`` as plain JSON values (nested dicts): the compact
     select response, byte for byte what the view's model would serialise."""
-    return cast(dict[str, Any], reader(CandidateOut, view, as_dict=True)(c, c, units))
+    return cast(dict[str, Any], reader(CandidateOut, view, as_dict=True)(c, c, Writer(units)))
 
 
 def selection_summary(sel: Selection) -> dict[str, Any]:

@@ -8,7 +8,7 @@ twenty fields of twenty candidates on every request).
 """
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from functools import cache, lru_cache
 from operator import attrgetter
 from types import UnionType
@@ -20,11 +20,11 @@ from pydantic.fields import FieldInfo
 from app.construct import construct
 from app.core.phrase import Phrase
 from app.schemas import VIEWS, View
-from app.source import From
-from app.units import API_UNITS, DEFAULT_UNITS, render
+from app.source import From, Writer
+from app.units import API_UNITS, DEFAULT_UNITS
 
-#: (source, record, display units) -> the view: a dict of JSON values, or the model.
-Reader = Callable[[Any, Any, Mapping[str, str]], Any]
+#: (source, record, sentences' writer) -> the view: a dict of JSON values, or the model.
+Reader = Callable[[Any, Any, Writer], Any]
 
 
 @cache
@@ -62,7 +62,8 @@ def _expression(
     info: FieldInfo, view: str, path: tuple[str, ...], as_dict: bool, env: dict[str, Any], key: str
 ) -> str:
     """The Python expression of one field's value over ``s`` (the source), ``r`` (the
-    record) and ``u`` (display units); the values it needs go in ``env`` under ``key``."""
+    record) and ``u`` (the sentences' writer); the values it needs go in ``env`` under
+    ``key``."""
     source = next((m for m in info.metadata if isinstance(m, From)), None)
     if source is None:
         env[key] = info.default
@@ -114,7 +115,7 @@ def _whole(values: tuple[Any, ...]) -> tuple[Any, ...] | None:
 def _shared(read: Reader) -> Reader:
     """A frozen output model reads its source alone (no record, no units): built once
     per source (e.g. a catalog value's provenance, the same in every response)."""
-    made = lru_cache(maxsize=8192)(lambda x: read(x, None, DEFAULT_UNITS))
+    made = lru_cache(maxsize=8192)(lambda x: read(x, None, Writer(DEFAULT_UNITS)))
     return lambda x, r, u: made(x)
 
 
@@ -158,15 +159,15 @@ def _scaled(value: Any, scale: float) -> Any:
     return None if math.isnan(value) else value * scale
 
 
-def _plain(value: Any, units: Mapping[str, str]) -> Any:
-    """A value as JSON holds it: NaN as None, tuples as lists, sentences in ``units``."""
+def _plain(value: Any, w: Writer) -> Any:
+    """A value as JSON holds it: NaN as None, tuples as lists, sentences written by ``w``."""
     kind = type(value)
     if kind is str or value is None:
         return value
     if kind is float:
         return None if math.isnan(value) else value
     if kind is tuple:
-        return [_plain(v, units) for v in value]
+        return [_plain(v, w) for v in value]
     if kind is Phrase:
-        return render(value, units)
+        return w.text(value)
     return value

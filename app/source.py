@@ -8,10 +8,12 @@ A path is dotted attribute names (a digit picks an item of a tuple), read from t
 model's source: the record for the candidate model, the value its own ``From`` gives for
 a nested model (a section, each item of a list, each value of a dict; ``From()``: the
 parent's source). A path starting with ``/`` is read from the record whatever the
-source. A tuple of paths gives a list (None when one of them is None). ``quantity`` names
+source. A path never passes through None: the record gives what may be missing as an
+attribute of its own (``profile``, ``life``). A tuple of paths gives a list (None when
+one of them is None). ``quantity`` names
 the core quantity of an SI number, converted to the API's unit (``app.units.API_UNITS``).
 ``via`` computes a value the paths cannot name, from the value at the path and the
-reader's display units (for sentences).
+reader's ``Writer`` (the sentences in the reader's display units).
 """
 
 import math
@@ -23,8 +25,28 @@ from app.core.phrase import Phrase
 from app.core.phrase import Quantity as CoreQuantity
 from app.units import api_value, render
 
-#: A computed value: (the value at the path, the reader's display units) -> output value.
-Via = Callable[[Any, Mapping[str, str]], Any]
+
+class Writer:
+    """Writes the core's sentences in the reader's display units (``app.units.render``),
+    each sentence once: a failed check's fix is shown with the check and in the
+    candidate's joined fix."""
+
+    __slots__ = ("_written", "units")
+
+    def __init__(self, units: Mapping[str, str]) -> None:
+        self.units = units
+        # keyed by identity; each entry keeps its phrase alive, so no key is reused
+        self._written: dict[int, tuple[Phrase, str]] = {}
+
+    def text(self, phrase: Phrase) -> str:
+        written = self._written.get(id(phrase))
+        if written is None:
+            written = self._written[id(phrase)] = (phrase, render(phrase, self.units))
+        return written[1]
+
+
+#: A computed value: (the value at the path, the sentences' writer) -> output value.
+Via = Callable[[Any, Writer], Any]
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,32 +58,32 @@ class From:
     via: Via | None = None
 
 
-def degrees(angle_rad: float, units: Mapping[str, str]) -> float:
+def degrees(angle_rad: float, w: Writer) -> float:
     """An angle [rad] in degrees."""
     return math.degrees(angle_rad)
 
 
-def million_cm(travel_m: tuple[float, float], units: Mapping[str, str]) -> list[float]:
+def million_cm(travel_m: tuple[float, float], w: Writer) -> list[float]:
     """Rated travel [m] in millions of cm, the catalog's unit (1e6 cm = 1e4 m)."""
     return [t / 1e4 for t in travel_m]
 
 
-def check_value(check: Any, units: Mapping[str, str]) -> float | None:
+def check_value(check: Any, w: Writer) -> float | None:
     """A check's demand in the API unit of its quantity (None for a yes/no check)."""
     return None if check.value is None else api_value(check.value, check.quantity)[0]
 
 
-def check_limit(check: Any, units: Mapping[str, str]) -> float | None:
+def check_limit(check: Any, w: Writer) -> float | None:
     """A check's capacity in the API unit of its quantity (None for a yes/no check)."""
     return None if check.limit is None else api_value(check.limit, check.quantity)[0]
 
 
-def check_unit(check: Any, units: Mapping[str, str]) -> str:
+def check_unit(check: Any, w: Writer) -> str:
     """The API unit of a check's value and limit ("" for a yes/no check)."""
     return api_value(0.0, check.quantity)[1]
 
 
-def joined(phrases: tuple[Phrase, ...], units: Mapping[str, str]) -> str | None:
+def joined(phrases: tuple[Phrase, ...], w: Writer) -> str | None:
     """Sentences in the reader's units, joined by spaces (None when there are none)."""
-    text = [render(p, units) for p in phrases]
+    text = [w.text(p) for p in phrases]
     return " ".join(text) if text else None

@@ -12,6 +12,7 @@ same record, so they cannot disagree.
 
 import math
 from collections.abc import Callable, Mapping, Sequence
+from operator import attrgetter
 from typing import Any, Generic, Literal, NamedTuple, TypeVar, cast
 
 import numpy as np
@@ -81,6 +82,8 @@ GEOMETRY_SOURCES = (
     "inertia_per_length",
     "drag_torque",
 )
+#: One check of one candidate: (applies, demand, capacity, utilisation, failed).
+CheckRow = tuple[bool, float, float, float | None, bool]
 #: The screening's per-candidate verdicts a record reads as columns.
 VERDICTS = frozenset({"passed", "max_utilization"})
 #: Positions in a screening, as an index array (NumPy picks with one four times faster
@@ -103,7 +106,7 @@ def governing(app: Application, checks: Sequence[J]) -> J | None:
     the highest utilisation, or the first failed yes/no check when no numeric one fails."""
     rejecting = [c for c in checks if c.kind == "limit" or app.advice == "reject"]
     utilized = [c for c in rejecting if c.utilization is not None]
-    top = max(utilized, key=lambda c: c.utilization or 0.0) if utilized else None
+    top = max(utilized, key=attrgetter("utilization")) if utilized else None
     failed = [c for c in rejecting if not c.passed]
     if failed and (top is None or top.passed):
         return failed[0]
@@ -146,25 +149,28 @@ class Batch:
         return values
 
     @once
-    def checks(self) -> dict[str, list[tuple[bool, float, float, float | None, bool]]]:
-        """Per check, per candidate: (applies, demand, capacity, utilisation, failed),
-        demand and capacity NaN for a yes/no check; utilisation None where it is not a
-        finite number (no demand or limit, or a zero limit)."""
+    def checks(self) -> dict[str, tuple[Check, list[CheckRow]]]:
+        """Per check: the check and, per candidate, (applies, demand, capacity, utilisation,
+        failed), demand and capacity NaN for a yes/no check; utilisation None where it is
+        not a finite number (no demand or limit, or a zero limit)."""
         sc, n = self.screening, len(self.at)
         out = {}
         for name, m in sc.measures.items():
             nan = [math.nan] * n
             demand = nan if m.demand is None else m.demand[self.at].tolist()
             capacity = nan if m.capacity is None else m.capacity[self.at].tolist()
-            out[name] = list(
-                zip(
-                    m.applicable[self.at].tolist(),
-                    demand,
-                    capacity,
-                    _utilizations(sc.utilization[name], self.at),
-                    sc.failed[name][self.at].tolist(),
-                    strict=True,
-                )
+            out[name] = (
+                BY_NAME[name],
+                list(
+                    zip(
+                        m.applicable[self.at].tolist(),
+                        demand,
+                        capacity,
+                        _utilizations(sc.utilization[name], self.at),
+                        sc.failed[name][self.at].tolist(),
+                        strict=True,
+                    )
+                ),
             )
         return out
 
@@ -223,20 +229,14 @@ class CheckResult(NamedTuple):
     counted, not read.
     """
 
-    check: Check
+    name: str
+    kind: Literal["limit", "advice"]
     passed: bool
+    utilization: float | None
     demand: float
     capacity: float
-    utilization: float | None
+    check: Check
     slot: "Slot"
-
-    @property
-    def name(self) -> str:
-        return self.check.name
-
-    @property
-    def kind(self) -> Literal["limit", "advice"]:
-        return self.check.kind
 
     @property
     def label(self) -> str:
@@ -321,7 +321,8 @@ class Column(Generic[T]):
         self.name = name
 
     def __get__(self, owner: "Candidate | Section", cls: type) -> T:
-        return cast(T, owner.batch.column(self.name)[owner.k])
+        value: T = owner.batch.column(self.name)[owner.k]
+        return value
 
 
 class Section:
@@ -456,10 +457,10 @@ class Candidate:
     @once
     def checks(self) -> tuple[CheckResult, ...]:
         """Every check that applies, in registry order."""
-        k = self.k
+        k, slot = self.k, self.slot
         return tuple(
-            CheckResult(BY_NAME[name], not failed, demand, capacity, utilization, self.slot)
-            for name, column in self.batch.checks.items()
+            CheckResult(name, check.kind, not failed, utilization, demand, capacity, check, slot)
+            for name, (check, column) in self.batch.checks.items()
             for applies, demand, capacity, utilization, failed in (column[k],)
             if applies
         )
