@@ -338,6 +338,9 @@ class CandidateOut(BaseModel):
     lead_mm: Annotated[float, From("screw.lead_m", "length")]
     lead_angle_deg: Annotated[float, From("lead_angle_rad", via=degrees)]
     coated: Annotated[bool, From("screw.coated")]
+    nut_material: Annotated[str, From("screw.nut_material")] = Field(
+        description="The nut's material, as the catalog names it; empty for a custom screw."
+    )
     axial_load_n: Annotated[float, From("axial_load_n", "force")] = Field(
         description="Running thrust at constant speed (PV uses it)."
     )
@@ -441,7 +444,7 @@ def whole(*groups: str) -> dict[str, Any]:
 
 
 #: What names a candidate, and its verdict: in the row and the summary alike.
-NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated"
+NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
 VERDICT = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
 #: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
 VIEWS: dict[str, View] = {
@@ -454,7 +457,7 @@ VIEWS: dict[str, View] = {
     ),
     "summary": {
         **whole(NAMED, "rpm efficiency self_locking", VERDICT),
-        "torque": whole("total_nm"),
+        "torque": whole("total_nm peak_nm rms_nm"),
         "critical_speed": whole("margin"),
         "life": whole("years"),
     },
