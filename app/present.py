@@ -62,12 +62,15 @@ def selection_summary(sel: Selection) -> dict[str, Any]:
     }
 
 
-def selection_out(sel: Selection, units: Units[str, str] = DEFAULT_UNITS) -> dict[str, Any]:
-    """Candidates, rejected, counts and summary of a selection in full (the rest of
-    SelectOut is the caller's: inputs, links, catalog version)."""
+def selection_out(
+    sel: Selection, units: Units[str, str] = DEFAULT_UNITS, view: str = "full"
+) -> dict[str, Any]:
+    """Candidates, rejected, counts and summary of a selection, the candidates in
+    ``VIEWS[view]`` (the rest of SelectOut is the caller's: inputs, links, catalog
+    version)."""
     return {
-        "candidates": [candidate_view(c, "full", units) for c in sel.candidates],
-        "rejected": [candidate_view(c, "full", units) for c in sel.rejected],
+        "candidates": [candidate_view(c, view, units) for c in sel.candidates],
+        "rejected": [candidate_view(c, view, units) for c in sel.rejected],
         **counts_and_summary(sel, units),
     }
 

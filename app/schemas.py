@@ -325,8 +325,9 @@ class CandidateOut(BaseModel):
     """One candidate: every number, every check with its message, formula and fix, and
     the provenance of the catalog values it uses. Each field says where it comes from in
     the core's candidate record (``From``); the forms of a candidate (``VIEWS``: the
-    results table's row, the compact select's summary, a rejected candidate, the CSV) are
-    sets of these fields, and ``full`` is all of them."""
+    results table's row, the compact select's summary, a rejected candidate in the
+    compact select, the CSV's row) are sets of these fields, and ``full`` is all of
+    them."""
 
     id: Annotated[str, From("screw.id")]
     series: Annotated[str, From("screw.series_id")]
@@ -462,6 +463,16 @@ VIEWS: dict[str, View] = {
         "life": whole("years"),
     },
     "rejected": whole("id governing_check failed fix"),
+    "csv": {
+        **whole(
+            "id series anti_backlash outer_diameter_mm root_diameter_mm lead_mm coated rpm "
+            "efficiency self_locking utilization governing_check fix"
+        ),
+        "torque": whole("total_nm inertia_nm drag_nm load_nm"),
+        "holding_torque": whole("seed_method_nm physics_nm"),
+        "critical_speed": whole("allowed_rpm"),
+        "life": whole("years"),
+    },
     "full": whole(*CandidateOut.model_fields),
 }
 

@@ -39,12 +39,16 @@ class UnknownScrew(LookupError):
 
 
 def run_selection(
-    inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str] = DEFAULT_UNITS
+    inputs: ApplicationIn,
+    catalog: Catalog,
+    units: Mapping[str, str] = DEFAULT_UNITS,
+    view: str = "full",
 ) -> SelectOut:
     """Select and rank over the catalog: the API's select response, its sentences in
-    ``units`` (the API's own by default)."""
+    ``units`` (the API's own by default), its candidates in ``VIEWS[view]`` (every field
+    by default; "csv": the CSV export's)."""
     selection = select(inputs.to_core(), catalog.table)
-    return construct_select_out(inputs, catalog, selection_out(selection, units))
+    return construct_select_out(inputs, catalog, selection_out(selection, units, view))
 
 
 def construct_select_out(

@@ -10,7 +10,10 @@ from fastapi.testclient import TestClient
 
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
+from app.fields import FIELDS
 from app.schemas import VIEWS, ApplicationIn, CandidateOut, CandidateSummaryOut
+from app.service import run_selection
+from app.web.export import results_csv
 
 AXIS = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}
 #: A move of 300 mm with 5 kg accelerated at 2 m/s^2: every candidate has a motion.
@@ -86,3 +89,18 @@ def test_the_results_table_shows_the_nut_and_the_motor_torque(
         assert (motor is not None) == move
         if motor is not None:
             assert motor.get_text().startswith("motor peak ") and " · RMS " in motor.get_text()
+
+
+@pytest.mark.parametrize(
+    "params",
+    [AXIS, MOVE, {"load_n": 5000, "speed_mm_s": 800, "length_mm": 2000}],
+    ids=["passing", "move", "nothing-passes"],
+)
+def test_the_csv_view_writes_the_csv_of_the_full_form(
+    catalog: Catalog, params: dict[str, Any]
+) -> None:
+    inputs = ApplicationIn.model_validate(params)
+    units = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
+    full = results_csv(run_selection(inputs, catalog, units), units)
+    assert results_csv(run_selection(inputs, catalog, units, view="csv"), units) == full
+    assert full.count("\r\n") > len(FIELDS) + 3

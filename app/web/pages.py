@@ -207,7 +207,7 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
 async def export_csv(request: Request, catalog: CatalogDep) -> Response:
     """The result table as CSV in the link's display units."""
     inputs, units = _link_inputs(request.query_params)
-    body = results_csv(run_selection(inputs, catalog, units), units)
+    body = results_csv(run_selection(inputs, catalog, units, view="csv"), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
 
