@@ -85,7 +85,7 @@ GEOMETRY_SOURCES = (
 #: One check of one candidate: (applies, demand, capacity, utilisation, failed).
 CheckRow = tuple[bool, float, float, float | None, bool]
 #: The screening's per-candidate verdicts a record reads as columns.
-VERDICTS = frozenset({"passed"})
+VERDICTS = frozenset({"passed", "max_utilization"})
 #: Positions in a screening, as an index array (NumPy picks with one four times faster
 #: than with a list).
 Positions = NDArray[np.intp]
@@ -137,8 +137,8 @@ class Batch:
 
     def column(self, name: str) -> list[Any]:
         """A column of the screening at the batch's positions, as Python values: a
-        quantity (``Quantities``), else the verdict (``passed``), else a column of the
-        table."""
+        quantity (``Quantities``), else a verdict (``passed``, ``max_utilization``), else
+        a column of the table."""
         values = self._columns.get(name)
         if values is None:
             sc = self.screening
@@ -426,6 +426,7 @@ class Candidate:
     holding_torque_seed_nm = Column[float]("holding_seed_nm")
     holding_torque_physics_nm = Column[float]("holding_physics_nm")
     brake_torque_nm = Column[float]("brake_nm")
+    max_utilization = Column[float]("max_utilization")
     passed = Column[bool]("passed")
 
     def __init__(self, batch: Batch, k: int, judged: Robustness | None = None) -> None:
