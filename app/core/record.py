@@ -125,28 +125,35 @@ def limit_provenance(check: Judged | None, s: ScrewSpec) -> ProvenanceKind | Non
     return min(kinds, key=CERTAINTY.index) if kinds else None
 
 
+class Columns(dict[str, list[Any]]):
+    """The screening's columns at a batch's positions, as Python values, each taken when
+    first read: a quantity (``Quantities``), else a verdict (``passed``,
+    ``max_utilization``), else a column of the table. (A dict, so that reading a taken
+    column is one subscript.)"""
+
+    def __init__(self, sc: Screening, at: Positions) -> None:
+        super().__init__()
+        self.screening, self.at = sc, at
+
+    def __missing__(self, name: str) -> list[Any]:
+        sc = self.screening
+        source = getattr(sc.quantities, name, None)
+        if source is None:
+            source = getattr(sc, name) if name in VERDICTS else getattr(sc.table, name)
+        values: list[Any] = source[self.at].tolist()
+        self[name] = values
+        return values
+
+
 class Batch:
     """The screening's arrays at the positions of some candidates: each column taken for
-    all of them at once, when first read."""
+    all of them at once, when first read (``columns``)."""
 
     def __init__(self, app: Application, sc: Screening, positions: Sequence[int]) -> None:
         self.app, self.screening = app, sc
         self.positions = [int(i) for i in positions]
         self.at = positions_array(self.positions)
-        self._columns: dict[str, list[Any]] = {}
-
-    def column(self, name: str) -> list[Any]:
-        """A column of the screening at the batch's positions, as Python values: a
-        quantity (``Quantities``), else a verdict (``passed``, ``max_utilization``), else
-        a column of the table."""
-        values = self._columns.get(name)
-        if values is None:
-            sc = self.screening
-            source = getattr(sc.quantities, name, None)
-            if source is None:
-                source = getattr(sc, name) if name in VERDICTS else getattr(sc.table, name)
-            values = self._columns[name] = source[self.at].tolist()
-        return values
+        self.columns = Columns(sc, self.at)
 
     @once
     def checks(self) -> dict[str, tuple[Check, list[CheckRow]]]:
@@ -180,10 +187,10 @@ class Batch:
         p = motion.move_profile(self.app)
         if p is None:
             return [None] * len(self.at)
-        hold = np.array(self.column("brake_nm"))
+        hold = np.array(self.columns["brake_nm"])
         parts = motion.segments(self.app, p, self.screening.table.take(self.at), hold)
         columns = [(s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist()) for s in parts]
-        peak, rms = self.column("motor_peak_nm"), self.column("motor_rms_nm")
+        peak, rms = self.columns["motor_peak_nm"], self.columns["motor_rms_nm"]
         return [
             Motion(
                 profile=p,
@@ -216,7 +223,7 @@ class Numbers:
         self._batch, self._k = batch, k
 
     def __getattr__(self, name: str) -> float:
-        return float(self._batch.column(name)[self._k])
+        return float(self._batch.columns[name][self._k])
 
 
 class CheckResult(NamedTuple):
@@ -321,7 +328,7 @@ class Column(Generic[T]):
         self.name = name
 
     def __get__(self, owner: "Candidate | Section", cls: type) -> T:
-        value: T = owner.batch.column(self.name)[owner.k]
+        value: T = owner.batch.columns[self.name][owner.k]
         return value
 
 
@@ -373,7 +380,7 @@ class CriticalSpeed(Section):
 
     @property
     def margin(self) -> float:
-        return critical_speed.speed_margin(self.allowed_rpm, self.batch.column("rpm")[self.k])
+        return critical_speed.speed_margin(self.allowed_rpm, self.batch.columns["rpm"][self.k])
 
     @property
     def safety_factor(self) -> float:
@@ -399,11 +406,11 @@ class Life(Section):
 
     @property
     def years_min(self) -> float | None:
-        return number(self.batch.column("life_years_min")[self.k])
+        return number(self.batch.columns["life_years_min"][self.k])
 
     @property
     def years_max(self) -> float | None:
-        return number(self.batch.column("life_years_max")[self.k])
+        return number(self.batch.columns["life_years_max"][self.k])
 
 
 class Candidate:
@@ -451,13 +458,14 @@ class Candidate:
     @once
     def checks(self) -> tuple[CheckResult, ...]:
         """Every check that applies, in registry order."""
-        k, slot = self.k, self.slot
-        return tuple(
-            CheckResult(name, check.kind, not failed, utilization, demand, capacity, check, slot)
-            for name, (check, column) in self.batch.checks.items()
-            for applies, demand, capacity, utilization, failed in (column[k],)
-            if applies
-        )
+        k, slot, out = self.k, self.slot, []
+        for name, (check, column) in self.batch.checks.items():
+            applies, demand, capacity, utilization, failed = column[k]
+            if applies:
+                values = (name, check.kind, not failed, utilization, demand, capacity, check, slot)
+                # tuple.__new__ builds the named tuple without its Python-level __new__
+                out.append(tuple.__new__(CheckResult, values))
+        return tuple(out)
 
     @once
     def governing(self) -> CheckResult | None:
@@ -517,11 +525,11 @@ class Candidate:
 
     @property
     def traverse_speed_limit_m_s(self) -> float | None:
-        return number(self.batch.column("traverse_limit_m_s")[self.k])
+        return number(self.batch.columns["traverse_limit_m_s"][self.k])
 
     @property
     def traverse_extrapolated(self) -> bool:
-        extrapolated = bool(self.batch.column("traverse_extrapolated")[self.k])
+        extrapolated = bool(self.batch.columns["traverse_extrapolated"][self.k])
         return self.traverse_speed_limit_m_s is not None and extrapolated
 
     @once
