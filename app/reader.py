@@ -17,7 +17,7 @@ from typing import Any, Literal, Union, cast, get_args, get_origin
 from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
-from app.construct import construct
+from app.construct import construct, from_fields
 from app.core.phrase import Phrase
 from app.schemas import VIEWS, View
 from app.source import From, Writer
@@ -35,14 +35,16 @@ def reader(
     a nested model) from a source: as a dict of JSON values (``as_dict``) or as the model
     holding the view's fields alone (``construct``, no validation)."""
     shown = _view(model, view, path)
-    env: dict[str, Any] = {"construct": construct, "model": model, "_plain": _plain}
+    whole = len(shown) == len(model.model_fields)
+    make = from_fields if whole else construct
+    env: dict[str, Any] = {"make": make, "model": model, "_plain": _plain}
     items = [
         f"{name!r}: {_expression(info, view, (*path, name), as_dict, env, f'_{i}')}"
         for i, (name, info) in enumerate(model.model_fields.items())
         if name in shown
     ]
     values = "{" + ", ".join(items) + "}"
-    body = values if as_dict else f"construct(model, **{values})"
+    body = values if as_dict else f"make(model, {values})" if whole else f"make(model, **{values})"
     exec(f"def read(s, r, u):\n    return {body}\n", env)
     return cast(Reader, env["read"])
 
@@ -89,6 +91,8 @@ def _expression(
         return f"(v if (v := {value}) == v else None)"
     if kind == "text":
         return f"(v if type(v := {value}) is str else _plain(v, u))"
+    if kind == "texts":
+        return f"list({value})"
     return value if kind == "raw" else f"_plain({value}, u)"
 
 
@@ -137,14 +141,17 @@ def _nested(annotation: Any) -> tuple[type[BaseModel] | None, str]:
 
 def _kind(annotation: Any) -> str:
     """How a value of this type is written: "number" (a float: NaN as None), "text" (a
-    string, or a sentence to write), "raw" (yes/no, a count, a choice: as it is) or
-    "plain" (anything else: ``_plain``)."""
+    string, or a sentence to write), "texts" (a list of strings, from any sequence of
+    them), "raw" (yes/no, a count, a choice: as it is) or "plain" (anything else:
+    ``_plain``)."""
     args = set(get_args(annotation)) if get_origin(annotation) in (UnionType, Union) else set()
     types = (args or {annotation}) - {type(None)}
     if types <= {float}:
         return "number"
     if types <= {str}:
         return "text"
+    if annotation == list[str]:
+        return "texts"
     if all(t in (bool, int) or get_origin(t) is Literal for t in types):
         return "raw"
     return "plain"

@@ -70,12 +70,12 @@ def million_cm(travel_m: tuple[float, float], w: Writer) -> list[float]:
 
 def check_value(check: Any, w: Writer) -> float | None:
     """A check's demand in the API unit of its quantity (None for a yes/no check)."""
-    return None if check.value is None else api_value(check.value, check.quantity)[0]
+    return api_value(check.demand, check.check.quantity)[0] if check.numeric else None
 
 
 def check_limit(check: Any, w: Writer) -> float | None:
     """A check's capacity in the API unit of its quantity (None for a yes/no check)."""
-    return None if check.limit is None else api_value(check.limit, check.quantity)[0]
+    return api_value(check.capacity, check.check.quantity)[0] if check.numeric else None
 
 
 def check_unit(check: Any, w: Writer) -> str:
