@@ -439,9 +439,19 @@ class Candidate:
     def __init__(self, batch: Batch, k: int, judged: Robustness | None = None) -> None:
         self.batch, self.k, self.judged = batch, k, judged
         self.app = batch.app
-        self.slot = Slot(batch, k)
-        self.screw = self.slot.screw
-        self.quantities = Numbers(batch, k)
+
+    @once
+    def slot(self) -> Slot:
+        return Slot(self.batch, self.k)
+
+    @once
+    def screw(self) -> ScrewSpec:
+        return self.slot.screw
+
+    @once
+    def quantities(self) -> Numbers:
+        """Every quantity (``Quantities``' names, SI), each read when first asked for."""
+        return Numbers(self.batch, self.k)
 
     def with_robustness(self, judged: Robustness) -> "Candidate":
         """The same candidate with its robustness known."""
