@@ -82,8 +82,6 @@ GEOMETRY_SOURCES = (
     "inertia_per_length",
     "drag_torque",
 )
-#: One check of one candidate: (applies, demand, capacity, utilisation, failed).
-CheckRow = tuple[bool, float, float, float | None, bool]
 #: The screening's per-candidate verdicts a record reads as columns.
 VERDICTS = frozenset({"passed", "max_utilization"})
 #: Positions in a screening, as an index array (NumPy picks with one four times faster
@@ -156,30 +154,38 @@ class Batch:
         self.columns = Columns(sc, self.at)
 
     @once
-    def checks(self) -> dict[str, tuple[Check, list[CheckRow]]]:
-        """Per check: the check and, per candidate, (applies, demand, capacity, utilisation,
-        failed), demand and capacity NaN for a yes/no check; utilisation None where it is
-        not a finite number (no demand or limit, or a zero limit)."""
-        sc, n = self.screening, len(self.at)
-        out = {}
+    def slots(self) -> list["Slot"]:
+        """Each candidate's slot: what its sections and checks read."""
+        sc, app = self.screening, self.app
+        return [Slot(app, sc, i) for i in self.positions]
+
+    @once
+    def results(self) -> list[tuple["CheckResult", ...]]:
+        """Per candidate, every check that applies, in registry order: read from the
+        screening's arrays in one pass over the checks. Demand and capacity are NaN for
+        a yes/no check; the utilisation None where it is not a finite number (no demand
+        or limit, or a zero limit)."""
+        sc, at, slots = self.screening, self.at, self.slots
+        nan = [math.nan] * len(at)
+        per: list[list[CheckResult]] = [[] for _ in at]
         for name, m in sc.measures.items():
-            nan = [math.nan] * n
-            demand = nan if m.demand is None else m.demand[self.at].tolist()
-            capacity = nan if m.capacity is None else m.capacity[self.at].tolist()
-            out[name] = (
-                BY_NAME[name],
-                list(
-                    zip(
-                        m.applicable[self.at].tolist(),
-                        demand,
-                        capacity,
-                        _utilizations(sc.utilization[name], self.at),
-                        sc.failed[name][self.at].tolist(),
-                        strict=True,
-                    )
-                ),
+            check = BY_NAME[name]
+            rows = zip(
+                m.applicable[at].tolist(),
+                nan if m.demand is None else m.demand[at].tolist(),
+                nan if m.capacity is None else m.capacity[at].tolist(),
+                _utilizations(sc.utilization[name], at),
+                sc.failed[name][at].tolist(),
+                slots,
+                per,
+                strict=True,
             )
-        return out
+            for applies, demand, capacity, utilization, failed, slot, out in rows:
+                if applies:
+                    values = (name, check.kind, not failed, utilization, demand, capacity)
+                    # tuple.__new__ builds the named tuple without its Python-level __new__
+                    out.append(tuple.__new__(CheckResult, (*values, check, slot)))
+        return [tuple(checks) for checks in per]
 
     @once
     def motions(self) -> list[Motion | None]:
@@ -292,16 +298,16 @@ class CheckResult(NamedTuple):
 
 
 class Slot:
-    """A candidate's place in its batch, and what its sections and checks read there: the
-    application, its screw, its quantities as the checks' sentences read them, and its
-    fixes, each written once. (Sections and checks keep the slot, not the candidate, so
-    a record holds no reference cycle and is freed as soon as it is dropped.)"""
+    """What a candidate's checks read to write their sentences: the application, its
+    screw, its quantities and the catalog's reach, and its fixes, each written once. (A
+    slot holds no reference to the record or its batch, so the batch keeps the slots
+    and a record holds no reference cycle: it is freed as soon as it is dropped.)"""
 
-    __slots__ = ("_fixes", "_row", "app", "batch", "k", "screw")
+    __slots__ = ("_fixes", "_row", "app", "position", "screening", "screw")
 
-    def __init__(self, batch: "Batch", k: int) -> None:
-        self.batch, self.k, self.app = batch, k, batch.app
-        self.screw: ScrewSpec = batch.screening.table.screws[batch.positions[k]]
+    def __init__(self, app: Application, sc: Screening, position: int) -> None:
+        self.app, self.screening, self.position = app, sc, position
+        self.screw: ScrewSpec = sc.table.screws[position]
         self._row: Quantities[float] | None = None
         self._fixes: dict[str, Phrase | None] = {}
 
@@ -309,13 +315,13 @@ class Slot:
     def row(self) -> Quantities[float]:
         """Every quantity as a float (NaN: no such limit)."""
         if self._row is None:
-            self._row = self.batch.screening.quantities.row(self.batch.positions[self.k])
+            self._row = self.screening.quantities.row(self.position)
         return self._row
 
     def fix_of(self, check: Check) -> Phrase | None:
         """What would make ``check`` pass, within what the catalog offers."""
         if check.name not in self._fixes:
-            reach = self.batch.screening.reach
+            reach = self.screening.reach
             self._fixes[check.name] = check.fix(self.app, self.screw, self.row, reach)
         return self._fixes[check.name]
 
@@ -337,8 +343,9 @@ class Section:
 
     __slots__ = ("app", "batch", "k", "screw")
 
-    def __init__(self, slot: Slot) -> None:
-        self.batch, self.k, self.app, self.screw = slot.batch, slot.k, slot.app, slot.screw
+    def __init__(self, batch: "Batch", k: int) -> None:
+        self.batch, self.k, self.app = batch, k, batch.app
+        self.screw = batch.slots[k].screw
 
 
 class Torque(Section):
@@ -441,12 +448,8 @@ class Candidate:
         self.app = batch.app
 
     @once
-    def slot(self) -> Slot:
-        return Slot(self.batch, self.k)
-
-    @once
     def screw(self) -> ScrewSpec:
-        return self.slot.screw
+        return self.batch.slots[self.k].screw
 
     @once
     def quantities(self) -> Numbers:
@@ -465,17 +468,10 @@ class Candidate:
     def hinges_on(self) -> tuple[str, ...]:
         return () if self.judged is None else self.judged.hinges_on
 
-    @once
+    @property
     def checks(self) -> tuple[CheckResult, ...]:
         """Every check that applies, in registry order."""
-        k, slot, out = self.k, self.slot, []
-        for name, (check, column) in self.batch.checks.items():
-            applies, demand, capacity, utilization, failed = column[k]
-            if applies:
-                values = (name, check.kind, not failed, utilization, demand, capacity, check, slot)
-                # tuple.__new__ builds the named tuple without its Python-level __new__
-                out.append(tuple.__new__(CheckResult, values))
-        return tuple(out)
+        return self.batch.results[self.k]
 
     @once
     def governing(self) -> CheckResult | None:
@@ -544,11 +540,11 @@ class Candidate:
 
     @once
     def torque(self) -> Torque:
-        return Torque(self.slot)
+        return Torque(self.batch, self.k)
 
     @once
     def critical_speed(self) -> CriticalSpeed:
-        return CriticalSpeed(self.slot)
+        return CriticalSpeed(self.batch, self.k)
 
     @once
     def buckling(self) -> Buckling:
@@ -584,7 +580,7 @@ class Candidate:
     def life(self) -> Life | None:
         """The rated life; None for a nut without a rating."""
         s = self.screw
-        return None if s.life_min_m is None or s.life_max_m is None else Life(self.slot)
+        return None if s.life_min_m is None or s.life_max_m is None else Life(self.batch, self.k)
 
     @once
     def accuracy(self) -> Accuracy:
