@@ -6,7 +6,11 @@ values); the application input ``ApplicationIn`` is generated from the field tab
 """
 
 import math
-from typing import Annotated, Any, Literal
+import operator
+from collections.abc import Mapping
+from functools import reduce
+from types import GenericAlias, UnionType
+from typing import Annotated, Any, Literal, Union, cast, get_args, get_origin
 
 from pydantic import (
     BaseModel,
@@ -15,12 +19,31 @@ from pydantic import (
     Field,
     Tag,
     ValidationInfo,
+    create_model,
     field_validator,
 )
 
 from app.core.model import ProvenanceKind
 from app.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
 from app.inputs import NotBool, bounded_number
+from app.source import (
+    From,
+    check_limit,
+    check_unit,
+    check_value,
+    degrees,
+    joined,
+    million_cm,
+)
+
+TORQUE_NOTE = (
+    "Torque of the screw assembly alone; bearings, motor shaft, moving parts and "
+    "misalignment are extra (seed). The torque safety factor covers them: 1.0 by default, "
+    "1.3 to 2 is common at the planning stage."
+)
+LIFE_NOTE = (
+    "Life varies with load, environment and duty cycle; longer leads generally last longer (seed)."
+)
 
 
 class MaterialIn(BaseModel):
@@ -132,224 +155,365 @@ class EvaluateIn(BaseModel):
 
 
 class CheckOut(BaseModel):
-    name: str
-    label: str
-    kind: Literal["limit", "advice"] = Field(
+    name: Annotated[str, From("name")]
+    label: Annotated[str, From("label")]
+    kind: Annotated[Literal["limit", "advice"], From("kind")] = Field(
         description="A limit rejects a candidate; advice is reported beside it."
     )
-    passed: bool
-    value: float | None = Field(description="Demand, in ``unit``; null for yes/no checks.")
-    limit: float | None = Field(description="Capacity, in ``unit``; null for yes/no checks.")
-    unit: str
-    utilization: float | None = Field(description="value / limit; above 1 fails.")
-    message: str
-    formula: str
-    sources: list[str]
-    fix: str | None
+    passed: Annotated[bool, From("passed")]
+    value: Annotated[float | None, From(via=check_value)] = Field(
+        description="Demand, in ``unit``; null for yes/no checks."
+    )
+    limit: Annotated[float | None, From(via=check_limit)] = Field(
+        description="Capacity, in ``unit``; null for yes/no checks."
+    )
+    unit: Annotated[str, From(via=check_unit)]
+    utilization: Annotated[float | None, From("utilization")] = Field(
+        description="value / limit; above 1 fails."
+    )
+    message: Annotated[str, From("message")]
+    formula: Annotated[str, From("formula")]
+    sources: Annotated[list[str], From("sources")]
+    fix: Annotated[str | None, From("fix")]
+
+
+class FailedCheckOut(BaseModel):
+    name: Annotated[str, From("name")]
+    kind: Annotated[Literal["limit", "advice"], From("kind")]
+    utilization: Annotated[float | None, From("utilization")] = Field(
+        description="value / limit; above 1 fails."
+    )
+    fix: Annotated[str | None, From("fix")]
 
 
 class ProvenanceOut(BaseModel):
-    kind: ProvenanceKind
-    source: str
+    model_config = ConfigDict(frozen=True)
+
+    kind: Annotated[ProvenanceKind, From("kind")]
+    source: Annotated[str, From("source")]
 
 
 class TorqueOut(BaseModel):
-    inertia_nm: float
-    inertia_screw_nm: float
-    inertia_mass_nm: float = Field(
+    inertia_nm: Annotated[float, From("inertia_nm", "torque")]
+    inertia_screw_nm: Annotated[float, From("inertia_screw_nm", "torque")]
+    inertia_mass_nm: Annotated[float, From("inertia_mass_nm", "torque")] = Field(
         description="m a lead / (2 pi eta): the accelerating force through the thread."
     )
-    drag_nm: float
-    drag_range_nm: list[float]
-    load_nm: float
-    total_nm: float
-    breakaway_nm: float = Field(
+    drag_nm: Annotated[float, From("drag_nm", "torque")]
+    drag_range_nm: Annotated[list[float], From(("drag_min_nm", "drag_max_nm"), "torque")]
+    load_nm: Annotated[float, From("load_nm", "torque")]
+    total_nm: Annotated[float, From("total_nm", "torque")]
+    breakaway_nm: Annotated[float, From("breakaway_nm", "torque")] = Field(
         description="Starting from rest: (F + m a) lead / (2 pi eta_static) + J alpha + drag."
     )
-    safety_factor: float
-    required_nm: float
-    note: str
-    peak_nm: float | None = Field(
+    safety_factor: Annotated[float, From("safety_factor")]
+    required_nm: Annotated[float, From("required_nm", "torque")]
+    note: str = TORQUE_NOTE
+    peak_nm: Annotated[float | None, From("/quantities.motor_peak_nm", "torque")] = Field(
         default=None, description="Largest motor torque of the move's segments; null: no stroke."
     )
-    rms_nm: float | None = Field(
+    rms_nm: Annotated[float | None, From("/quantities.motor_rms_nm", "torque")] = Field(
         default=None, description="RMS motor torque over the cycle; null: no stroke."
     )
 
 
 class ProfileOut(BaseModel):
-    kind: Literal["trapezoid", "triangle"] = Field(
+    kind: Annotated[Literal["trapezoid", "triangle"], From("kind")] = Field(
         description="A triangle when the stroke is too short to reach the top speed."
     )
-    accel_time_s: float
-    constant_time_s: float
-    decel_time_s: float
-    move_time_s: float
-    cycle_time_s: float = Field(description="Out and back (up and down), each with its dwell.")
-    peak_speed_mm_s: float = Field(description="The top speed, or the triangle's peak.")
+    accel_time_s: Annotated[float, From("accel_time_s")]
+    constant_time_s: Annotated[float, From("constant_time_s")]
+    decel_time_s: Annotated[float, From("decel_time_s")]
+    move_time_s: Annotated[float, From("move_time_s")]
+    cycle_time_s: Annotated[float, From("cycle_time_s")] = Field(
+        description="Out and back (up and down), each with its dwell."
+    )
+    peak_speed_mm_s: Annotated[float, From("peak_speed_m_s", "speed")] = Field(
+        description="The top speed, or the triangle's peak."
+    )
 
 
 class SegmentOut(BaseModel):
-    name: Literal["accelerate", "constant", "decelerate", "dwell"]
-    direction: Literal["up", "down", "out", "back"]
-    duration_s: float
-    rpm: float = Field(description="The screw's top speed in the segment.")
-    thrust_n: float = Field(description="Against the motion; negative: the load drives.")
-    torque_nm: float = Field(description="Motor torque; negative: the motor brakes.")
+    name: Annotated[Literal["accelerate", "constant", "decelerate", "dwell"], From("name")]
+    direction: Annotated[Literal["up", "down", "out", "back"], From("direction")]
+    duration_s: Annotated[float, From("duration_s")]
+    rpm: Annotated[float, From("rpm")] = Field(description="The screw's top speed in the segment.")
+    thrust_n: Annotated[float, From("thrust_n", "force")] = Field(
+        description="Against the motion; negative: the load drives."
+    )
+    torque_nm: Annotated[float, From("torque_nm", "torque")] = Field(
+        description="Motor torque; negative: the motor brakes."
+    )
 
 
 class CriticalSpeedOut(BaseModel):
-    theoretical_rpm: float
-    allowed_rpm: float
-    margin: float = Field(description="allowed_rpm / rpm: how many times the speed fits.")
-    safety_factor: float
-    end_fixity: str
+    theoretical_rpm: Annotated[float, From("theoretical_rpm")]
+    allowed_rpm: Annotated[float, From("allowed_rpm")]
+    margin: Annotated[float, From("margin")] = Field(
+        description="allowed_rpm / rpm: how many times the speed fits."
+    )
+    safety_factor: Annotated[float, From("safety_factor")]
+    end_fixity: Annotated[str, From("end_fixity")]
 
 
 class BucklingOut(BaseModel):
-    applies: bool
-    critical_load_n: float = Field(description="Euler, or Johnson below the transition.")
-    allowed_load_n: float
-    safety_factor: float
-    slenderness: float = Field(description="(L / sqrt(k)) / (d_r / 4).")
-    transition_slenderness: float | None = Field(
+    applies: Annotated[bool, From("applies")]
+    critical_load_n: Annotated[float, From("critical_load_n", "force")] = Field(
+        description="Euler, or Johnson below the transition."
+    )
+    allowed_load_n: Annotated[float, From("allowed_load_n", "force")]
+    safety_factor: Annotated[float, From("safety_factor")]
+    slenderness: Annotated[float, From("slenderness")] = Field(
+        description="(L / sqrt(k)) / (d_r / 4)."
+    )
+    transition_slenderness: Annotated[float | None, From("transition_slenderness")] = Field(
         description="sqrt(2 pi^2 E / S_y): Johnson below it; null without a yield strength."
     )
-    mode: Literal["euler", "johnson"]
-    root_stress_mpa: float = Field(description="Peak thrust over the root area.")
-    yield_strength_mpa: float | None
+    mode: Annotated[Literal["euler", "johnson"], From("mode")]
+    root_stress_mpa: Annotated[float, From("root_stress_pa", "pressure")] = Field(
+        description="Peak thrust over the root area."
+    )
+    yield_strength_mpa: Annotated[float | None, From("yield_strength_pa", "pressure")]
 
 
 class PVOut(BaseModel):
-    value_mpa_m_s: float
-    limit_mpa_m_s: float | None
-    pressure_mpa: float
-    surface_speed_m_s: float
-    max_load_n: float | None
-    max_speed_mm_s: float | None
+    value_mpa_m_s: Annotated[float, From("value_pa_m_s", "pv")]
+    limit_mpa_m_s: Annotated[float | None, From("limit_pa_m_s", "pv")]
+    pressure_mpa: Annotated[float, From("pressure_pa", "pressure")]
+    surface_speed_m_s: Annotated[float, From("surface_speed_m_s")]
+    max_load_n: Annotated[float | None, From("max_load_n", "force")]
+    max_speed_mm_s: Annotated[float | None, From("max_speed_m_s", "speed")]
 
 
 class HoldingTorqueOut(BaseModel):
-    seed_method_nm: float = Field(description="Seed: F lead eta / 2 pi, forward eta.")
-    physics_nm: float = Field(description="F lead eta_b / 2 pi, back-drive eta, static mu.")
-    brake_nm: float = Field(
+    seed_method_nm: Annotated[float, From("holding_torque_seed_nm", "torque")] = Field(
+        description="Seed: F lead eta / 2 pi, forward eta."
+    )
+    physics_nm: Annotated[float, From("holding_torque_physics_nm", "torque")] = Field(
+        description="F lead eta_b / 2 pi, back-drive eta, static mu."
+    )
+    brake_nm: Annotated[float, From("brake_torque_nm", "torque")] = Field(
         description="Holding torque needed: the larger of the two; 0 when self-locking with "
         "margin (before the torque safety factor)."
     )
-    available_nm: float | None = Field(description="The brake or holding torque given.")
+    available_nm: Annotated[float | None, From("app.brake_torque_nm", "torque")] = Field(
+        description="The brake or holding torque given."
+    )
 
 
 class LifeOut(BaseModel):
-    travel_million_cm: list[float]
-    years: list[float] | None
-    note: str
+    travel_million_cm: Annotated[
+        list[float], From(("travel_min_m", "travel_max_m"), via=million_cm)
+    ]
+    years: Annotated[list[float] | None, From(("years_min", "years_max"))]
+    note: str = LIFE_NOTE
 
 
 class AccuracyOut(BaseModel):
-    lead_error_mm: float | None
-    repeatability_mm: float | None
-    backlash_mm: list[float]
-    thermal_growth_mm: float | None
+    lead_error_mm: Annotated[float | None, From("lead_error_m", "length")]
+    repeatability_mm: Annotated[float | None, From("repeatability_m", "length")]
+    backlash_mm: Annotated[list[float], From(("backlash_min_m", "backlash_max_m"), "length")]
+    thermal_growth_mm: Annotated[float | None, From("thermal_growth_m", "length")]
 
 
 class OutgassingOut(BaseModel):
-    hours: float
-    weight_loss_percent: float
+    hours: Annotated[float, From("0")]
+    weight_loss_percent: Annotated[float, From("1")]
 
 
-class CandidateBaseOut(BaseModel):
-    """What every form of a candidate shows: its numbers as the results table and the
-    charts read them, and its verdict."""
+class CandidateOut(BaseModel):
+    """One candidate: every number, every check with its message, formula and fix, and
+    the provenance of the catalog values it uses. Each field says where it comes from in
+    the core's candidate record (``From``); the forms of a candidate (``VIEWS``: the
+    results table's row, the compact select's summary, a rejected candidate in the
+    compact select, the CSV's row) are sets of these fields, and ``full`` is all of
+    them."""
 
-    id: str
-    series: str
-    series_name: str
-    anti_backlash: bool
-    outer_diameter_mm: float
-    lead_mm: float
-    coated: bool
-    axial_load_n: float = Field(description="Running thrust at constant speed (PV uses it).")
-    rpm: float
-    efficiency: float = Field(
-        description="Forward efficiency, Shigley's Acme form, dynamic friction (0-1)."
+    id: Annotated[str, From("screw.id")]
+    series: Annotated[str, From("screw.series_id")]
+    series_name: Annotated[str, From("screw.series_name")]
+    anti_backlash: Annotated[bool, From("screw.anti_backlash")]
+    outer_diameter_mm: Annotated[float, From("screw.outer_diameter_m", "length")]
+    root_diameter_mm: Annotated[float, From("screw.root_diameter_m", "length")]
+    pitch_diameter_mm: Annotated[float, From("pitch_diameter_m", "length")]
+    lead_mm: Annotated[float, From("screw.lead_m", "length")]
+    lead_angle_deg: Annotated[float, From("lead_angle_rad", via=degrees)]
+    coated: Annotated[bool, From("screw.coated")]
+    nut_material: Annotated[str, From("screw.nut_material")] = Field(
+        description="The nut's material, as the catalog names it; empty for a custom screw."
     )
-    self_locking: bool = Field(description="mu_static >= cos(a_n) tan(lambda).")
-    seed_rule_no_backdrive: bool = Field(description="The seed's rule of thumb: lead < OD / 8.")
-    max_self_locking_lead_with_margin_mm: float
-    holding_torque: HoldingTorqueOut
-    torque: TorqueOut
-    critical_speed: CriticalSpeedOut
-    pv: PVOut
-    life: LifeOut | None
-    governing_check: str | None = Field(
-        description="The check with the highest utilisation (or a failed yes/no check)."
+    axial_load_n: Annotated[float, From("axial_load_n", "force")] = Field(
+        description="Running thrust at constant speed (PV uses it)."
     )
-    governing_limit_provenance: ProvenanceKind | None = Field(
-        description="How certain the governing check's limit is: the least certain "
-        "provenance of the values it rests on ('user' for the user's own limit)."
-    )
-    passed: bool = Field(description="True when every limit passes (advice only warns).")
-    robust: bool | None = Field(
-        description="A pass that holds at both ends of every ranged (assumed) catalog value "
-        "it rests on; false: marginal; null: not a pass."
-    )
-    hinges_on: list[str] = Field(
-        description="The ranged catalog values at one end of whose range the pass fails."
-    )
-    profile: ProfileOut | None = Field(
-        default=None, description="The move over the stroke; null without a stroke."
-    )
-    segments: list[SegmentOut] | None = Field(
-        default=None, description="Each segment of the cycle; null without a stroke."
-    )
-
-
-class CandidateOut(CandidateBaseOut):
-    """A candidate in full: every number, every check with its message, formula and fix,
-    and the provenance of the catalog values it uses."""
-
-    root_diameter_mm: float
-    pitch_diameter_mm: float
-    lead_angle_deg: float
-    peak_axial_load_n: float = Field(
+    peak_axial_load_n: Annotated[float, From("peak_axial_load_n", "force")] = Field(
         description="Peak thrust, accelerating or braking the moving mass: F + m a. "
         "Buckling, root stress and the design load are judged on it."
     )
-    efficiency_square_thread: float = Field(
+    rpm: Annotated[float, From("rpm")]
+    efficiency: Annotated[float, From("efficiency")] = Field(
+        description="Forward efficiency, Shigley's Acme form, dynamic friction (0-1)."
+    )
+    efficiency_square_thread: Annotated[float, From("efficiency_square_thread")] = Field(
         description="The manufacturer's square-thread form, for comparison (0-1)."
     )
-    backdrive_efficiency: float = Field(
+    backdrive_efficiency: Annotated[float, From("backdrive_efficiency")] = Field(
         description="The load driving the screw from rest: static friction; 0 = locks. With "
         "static friction below running friction (uncoated) it can exceed the forward value."
     )
-    backdrive_efficiency_running: float = Field(
+    backdrive_efficiency_running: Annotated[float, From("backdrive_efficiency_running")] = Field(
         description="The load driving the screw while it runs: dynamic friction."
     )
-    self_locking_with_margin: bool = Field(
+    self_locking: Annotated[bool, From("self_locking")] = Field(
+        description="mu_static >= cos(a_n) tan(lambda)."
+    )
+    self_locking_with_margin: Annotated[bool, From("self_locking_with_margin")] = Field(
         description="Self-locking with static friction reduced by the self-locking factor."
     )
-    max_self_locking_lead_mm: float = Field(description="Longest lead that still self-locks.")
-    buckling: BucklingOut
-    traverse_speed_limit_mm_s: float | None
-    traverse_extrapolated: bool
-    accuracy: AccuracyOut
-    outgassing: list[OutgassingOut] | None
-    checks: list[CheckOut]
-    warnings: list[CheckOut] = Field(description="Failed advice: reported, not rejected.")
-    fix: str | None = Field(description="For a rejected candidate, what would make it pass.")
-    provenance: dict[str, ProvenanceOut] = Field(
+    seed_rule_no_backdrive: Annotated[bool, From("seed_rule_no_backdrive")] = Field(
+        description="The seed's rule of thumb: lead < OD / 8."
+    )
+    max_self_locking_lead_mm: Annotated[float, From("max_self_locking_lead_m", "length")] = Field(
+        description="Longest lead that still self-locks."
+    )
+    max_self_locking_lead_with_margin_mm: Annotated[
+        float, From("max_self_locking_lead_with_margin_m", "length")
+    ]
+    holding_torque: Annotated[HoldingTorqueOut, From()]
+    torque: Annotated[TorqueOut, From("torque")]
+    critical_speed: Annotated[CriticalSpeedOut, From("critical_speed")]
+    buckling: Annotated[BucklingOut, From("buckling")]
+    pv: Annotated[PVOut, From("pv")]
+    traverse_speed_limit_mm_s: Annotated[float | None, From("traverse_speed_limit_m_s", "speed")]
+    traverse_extrapolated: Annotated[bool, From("traverse_extrapolated")]
+    life: Annotated[LifeOut | None, From("life")]
+    accuracy: Annotated[AccuracyOut, From("accuracy")]
+    outgassing: Annotated[list[OutgassingOut] | None, From("outgassing")]
+    profile: Annotated[ProfileOut | None, From("profile")] = Field(
+        default=None, description="The move over the stroke; null without a stroke."
+    )
+    segments: Annotated[list[SegmentOut] | None, From("segments")] = Field(
+        default=None, description="Each segment of the cycle; null without a stroke."
+    )
+    checks: Annotated[list[CheckOut], From("checks")]
+    utilization: Annotated[dict[str, float | None], From("utilization")] = Field(
+        description="Check -> demand / capacity, for every check that applies (null for a "
+        "yes/no check)."
+    )
+    governing_check: Annotated[str | None, From("governing_check")] = Field(
+        description="The check with the highest utilisation (or a failed yes/no check)."
+    )
+    governing_limit_provenance: Annotated[
+        ProvenanceKind | None, From("governing_limit_provenance")
+    ] = Field(
+        description="How certain the governing check's limit is: the least certain "
+        "provenance of the values it rests on ('user' for the user's own limit)."
+    )
+    passed: Annotated[bool, From("passed")] = Field(
+        description="True when every limit passes (advice only warns)."
+    )
+    robust: Annotated[bool | None, From("robust")] = Field(
+        description="A pass that holds at both ends of every ranged (assumed) catalog value "
+        "it rests on; false: marginal; null: not a pass."
+    )
+    hinges_on: Annotated[list[str], From("hinges_on")] = Field(
+        description="The ranged catalog values at one end of whose range the pass fails."
+    )
+    warnings: Annotated[list[CheckOut], From("warnings")] = Field(
+        description="Failed advice: reported, not rejected."
+    )
+    warned: Annotated[list[str], From("warned")] = Field(
+        description="The names of the advice checks it fails: reported, not rejected."
+    )
+    failed: Annotated[list[FailedCheckOut], From("failed")] = Field(
+        description="Every failed check (limits and advice), in check order."
+    )
+    fix: Annotated[str | None, From("fixes", via=joined)] = Field(
+        description="For a rejected candidate, what would make it pass."
+    )
+    provenance: Annotated[dict[str, ProvenanceOut], From("provenance")] = Field(
         description="Catalog field -> provenance, for the fields this candidate's numbers use."
     )
 
 
-class CandidateRowOut(CandidateBaseOut):
-    """A candidate as a row of the results table (and a curve of its charts): each
-    check's utilisation, not its message; the row's detail loads when opened."""
+#: A view of a model: field name -> True (the whole field) or the view of a nested model.
+View = Mapping[str, Any]
 
-    utilization: dict[str, float | None] = Field(
-        description="Check -> demand / capacity (null for a yes/no check)."
-    )
-    warned: list[str] = Field(description="The advice checks it fails: reported, not rejected.")
+
+def whole(*groups: str) -> dict[str, Any]:
+    """A view taking whole each field named in ``groups`` (names separated by spaces)."""
+    return dict.fromkeys((name for group in groups for name in group.split()), True)
+
+
+#: What names a candidate, and its verdict: in the row and the summary alike.
+NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
+VERDICT = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
+#: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
+VIEWS: dict[str, View] = {
+    "row": whole(
+        NAMED,
+        "axial_load_n rpm efficiency self_locking seed_rule_no_backdrive "
+        "max_self_locking_lead_with_margin_mm holding_torque torque critical_speed pv life "
+        "profile segments",
+        VERDICT,
+    ),
+    "summary": {
+        **whole(NAMED, "rpm efficiency self_locking", VERDICT),
+        "torque": whole("total_nm peak_nm rms_nm"),
+        "critical_speed": whole("margin"),
+        "life": whole("years"),
+    },
+    "rejected": whole("id governing_check failed fix"),
+    "csv": {
+        **whole(
+            "id series anti_backlash outer_diameter_mm root_diameter_mm lead_mm coated rpm "
+            "efficiency self_locking utilization governing_check fix"
+        ),
+        "torque": whole("total_nm inertia_nm drag_nm load_nm"),
+        "holding_torque": whole("seed_method_nm physics_nm"),
+        "critical_speed": whole("allowed_rpm"),
+        "life": whole("years"),
+    },
+    "full": whole(*CandidateOut.model_fields),
+}
+
+
+def view_model(model: type[BaseModel], view: View, name: str) -> type[BaseModel]:
+    """The model of one view of ``model``: its fields in the view, in the model's order,
+    each with its description and default; a nested model cut to its own view (named
+    ``<Model><name>``, e.g. TorqueSummaryOut). For OpenAPI and for validating a view."""
+    unknown = set(view) - set(model.model_fields)
+    if unknown:
+        raise ValueError(f"{model.__name__} has no field {', '.join(sorted(unknown))}")
+    fields: dict[str, Any] = {}
+    for field_name, info in model.model_fields.items():
+        part = view.get(field_name)
+        if part is None:
+            continue
+        annotation = info.annotation if part is True else _cut(info.annotation, part, name)
+        fields[field_name] = (annotation, info)
+    title = f"{model.__name__.removesuffix('Out')}{name}Out"
+    return create_model(title, __doc__=model.__doc__, **fields)
+
+
+def _cut(annotation: Any, view: View, name: str) -> Any:
+    """``annotation`` with its model (alone, optional, or in a list) cut to ``view``."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return view_model(annotation, view, name)
+    origin = get_origin(annotation)
+    if origin is None:
+        return annotation
+    args = tuple(_cut(a, view, name) for a in get_args(annotation))
+    if origin in (UnionType, Union):
+        return reduce(operator.or_, args)
+    return GenericAlias(origin, args)
+
+
+#: The compact select's candidate and rejected candidate, and the page's row, as models.
+CandidateSummaryOut = view_model(CandidateOut, VIEWS["summary"], "Summary")
+RejectedSummaryOut = view_model(CandidateOut, VIEWS["rejected"], "Rejected")
+#: What the charts read of a candidate: a results-table row (the ``row`` view) or a
+#: candidate in full.
+CandidateBaseOut = CandidateOut
 
 
 class CountsOut(BaseModel):
@@ -399,10 +563,11 @@ class SelectOut(SelectionBaseOut):
 
 
 class PageSelectionOut(SelectionBaseOut):
-    """The results page's selection: the passing candidates as table rows; the rejected
-    in full only when nothing passes (the charts and the advice are then about them)."""
+    """The results page's selection: the passing candidates as table rows (the ``row``
+    view); the rejected in full only when nothing passes (the charts and the advice are
+    then about them)."""
 
-    candidates: list[CandidateRowOut]
+    candidates: list[CandidateOut]
     rejected: list[CandidateOut]
 
 
@@ -410,34 +575,6 @@ class FormulasOut(BaseModel):
     formulas: dict[str, FormulaOut] = Field(
         description="Quantity (dotted path in a candidate) -> formula, core function, source."
     )
-
-
-class CandidateSummaryOut(BaseModel):
-    """A passing candidate as the compact select response gives it: the numbers the
-    results table shows; ``detail=full`` (or POST /api/v1/evaluate) gives everything."""
-
-    id: str
-    series: str
-    series_name: str
-    anti_backlash: bool
-    coated: bool
-    outer_diameter_mm: float
-    lead_mm: float
-    rpm: float
-    total_torque_nm: float
-    efficiency: float
-    self_locking: bool
-    critical_speed_margin: float
-    life_years: list[float] | None
-    utilization: dict[str, float | None] = Field(
-        description="Check name -> value / limit, for every check that applies."
-    )
-    governing_check: str | None
-    governing_limit_provenance: ProvenanceKind | None
-    passed: bool
-    robust: bool | None
-    hinges_on: list[str]
-    warnings: list[str] = Field(description="Names of the failed advice checks.")
 
 
 class SelectQuery(ApplicationIn):
@@ -465,37 +602,26 @@ class SelectQuery(ApplicationIn):
         return ApplicationIn.model_construct(self.model_fields_set - {"detail"}, **values)
 
 
-class FailedCheckOut(BaseModel):
-    name: str
-    kind: Literal["limit", "advice"]
-    utilization: float | None = Field(description="value / limit; above 1 fails.")
-    fix: str | None
-
-
-class RejectedSummaryOut(BaseModel):
-    """A rejected candidate as the compact select response gives it."""
-
-    id: str
-    governing_check: str | None = Field(
-        description="The failed limit with the highest utilisation (or the first failed "
-        "yes/no check): what rejects it most."
-    )
-    failed: list[FailedCheckOut] = Field(description="Every failed check, in check order.")
-    fix: str | None = Field(description="What would make it pass.")
-
-
-class SelectSummaryOut(BaseModel):
-    """The default select response; ``detail=full`` gives ``SelectOut``."""
-
-    detail: Literal["summary"]
-    inputs: ApplicationIn
-    candidates: list[CandidateSummaryOut]
-    rejected: list[RejectedSummaryOut]
-    counts: CountsOut
-    summary: SummaryOut
-    catalog_version: str
-    share_url: str
-    formulas_url: str = Field(description="The formulas table (GET), the same for every query.")
+#: The compact select's ``detail``.
+SummaryDetail = Literal["summary"]
+#: The default select response (``detail=full`` gives ``SelectOut``): the passing
+#: candidates in the ``summary`` view, the rejected in the ``rejected`` view.
+SelectSummaryOut = create_model(
+    "SelectSummaryOut",
+    __doc__="The default select response; ``detail=full`` gives ``SelectOut``.",
+    detail=(SummaryDetail, ...),
+    inputs=(ApplicationIn, ...),
+    candidates=(cast(Any, GenericAlias(list, (CandidateSummaryOut,))), ...),
+    rejected=(cast(Any, GenericAlias(list, (RejectedSummaryOut,))), ...),
+    counts=(CountsOut, ...),
+    summary=(SummaryOut, ...),
+    catalog_version=(str, ...),
+    share_url=(str, ...),
+    formulas_url=(
+        str,
+        Field(description="The formulas table (GET), the same for every query."),
+    ),
+)
 
 
 class EvaluateOut(BaseModel):

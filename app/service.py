@@ -7,26 +7,24 @@ from app.catalog import Catalog
 from app.construct import construct
 from app.core.evaluate import evaluate
 from app.core.robustness import build_variants
-from app.core.selection import select, short_forms, with_robustness
+from app.core.selection import select, with_robustness
 from app.fields import FIELDS
 from app.formulas import FORMULAS
 from app.present import (
-    candidate_out,
-    candidate_row,
+    candidate_view,
     counts_and_summary,
     custom_screw,
-    rejected_out,
     selection_out,
     selection_summary,
 )
 from app.schemas import (
     ApplicationIn,
+    CandidateOut,
     CatalogScrewIn,
     CustomScrewIn,
     EvaluateOut,
     FormulaOut,
     PageSelectionOut,
-    RejectedSummaryOut,
     SelectOut,
 )
 from app.units import DEFAULT_UNITS
@@ -34,8 +32,8 @@ from app.web.form import share_query
 
 #: The formulas table as output models, built once.
 FORMULAS_OUT = {name: FormulaOut(**f) for name, f in FORMULAS.items()}
-#: Each input's accepted range (the field table's bounds) in the core's SI units: the
-#: summary never proposes a value the form or the API would refuse.
+#: Each input's accepted range in SI by core name, from the field table: the summary
+#: never offers a change outside it.
 INPUT_RANGES = {
     f.core: (f.bounds[0] * f.si_factor, f.bounds[1] * f.si_factor)
     for f in FIELDS
@@ -50,12 +48,16 @@ class UnknownScrew(LookupError):
 
 
 def run_selection(
-    inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str] = DEFAULT_UNITS
+    inputs: ApplicationIn,
+    catalog: Catalog,
+    units: Mapping[str, str] = DEFAULT_UNITS,
+    view: str = "full",
 ) -> SelectOut:
     """Select and rank over the catalog: the API's select response, its sentences in
-    ``units`` (the API's own by default)."""
+    ``units`` (the API's own by default), its candidates in ``VIEWS[view]`` (every field
+    by default; "csv": the CSV export's)."""
     selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
-    return construct_select_out(inputs, catalog, selection_out(selection, units))
+    return construct_select_out(inputs, catalog, selection_out(selection, units, view))
 
 
 def construct_select_out(
@@ -74,26 +76,24 @@ def construct_select_out(
 
 def run_page_selection(
     inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
-) -> tuple[PageSelectionOut, list[RejectedSummaryOut]]:
-    """The results page's selection: the passing candidates as table rows (their checks'
-    sentences load with each row's detail) and the rejected ones in the compact form
-    (the list; each one's detail loads when opened), sentences in ``units``. The rejected
-    are in full too only when nothing passes: then the charts and the advice are about
-    them."""
+) -> tuple[PageSelectionOut, list[CandidateOut]]:
+    """The results page's selection: the passing candidates as table rows (the ``row``
+    view; their checks' sentences load with each row's detail) and the rejected ones in
+    the ``rejected`` view (the list; each one's detail loads when opened), sentences in
+    ``units``. The rejected are in full too only when nothing passes: then the charts and
+    the advice are about them."""
     selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
-    app = selection.application
     rejected = selection.rejected if not selection.passed else ()
     out = construct(
         PageSelectionOut,
         inputs=inputs,
-        candidates=[candidate_row(e, app.brake_torque_nm) for e in selection.candidates],
-        rejected=[candidate_out(e, app.vacuum, units, app.brake_torque_nm) for e in rejected],
+        candidates=[candidate_view(c, "row", units) for c in selection.candidates],
+        rejected=[candidate_view(c, "full", units) for c in rejected],
         **counts_and_summary(selection, units),
         catalog_version=catalog.version,
         share_url="/?" + share_query(inputs),
     )
-    _, compact = short_forms(selection)
-    return out, [rejected_out(b, units) for b in compact]
+    return out, [candidate_view(c, "rejected", units) for c in selection.rejected]
 
 
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
@@ -125,17 +125,17 @@ def run_evaluation(
         position = index.positions.get(screw.catalog_id)
         if position is None:
             raise UnknownScrew(screw.catalog_id)
-        ev = evaluate(app, index.row(position), index.table.reach)
+        candidate = evaluate(app, index.row(position), index.table.reach)
         variants, (at,) = index.variants_at([position])
     else:
         spec = custom_screw(screw, catalog.materials)
-        ev = evaluate(app, spec)  # a screw of the user's own: any size can be made
+        candidate = evaluate(app, spec)  # a screw of the user's own: any size can be made
         variants, at = build_variants([spec]), 0
-    ev = with_robustness(app, ev, variants, at)
+    candidate = with_robustness(app, candidate, variants, at)
     return construct(
         EvaluateOut,
         inputs=inputs,
-        candidate=candidate_out(ev, app.vacuum, units, app.brake_torque_nm),
+        candidate=candidate_view(candidate, "full", units),
         catalog_version=catalog.version,
         formulas=FORMULAS_OUT,
     )

@@ -1,10 +1,11 @@
-"""``app.construct.construct`` builds the same output model as ``model_construct``."""
+"""``app.construct.construct`` (and ``from_fields``, for every field given in order)
+builds the same output model as ``model_construct``."""
 
 import pytest
 from fastapi.testclient import TestClient
 from pydantic import BaseModel
 
-from app.construct import construct
+from app.construct import construct, from_fields
 from app.main import create_app
 from app.schemas import CandidateOut, CheckOut, SelectOut, TorqueOut
 
@@ -28,6 +29,12 @@ def test_a_model_built_both_ways_is_the_same() -> None:
     a, b = construct(CheckOut, **CHECK), CheckOut.model_construct(**CHECK)
     assert a == b
     assert a.model_dump_json() == b.model_dump_json()
+    assert a.model_fields_set == b.model_fields_set == set(CHECK)
+
+
+def test_every_field_in_order_builds_the_same_model() -> None:
+    a, b = from_fields(CheckOut, dict(CHECK)), CheckOut.model_construct(**CHECK)
+    assert a == b and a.model_dump_json() == b.model_dump_json()
     assert a.model_fields_set == b.model_fields_set == set(CHECK)
 
 

@@ -6,6 +6,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.formulas import FORMULAS
+from app.schemas import VIEWS
 
 AXIS = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}
 NOTHING_PASSES = {"load_n": 5000, "speed_mm_s": 800, "length_mm": 2000}
@@ -20,6 +21,13 @@ FULL_FIELDS = {
     "share_url",
     "formulas",
 }
+
+
+def _cut(full: Any, view: Any) -> Any:
+    """A full candidate's JSON cut to a view (field -> True, or a nested model's view)."""
+    if full is None:
+        return None
+    return {k: full[k] if part is True else _cut(full[k], part) for k, part in view.items()}
 
 
 def _select(client: TestClient, **params: Any) -> Any:
@@ -45,7 +53,8 @@ def test_compact_form_agrees_with_the_full_one(client: TestClient, axis: dict[st
         assert compact[key] == full[key], key
     assert [c["id"] for c in compact["candidates"]] == [c["id"] for c in full["candidates"]]
     for small, big in zip(compact["candidates"], full["candidates"], strict=True):
-        assert small["total_torque_nm"] == big["torque"]["total_nm"]
+        assert small == _cut(big, VIEWS["summary"])
+        assert small["torque"]["total_nm"] == big["torque"]["total_nm"]
         assert small["utilization"] == {c["name"]: c["utilization"] for c in big["checks"]}
         assert (small["robust"], small["hinges_on"]) == (big["robust"], big["hinges_on"])
 
@@ -58,6 +67,7 @@ def test_compact_rejected_carry_failed_checks_utilisation_and_fix(
     assert compact["rejected"], "the axis has rejected candidates"
     assert set(compact["rejected"][0]) == {"id", "governing_check", "failed", "fix"}
     for small, big in zip(compact["rejected"], full["rejected"], strict=True):
+        assert small == _cut(big, VIEWS["rejected"])
         assert small["id"] == big["id"]
         assert small["governing_check"] == big["governing_check"]
         failed = [c for c in big["checks"] if not c["passed"]]

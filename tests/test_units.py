@@ -220,14 +220,6 @@ ALLOWED = {
     ("app/core/formulas/profile.py", 1e-9): "MIN_ACCEL_M_S2: an acceleration floor",
     ("app/core/formulas/trapezoidal.py", 1e-3): "ISO 2904: crest clearance 1 mm, in m",
 }
-#: Candidate output models, rewritten concurrently (issue 20, item 2): these literals
-#: convert with ``si_to_api``/``api_to_si`` when that work merges.
-PENDING = {
-    ("app/present.py", 1e3): "mm from m",
-    ("app/present.py", 1e-3): "m from mm (the custom screw)",
-    ("app/present.py", 1e4): "million cm from m (life)",
-    ("app/present.py", 1e6): "MPa from Pa",
-}
 #: keyword arguments and calls whose numbers are input bounds and defaults, in the API
 #: unit of their field: values, not conversions.
 VALUE_KEYWORDS = ("bounds", "default")
@@ -271,7 +263,7 @@ def test_no_scale_literal_outside_the_units_module() -> None:
         if name == "app/units.py":
             continue
         for line, value in scale_literals(path.read_text()):
-            if (name, _scale(value)) not in ALLOWED | PENDING:
+            if (name, _scale(value)) not in ALLOWED:
                 found[f"{name}:{line}"] = value
     assert found == {}
 

@@ -1,10 +1,10 @@
 """Plain data types of the core: the application, one screw, checks and results (SI)."""
 
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Generic, Literal, Protocol, TypeVar
 
-from app.core.phrase import Phrase, Quantity
+from app.core.phrase import Phrase
 
 EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
 Orientation = Literal["horizontal", "vertical"]
@@ -162,7 +162,7 @@ class ScrewSpec:
 
 
 class Judged(Protocol):
-    """What reading a check's verdict needs of its result (full or brief)."""
+    """What reading a check's verdict needs of its result."""
 
     @property
     def name(self) -> str: ...
@@ -180,75 +180,6 @@ J = TypeVar("J", bound=Judged)
 def failed_advice(checks: Iterable[J]) -> list[J]:
     """The advice checks that fail: reported beside the result, not rejecting it."""
     return [c for c in checks if c.kind == "advice" and not c.passed]
-
-
-@dataclass(frozen=True, slots=True)
-class CheckResult:
-    """One check of one candidate: demand against capacity, with the message and the fix.
-
-    ``value`` (demand) and ``limit`` (capacity) are SI in ``quantity``; None for yes/no
-    checks. ``utilization`` = value / limit. ``sources`` names the catalog fields the check
-    uses. The message, the fix and ``input_limits`` (application inputs any one of which,
-    set to the given SI value, would make the check pass, e.g. {"load_n": 120.0}) are
-    written when read: most results are ranked or counted, not read.
-    """
-
-    name: str
-    label: str
-    kind: Literal["limit", "advice"]
-    passed: bool
-    value: float | None
-    limit: float | None
-    quantity: Quantity | None
-    utilization: float | None
-    formula: str
-    sources: tuple[str, ...]
-    explanation: Callable[[], Phrase] = field(repr=False, compare=False)
-    remedy: Callable[[], "Phrase | None"] = field(repr=False, compare=False)
-    remedy_inputs: Callable[[], "Mapping[str, float] | None"] = field(repr=False, compare=False)
-
-    @property
-    def message(self) -> Phrase:
-        return self.explanation()
-
-    @property
-    def fix(self) -> Phrase | None:
-        return None if self.passed else self.remedy()
-
-    @property
-    def input_limits(self) -> Mapping[str, float] | None:
-        if self.passed:
-            return None
-        limits = self.remedy_inputs()
-        return dict(limits) if limits else None
-
-
-@dataclass(frozen=True, slots=True)
-class Torque:
-    """Drive torque breakdown [N m] (seed: inertia + static drag + load)."""
-
-    inertia_screw_nm: float
-    inertia_mass_nm: float
-    inertia_nm: float
-    drag_nm: float
-    drag_min_nm: float
-    drag_max_nm: float
-    load_nm: float
-    total_nm: float
-    breakaway_nm: float
-    safety_factor: float
-    required_nm: float
-    angular_accel_rad_s2: float
-    inertia_kg_m2: float
-
-
-@dataclass(frozen=True, slots=True)
-class CriticalSpeed:
-    theoretical_rpm: float
-    allowed_rpm: float
-    margin: float
-    safety_factor: float
-    end_fixity: str
 
 
 @dataclass(frozen=True, slots=True)
@@ -275,14 +206,6 @@ class PV:
     contact_area_m2: float
     max_load_n: float | None
     max_speed_m_s: float | None
-
-
-@dataclass(frozen=True, slots=True)
-class Life:
-    travel_min_m: float
-    travel_max_m: float
-    years_min: float | None
-    years_max: float | None
 
 
 @dataclass(frozen=True, slots=True)
@@ -337,59 +260,6 @@ class Motion:
     segments: tuple[Segment[float], ...]
     peak_nm: float
     rms_nm: float
-
-
-@dataclass(frozen=True, slots=True)
-class Evaluation:
-    """Everything computed for one screw against one application."""
-
-    screw: ScrewSpec
-    axial_load_n: float
-    peak_axial_load_n: float
-    rpm: float
-    pitch_diameter_m: float
-    lead_angle_rad: float
-    efficiency: float
-    efficiency_square_thread: float
-    backdrive_efficiency: float
-    backdrive_efficiency_running: float
-    self_locking: bool
-    self_locking_with_margin: bool
-    seed_rule_no_backdrive: bool
-    max_self_locking_lead_m: float
-    max_self_locking_lead_with_margin_m: float
-    holding_torque_seed_nm: float
-    holding_torque_physics_nm: float
-    brake_torque_nm: float
-    torque: Torque
-    critical_speed: CriticalSpeed
-    buckling: Buckling
-    pv: PV
-    traverse_speed_limit_m_s: float | None
-    traverse_extrapolated: bool
-    life: Life | None
-    accuracy: Accuracy
-    checks: tuple[CheckResult, ...]
-    passed: bool
-    governing_check: str | None
-    governing_limit_provenance: ProvenanceKind | None
-    max_utilization: float
-    #: for a passing candidate: still passes at both ends of every ranged catalog value,
-    #: and the values at one end of whose range it fails (None: not assessed)
-    robust: bool | None = None
-    hinges_on: tuple[str, ...] = ()
-    #: the move profile and the torque of each segment (None: no stroke given)
-    motion: Motion | None = None
-
-    @property
-    def failed_checks(self) -> tuple[CheckResult, ...]:
-        """The failed limits: what rejects the candidate."""
-        return tuple(c for c in self.checks if not c.passed and c.kind == "limit")
-
-    @property
-    def warnings(self) -> tuple[CheckResult, ...]:
-        """Failed advice: reported beside the candidate, not a rejection."""
-        return tuple(failed_advice(self.checks))
 
 
 @dataclass(frozen=True, slots=True)

@@ -2,19 +2,17 @@
 
 import math
 from collections import Counter
-from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, replace
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
 from functools import partial
-from typing import overload
 
 import numpy as np
 
-from app.core.brief import Brief, briefs
 from app.core.checks import BY_NAME
-from app.core.evaluate import evaluations
 from app.core.index import CatalogIndex
-from app.core.model import Application, Change, Evaluation, ScrewSpec, Summary
+from app.core.model import Application, Change, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
+from app.core.record import Candidate, records
 from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable
@@ -68,56 +66,27 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
 
 
 def with_robustness(
-    app: Application, ev: Evaluation, variants: Variants, position: int
-) -> Evaluation:
-    """``ev`` with its robustness, read from the variant rows of the screw at ``position``
-    of ``variants``, when it passes (as it is otherwise: it fails anyway)."""
-    if not ev.passed:
-        return ev
+    app: Application, candidate: Candidate, variants: Variants, position: int
+) -> Candidate:
+    """``candidate`` with its robustness, read from the variant rows of the screw at
+    ``position`` of ``variants``, when it passes (as it is otherwise: it fails anyway)."""
+    if not candidate.passed:
+        return candidate
     (found,) = robustness(app, variants, [position])
-    return replace(ev, robust=found.robust, hinges_on=found.hinges_on)
-
-
-class Built(Sequence[Evaluation]):
-    """Evaluations built when first read: a caller that only ranks or counts, or reads
-    the screening's arrays, never pays for messages and breakdowns it does not show."""
-
-    __slots__ = ("_build", "_items", "_n")
-
-    def __init__(self, n: int, build: Callable[[], Sequence[Evaluation]]) -> None:
-        self._n, self._build = n, build
-        self._items: tuple[Evaluation, ...] | None = None
-
-    def _all(self) -> tuple[Evaluation, ...]:
-        if self._items is None:
-            self._items = tuple(self._build())
-        return self._items
-
-    def __len__(self) -> int:
-        return self._n
-
-    @overload
-    def __getitem__(self, i: int) -> Evaluation: ...
-    @overload
-    def __getitem__(self, i: slice) -> Sequence[Evaluation]: ...
-    def __getitem__(self, i: int | slice) -> Evaluation | Sequence[Evaluation]:
-        return self._all()[i]
-
-    def __iter__(self) -> Iterator[Evaluation]:
-        return iter(self._all())
+    return candidate.with_robustness(found)
 
 
 @dataclass(frozen=True, slots=True)
 class Selection:
     """A selection's answer: the ranked passing candidates (``candidates``, cut to the
-    limit) and the nearest rejected ones, built when read; the counts and the summary;
-    and the screening they come from, with the positions (in ``screening``) of the
-    returned candidates and the robustness of each passing one, for callers that read
-    the arrays directly."""
+    limit, with their robustness) and the nearest rejected ones, as records that read
+    their numbers when first asked; the counts and the summary; and the screening they
+    come from, with the positions (in ``screening``) of the returned candidates, for
+    callers that read the arrays directly."""
 
     application: Application
-    candidates: Sequence[Evaluation]
-    rejected: Sequence[Evaluation]
+    candidates: Sequence[Candidate]
+    rejected: Sequence[Candidate]
     evaluated: int
     passed: int
     failed_by_check: Mapping[str, int]
@@ -126,14 +95,6 @@ class Selection:
     ranked: tuple[int, ...]
     nearest: tuple[int, ...]
     robustness: tuple[Robustness, ...]
-
-
-def short_forms(sel: Selection) -> tuple[list[Brief], list[Brief]]:
-    """The returned passing and rejected candidates in short (``brief.briefs``, in one
-    pass), read from the selection's screening without building the full evaluations."""
-    found = [*sel.robustness, *[None] * len(sel.nearest)]
-    both = briefs(sel.application, sel.screening, sel.ranked + sel.nearest, found)
-    return both[: len(sel.ranked)], both[len(sel.ranked) :]
 
 
 def _nearest_order(s: Screening) -> np.ndarray:
@@ -176,10 +137,10 @@ def select(
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
     counts cover everything screened; the summary offers input changes within ``ranges``
-    only. The passing ones' robustness is screened now; full evaluations of the returned
-    candidates are built when first read (``short_forms`` reads the same arrays without
-    them). A sequence of screws is indexed here, without variant rows: those of the
-    passing ones returned are built when they are judged.
+    only. The passing ones' robustness is screened now; the returned candidates' numbers
+    and sections are read when first asked for. A sequence of screws is indexed here,
+    without variant rows: those of the passing ones returned are built when they are
+    judged.
     """
     index = (
         candidates
@@ -190,13 +151,14 @@ def select(
     ranked = _rank_order(app, s)[: app.limit].tolist()
     nearest = _nearest_order(s)[: app.limit].tolist()
     found = robust(ranked)
-    rejected = Built(len(nearest), partial(evaluations, app, s, nearest))
+    returned = records(app, s, ranked + nearest, [*found, *[None] * len(nearest)])
+    rejected = returned[len(ranked) :]
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
-        candidates=Built(len(ranked), partial(evaluations, app, s, ranked, found)),
+        candidates=returned[: len(ranked)],
         rejected=rejected,
         evaluated=len(s.index),
         passed=n_passed,
@@ -211,7 +173,7 @@ def select(
     )
 
 
-def input_change(best: Evaluation) -> dict[str, float]:
+def input_change(best: Candidate) -> dict[str, float]:
     """Inputs that, changed together, clear every failed numeric check of ``best``.
 
     Each failed check offers alternatives (e.g. PV: lower load or lower speed); pick the
@@ -253,7 +215,7 @@ def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
 
 
 def feasible_changes(
-    nearest: Sequence[Evaluation], ranges: Ranges, count: int = 5
+    nearest: Sequence[Candidate], ranges: Ranges, count: int = 5
 ) -> tuple[Change, ...]:
     """Input changes within ``ranges`` that admit each of the nearest rejected candidates,
     one per distinct change: each clears every failed limit of the candidate it names."""
@@ -292,7 +254,7 @@ def summarize(
     table: CandidateTable,
     evaluated: int,
     passed: int,
-    nearest: Sequence[Evaluation],
+    nearest: Sequence[Candidate],
     by_check: Counter[str],
     ranges: Ranges,
 ) -> Summary:

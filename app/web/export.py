@@ -6,7 +6,7 @@ from collections.abc import Callable
 from typing import Any
 
 from app.fields import FIELDS
-from app.schemas import CandidateOut, CheckOut, SelectOut
+from app.schemas import CandidateOut, SelectOut
 from app.units import Display, Quantity
 
 #: a text cell starting with one of these is a formula to a spreadsheet (CWE-1236); the
@@ -48,14 +48,9 @@ def cell(value: Any) -> Any:
     return safe_cell(tidy(value))
 
 
-def _check(c: CandidateOut, name: str) -> CheckOut | None:
-    return next((check for check in c.checks if check.name == name), None)
-
-
 def _utilisation(name: str) -> Callable[[CandidateOut], Any]:
     def get(c: CandidateOut) -> Any:
-        check = _check(c, name)
-        return None if check is None else check.utilization
+        return c.utilization.get(name)
 
     return get
 
@@ -119,7 +114,8 @@ def _input_rows(inputs: dict[str, Any], units: dict[str, str]) -> list[list[Any]
 
 def results_csv(result: SelectOut, units: dict[str, str]) -> str:
     """The inputs (one row each), a blank row, then the passing candidates (ranked) and the
-    rejected ones shown, one row each."""
+    rejected ones shown, one row each; the candidates need only the ``csv`` view's
+    fields."""
     columns = _columns(Display(units))
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")

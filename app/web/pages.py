@@ -8,7 +8,7 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.fields import BY_PAGE, FIELDS, GROUPS
-from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn, RejectedSummaryOut
+from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
@@ -106,7 +106,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
     return context
 
 
-def rejected_groups(rejected: list[RejectedSummaryOut]) -> list[dict[str, Any]]:
+def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
     """Rejected candidates grouped by governing (failing) check, nearest group first."""
     groups: dict[str, dict[str, Any]] = {}
     for c in rejected:
@@ -212,7 +212,7 @@ async def export_csv(request: Request, catalog: CatalogDep) -> Response:
 
 def _export_csv(request: Request, catalog: Catalog) -> Response:
     inputs, units = _link_inputs(request.query_params)
-    body = results_csv(run_selection(inputs, catalog, units), units)
+    body = results_csv(run_selection(inputs, catalog, units, view="csv"), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
 

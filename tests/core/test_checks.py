@@ -7,7 +7,8 @@ import pytest
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.formulas import limits
-from app.core.model import Application, CheckResult, Evaluation, ScrewSpec
+from app.core.model import Application, ScrewSpec
+from app.core.record import Candidate, CheckResult
 from app.units import render
 from tests.core.conftest import light_app
 
@@ -22,11 +23,11 @@ ALWAYS = [
 ]
 
 
-def names(ev: Evaluation) -> list[str]:
+def names(ev: Candidate) -> list[str]:
     return [c.name for c in ev.checks]
 
 
-def check(ev: Evaluation, name: str) -> CheckResult:
+def check(ev: Candidate, name: str) -> CheckResult:
     return next(c for c in ev.checks if c.name == name)
 
 

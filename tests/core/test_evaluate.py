@@ -14,14 +14,15 @@ from hypothesis import strategies as st
 from app.catalog import Catalog
 from app.core.evaluate import axial_load, evaluate
 from app.core.formulas import critical_speed, efficiency, geometry
-from app.core.model import STANDARD_GRAVITY_M_S2, Application, Evaluation, ScrewSpec
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, ScrewSpec
+from app.core.record import Candidate
 from app.units import render
 from tests.core.conftest import applications, light_app
 
 CATALOG_IDS = ("ZBX4000-L2", "ZBX8000-L10", "B12000-L25.4-TFE", "VHD10000-L5", "KHD6000-L12")
 
 
-def check(ev: Evaluation, name: str):  # type: ignore[no-untyped-def]
+def check(ev: Candidate, name: str):  # type: ignore[no-untyped-def]
     return next(c for c in ev.checks if c.name == name)
 
 
@@ -167,7 +168,7 @@ def test_recommended_brake_holds_the_load(catalog: Catalog) -> None:
     assert seed_below_physics > 0  # the case that made the seed value alone unsafe
 
 
-def _critical_speed_failure(screw: ScrewSpec) -> tuple[Application, Evaluation]:
+def _critical_speed_failure(screw: ScrewSpec) -> tuple[Application, Candidate]:
     app = light_app(load_n=10.0, speed_m_s=0.09, length_m=2.0, end_fixity="simple-simple")
     ev = evaluate(app, screw)
     assert not check(ev, "critical_speed").passed

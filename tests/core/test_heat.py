@@ -8,7 +8,8 @@ import pytest
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.formulas import heat
-from app.core.model import Application, CheckResult
+from app.core.model import Application
+from app.core.record import CheckResult
 
 
 @pytest.mark.parametrize(
@@ -43,7 +44,7 @@ def test_the_200_kg_lifting_table_nut_is_judged(catalog: Catalog) -> None:
     minutes each way, the mean is 7.3 W and the nut runs at 92 C, within the grease's
     150 C."""
     running = _nut_heat(catalog, LIFT, "Tr14x3-bronze")
-    assert running.explanation().values["power"].value == pytest.approx(42.15, rel=1e-3)
+    assert running.message.values["power"].value == pytest.approx(42.15, rel=1e-3)
     fin = heat.fin_conductance(0.0105, 50.7, 10.0)
     surface = 10.0 * math.pi * 0.028 * 0.028
     assert running.value == pytest.approx(42.15 / (2 * fin + surface), rel=2e-3)

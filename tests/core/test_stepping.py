@@ -6,7 +6,8 @@ import pytest
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.formulas import stepping
-from app.core.model import Application, CheckResult
+from app.core.model import Application
+from app.core.record import CheckResult
 from app.units import render
 
 

@@ -12,7 +12,8 @@ import pytest
 
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
-from app.core.model import Application, Evaluation
+from app.core.model import Application
+from app.core.record import Candidate
 
 G = 9.80665
 OD, RD, LEAD = 0.0127, 0.78 * 0.0127, 0.010
@@ -77,12 +78,12 @@ HAND = {
 
 
 @pytest.fixture(scope="module")
-def worked(catalog: Catalog) -> Evaluation:
+def worked(catalog: Catalog) -> Candidate:
     return evaluate(APP, catalog.by_id["ZBX8000-L10"])
 
 
 @pytest.mark.parametrize("name", sorted(HAND))
-def test_check_matches_hand_calculation(worked: Evaluation, name: str) -> None:
+def test_check_matches_hand_calculation(worked: Candidate, name: str) -> None:
     check = next(c for c in worked.checks if c.name == name)
     value, limit = HAND[name]
     assert check.value == pytest.approx(value, rel=1e-3)
@@ -90,12 +91,12 @@ def test_check_matches_hand_calculation(worked: Evaluation, name: str) -> None:
     assert check.passed == (value <= limit)
 
 
-def test_yes_no_checks(worked: Evaluation) -> None:
+def test_yes_no_checks(worked: Candidate) -> None:
     flags = {c.name: c.passed for c in worked.checks if c.value is None}
     assert flags == {"temperature": True}  # 20 C within 0-93 C; uncoated: no oil check
 
 
-def test_torque_breakdown_by_hand(worked: Evaluation) -> None:
+def test_torque_breakdown_by_hand(worked: Candidate) -> None:
     t = worked.torque
     assert t.inertia_screw_nm == pytest.approx(J_SCREW * ALPHA, rel=1e-9)
     assert t.inertia_mass_nm == pytest.approx(T_MASS, rel=1e-9)
@@ -105,7 +106,7 @@ def test_torque_breakdown_by_hand(worked: Evaluation) -> None:
     assert t.breakaway_nm == pytest.approx(BREAK, rel=1e-9)
 
 
-def test_backdriving_by_hand(worked: Evaluation) -> None:
+def test_backdriving_by_hand(worked: Candidate) -> None:
     """lambda = 15.6 deg > friction angle: back-drivable; the d/8 rule agrees."""
     eta_b = (C * TAN_L - MU_S) / (TAN_L * (C + MU_S * TAN_L))
     assert worked.backdrive_efficiency == pytest.approx(eta_b, rel=1e-9)
