@@ -48,7 +48,7 @@ CORE = ROOT / "app" / "core"
 
 
 def _app_imports(path: Path) -> set[str]:
-    """The app modules a file imports by absolute name (e.g. 'app.units')."""
+    """The app modules a file imports by absolute name (e.g. 'app.contract.units')."""
     tree = ast.parse(path.read_text())
     found = {
         alias.name
@@ -70,6 +70,33 @@ def test_core_has_no_web_imports(path: Path) -> None:
     the core (the core is pure; the edges import it, never the other way)."""
     assert not _imports(path) & WEB_PACKAGES
     assert {m for m in _app_imports(path) if not m.startswith("app.core")} == set()
+
+
+#: Each folder of app/ and the folders it must not import: a layer imports only those
+#: below it (core < catalog < contract < report < api, web < main), and the server's
+#: plumbing imports no results or pages.
+NOT_IMPORTED_BY = {
+    "catalog": ("report", "api", "web"),
+    "contract": ("report", "api", "web", "server"),
+    "report": ("api", "web", "server"),
+    "server": ("contract", "report", "api", "web"),
+    "api": ("web",),
+    "web": ("api",),
+}
+
+
+@pytest.mark.parametrize("folder", sorted(NOT_IMPORTED_BY))
+def test_no_layer_imports_one_above_it(folder: str) -> None:
+    """No upward import: e.g. the service reads share links from the contract, not from
+    the pages; the error type lives with the server, its page rendering with the web."""
+    above = tuple(f"app.{name}" for name in NOT_IMPORTED_BY[folder])
+    found = {
+        f"{path.relative_to(ROOT)} imports {name}"
+        for path in sorted((ROOT / "app" / folder).rglob("*.py"))
+        for name in _app_imports(path)
+        if name.startswith(above)
+    }
+    assert found == set()
 
 
 def test_import_scan_catches_a_web_import(tmp_path: Path) -> None:

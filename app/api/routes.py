@@ -1,4 +1,4 @@
-"""JSON API under /api/v1: thin over ``app.service`` and the core."""
+"""JSON API under /api/v1: thin over ``app.report.service`` and the core."""
 
 from typing import Annotated, Any, Literal
 
@@ -7,9 +7,7 @@ from fastapi.responses import Response
 
 from app import __version__
 from app.api.query import parse_query, query_parameters
-from app.core.checks import REGISTRY
-from app.present import series_dict
-from app.schemas import (
+from app.contract.schemas import (
     ApplicationIn,
     ChecksOut,
     ErrorOut,
@@ -23,18 +21,20 @@ from app.schemas import (
     SeriesListOut,
     SeriesOut,
 )
-from app.server.compute import computed
-from app.server.deps import CatalogDep
-from app.server.errors import ApiRoute, AppError
-from app.server.responses import ModelJSON
-from app.service import (
+from app.contract.units import api_value
+from app.core.checks import REGISTRY
+from app.report.present import series_dict
+from app.report.service import (
     FORMULAS_OUT,
     UnknownScrew,
     run_evaluation,
     run_selection,
     run_selection_summary,
 )
-from app.units import api_value
+from app.server.compute import computed
+from app.server.deps import CatalogDep
+from app.server.errors import ApiRoute, AppError
+from app.server.responses import ModelJSON
 
 ERRORS: dict[int | str, dict[str, Any]] = {
     404: {"model": ErrorOut, "description": "Unknown id"},

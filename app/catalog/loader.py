@@ -25,9 +25,9 @@ from app.catalog.groups import Groups, read_group
 from app.catalog.models import Catalog, Material, Series, Sourced
 from app.catalog.motors import MOTOR_FILE, library
 from app.catalog.series import build_series
+from app.contract.units import to_si
 from app.core.index import CatalogIndex
 from app.server.paths import resource_dir
-from app.units import to_si
 
 USER = "user"
 MATERIAL_FIELDS = frozenset(

@@ -2,7 +2,7 @@
 values, each with its provenance, validated at load with the file, entry and field named.
 
 A library motor becomes the application's motor at the edge (``with_motor``, called by
-``app.inputs``): its pull-out curve drawn by the stepper model at the drive voltage of
+``app.contract.inputs``): its pull-out curve drawn by the stepper model at the drive voltage of
 the maker's curve, its rotor inertia and its step angle, unless the user gives those
 inputs directly; a stepper's datasheet values typed in are drawn the same way.
 """
@@ -18,10 +18,10 @@ from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.files import read_file
 from app.catalog.models import Sourced
+from app.contract.units import to_si
 from app.core.formulas import stepper
 from app.core.model import Application
 from app.server.paths import resource_dir
-from app.units import to_si
 
 #: The library's file name; family loading skips it in every catalog directory.
 MOTOR_FILE = "motors.toml"

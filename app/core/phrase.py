@@ -2,7 +2,7 @@
 
 The core never writes a unit into text. A check's message or fix is a ``Phrase``: a
 ``str.format`` template whose fields are ``Amount`` (an SI value and the quantity it
-measures) or plain words; ``app.units`` renders it in the units the reader chose.
+measures) or plain words; ``app.contract.units`` renders it in the units the reader chose.
 """
 
 from collections.abc import Mapping
@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 #: What an amount measures: the one list of dimensions in the app. The core holds each in
-#: the unit after it; ``app.units`` holds every unit of each and converts at the edges.
+#: the unit after it; ``app.contract.units`` holds every unit of each and converts at the edges.
 Quantity = Literal[
     "force",  # N
     "length",  # m

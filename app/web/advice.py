@@ -11,11 +11,11 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from app.contract.fields import BY_API
+from app.contract.form import page_value, share_query
+from app.contract.schemas import ApplicationIn, CandidateOut, PageSelectionOut, SelectOut
+from app.contract.units import sig
 from app.core.checks import BY_NAME
-from app.fields import BY_API
-from app.schemas import ApplicationIn, CandidateOut, PageSelectionOut, SelectOut
-from app.units import sig
-from app.web.form import page_value, share_query
 
 #: significant figures of a proposed value, rounded towards the side that still clears.
 PROPOSAL_DIGITS = 3

@@ -5,8 +5,8 @@ from collections.abc import Iterable
 from typing import Any
 
 from app.catalog import Catalog
-from app.present import series_dict
-from app.units import catalog_value
+from app.contract.units import catalog_value
+from app.report.present import series_dict
 
 #: (catalog field, column heading) of a family's comparison table, in order.
 KEY_FIELDS = (

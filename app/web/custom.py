@@ -9,18 +9,18 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
-from app.fields import BY_PAGE
-from app.schemas import ApplicationIn, CustomScrewIn, EvaluateOut
+from app.contract.fields import BY_PAGE
+from app.contract.form import parse_inputs, share_query
+from app.contract.form import summary_rows as input_rows
+from app.contract.schemas import ApplicationIn, CustomScrewIn, EvaluateOut
+from app.contract.units import Display, api_value
+from app.report.service import run_evaluation
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
 from app.server.headers import is_htmx_fragment
 from app.server.responses import ModelJSON
-from app.service import run_evaluation
-from app.units import Display, api_value
 from app.web.export import candidate_csv
 from app.web.figures import critical_speed_figure, pv_figure, torque_figure
-from app.web.form import parse_inputs, share_query
-from app.web.form import summary_rows as input_rows
 from app.web.pages import REQUIRED, form_context
 from app.web.screw_form import (
     BY_NAME,

@@ -5,9 +5,9 @@ import io
 from collections.abc import Callable
 from typing import Any
 
-from app.fields import FIELDS
-from app.schemas import CandidateOut, SelectOut
-from app.units import Display, Quantity
+from app.contract.fields import FIELDS
+from app.contract.schemas import CandidateOut, SelectOut
+from app.contract.units import Display, Quantity
 
 #: a text cell starting with one of these is a formula to a spreadsheet (CWE-1236); the
 #: fullwidth forms count too, since spreadsheets in East Asian locales read them as ASCII.

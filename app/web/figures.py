@@ -9,11 +9,11 @@ from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 from app.catalog import Catalog
+from app.contract.schemas import CandidateBaseOut, PageSelectionOut, SelectOut
+from app.contract.units import Display, api_value, si_to_api, sig
 from app.core.formulas import critical_speed, pv
 from app.core.index import size_of
 from app.core.sweep import LeadPoint, lead_sweep
-from app.schemas import CandidateBaseOut, PageSelectionOut, SelectOut
-from app.units import Display, api_value, si_to_api, sig
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
 from app.web.chart_style import layout as _layout

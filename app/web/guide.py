@@ -10,9 +10,9 @@ from dataclasses import dataclass
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
+from app.contract.fields import BY_API
+from app.contract.units import sig
 from app.core.checks import REGISTRY
-from app.fields import BY_API
-from app.units import sig
 from app.web.templating import templates
 from app.web.validation import EXAMPLES, TOLERANCE
 

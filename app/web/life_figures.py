@@ -10,11 +10,11 @@ from typing import Any
 import numpy as np
 
 from app.catalog import Catalog
+from app.contract.schemas import CandidateBaseOut
+from app.contract.units import Display, from_si
 from app.core.checks.wear_life import life_band
 from app.core.model import Application
 from app.core.quantities import operating_point
-from app.schemas import CandidateBaseOut
-from app.units import Display, from_si
 from app.web.chart_style import PALETTE, axis, layout
 
 TOP = 5

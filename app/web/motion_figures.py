@@ -5,8 +5,8 @@ one cycle. Numbers come from the core's segments; nothing is recomputed here."""
 from collections.abc import Sequence
 from typing import Any
 
-from app.schemas import CandidateBaseOut, SegmentOut
-from app.units import Display
+from app.contract.schemas import CandidateBaseOut, SegmentOut
+from app.contract.units import Display
 from app.web.chart_style import PALETTE, axis, layout
 
 TOP = 5

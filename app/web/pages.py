@@ -7,20 +7,8 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
-from app.fields import BY_PAGE, FIELDS, GROUPS
-from app.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
-from app.server.compute import computed
-from app.server.deps import CatalogDep
-from app.server.errors import AppError
-from app.server.headers import is_htmx_fragment
-from app.server.responses import ModelJSON
-from app.service import run_evaluation, run_page_selection, run_selection
-from app.units import TORQUE_LABELS, Display
-from app.web.advice import check_label, no_pass_advice
-from app.web.catalog_view import KEY_FIELDS, family_sections
-from app.web.export import results_csv
-from app.web.figures import chart_candidates, result_figures
-from app.web.form import (
+from app.contract.fields import BY_PAGE, FIELDS, GROUPS
+from app.contract.form import (
     TRUE_WORDS,
     UNIT_CHOICES,
     convert_entered,
@@ -32,6 +20,18 @@ from app.web.form import (
     share_query,
     summary_rows,
 )
+from app.contract.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
+from app.contract.units import TORQUE_LABELS, Display
+from app.report.service import run_evaluation, run_page_selection, run_selection
+from app.server.compute import computed
+from app.server.deps import CatalogDep
+from app.server.errors import AppError
+from app.server.headers import is_htmx_fragment
+from app.server.responses import ModelJSON
+from app.web.advice import check_label, no_pass_advice
+from app.web.catalog_view import KEY_FIELDS, family_sections
+from app.web.export import results_csv
+from app.web.figures import chart_candidates, result_figures
 from app.web.guide import BY_COLUMN
 from app.web.screw_form import catalog_screw_query
 from app.web.templating import templates

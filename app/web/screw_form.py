@@ -16,10 +16,10 @@ from urllib.parse import urlencode
 from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 
+from app.contract.form import BOUND_MESSAGES, PLAIN_MESSAGES, read_number
+from app.contract.schemas import CustomScrewIn, MaterialIn
+from app.contract.units import si_to_api, sig
 from app.core.model import ScrewSpec
-from app.schemas import CustomScrewIn, MaterialIn
-from app.units import si_to_api, sig
-from app.web.form import BOUND_MESSAGES, PLAIN_MESSAGES, read_number
 
 #: the material choice that takes the user's own modulus, density and yield strength.
 OWN_MATERIAL = "custom"

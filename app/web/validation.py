@@ -10,9 +10,9 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from app.contract.units import from_si, to_si
 from app.core.formulas import buckling, efficiency, geometry, pv, torque
 from app.core.formulas import critical_speed as cs
-from app.units import from_si, to_si
 
 #: largest relative difference from a published value the app may show.
 TOLERANCE = 0.01

@@ -5,11 +5,11 @@ from dataclasses import replace
 import pytest
 
 from app.catalog import Catalog
+from app.contract.units import render
 from app.core.evaluate import evaluate
 from app.core.formulas import limits
 from app.core.model import Application, ScrewSpec
 from app.core.record import Candidate, CheckResult
-from app.units import render
 from tests.core.conftest import light_app
 
 ALWAYS = [

@@ -12,11 +12,11 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
+from app.contract.units import render
 from app.core.evaluate import axial_load, evaluate
 from app.core.formulas import critical_speed, efficiency, geometry
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, ScrewSpec
 from app.core.record import Candidate
-from app.units import render
 from tests.core.conftest import applications, light_app
 
 CATALOG_IDS = ("ZBX4000-L2", "ZBX8000-L10", "B12000-L25.4-TFE", "VHD10000-L5", "KHD6000-L12")

@@ -12,6 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 
 from app.catalog import Catalog
+from app.contract.units import render
 from app.core.evaluate import evaluate
 from app.core.index import Eligible, EligibleCache
 from app.core.model import Application
@@ -20,7 +21,6 @@ from app.core.robustness import build_variants, robustness
 from app.core.screening import eligible_mask, screen_table
 from app.core.selection import input_change, screen, select
 from app.core.table import CandidateTable
-from app.units import render
 from tests.core.conftest import applications, light_app
 
 FIXTURE_OK = settings(

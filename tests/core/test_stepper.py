@@ -5,8 +5,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from app.catalog.motors import MAX_STEPPER_RPM, library
+from app.contract.inputs import _curve_points
 from app.core.formulas import stepper
-from app.inputs import _curve_points
 
 
 def test_farnell_corner_speed() -> None:

@@ -4,11 +4,11 @@ step_resolution checks)."""
 import pytest
 
 from app.catalog import Catalog
+from app.contract.units import render
 from app.core.evaluate import evaluate
 from app.core.formulas import stepping
 from app.core.model import Application
 from app.core.record import CheckResult
-from app.units import render
 
 
 @pytest.mark.parametrize(

@@ -8,11 +8,11 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
+from app.contract.units import to_si
 from app.core.checks import BY_NAME
 from app.core.evaluate import evaluate
 from app.core.formulas import life, wear
 from app.core.model import Application
-from app.units import to_si
 
 
 @pytest.mark.parametrize(
@@ -114,7 +114,7 @@ def test_bronze_outlasts_acetal_by_the_ratio_of_wear_rates(catalog: Catalog) -> 
 def test_the_life_band_spans_the_wear_rates_scatter(catalog: Catalog) -> None:
     """The message gives the travel at both ends of the wear rate's range (3.3e-7 to
     3e-6 mm^3/(N m) for acetal): 8.004 km x 1e-6 / 3e-6 = 2.668 km to 24.26 km."""
-    from app.units import render
+    from app.contract.units import render
 
     result = {c.name: c for c in evaluate(TR14, catalog.by_id["Tr14x3-acetal"]).checks}
     text = render(result["wear_life"].message)

@@ -1,0 +1,438 @@
+"""Every application input, declared once.
+
+One ``InputField`` per input of the core's ``Application`` says everything the edges need:
+the API name (unit in the name), the page and share-link name, the core attribute and its
+dimension (whose API unit and factor to SI ``app.contract.units`` holds), how the page shows it
+(label, help, form group, choices with their texts) and how it is validated (kind,
+default, bounds). The API model (``app.contract.inputs``), the page form and its parser
+(``app.page_form``), the form templates, the printed inputs summary and the CSV export are
+all generated from ``FIELDS``; none of them names an input.
+
+Choices come from the core's ``Literal`` types (``typing.get_args``); the table only adds
+their display texts (``texts``), and a text table that misses or invents a value is
+refused when the table is built.
+
+>>> BY_API["speed_mm_s"].core, BY_API["speed_mm_s"].si_factor, BY_PAGE["speed"].api
+('speed_m_s', 0.001, 'speed_mm_s')
+>>> [choice.value for choice in BY_PAGE["end_fixity"].choices]
+['fixed-free', 'simple-simple', 'fixed-simple', 'fixed-fixed']
+"""
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any, Literal, get_args
+
+from app.catalog.motors import library
+from app.contract.units import API_SYSTEM, SWITCHED, UNITS, Quantity, from_api, label
+from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
+
+Kind = Literal["number", "whole number", "yes-no", "choice", "text", "list", "curve"]
+Default = float | int | bool | str | None
+
+#: form groups, in the order the form shows them; the first is always open.
+GROUPS = (
+    "Axis",
+    "Motion and load",
+    "Ends",
+    "Nut and environment",
+    "Duty and requirements",
+    "Motor and move",
+    "Safety factors",
+    "Results",
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Choice:
+    """One allowed value of a choice or yes-no field and the text the form shows for it."""
+
+    value: str
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class InputField:
+    """One application input at every edge.
+
+    ``api`` carries the API unit in its name (``speed_mm_s``), the API unit of its
+    ``dimension``; from it ``si_factor`` converts a value to the core's unit of the core
+    attribute ``core`` (``speed_m_s``) and ``unit`` is the unit's text. ``quantity`` is the
+    dimension where a page switch sets its unit, else None. A field without a dimension may
+    name a fixed ``unit`` text ('/day'). ``bounds`` (low, high) are inclusive and in the API
+    unit. A field with no ``default`` and ``required`` False is optional: leaving it out
+    switches its check off. ``needs`` names API fields that must be given whenever this one
+    is; ``none_word`` is the word the page accepts for "no value" (lead: "any"). ``options``
+    is the core's Literal type of a choice field and ``texts`` the display text of each of
+    its values; a yes-no field with ``texts`` for "true" and "false" is shown as a two-way
+    choice. A ``drawn`` choice is shown as radio buttons, each with a drawing of its value
+    ("fixed-free": left end, right end). A ``text`` field is one id or name (``none_word``
+    meaning none); a ``list`` field is several, a list in JSON, a repeated query parameter,
+    or comma-separated text on the page and in share links. A ``curve`` field is points
+    (x, y): pairs in JSON, ``x:y,x:y`` in query strings and share links, lines of "x y" on
+    the page. A ``catalog_only`` field filters or ranks catalog screws and means nothing for a
+    screw of the user's own (the /custom page leaves it out).
+    """
+
+    api: str
+    page: str
+    core: str
+    label: str
+    help: str
+    group: str
+    kind: Kind
+    required: bool = False
+    default: Default = None
+    bounds: tuple[float, float] | None = None
+    dimension: Quantity | None = None
+    unit: str = ""
+    options: Any = None
+    texts: Mapping[str, str] = field(default_factory=dict)
+    needs: tuple[str, ...] = ()
+    none_word: str = ""
+    drawn: bool = False
+    catalog_only: bool = False
+    si_factor: float = field(init=False, default=1.0)
+    quantity: Quantity | None = field(init=False, default=None)
+
+    def __post_init__(self) -> None:
+        """Take the unit, the factor to SI and the page's switch from the dimension;
+        refuse a number without bounds (they keep every result finite), a unit beside a
+        dimension, and display texts that miss or invent a value of the core's Literal."""
+        if self.kind in ("number", "whole number") and self.bounds is None:
+            raise ValueError(f"{self.api}: a number needs bounds")
+        if self.dimension is not None:
+            if self.unit:
+                raise ValueError(f"{self.api}: the dimension gives the unit")
+            api_unit = UNITS[API_SYSTEM[self.dimension]]
+            object.__setattr__(self, "unit", api_unit.symbol)
+            object.__setattr__(self, "si_factor", api_unit.si)
+            switched = self.dimension if self.dimension in SWITCHED else None
+            object.__setattr__(self, "quantity", switched)
+        if self.options is not None and set(get_args(self.options)) != set(self.texts):
+            values = sorted(get_args(self.options))
+            raise ValueError(f"{self.api}: texts {sorted(self.texts)} do not match {values}")
+
+    @property
+    def choices(self) -> tuple[Choice, ...]:
+        """The allowed values with their texts: a Literal's in its order, or the yes-no
+        field's 'true' and 'false' when it is shown as a choice; none for other fields."""
+        values = get_args(self.options) if self.options is not None else tuple(self.texts)
+        return tuple(Choice(value, self.texts[value]) for value in values)
+
+    def to_si(self, value: Any) -> Any:
+        """The API value in the core's SI unit: numbers times ``si_factor``; a list as a
+        tuple (empty for none); text equal to ``none_word`` as None; others as given.
+
+        >>> BY_API["family"].to_si(["TR-C45", "B"]), BY_API["nut_material"].to_si("any")
+        (('TR-C45', 'B'), None)
+        >>> BY_API["motor_curve"].to_si([[0, 0.5], [3000, 0.2]])
+        ((0.0, 0.5), (3000.0, 0.2))
+        """
+        if self.kind == "list":
+            return tuple(value or ())
+        if self.kind == "curve":
+            return tuple((float(x), float(y)) for x, y in value or ())
+        if self.kind == "text" and self.none_word and value == self.none_word:
+            return None
+        if self.kind != "number" or value is None:
+            return value
+        return float(value) * self.si_factor
+
+    def display_unit(self, units: Mapping[str, str]) -> str:
+        """Unit text in the user's display units ('in/s'), the fixed unit ('kg'), or ''."""
+        if self.quantity is None:
+            return self.unit
+        return label(self.quantity, dict(units))
+
+    def display_value(self, value: Any, units: Mapping[str, str]) -> Any:
+        """An API value in the user's display units; values without a quantity as given."""
+        if self.quantity is None or value is None:
+            return value
+        return from_api(float(value), self.quantity, dict(units))
+
+    def choice_text(self, value: str) -> str:
+        """The display text of one of the field's choices (the value itself if unknown)."""
+        return next((c.text for c in self.choices if c.value == value), value)
+
+
+# fmt: off
+FIELDS: tuple[InputField, ...] = (
+    InputField(
+        api="load_n", page="load", core="load_n", label="Axial load",
+        help="External axial force on the nut; 0 for a pure-inertia axis", group="Axis",
+        kind="number", required=True, bounds=(0.0, 1e6), dimension="force",
+    ),
+    InputField(
+        api="lead_mm", page="lead", core="lead_m", label="Lead",
+        help="Travel per turn; empty or “any” for every lead", group="Axis", kind="number",
+        bounds=(0.01, 1000.0), dimension="length",
+        none_word="any",
+        catalog_only=True,
+    ),
+    InputField(
+        api="speed_mm_s", page="speed", core="speed_m_s", label="Linear speed",
+        help="Top speed of the nut along the screw", group="Axis", kind="number",
+        required=True,
+        bounds=(1e-3, 1e5), dimension="speed",
+    ),
+    InputField(
+        api="length_mm", page="length", core="length_m", label="Screw length",
+        help="Between the supports", group="Axis", kind="number", required=True,
+        bounds=(1.0, 1e5), dimension="length",
+    ),
+    InputField(
+        api="accel_mm_s2", page="accel", core="accel_m_s2", label="Acceleration",
+        help="Linear, to reach the speed; 0 for constant speed", group="Motion and load",
+        kind="number", default=1000.0, bounds=(0.0, 1e6), dimension="accel",
+    ),
+    InputField(
+        api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
+        label="Moving mass", help="Carried by the nut", group="Motion and load",
+        kind="number", default=0.0, bounds=(0.0, 1e5), dimension="mass",
+    ),
+    InputField(
+        api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
+        help="How the two screw ends are supported", group="Ends", kind="choice",
+        default="fixed-simple", options=EndFixity, drawn=True,
+        texts={
+            "fixed-free": "Fixed – free", "simple-simple": "Simple – simple",
+            "fixed-simple": "Fixed – simple", "fixed-fixed": "Fixed – fixed",
+        },
+    ),
+    InputField(
+        api="orientation", page="orientation", core="orientation", label="Orientation",
+        help="Vertical adds the weight of the moving mass", group="Motion and load",
+        kind="choice", default="horizontal", options=Orientation,
+        texts={"horizontal": "Horizontal", "vertical": "Vertical"},
+    ),
+    InputField(
+        api="compression", page="compression", core="compression", label="Load direction",
+        help="Only a pushed screw can buckle", group="Motion and load", kind="yes-no",
+        default=True,
+        texts={
+            "true": "Compression (pushes on the screw)",
+            "false": "Tension (pulls on the screw)",
+        },
+    ),
+    InputField(
+        api="require_anti_backlash", page="require_anti_backlash",
+        core="require_anti_backlash", label="Anti-backlash nut required",
+        help="Only nuts that take up the play", group="Nut and environment", kind="yes-no",
+        default=False,
+    ),
+    InputField(
+        api="coating", page="coating", core="coating", label="Coating",
+        help="TFE lowers the friction", group="Nut and environment", kind="choice",
+        default="auto", options=CoatingChoice,
+        texts={
+            "auto": "Auto (coated or not)", "tfe": "TFE coated", "none": "Uncoated",
+        },
+        catalog_only=True,
+    ),
+    InputField(
+        api="oil_present", page="oil_present", core="oil_present", label="Oil present",
+        help="Some nut plastics do not take oil", group="Nut and environment", kind="yes-no",
+        default=False,
+    ),
+    InputField(
+        api="vacuum", page="vacuum", core="vacuum", label="Vacuum",
+        help="Checks the outgassing of nut and coating", group="Nut and environment",
+        kind="yes-no", default=False,
+    ),
+    InputField(
+        api="ambient_c", page="ambient_c", core="ambient_c", label="Ambient temperature",
+        help="Around the screw", group="Nut and environment", kind="number", default=20.0,
+        bounds=(-273.15, 1000.0), dimension="temperature",
+    ),
+    InputField(
+        api="stroke_mm", page="stroke", core="stroke_m", label="Stroke",
+        help="Travel of one move, for life and accuracy", group="Duty and requirements",
+        kind="number", bounds=(0.01, 1e5), dimension="length",
+    ),
+    InputField(
+        api="cycles_per_day", page="cycles_per_day", core="cycles_per_day",
+        label="Cycles per day", help="Full cycles, out and back, for life",
+        group="Duty and requirements", kind="number", bounds=(1e-3, 1e7), unit="/day",
+    ),
+    InputField(
+        api="critical_speed_safety_factor", page="critical_speed_safety_factor",
+        core="critical_speed_safety_factor", label="Critical-speed factor",
+        help="Share of the theoretical whirling speed the screw may run at: 0.8 allows "
+        "80 %. A fraction, 1 or below; smaller is safer",
+        group="Safety factors", kind="number", default=0.8, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="buckling_safety_factor", page="buckling_safety_factor",
+        core="buckling_safety_factor", label="Buckling factor",
+        help="Share of the column's critical load (Euler, or Johnson for short screws) and "
+        "of the root's yield strength the screw may carry: 0.5 allows half. A fraction, 1 "
+        "or below; smaller is safer",
+        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="torque_safety_factor", page="torque_safety_factor",
+        core="torque_safety_factor", label="Torque safety factor",
+        help="Multiplier on the computed drive torque before it is compared with the "
+        "motor: 1.5 asks for 50 % reserve. 1 or more; larger is safer",
+        group="Safety factors",
+        kind="number", default=1.0, bounds=(1.0, 10.0),
+    ),
+    InputField(
+        api="self_locking_friction_factor", page="self_locking_friction_factor",
+        core="self_locking_friction_factor", label="Self-locking friction factor",
+        help="Fraction of the static friction trusted to hold a vertical load, 1 or below: "
+        "0.5 matches the seed's rule (lead under diameter / 8); friction falls with "
+        "vibration and lubrication",
+        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="max_torque_nm", page="max_torque", core="max_torque_nm",
+        label="Max drive torque", help="What the motor gives; empty for no limit",
+        group="Duty and requirements", kind="number", bounds=(1e-6, 1e5),
+        dimension="torque",
+    ),
+    InputField(
+        api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
+        label="Holding torque", group="Duty and requirements", kind="number",
+        help="Vertical axis: a brake's, or the motor's holding torque, at the screw; empty "
+        "when the screw must hold the load by itself",
+        bounds=(0.0, 1e5), dimension="torque",
+    ),
+    InputField(
+        api="required_life_years", page="required_life_years", core="required_life_years",
+        label="Required life", help="Needs stroke and cycles per day",
+        group="Duty and requirements", kind="number", bounds=(1e-3, 1000.0), dimension="years",
+        needs=("stroke_mm", "cycles_per_day"),
+    ),
+    InputField(
+        api="positioning_tolerance_mm", page="positioning_tolerance",
+        core="positioning_tolerance_m", label="Positioning tolerance",
+        help="Allowed positioning error; empty for no check", group="Duty and requirements",
+        kind="number", bounds=(1e-4, 1000.0), dimension="length",
+    ),
+    InputField(
+        api="rank_by", page="rank_by", core="rank_by", label="Rank by",
+        help="Order of the passing screws", group="Results", kind="choice",
+        default="torque", options=RankBy,
+        texts={
+            "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
+            "size": "Smallest size", "motor_margin": "Largest motor margin",
+        },
+        catalog_only=True,
+    ),
+    InputField(
+        api="advice", page="advice", core="advice", label="Advice",
+        help="A failed recommendation (e.g. the traverse speed for a lead): a warning only, "
+        "rank such screws last, or reject them",
+        group="Results", kind="choice", default="warn", options=AdvicePolicy,
+        texts={"warn": "Warn", "rank": "Warn and rank last", "reject": "Reject"},
+        catalog_only=True,
+    ),
+    InputField(
+        api="limit", page="limit", core="limit", label="Number of results",
+        help="How many passing screws to list, 1–100", group="Results",
+        kind="whole number", default=10, bounds=(1, 100),
+        catalog_only=True,
+    ),
+    InputField(
+        api="family", page="family", core="families", label="Families",
+        help="Catalog family ids, comma-separated; empty for every family",
+        group="Nut and environment", kind="list",
+        catalog_only=True,
+    ),
+    InputField(
+        api="nut_material", page="nut_material", core="nut_material", label="Nut material",
+        help="e.g. bronze, acetal or polyacetal; empty or “any” for every nut",
+        group="Nut and environment", kind="text", none_word="any",
+        catalog_only=True,
+    ),
+    InputField(
+        api="decel_mm_s2", page="decel", core="decel_m_s2", label="Deceleration",
+        help="Linear, to stop at the end of the stroke; empty for the acceleration",
+        group="Motor and move", kind="number", bounds=(0.0, 1e6), dimension="accel",
+    ),
+    InputField(
+        api="dwell_s", page="dwell", core="dwell_s", label="Dwell",
+        help="Rest after each move, out and back (needs a stroke)", group="Motor and move",
+        kind="number", default=0.0, bounds=(0.0, 1e6), dimension="time",
+    ),
+    InputField(
+        api="motor_curve", page="motor_curve", core="motor_curve", label="Motor curve",
+        help="Torque the motor gives against speed: one point “rpm torque” per line, rpm "
+        "ascending, torque in N m; linear between points, nothing past the last",
+        group="Motor and move", kind="curve", unit="rpm : N m",
+    ),
+    InputField(
+        api="motor_inertia_kg_m2", page="motor_inertia", core="motor_inertia_kg_m2",
+        label="Rotor inertia", help="The motor's own, at the screw; empty for none",
+        group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
+    ),
+    InputField(
+        api="motor_rms_torque_nm", page="motor_rms_torque", core="motor_rms_torque_nm",
+        label="Continuous torque", help="The motor's rating for the RMS torque of the "
+        "cycle (needs a stroke); empty for no check",
+        group="Motor and move", kind="number", bounds=(1e-6, 1e5), dimension="torque",
+        needs=("stroke_mm",),
+    ),
+    InputField(
+        api="motor", page="motor", core="motor", label="Library motor",
+        help="A motor of the library (catalog/motors.toml: " + ", ".join(library())
+        + "): its pull-out curve, rotor inertia and step angle unless given here; empty "
+        "or “none” for no motor",
+        group="Motor and move", kind="text", none_word="none",
+    ),
+    InputField(
+        api="step_angle_deg", page="step_angle", core="step_angle_deg", label="Step angle",
+        help="The stepper's full step: 1.8 for 200 steps a turn, 0.9 for 400; empty for "
+        "no step rate or resolution check",
+        group="Motor and move", kind="number", bounds=(0.01, 90.0), unit="deg",
+    ),
+    InputField(
+        api="microsteps", page="microsteps", core="microsteps", label="Microsteps",
+        help="Step pulses per full step, as the driver is set: 1 for full steps",
+        group="Motor and move", kind="whole number", default=1, bounds=(1, 256),
+    ),
+    InputField(
+        api="max_step_rate_hz", page="max_step_rate", core="max_step_rate_hz",
+        label="Max step rate", help="The controller's highest step pulse rate, per "
+        "second; needs a step angle or a library motor",
+        group="Motor and move", kind="number", bounds=(1.0, 1e8), dimension="frequency",
+    ),
+    InputField(
+        api="motor_supply_v", page="motor_supply", core="motor_supply_v",
+        label="Drive voltage", help="A stepper's drive supply, for its pull-out curve from "
+        "the datasheet values below", group="Motor and move", kind="number",
+        bounds=(1.0, 400.0), unit="V",
+    ),
+    InputField(
+        api="motor_phase_current_a", page="motor_phase_current",
+        core="motor_phase_current_a", label="Phase current",
+        help="Set on the driver, per phase", group="Motor and move", kind="number",
+        bounds=(0.01, 50.0), unit="A",
+    ),
+    InputField(
+        api="motor_resistance_ohm", page="motor_resistance", core="motor_resistance_ohm",
+        label="Winding resistance", help="Per phase, from the datasheet",
+        group="Motor and move", kind="number", bounds=(0.0, 1000.0), unit="Ω",
+    ),
+    InputField(
+        api="motor_inductance_mh", page="motor_inductance", core="motor_inductance_h",
+        label="Winding inductance", help="Per phase, from the datasheet",
+        group="Motor and move", kind="number", bounds=(0.01, 1000.0), dimension="inductance",
+    ),
+    InputField(
+        api="motor_holding_torque_nm", page="motor_holding_torque",
+        core="motor_holding_torque_nm", label="Holding torque",
+        help="At the phase current: with the step angle and the four values above it "
+        "draws the stepper's pull-out curve (when no curve is given)",
+        group="Motor and move", kind="number", bounds=(1e-4, 100.0), dimension="torque",
+        needs=(
+            "step_angle_deg", "motor_supply_v", "motor_phase_current_a",
+            "motor_resistance_ohm", "motor_inductance_mh",
+        ),
+    ),
+)
+# fmt: on
+
+BY_API = {field.api: field for field in FIELDS}
+BY_PAGE = {field.page: field for field in FIELDS}

@@ -1,0 +1,379 @@
+"""The page's form and query string: readable names in the user's display units.
+
+``/?load=100&speed=50&length=500&lead=10&force_unit=N&length_unit=mm`` is the share link
+of a result. Every input's page name, display quantity, kind and default come from the
+field table (``app.contract.fields``); this module maps the form to and from the API's
+``ApplicationIn``, so the page and the API validate the same model. Numbers typed on the
+page are read by the API's own rule (``app.contract.inputs.NUMBER_TEXT``): the page accepts
+exactly the number texts the API's query string accepts.
+"""
+
+from collections.abc import Mapping
+from decimal import Decimal, localcontext
+from fractions import Fraction
+from typing import Annotated, Any
+from urllib.parse import urlencode
+
+from pydantic import Field, TypeAdapter, ValidationError
+
+from app.contract.fields import BY_API, BY_PAGE, FIELDS, InputField
+from app.contract.inputs import NUMBER_TEXT, ApplicationIn
+from app.contract.units import (
+    DEFAULT_UNITS,
+    FORCE_UNITS,
+    LENGTH_UNITS,
+    TORQUE_UNITS,
+    UNIT_QUANTITIES,
+    Quantity,
+    from_api,
+    sig,
+    to_api,
+)
+
+UNIT_CHOICES = {"force_unit": FORCE_UNITS, "length_unit": LENGTH_UNITS, "torque_unit": TORQUE_UNITS}
+#: prefix of the hidden fields that record which units the form's numbers are in.
+ENTERED_PREFIX = "from_"
+#: prefix of the hidden fields that keep a number as typed, with its unit ('50|N').
+TYPED_PREFIX = "typed_"
+#: pydantic error type -> (message template, context key of the bound).
+BOUND_MESSAGES = {
+    "greater_than": ("Must be more than {bound}.", "gt"),
+    "greater_than_equal": ("Must be at least {bound}.", "ge"),
+    "less_than": ("Must be less than {bound}.", "lt"),
+    "less_than_equal": ("Must be at most {bound}.", "le"),
+}
+PLAIN_MESSAGES = {
+    "missing": "Required.",
+    "float_parsing": "Enter a number.",
+    "int_parsing": "Enter a whole number.",
+    "int_from_float": "Enter a whole number.",
+    "finite_number": "Enter a finite number.",
+}
+TRUE_WORDS = {"1", "true", "on", "yes"}
+#: figures enough for any decimal to read back to the float it was written from (17 are
+#: enough for a float; the display unit's factor takes one more).
+LINK_DIGITS = 24
+#: decimal exponents read exactly: wider than any float times a unit's factor.
+EXPONENT_REACH = 400
+#: a typed number read as the API reads a query parameter: ASCII decimal, finite.
+PAGE_NUMBER: TypeAdapter[float] = TypeAdapter(
+    Annotated[float, NUMBER_TEXT, Field(allow_inf_nan=False)]
+)
+
+
+def read_number(text: str) -> tuple[float | None, str]:
+    """(the number, '') for number text the API accepts, else (None, the page's message).
+
+    >>> read_number(" 1e3"), read_number("1_000"), read_number("1e400")
+    ((1000.0, ''), (None, 'Enter a number.'), (None, 'Enter a finite number.'))
+    """
+    try:
+        return PAGE_NUMBER.validate_python(text), ""
+    except ValidationError as exc:
+        return None, PLAIN_MESSAGES.get(exc.errors()[0]["type"], "Enter a number.")
+
+
+def parse_units(params: Mapping[str, str]) -> dict[str, str]:
+    """Display units from the query, unknown values falling back to metric."""
+    return {
+        key: params.get(key, default) if params.get(key, default) in UNIT_CHOICES[key] else default
+        for key, default in DEFAULT_UNITS.items()
+    }
+
+
+def _api_value(field: InputField, raw: str, units: dict[str, str]) -> tuple[Any, str]:
+    """(API value, error message) of one typed page field; numbers converted from display units.
+
+    Whole numbers and choices go to the model as text, so its own messages apply.
+    """
+    if field.kind == "yes-no":
+        return raw.lower() in TRUE_WORDS, ""
+    if field.kind != "number":
+        return raw, ""
+    number, error = read_number(raw)
+    if number is None:
+        return number, error
+    return page_value(field, raw, units), ""
+
+
+def page_to_api(
+    params: Mapping[str, str], units: dict[str, str]
+) -> tuple[dict[str, Any], dict[str, str]]:
+    """Convert page fields to API fields. Returns (API data, errors by page field).
+
+    Empty fields are left out (defaults apply), as is a field's ``none_word`` ('any'
+    lead). Numbers in display units are converted; text that is not a number is reported.
+    """
+    data: dict[str, Any] = {}
+    errors: dict[str, str] = {}
+    for field in FIELDS:
+        raw = params.get(field.page, "").strip()
+        if raw == "" or (field.none_word and raw.lower() == field.none_word):
+            continue
+        value, error = _api_value(field, raw, units)
+        if error:
+            errors[field.page] = error
+        else:
+            data[field.api] = value
+    return data, errors
+
+
+def entered_units(params: Mapping[str, str], units: dict[str, str]) -> dict[str, str]:
+    """Units the form's numbers were typed in (hidden ``from_*`` fields), else ``units``."""
+    return {
+        key: params.get(ENTERED_PREFIX + key, "")
+        if params.get(ENTERED_PREFIX + key, "") in UNIT_CHOICES[key]
+        else units[key]
+        for key in DEFAULT_UNITS
+    }
+
+
+def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str]:
+    """Page fields whose numbers change when going from ``entered`` to ``units``.
+
+    >>> " ".join(converted_fields(
+    ...     {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"},
+    ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"}))
+    'load moving_mass_kg max_torque brake_torque motor_rms_torque motor_holding_torque'
+    """
+    changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
+    return [field.page for field in FIELDS if field.quantity in changed]
+
+
+def unit_key(quantity: Quantity) -> str:
+    """The display-unit key that sets a quantity's unit ('length_unit' for a speed)."""
+    return next(key for key, qs in UNIT_QUANTITIES.items() if quantity in qs)
+
+
+def sig_figures(text: str) -> int:
+    """Significant digits written in a number text (leading zeros and exponent left out).
+
+    >>> sig_figures("50"), sig_figures("0.0125"), sig_figures("1.50e3")
+    (2, 3, 3)
+    """
+    mantissa = text.strip().lower().split("e")[0].lstrip("+-")
+    return len(mantissa.replace(".", "").lstrip("0")) or 1
+
+
+def convert_text(text: str, quantity: Quantity, source: str, target: str) -> str:
+    """A typed number re-expressed from unit ``source`` into unit ``target`` with one figure
+    more than was typed (at least 4, at most 6): '50' N is '11.24' lbf, not '11.2404'."""
+    number, _ = read_number(text)
+    if number is None:
+        return text
+    key = unit_key(quantity)
+    api = to_api(number, quantity, {**DEFAULT_UNITS, key: source})
+    digits = min(max(sig_figures(text) + 1, 4), 6)
+    return f"{from_api(api, quantity, {**DEFAULT_UNITS, key: target}):.{digits}g}"
+
+
+def read_typed(record: str, quantity: Quantity) -> tuple[str, str] | None:
+    """(text, unit) of a ``typed_*`` record 'text|unit'; None when there is none or it
+    names no unit of ``quantity`` (a record is page state, so a bad one is ignored).
+
+    >>> read_typed("50|N", "force"), read_typed("50|evil", "force"), read_typed("50", "force")
+    (('50', 'N'), None, None)
+    """
+    text, bar, unit = record.partition("|")
+    known = unit in UNIT_CHOICES[unit_key(quantity)]
+    return (text, unit) if bar and text and known else None
+
+
+def typed_origin(raw: str, record: str, quantity: Quantity, entered_unit: str) -> tuple[str, str]:
+    """(text, unit) the shown number came from: the recorded typed text while the field
+    still shows its conversion, else the field's own text in the unit it is shown in."""
+    typed = read_typed(record, quantity)
+    if typed is not None and convert_text(typed[0], quantity, typed[1], entered_unit) == raw:
+        return typed
+    return raw, entered_unit
+
+
+def convert_entered(
+    params: Mapping[str, str], entered: dict[str, str], units: dict[str, str]
+) -> tuple[dict[str, str], dict[str, str]]:
+    """The page fields with every number re-expressed from ``entered`` into ``units``, and
+    the typed record ('text|unit') of each field now shown in another unit than typed.
+
+    Numbers convert from what was typed, not from the last conversion, and switching back
+    to the typed unit restores the typed text exactly. Text that is not a number (or
+    'any' lead) is kept as typed.
+
+    >>> units = {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "N_m"}
+    >>> convert_entered({"load": "50", "lead": "any"}, DEFAULT_UNITS, units)
+    ({'load': '11.24', 'lead': 'any'}, {'load': '50|N'})
+    >>> convert_entered({"load": "11.24", "typed_load": "50|N"}, units, DEFAULT_UNITS)[0]
+    {'load': '50', 'typed_load': '50|N'}
+    """
+    values, typed = dict(params), {}
+    for field in FIELDS:
+        raw = params.get(field.page, "").strip()
+        if field.quantity is None or not raw or read_number(raw)[0] is None:
+            continue
+        key = unit_key(field.quantity)
+        if entered[key] == units[key]:
+            continue
+        record = params.get(TYPED_PREFIX + field.page, "")
+        text, unit = typed_origin(raw, record, field.quantity, entered[key])
+        if unit == units[key]:
+            values[field.page] = text
+        else:
+            values[field.page] = convert_text(text, field.quantity, unit, units[key])
+            typed[field.page] = f"{text}|{unit}"
+    return values, typed
+
+
+def value_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
+    """An API value as the page writes it: numbers in display units to 6 figures,
+    yes-no as 'true'/'false', choices as their value.
+
+    >>> value_text(BY_PAGE["stroke"], 254.0, {**DEFAULT_UNITS, "length_unit": "in"})
+    '10'
+    """
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int | float):
+        return f"{field.display_value(value, units):.6g}"
+    return str(value)
+
+
+def form_defaults(units: dict[str, str]) -> dict[str, str]:
+    """Default of each optional page field as form text, numbers in display units.
+
+    Fields without a default (required, or optional like stroke) are left out.
+
+    >>> defaults = form_defaults({"force_unit": "N", "length_unit": "in", "torque_unit": "N_m"})
+    >>> defaults["accel"], defaults["compression"], defaults["end_fixity"]
+    ('39.3701', 'true', 'fixed-simple')
+    """
+    return {f.page: value_text(f, f.default, units) for f in FIELDS if f.default is not None}
+
+
+def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) -> str:
+    """A pydantic error in the page's words: bounds in display units, API names as labels."""
+    kind = str(error.get("type", ""))
+    field = BY_PAGE.get(page)
+    if kind in BOUND_MESSAGES:
+        template, key = BOUND_MESSAGES[kind]
+        bound = float(error.get("ctx", {}).get(key, 0.0))
+        if field is not None and field.quantity is not None:
+            shown = f"{sig(field.display_value(bound, units))} {field.display_unit(units)}"
+            return template.format(bound=shown)
+        return template.format(bound=sig(bound))
+    if kind in PLAIN_MESSAGES:
+        return PLAIN_MESSAGES[kind]
+    message = str(error.get("msg", "")).removeprefix("Value error, ")
+    for other in sorted(FIELDS, key=lambda f: -len(f.api)):
+        message = message.replace(other.api, other.label.lower())
+    return message[:1].upper() + message[1:].rstrip(".") + "."
+
+
+def parse_inputs(
+    params: Mapping[str, str], units: dict[str, str]
+) -> tuple[ApplicationIn | None, dict[str, str]]:
+    """Validate the page fields as an ``ApplicationIn``. Returns (inputs, errors by field).
+
+    Messages name bounds in the display units; an error of no one field is under 'form'.
+    """
+    data, errors = page_to_api(params, units)
+    try:
+        inputs = ApplicationIn.model_validate(data)
+    except ValidationError as exc:
+        for error in exc.errors():
+            loc = error.get("loc", ())
+            field = BY_API.get(str(loc[0])) if loc else None
+            page = "form" if field is None else field.page
+            errors.setdefault(page, _page_message(error, page, units))
+        return None, errors
+    return (inputs, {}) if not errors else (None, errors)
+
+
+def shown_inputs(inputs: Mapping[str, Any]) -> list[tuple[InputField, Any]]:
+    """(field, API value) of every required input and every input not at its default,
+    in table order: what a share link carries and the printed summary shows."""
+    return [
+        (field, inputs[field.api])
+        for field in FIELDS
+        if field.required or inputs[field.api] != field.default
+    ]
+
+
+def _factor(field: InputField, units: Mapping[str, str]) -> Fraction:
+    """The factor from ``field``'s display unit to its API unit, as the decimal it is
+    defined as (25.4, not the binary float nearest to it)."""
+    return Fraction(repr(to_api(1.0, field.quantity, units))) if field.quantity else Fraction(1)
+
+
+def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
+    """The API value of finite number ``text`` typed in ``field``'s display unit: the
+    decimal times the unit's factor, rounded once, so that every API value has a text
+    that reads back to it exactly (``link_number``). A decimal beyond any float's reach
+    (``1e-99999999``) is read as a float, without its exact value.
+
+    >>> page_value(BY_PAGE["length"], "3937.0078", {**DEFAULT_UNITS, "length_unit": "in"})
+    99999.99812
+    """
+    number = Decimal(text.strip())
+    if not -EXPONENT_REACH <= number.adjusted() <= EXPONENT_REACH:
+        return float(number)
+    return float(Fraction(number) * _factor(field, units))
+
+
+def _trimmed(text: str) -> str:
+    """A formatted decimal without the trailing zeros of its mantissa ('1.500e+6': '1.5e+6')."""
+    mantissa, e, exponent = text.partition("e")
+    if "." in mantissa:
+        mantissa = mantissa.rstrip("0").rstrip(".")
+    return mantissa + e + exponent
+
+
+def link_number(field: InputField, value: float, units: Mapping[str, str]) -> str:
+    """A number of a link in display units, with the fewest figures (6 at least) that the
+    page reads back (``page_value``) to exactly ``value``.
+
+    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
+    >>> link_number(BY_PAGE["length"], 100000.0, inch), link_number(BY_PAGE["load"], 100.4824, {})
+    ('3937.007874015748', '100.4824')
+    """
+    units = {**DEFAULT_UNITS, **units}
+    exact = Fraction(value) / _factor(field, units)
+    with localcontext(prec=LINK_DIGITS):
+        shown = Decimal(exact.numerator) / Decimal(exact.denominator)
+    for digits in range(6, LINK_DIGITS):
+        text = _trimmed(f"{shown:.{digits}g}")
+        if page_value(field, text, units) == value:
+            break
+    return text
+
+
+def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
+    """An API value as a link carries it: numbers exactly (``link_number``), the rest as
+    the page writes them."""
+    if isinstance(value, float):
+        return link_number(field, value, units)
+    return value_text(field, value, units)
+
+
+def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
+    """Query string of the page link for these inputs: required fields and non-defaults,
+    each number reproducing the input exactly."""
+    pairs = [(f.page, link_text(f, v, units)) for f, v in shown_inputs(inputs.model_dump())]
+    pairs += [(k, v) for k, v in units.items() if v != DEFAULT_UNITS[k]]
+    return urlencode(pairs)
+
+
+def summary_rows(inputs: Mapping[str, Any], units: Mapping[str, str]) -> list[dict[str, str]]:
+    """The printed inputs summary: label, value and unit of each shown input, numbers in
+    display units to 4 figures, a choice by its text, yes-no as 'yes'/'no'."""
+    rows = []
+    for field, value in shown_inputs(inputs):
+        if field.choices:
+            text = field.choice_text(value_text(field, value, units))
+        elif isinstance(value, bool):
+            text = "yes" if value else "no"
+        elif isinstance(value, int | float):
+            text = sig(field.display_value(value, units))
+        else:
+            text = str(value)
+        unit = field.display_unit(units)
+        rows.append({"name": field.page, "label": field.label, "value": text, "unit": unit})
+    return rows

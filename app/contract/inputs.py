@@ -1,0 +1,331 @@
+"""The API's application input model, generated from the field table (``app.contract.fields``).
+
+``ApplicationIn`` is built with ``pydantic.create_model`` from ``FIELDS``: one field per
+table row, with its bounds, default and description, so the API, the page and the share
+links cannot disagree about an input. Everything that is not per field lives in the
+hand-written base ``ApplicationInputs``: ``extra="forbid"``, the rule that a field's
+``needs`` are given, and ``to_core`` (the SI ``Application`` of the core).
+
+Typing: mypy cannot see the fields of a model made at run time, so for mypy
+``ApplicationIn`` is the base class itself. Reading an input as an attribute
+(``inputs.<api name>``) is then a type error on purpose; code reads ``inputs.to_core()``, a
+typed dataclass in SI, or goes through the table.
+
+Text numbers (a query string, or a string in JSON) must be plain ASCII decimals
+(``NUMBER_TEXT``): the page parses its form with the same rule, so both accept the same.
+"""
+
+import math
+import re
+from typing import TYPE_CHECKING, Annotated, Any, Literal
+
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    SerializationInfo,
+    SerializerFunctionWrapHandler,
+    ValidationInfo,
+    WithJsonSchema,
+    WrapSerializer,
+    create_model,
+    field_validator,
+)
+from pydantic_core import PydanticCustomError
+
+from app.catalog.motors import check_motor, with_motor
+from app.contract.fields import BY_API, FIELDS, InputField
+from app.core.model import Application
+
+#: optional sign, digits with an optional point (or a point and digits), optional exponent.
+ASCII_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+ASCII_SPACE = " \t\n\r\f\v"
+#: pydantic's own error for text that is not a number, kept so the API answers as before.
+NOT_A_NUMBER = {
+    "float": (
+        "float_parsing",
+        "Input should be a valid number, unable to parse string as a number",
+    ),
+    "int": ("int_parsing", "Input should be a valid integer, unable to parse string as an integer"),
+}
+
+
+def _not_bool(value: Any) -> Any:
+    """JSON true/false is not a number (pydantic's lax mode would read it as 1/0)."""
+    if isinstance(value, bool):
+        raise ValueError("must be a number, not a boolean")
+    return value
+
+
+def _number_text(target: Literal["float", "int"]) -> BeforeValidator:
+    """Refuse number text other than an ASCII decimal: no '１００', '1_000', 'nan' or 'inf'.
+
+    Python's float() and pydantic's lax parsing accept all of those; the rule keeps the
+    API's query and the page's form to what an engineer types. Non-text passes unchanged.
+    """
+
+    def check(value: Any) -> Any:
+        if not isinstance(value, str):
+            return value
+        text = value.strip(ASCII_SPACE)
+        if not ASCII_NUMBER.fullmatch(text):
+            raise PydanticCustomError(*NOT_A_NUMBER[target])
+        return text
+
+    return BeforeValidator(check)
+
+
+NotBool = BeforeValidator(_not_bool)
+NUMBER_TEXT = _number_text("float")
+WHOLE_NUMBER_TEXT = _number_text("int")
+
+
+def bounded_number(ge: float, le: float, description: str) -> Any:
+    """Finite number in [ge, le]; the bounds keep every result finite.
+
+    Put it first in ``Annotated``, before any validator: pydantic writes the bounds as JSON
+    Schema's ``minimum`` and ``maximum`` only on the inner type.
+    """
+    return Field(ge=ge, le=le, allow_inf_nan=False, description=description)
+
+
+def describe(field: InputField) -> str:
+    """The field's API description from the table: label, API unit, help, and for a yes-no
+    field shown as a choice what true and false mean.
+
+    >>> describe(BY_API["ambient_c"])
+    'Ambient temperature [°C]. Around the screw.'
+    """
+    unit = f" [{field.unit}]" if field.unit else ""
+    meanings = "".join(f" {c.value}: {c.text}." for c in field.choices if field.kind == "yes-no")
+    return f"{field.label}{unit}. {field.help}.{meanings}"
+
+
+#: Text inputs (ids, material names): letters, digits and a few separators, 1-60 long.
+TEXT_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9 ._()+/-]{0,59}$"
+#: At most this many items in a list input.
+MAX_ITEMS = 50
+
+
+def _split_text(value: Any) -> Any:
+    """A list input given as text ('TR-C45, B' from the page or a share link) as a list;
+    a repeated query parameter or a JSON list passes unchanged."""
+    if isinstance(value, str):
+        return [item.strip() for item in value.split(",") if item.strip()]
+    return value
+
+
+def _each_text(value: list[str]) -> list[str]:
+    """Every item of a list input is text of ``TEXT_PATTERN`` (the error names the field)."""
+    for item in value:
+        if not re.fullmatch(TEXT_PATTERN, item):
+            raise ValueError(f"'{item[:60]}' is not an id: letters, digits and . _ ( ) + / -")
+    return value
+
+
+def _list_out(
+    value: list[str], handler: SerializerFunctionWrapHandler, info: SerializationInfo
+) -> Any:
+    """A list input as JSON keeps its list; as Python values (share links, the printed
+    summary, CSV) it is the comma-separated text the page reads back."""
+    return handler(value) if info.mode_is_json() else ",".join(value)
+
+
+def text_type(field: InputField) -> Any:
+    """Text, or a list of texts, matching ``TEXT_PATTERN``; a list also as comma text."""
+    if field.kind == "text":
+        return Annotated[str, Field(pattern=TEXT_PATTERN, description=describe(field))]
+    schema = {"type": "array", "items": {"type": "string"}, "minItems": 1}
+    schema |= {"maxItems": MAX_ITEMS, "description": describe(field)}
+    return Annotated[
+        list[str],
+        BeforeValidator(_split_text),
+        AfterValidator(_each_text),
+        WrapSerializer(_list_out),
+        Field(min_length=1, max_length=MAX_ITEMS),
+        WithJsonSchema(schema),
+    ]
+
+
+#: At most this many points in a curve input.
+MAX_POINTS = 50
+#: One point of a curve as text: "x:y" (query strings) or "x y" (a line on the page).
+POINT_SEPARATOR = re.compile(r"\s*[:\s]\s*")
+
+
+def _point(text: str, number: int) -> list[float]:
+    """One point typed as 'x:y' or 'x y', as two numbers; the error names the point."""
+    parts = POINT_SEPARATOR.split(text.strip(ASCII_SPACE))
+    if len(parts) != 2 or not all(ASCII_NUMBER.fullmatch(p) for p in parts):
+        raise ValueError(f"point {number} '{text.strip()[:40]}' is not two numbers 'rpm torque'")
+    return [float(parts[0]), float(parts[1])]
+
+
+def _split_curve(value: Any) -> Any:
+    """A curve given as text (``rpm:torque,rpm:torque`` or lines of 'rpm torque') as a
+    list of pairs (a query parameter arrives as a list of such texts); a JSON list of
+    pairs passes unchanged, each item checked to be a pair of numbers."""
+    if isinstance(value, list) and value and all(isinstance(item, str) for item in value):
+        value = ",".join(value)
+    if isinstance(value, list):
+        for number, point in enumerate(value, start=1):
+            if not isinstance(point, list | tuple) or len(point) != 2:
+                raise ValueError(f"point {number} is not a pair [rpm, torque]")
+            if not all(isinstance(x, int | float) and not isinstance(x, bool) for x in point):
+                raise ValueError(f"point {number} is not two numbers [rpm, torque]")
+        return value
+    if not isinstance(value, str):
+        return value
+    items = [item for item in re.split(r"[,\n;]", value) if item.strip(ASCII_SPACE)]
+    return [_point(item, number) for number, item in enumerate(items, start=1)]
+
+
+def _curve_points(value: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """At least two points, finite, rpm not negative and strictly ascending, torque
+    positive, at most ``MAX_POINTS``; the error names the first point that is wrong."""
+    if not 2 <= len(value) <= MAX_POINTS:
+        raise ValueError(f"needs 2 to {MAX_POINTS} points (rpm, torque), not {len(value)}")
+    previous = -math.inf
+    for number, (rpm, torque) in enumerate(value, start=1):
+        point = f"point {number} ({rpm:g}, {torque:g})"
+        if not (math.isfinite(rpm) and math.isfinite(torque)):
+            raise ValueError(f"{point}: rpm and torque must be finite")
+        if rpm < 0.0 or torque <= 0.0:
+            raise ValueError(f"{point}: rpm must be 0 or more and torque above 0")
+        if rpm <= previous:
+            raise ValueError(f"{point}: rpm must ascend")
+        previous = rpm
+    return value
+
+
+def _curve_out(
+    value: list[tuple[float, float]],
+    handler: SerializerFunctionWrapHandler,
+    info: SerializationInfo,
+) -> Any:
+    """A curve as JSON keeps its pairs; as Python values (share links, the printed
+    summary, CSV) it is the compact ``rpm:torque,rpm:torque`` text the page reads back."""
+    if info.mode_is_json():
+        return handler(value)
+    return ",".join(f"{rpm:.12g}:{torque:.12g}" for rpm, torque in value)
+
+
+def curve_type(field: InputField) -> Any:
+    """Points (rpm, torque): JSON pairs, or text ``rpm:torque,...`` / lines 'rpm torque'."""
+    pair = {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2}
+    schema = {"type": "array", "items": pair, "minItems": 2, "maxItems": MAX_POINTS}
+    schema |= {"description": describe(field)}
+    return Annotated[
+        list[tuple[Annotated[float, NotBool], Annotated[float, NotBool]]],
+        BeforeValidator(_split_curve),
+        AfterValidator(_curve_points),
+        WrapSerializer(_curve_out),
+        WithJsonSchema(schema),
+    ]
+
+
+def api_type(field: InputField) -> Any:
+    """The pydantic type of one table field: bounded finite number, whole number, bool or
+    the core's Literal; optional (``| None``) when it has no default and is not required."""
+    low, high = field.bounds or (0.0, 0.0)
+    if field.kind == "number":
+        # the bounds before the validators: pydantic publishes them as minimum and maximum
+        # only on the inner type (after a validator they would be ge/le, not JSON Schema)
+        kind: Any = Annotated[
+            float, bounded_number(low, high, describe(field)), NotBool, NUMBER_TEXT
+        ]
+    elif field.kind == "whole number":
+        bounded = Field(ge=int(low), le=int(high), description=describe(field))
+        kind = Annotated[int, bounded, NotBool, WHOLE_NUMBER_TEXT]
+    elif field.kind == "yes-no":
+        kind = Annotated[bool, Field(description=describe(field))]
+    elif field.kind in ("text", "list"):
+        kind = text_type(field)
+    elif field.kind == "curve":
+        kind = curve_type(field)
+    else:
+        kind = Annotated[field.options, Field(description=describe(field))]
+    if field.required or field.default is not None:
+        return kind
+    # the description again outside the union: OpenAPI shows a parameter's own
+    # description, not the one inside anyOf's first branch
+    return Annotated[kind | None, Field(description=describe(field))]
+
+
+def _definitions() -> dict[str, Any]:
+    """``create_model`` field definitions: API name -> (type, default or ``...``)."""
+    return {f.api: (api_type(f), ... if f.required else f.default) for f in FIELDS}
+
+
+def check_drivable(value: float | None, supply_v: float, current_a: float, ohm: float) -> None:
+    """The drive voltage must exceed the winding's I R, or the current is never reached."""
+    if value is not None and supply_v <= current_a * ohm:
+        raise ValueError(
+            f"a {supply_v:g} V drive cannot push {current_a:g} A through {ohm:g} ohm: "
+            "raise the drive voltage or lower the phase current"
+        )
+
+
+class ApplicationInputs(BaseModel):
+    """The axis an engineer wants to drive, in the API units named by each field.
+
+    Lower bounds are physical (1 mN, 1 um/s, 1 mm ...) rather than "> 0", so that no
+    input can drive a result to overflow or to zero division.
+    """
+
+    model_config = ConfigDict(extra="forbid")
+
+    @field_validator("*")
+    @classmethod
+    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
+        """A field with ``needs`` (the required life) is refused without those fields.
+
+        Fields validate in table order, so the needed ones are already in ``info.data``.
+        """
+        needs = BY_API[str(info.field_name)].needs
+        if value is not None and any(info.data.get(name) is None for name in needs):
+            raise ValueError("needs " + " and ".join(needs))
+        return value
+
+    @field_validator("motor", check_fields=False)
+    @classmethod
+    def _known_motor(cls, value: str | None) -> str | None:
+        return check_motor(BY_API["motor"].to_si(value))
+
+    @field_validator("max_step_rate_hz", check_fields=False)
+    @classmethod
+    def _step_angle_known(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """A step rate limit needs the step angle, given or the library motor's."""
+        known = info.data.get("step_angle_deg") is not None or info.data.get("motor")
+        if value is not None and not known:
+            raise ValueError("needs step_angle_deg or a library motor")
+        return value
+
+    @field_validator("motor_holding_torque_nm", check_fields=False)
+    @classmethod
+    def _drivable(cls, value: float | None, info: ValidationInfo) -> float | None:
+        names = ("motor_supply_v", "motor_phase_current_a", "motor_resistance_ohm")
+        given = [info.data.get(name) for name in names]
+        if all(v is not None for v in given):
+            check_drivable(value, *(float(v or 0.0) for v in given))
+        return value
+
+    def to_core(self) -> Application:
+        """The same application in SI for the core: each value times its ``si_factor``,
+        with the motor's curve, inertia and step angle filled in (``with_motor``)."""
+        values = {f.core: f.to_si(getattr(self, f.api)) for f in FIELDS}
+        return with_motor(Application(**values))
+
+
+if TYPE_CHECKING:
+    ApplicationIn = ApplicationInputs
+else:
+    ApplicationIn = create_model(
+        "ApplicationIn",
+        __base__=ApplicationInputs,
+        __module__=__name__,
+        __doc__=ApplicationInputs.__doc__,
+        **_definitions(),
+    )

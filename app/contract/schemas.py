@@ -1,0 +1,685 @@
+"""Input and output models of the API, shared with the pages (pydantic v2).
+
+Field names carry their units. Inputs are validated here (finite, in range, known enum
+values); the application input ``ApplicationIn`` is generated from the field table in
+``app.contract.inputs`` and converts itself to the SI ``Application`` of the core (``to_core``).
+"""
+
+import math
+import operator
+from collections.abc import Mapping
+from functools import reduce
+from types import GenericAlias, UnionType
+from typing import Annotated, Any, Literal, Union, cast, get_args, get_origin
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Discriminator,
+    Field,
+    Tag,
+    ValidationInfo,
+    create_model,
+    field_validator,
+)
+
+from app.contract.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
+from app.contract.inputs import NotBool, bounded_number
+from app.contract.source import (
+    From,
+    check_limit,
+    check_unit,
+    check_value,
+    degrees,
+    joined,
+    million_cm,
+)
+from app.core.model import ProvenanceKind
+
+TORQUE_NOTE = (
+    "Torque of the screw assembly alone; bearings, motor shaft, moving parts and "
+    "misalignment are extra (seed). The torque safety factor covers them: 1.0 by default, "
+    "1.3 to 2 is common at the planning stage."
+)
+LIFE_NOTE = (
+    "Life varies with load, environment and duty cycle; longer leads generally last longer (seed)."
+)
+
+
+class MaterialIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    youngs_modulus_pa: Annotated[float, bounded_number(1e6, 1e13, "Young's modulus [Pa]."), NotBool]
+    density_kg_m3: Annotated[float, bounded_number(1.0, 1e5, "Density [kg/m^3]."), NotBool]
+    yield_strength_pa: (
+        Annotated[
+            float,
+            bounded_number(1e6, 1e10, "Yield strength [Pa]; without it, Euler buckling only."),
+            NotBool,
+        ]
+        | None
+    ) = None
+
+
+class CatalogScrewIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    catalog_id: str = Field(max_length=100, description="A screw id from /api/v1/select.")
+
+
+class CustomScrewIn(BaseModel):
+    """A screw that is not in the catalog. Diameters and lead in mm."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    outer_diameter_mm: Annotated[
+        float, bounded_number(0.1, 1000.0, "Outer diameter [mm]."), NotBool
+    ]
+    root_diameter_mm: Annotated[
+        float, bounded_number(0.05, 1000.0, "Root (minor) diameter [mm], below the outer."), NotBool
+    ]
+    lead_mm: Annotated[float, bounded_number(0.01, 1000.0, "Lead [mm]."), NotBool]
+    thread_half_angle_deg: Annotated[
+        float,
+        bounded_number(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal."),
+        NotBool,
+    ] = 14.5
+    friction_dynamic: Annotated[
+        float, bounded_number(1e-3, 1.0, "Running friction coefficient."), NotBool
+    ]
+    friction_static: Annotated[
+        float, bounded_number(1e-3, 1.0, "Static friction coefficient."), NotBool
+    ]
+    material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
+    drag_torque_nm: Annotated[
+        float, bounded_number(0.0, 1e4, "Nut drag torque [N m]."), NotBool
+    ] = 0.0
+    inertia_kg_m2_per_m: (
+        Annotated[
+            float,
+            bounded_number(
+                1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."
+            ),
+            NotBool,
+        ]
+        | None
+    ) = None
+    pv_limit_mpa_m_s: (
+        Annotated[float, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s]."), NotBool] | None
+    ) = None
+
+    @field_validator("root_diameter_mm")
+    @classmethod
+    def _root_below_outer(cls, value: float, info: ValidationInfo) -> float:
+        outer = info.data.get("outer_diameter_mm")
+        if outer is not None and value >= outer:
+            raise ValueError("must be smaller than outer_diameter_mm")
+        return value
+
+    @field_validator("friction_dynamic", "friction_static")
+    @classmethod
+    def _thread_drivable(cls, value: float, info: ValidationInfo) -> float:
+        """A sliding thread can be driven only while mu tan(lambda) < cos(a_n) (Shigley)."""
+        names = ("outer_diameter_mm", "root_diameter_mm", "lead_mm", "thread_half_angle_deg")
+        if any(info.data.get(name) is None for name in names):
+            return value  # an earlier field is invalid and already reported
+        outer, root, lead, half_angle = (float(info.data[name]) for name in names)
+        tan_lead = lead / (math.pi * (outer + root) / 2)
+        limit = 0.99 * math.cos(math.radians(half_angle)) / tan_lead
+        if value >= limit:
+            raise ValueError(
+                f"with this lead ({math.degrees(math.atan(tan_lead)):.1f} deg lead angle) the "
+                f"thread cannot be driven at friction {value:g}: it must be below {limit:.3g}"
+            )
+        return value
+
+
+def _screw_kind(data: Any) -> str:
+    has_id = isinstance(data, dict) and "catalog_id" in data
+    return "catalog" if has_id or isinstance(data, CatalogScrewIn) else "custom"
+
+
+ScrewIn = Annotated[
+    Annotated[CatalogScrewIn, Tag("catalog")] | Annotated[CustomScrewIn, Tag("custom")],
+    Discriminator(_screw_kind),
+]
+
+
+class EvaluateIn(BaseModel):
+    """One application and one screw: ``{"catalog_id": ...}`` or a custom geometry."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    application: ApplicationIn
+    screw: ScrewIn
+
+
+class CheckOut(BaseModel):
+    name: Annotated[str, From("name")]
+    label: Annotated[str, From("label")]
+    kind: Annotated[Literal["limit", "advice"], From("kind")] = Field(
+        description="A limit rejects a candidate; advice is reported beside it."
+    )
+    passed: Annotated[bool, From("passed")]
+    value: Annotated[float | None, From(via=check_value)] = Field(
+        description="Demand, in ``unit``; null for yes/no checks."
+    )
+    limit: Annotated[float | None, From(via=check_limit)] = Field(
+        description="Capacity, in ``unit``; null for yes/no checks."
+    )
+    unit: Annotated[str, From(via=check_unit)]
+    utilization: Annotated[float | None, From("utilization")] = Field(
+        description="value / limit; above 1 fails."
+    )
+    message: Annotated[str, From("message")]
+    formula: Annotated[str, From("formula")]
+    sources: Annotated[list[str], From("sources")]
+    fix: Annotated[str | None, From("fix")]
+
+
+class FailedCheckOut(BaseModel):
+    name: Annotated[str, From("name")]
+    kind: Annotated[Literal["limit", "advice"], From("kind")]
+    utilization: Annotated[float | None, From("utilization")] = Field(
+        description="value / limit; above 1 fails."
+    )
+    fix: Annotated[str | None, From("fix")]
+
+
+class ProvenanceOut(BaseModel):
+    model_config = ConfigDict(frozen=True)
+
+    kind: Annotated[ProvenanceKind, From("kind")]
+    source: Annotated[str, From("source")]
+
+
+class TorqueOut(BaseModel):
+    inertia_nm: Annotated[float, From("inertia_nm", "torque")]
+    inertia_screw_nm: Annotated[float, From("inertia_screw_nm", "torque")]
+    inertia_mass_nm: Annotated[float, From("inertia_mass_nm", "torque")] = Field(
+        description="m a lead / (2 pi eta): the accelerating force through the thread."
+    )
+    drag_nm: Annotated[float, From("drag_nm", "torque")]
+    drag_range_nm: Annotated[list[float], From(("drag_min_nm", "drag_max_nm"), "torque")]
+    load_nm: Annotated[float, From("load_nm", "torque")]
+    total_nm: Annotated[float, From("total_nm", "torque")]
+    breakaway_nm: Annotated[float, From("breakaway_nm", "torque")] = Field(
+        description="Starting from rest: (F + m a) lead / (2 pi eta_static) + J alpha + drag."
+    )
+    safety_factor: Annotated[float, From("safety_factor")]
+    required_nm: Annotated[float, From("required_nm", "torque")]
+    note: str = TORQUE_NOTE
+    peak_nm: Annotated[float | None, From("/quantities.motor_peak_nm", "torque")] = Field(
+        default=None, description="Largest motor torque of the move's segments; null: no stroke."
+    )
+    rms_nm: Annotated[float | None, From("/quantities.motor_rms_nm", "torque")] = Field(
+        default=None, description="RMS motor torque over the cycle; null: no stroke."
+    )
+
+
+class ProfileOut(BaseModel):
+    kind: Annotated[Literal["trapezoid", "triangle"], From("kind")] = Field(
+        description="A triangle when the stroke is too short to reach the top speed."
+    )
+    accel_time_s: Annotated[float, From("accel_time_s")]
+    constant_time_s: Annotated[float, From("constant_time_s")]
+    decel_time_s: Annotated[float, From("decel_time_s")]
+    move_time_s: Annotated[float, From("move_time_s")]
+    cycle_time_s: Annotated[float, From("cycle_time_s")] = Field(
+        description="Out and back (up and down), each with its dwell."
+    )
+    peak_speed_mm_s: Annotated[float, From("peak_speed_m_s", "speed")] = Field(
+        description="The top speed, or the triangle's peak."
+    )
+
+
+class SegmentOut(BaseModel):
+    name: Annotated[Literal["accelerate", "constant", "decelerate", "dwell"], From("name")]
+    direction: Annotated[Literal["up", "down", "out", "back"], From("direction")]
+    duration_s: Annotated[float, From("duration_s")]
+    rpm: Annotated[float, From("rpm")] = Field(description="The screw's top speed in the segment.")
+    thrust_n: Annotated[float, From("thrust_n", "force")] = Field(
+        description="Against the motion; negative: the load drives."
+    )
+    torque_nm: Annotated[float, From("torque_nm", "torque")] = Field(
+        description="Motor torque; negative: the motor brakes."
+    )
+
+
+class CriticalSpeedOut(BaseModel):
+    theoretical_rpm: Annotated[float, From("theoretical_rpm")]
+    allowed_rpm: Annotated[float, From("allowed_rpm")]
+    margin: Annotated[float, From("margin")] = Field(
+        description="allowed_rpm / rpm: how many times the speed fits."
+    )
+    safety_factor: Annotated[float, From("safety_factor")]
+    end_fixity: Annotated[str, From("end_fixity")]
+
+
+class BucklingOut(BaseModel):
+    applies: Annotated[bool, From("applies")]
+    critical_load_n: Annotated[float, From("critical_load_n", "force")] = Field(
+        description="Euler, or Johnson below the transition."
+    )
+    allowed_load_n: Annotated[float, From("allowed_load_n", "force")]
+    safety_factor: Annotated[float, From("safety_factor")]
+    slenderness: Annotated[float, From("slenderness")] = Field(
+        description="(L / sqrt(k)) / (d_r / 4)."
+    )
+    transition_slenderness: Annotated[float | None, From("transition_slenderness")] = Field(
+        description="sqrt(2 pi^2 E / S_y): Johnson below it; null without a yield strength."
+    )
+    mode: Annotated[Literal["euler", "johnson"], From("mode")]
+    root_stress_mpa: Annotated[float, From("root_stress_pa", "pressure")] = Field(
+        description="Peak thrust over the root area."
+    )
+    yield_strength_mpa: Annotated[float | None, From("yield_strength_pa", "pressure")]
+
+
+class PVOut(BaseModel):
+    value_mpa_m_s: Annotated[float, From("value_pa_m_s", "pv")]
+    limit_mpa_m_s: Annotated[float | None, From("limit_pa_m_s", "pv")]
+    pressure_mpa: Annotated[float, From("pressure_pa", "pressure")]
+    surface_speed_m_s: Annotated[float, From("surface_speed_m_s")]
+    max_load_n: Annotated[float | None, From("max_load_n", "force")]
+    max_speed_mm_s: Annotated[float | None, From("max_speed_m_s", "speed")]
+
+
+class HoldingTorqueOut(BaseModel):
+    seed_method_nm: Annotated[float, From("holding_torque_seed_nm", "torque")] = Field(
+        description="Seed: F lead eta / 2 pi, forward eta."
+    )
+    physics_nm: Annotated[float, From("holding_torque_physics_nm", "torque")] = Field(
+        description="F lead eta_b / 2 pi, back-drive eta, static mu."
+    )
+    brake_nm: Annotated[float, From("brake_torque_nm", "torque")] = Field(
+        description="Holding torque needed: the larger of the two; 0 when self-locking with "
+        "margin (before the torque safety factor)."
+    )
+    available_nm: Annotated[float | None, From("app.brake_torque_nm", "torque")] = Field(
+        description="The brake or holding torque given."
+    )
+
+
+class LifeOut(BaseModel):
+    travel_million_cm: Annotated[
+        list[float], From(("travel_min_m", "travel_max_m"), via=million_cm)
+    ]
+    years: Annotated[list[float] | None, From(("years_min", "years_max"))]
+    note: str = LIFE_NOTE
+
+
+class AccuracyOut(BaseModel):
+    lead_error_mm: Annotated[float | None, From("lead_error_m", "length")]
+    repeatability_mm: Annotated[float | None, From("repeatability_m", "length")]
+    backlash_mm: Annotated[list[float], From(("backlash_min_m", "backlash_max_m"), "length")]
+    thermal_growth_mm: Annotated[float | None, From("thermal_growth_m", "length")]
+
+
+class OutgassingOut(BaseModel):
+    hours: Annotated[float, From("0")]
+    weight_loss_percent: Annotated[float, From("1")]
+
+
+class CandidateOut(BaseModel):
+    """One candidate: every number, every check with its message, formula and fix, and
+    the provenance of the catalog values it uses. Each field says where it comes from in
+    the core's candidate record (``From``); the forms of a candidate (``VIEWS``: the
+    results table's row, the compact select's summary, a rejected candidate in the
+    compact select, the CSV's row) are sets of these fields, and ``full`` is all of
+    them."""
+
+    id: Annotated[str, From("screw.id")]
+    series: Annotated[str, From("screw.series_id")]
+    series_name: Annotated[str, From("screw.series_name")]
+    anti_backlash: Annotated[bool, From("screw.anti_backlash")]
+    outer_diameter_mm: Annotated[float, From("screw.outer_diameter_m", "length")]
+    root_diameter_mm: Annotated[float, From("screw.root_diameter_m", "length")]
+    pitch_diameter_mm: Annotated[float, From("pitch_diameter_m", "length")]
+    lead_mm: Annotated[float, From("screw.lead_m", "length")]
+    lead_angle_deg: Annotated[float, From("lead_angle_rad", via=degrees)]
+    coated: Annotated[bool, From("screw.coated")]
+    nut_material: Annotated[str, From("screw.nut_material")] = Field(
+        description="The nut's material, as the catalog names it; empty for a custom screw."
+    )
+    axial_load_n: Annotated[float, From("axial_load_n", "force")] = Field(
+        description="Running thrust at constant speed (PV uses it)."
+    )
+    peak_axial_load_n: Annotated[float, From("peak_axial_load_n", "force")] = Field(
+        description="Peak thrust, accelerating or braking the moving mass: F + m a. "
+        "Buckling, root stress and the design load are judged on it."
+    )
+    rpm: Annotated[float, From("rpm")]
+    efficiency: Annotated[float, From("efficiency")] = Field(
+        description="Forward efficiency, Shigley's Acme form, dynamic friction (0-1)."
+    )
+    efficiency_square_thread: Annotated[float, From("efficiency_square_thread")] = Field(
+        description="The manufacturer's square-thread form, for comparison (0-1)."
+    )
+    backdrive_efficiency: Annotated[float, From("backdrive_efficiency")] = Field(
+        description="The load driving the screw from rest: static friction; 0 = locks. With "
+        "static friction below running friction (uncoated) it can exceed the forward value."
+    )
+    backdrive_efficiency_running: Annotated[float, From("backdrive_efficiency_running")] = Field(
+        description="The load driving the screw while it runs: dynamic friction."
+    )
+    self_locking: Annotated[bool, From("self_locking")] = Field(
+        description="mu_static >= cos(a_n) tan(lambda)."
+    )
+    self_locking_with_margin: Annotated[bool, From("self_locking_with_margin")] = Field(
+        description="Self-locking with static friction reduced by the self-locking factor."
+    )
+    seed_rule_no_backdrive: Annotated[bool, From("seed_rule_no_backdrive")] = Field(
+        description="The seed's rule of thumb: lead < OD / 8."
+    )
+    max_self_locking_lead_mm: Annotated[float, From("max_self_locking_lead_m", "length")] = Field(
+        description="Longest lead that still self-locks."
+    )
+    max_self_locking_lead_with_margin_mm: Annotated[
+        float, From("max_self_locking_lead_with_margin_m", "length")
+    ]
+    holding_torque: Annotated[HoldingTorqueOut, From()]
+    torque: Annotated[TorqueOut, From("torque")]
+    critical_speed: Annotated[CriticalSpeedOut, From("critical_speed")]
+    buckling: Annotated[BucklingOut, From("buckling")]
+    pv: Annotated[PVOut, From("pv")]
+    traverse_speed_limit_mm_s: Annotated[float | None, From("traverse_speed_limit_m_s", "speed")]
+    traverse_extrapolated: Annotated[bool, From("traverse_extrapolated")]
+    life: Annotated[LifeOut | None, From("life")]
+    accuracy: Annotated[AccuracyOut, From("accuracy")]
+    outgassing: Annotated[list[OutgassingOut] | None, From("outgassing")]
+    profile: Annotated[ProfileOut | None, From("profile")] = Field(
+        default=None, description="The move over the stroke; null without a stroke."
+    )
+    segments: Annotated[list[SegmentOut] | None, From("segments")] = Field(
+        default=None, description="Each segment of the cycle; null without a stroke."
+    )
+    checks: Annotated[list[CheckOut], From("checks")]
+    utilization: Annotated[dict[str, float | None], From("utilization")] = Field(
+        description="Check -> demand / capacity, for every check that applies (null for a "
+        "yes/no check)."
+    )
+    governing_check: Annotated[str | None, From("governing_check")] = Field(
+        description="The check with the highest utilisation (or a failed yes/no check)."
+    )
+    governing_limit_provenance: Annotated[
+        ProvenanceKind | None, From("governing_limit_provenance")
+    ] = Field(
+        description="How certain the governing check's limit is: the least certain "
+        "provenance of the values it rests on ('user' for the user's own limit)."
+    )
+    passed: Annotated[bool, From("passed")] = Field(
+        description="True when every limit passes (advice only warns)."
+    )
+    robust: Annotated[bool | None, From("robust")] = Field(
+        description="A pass that holds at both ends of every ranged (assumed) catalog value "
+        "it rests on; false: marginal; null: not a pass."
+    )
+    hinges_on: Annotated[list[str], From("hinges_on")] = Field(
+        description="The ranged catalog values at one end of whose range the pass fails."
+    )
+    warnings: Annotated[list[CheckOut], From("warnings")] = Field(
+        description="Failed advice: reported, not rejected."
+    )
+    warned: Annotated[list[str], From("warned")] = Field(
+        description="The names of the advice checks it fails: reported, not rejected."
+    )
+    failed: Annotated[list[FailedCheckOut], From("failed")] = Field(
+        description="Every failed check (limits and advice), in check order."
+    )
+    fix: Annotated[str | None, From("fixes", via=joined)] = Field(
+        description="For a rejected candidate, what would make it pass."
+    )
+    provenance: Annotated[dict[str, ProvenanceOut], From("provenance")] = Field(
+        description="Catalog field -> provenance, for the fields this candidate's numbers use."
+    )
+
+
+#: A view of a model: field name -> True (the whole field) or the view of a nested model.
+View = Mapping[str, Any]
+
+
+def whole(*groups: str) -> dict[str, Any]:
+    """A view taking whole each field named in ``groups`` (names separated by spaces)."""
+    return dict.fromkeys((name for group in groups for name in group.split()), True)
+
+
+#: What names a candidate, and its verdict: in the row and the summary alike.
+NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
+VERDICT = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
+#: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
+VIEWS: dict[str, View] = {
+    "row": whole(
+        NAMED,
+        "axial_load_n rpm efficiency self_locking seed_rule_no_backdrive "
+        "max_self_locking_lead_with_margin_mm holding_torque torque critical_speed pv life "
+        "profile segments",
+        VERDICT,
+    ),
+    "summary": {
+        **whole(NAMED, "rpm efficiency self_locking", VERDICT),
+        "torque": whole("total_nm peak_nm rms_nm"),
+        "critical_speed": whole("margin"),
+        "life": whole("years"),
+    },
+    "rejected": whole("id governing_check failed fix"),
+    "csv": {
+        **whole(
+            "id series anti_backlash outer_diameter_mm root_diameter_mm lead_mm coated rpm "
+            "efficiency self_locking utilization governing_check fix"
+        ),
+        "torque": whole("total_nm inertia_nm drag_nm load_nm"),
+        "holding_torque": whole("seed_method_nm physics_nm"),
+        "critical_speed": whole("allowed_rpm"),
+        "life": whole("years"),
+    },
+    "full": whole(*CandidateOut.model_fields),
+}
+
+
+def view_model(model: type[BaseModel], view: View, name: str) -> type[BaseModel]:
+    """The model of one view of ``model``: its fields in the view, in the model's order,
+    each with its description and default; a nested model cut to its own view (named
+    ``<Model><name>``, e.g. TorqueSummaryOut). For OpenAPI and for validating a view."""
+    unknown = set(view) - set(model.model_fields)
+    if unknown:
+        raise ValueError(f"{model.__name__} has no field {', '.join(sorted(unknown))}")
+    fields: dict[str, Any] = {}
+    for field_name, info in model.model_fields.items():
+        part = view.get(field_name)
+        if part is None:
+            continue
+        annotation = info.annotation if part is True else _cut(info.annotation, part, name)
+        fields[field_name] = (annotation, info)
+    title = f"{model.__name__.removesuffix('Out')}{name}Out"
+    return create_model(title, __doc__=model.__doc__, **fields)
+
+
+def _cut(annotation: Any, view: View, name: str) -> Any:
+    """``annotation`` with its model (alone, optional, or in a list) cut to ``view``."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return view_model(annotation, view, name)
+    origin = get_origin(annotation)
+    if origin is None:
+        return annotation
+    args = tuple(_cut(a, view, name) for a in get_args(annotation))
+    if origin in (UnionType, Union):
+        return reduce(operator.or_, args)
+    return GenericAlias(origin, args)
+
+
+#: The compact select's candidate and rejected candidate, and the page's row, as models.
+CandidateSummaryOut = view_model(CandidateOut, VIEWS["summary"], "Summary")
+RejectedSummaryOut = view_model(CandidateOut, VIEWS["rejected"], "Rejected")
+#: What the charts read of a candidate: a results-table row (the ``row`` view) or a
+#: candidate in full.
+CandidateBaseOut = CandidateOut
+
+
+class CountsOut(BaseModel):
+    evaluated: int
+    passed: int
+    rejected: int
+    failed_by_check: dict[str, int]
+
+
+class ChangeOut(BaseModel):
+    inputs: dict[str, float] = Field(description="API input -> value that admits the screw.")
+    admits: str = Field(description="The candidate the change admits.")
+
+
+class SummaryOut(BaseModel):
+    message: str
+    most_excluding_check: str | None
+    best_rejected_id: str | None
+    input_change: dict[str, float]
+    changes: list[ChangeOut] = Field(
+        description="Feasible input changes, each admitting a near candidate (one click)."
+    )
+
+
+class FormulaOut(BaseModel):
+    formula: str
+    function: str
+    source: str
+
+
+class SelectionBaseOut(BaseModel):
+    """What every form of a selection gives besides its candidates."""
+
+    inputs: ApplicationIn
+    counts: CountsOut
+    summary: SummaryOut
+    catalog_version: str
+    share_url: str
+
+
+class SelectOut(SelectionBaseOut):
+    candidates: list[CandidateOut]
+    rejected: list[CandidateOut]
+    formulas: dict[str, FormulaOut] = Field(
+        description="Quantity (dotted path in a candidate) -> formula, core function, source."
+    )
+
+
+class PageSelectionOut(SelectionBaseOut):
+    """The results page's selection: the passing candidates as table rows (the ``row``
+    view); the rejected in full only when nothing passes (the charts and the advice are
+    then about them)."""
+
+    candidates: list[CandidateOut]
+    rejected: list[CandidateOut]
+
+
+class FormulasOut(BaseModel):
+    formulas: dict[str, FormulaOut] = Field(
+        description="Quantity (dotted path in a candidate) -> formula, core function, source."
+    )
+
+
+class SelectQuery(ApplicationIn):
+    """The GET select's query: the application's fields and the response's form."""
+
+    detail: Literal["summary", "full"] = Field(
+        "summary",
+        description="summary (default): passing candidates as the results table shows "
+        "them, rejected ones as their failed checks with utilisation and fix, formulas at "
+        "/api/v1/formulas (SelectSummaryOut); full: every number, check message, formula "
+        "and provenance of every candidate, and the formulas table (SelectOut).",
+    )
+
+    @field_validator("*")
+    @classmethod
+    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
+        """The application's fields as ``ApplicationIn`` checks them; ``detail`` as it is."""
+        if info.field_name == "detail":
+            return value
+        return super()._needs(value, info)
+
+    def application(self) -> ApplicationIn:
+        """The application's fields alone, as the body of a POST would give them."""
+        values = {name: getattr(self, name) for name in ApplicationIn.model_fields}
+        return ApplicationIn.model_construct(self.model_fields_set - {"detail"}, **values)
+
+
+#: The compact select's ``detail``.
+SummaryDetail = Literal["summary"]
+#: The default select response (``detail=full`` gives ``SelectOut``): the passing
+#: candidates in the ``summary`` view, the rejected in the ``rejected`` view.
+SelectSummaryOut = create_model(
+    "SelectSummaryOut",
+    __doc__="The default select response; ``detail=full`` gives ``SelectOut``.",
+    detail=(SummaryDetail, ...),
+    inputs=(ApplicationIn, ...),
+    candidates=(cast(Any, GenericAlias(list, (CandidateSummaryOut,))), ...),
+    rejected=(cast(Any, GenericAlias(list, (RejectedSummaryOut,))), ...),
+    counts=(CountsOut, ...),
+    summary=(SummaryOut, ...),
+    catalog_version=(str, ...),
+    share_url=(str, ...),
+    formulas_url=(
+        str,
+        Field(description="The formulas table (GET), the same for every query."),
+    ),
+)
+
+
+class EvaluateOut(BaseModel):
+    inputs: ApplicationIn
+    candidate: CandidateOut
+    catalog_version: str
+    formulas: dict[str, FormulaOut]
+
+
+class SourcedOut(BaseModel):
+    value: Any
+    unit: str
+    provenance: ProvenanceOut
+
+
+class SeriesOut(BaseModel):
+    id: str
+    name: str
+    family: str
+    family_name: str
+    type: str
+    file: str
+    fields: dict[str, SourcedOut]
+    candidate_ids: list[str]
+
+
+class SeriesListOut(BaseModel):
+    catalog_version: str
+    series: list[SeriesOut]
+
+
+class CheckInfoOut(BaseModel):
+    name: str
+    label: str
+    kind: Literal["limit", "advice"]
+    description: str
+    formula: str = Field(description="demand = ...; capacity = ... (or: passes when ...).")
+    source: str
+    sources: list[str] = Field(description="Catalog fields the check reads.")
+    unit: str = Field(description="API unit of the check's value and limit.")
+
+
+class ChecksOut(BaseModel):
+    checks: list[CheckInfoOut]
+
+
+class HealthOut(BaseModel):
+    status: Literal["ok"]
+    version: str
+    catalog_version: str
+    candidates: int
+
+
+class ErrorDetail(BaseModel):
+    field: str
+    message: str
+
+
+class ErrorOut(BaseModel):
+    error: str
+    detail: list[ErrorDetail]

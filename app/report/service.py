@@ -1,0 +1,141 @@
+"""The one path from validated inputs to a result, shared by the API and the pages."""
+
+from collections.abc import Mapping
+from typing import Any
+
+from app.catalog import Catalog
+from app.contract.fields import FIELDS
+from app.contract.form import share_query
+from app.contract.schemas import (
+    ApplicationIn,
+    CandidateOut,
+    CatalogScrewIn,
+    CustomScrewIn,
+    EvaluateOut,
+    FormulaOut,
+    PageSelectionOut,
+    SelectOut,
+)
+from app.contract.units import DEFAULT_UNITS
+from app.core.evaluate import evaluate
+from app.core.robustness import build_variants
+from app.core.selection import select, with_robustness
+from app.report.construct import construct
+from app.report.formulas import FORMULAS
+from app.report.present import (
+    candidate_view,
+    counts_and_summary,
+    custom_screw,
+    selection_out,
+    selection_summary,
+)
+
+#: The formulas table as output models, built once.
+FORMULAS_OUT = {name: FormulaOut(**f) for name, f in FORMULAS.items()}
+#: Each input's accepted range in SI by core name, from the field table: the summary
+#: never offers a change outside it.
+INPUT_RANGES = {
+    f.core: (f.bounds[0] * f.si_factor, f.bounds[1] * f.si_factor)
+    for f in FIELDS
+    if f.bounds is not None
+}
+#: Where the compact select response points for the formulas table.
+FORMULAS_URL = "/api/v1/formulas"
+
+
+class UnknownScrew(LookupError):
+    """A catalog id that the catalog does not hold."""
+
+
+def run_selection(
+    inputs: ApplicationIn,
+    catalog: Catalog,
+    units: Mapping[str, str] = DEFAULT_UNITS,
+    view: str = "full",
+) -> SelectOut:
+    """Select and rank over the catalog: the API's select response, its sentences in
+    ``units`` (the API's own by default), its candidates in ``VIEWS[view]`` (every field
+    by default; "csv": the CSV export's)."""
+    selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
+    return construct_select_out(inputs, catalog, selection_out(selection, units, view))
+
+
+def construct_select_out(
+    inputs: ApplicationIn, catalog: Catalog, selected: dict[str, Any]
+) -> SelectOut:
+    """The select response around ``selection_out``'s candidates, counts and summary."""
+    return construct(
+        SelectOut,
+        inputs=inputs,
+        **selected,
+        catalog_version=catalog.version,
+        share_url="/?" + share_query(inputs),
+        formulas=FORMULAS_OUT,
+    )
+
+
+def run_page_selection(
+    inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
+) -> tuple[PageSelectionOut, list[CandidateOut]]:
+    """The results page's selection: the passing candidates as table rows (the ``row``
+    view; their checks' sentences load with each row's detail) and the rejected ones in
+    the ``rejected`` view (the list; each one's detail loads when opened), sentences in
+    ``units``. The rejected are in full too only when nothing passes: then the charts and
+    the advice are about them."""
+    selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
+    rejected = selection.rejected if not selection.passed else ()
+    out = construct(
+        PageSelectionOut,
+        inputs=inputs,
+        candidates=[candidate_view(c, "row", units) for c in selection.candidates],
+        rejected=[candidate_view(c, "full", units) for c in rejected],
+        **counts_and_summary(selection, units),
+        catalog_version=catalog.version,
+        share_url="/?" + share_query(inputs),
+    )
+    return out, [candidate_view(c, "rejected", units) for c in selection.rejected]
+
+
+def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
+    """Select and rank over the catalog: the API's compact select response
+    (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
+    selection = select(inputs.to_core(), catalog.index, INPUT_RANGES)
+    return {
+        "detail": "summary",
+        "inputs": inputs,
+        **selection_summary(selection),
+        "catalog_version": catalog.version,
+        "share_url": "/?" + share_query(inputs),
+        "formulas_url": FORMULAS_URL,
+    }
+
+
+def run_evaluation(
+    inputs: ApplicationIn,
+    screw: CatalogScrewIn | CustomScrewIn,
+    catalog: Catalog,
+    units: Mapping[str, str] = DEFAULT_UNITS,
+) -> EvaluateOut:
+    """Evaluate one catalog or custom screw and, when it passes, its robustness (from the
+    catalog's variant rows; a custom screw's are built here); raise UnknownScrew for a
+    bad catalog id."""
+    index = catalog.index
+    app = inputs.to_core()
+    if isinstance(screw, CatalogScrewIn):
+        position = index.positions.get(screw.catalog_id)
+        if position is None:
+            raise UnknownScrew(screw.catalog_id)
+        candidate = evaluate(app, index.row(position), index.table.reach)
+        variants, (at,) = index.variants_at([position])
+    else:
+        spec = custom_screw(screw, catalog.materials)
+        candidate = evaluate(app, spec)  # a screw of the user's own: any size can be made
+        variants, at = build_variants([spec]), 0
+    candidate = with_robustness(app, candidate, variants, at)
+    return construct(
+        EvaluateOut,
+        inputs=inputs,
+        candidate=candidate_view(candidate, "full", units),
+        catalog_version=catalog.version,
+        formulas=FORMULAS_OUT,
+    )

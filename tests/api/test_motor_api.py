@@ -1,0 +1,56 @@
+"""The motor curve at the API and in share links: compact text, pairs, and bad curves."""
+
+from urllib.parse import parse_qsl
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.contract.form import parse_inputs, parse_units, share_query
+from app.contract.inputs import ApplicationIn
+
+BASE = {"load_n": 50.0, "speed_mm_s": 100.0, "length_mm": 500.0, "stroke_mm": 200.0}
+
+
+def test_curve_round_trips_through_a_share_link() -> None:
+    inputs = ApplicationIn.model_validate({**BASE, "motor_curve": [[0, 0.5], [3000, 0.2]]})
+    params = dict(parse_qsl(share_query(inputs)))
+    assert params["motor_curve"] == "0:0.5,3000:0.2"
+    parsed, errors = parse_inputs(params, parse_units(params))
+    assert errors == {} and parsed is not None
+    assert parsed.to_core().motor_curve == ((0.0, 0.5), (3000.0, 0.2))
+
+
+def test_page_reads_lines_of_rpm_and_torque() -> None:
+    params = {"load": "50", "speed": "100", "length": "500", "motor_curve": "0 0.5\n3000 0.2"}
+    parsed, errors = parse_inputs(params, parse_units(params))
+    assert errors == {} and parsed is not None
+    assert parsed.to_core().motor_curve == ((0.0, 0.5), (3000.0, 0.2))
+
+
+@pytest.mark.parametrize(
+    ("curve", "point"),
+    [
+        ("0:0.5", "2 to 50 points"),
+        ("0:0.5,100:-1", "point 2"),
+        ("0:0.5,0:0.4", "point 2"),
+        (",".join(f"{i}:1" for i in range(51)), "2 to 50 points"),
+    ],
+)
+def test_a_bad_curve_is_a_422_naming_the_field_and_point(
+    client: TestClient, curve: str, point: str
+) -> None:
+    r = client.get("/api/v1/select", params={**BASE, "motor_curve": curve})
+    assert r.status_code == 422
+    detail = r.json()["detail"][0]
+    assert detail["field"] == "motor_curve" and point in detail["message"]
+
+
+def test_profile_and_segments_in_the_response(client: TestClient) -> None:
+    r = client.post(
+        "/api/v1/select",
+        params={"detail": "full"},
+        json={**BASE, "motor_curve": [[0, 1.0], [3000, 0.5]]},
+    )
+    top = r.json()["candidates"][0]
+    assert top["profile"]["kind"] == "trapezoid" and len(top["segments"]) == 8
+    assert top["torque"]["rms_nm"] > 0 and top["torque"]["peak_nm"] >= top["torque"]["rms_nm"]

@@ -1,0 +1,225 @@
+"""The page of one's own screw (/custom), its exports, the catalog grouped by family,
+and the robust, assumed-limit and warning marks of the selector's results."""
+
+import csv
+import io
+from urllib.parse import parse_qsl
+
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+from app.catalog import Catalog
+from app.contract.fields import FIELDS
+from app.contract.schemas import CustomScrewIn, MaterialIn
+from app.web.screw_form import BY_NAME, MATERIAL_FIELDS, SCREW_FIELDS
+
+SCREW = (
+    "outer_diameter_mm=10&root_diameter_mm=8&lead_mm=2&friction_dynamic=0.15&friction_static=0.2"
+)
+AXIS = "load=100&speed=50&length=500"
+QUERY = f"{SCREW}&pv_limit_mpa_m_s=3&{AXIS}"
+HX = {"HX-Request": "true"}
+
+
+def soup(text: str) -> BeautifulSoup:
+    return BeautifulSoup(text, "html.parser")
+
+
+def api_evaluate(client: TestClient, screw: dict[str, object]) -> dict[str, object]:
+    body = {"application": {"load_n": 100, "speed_mm_s": 50, "length_mm": 500}, "screw": screw}
+    response = client.post("/api/v1/evaluate", json=body)
+    assert response.status_code == 200, response.text
+    result: dict[str, object] = response.json()
+    return result
+
+
+def test_screw_fields_are_the_api_models_fields() -> None:
+    names = [f.name for f in SCREW_FIELDS]
+    assert names == [n for n in CustomScrewIn.model_fields if n != "material"]
+    assert [f.name for f in MATERIAL_FIELDS] == list(MaterialIn.model_fields)
+    assert (BY_NAME["outer_diameter_mm"].label, BY_NAME["outer_diameter_mm"].unit) == (
+        "Outer diameter",
+        "mm",
+    )
+
+
+def test_empty_page_has_a_labelled_field_for_every_screw_and_application_input(
+    client: TestClient,
+) -> None:
+    page = soup(client.get("/custom").text)
+    for field in (*SCREW_FIELDS, *MATERIAL_FIELDS):
+        assert page.select_one(f"label[for=f-{field.name}]"), field.name
+    assert page.select_one("select#f-material")
+    for name in ("load", "speed", "length", "end_fixity", "moving_mass_kg"):
+        assert page.select_one(f"[name={name}]"), name
+    assert page.select_one("p.prompt")
+
+
+def test_custom_screw_shows_the_api_answer_with_user_provenance(client: TestClient) -> None:
+    response = client.get(f"/custom?{QUERY}")
+    page = soup(response.text)
+    api = api_evaluate(
+        client,
+        {
+            "outer_diameter_mm": 10,
+            "root_diameter_mm": 8,
+            "lead_mm": 2,
+            "friction_dynamic": 0.15,
+            "friction_static": 0.2,
+            "pv_limit_mpa_m_s": 3,
+        },
+    )["candidate"]
+    assert isinstance(api, dict)
+    checks = [li["data-check"] for li in page.select("ol.checks li.check")]
+    assert checks == [k["name"] for k in api["checks"]]
+    governing = page.select_one(f"li.check[data-check={api['governing_check']}] .tag")
+    assert governing is not None and governing.text == "governing"
+    assert page.select_one(".custom-verdict .governing")
+    kinds = {s.select_one("code").text: s.select_one(".kind") for s in page.select("ul.sources li")}
+    assert kinds["root_diameter"].text == kinds["pv_limit"].text == "user"
+    assert [f["id"] for f in page.select(".chart")] == [
+        "chart-critical_speed",
+        "chart-pv",
+        "chart-torque",
+    ]
+
+
+def test_share_link_carries_the_whole_screw_and_reopens_the_same(client: TestClient) -> None:
+    page = soup(
+        client.get(
+            f"/custom?{QUERY}&material=custom&youngs_modulus_pa=1.9e11&density_kg_m3=7900"
+        ).text
+    )
+    link = page.select_one("a.share-link")["href"]
+    shared = dict(parse_qsl(link.split("?", 1)[1]))
+    assert shared["material"] == "custom" and float(shared["youngs_modulus_pa"]) == 1.9e11
+    assert shared["pv_limit_mpa_m_s"] == "3" and shared["load"] == "100"
+    again = soup(client.get(link).text)
+    assert again.select_one("a.share-link")["href"] == link
+    assert again.select_one(".check-value").text == page.select_one(".check-value").text
+
+
+def test_root_above_outer_is_an_inline_error_and_the_text_is_kept(client: TestClient) -> None:
+    bad = QUERY.replace("root_diameter_mm=8", "root_diameter_mm=12")
+    page = soup(client.get(f"/custom?{bad}").text)
+    assert page.select_one("#e-root_diameter_mm").text == "Must be smaller than outer diameter."
+    assert page.select_one("#f-root_diameter_mm")["value"] == "12"
+    assert page.select_one("#f-root_diameter_mm")["aria-invalid"] == "true"
+    assert page.select_one(".notice.invalid")
+
+
+def test_bad_text_and_own_material_errors_are_per_field(client: TestClient) -> None:
+    query = f"{AXIS}&{SCREW.replace('lead_mm=2', 'lead_mm=abc')}&material=custom&density_kg_m3=0.1"
+    page = soup(client.get(f"/custom?{query}").text)
+    assert page.select_one("#e-lead_mm").text == "Enter a number."
+    assert page.select_one("#e-youngs_modulus_pa").text == "Required."
+    assert page.select_one("#e-density_kg_m3").text.startswith("Must be at least 1")
+    assert page.select_one("#f-lead_mm")["value"] == "abc"
+
+
+def test_htmx_request_gets_results_and_out_of_band_errors(client: TestClient) -> None:
+    response = client.get(f"/custom?{QUERY}", headers=HX)
+    assert response.headers["HX-Push-Url"].startswith("/custom?")
+    assert soup(response.text).select_one("#e-root_diameter_mm[hx-swap-oob]") is not None
+    bad = client.get(f"/custom?{QUERY.replace('lead_mm=2', 'lead_mm=x')}", headers=HX)
+    assert bad.headers["HX-Push-Url"] == "false"
+
+
+def test_exports_of_the_custom_screw(client: TestClient) -> None:
+    rows = list(csv.reader(io.StringIO(client.get(f"/custom/export.csv?{QUERY}").text)))
+    assert ["outer_diameter_mm", "10", "mm"] in rows
+    header = rows[rows.index([]) + 1]
+    assert header[:2] == ["status", "id"] and rows[-1][1] == "custom"
+    body = client.get(f"/custom/export.json?{QUERY}").json()
+    assert body["candidate"]["id"] == "custom" and body["inputs"]["load_n"] == 100
+
+
+def test_exports_with_bad_input_are_422(client: TestClient) -> None:
+    bad = QUERY.replace("root_diameter_mm=8", "root_diameter_mm=12")
+    for path in ("/custom/export.csv", "/custom/export.json"):
+        response = client.get(f"{path}?{bad}")
+        assert response.status_code == 422
+        assert "Root (minor) diameter" in response.text
+    assert client.get("/custom/export.csv").status_code == 422
+
+
+def test_selector_links_to_the_custom_page_and_each_detail_tries_its_screw(
+    client: TestClient,
+) -> None:
+    assert soup(client.get("/").text).select_one("a.custom-link[href='/custom']")
+    detail = soup(client.get("/detail?load=14&speed=20&length=200&id=B4000-L2").text)
+    link = detail.select_one(".try-custom a")["href"]
+    values = dict(parse_qsl(link.split("?", 1)[1]))
+    assert values["outer_diameter_mm"] == "6.35" and values["lead_mm"] == "2"
+    assert values["load"] == "14"
+    tried = soup(client.get(link).text)
+    assert tried.select_one(".custom-verdict")
+    assert tried.select_one("#f-friction_static")["value"] == values["friction_static"]
+
+
+# the selector's marks
+
+
+def test_governing_check_says_robust_or_marginal_and_assumed(client: TestClient) -> None:
+    robust = soup(client.get("/detail?load=14&speed=20&length=200&id=B4000-L2").text)
+    governing = robust.select_one("li.check:has(.tag)")
+    assert governing.select_one(".mark.robust") and governing.select_one(".mark.assumed")
+    marginal = soup(client.get("/detail?load=20&speed=20&length=200&id=B4000-L2").text)
+    mark = marginal.select_one("li.check:has(.tag) .mark.marginal")
+    assert mark is not None and "pv_limit_mpa_m_s" in mark.text
+    assert not marginal.select(".mark.robust")
+
+
+def test_warnings_are_listed_beside_the_candidate(client: TestClient) -> None:
+    axis = "load=20&speed=200&length=300&lead=10&coating=none&family=B"
+    page = soup(client.get(f"/?{axis}").text)
+    cell = page.select_one("tbody.candidate td[data-label=Governing]")
+    assert cell.select_one(".mark.warned").text == "Traverse speed"
+    detail = soup(client.get(f"/detail?{axis}&id=B4000-L10").text)
+    assert [li["data-check"] for li in detail.select("ul.warnings li")] == ["traverse_speed"]
+
+
+# the catalog
+
+
+def test_catalog_groups_series_by_family_with_a_comparison_table(
+    client: TestClient, catalog: Catalog
+) -> None:
+    page = soup(client.get("/catalog").text)
+    sections = page.select("section.family")
+    families = list(dict.fromkeys(s.family for s in catalog.series.values()))
+    assert [s["data-family"] for s in sections] == families
+    for section in sections:
+        series = [s for s in catalog.series.values() if s.family == section["data-family"]]
+        assert section.select_one("h2").text.startswith(series[0].family_name)
+        rows = section.select("table.family-compare tbody tr")
+        assert [r["data-series"] for r in rows] == [s.id for s in series]
+        assert [d["id"] for d in section.select("details.series")] == [s.id for s in series]
+    row = page.select_one("tr[data-series=ZBX8000]")
+    assert row.select_one("td[data-field=outer_diameter]").text.startswith("12.7 mm")
+    assert row.select_one("td[data-field=design_load] .kind")
+    assert row.select_one("td.variants").text == "uncoated, tfe"
+    assert "nut: polyacetal" in row.select_one("td.materials").text
+    iso = page.select_one("section[data-family=TR-C45] tbody tr")
+    assert iso.select_one("td[data-field=design_load]").text == "—"
+    assert iso.select_one("td.variants").text == "bronze, acetal, ptfe"
+
+
+def test_catalog_regions_have_unique_labels(client: TestClient) -> None:
+    page = soup(client.get("/catalog").text)
+    regions = page.select("[role=region]")
+    labels = [r.get("aria-label") or r.get("aria-labelledby") for r in regions]
+    assert all(labels) and len(set(labels)) == len(labels)
+    captions = [c.text for c in page.select("caption")]
+    assert len(set(captions)) == len(captions)
+
+
+def test_custom_page_leaves_out_the_catalog_filters(client: TestClient) -> None:
+    """Lead, coating, family, nut material and the ranking only choose among catalog
+    screws: the /custom form does not offer them, the selector does."""
+    custom = soup(client.get("/custom").text)
+    selector = soup(client.get("/").text)
+    for field in FIELDS:
+        named = f'[name="{field.page}"]'  # radio buttons share the name, not an id
+        assert selector.select_one(named) is not None, field.page
+        assert (custom.select_one(named) is not None) == (not field.catalog_only), field.page

@@ -1,0 +1,305 @@
+"""Figure dicts: valid Plotly figures with the expected traces, axes and numbers."""
+
+import json
+import math
+from typing import Any
+
+import plotly.graph_objects as go
+import pytest
+
+from app.catalog import Catalog
+from app.contract.schemas import ApplicationIn, SelectOut
+from app.core.formulas.critical_speed import critical_speed_rpm
+from app.report.service import run_selection
+from app.web.figures import TOP, chart_candidates, result_figures
+
+METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
+IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
+LBF, INCH, OZ_IN = 4.4482216152605, 25.4, 0.0070615518142260435  # N, mm, N m (NIST SP 811)
+
+
+def plain(result: SelectOut) -> dict[str, Any]:
+    """The result as the API serves it (plain JSON values) for assertions."""
+    data: dict[str, Any] = json.loads(result.model_dump_json())
+    return data
+
+
+@pytest.fixture(scope="module")
+def result(catalog: Catalog) -> SelectOut:
+    inputs = ApplicationIn(load_n=100, speed_mm_s=50, length_mm=500, lead_mm=10, max_torque_nm=0.3)
+    return run_selection(inputs, catalog)
+
+
+@pytest.mark.parametrize("units", [METRIC, IMPERIAL], ids=["metric", "imperial"])
+def test_every_figure_is_a_valid_plotly_figure(result: SelectOut, units: Any) -> None:
+    figures = result_figures(result, units)
+    assert set(figures) == {"critical_speed", "pv", "torque"}
+    for figure in figures.values():
+        go.Figure(figure)
+        json.dumps(figure, allow_nan=False)
+
+
+def curve_members(figure: dict[str, Any], candidates: list[dict[str, Any]]) -> list[list[str]]:
+    """The candidate ids each curve's legend names (series prefix written once)."""
+    members = []
+    for curve in figure["data"]:
+        if curve["name"] in ("Operating point", "Your length"):
+            continue
+        members.append([c["id"] for c in candidates if c["id"] in full_ids(curve["name"])])
+    return members
+
+
+def full_ids(name: str) -> set[str]:
+    """Ids a legend entry 'B14000: L60-TFE, L50-TFE' (or 'A, B') stands for."""
+    series, colon, rest = name.partition(": ")
+    if not colon:
+        return set(name.split(", "))
+    return {f"{series}-{part}" for part in rest.split(", ")}
+
+
+def test_critical_speed_draws_one_line_per_distinct_curve(
+    result: SelectOut, catalog: Catalog
+) -> None:
+    figure = result_figures(result, METRIC)["critical_speed"]
+    candidates = plain(result)["candidates"]
+    groups = curve_members(figure, candidates)
+    allowed = [
+        {round(c["critical_speed"]["allowed_rpm"], 1) for c in candidates if c["id"] in g}
+        for g in groups
+    ]
+    assert all(len(a) == 1 for a in allowed)  # one curve: one allowed speed
+    assert len({a.pop() for a in allowed}) == len(groups)  # no curve drawn twice
+    assert sum(map(len, groups)) >= len(groups)
+    assert figure["layout"]["xaxis"]["type"] == figure["layout"]["yaxis"]["type"] == "log"
+    assert figure["layout"]["xaxis"]["title"]["text"].endswith("[mm]")
+    factor = plain(result)["inputs"]["critical_speed_safety_factor"]
+    for curve, group in zip(figure["data"], groups, strict=False):
+        screw = catalog.by_id[group[0]]
+        for length_mm, rpm in zip(curve["x"][::10], curve["y"][::10], strict=True):
+            expected = factor * critical_speed_rpm(
+                screw.root_diameter_m,
+                length_mm / 1e3,
+                screw.youngs_modulus_pa,
+                screw.density_kg_m3,
+                plain(result)["inputs"]["end_fixity"],
+            )
+            assert rpm == pytest.approx(expected, rel=1e-3)
+
+
+def test_operating_points_do_not_overlap_and_carry_their_margin(result: SelectOut) -> None:
+    figure = result_figures(result, METRIC)["critical_speed"]
+    points, line = figure["data"][-2], figure["data"][-1]
+    assert line["x"] == [500.0, 500.0]
+    assert set(points["x"]) == {500.0}
+    pairs = list(zip(points["y"], points["marker"]["color"], strict=True))
+    assert len(pairs) == len(set(pairs))  # no two markers drawn on one spot
+    by_id = {c["id"]: c for c in plain(result)["candidates"]}
+    for rpm, text in zip(points["y"], points["text"], strict=True):
+        for line_text in text.split("<br>"):
+            cid, margin = line_text.split(": margin ")
+            assert by_id[cid]["rpm"] == pytest.approx(rpm, rel=1e-4)
+            expected = by_id[cid]["critical_speed"]["margin"]
+            assert float(margin.rstrip("×")) == pytest.approx(expected, abs=0.006)
+
+
+def test_log_axes_label_each_decade_and_steps_between(result: SelectOut) -> None:
+    axis = result_figures(result, METRIC)["critical_speed"]["layout"]["xaxis"]
+    assert axis["tickvals"] == [100.0, 200.0, 500.0, 1000.0, 2000.0, 5000.0]
+    assert axis["ticktext"] == ["100", "200", "500", "1000", "2000", "5000"]
+    pv_axis = result_figures(result, METRIC)["pv"]["layout"]["xaxis"]
+    assert pv_axis["tickvals"] == [5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0]
+
+
+def test_pv_curves_pass_through_the_limit_at_the_operating_speed(result: SelectOut) -> None:
+    figure = result_figures(result, METRIC)["pv"]
+    curves, point = figure["data"][:-1], figure["data"][-1]
+    candidates = plain(result)["candidates"]
+    groups = curve_members(figure, candidates)
+    assert point["x"] == [50.0] and point["y"] == [100.0]
+    by_id = {c["id"]: c for c in candidates}
+    for curve, group in zip(curves, groups, strict=True):
+        middle = len(curve["x"]) // 2
+        assert curve["x"][middle] == pytest.approx(50.0)
+        for cid in group:
+            assert curve["y"][middle] == pytest.approx(by_id[cid]["pv"]["max_load_n"], rel=1e-4)
+        products = {round(x * y, 1) for x, y in zip(curve["x"], curve["y"], strict=True)}
+        assert max(products) / min(products) == pytest.approx(1.0, abs=1e-3)
+    assert figure["layout"]["xaxis"]["type"] == "log"
+
+
+def test_legend_sits_below_the_plot_clear_of_the_toolbar(result: SelectOut) -> None:
+    for figure in result_figures(result, METRIC).values():
+        legend = figure["layout"]["legend"]
+        assert legend["yref"] == "container" and legend["y"] == 0
+        assert figure["layout"]["margin"]["t"] >= 30
+
+
+def test_lead_sweep_evaluates_every_lead_of_the_top_size(
+    result: SelectOut, catalog: Catalog
+) -> None:
+    figure = result_figures(result, METRIC, catalog)["lead_sweep"]
+    top = result.candidates[0]
+    same = [
+        s
+        for s in catalog.series[top.series].screws
+        if s.coated == top.coated and s.anti_backlash == top.anti_backlash
+    ]
+    torque, speed, pv_used, limit = figure["data"]
+    assert torque["x"] == sorted(round(s.lead_m * 1e3, 6) for s in same)
+    chosen = torque["x"].index(top.lead_mm)
+    assert torque["y"][chosen] == pytest.approx(top.torque.total_nm, rel=1e-4)
+    assert speed["y"][chosen] == pytest.approx(100 / top.critical_speed.margin, rel=1e-3)
+    pv_check = next(k for k in top.checks if k.name == "pv")
+    assert pv_used["y"][chosen] == pytest.approx(pv_check.utilization * 100, rel=1e-3)
+    band, marker = figure["layout"]["shapes"]
+    assert band["type"] == "rect" and band["x1"] == pytest.approx(
+        min(top.max_self_locking_lead_with_margin_mm, max(torque["x"])), rel=1e-4
+    )
+    assert limit["y"] == [100, 100] and limit["yaxis"] == "y2" and marker["x0"] == top.lead_mm
+    assert (
+        figure["layout"]["yaxis2"]["type"] == "log"
+        and 100.0 in figure["layout"]["yaxis2"]["tickvals"]
+    )
+
+
+def test_a_size_with_one_lead_of_its_nut_has_no_sweep(catalog: Catalog) -> None:
+    """Tr8x1.5 is made in one lead, with a bronze, an acetal or a PTFE nut: the top
+    (bronze) screw's size and nut has nothing to sweep, so the chart is left out rather
+    than drawn as three nuts stacked on one lead."""
+    inputs = ApplicationIn(load_n=100, speed_mm_s=50, length_mm=500)
+    result = run_selection(inputs, catalog)
+    assert result.candidates[0].id == "Tr8x1.5-bronze"
+    assert "lead_sweep" not in result_figures(result, METRIC, catalog)
+
+
+def test_torque_bars_stack_to_the_total(result: SelectOut) -> None:
+    figure = result_figures(result, METRIC)["torque"]
+    assert figure["layout"]["barmode"] == "stack"
+    assert [t["name"] for t in figure["data"]] == ["Inertia", "Drag", "Load"]
+    assert all(t["type"] == "bar" for t in figure["data"])
+    for i, candidate in enumerate(plain(result)["candidates"]):
+        stacked = sum(trace["y"][i] for trace in figure["data"])
+        assert stacked == pytest.approx(candidate["torque"]["total_nm"], rel=1e-3)
+    (limit,) = figure["layout"]["shapes"]
+    assert limit["y0"] == limit["y1"] == 0.3
+
+
+def test_axes_and_values_follow_the_display_units(result: SelectOut) -> None:
+    metric = result_figures(result, METRIC)
+    imperial = result_figures(result, IMPERIAL)
+    assert imperial["critical_speed"]["layout"]["xaxis"]["title"]["text"].endswith("[in]")
+    assert imperial["pv"]["layout"]["xaxis"]["title"]["text"].endswith("[in/s]")
+    assert imperial["pv"]["layout"]["yaxis"]["title"]["text"].endswith("[lbf]")
+    assert imperial["torque"]["layout"]["yaxis"]["title"]["text"].endswith("[oz in]")
+    assert imperial["pv"]["data"][-1]["y"][0] == pytest.approx(100 / LBF, rel=1e-4)
+    assert imperial["critical_speed"]["data"][-1]["x"][0] == pytest.approx(500 / INCH, rel=1e-4)
+    metric_load = metric["torque"]["data"][2]["y"][0]
+    assert imperial["torque"]["data"][2]["y"][0] == pytest.approx(metric_load / OZ_IN, rel=1e-3)
+
+
+def test_nothing_passing_charts_the_nearest_rejected(catalog: Catalog) -> None:
+    inputs = ApplicationIn(load_n=10000, speed_mm_s=500, length_mm=3000)
+    result = run_selection(inputs, catalog)
+    assert plain(result)["candidates"] == []
+    candidates, passing = chart_candidates(result)
+    assert not passing and candidates == result.rejected
+    figures = result_figures(result, METRIC)
+    groups = curve_members(figures["critical_speed"], plain(result)["rejected"])
+    assert groups[0][0] == plain(result)["rejected"][0]["id"]
+    assert 1 < len(groups) <= TOP
+    assert list(result_figures(result, METRIC)) == ["critical_speed", "pv", "torque"]
+    assert result.summary.most_excluding_check == "critical_speed"
+    assert "shapes" not in figures["torque"]["layout"]
+    assert math.isfinite(figures["pv"]["data"][-1]["y"][0])
+
+
+def test_nothing_passing_puts_the_most_excluding_checks_chart_first(catalog: Catalog) -> None:
+    result = run_selection(ApplicationIn(load_n=10000, speed_mm_s=500, length_mm=3000), catalog)
+    summary = result.summary.model_copy(update={"most_excluding_check": "pv"})
+    by_pv = result.model_copy(update={"summary": summary})
+    assert list(result_figures(by_pv, METRIC, catalog))[:3] == ["pv", "critical_speed", "torque"]
+
+
+def test_motor_and_move_charts_follow_the_segments(catalog: Catalog) -> None:
+    """Given a stroke and a motor curve: the curve drawn as given, each moving segment of
+    each top screw at (rpm, |torque| x safety factor), and the top screw's cycle over time
+    lasting the profile's cycle time, its constant segment at the top rpm."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200,
+         "motor_curve": [[0, 0.4], [600, 0.3], [1200, 0.1]], "torque_safety_factor": 1.5}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    figures = result_figures(result, METRIC)
+    assert {"motor", "move"} <= set(figures)
+    motor, move = figures["motor"], figures["move"]
+    go.Figure(motor)
+    go.Figure(move)
+    assert motor["data"][0]["x"] == [0, 600, 1200] and motor["data"][0]["y"] == [0.4, 0.3, 0.1]
+    top = result.candidates[0]
+    assert top.segments is not None and top.profile is not None
+    moving = [s for s in top.segments if s.name != "dwell"]
+    points = motor["data"][1]
+    assert points["name"] == top.id
+    assert points["y"] == pytest.approx([abs(s.torque_nm) * 1.5 for s in moving])
+    times = move["data"][0]["x"]
+    assert times[-1] == pytest.approx(top.profile.cycle_time_s)
+    constant = next(i for i, s in enumerate(top.segments) if s.name == "constant")
+    assert move["data"][0]["y"][2 * constant] == pytest.approx(top.segments[constant].rpm)
+    # the back move turns the shaft the other way: speed and torque both change sign, and
+    # the two axes share their zero (ranges symmetric about it)
+    back = next(i for i, s in enumerate(top.segments) if s.direction == "back")
+    speed, torque = move["data"][0]["y"], move["data"][1]["y"]
+    assert speed[2 * back + 1] < 0 and torque[2 * back] == pytest.approx(
+        -top.segments[back].torque_nm
+    )
+    for axis in ("yaxis", "yaxis2"):
+        low, high = move["layout"][axis]["range"]
+        assert low == -high and high > 0
+    assert move["layout"]["yaxis"]["range"][1] >= max(abs(v) for v in speed)
+    assert move["layout"]["yaxis2"]["range"][1] >= max(abs(v) for v in torque)
+
+
+def test_no_stroke_no_move_charts(result: SelectOut) -> None:
+    assert not {"motor", "move"} & set(result_figures(result, METRIC))
+
+
+def test_life_chart_falls_as_one_over_thrust(catalog: Catalog) -> None:
+    """With a duty, each wear-rated top screw's life in years against thrust: Archard's
+    life is inversely proportional to the thrust, so thrust x life is the same all along
+    the line, and at the axis's thrust it is the wear check's number; the band spans the
+    wear rate's range (3.3e-7 to 3e-6 against 1e-6 for acetal: 1/3 to 3.03 times)."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 200, "speed_mm_s": 20, "length_mm": 500, "stroke_mm": 200,
+         "cycles_per_day": 100, "required_life_years": 1, "family": ["TR-C45"],
+         "nut_material": "acetal"}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    figures = result_figures(result, METRIC, catalog)
+    life = figures["life"]
+    go.Figure(life)
+    json.dumps(life, allow_nan=False)
+    low, high, line = life["data"][:3]
+    top = result.candidates[0]
+    assert line["name"] == top.id
+    products = [x * y for x, y in zip(line["x"], line["y"], strict=True)]
+    assert products == pytest.approx([products[0]] * len(products))
+    wear = next(c for c in top.checks or [] if c.name == "wear_life")
+    middle = len(line["x"]) // 2
+    assert line["x"][middle] == pytest.approx(top.axial_load_n)
+    assert line["y"][middle] == pytest.approx(wear.limit)
+    assert high["y"][middle] / line["y"][middle] == pytest.approx(1e-6 / 3.3e-7)
+    assert low["y"][middle] / line["y"][middle] == pytest.approx(1 / 3)
+    assert life["layout"]["yaxis"]["title"]["text"] == "Wear life [years]"
+
+
+def test_a_library_motor_draws_its_model_curve(catalog: Catalog) -> None:
+    """The motor chart draws the library motor's pull-out curve from the stepper model:
+    the 17HS19-2004S1 holds 0.59 N m to its 530 rpm corner on 24 V."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200,
+         "motor": "17hs19-2004s1"}
+    )  # fmt: skip
+    figures = result_figures(run_selection(inputs, catalog), METRIC, catalog)
+    curve = figures["motor"]["data"][0]
+    assert curve["x"][:2] == pytest.approx([0.0, 530.0])
+    assert curve["y"][:2] == pytest.approx([0.59, 0.59])

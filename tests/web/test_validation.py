@@ -1,0 +1,60 @@
+"""The validation table and the guide: published examples within 1 %, pages that show them."""
+
+import pytest
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+from app.contract.fields import BY_API
+from app.contract.units import sig
+from app.core.checks import REGISTRY
+from app.web.guide import PROVENANCE
+from app.web.validation import EXAMPLES, TOLERANCE, Example
+
+
+def test_the_table_holds_at_least_twelve_examples_from_several_sources() -> None:
+    assert len(EXAMPLES) >= 12
+    assert len({e.source for e in EXAMPLES}) >= 8
+
+
+@pytest.mark.parametrize("example", EXAMPLES, ids=lambda e: f"{e.topic}-{e.published:g}")
+def test_every_published_example_is_within_one_percent(example: Example) -> None:
+    assert abs(example.ratio - 1) <= TOLERANCE, (example.value, example.published)
+
+
+def test_a_wrong_published_value_would_be_caught() -> None:
+    wrong = Example("t", "s", "i", EXAMPLES[0].published * 1.02, "rpm", EXAMPLES[0].compute)
+    assert abs(wrong.ratio - 1) > TOLERANCE
+
+
+def test_validation_page_shows_every_example_with_its_live_value(client: TestClient) -> None:
+    page = BeautifulSoup(client.get("/validation").text, "html.parser")
+    rows = page.select("table.validation tbody tr.example")
+    assert len(rows) == len(EXAMPLES)
+    for row, example in zip(rows, EXAMPLES, strict=True):
+        assert row.select_one(".source").text == example.source
+        assert row.select_one(".app-value").text == sig(example.value)
+        assert float(row.select_one(".published").text) == pytest.approx(example.published)
+        assert float(row.select_one(".ratio").text) == pytest.approx(example.ratio, abs=1e-4)
+    assert not page.select("tr.example.off")
+
+
+def test_guide_explains_every_check_provenance_and_ranking(client: TestClient) -> None:
+    page = BeautifulSoup(client.get("/guide").text, "html.parser")
+    checks = page.select("#checks .guide-check")
+    assert [c["data-check"] for c in checks] == [k.name for k in REGISTRY]
+    for item, check in zip(checks, REGISTRY, strict=True):
+        assert check.label in item.dt.text and check.kind in item.dt.text
+        assert item.select_one("code").text == check.formula
+        assert check.description in item.text and check.source in item.text
+    kinds = [d["data-kind"] for d in page.select("#provenance [data-kind]")]
+    assert kinds == [k for k, _ in PROVENANCE]
+    assert {"seed", "handbook", "standard", "vendor", "derived", "assumed", "user"} <= set(kinds)
+    ranks = [d["data-rank"] for d in page.select("#ranking [data-rank]")]
+    assert ranks == [c.value for c in BY_API["rank_by"].choices]
+    assert "lower torque" in page.select_one("#ranking [data-rank=size] dd").text
+
+
+def test_the_guide_is_linked_from_the_form_and_the_api_docs(client: TestClient) -> None:
+    form = BeautifulSoup(client.get("/").text, "html.parser").select_one("form#selector")
+    assert form.select_one("a[href='/guide']")
+    assert "[the guide](/guide)" in client.get("/openapi.json").json()["info"]["description"]
