@@ -657,7 +657,9 @@ def test_evaluate_custom_screw_against_hand_calculation(api: Api) -> None:
     # from rest: static friction while the load and m a already act
     breakaway_nm = (f + mass * accel) * lead / (2 * math.pi * eta_s) + screw_nm + drag
     h = (d_o - d_r) / 2  # thread depth
-    pv = (rpm / 60) * f / (3 * h) / 1e6  # PV = n F / (3 h), three threads, MPa m/s
+    # PV = n F_peak / (3 h), three threads, MPa m/s, at the peak thrust F + m a = 102 N
+    # (the accelerating segment ends at the top speed still carrying m a)
+    pv = (rpm / 60) * (f + mass * accel) / (3 * h) / 1e6
 
     fields = {"accel_mm_s2": 1000.0, "moving_mass_kg": mass}
     c = evaluate(api, {**CUSTOM_SCREW, "drag_torque_nm": drag}, **fields)["candidate"]

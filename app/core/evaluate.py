@@ -264,7 +264,7 @@ def _buckling(app: Application, s: ScrewSpec, r: Quantities[float]) -> Buckling:
     transition = number(r.transition_slenderness)
     short = transition is not None and r.slenderness < transition
     return Buckling(
-        applies=app.compression,
+        applies=r.compressive_force_n > 0.0,
         critical_load_n=r.critical_load_n,
         allowed_load_n=r.allowed_load_n,
         safety_factor=app.buckling_safety_factor,

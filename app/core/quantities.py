@@ -42,19 +42,44 @@ def axial_load(app: Application) -> float:
     return app.load_n
 
 
-@formula("F_peak = F + m a", "Newton's second law")
+@formula("F_peak = max |F_nut| over the segments of both moves and at rest", "Newton's second law")
 def peak_axial_load(app: Application) -> float:
-    """Peak thrust on the nut [N]: the running thrust plus the force m a that accelerates
-    (or decelerates) the moving mass, F_peak = F + m a (Newton's second law).
-
-    Accelerating against the load, or braking a mass that moves with it (a descending
-    vertical axis), adds m a to the thrust; the other two cases subtract it.
+    """Peak thrust on the nut [N]: the largest force the nut exerts on the moving mass in
+    any segment of either move or at rest (``motion.nut_force_forms``), so the running
+    thrust plus m a accelerating against the load, or plus m d braking a mass that moves
+    with it, whichever is larger (Newton's second law).
 
     >>> peak_axial_load(Application(load_n=5.0, speed_m_s=0.1, length_m=0.5,
     ...                             moving_mass_kg=50.0, accel_m_s2=5.0))
     255.0
+    >>> round(peak_axial_load(Application(load_n=0.0, speed_m_s=0.1, length_m=0.5,
+    ...     moving_mass_kg=20.0, accel_m_s2=1.0, decel_m_s2=2.0, orientation="vertical")), 2)
+    236.13
     """
-    return axial_load(app) + app.moving_mass_kg * app.accel_m_s2
+    return max(abs(f) for f in motion.nut_forces(app))
+
+
+def compression_sign(app: Application) -> float:
+    """+1 when a nut force up (out) pushes the screw onto its thrust bearing (compression),
+    -1 when it pulls the screw away from it (tension)."""
+    return 1.0 if app.compression else -1.0
+
+
+@formula("F_c = max(0, c F_nut) over the segments of both moves and at rest", "statics")
+def compressive_axial_load(app: Application) -> float:
+    """The largest thrust that pushes the screw onto its thrust bearing [N], in any segment
+    of either move or at rest: c F_nut with c = +1 when an up (out) force compresses the
+    screw (``app.compression``), else -1; 0 when the screw is only ever pulled. A
+    horizontal axis whose load opposes the motion compresses the screw on one of the two
+    moves whichever end holds the bearing.
+
+    >>> compressive_axial_load(Application(load_n=5.0, speed_m_s=0.1, length_m=0.5,
+    ...                                    moving_mass_kg=50.0, accel_m_s2=5.0,
+    ...                                    compression=False))
+    255.0
+    """
+    c = compression_sign(app)
+    return max(0.0, *(c * f for f in motion.nut_forces(app)))
 
 
 @dataclass(frozen=True, slots=True)
@@ -121,6 +146,13 @@ class Quantities(Generic[V]):
     #: the acceleration at which the worst segment fits the curve when that segment is an
     #: acceleration (NaN otherwise, or when no acceleration fits)
     motor_fitting_accel_m_s2: V
+    #: The largest thrust that compresses the screw (0: only ever pulled) [N]; the rotor's
+    #: inertia torque J_motor alpha (inside ``inertia_nm`` and ``total_nm``); the largest
+    #: motor torque of any moving segment of either move, rotor included, without the
+    #: safety factor (what the drive must give at its peak).
+    compressive_force_n: V
+    inertia_motor_nm: V
+    peak_torque_nm: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -138,34 +170,42 @@ NAMES = tuple(f.name for f in fields(Quantities))
 
 
 def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
-    """Motor torque: the screw's own inertia J alpha, and every force that passes through
-    the sliding thread (the load and the force m a that accelerates the moving mass) at
-    the thread's efficiency, plus the nut's drag. Starting from rest the thread is at
-    static friction while the load and m a already act."""
+    """Motor torque: the screw's and the rotor's inertia J alpha, and every force that
+    passes through the sliding thread (the load and the force m a that accelerates the
+    moving mass) at the thread's efficiency, plus the nut's drag. Starting from rest the
+    thread is at static friction while the load and m a already act. The required torque
+    is the larger of break-away and the peak of the moving segments of both moves
+    (``motion.moving_torques``: decelerating a descending load may need more)."""
     alpha = torque.angular_acceleration(app.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     j_mass = torque.reflected_mass_inertia(app.moving_mass_kg, t.lead_m)
     inertial_force_n = app.moving_mass_kg * app.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
+    t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
     t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency)
     t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
-    t_total = torque.total_torque(t_screw + t_mass, t.drag_max_nm, t_load)
+    t_total = torque.total_torque(t_screw + t_motor + t_mass, t.drag_max_nm, t_load)
     t_start = (
         torque.load_torque(force_n + inertial_force_n, t.lead_m, t.efficiency_static)
         + t_screw
+        + t_motor
         + t.drag_max_nm
     )
+    moving = np.stack([np.abs(m[3]) for m in motion.moving_torques(app, t)])
+    peak = np.maximum(moving.max(axis=0), t_start)
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
         "inertia_screw_nm": t_screw,
         "inertia_mass_nm": t_mass,
-        "inertia_nm": t_screw + t_mass,
+        "inertia_motor_nm": t_motor,
+        "inertia_nm": t_screw + t_motor + t_mass,
         "drag_nm": t.drag_max_nm,
         "load_nm": t_load,
         "total_nm": t_total,
         "breakaway_nm": t_start,
-        "required_nm": np.maximum(t_total, t_start) * app.torque_safety_factor,
+        "peak_torque_nm": peak,
+        "required_nm": peak * app.torque_safety_factor,
     }
 
 
@@ -197,7 +237,8 @@ def _finite(values: Array) -> Array:
 
 
 def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dict[str, Any]:
-    """PV of the nut (seed, three threads in contact) and its limits inverted."""
+    """PV of the nut (seed, three threads in contact) and its limits inverted, at the peak
+    thrust ``force_n``: an accelerating segment ends at the top speed still carrying m a."""
     area = pv.contact_area(t.helix_travel_m, t.thread_depth_m)
     limit = t.pv_limit_pa_m_s
     return {
@@ -294,10 +335,11 @@ def _values(
     return {
         "force_n": np.full(len(t), force_n),
         "peak_force_n": np.full(len(t), peak_n),
+        "compressive_force_n": np.full(len(t), compressive_axial_load(app)),
         "rpm": rpm,
         **torques,
         **_column_limits(app, t, peak_n),
-        **_nut(app, t, force_n, rpm),
+        **_nut(app, t, peak_n, rpm),
         **_flanks(t, rpm),
         **_duty(app, t),
         **(holding := _holding(app, t, force_n)),

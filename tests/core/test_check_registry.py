@@ -156,7 +156,7 @@ def test_every_check_applies_under_some_application(catalog: Catalog) -> None:
     [
         pytest.param(
             "buckling",
-            "F = F_peak; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / "
+            "F = F_c; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / "
             "S_y) else A * S_y)",
             id="buckling-short-column-as-squash-load",
         ),

@@ -1,0 +1,115 @@
+"""What a real axis feels, through the API (issue 21): the inertia of the moving mass and
+the rotor in every check, the load's direction, holding with a brake or a stepper, ranking
+and fixes. Each figure is worked out here by hand from the reference formulas
+(engineering.md; Shigley, Mechanical Engineering Design, 10th ed., sec. 8-2; Newton's
+second law on the moving mass), never read back from the app."""
+
+import math
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from fastapi import FastAPI
+from fastapi.testclient import TestClient
+
+G = 9.80665
+COS_ACME = math.cos(math.radians(14.5))
+COS_ISO = math.cos(math.radians(15.0))
+API = "/api/v1"
+
+
+@pytest.fixture(scope="module")
+def client(app: FastAPI) -> Iterator[TestClient]:
+    with TestClient(app) as test_client:
+        yield test_client
+
+
+def evaluate(client: TestClient, screw: str, **application: Any) -> Any:
+    body = {"application": application, "screw": {"catalog_id": screw}}
+    response = client.post(f"{API}/evaluate", json=body)
+    assert response.status_code == 200, response.text
+    return response.json()["candidate"]
+
+
+def check(candidate: dict[str, Any], name: str) -> dict[str, Any]:
+    return next(c for c in candidate["checks"] if c["name"] == name)
+
+
+def names(candidate: dict[str, Any]) -> set[str]:
+    return {c["name"] for c in candidate["checks"]}
+
+
+def eta(tan_l: float, mu: float, cos_a: float) -> float:
+    """Shigley's forward efficiency of a thread of flank half-angle a_n."""
+    return (cos_a - mu * tan_l) / (cos_a + mu / tan_l)
+
+
+def eta_back(tan_l: float, mu: float, cos_a: float) -> float:
+    """Shigley's back-drive efficiency (signed: negative when the thread self-locks)."""
+    return (cos_a * tan_l - mu) / (tan_l * (cos_a + mu * tan_l))
+
+
+# B4000 (1/4 in, root 0.78 OD assumed), 12 mm lead, TFE: mu 0.09 running, 0.08 static;
+# screw inertia 2.11e-8 kg m^2 per inch (seed, exponent corrected); free-wheeling, no drag.
+B4_OD, B4_RD, B4_LEAD = 6.35e-3, 0.78 * 6.35e-3, 0.012
+B4_TAN = B4_LEAD / (math.pi * (B4_OD + B4_RD) / 2)
+B4_J_PER_M = 2.11e-8 / 0.0254
+
+# --- 1. inertia everywhere ------------------------------------------------------------------
+
+PICK_AND_PLACE = {
+    "load_n": 0, "speed_mm_s": 250, "length_mm": 300, "stroke_mm": 200, "accel_mm_s2": 10000,
+    "moving_mass_kg": 0.5, "motor_inertia_kg_m2": 5.4e-6, "max_torque_nm": 0.05,
+}  # fmt: skip
+
+
+def test_max_torque_check_includes_rotor_inertia(client: TestClient) -> None:
+    """B4000-L12-TFE, 0.5 kg at 10 m/s^2, rotor 5.4e-6 kg m^2 (a NEMA 17 stepper's 54 g cm^2):
+    alpha = 2 pi a / lead = 5236 rad/s^2;
+    m a through the thread 5 x 0.012 / (2 pi x 0.8239) = 0.01159 N m,
+    screw J alpha = 8.31e-7 x 0.3 x 5236 = 0.00130 N m, rotor J alpha = 0.02827 N m:
+    the accelerating segment needs 0.04117 N m, not the 0.01289 N m without the rotor, and
+    the check judges the same figure as the move's own peak segment."""
+    c = evaluate(client, "B4000-L12-TFE", **PICK_AND_PLACE)
+    alpha = 2 * math.pi * 10.0 / B4_LEAD
+    t_mass = 0.5 * 10.0 * B4_LEAD / (2 * math.pi * eta(B4_TAN, 0.09, COS_ACME))
+    t_screw = B4_J_PER_M * 0.3 * alpha
+    t_rotor = 5.4e-6 * alpha
+    hand = t_mass + t_screw + t_rotor
+    assert B4_TAN == pytest.approx(0.6759, abs=1e-4)
+    assert eta(B4_TAN, 0.09, COS_ACME) == pytest.approx(0.8239, abs=1e-4)
+    assert (t_mass, t_screw, t_rotor) == pytest.approx((0.01159, 0.001305, 0.02827), abs=2e-5)
+    assert check(c, "torque")["value"] == pytest.approx(hand, rel=1e-6)
+    assert hand == pytest.approx(0.04117, abs=1e-5) and check(c, "torque")["passed"]
+    assert c["torque"]["peak_nm"] == pytest.approx(hand, rel=1e-6)
+    assert c["torque"]["inertia_nm"] == pytest.approx(t_mass + t_screw + t_rotor, rel=1e-6)
+    assert c["torque"]["total_nm"] == pytest.approx(hand, rel=1e-6)  # no load, no drag
+
+
+def test_the_nut_carries_m_a_with_no_load(client: TestClient) -> None:
+    """Tr16x4 bronze, load 0, 20 kg at 2 m/s^2: the nut carries m a = 40 N, not 0 N
+    (contact pressure); B4000-L12-TFE's PV at 40 N and n = 0.05 / 0.012 rev/s is
+    n F / (3 h) with h = (OD - RD) / 2 (seed PV, three threads, H.T. cancels), in MPa m/s."""
+    axis = {"load_n": 0, "speed_mm_s": 50, "length_mm": 500, "moving_mass_kg": 20,
+            "accel_mm_s2": 2000}  # fmt: skip
+    bronze = check(evaluate(client, "Tr16x4-bronze", **axis), "bearing_pressure")
+    assert bronze["value"] == pytest.approx(20 * 2.0)
+    b4 = evaluate(client, "B4000-L12-TFE", **axis)
+    h = (B4_OD - B4_RD) / 2
+    assert check(b4, "pv")["value"] == pytest.approx(0.05 / 0.012 * 40.0 / (3 * h) / 1e6)
+
+
+def test_braking_deceleration_sets_the_peak_thrust(client: TestClient) -> None:
+    """Vertical, 20 kg, load 0, accel 1 m/s^2, decel 2 m/s^2: braking the descent pushes
+    m g + m d = 196.13 + 40 = 236.13 N on the nut (not m g + m a = 216.13 N): buckling
+    (thrust bearing below the nut), root stress and design load all judge 236.13 N."""
+    c = evaluate(client, "B8000-L10", load_n=0, speed_mm_s=50, length_mm=500,
+                 orientation="vertical", moving_mass_kg=20, accel_mm_s2=1000,
+                 decel_mm_s2=2000, brake_torque_nm=1)  # fmt: skip
+    peak = 20 * G + 20 * 2.0
+    assert peak == pytest.approx(236.13, abs=0.01)
+    assert c["peak_axial_load_n"] == pytest.approx(peak)
+    assert check(c, "buckling")["value"] == pytest.approx(peak)
+    assert check(c, "design_load")["value"] == pytest.approx(peak)
+    root_area = math.pi * (0.78 * 12.7e-3) ** 2 / 4
+    assert check(c, "root_stress")["value"] == pytest.approx(peak / root_area / 1e6)
