@@ -22,7 +22,14 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal, get_args
 
-from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
+from app.core.model import (
+    AdvicePolicy,
+    CoatingChoice,
+    EndFixity,
+    LoadDirection,
+    Orientation,
+    RankBy,
+)
 from app.units import API_SYSTEM, SWITCHED, UNITS, Quantity, from_api, label
 
 Kind = Literal["number", "whole number", "yes-no", "choice", "text", "list", "curve"]
@@ -205,12 +212,15 @@ FIELDS: tuple[InputField, ...] = (
         texts={"horizontal": "Horizontal", "vertical": "Vertical"},
     ),
     InputField(
-        api="compression", page="compression", core="compression", label="Load direction",
-        help="Only a pushed screw can buckle", group="Motion and load", kind="yes-no",
+        api="compression", page="compression", core="compression", label="Thrust bearing",
+        help="Where the screw's thrust bearing sits, which says whether each stroke pushes "
+        "or pulls the screw; only a pushed screw can buckle, and a load that reverses "
+        "pushes it on one of the two moves",
+        group="Motion and load", kind="yes-no",
         default=True,
         texts={
-            "true": "Compression (pushes on the screw)",
-            "false": "Tension (pulls on the screw)",
+            "true": "Compression on the up (out) move: the bearing at the end the nut leaves",
+            "false": "Tension on the up (out) move: the bearing at the end the nut approaches",
         },
     ),
     InputField(
@@ -372,6 +382,17 @@ FIELDS: tuple[InputField, ...] = (
         "cycle (needs a stroke); empty for no check",
         group="Motor and move", kind="number", bounds=(1e-6, 1e5), dimension="torque",
         needs=("stroke_mm",),
+    ),
+    InputField(
+        api="load_direction", page="load_direction", core="load_direction",
+        label="Load direction", help="How the axial load acts on the moving mass",
+        group="Motion and load", kind="choice", default="auto", options=LoadDirection,
+        texts={
+            "auto": "By orientation: a weight when vertical, against the motion when "
+            "horizontal",
+            "opposes": "Against the motion both ways (friction, cutting)",
+            "fixed": "One way, against the up (out) move (a weight, spring or press)",
+        },
     ),
 )
 # fmt: on

@@ -449,7 +449,8 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
     # fields beyond the issue's list are optional and stay off unless given
     # the self-locking margin, the advice policy and the dwell have defaults of their own
-    later = {"self_locking_friction_factor": 0.5, "advice": "warn", "dwell_s": 0.0}
+    later = {"self_locking_friction_factor": 0.5, "advice": "warn", "dwell_s": 0.0,
+             "load_direction": "auto"}  # fmt: skip
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
     assert all(inputs[k] is None for k in rest)

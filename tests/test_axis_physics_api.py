@@ -76,7 +76,8 @@ def test_max_torque_check_includes_rotor_inertia(client: TestClient) -> None:
     t_screw = B4_J_PER_M * 0.3 * alpha
     t_rotor = 5.4e-6 * alpha
     hand = t_mass + t_screw + t_rotor
-    assert B4_TAN == pytest.approx(0.6759, abs=1e-4)
+    tan_l = B4_TAN
+    assert tan_l == pytest.approx(0.6759, abs=1e-4)
     assert eta(B4_TAN, 0.09, COS_ACME) == pytest.approx(0.8239, abs=1e-4)
     assert (t_mass, t_screw, t_rotor) == pytest.approx((0.01159, 0.001305, 0.02827), abs=2e-5)
     assert check(c, "torque")["value"] == pytest.approx(hand, rel=1e-6)
@@ -113,3 +114,69 @@ def test_braking_deceleration_sets_the_peak_thrust(client: TestClient) -> None:
     assert check(c, "design_load")["value"] == pytest.approx(peak)
     root_area = math.pi * (0.78 * 12.7e-3) ** 2 / 4
     assert check(c, "root_stress")["value"] == pytest.approx(peak / root_area / 1e6)
+
+
+# --- 2. the load's direction -----------------------------------------------------------------
+
+# ZBX8000 (1/2 in, root 0.78 OD), 10 mm lead, uncoated: mu 0.15 running, 0.08 static,
+# drag 0.02-0.04 N m (the top for sizing).
+Z8_OD, Z8_RD, Z8_LEAD, Z8_DRAG = 12.7e-3, 0.78 * 12.7e-3, 0.010, 0.04
+Z8_TAN = Z8_LEAD / (math.pi * (Z8_OD + Z8_RD) / 2)
+
+
+def segment(candidate: dict[str, Any], name: str, direction: str) -> dict[str, Any]:
+    return next(
+        s for s in candidate["segments"] if (s["name"], s["direction"]) == (name, direction)
+    )
+
+
+def test_guide_friction_on_a_vertical_axis_opposes_both_ways(client: TestClient) -> None:
+    """2 kg on a vertical ZBX8000-L10 with 50 N of guide friction. Up at constant speed the
+    nut pushes m g + 50 = 69.61 N; down it must push the carriage through the friction,
+    50 - m g = 30.39 N against the motion: T = 30.39 x 0.01 / (2 pi x 0.6170) + 0.04 =
+    0.1184 N m driving. Taken as weight the 50 N would let the load drive the screw
+    down (-69.61 N, eta_b 0.431): -0.0078 N m, the motor braking. Only the weight is held
+    at rest (friction holds nothing): T_physics = 19.61 x 0.01 x eta_b(mu_s 0.08) / 2 pi."""
+    axis = {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "stroke_mm": 200,
+            "orientation": "vertical", "moving_mass_kg": 2, "brake_torque_nm": 1}  # fmt: skip
+    c = evaluate(client, "ZBX8000-L10", **axis, load_direction="opposes")
+    e = eta(Z8_TAN, 0.15, COS_ACME)
+    assert e == pytest.approx(0.6170, abs=1e-4)
+    down = segment(c, "constant", "down")
+    assert down["thrust_n"] == pytest.approx(50 - 2 * G)
+    assert down["torque_nm"] == pytest.approx((50 - 2 * G) * Z8_LEAD / (2 * math.pi * e) + Z8_DRAG)
+    assert down["torque_nm"] == pytest.approx(0.1184, abs=1e-4)
+    up = segment(c, "constant", "up")
+    assert up["torque_nm"] == pytest.approx((50 + 2 * G) * Z8_LEAD / (2 * math.pi * e) + Z8_DRAG)
+    as_weight = segment(evaluate(client, "ZBX8000-L10", **axis), "constant", "down")
+    eb = eta_back(Z8_TAN, 0.15, COS_ACME)
+    assert eb == pytest.approx(0.431, abs=1e-3)
+    assert as_weight["torque_nm"] == pytest.approx(-(50 + 2 * G) * Z8_LEAD * eb / (2 * math.pi)
+                                                   + Z8_DRAG)  # fmt: skip
+    assert as_weight["torque_nm"] == pytest.approx(-0.0078, abs=1e-4)
+    hold = 2 * G * Z8_LEAD * eta_back(Z8_TAN, 0.08, COS_ACME) / (2 * math.pi)
+    assert c["holding_torque"]["physics_nm"] == pytest.approx(hold)
+
+
+def test_a_spring_on_a_horizontal_axis_is_held_and_compresses_one_way(
+    client: TestClient,
+) -> None:
+    """A 100 N spring pushing a horizontal ZBX8000-L10 back (a load of fixed direction):
+    the nut pushes 100 N out and back alike, so with the thrust bearing at the far end
+    (tension on the out move) the screw is never pushed (no buckling), and at rest the
+    spring must be held like a weight: without a brake the self-locking check applies."""
+    c = evaluate(client, "ZBX8000-L10", load_n=100, speed_mm_s=50, length_mm=500,
+                 load_direction="fixed", compression=False)  # fmt: skip
+    assert "buckling" not in names(c) and "back_driving" in names(c)
+    opposing = evaluate(client, "ZBX8000-L10", load_n=100, speed_mm_s=50, length_mm=500,
+                        compression=False)  # fmt: skip
+    # friction reverses on the move back and pushes the screw with the 100 N
+    assert check(opposing, "buckling")["value"] == pytest.approx(100.0)
+    assert "back_driving" not in names(opposing)
+
+
+def test_load_direction_is_a_field_with_a_422(client: TestClient) -> None:
+    response = client.get(f"{API}/select", params={"load_n": 1, "speed_mm_s": 1,
+                          "length_mm": 100, "load_direction": "sideways"})  # fmt: skip
+    assert response.status_code == 422
+    assert response.json()["detail"][0]["field"] == "load_direction"

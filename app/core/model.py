@@ -9,6 +9,10 @@ from app.core.phrase import Phrase, Quantity
 EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
 Orientation = Literal["horizontal", "vertical"]
 CoatingChoice = Literal["auto", "tfe", "none"]
+#: How the user's load acts: by the orientation (a weight when vertical, against the
+#: motion when horizontal), against the motion both ways (friction, cutting), or one way,
+#: against the up (out) move (a weight, spring or press).
+LoadDirection = Literal["auto", "opposes", "fixed"]
 RankBy = Literal["torque", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
@@ -40,6 +44,8 @@ class Application:
     moving_mass_kg: float = 0.0
     end_fixity: EndFixity = "fixed-simple"
     orientation: Orientation = "horizontal"
+    #: True: a nut force up (out) pushes the screw onto its thrust bearing (the bearing at
+    #: the end the nut leaves on the up or out move); False: it pulls the screw.
     compression: bool = True
     require_anti_backlash: bool = False
     coating: CoatingChoice = "auto"
@@ -70,6 +76,7 @@ class Application:
     motor_inertia_kg_m2: float | None = None
     motor_curve: tuple[tuple[float, float], ...] = ()
     motor_rms_torque_nm: float | None = None
+    load_direction: LoadDirection = "auto"
 
 
 @dataclass(frozen=True, slots=True)

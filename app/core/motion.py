@@ -7,11 +7,13 @@ horizontal one. The torque of a moving segment is the thrust through the thread 
 direction the power flows, ``profile.thread_torque``), the nut's drag, and the rotary
 inertia of the screw and the motor's rotor times the angular acceleration; the moving
 mass enters through the thrust as m a (against the motion when accelerating, with it
-when decelerating). In a dwell the motor holds the load: the holding torque on a vertical
-axis that does not self-lock, else nothing. Every thrust comes from the force the nut
+when decelerating). In a dwell the motor holds the load: the holding torque where the
+axis holds a load (vertical, or a load of fixed direction) and does not self-lock, else
+nothing. Every thrust comes from the force the nut
 exerts on the moving mass in the axis's own frame (``nut_force_forms``): the load acts
-against the motion both ways on a horizontal axis and downwards, with the weight, on a
-vertical one.
+one way (a weight, spring or press) or against the motion both ways (friction), as the
+user says; by default downwards on a vertical axis and against the motion on a
+horizontal one.
 """
 
 import math
@@ -74,12 +76,27 @@ def directions(app: Application) -> tuple[tuple[Direction, float], tuple[Directi
     return (("out", 1.0), ("back", -1.0))
 
 
+def load_sense(app: Application) -> tuple[float, float]:
+    """How the user's load acts, as (s, o): (1, 0) one way, against the up (out) move, as
+    a weight does; (0, 1) against the motion both ways, as friction does. ``auto``: a
+    weight on a vertical axis, against the motion on a horizontal one."""
+    direction = app.load_direction
+    if direction == "auto":
+        direction = "fixed" if app.orientation == "vertical" else "opposes"
+    return (1.0, 0.0) if direction == "fixed" else (0.0, 1.0)
+
+
+def holds_a_load(app: Application) -> bool:
+    """Whether the axis must hold a load at rest: a vertical axis (its moving mass's
+    weight) or a load of fixed direction (a spring or press on a horizontal one)."""
+    return app.orientation == "vertical" or load_sense(app)[0] > 0.0
+
+
 def steady_load(app: Application) -> float:
-    """The load the axis carries at rest [N]: the weight m g of the moving mass on a
-    vertical axis and the user's load, which acts as a weight there."""
-    if app.orientation == "vertical":
-        return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
-    return 0.0
+    """The load the axis holds at rest [N]: the weight m g of the moving mass on a
+    vertical axis and the user's load when it acts one way (friction holds nothing)."""
+    weight = app.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
+    return weight + app.load_n * load_sense(app)[0]
 
 
 #: A thrust linear in the user's load: (N at load 0, N per N of load).
@@ -96,8 +113,9 @@ def nut_force_forms(app: Application) -> list[Form]:
     F_nut = m x'' + W + F (s + v o), with x'' the segment's acceleration along the axis
     (+a, 0, -d moving up or out; -a, 0, +d moving down or back), W = m g on a vertical
     axis, v = +1 up or out and -1 down or back, and (s, o) = (1, 0) for a load of fixed
-    direction (a weight: it acts down, against the up move) or (0, 1) for one that opposes
-    the motion (friction: on a horizontal axis, both ways). At rest F_nut = W + F s.
+    direction (a weight, spring or press: against the up or out move) or (0, 1) for one
+    that opposes the motion both ways (friction, cutting) (``load_sense``). At rest
+    F_nut = W + F s.
 
     >>> app = Application(load_n=10.0, speed_m_s=0.1, length_m=0.5, moving_mass_kg=2.0,
     ...                   accel_m_s2=3.0, decel_m_s2=5.0)
@@ -105,7 +123,7 @@ def nut_force_forms(app: Application) -> list[Form]:
     [16.0, 10.0, 0.0, -16.0, -10.0, 0.0, 0.0]
     """
     weight = app.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
-    fixed, opposing = (1.0, 0.0) if app.orientation == "vertical" else (0.0, 1.0)
+    fixed, opposing = load_sense(app)
     forms: list[Form] = []
     for _, v in directions(app):
         for _, sign in RAMPS:
@@ -120,13 +138,14 @@ def nut_forces(app: Application) -> list[float]:
 
 
 def largest_load(forms: list[Form], allowed_n: float) -> float | None:
-    """The largest load F >= 0 with every g + h F at most ``allowed_n`` [N]; None when no
-    load meets them all, or none bounds the load from above (the load is not the cause).
+    """The largest load F with every g + h F at most ``allowed_n`` [N], below 0 when even
+    no load is too much (the caller's input bounds refuse it); None when no load meets
+    them all, or none bounds the load from above (the load is not the cause).
 
     >>> largest_load([(5.0, 1.0), (-5.0, -1.0)], 20.0), largest_load([(30.0, 0.0)], 20.0)
     (15.0, None)
     """
-    low, high = 0.0, math.inf
+    low, high = -math.inf, math.inf
     for g, h in forms:
         if h > 0.0:
             high = min(high, (allowed_n - g) / h)
@@ -182,8 +201,8 @@ def moving_torques(
 
 
 def _dwell(app: Application, direction: Direction, hold_nm: Array) -> Segment[Array]:
-    """The dwell after a move: at rest, holding the load on a vertical axis."""
-    held = steady_load(app) > 0.0
+    """The dwell after a move: at rest, holding the load where there is one to hold."""
+    held = holds_a_load(app)
     return Segment(
         name="dwell",
         direction=direction,

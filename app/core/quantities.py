@@ -36,7 +36,8 @@ REFERENCE_TEMPERATURE_C = 20.0
 
 @formula("F = load (+ m g when vertical), the running thrust", "statics")
 def axial_load(app: Application) -> float:
-    """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical."""
+    """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical
+    (on the up move, or on the move against a load of fixed direction)."""
     if app.orientation == "vertical":
         return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
     return app.load_n
@@ -153,6 +154,9 @@ class Quantities(Generic[V]):
     compressive_force_n: V
     inertia_motor_nm: V
     peak_torque_nm: V
+    #: the load held at rest (``motion.steady_load``: weight and loads of fixed direction;
+    #: friction holds nothing) [N]
+    holding_force_n: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -296,7 +300,8 @@ def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
 
 
 def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
-    """Holding the load at standstill. The thread counts as self-locking only with static
+    """Holding the load ``force_n`` at standstill (``motion.steady_load``: friction holds
+    nothing). The thread counts as self-locking only with static
     friction reduced by ``app.self_locking_friction_factor``; otherwise a brake (or the
     motor's holding torque) must hold the larger of the seed's value (forward efficiency,
     running friction) and the physical one (back-drive efficiency, static friction)."""
@@ -336,13 +341,14 @@ def _values(
         "force_n": np.full(len(t), force_n),
         "peak_force_n": np.full(len(t), peak_n),
         "compressive_force_n": np.full(len(t), compressive_axial_load(app)),
+        "holding_force_n": np.full(len(t), motion.steady_load(app)),
         "rpm": rpm,
         **torques,
         **_column_limits(app, t, peak_n),
         **_nut(app, t, peak_n, rpm),
         **_flanks(t, rpm),
         **_duty(app, t),
-        **(holding := _holding(app, t, force_n)),
+        **(holding := _holding(app, t, motion.steady_load(app))),
         **_motor(app, t, rpm, holding["brake_nm"], torques),
     }
 

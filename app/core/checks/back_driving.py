@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -35,7 +36,7 @@ class BackDriving(Check):
     capacity_sources = ("friction_static", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        return app.orientation == "vertical" and app.brake_torque_nm is None
+        return motion.holds_a_load(app) and app.brake_torque_nm is None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), t.lead_m, q.max_lock_lead_m)

@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -33,7 +34,7 @@ class Holding(Check):
     sources = ("friction_static", "friction_dynamic", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        return app.orientation == "vertical" and app.brake_torque_nm is not None
+        return motion.holds_a_load(app) and app.brake_torque_nm is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), q.brake_needed_nm, same(t, app.brake_torque_nm))
@@ -44,7 +45,7 @@ class Holding(Check):
         return {
             "locks": q.locks_with_margin.astype(bool),
             "SF": app.torque_safety_factor,
-            "T_seed": efficiency.holding_torque(q.force_n, t.lead_m, t.efficiency),
+            "T_seed": efficiency.holding_torque(q.holding_force_n, t.lead_m, t.efficiency),
             "T_physics": q.holding_physics_nm,
             "T_brake": np.float64(app.brake_torque_nm or 0.0),
         }
