@@ -26,6 +26,7 @@ from app.core.model import (
     AdvicePolicy,
     CoatingChoice,
     EndFixity,
+    HoldingSource,
     LoadDirection,
     Orientation,
     RankBy,
@@ -303,8 +304,9 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
         label="Holding torque", group="Duty and requirements", kind="number",
-        help="Vertical axis: a brake's, or the motor's holding torque, at the screw; empty "
-        "when the screw must hold the load by itself",
+        help="Vertical axis (or a load of fixed direction): a brake's, or a stepper's "
+        "energised holding torque (say which below), at the screw; empty when the screw "
+        "must hold the load by itself",
         bounds=(0.0, 1e5), dimension="torque",
     ),
     InputField(
@@ -393,6 +395,30 @@ FIELDS: tuple[InputField, ...] = (
             "opposes": "Against the motion both ways (friction, cutting)",
             "fixed": "One way, against the up (out) move (a weight, spring or press)",
         },
+    ),
+    InputField(
+        api="holding_source", page="holding_source", core="holding_source",
+        label="Holding torque is", help="A brake holds with the power off; a stepper's "
+        "holding torque only while it is energised (then the detent torque, or the "
+        "thread, must hold with the power off)",
+        group="Duty and requirements", kind="choice", default="brake", options=HoldingSource,
+        texts={
+            "brake": "A brake's (holds with the power off)",
+            "energised": "The motor's energised holding torque (power on only)",
+        },
+    ),
+    InputField(
+        api="detent_torque_nm", page="detent_torque", core="detent_torque_nm",
+        label="Detent torque", help="The stepper's unpowered detent torque at the screw: "
+        "what holds with the power off; empty when unknown",
+        group="Duty and requirements", kind="number", bounds=(0.0, 1e5), dimension="torque",
+    ),
+    InputField(
+        api="brake_safety_factor", page="brake_safety_factor", core="brake_safety_factor",
+        label="Holding safety factor", help="Multiplier on the torque needed to hold the "
+        "load (brake, holding or detent torque); empty for the torque safety factor. "
+        "1 or more; larger is safer",
+        group="Safety factors", kind="number", bounds=(1.0, 10.0),
     ),
 )
 # fmt: on

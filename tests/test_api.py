@@ -450,7 +450,7 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     # fields beyond the issue's list are optional and stay off unless given
     # the self-locking margin, the advice policy and the dwell have defaults of their own
     later = {"self_locking_friction_factor": 0.5, "advice": "warn", "dwell_s": 0.0,
-             "load_direction": "auto"}  # fmt: skip
+             "load_direction": "auto", "holding_source": "brake"}  # fmt: skip
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
     assert all(inputs[k] is None for k in rest)

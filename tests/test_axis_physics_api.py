@@ -180,3 +180,69 @@ def test_load_direction_is_a_field_with_a_422(client: TestClient) -> None:
                           "length_mm": 100, "load_direction": "sideways"})  # fmt: skip
     assert response.status_code == 422
     assert response.json()["detail"][0]["field"] == "load_direction"
+
+
+# --- 3. holding honestly ---------------------------------------------------------------------
+
+
+def test_the_brake_is_sized_at_the_distrusted_friction(client: TestClient) -> None:
+    """ZBX8000-L10 holding 10 kg (98.07 N): at static friction 0.08 the physical holding
+    torque is 98.07 x 0.01 x eta_b(0.08) / 2 pi = 0.1078 N m, and a 0.11 N m brake looked
+    enough; the self-locking margin trusts only 0.5 x 0.08 = 0.04, where eta_b = 0.8435 and
+    the load needs 0.1317 N m (the seed's 0.0963 N m is lower): 0.11 N m is short. With a
+    brake safety factor of 1.5 a brake of 1.5 x 0.1317 = 0.1975 N m is needed."""
+    axis = {"load_n": 0, "speed_mm_s": 20, "length_mm": 300, "orientation": "vertical",
+            "moving_mass_kg": 10}  # fmt: skip
+    force = 10 * G
+    at_full = force * Z8_LEAD * eta_back(Z8_TAN, 0.08, COS_ACME) / (2 * math.pi)
+    distrusted_eta = eta_back(Z8_TAN, 0.04, COS_ACME)
+    needed = force * Z8_LEAD * distrusted_eta / (2 * math.pi)
+    seed = force * Z8_LEAD * eta(Z8_TAN, 0.15, COS_ACME) / (2 * math.pi)
+    assert (at_full, distrusted_eta, needed) == pytest.approx((0.1078, 0.8435, 0.1317), abs=1e-4)
+    assert seed == pytest.approx(0.0963, abs=1e-4)
+    short = check(evaluate(client, "ZBX8000-L10", **axis, brake_torque_nm=0.11), "holding")
+    assert short["value"] == pytest.approx(needed) and not short["passed"]
+    assert "with the power off (a brake)" in short["message"]
+    factored = evaluate(
+        client, "ZBX8000-L10", **axis, brake_torque_nm=0.14, brake_safety_factor=1.5
+    )
+    assert check(factored, "holding")["value"] == pytest.approx(1.5 * needed)
+    assert 1.5 * needed == pytest.approx(0.1975, abs=1e-4)
+
+
+# Tr8x8(P2), the usual 3D-printer Z screw: d2 = d - 0.5 P = 7.0 mm (ISO 2904), bronze nut
+# mu 0.16 static, 0.13 running; 30-degree thread.
+TR8_LEAD, TR8_D2 = 0.008, 0.007
+TR8_TAN = TR8_LEAD / (math.pi * TR8_D2)
+PRINTER_Z = {"load_n": 0, "moving_mass_kg": 3, "orientation": "vertical", "speed_mm_s": 10,
+             "accel_mm_s2": 100, "length_mm": 350, "stroke_mm": 300,
+             "brake_torque_nm": 0.4, "holding_source": "energised"}  # fmt: skip
+
+
+def test_a_stepper_holds_while_energised_and_its_detent_with_the_power_off(
+    client: TestClient,
+) -> None:
+    """3D-printer Z: a 3 kg gantry on Tr8x8(P2) bronze, a NEMA 17 stepper (0.4 N m
+    energised holding torque, 0.022 N m detent). Holding 29.42 N needs
+    29.42 x 0.008 x eta_b(0.5 x 0.16 = 0.08) / 2 pi = 0.0281 N m (eta_b = 0.7497; the
+    seed's, at eta 0.6942, is 0.0260 N m): energised it holds (0.4 N m); with the power off
+    the 0.022 N m detent is short, and without a detent torque given the thread must
+    self-lock, which at lead 8 mm it does not (lead max pi d2 0.08 / cos 15 = 1.82 mm)."""
+    force = 3 * G
+    eb = eta_back(TR8_TAN, 0.08, COS_ISO)
+    needed = force * TR8_LEAD * eb / (2 * math.pi)
+    seed = force * TR8_LEAD * eta(TR8_TAN, 0.13, COS_ISO) / (2 * math.pi)
+    assert (eb, needed, seed) == pytest.approx((0.7497, 0.02809, 0.02600), abs=1e-4)
+    c = evaluate(client, "Tr8x8(P2)-bronze", **PRINTER_Z, detent_torque_nm=0.022)
+    on, off = check(c, "holding"), check(c, "holding_power_off")
+    assert on["value"] == pytest.approx(needed) and on["passed"]
+    assert "with the power on" in on["message"]
+    assert off["value"] == pytest.approx(needed) and off["limit"] == 0.022
+    assert not off["passed"] and "with the power off (detent torque)" in off["message"]
+    assert "back_driving" not in names(c)
+    unknown = evaluate(client, "Tr8x8(P2)-bronze", **PRINTER_Z)
+    lock = check(unknown, "back_driving")
+    lead_max_mm = math.pi * TR8_D2 * 0.08 / COS_ISO * 1e3  # the API gives lengths in mm
+    assert lock["limit"] == pytest.approx(lead_max_mm)
+    assert lead_max_mm == pytest.approx(1.821, abs=1e-3) and not lock["passed"]
+    assert "holding_power_off" not in names(unknown)

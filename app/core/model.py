@@ -13,6 +13,9 @@ CoatingChoice = Literal["auto", "tfe", "none"]
 #: motion when horizontal), against the motion both ways (friction, cutting), or one way,
 #: against the up (out) move (a weight, spring or press).
 LoadDirection = Literal["auto", "opposes", "fixed"]
+#: What the holding torque given is: a brake's (holds with the power off) or a motor's
+#: energised holding torque (a stepper's: holds only while the power is on).
+HoldingSource = Literal["brake", "energised"]
 RankBy = Literal["torque", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
@@ -77,6 +80,11 @@ class Application:
     motor_curve: tuple[tuple[float, float], ...] = ()
     motor_rms_torque_nm: float | None = None
     load_direction: LoadDirection = "auto"
+    #: What ``brake_torque_nm`` is; the motor's detent torque, which holds with the power
+    #: off (None: not given); the factor on the holding torque (None: the torque factor).
+    holding_source: HoldingSource = "brake"
+    detent_torque_nm: float | None = None
+    brake_safety_factor: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -126,7 +126,7 @@ class Quantities(Generic[V]):
     holding_seed_nm: V
     holding_physics_nm: V
     brake_nm: V
-    #: the brake torque to fit: ``brake_nm`` times the torque safety factor
+    #: the brake torque to fit: ``brake_nm`` times the brake safety factor (``brake_factor``)
     brake_needed_nm: V
     locks_with_margin: V
     max_lock_lead_m: V
@@ -157,6 +157,9 @@ class Quantities(Generic[V]):
     #: the load held at rest (``motion.steady_load``: weight and loads of fixed direction;
     #: friction holds nothing) [N]
     holding_force_n: V
+    #: the physical holding torque at the distrusted static friction f mu_s, the friction
+    #: the self-locking margin trusts (what the brake is sized on, beside the seed's)
+    holding_distrusted_nm: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -301,27 +304,41 @@ def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
 
 def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
     """Holding the load ``force_n`` at standstill (``motion.steady_load``: friction holds
-    nothing). The thread counts as self-locking only with static
-    friction reduced by ``app.self_locking_friction_factor``; otherwise a brake (or the
-    motor's holding torque) must hold the larger of the seed's value (forward efficiency,
-    running friction) and the physical one (back-drive efficiency, static friction)."""
+    nothing). The thread counts as self-locking only with static friction reduced by
+    ``app.self_locking_friction_factor``; otherwise a brake (or the motor) must hold the
+    larger of the seed's value (forward efficiency, running friction) and the physical one
+    at that same distrusted friction (back-drive efficiency at f mu_s), times the brake's
+    safety factor (the torque safety factor when none is given)."""
     mu_margin = t.friction_static * app.self_locking_friction_factor
     locks = mu_margin >= efficiency.self_locking_limit_friction(
         np.tan(t.lead_angle_rad), t.cos_half_angle
     )
     seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
     physics = efficiency.holding_torque(force_n, t.lead_m, t.backdrive_efficiency)
-    brake = np.where(locks, 0.0, np.maximum(seed, physics))
+    distrusted = efficiency.holding_torque(
+        force_n,
+        t.lead_m,
+        efficiency.backdrive_efficiency(np.tan(t.lead_angle_rad), mu_margin, t.cos_half_angle),
+    )
+    brake = np.where(locks, 0.0, np.maximum(seed, distrusted))
     return {
         "holding_seed_nm": np.where(locks, 0.0, seed),
         "holding_physics_nm": physics,
+        "holding_distrusted_nm": distrusted,
         "brake_nm": brake,
-        "brake_needed_nm": brake * app.torque_safety_factor,
+        "brake_needed_nm": brake * brake_factor(app),
         "locks_with_margin": locks,
         "max_lock_lead_m": efficiency.max_self_locking_lead(
             t.pitch_diameter_m, mu_margin, t.cos_half_angle
         ),
     }
+
+
+def brake_factor(app: Application) -> float:
+    """The safety factor on the holding torque: the brake's, else the torque factor."""
+    if app.brake_safety_factor is None:
+        return app.torque_safety_factor
+    return app.brake_safety_factor
 
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:

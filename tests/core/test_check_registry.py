@@ -57,6 +57,14 @@ APPS = {
         motor_rms_torque_nm=0.2,
         torque_safety_factor=1.5,
     ),
+    # a stepper holding a vertical load while energised, its detent torque with power off
+    "vertical-stepper-detent": light_app(
+        orientation="vertical",
+        brake_torque_nm=0.4,
+        holding_source="energised",
+        detent_torque_nm=0.02,
+        brake_safety_factor=1.5,
+    ),
 }
 FUNCTIONS: dict[str, Any] = {"pi": math.pi, "sqrt": math.sqrt, "cos": math.cos, "max": max}
 
@@ -185,6 +193,6 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     checks whose capacity is the user's own input leave it empty."""
     user_limits = {c.name for c in REGISTRY if not c.capacity_sources}
     motor = {"motor_curve", "motor_rms", "motor_speed"}
-    assert user_limits == {"torque", "holding", "accuracy", *motor}
+    assert user_limits == {"torque", "holding", "holding_power_off", "accuracy", *motor}
     for c in REGISTRY:
         assert set(c.capacity_sources) <= set(c.sources), c.name

@@ -21,6 +21,7 @@ from app.core.checks.motor_curve import MotorCurve
 from app.core.checks.motor_rms import MotorRms
 from app.core.checks.motor_speed import MotorSpeed
 from app.core.checks.oil import OilCompatibility
+from app.core.checks.power_off import HoldingPowerOff
 from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
 from app.core.checks.temperature import Temperature
@@ -47,6 +48,7 @@ REGISTRY: tuple[Check, ...] = (
     Temperature(),
     BackDriving(),
     Holding(),
+    HoldingPowerOff(),
     AntiBacklash(),
     Life(),
     Accuracy(),

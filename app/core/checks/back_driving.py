@@ -26,8 +26,10 @@ class BackDriving(Check):
         "On a vertical axis with no brake the load pushes the nut down. The thread holds it "
         "only while its lead angle stays below the static friction angle; since friction "
         "drops with vibration and lubrication, the screw counts as self-locking only with "
-        "static friction reduced by the self-locking friction factor. Give a brake or "
-        "holding torque to judge holding instead."
+        "static friction reduced by the self-locking friction factor. Give a brake's "
+        "holding torque to judge holding instead. A stepper's energised holding torque "
+        "holds only while the power is on: without its detent torque this check judges "
+        "holding with the power off."
     )
     quantity = "length"
     formula = "lead = lead_screw; lead_max = pi * d_p * f * mu_s / cos(a_n)"
@@ -36,7 +38,10 @@ class BackDriving(Check):
     capacity_sources = ("friction_static", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        return motion.holds_a_load(app) and app.brake_torque_nm is None
+        """Nothing else holds with the power off: no torque given, or a stepper's
+        energised holding torque without its detent torque."""
+        unpowered = app.holding_source == "energised" and app.detent_torque_nm is None
+        return motion.holds_a_load(app) and (app.brake_torque_nm is None or unpowered)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), t.lead_m, q.max_lock_lead_m)
