@@ -333,10 +333,10 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="advice", page="advice", core="advice", label="Advice",
-        help="A failed recommendation (e.g. the traverse speed for a lead): a warning only, "
-        "rank such screws last, or reject them",
+        help="A failed recommendation (e.g. the traverse speed for a lead): a warning (such "
+        "screws always rank after those without one), or reject them",
         group="Results", kind="choice", default="warn", options=AdvicePolicy,
-        texts={"warn": "Warn", "rank": "Warn and rank last", "reject": "Reject"},
+        texts={"warn": "Warn and rank last", "rank": "Warn and rank last", "reject": "Reject"},
         catalog_only=True,
     ),
     InputField(

@@ -246,3 +246,21 @@ def test_a_stepper_holds_while_energised_and_its_detent_with_the_power_off(
     assert lock["limit"] == pytest.approx(lead_max_mm)
     assert lead_max_mm == pytest.approx(1.821, abs=1e-3) and not lock["passed"]
     assert "holding_power_off" not in names(unknown)
+
+
+# --- 6. ranking and fixes --------------------------------------------------------------------
+
+
+def test_failed_advice_never_ranks_above_a_clean_candidate(client: TestClient) -> None:
+    """Lead 10 mm at 300 mm/s: the seed's traverse table recommends at most 100 mm/s for
+    leads of 2.5 to 12 mm, so every seed screw carries a warning; the ISO screws have no
+    such table. B4000-L10-TFE needs the least torque of all, 0.020 N m, yet it ranks after
+    the clean Tr22x10(P5) and Tr24x10(P5) (0.051 to 0.063 N m)."""
+    body = client.get(f"{API}/select", params={"load_n": 10, "speed_mm_s": 300,
+                      "length_mm": 300, "lead_mm": 10, "limit": 30}).json()  # fmt: skip
+    warned = [bool(c["warnings"]) for c in body["candidates"]]
+    assert warned == sorted(warned) and warned[0] is False and warned[-1] is True
+    ids = [c["id"] for c in body["candidates"]]
+    assert ids.index("Tr24x10(P5)-bronze") < ids.index("B4000-L10-TFE")
+    torque = {c["id"]: c["total_torque_nm"] for c in body["candidates"]}
+    assert torque["B4000-L10-TFE"] < torque["Tr22x10(P5)-bronze"]
