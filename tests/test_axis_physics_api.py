@@ -264,3 +264,33 @@ def test_failed_advice_never_ranks_above_a_clean_candidate(client: TestClient) -
     assert ids.index("Tr24x10(P5)-bronze") < ids.index("B4000-L10-TFE")
     torque = {c["id"]: c["total_torque_nm"] for c in body["candidates"]}
     assert torque["B4000-L10-TFE"] < torque["Tr22x10(P5)-bronze"]
+
+
+def test_fixes_offer_only_leads_the_size_is_made_in(client: TestClient) -> None:
+    """ZBX8000-L10 holding 10 kg with a 0.11 N m brake: it self-locks with margin up to a
+    lead of pi d_p (0.5 x 0.08) / cos 14.5 = 1.467 mm; the 1/2 in size is made in 1 and
+    2 mm, so the fix offers 1 mm (not 1.467 mm, which nobody makes). Tr8x8(P2) bronze
+    self-locks only up to 1.82 mm and its size is made in 2, 4 and 8 mm: no lead is
+    offered, only the brake."""
+    lead_max = math.pi * (Z8_OD + Z8_RD) / 2 * 0.04 / COS_ACME
+    assert lead_max == pytest.approx(1.467e-3, abs=1e-6)
+    c = evaluate(client, "ZBX8000-L10", load_n=0, speed_mm_s=20, length_mm=300,
+                 orientation="vertical", moving_mass_kg=10, brake_torque_nm=0.11)  # fmt: skip
+    fix = check(c, "holding")["fix"]
+    assert "use a lead of 1 mm" in fix and "1.47" not in fix
+    z = evaluate(client, "Tr8x8(P2)-bronze", **PRINTER_Z)
+    assert "lead" not in check(z, "back_driving")["fix"]
+
+
+def test_a_fix_length_says_at_which_mounting_it_holds(client: TestClient) -> None:
+    """ZBX8000-L10 (root 9.906 mm, 303 stainless E 193 GPa, rho 8000), 2 m fixed-free at
+    300 mm/s = 1800 rpm: n_c = (1.875 / 2)^2 sqrt(E / rho) d_r / 4 x 60 / 2 pi = 102 rpm,
+    far over; the length that would pass is the length at the ends as mounted."""
+    c = evaluate(client, "ZBX8000-L10", load_n=10, speed_mm_s=300, length_mm=2000,
+                 end_fixity="fixed-free")  # fmt: skip
+    n_c = (1.875 / 2.0) ** 2 * math.sqrt(193e9 / 8000) * Z8_RD / 4 * 60 / (2 * math.pi)
+    assert n_c == pytest.approx(102.1, abs=0.1)
+    speed = check(c, "critical_speed")
+    assert speed["limit"] == pytest.approx(0.8 * n_c, rel=1e-3) and not speed["passed"]
+    assert "unsupported length at most" in speed["fix"]
+    assert "with the ends fixed-free" in speed["fix"]

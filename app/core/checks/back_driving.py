@@ -15,6 +15,7 @@ from app.core.checks.base import (
     ScrewSpec,
     everywhere,
 )
+from app.core.checks.holding import brake_or_lead
 from app.core.formulas import efficiency
 from app.core.phrase import Amount, Phrase
 
@@ -86,11 +87,6 @@ class BackDriving(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        return Phrase(
-            "Give a brake (or the motor's holding torque) of at least {brake}, or use a lead "
-            "of at most {lead}.",
-            {
-                "brake": Amount(r.brake_needed_nm, "torque"),
-                "lead": Amount(r.max_lock_lead_m, "length"),
-            },
+        return brake_or_lead(
+            "Give a brake (it holds with the power off) of at least {needed}", s, r, reach
         )

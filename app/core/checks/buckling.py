@@ -94,10 +94,11 @@ class ColumnBuckling(Check):
         values: dict[str, Amount | str] = {
             "support": stiffer_support(app, passes),
             "length": Amount(_max_length(app, s, r), "length"),
+            "fixity": app.end_fixity,
         }
         template = (
-            "{support} (column at most {length}), or move the thrust bearing so that the "
-            "load pulls the screw."
+            "{support} (column at most {length} with the ends {fixity}), or move the thrust "
+            "bearing so that the load pulls the screw."
         )
         if d_min <= reach.max_root_diameter_m:
             values["d"] = Amount(d_min, "length")

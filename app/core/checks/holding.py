@@ -90,11 +90,17 @@ class Holding(Check):
         return holding_phrase(app, r, app.brake_torque_nm or 0.0, passed, power_state(app))
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        return Phrase(
-            "Fit a brake of at least {needed}, or use a lead of at most {lead} "
-            "(self-locking with margin).",
-            {
-                "needed": Amount(r.brake_needed_nm, "torque"),
-                "lead": Amount(r.max_lock_lead_m, "length"),
-            },
-        )
+        return brake_or_lead("Fit a brake of at least {needed}", s, r, reach)
+
+
+def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+    """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
+    that self-locks with margin, when it is made in one."""
+    values = {"needed": Amount(r.brake_needed_nm, "torque")}
+    lead = reach.made_lead(s, r.max_lock_lead_m, larger=False)
+    if lead is None:
+        return Phrase(start + ".", values)
+    return Phrase(
+        start + ", or use a lead of {lead} (self-locking with margin).",
+        {**values, "lead": Amount(lead, "length")},
+    )

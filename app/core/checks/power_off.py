@@ -15,9 +15,9 @@ from app.core.checks.base import (
     everywhere,
     same,
 )
-from app.core.checks.holding import holding_phrase
+from app.core.checks.holding import brake_or_lead, holding_phrase
 from app.core.formulas import efficiency
-from app.core.phrase import Amount, Phrase
+from app.core.phrase import Phrase
 from app.core.quantities import brake_factor
 
 
@@ -67,11 +67,6 @@ class HoldingPowerOff(Check):
         return holding_phrase(app, r, detent, passed, "with the power off (detent torque)")
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        return Phrase(
-            "Fit a brake of at least {needed} (it holds with the power off), or use a lead "
-            "of at most {lead} (self-locking with margin).",
-            {
-                "needed": Amount(r.brake_needed_nm, "torque"),
-                "lead": Amount(r.max_lock_lead_m, "length"),
-            },
+        return brake_or_lead(
+            "Fit a brake of at least {needed} (it holds with the power off)", s, r, reach
         )
