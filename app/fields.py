@@ -420,6 +420,12 @@ FIELDS: tuple[InputField, ...] = (
         "1 or more; larger is safer",
         group="Safety factors", kind="number", bounds=(1.0, 10.0),
     ),
+    InputField(
+        api="nut_length_mm", page="nut_length", core="nut_length_m", label="Nut length",
+        help="Trapezoidal screws: the nut's length, whose engaged turns (length over pitch) "
+        "carry the load; empty for the catalog's (2 x d)",
+        group="Nut and environment", kind="number", bounds=(0.1, 1e4), dimension="length",
+    ),
 )
 # fmt: on
 

@@ -48,7 +48,7 @@ SHARE_LINK_NAMES = [
     "max_torque", "brake_torque", "required_life_years", "positioning_tolerance", "rank_by",
     "advice", "limit", "family", "nut_material", "decel", "dwell", "motor_curve",
     "motor_inertia", "motor_rms_torque", "load_direction", "holding_source",
-    "detent_torque", "brake_safety_factor",
+    "detent_torque", "brake_safety_factor", "nut_length",
 ]  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")

@@ -85,6 +85,8 @@ class Application:
     holding_source: HoldingSource = "brake"
     detent_torque_nm: float | None = None
     brake_safety_factor: float | None = None
+    #: The nut's length, in place of the catalog's (None: the catalog's) [m].
+    nut_length_m: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

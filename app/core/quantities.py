@@ -160,6 +160,9 @@ class Quantities(Generic[V]):
     #: the physical holding torque at the distrusted static friction f mu_s, the friction
     #: the self-locking margin trusts (what the brake is sized on, beside the seed's)
     holding_distrusted_nm: V
+    #: the nut length whose engaged turns carry the load: the user's, else the catalog's
+    #: (NaN without a thread pitch) [m]
+    nut_length_m: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -271,18 +274,22 @@ def _table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
     return out
 
 
-def _flanks(t: CandidateTable, rpm: Array) -> dict[str, Any]:
+def _flanks(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
     """The engaged flanks of the nut: sliding speed n / 60 times the helix of one turn at
     d2, the pressure the nut material allows at it (the lowest of its table value, p_max
-    and PV_lim / v) and that pressure over the engaged flank area."""
+    and PV_lim / v) and that pressure over the engaged flank area (L / P) pi d2 H1, with
+    the nut length L the user gives or else the catalog's."""
     speed = pv.surface_speed(rpm, t.flank_helix_travel_m)
     allowed = bearing.allowable_pressure(
         _table_pressures(t, speed), t.max_pressure_pa, t.nut_pv_limit_pa_m_s, speed
     )
+    length = t.nut_length_m if app.nut_length_m is None else np.full(len(t), app.nut_length_m)
+    area = bearing.engaged_flank_area(length, t.pitch_m, t.flank_pitch_diameter_m, t.flank_height_m)
     return {
         "sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
-        "nut_allowed_load_n": allowed * t.bearing_area_m2,
+        "nut_allowed_load_n": allowed * area,
+        "nut_length_m": np.where(np.isnan(t.pitch_m), np.nan, length),
     }
 
 
@@ -363,7 +370,7 @@ def _values(
         **torques,
         **_column_limits(app, t, peak_n),
         **_nut(app, t, peak_n, rpm),
-        **_flanks(t, rpm),
+        **_flanks(app, t, rpm),
         **_duty(app, t),
         **(holding := _holding(app, t, motion.steady_load(app))),
         **_motor(app, t, rpm, holding["brake_nm"], torques),

@@ -44,7 +44,7 @@ class BearingPressure(Check):
         return {
             "F_peak": q.peak_force_n,
             "p_nut_v": q.nut_allowed_pressure_pa,
-            "L_nut": t.nut_length_m,
+            "L_nut": q.nut_length_m,
             "P": t.pitch_m,
             "d_2": t.flank_pitch_diameter_m,
             "H_1": t.flank_height_m,
@@ -54,11 +54,14 @@ class BearingPressure(Check):
         verb = "is within" if passed else "exceeds"
         return Phrase(
             "The peak thrust {f} " + verb + " the load {cap} that the nut's engaged "
-            "flanks carry at the sliding speed {v}.",
+            "flanks carry at the sliding speed {v}, where the nut material allows {p} (a "
+            "larger size slides faster at the same speed of turning, and its material may "
+            "allow less there).",
             {
                 "f": Amount(r.peak_force_n, "force"),
                 "cap": Amount(r.nut_allowed_load_n, "force"),
                 "v": Amount(r.sliding_speed_m_s, "speed"),
+                "p": Amount(r.nut_allowed_pressure_pa, "pressure"),
             },
         )
 
