@@ -246,7 +246,8 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="vacuum", page="vacuum", core="vacuum", label="Vacuum",
-        help="Checks the outgassing of nut and coating", group="Nut and environment",
+        help="Warns of nuts whose outgassing is not measured (an oiled nut loses its "
+        "lubricant, a polymer outgasses) and ranks them last", group="Nut and environment",
         kind="yes-no", default=False,
     ),
     InputField(

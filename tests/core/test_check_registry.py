@@ -35,6 +35,7 @@ APPS = {
         required_life_years=2.0,
         positioning_tolerance_m=2e-4,
         oil_present=True,
+        vacuum=True,
         require_anti_backlash=True,
         ambient_c=100.0,
     ),

@@ -27,6 +27,7 @@ from app.core.checks.root_stress import RootStress
 from app.core.checks.temperature import Temperature
 from app.core.checks.torque import DriveTorque
 from app.core.checks.traverse_speed import TraverseSpeed
+from app.core.checks.vacuum import Vacuum
 
 #: Every check, in the order results list them: the motor's, the screw's, the nut's,
 #: the catalog's limits, then back-driving and the advice.
@@ -52,6 +53,7 @@ REGISTRY: tuple[Check, ...] = (
     AntiBacklash(),
     Life(),
     Accuracy(),
+    Vacuum(),
 )
 BY_NAME: dict[str, Check] = {c.name: c for c in REGISTRY}
 
