@@ -133,7 +133,7 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
 
     >>> converted_fields({"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"},
     ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"})
-    ['load', 'moving_mass_kg', 'max_torque', 'brake_torque', 'motor_rms_torque']
+    ['load', 'moving_mass_kg', 'max_torque', 'brake_torque', 'motor_rms_torque', 'detent_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
     return [field.page for field in FIELDS if field.quantity in changed]

@@ -78,11 +78,11 @@ class BackDriving(Check):
         return Phrase(
             "Not reliably self-locking (static friction at {f} x its value): the load can "
             "drive the screw down; holding torque {seed} (seed method), {physics} "
-            "(physics)." + rule,
+            "(physics at {f} x static friction)." + rule,
             {
                 **values,
                 "seed": Amount(r.holding_seed_nm, "torque"),
-                "physics": Amount(r.holding_physics_nm, "torque"),
+                "physics": Amount(r.holding_distrusted_nm, "torque"),
             },
         )
 
