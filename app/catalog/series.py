@@ -264,7 +264,8 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
         "type": Sourced(entry.text("type", family.anti_backlash_by_type), "", entry.prov("type")),
         "outer_diameter": od,
         "root_diameter": rd,
-        "pitch_diameter": Sourced(d_p, "m", Provenance("derived", "(OD + RD) / 2 (seed P_o)")),
+        "pitch_diameter": thread.get("flank_pitch_diameter")
+        or Sourced(d_p, "m", Provenance("derived", "(OD + RD) / 2 (seed P_o)")),
         "inertia_per_length": inertia,
         "youngs_modulus": material.youngs_modulus_pa,
         "density": material.density_kg_m3,

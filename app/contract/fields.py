@@ -24,7 +24,15 @@ from typing import Any, Literal, get_args
 
 from app.catalog.motors import library
 from app.contract.units import API_SYSTEM, SWITCHED, UNITS, Quantity, from_api, label
-from app.core.model import AdvicePolicy, CoatingChoice, EndFixity, Orientation, RankBy
+from app.core.model import (
+    AdvicePolicy,
+    CoatingChoice,
+    EndFixity,
+    HoldingSource,
+    LoadDirection,
+    Orientation,
+    RankBy,
+)
 
 Kind = Literal["number", "whole number", "yes-no", "choice", "text", "list", "curve"]
 Default = float | int | bool | str | None
@@ -206,12 +214,15 @@ FIELDS: tuple[InputField, ...] = (
         texts={"horizontal": "Horizontal", "vertical": "Vertical"},
     ),
     InputField(
-        api="compression", page="compression", core="compression", label="Load direction",
-        help="Only a pushed screw can buckle", group="Motion and load", kind="yes-no",
+        api="compression", page="compression", core="compression", label="Thrust bearing",
+        help="Where the screw's thrust bearing sits, which says whether each stroke pushes "
+        "or pulls the screw; only a pushed screw can buckle, and a load that reverses "
+        "pushes it on one of the two moves",
+        group="Motion and load", kind="yes-no",
         default=True,
         texts={
-            "true": "Compression (pushes on the screw)",
-            "false": "Tension (pulls on the screw)",
+            "true": "Compression on the up (out) move: the bearing at the end the nut leaves",
+            "false": "Tension on the up (out) move: the bearing at the end the nut approaches",
         },
     ),
     InputField(
@@ -236,7 +247,8 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="vacuum", page="vacuum", core="vacuum", label="Vacuum",
-        help="Checks the outgassing of nut and coating", group="Nut and environment",
+        help="Warns of nuts whose outgassing is not measured (an oiled nut loses its "
+        "lubricant, a polymer outgasses) and ranks them last", group="Nut and environment",
         kind="yes-no", default=False,
     ),
     InputField(
@@ -294,8 +306,9 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
         label="Holding torque", group="Duty and requirements", kind="number",
-        help="Vertical axis: a brake's, or the motor's holding torque, at the screw; empty "
-        "when the screw must hold the load by itself",
+        help="Vertical axis (or a load of fixed direction): a brake's, or a stepper's "
+        "energised holding torque (say which below), at the screw; empty when the screw "
+        "must hold the load by itself",
         bounds=(0.0, 1e5), dimension="torque",
     ),
     InputField(
@@ -322,10 +335,10 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="advice", page="advice", core="advice", label="Advice",
-        help="A failed recommendation (e.g. the traverse speed for a lead): a warning only, "
-        "rank such screws last, or reject them",
+        help="A failed recommendation (e.g. the traverse speed for a lead): a warning (such "
+        "screws always rank after those without one), or reject them",
         group="Results", kind="choice", default="warn", options=AdvicePolicy,
-        texts={"warn": "Warn", "rank": "Warn and rank last", "reject": "Reject"},
+        texts={"warn": "Warn and rank last", "rank": "Warn and rank last", "reject": "Reject"},
         catalog_only=True,
     ),
     InputField(
@@ -430,6 +443,47 @@ FIELDS: tuple[InputField, ...] = (
             "step_angle_deg", "motor_supply_v", "motor_phase_current_a",
             "motor_resistance_ohm", "motor_inductance_mh",
         ),
+    ),
+    InputField(
+        api="load_direction", page="load_direction", core="load_direction",
+        label="Load direction", help="How the axial load acts on the moving mass",
+        group="Motion and load", kind="choice", default="auto", options=LoadDirection,
+        texts={
+            "auto": "By orientation: a weight when vertical, against the motion when "
+            "horizontal",
+            "opposes": "Against the motion both ways (friction, cutting)",
+            "fixed": "One way, against the up (out) move (a weight, spring or press)",
+        },
+    ),
+    InputField(
+        api="holding_source", page="holding_source", core="holding_source",
+        label="Holding torque is", help="A brake holds with the power off; a stepper's "
+        "holding torque only while it is energised (then the detent torque, or the "
+        "thread, must hold with the power off)",
+        group="Duty and requirements", kind="choice", default="brake", options=HoldingSource,
+        texts={
+            "brake": "A brake's (holds with the power off)",
+            "energised": "The motor's energised holding torque (power on only)",
+        },
+    ),
+    InputField(
+        api="detent_torque_nm", page="detent_torque", core="detent_torque_nm",
+        label="Detent torque", help="The stepper's unpowered detent torque at the screw: "
+        "what holds with the power off; empty when unknown",
+        group="Duty and requirements", kind="number", bounds=(0.0, 1e5), dimension="torque",
+    ),
+    InputField(
+        api="brake_safety_factor", page="brake_safety_factor", core="brake_safety_factor",
+        label="Holding safety factor", help="Multiplier on the torque needed to hold the "
+        "load (brake, holding or detent torque); empty for the torque safety factor. "
+        "1 or more; larger is safer",
+        group="Safety factors", kind="number", bounds=(1.0, 10.0),
+    ),
+    InputField(
+        api="nut_length_mm", page="nut_length", core="nut_length_m", label="Nut length",
+        help="Trapezoidal screws: the nut's length, whose engaged turns (length over pitch) "
+        "carry the load; empty for the catalog's (2 x d)",
+        group="Nut and environment", kind="number", bounds=(0.1, 1e4), dimension="length",
     ),
 )
 # fmt: on

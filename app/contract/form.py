@@ -131,10 +131,10 @@ def entered_units(params: Mapping[str, str], units: dict[str, str]) -> dict[str,
 def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str]:
     """Page fields whose numbers change when going from ``entered`` to ``units``.
 
-    >>> " ".join(converted_fields(
+    >>> converted_fields(
     ...     {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"},
-    ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"}))
-    'load moving_mass_kg max_torque brake_torque motor_rms_torque motor_holding_torque'
+    ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"})[-3:]
+    ['motor_rms_torque', 'motor_holding_torque', 'detent_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
     return [field.page for field in FIELDS if field.quantity in changed]

@@ -20,11 +20,10 @@ from numpy.typing import NDArray
 from app.core.model import Application, ScrewSpec
 from app.core.robustness import Variants, build_variants
 from app.core.screening import Filters, eligible_mask, filters
-from app.core.table import COLUMNS, CandidateTable
+from app.core.table import COLUMNS, CandidateTable, SizeKey, size_of
 
-#: One size and nut of a series, every lead: (series id, nut material, coated,
-#: anti-backlash).
-SizeKey = tuple[str, str, bool, bool]
+__all__ = ["CatalogIndex", "SizeKey", "size_of"]
+
 #: Eligible candidates whose variant rows number at most this are screened together with
 #: them (a screening costs about as much for a few rows as for a few hundred).
 JOINT_MAX_VARIANTS = 600
@@ -149,11 +148,6 @@ class CatalogIndex:
             return self.variants, positions
         screws = self.table.screws
         return build_variants([screws[p] for p in positions]), range(len(positions))
-
-
-def size_of(screw: ScrewSpec) -> SizeKey:
-    """The size and nut ``screw`` is one lead of."""
-    return (screw.series_id, screw.nut_material, screw.coated, screw.anti_backlash)
 
 
 def _read_only(table: CandidateTable) -> CandidateTable:

@@ -9,6 +9,13 @@ from app.core.phrase import Phrase
 EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
 Orientation = Literal["horizontal", "vertical"]
 CoatingChoice = Literal["auto", "tfe", "none"]
+#: How the user's load acts: by the orientation (a weight when vertical, against the
+#: motion when horizontal), against the motion both ways (friction, cutting), or one way,
+#: against the up (out) move (a weight, spring or press).
+LoadDirection = Literal["auto", "opposes", "fixed"]
+#: What the holding torque given is: a brake's (holds with the power off) or a motor's
+#: energised holding torque (a stepper's: holds only while the power is on).
+HoldingSource = Literal["brake", "energised"]
 RankBy = Literal["torque", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
@@ -40,6 +47,8 @@ class Application:
     moving_mass_kg: float = 0.0
     end_fixity: EndFixity = "fixed-simple"
     orientation: Orientation = "horizontal"
+    #: True: a nut force up (out) pushes the screw onto its thrust bearing (the bearing at
+    #: the end the nut leaves on the up or out move); False: it pulls the screw.
     compression: bool = True
     require_anti_backlash: bool = False
     coating: CoatingChoice = "auto"
@@ -84,6 +93,14 @@ class Application:
     motor_resistance_ohm: float | None = None
     motor_inductance_h: float | None = None
     motor_holding_torque_nm: float | None = None
+    load_direction: LoadDirection = "auto"
+    #: What ``brake_torque_nm`` is; the motor's detent torque, which holds with the power
+    #: off (None: not given); the factor on the holding torque (None: the torque factor).
+    holding_source: HoldingSource = "brake"
+    detent_torque_nm: float | None = None
+    brake_safety_factor: float | None = None
+    #: The nut's length, in place of the catalog's (None: the catalog's) [m].
+    nut_length_m: float | None = None
 
 
 @dataclass(frozen=True, slots=True)

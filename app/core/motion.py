@@ -7,16 +7,22 @@ horizontal one. The torque of a moving segment is the thrust through the thread 
 direction the power flows, ``profile.thread_torque``), the nut's drag, and the rotary
 inertia of the screw and the motor's rotor times the angular acceleration; the moving
 mass enters through the thrust as m a (against the motion when accelerating, with it
-when decelerating). In a dwell the motor holds the load: the holding torque on a vertical
-axis that does not self-lock, else nothing. The load acts against the motion both ways
-on a horizontal axis and downwards, with the weight, on a vertical one.
+when decelerating). In a dwell the motor holds the load: the holding torque where the
+axis holds a load (vertical, or a load of fixed direction) and does not self-lock, else
+nothing. Every thrust comes from the force the nut
+exerts on the moving mass in the axis's own frame (``nut_force_forms``): the load acts
+one way (a weight, spring or press) or against the motion both ways (friction), as the
+user says; by default downwards on a vertical axis and against the motion on a
+horizontal one.
 """
 
+import math
 from typing import Any
 
 import numpy as np
 
 from app.core.formulas import geometry, profile, torque
+from app.core.formulas.declare import formula
 from app.core.model import (
     STANDARD_GRAVITY_M_S2,
     Application,
@@ -63,18 +69,91 @@ def move_profile(app: Application) -> Profile | None:
 
 
 def directions(app: Application) -> tuple[tuple[Direction, float], tuple[Direction, float]]:
-    """The two moves of the cycle and the sign of the steady load against each: up against
-    the weight and down with it, or out and back against the load both ways."""
+    """The two moves of the cycle and the sign of each one's velocity along the axis:
+    up (out) along it, down (back) against it."""
     if app.orientation == "vertical":
         return (("up", 1.0), ("down", -1.0))
-    return (("out", 1.0), ("back", 1.0))
+    return (("out", 1.0), ("back", -1.0))
+
+
+def load_sense(app: Application) -> tuple[float, float]:
+    """How the user's load acts, as (s, o): (1, 0) one way, against the up (out) move, as
+    a weight does; (0, 1) against the motion both ways, as friction does. ``auto``: a
+    weight on a vertical axis, against the motion on a horizontal one."""
+    direction = app.load_direction
+    if direction == "auto":
+        direction = "fixed" if app.orientation == "vertical" else "opposes"
+    return (1.0, 0.0) if direction == "fixed" else (0.0, 1.0)
+
+
+def holds_a_load(app: Application) -> bool:
+    """Whether the axis must hold a load at rest: a vertical axis (its moving mass's
+    weight) or a load of fixed direction (a spring or press on a horizontal one)."""
+    return app.orientation == "vertical" or load_sense(app)[0] > 0.0
 
 
 def steady_load(app: Application) -> float:
-    """The load the axis carries at rest or at constant speed [N]: plus m g if vertical."""
-    if app.orientation == "vertical":
-        return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
-    return app.load_n
+    """The load the axis holds at rest [N]: the weight m g of the moving mass on a
+    vertical axis and the user's load when it acts one way (friction holds nothing)."""
+    weight = app.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
+    return weight + app.load_n * load_sense(app)[0]
+
+
+#: A thrust linear in the user's load: (N at load 0, N per N of load).
+Form = tuple[float, float]
+
+
+@formula(
+    "F_nut = m x'' + W + F (s_fixed + v o_opposing)",
+    "Newton's second law on the moving mass; the load's direction",
+)
+def nut_force_forms(app: Application) -> list[Form]:
+    """The force the nut exerts on the moving mass along the axis (up or out positive) in
+    each moving segment of both moves, and at rest, as a linear form in the load F:
+    F_nut = m x'' + W + F (s + v o), with x'' the segment's acceleration along the axis
+    (+a, 0, -d moving up or out; -a, 0, +d moving down or back), W = m g on a vertical
+    axis, v = +1 up or out and -1 down or back, and (s, o) = (1, 0) for a load of fixed
+    direction (a weight, spring or press: against the up or out move) or (0, 1) for one
+    that opposes the motion both ways (friction, cutting) (``load_sense``). At rest
+    F_nut = W + F s.
+
+    >>> app = Application(load_n=10.0, speed_m_s=0.1, length_m=0.5, moving_mass_kg=2.0,
+    ...                   accel_m_s2=3.0, decel_m_s2=5.0)
+    >>> [g + h * app.load_n for g, h in nut_force_forms(app)]
+    [16.0, 10.0, 0.0, -16.0, -10.0, 0.0, 0.0]
+    """
+    weight = app.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
+    fixed, opposing = load_sense(app)
+    forms: list[Form] = []
+    for _, v in directions(app):
+        for _, sign in RAMPS:
+            rate = app.accel_m_s2 if sign > 0 else decel(app)
+            forms.append((app.moving_mass_kg * v * sign * rate + weight, fixed + v * opposing))
+    return [*forms, (weight, fixed)]
+
+
+def nut_forces(app: Application) -> list[float]:
+    """``nut_force_forms`` at the application's load [N]."""
+    return [g + h * app.load_n for g, h in nut_force_forms(app)]
+
+
+def largest_load(forms: list[Form], allowed_n: float) -> float | None:
+    """The largest load F with every g + h F at most ``allowed_n`` [N], below 0 when even
+    no load is too much (the caller's input bounds refuse it); None when no load meets
+    them all, or none bounds the load from above (the load is not the cause).
+
+    >>> largest_load([(5.0, 1.0), (-5.0, -1.0)], 20.0), largest_load([(30.0, 0.0)], 20.0)
+    (15.0, None)
+    """
+    low, high = -math.inf, math.inf
+    for g, h in forms:
+        if h > 0.0:
+            high = min(high, (allowed_n - g) / h)
+        elif h < 0.0:
+            low = max(low, (allowed_n - g) / h)
+        elif g > allowed_n:
+            return None
+    return high if low <= high < math.inf else None
 
 
 def _move(
@@ -82,41 +161,55 @@ def _move(
 ) -> list[Segment[Array]]:
     """The three moving segments of one move, for every candidate."""
     rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
+    times = (p.accel_time_s, p.constant_time_s, p.decel_time_s)
+    move = [m for m in moving_torques(app, t) if m[1] == direction[0]]
+    return [
+        Segment(
+            name=name,
+            direction=direction[0],
+            duration_s=duration,
+            rpm=rpm,
+            thrust_n=np.full(len(t), thrust),
+            torque_nm=torque_nm,
+        )
+        for (name, _, thrust, torque_nm), duration in zip(move, times, strict=True)
+    ]
+
+
+def moving_torques(
+    app: Application, t: CandidateTable
+) -> list[tuple[SegmentName, Direction, float, Array]]:
+    """Each moving segment of both moves, for every candidate: its name and direction,
+    the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
+    through the thread, the nut's drag, and the screw's and the rotor's inertia times the
+    angular acceleration (whether the segment has a stroke to last or not)."""
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
     rates = {"accelerate": app.accel_m_s2, "constant": 0.0, "decelerate": decel(app)}
-    times = {"accelerate": p.accel_time_s, "constant": p.constant_time_s}
-    out: list[Segment[Array]] = []
-    for name, sign in RAMPS:
-        accel = sign * rates[name]
-        thrust = direction[1] * steady_load(app) + app.moving_mass_kg * accel
-        thread = profile.thread_torque(
-            thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
-        )
-        spin = torque.inertia_torque(inertia, torque.angular_acceleration(accel, t.lead_m))
-        out.append(
-            Segment(
-                name=name,
-                direction=direction[0],
-                duration_s=times.get(name, p.decel_time_s),
-                rpm=rpm,
-                thrust_n=np.full(len(t), thrust),
-                torque_nm=thread + t.drag_max_nm + spin,
+    forces = iter(nut_forces(app))
+    out: list[tuple[SegmentName, Direction, float, Array]] = []
+    for name_d, v in directions(app):
+        for name, sign in RAMPS:
+            thrust = v * next(forces)
+            thread = profile.thread_torque(
+                thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
             )
-        )
+            alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
+            spin = torque.inertia_torque(inertia, alpha)
+            out.append((name, name_d, thrust, thread + t.drag_max_nm + spin))
     return out
 
 
 def _dwell(app: Application, direction: Direction, hold_nm: Array) -> Segment[Array]:
-    """The dwell after a move: at rest, holding the load on a vertical axis."""
-    vertical = app.orientation == "vertical"
+    """The dwell after a move: at rest, holding the load where there is one to hold."""
+    held = holds_a_load(app)
     return Segment(
         name="dwell",
         direction=direction,
         duration_s=app.dwell_s,
         rpm=np.zeros(len(hold_nm)),
-        thrust_n=np.full(len(hold_nm), steady_load(app) if vertical else 0.0),
-        torque_nm=hold_nm if vertical else np.zeros(len(hold_nm)),
+        thrust_n=np.full(len(hold_nm), steady_load(app)),
+        torque_nm=hold_nm if held else np.zeros(len(hold_nm)),
     )
 
 

@@ -39,25 +39,51 @@ REFERENCE_TEMPERATURE_C = 20.0
 
 @formula("F = load (+ m g when vertical), the running thrust", "statics")
 def axial_load(app: Application) -> float:
-    """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical."""
+    """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical
+    (on the up move, or on the move against a load of fixed direction)."""
     if app.orientation == "vertical":
         return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
     return app.load_n
 
 
-@formula("F_peak = F + m a", "Newton's second law")
+@formula("F_peak = max |F_nut| over the segments of both moves and at rest", "Newton's second law")
 def peak_axial_load(app: Application) -> float:
-    """Peak thrust on the nut [N]: the running thrust plus the force m a that accelerates
-    (or decelerates) the moving mass, F_peak = F + m a (Newton's second law).
-
-    Accelerating against the load, or braking a mass that moves with it (a descending
-    vertical axis), adds m a to the thrust; the other two cases subtract it.
+    """Peak thrust on the nut [N]: the largest force the nut exerts on the moving mass in
+    any segment of either move or at rest (``motion.nut_force_forms``), so the running
+    thrust plus m a accelerating against the load, or plus m d braking a mass that moves
+    with it, whichever is larger (Newton's second law).
 
     >>> peak_axial_load(Application(load_n=5.0, speed_m_s=0.1, length_m=0.5,
     ...                             moving_mass_kg=50.0, accel_m_s2=5.0))
     255.0
+    >>> round(peak_axial_load(Application(load_n=0.0, speed_m_s=0.1, length_m=0.5,
+    ...     moving_mass_kg=20.0, accel_m_s2=1.0, decel_m_s2=2.0, orientation="vertical")), 2)
+    236.13
     """
-    return axial_load(app) + app.moving_mass_kg * app.accel_m_s2
+    return max(abs(f) for f in motion.nut_forces(app))
+
+
+def compression_sign(app: Application) -> float:
+    """+1 when a nut force up (out) pushes the screw onto its thrust bearing (compression),
+    -1 when it pulls the screw away from it (tension)."""
+    return 1.0 if app.compression else -1.0
+
+
+@formula("F_c = max(0, c F_nut) over the segments of both moves and at rest", "statics")
+def compressive_axial_load(app: Application) -> float:
+    """The largest thrust that pushes the screw onto its thrust bearing [N], in any segment
+    of either move or at rest: c F_nut with c = +1 when an up (out) force compresses the
+    screw (``app.compression``), else -1; 0 when the screw is only ever pulled. A
+    horizontal axis whose load opposes the motion compresses the screw on one of the two
+    moves whichever end holds the bearing.
+
+    >>> compressive_axial_load(Application(load_n=5.0, speed_m_s=0.1, length_m=0.5,
+    ...                                    moving_mass_kg=50.0, accel_m_s2=5.0,
+    ...                                    compression=False))
+    255.0
+    """
+    c = compression_sign(app)
+    return max(0.0, *(c * f for f in motion.nut_forces(app)))
 
 
 @dataclass(frozen=True, slots=True)
@@ -111,7 +137,7 @@ class Quantities(Generic[V]):
     holding_seed_nm: V
     holding_physics_nm: V
     brake_nm: V
-    #: the brake torque to fit: ``brake_nm`` times the torque safety factor
+    #: the brake torque to fit: ``brake_nm`` times the brake safety factor (``brake_factor``)
     brake_needed_nm: V
     locks_with_margin: V
     max_lock_lead_m: V
@@ -136,6 +162,22 @@ class Quantities(Generic[V]):
     #: of one pulse [m] (NaN without a step angle).
     step_rate_hz: V
     step_resolution_m: V
+    #: The largest thrust that compresses the screw (0: only ever pulled) [N]; the rotor's
+    #: inertia torque J_motor alpha (inside ``inertia_nm`` and ``total_nm``); the largest
+    #: motor torque of any moving segment of either move, rotor included, without the
+    #: safety factor (what the drive must give at its peak).
+    compressive_force_n: V
+    inertia_motor_nm: V
+    peak_torque_nm: V
+    #: the load held at rest (``motion.steady_load``: weight and loads of fixed direction;
+    #: friction holds nothing) [N]
+    holding_force_n: V
+    #: the physical holding torque at the distrusted static friction f mu_s, the friction
+    #: the self-locking margin trusts (what the brake is sized on, beside the seed's)
+    holding_distrusted_nm: V
+    #: the nut length whose engaged turns carry the load: the user's, else the catalog's
+    #: (NaN without a thread pitch) [m]
+    nut_length_m: V
 
     def row(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
@@ -153,34 +195,42 @@ NAMES = tuple(f.name for f in fields(Quantities))
 
 
 def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
-    """Motor torque: the screw's own inertia J alpha, and every force that passes through
-    the sliding thread (the load and the force m a that accelerates the moving mass) at
-    the thread's efficiency, plus the nut's drag. Starting from rest the thread is at
-    static friction while the load and m a already act."""
+    """Motor torque: the screw's and the rotor's inertia J alpha, and every force that
+    passes through the sliding thread (the load and the force m a that accelerates the
+    moving mass) at the thread's efficiency, plus the nut's drag. Starting from rest the
+    thread is at static friction while the load and m a already act. The required torque
+    is the larger of break-away and the peak of the moving segments of both moves
+    (``motion.moving_torques``: decelerating a descending load may need more)."""
     alpha = torque.angular_acceleration(app.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     j_mass = torque.reflected_mass_inertia(app.moving_mass_kg, t.lead_m)
     inertial_force_n = app.moving_mass_kg * app.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
+    t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
     t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency)
     t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
-    t_total = torque.total_torque(t_screw + t_mass, t.drag_max_nm, t_load)
+    t_total = torque.total_torque(t_screw + t_motor + t_mass, t.drag_max_nm, t_load)
     t_start = (
         torque.load_torque(force_n + inertial_force_n, t.lead_m, t.efficiency_static)
         + t_screw
+        + t_motor
         + t.drag_max_nm
     )
+    moving = np.stack([np.abs(m[3]) for m in motion.moving_torques(app, t)])
+    peak = np.maximum(moving.max(axis=0), t_start)
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
         "inertia_screw_nm": t_screw,
         "inertia_mass_nm": t_mass,
-        "inertia_nm": t_screw + t_mass,
+        "inertia_motor_nm": t_motor,
+        "inertia_nm": t_screw + t_motor + t_mass,
         "drag_nm": t.drag_max_nm,
         "load_nm": t_load,
         "total_nm": t_total,
         "breakaway_nm": t_start,
-        "required_nm": np.maximum(t_total, t_start) * app.torque_safety_factor,
+        "peak_torque_nm": peak,
+        "required_nm": peak * app.torque_safety_factor,
     }
 
 
@@ -212,7 +262,8 @@ def _finite(values: Array) -> Array:
 
 
 def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dict[str, Any]:
-    """PV of the nut (seed, three threads in contact) and its limits inverted."""
+    """PV of the nut (seed, three threads in contact) and its limits inverted, at the peak
+    thrust ``force_n``: an accelerating segment ends at the top speed still carrying m a."""
     area = pv.contact_area(t.helix_travel_m, t.thread_depth_m)
     limit = t.pv_limit_pa_m_s
     return {
@@ -238,7 +289,24 @@ def _table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
     return out
 
 
-def _flanks(t: CandidateTable, rpm: Array) -> dict[str, Any]:
+def _nut_length(app: Application, t: CandidateTable) -> Array:
+    """The nut length whose engaged turns carry the load: the user's, else the catalog's
+    (NaN where the catalog gives none) [m]."""
+    if app.nut_length_m is None:
+        return t.nut_length_m
+    return np.where(np.isnan(t.nut_length_m), np.nan, app.nut_length_m)
+
+
+def _flank_area(app: Application, t: CandidateTable) -> Array:
+    """The engaged flank area (L / P) pi d2 H1 of a standard thread's nut [m^2] (NaN
+    without a thread pitch), with the nut length of ``_nut_length``."""
+    area = bearing.engaged_flank_area(
+        _nut_length(app, t), t.pitch_m, t.flank_pitch_diameter_m, t.flank_height_m
+    )
+    return np.asarray(area, dtype=np.float64)
+
+
+def _flanks(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
     """The engaged flanks of the nut: sliding speed n / 60 times the helix of one turn at
     d2, the pressure the nut material allows at it (the lowest of its table value, p_max
     and PV_lim / v) and that pressure over the engaged flank area."""
@@ -249,7 +317,8 @@ def _flanks(t: CandidateTable, rpm: Array) -> dict[str, Any]:
     return {
         "sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
-        "nut_allowed_load_n": allowed * t.bearing_area_m2,
+        "nut_allowed_load_n": allowed * _flank_area(app, t),
+        "nut_length_m": np.where(np.isnan(t.pitch_m), np.nan, _nut_length(app, t)),
     }
 
 
@@ -257,8 +326,9 @@ def _wear(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
     """Nut travel until its flanks have worn the allowed depth (Archard's law at the
     running thrust): over the engaged flanks and flank height of a standard thread, else
     over the seed's three threads and thread depth."""
-    flanks = ~np.isnan(t.bearing_area_m2)
-    area = np.where(flanks, t.bearing_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
+    flank_area = _flank_area(app, t)
+    flanks = ~np.isnan(flank_area)
+    area = np.where(flanks, flank_area, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
     helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
     with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
@@ -280,7 +350,7 @@ def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
     h = heat.FREE_CONVECTION_W_M2_K
     fin = heat.fin_conductance(t.root_diameter_m, t.thermal_conductivity_w_m_k, h)
     nut_d = heat.NUT_OUTER_TO_D * t.outer_diameter_m
-    rise = heat.temperature_rise(power, fin, t.nut_length_m, nut_d, h)
+    rise = heat.temperature_rise(power, fin, _nut_length(app, t), nut_d, h)
     return {"friction_power_w": power, "nut_temperature_rise_k": rise}
 
 
@@ -301,27 +371,42 @@ def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
 
 
 def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
-    """Holding the load at standstill. The thread counts as self-locking only with static
-    friction reduced by ``app.self_locking_friction_factor``; otherwise a brake (or the
-    motor's holding torque) must hold the larger of the seed's value (forward efficiency,
-    running friction) and the physical one (back-drive efficiency, static friction)."""
+    """Holding the load ``force_n`` at standstill (``motion.steady_load``: friction holds
+    nothing). The thread counts as self-locking only with static friction reduced by
+    ``app.self_locking_friction_factor``; otherwise a brake (or the motor) must hold the
+    larger of the seed's value (forward efficiency, running friction) and the physical one
+    at that same distrusted friction (back-drive efficiency at f mu_s), times the brake's
+    safety factor (the torque safety factor when none is given)."""
     mu_margin = t.friction_static * app.self_locking_friction_factor
     locks = mu_margin >= efficiency.self_locking_limit_friction(
         np.tan(t.lead_angle_rad), t.cos_half_angle
     )
     seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
     physics = efficiency.holding_torque(force_n, t.lead_m, t.backdrive_efficiency)
-    brake = np.where(locks, 0.0, np.maximum(seed, physics))
+    distrusted = efficiency.holding_torque(
+        force_n,
+        t.lead_m,
+        efficiency.backdrive_efficiency(np.tan(t.lead_angle_rad), mu_margin, t.cos_half_angle),
+    )
+    brake = np.where(locks, 0.0, np.maximum(seed, distrusted))
     return {
         "holding_seed_nm": np.where(locks, 0.0, seed),
         "holding_physics_nm": physics,
+        "holding_distrusted_nm": distrusted,
         "brake_nm": brake,
-        "brake_needed_nm": brake * app.torque_safety_factor,
+        "brake_needed_nm": brake * brake_factor(app),
         "locks_with_margin": locks,
         "max_lock_lead_m": efficiency.max_self_locking_lead(
             t.pitch_diameter_m, mu_margin, t.cos_half_angle
         ),
     }
+
+
+def brake_factor(app: Application) -> float:
+    """The safety factor on the holding torque: the brake's, else the torque factor."""
+    if app.brake_safety_factor is None:
+        return app.torque_safety_factor
+    return app.brake_safety_factor
 
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
@@ -341,15 +426,17 @@ def _values(
     return {
         "force_n": np.full(len(t), force_n),
         "peak_force_n": np.full(len(t), peak_n),
+        "compressive_force_n": np.full(len(t), compressive_axial_load(app)),
+        "holding_force_n": np.full(len(t), motion.steady_load(app)),
         "rpm": rpm,
         **torques,
         **_column_limits(app, t, peak_n),
-        **_nut(app, t, force_n, rpm),
-        **_flanks(t, rpm),
+        **_nut(app, t, peak_n, rpm),
+        **_flanks(app, t, rpm),
         **_duty(app, t),
         **_wear(app, t, force_n),
         **_heat(app, t, force_n),
-        **(holding := _holding(app, t, force_n)),
+        **(holding := _holding(app, t, motion.steady_load(app))),
         **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),
         **_controller(app, t, motor["peak_rpm"]),
     }

@@ -552,7 +552,7 @@ class Candidate:
         transition = number(q.transition_slenderness)
         short = transition is not None and q.slenderness < transition
         return Buckling(
-            applies=self.app.compression,
+            applies=q.compressive_force_n > 0.0,
             critical_load_n=q.critical_load_n,
             allowed_load_n=q.allowed_load_n,
             safety_factor=self.app.buckling_safety_factor,

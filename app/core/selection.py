@@ -46,8 +46,9 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
 
     torque: lowest total drive torque; margin: lowest worst utilisation; life: longest
     rated life (unrated last); size: smallest outer diameter; motor_margin: the smallest
-    share of the motor used (``motor_use``). Ties: lower torque. With
-    ``advice="rank"`` candidates with a warning come after those without.
+    share of the motor used (``motor_use``). Ties: lower torque. Candidates with a
+    warning (failed advice) come after those without, whatever the policy ("reject"
+    rejects them).
     """
     pos = np.flatnonzero(s.passed)
     torque, util = s.total_torque_nm[pos], s.max_utilization[pos]
@@ -59,10 +60,8 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
         "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
-    keys = [secondary, primary]
-    if app.advice == "rank":
-        keys.append(s.warned[pos].astype(np.float64))
-    return pos[np.lexsort(tuple(keys))]
+    keys = (secondary, primary, s.warned[pos].astype(np.float64))
+    return pos[np.lexsort(keys)]
 
 
 def with_robustness(

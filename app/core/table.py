@@ -6,9 +6,10 @@ the whole catalog.
 """
 
 import math
-from collections.abc import Sequence
-from dataclasses import dataclass, fields
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, fields
 from operator import attrgetter
+from types import MappingProxyType
 
 import numpy as np
 from numpy.typing import NDArray
@@ -72,16 +73,47 @@ def _pressure_tables(
     return tuple(tables), np.array(which, dtype=np.intp)
 
 
+#: One size and nut of a series, every lead: (series id, nut material, coated,
+#: anti-backlash).
+SizeKey = tuple[str, str, bool, bool]
+
+
+def size_of(screw: ScrewSpec) -> SizeKey:
+    """The size and nut ``screw`` is one lead of."""
+    return (screw.series_id, screw.nut_material, screw.coated, screw.anti_backlash)
+
+
 @dataclass(frozen=True, slots=True)
 class Reach:
     """What a catalog offers, so that a fix never names a screw nobody makes (unbounded
-    for a screw of the user's own)."""
+    for a screw of the user's own): the largest values, and the leads each size and nut
+    is made in, ascending."""
 
     max_lead_m: float = math.inf
     max_root_diameter_m: float = math.inf
     max_design_load_n: float = math.inf
     max_length_m: float = math.inf
     anti_backlash: bool = True
+    leads: Mapping[SizeKey, tuple[float, ...]] = field(default_factory=lambda: MappingProxyType({}))
+
+    def made_lead(self, screw: ScrewSpec, bound_m: float, larger: bool) -> float | None:
+        """The lead of ``screw``'s size nearest ``bound_m`` on its far side: the smallest
+        made at or above it (``larger``) or the largest at or below it [m]; the bound
+        itself for a screw of no catalog size; None when the size is made in none."""
+        leads = self.leads.get(size_of(screw))
+        if leads is None:
+            return bound_m
+        if larger:
+            return next((lead for lead in leads if lead >= bound_m), None)
+        return next((lead for lead in reversed(leads) if lead <= bound_m), None)
+
+
+def _leads(screws: Sequence[ScrewSpec]) -> Mapping[SizeKey, tuple[float, ...]]:
+    """The leads each size and nut of ``screws`` is made in, ascending."""
+    found: dict[SizeKey, set[float]] = {}
+    for screw in screws:
+        found.setdefault(size_of(screw), set()).add(screw.lead_m)
+    return MappingProxyType({size: tuple(sorted(leads)) for size, leads in found.items()})
 
 
 def _largest(values: Array) -> float:
@@ -185,6 +217,7 @@ class CandidateTable:
             max_design_load_n=_largest(col("design_load_n")),
             max_length_m=_largest(col("max_length_m")),
             anti_backlash=bool(flag("anti_backlash").any()),
+            leads=_leads(screws),
         )
         return cls(
             reach=reach,

@@ -448,13 +448,15 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     inputs = select(api, **BASE)["inputs"]
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
     # fields beyond the issue's list are optional and stay off unless given
-    # the self-locking margin, the advice policy, the dwell and the microsteps have
-    # defaults of their own
+    # the self-locking margin, the advice policy, the dwell, the microsteps, the load
+    # direction and what holds have defaults of their own
     later = {
         "self_locking_friction_factor": 0.5,
         "advice": "warn",
         "dwell_s": 0.0,
         "microsteps": 1,
+        "load_direction": "auto",
+        "holding_source": "brake",
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
@@ -663,7 +665,9 @@ def test_evaluate_custom_screw_against_hand_calculation(api: Api) -> None:
     # from rest: static friction while the load and m a already act
     breakaway_nm = (f + mass * accel) * lead / (2 * math.pi * eta_s) + screw_nm + drag
     h = (d_o - d_r) / 2  # thread depth
-    pv = (rpm / 60) * f / (3 * h) / 1e6  # PV = n F / (3 h), three threads, MPa m/s
+    # PV = n F_peak / (3 h), three threads, MPa m/s, at the peak thrust F + m a = 102 N
+    # (the accelerating segment ends at the top speed still carrying m a)
+    pv = (rpm / 60) * (f + mass * accel) / (3 * h) / 1e6
 
     fields = {"accel_mm_s2": 1000.0, "moving_mass_kg": mass}
     c = evaluate(api, {**CUSTOM_SCREW, "drag_torque_nm": drag}, **fields)["candidate"]

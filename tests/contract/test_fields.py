@@ -50,7 +50,8 @@ SHARE_LINK_NAMES = [
     "advice", "limit", "family", "nut_material", "decel", "dwell", "motor_curve",
     "motor_inertia", "motor_rms_torque", "motor", "step_angle", "microsteps",
     "max_step_rate", "motor_supply", "motor_phase_current", "motor_resistance",
-    "motor_inductance", "motor_holding_torque",
+    "motor_inductance", "motor_holding_torque", "load_direction", "holding_source",
+    "detent_torque", "brake_safety_factor", "nut_length",
 ]  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")

@@ -35,6 +35,7 @@ APPS = {
         required_life_years=2.0,
         positioning_tolerance_m=2e-4,
         oil_present=True,
+        vacuum=True,
         require_anti_backlash=True,
         ambient_c=100.0,
         step_angle_deg=1.8,
@@ -61,6 +62,14 @@ APPS = {
         step_angle_deg=0.9,
         microsteps=16,
         max_step_rate_hz=50_000.0,
+    ),
+    # a stepper holding a vertical load while energised, its detent torque with power off
+    "vertical-stepper-detent": light_app(
+        orientation="vertical",
+        brake_torque_nm=0.4,
+        holding_source="energised",
+        detent_torque_nm=0.02,
+        brake_safety_factor=1.5,
     ),
 }
 FUNCTIONS: dict[str, Any] = {"pi": math.pi, "sqrt": math.sqrt, "cos": math.cos, "max": max}
@@ -161,7 +170,7 @@ def test_every_check_applies_under_some_application(catalog: Catalog) -> None:
     [
         pytest.param(
             "buckling",
-            "F = F_peak; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / "
+            "F = F_c; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / "
             "S_y) else A * S_y)",
             id="buckling-short-column-as-squash-load",
         ),
@@ -191,6 +200,7 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     user_limits = {c.name for c in REGISTRY if not c.capacity_sources}
     motor = {"motor_curve", "motor_rms", "motor_speed", "inertia_ratio"}
     controller = {"step_rate", "step_resolution"}
-    assert user_limits == {"torque", "holding", "accuracy", *motor, *controller}
+    holding = {"holding", "holding_power_off"}
+    assert user_limits == {"torque", "accuracy", *holding, *motor, *controller}
     for c in REGISTRY:
         assert set(c.capacity_sources) <= set(c.sources), c.name

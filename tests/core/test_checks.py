@@ -60,8 +60,12 @@ def test_every_optional_check_switches_on(catalog: Catalog) -> None:
     ]
 
 
-def test_no_buckling_check_in_tension(zbx8000_l10: ScrewSpec) -> None:
-    assert "buckling" not in names(evaluate(light_app(compression=False), zbx8000_l10))
+def test_no_buckling_check_when_never_pushed(zbx8000_l10: ScrewSpec) -> None:
+    """A hanging vertical axis (thrust bearing above the nut) only ever pulls the screw; a
+    horizontal one marked tension is pushed on the move back, when friction reverses."""
+    hanging = light_app(compression=False, orientation="vertical")
+    assert "buckling" not in names(evaluate(hanging, zbx8000_l10))
+    assert "buckling" in names(evaluate(light_app(compression=False), zbx8000_l10))
 
 
 @pytest.mark.parametrize(

@@ -84,20 +84,30 @@ def test_breakaway_uses_static_friction_and_running_uses_dynamic(
 
 
 def test_buckling_only_in_compression(zbx8000_l10: ScrewSpec) -> None:
-    """engineering.md section 5: buckling applies only when the load compresses the screw."""
-    pushed = evaluate(light_app(compression=True), zbx8000_l10)
-    pulled = evaluate(light_app(compression=False), zbx8000_l10)
+    """engineering.md section 5: buckling applies only when the load compresses the screw:
+    a vertical axis hanging from its thrust bearing (tension) never is; 50 N of friction
+    on a horizontal axis marked tension pushes the screw on the move back (50 N)."""
+    pushed = evaluate(light_app(orientation="vertical"), zbx8000_l10)
+    pulled = evaluate(light_app(orientation="vertical", compression=False), zbx8000_l10)
     assert pushed.buckling.applies and "buckling" in {c.name for c in pushed.checks}
     assert not pulled.buckling.applies
     assert "buckling" not in {c.name for c in pulled.checks}
+    back = next(c for c in evaluate(light_app(compression=False), zbx8000_l10).checks
+                if c.name == "buckling")  # fmt: skip
+    assert back.value == pytest.approx(50.0)
 
 
 def test_a_column_that_buckles_in_compression_is_fine_in_tension(zbx8000_l10: ScrewSpec) -> None:
-    """1/2 in screw, 3 m fixed-free, 400 N: far above 0.5 x Euler in compression."""
-    app = light_app(load_n=400.0, length_m=3.0, end_fixity="fixed-free", speed_m_s=0.001)
+    """1/2 in screw, 3 m fixed-free, 400 N: far above 0.5 x Euler in compression. Hanging
+    from its thrust bearing the vertical screw is only pulled; a horizontal one marked
+    tension is still pushed by the 400 N on the move back and buckles."""
+    app = light_app(load_n=400.0, length_m=3.0, end_fixity="fixed-free", speed_m_s=0.001,
+                    orientation="vertical")  # fmt: skip
     assert "buckling" in {c.name for c in evaluate(app, zbx8000_l10).failed_checks}
     tension = evaluate(replace(app, compression=False), zbx8000_l10)
     assert "buckling" not in {c.name for c in tension.failed_checks}
+    horizontal = replace(app, compression=False, orientation="horizontal")
+    assert "buckling" in {c.name for c in evaluate(horizontal, zbx8000_l10).failed_checks}
 
 
 def test_life_only_for_rated_series(b8000_l10: ScrewSpec, zbx8000_l10: ScrewSpec) -> None:

@@ -4,12 +4,13 @@
 candidates and their variants are screened together, and any lead, so the variants of
 the returned ones are screened after; families, a nut material, a vertical axis, a move
 with a motor curve, advice that rejects), the ranked candidates with their verdicts as
-the selector gave them when each path kept its own code and caches (two recorded again
-when the nut's heat and wear-life checks came: "motion-motor", where Tr8x2 bronze nuts
-running 3,000 rpm without a pause now overheat, and "life-advice-reject", where the ISO
-nuts now have a rated life). Every path must still give them: select, a catalog screw
-evaluated alone, and a screw outside the catalog with the same values (its variant rows
-built on the fly).
+the selector gave them when each path kept its own code and caches. Four were recorded
+again when the physics changed the answer: the nut's heat and wear life ("motion-motor":
+Tr8x2 bronze nuts at 3,000 rpm without a pause overheat; "life-advice-reject": the ISO
+nuts have a rated life), the peak thrust with m a on the nut and the bronze nut's
+sliding-speed limit ("any-lead-vertical", "any-lead-fast"). Every path must still give
+them: select, a catalog screw evaluated alone, and a screw outside the catalog with the
+same values (its variant rows built on the fly).
 """
 
 import json

@@ -55,7 +55,7 @@ S_Y = 240e6  # 303 annealed
 SLENDER = (L / math.sqrt(2)) / (RD / 4)  # 171, above sqrt(2 pi^2 E / S_y) = 126: Euler
 F_CR = 2 * math.pi**2 * E * (math.pi * RD**4 / 64) / L**2
 STRESS = PEAK / (math.pi * RD**2 / 4)
-PV = F / (3 * H) * RPM / 60  # H.T. cancels
+PV = PEAK / (3 * H) * RPM / 60  # H.T. cancels; the accelerating segment ends at V with m a
 DESIGN = 3e6 * 3 * math.pi * D_P * H
 LIFE_YEARS = 100e6 * 0.01 / (2 * 0.3 * 200 * 365)
 ERROR = 0.0006 * 0.3 + 0.0 + 0.0013e-3

@@ -16,8 +16,9 @@ ROW = set(VIEWS["row"])
     "inputs",
     [
         {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10},
-        # traverse-speed advice fails for many of these (warnings on passing rows)
-        {"load_n": 10, "speed_mm_s": 300, "length_mm": 300, "limit": 30},
+        # traverse-speed advice fails for many of these (warnings on passing rows, ranked
+        # after the clean ones)
+        {"load_n": 10, "speed_mm_s": 300, "length_mm": 300, "lead_mm": 10, "limit": 30},
         # a move and a motor: profile and segments on every row
         {
             "load_n": 50,

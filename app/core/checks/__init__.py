@@ -23,6 +23,7 @@ from app.core.checks.motor_rms import MotorRms
 from app.core.checks.motor_speed import MotorSpeed
 from app.core.checks.nut_heat import NutHeat
 from app.core.checks.oil import OilCompatibility
+from app.core.checks.power_off import HoldingPowerOff
 from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
 from app.core.checks.step_rate import StepRate
@@ -30,6 +31,7 @@ from app.core.checks.step_resolution import StepResolution
 from app.core.checks.temperature import Temperature
 from app.core.checks.torque import DriveTorque
 from app.core.checks.traverse_speed import TraverseSpeed
+from app.core.checks.vacuum import Vacuum
 from app.core.checks.wear_life import WearLife
 
 #: Every check, in the order results list them: the motor's, the screw's, the nut's,
@@ -55,11 +57,13 @@ REGISTRY: tuple[Check, ...] = (
     NutHeat(),
     BackDriving(),
     Holding(),
+    HoldingPowerOff(),
     AntiBacklash(),
     Life(),
     WearLife(),
     Accuracy(),
     StepResolution(),
+    Vacuum(),
 )
 BY_NAME: dict[str, Check] = {c.name: c for c in REGISTRY}
 

@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -14,6 +15,7 @@ from app.core.checks.base import (
     ScrewSpec,
     everywhere,
 )
+from app.core.checks.holding import brake_or_lead
 from app.core.formulas import efficiency
 from app.core.phrase import Amount, Phrase
 
@@ -25,8 +27,10 @@ class BackDriving(Check):
         "On a vertical axis with no brake the load pushes the nut down. The thread holds it "
         "only while its lead angle stays below the static friction angle; since friction "
         "drops with vibration and lubrication, the screw counts as self-locking only with "
-        "static friction reduced by the self-locking friction factor. Give a brake or "
-        "holding torque to judge holding instead."
+        "static friction reduced by the self-locking friction factor. Give a brake's "
+        "holding torque to judge holding instead. A stepper's energised holding torque "
+        "holds only while the power is on: without its detent torque this check judges "
+        "holding with the power off."
     )
     quantity = "length"
     formula = "lead = lead_screw; lead_max = pi * d_p * f * mu_s / cos(a_n)"
@@ -35,7 +39,10 @@ class BackDriving(Check):
     capacity_sources = ("friction_static", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        return app.orientation == "vertical" and app.brake_torque_nm is None
+        """Nothing else holds with the power off: no torque given, or a stepper's
+        energised holding torque without its detent torque."""
+        unpowered = app.holding_source == "energised" and app.detent_torque_nm is None
+        return motion.holds_a_load(app) and (app.brake_torque_nm is None or unpowered)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), t.lead_m, q.max_lock_lead_m)
@@ -71,20 +78,15 @@ class BackDriving(Check):
         return Phrase(
             "Not reliably self-locking (static friction at {f} x its value): the load can "
             "drive the screw down; holding torque {seed} (seed method), {physics} "
-            "(physics)." + rule,
+            "(physics at {f} x static friction)." + rule,
             {
                 **values,
                 "seed": Amount(r.holding_seed_nm, "torque"),
-                "physics": Amount(r.holding_physics_nm, "torque"),
+                "physics": Amount(r.holding_distrusted_nm, "torque"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        return Phrase(
-            "Give a brake (or the motor's holding torque) of at least {brake}, or use a lead "
-            "of at most {lead}.",
-            {
-                "brake": Amount(r.brake_needed_nm, "torque"),
-                "lead": Amount(r.max_lock_lead_m, "length"),
-            },
+        return brake_or_lead(
+            "Give a brake (it holds with the power off) of at least {needed}", s, r, reach
         )

@@ -12,9 +12,10 @@ from typing import ClassVar, Literal
 
 import numpy as np
 
-from app.core.model import STANDARD_GRAVITY_M_S2, Application, EndFixity, ScrewSpec
+from app.core import motion
+from app.core.model import Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
-from app.core.quantities import Quantities
+from app.core.quantities import Quantities, compression_sign
 from app.core.table import Array, CandidateTable, Mask, Reach
 
 __all__ = [
@@ -127,11 +128,18 @@ def where_given(capacity: Array) -> Mask:
     return ~np.isnan(capacity)
 
 
-def load_input(app: Application, axial_limit_n: float) -> float:
-    """Largest user load whose axial force (incl. weight when vertical) meets a limit."""
-    if app.orientation == "vertical":
-        return axial_limit_n - app.moving_mass_kg * STANDARD_GRAVITY_M_S2
-    return axial_limit_n
+def load_input(app: Application, allowed_n: float, compressive: bool = False) -> dict[str, float]:
+    """The largest user load at which the peak thrust (``compressive``: the peak thrust
+    that compresses the screw) meets ``allowed_n``, as an input change; empty when no load
+    does (the moving mass's m a alone exceeds it)."""
+    forms = motion.nut_force_forms(app)
+    if compressive:
+        c = compression_sign(app)
+        bounds = [(c * g, c * h) for g, h in forms]
+    else:
+        bounds = [*forms, *((-g, -h) for g, h in forms)]
+    load = motion.largest_load(bounds, allowed_n)
+    return {} if load is None else {"load_n": load}
 
 
 def sentence(template: str, values: dict[str, "Amount | str"]) -> Phrase:

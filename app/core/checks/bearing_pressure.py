@@ -21,13 +21,13 @@ class BearingPressure(Check):
     name = "bearing_pressure"
     label = "Nut contact pressure"
     description = (
-        "The load spread over the engaged flanks of the nut (nut length over pitch turns of "
-        "pi d2 H1 each) against the contact pressure the nut material allows at the "
-        "sliding speed: a bronze nut by its pressure-speed table, a polymer nut by its "
-        "maximum pressure and its PV limit."
+        "The peak thrust (load and m a) spread over the engaged flanks of the nut (nut "
+        "length over pitch turns of pi d2 H1 each) against the contact pressure the nut "
+        "material allows at the sliding speed: a bronze nut by its pressure-speed "
+        "table, a polymer nut by its maximum pressure and its PV limit."
     )
     quantity = "force"
-    formula = "F = F_axial; F_allow = p_nut_v * L_nut / P * pi * d_2 * H_1"
+    formula = "F = F_peak; F_allow = p_nut_v * L_nut / P * pi * d_2 * H_1"
     source = (
         "Shigley, power-screw bearing stress over the engaged turns; Shigley Table 8-4 "
         "(after Rothbart) for bronze; the nut material's p_max and PV (catalog)"
@@ -36,15 +36,15 @@ class BearingPressure(Check):
     capacity_sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length")
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(q.nut_allowed_load_n), q.force_n, q.nut_allowed_load_n)
+        return Measure(where_given(q.nut_allowed_load_n), q.peak_force_n, q.nut_allowed_load_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_axial": q.force_n,
+            "F_peak": q.peak_force_n,
             "p_nut_v": q.nut_allowed_pressure_pa,
-            "L_nut": t.nut_length_m,
+            "L_nut": q.nut_length_m,
             "P": t.pitch_m,
             "d_2": t.flank_pitch_diameter_m,
             "H_1": t.flank_height_m,
@@ -53,12 +53,15 @@ class BearingPressure(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         return Phrase(
-            "{f} " + verb + " the load {cap} that the nut's engaged flanks carry at the "
-            "sliding speed {v}.",
+            "The peak thrust {f} " + verb + " the load {cap} that the nut's engaged "
+            "flanks carry at the sliding speed {v}, where the nut material allows {p} (a "
+            "larger size slides faster at the same speed of turning, and its material may "
+            "allow less there).",
             {
-                "f": Amount(r.force_n, "force"),
+                "f": Amount(r.peak_force_n, "force"),
                 "cap": Amount(r.nut_allowed_load_n, "force"),
                 "v": Amount(r.sliding_speed_m_s, "speed"),
+                "p": Amount(r.nut_allowed_pressure_pa, "pressure"),
             },
         )
 
@@ -72,4 +75,4 @@ class BearingPressure(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return {"load_n": load_input(app, r.nut_allowed_load_n)}
+        return load_input(app, r.nut_allowed_load_n)

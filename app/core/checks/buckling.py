@@ -12,7 +12,6 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    everywhere,
     load_input,
     sentence,
     stiffer_support,
@@ -28,11 +27,12 @@ class ColumnBuckling(Check):
         "A screw pushed in compression buckles as a column. Slender screws follow Euler; "
         "short ones (below the transition slenderness) follow Johnson's parabola, which "
         "ends at the yield load of the root section. The allowed force is a fraction (the "
-        "buckling factor) of that critical load, judged at the peak thrust."
+        "buckling factor) of that critical load, judged at the largest thrust that pushes "
+        "the screw onto its thrust bearing in any segment of either move."
     )
     quantity = "force"
     formula = (
-        "F = F_peak; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / S_y) "
+        "F = F_c; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / S_y) "
         "else A * (S_y - (S_y * s / (2 * pi))^2 / E))"
     )
     source = (
@@ -42,17 +42,15 @@ class ColumnBuckling(Check):
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
 
-    def applies(self, app: Application) -> bool:
-        return app.compression
-
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.peak_force_n, q.allowed_load_n)
+        pushed = q.compressive_force_n > 0.0
+        return Measure(pushed, q.compressive_force_n, q.allowed_load_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_peak": q.peak_force_n,
+            "F_c": q.compressive_force_n,
             "SF": app.buckling_safety_factor,
             "E": t.youngs_modulus_pa,
             "A": buckling.root_area(t.root_diameter_m),
@@ -71,7 +69,7 @@ class ColumnBuckling(Check):
             + model
             + " {f_cr}, slenderness {s}).",
             {
-                "f": Amount(r.peak_force_n, "force"),
+                "f": Amount(r.compressive_force_n, "force"),
                 "allowed": Amount(r.allowed_load_n, "force"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
                 "f_cr": Amount(r.critical_load_n, "force"),
@@ -88,16 +86,20 @@ class ColumnBuckling(Check):
                 fixity,
                 float("nan") if s.yield_strength_pa is None else s.yield_strength_pa,
             )
-            return r.peak_force_n <= app.buckling_safety_factor * f_cr
+            return r.compressive_force_n <= app.buckling_safety_factor * f_cr
 
         d_min = buckling.min_root_diameter_for_load(
-            s.root_diameter_m, r.allowed_load_n, r.peak_force_n
+            s.root_diameter_m, r.allowed_load_n, r.compressive_force_n
         )
         values: dict[str, Amount | str] = {
             "support": stiffer_support(app, passes),
             "length": Amount(_max_length(app, s, r), "length"),
+            "fixity": app.end_fixity,
         }
-        template = "{support} (column at most {length}), or load the screw in tension."
+        template = (
+            "{support} (column at most {length} with the ends {fixity}), or move the thrust "
+            "bearing so that the load pulls the screw."
+        )
         if d_min <= reach.max_root_diameter_m:
             values["d"] = Amount(d_min, "length")
             template = "Use a root diameter of at least {d}, or " + template
@@ -106,8 +108,7 @@ class ColumnBuckling(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        peak_over_running = r.peak_force_n - r.force_n
-        limits = {"load_n": load_input(app, r.allowed_load_n - peak_over_running)}
+        limits = load_input(app, r.allowed_load_n, compressive=True)
         length = _max_length(app, s, r)
         return {**limits, "length_m": length} if length > 0 else limits
 
@@ -115,7 +116,7 @@ class ColumnBuckling(Check):
 def _max_length(app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
     """Longest column carrying the peak thrust with the buckling factor [m]."""
     return buckling.max_length_for_column(
-        r.peak_force_n / app.buckling_safety_factor,
+        r.compressive_force_n / app.buckling_safety_factor,
         s.youngs_modulus_pa,
         s.root_diameter_m,
         app.end_fixity,

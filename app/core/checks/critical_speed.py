@@ -77,15 +77,17 @@ class CriticalSpeed(Check):
         values: dict[str, Amount | str] = {
             "support": stiffer_support(app, passes),
             "length": Amount(_max_length(app, r), "length"),
+            "fixity": app.end_fixity,
         }
-        if lead <= reach.max_lead_m:
+        made = reach.made_lead(s, lead, larger=True)
+        if made is not None and made <= reach.max_lead_m:
             options.append("a lead of at least {lead}")
-            values["lead"] = Amount(lead, "length")
+            values["lead"] = Amount(made, "length")
         if d_min <= reach.max_root_diameter_m:
             options.append("a root diameter of at least {d}")
             values["d"] = Amount(d_min, "length")
         use = ("Use " + ", or ".join(options) + ", or {support}") if options else "{support}"
-        template = use + " (unsupported length at most {length})."
+        template = use + " (unsupported length at most {length} with the ends {fixity})."
         return sentence(template, values)
 
     def input_limits(

@@ -20,7 +20,8 @@ class DesignLoad(Check):
     name = "design_load"
     label = "Design load"
     description = (
-        "The peak thrust (running load plus the force that accelerates the moving mass) "
+        "The peak thrust (running load plus the force that accelerates or brakes the "
+        "moving mass, the larger) "
         "against the load the nut of this size is designed for."
     )
     quantity = "force"
@@ -57,5 +58,4 @@ class DesignLoad(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        inertial_n = r.peak_force_n - r.force_n
-        return {"load_n": load_input(app, (s.design_load_n or 0.0) - inertial_n)}
+        return load_input(app, s.design_load_n or 0.0)

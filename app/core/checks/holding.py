@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -17,23 +18,57 @@ from app.core.checks.base import (
 )
 from app.core.formulas import efficiency
 from app.core.phrase import Amount, Phrase
+from app.core.quantities import brake_factor
+
+
+def power_state(app: Application) -> str:
+    """Which holding the given torque judges, in words."""
+    if app.holding_source == "energised":
+        return "with the power on (the motor's energised holding torque)"
+    return "with the power off (a brake)"
+
+
+def holding_phrase(
+    app: Application, r: Quantities[float], available_nm: float, passed: bool, state: str
+) -> Phrase:
+    """The holding verdict: the torque available, what is needed and why, and the power
+    state it holds in."""
+    verb = "holds" if passed else "is short of"
+    return Phrase(
+        "Holding " + state + ": {available} " + verb + " the {needed} needed ({sf} x the "
+        "larger of {seed} (seed method) and {physics} (physics at {f} x static friction)).",
+        {
+            "available": Amount(available_nm, "torque"),
+            "needed": Amount(r.brake_needed_nm, "torque"),
+            "sf": Amount(brake_factor(app), "factor"),
+            "seed": Amount(r.holding_seed_nm, "torque"),
+            "physics": Amount(r.holding_distrusted_nm, "torque"),
+            "f": Amount(app.self_locking_friction_factor, "factor"),
+        },
+    )
 
 
 class Holding(Check):
     name = "holding"
     label = "Holding torque (vertical axis)"
     description = (
-        "On a vertical axis the brake, or the motor's holding torque, must hold the load "
-        "at standstill wherever the thread is not reliably self-locking: the larger of the "
-        "seed's holding torque and the physical one, times the torque safety factor."
+        "Where the axis holds a load at rest (vertical, or a load of fixed direction) the "
+        "brake, or the motor's energised holding torque, must hold it wherever the thread "
+        "is not reliably self-locking: the larger of the seed's holding torque and the "
+        "physical one at the distrusted static friction (f mu_s, the friction the "
+        "self-locking margin trusts), times the brake safety factor. A brake holds with "
+        "the power off; a stepper's holding torque only while it is energised."
     )
     quantity = "torque"
     formula = "T_hold = 0 if locks else SF * max(T_seed, T_physics); T_available = T_brake"
-    source = "seed catalog, Back Driving (T_b = F lead eta / 2 pi); Shigley sec. 8-2"
+    source = (
+        "seed catalog, Back Driving (T_b = F lead eta / 2 pi); Shigley sec. 8-2 "
+        "(lowering torque at the distrusted friction)"
+    )
     sources = ("friction_static", "friction_dynamic", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        return app.orientation == "vertical" and app.brake_torque_nm is not None
+        return motion.holds_a_load(app) and app.brake_torque_nm is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), q.brake_needed_nm, same(t, app.brake_torque_nm))
@@ -43,34 +78,29 @@ class Holding(Check):
     ) -> Mapping[str, object]:
         return {
             "locks": q.locks_with_margin.astype(bool),
-            "SF": app.torque_safety_factor,
-            "T_seed": efficiency.holding_torque(q.force_n, t.lead_m, t.efficiency),
-            "T_physics": q.holding_physics_nm,
+            "SF": brake_factor(app),
+            "T_seed": efficiency.holding_torque(q.holding_force_n, t.lead_m, t.efficiency),
+            "T_physics": q.holding_distrusted_nm,
             "T_brake": np.float64(app.brake_torque_nm or 0.0),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if r.locks_with_margin:
             return Phrase("Self-locking with margin: the brake is not needed to hold.")
-        verb = "holds" if passed else "is short of"
-        return Phrase(
-            "The {brake} brake " + verb + " the {needed} needed ({sf} x the larger of "
-            "{seed} (seed method) and {physics} (physics)).",
-            {
-                "brake": Amount(app.brake_torque_nm or 0.0, "torque"),
-                "needed": Amount(r.brake_needed_nm, "torque"),
-                "sf": Amount(app.torque_safety_factor, "factor"),
-                "seed": Amount(r.holding_seed_nm, "torque"),
-                "physics": Amount(r.holding_physics_nm, "torque"),
-            },
-        )
+        return holding_phrase(app, r, app.brake_torque_nm or 0.0, passed, power_state(app))
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        return Phrase(
-            "Fit a brake of at least {needed}, or use a lead of at most {lead} "
-            "(self-locking with margin).",
-            {
-                "needed": Amount(r.brake_needed_nm, "torque"),
-                "lead": Amount(r.max_lock_lead_m, "length"),
-            },
-        )
+        return brake_or_lead("Fit a brake of at least {needed}", s, r, reach)
+
+
+def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+    """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
+    that self-locks with margin, when it is made in one."""
+    values = {"needed": Amount(r.brake_needed_nm, "torque")}
+    lead = reach.made_lead(s, r.max_lock_lead_m, larger=False)
+    if lead is None:
+        return Phrase(start + ".", values)
+    return Phrase(
+        start + ", or use a lead of {lead} (self-locking with margin).",
+        {**values, "lead": Amount(lead, "length")},
+    )

@@ -21,10 +21,11 @@ class NutPV(Check):
     label = "PV (nut material)"
     description = (
         "A plastic nut heats and wears with pressure times sliding speed; above its PV "
-        "limit it fails early."
+        "limit it fails early. Judged at the peak thrust (an accelerating segment reaches "
+        "the top speed still carrying m a) and the top speed."
     )
     quantity = "pv"
-    formula = "PV = F / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut"
+    formula = "PV = F_peak / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut"
     source = "seed catalog, PV Calculation (three threads in contact)"
     sources = ("pv_limit", "root_diameter", "outer_diameter")
     capacity_sources = ("pv_limit",)
@@ -36,7 +37,7 @@ class NutPV(Check):
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F": q.force_n,
+            "F_peak": q.peak_force_n,
             "H_T": t.helix_travel_m,
             "h": t.thread_depth_m,
             "n": q.rpm,
@@ -46,7 +47,7 @@ class NutPV(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         return Phrase(
-            "PV at the running thrust, {pv}, " + verb + " the nut limit {limit}.",
+            "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}.",
             {"pv": Amount(r.pv_pa_m_s, "pv"), "limit": Amount(s.pv_limit_pa_m_s or 0.0, "pv")},
         )
 
@@ -63,4 +64,4 @@ class NutPV(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return {"load_n": load_input(app, r.pv_max_load_n), "speed_m_s": r.pv_max_speed_m_s}
+        return {**load_input(app, r.pv_max_load_n), "speed_m_s": r.pv_max_speed_m_s}

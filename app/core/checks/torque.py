@@ -1,5 +1,8 @@
 """Drive torque against the torque the drive offers (when the user gives it)."""
 
+import numpy as np
+
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -19,10 +22,18 @@ from app.core.phrase import Amount, Phrase
 class DriveTorque(Check):
     name = "torque"
     label = "Drive torque"
-    description = "The torque the screw needs, with the torque safety factor, against the drive."
+    description = (
+        "The torque the screw needs, with the torque safety factor, against the drive: the "
+        "largest of break-away and every moving segment of both moves (accelerate, "
+        "constant, decelerate), each the thrust through the thread, the drag and the "
+        "screw's and the rotor's inertia times the angular acceleration."
+    )
     quantity = "torque"
-    formula = "T_req = SF * max(T_inertia + T_drag + T_load, T_breakaway); T_available = T_drive"
-    source = "seed catalog, Torque (inertia + static drag + load), with static friction"
+    formula = "T_req = SF * max(T_move, T_breakaway); T_available = T_drive"
+    source = (
+        "seed catalog, Torque (inertia + static drag + load), with static friction; "
+        "Shigley sec. 8-2 (thread torque by the flow of power)"
+    )
     sources = ("inertia_per_length", "drag_torque", "friction_dynamic", "friction_static")
 
     def applies(self, app: Application) -> bool:
@@ -36,9 +47,7 @@ class DriveTorque(Check):
     ) -> Mapping[str, object]:
         return {
             "SF": app.torque_safety_factor,
-            "T_inertia": q.inertia_nm,
-            "T_drag": q.drag_nm,
-            "T_load": q.load_nm,
+            "T_move": np.max([np.abs(m[3]) for m in motion.moving_torques(app, t)], axis=0),
             "T_breakaway": q.breakaway_nm,
             "T_drive": app.max_torque_nm,
         }

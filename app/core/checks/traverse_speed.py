@@ -61,11 +61,12 @@ class TraverseSpeed(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         faster = [band for band in s.traverse_bands if band[2] >= app.speed_m_s]
-        if not faster:
+        lead = reach.made_lead(s, faster[0][0], larger=True) if faster else None
+        if lead is None:
             return Phrase("Run at most {limit}.", {"limit": Amount(_limit(s), "speed")})
         return Phrase(
             "Run at most {limit}, or a lead of at least {lead}.",
-            {"limit": Amount(_limit(s), "speed"), "lead": Amount(faster[0][0], "length")},
+            {"limit": Amount(_limit(s), "speed"), "lead": Amount(lead, "length")},
         )
 
     def input_limits(

@@ -13,7 +13,6 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    load_input,
     same,
     where_given,
 )
@@ -107,4 +106,6 @@ class WearLife(Check):
         years = app.required_life_years
         if not years or not np.isfinite(r.wear_life_years):
             return None
-        return {"load_n": load_input(app, r.force_n * r.wear_life_years / years)}
+        # the running thrust is the load plus what does not change with it (a weight)
+        load_n = app.load_n - r.force_n * (1.0 - r.wear_life_years / years)
+        return {"load_n": load_n} if load_n >= 0.0 else None
