@@ -335,7 +335,10 @@ def link_number(field: InputField, value: float, units: Mapping[str, str]) -> st
     ('3937.007874015748', '100.4824')
     """
     units = {**DEFAULT_UNITS, **units}
-    exact = Fraction(value) / _factor(field, units)
+    factor = _factor(field, units)
+    if factor == 1:  # the shortest text that reads back to the float is its repr
+        return _trimmed(repr(value))
+    exact = Fraction(value) / factor
     with localcontext(prec=LINK_DIGITS):
         shown = Decimal(exact.numerator) / Decimal(exact.denominator)
     for digits in range(6, LINK_DIGITS):

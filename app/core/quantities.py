@@ -8,7 +8,7 @@ candidate's numbers as plain floats.
 
 from collections.abc import Sequence
 from dataclasses import dataclass, fields
-from typing import Any, Generic, TypeVar
+from typing import Any, Generic, TypeVar, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -183,11 +183,28 @@ class Quantities(Generic[V]):
         """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
         return Quantities(*(float(getattr(self, name)[i]) for name in NAMES))
 
+    def at(self, i: int) -> "Quantities[float]":
+        """The numbers of the candidate at ``i``, each read as a float when it is read:
+        what a check's sentence or fix reads (a handful of its hundred numbers)."""
+        return cast("Quantities[float]", _At(self, i))
+
     def rows(self, index: Sequence[int] | NDArray[np.intp]) -> "list[Quantities[float]]":
         """The numbers of the candidates at ``index`` as floats (NaN: no such limit)."""
         at = np.asarray(index, dtype=np.intp)
         columns = [getattr(self, name)[at].tolist() for name in NAMES]
         return [Quantities(*values) for values in zip(*columns, strict=True)]
+
+
+class _At:
+    """One candidate's numbers read from the arrays of ``Quantities`` one at a time."""
+
+    __slots__ = ("_i", "_q")
+
+    def __init__(self, q: Quantities[Array], i: int) -> None:
+        self._q, self._i = q, i
+
+    def __getattr__(self, name: str) -> float:
+        return float(getattr(self._q, name)[self._i])
 
 
 #: The fields of ``Quantities``, in declaration order.

@@ -315,7 +315,7 @@ class Slot:
     def row(self) -> Quantities[float]:
         """Every quantity as a float (NaN: no such limit)."""
         if self._row is None:
-            self._row = self.screening.quantities.row(self.position)
+            self._row = self.screening.quantities.at(self.position)
         return self._row
 
     def fix_of(self, check: Check) -> Phrase | None:

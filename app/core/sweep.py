@@ -1,11 +1,16 @@
-"""The lead sweep: one size and nut with every lead the catalog offers, screened for an
-application, to show the trade-off that picks the lead (drive torque against the speed
-and PV limits)."""
+"""Sweeps for the charts: one size and nut with every lead the catalog offers, screened
+for an application, to show the trade-off that picks the lead (drive torque against the
+speed and PV limits); and the wear life of the top candidates at the axis's thrust, from
+which the life at any thrust follows."""
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
+
+import numpy as np
 
 from app.core.index import CatalogIndex, SizeKey
 from app.core.model import Application
+from app.core.quantities import operating_point
 from app.core.screening import screen_table
 
 
@@ -45,3 +50,32 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
         )
         for k in range(len(rows))
     ]
+
+
+@dataclass(frozen=True, slots=True)
+class WearPoint:
+    """One wear-rated candidate at the axis's running thrust [N]: its wear life in years
+    of the duty (None without a duty) and in travel [m]."""
+
+    id: str
+    force_n: float
+    life_years: float | None
+    travel_m: float
+
+
+def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> list[WearPoint]:
+    """The candidates ``ids`` of ``index`` whose nut has a wear life at this thrust, in
+    the order given, their numbers from one pass over all of them. Archard's life is
+    inversely proportional to the thrust, so one point gives the life at any thrust."""
+    rows = np.array([index.positions[i] for i in ids if i in index.positions], dtype=np.intp)
+    if not rows.size:
+        return []
+    q = operating_point(app, index.table.take(rows))
+    points = []
+    for k, position in enumerate(rows.tolist()):
+        travel, years, force = q.wear_travel_m[k], q.wear_life_years[k], q.force_n[k]
+        if np.isfinite(travel) and force > 0.0:
+            life = float(years) if np.isfinite(years) else None
+            screw = index.table.screws[position]
+            points.append(WearPoint(screw.id, float(force), life, float(travel)))
+    return points

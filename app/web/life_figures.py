@@ -7,14 +7,12 @@ core's one number per candidate gives the whole line."""
 from collections.abc import Sequence
 from typing import Any
 
-import numpy as np
-
 from app.catalog import Catalog
 from app.contract.schemas import CandidateBaseOut
 from app.contract.units import Display, from_si
 from app.core.checks.wear_life import life_band
 from app.core.model import Application
-from app.core.quantities import operating_point
+from app.core.sweep import wear_points
 from app.web.chart_style import PALETTE, axis, layout
 
 TOP = 5
@@ -23,19 +21,8 @@ SPAN = 4.0
 POINTS = 25
 
 
-def _life(app: Application, c: CandidateBaseOut, catalog: Catalog) -> tuple[float, float] | None:
-    """(life at the axis's thrust, the thrust [N]) of a wear-rated candidate, else None."""
-    position = catalog.index.positions.get(c.id)
-    if position is None:
-        return None
-    q = operating_point(app, catalog.index.row(position)).row(0)
-    years = q.wear_life_years
-    life = years if np.isfinite(years) else from_si(q.wear_travel_m, "km")
-    return (life, q.force_n) if np.isfinite(life) and q.force_n > 0.0 else None
-
-
 def _traces(
-    c: CandidateBaseOut, life: float, force_n: float, shares: tuple[float, float], d: Display
+    screw_id: str, life: float, force_n: float, shares: tuple[float, float], d: Display
 ) -> list[dict[str, Any]]:
     """The band's low edge, its high edge filled down to it, and the life line."""
     thrusts = [force_n * SPAN ** (2 * i / (POINTS - 1) - 1) for i in range(POINTS)]
@@ -47,9 +34,9 @@ def _traces(
 
     band = {"line": {"width": 0}, "showlegend": False, "hoverinfo": "skip"}
     return [
-        line(shares[0], name=f"{c.id}, wear rate high", **band),
-        line(shares[1], name=f"{c.id}, wear rate low", fill="tonexty", **band),
-        line(1.0, name=c.id, line={"width": 2}),
+        line(shares[0], name=f"{screw_id}, wear rate high", **band),
+        line(shares[1], name=f"{screw_id}, wear rate low", fill="tonexty", **band),
+        line(1.0, name=screw_id, line={"width": 2}),
     ]
 
 
@@ -58,17 +45,15 @@ def life_figure(
 ) -> dict[str, Any] | None:
     """Life against thrust for the top wear-rated candidates; None when none is rated."""
     data: list[dict[str, Any]] = []
-    for c in candidates:
-        found = _life(app, c, catalog)
-        if found is None:
-            continue
+    for point in wear_points(app, catalog.index, [c.id for c in candidates])[:TOP]:
+        life = point.life_years
+        if life is None:
+            life = from_si(point.travel_m, "km")
         colour = PALETTE[len(data) // 3 % len(PALETTE)]
-        traces = _traces(c, *found, life_band(catalog.by_id[c.id]), d)
+        traces = _traces(point.id, life, point.force_n, life_band(catalog.by_id[point.id]), d)
         traces[1]["fillcolor"] = colour + "33"
         traces[2]["line"]["color"] = colour
         data += traces
-        if len(data) == 3 * TOP:
-            break
     if not data:
         return None
     rated = bool(app.stroke_m and app.cycles_per_day)
