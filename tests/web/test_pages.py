@@ -349,6 +349,35 @@ def test_detail_fragment_and_page(client: TestClient) -> None:
     assert not full.select("form#selector")
 
 
+def test_detail_breaks_the_inertia_torque_into_screw_mass_and_rotor(client: TestClient) -> None:
+    """ZBX8000-L10 at 2 m/s^2 with a rotor of 82e-7 kg m^2: J_motor alpha =
+    82e-7 x 2 pi x 2 / 0.01 = 0.0103 N m = 1.459 oz in, beside the screw's and the mass's."""
+    move = {"accel": "2000", "moving_mass_kg": "5", "motor_inertia": "82e-7"}
+    params = {**AXIS, **move, "torque_unit": "oz_in", "id": "ZBX8000-L10"}
+    detail = soup(client.get("/detail", params=params, headers=HX))
+    rotor_nm = 82e-7 * 2 * math.pi * 2.0 / 0.010
+    assert float(detail.select_one(".inertia-motor").text) == pytest.approx(
+        rotor_nm / OZ_IN, rel=1e-3
+    )
+    api = client.get(
+        "/api/v1/select",
+        params={
+            **API_AXIS,
+            "accel_mm_s2": 2000,
+            "moving_mass_kg": 5,
+            "motor_inertia_kg_m2": 82e-7,
+            "detail": "full",
+        },
+    ).json()
+    screened = api["candidates"] + api["rejected"]
+    torque = next(c for c in screened if c["id"] == "ZBX8000-L10")["torque"]
+    assert torque["inertia_motor_nm"] == pytest.approx(rotor_nm, rel=1e-9)
+    for name, part in (("screw", "inertia_screw_nm"), ("mass", "inertia_mass_nm")):
+        shown = float(detail.select_one(f".inertia-{name}").text)
+        assert shown == pytest.approx(torque[part] / OZ_IN, rel=1e-3)
+    assert api["formulas"]["torque.inertia_motor_nm"]["formula"].startswith("T = J_motor alpha")
+
+
 def test_detail_of_a_rejected_candidate_names_its_failures_and_fix(client: TestClient) -> None:
     c = api_select(client)["rejected"][0]
     page = soup(client.get("/detail", params={**AXIS, "id": c["id"]}))
