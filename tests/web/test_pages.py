@@ -296,6 +296,24 @@ def test_advanced_opens_only_for_non_default_values(client: TestClient) -> None:
     assert "tension" in page.select_one("dl.inputs").text.lower()
 
 
+def test_the_moving_mass_orientation_and_load_direction_are_up_front(
+    client: TestClient,
+) -> None:
+    """Asked beside the load, outside Advanced: a vertical 5 kg axis keeps Advanced shut,
+    and every motor input sits in the one motor group."""
+    query = {**AXIS, "moving_mass_kg": "5", "orientation": "vertical", "load_direction": "fixed"}
+    page = soup(client.get("/", params=query))
+    up_front = [w["id"] for w in page.select("fieldset.axis div.field[id^=w-]")]
+    assert up_front[:4] == ["w-load", "w-load_direction", "w-moving_mass_kg", "w-orientation"]
+    assert not page.select("details.advanced #f-moving_mass_kg, details.advanced #f-orientation")
+    assert not page.select("details.advanced[open]")
+    assert page.select_one("#f-orientation option[selected]")["value"] == "vertical"
+    motor = next(
+        fs for fs in page.select("details.advanced fieldset") if fs.legend.text == "Motor and move"
+    )
+    assert motor.select_one("#f-max_torque") and motor.select_one("#f-motor_curve")
+
+
 # detail, rejected, no pass
 
 
