@@ -396,6 +396,19 @@ def test_detail_breaks_the_inertia_torque_into_screw_mass_and_rotor(client: Test
     assert api["formulas"]["torque.inertia_motor_nm"]["formula"].startswith("T = J_motor alpha")
 
 
+def test_detail_at_no_axial_load_says_pv_sets_no_speed_limit(client: TestClient) -> None:
+    """No thrust on the nut: PV is 0 whatever the speed, so the line gives the load the
+    nut allows at this speed and says there is no speed limit (never "nan mm/s")."""
+    api = api_select(client, load_n=0)
+    c = api["candidates"][0]
+    assert c["pv"]["max_speed_mm_s"] is None and c["pv"]["max_load_n"] > 0
+    detail = soup(client.get("/detail", params={**AXIS, "load": "0", "id": c["id"]}, headers=HX))
+    pv = next(div.dd.text for div in detail.select("dl.facts > div") if div.dt.text == "PV")
+    assert "no PV speed limit at this load (no thrust on the nut)" in pv
+    assert f"at most {c['pv']['max_load_n']:.4g} N at this speed" in pv
+    assert "nan" not in detail.text.lower()
+
+
 def test_detail_of_a_rejected_candidate_names_its_failures_and_fix(client: TestClient) -> None:
     c = api_select(client)["rejected"][0]
     page = soup(client.get("/detail", params={**AXIS, "id": c["id"]}))
