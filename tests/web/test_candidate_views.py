@@ -95,12 +95,12 @@ def test_the_results_table_shows_the_nut_and_the_motor_torque(
         assert row.select_one(".motor-use") is None
 
 
-#: A move of 300 mm and a motor of 0.4 N m (about 57 oz in), ranked by its margin.
+#: A move of 300 mm and a motor of 0.4 N m (about 57 oz in), ranked by its margin, at
+#: every lead (ten candidates pass).
 MOTOR_PAGE = {
     "load": 50,
     "speed": 200,
     "length": 500,
-    "lead": 10,
     "stroke": 300,
     "accel": 2000,
     "moving_mass_kg": 5,
@@ -135,7 +135,7 @@ def test_the_table_shows_the_cores_peak_rms_and_motor_use_in_the_display_unit(
         cell = row.select_one(".motor-use").get_text()
         assert cell == f"{share * 100:.0f} %"
         used.append(share)
-    assert used == sorted(used)
+    assert len(used) > 1 and used == sorted(used)
     ranked = page.select("table.candidates thead th.ranked")
     assert [th.select_one("abbr").get_text() for th in ranked] == ["Motor used"]
 
@@ -150,6 +150,25 @@ def test_the_ranked_column_is_marked(client: TestClient, rank_by: str, heading: 
     ranked = page.select("table.candidates thead th.ranked")
     assert [th.select_one("abbr").get_text() for th in ranked] == [heading]
     assert ranked[0].select_one(".rank-mark").get_text() == "ranked"
+
+
+def test_under_a_move_the_torque_ranking_names_the_torque_it_orders(client: TestClient) -> None:
+    """Lowest torque orders by the torque while accelerating, the peak column's second
+    line (warned screws last), and the mark says so."""
+    query = {k: v for k, v in MOTOR_PAGE.items() if k != "rank_by"}
+    page = BeautifulSoup(client.get("/", params=query).text, "html.parser")
+    (ranked,) = page.select("table.candidates thead th.ranked")
+    assert ranked.select_one("abbr").get_text() == "Peak torque"
+    assert ranked.select_one(".rank-mark").get_text() == "ranked by accelerating"
+    # screws with a warning come after those without, each part by the torque
+    order = [
+        (
+            row.select_one("span.mark.warned") is not None,
+            float(row.select_one(".torque-total").text),
+        )
+        for row in page.select("tbody.candidate")
+    ]
+    assert len(order) > 1 and order == sorted(order)
 
 
 def test_the_compact_select_gives_the_peak_torque_and_the_motor_use(
