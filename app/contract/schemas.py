@@ -479,9 +479,9 @@ VIEWS: dict[str, View] = {
     "csv": {
         **whole(
             "id series anti_backlash outer_diameter_mm root_diameter_mm lead_mm coated rpm "
-            "efficiency self_locking utilization governing_check fix"
+            "efficiency self_locking utilization governing_check fix motor_use"
         ),
-        "torque": whole("total_nm inertia_nm drag_nm load_nm"),
+        "torque": whole("total_nm inertia_nm drag_nm load_nm peak_motor_nm"),
         "holding_torque": whole("seed_method_nm physics_nm"),
         "critical_speed": whole("allowed_rpm"),
         "life": whole("years"),

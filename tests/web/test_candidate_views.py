@@ -3,6 +3,8 @@ the summary show besides the breakdown: the nut's material, the motor's peak and
 torque over the move (null without a stroke), the share of the motor used, and the
 column the ranking orders."""
 
+import csv
+import io
 from typing import Any
 
 import pytest
@@ -182,6 +184,16 @@ def test_the_compact_select_gives_the_peak_torque_and_the_motor_use(
         share = record.quantities.peak_torque_nm * app.torque_safety_factor / motor_nm
         assert c["motor_use"] == pytest.approx(share, rel=1e-12)
     assert all(c["motor_use"] is None for c in _compact(client, MOVE))
+    exported = client.get("/export.csv", params=MOTOR_PAGE).text
+    rows = list(csv.DictReader(io.StringIO(exported.split("\r\n\r\n", 1)[1])))
+    any_lead = {k: v for k, v in MOVE.items() if k != "lead_mm"}
+    listed = {c["id"]: c for c in _compact(client, {**any_lead, "max_torque_nm": 56.6 * OZ_IN})}
+    passed = [r for r in rows if r["status"] == "passed"]
+    assert [r["id"] for r in passed] == list(listed)
+    for r in passed:
+        assert float(r["motor_use"]) == pytest.approx(listed[r["id"]]["motor_use"], rel=1e-9)
+        peak = listed[r["id"]]["torque"]["peak_motor_nm"]
+        assert float(r["torque_peak [oz in]"]) == pytest.approx(peak / OZ_IN, rel=1e-9)
 
 
 @pytest.mark.parametrize(

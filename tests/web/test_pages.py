@@ -632,6 +632,10 @@ def test_csv_export_has_a_row_per_candidate_in_display_units(client: TestClient)
     total = float(passed[0]["torque_total [lb in]"])
     expected = api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617
     assert math.isclose(total, expected, rel_tol=1e-9)  # written to 10 significant figures
+    peak = float(passed[0]["torque_peak [lb in]"])
+    expected_peak = api["candidates"][0]["torque"]["peak_motor_nm"] / 0.112984829027617
+    assert math.isclose(peak, expected_peak, rel_tol=1e-9)
+    assert {r["motor_use"] for r in rows} == {""}  # no motor given
 
 
 def test_csv_cells_cannot_start_a_formula(client: TestClient) -> None:
