@@ -171,6 +171,28 @@ FIELDS: tuple[InputField, ...] = (
         kind="number", required=True, bounds=(0.0, 1e6), dimension="force",
     ),
     InputField(
+        api="load_direction", page="load_direction", core="load_direction",
+        label="Load direction", help="How the axial load acts on the moving mass",
+        group="Axis", kind="choice", default="auto", options=LoadDirection,
+        texts={
+            "auto": "By orientation: a weight when vertical, against the motion when "
+            "horizontal",
+            "opposes": "Against the motion both ways (friction, cutting)",
+            "fixed": "One way, against the up (out) move (a weight, spring or press)",
+        },
+    ),
+    InputField(
+        api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
+        label="Moving mass", help="Carried by the nut", group="Axis",
+        kind="number", default=0.0, bounds=(0.0, 1e5), dimension="mass",
+    ),
+    InputField(
+        api="orientation", page="orientation", core="orientation", label="Orientation",
+        help="Vertical adds the weight of the moving mass", group="Axis",
+        kind="choice", default="horizontal", options=Orientation,
+        texts={"horizontal": "Horizontal", "vertical": "Vertical"},
+    ),
+    InputField(
         api="lead_mm", page="lead", core="lead_m", label="Lead",
         help="Travel per turn; empty or “any” for every lead", group="Axis", kind="number",
         bounds=(0.01, 1000.0), dimension="length",
@@ -194,26 +216,6 @@ FIELDS: tuple[InputField, ...] = (
         kind="number", default=1000.0, bounds=(0.0, 1e6), dimension="accel",
     ),
     InputField(
-        api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
-        label="Moving mass", help="Carried by the nut", group="Motion and load",
-        kind="number", default=0.0, bounds=(0.0, 1e5), dimension="mass",
-    ),
-    InputField(
-        api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
-        help="How the two screw ends are supported", group="Ends", kind="choice",
-        default="fixed-simple", options=EndFixity, drawn=True,
-        texts={
-            "fixed-free": "Fixed – free", "simple-simple": "Simple – simple",
-            "fixed-simple": "Fixed – simple", "fixed-fixed": "Fixed – fixed",
-        },
-    ),
-    InputField(
-        api="orientation", page="orientation", core="orientation", label="Orientation",
-        help="Vertical adds the weight of the moving mass", group="Motion and load",
-        kind="choice", default="horizontal", options=Orientation,
-        texts={"horizontal": "Horizontal", "vertical": "Vertical"},
-    ),
-    InputField(
         api="compression", page="compression", core="compression", label="Thrust bearing",
         help="Where the screw's thrust bearing sits, which says whether each stroke pushes "
         "or pulls the screw; only a pushed screw can buckle, and a load that reverses "
@@ -223,6 +225,15 @@ FIELDS: tuple[InputField, ...] = (
         texts={
             "true": "Compression on the up (out) move: the bearing at the end the nut leaves",
             "false": "Tension on the up (out) move: the bearing at the end the nut approaches",
+        },
+    ),
+    InputField(
+        api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
+        help="How the two screw ends are supported", group="Ends", kind="choice",
+        default="fixed-simple", options=EndFixity, drawn=True,
+        texts={
+            "fixed-free": "Fixed – free", "simple-simple": "Simple – simple",
+            "fixed-simple": "Fixed – simple", "fixed-fixed": "Fixed – fixed",
         },
     ),
     InputField(
@@ -239,6 +250,24 @@ FIELDS: tuple[InputField, ...] = (
             "auto": "Auto (coated or not)", "tfe": "TFE coated", "none": "Uncoated",
         },
         catalog_only=True,
+    ),
+    InputField(
+        api="family", page="family", core="families", label="Families",
+        help="Catalog family ids, comma-separated; empty for every family",
+        group="Nut and environment", kind="list",
+        catalog_only=True,
+    ),
+    InputField(
+        api="nut_material", page="nut_material", core="nut_material", label="Nut material",
+        help="e.g. bronze, acetal or polyacetal; empty or “any” for every nut",
+        group="Nut and environment", kind="text", none_word="any",
+        catalog_only=True,
+    ),
+    InputField(
+        api="nut_length_mm", page="nut_length", core="nut_length_m", label="Nut length",
+        help="Trapezoidal screws: the nut's length, whose engaged turns (length over pitch) "
+        "carry the load; empty for the catalog's (2 x d)",
+        group="Nut and environment", kind="number", bounds=(0.1, 1e4), dimension="length",
     ),
     InputField(
         api="oil_present", page="oil_present", core="oil_present", label="Oil present",
@@ -267,51 +296,6 @@ FIELDS: tuple[InputField, ...] = (
         group="Duty and requirements", kind="number", bounds=(1e-3, 1e7), unit="/day",
     ),
     InputField(
-        api="critical_speed_safety_factor", page="critical_speed_safety_factor",
-        core="critical_speed_safety_factor", label="Critical-speed factor",
-        help="Share of the theoretical whirling speed the screw may run at: 0.8 allows "
-        "80 %. A fraction, 1 or below; smaller is safer",
-        group="Safety factors", kind="number", default=0.8, bounds=(0.01, 1.0),
-    ),
-    InputField(
-        api="buckling_safety_factor", page="buckling_safety_factor",
-        core="buckling_safety_factor", label="Buckling factor",
-        help="Share of the column's critical load (Euler, or Johnson for short screws) and "
-        "of the root's yield strength the screw may carry: 0.5 allows half. A fraction, 1 "
-        "or below; smaller is safer",
-        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
-    ),
-    InputField(
-        api="torque_safety_factor", page="torque_safety_factor",
-        core="torque_safety_factor", label="Torque safety factor",
-        help="Multiplier on the computed drive torque before it is compared with the "
-        "motor: 1.5 asks for 50 % reserve. 1 or more; larger is safer",
-        group="Safety factors",
-        kind="number", default=1.0, bounds=(1.0, 10.0),
-    ),
-    InputField(
-        api="self_locking_friction_factor", page="self_locking_friction_factor",
-        core="self_locking_friction_factor", label="Self-locking friction factor",
-        help="Fraction of the static friction trusted to hold a vertical load, 1 or below: "
-        "0.5 matches the seed's rule (lead under diameter / 8); friction falls with "
-        "vibration and lubrication",
-        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
-    ),
-    InputField(
-        api="max_torque_nm", page="max_torque", core="max_torque_nm",
-        label="Max drive torque", help="What the motor gives; empty for no limit",
-        group="Duty and requirements", kind="number", bounds=(1e-6, 1e5),
-        dimension="torque",
-    ),
-    InputField(
-        api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
-        label="Holding torque", group="Duty and requirements", kind="number",
-        help="Vertical axis (or a load of fixed direction): a brake's, or a stepper's "
-        "energised holding torque (say which below), at the screw; empty when the screw "
-        "must hold the load by itself",
-        bounds=(0.0, 1e5), dimension="torque",
-    ),
-    InputField(
         api="required_life_years", page="required_life_years", core="required_life_years",
         label="Required life", help="Needs stroke and cycles per day",
         group="Duty and requirements", kind="number", bounds=(1e-3, 1000.0), dimension="years",
@@ -324,61 +308,48 @@ FIELDS: tuple[InputField, ...] = (
         kind="number", bounds=(1e-4, 1000.0), dimension="length",
     ),
     InputField(
-        api="rank_by", page="rank_by", core="rank_by", label="Rank by",
-        help="Order of the passing screws", group="Results", kind="choice",
-        default="torque", options=RankBy,
+        api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
+        label="Holding torque", group="Duty and requirements", kind="number",
+        help="Vertical axis (or a load of fixed direction): a brake's, or a stepper's "
+        "energised holding torque (say which below), at the screw; empty when the screw "
+        "must hold the load by itself",
+        bounds=(0.0, 1e5), dimension="torque",
+    ),
+    InputField(
+        api="holding_source", page="holding_source", core="holding_source",
+        label="Holding torque is", help="A brake holds with the power off; a stepper's "
+        "holding torque only while it is energised (then the detent torque, or the "
+        "thread, must hold with the power off)",
+        group="Duty and requirements", kind="choice", default="brake", options=HoldingSource,
         texts={
-            "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
-            "size": "Smallest size", "motor_margin": "Largest motor margin",
+            "brake": "A brake's (holds with the power off)",
+            "energised": "The motor's energised holding torque (power on only)",
         },
-        catalog_only=True,
     ),
     InputField(
-        api="advice", page="advice", core="advice", label="Advice",
-        help="A failed recommendation (e.g. the traverse speed for a lead): a warning (such "
-        "screws always rank after those without one), or reject them",
-        group="Results", kind="choice", default="warn", options=AdvicePolicy,
-        texts={"warn": "Warn and rank last", "rank": "Warn and rank last", "reject": "Reject"},
-        catalog_only=True,
+        api="detent_torque_nm", page="detent_torque", core="detent_torque_nm",
+        label="Detent torque", help="The stepper's unpowered detent torque at the screw: "
+        "what holds with the power off; empty when unknown",
+        group="Duty and requirements", kind="number", bounds=(0.0, 1e5), dimension="torque",
     ),
     InputField(
-        api="limit", page="limit", core="limit", label="Number of results",
-        help="How many passing screws to list, 1–100", group="Results",
-        kind="whole number", default=10, bounds=(1, 100),
-        catalog_only=True,
+        api="motor", page="motor", core="motor", label="Library motor",
+        help="A motor of the library (catalog/motors.toml: " + ", ".join(library())
+        + "): its pull-out curve, rotor inertia and step angle unless given here; empty "
+        "or “none” for no motor",
+        group="Motor and move", kind="text", none_word="none",
     ),
     InputField(
-        api="family", page="family", core="families", label="Families",
-        help="Catalog family ids, comma-separated; empty for every family",
-        group="Nut and environment", kind="list",
-        catalog_only=True,
-    ),
-    InputField(
-        api="nut_material", page="nut_material", core="nut_material", label="Nut material",
-        help="e.g. bronze, acetal or polyacetal; empty or “any” for every nut",
-        group="Nut and environment", kind="text", none_word="any",
-        catalog_only=True,
-    ),
-    InputField(
-        api="decel_mm_s2", page="decel", core="decel_m_s2", label="Deceleration",
-        help="Linear, to stop at the end of the stroke; empty for the acceleration",
-        group="Motor and move", kind="number", bounds=(0.0, 1e6), dimension="accel",
-    ),
-    InputField(
-        api="dwell_s", page="dwell", core="dwell_s", label="Dwell",
-        help="Rest after each move, out and back (needs a stroke)", group="Motor and move",
-        kind="number", default=0.0, bounds=(0.0, 1e6), dimension="time",
+        api="max_torque_nm", page="max_torque", core="max_torque_nm",
+        label="Max drive torque", help="What the motor gives; empty for no limit",
+        group="Motor and move", kind="number", bounds=(1e-6, 1e5),
+        dimension="torque",
     ),
     InputField(
         api="motor_curve", page="motor_curve", core="motor_curve", label="Motor curve",
         help="Torque the motor gives against speed: one point “rpm torque” per line, rpm "
         "ascending, torque in N m; linear between points, nothing past the last",
         group="Motor and move", kind="curve", unit="rpm : N m",
-    ),
-    InputField(
-        api="motor_inertia_kg_m2", page="motor_inertia", core="motor_inertia_kg_m2",
-        label="Rotor inertia", help="The motor's own, at the screw; empty for none",
-        group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
     ),
     InputField(
         api="motor_rms_torque_nm", page="motor_rms_torque", core="motor_rms_torque_nm",
@@ -388,11 +359,9 @@ FIELDS: tuple[InputField, ...] = (
         needs=("stroke_mm",),
     ),
     InputField(
-        api="motor", page="motor", core="motor", label="Library motor",
-        help="A motor of the library (catalog/motors.toml: " + ", ".join(library())
-        + "): its pull-out curve, rotor inertia and step angle unless given here; empty "
-        "or “none” for no motor",
-        group="Motor and move", kind="text", none_word="none",
+        api="motor_inertia_kg_m2", page="motor_inertia", core="motor_inertia_kg_m2",
+        label="Rotor inertia", help="The motor's own, at the screw; empty for none",
+        group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
     ),
     InputField(
         api="step_angle_deg", page="step_angle", core="step_angle_deg", label="Step angle",
@@ -445,32 +414,45 @@ FIELDS: tuple[InputField, ...] = (
         ),
     ),
     InputField(
-        api="load_direction", page="load_direction", core="load_direction",
-        label="Load direction", help="How the axial load acts on the moving mass",
-        group="Motion and load", kind="choice", default="auto", options=LoadDirection,
-        texts={
-            "auto": "By orientation: a weight when vertical, against the motion when "
-            "horizontal",
-            "opposes": "Against the motion both ways (friction, cutting)",
-            "fixed": "One way, against the up (out) move (a weight, spring or press)",
-        },
+        api="decel_mm_s2", page="decel", core="decel_m_s2", label="Deceleration",
+        help="Linear, to stop at the end of the stroke; empty for the acceleration",
+        group="Motor and move", kind="number", bounds=(0.0, 1e6), dimension="accel",
     ),
     InputField(
-        api="holding_source", page="holding_source", core="holding_source",
-        label="Holding torque is", help="A brake holds with the power off; a stepper's "
-        "holding torque only while it is energised (then the detent torque, or the "
-        "thread, must hold with the power off)",
-        group="Duty and requirements", kind="choice", default="brake", options=HoldingSource,
-        texts={
-            "brake": "A brake's (holds with the power off)",
-            "energised": "The motor's energised holding torque (power on only)",
-        },
+        api="dwell_s", page="dwell", core="dwell_s", label="Dwell",
+        help="Rest after each move, out and back (needs a stroke)", group="Motor and move",
+        kind="number", default=0.0, bounds=(0.0, 1e6), dimension="time",
     ),
     InputField(
-        api="detent_torque_nm", page="detent_torque", core="detent_torque_nm",
-        label="Detent torque", help="The stepper's unpowered detent torque at the screw: "
-        "what holds with the power off; empty when unknown",
-        group="Duty and requirements", kind="number", bounds=(0.0, 1e5), dimension="torque",
+        api="critical_speed_safety_factor", page="critical_speed_safety_factor",
+        core="critical_speed_safety_factor", label="Critical-speed factor",
+        help="Share of the theoretical whirling speed the screw may run at: 0.8 allows "
+        "80 %. A fraction, 1 or below; smaller is safer",
+        group="Safety factors", kind="number", default=0.8, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="buckling_safety_factor", page="buckling_safety_factor",
+        core="buckling_safety_factor", label="Buckling factor",
+        help="Share of the column's critical load (Euler, or Johnson for short screws) and "
+        "of the root's yield strength the screw may carry: 0.5 allows half. A fraction, 1 "
+        "or below; smaller is safer",
+        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="torque_safety_factor", page="torque_safety_factor",
+        core="torque_safety_factor", label="Torque safety factor",
+        help="Multiplier on the computed drive torque before it is compared with the "
+        "motor: 1.5 asks for 50 % reserve. 1 or more; larger is safer",
+        group="Safety factors",
+        kind="number", default=1.0, bounds=(1.0, 10.0),
+    ),
+    InputField(
+        api="self_locking_friction_factor", page="self_locking_friction_factor",
+        core="self_locking_friction_factor", label="Self-locking friction factor",
+        help="Fraction of the static friction trusted to hold a vertical load, 1 or below: "
+        "0.5 matches the seed's rule (lead under diameter / 8); friction falls with "
+        "vibration and lubrication",
+        group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
     ),
     InputField(
         api="brake_safety_factor", page="brake_safety_factor", core="brake_safety_factor",
@@ -480,10 +462,28 @@ FIELDS: tuple[InputField, ...] = (
         group="Safety factors", kind="number", bounds=(1.0, 10.0),
     ),
     InputField(
-        api="nut_length_mm", page="nut_length", core="nut_length_m", label="Nut length",
-        help="Trapezoidal screws: the nut's length, whose engaged turns (length over pitch) "
-        "carry the load; empty for the catalog's (2 x d)",
-        group="Nut and environment", kind="number", bounds=(0.1, 1e4), dimension="length",
+        api="rank_by", page="rank_by", core="rank_by", label="Rank by",
+        help="Order of the passing screws", group="Results", kind="choice",
+        default="torque", options=RankBy,
+        texts={
+            "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
+            "size": "Smallest size", "motor_margin": "Largest motor margin",
+        },
+        catalog_only=True,
+    ),
+    InputField(
+        api="advice", page="advice", core="advice", label="Advice",
+        help="A failed recommendation (e.g. the traverse speed for a lead): a warning (such "
+        "screws always rank after those without one), or reject them",
+        group="Results", kind="choice", default="warn", options=AdvicePolicy,
+        texts={"warn": "Warn and rank last", "rank": "Warn and rank last", "reject": "Reject"},
+        catalog_only=True,
+    ),
+    InputField(
+        api="limit", page="limit", core="limit", label="Number of results",
+        help="How many passing screws to list, 1–100", group="Results",
+        kind="whole number", default=10, bounds=(1, 100),
+        catalog_only=True,
     ),
 )
 # fmt: on

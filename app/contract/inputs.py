@@ -15,6 +15,7 @@ Text numbers (a query string, or a string in JSON) must be plain ASCII decimals
 (``NUMBER_TEXT``): the page parses its form with the same rule, so both accept the same.
 """
 
+import json
 import math
 import re
 from typing import TYPE_CHECKING, Annotated, Any, Literal
@@ -163,23 +164,52 @@ def _point(text: str, number: int) -> list[float]:
     return [float(parts[0]), float(parts[1])]
 
 
+def _json_points(text: str) -> Any:
+    """A curve written as JSON: ``[[rpm, torque], ...]``, or one point ``[rpm, torque]``
+    (a repeated query parameter) as a list of that one point."""
+    try:
+        parsed = json.loads(text)
+    except (ValueError, RecursionError):
+        raise ValueError(f"'{text[:40]}' is not a JSON list of [rpm, torque] pairs") from None
+    if isinstance(parsed, list) and parsed and not any(isinstance(x, list) for x in parsed):
+        return [parsed]
+    return parsed
+
+
+def _text_points(text: str, first: int) -> list[Any]:
+    """The points of one text: JSON, or ``rpm:torque`` items separated by commas, lines or
+    semicolons ('rpm torque' on a line; one 'rpm,torque' pair alone); numbered from
+    ``first`` in the errors."""
+    text = text.strip(ASCII_SPACE)
+    if text.startswith("["):
+        points = _json_points(text)
+        return points if isinstance(points, list) else [points]
+    items = [item.strip(ASCII_SPACE) for item in re.split(r"[,\n;]", text)]
+    items = [item for item in items if item]
+    if len(items) == 2 and all(ASCII_NUMBER.fullmatch(item) for item in items):
+        items = [" ".join(items)]
+    return [_point(item, number) for number, item in enumerate(items, start=first)]
+
+
 def _split_curve(value: Any) -> Any:
-    """A curve given as text (``rpm:torque,rpm:torque`` or lines of 'rpm torque') as a
-    list of pairs (a query parameter arrives as a list of such texts); a JSON list of
-    pairs passes unchanged, each item checked to be a pair of numbers."""
+    """A curve given as text (``rpm:torque,rpm:torque``, lines of 'rpm torque', or JSON
+    ``[[rpm, torque], ...]``) as a list of pairs; a query parameter arrives as a list of
+    such texts, one per occurrence (each one point or several). A JSON list of pairs
+    passes unchanged, each item checked to be a pair of numbers."""
+    if isinstance(value, str):
+        value = [value]
     if isinstance(value, list) and value and all(isinstance(item, str) for item in value):
-        value = ",".join(value)
+        points: list[Any] = []
+        for text in value:
+            points += _text_points(text, len(points) + 1)
+        value = points
     if isinstance(value, list):
         for number, point in enumerate(value, start=1):
             if not isinstance(point, list | tuple) or len(point) != 2:
                 raise ValueError(f"point {number} is not a pair [rpm, torque]")
             if not all(isinstance(x, int | float) and not isinstance(x, bool) for x in point):
                 raise ValueError(f"point {number} is not two numbers [rpm, torque]")
-        return value
-    if not isinstance(value, str):
-        return value
-    items = [item for item in re.split(r"[,\n;]", value) if item.strip(ASCII_SPACE)]
-    return [_point(item, number) for number, item in enumerate(items, start=1)]
+    return value
 
 
 def _curve_points(value: list[tuple[float, float]]) -> list[tuple[float, float]]:

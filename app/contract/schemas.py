@@ -199,6 +199,9 @@ class TorqueOut(BaseModel):
     inertia_mass_nm: Annotated[float, From("inertia_mass_nm", "torque")] = Field(
         description="m a lead / (2 pi eta): the accelerating force through the thread."
     )
+    inertia_motor_nm: Annotated[float, From("inertia_motor_nm", "torque")] = Field(
+        description="J_motor alpha: accelerating the motor's rotor (0 without its inertia)."
+    )
     drag_nm: Annotated[float, From("drag_nm", "torque")]
     drag_range_nm: Annotated[list[float], From(("drag_min_nm", "drag_max_nm"), "torque")]
     load_nm: Annotated[float, From("load_nm", "torque")]
@@ -214,6 +217,11 @@ class TorqueOut(BaseModel):
     )
     rms_nm: Annotated[float | None, From("/quantities.motor_rms_nm", "torque")] = Field(
         default=None, description="RMS motor torque over the cycle; null: no stroke."
+    )
+    peak_motor_nm: Annotated[float, From("/quantities.peak_torque_nm", "torque")] = Field(
+        description="The largest motor torque of any moving segment of either move or of "
+        "starting from rest, rotor included, before the torque safety factor: what the "
+        "drive must give at its peak (the results table's torque when a move is given).",
     )
 
 
@@ -408,6 +416,11 @@ class CandidateOut(BaseModel):
         description="How certain the governing check's limit is: the least certain "
         "provenance of the values it rests on ('user' for the user's own limit)."
     )
+    motor_use: Annotated[float | None, From("motor_use")] = Field(
+        default=None,
+        description="The largest share of the motor used over its checks (drive torque, "
+        "torque curve, RMS torque, speed): 1 - motor margin; null: no motor given.",
+    )
     passed: Annotated[bool, From("passed")] = Field(
         description="True when every limit passes (advice only warns)."
     )
@@ -453,12 +466,12 @@ VIEWS: dict[str, View] = {
         NAMED,
         "axial_load_n rpm efficiency self_locking seed_rule_no_backdrive "
         "max_self_locking_lead_with_margin_mm holding_torque torque critical_speed pv life "
-        "profile segments",
+        "profile segments motor_use",
         VERDICT,
     ),
     "summary": {
-        **whole(NAMED, "rpm efficiency self_locking", VERDICT),
-        "torque": whole("total_nm peak_nm rms_nm"),
+        **whole(NAMED, "rpm efficiency self_locking motor_use", VERDICT),
+        "torque": whole("total_nm peak_nm rms_nm peak_motor_nm"),
         "critical_speed": whole("margin"),
         "life": whole("years"),
     },
@@ -466,9 +479,9 @@ VIEWS: dict[str, View] = {
     "csv": {
         **whole(
             "id series anti_backlash outer_diameter_mm root_diameter_mm lead_mm coated rpm "
-            "efficiency self_locking utilization governing_check fix"
+            "efficiency self_locking utilization governing_check fix motor_use"
         ),
-        "torque": whole("total_nm inertia_nm drag_nm load_nm"),
+        "torque": whole("total_nm inertia_nm drag_nm load_nm peak_motor_nm"),
         "holding_torque": whole("seed_method_nm physics_nm"),
         "critical_speed": whole("allowed_rpm"),
         "life": whole("years"),

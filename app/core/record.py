@@ -84,6 +84,9 @@ GEOMETRY_SOURCES = (
 )
 #: The screening's per-candidate verdicts a record reads as columns.
 VERDICTS = frozenset({"passed", "max_utilization"})
+#: The checks that judge the motor: a candidate's motor use is the largest of their
+#: utilisations (and the ranking by motor margin reads them).
+MOTOR_CHECKS = ("torque", "motor_curve", "motor_rms", "motor_speed")
 #: Positions in a screening, as an index array (NumPy picks with one four times faster
 #: than with a list).
 Positions = NDArray[np.intp]
@@ -355,6 +358,7 @@ class Torque(Section):
     __slots__ = ()
     inertia_screw_nm = Column[float]("inertia_screw_nm")
     inertia_mass_nm = Column[float]("inertia_mass_nm")
+    inertia_motor_nm = Column[float]("inertia_motor_nm")
     inertia_nm = Column[float]("inertia_nm")
     drag_nm = Column[float]("drag_nm")
     load_nm = Column[float]("load_nm")
@@ -508,6 +512,14 @@ class Candidate:
     def utilization(self) -> dict[str, float | None]:
         """Check -> demand / capacity (None for a yes/no check)."""
         return {c.name: c.utilization for c in self.checks}
+
+    @property
+    def motor_use(self) -> float | None:
+        """The largest share of the motor used over the motor checks (``MOTOR_CHECKS``);
+        None when no motor is given (no motor check has a number)."""
+        used = self.utilization
+        shares = [u for name in MOTOR_CHECKS if (u := used.get(name)) is not None]
+        return max(shares) if shares else None
 
     @property
     def fixes(self) -> tuple[Phrase, ...]:

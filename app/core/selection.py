@@ -12,7 +12,7 @@ from app.core.checks import BY_NAME
 from app.core.index import CatalogIndex
 from app.core.model import Application, Change, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
-from app.core.record import Candidate, records
+from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable
@@ -28,8 +28,6 @@ INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
 #: Each input's accepted range in SI, (low, high) by core name: a change outside it is
 #: never offered (the edge passes its field table's bounds; none: any value).
 Ranges = Mapping[str, tuple[float, float]]
-#: The checks that judge the motor, for ranking by its margin.
-MOTOR_CHECKS = ("torque", "motor_curve", "motor_rms", "motor_speed")
 
 
 def motor_use(s: Screening) -> np.ndarray:

@@ -86,10 +86,22 @@ FORMULAS: dict[str, Formula] = {
         "T = m a lead / (2 pi eta): the accelerating force through the thread",
         SEED + " (Torque To Move Load) with the force m a",
     ),
+    "torque.inertia_motor_nm": _entry(
+        torque.inertia_torque,
+        "T = J_motor alpha: the rotor's inertia times the screw's angular acceleration",
+        SEED + " (Inertia Torque T = I alpha) with the rotor's I",
+    ),
     "torque.inertia_nm": _entry(
-        quantities.operating_point, "T = T_inertia_screw + T_inertia_mass", SEED
+        quantities.operating_point,
+        "T = T_inertia_screw + T_inertia_mass + T_inertia_motor",
+        SEED,
     ),
     "torque.peak_nm": _entry(motion.segments, "T = max |T_segment| over the cycle", "move profile"),
+    "torque.peak_motor_nm": _entry(
+        quantities.operating_point,
+        "T = max(|T_segment| over the moving segments of both moves, T_breakaway)",
+        "move profile",
+    ),
     "torque.rms_nm": _entry(profile.rms_torque),
     "profile.peak_speed_mm_s": _entry(profile.peak_speed),
     "profile.accel_time_s": _entry(profile.ramp_time),

@@ -26,6 +26,7 @@ from app.web.screw_form import (
     BY_NAME,
     DEFAULT_MATERIAL,
     MATERIAL_FIELDS,
+    MATERIAL_LABEL,
     MATERIALS,
     OWN_MATERIAL,
     SCREW_FIELDS,
@@ -66,7 +67,9 @@ def _base_context(params: Mapping[str, str]) -> dict[str, Any]:
         "materials": MATERIALS,
         "own_material": OWN_MATERIAL,
         "default_material": DEFAULT_MATERIAL,
+        "material_label": MATERIAL_LABEL,
         "input_rows": input_rows,
+        "screw_label": _label,
     }
 
 
@@ -134,6 +137,8 @@ def _evaluated(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
 
 def _label(name: str) -> str:
     """The form label of a screw or application field; other keys as they are."""
+    if name == "material":
+        return MATERIAL_LABEL
     if name in BY_NAME:
         return BY_NAME[name].label
     return BY_PAGE[name].label if name in BY_PAGE else name

@@ -81,6 +81,8 @@ def _columns(d: Display) -> list[tuple[str, Callable[[CandidateOut], Any]]]:
         (f"torque_inertia [{torque}]", unit("torque", lambda c: c.torque.inertia_nm)),
         (f"torque_drag [{torque}]", unit("torque", lambda c: c.torque.drag_nm)),
         (f"torque_load [{torque}]", unit("torque", lambda c: c.torque.load_nm)),
+        (f"torque_peak [{torque}]", unit("torque", lambda c: c.torque.peak_motor_nm)),
+        ("motor_use", lambda c: c.motor_use),
         ("efficiency", lambda c: c.efficiency),
         ("self_locking", lambda c: c.self_locking),
         (

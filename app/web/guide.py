@@ -44,6 +44,25 @@ COLUMNS = (
         "Motor torque while accelerating: inertia + drag + load, before the torque safety factor.",
     ),
     Column(
+        "peak",
+        "Peak torque",
+        "Given a move: the largest motor torque of any moving segment (accelerating, "
+        "running, braking, either way) or of starting from rest, the rotor's inertia "
+        "included, before the torque safety factor; below it, the torque while accelerating.",
+    ),
+    Column(
+        "rms",
+        "RMS torque",
+        "Given a move: the root-mean-square motor torque over the whole cycle, dwells "
+        "included: what heats the motor, against its continuous (RMS) rating.",
+    ),
+    Column(
+        "motor",
+        "Motor used",
+        "Given a motor: the largest share of it the screw uses (its maximum torque, its "
+        "torque curve, its RMS rating, its top speed); the motor margin is the rest.",
+    ),
+    Column(
         "breakdown",
         "Breakdown",
         "The torque's parts: accelerating the screw and the "
@@ -82,6 +101,14 @@ COLUMNS = (
     Column("governing", "Governing", "The check closest to its limit for this screw."),
 )
 BY_COLUMN = {c.key: c for c in COLUMNS}
+#: The column each ranking orders (``rank_by`` -> column key), marked in the table.
+RANKED_COLUMN = {
+    "torque": "torque",
+    "margin": "governing",
+    "life": "life",
+    "size": "od",
+    "motor_margin": "motor",
+}
 
 PROVENANCE = (
     ("seed", "Printed in the leadscrew maker's catalog the app's data started from."),

@@ -32,7 +32,7 @@ from app.web.advice import check_label, no_pass_advice
 from app.web.catalog_view import KEY_FIELDS, family_sections
 from app.web.export import results_csv
 from app.web.figures import chart_candidates, result_figures
-from app.web.guide import BY_COLUMN
+from app.web.guide import BY_COLUMN, RANKED_COLUMN
 from app.web.screw_form import catalog_screw_query
 from app.web.templating import templates
 
@@ -85,7 +85,13 @@ def form_context(params: Mapping[str, str]) -> dict[str, Any]:
 def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query, run the selection when the form was filled in."""
     context = form_context(params)
-    context.update(rejected_groups=[], check_label=check_label, columns=BY_COLUMN, rank_text="")
+    context.update(
+        rejected_groups=[],
+        check_label=check_label,
+        columns=BY_COLUMN,
+        rank_text="",
+        ranked_column="",
+    )
     units, values = context["units"], context["values"]
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
@@ -98,9 +104,9 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["figures"] = result_figures(result, units, catalog)
         context["charting_passed"] = chart_candidates(result)[1]
         context["rejected_groups"] = rejected_groups(rejected)
-        context["rank_text"] = (
-            BY_PAGE["rank_by"].choice_text(str(inputs.model_dump()["rank_by"])).lower()
-        )
+        rank_by = str(inputs.model_dump()["rank_by"])
+        context["rank_text"] = BY_PAGE["rank_by"].choice_text(rank_by).lower()
+        context["ranked_column"] = RANKED_COLUMN[rank_by]
         if not result.candidates:
             context["advice"] = no_pass_advice(result, units)
     return context

@@ -23,6 +23,8 @@ from app.core.model import ScrewSpec
 
 #: the material choice that takes the user's own modulus, density and yield strength.
 OWN_MATERIAL = "custom"
+#: the form's label of the material choice.
+MATERIAL_LABEL = "Screw material"
 
 
 @dataclass(frozen=True, slots=True)

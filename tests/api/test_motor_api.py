@@ -28,12 +28,39 @@ def test_page_reads_lines_of_rpm_and_torque() -> None:
 
 
 @pytest.mark.parametrize(
+    "query",
+    [
+        "motor_curve=[[0,0.5],[3000,0.2]]",
+        "motor_curve=[0,0.5]&motor_curve=[3000,0.2]",
+        "motor_curve=0:0.5&motor_curve=3000:0.2",
+        "motor_curve=0,0.5&motor_curve=3000,0.2",
+        "motor_curve=0:0.5,1500:0.35&motor_curve=3000:0.2",
+    ],
+    ids=["json", "json-pairs-repeated", "repeated", "comma-pairs-repeated", "mixed"],
+)
+def test_a_get_curve_as_json_or_repeated_parameters_is_the_posted_curve(
+    client: TestClient, query: str
+) -> None:
+    base = "&".join(f"{k}={v:g}" for k, v in BASE.items())
+    got = client.get(f"/api/v1/select?{base}&{query}")
+    assert got.status_code == 200, got.text
+    points = [[0, 0.5], [1500, 0.35], [3000, 0.2]] if "1500" in query else [[0, 0.5], [3000, 0.2]]
+    posted = client.post("/api/v1/select", json={**BASE, "motor_curve": points}).json()
+    assert got.json()["inputs"]["motor_curve"] == points
+    assert got.json()["candidates"] == posted["candidates"]
+
+
+@pytest.mark.parametrize(
     ("curve", "point"),
     [
         ("0:0.5", "2 to 50 points"),
         ("0:0.5,100:-1", "point 2"),
         ("0:0.5,0:0.4", "point 2"),
         (",".join(f"{i}:1" for i in range(51)), "2 to 50 points"),
+        ("[[0,0.5],[3000,NaN]]", "point 2 (3000, nan): rpm and torque must be finite"),
+        ("[[0,true],[3000,0.2]]", "point 1 is not two numbers"),
+        ("[[0,0.5],[3000,0.2]", "is not a JSON list of [rpm, torque] pairs"),
+        ("[" * 1000, "is not a JSON list of [rpm, torque] pairs"),
     ],
 )
 def test_a_bad_curve_is_a_422_naming_the_field_and_point(

@@ -80,6 +80,22 @@ def test_mass_inertia_torque_goes_through_the_efficiency(client: TestClient) -> 
     assert c["torque"]["inertia_mass_nm"] == pytest.approx(0.258, abs=1e-3)
 
 
+def test_the_rotor_inertia_torque_is_its_own_part_of_the_breakdown(client: TestClient) -> None:
+    """ZBX8000-L10 at 5 m/s^2 with a rotor of 82e-7 kg m^2 (a NEMA 23 stepper):
+    alpha = 2 pi a / lead = 2 pi x 5 / 0.01 = 3141.6 rad/s^2, J_motor alpha = 0.02576 N m,
+    inside the inertia torque and the total."""
+    axis = {"load_n": 10, "speed_mm_s": 50, "length_mm": 500, "moving_mass_kg": 20,
+            "accel_mm_s2": 5000}  # fmt: skip
+    bare = evaluate(client, "ZBX8000-L10", **axis)["torque"]
+    c = evaluate(client, "ZBX8000-L10", **axis, motor_inertia_kg_m2=82e-7)["torque"]
+    rotor_nm = 82e-7 * 2 * math.pi * 5 / 0.010
+    assert rotor_nm == pytest.approx(0.02576, abs=1e-5)
+    assert (bare["inertia_motor_nm"], c["inertia_motor_nm"]) == (0.0, pytest.approx(rotor_nm))
+    parts = c["inertia_screw_nm"] + c["inertia_mass_nm"] + c["inertia_motor_nm"]
+    assert c["inertia_nm"] == pytest.approx(parts, rel=1e-12)
+    assert c["total_nm"] - bare["total_nm"] == pytest.approx(rotor_nm, rel=1e-9)
+
+
 # --- 3. vertical axes: a brake, and self-locking only with a margin -------------------------
 
 

@@ -40,19 +40,30 @@ from app.report.service import run_selection
 from app.web.export import results_csv
 
 ROOT = Path(__file__).resolve().parents[2]
-#: page names of today's share links; links already sent out must keep working.
+#: page names of today's share links, in the form's order (the order of thought: what
+#: is moved and how it is loaded first, the motor's inputs together); links already sent
+#: out must keep working, whatever the order of their parameters.
 SHARE_LINK_NAMES = [
-    "load", "lead", "speed", "length", "accel", "moving_mass_kg", "end_fixity",
-    "orientation", "compression", "require_anti_backlash", "coating", "oil_present",
-    "vacuum", "ambient_c", "stroke", "cycles_per_day", "critical_speed_safety_factor",
+    "load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length",
+    "accel", "compression", "end_fixity", "require_anti_backlash", "coating", "family",
+    "nut_material", "nut_length", "oil_present", "vacuum", "ambient_c", "stroke",
+    "cycles_per_day", "required_life_years", "positioning_tolerance", "brake_torque",
+    "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
+    "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
+    "motor_supply", "motor_phase_current", "motor_resistance", "motor_inductance",
+    "motor_holding_torque", "decel", "dwell", "critical_speed_safety_factor",
     "buckling_safety_factor", "torque_safety_factor", "self_locking_friction_factor",
-    "max_torque", "brake_torque", "required_life_years", "positioning_tolerance", "rank_by",
-    "advice", "limit", "family", "nut_material", "decel", "dwell", "motor_curve",
-    "motor_inertia", "motor_rms_torque", "motor", "step_angle", "microsteps",
-    "max_step_rate", "motor_supply", "motor_phase_current", "motor_resistance",
-    "motor_inductance", "motor_holding_torque", "load_direction", "holding_source",
-    "detent_torque", "brake_safety_factor", "nut_length",
+    "brake_safety_factor", "rank_by", "advice", "limit",
 ]  # fmt: skip
+#: the first group, always open: the load and its direction, the moving mass and the
+#: orientation beside the screw's lead, speed and length.
+UP_FRONT = ["load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length"]
+#: every input of the motor, in one group.
+MOTOR_INPUTS = {
+    "motor", "max_torque", "motor_curve", "motor_rms_torque", "motor_inertia", "step_angle",
+    "microsteps", "max_step_rate", "motor_supply", "motor_phase_current",
+    "motor_resistance", "motor_inductance", "motor_holding_torque",
+}  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")
 #: third-party bundles and the SI core are not the project's edge code.
@@ -73,6 +84,13 @@ def test_each_core_attribute_is_mapped_once() -> None:
 
 def test_share_link_names_are_todays() -> None:
     assert [field.page for field in FIELDS] == SHARE_LINK_NAMES
+
+
+def test_the_form_asks_in_the_order_of_thought() -> None:
+    assert [field.page for field in FIELDS if field.group == GROUPS[0]] == UP_FRONT
+    assert {BY_PAGE[name].group for name in MOTOR_INPUTS} == {"Motor and move"}
+    groups = [field.group for field in FIELDS]
+    assert sorted(groups, key=GROUPS.index) == groups  # each group's fields together
 
 
 def test_groups_are_the_forms_and_every_field_has_one() -> None:

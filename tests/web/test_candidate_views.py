@@ -1,7 +1,10 @@
 """The forms of a candidate (``VIEWS`` of ``CandidateOut``) and the numbers the row and
-the summary show besides the breakdown: the nut's material, and the motor's peak and RMS
-torque over the move (null without a stroke)."""
+the summary show besides the breakdown: the nut's material, the motor's peak and RMS
+torque over the move (null without a stroke), the share of the motor used, and the
+column the ranking orders."""
 
+import csv
+import io
 from typing import Any
 
 import pytest
@@ -83,13 +86,114 @@ def test_the_results_table_shows_the_nut_and_the_motor_torque(
     page = BeautifulSoup(client.get("/", params=query).text, "html.parser")
     rows = page.select("tbody.candidate")
     assert rows
+    heads = [a.get_text() for a in page.select("table.candidates thead abbr.col-help")]
+    assert ("Peak torque" in heads and "RMS torque" in heads) == move
+    assert ("Torque" in heads) != move and "Motor used" not in heads
     for row in rows:
         material = catalog.by_id[row["data-id"]].nut_material
         assert row.select_one(".nut-material").get_text() == f"{material} nut"
-        motor = row.select_one(".motor-torque")
-        assert (motor is not None) == move
-        if motor is not None:
-            assert motor.get_text().startswith("motor peak ") and " · RMS " in motor.get_text()
+        assert (row.select_one(".torque-peak") is not None) == move
+        assert (row.select_one(".torque-rms") is not None) == move
+        assert row.select_one(".motor-use") is None
+
+
+#: A move of 300 mm and a motor of 0.4 N m (about 57 oz in), ranked by its margin, at
+#: every lead (ten candidates pass).
+MOTOR_PAGE = {
+    "load": 50,
+    "speed": 200,
+    "length": 500,
+    "stroke": 300,
+    "accel": 2000,
+    "moving_mass_kg": 5,
+    "max_torque": 56.6,
+    "torque_unit": "oz_in",
+    "rank_by": "motor_margin",
+}
+OZ_IN = 0.0070615518142260435  # N m: 4.4482216152605 N x 0.0254 m / 16 (NIST SP 811)
+
+
+def test_the_table_shows_the_cores_peak_rms_and_motor_use_in_the_display_unit(
+    client: TestClient, catalog: Catalog
+) -> None:
+    page = BeautifulSoup(client.get("/", params=MOTOR_PAGE).text, "html.parser")
+    app = ApplicationIn.model_validate(
+        {**MOVE, "max_torque_nm": 56.6 * OZ_IN, "rank_by": "motor_margin"}
+    ).to_core()
+    rows = page.select("tbody.candidate")
+    assert rows
+    used = []
+    for row in rows:
+        record = evaluate(app, catalog.index.row(catalog.index.positions[row["data-id"]]))
+        peak_nm = record.quantities.peak_torque_nm
+        assert record.motion is not None
+        peak = float(row.select_one(".torque-peak").get_text())
+        assert peak == pytest.approx(peak_nm / OZ_IN, rel=1e-3)
+        assert peak_nm >= record.motion.peak_nm - 1e-12  # the segments' peak, rotor and all
+        rms = float(row.select_one(".torque-rms").get_text())
+        assert rms == pytest.approx(record.motion.rms_nm / OZ_IN, rel=1e-3)
+        # the only motor check here is the drive torque: peak x safety factor / the motor's
+        share = peak_nm * app.torque_safety_factor / (56.6 * OZ_IN)
+        cell = row.select_one(".motor-use").get_text()
+        assert cell == f"{share * 100:.0f} %"
+        used.append(share)
+    assert len(used) > 1 and used == sorted(used)
+    ranked = page.select("table.candidates thead th.ranked")
+    assert [th.select_one("abbr").get_text() for th in ranked] == ["Motor used"]
+
+
+@pytest.mark.parametrize(
+    ("rank_by", "heading"),
+    [("torque", "Torque"), ("size", "OD"), ("life", "Life"), ("margin", "Governing")],
+)
+def test_the_ranked_column_is_marked(client: TestClient, rank_by: str, heading: str) -> None:
+    query = {"load": 50, "speed": 200, "length": 500, "rank_by": rank_by}
+    page = BeautifulSoup(client.get("/", params=query).text, "html.parser")
+    ranked = page.select("table.candidates thead th.ranked")
+    assert [th.select_one("abbr").get_text() for th in ranked] == [heading]
+    assert ranked[0].select_one(".rank-mark").get_text() == "ranked"
+
+
+def test_under_a_move_the_torque_ranking_names_the_torque_it_orders(client: TestClient) -> None:
+    """Lowest torque orders by the torque while accelerating, the peak column's second
+    line (warned screws last), and the mark says so."""
+    query = {k: v for k, v in MOTOR_PAGE.items() if k != "rank_by"}
+    page = BeautifulSoup(client.get("/", params=query).text, "html.parser")
+    (ranked,) = page.select("table.candidates thead th.ranked")
+    assert ranked.select_one("abbr").get_text() == "Peak torque"
+    assert ranked.select_one(".rank-mark").get_text() == "ranked by accelerating"
+    # screws with a warning come after those without, each part by the torque
+    order = [
+        (
+            row.select_one("span.mark.warned") is not None,
+            float(row.select_one(".torque-total").text),
+        )
+        for row in page.select("tbody.candidate")
+    ]
+    assert len(order) > 1 and order == sorted(order)
+
+
+def test_the_compact_select_gives_the_peak_torque_and_the_motor_use(
+    client: TestClient, catalog: Catalog
+) -> None:
+    motor_nm = 0.4
+    app = ApplicationIn.model_validate({**MOVE, "max_torque_nm": motor_nm}).to_core()
+    for c in _compact(client, {**MOVE, "max_torque_nm": motor_nm}):
+        record = evaluate(app, catalog.index.row(catalog.index.positions[c["id"]]))
+        assert c["torque"]["peak_motor_nm"] == record.quantities.peak_torque_nm
+        share = record.quantities.peak_torque_nm * app.torque_safety_factor / motor_nm
+        assert c["motor_use"] == pytest.approx(share, rel=1e-12)
+    assert all(c["motor_use"] is None for c in _compact(client, MOVE))
+    exported = client.get("/export.csv", params=MOTOR_PAGE).text
+    rows = list(csv.DictReader(io.StringIO(exported.split("\r\n\r\n", 1)[1])))
+    any_lead = {k: v for k, v in MOVE.items() if k != "lead_mm"}
+    listed = {c["id"]: c for c in _compact(client, {**any_lead, "max_torque_nm": 56.6 * OZ_IN})}
+    passed = [r for r in rows if r["status"] == "passed"]
+    assert [r["id"] for r in passed] == list(listed)
+    for r in passed:
+        assert float(r["motor_use"]) == pytest.approx(listed[r["id"]]["motor_use"], rel=1e-9)
+        peak = listed[r["id"]]["torque"]["peak_motor_nm"]
+        assert float(r["torque_peak [oz in]"]) == pytest.approx(peak / OZ_IN, rel=1e-9)
 
 
 @pytest.mark.parametrize(

@@ -125,6 +125,23 @@ def test_htmx_request_gets_results_and_out_of_band_errors(client: TestClient) ->
     assert bad.headers["HX-Push-Url"] == "false"
 
 
+def test_the_screw_summary_names_each_value_by_its_label(client: TestClient) -> None:
+    page = soup(client.get(f"/custom?{QUERY}&drag_torque_nm=0.01").text)
+    rows = {div.dt.get_text(): div.dd.get_text() for div in page.select("dl.screw-inputs > div")}
+    assert rows == {
+        "Screw material": "steel",
+        "Outer diameter": "10 mm",
+        "Root (minor) diameter": "8 mm",
+        "Lead": "2 mm",
+        "Running friction coefficient": "0.15",
+        "Static friction coefficient": "0.2",
+        "Nut drag torque": "0.01 N m",
+        "Nut PV limit": "3 MPa m/s",
+    }
+    shown = page.select_one("main").get_text(" ")
+    assert not [f.name for f in BY_NAME.values() if f.name in shown]
+
+
 def test_exports_of_the_custom_screw(client: TestClient) -> None:
     rows = list(csv.reader(io.StringIO(client.get(f"/custom/export.csv?{QUERY}").text)))
     assert ["outer_diameter_mm", "10", "mm"] in rows

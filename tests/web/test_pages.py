@@ -296,6 +296,24 @@ def test_advanced_opens_only_for_non_default_values(client: TestClient) -> None:
     assert "tension" in page.select_one("dl.inputs").text.lower()
 
 
+def test_the_moving_mass_orientation_and_load_direction_are_up_front(
+    client: TestClient,
+) -> None:
+    """Asked beside the load, outside Advanced: a vertical 5 kg axis keeps Advanced shut,
+    and every motor input sits in the one motor group."""
+    query = {**AXIS, "moving_mass_kg": "5", "orientation": "vertical", "load_direction": "fixed"}
+    page = soup(client.get("/", params=query))
+    up_front = [w["id"] for w in page.select("fieldset.axis div.field[id^=w-]")]
+    assert up_front[:4] == ["w-load", "w-load_direction", "w-moving_mass_kg", "w-orientation"]
+    assert not page.select("details.advanced #f-moving_mass_kg, details.advanced #f-orientation")
+    assert not page.select("details.advanced[open]")
+    assert page.select_one("#f-orientation option[selected]")["value"] == "vertical"
+    motor = next(
+        fs for fs in page.select("details.advanced fieldset") if fs.legend.text == "Motor and move"
+    )
+    assert motor.select_one("#f-max_torque") and motor.select_one("#f-motor_curve")
+
+
 # detail, rejected, no pass
 
 
@@ -347,6 +365,48 @@ def test_detail_fragment_and_page(client: TestClient) -> None:
         fragment.select_one("div.detail-body")
     )
     assert not full.select("form#selector")
+
+
+def test_detail_breaks_the_inertia_torque_into_screw_mass_and_rotor(client: TestClient) -> None:
+    """ZBX8000-L10 at 2 m/s^2 with a rotor of 82e-7 kg m^2: J_motor alpha =
+    82e-7 x 2 pi x 2 / 0.01 = 0.0103 N m = 1.459 oz in, beside the screw's and the mass's."""
+    move = {"accel": "2000", "moving_mass_kg": "5", "motor_inertia": "82e-7"}
+    params = {**AXIS, **move, "torque_unit": "oz_in", "id": "ZBX8000-L10"}
+    detail = soup(client.get("/detail", params=params, headers=HX))
+    rotor_nm = 82e-7 * 2 * math.pi * 2.0 / 0.010
+    assert float(detail.select_one(".inertia-motor").text) == pytest.approx(
+        rotor_nm / OZ_IN, rel=1e-3
+    )
+    api = client.get(
+        "/api/v1/select",
+        params={
+            **API_AXIS,
+            "accel_mm_s2": 2000,
+            "moving_mass_kg": 5,
+            "motor_inertia_kg_m2": 82e-7,
+            "detail": "full",
+        },
+    ).json()
+    screened = api["candidates"] + api["rejected"]
+    torque = next(c for c in screened if c["id"] == "ZBX8000-L10")["torque"]
+    assert torque["inertia_motor_nm"] == pytest.approx(rotor_nm, rel=1e-9)
+    for name, part in (("screw", "inertia_screw_nm"), ("mass", "inertia_mass_nm")):
+        shown = float(detail.select_one(f".inertia-{name}").text)
+        assert shown == pytest.approx(torque[part] / OZ_IN, rel=1e-3)
+    assert api["formulas"]["torque.inertia_motor_nm"]["formula"].startswith("T = J_motor alpha")
+
+
+def test_detail_at_no_axial_load_says_pv_sets_no_speed_limit(client: TestClient) -> None:
+    """No thrust on the nut: PV is 0 whatever the speed, so the line gives the load the
+    nut allows at this speed and says there is no speed limit (never "nan mm/s")."""
+    api = api_select(client, load_n=0)
+    c = api["candidates"][0]
+    assert c["pv"]["max_speed_mm_s"] is None and c["pv"]["max_load_n"] > 0
+    detail = soup(client.get("/detail", params={**AXIS, "load": "0", "id": c["id"]}, headers=HX))
+    pv = next(div.dd.text for div in detail.select("dl.facts > div") if div.dt.text == "PV")
+    assert "no PV speed limit at this load (no thrust on the nut)" in pv
+    assert f"at most {c['pv']['max_load_n']:.4g} N at this speed" in pv
+    assert "nan" not in detail.text.lower()
 
 
 def test_detail_of_a_rejected_candidate_names_its_failures_and_fix(client: TestClient) -> None:
@@ -572,6 +632,10 @@ def test_csv_export_has_a_row_per_candidate_in_display_units(client: TestClient)
     total = float(passed[0]["torque_total [lb in]"])
     expected = api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617
     assert math.isclose(total, expected, rel_tol=1e-9)  # written to 10 significant figures
+    peak = float(passed[0]["torque_peak [lb in]"])
+    expected_peak = api["candidates"][0]["torque"]["peak_motor_nm"] / 0.112984829027617
+    assert math.isclose(peak, expected_peak, rel_tol=1e-9)
+    assert {r["motor_use"] for r in rows} == {""}  # no motor given
 
 
 def test_csv_cells_cannot_start_a_formula(client: TestClient) -> None:

@@ -1,0 +1,67 @@
+"""The results' layout in Chromium (issue 24): at 1280 px the widest table (a move, a
+motor, its margin and twenty candidates) fits without a horizontal scroll, an open
+detail keeps the page within the viewport, and at 390 px the fixed results bar leaves
+the end of the results uncovered."""
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+#: every optional column: the peak and RMS torque of a move, the share of a motor used.
+WIDEST = (
+    "load=50&speed=200&length=500&stroke=300&accel=2000&moving_mass_kg=5&max_torque=0.5"
+    "&motor_inertia=8e-6&rank_by=motor_margin&limit=20"
+)
+WIDTHS = """() => {
+  const region = document.querySelector('.table-scroll');
+  return {page: document.documentElement.scrollWidth, viewport: innerWidth,
+          table: region.scrollWidth, region: region.clientWidth};
+}"""
+
+
+def open_first_detail(page: Any) -> None:
+    page.locator("tbody.candidate >> nth=0 >> details.detail summary").click()
+    page.wait_for_selector("tbody.candidate >> nth=0 >> dl.facts")
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+def test_the_results_fit_the_viewport_with_a_detail_open(
+    browser: Any, live_server: str, artifacts: Path, width: int
+) -> None:
+    context = browser.new_context(viewport={"width": width, "height": 900})
+    page = context.new_page()
+    page.goto(f"{live_server}/?{WIDEST}")
+    page.wait_for_selector("tbody.candidate .motor-use")
+    closed = page.evaluate(WIDTHS)
+    assert closed["page"] <= closed["viewport"] == width
+    if width == 1280:  # the table itself, not only the page: no column scrolled away
+        assert closed["table"] <= closed["region"]
+    open_first_detail(page)
+    opened = page.evaluate(WIDTHS)
+    assert opened["page"] <= width and opened["table"] <= max(opened["region"], closed["table"])
+    page.screenshot(path=str(artifacts / f"results-detail-open-{width}.png"))
+    context.close()
+
+
+def test_the_phone_results_bar_covers_no_result(
+    browser: Any, live_server: str, artifacts: Path
+) -> None:
+    context = browser.new_context(viewport={"width": 390, "height": 844})
+    page = context.new_page()
+    page.goto(f"{live_server}/?{WIDEST}")
+    page.wait_for_selector("tbody.candidate")
+    open_first_detail(page)
+    page.evaluate("() => window.scrollTo(0, document.documentElement.scrollHeight)")
+    page.wait_for_function(
+        "() => innerHeight + scrollY >= document.documentElement.scrollHeight - 1"
+    )
+    bar = page.locator("#result-bar").bounding_box()
+    end = page.evaluate(
+        "() => Math.max(...[...document.querySelectorAll('#results > *')]"
+        ".map(e => e.getBoundingClientRect().bottom))"
+    )
+    assert bar is not None and bar["y"] + bar["height"] == pytest.approx(844, abs=1)
+    assert end <= bar["y"]
+    page.screenshot(path=str(artifacts / "results-end-bar-390.png"))
+    context.close()
