@@ -524,9 +524,6 @@ def _cut(annotation: Any, view: View, name: str) -> Any:
 #: The compact select's candidate and rejected candidate, and the page's row, as models.
 CandidateSummaryOut = view_model(CandidateOut, VIEWS["summary"], "Summary")
 RejectedSummaryOut = view_model(CandidateOut, VIEWS["rejected"], "Rejected")
-#: What the charts read of a candidate: a results-table row (the ``row`` view) or a
-#: candidate in full.
-CandidateBaseOut = CandidateOut
 
 
 class CountsOut(BaseModel):

@@ -116,9 +116,11 @@ class Quantities(Generic[V]):
     contact_area_m2: V
     pv_max_load_n: V
     pv_max_speed_m_s: V
-    #: The nut's engaged flanks: their sliding speed (the helix at d2; NaN without d2),
-    #: the contact pressure the nut material allows there and the load that pressure
-    #: carries over the engaged flank area (NaN: the nut gives no rating).
+    #: The nut's engaged flanks: their area (L / P) pi d2 H1 (NaN without a thread pitch),
+    #: their sliding speed (the helix at d2; NaN without d2), the contact pressure the nut
+    #: material allows there and the load that pressure carries over the engaged flank
+    #: area (NaN: the nut gives no rating).
+    flank_area_m2: V
     sliding_speed_m_s: V
     nut_allowed_pressure_pa: V
     nut_allowed_load_n: V
@@ -178,10 +180,6 @@ class Quantities(Generic[V]):
     #: the nut length whose engaged turns carry the load: the user's, else the catalog's
     #: (NaN without a thread pitch) [m]
     nut_length_m: V
-
-    def row(self, i: int) -> "Quantities[float]":
-        """The numbers of the candidate at ``i`` as floats (NaN: no such limit)."""
-        return Quantities(*(float(getattr(self, name)[i]) for name in NAMES))
 
     def at(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i``, each read as a float when it is read:
@@ -331,21 +329,24 @@ def _flanks(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
     allowed = bearing.allowable_pressure(
         _table_pressures(t, speed), t.max_pressure_pa, t.nut_pv_limit_pa_m_s, speed
     )
+    area = _flank_area(app, t)
     return {
+        "flank_area_m2": area,
         "sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
-        "nut_allowed_load_n": allowed * _flank_area(app, t),
+        "nut_allowed_load_n": allowed * area,
         "nut_length_m": np.where(np.isnan(t.pitch_m), np.nan, _nut_length(app, t)),
     }
 
 
-def _wear(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+def _wear(
+    app: Application, t: CandidateTable, force_n: float, flank_area_m2: Array
+) -> dict[str, Any]:
     """Nut travel until its flanks have worn the allowed depth (Archard's law at the
     running thrust): over the engaged flanks and flank height of a standard thread, else
     over the seed's three threads and thread depth."""
-    flank_area = _flank_area(app, t)
-    flanks = ~np.isnan(flank_area)
-    area = np.where(flanks, flank_area, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
+    flanks = ~np.isnan(flank_area_m2)
+    area = np.where(flanks, flank_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
     helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
     with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
@@ -449,9 +450,9 @@ def _values(
         **torques,
         **_column_limits(app, t, peak_n),
         **_nut(app, t, peak_n, rpm),
-        **_flanks(app, t, rpm),
+        **(flanks := _flanks(app, t, rpm)),
         **_duty(app, t),
-        **_wear(app, t, force_n),
+        **_wear(app, t, force_n, flanks["flank_area_m2"]),
         **_heat(app, t, force_n),
         **(holding := _holding(app, t, motion.steady_load(app))),
         **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),

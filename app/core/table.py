@@ -14,7 +14,7 @@ from types import MappingProxyType
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.formulas import bearing, efficiency, geometry, limits, profile
+from app.core.formulas import efficiency, geometry, limits, profile
 from app.core.model import ScrewSpec
 
 Array = NDArray[np.float64]
@@ -41,17 +41,12 @@ def _bands(screws: Sequence[ScrewSpec], lead_m: Array) -> tuple[Array, Mask]:
 
 def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]:
     """Thread and nut-rating columns (NaN where a family gives none): pitch, d2, H1, nut
-    length, the polymer limits, the engaged flank area (L / P) pi d2 H1 and the helix
-    of one turn at d2."""
+    length, the polymer limits, the wear rating and the helix of one turn at d2."""
     names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
     names += ("max_pressure_pa", "nut_pv_limit_pa_m_s", "max_sliding_speed_m_s")
     names += ("wear_rate_m2_n", "allowed_wear_fraction")
     out = {name: column(list(map(attrgetter(name), screws))) for name in names}
     d2 = out["flank_pitch_diameter_m"]
-    area = bearing.engaged_flank_area(
-        out["nut_length_m"], out["pitch_m"], d2, out["flank_height_m"]
-    )
-    out["bearing_area_m2"] = np.asarray(area, dtype=np.float64)
     out["flank_helix_travel_m"] = np.asarray(geometry.helix_travel(lead_m, d2), dtype=np.float64)
     return out
 
@@ -178,7 +173,6 @@ class CandidateTable:
     max_sliding_speed_m_s: Array
     wear_rate_m2_n: Array
     allowed_wear_fraction: Array
-    bearing_area_m2: Array
     flank_helix_travel_m: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``

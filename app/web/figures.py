@@ -9,7 +9,7 @@ from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 from app.catalog import Catalog
-from app.contract.schemas import CandidateBaseOut, PageSelectionOut, SelectOut
+from app.contract.schemas import CandidateOut, PageSelectionOut, SelectOut
 from app.contract.units import Display, api_value, si_to_api, sig
 from app.core.formulas import critical_speed, pv
 from app.core.index import size_of
@@ -41,7 +41,7 @@ def _span(centre: float, factor: float) -> list[float]:
 
 def chart_candidates(
     result: SelectOut | PageSelectionOut,
-) -> tuple[Sequence[CandidateBaseOut], bool]:
+) -> tuple[Sequence[CandidateOut], bool]:
     """Candidates to chart: the passing ones, else the nearest rejected. (list, passing?)"""
     if result.candidates:
         return result.candidates, True
@@ -49,11 +49,11 @@ def chart_candidates(
 
 
 def by_curve(
-    candidates: Sequence[CandidateBaseOut], key: Callable[[CandidateBaseOut], float | None]
-) -> list[list[CandidateBaseOut]]:
+    candidates: Sequence[CandidateOut], key: Callable[[CandidateOut], float | None]
+) -> list[list[CandidateOut]]:
     """The first TOP distinct curves among ``candidates``, each with the screws it holds:
     screws of one size and nut share a curve, and draw it once under all their ids."""
-    groups: dict[float, list[CandidateBaseOut]] = {}
+    groups: dict[float, list[CandidateOut]] = {}
     for c in candidates:
         value = key(c)
         if value is None:
@@ -64,7 +64,7 @@ def by_curve(
     return list(groups.values())
 
 
-def curve_name(group: Sequence[CandidateBaseOut]) -> str:
+def curve_name(group: Sequence[CandidateOut]) -> str:
     """Legend text of a shared curve: the series, then each screw's id after it.
 
     The ids are kept whole when they do not start with the series.
@@ -78,10 +78,10 @@ def curve_name(group: Sequence[CandidateBaseOut]) -> str:
     )
 
 
-def _operating_points(groups: list[list[CandidateBaseOut]], x: float, d: Display) -> dict[str, Any]:
+def _operating_points(groups: list[list[CandidateOut]], x: float, d: Display) -> dict[str, Any]:
     """One marker per distinct operating speed (screws of one lead share one), coloured as
     its curve, with each screw's margin in the hover text."""
-    points: dict[tuple[int, float], list[CandidateBaseOut]] = {}
+    points: dict[tuple[int, float], list[CandidateOut]] = {}
     for index, group in enumerate(groups):
         for c in group:
             points.setdefault((index, _round(c.rpm)), []).append(c)
@@ -103,7 +103,7 @@ def _operating_points(groups: list[list[CandidateBaseOut]], x: float, d: Display
 
 
 def critical_speed_figure(
-    candidates: Sequence[CandidateBaseOut], length_mm: float, d: Display
+    candidates: Sequence[CandidateOut], length_mm: float, d: Display
 ) -> dict[str, Any]:
     """Allowed speed vs unsupported length (log-log), one line per distinct size, with the
     operating points and their margins.
@@ -156,7 +156,7 @@ def critical_speed_figure(
 
 
 def pv_figure(
-    candidates: Sequence[CandidateBaseOut], speed_mm_s: float, load_n: float, d: Display
+    candidates: Sequence[CandidateOut], speed_mm_s: float, load_n: float, d: Display
 ) -> dict[str, Any]:
     """PV limit of each nut as the largest load vs linear speed (log-log), one line per
     distinct limit, and the operating point.
@@ -213,7 +213,7 @@ def pv_figure(
 
 
 def torque_figure(
-    candidates: Sequence[CandidateBaseOut], max_torque_nm: float | None, d: Display
+    candidates: Sequence[CandidateOut], max_torque_nm: float | None, d: Display
 ) -> dict[str, Any]:
     """Stacked bars of the running torque per candidate: inertia + drag + load.
 
@@ -357,7 +357,7 @@ def _sweep_annotations(leads: list[float], locking: float, chosen: float) -> lis
     return notes
 
 
-def lead_sweep_figure(sweep: list[LeadPoint], top: CandidateBaseOut, d: Display) -> dict[str, Any]:
+def lead_sweep_figure(sweep: list[LeadPoint], top: CandidateOut, d: Display) -> dict[str, Any]:
     """Torque, speed against the critical speed and PV use across the leads of one size:
     the trade-off that picks the lead. Torque on the left axis, the two shares of their
     limits (per cent) on the right; the self-locking band (with the friction margin)

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from app.catalog import Catalog
-from app.contract.schemas import CandidateBaseOut
+from app.contract.schemas import CandidateOut
 from app.contract.units import Display, from_si
 from app.core.checks.wear_life import life_band
 from app.core.model import Application
@@ -41,7 +41,7 @@ def _traces(
 
 
 def life_figure(
-    candidates: Sequence[CandidateBaseOut], app: Application, catalog: Catalog, d: Display
+    candidates: Sequence[CandidateOut], app: Application, catalog: Catalog, d: Display
 ) -> dict[str, Any] | None:
     """Life against thrust for the top wear-rated candidates; None when none is rated."""
     data: list[dict[str, Any]] = []

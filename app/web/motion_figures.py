@@ -5,7 +5,7 @@ one cycle. Numbers come from the core's segments; nothing is recomputed here."""
 from collections.abc import Sequence
 from typing import Any
 
-from app.contract.schemas import CandidateBaseOut, SegmentOut
+from app.contract.schemas import CandidateOut, SegmentOut
 from app.contract.units import Display
 from app.web.chart_style import PALETTE, axis, layout
 
@@ -16,7 +16,7 @@ REVERSED = ("down", "back")
 
 
 def motor_figure(
-    candidates: Sequence[CandidateBaseOut],
+    candidates: Sequence[CandidateOut],
     curve: tuple[tuple[float, float], ...],
     safety_factor: float,
     d: Display,
@@ -72,7 +72,7 @@ def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float],
     return times, speeds, torques
 
 
-def move_figure(top: CandidateBaseOut, d: Display) -> dict[str, Any]:
+def move_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
     """The top candidate's screw speed and motor torque over one cycle (out and back, or
     up and down, with the dwells): speed on the left axis, torque steps on the right."""
     times, speeds, torques = _trace_points(top.segments or [])

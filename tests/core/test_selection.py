@@ -277,13 +277,13 @@ def test_joint_screening_equals_screening_candidates_and_variants_apart(
 
 
 def test_one_candidates_numbers_equal_those_read_for_many(catalog: Catalog) -> None:
-    """``Quantities.row`` (the numbers a compact fix is written from) equals the same
-    candidate's entry in ``Quantities.rows`` (what the full form reads), NaN included."""
+    """``Quantities.at`` (the numbers a check's sentence and fix are written from) equals
+    the same candidate's entry in the arrays, NaN included."""
     app = Application(load_n=300.0, speed_m_s=0.1, length_m=0.8, lead_m=0.01)
     q = screen(app, catalog.index).quantities
     picks = [0, 3, len(q.rpm) - 1]
-    for i, many in zip(picks, q.rows(picks), strict=True):
-        one = [getattr(q.row(i), name) for name in NAMES]
+    for i in picks:
+        one = [getattr(q.at(i), name) for name in NAMES]
         assert all(type(v) is float for v in one)
-        expected = [getattr(many, name) for name in NAMES]
+        expected = [getattr(q, name)[i] for name in NAMES]
         assert np.array_equal(np.array(one), np.array(expected), equal_nan=True)

@@ -7,7 +7,7 @@ started together in one event loop, never raced against a clock.
 import asyncio
 import contextlib
 import threading
-from collections.abc import Awaitable, Callable
+from collections.abc import Awaitable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
@@ -17,43 +17,9 @@ from app.api import routes
 from app.main import create_app
 from app.server.overload import OverloadMiddleware, request_cost
 from app.server.settings import Settings
+from tests.server.asgi import asgi_get, scope
 
-Message = dict[str, Any]
 SELECT = b"load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
-
-
-def _scope(path: str, query: bytes = b"") -> dict[str, Any]:
-    return {
-        "type": "http",
-        "asgi": {"version": "3.0"},
-        "http_version": "1.1",
-        "method": "GET",
-        "scheme": "http",
-        "path": path,
-        "raw_path": path.encode(),
-        "query_string": query,
-        "root_path": "",
-        "headers": [(b"host", b"testserver")],
-        "client": ("127.0.0.1", 1),
-        "server": ("testserver", 80),
-        "state": {},
-    }
-
-
-async def _call(
-    app: Callable[..., Awaitable[None]], path: str, query: bytes = b""
-) -> tuple[int, dict[str, str]]:
-    """One GET into an ASGI app: (status, headers)."""
-    sent: list[Message] = []
-
-    async def receive() -> Message:
-        return {"type": "http.request", "body": b"", "more_body": False}
-
-    async def send(message: Message) -> None:
-        sent.append(message)
-
-    await app(_scope(path, query), receive, send)
-    return sent[0]["status"], {k.decode(): v.decode() for k, v in sent[0]["headers"]}
 
 
 def _run(coroutine: Awaitable[Any]) -> Any:
@@ -82,15 +48,15 @@ async def _held_scenario() -> dict[str, Any]:
     shedder = OverloadMiddleware(
         held, max_in_flight=3, retry_after_s=2, exempt_paths=frozenset({"/api/v1/health"})
     )
-    waiting = [asyncio.create_task(_call(shedder, "/slow")) for _ in range(3)]
+    waiting = [asyncio.create_task(asgi_get(shedder, "/slow")) for _ in range(3)]
     while held.holding < 3:
         await asyncio.sleep(0)
-    over = await _call(shedder, "/slow")
-    health = await _call(shedder, "/api/v1/health")
+    over = await asgi_get(shedder, "/slow")
+    health = await asgi_get(shedder, "/api/v1/health")
     in_flight_while_held = shedder.in_flight
     held.release.set()
     served = await asyncio.gather(*waiting)
-    after = await _call(shedder, "/slow")
+    after = await asgi_get(shedder, "/slow")
     return {
         "over": over,
         "health": health,
@@ -122,7 +88,7 @@ async def _failing_scenario() -> tuple[int, int]:
     shedder = OverloadMiddleware(broken, max_in_flight=1, retry_after_s=1, exempt_paths=frozenset())
     for _ in range(3):
         with contextlib.suppress(RuntimeError):
-            await _call(shedder, "/x")
+            await asgi_get(shedder, "/x")
     return shedder.in_flight, shedder.shed
 
 
@@ -140,7 +106,7 @@ async def _burst_without_awaits() -> list[tuple[int, dict[str, str]]]:
     shedder = OverloadMiddleware(
         _never_waits, max_in_flight=2, retry_after_s=1, exempt_paths=frozenset()
     )
-    return await asyncio.gather(*(_call(shedder, "/x") for _ in range(5)))
+    return await asyncio.gather(*(asgi_get(shedder, "/x") for _ in range(5)))
 
 
 def test_requests_waiting_in_the_loop_count_even_if_the_route_never_awaits() -> None:
@@ -152,8 +118,8 @@ def test_requests_waiting_in_the_loop_count_even_if_the_route_never_awaits() -> 
 
 async def _burst(limit: int, requests: int) -> list[tuple[int, dict[str, str]]]:
     app = create_app(Settings(max_requests_in_flight=limit, response_cache_bytes=0))
-    calls = [_call(app, "/api/v1/select", SELECT) for _ in range(requests)]
-    calls.append(_call(app, "/api/v1/health"))
+    calls = [asgi_get(app, "/api/v1/select", SELECT) for _ in range(requests)]
+    calls.append(asgi_get(app, "/api/v1/health"))
     return await asyncio.gather(*calls)
 
 
@@ -204,12 +170,12 @@ FULL = SELECT + b"&detail=full&limit=100"
     ],
 )
 def test_a_request_costs_by_the_work_it_asks_for(path: str, query: bytes, cost: int) -> None:
-    assert request_cost(_scope(path, query)) == cost
+    assert request_cost(scope(path, query)) == cost
 
 
 async def _full_burst() -> list[tuple[int, dict[str, str]]]:
     app = create_app(Settings(max_requests_in_flight=32, response_cache_bytes=0))
-    return await asyncio.gather(*(_call(app, "/api/v1/select", FULL) for _ in range(4)))
+    return await asyncio.gather(*(asgi_get(app, "/api/v1/select", FULL) for _ in range(4)))
 
 
 def test_costly_requests_are_shed_by_their_cost() -> None:
@@ -224,7 +190,7 @@ async def _health_beside_full_forms(release: threading.Event) -> list[str]:
     finished: list[str] = []
 
     async def call(name: str, path: str, query: bytes = b"") -> None:
-        await _call(app, path, query)
+        await asgi_get(app, path, query)
         finished.append(name)
 
     queries = [FULL.replace(b"load_n=100", b"load_n=%d" % (101 + i)) for i in range(2)]

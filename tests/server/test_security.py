@@ -31,6 +31,7 @@ from app.contract.schemas import ApplicationIn, CustomScrewIn
 from app.main import create_app
 from app.server.settings import Settings
 from deploy.local import free_port
+from tests.server.asgi import asgi_get
 
 ROOT = Path(__file__).resolve().parents[2]
 PAYLOADS = ["<script>alert(1)</script>", '"><img src=x onerror=alert(1)>', "javascript:alert(1)"]
@@ -376,36 +377,6 @@ def test_oversized_bodies_get_413(client: TestClient, path: str, make_body: Any)
     assert client.get("/api/v1/health").status_code == 200
 
 
-async def _asgi_get(app: FastAPI, path: str, query: bytes) -> tuple[int, dict[str, str]]:
-    """One GET straight into the ASGI app: httpx refuses URLs over 64 KB."""
-    scope = {
-        "type": "http",
-        "asgi": {"version": "3.0"},
-        "http_version": "1.1",
-        "method": "GET",
-        "scheme": "http",
-        "path": path,
-        "raw_path": path.encode(),
-        "query_string": query,
-        "root_path": "",
-        "headers": [(b"host", b"testserver")],
-        "client": ("127.0.0.1", 1),
-        "server": ("testserver", 80),
-        "state": {},
-    }
-    sent: list[dict[str, Any]] = []
-
-    async def receive() -> dict[str, Any]:
-        return {"type": "http.request", "body": b"", "more_body": False}
-
-    async def send(message: dict[str, Any]) -> None:
-        sent.append(message)
-
-    await app(scope, receive, send)
-    start = sent[0]
-    return start["status"], {k.decode(): v.decode() for k, v in start["headers"]}
-
-
 QUERIES: dict[str, tuple[str, bytes]] = {
     "100KB-api": ("/api/v1/select", b"load_n=" + b"1" * 100_000),
     "100KB-page": ("/", b"load=" + b"1" * 100_000),
@@ -422,7 +393,7 @@ def test_oversized_queries_get_414(
     # on a thread of its own: Playwright's sync API (browser tests earlier in the same
     # session) keeps an event loop running on the main thread
     with ThreadPoolExecutor(max_workers=1) as pool:
-        status, headers = pool.submit(asyncio.run, _asgi_get(app, path, query)).result()
+        status, headers = pool.submit(asyncio.run, asgi_get(app, path, query)).result()
     assert status == 414
     assert headers["content-type"] == "application/json"
     assert "frame-ancestors 'none'" in headers["content-security-policy"]

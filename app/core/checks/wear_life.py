@@ -62,13 +62,13 @@ class WearLife(Check):
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        flanks = ~np.isnan(t.bearing_area_m2)
+        flanks = ~np.isnan(q.flank_area_m2)
         return {
             "Y_req": app.required_life_years,
             "f_w": t.allowed_wear_fraction,
             "H": np.where(flanks, t.flank_height_m, t.thread_depth_m),
             "k": t.wear_rate_m2_n,
-            "p": q.force_n / np.where(flanks, t.bearing_area_m2, q.contact_area_m2),
+            "p": q.force_n / np.where(flanks, q.flank_area_m2, q.contact_area_m2),
             "helix": np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m),
             "lead": t.lead_m,
             "stroke": app.stroke_m,
