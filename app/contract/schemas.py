@@ -33,6 +33,8 @@ from app.contract.source import (
     degrees,
     joined,
     million_cm,
+    text as phrase_text,
+    texts as phrase_texts,
 )
 from app.core.model import ProvenanceKind
 
@@ -329,6 +331,42 @@ class OutgassingOut(BaseModel):
     weight_loss_percent: Annotated[float, From("1")]
 
 
+class RestOut(BaseModel):
+    field: Annotated[str, From("field")] = Field(description="The catalog key.")
+    label: Annotated[str, From("label")] = Field(description="The value in words.")
+    kind: Annotated[str, From("kind")] = Field(
+        description="Its provenance ('assumed'), or 'assumed range' for a ranged value."
+    )
+    hinges: Annotated[bool, From("hinges")] = Field(
+        description="The pass fails at one end of this value's range."
+    )
+
+
+class VerdictOut(BaseModel):
+    """Why this screw: what governs it, what that rests on, what to watch."""
+
+    governs: Annotated[str | None, From("governs")] = Field(
+        description="The governing check: the rejecting check closest to its limit."
+    )
+    governs_label: Annotated[str, From("governs_label")]
+    utilization: Annotated[float | None, From("utilization")] = Field(
+        description="The governing check's demand / capacity; null for a yes/no check."
+    )
+    margin: Annotated[float | None, From("margin")] = Field(
+        description="1 - utilization: the share of the governing limit left."
+    )
+    rests_on: Annotated[list[RestOut], From("rests_on")] = Field(
+        description="Assumed catalog values the governing check reads, and the ranged "
+        "values the pass hinges on."
+    )
+    watch: Annotated[list[str], From("watch", via=phrase_texts)] = Field(
+        description="Warnings, the next-closest limit, power-off holding, a marginal pass."
+    )
+    text: Annotated[str, From("text", via=phrase_text)] = Field(
+        description="All of it in one or two sentences."
+    )
+
+
 class CandidateOut(BaseModel):
     """One candidate: every number, every check with its message, formula and fix, and
     the provenance of the catalog values it uses. Each field says where it comes from in
@@ -446,6 +484,9 @@ class CandidateOut(BaseModel):
     provenance: Annotated[dict[str, ProvenanceOut], From("provenance")] = Field(
         description="Catalog field -> provenance, for the fields this candidate's numbers use."
     )
+    verdict: Annotated[VerdictOut, From("verdict")] = Field(
+        description="Why this screw, in short: governs, margin, rests on, watch."
+    )
 
 
 #: A view of a model: field name -> True (the whole field) or the view of a nested model.
@@ -459,7 +500,10 @@ def whole(*groups: str) -> dict[str, Any]:
 
 #: What names a candidate, and its verdict: in the row and the summary alike.
 NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
-VERDICT = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
+VERDICT = (
+    "utilization governing_check governing_limit_provenance passed robust hinges_on warned "
+    "verdict"
+)
 #: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
 VIEWS: dict[str, View] = {
     "row": whole(
@@ -632,6 +676,15 @@ SelectSummaryOut = create_model(
         Field(description="The formulas table (GET), the same for every query."),
     ),
 )
+
+
+class CompareOut(BaseModel):
+    """2 to 4 catalog screws side by side for one application, each in full."""
+
+    inputs: ApplicationIn
+    candidates: list[CandidateOut]
+    catalog_version: str
+    share_url: str = Field(description="The compare page of the same inputs and ids.")
 
 
 class EvaluateOut(BaseModel):
