@@ -582,13 +582,36 @@ class ChangeOut(BaseModel):
     admits: str = Field(description="The candidate the change admits.")
 
 
+class RemedyOut(BaseModel):
+    inputs: dict[str, float | str] = Field(
+        description="API input -> value (end_fixity: its choice), 5 % past each limit."
+    )
+    passing: int = Field(description="Candidates that pass with the change made.")
+    utilization: float = Field(
+        description="The lowest governing utilisation among them: at most 1 / 1.05."
+    )
+
+
 class SummaryOut(BaseModel):
     message: str
     most_excluding_check: str | None
     best_rejected_id: str | None
-    input_change: dict[str, float]
+    input_change: dict[str, float] = Field(
+        description="The inputs at which the nearest candidate's failed checks reach "
+        "their limits exactly; remedies apply a margin."
+    )
     changes: list[ChangeOut] = Field(
         description="Feasible input changes, each admitting a near candidate (one click)."
+    )
+    remedies: list[RemedyOut] = Field(
+        default_factory=list,
+        description="When nothing passes: changes (one input or several, or the mounting) "
+        "each verified by selecting again with it made, a candidate then passing with a "
+        "5 % margin on its governing check.",
+    )
+    impossible: str | None = Field(
+        default=None,
+        description="When nothing passes and no remedy is found: why no leadscrew can do it.",
     )
 
 

@@ -10,9 +10,10 @@ import numpy as np
 
 from app.core.checks import BY_NAME
 from app.core.index import CatalogIndex
-from app.core.model import Application, Change, ScrewSpec, Summary
+from app.core.model import Application, Change, Remedy, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
 from app.core.record import MOTOR_CHECKS, Candidate, records
+from app.core.remedy import impossible, remedies
 from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable
@@ -25,6 +26,8 @@ INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
     "length_m": ("length", "length"),
     "accel_m_s2": ("acceleration", "accel"),
 }
+#: The nearest rejected candidates whose input changes the remedies start from.
+REMEDY_FROM = 8
 #: Each input's accepted range in SI, (low, high) by core name: a change outside it is
 #: never offered (the edge passes its field table's bounds; none: any value).
 Ranges = Mapping[str, tuple[float, float]]
@@ -161,7 +164,7 @@ def select(
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
         summary=summarize(
-            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}
+            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}, s
         ),
         screening=s,
         ranked=tuple(ranked),
@@ -254,6 +257,7 @@ def summarize(
     nearest: Sequence[Candidate],
     by_check: Counter[str],
     ranges: Ranges,
+    screening: Screening | None = None,
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix and the
     feasible changes of the application (within ``ranges``; when the nearest screw's
@@ -284,6 +288,32 @@ def summarize(
         parts.append(
             Phrase("Or change the application: {how}.", {"how": describe_change(app, change)})
         )
+    found, why = _remedies(app, screening, nearest, worst, label, ranges)
     return Summary(
-        worst, worst_count, best.screw.id, change, join(parts), feasible_changes(nearest, ranges)
+        worst,
+        worst_count,
+        best.screw.id,
+        change,
+        join(parts),
+        feasible_changes(nearest, ranges),
+        found,
+        why,
     )
+
+
+def _remedies(
+    app: Application,
+    sc: Screening | None,
+    nearest: Sequence[Candidate],
+    worst: str | None,
+    label: str,
+    ranges: Ranges,
+) -> tuple[tuple[Remedy, ...], Phrase | None]:
+    """The verified remedies from the nearest candidates' input changes, or (none found)
+    why no leadscrew can do it; nothing without the screening to verify against."""
+    if sc is None:
+        return (), None
+    targets = [change for c in nearest[:REMEDY_FROM] if (change := input_change(c))]
+    failed = {k.name for c in nearest[:REMEDY_FROM] for k in c.failed_checks}
+    found = remedies(app, sc, targets, failed, ranges)
+    return found, None if found else impossible(worst, label)
