@@ -46,7 +46,7 @@ def best_columns(values: Sequence[float | None], better: Better) -> frozenset[in
     top = pick(v for _, v in finite)
     if all(v == top for _, v in finite):
         return frozenset()
-    return frozenset(i for i, v in finite if math.isclose(v, top, rel_tol=1e-9))
+    return frozenset(i for i, v in finite if v == top)
 
 
 def _row(
