@@ -33,7 +33,11 @@ from app.contract.source import (
     degrees,
     joined,
     million_cm,
+)
+from app.contract.source import (
     text as phrase_text,
+)
+from app.contract.source import (
     texts as phrase_texts,
 )
 from app.core.model import ProvenanceKind
@@ -501,8 +505,7 @@ def whole(*groups: str) -> dict[str, Any]:
 #: What names a candidate, and its verdict: in the row and the summary alike.
 NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
 VERDICT = (
-    "utilization governing_check governing_limit_provenance passed robust hinges_on warned "
-    "verdict"
+    "utilization governing_check governing_limit_provenance passed robust hinges_on warned verdict"
 )
 #: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
 VIEWS: dict[str, View] = {

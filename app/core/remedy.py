@@ -44,8 +44,7 @@ WHY: Mapping[str, str] = {
     "rolling contact has no PV limit",
     "bearing_pressure": "no nut carries this thrust at its contact pressure: consider a "
     "longer nut or a ball screw",
-    "max_sliding_speed": "no nut slides this fast: consider a longer lead, a ball screw or "
-    "a belt",
+    "max_sliding_speed": "no nut slides this fast: consider a longer lead, a ball screw or a belt",
     "wear_life": "no nut lasts this duty: consider a ball screw",
     "torque": "the motor is too small for every screw: a larger motor or a gearbox",
     "motor_curve": "the motor's curve is too low for every screw: a larger motor or a gearbox",
@@ -62,8 +61,7 @@ WHY: Mapping[str, str] = {
     "back_driving": "every screw back-drives under this load: add a brake (its torque as "
     "an input) or a self-locking worm stage",
     "holding": "no brake torque given holds this load on any screw: a larger brake",
-    "holding_power_off": "the motor's detent torque holds this load on no screw: add a "
-    "brake",
+    "holding_power_off": "the motor's detent torque holds this load on no screw: add a brake",
     "anti_backlash": "no anti-backlash nut suits this axis: a preloaded ball screw",
     "nut_heat": "every nut runs too hot at this duty: a ball screw, or a lower duty",
 }
@@ -87,7 +85,7 @@ def part_way(current: float, target: float, share: float) -> float:
     a speed act as powers, so halving the ratio halves the step in the exponent)."""
     if current <= 0.0 or target <= 0.0:
         return current + share * (target - current)
-    return current * (target / current) ** share
+    return float(current * (target / current) ** share)
 
 
 def within(change: Inputs, ranges: Mapping[str, tuple[float, float]]) -> bool:

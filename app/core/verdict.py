@@ -141,12 +141,12 @@ def rests_on(
     return tuple(found.values())
 
 
-def runner_up(checks: Sequence["CheckResult"], governing: "CheckResult | None") -> "CheckResult | None":
+def runner_up(
+    checks: Sequence["CheckResult"], governing: "CheckResult | None"
+) -> "CheckResult | None":
     """The numeric limit closest to its own, after the governing check."""
     others = [
-        c
-        for c in checks
-        if c is not governing and c.kind == "limit" and c.utilization is not None
+        c for c in checks if c is not governing and c.kind == "limit" and c.utilization is not None
     ]
     return max(others, key=lambda c: c.utilization or 0.0, default=None)
 

@@ -105,7 +105,9 @@ def counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]
                 )
                 for r in sel.summary.remedies
             ],
-            impossible=None if sel.summary.impossible is None else render(sel.summary.impossible, units),
+            impossible=None
+            if sel.summary.impossible is None
+            else render(sel.summary.impossible, units),
         ),
     }
 

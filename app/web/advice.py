@@ -10,6 +10,7 @@ reaches the reader.
 """
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -84,7 +85,7 @@ def round_towards(value: float, lower: bool, digits: int = PROPOSAL_DIGITS) -> f
     return float(f"{steps * scale:.{digits}g}")
 
 
-def _link(inputs: ApplicationIn, changes: dict[str, float | str], units: dict[str, str]) -> str:
+def _link(inputs: ApplicationIn, changes: Mapping[str, float | str], units: dict[str, str]) -> str:
     """The page link of ``inputs`` with ``changes`` (API names, API units) made."""
     changed = ApplicationIn.model_validate({**inputs.model_dump(), **changes})
     return "/?" + share_query(changed, units)

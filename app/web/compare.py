@@ -68,6 +68,8 @@ def _life_years(c: CandidateOut) -> float | None:
 def _holding(c: CandidateOut, d: Display) -> str:
     if c.self_locking_with_margin:
         return "self-locking"
+    if c.holding_torque.brake_nm == 0.0:
+        return "no load to hold"
     return f"brake ≥ {d.text(c.holding_torque.brake_nm, 'torque', 3)} {d.label('torque')}"
 
 

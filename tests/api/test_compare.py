@@ -84,7 +84,9 @@ def test_the_compare_page_marks_the_best_of_each_row(client: TestClient) -> None
     eff = [c["efficiency"] for c in cs]
     top = {i for i, e in enumerate(eff) if e == max(eff)}
     if len(top) < len(cs):
-        assert {i for i, td in enumerate(rows["efficiency"]) if "best" in td.get("class", [])} == top
+        assert {
+            i for i, td in enumerate(rows["efficiency"]) if "best" in td.get("class", [])
+        } == top
     # each check's utilisation has a row
     for name in cs[0]["utilization"]:
         if cs[0]["utilization"][name] is not None:

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.core.model import Application
-from app.core.remedy import MARGIN, past_limit, part_way
+from app.core.remedy import MARGIN, part_way, past_limit
 from app.core.selection import screen, select
 from app.report.service import INPUT_RANGES
 

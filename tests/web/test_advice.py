@@ -62,10 +62,8 @@ def test_every_apply_link_passes_with_the_margin(
 
 def test_an_impossible_axis_through_the_api_and_the_page(client: TestClient) -> None:
     """400 deg C: every nut's temperature rating excludes it and no input change helps."""
-    api = client.get(
-        "/api/v1/select", params={"load_n": 100, "speed_mm_s": 50, "length_mm": 300,
-                                  "ambient_c": 400}  # fmt: skip
-    ).json()
+    hot = {"load_n": 100, "speed_mm_s": 50, "length_mm": 300, "ambient_c": 400}
+    api = client.get("/api/v1/select", params=hot).json()
     assert api["counts"]["passed"] == 0
     assert api["summary"]["remedies"] == []
     why = api["summary"]["impossible"]
