@@ -204,10 +204,14 @@ def within(change: Mapping[str, float], ranges: Ranges) -> bool:
     )
 
 
-def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
-    """The change in words: "reduce the load to {value}" per input."""
+def describe_change(app: Application, change: Mapping[str, float | str]) -> Phrase:
+    """The change in words: "reduce the load to {value}" per input ("mount the ends
+    fixed-fixed" for the end fixity)."""
     parts = []
     for key, value in change.items():
+        if isinstance(value, str):
+            parts.append(Phrase("mount the ends {v}", {"v": value}))
+            continue
         label, quantity = INPUT_LABELS[key]
         verb = "reduce" if value < getattr(app, key) else "set"
         parts.append(Phrase(f"{verb} the {label} to {{v}}", {"v": Amount(value, quantity)}))
@@ -284,11 +288,16 @@ def summarize(
         labels = " and ".join(INPUT_LABELS[k][0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
-    elif change:
+    found, why = _remedies(app, screening, nearest, worst, label, ranges)
+    if found:  # the first verified change, past its limits by the margin
+        how = describe_change(app, found[0].inputs)
+        parts.append(Phrase("Or change the application: {how}.", {"how": how}))
+    elif why is not None:
+        parts.append(why)
+    elif change:  # not verified (no screening given): the values at the limits
         parts.append(
             Phrase("Or change the application: {how}.", {"how": describe_change(app, change)})
         )
-    found, why = _remedies(app, screening, nearest, worst, label, ranges)
     return Summary(
         worst,
         worst_count,
