@@ -32,7 +32,7 @@ MOUNTING_CHECKS = frozenset({"critical_speed", "buckling"})
 #: Shares of the way to its single-input value each of two inputs moves together.
 SPLITS = (0.5, 0.75)
 #: At most this many remedies are offered, and this many changes screened.
-OFFERED, TRIED = 6, 40
+OFFERED, TRIED = 6, 24
 #: Why no leadscrew can do it, by the check that excludes the most.
 WHY: Mapping[str, str] = {
     "critical_speed": "the speed needs a critical-speed margin no screw of this length "

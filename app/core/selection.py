@@ -192,6 +192,17 @@ def input_change(best: Candidate) -> dict[str, float]:
     return change
 
 
+def one_input_changes(best: Candidate) -> list[dict[str, float]]:
+    """Each input that alone clears every failed numeric check of ``best`` (one offered
+    by all of them), at its tightest value: the alternatives ``input_change`` chooses
+    among (e.g. a shorter screw or a lower speed for the critical speed)."""
+    options = [c.input_limits for c in best.failed_checks]
+    if not options or any(not o for o in options):
+        return []
+    shared = set.intersection(*(set(o) for o in options if o))
+    return [{key: min(o[key] for o in options if o)} for key in sorted(shared)]
+
+
 def within(change: Mapping[str, float], ranges: Ranges) -> bool:
     """Every value of ``change`` lies within its input's range (inclusive).
 
@@ -322,7 +333,9 @@ def _remedies(
     why no leadscrew can do it; nothing without the screening to verify against."""
     if sc is None:
         return (), None
-    targets = [change for c in nearest[:REMEDY_FROM] if (change := input_change(c))]
+    near = nearest[:REMEDY_FROM]
+    targets = [t for c in near for t in one_input_changes(c)]
+    targets += [change for c in near if len(change := input_change(c)) > 1]
     failed = {k.name for c in nearest[:REMEDY_FROM] for k in c.failed_checks}
     found = remedies(app, sc, targets, failed, ranges)
     return found, None if found else impossible(worst, label)

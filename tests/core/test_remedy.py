@@ -71,7 +71,15 @@ def test_a_long_fast_axis_is_offered_a_stiffer_mounting(catalog: Catalog) -> Non
     app = Application(load_n=100.0, speed_m_s=0.4, length_m=2.0, end_fixity="fixed-free")
     sel = select(app, catalog.index, INPUT_RANGES)
     assert sel.passed == 0 and sel.summary.most_excluding_check == "critical_speed"
-    assert any("end_fixity" in r.inputs for r in sel.summary.remedies)
+    remedies = sel.summary.remedies
+    assert any("end_fixity" in r.inputs for r in remedies)
+    assert any(set(r.inputs) == {"length_m"} for r in remedies)  # a shorter screw alone
+    both = [r for r in remedies if set(r.inputs) == {"length_m", "speed_m_s"}]
+    assert both  # shorter and slower, each part of the way
+    alone = {next(iter(r.inputs)): r.inputs for r in remedies if len(r.inputs) == 1}
+    for key in ("length_m", "speed_m_s"):
+        # part of the way: less of a change than the input alone needs
+        assert alone[key][key] < both[0].inputs[key] < getattr(app, key)
 
 
 def test_when_no_change_helps_it_says_no_leadscrew_can_and_why(catalog: Catalog) -> None:

@@ -79,13 +79,13 @@ def test_an_impossible_axis_through_the_api_and_the_page(client: TestClient) -> 
 
 def test_a_fast_long_axis_gets_remedies_over_several_dimensions(client: TestClient) -> None:
     """2 m fixed-free at 400 mm/s: critical speed excludes all; the remedies include a
-    change of the mounting, and a change of more than one thing at once."""
+    change of the mounting, and a shorter screw together with a lower speed."""
     params = {"load": "100", "speed": "400", "length": "2000", "end_fixity": "fixed-free"}
     page = BeautifulSoup(client.get("/", params=params).text, "html.parser")
     items = page.select(".no-pass ul.remedies li")
     assert items
     fields = [li["data-fields"].split() for li in items]
     assert any("end_fixity" in f for f in fields)
-    assert any(len(f) >= 2 for f in fields)
+    assert any({"length", "speed"} <= set(f) for f in fields)  # shorter AND slower
     for li in items:
         assert "then pass, the best at" in li.text
