@@ -74,8 +74,9 @@ def _holding(c: CandidateOut, d: Display) -> str:
 
 
 def quantity_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
-    """The candidates' key numbers: torques, efficiency, holding, critical speed, PV,
-    life and the governing utilisation."""
+    """The candidates' key numbers: torques, efficiency, holding, critical speed, life
+    (years with a duty, else the rated travel) and the governing utilisation (PV and every
+    other check follow in ``check_rows``)."""
     t, torque = d.label("torque"), (lambda v: d.text(v, "torque"))
     rows = [
         _row("peak", "Peak motor torque", t, [c.torque.peak_motor_nm for c in cs], torque, "lower"),
@@ -101,8 +102,15 @@ def quantity_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
             lambda v: f"{v:.2f}",
             "higher",
         ),
-        _row("pv", "PV used", "", [c.utilization.get("pv") for c in cs], percent, "lower"),
         _row("life", "Life", "years", [_life_years(c) for c in cs], lambda v: f"{v:.3g}", "higher"),
+        _row(
+            "travel",
+            "Rated travel",
+            "million cm",
+            [None if c.life is None else c.life.travel_million_cm[0] for c in cs],
+            lambda v: f"{v:.3g}",
+            "higher",
+        ),
         _row(
             "governing",
             "Governing utilisation",
