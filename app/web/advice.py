@@ -103,28 +103,6 @@ def proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, st
     return min(max(value, low), high)
 
 
-def input_changes(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> list[Change]:
-    """Each input change of the summary, with a link that makes that one change."""
-    changes = []
-    for api, target in result.summary.input_change.items():
-        field = BY_API.get(api)
-        if field is None:
-            continue
-        value = proposal(result.inputs, api, target, units)
-        lower = value < float(getattr(result.inputs, api))
-        changes.append(
-            Change(
-                field=field.page,
-                label=field.label,
-                verb="Reduce" if lower else "Raise",
-                value=sig(float(field.display_value(value, units))),
-                unit=field.display_unit(units),
-                href=_link(result.inputs, {api: value}, units),
-            )
-        )
-    return changes
-
-
 def remedy_change(
     inputs: ApplicationIn, api: str, value: float | str, units: dict[str, str]
 ) -> tuple[Change, float | str]:
@@ -156,16 +134,6 @@ def remedy_links(result: SelectOut | PageSelectionOut, units: dict[str, str]) ->
             )
         )
     return links
-
-
-def all_changes_link(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> str | None:
-    """One link making every proposed change at once; None unless there are several."""
-    proposals = {
-        api: proposal(result.inputs, api, target, units)
-        for api, target in result.summary.input_change.items()
-        if api in BY_API
-    }
-    return _link(result.inputs, proposals, units) if len(proposals) > 1 else None
 
 
 def failed_checks(candidate: CandidateOut | None) -> list[FailedCheck]:
