@@ -288,8 +288,20 @@ class Change:
 
 
 @dataclass(frozen=True, slots=True)
+class Remedy:
+    """A change of the application verified by screening again with it made
+    (``app.core.remedy``): its inputs (core names, SI; ``end_fixity`` a word), how many
+    candidates then pass, and the lowest governing utilisation among them."""
+
+    inputs: Mapping[str, float | str]
+    passing: int
+    utilization: float
+
+
+@dataclass(frozen=True, slots=True)
 class Summary:
-    """Why nothing (or little) passes, and the input changes that would admit the nearest."""
+    """Why nothing (or little) passes, and the input changes that would admit the nearest;
+    when nothing passes, the verified remedies, or why no leadscrew can do it."""
 
     most_excluding_check: str | None
     most_excluding_count: int
@@ -297,3 +309,5 @@ class Summary:
     input_change: Mapping[str, float]
     message: Phrase
     changes: tuple[Change, ...] = ()
+    remedies: tuple[Remedy, ...] = ()
+    impossible: Phrase | None = None
