@@ -341,6 +341,10 @@ def _bearing_table(v: Entry) -> Sourced:
         raise v.fail(name, "rows must rise in sliding speed, at least one row")
     if any(row[1] <= 0 for row in rows):
         raise v.fail(name, "every allowable pressure must be > 0")
+    # a sliding nut heats more the faster it slides: a row allowing more pressure than a
+    # slower one would let a larger, faster-sliding size pass where a smaller one fails
+    if any(b[1] > a[1] for a, b in pairwise(rows)):
+        raise v.fail(name, "the allowable pressure must not rise with the sliding speed")
     table = tuple((speed, to_si(pressure, "MPa")) for speed, pressure in rows)
     return Sourced(table, "m/s, Pa", v.prov(name))
 

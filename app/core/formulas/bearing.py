@@ -39,7 +39,9 @@ def bearing_pressure(load_n: float, area_m2: float) -> float:
 def table_pressure(speed_m_s: float, table: Sequence[tuple[float, float]]) -> float:
     """Allowable pressure [Pa] at a sliding speed [m/s] from a material's table of
     (sliding speed, allowable pressure) rows, linearly interpolated; outside the table
-    the nearest row's pressure holds.
+    the nearest row's pressure holds. The catalog refuses a table whose pressure rises
+    with speed, so the result never rises with the sliding speed: of two sizes at one
+    speed of turning, the one with more flank area sliding no faster carries more.
 
     Source: the table's own (catalog), e.g. Shigley Table 8-4 for bronze on steel.
 
