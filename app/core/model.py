@@ -16,7 +16,7 @@ LoadDirection = Literal["auto", "opposes", "fixed"]
 #: What the holding torque given is: a brake's (holds with the power off) or a motor's
 #: energised holding torque (a stepper's: holds only while the power is on).
 HoldingSource = Literal["brake", "energised"]
-RankBy = Literal["torque", "margin", "life", "size", "motor_margin"]
+RankBy = Literal["torque", "rms", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
 ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]

@@ -85,7 +85,7 @@ def _slower(s: ScrewSpec, r: Quantities[float]) -> Phrase:
     its PV limit binds. Empty when the slow-sliding pressure holds."""
     table = s.bearing_pressure_table
     slow = [p for p in (table[0][1] if table else None, s.max_pressure_pa) if p is not None]
-    if not slow or r.nut_allowed_pressure_pa >= min(slow) * (1.0 - 1e-9):
+    if not slow or r.nut_allowed_pressure_pa >= min(slow):
         return Phrase("")
     values: dict[str, Amount | str | Phrase] = {"p0": Amount(min(slow), "pressure")}
     if table and r.sliding_speed_m_s > table[0][0]:
