@@ -2,6 +2,7 @@
 material allows at the sliding speed (bronze by a table, polymers by p_max and PV)."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -11,6 +12,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     load_input,
     where_given,
 )
@@ -68,8 +70,8 @@ class BearingPressure(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "At this speed the load may be at most {cap}; a longer nut, a larger size or a "
-            "nut material that allows more pressure carries more.",
-            {"cap": Amount(r.nut_allowed_load_n, "force")},
+            "nut material that allows more pressure carries more." + MARGIN_NOTE,
+            {"cap": Amount(at_most(r.nut_allowed_load_n), "force")},
         )
 
     def input_limits(

@@ -2,6 +2,7 @@
 Euler when the screw is slender, Johnson's parabola when it is short."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -12,6 +13,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
+    at_most,
     load_input,
     sentence,
     stiffer_support,
@@ -93,17 +96,17 @@ class ColumnBuckling(Check):
         )
         values: dict[str, Amount | str] = {
             "support": stiffer_support(app, passes),
-            "length": Amount(_max_length(app, s, r), "length"),
+            "length": Amount(at_most(_max_length(app, s, r)), "length"),
             "fixity": app.end_fixity,
         }
         template = (
             "{support} (column at most {length} with the ends {fixity}), or move the thrust "
             "bearing so that the load pulls the screw."
         )
-        if d_min <= reach.max_root_diameter_m:
-            values["d"] = Amount(d_min, "length")
+        if at_least(d_min) <= reach.max_root_diameter_m:
+            values["d"] = Amount(at_least(d_min), "length")
             template = "Use a root diameter of at least {d}, or " + template
-        return sentence(template, values)
+        return sentence(template + MARGIN_NOTE, values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]

@@ -3,6 +3,7 @@
 pressure in motion over the engaged flank area)."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -12,6 +13,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     load_input,
     where_given,
 )
@@ -64,13 +66,13 @@ class DesignLoad(Check):
         if s.design_load_n is None:
             return Phrase(
                 "Reduce the peak thrust to at most {cap}, or carry it on a longer nut, a "
-                "larger size or a nut material rated higher in motion (bronze).",
-                {"cap": Amount(r.rated_load_n, "force")},
+                "larger size or a nut material rated higher in motion (bronze)." + MARGIN_NOTE,
+                {"cap": Amount(at_most(r.rated_load_n), "force")},
             )
         larger = " or choose a larger size" if reach.max_design_load_n >= r.peak_force_n else ""
         return Phrase(
-            "Reduce the peak thrust to at most {cap}" + larger + ".",
-            {"cap": Amount(r.rated_load_n, "force")},
+            "Reduce the peak thrust to at most {cap}" + larger + "." + MARGIN_NOTE,
+            {"cap": Amount(at_most(r.rated_load_n), "force")},
         )
 
     def input_limits(
