@@ -14,7 +14,6 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     at_least,
-    at_most,
     load_input,
     sentence,
     stiffer_support,
@@ -94,14 +93,16 @@ class ColumnBuckling(Check):
         d_min = buckling.min_root_diameter_for_load(
             s.root_diameter_m, r.allowed_load_n, r.compressive_force_n
         )
+        length = _max_length(app, s, r, at_least(r.compressive_force_n))
         values: dict[str, Amount | str] = {
             "support": stiffer_support(app, passes),
-            "length": Amount(at_most(_max_length(app, s, r)), "length"),
+            "length": Amount(length, "length"),
             "fixity": app.end_fixity,
         }
+        # no column of this screw carries the thrust when its root yields first
+        column = " (column at most {length} with the ends {fixity})" if length > 0 else ""
         template = (
-            "{support} (column at most {length} with the ends {fixity}), or move the thrust "
-            "bearing so that the load pulls the screw."
+            "{support}" + column + ", or move the thrust bearing so that the load pulls the screw."
         )
         if at_least(d_min) <= reach.max_root_diameter_m:
             values["d"] = Amount(at_least(d_min), "length")
@@ -116,10 +117,15 @@ class ColumnBuckling(Check):
         return {**limits, "length_m": length} if length > 0 else limits
 
 
-def _max_length(app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
-    """Longest column carrying the peak thrust with the buckling factor [m]."""
+def _max_length(
+    app: Application, s: ScrewSpec, r: Quantities[float], force_n: float | None = None
+) -> float:
+    """Longest column carrying the peak thrust (or ``force_n``) with the buckling factor
+    [m]. A fix asks for the column that carries the thrust with its margin: in Johnson's
+    short-column range the critical load hardly grows as the column shortens, so a
+    length a margin shorter would not keep the margin."""
     return buckling.max_length_for_column(
-        r.compressive_force_n / app.buckling_safety_factor,
+        (r.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
         s.youngs_modulus_pa,
         s.root_diameter_m,
         app.end_fixity,
