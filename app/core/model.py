@@ -16,7 +16,7 @@ LoadDirection = Literal["auto", "opposes", "fixed"]
 #: What the holding torque given is: a brake's (holds with the power off) or a motor's
 #: energised holding torque (a stepper's: holds only while the power is on).
 HoldingSource = Literal["brake", "energised"]
-RankBy = Literal["torque", "margin", "life", "size", "motor_margin"]
+RankBy = Literal["torque", "rms", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
 ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]
@@ -165,6 +165,9 @@ class ScrewSpec:
     #: limit over the engaged flank area [Pa m/s] and its maximum sliding speed [m/s].
     bearing_pressure_table: tuple[tuple[float, float], ...] = ()
     max_pressure_pa: float | None = None
+    #: A polymer nut's permissible flank pressure in motion [Pa]: its dynamic axial load
+    #: is this pressure over the engaged flank area (None: rated otherwise).
+    dynamic_pressure_pa: float | None = None
     nut_pv_limit_pa_m_s: float | None = None
     max_sliding_speed_m_s: float | None = None
     #: The nut's specific wear rate against the screw [m^2/N = m^3/(N m)] and the wear

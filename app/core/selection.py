@@ -42,19 +42,35 @@ def motor_use(s: Screening) -> np.ndarray:
     return np.asarray(np.nanmax(np.stack(shares), axis=0), dtype=np.float64)
 
 
+def shown_torque(s: Screening) -> np.ndarray:
+    """The torque the results show for each candidate: under a move (a stroke given) the
+    peak motor torque of either move or of starting from rest, rotor included; otherwise
+    the drive torque at the top speed while accelerating."""
+    q = s.quantities
+    return np.where(np.isnan(q.motor_rms_nm), q.total_nm, q.peak_torque_nm)
+
+
+def shown_rms(s: Screening) -> np.ndarray:
+    """The RMS motor torque over the cycle; the shown torque where there is no move."""
+    q = s.quantities
+    return np.where(np.isnan(q.motor_rms_nm), shown_torque(s), q.motor_rms_nm)
+
+
 def _rank_order(app: Application, s: Screening) -> np.ndarray:
     """Positions of passing candidates (in ``s``) in rank order, stable.
 
-    torque: lowest total drive torque; margin: lowest worst utilisation; life: longest
-    rated life (unrated last); size: smallest outer diameter; motor_margin: the smallest
-    share of the motor used (``motor_use``). Ties: lower torque. Candidates with a
-    warning (failed advice) come after those without, whatever the policy ("reject"
-    rejects them).
+    torque: lowest torque shown (``shown_torque``: the peak motor torque under a move);
+    rms: lowest RMS motor torque (``shown_rms``); margin: lowest worst utilisation; life:
+    longest rated life (unrated last); size: smallest outer diameter; motor_margin: the
+    smallest share of the motor used (``motor_use``). Ties: lower shown torque.
+    Candidates with a warning (failed advice) come after those without, whatever the
+    policy ("reject" rejects them).
     """
     pos = np.flatnonzero(s.passed)
-    torque, util = s.total_torque_nm[pos], s.max_utilization[pos]
+    torque, util = shown_torque(s)[pos], s.max_utilization[pos]
     primary = {
         "torque": torque,
+        "rms": shown_rms(s)[pos] if app.rank_by == "rms" else torque,
         "margin": util,
         "life": -np.nan_to_num(s.table.life_min_m[pos]),
         "size": s.table.outer_diameter_m[pos],

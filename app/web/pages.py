@@ -116,7 +116,8 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["charting_passed"] = chart_candidates(result)[1]
         context["rejected_groups"] = rejected_groups(rejected)
         rank_by = str(inputs.model_dump()["rank_by"])
-        context["rank_text"] = BY_PAGE["rank_by"].choice_text(rank_by).lower()
+        text = BY_PAGE["rank_by"].choice_text(rank_by)
+        context["rank_text"] = text[:1].lower() + text[1:]
         context["ranked_column"] = RANKED_COLUMN[rank_by]
         if not result.candidates:
             context["advice"] = no_pass_advice(result, units)
