@@ -128,9 +128,10 @@ def test_invalid_input_shows_inline_message_and_keeps_typing(
     field = page.locator("#f-load")
     field.fill("")
     field.press_sequentially("12x", delay=30)
-    # the message arrives with the swap, aria-invalid with htmx:afterSettle (app.js)
+    # the message arrives with the swap, aria-invalid with htmx:afterSettle (app.js); the
+    # emptied field's own "Required." may be answered first, so wait for the typed one
     page.wait_for_function(
-        "() => document.querySelector('#e-load').textContent.length > 0"
+        "() => document.querySelector('#e-load').textContent === 'Enter a number.'"
         " && document.querySelector('#f-load[aria-invalid]') !== null"
     )
     assert page.inner_text("#e-load") == "Enter a number."
