@@ -37,6 +37,10 @@ def test_the_results_fit_the_viewport_with_a_detail_open(
     assert closed["page"] <= closed["viewport"] == width
     if width == 1280:  # the table itself, not only the page: no column scrolled away
         assert closed["table"] <= closed["region"]
+        governing = page.locator("table.candidates thead th:last-child")
+        assert "Governing" in governing.inner_text()
+        box = governing.bounding_box()
+        assert box is not None and box["width"] > 40 and box["x"] + box["width"] <= width
     open_first_detail(page)
     opened = page.evaluate(WIDTHS)
     assert opened["page"] <= width and opened["table"] <= max(opened["region"], closed["table"])
