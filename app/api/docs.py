@@ -16,7 +16,6 @@ PAGE = f"""<!doctype html>
   <meta charset="utf-8">
   <meta name="viewport" content="width=device-width, initial-scale=1">
   <title>leadscrew-selector API</title>
-  <link rel="icon" href="data:,">
   <link rel="stylesheet" href="/static/vendor/swagger-ui-{SWAGGER_UI_VERSION}.css">
   <link rel="stylesheet" href="/static/css/docs.css">
   <script src="/static/vendor/swagger-ui-bundle-{SWAGGER_UI_VERSION}.js" defer></script>

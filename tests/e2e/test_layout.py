@@ -69,3 +69,28 @@ def test_the_phone_results_bar_covers_no_result(
     assert end <= bar["y"]
     page.screenshot(path=str(artifacts / "results-end-bar-390.png"))
     context.close()
+
+
+#: the axis fields only: Advanced stays closed
+PLAIN = "load=50&speed=200&length=500&moving_mass_kg=5"
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+def test_the_results_start_near_the_top_with_advanced_closed(
+    browser: Any, live_server: str, artifacts: Path, width: int
+) -> None:
+    """With Advanced closed the results begin within a screen and a half and the first
+    candidate within two screens, at either width (measured: results at 0.66 and 1.25
+    screens, the first candidate at 1.05 and 1.56), not five screens down."""
+    context = browser.new_context(viewport={"width": width, "height": 900})
+    page = context.new_page()
+    page.goto(f"{live_server}/?{PLAIN}")
+    page.wait_for_selector("tbody.candidate")
+    assert page.locator("details.advanced[open]").count() == 0
+    tops = page.evaluate(
+        """() => ['#results', 'tbody.candidate'].map(
+             s => document.querySelector(s).getBoundingClientRect().top + scrollY)"""
+    )
+    assert 0 < tops[0] <= 1.5 * 900 and tops[0] < tops[1] <= 2 * 900
+    page.screenshot(path=str(artifacts / f"results-start-{width}.png"))
+    context.close()
