@@ -1,6 +1,7 @@
 """Run every benchmark and print each figure beside its target (PASS / MISS).
 
-    python3 bench/run.py            # core, HTTP, page weight, memory, hostile load
+    python3 bench/run.py            # core, HTTP, page weight, memory, keystroke to
+                                    # results in Chromium, hostile load
     python3 bench/run.py --soak     # plus a 60 s no-error load test per endpoint
 
 Figures are printed, never asserted: timing depends on the machine. The exit code is 0
@@ -39,12 +40,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--soak-seconds", type=int, default=60)
     parser.add_argument("--seconds", type=int, default=10, help="wrk duration per endpoint")
     parser.add_argument(
-        "--only", choices=("core", "http", "hostile", "attacks"), help="run one part"
+        "--only",
+        choices=("core", "http", "keystroke", "hostile", "attacks"),
+        help="run one part",
     )
     args = parser.parse_args(argv)
     # `python3 bench/run.py` puts bench/ first on the path; the repository root belongs there
     sys.path[:] = [str(ROOT), *(p for p in sys.path if Path(p or ".").resolve() != ROOT / "bench")]
-    from bench import attacks, core, hostile, web
+    from bench import attacks, core, hostile, keystroke, web
     from bench.report import Report
 
     report = Report()
@@ -62,6 +65,8 @@ def main(argv: list[str] | None = None) -> int:
             memory_seconds=600 if args.soak else 60,
             soak_seconds=args.soak_seconds if args.soak else None,
         )
+    if args.only in (None, "keystroke"):
+        keystroke.run(report)
     if args.only in (None, "hostile"):
         with tempfile.TemporaryDirectory(prefix="leadscrew-bench-") as tmp:
             hostile.run(report, seconds=args.seconds, tmp=Path(tmp))

@@ -178,7 +178,19 @@
       note.hidden = false;
     } else {
       target.classList.remove("stale");
+      purgeCharts(target);
     }
+  }
+
+  // the swap replaces the charts: Plotly.purge drops each old chart's window resize
+  // listener (kept for ever otherwise) and its thousands of SVG nodes, which htmx would
+  // walk one by one while cleaning up the old results
+  function purgeCharts(target) {
+    eachChart(function (chart) {
+      if (target.contains(chart)) {
+        window.Plotly.purge(chart);
+      }
+    });
   }
 
   function sizeForPrint() {

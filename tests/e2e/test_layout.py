@@ -37,6 +37,10 @@ def test_the_results_fit_the_viewport_with_a_detail_open(
     assert closed["page"] <= closed["viewport"] == width
     if width == 1280:  # the table itself, not only the page: no column scrolled away
         assert closed["table"] <= closed["region"]
+        governing = page.locator("table.candidates thead th:last-child")
+        assert "Governing" in governing.inner_text()
+        box = governing.bounding_box()
+        assert box is not None and box["width"] > 40 and box["x"] + box["width"] <= width
     open_first_detail(page)
     opened = page.evaluate(WIDTHS)
     assert opened["page"] <= width and opened["table"] <= max(opened["region"], closed["table"])
@@ -64,4 +68,29 @@ def test_the_phone_results_bar_covers_no_result(
     assert bar is not None and bar["y"] + bar["height"] == pytest.approx(844, abs=1)
     assert end <= bar["y"]
     page.screenshot(path=str(artifacts / "results-end-bar-390.png"))
+    context.close()
+
+
+#: the axis fields only: Advanced stays closed
+PLAIN = "load=50&speed=200&length=500&moving_mass_kg=5"
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+def test_the_results_start_near_the_top_with_advanced_closed(
+    browser: Any, live_server: str, artifacts: Path, width: int
+) -> None:
+    """With Advanced closed the results begin within a screen and a half and the first
+    candidate within two screens, at either width (measured: results at 0.66 and 1.25
+    screens, the first candidate at 1.05 and 1.56), not five screens down."""
+    context = browser.new_context(viewport={"width": width, "height": 900})
+    page = context.new_page()
+    page.goto(f"{live_server}/?{PLAIN}")
+    page.wait_for_selector("tbody.candidate")
+    assert page.locator("details.advanced[open]").count() == 0
+    tops = page.evaluate(
+        """() => ['#results', 'tbody.candidate'].map(
+             s => document.querySelector(s).getBoundingClientRect().top + scrollY)"""
+    )
+    assert 0 < tops[0] <= 1.5 * 900 and tops[0] < tops[1] <= 2 * 900
+    page.screenshot(path=str(artifacts / f"results-start-{width}.png"))
     context.close()

@@ -1,0 +1,183 @@
+"""axe-core on every page in Chromium, at 1280 and 390 px (issue 24).
+
+Every HTML page the app's router serves is scanned: the routes are read from the app
+itself, so a new page is scanned bare as soon as it exists, and a page that needs a query
+or an interaction to show its content (results, an open detail, the no-pass advice, an
+inline 422 error, Swagger UI with every operation open and run) has states of its own
+below. axe runs WCAG 2.1 A and AA rules plus its best practices, and the test asserts no
+violation of any impact. Nothing is excluded: /docs is made clean by our own stylesheet
+and configuration (static/css/docs.css, static/js/docs.js), not by skipping its rules.
+
+axe-core is vendored under tests/e2e/vendor/ (npm package axe-core, version in the file
+name, MPL-2.0 licence beside it) and injected as an init script, which the page's
+Content-Security-Policy does not govern.
+"""
+
+import re
+import urllib.parse
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+from fastapi.routing import APIRoute
+from starlette.responses import HTMLResponse
+
+from app.main import create_app
+
+AXE = Path(__file__).resolve().parent / "vendor" / "axe-core-4.14.1.min.js"
+RULE_TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "best-practice"]
+AXIS = "load=50&speed=200&length=500"
+#: every optional column of the results table (a move, a motor, its margin)
+WIDEST = (
+    "load=50&speed=200&length=500&stroke=300&accel=2000&moving_mass_kg=5&max_torque=0.5"
+    "&motor_inertia=8e-6&rank_by=motor_margin&limit=20"
+)
+#: the impossible axis on the seed's screws: the no-pass advice
+IMPOSSIBLE = "load=3000&speed=500&length=3000&family=B,ZBX,KHD,VHD"
+SCREW = (
+    "outer_diameter_mm=10&root_diameter_mm=8&lead_mm=2&friction_dynamic=0.15"
+    "&friction_static=0.2&pv_limit_mpa_m_s=3&load=100&speed=50&length=500"
+)
+
+
+def _routes(routes: list[Any], prefix: str = "") -> Iterator[tuple[str, Any]]:
+    for route in routes:
+        included = getattr(route, "original_router", None)
+        if included is not None:
+            yield from _routes(included.routes, prefix + route.include_context.prefix)
+        else:
+            yield prefix + getattr(route, "path", ""), route
+
+
+def html_pages() -> list[str]:
+    """Every GET route of the app that answers with an HTML page."""
+    return sorted(
+        path
+        for path, route in _routes(create_app().routes)
+        if isinstance(route, APIRoute)
+        and "GET" in route.methods
+        and isinstance(route.response_class, type)
+        and issubclass(route.response_class, HTMLResponse)
+    )
+
+
+def first_candidate(page: Any, base: str) -> None:
+    page.goto(f"{base}/?{AXIS}")
+    first = page.get_attribute("tbody.candidate >> nth=0", "data-id")
+    page.goto(f"{base}/detail?{AXIS}&id={urllib.parse.quote(first)}")
+    page.wait_for_selector("dl.facts")
+
+
+def open_detail(page: Any, base: str) -> None:
+    page.goto(f"{base}/?{WIDEST}")
+    page.locator("tbody.candidate >> nth=0 >> details.detail summary").click()
+    page.wait_for_selector("tbody.candidate >> nth=0 >> dl.facts")
+
+
+def typed_error(page: Any, base: str) -> None:
+    """A field retyped to nonsense: the 422 answer's inline error, results kept dimmed."""
+    page.goto(f"{base}/?{AXIS}")
+    page.fill("#f-load", "abc")
+    page.wait_for_function("() => document.querySelector('#e-load').textContent.trim() !== ''")
+    page.wait_for_selector("#results.stale")
+
+
+def custom_error(page: Any, base: str) -> None:
+    page.goto(f"{base}/custom?{SCREW}")
+    page.fill("#f-root_diameter_mm", "12")
+    page.wait_for_function(
+        "() => document.querySelector('#e-root_diameter_mm').textContent.trim() !== ''"
+    )
+
+
+def docs_opened(page: Any, base: str) -> None:
+    """Swagger UI with every operation open, tried out, two of them run."""
+    page.goto(f"{base}/docs")
+    page.wait_for_selector(".opblock")
+    for control in page.query_selector_all(".opblock-summary-control"):
+        control.click()
+    for button in page.query_selector_all(".try-out__btn"):
+        button.click()
+    for op in ("health_api_v1_health_get", "list_checks_api_v1_checks_get"):
+        page.click(f"#operations-api-{op} .execute")
+        page.wait_for_selector(f"#operations-api-{op} .live-responses-table")
+    if page.locator("section.models.is-open").count() == 0:
+        page.click(".models-control")
+    page.wait_for_selector("section.models.is-open")
+
+
+def visit(path: str, ready: str = "main") -> Callable[[Any, str], None]:
+    def go(page: Any, base: str) -> None:
+        page.goto(base + path)
+        page.wait_for_selector(ready)
+
+    return go
+
+
+#: pages that need a query or an interaction to show what they show (path -> states)
+STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
+    "/": {
+        "results": visit(f"/?{AXIS}", "tbody.candidate"),
+        "detail-open": open_detail,
+        "no-pass": visit(f"/?{IMPOSSIBLE}", ".no-pass"),
+        "error-422-inline": typed_error,
+    },
+    "/detail": {"page": first_candidate},
+    "/custom": {"results": visit(f"/custom?{SCREW}", ".custom-verdict"), "error": custom_error},
+    "/docs": {"opened": docs_opened},
+}
+#: answers that are not a route of their own
+ERRORS = {"error-404": visit("/no-such-page", "main")}
+
+
+def scans() -> list[tuple[str, Callable[[Any, str], None]]]:
+    found: list[tuple[str, Callable[[Any, str], None]]] = []
+    for path in html_pages():
+        if path in STATES:
+            found += [(f"{path} {name}", state) for name, state in STATES[path].items()]
+        if "{" not in path:  # /detail bare is its 404 page (no candidate named)
+            found.append((f"{path} bare", visit(path)))
+    return found + list(ERRORS.items())
+
+
+def test_every_page_of_the_router_is_scanned() -> None:
+    pages = html_pages()
+    assert {"/", "/catalog", "/custom", "/guide", "/validation", "/docs", "/detail"} <= set(pages)
+    scanned = {name.split(" ")[0] for name, _ in scans()}
+    assert set(pages) <= scanned
+    # a page with a path parameter cannot be visited bare: it needs states of its own
+    assert all(path in STATES for path in pages if "{" in path)
+
+
+def summary(violations: list[dict[str, Any]]) -> list[str]:
+    return [
+        f"{v['id']} ({v['impact']}): {v['help']} at {[n['target'] for n in v['nodes'][:3]]}"
+        for v in violations
+    ]
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+@pytest.mark.parametrize(("name", "state"), scans(), ids=[name for name, _ in scans()])
+def test_axe_finds_no_violation(
+    browser: Any,
+    live_server: str,
+    artifacts: Path,
+    name: str,
+    state: Callable[[Any, str], None],
+    width: int,
+) -> None:
+    context = browser.new_context(viewport={"width": width, "height": 900})
+    context.add_init_script(path=str(AXE))
+    page = context.new_page()
+    state(page, live_server)
+    page.wait_for_load_state("networkidle")
+    result = page.evaluate(
+        "tags => axe.run(document, {runOnly: {type: 'tag', values: tags}})", RULE_TAGS
+    )
+    slug = re.sub(r"[^a-z0-9]+", "-", name).strip("-")
+    page.screenshot(path=str(artifacts / f"axe-{slug}-{width}.png"))
+    context.close()
+    assert result["testEngine"]["version"] == "4.14.1"
+    assert len(result["passes"]) > 20  # the rules really ran on a page with content
+    assert summary(result["violations"]) == []
