@@ -86,7 +86,7 @@ def form_context(params: Mapping[str, str]) -> dict[str, Any]:
         "groups": GROUPS,
         "input_rows": summary_rows,
         "true_words": TRUE_WORDS,
-        "advanced_open": advanced_open,
+        "set_groups": set_groups,
         "unit_choices": UNIT_CHOICES,
         "torque_labels": TORQUE_LABELS,
     }
@@ -134,15 +134,17 @@ def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
     return list(groups.values())
 
 
-def advanced_open(
+def set_groups(
     values: Mapping[str, str], errors: Mapping[str, str], defaults: Mapping[str, str]
-) -> bool:
-    """Open the Advanced section when one of its fields has an error or a non-default value."""
-    for name in BY_PAGE:
+) -> set[str]:
+    """The form groups under Advanced that hold an error or a value other than its default:
+    each of them, and Advanced itself, is drawn open, the rest shut."""
+    groups = set()
+    for name, field in BY_PAGE.items():
         text = values.get(name, "").strip().lower()
         if name not in MAIN_FIELDS and (name in errors or text not in ("", defaults.get(name))):
-            return True
-    return False
+            groups.add(field.group)
+    return groups
 
 
 def _push_url(context: dict[str, Any]) -> str:

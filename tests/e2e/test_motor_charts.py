@@ -16,6 +16,8 @@ def test_motor_curve_and_move_charts(
 ) -> None:
     page.goto(f"{live_server}/?{AXIS}")
     page.wait_for_selector("table.candidates tbody.candidate")
+    page.evaluate("() => document.querySelector('details.advanced').open = true")
+    page.click("details.group:has(#f-motor_curve) > summary")
     page.fill("#f-motor_curve", "0 0.4\n600 0.3\n1200 0.1")
     page.locator("#f-motor_curve").dispatch_event("input")
     page.wait_for_url("**motor_curve=0%3A0.4%2C600%3A0.3%2C1200%3A0.1**")

@@ -76,10 +76,12 @@ def test_advanced_options_update_results(
     page.wait_for_function(
         "() => document.querySelector('dl.inputs').textContent.includes('Fixed – fixed')"
     )
+    page.click("details.group:has(#f-vacuum) > summary")
     page.check("#f-vacuum")
     page.wait_for_function("() => location.search.includes('vacuum=true')")
     page.uncheck("#f-vacuum")
     page.wait_for_function("() => !location.search.includes('vacuum')")
+    page.click("details.group:has(#f-compression) > summary")
     page.select_option("#f-compression", "false")
     page.wait_for_function("() => location.search.includes('compression=false')")
     assert "tension" in page.inner_text("dl.inputs").lower()

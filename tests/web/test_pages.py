@@ -291,6 +291,14 @@ def test_advanced_opens_only_for_non_default_values(client: TestClient) -> None:
     assert not soup(client.get("/", params=defaults)).select("details.advanced[open]")
     page = soup(client.get("/", params={**AXIS, "compression": "false", "vacuum": "true"}))
     assert page.select_one("details.advanced[open]")
+    # only the groups holding a set value are drawn open
+    opened = {d.summary.contents[0].strip() for d in page.select("details.group[open]")}
+    shut = {d.summary.contents[0].strip() for d in page.select("details.group:not([open])")}
+    assert {
+        page.select_one(f"details.group:has({f})").summary.contents[0].strip()
+        for f in ("#f-compression", "#f-vacuum")
+    } == opened
+    assert "Motor and move" in shut and "Safety factors" in shut
     assert page.select_one("#f-compression option[selected]")["value"] == "false"
     assert page.select_one("#f-vacuum[checked]")
     assert "tension" in page.select_one("dl.inputs").text.lower()
@@ -309,7 +317,7 @@ def test_the_moving_mass_orientation_and_load_direction_are_up_front(
     assert not page.select("details.advanced[open]")
     assert page.select_one("#f-orientation option[selected]")["value"] == "vertical"
     motor = next(
-        fs for fs in page.select("details.advanced fieldset") if fs.legend.text == "Motor and move"
+        fs for fs in page.select("details.group fieldset") if fs.legend.text == "Motor and move"
     )
     assert motor.select_one("#f-max_torque") and motor.select_one("#f-motor_curve")
 
