@@ -22,7 +22,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal, get_args
 
-from app.catalog.motors import library
 from app.contract.units import API_SYSTEM, SWITCHED, UNITS, Quantity, from_api, label
 from app.core.model import (
     AdvicePolicy,
@@ -334,9 +333,10 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="motor", page="motor", core="motor", label="Library motor",
-        help="A motor of the library (catalog/motors.toml: " + ", ".join(library())
-        + "): its pull-out curve, rotor inertia and step angle unless given here; empty "
-        "or “none” for no motor",
+        help="A motor of the library (motors.toml; GET /api/v1/motors lists them): a "
+        "stepper's pull-out curve, rotor inertia and step angle, or a servo's peak "
+        "envelope, rated torque and rotor inertia, unless given here; empty or “none” "
+        "for no motor",
         group="Motor and move", kind="text", none_word="none",
     ),
     InputField(

@@ -95,7 +95,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
     units, values = context["units"], context["values"]
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
-    inputs, context["errors"] = parse_inputs(values, units)
+    inputs, context["errors"] = parse_inputs(values, units, catalog.motors)
     if inputs is not None:
         result, rejected = run_page_selection(inputs, catalog, units)
         context["result"], context["rejected"] = result, rejected
@@ -160,10 +160,12 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
     return response
 
 
-def _link_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
+def _link_inputs(
+    params: Mapping[str, str], catalog: Catalog
+) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
     units, values, _, _ = form_state(params)
-    inputs, errors = parse_inputs(values, units)
+    inputs, errors = parse_inputs(values, units, catalog.motors)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
         raise AppError(422, "invalid input", detail)
@@ -194,7 +196,7 @@ def _candidate(
 async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
-    inputs, units = _link_inputs(request.query_params)
+    inputs, units = _link_inputs(request.query_params, catalog)
     c = _candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
     try_query = catalog_screw_query(catalog.by_id[c.id])
@@ -217,7 +219,7 @@ async def export_csv(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _export_csv(request: Request, catalog: Catalog) -> Response:
-    inputs, units = _link_inputs(request.query_params)
+    inputs, units = _link_inputs(request.query_params, catalog)
     body = results_csv(run_selection(inputs, catalog, units, view="csv"), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
@@ -229,7 +231,7 @@ async def export_json(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _export_json(request: Request, catalog: Catalog) -> Response:
-    inputs, _ = _link_inputs(request.query_params)
+    inputs, _ = _link_inputs(request.query_params, catalog)
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 
 
