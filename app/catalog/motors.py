@@ -49,6 +49,25 @@ FIELDS = {
     },
 }
 PLAIN = frozenset({"name", "frame", "kind"})
+#: Each field's unit as held (SI, or the datasheet's own for angles, currents, voltages
+#: and speeds): what the API and the catalog page show beside the value.
+SI_UNITS = {
+    "step_angle_deg": "deg",
+    "holding_torque_nm": "N m",
+    "phase_current_a": "A",
+    "resistance_ohm": "ohm",
+    "inductance_mh": "H",
+    "rotor_inertia_g_cm2": "kg m2",
+    "supply_v": "V",
+    "rated_torque_nm": "N m",
+    "peak_torque_nm": "N m",
+    "rated_rpm": "rpm",
+    "max_rpm": "rpm",
+    "top_speed_torque_nm": "N m",
+}
+#: The motor input that asks for every library motor: the selection runs without a
+#: motor and the screw + motor pairs are ranked (``pair_applications``).
+ANY_MOTOR = "any"
 #: Values that may be zero (a brushed DC motor's envelope falls from standstill).
 MAY_BE_ZERO = frozenset({"rated_rpm"})
 #: The stepper model's curve is drawn up to this speed [rpm]: hybrid steppers on
@@ -133,7 +152,7 @@ def _motor(file: str, motor_id: str, data: Any) -> Motor:
     for name, unit in FIELDS[kind].items():
         number = entry.number(name, allow_zero=name in MAY_BE_ZERO)
         value = to_si(number, unit) if unit else number
-        values[name] = Sourced(value, unit, entry.prov(name))
+        values[name] = Sourced(value, SI_UNITS[name], entry.prov(name))
     motor = Motor(motor_id, data["name"], data["frame"], values, kind)
     if kind == "servo":
         _check_servo(entry, motor)
@@ -191,7 +210,7 @@ def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
     in: a given curve first, then one drawn from the datasheet values, then the library
     motor's (raise UnknownMotor for an id ``motors`` lacks)."""
     curve = app.motor_curve or _datasheet_curve(app)
-    if app.motor is None:
+    if app.motor is None or app.motor == ANY_MOTOR:
         return replace(app, motor_curve=curve)
     motor = motors.get(app.motor)
     if motor is None:
@@ -213,13 +232,41 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
     )
 
 
+def without_motor(app: Application) -> Application:
+    """``app`` with no motor: no library id, curve, rotor inertia, continuous torque,
+    datasheet values or step angle (the controller's microsteps and rate stay)."""
+    return replace(
+        app,
+        motor=None,
+        motor_curve=(),
+        motor_inertia_kg_m2=None,
+        motor_rms_torque_nm=None,
+        motor_supply_v=None,
+        motor_phase_current_a=None,
+        motor_resistance_ohm=None,
+        motor_inductance_h=None,
+        motor_holding_torque_nm=None,
+        step_angle_deg=None,
+    )
+
+
+def pair_applications(
+    app: Application, motors: Mapping[str, Motor]
+) -> tuple[Application, dict[str, Application]]:
+    """``app`` without a motor, and driven by each library motor in turn (the library's
+    values, not any motor value typed in): what ``app.core.pairs.rank_pairs`` reads."""
+    alone = without_motor(app)
+    return alone, {mid: with_library_motor(alone, motor) for mid, motor in motors.items()}
+
+
 def unknown_motor_message(value: str, motors: Mapping[str, Motor]) -> str:
-    return f"unknown motor '{value[:100]}'; the library has {', '.join(motors)}"
+    ids = ", ".join(motors)
+    return f"unknown motor '{value[:100]}'; the library has {ids} (or '{ANY_MOTOR}')"
 
 
 def check_motor(value: str | None, motors: Mapping[str, Motor] | None) -> str | None:
     """A motor id of the library (or none): the 422 names the ids on offer. Without a
     library to hand (``motors`` None) the id is checked where the catalog is."""
-    if value is not None and motors is not None and value not in motors:
+    if value is not None and value != ANY_MOTOR and motors is not None and value not in motors:
         raise ValueError(unknown_motor_message(value, motors))
     return value

@@ -335,8 +335,8 @@ FIELDS: tuple[InputField, ...] = (
         api="motor", page="motor", core="motor", label="Library motor",
         help="A motor of the library (motors.toml; GET /api/v1/motors lists them): a "
         "stepper's pull-out curve, rotor inertia and step angle, or a servo's peak "
-        "envelope, rated torque and rotor inertia, unless given here; empty or “none” "
-        "for no motor",
+        "envelope, rated torque and rotor inertia, unless given here; “any” to rank every "
+        "screw with every library motor (GET /api/v1/pairs); empty or “none” for no motor",
         group="Motor and move", kind="text", none_word="none",
     ),
     InputField(

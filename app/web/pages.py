@@ -7,6 +7,7 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
+from app.catalog.motors import ANY_MOTOR
 from app.contract.fields import BY_PAGE, FIELDS, GROUPS
 from app.contract.form import (
     TRUE_WORDS,
@@ -20,8 +21,10 @@ from app.contract.form import (
     share_query,
     summary_rows,
 )
+from app.contract.pairs import PairRankIn
 from app.contract.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.contract.units import TORQUE_LABELS, Display
+from app.report.pairs import run_pairs
 from app.report.service import run_evaluation, run_page_selection, run_selection
 from app.server.compute import computed
 from app.server.deps import CatalogDep
@@ -109,7 +112,18 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["ranked_column"] = RANKED_COLUMN[rank_by]
         if not result.candidates:
             context["advice"] = no_pass_advice(result, units)
+        if inputs.model_dump()["motor"] == ANY_MOTOR:
+            context["pairs"] = run_pairs(inputs, catalog, PAIR_RANK.get(rank_by, "motor_margin"))
     return context
+
+
+#: The page's ranking -> the pairs' ranking: the motor's margin, the smallest motor for the
+#: smallest screw, the lowest torque; any other ranking ranks the pairs by the margin.
+PAIR_RANK: dict[str, PairRankIn] = {
+    "motor_margin": "motor_margin",
+    "size": "motor_size",
+    "torque": "torque",
+}
 
 
 def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
