@@ -105,8 +105,9 @@ def test_the_page_ranks_pairs_with_the_motor_any(client: TestClient) -> None:
     page = BeautifulSoup(r.text, "html.parser")
     rows = page.select("table.pairs tr.pair")
     assert len(rows) == 10
-    used = [float(row.select_one(".motor-use").text.strip(" %")) for row in rows]
+    used = [float(cell.text.strip(" %")) for cell in page.select("table.pairs .motor-use")]
     assert used == sorted(used)
-    assert "share of the motor used" in page.select_one("table.pairs caption").text
+    (caption,) = page.select("table.pairs caption")
+    assert "share of the motor used" in caption.text
     without = BeautifulSoup(client.get("/", params=params | {"motor": ""}).text, "html.parser")
     assert without.select("table.pairs") == []
