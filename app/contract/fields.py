@@ -29,6 +29,7 @@ from app.core.model import (
     EndFixity,
     HoldingSource,
     LoadDirection,
+    Lubrication,
     Orientation,
     RankBy,
 )
@@ -278,6 +279,13 @@ FIELDS: tuple[InputField, ...] = (
         help="Warns of nuts whose outgassing is not measured (an oiled nut loses its "
         "lubricant, a polymer outgasses) and ranks them last", group="Nut and environment",
         kind="yes-no", default=False,
+    ),
+    InputField(
+        api="lubrication", page="lubrication", core="lubrication", label="Nut lubrication",
+        help="Raises a polymer nut's permissible PV: dry x1 (the rating's own), greased "
+        "x1.5 (assumed), oiled x2 (a maker's “as much as 100 %”)",
+        group="Nut and environment", kind="choice", default="dry", options=Lubrication,
+        texts={"dry": "Dry", "greased": "Greased", "oiled": "Oiled"},
     ),
     InputField(
         api="ambient_c", page="ambient_c", core="ambient_c", label="Ambient temperature",

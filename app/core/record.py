@@ -651,8 +651,8 @@ class Candidate:
         s = self.screw
         if s.life_min_m is not None and s.life_max_m is not None:
             return Life(self.batch, self.k)
-        wear = self.batch.columns["wear_travel_m"][self.k]
-        return Life(self.batch, self.k) if math.isfinite(wear) else None
+        worn = Life(self.batch, self.k)
+        return worn if all(math.isfinite(h) for h in worn.hours) else None
 
     @once
     def accuracy(self) -> Accuracy:

@@ -46,7 +46,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SHARE_LINK_NAMES = [
     "load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length",
     "accel", "compression", "end_fixity", "require_anti_backlash", "coating", "family",
-    "nut_material", "nut_length", "oil_present", "vacuum", "ambient_c", "stroke",
+    "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
     "cycles_per_day", "required_life_years", "positioning_tolerance", "brake_torque",
     "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
     "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
