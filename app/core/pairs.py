@@ -11,14 +11,17 @@ utilisations).
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Literal
+from typing import Literal, NamedTuple
 
 import numpy as np
+from numpy.typing import NDArray
 
+from app.core.checks.base import Reach
 from app.core.index import CatalogIndex
 from app.core.model import Application, ScrewSpec
-from app.core.screening import Screening, screen_table
+from app.core.screening import screen_table
 from app.core.selection import motor_use, screen
+from app.core.table import Array, CandidateTable
 
 #: How pairs rank: the smallest share of the motor used; the smallest motor (its torque
 #: at standstill, a cost proxy), then the share used; the lowest drive torque.
@@ -50,25 +53,41 @@ class Pairs:
     pairs_passed: int
 
 
-def _motor_pairs(motor: str, app: Application, alone: Screening, index: CatalogIndex) -> list[Pair]:
-    """The pairs of ``motor`` (driving ``app``) with the screws that pass alone."""
-    rows = np.flatnonzero(alone.passed)
-    table = alone.table.take(rows)
-    s = screen_table(app, table, alone.index[rows], index.table.reach)
-    use, torque, rpm = motor_use(s), s.total_torque_nm, s.quantities.peak_rpm
-    size = app.motor_curve[0][1] if app.motor_curve else float("nan")
-    return [
-        Pair(table.screws[i], motor, float(use[i]), float(torque[i]), float(rpm[i]), size)
-        for i in np.flatnonzero(s.passed).tolist()
-    ]
+class _Found(NamedTuple):
+    """The passing pairs of every motor as arrays: the row (in the screws that pass
+    alone), the motor's position, its share used, the drive torque, the top speed."""
+
+    row: NDArray[np.intp]
+    motor: NDArray[np.intp]
+    use: Array
+    torque: Array
+    rpm: Array
 
 
-def _key(rank: PairRank, pair: Pair) -> tuple[float, ...]:
-    if rank == "motor_size":
-        return (pair.motor_size_nm, pair.motor_use, pair.torque_nm)
-    if rank == "torque":
-        return (pair.torque_nm, pair.motor_use)
-    return (pair.motor_use, pair.torque_nm)
+def _motor_pairs(
+    motor: int, app: Application, table: CandidateTable, rows: NDArray[np.intp], reach: Reach
+) -> _Found:
+    """The pairs of motor number ``motor`` (driving ``app``) with the screws of ``table``
+    (those that pass without a motor, rows ``rows`` of the catalog), as arrays."""
+    s = screen_table(app, table, rows, reach)
+    ok = np.flatnonzero(s.passed)
+    return _Found(
+        ok,
+        np.full(len(ok), motor),
+        motor_use(s)[ok],
+        s.total_torque_nm[ok],
+        s.quantities.peak_rpm[ok],
+    )
+
+
+def _order(rank: PairRank, found: _Found, size: Array) -> NDArray[np.intp]:
+    """Positions of the pairs in rank order (``np.lexsort``: the last key first)."""
+    keys = {
+        "motor_size": (found.torque, found.use, size[found.motor]),
+        "torque": (found.use, found.torque),
+        "motor_margin": (found.torque, found.use),
+    }[rank]
+    return np.lexsort(keys)
 
 
 def rank_pairs(
@@ -81,16 +100,30 @@ def rank_pairs(
     id and ``app`` driven by it; ``app`` itself has no motor. The passing pairs ranked by
     ``rank``, the first ``app.limit`` kept."""
     alone = screen(app, index)
-    found = [
-        pair
-        for motor, motor_app in motors.items()
-        for pair in _motor_pairs(motor, motor_app, alone, index)
+    passing = np.flatnonzero(alone.passed)
+    table, rows = alone.table.take(passing), alone.index[passing]
+    ids = list(motors)
+    size = np.array([m.motor_curve[0][1] if m.motor_curve else np.nan for m in motors.values()])
+    parts = [
+        _motor_pairs(k, motors[mid], table, rows, index.table.reach) for k, mid in enumerate(ids)
     ]
-    found.sort(key=lambda pair: _key(rank, pair))
+    empty = _Found(np.empty(0, np.intp), np.empty(0, np.intp), *(np.empty(0),) * 3)
+    found = _Found(*(np.concatenate(column) for column in zip(empty, *parts, strict=True)))
+    top = _order(rank, found, size)[: app.limit]
     return Pairs(
-        pairs=found[: app.limit],
+        pairs=[
+            Pair(
+                table.screws[found.row[i]],
+                ids[found.motor[i]],
+                float(found.use[i]),
+                float(found.torque[i]),
+                float(found.rpm[i]),
+                float(size[found.motor[i]]),
+            )
+            for i in top.tolist()
+        ],
         screws_eligible=len(alone.passed),
-        screws_passing_alone=int(np.count_nonzero(alone.passed)),
+        screws_passing_alone=len(passing),
         motors=len(motors),
-        pairs_passed=len(found),
+        pairs_passed=len(found.row),
     )
