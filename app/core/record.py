@@ -633,10 +633,12 @@ class Candidate:
 
     @once
     def pv(self) -> PV:
+        """The nut's PV against its permissible PV: the rating derated to the nut's
+        temperature and raised by its lubrication (``formulas.pv_derating``)."""
         q, limit = self.quantities, self.screw.pv_limit_pa_m_s
         return PV(
             value_pa_m_s=q.pv_pa_m_s,
-            limit_pa_m_s=limit,
+            limit_pa_m_s=None if limit is None else q.pv_limit_pa_m_s,
             pressure_pa=q.pressure_pa,
             surface_speed_m_s=q.surface_speed_m_s,
             contact_area_m2=q.contact_area_m2,

@@ -21,10 +21,14 @@ T_MAX = 93.0  # C
 
 
 def _pv(client: TestClient, **extra: object) -> dict:  # type: ignore[type-arg]
+    """The PV check; the candidate's PV block shows the same permissible PV."""
     body = {"application": {**AXIS, **extra}, "screw": {"catalog_id": "B8000-L10"}}
     r = client.post("/api/v1/evaluate", json=body)
     assert r.status_code == 200, r.text
-    return next(c for c in r.json()["candidate"]["checks"] if c["name"] == "pv")  # type: ignore[no-any-return]
+    candidate = r.json()["candidate"]
+    check = next(c for c in candidate["checks"] if c["name"] == "pv")
+    assert candidate["pv"]["limit_mpa_m_s"] == pytest.approx(check["limit"])
+    return check  # type: ignore[no-any-return]
 
 
 @pytest.mark.parametrize(
