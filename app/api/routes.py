@@ -8,6 +8,7 @@ from starlette.datastructures import QueryParams
 
 from app import __version__
 from app.api.query import parse_query, query_parameters
+from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
 from app.contract.schemas import (
     ApplicationIn,
     ChecksOut,
@@ -25,6 +26,7 @@ from app.contract.schemas import (
 )
 from app.contract.units import api_value
 from app.core.checks import REGISTRY
+from app.report.pairs import motors_out, run_pairs
 from app.report.present import series_dict
 from app.report.service import (
     FORMULAS_OUT,
@@ -172,6 +174,42 @@ async def compare_get(request: Request, catalog: CatalogDep) -> Response:
 
 def _compare(inputs: ApplicationIn, ids: list[str], catalog: CatalogDep) -> Response:
     return ModelJSON(run_compare(inputs, ids, catalog))
+
+
+@router.get("/motors", response_model=MotorsOut)
+async def list_motors(catalog: CatalogDep) -> MotorsOut:
+    """The motor library: each motor's datasheet values with their provenance, and the
+    curve (and a servo's continuous torque) the motor checks use."""
+    return motors_out(catalog)
+
+
+PairRankQuery = Annotated[
+    PairRankIn, Query(description=PairsQuery.model_fields["pair_rank"].description)
+]
+
+
+@router.post("/pairs", response_model=PairsOut)
+async def pairs_post(
+    inputs: ApplicationIn, catalog: CatalogDep, pair_rank: PairRankQuery = "motor_margin"
+) -> Response:
+    """Every catalog screw with every library motor for the axis in the JSON body (its
+    own motor set aside): the passing pairs, ranked."""
+    return await computed(_pairs, inputs, catalog, pair_rank)
+
+
+@router.get(
+    "/pairs",
+    response_model=PairsOut,
+    openapi_extra={"parameters": query_parameters(PairsQuery)},
+)
+async def pairs_get(request: Request, catalog: CatalogDep) -> Response:
+    """The same as POST, with the fields (and ``pair_rank``) as query parameters."""
+    query = parse_query(PairsQuery, request.query_params)
+    return await computed(_pairs, query.application(), catalog, query.pair_rank)
+
+
+def _pairs(inputs: ApplicationIn, catalog: CatalogDep, rank: PairRankIn) -> Response:
+    return ModelJSON(run_pairs(inputs, catalog, rank))
 
 
 @router.get("/formulas", response_model=FormulasOut)

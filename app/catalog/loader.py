@@ -23,7 +23,7 @@ from app.catalog.files import (
 )
 from app.catalog.groups import Groups, read_group
 from app.catalog.models import Catalog, Material, Series, Sourced
-from app.catalog.motors import MOTOR_FILE, library
+from app.catalog.motors import MOTOR_FILE, load_library
 from app.catalog.series import build_series
 from app.contract.units import to_si
 from app.core.index import CatalogIndex
@@ -141,13 +141,14 @@ def _file_default(source: CatalogFile) -> CatalogFile:
 def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
     """Load the built-in catalog and any extra directories; raise CatalogError on any fault."""
     digest = hashlib.sha256()
+    directories = catalog_dirs([resource_dir("catalog"), *map(Path, extra_dirs)])
     sources = [
         _file_default(read_file(path, digest))
-        for directory in catalog_dirs([resource_dir("catalog"), *map(Path, extra_dirs)])
+        for directory in directories
         for path in toml_files(directory)
         if path.name != MOTOR_FILE
     ]
-    library()  # the motor library is validated with the catalog
+    motors = load_library(directories, digest)
     group_files = [s for s in sources if s.name == GROUP_FILE]
     groups = Groups([read_group(s) for s in group_files])
     materials = _materials(sources)
@@ -167,4 +168,5 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         index=CatalogIndex.build(screws),
         materials=materials,
         by_id={screw.id: screw for screw in screws},
+        motors=motors,
     )

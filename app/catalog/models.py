@@ -2,10 +2,13 @@
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from app.core.index import CatalogIndex
 from app.core.model import Provenance, ScrewSpec
+
+if TYPE_CHECKING:
+    from app.catalog.motors import Motor
 
 
 @dataclass(frozen=True, slots=True)
@@ -44,7 +47,8 @@ class Series:
 
 @dataclass(frozen=True, slots=True)
 class Catalog:
-    """Every series, every expanded candidate, and the index the core's queries read."""
+    """Every series, every expanded candidate, the index the core's queries read, and the
+    motor library (``motors.toml`` of every catalog directory)."""
 
     version: str
     series: Mapping[str, Series]
@@ -52,3 +56,4 @@ class Catalog:
     index: CatalogIndex
     materials: Mapping[str, Material]
     by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)
+    motors: Mapping[str, "Motor"] = field(default_factory=dict)

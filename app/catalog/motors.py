@@ -1,16 +1,19 @@
-"""The motor library (``catalog/motors.toml``): common steppers with their datasheet
-values, each with its provenance, validated at load with the file, entry and field named.
+"""The motor library (``motors.toml`` in any catalog directory): steppers with their
+datasheet's electrical values and servos with their torque ratings, each value with its
+provenance, validated with the catalog (file, entry and field named on error) and held
+on the ``Catalog`` the app passes around.
 
 A library motor becomes the application's motor at the edge (``with_motor``, called by
-``app.contract.inputs``): its pull-out curve drawn by the stepper model at the drive voltage of
-the maker's curve, its rotor inertia and its step angle, unless the user gives those
-inputs directly; a stepper's datasheet values typed in are drawn the same way.
+``app.contract.inputs``): a stepper's pull-out curve drawn by the stepper model at the
+drive voltage of the maker's curve, its rotor inertia and step angle; a servo's peak
+envelope (the curve), its rated torque (the RMS limit) and its rotor inertia; unless the
+user gives those inputs directly. A stepper's datasheet values typed in are drawn the
+same way.
 """
 
 import hashlib
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
-from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -19,38 +22,74 @@ from app.catalog.errors import CatalogError
 from app.catalog.files import read_file
 from app.catalog.models import Sourced
 from app.contract.units import to_si
-from app.core.formulas import stepper
+from app.core.formulas import servo, stepper
 from app.core.model import Application
-from app.server.paths import resource_dir
 
 #: The library's file name; family loading skips it in every catalog directory.
 MOTOR_FILE = "motors.toml"
 SCHEMA = 1
-#: Field -> the unit its value is written in.
+#: Field -> the unit its value is written in, by motor kind.
 FIELDS = {
-    "step_angle_deg": "",
-    "holding_torque_nm": "N m",
-    "phase_current_a": "",
-    "resistance_ohm": "",
-    "inductance_mh": "mH",
-    "rotor_inertia_g_cm2": "g cm²",
-    "supply_v": "",
+    "stepper": {
+        "step_angle_deg": "",
+        "holding_torque_nm": "N m",
+        "phase_current_a": "",
+        "resistance_ohm": "",
+        "inductance_mh": "mH",
+        "rotor_inertia_g_cm2": "g cm²",
+        "supply_v": "",
+    },
+    "servo": {
+        "rated_torque_nm": "N m",
+        "peak_torque_nm": "N m",
+        "rated_rpm": "",
+        "max_rpm": "",
+        "top_speed_torque_nm": "N m",
+        "rotor_inertia_g_cm2": "g cm²",
+    },
 }
-PLAIN = frozenset({"name", "frame"})
+PLAIN = frozenset({"name", "frame", "kind"})
+#: Each field's unit as held (SI, or the datasheet's own for angles, currents, voltages
+#: and speeds): what the API and the catalog page show beside the value.
+SI_UNITS = {
+    "step_angle_deg": "deg",
+    "holding_torque_nm": "N m",
+    "phase_current_a": "A",
+    "resistance_ohm": "ohm",
+    "inductance_mh": "H",
+    "rotor_inertia_g_cm2": "kg m2",
+    "supply_v": "V",
+    "rated_torque_nm": "N m",
+    "peak_torque_nm": "N m",
+    "rated_rpm": "rpm",
+    "max_rpm": "rpm",
+    "top_speed_torque_nm": "N m",
+}
+#: The motor input that asks for every library motor: the selection runs without a
+#: motor and the screw + motor pairs are ranked (``pair_applications``).
+ANY_MOTOR = "any"
+#: Values that may be zero (a brushed DC motor's envelope falls from standstill).
+MAY_BE_ZERO = frozenset({"rated_rpm"})
 #: The stepper model's curve is drawn up to this speed [rpm]: hybrid steppers on
 #: leadscrews rarely run faster, and past it the model's 1 / n fall is unchecked.
 MAX_STEPPER_RPM = 3000.0
 
 
+class UnknownMotor(ValueError):
+    """A motor id the loaded library does not hold (a 422 on the ``motor`` field)."""
+
+
 @dataclass(frozen=True, slots=True)
 class Motor:
-    """One library motor: its name and frame, and its values in SI with provenance
-    (step angle in degrees, current in A, resistance in ohm, voltage in V)."""
+    """One library motor: its name, frame and kind ("stepper" or "servo"), and its values
+    in SI with provenance (step angle in degrees, current in A, resistance in ohm,
+    voltage in V, speeds in rpm)."""
 
     id: str
     name: str
     frame: str
     values: Mapping[str, Sourced]
+    kind: str = "stepper"
 
     def value(self, name: str) -> float:
         number: float = self.values[name].value
@@ -67,32 +106,64 @@ class Motor:
         )
 
     def curve(self) -> tuple[tuple[float, float], ...]:
-        """The pull-out curve the stepper model draws from the datasheet values."""
+        """The torque the motor gives against speed: a stepper's pull-out curve from the
+        stepper model, a servo's peak envelope from the servo model."""
+        if self.kind == "servo":
+            return servo.peak_curve(
+                self.value("peak_torque_nm"),
+                self.value("rated_rpm"),
+                self.value("max_rpm"),
+                self.value("top_speed_torque_nm"),
+            )
         holding = self.value("holding_torque_nm")
         return stepper.pull_out_curve(holding, self.corner_rpm(), MAX_STEPPER_RPM)
+
+    def continuous_torque_nm(self) -> float | None:
+        """A servo's rated (S1) torque, the limit of the cycle's RMS torque; None for a
+        stepper (its holding torque is already the curve's ceiling)."""
+        return self.value("rated_torque_nm") if self.kind == "servo" else None
+
+    def step_angle_deg(self) -> float | None:
+        return self.value("step_angle_deg") if self.kind == "stepper" else None
+
+
+def _check_servo(entry: Entry, motor: Motor) -> None:
+    """The ratings in the order a servo's datasheet implies them."""
+    if motor.value("peak_torque_nm") < motor.value("rated_torque_nm"):
+        raise entry.fail("peak_torque_nm", "below the rated torque")
+    if motor.value("top_speed_torque_nm") > motor.value("peak_torque_nm"):
+        raise entry.fail("top_speed_torque_nm", "above the peak torque")
+    if motor.value("rated_rpm") >= motor.value("max_rpm"):
+        raise entry.fail("rated_rpm", "must be below max_rpm")
 
 
 def _motor(file: str, motor_id: str, data: Any) -> Motor:
     if not isinstance(data, dict):
         raise CatalogError(file, f"motors.{motor_id}", "-", "must be a table")
     entry = Entry(file, f"motors.{motor_id}", data)
-    entry.check_known(frozenset(FIELDS) | PLAIN)
-    for name in PLAIN:
+    kind = data.get("kind", "stepper")
+    if kind not in FIELDS:
+        raise entry.fail("kind", f"must be one of {', '.join(FIELDS)}")
+    entry.check_known(frozenset(FIELDS[kind]) | PLAIN)
+    for name in PLAIN - {"kind"}:
         if not isinstance(data.get(name), str) or not data[name].strip():
             raise entry.fail(name, "missing or not text")
     values = {}
-    for name, unit in FIELDS.items():
-        value = to_si(entry.number(name), unit) if unit else entry.number(name)
-        values[name] = Sourced(value, unit, entry.prov(name))
-    motor = Motor(motor_id, data["name"], data["frame"], values)
-    if motor.corner_rpm() <= 0.0:
+    for name, unit in FIELDS[kind].items():
+        number = entry.number(name, allow_zero=name in MAY_BE_ZERO)
+        value = to_si(number, unit) if unit else number
+        values[name] = Sourced(value, SI_UNITS[name], entry.prov(name))
+    motor = Motor(motor_id, data["name"], data["frame"], values, kind)
+    if kind == "servo":
+        _check_servo(entry, motor)
+    elif motor.corner_rpm() <= 0.0:
         raise entry.fail("supply_v", "at most the winding's I R: it cannot drive the current")
     return motor
 
 
-def load_motors(path: Path) -> dict[str, Motor]:
-    """Every motor of one library file, validated."""
-    source = read_file(path, hashlib.sha256())
+def load_motors(path: Path, digest: Any = None) -> dict[str, Motor]:
+    """Every motor of one library file, validated (its bytes feed ``digest``)."""
+    source = read_file(path, digest if digest is not None else hashlib.sha256())
     if source.data.get("schema") != SCHEMA:
         raise CatalogError(source.name, "-", "schema", f"must be {SCHEMA}")
     unknown = set(source.data) - {"schema", "motors"}
@@ -104,10 +175,18 @@ def load_motors(path: Path) -> dict[str, Motor]:
     return {mid: _motor(source.name, mid, data) for mid, data in motors.items()}
 
 
-@cache
-def library() -> dict[str, Motor]:
-    """The built-in motor library, read once."""
-    return load_motors(resource_dir("catalog") / MOTOR_FILE)
+def load_library(directories: Iterable[Path], digest: Any = None) -> dict[str, Motor]:
+    """The motors of every directory's library file, ids unique across directories."""
+    out: dict[str, Motor] = {}
+    for directory in directories:
+        path = directory / MOTOR_FILE
+        if not path.exists():
+            continue
+        for mid, motor in load_motors(path, digest).items():
+            if mid in out:
+                raise CatalogError(str(path), f"motors.{mid}", "-", "duplicate motor id")
+            out[mid] = motor
+    return out
 
 
 def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
@@ -126,27 +205,68 @@ def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
     return stepper.pull_out_curve(app.motor_holding_torque_nm, corner, MAX_STEPPER_RPM)
 
 
-def with_motor(app: Application) -> Application:
-    """``app`` with its motor's curve, inertia and step angle filled in: a given curve
-    first, then one drawn from the datasheet values, then the library motor's."""
-    motor = library().get(app.motor or "")
+def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
+    """``app`` with its motor's curve, inertia, continuous torque and step angle filled
+    in: a given curve first, then one drawn from the datasheet values, then the library
+    motor's (raise UnknownMotor for an id ``motors`` lacks)."""
     curve = app.motor_curve or _datasheet_curve(app)
-    if motor is None:
+    if app.motor is None or app.motor == ANY_MOTOR:
         return replace(app, motor_curve=curve)
+    motor = motors.get(app.motor)
+    if motor is None:
+        raise UnknownMotor(unknown_motor_message(app.motor, motors))
+    return with_library_motor(replace(app, motor_curve=curve), motor)
+
+
+def with_library_motor(app: Application, motor: Motor) -> Application:
+    """``app`` driven by ``motor``, keeping any motor value the user gave."""
+    inertia = app.motor_inertia_kg_m2
+    rms = app.motor_rms_torque_nm
     return replace(
         app,
-        motor_curve=curve or motor.curve(),
-        motor_inertia_kg_m2=(
-            app.motor_inertia_kg_m2
-            if app.motor_inertia_kg_m2 is not None
-            else motor.value("rotor_inertia_g_cm2")
-        ),
-        step_angle_deg=app.step_angle_deg or motor.value("step_angle_deg"),
+        motor=motor.id,
+        motor_curve=app.motor_curve or motor.curve(),
+        motor_inertia_kg_m2=inertia if inertia is not None else motor.value("rotor_inertia_g_cm2"),
+        motor_rms_torque_nm=rms if rms is not None else motor.continuous_torque_nm(),
+        step_angle_deg=app.step_angle_deg or motor.step_angle_deg(),
     )
 
 
-def check_motor(value: str | None) -> str | None:
-    """A motor id of the library (or none): the API's 422 names the ids on offer."""
-    if value is not None and value not in library():
-        raise ValueError(f"unknown motor '{value}'; the library has {', '.join(library())}")
+def without_motor(app: Application) -> Application:
+    """``app`` with no motor: no library id, curve, rotor inertia, continuous torque,
+    datasheet values or step angle (the controller's microsteps and rate stay)."""
+    return replace(
+        app,
+        motor=None,
+        motor_curve=(),
+        motor_inertia_kg_m2=None,
+        motor_rms_torque_nm=None,
+        motor_supply_v=None,
+        motor_phase_current_a=None,
+        motor_resistance_ohm=None,
+        motor_inductance_h=None,
+        motor_holding_torque_nm=None,
+        step_angle_deg=None,
+    )
+
+
+def pair_applications(
+    app: Application, motors: Mapping[str, Motor]
+) -> tuple[Application, dict[str, Application]]:
+    """``app`` without a motor, and driven by each library motor in turn (the library's
+    values, not any motor value typed in): what ``app.core.pairs.rank_pairs`` reads."""
+    alone = without_motor(app)
+    return alone, {mid: with_library_motor(alone, motor) for mid, motor in motors.items()}
+
+
+def unknown_motor_message(value: str, motors: Mapping[str, Motor]) -> str:
+    ids = ", ".join(motors)
+    return f"unknown motor '{value[:100]}'; the library has {ids} (or '{ANY_MOTOR}')"
+
+
+def check_motor(value: str | None, motors: Mapping[str, Motor] | None) -> str | None:
+    """A motor id of the library (or none): the 422 names the ids on offer. Without a
+    library to hand (``motors`` None) the id is checked where the catalog is."""
+    if value is not None and value != ANY_MOTOR and motors is not None and value not in motors:
+        raise ValueError(unknown_motor_message(value, motors))
     return value

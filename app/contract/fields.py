@@ -22,7 +22,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal, get_args
 
-from app.catalog.motors import library
 from app.contract.units import API_SYSTEM, SWITCHED, UNITS, Quantity, from_api, label
 from app.core.model import (
     AdvicePolicy,
@@ -30,6 +29,7 @@ from app.core.model import (
     EndFixity,
     HoldingSource,
     LoadDirection,
+    Lubrication,
     Orientation,
     RankBy,
 )
@@ -281,6 +281,13 @@ FIELDS: tuple[InputField, ...] = (
         kind="yes-no", default=False,
     ),
     InputField(
+        api="lubrication", page="lubrication", core="lubrication", label="Nut lubrication",
+        help="Raises a polymer nut's permissible PV: dry x1 (the rating's own), greased "
+        "x1.5 (assumed), oiled x2 (a maker's “as much as 100 %”)",
+        group="Nut and environment", kind="choice", default="dry", options=Lubrication,
+        texts={"dry": "Dry", "greased": "Greased", "oiled": "Oiled"},
+    ),
+    InputField(
         api="ambient_c", page="ambient_c", core="ambient_c", label="Ambient temperature",
         help="Around the screw", group="Nut and environment", kind="number", default=20.0,
         bounds=(-273.15, 1000.0), dimension="temperature",
@@ -334,9 +341,10 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="motor", page="motor", core="motor", label="Library motor",
-        help="A motor of the library (catalog/motors.toml: " + ", ".join(library())
-        + "): its pull-out curve, rotor inertia and step angle unless given here; empty "
-        "or “none” for no motor",
+        help="A motor of the library (motors.toml; GET /api/v1/motors lists them): a "
+        "stepper's pull-out curve, rotor inertia and step angle, or a servo's peak "
+        "envelope, rated torque and rotor inertia, unless given here; “any” to rank every "
+        "screw with every library motor (GET /api/v1/pairs); empty or “none” for no motor",
         group="Motor and move", kind="text", none_word="none",
     ),
     InputField(

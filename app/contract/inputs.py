@@ -18,6 +18,7 @@ Text numbers (a query string, or a string in JSON) must be plain ASCII decimals
 import json
 import math
 import re
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import (
@@ -36,7 +37,7 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
-from app.catalog.motors import check_motor, with_motor
+from app.catalog.motors import Motor, check_motor, with_motor
 from app.contract.fields import BY_API, FIELDS, InputField
 from app.core.model import Application
 
@@ -321,8 +322,11 @@ class ApplicationInputs(BaseModel):
 
     @field_validator("motor", check_fields=False)
     @classmethod
-    def _known_motor(cls, value: str | None) -> str | None:
-        return check_motor(BY_API["motor"].to_si(value))
+    def _known_motor(cls, value: str | None, info: ValidationInfo) -> str | None:
+        """Checked against the library passed as validation context (the page's form);
+        the API's body is checked where the catalog is (``to_core``)."""
+        motors = (info.context or {}).get("motors") if isinstance(info.context, dict) else None
+        return check_motor(BY_API["motor"].to_si(value), motors)
 
     @field_validator("max_step_rate_hz", check_fields=False)
     @classmethod
@@ -342,11 +346,16 @@ class ApplicationInputs(BaseModel):
             check_drivable(value, *(float(v or 0.0) for v in given))
         return value
 
-    def to_core(self) -> Application:
+    def to_core(self, motors: Mapping[str, Motor]) -> Application:
         """The same application in SI for the core: each value times its ``si_factor``,
-        with the motor's curve, inertia and step angle filled in (``with_motor``)."""
-        values = {f.core: f.to_si(getattr(self, f.api)) for f in FIELDS}
-        return with_motor(Application(**values))
+        with the library motor's curve, inertia, continuous torque and step angle filled
+        in from ``motors`` (``with_motor``; UnknownMotor for an id it lacks)."""
+        return with_motor(self.axis(), motors)
+
+    def axis(self) -> Application:
+        """The application in SI as given, without a library motor's values filled in:
+        for the axis's own numbers (length, speed, a torque limit typed in)."""
+        return Application(**{f.core: f.to_si(getattr(self, f.api)) for f in FIELDS})
 
 
 if TYPE_CHECKING:

@@ -32,6 +32,7 @@ from app.contract.source import (
     check_value,
     degrees,
     joined,
+    km,
     million_cm,
 )
 from app.contract.source import (
@@ -46,9 +47,6 @@ TORQUE_NOTE = (
     "Torque of the screw assembly alone; bearings, motor shaft, moving parts and "
     "misalignment are extra (seed). The torque safety factor covers them: 1.0 by default, "
     "1.3 to 2 is common at the planning stage."
-)
-LIFE_NOTE = (
-    "Life varies with load, environment and duty cycle; longer leads generally last longer (seed)."
 )
 
 
@@ -316,11 +314,29 @@ class HoldingTorqueOut(BaseModel):
 
 
 class LifeOut(BaseModel):
+    model: Annotated[
+        Literal["rated", "wear"],
+        From("model"),
+        Field(
+            description="rated: the seed's rated travel; wear: the nut's wear by Archard's "
+            "law (an ISO or other nut the seed rates none), its band the wear rate's "
+            "published 3:1 scatter"
+        ),
+    ]
     travel_million_cm: Annotated[
         list[float], From(("travel_min_m", "travel_max_m"), via=million_cm)
     ]
+    travel_km: Annotated[list[float], From(("travel_min_m", "travel_max_m"), via=km)]
     years: Annotated[list[float] | None, From(("years_min", "years_max"))]
-    note: str = LIFE_NOTE
+    hours: Annotated[
+        list[float], From("hours"), Field(description="Hours of running at the top speed")
+    ]
+    cycles: Annotated[
+        list[float] | None,
+        From("cycles"),
+        Field(description="Cycles out and back over the stroke (with a stroke)"),
+    ]
+    note: Annotated[str, From("note")]
 
 
 class AccuracyOut(BaseModel):

@@ -68,6 +68,11 @@ def million_cm(travel_m: tuple[float, float], w: Writer) -> list[float]:
     return [from_si(t, "million cm") for t in travel_m]
 
 
+def km(travel_m: tuple[float, float], w: Writer) -> list[float]:
+    """Travel [m] in km."""
+    return [from_si(t, "km") for t in travel_m]
+
+
 def check_value(check: Any, w: Writer) -> float | None:
     """A check's demand in the API unit of its quantity (None for a yes/no check)."""
     return api_value(check.demand, check.check.quantity)[0] if check.numeric else None

@@ -16,6 +16,8 @@ LoadDirection = Literal["auto", "opposes", "fixed"]
 #: What the holding torque given is: a brake's (holds with the power off) or a motor's
 #: energised holding torque (a stepper's: holds only while the power is on).
 HoldingSource = Literal["brake", "energised"]
+#: How the nut is lubricated (its permissible PV's factor, ``formulas.pv_derating``).
+Lubrication = Literal["dry", "greased", "oiled"]
 RankBy = Literal["torque", "rms", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
@@ -101,6 +103,7 @@ class Application:
     brake_safety_factor: float | None = None
     #: The nut's length, in place of the catalog's (None: the catalog's) [m].
     nut_length_m: float | None = None
+    lubrication: Lubrication = "dry"
 
 
 @dataclass(frozen=True, slots=True)

@@ -24,6 +24,7 @@ from app.core.formulas import (
     heat,
     life,
     pv,
+    pv_derating,
     stepping,
     torque,
     wear,
@@ -115,6 +116,12 @@ class Quantities(Generic[V]):
     surface_speed_m_s: V
     contact_area_m2: V
     pv_max_load_n: V
+    #: The nut's steady temperature [C] and its permissible PV [Pa m/s]: the rating times
+    #: the temperature and lubrication factors (``formulas.pv_derating``)
+    nut_temperature_c: V
+    pv_temperature_factor: V
+    pv_lubrication_factor: V
+    pv_limit_pa_m_s: V
     pv_max_speed_m_s: V
     #: The nut's engaged flanks: their area (L / P) pi d2 H1 (NaN without a thread pitch),
     #: their sliding speed (the helix at d2; NaN without d2), the contact pressure the nut
@@ -280,11 +287,34 @@ def _finite(values: Array) -> Array:
     return np.where(np.isfinite(values), values, np.nan)
 
 
-def _nut(app: Application, t: CandidateTable, force_n: float, rpm: Array) -> dict[str, Any]:
-    """PV of the nut (seed, three threads in contact) and its limits inverted, at the peak
-    thrust ``force_n``: an accelerating segment ends at the top speed still carrying m a."""
+def _pv_limit(app: Application, t: CandidateTable, rise_k: Array) -> dict[str, Any]:
+    """The nut's permissible PV at its steady temperature (ambient plus the heat
+    balance's rise; the ambient where the balance has no nut length to work with, and
+    ``nut_temperature_c`` NaN there) and lubrication: the rating times the temperature
+    factor (``pv_derating.temperature_factor``, as arrays; 1 where the material's
+    highest temperature is unknown) times the lubrication factor."""
+    nut_c = app.ambient_c + rise_k
+    judged_c = np.where(np.isnan(nut_c), app.ambient_c, nut_c)
+    span = t.temperature_max_c - pv_derating.REFERENCE_C
+    with np.errstate(invalid="ignore", divide="ignore"):
+        share = np.clip((t.temperature_max_c - judged_c) / span, 0.0, 1.0)
+    temperature = np.where(np.isfinite(share) & (span > 0), share, 1.0)
+    lubrication = pv_derating.LUBRICATION_FACTORS[app.lubrication][0]
+    return {
+        "nut_temperature_c": nut_c,
+        "pv_temperature_factor": temperature,
+        "pv_lubrication_factor": np.full(len(t), lubrication),
+        "pv_limit_pa_m_s": t.pv_limit_pa_m_s * temperature * lubrication,
+    }
+
+
+def _nut(
+    app: Application, t: CandidateTable, force_n: float, rpm: Array, limit: Array
+) -> dict[str, Any]:
+    """PV of the nut (seed, three threads in contact) and its limits inverted at the
+    permissible PV ``limit``, at the peak thrust ``force_n``: an accelerating segment ends
+    at the top speed still carrying m a."""
     area = pv.contact_area(t.helix_travel_m, t.thread_depth_m)
-    limit = t.pv_limit_pa_m_s
     return {
         "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m),
         "pressure_pa": np.broadcast_to(pv.contact_pressure(force_n, area), rpm.shape),
@@ -458,11 +488,12 @@ def _values(
         "rpm": rpm,
         **torques,
         **_column_limits(app, t, peak_n),
-        **_nut(app, t, peak_n, rpm),
+        **(heated := _heat(app, t, force_n)),
+        **(limits := _pv_limit(app, t, heated["nut_temperature_rise_k"])),
+        **_nut(app, t, peak_n, rpm, limits["pv_limit_pa_m_s"]),
         **(flanks := _flanks(app, t, rpm)),
         **_duty(app, t),
         **_wear(app, t, force_n, flanks["flank_area_m2"]),
-        **_heat(app, t, force_n),
         **(holding := _holding(app, t, motion.steady_load(app))),
         **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),
         **_controller(app, t, motor["peak_rpm"]),

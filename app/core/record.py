@@ -21,6 +21,7 @@ from numpy.typing import NDArray
 from app.core import motion
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
+from app.core.checks.wear_life import life_band
 from app.core.formulas import critical_speed
 from app.core.model import (
     PV,
@@ -403,26 +404,81 @@ class CriticalSpeed(Section):
         return self.app.end_fixity
 
 
+#: What each life model's numbers rest on.
+LIFE_NOTES = {
+    "rated": "Rated travel (seed). Life varies with load, environment and duty cycle; "
+    "longer leads generally last longer (seed).",
+    "wear": "Wear life by Archard's law at the running thrust: the nut travel until its "
+    "flanks wear the allowed depth, at the high and the low end of the nut material's "
+    "assumed wear rate (3:1 either way of its value; published rates scatter 2-3:1). "
+    "Lubrication, heat and dirt move it further.",
+}
+
+
 class Life(Section):
-    """The rated travel [m] and, with a stroke and a duty, the life in years."""
+    """The nut's life as a band [m of travel] and, with a stroke and a duty, in years,
+    with the model it comes from: the seed's rated travel ("rated") or, for a nut the
+    seed gives none, the nut's wear by Archard's law over the wear rate's published
+    scatter ("wear"; ``app.core.checks.wear_life``). Also in hours of running at the
+    top speed and, with a stroke, in cycles (out and back)."""
 
     __slots__ = ()
 
     @property
+    def model(self) -> Literal["rated", "wear"]:
+        return "rated" if self.screw.life_min_m is not None else "wear"
+
+    @property
+    def note(self) -> str:
+        """Which model the numbers come from, and how far to trust them."""
+        return LIFE_NOTES[self.model]
+
+    def _band(self, name: str) -> tuple[float, float]:
+        """A wear quantity at the high and the low end of the wear rate's range."""
+        value = float(self.batch.columns[name][self.k])
+        low, high = life_band(self.screw)
+        return value * low, value * high
+
+    @property
+    def travel_m(self) -> tuple[float, float]:
+        if self.model == "rated":
+            return cast(float, self.screw.life_min_m), cast(float, self.screw.life_max_m)
+        return self._band("wear_travel_m")
+
+    @property
     def travel_min_m(self) -> float:
-        return cast(float, self.screw.life_min_m)
+        return self.travel_m[0]
 
     @property
     def travel_max_m(self) -> float:
-        return cast(float, self.screw.life_max_m)
+        return self.travel_m[1]
 
     @property
     def years_min(self) -> float | None:
+        if self.model == "wear":
+            return number(self._band("wear_life_years")[0])
         return number(self.batch.columns["life_years_min"][self.k])
 
     @property
     def years_max(self) -> float | None:
+        if self.model == "wear":
+            return number(self._band("wear_life_years")[1])
         return number(self.batch.columns["life_years_max"][self.k])
+
+    @property
+    def hours(self) -> tuple[float, float]:
+        """Hours of running at the top speed until the travel is done."""
+        low, high = self.travel_m
+        return low / self.app.speed_m_s / 3600.0, high / self.app.speed_m_s / 3600.0
+
+    @property
+    def cycles(self) -> tuple[float, float] | None:
+        """Cycles (out and back over the stroke) until the travel is done."""
+        stroke = self.app.stroke_m
+        if not stroke:
+            return None
+        low, high = self.travel_m
+        return low / (2.0 * stroke), high / (2.0 * stroke)
 
 
 class Candidate:
@@ -583,10 +639,12 @@ class Candidate:
 
     @once
     def pv(self) -> PV:
+        """The nut's PV against its permissible PV: the rating derated to the nut's
+        temperature and raised by its lubrication (``formulas.pv_derating``)."""
         q, limit = self.quantities, self.screw.pv_limit_pa_m_s
         return PV(
             value_pa_m_s=q.pv_pa_m_s,
-            limit_pa_m_s=limit,
+            limit_pa_m_s=None if limit is None else q.pv_limit_pa_m_s,
             pressure_pa=q.pressure_pa,
             surface_speed_m_s=q.surface_speed_m_s,
             contact_area_m2=q.contact_area_m2,
@@ -596,9 +654,13 @@ class Candidate:
 
     @once
     def life(self) -> Life | None:
-        """The rated life; None for a nut without a rating."""
+        """The rated life, else the wear life; None for a nut with neither (no rating,
+        no wear rate, or no thrust to wear it)."""
         s = self.screw
-        return None if s.life_min_m is None or s.life_max_m is None else Life(self.batch, self.k)
+        if s.life_min_m is not None and s.life_max_m is not None:
+            return Life(self.batch, self.k)
+        worn = Life(self.batch, self.k)
+        return worn if all(math.isfinite(h) for h in worn.hours) else None
 
     @once
     def accuracy(self) -> Accuracy:

@@ -11,6 +11,8 @@ from fastapi.responses import Response
 from fastapi.routing import APIRoute
 from starlette.exceptions import HTTPException
 
+from app.catalog.motors import UnknownMotor
+
 
 class AppError(Exception):
     def __init__(self, status: int, error: str, detail: list[dict[str, str]] | None = None):
@@ -59,6 +61,10 @@ class ApiRoute(APIRoute):
         async def route(request: Request) -> Response:
             try:
                 return await handler(request)
+            except UnknownMotor as exc:
+                raise AppError(
+                    422, "invalid input", [{"field": "motor", "message": str(exc)}]
+                ) from exc
             except HTTPException as exc:
                 if exc.status_code != 400:
                     raise

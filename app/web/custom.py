@@ -46,7 +46,7 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
     """The selector's critical-speed, PV and torque charts for one evaluated screw; PV only
     when the nut has a PV limit."""
     c, d = out.candidate, Display(units)
-    app = out.inputs.to_core()
+    app = out.inputs.axis()
     length_mm, _ = api_value(app.length_m, "length")
     speed_mm_s, _ = api_value(app.speed_m_s, "speed")
     figures = {"critical_speed": critical_speed_figure([c], length_mm, d)}
@@ -84,7 +84,7 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     values = context["values"]
     if not _started(values):
         return context
-    inputs, app_errors = parse_inputs(values, context["units"])
+    inputs, app_errors = parse_inputs(values, context["units"], catalog.motors)
     screw, screw_errors = parse_screw(values)
     context["errors"] = {**app_errors, **screw_errors}
     if inputs is None or screw is None:

@@ -417,7 +417,7 @@ def result_figures(
     if not candidates:
         return {}
     d = Display(units)
-    app = result.inputs.to_core()
+    app = result.inputs.to_core(catalog.motors) if catalog else result.inputs.axis()
     length_mm, _ = api_value(app.length_m, "length")
     speed_mm_s, _ = api_value(app.speed_m_s, "speed")
     figures = {

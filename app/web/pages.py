@@ -8,6 +8,7 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
+from app.catalog.motors import ANY_MOTOR
 from app.contract.fields import BY_PAGE, FIELDS, GROUPS
 from app.contract.form import (
     TRUE_WORDS,
@@ -21,8 +22,10 @@ from app.contract.form import (
     share_query,
     summary_rows,
 )
+from app.contract.pairs import PairRankIn
 from app.contract.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.contract.units import TORQUE_LABELS, Display
+from app.report.pairs import run_pairs
 from app.report.service import (
     BadIds,
     compare_ids,
@@ -105,7 +108,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
     units, values = context["units"], context["values"]
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
-    inputs, context["errors"] = parse_inputs(values, units)
+    inputs, context["errors"] = parse_inputs(values, units, catalog.motors)
     if inputs is not None:
         result, rejected = run_page_selection(inputs, catalog, units)
         context["result"], context["rejected"] = result, rejected
@@ -121,7 +124,18 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["ranked_column"] = RANKED_COLUMN[rank_by]
         if not result.candidates:
             context["advice"] = no_pass_advice(result, units)
+        if inputs.model_dump()["motor"] == ANY_MOTOR:
+            context["pairs"] = run_pairs(inputs, catalog, PAIR_RANK.get(rank_by, "motor_margin"))
     return context
+
+
+#: The page's ranking -> the pairs' ranking: the motor's margin, the smallest motor for the
+#: smallest screw, the lowest torque; any other ranking ranks the pairs by the margin.
+PAIR_RANK: dict[str, PairRankIn] = {
+    "motor_margin": "motor_margin",
+    "size": "motor_size",
+    "torque": "torque",
+}
 
 
 def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:
@@ -174,10 +188,12 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
     return response
 
 
-def _link_inputs(params: Mapping[str, str]) -> tuple[ApplicationIn, dict[str, str]]:
+def _link_inputs(
+    params: Mapping[str, str], catalog: Catalog
+) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
     units, values, _, _ = form_state(params)
-    inputs, errors = parse_inputs(values, units)
+    inputs, errors = parse_inputs(values, units, catalog.motors)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
         raise AppError(422, "invalid input", detail)
@@ -208,7 +224,7 @@ def _candidate(
 async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
-    inputs, units = _link_inputs(request.query_params)
+    inputs, units = _link_inputs(request.query_params, catalog)
     c = _candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
     try_query = catalog_screw_query(catalog.by_id[c.id])
@@ -232,7 +248,7 @@ async def compare(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _compare_page(request: Request, catalog: Catalog) -> Response:
-    inputs, units = _link_inputs(request.query_params)
+    inputs, units = _link_inputs(request.query_params, catalog)
     query = share_query(inputs, units)
     context: dict[str, Any] = {"d": Display(units), "query": query, "candidates": []}
     try:
@@ -256,7 +272,7 @@ async def export_csv(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _export_csv(request: Request, catalog: Catalog) -> Response:
-    inputs, units = _link_inputs(request.query_params)
+    inputs, units = _link_inputs(request.query_params, catalog)
     body = results_csv(run_selection(inputs, catalog, units, view="csv"), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
@@ -268,7 +284,7 @@ async def export_json(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _export_json(request: Request, catalog: Catalog) -> Response:
-    inputs, _ = _link_inputs(request.query_params)
+    inputs, _ = _link_inputs(request.query_params, catalog)
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 
 

@@ -238,9 +238,11 @@ def max_utilization(candidate: dict[str, Any]) -> float:
 
 
 def rated_life(candidate: dict[str, Any]) -> float:
-    """Low end of the rated travel life [million cm]; unrated series count as 0."""
+    """Low end of the rated travel life [million cm]; unrated series (no life, or a wear
+    life) count as 0."""
     life = candidate["life"]
-    return 0.0 if life is None else float(life["travel_million_cm"][0])
+    rated = life is not None and life["model"] == "rated"
+    return float(life["travel_million_cm"][0]) if rated else 0.0
 
 
 _selections: dict[str, Any] = {}
@@ -457,6 +459,7 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
         "microsteps": 1,
         "load_direction": "auto",
         "holding_source": "brake",
+        "lubrication": "dry",
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)

@@ -8,6 +8,7 @@ from fastapi.testclient import TestClient
 
 from app.contract.form import parse_inputs, parse_units, share_query
 from app.contract.inputs import ApplicationIn
+from tests.motor_library import MOTORS
 
 #: A printer's Z axis (Tr8x8(P2), 12 mm/s) with a stepper on a 4 kHz controller.
 Z_AXIS = {
@@ -30,7 +31,7 @@ def test_controller_inputs_round_trip_through_a_share_link() -> None:
     assert params["step_angle"] == "1.8" and params["microsteps"] == "16"
     parsed, errors = parse_inputs(params, parse_units(params))
     assert errors == {} and parsed is not None
-    core = parsed.to_core()
+    core = parsed.to_core(MOTORS)
     assert (core.step_angle_deg, core.microsteps, core.max_step_rate_hz) == (1.8, 16, 4000.0)
 
 

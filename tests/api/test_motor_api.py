@@ -7,6 +7,7 @@ from fastapi.testclient import TestClient
 
 from app.contract.form import parse_inputs, parse_units, share_query
 from app.contract.inputs import ApplicationIn
+from tests.motor_library import MOTORS
 
 BASE = {"load_n": 50.0, "speed_mm_s": 100.0, "length_mm": 500.0, "stroke_mm": 200.0}
 
@@ -17,14 +18,14 @@ def test_curve_round_trips_through_a_share_link() -> None:
     assert params["motor_curve"] == "0:0.5,3000:0.2"
     parsed, errors = parse_inputs(params, parse_units(params))
     assert errors == {} and parsed is not None
-    assert parsed.to_core().motor_curve == ((0.0, 0.5), (3000.0, 0.2))
+    assert parsed.to_core(MOTORS).motor_curve == ((0.0, 0.5), (3000.0, 0.2))
 
 
 def test_page_reads_lines_of_rpm_and_torque() -> None:
     params = {"load": "50", "speed": "100", "length": "500", "motor_curve": "0 0.5\n3000 0.2"}
     parsed, errors = parse_inputs(params, parse_units(params))
     assert errors == {} and parsed is not None
-    assert parsed.to_core().motor_curve == ((0.0, 0.5), (3000.0, 0.2))
+    assert parsed.to_core(MOTORS).motor_curve == ((0.0, 0.5), (3000.0, 0.2))
 
 
 @pytest.mark.parametrize(

@@ -10,10 +10,11 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog, CatalogError
-from app.catalog.motors import library, load_motors
+from app.catalog.motors import load_motors
 from app.contract.form import parse_inputs, parse_units, share_query
 from app.contract.inputs import ApplicationIn
 from app.core.evaluate import evaluate
+from tests.motor_library import MOTORS
 
 BASE = {"load_n": 20.0, "speed_mm_s": 12.0, "length_mm": 350.0, "stroke_mm": 200.0}
 
@@ -64,8 +65,8 @@ def _checks(candidate: dict[str, object]) -> dict[str, dict[str, object]]:
 
 
 def test_a_library_motor_gives_curve_inertia_and_step_angle() -> None:
-    core = ApplicationIn.model_validate({**BASE, "motor": "17hs19-2004s1"}).to_core()
-    motor = library()["17hs19-2004s1"]
+    core = ApplicationIn.model_validate({**BASE, "motor": "17hs19-2004s1"}).to_core(MOTORS)
+    motor = MOTORS["17hs19-2004s1"]
     assert core.motor_curve == motor.curve()
     assert core.motor_inertia_kg_m2 == pytest.approx(82e-7)
     assert core.step_angle_deg == 1.8
@@ -74,7 +75,7 @@ def test_a_library_motor_gives_curve_inertia_and_step_angle() -> None:
 def test_given_values_win_over_the_library() -> None:
     curve = [[0.0, 0.3], [1000.0, 0.1]]
     data = {**BASE, "motor": "17hs19-2004s1", "motor_curve": curve, "step_angle_deg": 0.9}
-    core = ApplicationIn.model_validate({**data, "motor_inertia_kg_m2": 1e-5}).to_core()
+    core = ApplicationIn.model_validate({**data, "motor_inertia_kg_m2": 1e-5}).to_core(MOTORS)
     assert core.motor_curve == ((0.0, 0.3), (1000.0, 0.1))
     assert (core.motor_inertia_kg_m2, core.step_angle_deg) == (1e-5, 0.9)
 
@@ -89,9 +90,9 @@ def test_datasheet_values_draw_the_pull_out_curve() -> None:
         "motor_inductance_mh": 3.0,
         "motor_holding_torque_nm": 0.59,
     }
-    core = ApplicationIn.model_validate({**BASE, **typed}).to_core()
+    core = ApplicationIn.model_validate({**BASE, **typed}).to_core(MOTORS)
     drawn = [x for point in core.motor_curve for x in point]
-    listed = [x for point in library()["17hs19-2004s1"].curve() for x in point]
+    listed = [x for point in MOTORS["17hs19-2004s1"].curve() for x in point]
     assert drawn == pytest.approx(listed)
 
 
@@ -101,7 +102,7 @@ def test_the_motor_round_trips_through_a_share_link() -> None:
     assert params["motor"] == "pololu-1205"
     parsed, errors = parse_inputs(params, parse_units(params))
     assert errors == {} and parsed is not None
-    assert parsed.to_core().motor_curve == library()["pololu-1205"].curve()
+    assert parsed.to_core(MOTORS).motor_curve == MOTORS["pololu-1205"].curve()
 
 
 @pytest.mark.parametrize(
@@ -138,7 +139,7 @@ def test_the_inertia_ratio_is_advice(catalog: Catalog) -> None:
     5.07e-5 kg m^2 plus the screw's own, against the NEMA 11's 9 g cm^2 rotor: far above
     10, a warning, not a rejection."""
     params = {**BASE, "moving_mass_kg": 20.0, "motor": "pololu-1205"}
-    app = ApplicationIn.model_validate(params).to_core()
+    app = ApplicationIn.model_validate(params).to_core(MOTORS)
     result = evaluate(app, catalog.by_id["Tr24x10(P5)-bronze"])
     ratio = next(c for c in result.checks if c.name == "inertia_ratio")
     assert ratio.kind == "advice" and not ratio.passed

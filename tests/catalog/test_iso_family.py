@@ -18,6 +18,7 @@ from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.robustness import at_values, robustness
 from app.core.selection import select
+from tests.motor_library import MOTORS
 
 ROOT = Path(__file__).resolve().parents[2]
 ISO_DIR = ROOT / "catalog" / "iso-trapezoidal"
@@ -225,7 +226,7 @@ def test_family_and_nut_material_survive_a_share_link() -> None:
     assert params["family"] == "TR-C45,B" and params["nut_material"] == "acetal"
     parsed, errors = parse_inputs(params, parse_units(params))
     assert errors == {} and parsed is not None
-    core = parsed.to_core()
+    core = parsed.to_core(MOTORS)
     assert core.families == ("TR-C45", "B") and core.nut_material == "acetal"
 
 

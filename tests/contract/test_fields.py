@@ -23,7 +23,6 @@ from pydantic import BaseModel, ValidationError
 
 import app.contract.schemas
 from app.catalog import Catalog
-from app.catalog.motors import library
 from app.contract.fields import BY_API, BY_PAGE, FIELDS, GROUPS, InputField
 from app.contract.form import (
     link_number,
@@ -38,6 +37,7 @@ from app.contract.units import DEFAULT_UNITS, FORCE_UNITS, LENGTH_UNITS, TORQUE_
 from app.core.model import Application
 from app.report.service import run_selection
 from app.web.export import results_csv
+from tests.motor_library import MOTORS
 
 ROOT = Path(__file__).resolve().parents[2]
 #: page names of today's share links, in the form's order (the order of thought: what
@@ -46,7 +46,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SHARE_LINK_NAMES = [
     "load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length",
     "accel", "compression", "end_fixity", "require_anti_backlash", "coating", "family",
-    "nut_material", "nut_length", "oil_present", "vacuum", "ambient_c", "stroke",
+    "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
     "cycles_per_day", "required_life_years", "positioning_tolerance", "brake_torque",
     "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
     "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
@@ -146,7 +146,7 @@ def test_choice_texts_must_match_the_literal() -> None:
 
 def test_every_default_round_trips_to_the_core() -> None:
     """Defaults through ApplicationIn and to_core equal the core's own defaults in SI."""
-    core = ApplicationIn.model_validate(REQUIRED).to_core()
+    core = ApplicationIn.model_validate(REQUIRED).to_core(MOTORS)
     core_defaults = {f.name: f.default for f in dataclasses.fields(Application)}
     for field in FIELDS:
         if field.required:
@@ -158,7 +158,7 @@ def test_every_default_round_trips_to_the_core() -> None:
 
 def test_to_core_converts_api_units_to_si() -> None:
     data = {**REQUIRED, "lead_mm": 10.0, "accel_mm_s2": 2000.0, "stroke_mm": 300.0}
-    core = ApplicationIn.model_validate({**data, "positioning_tolerance_mm": 0.05}).to_core()
+    core = ApplicationIn.model_validate({**data, "positioning_tolerance_mm": 0.05}).to_core(MOTORS)
     assert (core.load_n, core.speed_m_s, core.length_m) == pytest.approx((100.0, 0.05, 0.5))
     assert (core.lead_m, core.accel_m_s2, core.stroke_m) == pytest.approx((0.01, 2.0, 0.3))
     assert core.positioning_tolerance_m == pytest.approx(5e-5)
@@ -168,7 +168,9 @@ def test_required_life_needs_the_duty() -> None:
     with pytest.raises(ValueError, match="needs stroke_mm and cycles_per_day"):
         ApplicationIn.model_validate({**REQUIRED, "required_life_years": 3})
     duty = {"stroke_mm": 100, "cycles_per_day": 10, "required_life_years": 3}
-    assert ApplicationIn.model_validate({**REQUIRED, **duty}).to_core().required_life_years == 3
+    assert (
+        ApplicationIn.model_validate({**REQUIRED, **duty}).to_core(MOTORS).required_life_years == 3
+    )
 
 
 # --- the page form ----------------------------------------------------------------------
@@ -238,7 +240,7 @@ def _value(field: InputField) -> st.SearchStrategy[Any]:
     if field.kind == "choice":
         return st.sampled_from([choice.value for choice in field.choices])
     if field.api == "motor":
-        return st.none() | st.sampled_from(sorted(library()))
+        return st.none() | st.sampled_from(sorted(MOTORS))
     if field.kind == "text":
         return st.none() | st.sampled_from(["bronze", "acetal", "PTFE-filled polymer"])
     if field.kind == "list":

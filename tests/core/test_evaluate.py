@@ -111,12 +111,14 @@ def test_a_column_that_buckles_in_compression_is_fine_in_tension(zbx8000_l10: Sc
     assert "buckling" in {c.name for c in evaluate(horizontal, zbx8000_l10).failed_checks}
 
 
-def test_life_only_for_rated_series(b8000_l10: ScrewSpec, zbx8000_l10: ScrewSpec) -> None:
-    """Seed life table: B series N/A; ZBX8000 100-150 million cm (uncoated)."""
+def test_rated_life_for_rated_series(b8000_l10: ScrewSpec, zbx8000_l10: ScrewSpec) -> None:
+    """Seed life table: B series N/A (its life is the nut's wear life instead); ZBX8000
+    100-150 million cm (uncoated)."""
     app = light_app(stroke_m=0.1, cycles_per_day=100.0)
-    assert evaluate(app, b8000_l10).life is None
+    worn = evaluate(app, b8000_l10).life
+    assert worn is not None and worn.model == "wear"
     rated = evaluate(app, zbx8000_l10).life
-    assert rated is not None
+    assert rated is not None and rated.model == "rated"
     assert (rated.travel_min_m, rated.travel_max_m) == pytest.approx((1.0e6, 1.5e6))
     assert rated.years_min == pytest.approx(137.0, rel=1e-3)
 

@@ -25,7 +25,11 @@ def test_select_equals_evaluating_everything(catalog: Catalog, rank_by: str) -> 
     key = {
         "torque": lambda e: (e.torque.total_nm, e.max_utilization),
         "margin": lambda e: (e.max_utilization, e.torque.total_nm),
-        "life": lambda e: (-(e.life.travel_min_m if e.life else 0.0), e.torque.total_nm),
+        # the seed's rated life; a wear life (model "wear") ranks with the unrated
+        "life": lambda e: (
+            -(e.life.travel_min_m if e.life and e.life.model == "rated" else 0.0),
+            e.torque.total_nm,
+        ),
         "size": lambda e: (e.screw.outer_diameter_m, e.torque.total_nm),
     }[rank_by]
     expected = [e.screw.id for e in sorted(passing, key=key)][:100]

@@ -4,9 +4,10 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from app.catalog.motors import MAX_STEPPER_RPM, library
+from app.catalog.motors import MAX_STEPPER_RPM
 from app.contract.inputs import _curve_points
 from app.core.formulas import stepper
+from tests.motor_library import MOTORS
 
 
 def test_farnell_corner_speed() -> None:
@@ -41,11 +42,11 @@ def test_above_the_corner_the_power_is_constant(rpm: float, corner: float) -> No
         assert torque * rpm == pytest.approx(0.5 * corner)
 
 
-@pytest.mark.parametrize("motor_id", sorted(library()))
+@pytest.mark.parametrize("motor_id", sorted(m.id for m in MOTORS.values() if m.kind == "stepper"))
 def test_every_library_curve_is_a_valid_motor_curve(motor_id: str) -> None:
     """Each library motor draws a curve the motor_curve input accepts: from its holding
     torque at standstill to the model's last speed, rpm ascending, torque falling."""
-    motor = library()[motor_id]
+    motor = MOTORS[motor_id]
     curve = motor.curve()
     assert _curve_points(list(curve)) == list(curve)
     assert curve[0] == (0.0, motor.value("holding_torque_nm"))
@@ -57,6 +58,19 @@ def test_every_library_curve_is_a_valid_motor_curve(motor_id: str) -> None:
 def test_the_17hs19_curve_at_24_v() -> None:
     """17HS19-2004S1 (0.59 N m, 2 A, 1.4 ohm, 3 mH) on 24 V: corner 530 rpm; at
     1060 rpm half the holding torque, 0.295 N m."""
-    motor = library()["17hs19-2004s1"]
+    motor = MOTORS["17hs19-2004s1"]
     assert motor.corner_rpm() == pytest.approx(530.0)
     assert stepper.pull_out_torque(1060.0, 0.59, motor.corner_rpm()) == pytest.approx(0.295)
+
+
+@pytest.mark.parametrize("motor_id", sorted(m.id for m in MOTORS.values() if m.kind == "servo"))
+def test_every_library_servo_draws_a_valid_peak_envelope(motor_id: str) -> None:
+    """A servo's curve is its peak envelope: the peak torque at standstill, the torque at
+    its top speed last, accepted by the motor_curve input, never rising."""
+    motor = MOTORS[motor_id]
+    curve = motor.curve()
+    assert _curve_points(list(curve)) == list(curve)
+    assert curve[0] == (0.0, motor.value("peak_torque_nm"))
+    assert curve[-1] == (motor.value("max_rpm"), motor.value("top_speed_torque_nm"))
+    torques = [t for _, t in curve]
+    assert torques == sorted(torques, reverse=True)

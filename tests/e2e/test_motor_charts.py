@@ -29,3 +29,29 @@ def test_motor_curve_and_move_charts(
     page.locator(".chart-motor").screenshot(path=str(artifacts / "motor-chart-1280.png"))
     page.locator(".chart-move").screenshot(path=str(artifacts / "move-chart-1280.png"))
     assert console_errors == []
+
+
+def test_a_library_servo_and_then_any_motor_on_the_page(
+    page: Any, live_server: str, artifacts: Path, console_errors: list[str]
+) -> None:
+    """Typing a library servo (the Pittman 14204S004) draws its peak envelope and fills
+    the motor's share column; typing "any" ranks the screw + motor pairs, the share of the
+    motor used ascending, and the share link carries it."""
+    page.goto(f"{live_server}/?{AXIS}&rank_by=motor_margin")
+    page.wait_for_selector("table.candidates tbody.candidate")
+    page.fill("#f-motor", "pittman-14204s004")
+    page.locator("#f-motor").dispatch_event("input")
+    page.wait_for_url("**motor=pittman-14204s004**")
+    page.wait_for_selector("#chart-motor .main-svg")
+    page.wait_for_selector("tbody.candidate .motor-use")
+    page.fill("#f-motor", "any")
+    page.locator("#f-motor").dispatch_event("input")
+    page.wait_for_url("**motor=any**")
+    page.wait_for_selector("table.pairs tr.pair")
+    used = [
+        float(text.strip(" %"))
+        for text in page.locator("table.pairs .motor-use").all_text_contents()
+    ]
+    assert len(used) == 10 and used == sorted(used)
+    page.locator("table.pairs").screenshot(path=str(artifacts / "motor-pairs-1280.png"))
+    assert console_errors == []

@@ -17,6 +17,7 @@ from app.contract.schemas import VIEWS, ApplicationIn, CandidateOut, CandidateSu
 from app.core.evaluate import evaluate
 from app.report.service import run_selection
 from app.web.export import results_csv
+from tests.motor_library import MOTORS
 
 AXIS = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}
 #: A move of 300 mm with 5 kg accelerated at 2 m/s^2: every candidate has a motion.
@@ -61,7 +62,7 @@ def test_the_compact_select_gives_the_catalog_nut_material(
 def test_motor_peak_and_rms_torque_are_the_cores(
     client: TestClient, catalog: Catalog, params: dict[str, Any]
 ) -> None:
-    app = ApplicationIn.model_validate(params).to_core()
+    app = ApplicationIn.model_validate(params).to_core(MOTORS)
     for c in _compact(client, params):
         row = catalog.index.row(catalog.index.positions[c["id"]])
         motion = evaluate(app, row, catalog.index.table.reach).motion
@@ -119,7 +120,7 @@ def test_the_table_shows_the_cores_peak_rms_and_motor_use_in_the_display_unit(
     page = BeautifulSoup(client.get("/", params=MOTOR_PAGE).text, "html.parser")
     app = ApplicationIn.model_validate(
         {**MOVE, "max_torque_nm": 56.6 * OZ_IN, "rank_by": "motor_margin"}
-    ).to_core()
+    ).to_core(MOTORS)
     rows = page.select("tbody.candidate")
     assert rows
     used = []
@@ -187,7 +188,7 @@ def test_the_compact_select_gives_the_peak_torque_and_the_motor_use(
     client: TestClient, catalog: Catalog
 ) -> None:
     motor_nm = 0.4
-    app = ApplicationIn.model_validate({**MOVE, "max_torque_nm": motor_nm}).to_core()
+    app = ApplicationIn.model_validate({**MOVE, "max_torque_nm": motor_nm}).to_core(MOTORS)
     for c in _compact(client, {**MOVE, "max_torque_nm": motor_nm}):
         record = evaluate(app, catalog.index.row(catalog.index.positions[c["id"]]))
         assert c["torque"]["peak_motor_nm"] == record.quantities.peak_torque_nm

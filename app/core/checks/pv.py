@@ -1,5 +1,7 @@
 """PV of the nut (contact pressure times sliding speed) against the nut material's limit."""
 
+import math
+
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -24,16 +26,21 @@ class NutPV(Check):
     description = (
         "A plastic nut heats and wears with pressure times sliding speed; above its PV "
         "limit it fails early. Judged at the peak thrust (an accelerating segment reaches "
-        "the top speed still carrying m a) and the top speed."
+        "the top speed still carrying m a) and the top speed. The limit is the nut's "
+        "rating derated to its steady temperature from the heat balance, times a factor "
+        "for its lubrication."
     )
     quantity = "pv"
-    formula = "PV = F_peak / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut"
-    source = "seed catalog, PV Calculation (three threads in contact)"
+    formula = "PV = F_peak / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut * f_T * f_lub"
+    source = (
+        "seed catalog, PV Calculation (three threads in contact); PV derated with the nut "
+        "temperature (formulas.pv_derating)"
+    )
     sources = ("pv_limit", "root_diameter", "outer_diameter")
     capacity_sources = ("pv_limit",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(t.pv_limit_pa_m_s), q.pv_pa_m_s, t.pv_limit_pa_m_s)
+        return Measure(where_given(t.pv_limit_pa_m_s), q.pv_pa_m_s, q.pv_limit_pa_m_s)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -44,13 +51,25 @@ class NutPV(Check):
             "h": t.thread_depth_m,
             "n": q.rpm,
             "PV_nut": t.pv_limit_pa_m_s,
+            "f_T": q.pv_temperature_factor,
+            "f_lub": q.pv_lubrication_factor,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        known = not math.isnan(r.nut_temperature_c)
+        where = "the nut's {temp}" if known else "the ambient {temp} (no heat balance for this nut)"
         return Phrase(
-            "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}.",
-            {"pv": Amount(r.pv_pa_m_s, "pv"), "limit": Amount(s.pv_limit_pa_m_s or 0.0, "pv")},
+            "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}: its rating "
+            "{rating} times {f_t} at " + where + " and {f_lub} for its lubrication.",
+            {
+                "pv": Amount(r.pv_pa_m_s, "pv"),
+                "limit": Amount(r.pv_limit_pa_m_s, "pv"),
+                "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
+                "f_t": f"{r.pv_temperature_factor:.2f}",
+                "temp": Amount(r.nut_temperature_c if known else app.ambient_c, "temperature"),
+                "f_lub": f"{r.pv_lubrication_factor:.2f}",
+            },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:

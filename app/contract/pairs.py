@@ -1,0 +1,100 @@
+"""What the motor library and the screw + motor pairs look like at the edge: the
+library's motors with every value's provenance, and the ranked pairs."""
+
+from typing import Any, Literal
+
+from pydantic import BaseModel, Field, ValidationInfo, field_validator
+
+from app.contract.inputs import ApplicationIn
+from app.contract.schemas import SourcedOut
+
+PairRankIn = Literal["motor_margin", "motor_size", "torque"]
+#: What each pair ranking sorts by, in words (the API's ``ranked_by`` and the page).
+PAIR_RANKS: dict[str, str] = {
+    "motor_margin": "the share of the motor used (lowest first)",
+    "motor_size": "the motor's standstill torque, a cost proxy (smallest first), then "
+    "the share used",
+    "torque": "the peak drive torque (lowest first)",
+}
+
+
+class MotorOut(BaseModel):
+    id: str
+    name: str
+    frame: str
+    kind: Literal["stepper", "servo"]
+    values: dict[str, SourcedOut] = Field(
+        description="Each datasheet value in SI (angles in deg, speeds in rpm) with its "
+        "provenance; a stepper's curve is drawn by the stepper model, a servo's by the "
+        "servo model (GET /api/v1/formulas)"
+    )
+    curve: list[tuple[float, float]] = Field(
+        description="The torque-speed curve the checks use: (rpm, N m) points"
+    )
+    continuous_torque_nm: float | None = Field(
+        description="A servo's rated torque, the RMS limit; none for a stepper"
+    )
+
+
+class MotorsOut(BaseModel):
+    catalog_version: str
+    motors: list[MotorOut]
+
+
+class PairOut(BaseModel):
+    screw_id: str
+    series: str
+    motor: str
+    motor_name: str
+    motor_kind: Literal["stepper", "servo"]
+    frame: str
+    motor_use: float = Field(
+        description="The largest share of the motor used over its torque, curve, RMS and "
+        "speed checks (0-1; 1 - motor_use is the margin)"
+    )
+    torque_nm: float = Field(description="Peak drive torque with the motor's rotor [N m]")
+    peak_rpm: float = Field(description="The screw's top speed in the move [rpm]")
+    motor_size_nm: float = Field(description="The motor's standstill torque [N m]")
+    ranked_value: float = Field(description="The number the pairs are ranked by")
+    ranked_unit: str
+
+
+class PairsOut(BaseModel):
+    inputs: ApplicationIn
+    rank: PairRankIn
+    ranked_by: str
+    catalog_version: str
+    screws_eligible: int
+    screws_passing_alone: int = Field(
+        description="Screws passing every check without a motor: only these are paired"
+    )
+    motors: int
+    pairs_passed: int
+    pairs: list[PairOut]
+
+
+class PairsQuery(ApplicationIn):
+    """The GET pairs' query: the application's fields and the ranking of the pairs."""
+
+    pair_rank: PairRankIn = Field(
+        "motor_margin",
+        description="motor_margin (default): "
+        + PAIR_RANKS["motor_margin"]
+        + "; motor_size: "
+        + PAIR_RANKS["motor_size"]
+        + "; torque: "
+        + PAIR_RANKS["torque"],
+    )
+
+    @field_validator("*")
+    @classmethod
+    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
+        """The application's fields as ``ApplicationIn`` checks them; ``pair_rank`` as is."""
+        if info.field_name == "pair_rank":
+            return value
+        return super()._needs(value, info)
+
+    def application(self) -> ApplicationIn:
+        """The application's fields alone, as the body of a POST would give them."""
+        values = {name: getattr(self, name) for name in ApplicationIn.model_fields}
+        return ApplicationIn.model_construct(self.model_fields_set - {"pair_rank"}, **values)

@@ -1,0 +1,85 @@
+"""The motor library and the screw + motor pairs as the API and the page show them."""
+
+from typing import Any
+
+from app.catalog import Catalog
+from app.catalog.motors import Motor, pair_applications
+from app.contract.inputs import ApplicationIn
+from app.contract.pairs import PAIR_RANKS, MotorOut, MotorsOut, PairRankIn, PairsOut
+from app.core.pairs import Pair, rank_pairs
+
+
+def motor_out(motor: Motor) -> MotorOut:
+    values = {
+        name: {
+            "value": v.value,
+            "unit": v.unit,
+            "provenance": {"kind": v.provenance.kind, "source": v.provenance.source},
+        }
+        for name, v in motor.values.items()
+    }
+    return MotorOut.model_validate(
+        {
+            "id": motor.id,
+            "name": motor.name,
+            "frame": motor.frame,
+            "kind": motor.kind,
+            "values": values,
+            "curve": list(motor.curve()),
+            "continuous_torque_nm": motor.continuous_torque_nm(),
+        }
+    )
+
+
+def motors_out(catalog: Catalog) -> MotorsOut:
+    return MotorsOut(
+        catalog_version=catalog.version,
+        motors=[motor_out(m) for m in catalog.motors.values()],
+    )
+
+
+def _ranked(rank: PairRankIn, pair: Pair) -> tuple[float, str]:
+    if rank == "motor_size":
+        return pair.motor_size_nm, "N m"
+    if rank == "torque":
+        return pair.torque_nm, "N m"
+    return pair.motor_use, ""
+
+
+def _pair_out(pair: Pair, rank: PairRankIn, catalog: Catalog) -> dict[str, Any]:
+    motor = catalog.motors[pair.motor]
+    value, unit = _ranked(rank, pair)
+    return {
+        "screw_id": pair.screw.id,
+        "series": pair.screw.series_name,
+        "motor": motor.id,
+        "motor_name": motor.name,
+        "motor_kind": motor.kind,
+        "frame": motor.frame,
+        "motor_use": pair.motor_use,
+        "torque_nm": pair.torque_nm,
+        "peak_rpm": pair.peak_rpm,
+        "motor_size_nm": pair.motor_size_nm,
+        "ranked_value": value,
+        "ranked_unit": unit,
+    }
+
+
+def run_pairs(inputs: ApplicationIn, catalog: Catalog, rank: PairRankIn) -> PairsOut:
+    """Every eligible catalog screw with every library motor for the axis of ``inputs``
+    (any motor given there is set aside), the passing pairs ranked by ``rank``."""
+    alone, motors = pair_applications(inputs.axis(), catalog.motors)
+    found = rank_pairs(alone, motors, catalog.index, rank)
+    return PairsOut.model_validate(
+        {
+            "inputs": inputs,
+            "rank": rank,
+            "ranked_by": PAIR_RANKS[rank],
+            "catalog_version": catalog.version,
+            "screws_eligible": found.screws_eligible,
+            "screws_passing_alone": found.screws_passing_alone,
+            "motors": found.motors,
+            "pairs_passed": found.pairs_passed,
+            "pairs": [_pair_out(p, rank, catalog) for p in found.pairs],
+        }
+    )

@@ -1,0 +1,113 @@
+"""Screw + motor pairs over the whole library (GET/POST /api/v1/pairs, and the page with
+the motor "any"): the screws screened once without a motor, then each motor over the
+screws that pass; the same answer as selecting with each motor in turn, ranked by the
+number shown."""
+
+import pytest
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+#: A light axis at constant speed (no move given: the top speed is held), every screw.
+AXIS = {"load_n": 20.0, "speed_mm_s": 50.0, "length_mm": 350.0, "limit": 100}
+
+
+def _pairs(client: TestClient, **extra: object) -> dict:  # type: ignore[type-arg]
+    r = client.get("/api/v1/pairs", params={**AXIS, **extra})
+    assert r.status_code == 200, r.text
+    return r.json()  # type: ignore[no-any-return]
+
+
+def test_the_pairs_are_the_selections_with_each_motor(client: TestClient) -> None:
+    """Screening once and pairing the survivors gives exactly what selecting with each
+    library motor in turn gives: as many passing pairs as the selections pass in all."""
+    body = _pairs(client)
+    motors = [m["id"] for m in client.get("/api/v1/motors").json()["motors"]]
+    assert body["motors"] == len(motors) == 9
+    passed = 0
+    for motor in motors:
+        r = client.get("/api/v1/select", params={**AXIS, "motor": motor, "limit": 1})
+        passed += r.json()["counts"]["passed"]
+    assert body["pairs_passed"] == passed
+
+
+def test_a_pair_shows_the_selection_s_motor_use(client: TestClient) -> None:
+    """The first pair's motor use is the select endpoint's for that screw and motor."""
+    first = _pairs(client)["pairs"][0]
+    r = client.get("/api/v1/select", params={**AXIS, "motor": first["motor"]})
+    candidate = next(c for c in r.json()["candidates"] if c["id"] == first["screw_id"])
+    assert first["motor_use"] == pytest.approx(candidate["motor_use"])
+
+
+def test_a_servo_pair_s_motor_use_by_hand(client: TestClient) -> None:
+    """Pittman 14201S003 at n rpm: its peak envelope gives 0.44 x (1 - n / 4230) N m and
+    it is drawn to 3547 rpm, so a pair's motor use is max(T / (0.44 (1 - n / 4230)),
+    n / 3547) (no stroke: no RMS check; no torque limit given)."""
+    found = _pairs(client, lead_mm=2.0)["pairs"]
+    pairs = [p for p in found if p["motor"] == "pittman-14201s003"]
+    assert pairs
+    for p in pairs:
+        n, torque = p["peak_rpm"], p["torque_nm"]
+        by_hand = max(torque / (0.44 * (1 - n / 4230.0)), n / 3547.0)
+        assert p["motor_use"] == pytest.approx(by_hand, rel=2e-4)
+
+
+@pytest.mark.parametrize(
+    ("rank", "field"),
+    [("motor_margin", "motor_use"), ("motor_size", "motor_size_nm"), ("torque", "torque_nm")],
+)
+def test_the_pairs_rank_by_the_number_they_show(client: TestClient, rank: str, field: str) -> None:
+    body = _pairs(client, pair_rank=rank)
+    values = [p[field] for p in body["pairs"]]
+    assert values == sorted(values)
+    assert [p["ranked_value"] for p in body["pairs"]] == values
+    assert body["rank"] == rank and body["ranked_by"]
+
+
+def test_the_smallest_motor_ranks_first_by_size(client: TestClient) -> None:
+    """The SS2421-5041 holds 0.083 N m, the least of the library (the NEMA 11 0.095):
+    ranked by motor size, its pairs come first."""
+    first = _pairs(client, pair_rank="motor_size")["pairs"][0]
+    assert first["motor"] == "ss2421-5041" and first["motor_size_nm"] == pytest.approx(0.083)
+
+
+def test_post_and_get_agree_and_a_typed_motor_is_set_aside(client: TestClient) -> None:
+    got = _pairs(client, motor="pololu-1205")
+    r = client.post("/api/v1/pairs", json={**AXIS, "motor": "pololu-1205"})
+    assert r.status_code == 200
+    assert r.json()["pairs"] == got["pairs"]
+    assert got["motors"] == 9
+
+
+def test_a_bad_rank_is_a_field_level_422(client: TestClient) -> None:
+    r = client.get("/api/v1/pairs", params={**AXIS, "pair_rank": "cheapest"})
+    assert r.status_code == 422
+    assert r.json()["detail"][0]["field"] == "pair_rank"
+
+
+def test_the_library_lists_every_value_with_provenance(client: TestClient) -> None:
+    motors = client.get("/api/v1/motors").json()["motors"]
+    servo = next(m for m in motors if m["id"] == "pittman-14204s004")
+    assert servo["kind"] == "servo" and servo["continuous_torque_nm"] == pytest.approx(0.18)
+    assert servo["values"]["rotor_inertia_g_cm2"]["value"] == pytest.approx(2.6e-5)
+    assert servo["values"]["rotor_inertia_g_cm2"]["unit"] == "kg m2"
+    assert servo["curve"] == [[0.0, 1.4], [3226.0, 0.18]]
+    for motor in motors:
+        for value in motor["values"].values():
+            assert value["provenance"]["kind"] in ("vendor", "derived", "assumed")
+
+
+def test_the_page_ranks_pairs_with_the_motor_any(client: TestClient) -> None:
+    """The form with "any" as the motor shows the pairs table under the results, ranked
+    by the share of the motor used when the page ranks by the motor's margin."""
+    params = {"load": "20", "speed": "50", "length": "350", "motor": "any"}
+    r = client.get("/", params={**params, "rank_by": "motor_margin"})
+    assert r.status_code == 200
+    page = BeautifulSoup(r.text, "html.parser")
+    rows = page.select("table.pairs tr.pair")
+    assert len(rows) == 10
+    used = [float(cell.text.strip(" %")) for cell in page.select("table.pairs .motor-use")]
+    assert used == sorted(used)
+    (caption,) = page.select("table.pairs caption")
+    assert "share of the motor used" in caption.text
+    without = BeautifulSoup(client.get("/", params=params | {"motor": ""}).text, "html.parser")
+    assert without.select("table.pairs") == []
