@@ -56,11 +56,11 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
     return figures
 
 
-def _base_context(params: Mapping[str, str]) -> dict[str, Any]:
+def _base_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """The form's state before any evaluation: the selector's form context without the
     catalog-only inputs, plus the screw's own fields."""
     return {
-        **form_context(params),
+        **form_context(params, catalog),
         "fields": {page: f for page, f in BY_PAGE.items() if not f.catalog_only},
         "screw_fields": SCREW_FIELDS,
         "material_fields": MATERIAL_FIELDS,
@@ -80,7 +80,7 @@ def _started(values: Mapping[str, str]) -> bool:
 
 def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query; evaluate the screw once the form is filled in and valid."""
-    context = _base_context(params)
+    context = _base_context(params, catalog)
     values = context["values"]
     if not _started(values):
         return context

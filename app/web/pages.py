@@ -68,11 +68,13 @@ def form_state(
     return units, values, converted_fields(entered, units), typed
 
 
-def form_context(params: Mapping[str, str]) -> dict[str, Any]:
+def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """What every page with the application form renders before any result: the typed
-    values and units, the field table and its groups, no result yet."""
+    values and units, the field table and its groups, the choices a text field suggests
+    (the library's motors), no result yet."""
     units, values, converted, typed = form_state(params)
     return {
+        "suggestions": {"motor": motor_suggestions(catalog)},
         "typed": typed,
         "units": units,
         "values": values,
@@ -95,9 +97,15 @@ def form_context(params: Mapping[str, str]) -> dict[str, Any]:
     }
 
 
+def motor_suggestions(catalog: Catalog) -> list[tuple[str, str]]:
+    """The motor field's suggestions: each library motor's id with its name, then "any"."""
+    motors = [(motor_id, motor.name) for motor_id, motor in catalog.motors.items()]
+    return [*motors, ("any", "every library motor: rank the screw + motor pairs")]
+
+
 def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query, run the selection when the form was filled in."""
-    context = form_context(params)
+    context = form_context(params, catalog)
     context.update(
         rejected_groups=[],
         check_label=check_label,

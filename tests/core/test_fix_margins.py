@@ -59,6 +59,10 @@ def fixed_utilizations(
             result = next(c for c in evaluate(app, screw).checks if c.name == name)
             assert result.fix is not None
             amount = result.fix.values.get(key)
+            if amount is None and name == "pv" and not result.capacity:
+                # derated to nothing at the nut's temperature: no figure to offer
+                assert "no PV left" in render(result.fix)
+                continue
             assert isinstance(amount, Amount), (name, render(result.fix))
             if amount.value <= 0.0 and key not in result.fix.template:
                 continue  # no such length exists, and the sentence offers none

@@ -39,6 +39,8 @@ def test_a_library_servo_and_then_any_motor_on_the_page(
     motor used ascending, and the share link carries it."""
     page.goto(f"{live_server}/?{AXIS}&rank_by=motor_margin")
     page.wait_for_selector("table.candidates tbody.candidate")
+    page.evaluate("() => document.querySelector('details.advanced').open = true")
+    page.click("details.group:has(#f-motor) > summary")
     page.fill("#f-motor", "pittman-14204s004")
     page.locator("#f-motor").dispatch_event("input")
     page.wait_for_url("**motor=pittman-14204s004**")

@@ -24,7 +24,7 @@ def _best_after(link: str, catalog: Catalog) -> float:
     units = parse_units(values)
     inputs, errors = parse_inputs(values, units)
     assert inputs is not None, errors
-    s = screen(inputs.to_core(), catalog.index)
+    s = screen(inputs.to_core(catalog.motors), catalog.index)
     return float(s.max_utilization[s.passed].min()) if np.any(s.passed) else float("inf")
 
 

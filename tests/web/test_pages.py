@@ -796,3 +796,13 @@ def test_moving_mass_follows_the_force_unit(client: TestClient) -> None:
     field = page.select_one("#f-moving_mass_kg")
     assert field is not None and float(str(field["value"])) == pytest.approx(22.05, abs=0.01)
     assert "lb" in page.select_one("#w-moving_mass_kg label").text
+
+
+def test_the_motor_field_suggests_every_library_motor_and_any(
+    client: TestClient, catalog: Catalog
+) -> None:
+    page = soup(client.get("/", params=AXIS))
+    field = page.select_one("#f-motor")
+    options = page.select(f"datalist#{field['list']} option")
+    assert [o["value"] for o in options] == [*catalog.motors, "any"]
+    assert [o.text for o in options[:-1]] == [m.name for m in catalog.motors.values()]

@@ -57,8 +57,11 @@ class NutPV(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
-        known = not math.isnan(r.nut_temperature_c)
-        where = "the nut's {temp}" if known else "the ambient {temp} (no heat balance for this nut)"
+        where = (
+            "the ambient {temp} (no heat balance for this nut)"
+            if math.isnan(r.nut_temperature_c)
+            else "the nut's {temp}"
+        )
         return Phrase(
             "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}: its rating "
             "{rating} times {f_t} at " + where + " and {f_lub} for its lubrication.",
@@ -67,12 +70,18 @@ class NutPV(Check):
                 "limit": Amount(r.pv_limit_pa_m_s, "pv"),
                 "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
                 "f_t": f"{r.pv_temperature_factor:.2f}",
-                "temp": Amount(r.nut_temperature_c if known else app.ambient_c, "temperature"),
+                "temp": Amount(_judged_c(app, r), "temperature"),
                 "f_lub": f"{r.pv_lubrication_factor:.2f}",
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        if not r.pv_limit_pa_m_s > 0:  # derated to nothing: no load or speed is within it
+            return Phrase(
+                "At {temp} the nut has no PV left (its material's highest temperature): "
+                "choose a nut material rated hotter, or cool or lubricate the nut.",
+                {"temp": Amount(_judged_c(app, r), "temperature")},
+            )
         return Phrase(
             "At this speed the load may be at most {load}; at this load the speed may be at "
             "most {speed}." + MARGIN_NOTE,
@@ -85,4 +94,12 @@ class NutPV(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
+        if not r.pv_limit_pa_m_s > 0:
+            return {}
         return {**load_input(app, r.pv_max_load_n), "speed_m_s": r.pv_max_speed_m_s}
+
+
+def _judged_c(app: Application, r: Quantities[float]) -> float:
+    """The temperature the limit was derated at [C]: the nut's from the heat balance, or
+    the ambient where there is none."""
+    return app.ambient_c if math.isnan(r.nut_temperature_c) else r.nut_temperature_c
