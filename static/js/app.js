@@ -143,7 +143,7 @@
     }
   }
 
-  var PRINT_LAYOUT = { width: 345, height: 250, "font.size": 8 };
+  var PRINT_FONT_SIZE = 8;
   var SCREEN_LAYOUT = { width: null, height: null, autosize: true, "font.size": 12 };
 
   function eachChart(action) {
@@ -181,11 +181,24 @@
     }
   }
 
+  // called once the print stylesheet applies, so each chart is drawn at its printed box's
+  // size (a fixed print width overflowed the narrower printed boxes and was clipped)
   function sizeForPrint() {
-    dateReport();
     eachChart(function (chart) {
-      window.Plotly.relayout(chart, PRINT_LAYOUT);
+      window.Plotly.relayout(chart, {
+        width: chart.clientWidth,
+        height: chart.clientHeight,
+        "font.size": PRINT_FONT_SIZE,
+      });
     });
+  }
+
+  function onPrintMedia(event) {
+    if (event.matches) {
+      sizeForPrint();
+    } else {
+      sizeForScreen();
+    }
   }
 
   function sizeForScreen() {
@@ -206,6 +219,6 @@
   document.addEventListener("htmx:beforeSwap", keepStaleResults);
   document.addEventListener("htmx:beforeRequest", markLoading);
   document.addEventListener("htmx:afterRequest", markLoading);
-  window.addEventListener("beforeprint", sizeForPrint);
-  window.addEventListener("afterprint", sizeForScreen);
+  window.addEventListener("beforeprint", dateReport);
+  window.matchMedia("print").addEventListener("change", onPrintMedia);
 })();
