@@ -5,9 +5,14 @@ of a result. Every input's page name, display quantity, kind and default come fr
 field table (``app.contract.fields``); this module maps the form to and from the API's
 ``ApplicationIn``, so the page and the API validate the same model. Numbers typed on the
 page are read by the API's own rule (``app.contract.inputs.NUMBER_TEXT``): the page accepts
-exactly the number texts the API's query string accepts.
+every number text the API's query string accepts, to the same value, and also the ways
+engineers write numbers by hand (``read_number``): a decimal comma ('20,5') and, in
+imperial, fractions ('5/16', '1 1/4', '1-1/4'). The API keeps to JSON numbers and ASCII
+decimals: a spreadsheet or script writes those, and a comma in a query string is ambiguous.
 """
 
+import math
+import re
 from collections.abc import Mapping
 from decimal import Decimal, localcontext
 from fractions import Fraction
@@ -49,6 +54,18 @@ PLAIN_MESSAGES = {
     "int_from_float": "Enter a whole number.",
     "finite_number": "Enter a finite number.",
 }
+#: a fraction as engineers write one: '5/16', '1 1/4', '1-1/4', signed, at most 20 digits
+#: a part (enough for any fraction of a unit; longer text is a mistake, not a measure).
+FRACTION = re.compile(r"([+-]?)(?:([0-9]{1,20})(?: +|-))?([0-9]{1,20})/([0-9]{1,20})")
+#: a decimal comma in place of the point: '20,5', ',5', '-0,125', '1,5e3'.
+DECIMAL_COMMA = re.compile(r"[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?")
+#: '1,234' or '12,500': a thousands separator to some readers, a decimal comma to others.
+THOUSANDS = re.compile(r"[+-]?[1-9][0-9]{0,2}(?:,[0-9]{3})+")
+ZERO_DENOMINATOR = "A fraction's denominator cannot be 0."
+AMBIGUOUS_COMMA = (
+    "Ambiguous: {text} reads as {point} with a decimal comma and as {whole} with a "
+    "thousands separator; write {point} or {whole}."
+)
 TRUE_WORDS = {"1", "true", "on", "yes"}
 #: figures enough for any decimal to read back to the float it was written from (17 are
 #: enough for a float; the display unit's factor takes one more).
@@ -61,16 +78,59 @@ PAGE_NUMBER: TypeAdapter[float] = TypeAdapter(
 )
 
 
-def read_number(text: str) -> tuple[float | None, str]:
-    """(the number, '') for number text the API accepts, else (None, the page's message).
+def _fraction(match: re.Match[str]) -> tuple[Fraction | None, str]:
+    """The exact value of a matched fraction ('-1 1/4': -5/4), or (None, the message)."""
+    sign, whole, numerator, denominator = match.groups()
+    if int(denominator) == 0:
+        return None, ZERO_DENOMINATOR
+    value = int(whole or 0) + Fraction(int(numerator), int(denominator))
+    return (-value if sign == "-" else value), ""
 
-    >>> read_number(" 1e3"), read_number("1_000"), read_number("1e400")
-    ((1000.0, ''), (None, 'Enter a number.'), (None, 'Enter a finite number.'))
+
+def read_exact(text: str) -> tuple[Fraction | float | None, str]:
+    """(the exact value, '') of a number text the page accepts, else (None, the message).
+
+    The API's ASCII decimals are read exactly (a float past ``EXPONENT_REACH``, which no
+    input's bounds allow); a decimal comma as the point ('20,5'), except where it could be
+    a thousands separator ('1,234'); a fraction or mixed number ('5/16', '1 1/4', '1-1/4').
+    Every accepted value is a finite float.
+
+    >>> read_exact("20,5"), read_exact("1-1/4"), read_exact("1/0")[1]
+    ((Fraction(41, 2), ''), (Fraction(5, 4), ''), "A fraction's denominator cannot be 0.")
     """
+    text = text.strip(" \t\n\r\f\v")
+    fraction = FRACTION.fullmatch(text)
+    if fraction is not None:
+        value, error = _fraction(fraction)
+        if value is not None and not math.isfinite(float(value)):
+            return None, PLAIN_MESSAGES["finite_number"]
+        return value, error
+    if THOUSANDS.fullmatch(text):
+        point, whole = text.replace(",", ".", 1), text.replace(",", "")
+        if text.count(",") == 1:
+            return None, AMBIGUOUS_COMMA.format(text=text, point=point, whole=whole)
+        return None, f"Write {whole} without the thousands separators."
+    if DECIMAL_COMMA.fullmatch(text):
+        text = text.replace(",", ".")
     try:
-        return PAGE_NUMBER.validate_python(text), ""
+        number = PAGE_NUMBER.validate_python(text)
     except ValidationError as exc:
         return None, PLAIN_MESSAGES.get(exc.errors()[0]["type"], "Enter a number.")
+    decimal = Decimal(text)
+    if not -EXPONENT_REACH <= decimal.adjusted() <= EXPONENT_REACH:
+        return number, ""
+    return Fraction(decimal), ""
+
+
+def read_number(text: str) -> tuple[float | None, str]:
+    """(the number, '') for number text the page accepts (``read_exact``), else (None, the
+    page's message).
+
+    >>> read_number(" 1e3"), read_number("1_000"), read_number("1e400"), read_number("5/16")
+    ((1000.0, ''), (None, 'Enter a number.'), (None, 'Enter a finite number.'), (0.3125, ''))
+    """
+    value, error = read_exact(text)
+    return (None, error) if value is None else (float(value), "")
 
 
 def parse_units(params: Mapping[str, str]) -> dict[str, str]:
@@ -306,18 +366,22 @@ def _factor(field: InputField, units: Mapping[str, str]) -> Fraction:
 
 
 def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
-    """The API value of finite number ``text`` typed in ``field``'s display unit: the
-    decimal times the unit's factor, rounded once, so that every API value has a text
-    that reads back to it exactly (``link_number``). A decimal beyond any float's reach
-    (``1e-99999999``) is read as a float, without its exact value.
+    """The API value of number ``text`` the page accepts (``read_exact``), typed in
+    ``field``'s display unit: the exact number times the unit's factor, rounded once, so
+    that every API value has a text that reads back to it exactly (``link_number``). A
+    decimal beyond any float's reach (``1e-99999999``) is read as a float, without its
+    exact value.
 
-    >>> page_value(BY_PAGE["length"], "3937.0078", {**DEFAULT_UNITS, "length_unit": "in"})
-    99999.99812
+    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
+    >>> page_value(BY_PAGE["length"], "3937.0078", inch), page_value(BY_PAGE["lead"], "5/16", inch)
+    (99999.99812, 7.9375)
     """
-    number = Decimal(text.strip())
-    if not -EXPONENT_REACH <= number.adjusted() <= EXPONENT_REACH:
-        return float(number)
-    return float(Fraction(number) * _factor(field, units))
+    number, error = read_exact(text)
+    if number is None:
+        raise ValueError(error)
+    if isinstance(number, float):
+        return number
+    return float(number * _factor(field, units))
 
 
 def _trimmed(text: str) -> str:
