@@ -202,6 +202,7 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
         "c": c,
         "d": Display(units),
         "query": query,
+        "report_query": query,
         "try_url": f"/custom?{try_query}&{query}",
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"

@@ -73,7 +73,7 @@
   }
 
   function revealCopyButtons() {
-    document.querySelectorAll("button.copy-link[hidden]").forEach(function (button) {
+    document.querySelectorAll("button.copy-link[hidden], button.print-report[hidden]").forEach(function (button) {
       button.hidden = false;
     });
   }
@@ -117,6 +117,10 @@
   }
 
   function onClick(event) {
+    if (event.target.closest("button.print-report")) {
+      window.print();
+      return;
+    }
     var button = event.target.closest("button.copy-link");
     if (button) {
       onCopy(button);
