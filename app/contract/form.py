@@ -22,7 +22,7 @@ from urllib.parse import urlencode
 from pydantic import Field, TypeAdapter, ValidationError
 
 from app.contract.fields import BY_API, BY_PAGE, FIELDS, InputField
-from app.contract.inputs import NUMBER_TEXT, ApplicationIn
+from app.contract.inputs import NUMBER_TEXT, ApplicationIn, curve_type
 from app.contract.units import (
     DEFAULT_UNITS,
     FORCE_UNITS,
@@ -122,6 +122,12 @@ def read_exact(text: str) -> tuple[Fraction | float | None, str]:
     return Fraction(decimal), ""
 
 
+#: a curve's points (rpm, N m) as the model reads and checks them.
+CURVE: TypeAdapter[list[tuple[float, float]]] = TypeAdapter(
+    curve_type(next(f for f in FIELDS if f.kind == "curve"))
+)
+
+
 def read_number(text: str) -> tuple[float | None, str]:
     """(the number, '') for number text the page accepts (``read_exact``), else (None, the
     page's message).
@@ -148,6 +154,8 @@ def _api_value(field: InputField, raw: str, units: dict[str, str]) -> tuple[Any,
     """
     if field.kind == "yes-no":
         return raw.lower() in TRUE_WORDS, ""
+    if field.kind == "curve":
+        return curve_to_api(raw, units), ""
     if field.kind != "number":
         return raw, ""
     number, error = read_number(raw)
@@ -196,7 +204,7 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
     ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"})
     ... # doctest: +NORMALIZE_WHITESPACE
     ['load', 'moving_mass_kg', 'brake_torque', 'detent_torque', 'max_torque',
-     'motor_rms_torque', 'motor_holding_torque']
+     'motor_rms_torque', 'motor_inertia', 'motor_holding_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
     return [field.page for field in FIELDS if field.quantity in changed]
@@ -269,6 +277,8 @@ def convert_entered(
     values, typed = dict(params), {}
     for field in FIELDS:
         raw = params.get(field.page, "").strip()
+        if field.kind == "curve" and raw and entered["torque_unit"] != units["torque_unit"]:
+            values[field.page] = convert_curve(raw, entered, units)
         if field.quantity is None or not raw or read_number(raw)[0] is None:
             continue
         key = unit_key(field.quantity)
@@ -295,6 +305,8 @@ def value_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
         return "true" if value else "false"
     if isinstance(value, int | float):
         return f"{field.display_value(value, units):.6g}"
+    if field.kind == "curve" and value:
+        return curve_text(value, units)
     return str(value)
 
 
@@ -392,6 +404,21 @@ def _trimmed(text: str) -> str:
     return mantissa + e + exponent
 
 
+def _decimal_text(value: float, factor: Fraction) -> str:
+    """``value`` over ``factor`` as the decimal with the fewest figures (6 at least) that
+    reads back, times ``factor`` rounded once, to exactly ``value``."""
+    if factor == 1:  # the shortest text that reads back to the float is its repr
+        return _trimmed(repr(value))
+    exact = Fraction(value) / factor
+    with localcontext(prec=LINK_DIGITS):
+        shown = Decimal(exact.numerator) / Decimal(exact.denominator)
+    for digits in range(6, LINK_DIGITS):
+        text = _trimmed(f"{shown:.{digits}g}")
+        if float(Fraction(Decimal(text)) * factor) == value:
+            break
+    return text
+
+
 def link_number(field: InputField, value: float, units: Mapping[str, str]) -> str:
     """A number of a link in display units, with the fewest figures (6 at least) that the
     page reads back (``page_value``) to exactly ``value``.
@@ -400,18 +427,54 @@ def link_number(field: InputField, value: float, units: Mapping[str, str]) -> st
     >>> link_number(BY_PAGE["length"], 100000.0, inch), link_number(BY_PAGE["load"], 100.4824, {})
     ('3937.007874015748', '100.4824')
     """
-    units = {**DEFAULT_UNITS, **units}
-    factor = _factor(field, units)
-    if factor == 1:  # the shortest text that reads back to the float is its repr
-        return _trimmed(repr(value))
-    exact = Fraction(value) / factor
-    with localcontext(prec=LINK_DIGITS):
-        shown = Decimal(exact.numerator) / Decimal(exact.denominator)
-    for digits in range(6, LINK_DIGITS):
-        text = _trimmed(f"{shown:.{digits}g}")
-        if page_value(field, text, units) == value:
-            break
-    return text
+    return _decimal_text(value, _factor(field, {**DEFAULT_UNITS, **units}))
+
+
+def _torque_factor(units: Mapping[str, str]) -> Fraction:
+    """The exact factor from the display torque unit to N m (a curve's torques)."""
+    return Fraction(repr(to_api(1.0, "torque", {**DEFAULT_UNITS, **units})))
+
+
+def curve_to_api(text: str, units: Mapping[str, str]) -> Any:
+    """A curve typed on the page, torques in the display unit, as the API's points (rpm,
+    N m), each torque its exact product rounded once; text the model refuses is passed
+    as typed, so that its message names the point.
+
+    >>> curve_to_api("0:16,3000:8", {"torque_unit": "oz_in"})
+    [[0.0, 0.1129848290276167], [3000.0, 0.05649241451380835]]
+    """
+    factor = _torque_factor(units)
+    if factor == 1:
+        return text
+    try:
+        points = CURVE.validate_python(text)
+    except ValidationError:
+        return text
+    return [[rpm, float(Fraction(repr(torque)) * factor)] for rpm, torque in points]
+
+
+def curve_text(value: Any, units: Mapping[str, str]) -> str:
+    """The API's curve (pairs, or its 'rpm:torque,...' text) with torques in the display
+    unit, each the shortest decimal that reads back to the API's torque exactly.
+
+    >>> curve_text("0:0.1129848290276167,3000:0.05649241451380835", {"torque_unit": "oz_in"})
+    '0:16,3000:8'
+    """
+    factor = _torque_factor(units)
+    points = CURVE.validate_python(value)
+    return ",".join(f"{rpm:.12g}:{_decimal_text(torque, factor)}" for rpm, torque in points)
+
+
+def convert_curve(text: str, source: Mapping[str, str], target: Mapping[str, str]) -> str:
+    """A curve typed with torques in ``source``'s unit re-expressed in ``target``'s, as the
+    page writes it (a line 'rpm torque' per point); text that is no curve as typed."""
+    points = curve_to_api(text, source)
+    if isinstance(points, str):
+        try:
+            points = CURVE.validate_python(points)
+        except ValidationError:
+            return text
+    return curve_text(points, target).replace(",", "\n").replace(":", " ")
 
 
 def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:

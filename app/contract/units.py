@@ -16,7 +16,7 @@ References
 1. NIST SP 811 (2008), Guide for the Use of the International System of Units, appendix
    B.8: 1 in = 0.0254 m, 1 ft = 0.3048 m, 1 lb = 0.45359237 kg, standard acceleration of
    gravity g_n = 9.80665 m/s², 1 kgf = g_n N, 1 lbf = 4.4482216152605 N (lb x g_n),
-   1 psi = 1 lbf/in², 1 ozf in = 1/16 lbf in, all exact.
+   1 psi = 1 lbf/in², 1 ozf in = 1/16 lbf in, 1 oz = 1/16 lb, all exact.
 """
 
 from collections.abc import Mapping
@@ -90,6 +90,8 @@ UNITS: dict[str, Unit] = {
         _unit("lb", "mass", _LB),
         _unit("kg m²", "inertia", 1),
         _unit("g cm²", "inertia", Fraction(1, 10**7)),
+        _unit("oz in²", "inertia", _LB / 16 * _IN**2),
+        _unit("lb in²", "inertia", _LB * _IN**2),
         _unit("kg m²/m", "inertia_per_length", 1),
         _unit("kg m²/in", "inertia_per_length", 1 / _IN),
         _unit("kg/m³", "density", 1),
@@ -142,8 +144,9 @@ API_UNITS: dict[Quantity, tuple[str, float]] = {
 _API_TO_SI: dict[Quantity, float] = {d: UNITS[u].si for d, u in API_SYSTEM.items()}
 
 #: the page's unit switches: switch -> choice -> the unit it gives each dimension it sets
-#: (a mass follows the force: pounds with pound-force). Dimensions no switch sets are
-#: shown in the API's unit.
+#: (a mass follows the force: pounds with pound-force; inches bring the US customary
+#: contact pressure and PV, psi and psi ft/min; a rotor inertia follows the torque: oz in²
+#: with oz in). Dimensions no switch sets are shown in the API's unit.
 DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
     "force_unit": {
         "N": {"force": "N", "mass": "kg"},
@@ -151,15 +154,20 @@ DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
         "kgf": {"force": "kgf", "mass": "kg"},
     },
     "length_unit": {
-        "mm": {"length": "mm", "speed": "mm/s", "accel": "mm/s²"},
-        "in": {"length": "in", "speed": "in/s", "accel": "in/s²"},
+        "mm": {
+            "length": "mm", "speed": "mm/s", "accel": "mm/s²", "pressure": "MPa", "pv": "MPa m/s",
+        },
+        "in": {
+            "length": "in", "speed": "in/s", "accel": "in/s²", "pressure": "psi",
+            "pv": "psi ft/min",
+        },
     },
     "torque_unit": {
-        "N_m": {"torque": "N m"},
-        "oz_in": {"torque": "oz in"},
-        "lb_in": {"torque": "lb in"},
+        "N_m": {"torque": "N m", "inertia": "kg m²"},
+        "oz_in": {"torque": "oz in", "inertia": "oz in²"},
+        "lb_in": {"torque": "lb in", "inertia": "lb in²"},
     },
-}
+}  # fmt: skip
 #: the page's default choices: the API's units.
 DEFAULT_UNITS = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 #: switch -> the dimensions it sets.
