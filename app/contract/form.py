@@ -404,7 +404,7 @@ def _trimmed(text: str) -> str:
     return mantissa + e + exponent
 
 
-def _decimal_text(value: float, factor: Fraction) -> str:
+def decimal_text(value: float, factor: Fraction) -> str:
     """``value`` over ``factor`` as the decimal with the fewest figures (6 at least) that
     reads back, times ``factor`` rounded once, to exactly ``value``."""
     if factor == 1:  # the shortest text that reads back to the float is its repr
@@ -427,7 +427,7 @@ def link_number(field: InputField, value: float, units: Mapping[str, str]) -> st
     >>> link_number(BY_PAGE["length"], 100000.0, inch), link_number(BY_PAGE["load"], 100.4824, {})
     ('3937.007874015748', '100.4824')
     """
-    return _decimal_text(value, _factor(field, {**DEFAULT_UNITS, **units}))
+    return decimal_text(value, _factor(field, {**DEFAULT_UNITS, **units}))
 
 
 def _torque_factor(units: Mapping[str, str]) -> Fraction:
@@ -462,7 +462,7 @@ def curve_text(value: Any, units: Mapping[str, str]) -> str:
     """
     factor = _torque_factor(units)
     points = CURVE.validate_python(value)
-    return ",".join(f"{rpm:.12g}:{_decimal_text(torque, factor)}" for rpm, torque in points)
+    return ",".join(f"{rpm:.12g}:{decimal_text(torque, factor)}" for rpm, torque in points)
 
 
 def convert_curve(text: str, source: Mapping[str, str], target: Mapping[str, str]) -> str:

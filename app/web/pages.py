@@ -197,7 +197,7 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
     inputs, units = _link_inputs(request.query_params)
     c = _candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
-    try_query = catalog_screw_query(catalog.by_id[c.id])
+    try_query = catalog_screw_query(catalog.by_id[c.id], units)
     context = {
         "c": c,
         "d": Display(units),
