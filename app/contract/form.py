@@ -30,6 +30,9 @@ from app.contract.units import (
     TORQUE_UNITS,
     UNIT_QUANTITIES,
     Quantity,
+    display_system,
+    exact_factor,
+    exact_offset,
     from_api,
     sig,
     to_api,
@@ -70,6 +73,8 @@ TRUE_WORDS = {"1", "true", "on", "yes"}
 #: figures enough for any decimal to read back to the float it was written from (17 are
 #: enough for a float; the display unit's factor takes one more).
 LINK_DIGITS = 24
+#: significant digits of the longest exact decimal of a float (2**-1074 has 751).
+FLOAT_DIGITS = 800
 #: decimal exponents read exactly: wider than any float times a unit's factor.
 EXPONENT_REACH = 400
 #: a typed number read as the API reads a query parameter: ASCII decimal, finite.
@@ -373,8 +378,21 @@ def shown_inputs(inputs: Mapping[str, Any]) -> list[tuple[InputField, Any]]:
 
 def _factor(field: InputField, units: Mapping[str, str]) -> Fraction:
     """The factor from ``field``'s display unit to its API unit, as the decimal it is
-    defined as (25.4, not the binary float nearest to it)."""
-    return Fraction(repr(to_api(1.0, field.quantity, units))) if field.quantity else Fraction(1)
+    defined as (25.4, not the binary float nearest to it); a temperature scale's exactly
+    (5/9 for °F), so that its offset cancels: 32 °F reads as 0 °C, not 1e-31."""
+    if not field.quantity:
+        return Fraction(1)
+    units = {**DEFAULT_UNITS, **units}
+    if exact_offset(field.quantity, units):
+        return exact_factor(field.quantity, units)
+    return Fraction(repr(display_system(units)[field.quantity][1]))
+
+
+def _offset(field: InputField, units: Mapping[str, str]) -> Fraction:
+    """The API value at the zero of ``field``'s display unit, exactly: 0 but for °F."""
+    return (
+        exact_offset(field.quantity, {**DEFAULT_UNITS, **units}) if field.quantity else Fraction(0)
+    )
 
 
 def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
@@ -393,7 +411,7 @@ def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
         raise ValueError(error)
     if isinstance(number, float):
         return number
-    return float(number * _factor(field, units))
+    return float(number * _factor(field, units) + _offset(field, units))
 
 
 def _trimmed(text: str) -> str:
@@ -404,17 +422,20 @@ def _trimmed(text: str) -> str:
     return mantissa + e + exponent
 
 
-def decimal_text(value: float, factor: Fraction) -> str:
-    """``value`` over ``factor`` as the decimal with the fewest figures (6 at least) that
-    reads back, times ``factor`` rounded once, to exactly ``value``."""
-    if factor == 1:  # the shortest text that reads back to the float is its repr
+def decimal_text(value: float, factor: Fraction, offset: Fraction = Fraction(0)) -> str:
+    """``value`` less ``offset`` over ``factor`` as the decimal with the fewest figures (6
+    at least) that reads back, times ``factor`` plus ``offset`` rounded once, to exactly
+    ``value``."""
+    if factor == 1 and offset == 0:  # the shortest text that reads back is the float's repr
         return _trimmed(repr(value))
-    exact = Fraction(value) / factor
-    with localcontext(prec=LINK_DIGITS):
+    exact = (Fraction(value) - offset) / factor
+    # an offset (°F) can need every digit of the float: 1e-142 °C is 32.000...0018 °F
+    reach = LINK_DIGITS if offset == 0 else FLOAT_DIGITS
+    with localcontext(prec=reach):
         shown = Decimal(exact.numerator) / Decimal(exact.denominator)
-    for digits in range(6, LINK_DIGITS):
+    for digits in range(6, reach):
         text = _trimmed(f"{shown:.{digits}g}")
-        if float(Fraction(Decimal(text)) * factor) == value:
+        if float(Fraction(Decimal(text)) * factor + offset) == value:
             break
     return text
 
@@ -427,12 +448,13 @@ def link_number(field: InputField, value: float, units: Mapping[str, str]) -> st
     >>> link_number(BY_PAGE["length"], 100000.0, inch), link_number(BY_PAGE["load"], 100.4824, {})
     ('3937.007874015748', '100.4824')
     """
-    return decimal_text(value, _factor(field, {**DEFAULT_UNITS, **units}))
+    units = {**DEFAULT_UNITS, **units}
+    return decimal_text(value, _factor(field, units), _offset(field, units))
 
 
 def _torque_factor(units: Mapping[str, str]) -> Fraction:
     """The exact factor from the display torque unit to N m (a curve's torques)."""
-    return Fraction(repr(to_api(1.0, "torque", {**DEFAULT_UNITS, **units})))
+    return Fraction(repr(display_system({**DEFAULT_UNITS, **units})["torque"][1]))
 
 
 def curve_to_api(text: str, units: Mapping[str, str]) -> Any:

@@ -32,10 +32,10 @@ from app.contract.units import (
     API_UNIT_QUANTITY,
     DEFAULT_UNITS,
     Quantity,
+    display_system,
     label,
     si_to_api,
     sig,
-    to_api,
 )
 from app.core.model import ScrewSpec
 
@@ -66,7 +66,7 @@ class ScrewField:
         """The exact factor from the display unit to the API unit (25.4 for inches)."""
         if self.quantity is None:
             return Fraction(1)
-        return Fraction(repr(to_api(1.0, self.quantity, {**DEFAULT_UNITS, **units})))
+        return Fraction(repr(display_system({**DEFAULT_UNITS, **units})[self.quantity][1]))
 
 
 def _description(info: FieldInfo) -> str:
