@@ -475,15 +475,18 @@ def curve_to_api(text: str, units: Mapping[str, str]) -> Any:
     return [[rpm, float(Fraction(repr(torque)) * factor)] for rpm, torque in points]
 
 
-def curve_text(value: Any, units: Mapping[str, str]) -> str:
+def curve_text(value: Any, units: Mapping[str, str], digits: int | None = None) -> str:
     """The API's curve (pairs, or its 'rpm:torque,...' text) with torques in the display
-    unit, each the shortest decimal that reads back to the API's torque exactly.
+    unit, each the shortest decimal that reads back to the API's torque exactly (or to
+    ``digits`` significant figures, for reading).
 
     >>> curve_text("0:0.1129848290276167,3000:0.05649241451380835", {"torque_unit": "oz_in"})
     '0:16,3000:8'
     """
     factor = _torque_factor(units)
     points = CURVE.validate_python(value)
+    if digits is not None:
+        return ",".join(f"{rpm:g}:{sig(t / float(factor), digits)}" for rpm, t in points)
     return ",".join(f"{rpm:.12g}:{decimal_text(torque, factor)}" for rpm, torque in points)
 
 
@@ -507,10 +510,18 @@ def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
     return value_text(field, value, units)
 
 
+def _exact_curve(inputs: ApplicationIn, field: InputField) -> Any:
+    """A curve's points as floats (its dumped text keeps 12 figures), else None."""
+    return getattr(inputs, field.api) if field.kind == "curve" else None
+
+
 def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
     """Query string of the page link for these inputs: required fields and non-defaults,
     each number reproducing the input exactly."""
-    pairs = [(f.page, link_text(f, v, units)) for f, v in shown_inputs(inputs.model_dump())]
+    pairs = [
+        (f.page, link_text(f, _exact_curve(inputs, f) or v, units))
+        for f, v in shown_inputs(inputs.model_dump())
+    ]
     pairs += [(k, v) for k, v in units.items() if v != DEFAULT_UNITS[k]]
     return urlencode(pairs)
 
@@ -526,6 +537,8 @@ def summary_rows(inputs: Mapping[str, Any], units: Mapping[str, str]) -> list[di
             text = "yes" if value else "no"
         elif isinstance(value, int | float):
             text = sig(field.display_value(value, units))
+        elif field.kind == "curve":
+            text = curve_text(value, units, digits=4)
         else:
             text = str(value)
         unit = field.display_unit(units)

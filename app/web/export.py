@@ -5,7 +5,8 @@ import io
 from collections.abc import Callable
 from typing import Any
 
-from app.contract.fields import FIELDS
+from app.contract.fields import FIELDS, InputField
+from app.contract.form import curve_text
 from app.contract.schemas import CandidateOut, SelectOut
 from app.contract.units import Display, Quantity
 from app.core.checks import REGISTRY
@@ -115,9 +116,16 @@ def _input_rows(inputs: dict[str, Any], units: dict[str, str]) -> list[list[Any]
     An optional input left empty has an empty value cell.
     """
     return [
-        [field.page, field.display_value(inputs[field.api], units), field.display_unit(units)]
+        [field.page, _input_value(field, inputs[field.api], units), field.display_unit(units)]
         for field in FIELDS
     ]
+
+
+def _input_value(field: InputField, value: Any, units: dict[str, str]) -> Any:
+    """An input in the display units; a curve as 'rpm:torque,...' in the torque unit."""
+    if field.kind == "curve" and value:
+        return curve_text(value, units, digits=10)
+    return field.display_value(value, units)
 
 
 def results_csv(result: SelectOut, units: dict[str, str]) -> str:
