@@ -40,8 +40,14 @@ def test_imperial_fraction_refused_inline(
     page.fill("#f-load", "22.48")
     page.fill("#f-speed", "2")
     page.fill("#f-length", "1/0")
-    page.wait_for_function("() => document.querySelector('#e-length').textContent.length > 0")
+    # the message comes with the swap of the last request (earlier ones said "Required."),
+    # aria-invalid with htmx:afterSettle (app.js)
+    page.wait_for_function(
+        "() => document.querySelector('#e-length').textContent.includes('denominator')"
+        " && document.querySelector('#f-length[aria-invalid]') !== null"
+    )
     assert page.inner_text("#e-length") == "A fraction's denominator cannot be 0."
+    assert page.get_attribute("#f-length", "aria-invalid") == "true"
     assert console_errors == []
 
 
