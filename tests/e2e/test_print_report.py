@@ -14,14 +14,15 @@ from pypdf import PdfReader
 AXIS = "load=100&speed=50&length=500"
 #: 22.48 lbf, 2 in/s, 20 in: about 100 N, 50.8 mm/s and 508 mm.
 IMPERIAL = "load=22.48&speed=2&length=20&force_unit=lbf&length_unit=in"
+#: a 1/2 in screw of 1/8 in lead, in the inches the page is switched to.
 SCREW = urlencode(
     {
-        "outer_diameter_mm": "10",
-        "root_diameter_mm": "8",
-        "lead_mm": "2",
+        "outer_diameter_mm": "1/2",
+        "root_diameter_mm": "0.4",
+        "lead_mm": "1/8",
         "friction_dynamic": "0.15",
         "friction_static": "0.2",
-        "pv_limit_mpa_m_s": "3",
+        "pv_limit_mpa_m_s": "50000",
     }
 )
 #: records, once the print stylesheet applies and app.js has resized the charts, each
@@ -90,6 +91,7 @@ def test_custom_printout_leaves_out_the_form(
     text = pdf_text(pdf)
     assert "Your screw" not in text and "Your own material" not in text  # the form legends
     assert "Axial load" in text  # the inputs summary prints
+    assert "Outer diameter 0.5 in" in re.sub(r"\s+", " ", text)  # the screw, in inches
     page.emulate_media(media="print")
     assert not page.locator("form#custom").is_visible()
     assert page.locator("#chart-torque").is_visible()
