@@ -4,12 +4,14 @@ from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Query, Request
 from fastapi.responses import Response
+from starlette.datastructures import QueryParams
 
 from app import __version__
 from app.api.query import parse_query, query_parameters
 from app.contract.schemas import (
     ApplicationIn,
     ChecksOut,
+    CompareOut,
     ErrorOut,
     EvaluateIn,
     EvaluateOut,
@@ -26,7 +28,10 @@ from app.core.checks import REGISTRY
 from app.report.present import series_dict
 from app.report.service import (
     FORMULAS_OUT,
+    BadIds,
     UnknownScrew,
+    compare_ids,
+    run_compare,
     run_evaluation,
     run_selection,
     run_selection_summary,
@@ -133,6 +138,40 @@ async def select_get(request: Request, catalog: CatalogDep) -> Response:
     shareable link)."""
     query = parse_query(SelectQuery, request.query_params)
     return await _selection(query.application(), catalog, query.detail)
+
+
+#: The compare's own query parameter, besides the select's.
+IDS_PARAMETER = {
+    "name": "ids",
+    "in": "query",
+    "required": True,
+    "description": "2 to 4 catalog screw ids, comma-separated (or the parameter repeated).",
+    "schema": {"type": "string", "title": "Ids"},
+    "example": "Tr12x3-bronze,Tr16x4-bronze",
+}
+
+
+@router.get(
+    "/compare",
+    response_model=CompareOut,
+    openapi_extra={"parameters": [*query_parameters(SelectQuery), IDS_PARAMETER]},
+)
+async def compare_get(request: Request, catalog: CatalogDep) -> Response:
+    """2 to 4 catalog screws side by side for the application in the query: each one's
+    full record (as ``detail=full`` gives it) with its verdict. Unknown ids, fewer than 2
+    or more than 4: 422 on ``ids``."""
+    params = request.query_params
+    rest = QueryParams([(k, v) for k, v in params.multi_items() if k != "ids"])
+    query = parse_query(SelectQuery, rest)
+    try:
+        ids = compare_ids(params.getlist("ids"), catalog.index.positions)
+    except BadIds as exc:
+        raise AppError(422, "invalid input", [{"field": "ids", "message": str(exc)}]) from exc
+    return await computed(_compare, query.application(), ids, catalog)
+
+
+def _compare(inputs: ApplicationIn, ids: list[str], catalog: CatalogDep) -> Response:
+    return ModelJSON(run_compare(inputs, ids, catalog))
 
 
 @router.get("/formulas", response_model=FormulasOut)

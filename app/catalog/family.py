@@ -31,6 +31,7 @@ VARIANT_FIELDS = frozenset(
         "nut_material",
         "bearing_pressure_mpa_by_speed_m_s",
         "max_pressure_mpa",
+        "dynamic_pressure_mpa",
         "bearing_pv_limit_mpa_m_s",
         "max_sliding_speed_m_s",
         "temperature_range_c",

@@ -71,6 +71,7 @@ RANGED_VARIANT = {
     "friction_static": ("friction_static", ""),
     "pv_limit_mpa_m_s": ("pv_limit_pa_m_s", "MPa m/s"),
     "max_pressure_mpa": ("max_pressure_pa", "MPa"),
+    "dynamic_pressure_mpa": ("dynamic_pressure_pa", "MPa"),
     "bearing_pv_limit_mpa_m_s": ("nut_pv_limit_pa_m_s", "MPa m/s"),
     "max_sliding_speed_m_s": ("max_sliding_speed_m_s", "m/s"),
     "max_length_mm": ("max_length_m", "mm"),
@@ -80,6 +81,7 @@ RANGED_VARIANT = {
 #: Variant values that rate the nut by its contact pressure (they need a nut length).
 BEARING_VALUES = {
     "max_pressure": ("max_pressure_mpa", "MPa"),
+    "dynamic_pressure": ("dynamic_pressure_mpa", "MPa"),
     "bearing_pv_limit": ("bearing_pv_limit_mpa_m_s", "MPa m/s"),
     "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
 }
@@ -96,6 +98,7 @@ NOT_GIVEN = {
     for name, text in (
         ("bearing_pressure", "pressure-speed table"),
         ("max_pressure", "maximum contact pressure"),
+        ("dynamic_pressure", "dynamic flank pressure rating of a polymer nut"),
         ("bearing_pv_limit", "PV limit over the engaged flanks"),
         ("max_sliding_speed", "maximum sliding speed"),
         ("nut_length", "nut length"),
@@ -338,6 +341,10 @@ def _bearing_table(v: Entry) -> Sourced:
         raise v.fail(name, "rows must rise in sliding speed, at least one row")
     if any(row[1] <= 0 for row in rows):
         raise v.fail(name, "every allowable pressure must be > 0")
+    # a sliding nut heats more the faster it slides: a row allowing more pressure than a
+    # slower one would let a larger, faster-sliding size pass where a smaller one fails
+    if any(b[1] > a[1] for a, b in pairwise(rows)):
+        raise v.fail(name, "the allowable pressure must not rise with the sliding speed")
     table = tuple((speed, to_si(pressure, "MPa")) for speed, pressure in rows)
     return Sourced(table, "m/s, Pa", v.prov(name))
 
@@ -468,6 +475,7 @@ def _nut_spec(
         "nut_length_m": _value_or_none(fields, "nut_length"),
         "bearing_pressure_table": () if bearing is None else bearing.value,
         "max_pressure_pa": _value_or_none(variant.fields, "max_pressure"),
+        "dynamic_pressure_pa": _value_or_none(variant.fields, "dynamic_pressure"),
         "nut_pv_limit_pa_m_s": _value_or_none(variant.fields, "bearing_pv_limit"),
         "max_sliding_speed_m_s": _value_or_none(variant.fields, "max_sliding_speed"),
         "wear_rate_m2_n": _value_or_none(variant.fields, "wear_rate"),

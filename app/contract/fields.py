@@ -470,7 +470,8 @@ FIELDS: tuple[InputField, ...] = (
         help="Order of the passing screws", group="Results", kind="choice",
         default="torque", options=RankBy,
         texts={
-            "torque": "Lowest torque", "margin": "Largest margin", "life": "Longest life",
+            "torque": "Lowest torque", "rms": "Lowest RMS torque", "margin": "Largest margin",
+            "life": "Longest life",
             "size": "Smallest size", "motor_margin": "Largest motor margin",
         },
         catalog_only=True,

@@ -34,6 +34,12 @@ from app.contract.source import (
     joined,
     million_cm,
 )
+from app.contract.source import (
+    text as phrase_text,
+)
+from app.contract.source import (
+    texts as phrase_texts,
+)
 from app.core.model import ProvenanceKind
 
 TORQUE_NOTE = (
@@ -329,6 +335,42 @@ class OutgassingOut(BaseModel):
     weight_loss_percent: Annotated[float, From("1")]
 
 
+class RestOut(BaseModel):
+    field: Annotated[str, From("field")] = Field(description="The catalog key.")
+    label: Annotated[str, From("label")] = Field(description="The value in words.")
+    kind: Annotated[str, From("kind")] = Field(
+        description="Its provenance ('assumed'), or 'assumed range' for a ranged value."
+    )
+    hinges: Annotated[bool, From("hinges")] = Field(
+        description="The pass fails at one end of this value's range."
+    )
+
+
+class VerdictOut(BaseModel):
+    """Why this screw: what governs it, what that rests on, what to watch."""
+
+    governs: Annotated[str | None, From("governs")] = Field(
+        description="The governing check: the rejecting check closest to its limit."
+    )
+    governs_label: Annotated[str, From("governs_label")]
+    utilization: Annotated[float | None, From("utilization")] = Field(
+        description="The governing check's demand / capacity; null for a yes/no check."
+    )
+    margin: Annotated[float | None, From("margin")] = Field(
+        description="1 - utilization: the share of the governing limit left."
+    )
+    rests_on: Annotated[list[RestOut], From("rests_on")] = Field(
+        description="Assumed catalog values the governing check reads, and the ranged "
+        "values the pass hinges on."
+    )
+    watch: Annotated[list[str], From("watch", via=phrase_texts)] = Field(
+        description="Warnings, the next-closest limit, power-off holding, a marginal pass."
+    )
+    text: Annotated[str, From("text", via=phrase_text)] = Field(
+        description="All of it in one or two sentences."
+    )
+
+
 class CandidateOut(BaseModel):
     """One candidate: every number, every check with its message, formula and fix, and
     the provenance of the catalog values it uses. Each field says where it comes from in
@@ -446,6 +488,9 @@ class CandidateOut(BaseModel):
     provenance: Annotated[dict[str, ProvenanceOut], From("provenance")] = Field(
         description="Catalog field -> provenance, for the fields this candidate's numbers use."
     )
+    verdict: Annotated[VerdictOut, From("verdict")] = Field(
+        description="Why this screw, in short: governs, margin, rests on, watch."
+    )
 
 
 #: A view of a model: field name -> True (the whole field) or the view of a nested model.
@@ -459,7 +504,9 @@ def whole(*groups: str) -> dict[str, Any]:
 
 #: What names a candidate, and its verdict: in the row and the summary alike.
 NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
-VERDICT = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
+VERDICT = (
+    "utilization governing_check governing_limit_provenance passed robust hinges_on warned verdict"
+)
 #: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
 VIEWS: dict[str, View] = {
     "row": whole(
@@ -538,13 +585,36 @@ class ChangeOut(BaseModel):
     admits: str = Field(description="The candidate the change admits.")
 
 
+class RemedyOut(BaseModel):
+    inputs: dict[str, float | str] = Field(
+        description="API input -> value (end_fixity: its choice), 5 % past each limit."
+    )
+    passing: int = Field(description="Candidates that pass with the change made.")
+    utilization: float = Field(
+        description="The lowest governing utilisation among them: at most 1 / 1.05."
+    )
+
+
 class SummaryOut(BaseModel):
     message: str
     most_excluding_check: str | None
     best_rejected_id: str | None
-    input_change: dict[str, float]
+    input_change: dict[str, float] = Field(
+        description="The inputs at which the nearest candidate's failed checks reach "
+        "their limits exactly; remedies apply a margin."
+    )
     changes: list[ChangeOut] = Field(
         description="Feasible input changes, each admitting a near candidate (one click)."
+    )
+    remedies: list[RemedyOut] = Field(
+        default_factory=list,
+        description="When nothing passes: changes (one input or several, or the mounting) "
+        "each verified by selecting again with it made, a candidate then passing with a "
+        "5 % margin on its governing check.",
+    )
+    impossible: str | None = Field(
+        default=None,
+        description="When nothing passes and no remedy is found: why no leadscrew can do it.",
     )
 
 
@@ -632,6 +702,15 @@ SelectSummaryOut = create_model(
         Field(description="The formulas table (GET), the same for every query."),
     ),
 )
+
+
+class CompareOut(BaseModel):
+    """2 to 4 catalog screws side by side for one application, each in full."""
+
+    inputs: ApplicationIn
+    candidates: list[CandidateOut]
+    catalog_version: str
+    share_url: str = Field(description="The compare page of the same inputs and ids.")
 
 
 class EvaluateOut(BaseModel):

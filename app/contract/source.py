@@ -87,3 +87,13 @@ def joined(phrases: tuple[Phrase, ...], w: Writer) -> str | None:
     """Sentences in the reader's units, joined by spaces (None when there are none)."""
     text = [w.text(p) for p in phrases]
     return " ".join(text) if text else None
+
+
+def text(phrase: Phrase, w: Writer) -> str:
+    """One sentence in the reader's units."""
+    return w.text(phrase)
+
+
+def texts(phrases: tuple[Phrase, ...], w: Writer) -> list[str]:
+    """Each sentence in the reader's units."""
+    return [w.text(p) for p in phrases]

@@ -16,7 +16,7 @@ LoadDirection = Literal["auto", "opposes", "fixed"]
 #: What the holding torque given is: a brake's (holds with the power off) or a motor's
 #: energised holding torque (a stepper's: holds only while the power is on).
 HoldingSource = Literal["brake", "energised"]
-RankBy = Literal["torque", "margin", "life", "size", "motor_margin"]
+RankBy = Literal["torque", "rms", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: a warning only, rank the candidate lower, or reject.
 AdvicePolicy = Literal["warn", "rank", "reject"]
 ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]
@@ -165,6 +165,9 @@ class ScrewSpec:
     #: limit over the engaged flank area [Pa m/s] and its maximum sliding speed [m/s].
     bearing_pressure_table: tuple[tuple[float, float], ...] = ()
     max_pressure_pa: float | None = None
+    #: A polymer nut's permissible flank pressure in motion [Pa]: its dynamic axial load
+    #: is this pressure over the engaged flank area (None: rated otherwise).
+    dynamic_pressure_pa: float | None = None
     nut_pv_limit_pa_m_s: float | None = None
     max_sliding_speed_m_s: float | None = None
     #: The nut's specific wear rate against the screw [m^2/N = m^3/(N m)] and the wear
@@ -288,8 +291,20 @@ class Change:
 
 
 @dataclass(frozen=True, slots=True)
+class Remedy:
+    """A change of the application verified by screening again with it made
+    (``app.core.remedy``): its inputs (core names, SI; ``end_fixity`` a word), how many
+    candidates then pass, and the lowest governing utilisation among them."""
+
+    inputs: Mapping[str, float | str]
+    passing: int
+    utilization: float
+
+
+@dataclass(frozen=True, slots=True)
 class Summary:
-    """Why nothing (or little) passes, and the input changes that would admit the nearest."""
+    """Why nothing (or little) passes, and the input changes that would admit the nearest;
+    when nothing passes, the verified remedies, or why no leadscrew can do it."""
 
     most_excluding_check: str | None
     most_excluding_count: int
@@ -297,3 +312,5 @@ class Summary:
     input_change: Mapping[str, float]
     message: Phrase
     changes: tuple[Change, ...] = ()
+    remedies: tuple[Remedy, ...] = ()
+    impossible: Phrase | None = None

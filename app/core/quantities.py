@@ -124,6 +124,10 @@ class Quantities(Generic[V]):
     sliding_speed_m_s: V
     nut_allowed_pressure_pa: V
     nut_allowed_load_n: V
+    #: The axial load the nut is rated to carry in motion: the size's design load where
+    #: the catalog gives one, else a polymer nut's dynamic flank pressure over the engaged
+    #: flank area (NaN: neither).
+    rated_load_n: V
     life_years_min: V
     life_years_max: V
     #: Nut wear (Archard): nut travel until the allowed wear depth [m] and that travel in
@@ -335,6 +339,11 @@ def _flanks(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
         "sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
         "nut_allowed_load_n": allowed * area,
+        "rated_load_n": np.where(
+            np.isnan(t.design_load_n),
+            bearing.dynamic_load(t.dynamic_pressure_pa, area),
+            t.design_load_n,
+        ),
         "nut_length_m": np.where(np.isnan(t.pitch_m), np.nan, _nut_length(app, t)),
     }
 

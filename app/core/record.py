@@ -42,6 +42,7 @@ from app.core.quantities import Quantities
 from app.core.robustness import Robustness
 from app.core.screening import Screening
 from app.core.table import Array
+from app.core.verdict import Verdict, verdict
 
 Owner = TypeVar("Owner")
 T = TypeVar("T")
@@ -488,6 +489,11 @@ class Candidate:
     @property
     def governing_limit_provenance(self) -> ProvenanceKind | None:
         return limit_provenance(self.governing, self.screw)
+
+    @once
+    def verdict(self) -> Verdict:
+        """Why this screw in two lines: what governs, what it rests on, what to watch."""
+        return verdict(self)
 
     @property
     def failed_checks(self) -> tuple[CheckResult, ...]:

@@ -10,9 +10,10 @@ import numpy as np
 
 from app.core.checks import BY_NAME
 from app.core.index import CatalogIndex
-from app.core.model import Application, Change, ScrewSpec, Summary
+from app.core.model import Application, Change, Remedy, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
 from app.core.record import MOTOR_CHECKS, Candidate, records
+from app.core.remedy import impossible, remedies
 from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable
@@ -25,6 +26,8 @@ INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
     "length_m": ("length", "length"),
     "accel_m_s2": ("acceleration", "accel"),
 }
+#: The nearest rejected candidates whose input changes the remedies start from.
+REMEDY_FROM = 8
 #: Each input's accepted range in SI, (low, high) by core name: a change outside it is
 #: never offered (the edge passes its field table's bounds; none: any value).
 Ranges = Mapping[str, tuple[float, float]]
@@ -39,19 +42,35 @@ def motor_use(s: Screening) -> np.ndarray:
     return np.asarray(np.nanmax(np.stack(shares), axis=0), dtype=np.float64)
 
 
+def shown_torque(s: Screening) -> np.ndarray:
+    """The torque the results show for each candidate: under a move (a stroke given) the
+    peak motor torque of either move or of starting from rest, rotor included; otherwise
+    the drive torque at the top speed while accelerating."""
+    q = s.quantities
+    return np.where(np.isnan(q.motor_rms_nm), q.total_nm, q.peak_torque_nm)
+
+
+def shown_rms(s: Screening) -> np.ndarray:
+    """The RMS motor torque over the cycle; the shown torque where there is no move."""
+    q = s.quantities
+    return np.where(np.isnan(q.motor_rms_nm), shown_torque(s), q.motor_rms_nm)
+
+
 def _rank_order(app: Application, s: Screening) -> np.ndarray:
     """Positions of passing candidates (in ``s``) in rank order, stable.
 
-    torque: lowest total drive torque; margin: lowest worst utilisation; life: longest
-    rated life (unrated last); size: smallest outer diameter; motor_margin: the smallest
-    share of the motor used (``motor_use``). Ties: lower torque. Candidates with a
-    warning (failed advice) come after those without, whatever the policy ("reject"
-    rejects them).
+    torque: lowest torque shown (``shown_torque``: the peak motor torque under a move);
+    rms: lowest RMS motor torque (``shown_rms``); margin: lowest worst utilisation; life:
+    longest rated life (unrated last); size: smallest outer diameter; motor_margin: the
+    smallest share of the motor used (``motor_use``). Ties: lower shown torque.
+    Candidates with a warning (failed advice) come after those without, whatever the
+    policy ("reject" rejects them).
     """
     pos = np.flatnonzero(s.passed)
-    torque, util = s.total_torque_nm[pos], s.max_utilization[pos]
+    torque, util = shown_torque(s)[pos], s.max_utilization[pos]
     primary = {
         "torque": torque,
+        "rms": shown_rms(s)[pos] if app.rank_by == "rms" else torque,
         "margin": util,
         "life": -np.nan_to_num(s.table.life_min_m[pos]),
         "size": s.table.outer_diameter_m[pos],
@@ -161,7 +180,7 @@ def select(
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
         summary=summarize(
-            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}
+            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}, s
         ),
         screening=s,
         ranked=tuple(ranked),
@@ -189,6 +208,17 @@ def input_change(best: Candidate) -> dict[str, float]:
     return change
 
 
+def one_input_changes(best: Candidate) -> list[dict[str, float]]:
+    """Each input that alone clears every failed numeric check of ``best`` (one offered
+    by all of them), at its tightest value: the alternatives ``input_change`` chooses
+    among (e.g. a shorter screw or a lower speed for the critical speed)."""
+    options = [c.input_limits for c in best.failed_checks]
+    if not options or any(not o for o in options):
+        return []
+    shared = set.intersection(*(set(o) for o in options if o))
+    return [{key: min(o[key] for o in options if o)} for key in sorted(shared)]
+
+
 def within(change: Mapping[str, float], ranges: Ranges) -> bool:
     """Every value of ``change`` lies within its input's range (inclusive).
 
@@ -201,10 +231,14 @@ def within(change: Mapping[str, float], ranges: Ranges) -> bool:
     )
 
 
-def describe_change(app: Application, change: Mapping[str, float]) -> Phrase:
-    """The change in words: "reduce the load to {value}" per input."""
+def describe_change(app: Application, change: Mapping[str, float | str]) -> Phrase:
+    """The change in words: "reduce the load to {value}" per input ("mount the ends
+    fixed-fixed" for the end fixity)."""
     parts = []
     for key, value in change.items():
+        if isinstance(value, str):
+            parts.append(Phrase("mount the ends {v}", {"v": value}))
+            continue
         label, quantity = INPUT_LABELS[key]
         verb = "reduce" if value < getattr(app, key) else "set"
         parts.append(Phrase(f"{verb} the {label} to {{v}}", {"v": Amount(value, quantity)}))
@@ -254,6 +288,7 @@ def summarize(
     nearest: Sequence[Candidate],
     by_check: Counter[str],
     ranges: Ranges,
+    screening: Screening | None = None,
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix and the
     feasible changes of the application (within ``ranges``; when the nearest screw's
@@ -280,10 +315,43 @@ def summarize(
         labels = " and ".join(INPUT_LABELS[k][0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
-    elif change:
+    found, why = _remedies(app, screening, nearest, worst, label, ranges)
+    if found:  # the first verified change, past its limits by the margin
+        how = describe_change(app, found[0].inputs)
+        parts.append(Phrase("Or change the application: {how}.", {"how": how}))
+    elif why is not None:
+        parts.append(why)
+    elif change:  # not verified (no screening given): the values at the limits
         parts.append(
             Phrase("Or change the application: {how}.", {"how": describe_change(app, change)})
         )
     return Summary(
-        worst, worst_count, best.screw.id, change, join(parts), feasible_changes(nearest, ranges)
+        worst,
+        worst_count,
+        best.screw.id,
+        change,
+        join(parts),
+        feasible_changes(nearest, ranges),
+        found,
+        why,
     )
+
+
+def _remedies(
+    app: Application,
+    sc: Screening | None,
+    nearest: Sequence[Candidate],
+    worst: str | None,
+    label: str,
+    ranges: Ranges,
+) -> tuple[tuple[Remedy, ...], Phrase | None]:
+    """The verified remedies from the nearest candidates' input changes, or (none found)
+    why no leadscrew can do it; nothing without the screening to verify against."""
+    if sc is None:
+        return (), None
+    near = nearest[:REMEDY_FROM]
+    targets = [t for c in near for t in one_input_changes(c)]
+    targets += [change for c in near if len(change := input_change(c)) > 1]
+    failed = {k.name for c in nearest[:REMEDY_FROM] for k in c.failed_checks}
+    found = remedies(app, sc, targets, failed, ranges)
+    return found, None if found else impossible(worst, label)

@@ -43,7 +43,8 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
     """Thread and nut-rating columns (NaN where a family gives none): pitch, d2, H1, nut
     length, the polymer limits, the wear rating and the helix of one turn at d2."""
     names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
-    names += ("max_pressure_pa", "nut_pv_limit_pa_m_s", "max_sliding_speed_m_s")
+    names += ("max_pressure_pa", "dynamic_pressure_pa", "nut_pv_limit_pa_m_s")
+    names += ("max_sliding_speed_m_s",)
     names += ("wear_rate_m2_n", "allowed_wear_fraction")
     out = {name: column(list(map(attrgetter(name), screws))) for name in names}
     d2 = out["flank_pitch_diameter_m"]
@@ -169,6 +170,7 @@ class CandidateTable:
     flank_height_m: Array
     nut_length_m: Array
     max_pressure_pa: Array
+    dynamic_pressure_pa: Array
     nut_pv_limit_pa_m_s: Array
     max_sliding_speed_m_s: Array
     wear_rate_m2_n: Array

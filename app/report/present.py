@@ -20,6 +20,7 @@ from app.contract.schemas import (
     CountsOut,
     CustomScrewIn,
     MaterialIn,
+    RemedyOut,
     SummaryOut,
 )
 from app.contract.source import Writer
@@ -95,6 +96,18 @@ def counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]
                 construct(ChangeOut, inputs=_api_change(c.inputs), admits=c.admits)
                 for c in sel.summary.changes
             ],
+            remedies=[
+                construct(
+                    RemedyOut,
+                    inputs=api_inputs(r.inputs),
+                    passing=r.passing,
+                    utilization=r.utilization,
+                )
+                for r in sel.summary.remedies
+            ],
+            impossible=None
+            if sel.summary.impossible is None
+            else render(sel.summary.impossible, units),
         ),
     }
 
@@ -102,6 +115,14 @@ def counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]
 def _api_change(change: Mapping[str, float]) -> dict[str, float]:
     """Core input names and SI values as the API's names and units (the field table)."""
     return {BY_CORE[k].api: v / BY_CORE[k].si_factor for k, v in change.items()}
+
+
+def api_inputs(change: Mapping[str, float | str]) -> dict[str, float | str]:
+    """A remedy's inputs as the API's names and units (a word such as a fixity as it is)."""
+    return {
+        BY_CORE[k].api: v if isinstance(v, str) else v / BY_CORE[k].si_factor
+        for k, v in change.items()
+    }
 
 
 def _jsonable(value: Any) -> Any:

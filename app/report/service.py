@@ -1,7 +1,8 @@
 """The one path from validated inputs to a result, shared by the API and the pages."""
 
-from collections.abc import Mapping
+from collections.abc import Container, Mapping, Sequence
 from typing import Any
+from urllib.parse import quote
 
 from app.catalog import Catalog
 from app.contract.fields import FIELDS
@@ -10,6 +11,7 @@ from app.contract.schemas import (
     ApplicationIn,
     CandidateOut,
     CatalogScrewIn,
+    CompareOut,
     CustomScrewIn,
     EvaluateOut,
     FormulaOut,
@@ -138,4 +140,52 @@ def run_evaluation(
         candidate=candidate_view(candidate, "full", units),
         catalog_version=catalog.version,
         formulas=FORMULAS_OUT,
+    )
+
+
+#: How many candidates a compare takes.
+COMPARE_MIN, COMPARE_MAX = 2, 4
+
+
+class BadIds(ValueError):
+    """A compare's ids: too few, too many, or not in the catalog (the message says which)."""
+
+
+def compare_ids(raw: Sequence[str], known: Container[str]) -> list[str]:
+    """The ids of a compare from the query's ``ids`` values (each comma-separated or
+    repeated), each once, in order; ``BadIds`` unless there are 2 to 4 catalog ids."""
+    ids = list(dict.fromkeys(i.strip() for value in raw for i in value.split(",") if i.strip()))
+    if len(ids) < COMPARE_MIN:
+        raise BadIds(f"choose at least {COMPARE_MIN} candidates to compare ({len(ids)} given)")
+    if len(ids) > COMPARE_MAX:
+        raise BadIds(f"choose at most {COMPARE_MAX} candidates to compare ({len(ids)} given)")
+    unknown = [i for i in ids if i not in known]
+    if unknown:
+        names = ", ".join(repr(i[:100]) for i in unknown)
+        raise BadIds(f"no catalog screw {names}")
+    return ids
+
+
+def compare_url(inputs: ApplicationIn, ids: Sequence[str], units: Mapping[str, str]) -> str:
+    """The compare page's link: the share link's query and the ids, comma-separated."""
+    return f"/compare?{share_query(inputs, units)}&ids={quote(','.join(ids), safe=',')}"
+
+
+def run_compare(
+    inputs: ApplicationIn,
+    ids: Sequence[str],
+    catalog: Catalog,
+    units: Mapping[str, str] = DEFAULT_UNITS,
+) -> CompareOut:
+    """Catalog screws ``ids`` (checked by ``compare_ids``) evaluated for ``inputs``, each
+    in full with its robustness and verdict, side by side."""
+    return construct(
+        CompareOut,
+        inputs=inputs,
+        candidates=[
+            run_evaluation(inputs, CatalogScrewIn(catalog_id=i), catalog, units).candidate
+            for i in ids
+        ],
+        catalog_version=catalog.version,
+        share_url=compare_url(inputs, ids, units),
     )

@@ -1,13 +1,16 @@
 """What to change when nothing passes, as a short list the engineer can act on.
 
-The core's summary names the input change that would admit the nearest rejected screw
-(``summary.input_change``, API names and units) and each failed check's fix. The page shows
-each change with an Apply link (the share link of the same inputs with that change made)
-and the nearest screw's failed checks by their labels, so no internal name reaches the
-reader.
+The core's summary gives the remedies (``summary.remedies``, API names and units): changes
+of one input or several, or of the mounting, each 5 % past the limits it clears and
+verified by selecting again with it made; or, when none is found, why no leadscrew can do
+it (``summary.impossible``). The page shows each remedy with an Apply link (the share link
+of the same inputs with that change made, each number rounded towards the side that
+clears) and the nearest screw's failed checks by their labels, so no internal name
+reaches the reader.
 """
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -16,6 +19,8 @@ from app.contract.form import page_value, share_query
 from app.contract.schemas import ApplicationIn, CandidateOut, PageSelectionOut, SelectOut
 from app.contract.units import sig
 from app.core.checks import BY_NAME
+from app.core.remedy import MARGIN
+from app.core.verdict import percent
 
 #: significant figures of a proposed value, rounded towards the side that still clears.
 PROPOSAL_DIGITS = 3
@@ -31,6 +36,22 @@ class Change:
     value: str
     unit: str
     href: str
+
+
+@dataclass(frozen=True, slots=True)
+class RemedyLink:
+    """A verified remedy: its changes in words, the link that makes them all, how many
+    screws then pass and the lowest governing utilisation among them."""
+
+    changes: tuple[Change, ...]
+    href: str
+    passing: int
+    utilization: str
+
+    @property
+    def fields(self) -> str:
+        """The page fields it changes, space-separated."""
+        return " ".join(c.field for c in self.changes)
 
 
 @dataclass(frozen=True, slots=True)
@@ -64,7 +85,7 @@ def round_towards(value: float, lower: bool, digits: int = PROPOSAL_DIGITS) -> f
     return float(f"{steps * scale:.{digits}g}")
 
 
-def _link(inputs: ApplicationIn, changes: dict[str, float], units: dict[str, str]) -> str:
+def _link(inputs: ApplicationIn, changes: Mapping[str, float | str], units: dict[str, str]) -> str:
     """The page link of ``inputs`` with ``changes`` (API names, API units) made."""
     changed = ApplicationIn.model_validate({**inputs.model_dump(), **changes})
     return "/?" + share_query(changed, units)
@@ -82,36 +103,37 @@ def proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, st
     return min(max(value, low), high)
 
 
-def input_changes(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> list[Change]:
-    """Each input change of the summary, with a link that makes that one change."""
-    changes = []
-    for api, target in result.summary.input_change.items():
-        field = BY_API.get(api)
-        if field is None:
-            continue
-        value = proposal(result.inputs, api, target, units)
-        lower = value < float(getattr(result.inputs, api))
-        changes.append(
-            Change(
-                field=field.page,
-                label=field.label,
-                verb="Reduce" if lower else "Raise",
-                value=sig(float(field.display_value(value, units))),
-                unit=field.display_unit(units),
-                href=_link(result.inputs, {api: value}, units),
+def remedy_change(
+    inputs: ApplicationIn, api: str, value: float | str, units: dict[str, str]
+) -> tuple[Change, float | str]:
+    """One input of a remedy in words, and the API value its link carries (a number
+    rounded in display units towards the side that clears)."""
+    field = BY_API[api]
+    if isinstance(value, str):
+        text = field.choice_text(value)
+        return Change(field.page, field.label, "Mount the ends", text, "", ""), value
+    number = proposal(inputs, api, value, units)
+    lower = number < float(getattr(inputs, api))
+    shown = sig(float(field.display_value(number, units)))
+    verb = "Reduce" if lower else "Raise"
+    return Change(field.page, field.label, verb, shown, field.display_unit(units), ""), number
+
+
+def remedy_links(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> list[RemedyLink]:
+    """Each remedy of the summary with the link that makes it."""
+    links = []
+    for remedy in result.summary.remedies:
+        made = [remedy_change(result.inputs, api, v, units) for api, v in remedy.inputs.items()]
+        values = [value for _, value in made]
+        links.append(
+            RemedyLink(
+                changes=tuple(change for change, _ in made),
+                href=_link(result.inputs, dict(zip(remedy.inputs, values, strict=True)), units),
+                passing=remedy.passing,
+                utilization=percent(remedy.utilization),
             )
         )
-    return changes
-
-
-def all_changes_link(result: SelectOut | PageSelectionOut, units: dict[str, str]) -> str | None:
-    """One link making every proposed change at once; None unless there are several."""
-    proposals = {
-        api: proposal(result.inputs, api, target, units)
-        for api, target in result.summary.input_change.items()
-        if api in BY_API
-    }
-    return _link(result.inputs, proposals, units) if len(proposals) > 1 else None
+    return links
 
 
 def failed_checks(candidate: CandidateOut | None) -> list[FailedCheck]:
@@ -141,7 +163,8 @@ def no_pass_advice(result: SelectOut | PageSelectionOut, units: dict[str, str]) 
         "most_label": check_label(most),
         "most_count": result.counts.failed_by_check.get(most, 0) if most else 0,
         "nearest": best,
-        "changes": input_changes(result, units),
-        "apply_all": all_changes_link(result, units),
+        "remedies": remedy_links(result, units),
+        "impossible": result.summary.impossible,
+        "margin": f"{MARGIN * 100:.0f} %",
         "failed": failed_checks(best),
     }

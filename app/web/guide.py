@@ -104,6 +104,7 @@ BY_COLUMN = {c.key: c for c in COLUMNS}
 #: The column each ranking orders (``rank_by`` -> column key), marked in the table.
 RANKED_COLUMN = {
     "torque": "torque",
+    "rms": "rms",
     "margin": "governing",
     "life": "life",
     "size": "od",
@@ -121,7 +122,12 @@ PROVENANCE = (
 )
 
 RANKING = {
-    "torque": "lowest drive torque first; equal torques: the larger margin first.",
+    "torque": "lowest torque first, the torque the table shows: under a move (a stroke "
+    "given) the peak motor torque of either move or of starting from rest, rotor "
+    "included; otherwise the drive torque while accelerating. Equal torques: the larger "
+    "margin first.",
+    "rms": "lowest RMS motor torque over the cycle first (the motor's continuous duty); "
+    "without a move, as the lowest torque. Equal torques: the lower peak torque first.",
     "margin": "the screw furthest from every limit first (lowest worst utilisation); "
     "equal margins: the lower torque first.",
     "life": "longest rated life first, screws without a life rating last; equal lives: "

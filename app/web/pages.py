@@ -2,6 +2,7 @@
 
 from collections.abc import Mapping
 from typing import Any
+from urllib.parse import parse_qsl
 
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
@@ -22,7 +23,15 @@ from app.contract.form import (
 )
 from app.contract.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
 from app.contract.units import TORQUE_LABELS, Display
-from app.report.service import run_evaluation, run_page_selection, run_selection
+from app.report.service import (
+    BadIds,
+    compare_ids,
+    compare_url,
+    run_compare,
+    run_evaluation,
+    run_page_selection,
+    run_selection,
+)
 from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
@@ -30,6 +39,7 @@ from app.server.headers import is_htmx_fragment
 from app.server.responses import ModelJSON
 from app.web.advice import check_label, no_pass_advice
 from app.web.catalog_view import KEY_FIELDS, family_sections
+from app.web.compare import compare_rows
 from app.web.export import results_csv
 from app.web.figures import chart_candidates, result_figures
 from app.web.guide import BY_COLUMN, RANKED_COLUMN
@@ -101,11 +111,13 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["result"], context["rejected"] = result, rejected
         context["query"] = share_query(inputs, units)
         context["share_url"] = "/?" + context["query"]
+        context["compare_fields"] = parse_qsl(context["query"])
         context["figures"] = result_figures(result, units, catalog)
         context["charting_passed"] = chart_candidates(result)[1]
         context["rejected_groups"] = rejected_groups(rejected)
         rank_by = str(inputs.model_dump()["rank_by"])
-        context["rank_text"] = BY_PAGE["rank_by"].choice_text(rank_by).lower()
+        text = BY_PAGE["rank_by"].choice_text(rank_by)
+        context["rank_text"] = text[:1].lower() + text[1:]
         context["ranked_column"] = RANKED_COLUMN[rank_by]
         if not result.candidates:
             context["advice"] = no_pass_advice(result, units)
@@ -209,6 +221,31 @@ async def detail(request: Request, catalog: CatalogDep) -> Response:
     response = templates.TemplateResponse(request, template, context)
     response.headers["Vary"] = "HX-Request"
     return response
+
+
+@router.api_route("/compare", methods=["GET", "HEAD"], response_class=HTMLResponse)
+async def compare(request: Request, catalog: CatalogDep) -> Response:
+    """2 to 4 candidates side by side (the ids ticked in the results table, or a shared
+    link's ``ids=A,B``); a bad id list is said inline, with status 422."""
+    return await computed(_compare_page, request, catalog)
+
+
+def _compare_page(request: Request, catalog: Catalog) -> Response:
+    inputs, units = _link_inputs(request.query_params)
+    query = share_query(inputs, units)
+    context: dict[str, Any] = {"d": Display(units), "query": query, "candidates": []}
+    try:
+        ids = compare_ids(request.query_params.getlist("ids"), catalog.index.positions)
+    except BadIds as exc:
+        context["error"] = f"Candidates to compare: {exc}."
+        return templates.TemplateResponse(request, "compare.html", context, status_code=422)
+    candidates = run_compare(inputs, ids, catalog, units).candidates
+    context.update(
+        candidates=candidates,
+        rows=compare_rows(candidates, context["d"]),
+        share_url=compare_url(inputs, ids, units),
+    )
+    return templates.TemplateResponse(request, "compare.html", context)
 
 
 @router.get("/export.csv")

@@ -5,6 +5,7 @@ from typing import Any
 import pydantic_core
 from fastapi.templating import Jinja2Templates
 
+from app.core.verdict import value_label
 from app.server.paths import resource_dir
 
 templates = Jinja2Templates(directory=str(resource_dir("templates")))
@@ -20,3 +21,5 @@ def _json(value: Any, **_: Any) -> str:
 
 
 templates.env.policies["json.dumps_function"] = _json
+templates.env.globals["value_label"] = value_label
+templates.env.filters["value_label"] = value_label

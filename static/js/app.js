@@ -127,7 +127,7 @@
       return;
     }
     var row = event.target.closest("tr.main[data-detail]");
-    if (row && !event.target.closest("a, button, summary, input, select")) {
+    if (row && !event.target.closest("a, button, summary, input, select, label")) {
       var detail = document.getElementById(row.dataset.detail);
       if (detail) {
         detail.open = !detail.open;

@@ -80,6 +80,13 @@ def test_the_minimal_family_loads(tmp_path: Path) -> None:
             id="table-not-rising",
         ),
         pytest.param(
+            _changed("[[0.05, 11.0], [0.25, 1.0]]", "[[0.05, 1.0], [0.25, 11.0]]"),
+            "X10.variants.bronze",
+            "bearing_pressure_mpa_by_speed_m_s",
+            "must not rise with the sliding speed",
+            id="table-pressure-rising-with-speed",
+        ),
+        pytest.param(
             _changed("[[0.05, 11.0], [0.25, 1.0]]", "[[0.05, 11.0], [0.25]]"),
             "X10.variants.bronze",
             "bearing_pressure_mpa_by_speed_m_s",

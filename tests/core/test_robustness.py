@@ -8,9 +8,16 @@ the selector gave them when each path kept its own code and caches. Four were re
 again when the physics changed the answer: the nut's heat and wear life ("motion-motor":
 Tr8x2 bronze nuts at 3,000 rpm without a pause overheat; "life-advice-reject": the ISO
 nuts have a rated life), the peak thrust with m a on the nut and the bronze nut's
-sliding-speed limit ("any-lead-vertical", "any-lead-fast"). Every path must still give
-them: select, a catalog screw evaluated alone, and a screw outside the catalog with the
-same values (its variant rows built on the fly).
+sliding-speed limit ("any-lead-vertical", "any-lead-fast"). Two more changed when
+polymer nuts were held to a dynamic load, p_dyn (L / P) pi d2 H1 with p_dyn = 0.25 p_max
+(PTFE-filled 1.75 MPa): "any-lead-loaded" loses the Tr8x8(P2) PTFE nuts (8 turns x pi x
+7 mm x 1 mm = 175.9 mm^2, 308 N < 400 N) and "heavy-any-lead" the Tr14x6(P3) and
+Tr16x8(P4) PTFE nuts (549.8 mm^2, 962 N, and 8 x pi x 14 x 2 = 703.7 mm^2, 1232 N,
+both < 1500 N); the next-ranked screws fill the list. And two with a stroke
+("motion-motor", "life-advice-reject") now rank "lowest torque" by the peak motor torque
+the table shows rather than the accelerating torque, which changes which 30 screws make
+the list. Every path must still give them: select, a catalog screw evaluated alone,
+and a screw outside the catalog with the same values (its variant rows built on the fly).
 """
 
 import json

@@ -154,20 +154,30 @@ def test_the_ranked_column_is_marked(client: TestClient, rank_by: str, heading: 
     assert ranked[0].select_one(".rank-mark").get_text() == "ranked"
 
 
-def test_under_a_move_the_torque_ranking_names_the_torque_it_orders(client: TestClient) -> None:
-    """Lowest torque orders by the torque while accelerating, the peak column's second
-    line (warned screws last), and the mark says so."""
-    query = {k: v for k, v in MOTOR_PAGE.items() if k != "rank_by"}
+@pytest.mark.parametrize(
+    ("rank_by", "heading", "mark", "cell"),
+    [
+        ("torque", "Peak torque", "ranked by peak", ".torque-peak"),
+        ("rms", "RMS torque", "ranked", ".torque-rms"),
+    ],
+)
+def test_under_a_move_the_torque_rankings_order_the_column_they_mark(
+    client: TestClient, rank_by: str, heading: str, mark: str, cell: str
+) -> None:
+    """Lowest torque orders by the peak motor torque the column shows (not the
+    accelerating torque on its second line), lowest RMS torque by the RMS column; the
+    mark and the caption say which (warned screws last, each part sorted)."""
+    query = {**MOTOR_PAGE, "rank_by": rank_by}
     page = BeautifulSoup(client.get("/", params=query).text, "html.parser")
     (ranked,) = page.select("table.candidates thead th.ranked")
-    assert ranked.select_one("abbr").get_text() == "Peak torque"
-    assert ranked.select_one(".rank-mark").get_text() == "ranked by accelerating"
-    # screws with a warning come after those without, each part by the torque
+    assert ranked.select_one("abbr").get_text() == heading
+    assert ranked.select_one(".rank-mark").get_text() == mark
+    caption = page.select_one("table.candidates caption").get_text()
+    assert caption.startswith(
+        "Ranked by lowest " + ("torque (the peak" if rank_by == "torque" else "RMS torque.")
+    )
     order = [
-        (
-            row.select_one("span.mark.warned") is not None,
-            float(row.select_one(".torque-total").text),
-        )
+        (row.select_one("span.mark.warned") is not None, float(row.select_one(cell).text))
         for row in page.select("tbody.candidate")
     ]
     assert len(order) > 1 and order == sorted(order)

@@ -465,7 +465,7 @@ def test_rejected_are_grouped_by_failing_check_with_fixes(client: TestClient) ->
         assert item.select_one(".fix").text.startswith("Fix:")
 
 
-def test_no_passing_candidate_lists_changes_with_apply_links(client: TestClient) -> None:
+def test_no_passing_candidate_lists_verified_remedies_with_apply_links(client: TestClient) -> None:
     params = {"load": "10000", "speed": "500", "length": "3000"}
     api = client.get(
         "/api/v1/select",
@@ -478,21 +478,21 @@ def test_no_passing_candidate_lists_changes_with_apply_links(client: TestClient)
     label = next(k["label"] for k in api["rejected"][0]["checks"] if k["name"] == most)
     assert notice.select_one(".verdict strong").text == label
     assert most not in notice.text  # internal names never reach the reader
-    changes = notice.select("ul.input-changes li")
-    assert {li["data-field"] for li in changes} == {
-        BY_API[k].page for k in api["summary"]["input_change"]
-    }
-    for li in changes:
-        field = BY_API[
-            next(k for k in api["summary"]["input_change"] if BY_API[k].page == li["data-field"])
-        ]
-        target = api["summary"]["input_change"][field.api]
-        href = li.select_one("a.apply")["href"]
-        query = dict(parse_qsl(href.split("?", 1)[1]))
-        assert float(query[field.page]) <= target  # rounded down: the change still clears
-        assert float(query[field.page]) >= target * 0.99
-        unchanged = {k: v for k, v in params.items() if k != field.page}
-        assert {k: v for k, v in query.items() if k != field.page} == unchanged
+    remedies = notice.select("ul.remedies li")
+    assert len(remedies) == len(api["summary"]["remedies"]) >= 1
+    for li, remedy in zip(remedies, api["summary"]["remedies"], strict=True):
+        fields = [BY_API[k] for k in remedy["inputs"]]
+        assert li["data-fields"].split() == [f.page for f in fields]
+        assert remedy["utilization"] <= 1 / 1.05 and remedy["passing"] >= 1
+        query = dict(parse_qsl(li.select_one("a.apply")["href"].split("?", 1)[1]))
+        for field in fields:
+            value, current = remedy["inputs"][field.api], float(params[field.page])
+            shown = float(query[field.page])
+            # rounded towards the side that clears, to 3 figures
+            assert shown <= value if value < current else shown >= value
+            assert shown == pytest.approx(value, rel=0.01)
+        unchanged = {k: v for k, v in params.items() if k not in li["data-fields"].split()}
+        assert {k: v for k, v in query.items() if k not in li["data-fields"].split()} == unchanged
     best = api["rejected"][0]
     failed = [k for k in best["checks"] if not k["passed"]]
     items = notice.select("ul.failed-fixes li")
@@ -548,7 +548,8 @@ def test_every_apply_link_is_accepted(client: TestClient, params: dict[str, str]
     assert page.select("a.apply")
     for link in page.select("a.apply, a.apply-all"):
         changed = set(parse_qsl(link["href"].split("?", 1)[1])) - set(params.items())
-        assert changed and all(float(v) == float(f"{float(v):.3g}") for _, v in changed)
+        numbers = [v for k, v in changed if k != "end_fixity"]
+        assert changed and all(float(v) == float(f"{float(v):.3g}") for v in numbers)
         after = client.get(link["href"])
         assert after.status_code == 200, link["href"]
         assert not soup(after).select(".error:not(:empty)"), link["href"]
@@ -733,7 +734,7 @@ def test_fixes_and_proposals_follow_the_chosen_units(client: TestClient) -> None
               "family": "B,ZBX,KHD,VHD"}  # fmt: skip
     page = soup(client.get("/", params={**params, "length_unit": "in"}))
     notice = page.select_one(".notice.no-pass")
-    proposals = [p.text for p in notice.select(".proposed")]
+    proposals = [p.text for p in notice.select("ul.remedies li:first-child .proposed")]
     api = client.get(
         "/api/v1/select",
         params={"load_n": 674 * 4.4482216152605, "speed_mm_s": 19.7 * 25.4,
@@ -742,7 +743,7 @@ def test_fixes_and_proposals_follow_the_chosen_units(client: TestClient) -> None
     ).json()  # fmt: skip
     units = {"load_n": " lbf", "speed_mm_s": " in/s", "length_mm": " in"}
     assert [p.rsplit(" ", 1)[1] for p in proposals] == [
-        units[name].strip() for name in api["summary"]["input_change"]
+        units[name].strip() for name in api["summary"]["remedies"][0]["inputs"]
     ]
     fixes = notice.select_one("ul.failed-fixes").text
     assert " in" in fixes and "lbf" in fixes and " mm" not in fixes and " N " not in fixes

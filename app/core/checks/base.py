@@ -19,6 +19,8 @@ from app.core.quantities import Quantities, compression_sign
 from app.core.table import Array, CandidateTable, Mask, Reach
 
 __all__ = [
+    "FIX_MARGIN",
+    "MARGIN_NOTE",
     "Application",
     "Array",
     "CandidateTable",
@@ -30,12 +32,32 @@ __all__ = [
     "Quantities",
     "Reach",
     "ScrewSpec",
+    "at_least",
+    "at_most",
     "same",
     "sentence",
 ]
 
 #: A limit rejects a candidate; advice is reported beside it.
 Kind = Literal["limit", "advice"]
+#: A fix proposes values this far inside the limit they are worked out from (a shorter
+#: length, a larger size, a lower speed, a stronger motor), so that the fixed design does
+#: not sit on the limit: a figure rounded for display would otherwise land at a
+#: utilisation just above 1. ``MARGIN_NOTE`` says so in the fix.
+FIX_MARGIN = 0.05
+MARGIN_NOTE = " Each figure keeps a 5 % margin to its limit."
+
+
+def at_most(limit: float) -> float:
+    """A proposed upper value, ``FIX_MARGIN`` below the ``limit`` it must not exceed."""
+    return limit * (1.0 - FIX_MARGIN)
+
+
+def at_least(limit: float) -> float:
+    """A proposed lower value, ``FIX_MARGIN`` above the ``limit`` it must reach."""
+    return limit * (1.0 + FIX_MARGIN)
+
+
 #: End fixities from the most to the least flexible.
 FIXITY_ORDER: tuple[EndFixity, ...] = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
 

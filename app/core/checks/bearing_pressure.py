@@ -2,6 +2,7 @@
 material allows at the sliding speed (bronze by a table, polymers by p_max and PV)."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -11,6 +12,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     load_input,
     where_given,
 )
@@ -52,27 +54,52 @@ class BearingPressure(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        values: dict[str, Amount | str | Phrase] = {
+            "f": Amount(r.peak_force_n, "force"),
+            "cap": Amount(r.nut_allowed_load_n, "force"),
+            "v": Amount(r.sliding_speed_m_s, "speed"),
+            "p": Amount(r.nut_allowed_pressure_pa, "pressure"),
+            "why": _slower(s, r),
+        }
         return Phrase(
             "The peak thrust {f} " + verb + " the load {cap} that the nut's engaged "
-            "flanks carry at the sliding speed {v}, where the nut material allows {p} (a "
-            "larger size slides faster at the same speed of turning, and its material may "
-            "allow less there).",
-            {
-                "f": Amount(r.peak_force_n, "force"),
-                "cap": Amount(r.nut_allowed_load_n, "force"),
-                "v": Amount(r.sliding_speed_m_s, "speed"),
-                "p": Amount(r.nut_allowed_pressure_pa, "pressure"),
-            },
+            "flanks carry at the sliding speed {v}, where the nut material allows {p}{why}.",
+            values,
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "At this speed the load may be at most {cap}; a longer nut, a larger size or a "
-            "nut material that allows more pressure carries more.",
-            {"cap": Amount(r.nut_allowed_load_n, "force")},
+            "nut material that allows more pressure carries more." + MARGIN_NOTE,
+            {"cap": Amount(at_most(r.nut_allowed_load_n), "force")},
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
         return load_input(app, r.nut_allowed_load_n)
+
+
+def _slower(s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    """Why the allowable pressure is below the material's slow-sliding one, when it is:
+    the flanks slide faster than its table's first row (a larger size, at the same speed
+    of turning, slides faster: it may carry less although its flank area is larger), or
+    its PV limit binds. Empty when the slow-sliding pressure holds."""
+    table = s.bearing_pressure_table
+    slow = [p for p in (table[0][1] if table else None, s.max_pressure_pa) if p is not None]
+    if not slow or r.nut_allowed_pressure_pa >= min(slow):
+        return Phrase("")
+    values: dict[str, Amount | str | Phrase] = {"p0": Amount(min(slow), "pressure")}
+    if table and r.sliding_speed_m_s > table[0][0]:
+        values["v0"] = Amount(table[0][0], "speed")
+        return Phrase(
+            ", less than the {p0} it allows up to {v0}: the allowable pressure falls as the "
+            "flanks slide faster, and a larger size slides faster at the same speed of "
+            "turning, so it may carry less although its flanks are larger",
+            values,
+        )
+    return Phrase(
+        ", less than its {p0} at slow sliding: its PV limit binds at this speed, and a "
+        "larger size slides faster at the same speed of turning",
+        values,
+    )

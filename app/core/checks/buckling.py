@@ -2,6 +2,7 @@
 Euler when the screw is slender, Johnson's parabola when it is short."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -12,6 +13,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
     load_input,
     sentence,
     stiffer_support,
@@ -91,19 +93,21 @@ class ColumnBuckling(Check):
         d_min = buckling.min_root_diameter_for_load(
             s.root_diameter_m, r.allowed_load_n, r.compressive_force_n
         )
+        length = _max_length(app, s, r, at_least(r.compressive_force_n))
         values: dict[str, Amount | str] = {
             "support": stiffer_support(app, passes),
-            "length": Amount(_max_length(app, s, r), "length"),
+            "length": Amount(length, "length"),
             "fixity": app.end_fixity,
         }
+        # no column of this screw carries the thrust when its root yields first
+        column = " (column at most {length} with the ends {fixity})" if length > 0 else ""
         template = (
-            "{support} (column at most {length} with the ends {fixity}), or move the thrust "
-            "bearing so that the load pulls the screw."
+            "{support}" + column + ", or move the thrust bearing so that the load pulls the screw."
         )
-        if d_min <= reach.max_root_diameter_m:
-            values["d"] = Amount(d_min, "length")
+        if at_least(d_min) <= reach.max_root_diameter_m:
+            values["d"] = Amount(at_least(d_min), "length")
             template = "Use a root diameter of at least {d}, or " + template
-        return sentence(template, values)
+        return sentence(template + MARGIN_NOTE, values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
@@ -113,10 +117,15 @@ class ColumnBuckling(Check):
         return {**limits, "length_m": length} if length > 0 else limits
 
 
-def _max_length(app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
-    """Longest column carrying the peak thrust with the buckling factor [m]."""
+def _max_length(
+    app: Application, s: ScrewSpec, r: Quantities[float], force_n: float | None = None
+) -> float:
+    """Longest column carrying the peak thrust (or ``force_n``) with the buckling factor
+    [m]. A fix asks for the column that carries the thrust with its margin: in Johnson's
+    short-column range the critical load hardly grows as the column shortens, so a
+    length a margin shorter would not keep the margin."""
     return buckling.max_length_for_column(
-        r.compressive_force_n / app.buckling_safety_factor,
+        (r.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
         s.youngs_modulus_pa,
         s.root_diameter_m,
         app.end_fixity,

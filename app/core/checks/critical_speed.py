@@ -1,6 +1,7 @@
 """Screw speed against the allowed fraction of its first whirling speed."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -11,6 +12,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
+    at_most,
     everywhere,
     sentence,
     stiffer_support,
@@ -76,18 +79,19 @@ class CriticalSpeed(Check):
         options = []
         values: dict[str, Amount | str] = {
             "support": stiffer_support(app, passes),
-            "length": Amount(_max_length(app, r), "length"),
+            "length": Amount(at_most(_max_length(app, r)), "length"),
             "fixity": app.end_fixity,
         }
-        made = reach.made_lead(s, lead, larger=True)
+        made = reach.made_lead(s, at_least(lead), larger=True)
         if made is not None and made <= reach.max_lead_m:
             options.append("a lead of at least {lead}")
             values["lead"] = Amount(made, "length")
-        if d_min <= reach.max_root_diameter_m:
+        if at_least(d_min) <= reach.max_root_diameter_m:
             options.append("a root diameter of at least {d}")
-            values["d"] = Amount(d_min, "length")
+            values["d"] = Amount(at_least(d_min), "length")
         use = ("Use " + ", or ".join(options) + ", or {support}") if options else "{support}"
         template = use + " (unsupported length at most {length} with the ends {fixity})."
+        template += MARGIN_NOTE
         return sentence(template, values)
 
     def input_limits(

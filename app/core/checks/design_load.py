@@ -1,6 +1,9 @@
-"""Axial force against the design load of the size (when the catalog gives one)."""
+"""Axial force against the load the nut is rated for in motion: the size's design load
+(when the catalog gives one), else a polymer nut's dynamic load (its permissible flank
+pressure in motion over the engaged flank area)."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +13,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     load_input,
     where_given,
 )
@@ -21,41 +25,68 @@ class DesignLoad(Check):
     label = "Design load"
     description = (
         "The peak thrust (running load plus the force that accelerates or brakes the "
-        "moving mass, the larger) "
-        "against the load the nut of this size is designed for."
+        "moving mass, the larger) against the load the nut of this size is designed for: "
+        "the size's design load, or for a polymer nut its dynamic load, the permissible "
+        "flank pressure in motion over the engaged flanks (nut length over pitch turns of "
+        "pi d2 H1 each)."
     )
     quantity = "force"
     formula = "F = F_peak; F_design = F_size"
-    source = "catalog design load of the size (see its provenance)"
-    sources = ("design_load",)
-    capacity_sources = ("design_load",)
+    source = (
+        "catalog design load of the size, or p_dyn x (L_nut / P) pi d2 H1 for a polymer "
+        "nut (see their provenance)"
+    )
+    sources = ("design_load", "dynamic_pressure", "nut_length", "pitch")
+    capacity_sources = ("design_load", "dynamic_pressure", "nut_length")
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(t.design_load_n), q.peak_force_n, t.design_load_n)
+        return Measure(where_given(q.rated_load_n), q.peak_force_n, q.rated_load_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"F_peak": q.peak_force_n, "F_size": t.design_load_n}
+        return {"F_peak": q.peak_force_n, "F_size": q.rated_load_n}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        values: dict[str, Amount | str] = {
+            "f": Amount(r.peak_force_n, "force"),
+            "cap": Amount(r.rated_load_n, "force"),
+        }
+        if s.design_load_n is not None or s.dynamic_pressure_pa is None:
+            return Phrase("Peak thrust {f} " + verb + " the design load {cap}.", values)
+        values.update(_polymer_values(s))
         return Phrase(
-            "Peak thrust {f} " + verb + " the design load {cap}.",
-            {
-                "f": Amount(r.peak_force_n, "force"),
-                "cap": Amount(s.design_load_n or 0.0, "force"),
-            },
+            "Peak thrust {f} " + verb + " the dynamic load {cap} of this {material} nut: "
+            "{p} over its engaged flanks ({kind}: {source}).",
+            values,
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        if s.design_load_n is None:
+            return Phrase(
+                "Reduce the peak thrust to at most {cap}, or carry it on a longer nut, a "
+                "larger size or a nut material rated higher in motion (bronze)." + MARGIN_NOTE,
+                {"cap": Amount(at_most(r.rated_load_n), "force")},
+            )
         larger = " or choose a larger size" if reach.max_design_load_n >= r.peak_force_n else ""
         return Phrase(
-            "Reduce the peak thrust to at most {cap}" + larger + ".",
-            {"cap": Amount(s.design_load_n or 0.0, "force")},
+            "Reduce the peak thrust to at most {cap}" + larger + "." + MARGIN_NOTE,
+            {"cap": Amount(at_most(r.rated_load_n), "force")},
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return load_input(app, s.design_load_n or 0.0)
+        return load_input(app, r.rated_load_n)
+
+
+def _polymer_values(s: ScrewSpec) -> dict[str, Amount | str]:
+    """The polymer nut's rating in words: material, pressure and where it comes from."""
+    prov = s.provenance.get("dynamic_pressure")
+    return {
+        "material": s.nut_material or "polymer",
+        "p": Amount(s.dynamic_pressure_pa or 0.0, "pressure"),
+        "kind": prov.kind if prov else "derived",
+        "source": prov.source if prov else "catalog",
+    }

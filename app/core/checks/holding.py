@@ -4,6 +4,7 @@ import numpy as np
 
 from app.core import motion
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -13,6 +14,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
     everywhere,
     same,
 )
@@ -96,11 +98,11 @@ class Holding(Check):
 def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
     """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
     that self-locks with margin, when it is made in one."""
-    values = {"needed": Amount(r.brake_needed_nm, "torque")}
+    values = {"needed": Amount(at_least(r.brake_needed_nm), "torque")}
     lead = reach.made_lead(s, r.max_lock_lead_m, larger=False)
     if lead is None:
-        return Phrase(start + ".", values)
+        return Phrase(start + "." + MARGIN_NOTE, values)
     return Phrase(
-        start + ", or use a lead of {lead} (self-locking with margin).",
+        start + ", or use a lead of {lead} (self-locking with margin)." + MARGIN_NOTE,
         {**values, "lead": Amount(lead, "length")},
     )

@@ -1,6 +1,7 @@
 """Screw length against the longest screw the family makes in this variant."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     same,
     where_given,
 )
@@ -52,8 +54,8 @@ class Length(Check):
             else ""
         )
         return Phrase(
-            "Shorten the screw to at most {cap}" + longer + ".",
-            {"cap": Amount(s.max_length_m or 0.0, "length")},
+            "Shorten the screw to at most {cap}" + longer + "." + MARGIN_NOTE,
+            {"cap": Amount(at_most(s.max_length_m or 0.0), "length")},
         )
 
     def input_limits(

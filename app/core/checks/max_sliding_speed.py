@@ -1,6 +1,7 @@
 """Flank sliding speed of a polymer nut against the material's maximum sliding speed."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     where_given,
 )
 from app.core.phrase import Amount, Phrase
@@ -59,8 +61,9 @@ class MaxSlidingSpeed(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
-            "Move at most {speed}, or choose a larger lead (fewer turns for the same travel).",
-            {"speed": Amount(self._max_linear_speed(app, s, r), "speed")},
+            "Move at most {speed}, or choose a larger lead (fewer turns for the same travel)."
+            + MARGIN_NOTE,
+            {"speed": Amount(at_most(self._max_linear_speed(app, s, r)), "speed")},
         )
 
     def input_limits(

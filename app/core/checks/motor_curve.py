@@ -4,6 +4,7 @@ import math
 
 from app.core import motion
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -13,6 +14,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
+    at_most,
     everywhere,
 )
 from app.core.phrase import Amount, Phrase
@@ -70,7 +73,7 @@ class MotorCurve(Check):
             "{curve} there.",
             {
                 "segment": worst_segment(app, r),
-                "need": Amount(r.motor_worst_needed_nm, "torque"),
+                "need": Amount(at_least(r.motor_worst_needed_nm), "torque"),
                 "rpm": Amount(r.motor_worst_rpm, "rpm"),
                 "curve": Amount(r.motor_curve_nm, "torque"),
             },
@@ -87,13 +90,13 @@ class MotorCurve(Check):
         if accel is None:
             return Phrase(
                 "The {segment} segment is {short} short: a motor giving {need} at {rpm}, or "
-                "a lower speed, acceleration or load.",
+                "a lower speed, acceleration or load." + MARGIN_NOTE,
                 values,
             )
-        values["accel"] = Amount(accel, "accel")
+        values["accel"] = Amount(at_most(accel), "accel")
         return Phrase(
             "The {segment} segment is {short} short: an acceleration of at most {accel}, "
-            "or a motor giving {need} at {rpm}.",
+            "or a motor giving {need} at {rpm}." + MARGIN_NOTE,
             values,
         )
 

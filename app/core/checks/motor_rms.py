@@ -1,6 +1,7 @@
 """The RMS torque of the cycle against the motor's continuous rating (its heating)."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
     everywhere,
     same,
 )
@@ -56,6 +58,6 @@ class MotorRms(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "A motor rated for at least {need} continuous, or a longer dwell, lower "
-            "acceleration or load.",
-            {"need": Amount(r.motor_rms_needed_nm, "torque")},
+            "acceleration or load." + MARGIN_NOTE,
+            {"need": Amount(at_least(r.motor_rms_needed_nm), "torque")},
         )

@@ -1,6 +1,7 @@
 """The move's top speed inside the motor's torque-speed curve."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
+    at_most,
     everywhere,
     same,
 )
@@ -58,10 +61,13 @@ class MotorSpeed(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
-            "A speed of at most {speed}, a lead of at least {lead}, or a faster motor.",
+            "A speed of at most {speed}, a lead of at least {lead}, or a faster motor."
+            + MARGIN_NOTE,
             {
-                "speed": Amount(geometry.linear_speed(top_curve_rpm(app), s.lead_m), "speed"),
-                "lead": Amount(r.peak_rpm * s.lead_m / top_curve_rpm(app), "length"),
+                "speed": Amount(
+                    at_most(geometry.linear_speed(top_curve_rpm(app), s.lead_m)), "speed"
+                ),
+                "lead": Amount(at_least(r.peak_rpm * s.lead_m / top_curve_rpm(app)), "length"),
             },
         )
 

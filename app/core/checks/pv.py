@@ -1,6 +1,7 @@
 """PV of the nut (contact pressure times sliding speed) against the nut material's limit."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     load_input,
     where_given,
 )
@@ -54,10 +56,10 @@ class NutPV(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "At this speed the load may be at most {load}; at this load the speed may be at "
-            "most {speed}.",
+            "most {speed}." + MARGIN_NOTE,
             {
-                "load": Amount(r.pv_max_load_n, "force"),
-                "speed": Amount(r.pv_max_speed_m_s, "speed"),
+                "load": Amount(at_most(r.pv_max_load_n), "force"),
+                "speed": Amount(at_most(r.pv_max_speed_m_s), "speed"),
             },
         )
 

@@ -1,6 +1,7 @@
 """Axial stress at the root section under the peak thrust against the screw's yield."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
     load_input,
     where_given,
 )
@@ -58,11 +60,11 @@ class RootStress(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        d_min = s.root_diameter_m * (r.root_stress_pa / _allowed(app, s)) ** 0.5
+        d_min = at_least(s.root_diameter_m * (r.root_stress_pa / _allowed(app, s)) ** 0.5)
         if d_min > reach.max_root_diameter_m:
             return Phrase("Reduce the load or the moving mass's acceleration.")
         return Phrase(
-            "Use a root diameter of at least {d}, or reduce the load.",
+            "Use a root diameter of at least {d}, or reduce the load." + MARGIN_NOTE,
             {"d": Amount(d_min, "length")},
         )
 

@@ -1,6 +1,7 @@
 """The step pulse rate the top speed needs against the controller's maximum."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     everywhere,
     same,
 )
@@ -66,11 +68,11 @@ class StepRate(Check):
         limit = app.max_step_rate_hz or 0.0
         rpm = limit / _steps_per_rev(app) * stepping.SECONDS_PER_MINUTE
         return Phrase(
-            "At a step rate of {limit} the screw turns at most {rpm} ({speed} on this "
-            "lead): fewer microsteps, a longer lead or a lower speed.",
+            "At a step rate of {limit} the screw may turn {rpm} ({speed} on this lead): "
+            "fewer microsteps, a longer lead or a lower speed." + MARGIN_NOTE,
             {
                 "limit": Amount(limit, "frequency"),
-                "rpm": Amount(rpm, "rpm"),
-                "speed": Amount(geometry.linear_speed(rpm, s.lead_m), "speed"),
+                "rpm": Amount(at_most(rpm), "rpm"),
+                "speed": Amount(at_most(geometry.linear_speed(rpm, s.lead_m)), "speed"),
             },
         )

@@ -4,6 +4,7 @@ import numpy as np
 
 from app.core import motion
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -13,6 +14,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
     everywhere,
     same,
 )
@@ -61,6 +63,7 @@ class DriveTorque(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
-            "A drive of at least {req}, or a shorter lead, lower load or acceleration.",
-            {"req": Amount(r.required_nm, "torque")},
+            "A drive of at least {req}, or a shorter lead, lower load or acceleration."
+            + MARGIN_NOTE,
+            {"req": Amount(at_least(r.required_nm), "torque")},
         )

@@ -1,6 +1,7 @@
 """Linear speed against the family's recommended speed for the lead (a band table)."""
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -10,6 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     same,
     where_given,
 )
@@ -63,10 +65,12 @@ class TraverseSpeed(Check):
         faster = [band for band in s.traverse_bands if band[2] >= app.speed_m_s]
         lead = reach.made_lead(s, faster[0][0], larger=True) if faster else None
         if lead is None:
-            return Phrase("Run at most {limit}.", {"limit": Amount(_limit(s), "speed")})
+            return Phrase(
+                "Run at most {limit}." + MARGIN_NOTE, {"limit": Amount(at_most(_limit(s)), "speed")}
+            )
         return Phrase(
-            "Run at most {limit}, or a lead of at least {lead}.",
-            {"limit": Amount(_limit(s), "speed"), "lead": Amount(lead, "length")},
+            "Run at most {limit}, or a lead of at least {lead}." + MARGIN_NOTE,
+            {"limit": Amount(at_most(_limit(s)), "speed"), "lead": Amount(lead, "length")},
         )
 
     def input_limits(

@@ -1,0 +1,184 @@
+"""When nothing passes: changes of the application that make a screw pass with a margin,
+each verified by screening again with it made, or why no leadscrew can do it.
+
+A rejected candidate's failed checks say which input value would clear each one
+(``Check.input_limits``: the value at the limit itself). A remedy moves each input
+``MARGIN`` past that value (a load divided by 1.05, a stroke speed too), so that the
+applied change never lands on a limit, then screens the eligible candidates again with
+the change made: it is offered only when a candidate then passes with its governing
+utilisation at most ``1 / (1 + MARGIN)``. Remedies span more than one input: a single
+input, the nearest candidate's inputs together, two inputs each moved part of the way
+(shorter AND slower), and a stiffer mounting of the screw's ends, alone or with one input.
+"""
+
+import math
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import replace
+from itertools import combinations
+
+import numpy as np
+
+from app.core.model import Application, Remedy
+from app.core.phrase import Phrase
+from app.core.screening import Screening, screen_table
+
+#: How far past a limit a proposed input lands: a remedy must pass at a governing
+#: utilisation of at most 1 / (1 + MARGIN).
+MARGIN = 0.05
+#: End fixities from the least to the most stiff (critical speed and buckling rise).
+FIXITIES = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
+#: Checks a stiffer mounting of the screw's ends helps.
+MOUNTING_CHECKS = frozenset({"critical_speed", "buckling"})
+#: Shares of the way to its single-input value each of two inputs moves together.
+SPLITS = (0.5, 0.75)
+#: At most this many remedies are offered, and this many changes screened.
+OFFERED, TRIED = 6, 24
+#: Why no leadscrew can do it, by the check that excludes the most.
+WHY: Mapping[str, str] = {
+    "critical_speed": "the speed needs a critical-speed margin no screw of this length "
+    "reaches, at any mounting: consider a ball screw, a rotating nut or an intermediate "
+    "screw support",
+    "buckling": "the thrust buckles every screw of this length: consider mounting it so "
+    "that it pulls (tension), a screw support, or a ball screw",
+    "pv": "no nut carries this load at this speed (PV): consider a ball screw, whose "
+    "rolling contact has no PV limit",
+    "bearing_pressure": "no nut carries this thrust at its contact pressure: consider a "
+    "longer nut or a ball screw",
+    "max_sliding_speed": "no nut slides this fast: consider a longer lead, a ball screw or a belt",
+    "wear_life": "no nut lasts this duty: consider a ball screw",
+    "torque": "the motor is too small for every screw: a larger motor or a gearbox",
+    "motor_curve": "the motor's curve is too low for every screw: a larger motor or a gearbox",
+    "motor_rms": "the motor's RMS torque is too low for every screw: a larger motor",
+    "motor_speed": "the motor cannot turn fast enough for every lead: a faster motor",
+    "length": "no screw in the catalog is made this long: consider a ball screw or a belt",
+    "design_load": "the thrust exceeds every screw's design load: consider a ball screw",
+    "root_stress": "the thrust yields every screw's root: consider a ball screw",
+    "temperature": "no nut in the catalog is rated for this temperature: consider a metal "
+    "nut outside the catalog or a ball screw",
+    "coating_environment": "no nut suits this environment (oil, coating): choose another "
+    "nut material",
+    "vacuum": "no nut is rated for vacuum: consider a vacuum-rated ball screw",
+    "back_driving": "every screw back-drives under this load: add a brake (its torque as "
+    "an input) or a self-locking worm stage",
+    "holding": "no brake torque given holds this load on any screw: a larger brake",
+    "holding_power_off": "the motor's detent torque holds this load on no screw: add a brake",
+    "anti_backlash": "no anti-backlash nut suits this axis: a preloaded ball screw",
+    "nut_heat": "every nut runs too hot at this duty: a ball screw, or a lower duty",
+}
+
+#: A change of the application: core input name -> SI value (or the end fixity).
+Inputs = Mapping[str, float | str]
+
+
+def past_limit(current: float, limit: float) -> float:
+    """``limit`` moved MARGIN further from ``current``: divided by 1 + MARGIN when the
+    input must fall, multiplied when it must rise.
+
+    >>> round(past_limit(1000.0, 420.0), 3), round(past_limit(1.0, 2.0), 3)
+    (400.0, 2.1)
+    """
+    return limit / (1.0 + MARGIN) if limit < current else limit * (1.0 + MARGIN)
+
+
+def part_way(current: float, target: float, share: float) -> float:
+    """``share`` of the way from ``current`` to ``target``, geometrically (a length and
+    a speed act as powers, so halving the ratio halves the step in the exponent)."""
+    if current <= 0.0 or target <= 0.0:
+        return current + share * (target - current)
+    return float(current * (target / current) ** share)
+
+
+def within(change: Inputs, ranges: Mapping[str, tuple[float, float]]) -> bool:
+    """Every numeric value of ``change`` within its input's accepted range."""
+    for key, value in change.items():
+        low, high = ranges.get(key, (-math.inf, math.inf))
+        if isinstance(value, float) and not low <= value <= high:
+            return False
+    return True
+
+
+def verify(app: Application, sc: Screening, change: Inputs) -> Remedy | None:
+    """Screen the candidates of ``sc`` again with ``change`` made: a remedy when one
+    passes at a governing utilisation of at most 1 / (1 + MARGIN)."""
+    changed = replace(app, **dict(change))  # type: ignore[arg-type]
+    again = screen_table(changed, sc.table, sc.index, sc.reach)
+    worst = again.max_utilization[again.passed]
+    bound = 1.0 / (1.0 + MARGIN)
+    clear = worst[worst <= bound]
+    if not clear.size:
+        return None
+    return Remedy(dict(change), int(np.count_nonzero(again.passed)), float(clear.min()))
+
+
+def _now(app: Application, key: str) -> float:
+    """The application's current value of input ``key`` (0 when it has none)."""
+    value = getattr(app, key, None)
+    return float(value) if isinstance(value, int | float) else 0.0
+
+
+def stiffer(app: Application, failed: set[str]) -> tuple[str, ...]:
+    """Stiffer end fixities than ``app``'s, when a check they help fails."""
+    if not failed & MOUNTING_CHECKS or app.end_fixity not in FIXITIES:
+        return ()
+    return FIXITIES[FIXITIES.index(app.end_fixity) + 1 :]
+
+
+def proposals(
+    app: Application, targets: Sequence[Mapping[str, float]], failed: set[str]
+) -> Iterator[Inputs]:
+    """Changes to try, fewest inputs first: each input alone; each candidate's inputs
+    together; a stiffer mounting alone; two inputs each part of the way; a stiffer
+    mounting with one input part of the way. Numbers are ``past_limit`` already."""
+    singles = sorted(
+        {(k, past_limit(_now(app, k), v)) for t in targets for k, v in t.items() if _now(app, k)},
+        key=lambda kv: abs(math.log(kv[1] / _now(app, kv[0]))) if kv[1] > 0 else math.inf,
+    )
+    yield from ({k: v} for k, v in singles)
+    # each input's furthest single value: the way two inputs share part of
+    single = dict(singles)
+    for target in targets:
+        if len(target) > 1:
+            yield {k: past_limit(_now(app, k), v) for k, v in target.items()}
+    mountings = stiffer(app, failed)
+    yield from ({"end_fixity": f} for f in mountings)
+    for share in SPLITS:
+        for a, b in combinations(single, 2):
+            yield {k: part_way(_now(app, k), single[k], share) for k in (a, b)}
+        for fixity in mountings:
+            for key, value in single.items():
+                yield {"end_fixity": fixity, key: part_way(_now(app, key), value, share)}
+
+
+def remedies(
+    app: Application,
+    sc: Screening,
+    targets: Sequence[Mapping[str, float]],
+    failed: set[str],
+    ranges: Mapping[str, tuple[float, float]],
+) -> tuple[Remedy, ...]:
+    """Verified remedies (at most OFFERED, each a distinct set of inputs), from the
+    input values that clear the nearest candidates' failed checks (``targets``)."""
+    found: list[Remedy] = []
+    seen: set[frozenset[str]] = set()
+    for tried, change in enumerate(proposals(app, targets, failed)):
+        if tried == TRIED or len(found) == OFFERED:
+            break
+        keys = frozenset(change)
+        if keys in seen or not within(change, ranges):
+            continue
+        remedy = verify(app, sc, change)
+        if remedy is not None:
+            found.append(remedy)
+            seen.add(keys)
+    return tuple(found)
+
+
+def impossible(most_excluding: str | None, label: str) -> Phrase:
+    """Why no leadscrew of the catalog can do it: the check that excludes the most, and
+    what kind of drive could."""
+    why = WHY.get(most_excluding or "", f"{label} excludes every screw")
+    return Phrase(
+        "No leadscrew in the catalog can do this within the accepted inputs: no change of "
+        f"load, speed, length, acceleration or mounting tried lets one pass with a "
+        f"{MARGIN * 100:.0f} % margin. {why[0].upper()}{why[1:]}."
+    )

@@ -1,0 +1,213 @@
+"""Why this screw, in two lines: what governs it and by how much, which assumed catalog
+values that rests on, and what to watch.
+
+``verdict(candidate)`` reads a candidate record (``app.core.record.Candidate``): its
+governing check (the rejecting check closest to its limit), its other checks, the
+provenance of the catalog values each check reads and the ranged values its pass hinges
+on (``app.core.robustness``). Catalog keys (``pv_limit_mpa_m_s``, ``dynamic_load_lbf``)
+are named in words (``value_label``); the sentences are ``Phrase``s, rendered at the edge.
+"""
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from app.core import motion
+from app.core.model import Provenance
+from app.core.phrase import Amount, Phrase, join
+
+if TYPE_CHECKING:
+    from app.core.record import Candidate, CheckResult
+
+#: Catalog values by their base name (no nut variant, no unit), in the reader's words.
+VALUE_LABELS: Mapping[str, str] = {
+    "allowed_wear": "allowed wear depth",
+    "allowed_wear_to_flank_height": "allowed wear depth",
+    "backlash": "backlash",
+    "bearing_pressure": "allowed contact pressure",
+    "bearing_pv_limit": "nut PV limit",
+    "density": "screw density",
+    "design_contact_pressure": "design contact pressure",
+    "design_load": "design load",
+    "design_load_factor": "design load factor",
+    "drag_torque": "nut drag torque",
+    "dynamic_load": "dynamic load rating",
+    "friction_dynamic": "running friction",
+    "friction_static": "static friction",
+    "inertia_per_length": "screw inertia",
+    "lead": "lead",
+    "lead_accuracy": "lead accuracy",
+    "life": "rated life",
+    "max_length": "maximum length",
+    "max_pressure": "maximum contact pressure",
+    "max_sliding_speed": "maximum sliding speed",
+    "nut_length": "nut length",
+    "nut_length_to_d": "nut length",
+    "oil_compatible": "oil compatibility",
+    "outer_diameter": "outer diameter",
+    "outgassing": "outgassing",
+    "pitch": "pitch",
+    "pv_limit": "PV limit",
+    "repeatability": "repeatability",
+    "root_diameter": "root diameter",
+    "root_diameter_ratio": "root diameter",
+    "specific_wear_rate": "specific wear rate",
+    "static_load": "static load rating",
+    "temperature_range": "temperature range",
+    "thermal_conductivity": "nut thermal conductivity",
+    "thread_half_angle": "flank angle",
+    "traverse_speed": "traverse speed limit",
+    "type": "nut type",
+    "wear_rate": "specific wear rate",
+    "yield_strength": "yield strength",
+    "youngs_modulus": "Young's modulus",
+}
+#: Unit endings of catalog keys (``pv_limit_mpa_m_s``), longest first.
+UNIT_ENDINGS = ("_mm3_n_m", "_mpa_m_s", "_n_m", "_m_s", "_mpa", "_lbf", "_kgf", "_mm", "_n")
+#: Nut variant endings of catalog keys (``friction_dynamic_tfe``).
+VARIANT_ENDINGS = ("_uncoated", "_tfe", "_bronze", "_acetal", "_ptfe")
+#: Provenance kinds a result may rest on without having been measured for this part.
+UNCERTAIN = ("assumed",)
+
+
+def value_label(key: str) -> str:
+    """A catalog key in words: its variant and unit endings dropped, then named.
+
+    >>> value_label("pv_limit_mpa_m_s"), value_label("dynamic_load_lbf")
+    ('PV limit', 'dynamic load rating')
+    >>> value_label("friction_static_bronze"), value_label("odd_new_key")
+    ('static friction', 'odd new key')
+    """
+    base = next((key.removesuffix(v) for v in VARIANT_ENDINGS if key.endswith(v)), key)
+    for name in (base, *(base.removesuffix(u) for u in UNIT_ENDINGS if base.endswith(u))):
+        if name in VALUE_LABELS:
+            return VALUE_LABELS[name]
+    return base.replace("_", " ")
+
+
+def percent(utilization: float) -> str:
+    """A utilisation as a percentage, a decimal kept near 100 % so 99.6 % never reads 100 %.
+
+    >>> percent(0.5234), percent(0.9962), percent(1.0004)
+    ('52 %', '99.6 %', '100.04 %')
+    """
+    value = utilization * 100.0
+    if 99.5 <= value < 100.0 or 100.0 < value <= 100.5:
+        digits = 1 if value < 100.0 else 2
+        return f"{value:.{digits}f} %"
+    return f"{value:.0f} %"
+
+
+@dataclass(frozen=True, slots=True)
+class Rest:
+    """A catalog value the governing result rests on: its key, its name in words, its
+    provenance kind, and whether the pass fails at one end of its range (``hinges``)."""
+
+    field: str
+    label: str
+    kind: str
+    hinges: bool
+
+
+@dataclass(frozen=True, slots=True)
+class Verdict:
+    """A candidate's verdict: the governing check (name, label, utilisation, margin =
+    1 - utilisation: the share of the limit left), what it rests on, what to watch, and
+    all of it as one or two sentences (``text``)."""
+
+    governs: str | None
+    governs_label: str
+    utilization: float | None
+    margin: float | None
+    rests_on: tuple[Rest, ...]
+    watch: tuple[Phrase, ...]
+    text: Phrase
+
+
+def rests_on(
+    governing: "CheckResult | None", provenance: Mapping[str, Provenance], hinges: Sequence[str]
+) -> tuple[Rest, ...]:
+    """The assumed catalog values the governing check reads, then the ranged values the
+    pass hinges on (robustness), each once."""
+    found: dict[str, Rest] = {}
+    for key in () if governing is None else governing.check.sources:
+        p = provenance.get(key)
+        if p is not None and p.kind in UNCERTAIN:
+            found[value_label(key)] = Rest(key, value_label(key), p.kind, False)
+    for key in hinges:
+        label = value_label(key)
+        kind = found[label].kind if label in found else "assumed range"
+        found[label] = Rest(key, label, kind, True)
+    return tuple(found.values())
+
+
+def runner_up(
+    checks: Sequence["CheckResult"], governing: "CheckResult | None"
+) -> "CheckResult | None":
+    """The numeric limit closest to its own, after the governing check."""
+    others = [
+        c for c in checks if c is not governing and c.kind == "limit" and c.utilization is not None
+    ]
+    return max(others, key=lambda c: c.utilization or 0.0, default=None)
+
+
+def watch_list(c: "Candidate") -> tuple[Phrase, ...]:
+    """What to keep an eye on: failed advice, the next-closest limit, and how the load is
+    held with the power off."""
+    found = [Phrase(f"{w.label} (advice)") for w in c.warnings]
+    second = runner_up(c.checks, c.governing)
+    if second is not None and second.utilization is not None:
+        found.append(Phrase(f"{second.label} next, at {percent(second.utilization)}"))
+    if motion.holds_a_load(c.app) and not c.self_locking_with_margin:
+        detent = next((k for k in c.checks if k.name == "holding_power_off"), None)
+        if detent is not None and detent.utilization is not None:
+            found.append(
+                Phrase(f"power off: held by the detent torque at {percent(detent.utilization)}")
+            )
+        else:
+            brake = Amount(c.brake_torque_nm, "torque")
+            found.append(Phrase("back-drives: a brake of {t} holds it power-off", {"t": brake}))
+    return tuple(found)
+
+
+def sentence(
+    governing: "CheckResult | None", passed: bool, rest: Sequence[Rest], watch: Sequence[Phrase]
+) -> Phrase:
+    """The verdict in words: governs (utilisation, margin); rests on; watch."""
+    if governing is None:
+        head = Phrase("No limit applies beyond the catalog's own.")
+    elif governing.utilization is None:
+        state = "holds" if governing.passed else "fails"
+        head = Phrase(f"Governed by {governing.label}: {state}.")
+    else:
+        u = governing.utilization
+        verb = "Governed by" if passed else "Fails on"
+        margin = f"{percent(1.0 - u)} margin" if u <= 1.0 else f"{percent(u - 1.0)} over"
+        head = Phrase(f"{verb} {governing.label} at {percent(u)} ({margin}).")
+    parts = [head]
+    assumed = [r.label for r in rest if not r.hinges]
+    hinged = [r.label for r in rest if r.hinges]
+    if assumed:
+        parts.append(Phrase(f"Rests on assumed {', '.join(assumed)}."))
+    if hinged:
+        parts.append(Phrase(f"Marginal: fails at one end of the range of {', '.join(hinged)}."))
+    if watch:
+        parts.append(Phrase("Watch: {w}.", {"w": join(list(watch), "; ")}))
+    return join(parts)
+
+
+def verdict(c: "Candidate") -> Verdict:
+    """The verdict of candidate record ``c``."""
+    g = c.governing
+    rest = rests_on(g, c.screw.provenance, c.hinges_on)
+    watch = watch_list(c)
+    u = None if g is None else g.utilization
+    return Verdict(
+        governs=None if g is None else g.name,
+        governs_label="" if g is None else g.label,
+        utilization=u,
+        margin=None if u is None else 1.0 - u,
+        rests_on=rest,
+        watch=watch,
+        text=sentence(g, bool(c.passed), rest, watch),
+    )

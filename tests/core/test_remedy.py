@@ -1,0 +1,93 @@
+"""Remedies when nothing passes (app.core.remedy): 5 % past each limit, verified by
+screening again, spanning inputs and mounting; and why when nothing can."""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from app.catalog import Catalog
+from app.core.model import Application
+from app.core.remedy import MARGIN, part_way, past_limit
+from app.core.selection import screen, select
+from app.report.service import INPUT_RANGES
+
+
+def test_a_proposal_lands_five_percent_past_its_limit() -> None:
+    # lowering: a 420 N limit becomes 420 / 1.05 = 400 N; raising: 2 -> 2 * 1.05 = 2.1
+    assert past_limit(1000.0, 420.0) == pytest.approx(400.0)
+    assert past_limit(1.0, 2.0) == pytest.approx(2.1)
+    # half-way, geometrically: from 1000 towards 250 -> sqrt(1000 * 250) = 500
+    assert part_way(1000.0, 250.0, 0.5) == pytest.approx(500.0)
+
+
+def _clears(app: Application, catalog: Catalog, change: dict[str, float | str]) -> float:
+    """The lowest governing utilisation among the candidates passing with ``change``."""
+    s = screen(replace(app, **change), catalog.index)  # type: ignore[arg-type]
+    assert np.any(s.passed)
+    return float(s.max_utilization[s.passed].min())
+
+
+@settings(max_examples=25)
+@given(
+    load_n=st.floats(500.0, 60_000.0),
+    speed_m_s=st.floats(0.05, 3.0),
+    length_m=st.floats(0.3, 4.0),
+    fixity=st.sampled_from(["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]),
+)
+def test_every_remedy_passes_with_the_margin(
+    catalog: Catalog, load_n: float, speed_m_s: float, length_m: float, fixity: str
+) -> None:
+    app = Application(load_n=load_n, speed_m_s=speed_m_s, length_m=length_m, end_fixity=fixity)  # type: ignore[arg-type]
+    sel = select(app, catalog.index, INPUT_RANGES)
+    summary = sel.summary
+    if sel.passed:
+        assert summary.remedies == () and summary.impossible is None
+        return
+    assert bool(summary.remedies) != (summary.impossible is not None)
+    for remedy in summary.remedies:
+        best = _clears(app, catalog, dict(remedy.inputs))
+        assert best == pytest.approx(remedy.utilization)
+        assert best <= 1.0 / (1.0 + MARGIN)
+        for key, value in remedy.inputs.items():
+            low, high = INPUT_RANGES.get(key, (-np.inf, np.inf))
+            assert isinstance(value, str) or low <= value <= high
+
+
+def test_remedies_span_more_than_one_dimension(catalog: Catalog) -> None:
+    """10 kN at 500 mm/s over 3 m: the offered changes move two inputs together, or the
+    mounting with an input, not only one input at a time."""
+    app = Application(load_n=10_000.0, speed_m_s=0.5, length_m=3.0)
+    remedies = select(app, catalog.index, INPUT_RANGES).summary.remedies
+    assert remedies
+    assert any(len(r.inputs) >= 2 for r in remedies)
+
+
+def test_a_long_fast_axis_is_offered_a_stiffer_mounting(catalog: Catalog) -> None:
+    """Critical speed excludes everything at 2 m, 400 mm/s, fixed-free: a stiffer end
+    fixity (alone or with one input) is among the remedies."""
+    app = Application(load_n=100.0, speed_m_s=0.4, length_m=2.0, end_fixity="fixed-free")
+    sel = select(app, catalog.index, INPUT_RANGES)
+    assert sel.passed == 0 and sel.summary.most_excluding_check == "critical_speed"
+    remedies = sel.summary.remedies
+    assert any("end_fixity" in r.inputs for r in remedies)
+    assert any(set(r.inputs) == {"length_m"} for r in remedies)  # a shorter screw alone
+    both = [r for r in remedies if set(r.inputs) == {"length_m", "speed_m_s"}]
+    assert both  # shorter and slower, each part of the way
+    alone = {next(iter(r.inputs)): r.inputs for r in remedies if len(r.inputs) == 1}
+    for key in ("length_m", "speed_m_s"):
+        # part of the way: less of a change than the input alone needs
+        assert alone[key][key] < both[0].inputs[key] < getattr(app, key)
+
+
+def test_when_no_change_helps_it_says_no_leadscrew_can_and_why(catalog: Catalog) -> None:
+    """400 deg C ambient: no nut is rated for it and no input change helps."""
+    app = Application(load_n=100.0, speed_m_s=0.05, length_m=0.3, ambient_c=400.0)
+    summary = select(app, catalog.index, INPUT_RANGES).summary
+    assert summary.remedies == ()
+    assert summary.impossible is not None
+    text = summary.impossible.template
+    assert text.startswith("No leadscrew in the catalog can do this")
+    assert "temperature" in text and "5 % margin" in text

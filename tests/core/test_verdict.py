@@ -1,0 +1,94 @@
+"""A candidate's verdict (app.core.verdict): what governs with its utilisation and margin,
+the assumed values it rests on in words, and what to watch."""
+
+import pytest
+
+from app.catalog import Catalog
+from app.contract.units import DEFAULT_UNITS, render
+from app.core.model import Application
+from app.core.record import governing
+from app.core.selection import select
+from app.core.verdict import percent, value_label, verdict
+
+#: A horizontal axis where most screws pass with room (100 N, 50 mm/s, 300 mm).
+EASY = Application(load_n=100.0, speed_m_s=0.05, length_m=0.3)
+
+
+@pytest.mark.parametrize(
+    ("key", "words"),
+    [
+        ("pv_limit_mpa_m_s", "PV limit"),
+        ("dynamic_load_lbf", "dynamic load rating"),
+        ("bearing_pv_limit_mpa_m_s", "nut PV limit"),
+        ("max_sliding_speed_m_s", "maximum sliding speed"),
+        ("specific_wear_rate_mm3_n_m", "specific wear rate"),
+        ("friction_static_bronze", "static friction"),
+        ("nut_length_to_d", "nut length"),
+    ],
+)
+def test_catalog_keys_are_named_in_words(key: str, words: str) -> None:
+    assert value_label(key) == words
+    assert "_" not in value_label(key)
+
+
+def test_percent_never_rounds_a_near_limit_to_100() -> None:
+    assert percent(0.9962) == "99.6 %"
+    assert percent(1.0002) == "100.02 %"
+    assert percent(0.5) == "50 %"
+
+
+def test_the_verdict_names_the_check_closest_to_its_limit(catalog: Catalog) -> None:
+    sel = select(EASY, catalog.index)
+    assert sel.candidates
+    for c in sel.candidates[:10]:
+        v = verdict(c)
+        limits = [k for k in c.checks if k.kind == "limit" and k.utilization is not None]
+        top = max(limits, key=lambda k: k.utilization or 0.0)
+        assert v.governs == top.name == governing(EASY, c.checks).name
+        assert v.utilization == top.utilization
+        assert v.margin == pytest.approx(1.0 - top.utilization)
+        assert f"{top.label} at {percent(top.utilization)}" in render(v.text, DEFAULT_UNITS)
+        # the runner-up is the second-highest utilisation among the limits
+        rest = sorted((k.utilization for k in limits if k is not top), reverse=True)
+        if rest:
+            assert any(percent(rest[0]) in w.template for w in v.watch)
+
+
+def test_the_verdict_rests_on_the_assumed_values_of_its_governing_check(
+    catalog: Catalog,
+) -> None:
+    """Every assumed catalog value the governing check reads is named, in words; every
+    ranged value the pass hinges on is named and marked as hinging."""
+    sel = select(EASY, catalog.index)
+    seen_assumed = seen_hinge = False
+    for c in sel.candidates:
+        v = verdict(c)
+        g = c.governing
+        assert g is not None
+        assumed = {
+            value_label(k)
+            for k in g.check.sources
+            if k in c.screw.provenance and c.screw.provenance[k].kind == "assumed"
+        }
+        assert assumed <= {r.label for r in v.rests_on}
+        assert {value_label(h) for h in c.hinges_on} == {r.label for r in v.rests_on if r.hinges}
+        seen_assumed |= bool(assumed)
+        seen_hinge |= bool(c.hinges_on)
+    assert seen_assumed and seen_hinge  # the property was exercised both ways
+
+
+def test_a_back_driving_vertical_screw_says_what_holds_it_power_off(catalog: Catalog) -> None:
+    """Vertical, 10 kg on the nut: a screw that does not self-lock with margin names the
+    brake it needs (its brake torque) in its watch list."""
+    app = Application(
+        load_n=0.0, speed_m_s=0.05, length_m=0.3, moving_mass_kg=10.0,
+        orientation="vertical", brake_torque_nm=5.0,
+    )  # fmt: skip
+    sel = select(app, catalog.index)
+    loose = [c for c in sel.candidates if not c.self_locking_with_margin]
+    assert loose
+    for c in loose[:5]:
+        watch = verdict(c).watch
+        assert any("brake" in w.template for w in watch)
+        brake = next(w for w in watch if "brake" in w.template).values["t"]
+        assert brake.value == pytest.approx(c.brake_torque_nm)  # type: ignore[union-attr]
