@@ -147,7 +147,10 @@ class InputField:
         return float(value) * self.si_factor
 
     def display_unit(self, units: Mapping[str, str]) -> str:
-        """Unit text in the user's display units ('in/s'), the fixed unit ('kg'), or ''."""
+        """Unit text in the user's display units ('in/s'), the fixed unit ('kg'), or ''; a
+        curve's torques follow the torque unit ('rpm : oz in')."""
+        if self.kind == "curve":
+            return f"rpm : {label('torque', dict(units))}"
         if self.quantity is None:
             return self.unit
         return label(self.quantity, dict(units))
@@ -356,7 +359,8 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="motor_curve", page="motor_curve", core="motor_curve", label="Motor curve",
         help="Torque the motor gives against speed: one point “rpm torque” per line, rpm "
-        "ascending, torque in N m; linear between points, nothing past the last",
+        "ascending, torque in the torque unit chosen; linear between points, nothing past "
+        "the last",
         group="Motor and move", kind="curve", unit="rpm : N m",
     ),
     InputField(

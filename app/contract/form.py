@@ -5,9 +5,14 @@ of a result. Every input's page name, display quantity, kind and default come fr
 field table (``app.contract.fields``); this module maps the form to and from the API's
 ``ApplicationIn``, so the page and the API validate the same model. Numbers typed on the
 page are read by the API's own rule (``app.contract.inputs.NUMBER_TEXT``): the page accepts
-exactly the number texts the API's query string accepts.
+every number text the API's query string accepts, to the same value, and also the ways
+engineers write numbers by hand (``read_number``): a decimal comma ('20,5') and, in
+imperial, fractions ('5/16', '1 1/4', '1-1/4'). The API keeps to JSON numbers and ASCII
+decimals: a spreadsheet or script writes those, and a comma in a query string is ambiguous.
 """
 
+import math
+import re
 from collections.abc import Mapping
 from decimal import Decimal, localcontext
 from fractions import Fraction
@@ -17,7 +22,7 @@ from urllib.parse import urlencode
 from pydantic import Field, TypeAdapter, ValidationError
 
 from app.contract.fields import BY_API, BY_PAGE, FIELDS, InputField
-from app.contract.inputs import NUMBER_TEXT, ApplicationIn
+from app.contract.inputs import NUMBER_TEXT, ApplicationIn, curve_type
 from app.contract.units import (
     DEFAULT_UNITS,
     FORCE_UNITS,
@@ -25,6 +30,9 @@ from app.contract.units import (
     TORQUE_UNITS,
     UNIT_QUANTITIES,
     Quantity,
+    display_system,
+    exact_factor,
+    exact_offset,
     from_api,
     sig,
     to_api,
@@ -49,10 +57,24 @@ PLAIN_MESSAGES = {
     "int_from_float": "Enter a whole number.",
     "finite_number": "Enter a finite number.",
 }
+#: a fraction as engineers write one: '5/16', '1 1/4', '1-1/4', signed, at most 20 digits
+#: a part (enough for any fraction of a unit; longer text is a mistake, not a measure).
+FRACTION = re.compile(r"([+-]?)(?:([0-9]{1,20})(?: +|-))?([0-9]{1,20})/([0-9]{1,20})")
+#: a decimal comma in place of the point: '20,5', ',5', '-0,125', '1,5e3'.
+DECIMAL_COMMA = re.compile(r"[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?")
+#: '1,234' or '12,500': a thousands separator to some readers, a decimal comma to others.
+THOUSANDS = re.compile(r"[+-]?[1-9][0-9]{0,2}(?:,[0-9]{3})+")
+ZERO_DENOMINATOR = "A fraction's denominator cannot be 0."
+AMBIGUOUS_COMMA = (
+    "Ambiguous: {text} reads as {point} with a decimal comma and as {whole} with a "
+    "thousands separator; write {point} or {whole}."
+)
 TRUE_WORDS = {"1", "true", "on", "yes"}
 #: figures enough for any decimal to read back to the float it was written from (17 are
 #: enough for a float; the display unit's factor takes one more).
 LINK_DIGITS = 24
+#: significant digits of the longest exact decimal of a float (2**-1074 has 751).
+FLOAT_DIGITS = 800
 #: decimal exponents read exactly: wider than any float times a unit's factor.
 EXPONENT_REACH = 400
 #: a typed number read as the API reads a query parameter: ASCII decimal, finite.
@@ -61,16 +83,65 @@ PAGE_NUMBER: TypeAdapter[float] = TypeAdapter(
 )
 
 
-def read_number(text: str) -> tuple[float | None, str]:
-    """(the number, '') for number text the API accepts, else (None, the page's message).
+def _fraction(match: re.Match[str]) -> tuple[Fraction | None, str]:
+    """The exact value of a matched fraction ('-1 1/4': -5/4), or (None, the message)."""
+    sign, whole, numerator, denominator = match.groups()
+    if int(denominator) == 0:
+        return None, ZERO_DENOMINATOR
+    value = int(whole or 0) + Fraction(int(numerator), int(denominator))
+    return (-value if sign == "-" else value), ""
 
-    >>> read_number(" 1e3"), read_number("1_000"), read_number("1e400")
-    ((1000.0, ''), (None, 'Enter a number.'), (None, 'Enter a finite number.'))
+
+def read_exact(text: str) -> tuple[Fraction | float | None, str]:
+    """(the exact value, '') of a number text the page accepts, else (None, the message).
+
+    The API's ASCII decimals are read exactly (a float past ``EXPONENT_REACH``, which no
+    input's bounds allow); a decimal comma as the point ('20,5'), except where it could be
+    a thousands separator ('1,234'); a fraction or mixed number ('5/16', '1 1/4', '1-1/4').
+    Every accepted value is a finite float.
+
+    >>> read_exact("20,5"), read_exact("1-1/4"), read_exact("1/0")[1]
+    ((Fraction(41, 2), ''), (Fraction(5, 4), ''), "A fraction's denominator cannot be 0.")
     """
+    text = text.strip(" \t\n\r\f\v")
+    fraction = FRACTION.fullmatch(text)
+    if fraction is not None:
+        value, error = _fraction(fraction)
+        if value is not None and not math.isfinite(float(value)):
+            return None, PLAIN_MESSAGES["finite_number"]
+        return value, error
+    if THOUSANDS.fullmatch(text):
+        point, whole = text.replace(",", ".", 1), text.replace(",", "")
+        if text.count(",") == 1:
+            return None, AMBIGUOUS_COMMA.format(text=text, point=point, whole=whole)
+        return None, f"Write {whole} without the thousands separators."
+    if DECIMAL_COMMA.fullmatch(text):
+        text = text.replace(",", ".")
     try:
-        return PAGE_NUMBER.validate_python(text), ""
+        number = PAGE_NUMBER.validate_python(text)
     except ValidationError as exc:
         return None, PLAIN_MESSAGES.get(exc.errors()[0]["type"], "Enter a number.")
+    decimal = Decimal(text)
+    if not -EXPONENT_REACH <= decimal.adjusted() <= EXPONENT_REACH:
+        return number, ""
+    return Fraction(decimal), ""
+
+
+#: a curve's points (rpm, N m) as the model reads and checks them.
+CURVE: TypeAdapter[list[tuple[float, float]]] = TypeAdapter(
+    curve_type(next(f for f in FIELDS if f.kind == "curve"))
+)
+
+
+def read_number(text: str) -> tuple[float | None, str]:
+    """(the number, '') for number text the page accepts (``read_exact``), else (None, the
+    page's message).
+
+    >>> read_number(" 1e3"), read_number("1_000"), read_number("1e400"), read_number("5/16")
+    ((1000.0, ''), (None, 'Enter a number.'), (None, 'Enter a finite number.'), (0.3125, ''))
+    """
+    value, error = read_exact(text)
+    return (None, error) if value is None else (float(value), "")
 
 
 def parse_units(params: Mapping[str, str]) -> dict[str, str]:
@@ -88,6 +159,8 @@ def _api_value(field: InputField, raw: str, units: dict[str, str]) -> tuple[Any,
     """
     if field.kind == "yes-no":
         return raw.lower() in TRUE_WORDS, ""
+    if field.kind == "curve":
+        return curve_to_api(raw, units), ""
     if field.kind != "number":
         return raw, ""
     number, error = read_number(raw)
@@ -136,7 +209,7 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
     ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"})
     ... # doctest: +NORMALIZE_WHITESPACE
     ['load', 'moving_mass_kg', 'brake_torque', 'detent_torque', 'max_torque',
-     'motor_rms_torque', 'motor_holding_torque']
+     'motor_rms_torque', 'motor_inertia', 'motor_holding_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
     return [field.page for field in FIELDS if field.quantity in changed]
@@ -209,6 +282,8 @@ def convert_entered(
     values, typed = dict(params), {}
     for field in FIELDS:
         raw = params.get(field.page, "").strip()
+        if field.kind == "curve" and raw and entered["torque_unit"] != units["torque_unit"]:
+            values[field.page] = convert_curve(raw, entered, units)
         if field.quantity is None or not raw or read_number(raw)[0] is None:
             continue
         key = unit_key(field.quantity)
@@ -235,6 +310,8 @@ def value_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
         return "true" if value else "false"
     if isinstance(value, int | float):
         return f"{field.display_value(value, units):.6g}"
+    if field.kind == "curve" and value:
+        return curve_text(value, units)
     return str(value)
 
 
@@ -302,23 +379,40 @@ def shown_inputs(inputs: Mapping[str, Any]) -> list[tuple[InputField, Any]]:
 
 def _factor(field: InputField, units: Mapping[str, str]) -> Fraction:
     """The factor from ``field``'s display unit to its API unit, as the decimal it is
-    defined as (25.4, not the binary float nearest to it)."""
-    return Fraction(repr(to_api(1.0, field.quantity, units))) if field.quantity else Fraction(1)
+    defined as (25.4, not the binary float nearest to it); a temperature scale's exactly
+    (5/9 for °F), so that its offset cancels: 32 °F reads as 0 °C, not 1e-31."""
+    if not field.quantity:
+        return Fraction(1)
+    units = {**DEFAULT_UNITS, **units}
+    if exact_offset(field.quantity, units):
+        return exact_factor(field.quantity, units)
+    return Fraction(repr(display_system(units)[field.quantity][1]))
+
+
+def _offset(field: InputField, units: Mapping[str, str]) -> Fraction:
+    """The API value at the zero of ``field``'s display unit, exactly: 0 but for °F."""
+    return (
+        exact_offset(field.quantity, {**DEFAULT_UNITS, **units}) if field.quantity else Fraction(0)
+    )
 
 
 def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
-    """The API value of finite number ``text`` typed in ``field``'s display unit: the
-    decimal times the unit's factor, rounded once, so that every API value has a text
-    that reads back to it exactly (``link_number``). A decimal beyond any float's reach
-    (``1e-99999999``) is read as a float, without its exact value.
+    """The API value of number ``text`` the page accepts (``read_exact``), typed in
+    ``field``'s display unit: the exact number times the unit's factor, rounded once, so
+    that every API value has a text that reads back to it exactly (``link_number``). A
+    decimal beyond any float's reach (``1e-99999999``) is read as a float, without its
+    exact value.
 
-    >>> page_value(BY_PAGE["length"], "3937.0078", {**DEFAULT_UNITS, "length_unit": "in"})
-    99999.99812
+    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
+    >>> page_value(BY_PAGE["length"], "3937.0078", inch), page_value(BY_PAGE["lead"], "5/16", inch)
+    (99999.99812, 7.9375)
     """
-    number = Decimal(text.strip())
-    if not -EXPONENT_REACH <= number.adjusted() <= EXPONENT_REACH:
-        return float(number)
-    return float(Fraction(number) * _factor(field, units))
+    number, error = read_exact(text)
+    if number is None:
+        raise ValueError(error)
+    if isinstance(number, float):
+        return number
+    return float(number * _factor(field, units) + _offset(field, units))
 
 
 def _trimmed(text: str) -> str:
@@ -327,6 +421,24 @@ def _trimmed(text: str) -> str:
     if "." in mantissa:
         mantissa = mantissa.rstrip("0").rstrip(".")
     return mantissa + e + exponent
+
+
+def decimal_text(value: float, factor: Fraction, offset: Fraction = Fraction(0)) -> str:
+    """``value`` less ``offset`` over ``factor`` as the decimal with the fewest figures (6
+    at least) that reads back, times ``factor`` plus ``offset`` rounded once, to exactly
+    ``value``."""
+    if factor == 1 and offset == 0:  # the shortest text that reads back is the float's repr
+        return _trimmed(repr(value))
+    exact = (Fraction(value) - offset) / factor
+    # an offset (°F) can need every digit of the float: 1e-142 °C is 32.000...0018 °F
+    reach = LINK_DIGITS if offset == 0 else FLOAT_DIGITS
+    with localcontext(prec=reach):
+        shown = Decimal(exact.numerator) / Decimal(exact.denominator)
+    for digits in range(6, reach):
+        text = _trimmed(f"{shown:.{digits}g}")
+        if float(Fraction(Decimal(text)) * factor + offset) == value:
+            break
+    return text
 
 
 def link_number(field: InputField, value: float, units: Mapping[str, str]) -> str:
@@ -338,17 +450,57 @@ def link_number(field: InputField, value: float, units: Mapping[str, str]) -> st
     ('3937.007874015748', '100.4824')
     """
     units = {**DEFAULT_UNITS, **units}
-    factor = _factor(field, units)
-    if factor == 1:  # the shortest text that reads back to the float is its repr
-        return _trimmed(repr(value))
-    exact = Fraction(value) / factor
-    with localcontext(prec=LINK_DIGITS):
-        shown = Decimal(exact.numerator) / Decimal(exact.denominator)
-    for digits in range(6, LINK_DIGITS):
-        text = _trimmed(f"{shown:.{digits}g}")
-        if page_value(field, text, units) == value:
-            break
-    return text
+    return decimal_text(value, _factor(field, units), _offset(field, units))
+
+
+def _torque_factor(units: Mapping[str, str]) -> Fraction:
+    """The exact factor from the display torque unit to N m (a curve's torques)."""
+    return Fraction(repr(display_system({**DEFAULT_UNITS, **units})["torque"][1]))
+
+
+def curve_to_api(text: str, units: Mapping[str, str]) -> Any:
+    """A curve typed on the page, torques in the display unit, as the API's points (rpm,
+    N m), each torque its exact product rounded once; text the model refuses is passed
+    as typed, so that its message names the point.
+
+    >>> curve_to_api("0:16,3000:8", {"torque_unit": "oz_in"})
+    [[0.0, 0.1129848290276167], [3000.0, 0.05649241451380835]]
+    """
+    factor = _torque_factor(units)
+    if factor == 1:
+        return text
+    try:
+        points = CURVE.validate_python(text)
+    except ValidationError:
+        return text
+    return [[rpm, float(Fraction(repr(torque)) * factor)] for rpm, torque in points]
+
+
+def curve_text(value: Any, units: Mapping[str, str], digits: int | None = None) -> str:
+    """The API's curve (pairs, or its 'rpm:torque,...' text) with torques in the display
+    unit, each the shortest decimal that reads back to the API's torque exactly (or to
+    ``digits`` significant figures, for reading).
+
+    >>> curve_text("0:0.1129848290276167,3000:0.05649241451380835", {"torque_unit": "oz_in"})
+    '0:16,3000:8'
+    """
+    factor = _torque_factor(units)
+    points = CURVE.validate_python(value)
+    if digits is not None:
+        return ",".join(f"{rpm:g}:{sig(t / float(factor), digits)}" for rpm, t in points)
+    return ",".join(f"{rpm:.12g}:{decimal_text(torque, factor)}" for rpm, torque in points)
+
+
+def convert_curve(text: str, source: Mapping[str, str], target: Mapping[str, str]) -> str:
+    """A curve typed with torques in ``source``'s unit re-expressed in ``target``'s, as the
+    page writes it (a line 'rpm torque' per point); text that is no curve as typed."""
+    points = curve_to_api(text, source)
+    if isinstance(points, str):
+        try:
+            points = CURVE.validate_python(points)
+        except ValidationError:
+            return text
+    return curve_text(points, target).replace(",", "\n").replace(":", " ")
 
 
 def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
@@ -359,10 +511,18 @@ def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
     return value_text(field, value, units)
 
 
+def _exact_curve(inputs: ApplicationIn, field: InputField) -> Any:
+    """A curve's points as floats (its dumped text keeps 12 figures), else None."""
+    return getattr(inputs, field.api) if field.kind == "curve" else None
+
+
 def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
     """Query string of the page link for these inputs: required fields and non-defaults,
     each number reproducing the input exactly."""
-    pairs = [(f.page, link_text(f, v, units)) for f, v in shown_inputs(inputs.model_dump())]
+    pairs = [
+        (f.page, link_text(f, _exact_curve(inputs, f) or v, units))
+        for f, v in shown_inputs(inputs.model_dump())
+    ]
     pairs += [(k, v) for k, v in units.items() if v != DEFAULT_UNITS[k]]
     return urlencode(pairs)
 
@@ -378,6 +538,8 @@ def summary_rows(inputs: Mapping[str, Any], units: Mapping[str, str]) -> list[di
             text = "yes" if value else "no"
         elif isinstance(value, int | float):
             text = sig(field.display_value(value, units))
+        elif field.kind == "curve":
+            text = curve_text(value, units, digits=4)
         else:
             text = str(value)
         unit = field.display_unit(units)

@@ -44,11 +44,13 @@ from app.core.model import Application
 #: optional sign, digits with an optional point (or a point and digits), optional exponent.
 ASCII_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 ASCII_SPACE = " \t\n\r\f\v"
-#: pydantic's own error for text that is not a number, kept so the API answers as before.
+#: the error for text that is not a number: pydantic's type, and what the API expects (the
+#: page form also reads a decimal comma and fractions, ``app.contract.form.read_exact``).
 NOT_A_NUMBER = {
     "float": (
         "float_parsing",
-        "Input should be a valid number, unable to parse string as a number",
+        "Input should be a valid number: a JSON number, or as text an ASCII decimal such "
+        "as 20.5 or 1.5e3 (no decimal comma, fraction or digit grouping)",
     ),
     "int": ("int_parsing", "Input should be a valid integer, unable to parse string as an integer"),
 }

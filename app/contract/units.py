@@ -16,7 +16,8 @@ References
 1. NIST SP 811 (2008), Guide for the Use of the International System of Units, appendix
    B.8: 1 in = 0.0254 m, 1 ft = 0.3048 m, 1 lb = 0.45359237 kg, standard acceleration of
    gravity g_n = 9.80665 m/s², 1 kgf = g_n N, 1 lbf = 4.4482216152605 N (lb x g_n),
-   1 psi = 1 lbf/in², 1 ozf in = 1/16 lbf in, all exact.
+   1 psi = 1 lbf/in², 1 ozf in = 1/16 lbf in, 1 oz = 1/16 lb, all exact; appendix B.9:
+   t/°C = (t/°F - 32)/1.8, and a difference of 1 °F is 5/9 K.
 """
 
 from collections.abc import Mapping
@@ -49,18 +50,29 @@ class Unit:
     """One unit: its symbol, the dimension it measures, its ``exact`` factor to the core's
     unit of that dimension, and the float factors each way (``si``: a value in this unit
     times ``si`` is the core's value; ``from_si`` the other way), each the correctly
-    rounded float of the exact one."""
+    rounded float of the exact one. A temperature scale has an ``offset`` too: the core's
+    value at this unit's zero (°F: -160/9 °C), so the core's value is value x exact +
+    offset. ``text`` is how the unit is written, where the symbol (the table's key) must
+    differ from another's ('°F rise', written °F)."""
 
     symbol: str
     dimension: Quantity
     exact: Fraction
     si: float
     from_si: float
+    offset: Fraction
+    text: str
 
 
-def _unit(symbol: str, dimension: Quantity, exact: Fraction | int) -> Unit:
+def _unit(
+    symbol: str,
+    dimension: Quantity,
+    exact: Fraction | int,
+    offset: Fraction = Fraction(0),
+    text: str = "",
+) -> Unit:
     value = Fraction(exact)
-    return Unit(symbol, dimension, value, float(value), float(1 / value))
+    return Unit(symbol, dimension, value, float(value), float(1 / value), offset, text or symbol)
 
 
 #: every unit the app reads or shows: symbol -> unit. The core's own unit of each
@@ -90,6 +102,8 @@ UNITS: dict[str, Unit] = {
         _unit("lb", "mass", _LB),
         _unit("kg m²", "inertia", 1),
         _unit("g cm²", "inertia", Fraction(1, 10**7)),
+        _unit("oz in²", "inertia", _LB / 16 * _IN**2),
+        _unit("lb in²", "inertia", _LB * _IN**2),
         _unit("kg m²/m", "inertia_per_length", 1),
         _unit("kg m²/in", "inertia_per_length", 1 / _IN),
         _unit("kg/m³", "density", 1),
@@ -109,6 +123,9 @@ UNITS: dict[str, Unit] = {
         _unit("s", "time", 1),
         _unit("years", "years", 1),
         _unit("°C", "temperature", 1),
+        _unit("°F", "temperature", Fraction(5, 9), Fraction(-160, 9)),
+        _unit("K", "temperature_rise", 1),
+        _unit("°F rise", "temperature_rise", Fraction(5, 9), text="°F"),
         _unit("", "factor", 1),
         _unit("Hz", "frequency", 1),
         _unit("H", "inductance", 1),
@@ -135,15 +152,17 @@ API_SYSTEM: dict[Quantity, str] = {
     "wear_rate": "mm³/(N m)",
     "inductance": "mH",
 }
-#: dimension -> (API unit symbol, factor from the core's unit to the API unit).
+#: dimension -> (API unit text, factor from the core's unit to the API unit).
 API_UNITS: dict[Quantity, tuple[str, float]] = {
-    d: (u, UNITS[u].from_si) for d, u in API_SYSTEM.items()
+    d: (UNITS[u].text, UNITS[u].from_si) for d, u in API_SYSTEM.items()
 }
 _API_TO_SI: dict[Quantity, float] = {d: UNITS[u].si for d, u in API_SYSTEM.items()}
 
 #: the page's unit switches: switch -> choice -> the unit it gives each dimension it sets
-#: (a mass follows the force: pounds with pound-force). Dimensions no switch sets are
-#: shown in the API's unit.
+#: (a mass follows the force: pounds with pound-force; inches bring the US customary
+#: contact pressure and PV, psi and psi ft/min; a rotor inertia follows the torque: oz in²
+#: with oz in; temperatures in °F with inches). Dimensions no switch sets are shown in the
+#: API's unit.
 DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
     "force_unit": {
         "N": {"force": "N", "mass": "kg"},
@@ -151,15 +170,21 @@ DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
         "kgf": {"force": "kgf", "mass": "kg"},
     },
     "length_unit": {
-        "mm": {"length": "mm", "speed": "mm/s", "accel": "mm/s²"},
-        "in": {"length": "in", "speed": "in/s", "accel": "in/s²"},
+        "mm": {
+            "length": "mm", "speed": "mm/s", "accel": "mm/s²", "pressure": "MPa", "pv": "MPa m/s",
+            "temperature": "°C", "temperature_rise": "K",
+        },
+        "in": {
+            "length": "in", "speed": "in/s", "accel": "in/s²", "pressure": "psi",
+            "pv": "psi ft/min", "temperature": "°F", "temperature_rise": "°F rise",
+        },
     },
     "torque_unit": {
-        "N_m": {"torque": "N m"},
-        "oz_in": {"torque": "oz in"},
-        "lb_in": {"torque": "lb in"},
+        "N_m": {"torque": "N m", "inertia": "kg m²"},
+        "oz_in": {"torque": "oz in", "inertia": "oz in²"},
+        "lb_in": {"torque": "lb in", "inertia": "lb in²"},
     },
-}
+}  # fmt: skip
 #: the page's default choices: the API's units.
 DEFAULT_UNITS = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 #: switch -> the dimensions it sets.
@@ -189,16 +214,60 @@ TORQUE_UNITS = _choice_factors("torque_unit", "torque")
 TORQUE_LABELS = {c: u["torque"] for c, u in DISPLAY_CHOICES["torque_unit"].items()}
 
 
-def _system(choices: tuple[str, ...]) -> dict[Quantity, tuple[str, float]]:
-    """One display system: dimension -> (unit symbol, factor from it to the API unit)."""
+def _offset(symbol: str) -> float:
+    """The API value at a unit's zero: 0 but for a temperature scale (°F: -160/9 °C)."""
+    unit = UNITS[symbol]
+    api = UNITS[API_SYSTEM[unit.dimension]]
+    return float((unit.offset - api.offset) / api.exact)
+
+
+def _chosen(choices: tuple[str, ...]) -> dict[Quantity, str]:
+    """The unit (table key) of each dimension under the page's ``choices``."""
     chosen = dict(API_SYSTEM)
     for key, choice in zip(DISPLAY_CHOICES, choices, strict=True):
         chosen.update(DISPLAY_CHOICES[key][choice])
-    return {d: (u, _ratio(u)) for d, u in chosen.items()}
+    return chosen
 
 
+def _system(choices: tuple[str, ...]) -> dict[Quantity, tuple[str, float]]:
+    """One display system: dimension -> (unit text, factor from it to the API unit)."""
+    return {d: (UNITS[u].text, _ratio(u)) for d, u in _chosen(choices).items()}
+
+
+_ALL_CHOICES = list(product(*map(list, DISPLAY_CHOICES.values())))
 #: every display system the page offers, by its choices in ``DISPLAY_CHOICES`` order.
-DISPLAY_SYSTEMS = {c: _system(c) for c in product(*map(list, DISPLAY_CHOICES.values()))}
+DISPLAY_SYSTEMS = {c: _system(c) for c in _ALL_CHOICES}
+#: per display system, the API value at the zero of each unit with an offset (°F).
+DISPLAY_OFFSETS = {
+    c: {d: _offset(u) for d, u in _chosen(c).items() if _offset(u)} for c in _ALL_CHOICES
+}
+
+
+def _display_unit(quantity: Quantity, units: Mapping[str, str]) -> Unit:
+    choices = (units["force_unit"], units["length_unit"], units["torque_unit"])
+    return UNITS[_chosen(choices)[quantity]]
+
+
+def exact_factor(quantity: Quantity, units: Mapping[str, str]) -> Fraction:
+    """The factor from the display unit of ``quantity`` to the API unit, exactly (5/9
+    for °F)."""
+    return _display_unit(quantity, units).exact / UNITS[API_SYSTEM[quantity]].exact
+
+
+def exact_offset(quantity: Quantity, units: Mapping[str, str]) -> Fraction:
+    """``offset`` exactly, from the table: -160/9 for °F."""
+    api = UNITS[API_SYSTEM[quantity]]
+    return (_display_unit(quantity, units).offset - api.offset) / api.exact
+
+
+def offset(quantity: Quantity, units: Mapping[str, str]) -> float:
+    """The API value at the zero of the display unit of ``quantity``: 0 but for °F.
+
+    >>> offset("temperature", {**DEFAULT_UNITS, "length_unit": "in"})
+    -17.77777777777778
+    """
+    key = (units["force_unit"], units["length_unit"], units["torque_unit"])
+    return DISPLAY_OFFSETS[key].get(quantity, 0.0)
 
 
 def display_system(units: Mapping[str, str]) -> dict[Quantity, tuple[str, float]]:
@@ -258,13 +327,21 @@ def label(quantity: Quantity, units: Mapping[str, str]) -> str:
 
 
 def to_api(value: float, quantity: Quantity, units: Mapping[str, str]) -> float:
-    """A value in the reader's unit of ``quantity`` in the API's unit."""
-    return value * display_system(units)[quantity][1]
+    """A value in the reader's unit of ``quantity`` in the API's unit.
+
+    >>> to_api(212.0, "temperature", {**DEFAULT_UNITS, "length_unit": "in"})
+    100.0
+    """
+    return value * display_system(units)[quantity][1] + offset(quantity, units)
 
 
 def from_api(value: float, quantity: Quantity, units: Mapping[str, str]) -> float:
-    """A value in the API's unit of ``quantity`` in the reader's unit."""
-    return value / display_system(units)[quantity][1]
+    """A value in the API's unit of ``quantity`` in the reader's unit.
+
+    >>> from_api(-40.0, "temperature", {**DEFAULT_UNITS, "length_unit": "in"})
+    -40.0
+    """
+    return (value - offset(quantity, units)) / display_system(units)[quantity][1]
 
 
 #: dimension -> number format in sentences (a speed in rpm needs no decimals).
@@ -275,6 +352,7 @@ TEXT_FORMATS: dict[Quantity, str] = {
     "pv": ".3g",
     "years": ".3g",
     "temperature": "g",
+    "temperature_rise": ".3g",
     "factor": "g",
     "frequency": ".6g",
 }
@@ -299,8 +377,9 @@ def amount_text(amount: Amount, units: Mapping[str, str] = DEFAULT_UNITS) -> str
     '1 in'
     """
     value, _ = api_value(amount.value, amount.quantity)
-    unit, scale = display_system(units)[amount.quantity]
-    return f"{value / scale:{TEXT_FORMATS[amount.quantity]}} {unit}".strip()
+    unit, _ = display_system(units)[amount.quantity]
+    shown = from_api(value, amount.quantity, units)
+    return f"{shown:{TEXT_FORMATS[amount.quantity]}} {unit}".strip()
 
 
 def render(phrase: Phrase, units: Mapping[str, str] = DEFAULT_UNITS) -> str:

@@ -29,6 +29,7 @@ Quantity = Literal[
     "time",  # s
     "years",  # year
     "temperature",  # deg C
+    "temperature_rise",  # K: a difference of temperatures (no offset between scales)
     "factor",  # dimensionless
     "frequency",  # 1/s (step pulses per second)
     "inductance",  # H

@@ -10,7 +10,7 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
-from app.contract.form import parse_inputs, share_query
+from app.contract.form import entered_units, parse_inputs, share_query
 from app.contract.form import summary_rows as input_rows
 from app.contract.schemas import ApplicationIn, CustomScrewIn, EvaluateOut
 from app.contract.units import Display, api_value
@@ -30,6 +30,7 @@ from app.web.screw_form import (
     MATERIALS,
     OWN_MATERIAL,
     SCREW_FIELDS,
+    convert_screw,
     parse_screw,
     screw_query,
     screw_values,
@@ -59,8 +60,11 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
 def _base_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """The form's state before any evaluation: the selector's form context without the
     catalog-only inputs, plus the screw's own fields."""
+    context = form_context(params, catalog)
+    entered = entered_units(params, context["units"])
+    context["values"].update(convert_screw(context["values"], entered, context["units"]))
     return {
-        **form_context(params, catalog),
+        **context,
         "fields": {page: f for page, f in BY_PAGE.items() if not f.catalog_only},
         "screw_fields": SCREW_FIELDS,
         "material_fields": MATERIAL_FIELDS,
@@ -85,7 +89,7 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     if not _started(values):
         return context
     inputs, app_errors = parse_inputs(values, context["units"], catalog.motors)
-    screw, screw_errors = parse_screw(values)
+    screw, screw_errors = parse_screw(values, context["units"])
     context["errors"] = {**app_errors, **screw_errors}
     if inputs is None or screw is None:
         return context
@@ -93,21 +97,23 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     query = _query(inputs, screw, context["units"])
     context.update(result=result, query=query, share_url="/custom?" + query)
     context["figures"] = candidate_figures(result, context["units"])
-    context.update(screw=screw, screw_rows=screw_rows(screw))
+    context.update(screw=screw, screw_rows=screw_rows(screw, context["units"]))
     return context
 
 
 def _query(inputs: ApplicationIn, screw: CustomScrewIn, units: Mapping[str, str]) -> str:
     """The share query: the screw, then the application in the display units."""
-    return "&".join(part for part in (screw_query(screw), share_query(inputs, units)) if part)
+    parts = (screw_query(screw, units), share_query(inputs, units))
+    return "&".join(part for part in parts if part)
 
 
-def screw_rows(screw: CustomScrewIn) -> list[list[str]]:
-    """(name, value, unit) of each given screw value, for the summary and the CSV."""
+def screw_rows(screw: CustomScrewIn, units: Mapping[str, str]) -> list[list[str]]:
+    """(name, value, unit) of each given screw value in the display ``units``, for the
+    summary and the CSV."""
     rows = []
-    for name, value in screw_values(screw).items():
+    for name, value in screw_values(screw, units).items():
         field = BY_NAME.get(name)
-        rows.append([name, value, field.unit if field is not None else ""])
+        rows.append([name, value, field.display_unit(units) if field is not None else ""])
     return rows
 
 

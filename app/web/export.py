@@ -5,9 +5,14 @@ import io
 from collections.abc import Callable
 from typing import Any
 
-from app.contract.fields import FIELDS
+from app.contract.fields import FIELDS, InputField
+from app.contract.form import curve_text
 from app.contract.schemas import CandidateOut, SelectOut
 from app.contract.units import Display, Quantity
+from app.core.checks import REGISTRY
+
+#: the header's unit of a check's utilisation: demand over capacity (1 is at the limit).
+UTILISATION_UNIT = "demand/capacity"
 
 #: a text cell starting with one of these is a formula to a spreadsheet (CWE-1236); the
 #: fullwidth forms count too, since spreadsheets in East Asian locales read them as ASCII.
@@ -94,8 +99,10 @@ def _columns(d: Display) -> list[tuple[str, Callable[[CandidateOut], Any]]]:
             unit("torque", lambda c: c.holding_torque.physics_nm),
         ),
         ("critical_speed_allowed [rpm]", lambda c: c.critical_speed.allowed_rpm),
-        ("critical_speed_utilisation", _utilisation("critical_speed")),
-        ("pv_utilisation", _utilisation("pv")),
+        *(
+            (f"{check.name}_utilisation [{UTILISATION_UNIT}]", _utilisation(check.name))
+            for check in REGISTRY
+        ),
         ("life_min [year]", _years(0)),
         ("life_max [year]", _years(1)),
         ("governing_check", lambda c: c.governing_check),
@@ -109,15 +116,23 @@ def _input_rows(inputs: dict[str, Any], units: dict[str, str]) -> list[list[Any]
     An optional input left empty has an empty value cell.
     """
     return [
-        [field.page, field.display_value(inputs[field.api], units), field.display_unit(units)]
+        [field.page, _input_value(field, inputs[field.api], units), field.display_unit(units)]
         for field in FIELDS
     ]
 
 
+def _input_value(field: InputField, value: Any, units: dict[str, str]) -> Any:
+    """An input in the display units; a curve as 'rpm:torque,...' in the torque unit."""
+    if field.kind == "curve" and value:
+        return curve_text(value, units, digits=10)
+    return field.display_value(value, units)
+
+
 def results_csv(result: SelectOut, units: dict[str, str]) -> str:
-    """The inputs (one row each), a blank row, then the passing candidates (ranked) and the
-    rejected ones shown, one row each; the candidates need only the ``csv`` view's
-    fields."""
+    """The inputs (one row each), a blank row, then one table of the passing candidates
+    (ranked) and the rejected ones shown, one row each, with a column per check of the
+    registry for its utilisation (empty where the check does not apply or is yes/no);
+    the candidates need only the ``csv`` view's fields."""
     columns = _columns(Display(units))
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")

@@ -196,7 +196,7 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
     return response
 
 
-def _link_inputs(
+def link_inputs(
     params: Mapping[str, str], catalog: Catalog
 ) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
@@ -217,7 +217,7 @@ def _attachment(extension: str) -> dict[str, str]:
     return {"Content-Disposition": f'attachment; filename="{EXPORT_NAME}.{extension}"'}
 
 
-def _candidate(
+def page_candidate(
     inputs: ApplicationIn, cid: str, catalog: Catalog, units: Mapping[str, str]
 ) -> CandidateOut:
     """Catalog screw ``cid`` evaluated for these inputs (the same dict the result lists
@@ -232,14 +232,15 @@ def _candidate(
 async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
-    inputs, units = _link_inputs(request.query_params, catalog)
-    c = _candidate(inputs, request.query_params.get("id", ""), catalog, units)
+    inputs, units = link_inputs(request.query_params, catalog)
+    c = page_candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
-    try_query = catalog_screw_query(catalog.by_id[c.id])
+    try_query = catalog_screw_query(catalog.by_id[c.id], units)
     context = {
         "c": c,
         "d": Display(units),
         "query": query,
+        "report_query": query,
         "try_url": f"/custom?{try_query}&{query}",
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"
@@ -256,7 +257,7 @@ async def compare(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _compare_page(request: Request, catalog: Catalog) -> Response:
-    inputs, units = _link_inputs(request.query_params, catalog)
+    inputs, units = link_inputs(request.query_params, catalog)
     query = share_query(inputs, units)
     context: dict[str, Any] = {"d": Display(units), "query": query, "candidates": []}
     try:
@@ -280,7 +281,7 @@ async def export_csv(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _export_csv(request: Request, catalog: Catalog) -> Response:
-    inputs, units = _link_inputs(request.query_params, catalog)
+    inputs, units = link_inputs(request.query_params, catalog)
     body = results_csv(run_selection(inputs, catalog, units, view="csv"), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
@@ -292,7 +293,7 @@ async def export_json(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _export_json(request: Request, catalog: Catalog) -> Response:
-    inputs, _ = _link_inputs(request.query_params, catalog)
+    inputs, _ = link_inputs(request.query_params, catalog)
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 
 

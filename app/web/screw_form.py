@@ -2,23 +2,41 @@
 
 Each geometry, friction, drag and nut field of ``CustomScrewIn`` and each field of
 ``MaterialIn`` becomes one page field under its API name (``outer_diameter_mm``), with
-its label, unit and hint read from the model's description ('Outer diameter [mm].'),
-in the API's units. The material is a choice of the named materials or 'custom', which
-takes the ``MaterialIn`` fields.
+its label, unit and hint read from the model's description ('Outer diameter [mm].').
+A field in the API's unit of a dimension a page switch sets (mm, N m, MPa m/s) is typed,
+shown and linked in the chosen unit (inches, oz in, psi ft/min), converted exactly by the
+unit table; the others (deg, Pa, kg/m³) in the API's. The material is a choice of the
+named materials or 'custom', which takes the ``MaterialIn`` fields.
 """
 
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import Any, get_args
 from urllib.parse import urlencode
 
 from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 
-from app.contract.form import BOUND_MESSAGES, PLAIN_MESSAGES, read_number
+from app.contract.form import (
+    BOUND_MESSAGES,
+    PLAIN_MESSAGES,
+    convert_text,
+    decimal_text,
+    read_exact,
+    unit_key,
+)
 from app.contract.schemas import CustomScrewIn, MaterialIn
-from app.contract.units import si_to_api, sig
+from app.contract.units import (
+    API_UNIT_QUANTITY,
+    DEFAULT_UNITS,
+    Quantity,
+    display_system,
+    label,
+    si_to_api,
+    sig,
+)
 from app.core.model import ScrewSpec
 
 #: the material choice that takes the user's own modulus, density and yield strength.
@@ -29,7 +47,8 @@ MATERIAL_LABEL = "Screw material"
 
 @dataclass(frozen=True, slots=True)
 class ScrewField:
-    """One number of the custom screw: page and API name, label, API unit, hint, default."""
+    """One number of the custom screw: page and API name, label, API unit, hint, default,
+    and the dimension a page switch sets when the unit is the API's unit of it."""
 
     name: str
     label: str
@@ -37,6 +56,17 @@ class ScrewField:
     help: str
     required: bool
     default: str
+    quantity: Quantity | None
+
+    def display_unit(self, units: Mapping[str, str]) -> str:
+        """The unit the field is typed and shown in: 'in' for a length in inches."""
+        return self.unit if self.quantity is None else label(self.quantity, dict(units))
+
+    def factor(self, units: Mapping[str, str]) -> Fraction:
+        """The exact factor from the display unit to the API unit (25.4 for inches)."""
+        if self.quantity is None:
+            return Fraction(1)
+        return Fraction(repr(display_system({**DEFAULT_UNITS, **units})[self.quantity][1]))
 
 
 def _description(info: FieldInfo) -> str:
@@ -72,7 +102,8 @@ def _number_fields(model: type[BaseModel]) -> tuple[ScrewField, ...]:
             continue
         default = "" if info.is_required() or info.default is None else f"{info.default:g}"
         label, unit, hint = split_description(_description(info))
-        fields.append(ScrewField(name, label, unit, hint, info.is_required(), default))
+        quantity = API_UNIT_QUANTITY.get(unit)
+        fields.append(ScrewField(name, label, unit, hint, info.is_required(), default, quantity))
     return tuple(fields)
 
 
@@ -87,14 +118,18 @@ MATERIALS = (
 DEFAULT_MATERIAL = str(CustomScrewIn.model_fields["material"].default)
 
 
-def _message(error: Mapping[str, Any]) -> str:
-    """A pydantic error of one screw field in the page's words."""
+def _message(error: Mapping[str, Any], units: Mapping[str, str]) -> str:
+    """A pydantic error of one screw field in the page's words, bounds in display units."""
     kind = str(error.get("type", ""))
     if kind in BOUND_MESSAGES:
         template, key = BOUND_MESSAGES[kind]
         field = BY_NAME.get(str(error.get("loc", ("",))[0]))
-        unit = f" {field.unit}" if field is not None and field.unit else ""
-        return template.format(bound=sig(float(error.get("ctx", {}).get(key, 0.0))) + unit)
+        bound = float(error.get("ctx", {}).get(key, 0.0))
+        if field is None:
+            return template.format(bound=sig(bound))
+        unit = field.display_unit(units)
+        shown = sig(bound / float(field.factor(units))) + (f" {unit}" if unit else "")
+        return template.format(bound=shown)
     if kind in PLAIN_MESSAGES:
         return PLAIN_MESSAGES[kind]
     message = str(error.get("msg", "")).removeprefix("Value error, ")
@@ -104,25 +139,31 @@ def _message(error: Mapping[str, Any]) -> str:
 
 
 def _numbers(
-    params: Mapping[str, str], fields: tuple[ScrewField, ...]
+    params: Mapping[str, str], fields: tuple[ScrewField, ...], units: Mapping[str, str]
 ) -> tuple[dict[str, float], dict[str, str]]:
-    """(typed numbers by name, errors by name) of ``fields``; empty fields left out."""
+    """(API values by name, errors by name) of ``fields``, typed in display units (the
+    exact number times the unit's factor, rounded once); empty fields left out."""
     data: dict[str, float] = {}
     errors: dict[str, str] = {}
     for field in fields:
         raw = params.get(field.name, "").strip()
         if not raw:
             continue
-        number, error = read_number(raw)
+        number, error = read_exact(raw)
         if number is None:
             errors[field.name] = error
+        elif isinstance(number, float):
+            data[field.name] = number * float(field.factor(units))
         else:
-            data[field.name] = number
+            data[field.name] = float(number * field.factor(units))
     return data, errors
 
 
 def _validate(
-    model: type[BaseModel], data: Mapping[str, Any], errors: dict[str, str]
+    model: type[BaseModel],
+    data: Mapping[str, Any],
+    errors: dict[str, str],
+    units: Mapping[str, str],
 ) -> BaseModel | None:
     """``model`` from ``data``; its errors added to ``errors`` by field, None on any error."""
     try:
@@ -130,46 +171,73 @@ def _validate(
     except ValidationError as exc:
         for error in exc.errors():
             loc = error.get("loc", ())
-            errors.setdefault(str(loc[0]) if loc else "form", _message(error))
+            errors.setdefault(str(loc[0]) if loc else "form", _message(error, units))
         return None
     return None if errors else value
 
 
-def parse_screw(params: Mapping[str, str]) -> tuple[CustomScrewIn | None, dict[str, str]]:
-    """Validate the screw fields as a ``CustomScrewIn``. Returns (screw, errors by field)."""
-    numbers, errors = _numbers(params, SCREW_FIELDS)
+def parse_screw(
+    params: Mapping[str, str], units: Mapping[str, str] = DEFAULT_UNITS
+) -> tuple[CustomScrewIn | None, dict[str, str]]:
+    """Validate the screw fields, typed in ``units``, as a ``CustomScrewIn``. Returns
+    (screw, errors by field)."""
+    numbers, errors = _numbers(params, SCREW_FIELDS, units)
     data: dict[str, Any] = dict(numbers)
     material = params.get("material", "").strip() or DEFAULT_MATERIAL
     if material == OWN_MATERIAL:
-        own, own_errors = _numbers(params, MATERIAL_FIELDS)
-        data["material"] = _validate(MaterialIn, own, own_errors) or DEFAULT_MATERIAL
+        own, own_errors = _numbers(params, MATERIAL_FIELDS, units)
+        data["material"] = _validate(MaterialIn, own, own_errors, units) or DEFAULT_MATERIAL
         errors.update(own_errors)
     elif material in MATERIALS:
         data["material"] = material
     else:
         errors["material"] = f"Choose one of: {', '.join(MATERIALS)}."
-    screw = _validate(CustomScrewIn, data, errors)
+    screw = _validate(CustomScrewIn, data, errors, units)
     return (screw if isinstance(screw, CustomScrewIn) else None), errors
 
 
-def screw_values(screw: CustomScrewIn) -> dict[str, str]:
-    """The page fields of a screw: the material and each number not at its default
-    (6 figures)."""
+def _value_text(field: ScrewField | None, value: float, units: Mapping[str, str]) -> str:
+    """A screw value as its page field writes it: in the display unit, exactly (the
+    fewest figures that read back to it), else to 6 figures in the API's unit."""
+    if field is None or field.quantity is None:
+        return f"{value:.6g}"
+    return decimal_text(value, field.factor(units))
+
+
+def screw_values(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS) -> dict[str, str]:
+    """The page fields of a screw: the material and each number not at its default, in
+    the display ``units``."""
     dump = screw.model_dump()
     material = dump.pop("material")
     values = {"material": material if isinstance(material, str) else OWN_MATERIAL}
     if isinstance(material, dict):
         dump.update(material)
     for name, value in dump.items():
-        text = "" if value is None else f"{value:.6g}"
+        text = "" if value is None else _value_text(BY_NAME.get(name), value, units)
         if name in BY_NAME and text not in ("", BY_NAME[name].default):
             values[name] = text
     return values
 
 
-def screw_query(screw: CustomScrewIn) -> str:
-    """The screw's part of a share link."""
-    return urlencode(screw_values(screw))
+def screw_query(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
+    """The screw's part of a share link, in the display ``units``."""
+    return urlencode(screw_values(screw, units))
+
+
+def convert_screw(
+    values: Mapping[str, str], entered: Mapping[str, str], units: Mapping[str, str]
+) -> dict[str, str]:
+    """The screw's typed numbers re-expressed from the ``entered`` units into ``units``
+    (a unit switch), those that change only; text that is no number as typed."""
+    converted = {}
+    for field in SCREW_FIELDS + MATERIAL_FIELDS:
+        raw = values.get(field.name, "").strip()
+        if field.quantity is None or not raw:
+            continue
+        key = unit_key(field.quantity)
+        if entered[key] != units[key]:
+            converted[field.name] = convert_text(raw, field.quantity, entered[key], units[key])
+    return converted
 
 
 def _material_values(spec: ScrewSpec) -> dict[str, float | str | None]:
@@ -184,9 +252,10 @@ def _material_values(spec: ScrewSpec) -> dict[str, float | str | None]:
     }
 
 
-def catalog_screw_query(spec: ScrewSpec) -> str:
+def catalog_screw_query(spec: ScrewSpec, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
     """A catalog screw's geometry, friction, material, largest drag and PV limit as the
-    custom form's query (API units), to try the same screw with other values."""
+    custom form's query (in the display ``units``), to try the same screw with other
+    values."""
     pv_limit = spec.pv_limit_pa_m_s or spec.nut_pv_limit_pa_m_s
     values = {
         "outer_diameter_mm": si_to_api(spec.outer_diameter_m, "length"),
@@ -200,5 +269,16 @@ def catalog_screw_query(spec: ScrewSpec) -> str:
         **_material_values(spec),
     }
     return urlencode(
-        {k: v if isinstance(v, str) else f"{v:.6g}" for k, v in values.items() if v is not None}
+        {
+            k: v if isinstance(v, str) else _shown(k, v, units)
+            for k, v in values.items()
+            if v is not None
+        }
     )
+
+
+def _shown(name: str, value: float, units: Mapping[str, str]) -> str:
+    """A catalog screw's API value in the field's display unit, to 6 figures."""
+    field = BY_NAME.get(name)
+    factor = 1.0 if field is None else float(field.factor(units))
+    return f"{value / factor:.6g}"

@@ -73,7 +73,7 @@
   }
 
   function revealCopyButtons() {
-    document.querySelectorAll("button.copy-link[hidden]").forEach(function (button) {
+    document.querySelectorAll("button.copy-link[hidden], button.print-report[hidden]").forEach(function (button) {
       button.hidden = false;
     });
   }
@@ -117,6 +117,10 @@
   }
 
   function onClick(event) {
+    if (event.target.closest("button.print-report")) {
+      window.print();
+      return;
+    }
     var button = event.target.closest("button.copy-link");
     if (button) {
       onCopy(button);
@@ -143,7 +147,7 @@
     }
   }
 
-  var PRINT_LAYOUT = { width: 345, height: 250, "font.size": 8 };
+  var PRINT_FONT_SIZE = 8;
   var SCREEN_LAYOUT = { width: null, height: null, autosize: true, "font.size": 12 };
 
   function eachChart(action) {
@@ -193,11 +197,24 @@
     });
   }
 
+  // called once the print stylesheet applies, so each chart is drawn at its printed box's
+  // size (a fixed print width overflowed the narrower printed boxes and was clipped)
   function sizeForPrint() {
-    dateReport();
     eachChart(function (chart) {
-      window.Plotly.relayout(chart, PRINT_LAYOUT);
+      window.Plotly.relayout(chart, {
+        width: chart.clientWidth,
+        height: chart.clientHeight,
+        "font.size": PRINT_FONT_SIZE,
+      });
     });
+  }
+
+  function onPrintMedia(event) {
+    if (event.matches) {
+      sizeForPrint();
+    } else {
+      sizeForScreen();
+    }
   }
 
   function sizeForScreen() {
@@ -218,6 +235,6 @@
   document.addEventListener("htmx:beforeSwap", keepStaleResults);
   document.addEventListener("htmx:beforeRequest", markLoading);
   document.addEventListener("htmx:afterRequest", markLoading);
-  window.addEventListener("beforeprint", sizeForPrint);
-  window.addEventListener("afterprint", sizeForScreen);
+  window.addEventListener("beforeprint", dateReport);
+  window.matchMedia("print").addEventListener("change", onPrintMedia);
 })();

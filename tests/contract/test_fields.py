@@ -205,7 +205,9 @@ def test_form_units_follow_the_display_units(client: TestClient) -> None:
     page = BeautifulSoup(client.get("/?length_unit=in").text, "html.parser")
     assert page.select_one("#w-speed .unit").text == "in/s"
     assert page.select_one("#w-moving_mass_kg .unit").text == "kg"
-    assert page.select_one("#w-ambient_c .unit").text == "°C"
+    # inches bring °F: the default 20 °C is 20 x 1.8 + 32 = 68 °F (NIST SP 811 B.9)
+    assert page.select_one("#w-ambient_c .unit").text == "°F"
+    assert page.select_one("#f-ambient_c")["placeholder"] == "68"
     assert page.select_one("#f-lead")["placeholder"] == "any"
 
 
@@ -220,7 +222,7 @@ def test_inputs_summary_shows_required_and_changed_inputs(client: TestClient) ->
         "Axial load": "100 lbf",
         "Linear speed": "2 in/s",
         "Screw length": "20 in",
-        "Ambient temperature": "40 °C",
+        "Ambient temperature": "40 °F",  # typed in °F with inches
         "Rank by": "Longest life",
     }
 
@@ -343,7 +345,7 @@ def test_csv_starts_with_the_inputs_in_display_units(catalog: Catalog) -> None:
     assert by_name["load"][1] == "lbf"
     assert float(by_name["speed"][0]) == pytest.approx(50 / 25.4)
     assert by_name["speed"][1] == "in/s"
-    assert by_name["ambient_c"] == ["35.0", "°C"]
+    assert by_name["ambient_c"] == ["95.0", "°F"]  # 35 °C x 1.8 + 32 (NIST SP 811 B.9)
     assert by_name["stroke"] == ["", "in"]
     assert by_name["end_fixity"] == ["fixed-simple", ""]
     assert lines[blank + 1].startswith("status,rank,id,")
@@ -353,7 +355,7 @@ def test_csv_starts_with_the_inputs_in_display_units(catalog: Catalog) -> None:
 
 NUMBER_TEXTS = [
     "100", "+100", "-5", "1e2", "1E+2", ".5", "5.", "  250 ", "0.001",
-    "１００", "١٠٠", "1_000", "nan", "NaN", "inf", "-Infinity", "1e400", "0x10", "1,5",
+    "１００", "١٠٠", "1_000", "nan", "NaN", "inf", "-Infinity", "1e400", "0x10",
     "", "12x", "e5", ".", "+", "1e", "1.2.3",
 ]  # fmt: skip
 

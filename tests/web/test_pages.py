@@ -32,6 +32,7 @@ HX = {"HX-Request": "true"}
 LBF = 4.4482216152605
 INCH = 25.4
 OZ_IN = 0.0070615518142260435  # N m: 4.4482216152605 N x 0.0254 m / 16 (NIST SP 811)
+OZ_IN2 = 0.45359237 / 16 * 0.0254**2  # kg m²: an ounce (1/16 lb) at an inch (NIST SP 811)
 
 
 def soup(response: Response) -> BeautifulSoup:
@@ -378,9 +379,10 @@ def test_detail_fragment_and_page(client: TestClient) -> None:
 
 
 def test_detail_breaks_the_inertia_torque_into_screw_mass_and_rotor(client: TestClient) -> None:
-    """ZBX8000-L10 at 2 m/s^2 with a rotor of 82e-7 kg m^2: J_motor alpha =
-    82e-7 x 2 pi x 2 / 0.01 = 0.0103 N m = 1.459 oz in, beside the screw's and the mass's."""
-    move = {"accel": "2000", "moving_mass_kg": "5", "motor_inertia": "82e-7"}
+    """ZBX8000-L10 at 2 m/s^2 with a rotor of 82e-7 kg m^2, typed in oz in² as torques
+    are in oz in (82e-7 / OZ_IN2 = 0.448333 oz in²): J_motor alpha = 82e-7 x 2 pi x 2 /
+    0.01 = 0.0103 N m = 1.459 oz in, beside the screw's and the mass's."""
+    move = {"accel": "2000", "moving_mass_kg": "5", "motor_inertia": f"{82e-7 / OZ_IN2:.9g}"}
     params = {**AXIS, **move, "torque_unit": "oz_in", "id": "ZBX8000-L10"}
     detail = soup(client.get("/detail", params=params, headers=HX))
     rotor_nm = 82e-7 * 2 * math.pi * 2.0 / 0.010

@@ -81,7 +81,7 @@ class NutHeat(Check):
             "{nut}, " + verb + " its rated {limit}.",
             {
                 "power": Amount(r.friction_power_w, "power"),
-                "rise": Amount(r.nut_temperature_rise_k, "temperature"),
+                "rise": Amount(r.nut_temperature_rise_k, "temperature_rise"),
                 "nut": Amount(app.ambient_c + r.nut_temperature_rise_k, "temperature"),
                 "limit": Amount(s.temperature_max_c or 0.0, "temperature"),
             },

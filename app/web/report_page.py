@@ -1,0 +1,64 @@
+"""The report an engineer files: one candidate of a result on a print-ready page.
+
+``/report?<share-link query>&id=<candidate id>`` shows the inputs with their units, the
+chosen candidate (the top-ranked one without an id) and the runners-up, its torque
+breakdown, every check with its value, limit, utilisation, formula and the provenance of
+each catalog value, the charts (critical speed, PV, torque, motor), the date and the
+catalog's version. The browser makes the PDF ("Save as PDF" prints the page), so the app
+needs no PDF library; the print stylesheet sizes every chart to the page.
+"""
+
+from collections.abc import Mapping
+from datetime import UTC, datetime
+from typing import Any
+from urllib.parse import urlencode
+
+from fastapi import APIRouter, Request
+from fastapi.responses import HTMLResponse, Response
+
+from app.catalog import Catalog
+from app.contract.form import share_query, summary_rows
+from app.contract.units import Display
+from app.report.service import run_page_selection
+from app.server.deps import CatalogDep
+from app.web.figures import result_figures
+from app.web.pages import link_inputs, page_candidate
+from app.web.templating import templates
+
+router = APIRouter(include_in_schema=False)
+#: passing candidates listed after the chosen one.
+RUNNERS_UP = 4
+
+
+def report_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
+    """The report of candidate ``id`` (else the top-ranked) for the link's inputs; a 422
+    page for bad inputs, a 404 page for an unknown id."""
+    inputs, units = link_inputs(params, catalog)
+    result, _ = run_page_selection(inputs, catalog, units)
+    top = result.candidates[0].id if result.candidates else ""
+    chosen = page_candidate(inputs, params.get("id", "") or top, catalog, units)
+    ranks = {c.id: rank for rank, c in enumerate(result.candidates, start=1)}
+    query = share_query(inputs, units)
+    return {
+        "c": chosen,
+        "rank": ranks.get(chosen.id),
+        "runners_up": [c for c in result.candidates if c.id != chosen.id][:RUNNERS_UP],
+        "result": result,
+        "units": units,
+        "d": Display(units),
+        "input_rows": summary_rows,
+        "figures": result_figures(result, units, catalog),
+        "charting_passed": bool(result.candidates),
+        "query": query,
+        "share_url": "/?" + query,
+        "report_url": f"/report?{query}&{urlencode({'id': chosen.id})}",
+        "date": datetime.now(UTC).date().isoformat(),
+        "catalog_version": catalog.version,
+    }
+
+
+@router.api_route("/report", methods=["GET", "HEAD"], response_class=HTMLResponse)
+async def report(request: Request, catalog: CatalogDep) -> Response:
+    """The print-ready report of one candidate."""
+    context = report_context(request.query_params, catalog)
+    return templates.TemplateResponse(request, "report.html", context)

@@ -1,0 +1,41 @@
+"""The CSV's candidate table: one row per candidate, a column per check's utilisation."""
+
+import csv
+import io
+
+from fastapi.testclient import TestClient
+
+from app.core.checks import REGISTRY
+from app.web.export import UTILISATION_UNIT
+
+AXIS = {"load": "100", "speed": "50", "length": "500", "limit": "5"}
+API_AXIS = {"load_n": "100", "speed_mm_s": "50", "length_mm": "500", "limit": "5"}
+
+
+def _table(text: str) -> list[dict[str, str]]:
+    """The candidate table: the rows after the blank line that ends the inputs."""
+    lines = text.split("\r\n")
+    return list(csv.DictReader(io.StringIO("\r\n".join(lines[lines.index("") + 1 :]))))
+
+
+def test_each_candidate_row_carries_every_checks_utilisation(client: TestClient) -> None:
+    rows = _table(client.get("/export.csv", params=AXIS).text)
+    api = client.get("/api/v1/select", params=API_AXIS).json()
+    header = list(rows[0])
+    for check in REGISTRY:
+        assert f"{check.name}_utilisation [{UTILISATION_UNIT}]" in header
+    passed = [r for r in rows if r["status"] == "passed"]
+    assert [r["id"] for r in passed] == [c["id"] for c in api["candidates"]]
+    for row, candidate in zip(passed, api["candidates"], strict=True):
+        for check in REGISTRY:
+            cell = row[f"{check.name}_utilisation [{UTILISATION_UNIT}]"]
+            value = candidate["utilization"].get(check.name)
+            if value is None:
+                assert cell == ""
+            else:  # written to 10 significant figures
+                assert abs(float(cell) - value) <= 1e-9 * abs(value)
+
+
+def test_the_csv_header_names_units(client: TestClient) -> None:
+    header = _table(client.get("/export.csv", params={**AXIS, "length_unit": "in"}).text)[0]
+    assert "lead [in]" in header and "torque_total [N m]" in header

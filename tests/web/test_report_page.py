@@ -1,0 +1,65 @@
+"""The filed report's page (/report): the inputs, the chosen screw and the runners-up, its
+checks with formulas and provenance, the charts, the date and the catalog version."""
+
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+AXIS = {"load": "100", "speed": "50", "length": "500"}
+
+
+def soup(client: TestClient, params: dict[str, str]) -> BeautifulSoup:
+    response = client.get("/report", params=params)
+    assert response.status_code == 200, response.text
+    return BeautifulSoup(response.text, "html.parser")
+
+
+def test_report_of_the_top_screw_without_an_id(client: TestClient) -> None:
+    api = client.get(
+        "/api/v1/select", params={"load_n": "100", "speed_mm_s": "50", "length_mm": "500"}
+    ).json()
+    page = soup(client, AXIS)
+    assert page.select_one("#report-heading .cid").text == api["candidates"][0]["id"]
+    assert [a.text for a in page.select("table.runners-up tbody th a")] == [
+        c["id"] for c in api["candidates"][1:5]
+    ]
+    assert api["catalog_version"] in page.select_one(".report-date").text
+
+
+def test_report_of_a_chosen_screw_shows_its_checks_provenance_and_charts(
+    client: TestClient,
+) -> None:
+    top = soup(client, AXIS).select("table.runners-up tbody th a")[0].text
+    page = soup(client, {**AXIS, "id": top})
+    assert page.select_one("#report-heading .cid").text == top
+    checks = page.select("ol.checks li.check")
+    assert checks and all(c.select_one("code") for c in checks)  # each with its formula
+    kinds = {k.text for k in page.select("ul.sources .kind")}
+    assert {"handbook", "standard"} <= kinds
+    rows = {
+        dt.text: dd.text
+        for dt, dd in zip(page.select("dl.inputs dt"), page.select("dl.inputs dd"), strict=True)
+    }
+    assert rows == {"Axial load": "100 N", "Linear speed": "50 mm/s", "Screw length": "500 mm"}
+    assert {s["id"] for s in page.select("script[data-chart]")} >= {
+        "fig-critical_speed",
+        "fig-pv",
+        "fig-torque",
+    }
+    assert page.select_one("a.report-link")["href"].endswith(
+        "id=" + top.replace("(", "%28").replace(")", "%29")
+    )
+
+
+def test_report_refuses_an_unknown_screw_and_bad_input(client: TestClient) -> None:
+    assert client.get("/report", params={**AXIS, "id": "no-such-screw"}).status_code == 404
+    response = client.get("/report", params={**AXIS, "load": "12x"})
+    assert response.status_code == 422
+    assert "Axial load" in response.text
+
+
+def test_results_and_detail_link_to_the_report(client: TestClient) -> None:
+    page = BeautifulSoup(client.get("/", params=AXIS).text, "html.parser")
+    assert page.select_one("a.report-link")["href"] == "/report?load=100&speed=50&length=500"
+    cid = page.select_one("tbody.candidate")["data-id"]
+    detail = BeautifulSoup(client.get("/detail", params={**AXIS, "id": cid}).text, "html.parser")
+    assert detail.select_one(".report-link-row a")["href"].startswith("/report?load=100")
