@@ -94,3 +94,32 @@ def test_the_results_start_near_the_top_with_advanced_closed(
     assert 0 < tops[0] <= 1.5 * 900 and tops[0] < tops[1] <= 2 * 900
     page.screenshot(path=str(artifacts / f"results-start-{width}.png"))
     context.close()
+
+
+#: three Advanced groups hold set values (the move, a motor torque, an ambient)
+SET_GROUPS = PLAIN + "&stroke=200&accel=2000&max_torque=0.4&ambient=40"
+
+
+@pytest.mark.parametrize(("width", "screens"), [(1280, 3.0), (390, 4.5)])
+def test_the_results_stay_near_the_top_with_advanced_groups_open(
+    browser: Any, live_server: str, artifacts: Path, width: int, screens: float
+) -> None:
+    """Only the groups holding a set value open, each spanning the panel with its fields
+    in columns, and on a phone an Advanced field's help shows while it is in use: with
+    three groups open the results begin at 2.33 screens at 1280 px and 3.28 at 390 px
+    (3.83 and 5.16 when every group was one tall column with its help always shown)."""
+    context = browser.new_context(viewport={"width": width, "height": 900})
+    page = context.new_page()
+    page.goto(f"{live_server}/?{SET_GROUPS}")
+    page.wait_for_selector("tbody.candidate")
+    assert page.locator("details.group[open]").count() == 3
+    assert page.locator("details.group:not([open])").count() >= 2
+    top = page.evaluate("() => document.querySelector('#results').getBoundingClientRect().top")
+    assert 0 < top <= screens * 900
+    if width == 390:  # a field's help appears when the field is focused
+        hint = page.locator("#h-stroke")
+        assert not hint.is_visible()
+        page.focus("#f-stroke")
+        assert hint.is_visible()
+    page.screenshot(path=str(artifacts / f"advanced-groups-open-{width}.png"), full_page=True)
+    context.close()
