@@ -173,12 +173,26 @@ def remedies(
     return tuple(found)
 
 
-def impossible(most_excluding: str | None, label: str) -> Phrase:
-    """Why no leadscrew of the catalog can do it: the check that excludes the most, and
-    what kind of drive could."""
+def impossible(
+    most_excluding: str | None, label: str, excludes_all: bool, nearest_fails: Sequence[str]
+) -> Phrase:
+    """Why no change tried lets a screw pass. When the check that excludes the most
+    excludes every screw, no leadscrew of the catalog can do it: say so and what kind of
+    drive could; otherwise name what the nearest screws fail on (``nearest_fails``, check
+    labels), whose fixes name the change that would clear them."""
+    tried = (
+        f"no change of load, speed, length, acceleration or mounting tried lets one pass "
+        f"with a {MARGIN * 100:.0f} % margin"
+    )
+    if not excludes_all:
+        fails = ", ".join(nearest_fails) or label
+        return Phrase(
+            f"{tried[0].upper()}{tried[1:]}. The nearest screws fail on {fails}: "
+            "their fixes name what would clear it (such as a larger motor, a brake or "
+            "another nut)."
+        )
     why = WHY.get(most_excluding or "", f"{label} excludes every screw")
     return Phrase(
-        "No leadscrew in the catalog can do this within the accepted inputs: no change of "
-        f"load, speed, length, acceleration or mounting tried lets one pass with a "
-        f"{MARGIN * 100:.0f} % margin. {why[0].upper()}{why[1:]}."
+        f"No leadscrew in the catalog can do this within the accepted inputs: {tried}. "
+        f"{why[0].upper()}{why[1:]}."
     )

@@ -315,7 +315,9 @@ def summarize(
         labels = " and ".join(INPUT_LABELS[k][0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
-    found, why = _remedies(app, screening, nearest, worst, label, ranges)
+    found, why = _remedies(
+        app, screening, nearest, (worst, label, worst_count == evaluated), ranges
+    )
     if found:  # the first verified change, past its limits by the margin
         how = describe_change(app, found[0].inputs)
         parts.append(Phrase("Or change the application: {how}.", {"how": how}))
@@ -341,17 +343,21 @@ def _remedies(
     app: Application,
     sc: Screening | None,
     nearest: Sequence[Candidate],
-    worst: str | None,
-    label: str,
+    most: tuple[str | None, str, bool],
     ranges: Ranges,
 ) -> tuple[tuple[Remedy, ...], Phrase | None]:
     """The verified remedies from the nearest candidates' input changes, or (none found)
-    why no leadscrew can do it; nothing without the screening to verify against."""
+    why no leadscrew can do it; nothing without the screening to verify against. ``most``:
+    the check excluding the most screws, its label, and whether it excludes them all."""
     if sc is None:
         return (), None
     near = nearest[:REMEDY_FROM]
     targets = [t for c in near for t in one_input_changes(c)]
     targets += [change for c in near if len(change := input_change(c)) > 1]
-    failed = {k.name for c in nearest[:REMEDY_FROM] for k in c.failed_checks}
+    failed = {k.name for c in near for k in c.failed_checks}
     found = remedies(app, sc, targets, failed, ranges)
-    return found, None if found else impossible(worst, label)
+    if found:
+        return found, None
+    worst, label, excludes_all = most
+    fails = list(dict.fromkeys(k.label for c in near for k in c.failed_checks))
+    return found, impossible(worst, label, excludes_all, fails)

@@ -9,6 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
+from app.catalog.motors import with_motor
 from app.core.model import Application
 from app.core.remedy import MARGIN, part_way, past_limit
 from app.core.selection import screen, select
@@ -91,3 +92,29 @@ def test_when_no_change_helps_it_says_no_leadscrew_can_and_why(catalog: Catalog)
     text = summary.impossible.template
     assert text.startswith("No leadscrew in the catalog can do this")
     assert "temperature" in text and "5 % margin" in text
+
+
+def test_when_some_screws_are_excluded_otherwise_it_does_not_say_no_leadscrew_can(
+    catalog: Catalog,
+) -> None:
+    """A vertical 5 kg axis with 200 N on a 17HS19 stepper: back-driving excludes 44 of the
+    62 screws of lead 4 mm, not all, and the nearest fail on the motor's curve. No duty
+    change helps, but a larger motor would: the summary names that check, not "no
+    leadscrew in the catalog can do this"."""
+    app = Application(
+        load_n=200.0,
+        speed_m_s=0.05,
+        length_m=0.5,
+        lead_m=0.004,
+        stroke_m=0.2,
+        moving_mass_kg=5.0,
+        orientation="vertical",
+    )
+    motor_app = with_motor(replace(app, motor="17hs19-2004s1"), catalog.motors)
+    summary = select(motor_app, catalog.index, INPUT_RANGES).summary
+    assert summary.remedies == ()
+    assert summary.impossible is not None
+    text = summary.impossible.template
+    assert not text.startswith("No leadscrew in the catalog")
+    assert text.startswith("No change of load, speed, length, acceleration or mounting")
+    assert "Motor torque-speed curve" in text
