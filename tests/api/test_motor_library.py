@@ -189,7 +189,6 @@ def test_pick_and_place_axis_sized_with_a_library_motor(client: TestClient) -> N
     )
 
 
-
 OZ_IN_NM = 0.0070615518  # 1 oz in [N m]
 
 
@@ -238,6 +237,7 @@ def test_a_light_z_axis_sized_with_the_nema_14(client: TestClient) -> None:
     assert checks["motor_curve"]["limit"] == pytest.approx(0.27820, abs=5e-5)
     assert checks["motor_curve"]["limit"] == pytest.approx(0.4 * 521.05 / 750.0, rel=2e-3)
     assert checks["step_rate"]["value"] == pytest.approx(20000.0)
+
 
 LIBRARY = """schema = 1
 

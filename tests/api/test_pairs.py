@@ -51,7 +51,6 @@ def test_a_servo_pair_s_motor_use_by_hand(client: TestClient) -> None:
         assert p["motor_use"] == pytest.approx(by_hand, rel=2e-4)
 
 
-
 def test_an_ac_servo_pair_s_motor_use_by_hand(client: TestClient) -> None:
     """Yaskawa SGM7J-01A: at 50 mm/s every lead of 1 mm or more turns at most 3000 rpm,
     the rated speed, where the peak envelope is still the whole 1.11 N m; the top speed is
@@ -65,6 +64,7 @@ def test_an_ac_servo_pair_s_motor_use_by_hand(client: TestClient) -> None:
         by_hand = max(p["torque_nm"] / 1.11, p["peak_rpm"] / 6000.0)
         assert p["motor_use"] == pytest.approx(by_hand, rel=1e-6)
         assert p["motor_use"] >= 0.25
+
 
 @pytest.mark.parametrize(
     ("rank", "field"),

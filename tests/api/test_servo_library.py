@@ -81,7 +81,6 @@ def test_a_servo_too_slow_for_the_axis_is_rejected_by_its_speed(catalog: Catalog
     assert speed.limit == pytest.approx(3702.0 * (1 - 0.18 / 1.4), abs=0.5)
 
 
-
 def test_the_100_w_ac_servo_carries_its_cited_ratings() -> None:
     """Yaskawa SGM7J-01A (Sigma-7 rotary servomotor product manual, 4.2.2): rated torque
     0.318 N m, which is its 100 W at 3000 min-1: 100 / (3000 x 2 pi / 60) = 0.3183 N m;
