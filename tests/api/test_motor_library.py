@@ -189,6 +189,56 @@ def test_pick_and_place_axis_sized_with_a_library_motor(client: TestClient) -> N
     )
 
 
+OZ_IN_NM = 0.0070615518  # 1 oz in [N m]
+
+
+def test_the_nema_14_carries_its_cited_values() -> None:
+    """STEPPERONLINE 14HS20-1504S as tabled in stepper-simulator's data/steppers.csv, with
+    the maker's page address: 1.8 deg; 40 N cm = 0.40 N m (the address's 56.7 oz in x
+    0.0070616 = 0.4004 N m); 1.5 A; 2.8 ohm (the address's 4.2 V / 1.5 A = 2.8 ohm);
+    3.8 mH = 0.0038 H; 54 g cm2 = 54 x 1e-3 kg x 1e-4 m2 = 5.4e-6 kg m2. Only the drive
+    voltage is assumed (24 V); the model's corner there is 60 (24 - 1.5 x 2.8) /
+    (2 x 0.0038 x 1.5 x 200) = 60 x 19.8 / 2.28 = 521.05 rpm."""
+    motor = MOTORS["14hs20-1504s"]
+    assert (motor.frame, motor.kind) == ("NEMA 14", "stepper")
+    assert motor.value("step_angle_deg") == 1.8
+    assert motor.value("holding_torque_nm") == pytest.approx(40 / 100)
+    assert motor.value("holding_torque_nm") == pytest.approx(56.7 * OZ_IN_NM, rel=2e-3)
+    assert motor.value("phase_current_a") == 1.5
+    assert motor.value("resistance_ohm") == pytest.approx(4.2 / 1.5)
+    assert motor.value("inductance_mh") == pytest.approx(3.8e-3)
+    assert motor.value("rotor_inertia_g_cm2") == pytest.approx(54 * 1e-3 * 1e-4)
+    kinds = {name: value.provenance.kind for name, value in motor.values.items()}
+    assert kinds == {**dict.fromkeys(kinds, "vendor"), "supply_v": "assumed"}
+    assert "steppers.csv" in motor.values["rotor_inertia_g_cm2"].provenance.source
+    assert motor.corner_rpm() == pytest.approx(60 * 19.8 / 2.28)
+
+
+def test_a_light_z_axis_sized_with_the_nema_14(client: TestClient) -> None:
+    """The printer's Z axis with the 14HS20-1504S: Tr8x8(P2) at 12 mm/s turns 90 rpm, under
+    the model's 521.05 rpm corner, so the curve's limit is the whole 0.40 N m holding
+    torque. The same axis at 100 mm/s turns 750 rpm, past the corner: the curve's points
+    after the corner are spaced (3000 - 521.05) / 11 = 225.36 rpm, so 750 rpm lies
+    between 746.41 rpm (0.4 x 521.05 / 746.41 = 0.27923 N m) and 971.77 rpm (0.21448 N m):
+    0.27923 - 0.06476 x 3.59 / 225.36 = 0.27820 N m, 0.1 % over the model's own
+    0.4 x 521.05 / 750 = 0.27789 N m; 750 / 60 x 200 x 8 = 20 000 steps/s at 8 microsteps."""
+    params = {**Z_AXIS, "motor": "14hs20-1504s", "detail": "full"}
+    slow = client.get("/api/v1/select", params=params).json()
+    best = slow["candidates"][0]
+    assert best["lead_mm"] == 8.0
+    checks = _checks(best)
+    assert checks["motor_curve"]["limit"] == pytest.approx(0.40)
+    assert checks["motor_curve"]["passed"] and checks["inertia_ratio"]["passed"]
+    assert checks["step_rate"]["value"] == pytest.approx(4800.0)
+    fast = {**params, "speed_mm_s": 100.0, "microsteps": 8}
+    best = client.get("/api/v1/select", params=fast).json()["candidates"][0]
+    checks = _checks(best)
+    assert best["lead_mm"] == 8.0
+    assert checks["motor_curve"]["limit"] == pytest.approx(0.27820, abs=5e-5)
+    assert checks["motor_curve"]["limit"] == pytest.approx(0.4 * 521.05 / 750.0, rel=2e-3)
+    assert checks["step_rate"]["value"] == pytest.approx(20000.0)
+
+
 LIBRARY = """schema = 1
 
 [motors.m1]

@@ -22,7 +22,7 @@ def test_the_pairs_are_the_selections_with_each_motor(client: TestClient) -> Non
     library motor in turn gives: as many passing pairs as the selections pass in all."""
     body = _pairs(client)
     motors = [m["id"] for m in client.get("/api/v1/motors").json()["motors"]]
-    assert body["motors"] == len(motors) == 9
+    assert body["motors"] == len(motors) == 11
     passed = 0
     for motor in motors:
         r = client.get("/api/v1/select", params={**AXIS, "motor": motor, "limit": 1})
@@ -51,6 +51,21 @@ def test_a_servo_pair_s_motor_use_by_hand(client: TestClient) -> None:
         assert p["motor_use"] == pytest.approx(by_hand, rel=2e-4)
 
 
+def test_an_ac_servo_pair_s_motor_use_by_hand(client: TestClient) -> None:
+    """Yaskawa SGM7J-01A: at 50 mm/s every lead of 1 mm or more turns at most 3000 rpm,
+    the rated speed, where the peak envelope is still the whole 1.11 N m; the top speed is
+    6000 rpm. So a pair's motor use is max(T / 1.11, n / 6000) (no stroke: no RMS check);
+    on a 2 mm lead n = 50 / 2 x 60 = 1500 rpm, a share of at least 0.25."""
+    found = _pairs(client, lead_mm=2.0)["pairs"]
+    pairs = [p for p in found if p["motor"] == "yaskawa-sgm7j-01a"]
+    assert pairs
+    for p in pairs:
+        assert p["peak_rpm"] == pytest.approx(1500.0)
+        by_hand = max(p["torque_nm"] / 1.11, p["peak_rpm"] / 6000.0)
+        assert p["motor_use"] == pytest.approx(by_hand, rel=1e-6)
+        assert p["motor_use"] >= 0.25
+
+
 @pytest.mark.parametrize(
     ("rank", "field"),
     [("motor_margin", "motor_use"), ("motor_size", "motor_size_nm"), ("torque", "torque_nm")],
@@ -75,7 +90,7 @@ def test_post_and_get_agree_and_a_typed_motor_is_set_aside(client: TestClient) -
     r = client.post("/api/v1/pairs", json={**AXIS, "motor": "pololu-1205"})
     assert r.status_code == 200
     assert r.json()["pairs"] == got["pairs"]
-    assert got["motors"] == 9
+    assert got["motors"] == 11
 
 
 def test_a_bad_rank_is_a_field_level_422(client: TestClient) -> None:

@@ -3,6 +3,7 @@ peak envelope and rated torque reach the motor checks; the servo model reproduce
 maker's published speed-torque points; a catalog directory's own motors.toml joins the
 library, and a bad or duplicate motor stops the load with file, entry and field named."""
 
+import math
 from pathlib import Path
 
 import pytest
@@ -14,6 +15,7 @@ from app.core.evaluate import evaluate
 from app.core.formulas import servo
 from app.main import create_app
 from app.server.settings import Settings
+from tests.motor_library import MOTORS
 
 OZ_IN_NM = 0.0070615518  # 1 oz in [N m]
 AXIS = {"load_n": 20.0, "speed_mm_s": 50.0, "length_mm": 350.0, "stroke_mm": 200.0}
@@ -77,6 +79,59 @@ def test_a_servo_too_slow_for_the_axis_is_rejected_by_its_speed(catalog: Catalog
     assert not speed.passed and speed in result.failed_checks
     assert speed.value == pytest.approx(6000.0)
     assert speed.limit == pytest.approx(3702.0 * (1 - 0.18 / 1.4), abs=0.5)
+
+
+def test_the_100_w_ac_servo_carries_its_cited_ratings() -> None:
+    """Yaskawa SGM7J-01A (Sigma-7 rotary servomotor product manual, 4.2.2): rated torque
+    0.318 N m, which is its 100 W at 3000 min-1: 100 / (3000 x 2 pi / 60) = 0.3183 N m;
+    instantaneous maximum 1.11 N m; 3000 min-1 rated, 6000 min-1 maximum; 0.0659 x 1e-4
+    kg m2 = 6.59e-6 kg m2. The torque at 6000 min-1 is not published as a number: the
+    rated torque is assumed there, and the envelope is peak, peak at rated speed, that."""
+    motor = MOTORS["yaskawa-sgm7j-01a"]
+    assert motor.kind == "servo"
+    assert motor.value("rated_torque_nm") == pytest.approx(100 / (3000 * 2 * math.pi / 60), 1e-3)
+    assert motor.value("rated_torque_nm") == 0.318
+    assert (motor.value("peak_torque_nm"), motor.value("rated_rpm")) == (1.11, 3000.0)
+    assert motor.value("max_rpm") == 6000.0
+    assert motor.value("rotor_inertia_g_cm2") == pytest.approx(0.0659e-4)
+    assert motor.curve() == ((0.0, 1.11), (3000.0, 1.11), (6000.0, 0.318))
+    kinds = {name: value.provenance.kind for name, value in motor.values.items()}
+    assert kinds == {**dict.fromkeys(kinds, "vendor"), "top_speed_torque_nm": "assumed"}
+    assert motor.continuous_torque_nm() == 0.318 and motor.step_angle_deg() is None
+
+
+def test_a_pick_and_place_axis_sized_with_the_100_w_servo(client: TestClient) -> None:
+    """A 1.5 kg head at 300 mm/s and 3 m/s2 on 300 mm strokes (the stepper's pick-and-place
+    axis without the step controller): on an 8 mm lead the screw turns 300 / 8 x 60 =
+    2250 rpm, below the 3000 min-1 rated speed, so the peak envelope gives the whole
+    1.11 N m there (on the published part of the envelope, not the assumed top). The
+    motor's share is the largest of the segment torque over 1.11 N m, the RMS torque over
+    0.318 N m and 2250 / 6000 = 0.375: the speed governs."""
+    params = {
+        "load_n": 5.0,
+        "moving_mass_kg": 1.5,
+        "speed_mm_s": 300.0,
+        "accel_mm_s2": 3000.0,
+        "length_mm": 500.0,
+        "stroke_mm": 300.0,
+        "dwell_s": 0.1,
+        "cycles_per_day": 10000.0,
+        "required_life_years": 2.0,
+        "positioning_tolerance_mm": 0.05,
+        "rank_by": "motor_margin",
+        "motor": "yaskawa-sgm7j-01a",
+    }
+    body = client.get("/api/v1/select", params={**params, "detail": "full"}).json()
+    best = body["candidates"][0]
+    assert best["lead_mm"] == 8.0
+    checks = {c["name"]: c for c in best["checks"]}
+    assert checks["motor_speed"]["value"] == pytest.approx(2250.0)
+    assert checks["motor_speed"]["limit"] == pytest.approx(6000.0)
+    assert checks["motor_curve"]["limit"] == pytest.approx(1.11)
+    assert checks["motor_rms"]["limit"] == pytest.approx(0.318)
+    shares = [checks[n]["value"] / checks[n]["limit"] for n in ("motor_curve", "motor_rms")]
+    assert max(shares) < 2250.0 / 6000.0
+    assert best["motor_use"] == pytest.approx(2250.0 / 6000.0)
 
 
 SERVO = """schema = 1
