@@ -110,11 +110,14 @@ def _columns(d: Display) -> list[tuple[str, Callable[[CandidateOut], Any]]]:
     ]
 
 
-def _input_rows(inputs: dict[str, Any], units: dict[str, str]) -> list[list[Any]]:
-    """One row per table input: page name, value in the display units, display unit.
+def _heading(prefix: str, name: str, unit: str) -> str:
+    """A column heading for a name (an input, a screw value) with its unit, if any."""
+    return f"{prefix}{name} [{unit}]" if unit else f"{prefix}{name}"
 
-    An optional input left empty has an empty value cell.
-    """
+
+def _input_rows(inputs: dict[str, Any], units: dict[str, str]) -> list[list[Any]]:
+    """One (page name, value in the display units, display unit) per table input; an
+    optional input left empty has an empty value."""
     return [
         [field.page, _input_value(field, inputs[field.api], units), field.display_unit(units)]
         for field in FIELDS
@@ -128,41 +131,51 @@ def _input_value(field: InputField, value: Any, units: dict[str, str]) -> Any:
     return field.display_value(value, units)
 
 
-def results_csv(result: SelectOut, units: dict[str, str]) -> str:
-    """The inputs (one row each), a blank row, then one table of the passing candidates
-    (ranked) and the rejected ones shown, one row each, with a column per check of the
-    registry for its utilisation (empty where the check does not apply or is yes/no);
-    the candidates need only the ``csv`` view's fields."""
-    columns = _columns(Display(units))
+def _trailing(groups: list[tuple[str, list[list[Any]]]]) -> tuple[list[str], list[Any]]:
+    """The columns every row carries after the candidate's own (the inputs, a custom
+    screw's values): headings ``<prefix><name> [unit]`` and the values."""
+    headings = [_heading(prefix, name, unit) for prefix, rows in groups for name, _, unit in rows]
+    return headings, [value for _, rows in groups for _, value, _ in rows]
+
+
+def _table(
+    columns: list[tuple[str, Callable[[CandidateOut], Any]]],
+    rows: list[tuple[str, Any, CandidateOut]],
+    trailing: tuple[list[str], list[Any]],
+) -> str:
+    """One table: a header, then per candidate its status, rank, columns and the
+    trailing values (the same on every row, so each row stands alone when filtered);
+    with no candidate, one row of status ``none`` with the trailing values only."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
-    writer.writerow(["input", "value", "unit"])
-    writer.writerows(
-        [list(map(cell, row)) for row in _input_rows(result.inputs.model_dump(), units)]
-    )
-    writer.writerow([])
-    writer.writerow(["status", "rank", *(name for name, _ in columns)])
-    groups = (("passed", result.candidates), ("rejected", result.rejected))
-    for status, candidates in groups:
-        for rank, c in enumerate(candidates, start=1):
-            cells = [get(c) for _, get in columns]
-            writer.writerow([status, rank if status == "passed" else "", *map(cell, cells)])
+    writer.writerow(["status", "rank", *(name for name, _ in columns), *trailing[0]])
+    tail = [cell(v) for v in trailing[1]]
+    for status, rank, c in rows:
+        writer.writerow([status, rank, *(cell(get(c)) for _, get in columns), *tail])
+    if not rows:  # no screw to show: one row still records what was asked
+        writer.writerow(["none", "", *([""] * len(columns)), *tail])
     return out.getvalue()
+
+
+def results_csv(result: SelectOut, units: dict[str, str]) -> str:
+    """One table: a row per passing candidate (ranked) and per rejected one shown, with a
+    column per check of the registry for its utilisation (empty where the check does not
+    apply or is yes/no), then a column per input (``input:<page name> [unit]``, in the
+    display units, the same on every row); the candidates need only the ``csv`` view's
+    fields."""
+    rows: list[tuple[str, Any, CandidateOut]] = [
+        ("passed", rank, c) for rank, c in enumerate(result.candidates, start=1)
+    ]
+    rows += [("rejected", "", c) for c in result.rejected]
+    inputs = _input_rows(result.inputs.model_dump(), units)
+    return _table(_columns(Display(units)), rows, _trailing([("input:", inputs)]))
 
 
 def candidate_csv(
     inputs: dict[str, Any], screw_rows: list[list[Any]], c: CandidateOut, units: dict[str, str]
 ) -> str:
-    """One screw of the user's own: the inputs, the screw's rows (name, value, unit), a
-    blank row, then the candidate's row with its status."""
-    columns = _columns(Display(units))
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\r\n")
-    writer.writerow(["input", "value", "unit"])
-    writer.writerows([list(map(cell, row)) for row in _input_rows(inputs, units)])
-    writer.writerows([list(map(cell, row)) for row in screw_rows])
-    writer.writerow([])
-    writer.writerow(["status", *(name for name, _ in columns)])
+    """One screw of the user's own as a one-row table: its status and columns, then a
+    column per screw value (``screw:<name> [unit]``) and per input (``input:...``)."""
     status = "passed" if c.passed else "rejected"
-    writer.writerow([status, *(cell(get(c)) for _, get in columns)])
-    return out.getvalue()
+    groups = [("screw:", screw_rows), ("input:", _input_rows(inputs, units))]
+    return _table(_columns(Display(units)), [(status, "", c)], _trailing(groups))

@@ -332,23 +332,24 @@ def test_a_link_number_reads_back_exactly(api: str, value: float, units: dict[st
 # --- CSV export --------------------------------------------------------------------------
 
 
-def test_csv_starts_with_the_inputs_in_display_units(catalog: Catalog) -> None:
+def test_csv_rows_carry_the_inputs_in_display_units(catalog: Catalog) -> None:
     inputs = ApplicationIn.model_validate({**REQUIRED, "lead_mm": 10.0, "ambient_c": 35.0})
     units = {**DEFAULT_UNITS, "force_unit": "lbf", "length_unit": "in"}
-    lines = results_csv(run_selection(inputs, catalog), units).split("\r\n")
-    blank = lines.index("")
-    rows = list(csv.reader(io.StringIO("\n".join(lines[:blank]))))
-    assert rows[0] == ["input", "value", "unit"]
-    assert [row[0] for row in rows[1:]] == SHARE_LINK_NAMES
-    by_name = {row[0]: row[1:] for row in rows[1:]}
+    rows = list(csv.reader(io.StringIO(results_csv(run_selection(inputs, catalog), units))))
+    header, first = rows[0], rows[1]
+    assert header[:3] == ["status", "rank", "id"]
+    columns = [
+        (i, h.removeprefix("input:")) for i, h in enumerate(header) if h.startswith("input:")
+    ]
+    assert [h.split(" [")[0] for _, h in columns] == SHARE_LINK_NAMES
+    by_name = {h.split(" [")[0]: (first[i], h.partition(" [")[2].rstrip("]")) for i, h in columns}
     assert float(by_name["load"][0]) == pytest.approx(100 / 4.4482216152605)
     assert by_name["load"][1] == "lbf"
     assert float(by_name["speed"][0]) == pytest.approx(50 / 25.4)
     assert by_name["speed"][1] == "in/s"
-    assert by_name["ambient_c"] == ["95.0", "°F"]  # 35 °C x 1.8 + 32 (NIST SP 811 B.9)
-    assert by_name["stroke"] == ["", "in"]
-    assert by_name["end_fixity"] == ["fixed-simple", ""]
-    assert lines[blank + 1].startswith("status,rank,id,")
+    assert by_name["ambient_c"] == ("95.0", "°F")  # 35 °C x 1.8 + 32 (NIST SP 811 B.9)
+    assert by_name["stroke"] == ("", "in")
+    assert by_name["end_fixity"] == ("fixed-simple", "")
 
 
 # --- one number parser for the page and the API -----------------------------------------

@@ -1,4 +1,4 @@
-"""The CSV's candidate table: one row per candidate, a column per check's utilisation."""
+"""The CSV: one table, a row per candidate, a column per check's utilisation and per input."""
 
 import csv
 import io
@@ -13,9 +13,8 @@ API_AXIS = {"load_n": "100", "speed_mm_s": "50", "length_mm": "500", "limit": "5
 
 
 def _table(text: str) -> list[dict[str, str]]:
-    """The candidate table: the rows after the blank line that ends the inputs."""
-    lines = text.split("\r\n")
-    return list(csv.DictReader(io.StringIO("\r\n".join(lines[lines.index("") + 1 :]))))
+    """The CSV's one table, by heading."""
+    return list(csv.DictReader(io.StringIO(text)))
 
 
 def test_each_candidate_row_carries_every_checks_utilisation(client: TestClient) -> None:
@@ -39,3 +38,14 @@ def test_each_candidate_row_carries_every_checks_utilisation(client: TestClient)
 def test_the_csv_header_names_units(client: TestClient) -> None:
     header = _table(client.get("/export.csv", params={**AXIS, "length_unit": "in"}).text)[0]
     assert "lead [in]" in header and "torque_total [N m]" in header
+    assert "input:load [N]" in header and "input:length [in]" in header
+
+
+def test_every_row_carries_every_input_in_display_units(client: TestClient) -> None:
+    """One table: each row stands alone when filtered, with the axis it was judged for."""
+    params = {**AXIS, "length_unit": "in", "force_unit": "lbf", "load": "22.5"}
+    rows = _table(client.get("/export.csv", params=params).text)
+    assert len(rows) > 1
+    assert {r["input:load [lbf]"] for r in rows} == {"22.5"}
+    assert {float(r["input:length [in]"]) for r in rows} == {500.0}
+    assert {r["input:end_fixity"] for r in rows} == {"fixed-simple"}

@@ -89,12 +89,8 @@ def test_motor_curve_in_ounce_inches(client: TestClient) -> None:
     assert page.select_one("#w-motor_curve .unit").text == "rpm : oz in"
     link = parse_qs(page.select_one("a.share-link")["href"].split("?", 1)[1])
     assert link["motor_curve"] == ["0:16,600:12,1200:8"]  # the link keeps the typed torques
-    rows = dict(
-        (row[0], row[1:])
-        for row in csv.reader(io.StringIO(client.get("/export.csv", params=params).text))
-        if row
-    )
-    assert rows["motor_curve"] == ["0:16,600:12,1200:8", "rpm : oz in"]
+    rows = csv.DictReader(io.StringIO(client.get("/export.csv", params=params).text))
+    assert {r["input:motor_curve [rpm : oz in]"] for r in rows} == {"0:16,600:12,1200:8"}
 
 
 def test_switching_the_torque_unit_converts_the_typed_curve(client: TestClient) -> None:
