@@ -8,13 +8,10 @@ from starlette.datastructures import QueryParams
 
 from app import __version__
 from app.api.query import parse_query, query_parameters
-from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
-from app.contract.schemas import (
-    ApplicationIn,
+from app.contract.outputs import (
     ChecksOut,
     CompareOut,
     ErrorOut,
-    EvaluateIn,
     EvaluateOut,
     FormulasOut,
     HealthOut,
@@ -24,6 +21,9 @@ from app.contract.schemas import (
     SeriesListOut,
     SeriesOut,
 )
+from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
+from app.contract.schemas import ApplicationIn
+from app.contract.screws import EvaluateIn
 from app.contract.units import api_value
 from app.core.checks import REGISTRY
 from app.report.pairs import motors_out, run_pairs

@@ -6,7 +6,7 @@ from typing import Any, Literal
 from pydantic import BaseModel, Field, ValidationInfo, field_validator
 
 from app.contract.inputs import ApplicationIn
-from app.contract.schemas import SourcedOut
+from app.contract.outputs import SourcedOut
 
 PairRankIn = Literal["motor_margin", "motor_size", "torque"]
 #: What each pair ranking sorts by, in words (the API's ``ranked_by`` and the page).

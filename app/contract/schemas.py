@@ -1,30 +1,25 @@
-"""Input and output models of the API, shared with the pages (pydantic v2).
-
-Field names carry their units. Inputs are validated here (finite, in range, known enum
-values); the application input ``ApplicationIn`` is generated from the field table in
-``app.contract.inputs`` and converts itself to the SI ``Application`` of the core (``to_core``).
+"""The candidate's output model, ``CandidateOut``, with its parts (checks, torque, life,
+verdict, ...) and its views (row, summary, rejected, csv, full), shared by the API, pages,
+figures and CSV (pydantic v2). The screw inputs are in ``app.contract.screws``, the
+responses around the candidates (selection, compare, catalog, errors) in
+``app.contract.outputs``; the application input ``ApplicationIn`` is generated from the
+field table in ``app.contract.inputs`` and re-exported here.
 """
 
-import math
 import operator
 from collections.abc import Mapping
 from functools import reduce
 from types import GenericAlias, UnionType
-from typing import Annotated, Any, Literal, Union, cast, get_args, get_origin
+from typing import Annotated, Any, Literal, Union, get_args, get_origin
 
 from pydantic import (
     BaseModel,
     ConfigDict,
-    Discriminator,
     Field,
-    Tag,
-    ValidationInfo,
     create_model,
-    field_validator,
 )
 
 from app.contract.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
-from app.contract.inputs import NotBool, bounded_number
 from app.contract.source import (
     From,
     check_limit,
@@ -48,114 +43,6 @@ TORQUE_NOTE = (
     "misalignment are extra (seed). The torque safety factor covers them: 1.0 by default, "
     "1.3 to 2 is common at the planning stage."
 )
-
-
-class MaterialIn(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-
-    youngs_modulus_pa: Annotated[float, bounded_number(1e6, 1e13, "Young's modulus [Pa]."), NotBool]
-    density_kg_m3: Annotated[float, bounded_number(1.0, 1e5, "Density [kg/m^3]."), NotBool]
-    yield_strength_pa: (
-        Annotated[
-            float,
-            bounded_number(1e6, 1e10, "Yield strength [Pa]; without it, Euler buckling only."),
-            NotBool,
-        ]
-        | None
-    ) = None
-
-
-class CatalogScrewIn(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-
-    catalog_id: str = Field(max_length=100, description="A screw id from /api/v1/select.")
-
-
-class CustomScrewIn(BaseModel):
-    """A screw that is not in the catalog. Diameters and lead in mm."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    outer_diameter_mm: Annotated[
-        float, bounded_number(0.1, 1000.0, "Outer diameter [mm]."), NotBool
-    ]
-    root_diameter_mm: Annotated[
-        float, bounded_number(0.05, 1000.0, "Root (minor) diameter [mm], below the outer."), NotBool
-    ]
-    lead_mm: Annotated[float, bounded_number(0.01, 1000.0, "Lead [mm]."), NotBool]
-    thread_half_angle_deg: Annotated[
-        float,
-        bounded_number(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal."),
-        NotBool,
-    ] = 14.5
-    friction_dynamic: Annotated[
-        float, bounded_number(1e-3, 1.0, "Running friction coefficient."), NotBool
-    ]
-    friction_static: Annotated[
-        float, bounded_number(1e-3, 1.0, "Static friction coefficient."), NotBool
-    ]
-    material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
-    drag_torque_nm: Annotated[
-        float, bounded_number(0.0, 1e4, "Nut drag torque [N m]."), NotBool
-    ] = 0.0
-    inertia_kg_m2_per_m: (
-        Annotated[
-            float,
-            bounded_number(
-                1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."
-            ),
-            NotBool,
-        ]
-        | None
-    ) = None
-    pv_limit_mpa_m_s: (
-        Annotated[float, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s]."), NotBool] | None
-    ) = None
-
-    @field_validator("root_diameter_mm")
-    @classmethod
-    def _root_below_outer(cls, value: float, info: ValidationInfo) -> float:
-        outer = info.data.get("outer_diameter_mm")
-        if outer is not None and value >= outer:
-            raise ValueError("must be smaller than outer_diameter_mm")
-        return value
-
-    @field_validator("friction_dynamic", "friction_static")
-    @classmethod
-    def _thread_drivable(cls, value: float, info: ValidationInfo) -> float:
-        """A sliding thread can be driven only while mu tan(lambda) < cos(a_n) (Shigley)."""
-        names = ("outer_diameter_mm", "root_diameter_mm", "lead_mm", "thread_half_angle_deg")
-        if any(info.data.get(name) is None for name in names):
-            return value  # an earlier field is invalid and already reported
-        outer, root, lead, half_angle = (float(info.data[name]) for name in names)
-        tan_lead = lead / (math.pi * (outer + root) / 2)
-        limit = 0.99 * math.cos(math.radians(half_angle)) / tan_lead
-        if value >= limit:
-            raise ValueError(
-                f"with this lead ({math.degrees(math.atan(tan_lead)):.1f} deg lead angle) the "
-                f"thread cannot be driven at friction {value:g}: it must be below {limit:.3g}"
-            )
-        return value
-
-
-def _screw_kind(data: Any) -> str:
-    has_id = isinstance(data, dict) and "catalog_id" in data
-    return "catalog" if has_id or isinstance(data, CatalogScrewIn) else "custom"
-
-
-ScrewIn = Annotated[
-    Annotated[CatalogScrewIn, Tag("catalog")] | Annotated[CustomScrewIn, Tag("custom")],
-    Discriminator(_screw_kind),
-]
-
-
-class EvaluateIn(BaseModel):
-    """One application and one screw: ``{"catalog_id": ...}`` or a custom geometry."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    application: ApplicationIn
-    screw: ScrewIn
 
 
 class CheckOut(BaseModel):
@@ -587,204 +474,3 @@ def _cut(annotation: Any, view: View, name: str) -> Any:
 #: The compact select's candidate and rejected candidate, and the page's row, as models.
 CandidateSummaryOut = view_model(CandidateOut, VIEWS["summary"], "Summary")
 RejectedSummaryOut = view_model(CandidateOut, VIEWS["rejected"], "Rejected")
-
-
-class CountsOut(BaseModel):
-    evaluated: int
-    passed: int
-    rejected: int
-    failed_by_check: dict[str, int]
-
-
-class ChangeOut(BaseModel):
-    inputs: dict[str, float] = Field(description="API input -> value that admits the screw.")
-    admits: str = Field(description="The candidate the change admits.")
-
-
-class RemedyOut(BaseModel):
-    inputs: dict[str, float | str] = Field(
-        description="API input -> value (end_fixity: its choice), 5 % past each limit."
-    )
-    passing: int = Field(description="Candidates that pass with the change made.")
-    utilization: float = Field(
-        description="The lowest governing utilisation among them: at most 1 / 1.05."
-    )
-
-
-class SummaryOut(BaseModel):
-    message: str
-    most_excluding_check: str | None
-    best_rejected_id: str | None
-    input_change: dict[str, float] = Field(
-        description="The inputs at which the nearest candidate's failed checks reach "
-        "their limits exactly; remedies apply a margin."
-    )
-    changes: list[ChangeOut] = Field(
-        description="Feasible input changes, each admitting a near candidate (one click)."
-    )
-    remedies: list[RemedyOut] = Field(
-        default_factory=list,
-        description="When nothing passes: changes (one input or several, or the mounting) "
-        "each verified by selecting again with it made, a candidate then passing with a "
-        "5 % margin on its governing check.",
-    )
-    impossible: str | None = Field(
-        default=None,
-        description="When nothing passes and no remedy is found: why no leadscrew can do it.",
-    )
-
-
-class FormulaOut(BaseModel):
-    formula: str
-    function: str
-    source: str
-
-
-class SelectionBaseOut(BaseModel):
-    """What every form of a selection gives besides its candidates."""
-
-    inputs: ApplicationIn
-    counts: CountsOut
-    summary: SummaryOut
-    catalog_version: str
-    share_url: str
-
-
-class SelectOut(SelectionBaseOut):
-    candidates: list[CandidateOut]
-    rejected: list[CandidateOut]
-    formulas: dict[str, FormulaOut] = Field(
-        description="Quantity (dotted path in a candidate) -> formula, core function, source."
-    )
-
-
-class PageSelectionOut(SelectionBaseOut):
-    """The results page's selection: the passing candidates as table rows (the ``row``
-    view); the rejected in full only when nothing passes (the charts and the advice are
-    then about them)."""
-
-    candidates: list[CandidateOut]
-    rejected: list[CandidateOut]
-
-
-class FormulasOut(BaseModel):
-    formulas: dict[str, FormulaOut] = Field(
-        description="Quantity (dotted path in a candidate) -> formula, core function, source."
-    )
-
-
-class SelectQuery(ApplicationIn):
-    """The GET select's query: the application's fields and the response's form."""
-
-    detail: Literal["summary", "full"] = Field(
-        "summary",
-        description="summary (default): passing candidates as the results table shows "
-        "them, rejected ones as their failed checks with utilisation and fix, formulas at "
-        "/api/v1/formulas (SelectSummaryOut); full: every number, check message, formula "
-        "and provenance of every candidate, and the formulas table (SelectOut).",
-    )
-
-    @field_validator("*")
-    @classmethod
-    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
-        """The application's fields as ``ApplicationIn`` checks them; ``detail`` as it is."""
-        if info.field_name == "detail":
-            return value
-        return super()._needs(value, info)
-
-    def application(self) -> ApplicationIn:
-        """The application's fields alone, as the body of a POST would give them."""
-        values = {name: getattr(self, name) for name in ApplicationIn.model_fields}
-        return ApplicationIn.model_construct(self.model_fields_set - {"detail"}, **values)
-
-
-#: The compact select's ``detail``.
-SummaryDetail = Literal["summary"]
-#: The default select response (``detail=full`` gives ``SelectOut``): the passing
-#: candidates in the ``summary`` view, the rejected in the ``rejected`` view.
-SelectSummaryOut = create_model(
-    "SelectSummaryOut",
-    __doc__="The default select response; ``detail=full`` gives ``SelectOut``.",
-    detail=(SummaryDetail, ...),
-    inputs=(ApplicationIn, ...),
-    candidates=(cast(Any, GenericAlias(list, (CandidateSummaryOut,))), ...),
-    rejected=(cast(Any, GenericAlias(list, (RejectedSummaryOut,))), ...),
-    counts=(CountsOut, ...),
-    summary=(SummaryOut, ...),
-    catalog_version=(str, ...),
-    share_url=(str, ...),
-    formulas_url=(
-        str,
-        Field(description="The formulas table (GET), the same for every query."),
-    ),
-)
-
-
-class CompareOut(BaseModel):
-    """2 to 4 catalog screws side by side for one application, each in full."""
-
-    inputs: ApplicationIn
-    candidates: list[CandidateOut]
-    catalog_version: str
-    share_url: str = Field(description="The compare page of the same inputs and ids.")
-
-
-class EvaluateOut(BaseModel):
-    inputs: ApplicationIn
-    candidate: CandidateOut
-    catalog_version: str
-    formulas: dict[str, FormulaOut]
-
-
-class SourcedOut(BaseModel):
-    value: Any
-    unit: str
-    provenance: ProvenanceOut
-
-
-class SeriesOut(BaseModel):
-    id: str
-    name: str
-    family: str
-    family_name: str
-    type: str
-    file: str
-    fields: dict[str, SourcedOut]
-    candidate_ids: list[str]
-
-
-class SeriesListOut(BaseModel):
-    catalog_version: str
-    series: list[SeriesOut]
-
-
-class CheckInfoOut(BaseModel):
-    name: str
-    label: str
-    kind: Literal["limit", "advice"]
-    description: str
-    formula: str = Field(description="demand = ...; capacity = ... (or: passes when ...).")
-    source: str
-    sources: list[str] = Field(description="Catalog fields the check reads.")
-    unit: str = Field(description="API unit of the check's value and limit.")
-
-
-class ChecksOut(BaseModel):
-    checks: list[CheckInfoOut]
-
-
-class HealthOut(BaseModel):
-    status: Literal["ok"]
-    version: str
-    catalog_version: str
-    candidates: int
-
-
-class ErrorDetail(BaseModel):
-    field: str
-    message: str
-
-
-class ErrorOut(BaseModel):
-    error: str
-    detail: list[ErrorDetail]

@@ -14,15 +14,9 @@ from typing import Any, cast
 
 from app.catalog import Material, Series
 from app.contract.fields import FIELDS
-from app.contract.schemas import (
-    CandidateOut,
-    ChangeOut,
-    CountsOut,
-    CustomScrewIn,
-    MaterialIn,
-    RemedyOut,
-    SummaryOut,
-)
+from app.contract.outputs import ChangeOut, CountsOut, RemedyOut, SummaryOut
+from app.contract.schemas import CandidateOut
+from app.contract.screws import CustomScrewIn, MaterialIn
 from app.contract.source import Writer
 from app.contract.units import DEFAULT_UNITS, api_to_si, render
 from app.core.formulas import torque

@@ -7,17 +7,9 @@ from urllib.parse import quote
 from app.catalog import Catalog
 from app.contract.fields import FIELDS
 from app.contract.form import share_query
-from app.contract.schemas import (
-    ApplicationIn,
-    CandidateOut,
-    CatalogScrewIn,
-    CompareOut,
-    CustomScrewIn,
-    EvaluateOut,
-    FormulaOut,
-    PageSelectionOut,
-    SelectOut,
-)
+from app.contract.outputs import CompareOut, EvaluateOut, FormulaOut, PageSelectionOut, SelectOut
+from app.contract.schemas import ApplicationIn, CandidateOut
+from app.contract.screws import CatalogScrewIn, CustomScrewIn
 from app.contract.units import DEFAULT_UNITS
 from app.core.evaluate import evaluate
 from app.core.robustness import build_variants

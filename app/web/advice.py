@@ -16,7 +16,8 @@ from typing import Any
 
 from app.contract.fields import BY_API
 from app.contract.form import page_value, share_query
-from app.contract.schemas import ApplicationIn, CandidateOut, PageSelectionOut, SelectOut
+from app.contract.outputs import PageSelectionOut, SelectOut
+from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.units import sig
 from app.core.checks import BY_NAME
 from app.core.remedy import MARGIN

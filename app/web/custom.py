@@ -12,7 +12,9 @@ from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
 from app.contract.form import entered_units, parse_inputs, share_query
 from app.contract.form import summary_rows as input_rows
-from app.contract.schemas import ApplicationIn, CustomScrewIn, EvaluateOut
+from app.contract.outputs import EvaluateOut
+from app.contract.schemas import ApplicationIn
+from app.contract.screws import CustomScrewIn
 from app.contract.units import Display, api_value
 from app.report.service import run_evaluation
 from app.server.deps import CatalogDep

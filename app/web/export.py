@@ -7,7 +7,8 @@ from typing import Any
 
 from app.contract.fields import FIELDS, InputField
 from app.contract.form import curve_text
-from app.contract.schemas import CandidateOut, SelectOut
+from app.contract.outputs import SelectOut
+from app.contract.schemas import CandidateOut
 from app.contract.units import Display, Quantity
 from app.core.checks import REGISTRY
 

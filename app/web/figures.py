@@ -9,7 +9,8 @@ from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 from app.catalog import Catalog
-from app.contract.schemas import CandidateOut, PageSelectionOut, SelectOut
+from app.contract.outputs import PageSelectionOut, SelectOut
+from app.contract.schemas import CandidateOut
 from app.contract.units import Display, api_value, si_to_api, sig
 from app.core.formulas import critical_speed, pv
 from app.core.index import size_of

@@ -23,7 +23,8 @@ from app.contract.form import (
     summary_rows,
 )
 from app.contract.pairs import PairRankIn
-from app.contract.schemas import ApplicationIn, CandidateOut, CatalogScrewIn
+from app.contract.schemas import ApplicationIn, CandidateOut
+from app.contract.screws import CatalogScrewIn
 from app.contract.units import TORQUE_LABELS, Display
 from app.report.pairs import run_pairs
 from app.report.service import (

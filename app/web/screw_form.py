@@ -27,7 +27,7 @@ from app.contract.form import (
     read_exact,
     unit_key,
 )
-from app.contract.schemas import CustomScrewIn, MaterialIn
+from app.contract.screws import CustomScrewIn, MaterialIn
 from app.contract.units import (
     API_UNIT_QUANTITY,
     DEFAULT_UNITS,

@@ -20,7 +20,7 @@ from pydantic import BaseModel
 from app.catalog import Catalog, load_catalog
 from app.contract.fields import BY_API, FIELDS
 from app.contract.inputs import describe
-from app.contract.schemas import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
+from app.contract.outputs import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 
 API = "/api/v1"
 #: The select response in its full form (every number, message and formula).

@@ -7,7 +7,7 @@ import pytest
 from fastapi.testclient import TestClient
 from pydantic import BaseModel
 
-from app.contract.schemas import EvaluateOut, SelectOut, SelectSummaryOut
+from app.contract.outputs import EvaluateOut, SelectOut, SelectSummaryOut
 
 BASE: dict[str, Any] = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500}
 APPLICATIONS: dict[str, dict[str, Any]] = {

@@ -10,7 +10,7 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.testclient import TestClient
 
 from app.api.query import parse_query, query_parameters
-from app.contract.schemas import SelectQuery
+from app.contract.outputs import SelectQuery
 from app.web.errors import validation_error_handler
 
 BASE = "load_n=100&speed_mm_s=50&length_mm=500"

@@ -5,7 +5,8 @@ import pytest
 from fastapi.testclient import TestClient
 from pydantic import BaseModel
 
-from app.contract.schemas import CandidateOut, CheckOut, SelectOut, TorqueOut
+from app.contract.outputs import SelectOut
+from app.contract.schemas import CandidateOut, CheckOut, TorqueOut
 from app.main import create_app
 from app.report.construct import construct, from_fields
 

@@ -8,7 +8,7 @@ redirect built from the Host header would send a client wherever that header say
 import pytest
 from fastapi.testclient import TestClient
 
-from app.contract.schemas import SelectOut
+from app.contract.outputs import SelectOut
 from app.web.export import results_csv, safe_cell
 from tests.web.test_pages import csv_candidates
 

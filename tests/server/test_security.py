@@ -27,7 +27,8 @@ from fastapi.testclient import TestClient
 
 from app.contract.fields import BY_PAGE
 from app.contract.form import ENTERED_PREFIX, UNIT_CHOICES
-from app.contract.schemas import ApplicationIn, CustomScrewIn
+from app.contract.schemas import ApplicationIn
+from app.contract.screws import CustomScrewIn
 from app.main import create_app
 from app.server.settings import Settings
 from deploy.local import free_port

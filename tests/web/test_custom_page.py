@@ -10,7 +10,7 @@ from fastapi.testclient import TestClient
 
 from app.catalog import Catalog
 from app.contract.fields import FIELDS
-from app.contract.schemas import CustomScrewIn, MaterialIn
+from app.contract.screws import CustomScrewIn, MaterialIn
 from app.web.screw_form import BY_NAME, MATERIAL_FIELDS, SCREW_FIELDS
 
 SCREW = (

@@ -8,7 +8,8 @@ import plotly.graph_objects as go
 import pytest
 
 from app.catalog import Catalog
-from app.contract.schemas import ApplicationIn, SelectOut
+from app.contract.outputs import SelectOut
+from app.contract.schemas import ApplicationIn
 from app.core.formulas.critical_speed import critical_speed_rpm
 from app.report.service import run_selection
 from app.web.figures import TOP, chart_candidates, result_figures

@@ -20,7 +20,7 @@ from httpx import Response
 from app.catalog import Catalog
 from app.contract.fields import BY_API, BY_PAGE
 from app.contract.inputs import ApplicationIn
-from app.contract.schemas import SelectOut
+from app.contract.outputs import SelectOut
 from app.contract.units import DEFAULT_UNITS
 from app.web.advice import proposal
 from app.web.export import results_csv, safe_cell

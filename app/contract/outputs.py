@@ -1,0 +1,223 @@
+"""The API's response models besides the candidate: the selection (counts, summary,
+remedies), compare, evaluate, formulas, catalog series, checks, health and errors.
+"""
+
+from types import GenericAlias
+from typing import Any, Literal, cast
+
+from pydantic import (
+    BaseModel,
+    Field,
+    ValidationInfo,
+    create_model,
+    field_validator,
+)
+
+from app.contract.inputs import ApplicationIn
+from app.contract.schemas import (
+    CandidateOut,
+    CandidateSummaryOut,
+    ProvenanceOut,
+    RejectedSummaryOut,
+)
+
+
+class CountsOut(BaseModel):
+    evaluated: int
+    passed: int
+    rejected: int
+    failed_by_check: dict[str, int]
+
+
+class ChangeOut(BaseModel):
+    inputs: dict[str, float] = Field(description="API input -> value that admits the screw.")
+    admits: str = Field(description="The candidate the change admits.")
+
+
+class RemedyOut(BaseModel):
+    inputs: dict[str, float | str] = Field(
+        description="API input -> value (end_fixity: its choice), 5 % past each limit."
+    )
+    passing: int = Field(description="Candidates that pass with the change made.")
+    utilization: float = Field(
+        description="The lowest governing utilisation among them: at most 1 / 1.05."
+    )
+
+
+class SummaryOut(BaseModel):
+    message: str
+    most_excluding_check: str | None
+    best_rejected_id: str | None
+    input_change: dict[str, float] = Field(
+        description="The inputs at which the nearest candidate's failed checks reach "
+        "their limits exactly; remedies apply a margin."
+    )
+    changes: list[ChangeOut] = Field(
+        description="Feasible input changes, each admitting a near candidate (one click)."
+    )
+    remedies: list[RemedyOut] = Field(
+        default_factory=list,
+        description="When nothing passes: changes (one input or several, or the mounting) "
+        "each verified by selecting again with it made, a candidate then passing with a "
+        "5 % margin on its governing check.",
+    )
+    impossible: str | None = Field(
+        default=None,
+        description="When nothing passes and no remedy is found: why no leadscrew can do it.",
+    )
+
+
+class FormulaOut(BaseModel):
+    formula: str
+    function: str
+    source: str
+
+
+class SelectionBaseOut(BaseModel):
+    """What every form of a selection gives besides its candidates."""
+
+    inputs: ApplicationIn
+    counts: CountsOut
+    summary: SummaryOut
+    catalog_version: str
+    share_url: str
+
+
+class SelectOut(SelectionBaseOut):
+    candidates: list[CandidateOut]
+    rejected: list[CandidateOut]
+    formulas: dict[str, FormulaOut] = Field(
+        description="Quantity (dotted path in a candidate) -> formula, core function, source."
+    )
+
+
+class PageSelectionOut(SelectionBaseOut):
+    """The results page's selection: the passing candidates as table rows (the ``row``
+    view); the rejected in full only when nothing passes (the charts and the advice are
+    then about them)."""
+
+    candidates: list[CandidateOut]
+    rejected: list[CandidateOut]
+
+
+class FormulasOut(BaseModel):
+    formulas: dict[str, FormulaOut] = Field(
+        description="Quantity (dotted path in a candidate) -> formula, core function, source."
+    )
+
+
+class SelectQuery(ApplicationIn):
+    """The GET select's query: the application's fields and the response's form."""
+
+    detail: Literal["summary", "full"] = Field(
+        "summary",
+        description="summary (default): passing candidates as the results table shows "
+        "them, rejected ones as their failed checks with utilisation and fix, formulas at "
+        "/api/v1/formulas (SelectSummaryOut); full: every number, check message, formula "
+        "and provenance of every candidate, and the formulas table (SelectOut).",
+    )
+
+    @field_validator("*")
+    @classmethod
+    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
+        """The application's fields as ``ApplicationIn`` checks them; ``detail`` as it is."""
+        if info.field_name == "detail":
+            return value
+        return super()._needs(value, info)
+
+    def application(self) -> ApplicationIn:
+        """The application's fields alone, as the body of a POST would give them."""
+        values = {name: getattr(self, name) for name in ApplicationIn.model_fields}
+        return ApplicationIn.model_construct(self.model_fields_set - {"detail"}, **values)
+
+
+#: The compact select's ``detail``.
+SummaryDetail = Literal["summary"]
+#: The default select response (``detail=full`` gives ``SelectOut``): the passing
+#: candidates in the ``summary`` view, the rejected in the ``rejected`` view.
+SelectSummaryOut = create_model(
+    "SelectSummaryOut",
+    __doc__="The default select response; ``detail=full`` gives ``SelectOut``.",
+    detail=(SummaryDetail, ...),
+    inputs=(ApplicationIn, ...),
+    candidates=(cast(Any, GenericAlias(list, (CandidateSummaryOut,))), ...),
+    rejected=(cast(Any, GenericAlias(list, (RejectedSummaryOut,))), ...),
+    counts=(CountsOut, ...),
+    summary=(SummaryOut, ...),
+    catalog_version=(str, ...),
+    share_url=(str, ...),
+    formulas_url=(
+        str,
+        Field(description="The formulas table (GET), the same for every query."),
+    ),
+)
+
+
+class CompareOut(BaseModel):
+    """2 to 4 catalog screws side by side for one application, each in full."""
+
+    inputs: ApplicationIn
+    candidates: list[CandidateOut]
+    catalog_version: str
+    share_url: str = Field(description="The compare page of the same inputs and ids.")
+
+
+class EvaluateOut(BaseModel):
+    inputs: ApplicationIn
+    candidate: CandidateOut
+    catalog_version: str
+    formulas: dict[str, FormulaOut]
+
+
+class SourcedOut(BaseModel):
+    value: Any
+    unit: str
+    provenance: ProvenanceOut
+
+
+class SeriesOut(BaseModel):
+    id: str
+    name: str
+    family: str
+    family_name: str
+    type: str
+    file: str
+    fields: dict[str, SourcedOut]
+    candidate_ids: list[str]
+
+
+class SeriesListOut(BaseModel):
+    catalog_version: str
+    series: list[SeriesOut]
+
+
+class CheckInfoOut(BaseModel):
+    name: str
+    label: str
+    kind: Literal["limit", "advice"]
+    description: str
+    formula: str = Field(description="demand = ...; capacity = ... (or: passes when ...).")
+    source: str
+    sources: list[str] = Field(description="Catalog fields the check reads.")
+    unit: str = Field(description="API unit of the check's value and limit.")
+
+
+class ChecksOut(BaseModel):
+    checks: list[CheckInfoOut]
+
+
+class HealthOut(BaseModel):
+    status: Literal["ok"]
+    version: str
+    catalog_version: str
+    candidates: int
+
+
+class ErrorDetail(BaseModel):
+    field: str
+    message: str
+
+
+class ErrorOut(BaseModel):
+    error: str
+    detail: list[ErrorDetail]

@@ -1,0 +1,126 @@
+"""The screw inputs of the API and the /custom page: a catalog screw by id, or a screw of
+the user's own with its geometry and material (pydantic v2); the evaluate request.
+"""
+
+import math
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Discriminator,
+    Field,
+    Tag,
+    ValidationInfo,
+    field_validator,
+)
+
+from app.contract.inputs import ApplicationIn, NotBool, bounded_number
+
+
+class MaterialIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    youngs_modulus_pa: Annotated[float, bounded_number(1e6, 1e13, "Young's modulus [Pa]."), NotBool]
+    density_kg_m3: Annotated[float, bounded_number(1.0, 1e5, "Density [kg/m^3]."), NotBool]
+    yield_strength_pa: (
+        Annotated[
+            float,
+            bounded_number(1e6, 1e10, "Yield strength [Pa]; without it, Euler buckling only."),
+            NotBool,
+        ]
+        | None
+    ) = None
+
+
+class CatalogScrewIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    catalog_id: str = Field(max_length=100, description="A screw id from /api/v1/select.")
+
+
+class CustomScrewIn(BaseModel):
+    """A screw that is not in the catalog. Diameters and lead in mm."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    outer_diameter_mm: Annotated[
+        float, bounded_number(0.1, 1000.0, "Outer diameter [mm]."), NotBool
+    ]
+    root_diameter_mm: Annotated[
+        float, bounded_number(0.05, 1000.0, "Root (minor) diameter [mm], below the outer."), NotBool
+    ]
+    lead_mm: Annotated[float, bounded_number(0.01, 1000.0, "Lead [mm]."), NotBool]
+    thread_half_angle_deg: Annotated[
+        float,
+        bounded_number(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal."),
+        NotBool,
+    ] = 14.5
+    friction_dynamic: Annotated[
+        float, bounded_number(1e-3, 1.0, "Running friction coefficient."), NotBool
+    ]
+    friction_static: Annotated[
+        float, bounded_number(1e-3, 1.0, "Static friction coefficient."), NotBool
+    ]
+    material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
+    drag_torque_nm: Annotated[
+        float, bounded_number(0.0, 1e4, "Nut drag torque [N m]."), NotBool
+    ] = 0.0
+    inertia_kg_m2_per_m: (
+        Annotated[
+            float,
+            bounded_number(
+                1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."
+            ),
+            NotBool,
+        ]
+        | None
+    ) = None
+    pv_limit_mpa_m_s: (
+        Annotated[float, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s]."), NotBool] | None
+    ) = None
+
+    @field_validator("root_diameter_mm")
+    @classmethod
+    def _root_below_outer(cls, value: float, info: ValidationInfo) -> float:
+        outer = info.data.get("outer_diameter_mm")
+        if outer is not None and value >= outer:
+            raise ValueError("must be smaller than outer_diameter_mm")
+        return value
+
+    @field_validator("friction_dynamic", "friction_static")
+    @classmethod
+    def _thread_drivable(cls, value: float, info: ValidationInfo) -> float:
+        """A sliding thread can be driven only while mu tan(lambda) < cos(a_n) (Shigley)."""
+        names = ("outer_diameter_mm", "root_diameter_mm", "lead_mm", "thread_half_angle_deg")
+        if any(info.data.get(name) is None for name in names):
+            return value  # an earlier field is invalid and already reported
+        outer, root, lead, half_angle = (float(info.data[name]) for name in names)
+        tan_lead = lead / (math.pi * (outer + root) / 2)
+        limit = 0.99 * math.cos(math.radians(half_angle)) / tan_lead
+        if value >= limit:
+            raise ValueError(
+                f"with this lead ({math.degrees(math.atan(tan_lead)):.1f} deg lead angle) the "
+                f"thread cannot be driven at friction {value:g}: it must be below {limit:.3g}"
+            )
+        return value
+
+
+def _screw_kind(data: Any) -> str:
+    has_id = isinstance(data, dict) and "catalog_id" in data
+    return "catalog" if has_id or isinstance(data, CatalogScrewIn) else "custom"
+
+
+ScrewIn = Annotated[
+    Annotated[CatalogScrewIn, Tag("catalog")] | Annotated[CustomScrewIn, Tag("custom")],
+    Discriminator(_screw_kind),
+]
+
+
+class EvaluateIn(BaseModel):
+    """One application and one screw: ``{"catalog_id": ...}`` or a custom geometry."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    application: ApplicationIn
+    screw: ScrewIn
