@@ -16,6 +16,7 @@ import re
 from collections.abc import Mapping
 from decimal import Decimal, localcontext
 from fractions import Fraction
+from functools import lru_cache
 from typing import Annotated, Any
 from urllib.parse import urlencode
 
@@ -383,17 +384,25 @@ def _factor(field: InputField, units: Mapping[str, str]) -> Fraction:
     (5/9 for °F), so that its offset cancels: 32 °F reads as 0 °C, not 1e-31."""
     if not field.quantity:
         return Fraction(1)
-    units = {**DEFAULT_UNITS, **units}
-    if exact_offset(field.quantity, units):
-        return exact_factor(field.quantity, units)
-    return Fraction(repr(display_system(units)[field.quantity][1]))
+    return _scale(field.quantity, tuple(sorted({**DEFAULT_UNITS, **units}.items())))[0]
 
 
 def _offset(field: InputField, units: Mapping[str, str]) -> Fraction:
     """The API value at the zero of ``field``'s display unit, exactly: 0 but for °F."""
-    return (
-        exact_offset(field.quantity, {**DEFAULT_UNITS, **units}) if field.quantity else Fraction(0)
-    )
+    if not field.quantity:
+        return Fraction(0)
+    return _scale(field.quantity, tuple(sorted({**DEFAULT_UNITS, **units}.items())))[1]
+
+
+@lru_cache(maxsize=512)
+def _scale(quantity: Quantity, units: tuple[tuple[str, str], ...]) -> tuple[Fraction, Fraction]:
+    """(factor, offset) of ``quantity`` from the display ``units`` to the API's, exactly;
+    a few dozen unit choices, each worked out once (``_factor``, ``_offset``)."""
+    chosen = dict(units)
+    offset = exact_offset(quantity, chosen)
+    if offset:
+        return exact_factor(quantity, chosen), offset
+    return Fraction(repr(display_system(chosen)[quantity][1])), Fraction(0)
 
 
 def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:

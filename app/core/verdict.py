@@ -78,11 +78,20 @@ def value_label(key: str) -> str:
     >>> value_label("friction_static_bronze"), value_label("odd_new_key")
     ('static friction', 'odd new key')
     """
-    base = next((key.removesuffix(v) for v in VARIANT_ENDINGS if key.endswith(v)), key)
-    for name in (base, *(base.removesuffix(u) for u in UNIT_ENDINGS if base.endswith(u))):
-        if name in VALUE_LABELS:
-            return VALUE_LABELS[name]
+    base = key.removesuffix(v) if (v := _ending(key, VARIANT_ENDINGS)) else key
+    if base in VALUE_LABELS:
+        return VALUE_LABELS[base]
+    unit = _ending(base, UNIT_ENDINGS)
+    if unit and (name := base.removesuffix(unit)) in VALUE_LABELS:
+        return VALUE_LABELS[name]
     return base.replace("_", " ")
+
+
+def _ending(key: str, endings: tuple[str, ...]) -> str:
+    """The first of ``endings`` (longest first) that ``key`` ends with, else ""."""
+    if key.endswith(endings):
+        return next(e for e in endings if key.endswith(e))
+    return ""
 
 
 def percent(utilization: float) -> str:
@@ -133,7 +142,8 @@ def rests_on(
     for key in () if governing is None else governing.check.sources:
         p = provenance.get(key)
         if p is not None and p.kind in UNCERTAIN:
-            found[value_label(key)] = Rest(key, value_label(key), p.kind, False)
+            label = value_label(key)
+            found[label] = Rest(key, label, p.kind, False)
     for key in hinges:
         label = value_label(key)
         kind = found[label].kind if label in found else "assumed range"
