@@ -20,6 +20,20 @@ def _json(value: Any, **_: Any) -> str:
     return pydantic_core.to_json(value, inf_nan_mode="null").decode()
 
 
+def figures(value: float) -> str:
+    """A count or life to three significant figures as an engineer writes it: without an
+    exponent from 0.001 to below ten million, thousands grouped.
+
+    >>> figures(2391.7), figures(262.04), figures(0.04567), figures(4.2e8), figures(1.5e-5)
+    ('2,390', '262', '0.0457', '4.2e+08', '1.5e-05')
+    """
+    if not 1e-3 <= abs(value) < 1e7:
+        return f"{value:.3g}"
+    rounded = float(f"{value:.3g}")
+    return f"{rounded:,.0f}" if rounded >= 100 else f"{rounded:.3g}"
+
+
 templates.env.policies["json.dumps_function"] = _json
+templates.env.filters["figures"] = figures
 templates.env.globals["value_label"] = value_label
 templates.env.filters["value_label"] = value_label

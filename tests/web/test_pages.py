@@ -787,8 +787,9 @@ def test_results_columns_say_what_they_mean_in_plain_words(client: TestClient) -
     for body, c in zip(page.select("tbody.candidate"), api["candidates"], strict=True):
         cell = body.select_one("td.backdrive").text
         assert ("Self-locking" in cell) == c["self_locking"]
-        if not c["self_locking"]:
-            assert "brake ≥" in cell
+        if not c["self_locking"]:  # a brake only where there is a load to hold
+            held = c["holding_torque"]["brake_nm"] > 0
+            assert ("brake ≥" in cell) == held and ("no load to hold" in cell) != held
 
 
 def test_moving_mass_follows_the_force_unit(client: TestClient) -> None:
