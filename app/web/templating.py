@@ -1,5 +1,6 @@
 """The Jinja2 environment shared by page routes and error pages."""
 
+import math
 from typing import Any
 
 import pydantic_core
@@ -26,8 +27,10 @@ def figures(value: float) -> str:
 
     >>> figures(2391.7), figures(262.04), figures(0.04567), figures(4.2e8), figures(1.5e-5)
     ('2,390', '262', '0.0457', '4.2e+08', '1.5e-05')
+    >>> figures(0.0), figures(float("inf"))
+    ('0', 'inf')
     """
-    if not 1e-3 <= abs(value) < 1e7:
+    if not math.isfinite(value) or value == 0 or not -3 <= math.floor(math.log10(abs(value))) < 7:
         return f"{value:.3g}"
     rounded = float(f"{value:.3g}")
     return f"{rounded:,.0f}" if rounded >= 100 else f"{rounded:.3g}"
