@@ -1,6 +1,8 @@
 """The motor group and its two charts in Chromium: a pasted curve becomes the share link's
 compact form, and the torque-speed and move-over-time charts are drawn."""
 
+import json
+import urllib.request
 from pathlib import Path
 from typing import Any
 
@@ -57,3 +59,33 @@ def test_a_library_servo_and_then_any_motor_on_the_page(
     assert len(used) == 10 and used == sorted(used)
     page.locator("table.pairs").screenshot(path=str(artifacts / "motor-pairs-1280.png"))
     assert console_errors == []
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+def test_the_table_gives_each_screws_motor_numbers(
+    browser: Any, live_server: str, artifacts: Path, width: int
+) -> None:
+    """With a library motor and a move, each row shows the peak and RMS motor torque and
+    the share of the motor used, the same figures as the API's compact select, at either
+    width (at 390 px each row is a card of labelled values)."""
+    query = "load_n=50&speed_mm_s=50&length_mm=500&lead_mm=10&stroke_mm=200&motor=ss2422-5041"
+    with urllib.request.urlopen(f"{live_server}/api/v1/select?{query}&limit=5") as response:
+        api = json.load(response)["candidates"]
+    context = browser.new_context(viewport={"width": width, "height": 900})
+    page = context.new_page()
+    page.goto(f"{live_server}/?{AXIS}&motor=ss2422-5041&limit=5")
+    page.wait_for_selector("tbody.candidate .motor-use")
+    rows = page.locator("tbody.candidate")
+    assert rows.count() == len(api)
+    for i, c in enumerate(api):
+        row = rows.nth(i)
+        assert row.get_attribute("data-id") == c["id"]
+        peak = float(row.locator(".torque-peak").inner_text())
+        rms = float(row.locator(".torque-rms").inner_text())
+        used = float(row.locator(".motor-use").inner_text().strip(" %"))
+        assert peak == pytest.approx(c["torque"]["peak_motor_nm"], rel=5e-3)
+        assert rms == pytest.approx(c["torque"]["rms_nm"], rel=5e-3)
+        assert used == pytest.approx(100 * c["motor_use"], abs=0.5)
+        assert row.locator(".motor-use").is_visible() and row.locator(".torque-rms").is_visible()
+    page.locator("table.candidates").screenshot(path=str(artifacts / f"motor-table-{width}.png"))
+    context.close()
