@@ -141,8 +141,10 @@ class Quantities(Generic[V]):
     #: years of the duty (NaN: no wear rating, no thrust, or no duty)
     wear_travel_m: V
     wear_life_years: V
-    #: Heat: the thread's friction power, the cycle's mean [W] (at the top speed without
-    #: a stroke), and the nut's steady rise over the ambient [K] (NaN: no heat balance)
+    #: Heat: the cycle's mean speed [m/s] (the top speed without a stroke), the thread's
+    #: friction power at it [W], and the nut's steady rise over the ambient [K] (NaN: no
+    #: heat balance)
+    heat_speed_m_s: V
     friction_power_w: V
     nut_temperature_rise_k: V
     lead_error_m: V
@@ -408,7 +410,11 @@ def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
     fin = heat.fin_conductance(t.root_diameter_m, t.thermal_conductivity_w_m_k, h)
     nut_d = heat.NUT_OUTER_TO_D * t.outer_diameter_m
     rise = heat.temperature_rise(power, fin, _nut_length(app, t), nut_d, h)
-    return {"friction_power_w": power, "nut_temperature_rise_k": rise}
+    return {
+        "heat_speed_m_s": np.full(len(t), mean_speed),
+        "friction_power_w": power,
+        "nut_temperature_rise_k": rise,
+    }
 
 
 def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:

@@ -54,21 +54,22 @@ def construct(model: type[M], **values: Any) -> M:
                 state[name] = factory()
             elif default is not _REQUIRED:
                 state[name] = default
-    instance = model.__new__(model)
-    _set(instance, "__dict__", state)
-    _set(instance, "__pydantic_fields_set__", set(values))
-    _set(instance, "__pydantic_extra__", None)
-    _set(instance, "__pydantic_private__", None)
-    return instance
+    return _instance(model, state, values)
 
 
 def from_fields(model: type[M], values: dict[str, Any]) -> M:
     """``construct`` for ``values`` that give every field of ``model`` in its order (a
     view's reader builds them so): the dict becomes the instance's state as it is."""
     _layout(model)
+    return _instance(model, values, values)
+
+
+def _instance(model: type[M], state: dict[str, Any], given: dict[str, Any]) -> M:
+    """An instance of ``model`` whose state is ``state``, the fields in ``given`` marked
+    as set, as pydantic's own ``model_construct`` leaves it."""
     instance = model.__new__(model)
-    _set(instance, "__dict__", values)
-    _set(instance, "__pydantic_fields_set__", set(values))
+    _set(instance, "__dict__", state)
+    _set(instance, "__pydantic_fields_set__", set(given))
     _set(instance, "__pydantic_extra__", None)
     _set(instance, "__pydantic_private__", None)
     return instance

@@ -30,6 +30,17 @@ def power_state(app: Application) -> str:
     return "with the power off (a brake)"
 
 
+def needed_symbols(app: Application, t: CandidateTable, q: Quantities[Array]) -> dict[str, object]:
+    """The names of the torque a held load needs (``T_hold``'s side of the formula),
+    shared by the holding checks; each adds the torque it judges it against."""
+    return {
+        "locks": q.locks_with_margin.astype(bool),
+        "SF": brake_factor(app),
+        "T_seed": efficiency.holding_torque(q.holding_force_n, t.lead_m, t.efficiency),
+        "T_physics": q.holding_distrusted_nm,
+    }
+
+
 def holding_phrase(
     app: Application, r: Quantities[float], available_nm: float, passed: bool, state: str
 ) -> Phrase:
@@ -78,13 +89,7 @@ class Holding(Check):
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {
-            "locks": q.locks_with_margin.astype(bool),
-            "SF": brake_factor(app),
-            "T_seed": efficiency.holding_torque(q.holding_force_n, t.lead_m, t.efficiency),
-            "T_physics": q.holding_distrusted_nm,
-            "T_brake": np.float64(app.brake_torque_nm or 0.0),
-        }
+        return {**needed_symbols(app, t, q), "T_brake": np.float64(app.brake_torque_nm or 0.0)}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if r.locks_with_margin:

@@ -63,13 +63,13 @@ class NutHeat(Check):
     ) -> Mapping[str, object]:
         return {
             "F": q.force_n,
-            "v": q.friction_power_w / q.force_n / (1.0 / t.efficiency - 1.0),
+            "v": q.heat_speed_m_s,
             "eta": t.efficiency,
             "h": heat.FREE_CONVECTION_W_M2_K,
             "d_3": t.root_diameter_m,
             "k": t.thermal_conductivity_w_m_k,
             "D_nut": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
-            "L_nut": t.nut_length_m,
+            "L_nut": q.nut_length_m,
             "T_max": t.temperature_max_c,
             "T_ambient": app.ambient_c,
         }

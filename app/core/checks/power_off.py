@@ -15,10 +15,8 @@ from app.core.checks.base import (
     everywhere,
     same,
 )
-from app.core.checks.holding import brake_or_lead, holding_phrase
-from app.core.formulas import efficiency
+from app.core.checks.holding import brake_or_lead, holding_phrase, needed_symbols
 from app.core.phrase import Phrase
-from app.core.quantities import brake_factor
 
 
 class HoldingPowerOff(Check):
@@ -52,13 +50,7 @@ class HoldingPowerOff(Check):
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {
-            "locks": q.locks_with_margin.astype(bool),
-            "SF": brake_factor(app),
-            "T_seed": efficiency.holding_torque(q.holding_force_n, t.lead_m, t.efficiency),
-            "T_physics": q.holding_distrusted_nm,
-            "T_detent": app.detent_torque_nm,
-        }
+        return {**needed_symbols(app, t, q), "T_detent": app.detent_torque_nm}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if r.locks_with_margin:

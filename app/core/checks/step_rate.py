@@ -19,7 +19,9 @@ from app.core.formulas import geometry, stepping
 from app.core.phrase import Amount, Phrase
 
 
-def _steps_per_rev(app: Application) -> float:
+def steps_per_rev(app: Application) -> float:
+    """Step pulses per screw turn for the axis's motor and controller (0 without a step
+    angle), for the step checks' sentences."""
     return stepping.steps_per_rev(app.step_angle_deg or 0.0, app.microsteps)
 
 
@@ -57,7 +59,7 @@ class StepRate(Check):
             "{steps} steps per turn at {rpm} need a step rate of {rate}, " + verb + " the "
             "controller's {limit}.",
             {
-                "steps": f"{_steps_per_rev(app):g}",
+                "steps": f"{steps_per_rev(app):g}",
                 "rpm": Amount(r.peak_rpm, "rpm"),
                 "rate": Amount(r.step_rate_hz, "frequency"),
                 "limit": Amount(app.max_step_rate_hz or 0.0, "frequency"),
@@ -66,7 +68,7 @@ class StepRate(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         limit = app.max_step_rate_hz or 0.0
-        rpm = limit / _steps_per_rev(app) * stepping.SECONDS_PER_MINUTE
+        rpm = limit / steps_per_rev(app) * stepping.SECONDS_PER_MINUTE
         return Phrase(
             "At a step rate of {limit} the screw may turn {rpm} ({speed} on this lead): "
             "fewer microsteps, a longer lead or a lower speed." + MARGIN_NOTE,

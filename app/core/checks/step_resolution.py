@@ -13,7 +13,7 @@ from app.core.checks.base import (
     everywhere,
     same,
 )
-from app.core.formulas import stepping
+from app.core.checks.step_rate import steps_per_rev
 from app.core.phrase import Amount, Phrase
 
 
@@ -46,7 +46,7 @@ class StepResolution(Check):
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        per_rev = stepping.steps_per_rev(app.step_angle_deg or 0.0, app.microsteps)
+        per_rev = steps_per_rev(app)
         verb = "is within" if passed else "exceeds"
         return Phrase(
             "{per_rev} steps per turn of the {lead} lead: one step moves {delta}, which "
