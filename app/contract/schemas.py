@@ -60,7 +60,8 @@ class CheckOut(BaseModel):
     )
     unit: Annotated[str, From(via=check_unit)]
     utilization: Annotated[float | None, From("utilization")] = Field(
-        description="value / limit; above 1 fails."
+        description="value / limit; above 1 fails. Null for yes/no checks, and where a "
+        "demand meets a limit of 0 (no capacity at all: unbounded, it fails)."
     )
     message: Annotated[str, From("message")]
     formula: Annotated[str, From("formula")]

@@ -105,6 +105,12 @@ class Application:
     nut_length_m: float | None = None
     lubrication: Lubrication = "dry"
 
+    @property
+    def oil_reaches_nut(self) -> bool:
+        """Oil or grease meets the screw and nut: oil is present around the axis, or the
+        nut is lubricated (greased or oiled)."""
+        return self.oil_present or self.lubrication != "dry"
+
 
 @dataclass(frozen=True, slots=True)
 class ScrewSpec:

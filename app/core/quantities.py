@@ -116,9 +116,8 @@ class Quantities(Generic[V]):
     surface_speed_m_s: V
     contact_area_m2: V
     pv_max_load_n: V
-    #: The nut's steady temperature [C] and its permissible PV [Pa m/s]: the rating times
-    #: the temperature and lubrication factors (``formulas.pv_derating``)
-    nut_temperature_c: V
+    #: The nut's permissible PV [Pa m/s]: the rating times the temperature (at the
+    #: ambient) and lubrication factors (``formulas.pv_derating``)
     pv_temperature_factor: V
     pv_lubrication_factor: V
     pv_limit_pa_m_s: V
@@ -127,6 +126,8 @@ class Quantities(Generic[V]):
     #: their sliding speed (the helix at d2; NaN without d2), the contact pressure the nut
     #: material allows there and the load that pressure carries over the engaged flank
     #: area (NaN: the nut gives no rating).
+    #: the flanks' permissible PV: the nut material's, derated as ``pv_limit_pa_m_s``
+    nut_pv_limit_pa_m_s: V
     flank_area_m2: V
     sliding_speed_m_s: V
     nut_allowed_pressure_pa: V
@@ -143,10 +144,11 @@ class Quantities(Generic[V]):
     wear_life_years: V
     #: Heat: the cycle's mean speed [m/s] (the top speed without a stroke), the thread's
     #: friction power at it [W], and the nut's steady rise over the ambient [K] (NaN: no
-    #: heat balance)
+    #: heat balance), and its steady temperature, the ambient plus that rise [C]
     heat_speed_m_s: V
     friction_power_w: V
     nut_temperature_rise_k: V
+    nut_temperature_c: V
     lead_error_m: V
     thermal_growth_m: V
     holding_seed_nm: V
@@ -289,21 +291,25 @@ def _finite(values: Array) -> Array:
     return np.where(np.isfinite(values), values, np.nan)
 
 
-def _pv_limit(app: Application, t: CandidateTable, rise_k: Array) -> dict[str, Any]:
-    """The nut's permissible PV at its steady temperature (ambient plus the heat
-    balance's rise; the ambient where the balance has no nut length to work with, and
-    ``nut_temperature_c`` NaN there) and lubrication: the rating times the temperature
-    factor (``pv_derating.temperature_factor``, as arrays; 1 where the material's
-    highest temperature is unknown) times the lubrication factor."""
-    nut_c = app.ambient_c + rise_k
-    judged_c = np.where(np.isnan(nut_c), app.ambient_c, nut_c)
+def _pv_limit(app: Application, t: CandidateTable) -> dict[str, Any]:
+    """The nut's permissible PV at the ambient and its lubrication: the rating times the
+    temperature factor (``pv_derating.temperature_factor`` at the ambient, as arrays; 1
+    where the material's highest temperature is unknown) times the lubrication factor.
+
+    A PV rating is the PV whose own friction heat brings the nut to its highest
+    temperature from the rating's room [pv_derating 1, 2]: it already holds the nut's rise,
+    so only the ambient above the room derates it (the rise itself is the nut heat
+    check's, with the duty)."""
     span = t.temperature_max_c - pv_derating.REFERENCE_C
     with np.errstate(invalid="ignore", divide="ignore"):
-        share = np.clip((t.temperature_max_c - judged_c) / span, 0.0, 1.0)
-    temperature = np.where(np.isfinite(share) & (span > 0), share, 1.0)
+        share = np.clip((t.temperature_max_c - app.ambient_c) / span, 0.0, 1.0)
+    temperature = np.where(
+        app.ambient_c <= pv_derating.REFERENCE_C,
+        1.0,
+        np.where(np.isfinite(share) & (span > 0), share, 1.0),
+    )
     lubrication = pv_derating.LUBRICATION_FACTORS[app.lubrication][0]
     return {
-        "nut_temperature_c": nut_c,
         "pv_temperature_factor": temperature,
         "pv_lubrication_factor": np.full(len(t), lubrication),
         "pv_limit_pa_m_s": t.pv_limit_pa_m_s * temperature * lubrication,
@@ -357,16 +363,19 @@ def _flank_area(app: Application, t: CandidateTable) -> Array:
     return np.asarray(area, dtype=np.float64)
 
 
-def _flanks(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
+def _flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> dict[str, Any]:
     """The engaged flanks of the nut: sliding speed n / 60 times the helix of one turn at
     d2, the pressure the nut material allows at it (the lowest of its table value, p_max
-    and PV_lim / v) and that pressure over the engaged flank area."""
+    and PV_lim / v, the PV limit derated by ``derate``, the temperature and lubrication
+    factors of ``_pv_limit``) and that pressure over the engaged flank area."""
     speed = pv.surface_speed(rpm, t.flank_helix_travel_m)
+    pv_limit = t.nut_pv_limit_pa_m_s * derate
     allowed = bearing.allowable_pressure(
-        _table_pressures(t, speed), t.max_pressure_pa, t.nut_pv_limit_pa_m_s, speed
+        _table_pressures(t, speed), t.max_pressure_pa, pv_limit, speed
     )
     area = _flank_area(app, t)
     return {
+        "nut_pv_limit_pa_m_s": pv_limit,
         "flank_area_m2": area,
         "sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
@@ -414,6 +423,7 @@ def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
         "heat_speed_m_s": np.full(len(t), mean_speed),
         "friction_power_w": power,
         "nut_temperature_rise_k": rise,
+        "nut_temperature_c": app.ambient_c + rise,
     }
 
 
@@ -494,10 +504,14 @@ def _values(
         "rpm": rpm,
         **torques,
         **_column_limits(app, t, peak_n),
-        **(heated := _heat(app, t, force_n)),
-        **(limits := _pv_limit(app, t, heated["nut_temperature_rise_k"])),
+        **_heat(app, t, force_n),
+        **(limits := _pv_limit(app, t)),
         **_nut(app, t, peak_n, rpm, limits["pv_limit_pa_m_s"]),
-        **(flanks := _flanks(app, t, rpm)),
+        **(
+            flanks := _flanks(
+                app, t, rpm, limits["pv_temperature_factor"] * limits["pv_lubrication_factor"]
+            )
+        ),
         **_duty(app, t),
         **_wear(app, t, force_n, flanks["flank_area_m2"]),
         **(holding := _holding(app, t, motion.steady_load(app))),

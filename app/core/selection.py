@@ -9,6 +9,7 @@ from functools import partial
 import numpy as np
 
 from app.core.checks import BY_NAME
+from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
 from app.core.model import Application, Change, Remedy, ScrewSpec, Summary
 from app.core.phrase import Amount, Phrase, Quantity, join
@@ -56,12 +57,24 @@ def shown_rms(s: Screening) -> np.ndarray:
     return np.where(np.isnan(q.motor_rms_nm), shown_torque(s), q.motor_rms_nm)
 
 
+def shown_life_min(s: Screening, pos: np.ndarray) -> np.ndarray:
+    """The low end of the life band the results show for the candidates at ``pos``, as
+    nut travel [m]: the seed's rated life, else the nut's wear life at the high end of its
+    wear rate's range (``Life.travel_m``); NaN where neither is given."""
+    t = s.table
+    share = np.array([life_band(t.screws[i])[0] for i in pos], dtype=np.float64)
+    wear = s.quantities.wear_travel_m[pos] * share
+    rated = t.life_min_m[pos]
+    return np.where(np.isnan(rated), wear, rated)
+
+
 def _rank_order(app: Application, s: Screening) -> np.ndarray:
     """Positions of passing candidates (in ``s``) in rank order, stable.
 
     torque: lowest torque shown (``shown_torque``: the peak motor torque under a move);
     rms: lowest RMS motor torque (``shown_rms``); margin: lowest worst utilisation; life:
-    longest rated life (unrated last); size: smallest outer diameter; motor_margin: the
+    longest life at the low end of the band shown (``shown_life_min``: rated or wear;
+    neither last); size: smallest outer diameter; motor_margin: the
     smallest share of the motor used (``motor_use``). Ties: lower shown torque.
     Candidates with a warning (failed advice) come after those without, whatever the
     policy ("reject" rejects them).
@@ -72,7 +85,7 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
         "torque": torque,
         "rms": shown_rms(s)[pos] if app.rank_by == "rms" else torque,
         "margin": util,
-        "life": -np.nan_to_num(s.table.life_min_m[pos]),
+        "life": -np.nan_to_num(shown_life_min(s, pos)) if app.rank_by == "life" else torque,
         "size": s.table.outer_diameter_m[pos],
         "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]

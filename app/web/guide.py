@@ -130,8 +130,9 @@ RANKING = {
     "without a move, as the lowest torque. Equal torques: the lower peak torque first.",
     "margin": "the screw furthest from every limit first (lowest worst utilisation); "
     "equal margins: the lower torque first.",
-    "life": "longest rated life first, screws without a life rating last; equal lives: "
-    "the lower torque first.",
+    "life": "longest life first, by the low end of the band shown: the seed's rated "
+    "life, else the nut's wear life (Archard, at the high end of its wear rate); screws "
+    "with neither last; equal lives: the lower torque first.",
     "size": "smallest outer diameter first; equal sizes: the lower torque first.",
     "motor_margin": "the smallest share of the motor used first (its torque, curve, "
     "continuous rating and top speed); without a motor, the lower torque first.",

@@ -224,8 +224,11 @@ def assert_candidate(candidate: dict[str, Any]) -> None:
             where = f"{name}.checks[{check['name']}].{field}"
             assert_type(check[field], kind, where, field in NULLABLE)
         if check["value"] is not None and check["limit"] is not None:
-            # only yes/no checks go without a utilization; a null here hides a non-finite one
-            assert check["utilization"] is not None, f"{name}: {check}"
+            # only yes/no checks go without a utilization, and a demand on a limit of 0
+            # (unbounded: it fails); any other null hides a non-finite one
+            unbounded = check["limit"] == 0 and check["value"] > 0
+            assert check["utilization"] is not None or unbounded, f"{name}: {check}"
+            assert not unbounded or not check["passed"], f"{name}: {check}"
     names = [c["name"] for c in candidate["checks"]]
     assert len(names) == len(set(names)), names
     assert "governing_check" in candidate
@@ -237,12 +240,11 @@ def max_utilization(candidate: dict[str, Any]) -> float:
     return max(c["utilization"] for c in candidate["checks"] if c["utilization"] is not None)
 
 
-def rated_life(candidate: dict[str, Any]) -> float:
-    """Low end of the rated travel life [million cm]; unrated series (no life, or a wear
-    life) count as 0."""
+def shown_life(candidate: dict[str, Any]) -> float:
+    """Low end of the life band shown [million cm], rated or wear; a nut with neither
+    counts as 0."""
     life = candidate["life"]
-    rated = life is not None and life["model"] == "rated"
-    return float(life["travel_million_cm"][0]) if rated else 0.0
+    return 0.0 if life is None else float(life["travel_million_cm"][0])
 
 
 _selections: dict[str, Any] = {}
@@ -551,7 +553,7 @@ RANKINGS = {
     # rank_by: (sort key of a passing candidate, descending?)
     "torque": (lambda c: c["torque"]["total_nm"], False),
     "margin": (max_utilization, False),
-    "life": (rated_life, True),
+    "life": (shown_life, True),
     "size": (lambda c: c["outer_diameter_mm"], False),
 }
 

@@ -81,6 +81,19 @@ def test_tfe_and_oil(catalog: Catalog, screw_id: str, oil: bool, passed: bool) -
     assert c.passed is passed
 
 
+@pytest.mark.parametrize("lubrication", ["greased", "oiled"])
+def test_a_lubricated_nut_fails_a_dry_film_coating(catalog: Catalog, lubrication: str) -> None:
+    """Seed, "TFE Coating": no additional lubrication. Greasing or oiling the nut brings
+    the lubricant to the coating as surely as oil around the axis does; dry passes."""
+    screw = catalog.by_id["ZBX8000-L10-TFE"]
+    c = check(evaluate(light_app(lubrication=lubrication), screw), "coating_environment")
+    assert not c.passed
+    assert lubrication in render(c.message)
+    assert c.fix is not None and "dry" in render(c.fix)
+    dry = check(evaluate(light_app(lubrication="dry"), screw), "coating_environment")
+    assert dry.passed
+
+
 def test_uncoated_screw_has_no_oil_check(zbx8000_l10: ScrewSpec) -> None:
     assert "coating_environment" not in names(evaluate(light_app(oil_present=True), zbx8000_l10))
 

@@ -59,7 +59,7 @@ def fixed_utilizations(
             result = next(c for c in evaluate(app, screw).checks if c.name == name)
             assert result.fix is not None
             amount = result.fix.values.get(key)
-            if amount is None and name == "pv" and not result.capacity:
+            if amount is None and name in ("pv", "bearing_pressure") and not result.capacity:
                 # derated to nothing at the nut's temperature: no figure to offer
                 assert "no PV left" in render(result.fix)
                 continue

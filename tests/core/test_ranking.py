@@ -2,6 +2,8 @@
 scalar evaluations by the documented key, for every ranking criterion. (Agreement of the
 screen with ``evaluate`` candidate by candidate: test_selection.py.)"""
 
+import math
+
 import pytest
 
 from app.catalog import Catalog
@@ -25,9 +27,10 @@ def test_select_equals_evaluating_everything(catalog: Catalog, rank_by: str) -> 
     key = {
         "torque": lambda e: (e.torque.total_nm, e.max_utilization),
         "margin": lambda e: (e.max_utilization, e.torque.total_nm),
-        # the seed's rated life; a wear life (model "wear") ranks with the unrated
+        # the low end of the life band shown: the seed's rated life, else the wear life;
+        # a nut with neither ranks last
         "life": lambda e: (
-            -(e.life.travel_min_m if e.life and e.life.model == "rated" else 0.0),
+            -(e.life.travel_min_m if e.life and math.isfinite(e.life.travel_min_m) else 0.0),
             e.torque.total_nm,
         ),
         "size": lambda e: (e.screw.outer_diameter_m, e.torque.total_nm),

@@ -16,6 +16,7 @@ from app.core.checks.base import (
     load_input,
     where_given,
 )
+from app.core.checks.pv import no_pv_left
 from app.core.phrase import Amount, Phrase
 
 
@@ -26,13 +27,15 @@ class BearingPressure(Check):
         "The peak thrust (load and m a) spread over the engaged flanks of the nut (nut "
         "length over pitch turns of pi d2 H1 each) against the contact pressure the nut "
         "material allows at the sliding speed: a bronze nut by its pressure-speed "
-        "table, a polymer nut by its maximum pressure and its PV limit."
+        "table, a polymer nut by its maximum pressure and its PV limit, derated to the "
+        "ambient and raised for its lubrication as in the PV check."
     )
     quantity = "force"
     formula = "F = F_peak; F_allow = p_nut_v * L_nut / P * pi * d_2 * H_1"
     source = (
         "Shigley, power-screw bearing stress over the engaged turns; Shigley Table 8-4 "
-        "(after Rothbart) for bronze; the nut material's p_max and PV (catalog)"
+        "(after Rothbart) for bronze; the nut material's p_max and PV (catalog), the PV "
+        "derated with the nut temperature and lubrication (formulas.pv_derating)"
     )
     sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length", "pitch")
     capacity_sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length")
@@ -50,6 +53,11 @@ class BearingPressure(Check):
             "P": t.pitch_m,
             "d_2": t.flank_pitch_diameter_m,
             "H_1": t.flank_height_m,
+            "v": q.sliding_speed_m_s,
+            "p_max": t.max_pressure_pa,
+            "PV_nut": t.nut_pv_limit_pa_m_s,
+            "f_T": q.pv_temperature_factor,
+            "f_lub": q.pv_lubrication_factor,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
@@ -59,7 +67,7 @@ class BearingPressure(Check):
             "cap": Amount(r.nut_allowed_load_n, "force"),
             "v": Amount(r.sliding_speed_m_s, "speed"),
             "p": Amount(r.nut_allowed_pressure_pa, "pressure"),
-            "why": _slower(s, r),
+            "why": _slower(app, s, r),
         }
         return Phrase(
             "The peak thrust {f} " + verb + " the load {cap} that the nut's engaged "
@@ -68,6 +76,8 @@ class BearingPressure(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        if not r.nut_allowed_load_n > 0 and r.pv_temperature_factor == 0.0:
+            return no_pv_left(app, r)
         return Phrase(
             "At this speed the load may be at most {cap}; a longer nut, a larger size or a "
             "nut material that allows more pressure carries more." + MARGIN_NOTE,
@@ -77,10 +87,12 @@ class BearingPressure(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
+        if not r.nut_allowed_load_n > 0:
+            return {}
         return load_input(app, r.nut_allowed_load_n)
 
 
-def _slower(s: ScrewSpec, r: Quantities[float]) -> Phrase:
+def _slower(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
     """Why the allowable pressure is below the material's slow-sliding one, when it is:
     the flanks slide faster than its table's first row (a larger size, at the same speed
     of turning, slides faster: it may carry less although its flank area is larger), or
@@ -98,8 +110,13 @@ def _slower(s: ScrewSpec, r: Quantities[float]) -> Phrase:
             "turning, so it may carry less although its flanks are larger",
             values,
         )
+    values["pv"] = Amount(r.nut_pv_limit_pa_m_s, "pv")
+    values["f_t"] = f"{r.pv_temperature_factor:.2f}"
+    values["f_lub"] = f"{r.pv_lubrication_factor:.2f}"
+    values["temp"] = Amount(app.ambient_c, "temperature")
     return Phrase(
-        ", less than its {p0} at slow sliding: its PV limit binds at this speed, and a "
+        ", less than its {p0} at slow sliding: its PV limit {pv} (the rating times {f_t} "
+        "at the ambient {temp} and {f_lub} for its lubrication) binds at this speed, and a "
         "larger size slides faster at the same speed of turning",
         values,
     )

@@ -21,25 +21,37 @@ class OilCompatibility(Check):
     label = "Oil and lubricants"
     description = (
         "Some variants (a dry-film coating) must not be lubricated or run where oil may "
-        "reach them; the family's data says which."
+        "reach them (oil around the axis, or a greased or oiled nut); the family's data "
+        "says which."
     )
-    formula = "passes when oil_compatible or not oil_present"
+    formula = "passes when oil_compatible or not (oil_present or lubricated)"
     source = "the family's rule per variant (catalog data)"
     sources = ("oil_compatible",)
     capacity_sources = ("oil_compatible",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(~t.oil_compatible, flagged=~t.oil_compatible & np.bool_(app.oil_present))
+        return Measure(~t.oil_compatible, flagged=~t.oil_compatible & np.bool_(app.oil_reaches_nut))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"oil_compatible": t.oil_compatible, "oil_present": app.oil_present}
+        return {
+            "oil_compatible": t.oil_compatible,
+            "oil_present": app.oil_present,
+            "lubricated": app.lubrication != "dry",
+        }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if passed:
-            return Phrase("No oil present: this variant may be used.")
+            return Phrase("No oil or grease reaches it: this variant may be used.")
+        if app.lubrication != "dry":
+            return Phrase(
+                "This variant must not be lubricated, and the nut is {lubrication}.",
+                {"lubrication": app.lubrication},
+            )
         return Phrase("This variant must not be used where oil contamination is possible.")
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        if app.lubrication != "dry" and not app.oil_present:
+            return Phrase("Run the nut dry, or use a variant rated for oil (uncoated).")
         return Phrase("Use a variant rated for oil (uncoated).")

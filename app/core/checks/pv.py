@@ -1,7 +1,5 @@
 """PV of the nut (contact pressure times sliding speed) against the nut material's limit."""
 
-import math
-
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -27,14 +25,14 @@ class NutPV(Check):
         "A plastic nut heats and wears with pressure times sliding speed; above its PV "
         "limit it fails early. Judged at the peak thrust (an accelerating segment reaches "
         "the top speed still carrying m a) and the top speed. The limit is the nut's "
-        "rating derated to its steady temperature from the heat balance, times a factor "
-        "for its lubrication."
+        "rating derated to the ambient (the rating holds the nut's own friction heat; the "
+        "nut heat check judges that rise), times a factor for its lubrication."
     )
     quantity = "pv"
     formula = "PV = F_peak / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut * f_T * f_lub"
     source = (
-        "seed catalog, PV Calculation (three threads in contact); PV derated with the nut "
-        "temperature (formulas.pv_derating)"
+        "seed catalog, PV Calculation (three threads in contact); PV derated with the "
+        "ambient temperature (formulas.pv_derating)"
     )
     sources = ("pv_limit", "root_diameter", "outer_diameter")
     capacity_sources = ("pv_limit",)
@@ -57,31 +55,23 @@ class NutPV(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
-        where = (
-            "the ambient {temp} (no heat balance for this nut)"
-            if math.isnan(r.nut_temperature_c)
-            else "the nut's {temp}"
-        )
         return Phrase(
             "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}: its rating "
-            "{rating} times {f_t} at " + where + " and {f_lub} for its lubrication.",
+            "{rating} times {f_t} at the ambient {temp} and {f_lub} for its lubrication "
+            "(the rating already allows for the nut's own friction heat).",
             {
                 "pv": Amount(r.pv_pa_m_s, "pv"),
                 "limit": Amount(r.pv_limit_pa_m_s, "pv"),
                 "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
                 "f_t": f"{r.pv_temperature_factor:.2f}",
-                "temp": Amount(_judged_c(app, r), "temperature"),
+                "temp": Amount(app.ambient_c, "temperature"),
                 "f_lub": f"{r.pv_lubrication_factor:.2f}",
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         if not r.pv_limit_pa_m_s > 0:  # derated to nothing: no load or speed is within it
-            return Phrase(
-                "At {temp} the nut has no PV left (its material's highest temperature): "
-                "choose a nut material rated hotter, or cool or lubricate the nut.",
-                {"temp": Amount(_judged_c(app, r), "temperature")},
-            )
+            return no_pv_left(app, r)
         return Phrase(
             "At this speed the load may be at most {load}; at this load the speed may be at "
             "most {speed}." + MARGIN_NOTE,
@@ -99,7 +89,11 @@ class NutPV(Check):
         return {**load_input(app, r.pv_max_load_n), "speed_m_s": r.pv_max_speed_m_s}
 
 
-def _judged_c(app: Application, r: Quantities[float]) -> float:
-    """The temperature the limit was derated at [C]: the nut's from the heat balance, or
-    the ambient where there is none."""
-    return app.ambient_c if math.isnan(r.nut_temperature_c) else r.nut_temperature_c
+def no_pv_left(app: Application, r: Quantities[float]) -> Phrase:
+    """The fix where the nut's PV is derated to nothing at the ambient: no load or speed
+    is then within it."""
+    return Phrase(
+        "At {temp} around it the nut has no PV left (its material's highest "
+        "temperature): choose a nut material rated hotter, or cool or lubricate the nut.",
+        {"temp": Amount(app.ambient_c, "temperature")},
+    )
