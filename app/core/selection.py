@@ -65,7 +65,7 @@ def shown_life_min(s: Screening, pos: np.ndarray) -> np.ndarray:
     share = np.array([life_band(t.screws[i])[0] for i in pos], dtype=np.float64)
     wear = s.quantities.wear_travel_m[pos] * share
     rated = t.life_min_m[pos]
-    return np.where(np.isnan(rated), wear, rated)
+    return np.asarray(np.where(np.isnan(rated), wear, rated), dtype=np.float64)
 
 
 def _rank_order(app: Application, s: Screening) -> np.ndarray:
