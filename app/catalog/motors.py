@@ -126,6 +126,11 @@ class Motor:
     def step_angle_deg(self) -> float | None:
         return self.value("step_angle_deg") if self.kind == "stepper" else None
 
+    def holding_torque_nm(self) -> float | None:
+        """A stepper's energised holding torque (at its rated current); None for a servo,
+        whose torque at standstill its datasheet does not give as a holding figure."""
+        return self.value("holding_torque_nm") if self.kind == "stepper" else None
+
 
 def _check_servo(entry: Entry, motor: Motor) -> None:
     """The ratings in the order a servo's datasheet implies them."""
@@ -211,19 +216,30 @@ def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
     motor's (raise UnknownMotor for an id ``motors`` lacks)."""
     curve = app.motor_curve or _datasheet_curve(app)
     if app.motor is None or app.motor == ANY_MOTOR:
-        return replace(app, motor_curve=curve)
+        held = energised_holding(app, app.motor_holding_torque_nm)
+        return replace(held, motor_curve=curve)
     motor = motors.get(app.motor)
     if motor is None:
         raise UnknownMotor(unknown_motor_message(app.motor, motors))
     return with_library_motor(replace(app, motor_curve=curve), motor)
 
 
+def energised_holding(app: Application, holding_nm: float | None) -> Application:
+    """``app`` held by the stepper's energised holding torque ``holding_nm`` [N m] where
+    the user says the motor holds the load (``holding_source`` "energised") and gave no
+    holding torque of their own."""
+    if app.holding_source != "energised" or app.brake_torque_nm is not None:
+        return app
+    return app if holding_nm is None else replace(app, brake_torque_nm=holding_nm)
+
+
 def with_library_motor(app: Application, motor: Motor) -> Application:
-    """``app`` driven by ``motor``, keeping any motor value the user gave."""
+    """``app`` driven by ``motor``, keeping any motor value the user gave; a stepper
+    holding the load energised holds it with its holding torque (``energised_holding``)."""
     inertia = app.motor_inertia_kg_m2
     rms = app.motor_rms_torque_nm
     return replace(
-        app,
+        energised_holding(app, motor.holding_torque_nm()),
         motor=motor.id,
         motor_curve=app.motor_curve or motor.curve(),
         motor_inertia_kg_m2=inertia if inertia is not None else motor.value("rotor_inertia_g_cm2"),

@@ -323,7 +323,8 @@ FIELDS: tuple[InputField, ...] = (
         label="Holding torque", group="Duty and requirements", kind="number",
         help="Vertical axis (or a load of fixed direction): a brake's, or a stepper's "
         "energised holding torque (say which below), at the screw; empty when the screw "
-        "must hold the load by itself",
+        "must hold the load by itself, or, when the motor holds it energised, for the "
+        "stepper's own (the library's, or the datasheet's typed below)",
         bounds=(0.0, 1e5), dimension="torque",
     ),
     InputField(

@@ -249,6 +249,25 @@ def test_a_stepper_holds_while_energised_and_its_detent_with_the_power_off(
     assert "holding_power_off" not in names(unknown)
 
 
+def test_a_library_stepper_holding_energised_holds_with_its_own_holding_torque(
+    client: TestClient,
+) -> None:
+    """The same Z axis with the library's 17HS19-2004S1 (holding torque 0.59 N m, the
+    maker's 59 N cm) and no holding torque typed: energised, the motor holds with its own
+    0.59 N m; a torque typed in still wins; a brake (the default) is never assumed."""
+    needed = 3 * G * TR8_LEAD * eta_back(TR8_TAN, 0.08, COS_ISO) / (2 * math.pi)
+    axis = {k: v for k, v in PRINTER_Z.items() if k != "brake_torque_nm"}
+    c = evaluate(client, "Tr8x8(P2)-bronze", **axis, motor="17hs19-2004s1")
+    on = check(c, "holding")
+    assert on["limit"] == 0.59 and on["value"] == pytest.approx(needed) and on["passed"]
+    typed = evaluate(client, "Tr8x8(P2)-bronze", **PRINTER_Z, motor="17hs19-2004s1")
+    assert check(typed, "holding")["limit"] == 0.4
+    braked = {**axis, "holding_source": "brake"}
+    assert "holding" not in names(evaluate(client, "Tr8x8(P2)-bronze", **braked))
+    servo = evaluate(client, "Tr8x8(P2)-bronze", **axis, motor="yaskawa-sgm7j-01a")
+    assert "holding" not in names(servo) and not check(servo, "back_driving")["passed"]
+
+
 # --- 6. ranking and fixes --------------------------------------------------------------------
 
 
