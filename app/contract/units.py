@@ -351,7 +351,7 @@ TEXT_FORMATS: dict[Quantity, str] = {
     "rpm": ".0f",
     "pv": ".3g",
     "years": ".3g",
-    "temperature": "g",
+    "temperature": ".4g",
     "temperature_rise": ".3g",
     "factor": "g",
     "frequency": ".6g",
