@@ -214,6 +214,23 @@ def test_the_nema_14_carries_its_cited_values() -> None:
     assert motor.corner_rpm() == pytest.approx(60 * 19.8 / 2.28)
 
 
+def test_the_17hs19_carries_its_cited_values() -> None:
+    """STEPPERONLINE 17HS19-2004S1 as tabled in stepper-simulator's data/steppers.csv:
+    1.8 deg, 2 A, 59 N cm, 3 mH, 1.4 ohm, 82 g cm2 (= 82 x 1e-3 kg x 1e-4 m2 = 8.2e-6
+    kg m2). Only the drive voltage is assumed (24 V); the inductance keeps its +-20 %
+    range (2.4-3.6 mH), as makers state inductance."""
+    motor = MOTORS["17hs19-2004s1"]
+    assert motor.value("holding_torque_nm") == pytest.approx(59 / 100)
+    assert motor.value("phase_current_a") == 2.0
+    assert motor.value("resistance_ohm") == pytest.approx(1.4)
+    assert motor.value("inductance_mh") == pytest.approx(3e-3)
+    assert motor.value("rotor_inertia_g_cm2") == pytest.approx(82 * 1e-3 * 1e-4)
+    kinds = {name: value.provenance.kind for name, value in motor.values.items()}
+    assert kinds == {**dict.fromkeys(kinds, "vendor"), "supply_v": "assumed"}
+    for name in ("inductance_mh", "rotor_inertia_g_cm2"):
+        assert "steppers.csv" in motor.values[name].provenance.source
+
+
 def test_a_light_z_axis_sized_with_the_nema_14(client: TestClient) -> None:
     """The printer's Z axis with the 14HS20-1504S: Tr8x8(P2) at 12 mm/s turns 90 rpm, under
     the model's 521.05 rpm corner, so the curve's limit is the whole 0.40 N m holding
