@@ -13,7 +13,7 @@ same record, so they cannot disagree.
 import math
 from collections.abc import Callable, Mapping, Sequence
 from operator import attrgetter
-from typing import Any, Generic, Literal, NamedTuple, TypeVar, cast
+from typing import Any, Generic, Literal, NamedTuple, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,8 +21,6 @@ from numpy.typing import NDArray
 from app.core import motion
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
-from app.core.checks.wear_life import life_band
-from app.core.formulas import critical_speed
 from app.core.model import (
     PV,
     Accuracy,
@@ -42,6 +40,7 @@ from app.core.phrase import Phrase, Quantity
 from app.core.quantities import Quantities
 from app.core.robustness import Robustness
 from app.core.screening import Screening
+from app.core.sections import Column, CriticalSpeed, Life, Torque, number
 from app.core.table import Array
 from app.core.verdict import Verdict, verdict
 
@@ -92,11 +91,6 @@ MOTOR_CHECKS = ("torque", "motor_curve", "motor_rms", "motor_speed")
 #: Positions in a screening, as an index array (NumPy picks with one four times faster
 #: than with a list).
 Positions = NDArray[np.intp]
-
-
-def number(x: float | None) -> float | None:
-    """None for a missing or NaN value."""
-    return None if x is None or math.isnan(x) else x
 
 
 def positions_array(positions: Sequence[int]) -> Positions:
@@ -329,156 +323,6 @@ class Slot:
             reach = self.screening.reach
             self._fixes[check.name] = check.fix(self.app, self.screw, self.row, reach)
         return self._fixes[check.name]
-
-
-class Column(Generic[T]):
-    """An attribute of a record or of one of its sections read from one column of the
-    screening (quantities, verdicts or table) when read."""
-
-    def __init__(self, name: str) -> None:
-        self.name = name
-
-    def __get__(self, owner: "Candidate | Section", cls: type) -> T:
-        value: T = owner.batch.columns[self.name][owner.k]
-        return value
-
-
-class Section:
-    """A part of a candidate's record (SI) whose numbers are read when first asked for."""
-
-    __slots__ = ("app", "batch", "k", "screw")
-
-    def __init__(self, batch: "Batch", k: int) -> None:
-        self.batch, self.k, self.app = batch, k, batch.app
-        self.screw = batch.slots[k].screw
-
-
-class Torque(Section):
-    """Drive torque breakdown [N m] (seed: inertia + static drag + load); the angular
-    acceleration [rad/s^2] and the inertia the motor sees [kg m^2]."""
-
-    __slots__ = ()
-    inertia_screw_nm = Column[float]("inertia_screw_nm")
-    inertia_mass_nm = Column[float]("inertia_mass_nm")
-    inertia_motor_nm = Column[float]("inertia_motor_nm")
-    inertia_nm = Column[float]("inertia_nm")
-    drag_nm = Column[float]("drag_nm")
-    load_nm = Column[float]("load_nm")
-    total_nm = Column[float]("total_nm")
-    breakaway_nm = Column[float]("breakaway_nm")
-    required_nm = Column[float]("required_nm")
-    angular_accel_rad_s2 = Column[float]("angular_accel_rad_s2")
-    inertia_kg_m2 = Column[float]("inertia_kg_m2")
-
-    @property
-    def drag_min_nm(self) -> float:
-        return self.screw.drag_torque_min_nm
-
-    @property
-    def drag_max_nm(self) -> float:
-        return self.screw.drag_torque_max_nm
-
-    @property
-    def safety_factor(self) -> float:
-        return self.app.torque_safety_factor
-
-
-class CriticalSpeed(Section):
-    """The screw's critical speed and the speed allowed [rpm], and the margin
-    allowed / running speed."""
-
-    __slots__ = ()
-    theoretical_rpm = Column[float]("critical_rpm")
-    allowed_rpm = Column[float]("allowed_rpm")
-
-    @property
-    def margin(self) -> float:
-        return critical_speed.speed_margin(self.allowed_rpm, self.batch.columns["rpm"][self.k])
-
-    @property
-    def safety_factor(self) -> float:
-        return self.app.critical_speed_safety_factor
-
-    @property
-    def end_fixity(self) -> str:
-        return self.app.end_fixity
-
-
-#: What each life model's numbers rest on.
-LIFE_NOTES = {
-    "rated": "Rated travel (seed). Life varies with load, environment and duty cycle; "
-    "longer leads generally last longer (seed).",
-    "wear": "Wear life by Archard's law at the running thrust: the nut travel until its "
-    "flanks wear the allowed depth, at the high and the low end of the nut material's "
-    "assumed wear rate (3:1 either way of its value; published rates scatter 2-3:1). "
-    "Lubrication, heat and dirt move it further.",
-}
-
-
-class Life(Section):
-    """The nut's life as a band [m of travel] and, with a stroke and a duty, in years,
-    with the model it comes from: the seed's rated travel ("rated") or, for a nut the
-    seed gives none, the nut's wear by Archard's law over the wear rate's published
-    scatter ("wear"; ``app.core.checks.wear_life``). Also in hours of running at the
-    top speed and, with a stroke, in cycles (out and back)."""
-
-    __slots__ = ()
-
-    @property
-    def model(self) -> Literal["rated", "wear"]:
-        return "rated" if self.screw.life_min_m is not None else "wear"
-
-    @property
-    def note(self) -> str:
-        """Which model the numbers come from, and how far to trust them."""
-        return LIFE_NOTES[self.model]
-
-    def _band(self, name: str) -> tuple[float, float]:
-        """A wear quantity at the high and the low end of the wear rate's range."""
-        value = float(self.batch.columns[name][self.k])
-        low, high = life_band(self.screw)
-        return value * low, value * high
-
-    @property
-    def travel_m(self) -> tuple[float, float]:
-        if self.model == "rated":
-            return cast(float, self.screw.life_min_m), cast(float, self.screw.life_max_m)
-        return self._band("wear_travel_m")
-
-    @property
-    def travel_min_m(self) -> float:
-        return self.travel_m[0]
-
-    @property
-    def travel_max_m(self) -> float:
-        return self.travel_m[1]
-
-    @property
-    def years_min(self) -> float | None:
-        if self.model == "wear":
-            return number(self._band("wear_life_years")[0])
-        return number(self.batch.columns["life_years_min"][self.k])
-
-    @property
-    def years_max(self) -> float | None:
-        if self.model == "wear":
-            return number(self._band("wear_life_years")[1])
-        return number(self.batch.columns["life_years_max"][self.k])
-
-    @property
-    def hours(self) -> tuple[float, float]:
-        """Hours of running at the top speed until the travel is done."""
-        low, high = self.travel_m
-        return low / self.app.speed_m_s / 3600.0, high / self.app.speed_m_s / 3600.0
-
-    @property
-    def cycles(self) -> tuple[float, float] | None:
-        """Cycles (out and back over the stroke) until the travel is done."""
-        stroke = self.app.stroke_m
-        if not stroke:
-            return None
-        low, high = self.travel_m
-        return low / (2.0 * stroke), high / (2.0 * stroke)
 
 
 class Candidate:

@@ -1,0 +1,169 @@
+"""The sections of a candidate's record (torque, critical speed, life): parts whose
+numbers are read from the screening's columns when first asked for (``app.core.record``
+builds them)."""
+
+import math
+from typing import TYPE_CHECKING, Generic, Literal, TypeVar, cast
+
+from app.core.checks.wear_life import life_band
+from app.core.formulas import critical_speed
+
+if TYPE_CHECKING:
+    from app.core.record import Batch, Candidate
+
+T = TypeVar("T")
+
+
+def number(x: float | None) -> float | None:
+    """None for a missing or NaN value."""
+    return None if x is None or math.isnan(x) else x
+
+
+class Column(Generic[T]):
+    """An attribute of a record or of one of its sections read from one column of the
+    screening (quantities, verdicts or table) when read."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __get__(self, owner: "Candidate | Section", cls: type) -> T:
+        value: T = owner.batch.columns[self.name][owner.k]
+        return value
+
+
+class Section:
+    """A part of a candidate's record (SI) whose numbers are read when first asked for."""
+
+    __slots__ = ("app", "batch", "k", "screw")
+
+    def __init__(self, batch: "Batch", k: int) -> None:
+        self.batch, self.k, self.app = batch, k, batch.app
+        self.screw = batch.slots[k].screw
+
+
+class Torque(Section):
+    """Drive torque breakdown [N m] (seed: inertia + static drag + load); the angular
+    acceleration [rad/s^2] and the inertia the motor sees [kg m^2]."""
+
+    __slots__ = ()
+    inertia_screw_nm = Column[float]("inertia_screw_nm")
+    inertia_mass_nm = Column[float]("inertia_mass_nm")
+    inertia_motor_nm = Column[float]("inertia_motor_nm")
+    inertia_nm = Column[float]("inertia_nm")
+    drag_nm = Column[float]("drag_nm")
+    load_nm = Column[float]("load_nm")
+    total_nm = Column[float]("total_nm")
+    breakaway_nm = Column[float]("breakaway_nm")
+    required_nm = Column[float]("required_nm")
+    angular_accel_rad_s2 = Column[float]("angular_accel_rad_s2")
+    inertia_kg_m2 = Column[float]("inertia_kg_m2")
+
+    @property
+    def drag_min_nm(self) -> float:
+        return self.screw.drag_torque_min_nm
+
+    @property
+    def drag_max_nm(self) -> float:
+        return self.screw.drag_torque_max_nm
+
+    @property
+    def safety_factor(self) -> float:
+        return self.app.torque_safety_factor
+
+
+class CriticalSpeed(Section):
+    """The screw's critical speed and the speed allowed [rpm], and the margin
+    allowed / running speed."""
+
+    __slots__ = ()
+    theoretical_rpm = Column[float]("critical_rpm")
+    allowed_rpm = Column[float]("allowed_rpm")
+
+    @property
+    def margin(self) -> float:
+        return critical_speed.speed_margin(self.allowed_rpm, self.batch.columns["rpm"][self.k])
+
+    @property
+    def safety_factor(self) -> float:
+        return self.app.critical_speed_safety_factor
+
+    @property
+    def end_fixity(self) -> str:
+        return self.app.end_fixity
+
+
+#: What each life model's numbers rest on.
+LIFE_NOTES = {
+    "rated": "Rated travel (seed). Life varies with load, environment and duty cycle; "
+    "longer leads generally last longer (seed).",
+    "wear": "Wear life by Archard's law at the running thrust: the nut travel until its "
+    "flanks wear the allowed depth, at the high and the low end of the nut material's "
+    "assumed wear rate (3:1 either way of its value; published rates scatter 2-3:1). "
+    "Lubrication, heat and dirt move it further.",
+}
+
+
+class Life(Section):
+    """The nut's life as a band [m of travel] and, with a stroke and a duty, in years,
+    with the model it comes from: the seed's rated travel ("rated") or, for a nut the
+    seed gives none, the nut's wear by Archard's law over the wear rate's published
+    scatter ("wear"; ``app.core.checks.wear_life``). Also in hours of running at the
+    top speed and, with a stroke, in cycles (out and back)."""
+
+    __slots__ = ()
+
+    @property
+    def model(self) -> Literal["rated", "wear"]:
+        return "rated" if self.screw.life_min_m is not None else "wear"
+
+    @property
+    def note(self) -> str:
+        """Which model the numbers come from, and how far to trust them."""
+        return LIFE_NOTES[self.model]
+
+    def _band(self, name: str) -> tuple[float, float]:
+        """A wear quantity at the high and the low end of the wear rate's range."""
+        value = float(self.batch.columns[name][self.k])
+        low, high = life_band(self.screw)
+        return value * low, value * high
+
+    @property
+    def travel_m(self) -> tuple[float, float]:
+        if self.model == "rated":
+            return cast(float, self.screw.life_min_m), cast(float, self.screw.life_max_m)
+        return self._band("wear_travel_m")
+
+    @property
+    def travel_min_m(self) -> float:
+        return self.travel_m[0]
+
+    @property
+    def travel_max_m(self) -> float:
+        return self.travel_m[1]
+
+    @property
+    def years_min(self) -> float | None:
+        if self.model == "wear":
+            return number(self._band("wear_life_years")[0])
+        return number(self.batch.columns["life_years_min"][self.k])
+
+    @property
+    def years_max(self) -> float | None:
+        if self.model == "wear":
+            return number(self._band("wear_life_years")[1])
+        return number(self.batch.columns["life_years_max"][self.k])
+
+    @property
+    def hours(self) -> tuple[float, float]:
+        """Hours of running at the top speed until the travel is done."""
+        low, high = self.travel_m
+        return low / self.app.speed_m_s / 3600.0, high / self.app.speed_m_s / 3600.0
+
+    @property
+    def cycles(self) -> tuple[float, float] | None:
+        """Cycles (out and back over the stroke) until the travel is done."""
+        stroke = self.app.stroke_m
+        if not stroke:
+            return None
+        low, high = self.travel_m
+        return low / (2.0 * stroke), high / (2.0 * stroke)
