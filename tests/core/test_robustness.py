@@ -16,7 +16,11 @@ Tr16x8(P4) PTFE nuts (549.8 mm^2, 962 N, and 8 x pi x 14 x 2 = 703.7 mm^2, 1232 
 both < 1500 N); the next-ranked screws fill the list. And two with a stroke
 ("motion-motor", "life-advice-reject") now rank "lowest torque" by the peak motor torque
 the table shows rather than the accelerating torque, which changes which 30 screws make
-the list. Every path must still give them: select, a catalog screw evaluated alone,
+the list. "life-advice-reject" was recorded again when the ISO nuts' allowed wear became
+Helix Linear's end of life (a quarter of the pitch off the thread, 0.483 H1, was 0.25 H1
+assumed): their wear lives nearly doubled, so the Tr14x3 and Tr8x8(P2) PTFE nuts now last
+the 3 years asked and the Tr12x6(P3) and Tr14x6(P3) PTFE nuts no longer hinge on the nut
+length. Every path must still give them: select, a catalog screw evaluated alone,
 and a screw outside the catalog with the same values (its variant rows built on the fly).
 """
 

@@ -72,6 +72,26 @@ def test_a_multi_start_screw_slides_less_per_metre() -> None:
         assert wear.sliding_per_travel(helix, lead) == pytest.approx(expected, abs=0.01)
 
 
+@pytest.mark.parametrize("screw_id", ["Tr12x3-bronze", "Tr20x4-acetal", "Tr16x8(P4)-ptfe"])
+def test_the_allowed_wear_is_a_quarter_of_the_pitch_off_the_thread(
+    catalog: Catalog, screw_id: str
+) -> None:
+    """Helix Linear ("Identifying wear with follower nut assemblies"): a nut has lived its
+    full life when its thread is worn halfway through its tooth thickness, a quarter of the
+    pitch. The catalog's allowed depth, normal to a 15 deg flank of height H1 = P/2,
+    thins the thread along the axis by h / cos 15 deg: Tr12x3, 0.483 x 1.5 mm = 0.7245 mm
+    deep, 0.7245 / 0.9659 = 0.750 mm = 3 mm / 4. The low end of its range, 0.1, is for an
+    axis that tolerates little added play."""
+    screw = catalog.by_id[screw_id]
+    assert screw.pitch_m is not None and screw.flank_height_m is not None
+    assert screw.allowed_wear_fraction is not None
+    depth_m = screw.allowed_wear_fraction * screw.flank_height_m
+    thinning_m = depth_m / math.cos(math.radians(15.0))
+    assert thinning_m == pytest.approx(screw.pitch_m / 4.0, rel=1e-3)
+    low, high = screw.assumption_ends["allowed_wear_to_flank_height"]
+    assert (low["allowed_wear_fraction"], high["allowed_wear_fraction"]) == (0.1, 0.483)
+
+
 TR14 = Application(
     load_n=1962.0,
     speed_m_s=0.02,
@@ -85,17 +105,18 @@ TR14 = Application(
 def test_wear_life_of_a_tr14_acetal_nut_by_hand(catalog: Catalog) -> None:
     """Tr14x3 (d2 12.5 mm, H1 1.5 mm), acetal nut 2 d = 28 mm long, 1962 N (200 kg):
     flank area 28 / 3 x pi x 12.5 x 1.5 = 549.8 mm^2, p = 3.569 MPa; allowed wear
-    0.25 x 1.5 = 0.375 mm; k = 1e-6 mm^3/(N m): sliding life 0.375e-3 / (1e-15 x
-    3.569e6) = 105.1 km; sliding per metre sqrt(3^2 + (12.5 pi)^2) / 3 = 13.13; travel
-    8.004 km; at 2 x 0.5 m x 50 a day, 0.4386 years."""
+    0.483 x 1.5 = 0.7245 mm (a quarter of the pitch off the thread's thickness, Helix
+    Linear; wear.wear_life_sliding); k = 1e-6 mm^3/(N m): sliding life 0.7245e-3 /
+    (1e-15 x 3.569e6) = 203.0 km; sliding per metre sqrt(3^2 + (12.5 pi)^2) / 3 = 13.13;
+    travel 15.46 km; at 2 x 0.5 m x 50 a day, 0.8473 years."""
     screw = catalog.by_id["Tr14x3-acetal"]
     result = {c.name: c for c in evaluate(TR14, screw).checks}["wear_life"]
     area = 28 / 3 * math.pi * 12.5 * 1.5 * 1e-6
-    sliding = 0.375e-3 / (1e-15 * 1962.0 / area)
+    sliding = 0.483 * 1.5e-3 / (1e-15 * 1962.0 / area)
     travel = sliding / (math.hypot(3.0, 12.5 * math.pi) / 3.0)
-    assert travel == pytest.approx(8004.0, rel=1e-3)
+    assert travel == pytest.approx(15464.0, rel=1e-3)
     assert result.limit == pytest.approx(life.life_years(travel, 0.5, 50.0), rel=1e-9)
-    assert result.limit == pytest.approx(0.4386, rel=1e-3)
+    assert result.limit == pytest.approx(0.8473, rel=1e-3)
     assert not result.passed
 
 
@@ -113,12 +134,12 @@ def test_bronze_outlasts_acetal_by_the_ratio_of_wear_rates(catalog: Catalog) -> 
 
 def test_the_life_band_spans_the_wear_rates_scatter(catalog: Catalog) -> None:
     """The message gives the travel at both ends of the wear rate's range (3.3e-7 to
-    3e-6 mm^3/(N m) for acetal): 8.004 km x 1e-6 / 3e-6 = 2.668 km to 24.26 km."""
+    3e-6 mm^3/(N m) for acetal): 15.46 km x 1e-6 / 3e-6 = 5.155 km to 46.86 km."""
     from app.contract.units import render
 
     result = {c.name: c for c in evaluate(TR14, catalog.by_id["Tr14x3-acetal"]).checks}
     text = render(result["wear_life"].message)
-    assert "2.668e+06 mm to 2.426e+07 mm" in text
+    assert "5.155e+06 mm to 4.686e+07 mm" in text
     assert "falls short of the 5 years required" in text
 
 
@@ -146,11 +167,11 @@ def test_no_thrust_no_wear_check(catalog: Catalog) -> None:
 
 def test_the_offered_load_gives_the_required_life(catalog: Catalog) -> None:
     """Life is inversely proportional to the thrust: the load the check offers makes the
-    Tr14x3 acetal nut last exactly the 5 years required (1962 N x 0.4386 / 5 = 172.1 N)."""
+    Tr14x3 acetal nut last exactly the 5 years required (1962 N x 0.8473 / 5 = 332.5 N)."""
     screw = catalog.by_id["Tr14x3-acetal"]
     failed = {c.name: c for c in evaluate(TR14, screw).checks}["wear_life"]
     assert failed.input_limits is not None
     load = failed.input_limits["load_n"]
-    assert load == pytest.approx(1962.0 * 0.4386 / 5.0, rel=1e-3)
+    assert load == pytest.approx(1962.0 * 0.8473 / 5.0, rel=1e-3)
     again = {c.name: c for c in evaluate(replace(TR14, load_n=load), screw).checks}
     assert again["wear_life"].passed

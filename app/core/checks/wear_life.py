@@ -39,15 +39,17 @@ class WearLife(Check):
     description = (
         "Archard's law: the running thrust over the nut's loaded flanks wears them by the "
         "nut material's specific wear rate per metre slid; the nut travel until the wear "
-        "reaches the allowed fraction of the flank height, in years of the given stroke "
-        "and cycles per day, against the life required. Published wear rates scatter "
+        "reaches the allowed fraction of the flank height (an ISO nut's thread a quarter "
+        "of the pitch thinner, the end of a nut's full life), in years of the given stroke "
+        "and cycles per day, against the life required. Wear rates and life tests scatter "
         "2-3:1, so the life is shown as a band."
     )
     quantity = "years"
     formula = "Y = Y_req; Y_wear = f_w * H / (k * p) / (helix / lead) / (2 * stroke * cycles * 365)"
     source = (
         "Archard's law h = k p s; Neale, Tribology Handbook A5 (wear depth rate K P V); "
-        "wear rates by nut material (catalog)"
+        "wear rates by nut material (catalog); allowed wear: Helix Linear, a quarter of "
+        "the pitch off the thread; scatter: Roton, life tests vary 2-3:1"
     )
     sources = ("wear_rate", "allowed_wear", "nut_length", "pitch")
     capacity_sources = ("wear_rate", "allowed_wear", "nut_length")

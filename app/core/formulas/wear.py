@@ -4,8 +4,12 @@ Steady sliding wear removes a volume proportional to the load and the sliding di
 V = k F s, with k the specific wear rate of the pair [m^3/(N m) = m^2/N]. Spread over the
 loaded flank area A, the depth worn is h = k p s with p = F / A: the "depth per unit time
 = K P V" of dry rubbing bearings [1] (the PV form of the same law). A nut is worn out
-when h reaches the wear it may lose, a fraction of its flank height. Published wear rates
-of one material pair scatter 2-3:1 [1, 2], so a life is a band, not a number.
+when h reaches the wear it may lose, a fraction of its flank height: a nut has lived its
+full life when its thread is worn halfway through, a quarter of the pitch [4]. Wear rates of
+one material pair scatter 2-3:1 [1, 2] and so do life tests of power screws [3], so a life
+is a band, not a number. The same law, in the same variables, sizes a lead screw nut in
+[5]; wear stays proportional to P V above the PV limit, but with a far larger factor [6],
+so the mild-wear rate holds only while the PV check passes.
 
 References
 ----------
@@ -14,6 +18,18 @@ References
    bearing material groups against smooth mild steel.
 2. RTP Company, "Wear factor and friction data" (ASTM D3702 thrust-washer test): wear
    volume W = K F V T, K given in 1e-10 in^3 min/(ft lbf h) and in 1e-8 mm^3/(N m).
+3. Roton, "Wear life" (roton.com, application engineering): "Test life cycle variations
+   of two or three to one are not uncommon."
+4. Helix Linear, "Identifying wear with follower nut assemblies" (helixlinear.com,
+   engineering tools): the full life of the nut is when the thread is halfway through its
+   tooth thickness, or a quarter of the pitch of the screw.
+5. tribology-abc.com, calculator "Lead screw" (e3_7): total sliding distance s = h / (k p),
+   sliding per move pi d2 L_stroke / P, number of moves s / s1, the wear depth given as a
+   ratio of H1 = 0.5 P.
+6. "Predicting Bearing Performance of Filled Teflon", J. Eng. Ind. 89(1), 182 (ASME):
+   wear rates directly proportional to pressure and velocity in the mild and the severe
+   regime, the severe regime's factors much higher; the transition coincides with (but is
+   not adequately described by) the PV limit.
 """
 
 from app.core.formulas.declare import formula
@@ -61,6 +77,16 @@ def wear_life_sliding(allowed_depth_m: float, wear_rate_m2_n: float, pressure_pa
 
     >>> round(wear_life_sliding(0.25 * 1e-3, 1e-15, 1e6) / 1e3, 1)
     250.0
+
+    The depth a nut may lose [4]: its thread worn a quarter of the pitch thinner, measured
+    along the axis, is a depth P/4 cos(beta) normal to a flank at beta to the radial plane
+    (both flanks together where the load reverses: the same total); for an ISO
+    trapezoidal thread (beta = 15 deg, flank height H1 = P/2) that is 0.483 H1, the
+    catalog's ``allowed_wear_to_flank_height``:
+
+    >>> from math import cos, radians
+    >>> round((1 / 4) * cos(radians(15.0)) / (1 / 2), 3)
+    0.483
     """
     return allowed_depth_m / (wear_rate_m2_n * pressure_pa)
 
