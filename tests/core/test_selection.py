@@ -126,13 +126,14 @@ def test_coating_filter(catalog: Catalog, coating: str, coated: set[bool]) -> No
 def test_rank_by_size_life_and_margin(catalog: Catalog) -> None:
     """size: smallest OD first; life: the longest low end of the life band shown first,
     the seed's rated life or, where the seed rates none, the nut's wear life (a bronze
-    Tr24x10(P5) nut at 50 N wears its allowed depth in 98,900 km at the high end of its
+    Tr24x10(P5) nut at 50 N wears its allowed depth in 191,000 km at the high end of its
     wear rate, ahead of the seed's longest rated 5,000 km); margin: lowest worst
     utilization first.
 
-    By hand: 9.6 engaged turns of pi x 21.5 x 2.5 mm^2 = 1621 mm^2 at 50 N is 30.8 kPa;
-    a quarter of H1 = 0.625 mm at k = 3e-8 mm^3/(N m) lasts 0.625e-3 / (3e-17 x 30.8e3) =
-    6.75e8 m of sliding, 6.828 m a metre of travel (the helix at d2 over the 10 mm lead)."""
+    By hand: 9.6 engaged turns of pi x 21.5 x 2.5 mm^2 = 1621 mm^2 at 50 N is 30.85 kPa;
+    a quarter of the 5 mm pitch off the thread, P / 4 cos 15 = 0.483 H1 = 1.207 mm deep, at
+    k = 3e-8 mm^3/(N m) lasts 1.207e-3 / (3e-17 x 30.85e3) = 1.305e9 m of sliding,
+    6.828 m a metre of travel (the helix at d2 over the 10 mm lead)."""
     base = light_app(limit=100)
     by_size = select(replace(base, rank_by="size"), catalog.index).candidates
     ods = [e.screw.outer_diameter_m for e in by_size]
@@ -140,7 +141,12 @@ def test_rank_by_size_life_and_margin(catalog: Catalog) -> None:
     by_life = select(replace(base, rank_by="life"), catalog.index).candidates
     first = by_life[0].life
     assert first is not None and first.model == "wear"
-    assert first.travel_min_m == pytest.approx(6.75e8 / 6.828, rel=2e-3)
+    pressure_pa = 50.0 / (9.6 * math.pi * 21.5e-3 * 2.5e-3)
+    # the catalog's allowed wear: P / 4 cos 15 = 0.48296 H1, to three figures
+    sliding_m = 0.483 * 2.5e-3 / (3e-17 * pressure_pa)
+    helix_per_m = math.hypot(10e-3, math.pi * 21.5e-3) / 10e-3
+    assert (pressure_pa, sliding_m, helix_per_m) == pytest.approx((30.85e3, 1.305e9, 6.828), 1e-3)
+    assert first.travel_min_m == pytest.approx(sliding_m / helix_per_m, rel=1e-6)
     assert {e.life.model for e in by_life if e.life} == {"wear", "rated"}
     lives = [0.0 if e.life is None else e.life.travel_min_m for e in by_life]
     assert lives == sorted(lives, reverse=True)
