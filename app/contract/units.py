@@ -88,6 +88,9 @@ UNITS: dict[str, Unit] = {
         _unit("in", "length", _IN),
         _unit("km", "length", 1000),
         _unit("million cm", "length", 10**4),
+        _unit("m travelled", "travel", 1, text="m"),
+        _unit("km travelled", "travel", 1000, text="km"),
+        _unit("mi", "travel", Fraction(1609344, 1000)),
         _unit("m/s", "speed", 1),
         _unit("mm/s", "speed", _MM),
         _unit("in/s", "speed", _IN),
@@ -145,6 +148,7 @@ SI_UNITS: dict[Quantity, str] = {u.dimension: u.symbol for u in UNITS.values() i
 API_SYSTEM: dict[Quantity, str] = {
     **SI_UNITS,
     "length": "mm",
+    "travel": "km travelled",
     "speed": "mm/s",
     "accel": "mm/s²",
     "pv": "MPa m/s",
@@ -172,11 +176,12 @@ DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
     "length_unit": {
         "mm": {
             "length": "mm", "speed": "mm/s", "accel": "mm/s²", "pressure": "MPa", "pv": "MPa m/s",
-            "temperature": "°C", "temperature_rise": "K",
+            "temperature": "°C", "temperature_rise": "K", "travel": "km travelled",
         },
         "in": {
             "length": "in", "speed": "in/s", "accel": "in/s²", "pressure": "psi",
             "pv": "psi ft/min", "temperature": "°F", "temperature_rise": "°F rise",
+            "travel": "mi",
         },
     },
     "torque_unit": {
@@ -379,7 +384,20 @@ def amount_text(amount: Amount, units: Mapping[str, str] = DEFAULT_UNITS) -> str
     value, _ = api_value(amount.value, amount.quantity)
     unit, _ = display_system(units)[amount.quantity]
     shown = from_api(value, amount.quantity, units)
-    return f"{shown:{TEXT_FORMATS[amount.quantity]}} {unit}".strip()
+    return f"{plain(shown, TEXT_FORMATS[amount.quantity])} {unit}".strip()
+
+
+def plain(value: float, spec: str) -> str:
+    """``value`` in the format ``spec``, but a whole number the format would write with
+    an exponent written out, thousands grouped (up to 1e15).
+
+    >>> plain(14740.4, ".4g"), plain(2419.0, ".4g"), plain(1.5e-5, ".3g"), plain(2e16, ".4g")
+    ('14,740', '2419', '1.5e-05', '2e+16')
+    """
+    text = f"{value:{spec}}"
+    if "e+" in text and abs(value) < 1e15:
+        return f"{float(text):,.0f}"
+    return text
 
 
 def render(phrase: Phrase, units: Mapping[str, str] = DEFAULT_UNITS) -> str:

@@ -14,6 +14,7 @@ from typing import Literal
 Quantity = Literal[
     "force",  # N
     "length",  # m
+    "travel",  # m: a distance travelled over a life (shown in km or miles)
     "speed",  # m/s
     "accel",  # m/s^2
     "torque",  # N m

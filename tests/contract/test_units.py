@@ -153,7 +153,8 @@ def test_a_field_takes_its_unit_from_its_dimension_only() -> None:
 
 
 def test_the_default_display_units_are_the_apis() -> None:
-    assert display_system(DEFAULT_UNITS) == {d: (u, 1.0) for d, u in API_SYSTEM.items()}
+    api = {d: (UNITS[u].text, 1.0) for d, u in API_SYSTEM.items()}
+    assert {d: (UNITS[u].text, f) for d, (u, f) in display_system(DEFAULT_UNITS).items()} == api
 
 
 def test_every_display_choice_sets_units_of_its_dimensions() -> None:

@@ -135,11 +135,15 @@ def test_bronze_outlasts_acetal_by_the_ratio_of_wear_rates(catalog: Catalog) -> 
 def test_the_life_band_spans_the_wear_rates_scatter(catalog: Catalog) -> None:
     """The message gives the travel at both ends of the wear rate's range (3.3e-7 to
     3e-6 mm^3/(N m) for acetal): 15.46 km x 1e-6 / 3e-6 = 5.155 km to 46.86 km."""
-    from app.contract.units import render
+    from app.contract.units import DEFAULT_UNITS, render
 
     result = {c.name: c for c in evaluate(TR14, catalog.by_id["Tr14x3-acetal"]).checks}
     text = render(result["wear_life"].message)
-    assert "5.155e+06 mm to 4.686e+07 mm" in text
+    assert "15.46 km of travel (5.155 km to 46.86 km" in text
+    assert (
+        render(result["wear_life"].message, {**DEFAULT_UNITS, "length_unit": "in"}).count(" mi")
+        == 3
+    )  # 9.606 mi (3.203 mi to 29.12 mi): travel in miles with inches
     assert "falls short of the 5 years required" in text
 
 
