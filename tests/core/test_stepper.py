@@ -2,8 +2,9 @@
 
 import math
 
+import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.catalog.motors import MAX_STEPPER_RPM
@@ -170,3 +171,29 @@ def test_the_back_emf_costs_the_library_curves_at_most_15_percent(motor_id: str)
             holding,
         )
         assert 0.85 * model <= sine <= model * (1 + 1e-9), (share, sine / model)
+
+
+@settings(max_examples=200)
+@given(
+    holding_nm=st.floats(0.01, 10.0),
+    corner_rpm=st.floats(10.0, 2000.0),
+    top_ratio=st.floats(1.01, 50.0),
+    points=st.integers(1, 40),
+    at=st.floats(0.0, 1.0),
+)
+def test_the_drawn_curve_never_promises_more_than_the_model(
+    holding_nm: float, corner_rpm: float, top_ratio: float, points: int, at: float
+) -> None:
+    """Read as straight lines between its points (as the motor checks read a curve),
+    the drawn curve lies on or below the model at every speed, and within the chord
+    factor (1 + r)^2 / 4 r of it (a chord of 1 / n from a to r a is furthest above it at
+    its middle, (a + b)^2 / 4 a b)."""
+    top_rpm = corner_rpm * top_ratio
+    curve = stepper.pull_out_curve(holding_nm, corner_rpm, top_rpm, points)
+    speeds, torques = zip(*curve, strict=True)
+    rpm = at * top_rpm
+    drawn = float(np.interp(rpm, speeds, torques))
+    model = stepper.pull_out_torque(rpm, holding_nm, corner_rpm)
+    ratio = top_ratio ** (1.0 / points)
+    assert drawn <= model * (1 + 1e-12)
+    assert drawn >= model / ((1 + ratio) ** 2 / (4 * ratio)) * (1 - 1e-12)
