@@ -286,8 +286,8 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="lubrication", page="lubrication", core="lubrication", label="Nut lubrication",
         help="Raises a polymer nut's permissible PV: dry x1 (the rating's own), greased "
-        "x1.5 (assumed), oiled x2 (a maker's “as much as 100 %”); a dry-film coated "
-        "screw must then not be used",
+        "x1.3 (igus, greased at assembly), oiled x2 (a maker's “as much as 100 %”); a "
+        "dry-film coated screw must then not be used",
         group="Nut and environment", kind="choice", default="dry", options=Lubrication,
         texts={"dry": "Dry", "greased": "Greased", "oiled": "Oiled"},
     ),

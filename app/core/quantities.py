@@ -293,21 +293,14 @@ def _finite(values: Array) -> Array:
 
 def _pv_limit(app: Application, t: CandidateTable) -> dict[str, Any]:
     """The nut's permissible PV at the ambient and its lubrication: the rating times the
-    temperature factor (``pv_derating.temperature_factor`` at the ambient, as arrays; 1
-    where the material's highest temperature is unknown) times the lubrication factor.
+    temperature factor (``pv_derating.temperature_factors`` at the ambient; 1 where the
+    material's highest temperature is unknown) times the lubrication factor.
 
     A PV rating is the PV whose own friction heat brings the nut to its highest
-    temperature from the rating's room [pv_derating 1, 2]: it already holds the nut's rise,
+    temperature from the rating's room [pv_derating 1-3]: it already holds the nut's rise,
     so only the ambient above the room derates it (the rise itself is the nut heat
     check's, with the duty)."""
-    span = t.temperature_max_c - pv_derating.REFERENCE_C
-    with np.errstate(invalid="ignore", divide="ignore"):
-        share = np.clip((t.temperature_max_c - app.ambient_c) / span, 0.0, 1.0)
-    temperature = np.where(
-        app.ambient_c <= pv_derating.REFERENCE_C,
-        1.0,
-        np.where(np.isfinite(share) & (span > 0), share, 1.0),
-    )
+    temperature = pv_derating.temperature_factors(app.ambient_c, t.temperature_max_c)
     lubrication = pv_derating.LUBRICATION_FACTORS[app.lubrication][0]
     return {
         "pv_temperature_factor": temperature,

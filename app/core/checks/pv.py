@@ -1,5 +1,7 @@
 """PV of the nut (contact pressure times sliding speed) against the nut material's limit."""
 
+import numpy as np
+
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -15,6 +17,7 @@ from app.core.checks.base import (
     load_input,
     where_given,
 )
+from app.core.formulas import pv_derating
 from app.core.phrase import Amount, Phrase
 
 
@@ -25,16 +28,18 @@ class NutPV(Check):
         "A plastic nut heats and wears with pressure times sliding speed; above its PV "
         "limit it fails early. Judged at the peak thrust (an accelerating segment reaches "
         "the top speed still carrying m a) and the top speed. The limit is the nut's "
-        "rating derated to the ambient (the rating holds the nut's own friction heat; the "
-        "nut heat check judges that rise), times a factor for its lubrication."
+        "rating derated in a straight line from the 20 C rating to nothing at the "
+        "material's highest temperature, at the ambient (its own friction heat is the PV "
+        "itself; the nut heat check judges the rise), times a factor for its lubrication."
     )
     quantity = "pv"
     formula = "PV = F_peak / (3 * H_T * h) * (n / 60) * H_T; PV_limit = PV_nut * f_T * f_lub"
     source = (
         "seed catalog, PV Calculation (three threads in contact); PV derated with the "
-        "ambient temperature (formulas.pv_derating)"
+        "ambient as igus's permitted pv, proportional to T_max - T_ambient, lubrication "
+        "factors igus Table 1.4 and BNB (formulas.pv_derating)"
     )
-    sources = ("pv_limit", "root_diameter", "outer_diameter")
+    sources = ("pv_limit", "root_diameter", "outer_diameter", "temperature_range")
     capacity_sources = ("pv_limit",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -49,24 +54,32 @@ class NutPV(Check):
             "h": t.thread_depth_m,
             "n": q.rpm,
             "PV_nut": t.pv_limit_pa_m_s,
+            "T_ambient": np.full(len(t), app.ambient_c),
+            "T_max": t.temperature_max_c,
             "f_T": q.pv_temperature_factor,
             "f_lub": q.pv_lubrication_factor,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        values: dict[str, Amount | str] = {
+            "pv": Amount(r.pv_pa_m_s, "pv"),
+            "limit": Amount(r.pv_limit_pa_m_s, "pv"),
+            "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
+            "f_t": f"{r.pv_temperature_factor:.2f}",
+            "temp": Amount(app.ambient_c, "temperature"),
+            "f_lub": f"{r.pv_lubrication_factor:.2f}",
+        }
+        line = ""
+        if s.temperature_max_c is not None and s.temperature_max_c > pv_derating.REFERENCE_C:
+            line = " (igus: straight from the {ref} rating to none at the material's {t_max})"
+            values["ref"] = Amount(pv_derating.REFERENCE_C, "temperature")
+            values["t_max"] = Amount(s.temperature_max_c, "temperature")
         return Phrase(
             "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}: its rating "
-            "{rating} times {f_t} at the ambient {temp} and {f_lub} for its lubrication "
-            "(the rating already allows for the nut's own friction heat).",
-            {
-                "pv": Amount(r.pv_pa_m_s, "pv"),
-                "limit": Amount(r.pv_limit_pa_m_s, "pv"),
-                "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
-                "f_t": f"{r.pv_temperature_factor:.2f}",
-                "temp": Amount(app.ambient_c, "temperature"),
-                "f_lub": f"{r.pv_lubrication_factor:.2f}",
-            },
+            "{rating} times {f_t} at the ambient {temp}" + line + " and {f_lub} for its "
+            "lubrication (" + _lubrication_note(app) + ").",
+            values,
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
@@ -97,3 +110,9 @@ def no_pv_left(app: Application, r: Quantities[float]) -> Phrase:
         "temperature): choose a nut material rated hotter, or cool or lubricate the nut.",
         {"temp": Amount(app.ambient_c, "temperature")},
     )
+
+
+def _lubrication_note(app: Application) -> str:
+    """The lubrication factor's provenance and source, for the engineer reading it."""
+    _, kind, source = pv_derating.LUBRICATION_FACTORS[app.lubrication]
+    return f"{app.lubrication}, {kind}: {source}"
