@@ -46,6 +46,28 @@ def test_rtp_wear_volume_is_archard_depth_times_area() -> None:
     assert depth_m * area_m2 * 1e9 == pytest.approx(volume_mm3, rel=1e-12)
 
 
+def test_skf_ptfe_composite_bushing_life_is_archards_law_in_time() -> None:
+    """SKF's worked example (plain bearings, "Calculation example", skf.com): PTFE
+    composite bushings PCM 202325 E in a tramway door linkage, p = 1.64 N/mm^2 at
+    v = 0.01 m/s (p v = 0.0164), "p v value = 0,025 to be applied" in the life line,
+    c1..c5 = 1.3 x 1 x 1 x 0.6 x 1.5, KM = 480, exponent n = 1 for PTFE composite:
+    G_h = c KM / (p v) = 22 500 operating hours. With n = 1 that is Archard's law in time:
+    the depth allowed over the wear rate, h / k = c KM (in Pa m: N/mm^2 -> Pa, h -> s),
+    slides s = h / (k p) metres, which at v takes s / v. The published life follows, and
+    doubling p v halves it in both."""
+    c = 1.3 * 1 * 1 * 0.6 * 1.5
+    h_over_k_pa_m = c * 480 * 1e6 * 3600  # KM [N/mm^2 m/s h] in SI
+    depth_m = 0.05e-3  # any allowed depth: only h / k enters
+    rate_m2_n = depth_m / h_over_k_pa_m
+    speed_m_s = 0.01
+    pressure_pa = 0.025e6 / speed_m_s  # the p v SKF applies, at v
+    hours = wear.wear_life_sliding(depth_m, rate_m2_n, pressure_pa) / speed_m_s / 3600
+    assert hours == pytest.approx(22_464, rel=1e-9)
+    assert hours == pytest.approx(22_500, rel=2e-3)  # SKF rounds to 22 500 h
+    doubled = wear.wear_life_sliding(depth_m, rate_m2_n, 2 * pressure_pa) / speed_m_s / 3600
+    assert doubled == pytest.approx(hours / 2)
+
+
 @given(
     depth=st.floats(1e-5, 1e-3),
     rate=st.floats(1e-18, 1e-14),
