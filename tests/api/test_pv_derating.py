@@ -140,6 +140,9 @@ def test_an_iso_polymer_nut_is_derated_as_well(
     assert pressure["limit"] == pytest.approx(carried_n, rel=1e-6, abs=1e-9)
     if share:
         assert "at the ambient" in pressure["message"]
+        # the lubrication factor's provenance and source, as in the PV check
+        _, kind, source = pv_derating.LUBRICATION_FACTORS[lubrication]
+        assert f"({lubrication}, {kind}: {source})" in pressure["message"]
     else:
         assert "no PV left" in pressure["fix"]
 

@@ -16,7 +16,7 @@ from app.core.checks.base import (
     load_input,
     where_given,
 )
-from app.core.checks.pv import no_pv_left
+from app.core.checks.pv import derating, no_pv_left
 from app.core.phrase import Amount, Phrase
 
 
@@ -111,12 +111,10 @@ def _slower(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
             values,
         )
     values["pv"] = Amount(r.nut_pv_limit_pa_m_s, "pv")
-    values["f_t"] = f"{r.pv_temperature_factor:.2f}"
-    values["f_lub"] = f"{r.pv_lubrication_factor:.2f}"
-    values["temp"] = Amount(app.ambient_c, "temperature")
+    values["derated"] = derating(app, s, r)
     return Phrase(
-        ", less than its {p0} at slow sliding: its PV limit {pv} (the rating times {f_t} "
-        "at the ambient {temp} and {f_lub} for its lubrication) binds at this speed, and a "
+        ", less than its {p0} at slow sliding: its PV limit {pv} (the rating {derated}) "
+        "binds at this speed, and a "
         "larger size slides faster at the same speed of turning",
         values,
     )

@@ -62,24 +62,15 @@ class NutPV(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
-        values: dict[str, Amount | str] = {
-            "pv": Amount(r.pv_pa_m_s, "pv"),
-            "limit": Amount(r.pv_limit_pa_m_s, "pv"),
-            "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
-            "f_t": f"{r.pv_temperature_factor:.2f}",
-            "temp": Amount(app.ambient_c, "temperature"),
-            "f_lub": f"{r.pv_lubrication_factor:.2f}",
-        }
-        line = ""
-        if s.temperature_max_c is not None and s.temperature_max_c > pv_derating.REFERENCE_C:
-            line = " (igus: straight from the {ref} rating to none at the material's {t_max})"
-            values["ref"] = Amount(pv_derating.REFERENCE_C, "temperature")
-            values["t_max"] = Amount(s.temperature_max_c, "temperature")
         return Phrase(
             "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}: its rating "
-            "{rating} times {f_t} at the ambient {temp}" + line + " and {f_lub} for its "
-            "lubrication (" + _lubrication_note(app) + ").",
-            values,
+            "{rating} {derated}.",
+            {
+                "pv": Amount(r.pv_pa_m_s, "pv"),
+                "limit": Amount(r.pv_limit_pa_m_s, "pv"),
+                "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
+                "derated": derating(app, s, r),
+            },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
@@ -112,7 +103,22 @@ def no_pv_left(app: Application, r: Quantities[float]) -> Phrase:
     )
 
 
-def _lubrication_note(app: Application) -> str:
-    """The lubrication factor's provenance and source, for the engineer reading it."""
+def derating(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
+    """How a PV rating is derated: the temperature factor at the ambient, with the line
+    it is read from, and the lubrication factor, with its provenance and source."""
     _, kind, source = pv_derating.LUBRICATION_FACTORS[app.lubrication]
-    return f"{app.lubrication}, {kind}: {source}"
+    values: dict[str, Amount | str] = {
+        "f_t": f"{r.pv_temperature_factor:.2f}",
+        "temp": Amount(app.ambient_c, "temperature"),
+        "f_lub": f"{r.pv_lubrication_factor:.2f}",
+        "lub": f"{app.lubrication}, {kind}: {source}",
+    }
+    line = ""
+    if s.temperature_max_c is not None and s.temperature_max_c > pv_derating.REFERENCE_C:
+        line = " (igus: straight from the {ref} rating to none at the material's {t_max})"
+        values["ref"] = Amount(pv_derating.REFERENCE_C, "temperature")
+        values["t_max"] = Amount(s.temperature_max_c, "temperature")
+    return Phrase(
+        "times {f_t} at the ambient {temp}" + line + " and {f_lub} for its lubrication ({lub})",
+        values,
+    )
