@@ -357,6 +357,7 @@ TEXT_FORMATS: dict[Quantity, str] = {
     "pv": ".3g",
     "years": ".3g",
     "temperature": ".4g",
+    "travel": ",.4g",
     "temperature_rise": ".3g",
     "factor": "g",
     "frequency": ".6g",

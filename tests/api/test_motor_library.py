@@ -21,7 +21,7 @@ BASE = {"load_n": 20.0, "speed_mm_s": 12.0, "length_mm": 350.0, "stroke_mm": 200
 
 #: A desktop 3D printer's Z axis: a 1 kg gantry on one Tr8x8(P2) screw, 12 mm/s, the
 #: SS2422-5041 (0.186 N m) on a 40 kHz controller at 16 microsteps, 10 um tolerance,
-#: 40 moves a day for 5 years, the motor's holding torque (0.05 N m) holding the load.
+#: 40 moves a day for 5 years, a 0.05 N m brake holding the load with the power off.
 Z_AXIS = {
     "load_n": 0.0,
     "moving_mass_kg": 1.0,
