@@ -125,13 +125,13 @@ class Quantities(Generic[V]):
     #: The nut's engaged flanks: their area (L / P) pi d2 H1 (NaN without a thread pitch),
     #: their sliding speed (the helix at d2; NaN without d2), the contact pressure the nut
     #: material allows there and the load that pressure carries over the engaged flank
-    #: area (NaN: the nut gives no rating).
-    #: the flanks' permissible PV: the nut material's, derated as ``pv_limit_pa_m_s``
-    nut_pv_limit_pa_m_s: V
+    #: area (NaN: the nut gives no rating), and the nut material's permissible PV there,
+    #: derated as ``pv_limit_pa_m_s`` (NaN: none given).
     flank_area_m2: V
     sliding_speed_m_s: V
     nut_allowed_pressure_pa: V
     nut_allowed_load_n: V
+    nut_pv_limit_pa_m_s: V
     #: The axial load the nut is rated to carry in motion: the size's design load where
     #: the catalog gives one, else a polymer nut's dynamic flank pressure over the engaged
     #: flank area (NaN: neither).
