@@ -336,7 +336,7 @@ class ApplicationInputs(BaseModel):
         """A step rate limit needs the step angle, given or the library motor's."""
         known = info.data.get("step_angle_deg") is not None or info.data.get("motor")
         if value is not None and not known:
-            raise ValueError("needs step_angle_deg or a library motor")
+            raise ValueError('needs step_angle_deg or a library motor ("any" for every one)')
         return value
 
     @field_validator("motor_holding_torque_nm", check_fields=False)

@@ -126,3 +126,25 @@ def test_the_page_ranks_pairs_with_the_motor_any(client: TestClient) -> None:
     assert "share of the motor used" in caption.text
     without = BeautifulSoup(client.get("/", params=params | {"motor": ""}).text, "html.parser")
     assert without.select("table.pairs") == []
+
+
+def test_a_controller_step_rate_limits_the_stepper_pairs_alone(client: TestClient) -> None:
+    """A 5 kHz controller at 16 microsteps allows 5000 x 60 / 3200 = 93.75 rpm: at
+    50 mm/s only leads of 50 / 93.75 x 60 = 32 mm and up keep a stepper in step, so
+    stepper pairs are lost; a servo has no step rate, so its selection is the same. Without
+    a motor the limit has no step angle to work with: a 422 that names "any"."""
+    limit = {"max_step_rate_hz": 5000.0, "microsteps": 16}
+    bare = client.get("/api/v1/pairs", params={**AXIS, **limit})
+    assert bare.status_code == 422
+    assert '"any"' in bare.json()["detail"][0]["message"]
+    free, limited = _pairs(client), _pairs(client, motor="any", **limit)
+    assert 0 < limited["pairs_passed"] < free["pairs_passed"]
+    servo = {**AXIS, "motor": "yaskawa-sgm7j-01a"}
+    counts = [
+        client.get("/api/v1/select", params=params).json()["counts"]["passed"]
+        for params in (servo, {**servo, **limit})
+    ]
+    assert counts[0] == counts[1] > 0
+    stepper = {**AXIS, "motor": "17hs19-2004s1", **limit}
+    kept = client.get("/api/v1/select", params=stepper).json()["candidates"]
+    assert kept and all(c["lead_mm"] >= 32.0 for c in kept)
