@@ -11,7 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from app.contract.units import from_si, to_si
-from app.core.formulas import buckling, efficiency, geometry, pv, torque
+from app.core.formulas import buckling, efficiency, geometry, heat, pv, servo, stepper, torque, wear
 from app.core.formulas import critical_speed as cs
 
 #: largest relative difference from a published value the app may show.
@@ -21,6 +21,8 @@ IN = to_si(1.0, "in")
 LBF = to_si(1.0, "lbf")
 STEEL_E, STEEL_RHO = 206e9, 7850.0
 SQUARE = 1.0
+#: one hour [s] (SKF's lives are in operating hours).
+HOUR_S = 3600.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,6 +75,16 @@ def _bnb_pv() -> float:
     p = pv.contact_pressure(35 * LBF, d * length)
     v = pv.surface_speed(120.0, geometry.helix_travel(0.0, d))
     return from_si(p * v, "psi ft/min")
+
+
+def _skf_composite_life_h() -> float:
+    """SKF's PTFE composite bushing life G_h = c KM / (p v) (n = 1) as Archard's law in
+    time: the wear depth allowed over the wear rate is h / k = c KM, in Pa m."""
+    n_mm2 = to_si(1.0, "MPa")  # SKF's p is in N/mm^2
+    h_over_k = 1.3 * 1 * 1 * 0.6 * 1.5 * 480 * n_mm2 * HOUR_S
+    depth_m, speed_m_s = 1e-4, 0.01
+    sliding = wear.wear_life_sliding(depth_m, depth_m / h_over_k, 0.025 * n_mm2 / speed_m_s)
+    return sliding / speed_m_s / HOUR_S
 
 
 def _euler(e_pa: float, d_or_i: float, length_m: float, fixity: str, round_d: bool) -> float:
@@ -136,5 +148,20 @@ EXAMPLES: tuple[Example, ...] = (
     Example("Peak travel rate", f"{NOOK}, steps 2–3",
             "triangular profile, peak 2 × 3.6 in/s, 1 in lead", 432.0, "in/min",
             lambda: geometry.screw_speed_rpm(2 * 36 * IN / 10.0, 1 * IN)),
+    Example("Stepper corner speed", "Farnell, Stepper motor calculator",
+            "24 V, 2 mH, 1.5 A, 200 steps a turn (R neglected)", 1200.0, "rpm",
+            lambda: stepper.corner_speed_rpm(24.0, 1.5, 0.0, 0.002, 1.8)),
+    Example("Stepper back-EMF", "Duet3D, back EMF due to rotation (D. Crocker)",
+            "holding 0.55 N m at 1.68 A, 5 rev/s", 7.3, "V",
+            lambda: stepper.back_emf_constant(0.55, 1.68) * 2 * math.pi * 5.0),
+    Example("Brushed DC motor torque", "Magmotor C21-F-300FX performance sheet (2022)",
+            "48 V, stall 342 oz in, no load 3780 rpm, at 3117 rpm", 60.0, "oz in",
+            lambda: servo.peak_torque_nm(3117.0, 342.0, 0.0, 3780.0, 0.0)),
+    Example("Fin heat", "Incropera & DeWitt, Heat and Mass Transfer, 6th ed., Example 3.9",
+            "5 mm copper rod (k 398), h 100 W/(m² K), 75 K", 8.3, "W",
+            lambda: heat.fin_conductance(0.005, 398.0, 100.0) * 75.0),
+    Example("Sliding wear life", "SKF, composite plain bearings, calculation example",
+            "PTFE composite, c 1.17, KM 480, p v 0.025 applied", 22500.0, "h",
+            _skf_composite_life_h),
 )
 # fmt: on
