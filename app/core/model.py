@@ -106,10 +106,15 @@ class Application:
     lubrication: Lubrication = "dry"
 
     @property
+    def lubricated(self) -> bool:
+        """The nut is greased or oiled."""
+        return self.lubrication != "dry"
+
+    @property
     def oil_reaches_nut(self) -> bool:
         """Oil or grease meets the screw and nut: oil is present around the axis, or the
-        nut is lubricated (greased or oiled)."""
-        return self.oil_present or self.lubrication != "dry"
+        nut is lubricated."""
+        return self.oil_present or self.lubricated
 
 
 @dataclass(frozen=True, slots=True)

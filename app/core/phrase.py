@@ -5,6 +5,7 @@ The core never writes a unit into text. A check's message or fix is a ``Phrase``
 measures) or plain words; ``app.contract.units`` renders it in the units the reader chose.
 """
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Literal
@@ -70,3 +71,20 @@ def join(parts: "list[Phrase]", separator: str = " ") -> Phrase:
     return Phrase(
         separator.join("{" + n + "}" for n in names), dict(zip(names, parts, strict=True))
     )
+
+
+def figures(value: float, digits_below: int = 7) -> str:
+    """A count or life to three significant figures as an engineer writes it: without an
+    exponent from 0.001 to below 10^``digits_below``, thousands grouped.
+
+    >>> figures(2391.7), figures(262.04), figures(0.04567), figures(4.2e8), figures(1.5e-5)
+    ('2,390', '262', '0.0457', '4.2e+08', '1.5e-05')
+    >>> figures(0.0), figures(float("inf")), figures(28_962_114.0, digits_below=15)
+    ('0', 'inf', '29,000,000')
+    """
+    if not math.isfinite(value) or value == 0:
+        return f"{value:.3g}"
+    if not -3 <= math.floor(math.log10(abs(value))) < digits_below:
+        return f"{value:.3g}"
+    rounded = float(f"{value:.3g}")
+    return f"{rounded:,.0f}" if rounded >= 100 else f"{rounded:.3g}"

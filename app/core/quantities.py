@@ -144,11 +144,10 @@ class Quantities(Generic[V]):
     wear_life_years: V
     #: Heat: the cycle's mean speed [m/s] (the top speed without a stroke), the thread's
     #: friction power at it [W], and the nut's steady rise over the ambient [K] (NaN: no
-    #: heat balance), and its steady temperature, the ambient plus that rise [C]
+    #: heat balance)
     heat_speed_m_s: V
     friction_power_w: V
     nut_temperature_rise_k: V
-    nut_temperature_c: V
     lead_error_m: V
     thermal_growth_m: V
     holding_seed_nm: V
@@ -416,7 +415,6 @@ def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
         "heat_speed_m_s": np.full(len(t), mean_speed),
         "friction_power_w": power,
         "nut_temperature_rise_k": rise,
-        "nut_temperature_c": app.ambient_c + rise,
     }
 
 

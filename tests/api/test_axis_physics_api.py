@@ -6,38 +6,17 @@ second law on the moving mass), never read back from the app."""
 
 import math
 import re
-from collections.abc import Iterator
 from typing import Any
 
 import pytest
-from fastapi import FastAPI
 from fastapi.testclient import TestClient
+
+from tests.api.calls import check, evaluate, names
 
 G = 9.80665
 COS_ACME = math.cos(math.radians(14.5))
 COS_ISO = math.cos(math.radians(15.0))
 API = "/api/v1"
-
-
-@pytest.fixture(scope="module")
-def client(app: FastAPI) -> Iterator[TestClient]:
-    with TestClient(app) as test_client:
-        yield test_client
-
-
-def evaluate(client: TestClient, screw: str, **application: Any) -> Any:
-    body = {"application": application, "screw": {"catalog_id": screw}}
-    response = client.post(f"{API}/evaluate", json=body)
-    assert response.status_code == 200, response.text
-    return response.json()["candidate"]
-
-
-def check(candidate: dict[str, Any], name: str) -> dict[str, Any]:
-    return next(c for c in candidate["checks"] if c["name"] == name)
-
-
-def names(candidate: dict[str, Any]) -> set[str]:
-    return {c["name"] for c in candidate["checks"]}
 
 
 def eta(tan_l: float, mu: float, cos_a: float) -> float:

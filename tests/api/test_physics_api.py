@@ -3,24 +3,17 @@ arithmetic from the reference formulas (engineering.md; Shigley, Mechanical Engi
 Design, 10th ed., sec. 4-11 to 4-13 and 8-2), never against the app's own output."""
 
 import math
-from collections.abc import Iterator
 from typing import Any
 
 import pytest
-from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog
+from tests.api.calls import check, evaluate
 
 G = 9.80665
 COS_ACME = math.cos(math.radians(14.5))
 API = "/api/v1"
-
-
-@pytest.fixture(scope="module")
-def client(app: FastAPI) -> Iterator[TestClient]:
-    with TestClient(app) as test_client:
-        yield test_client
 
 
 def post(client: TestClient, path: str, body: dict[str, Any]) -> Any:
@@ -28,15 +21,6 @@ def post(client: TestClient, path: str, body: dict[str, Any]) -> Any:
     response = client.post(f"{API}/{path}", json=body, params=params)
     assert response.status_code == 200, response.text
     return response.json()
-
-
-def evaluate(client: TestClient, screw: str | dict[str, Any], **app: Any) -> Any:
-    target = {"catalog_id": screw} if isinstance(screw, str) else screw
-    return post(client, "evaluate", {"application": app, "screw": target})["candidate"]
-
-
-def check(candidate: dict[str, Any], name: str) -> dict[str, Any]:
-    return next(c for c in candidate["checks"] if c["name"] == name)
 
 
 def eta(lead: float, d_p: float, mu: float, cos_a: float = COS_ACME) -> float:

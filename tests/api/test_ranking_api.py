@@ -5,11 +5,9 @@ from rest, rotor included (``torque.peak_motor_nm``); "lowest torque" orders by 
 "lowest RMS torque" by the cycle's RMS (``torque.rms_nm``). Without a move both order by
 the drive torque while accelerating (``torque.total_nm``), the torque shown then."""
 
-from collections.abc import Iterator
 from typing import Any
 
 import pytest
-from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
 #: The pick-and-place axis of issue 21: 0.5 kg at 10 m/s^2 with a NEMA 17 rotor
@@ -18,12 +16,6 @@ PICK_AND_PLACE = {
     "load_n": 0, "speed_mm_s": 250, "length_mm": 300, "stroke_mm": 200, "accel_mm_s2": 10000,
     "moving_mass_kg": 0.5, "motor_inertia_kg_m2": 5.4e-6, "limit": 100, "advice": "reject",
 }  # fmt: skip
-
-
-@pytest.fixture(scope="module")
-def client(app: FastAPI) -> Iterator[TestClient]:
-    with TestClient(app) as test_client:
-        yield test_client
 
 
 def candidates(client: TestClient, **query: Any) -> list[dict[str, Any]]:

@@ -38,13 +38,13 @@ class OilCompatibility(Check):
         return {
             "oil_compatible": t.oil_compatible,
             "oil_present": app.oil_present,
-            "lubricated": app.lubrication != "dry",
+            "lubricated": app.lubricated,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if passed:
             return Phrase("No oil or grease reaches it: this variant may be used.")
-        if app.lubrication != "dry":
+        if app.lubricated:
             return Phrase(
                 "This variant must not be lubricated, and the nut is {lubrication}.",
                 {"lubrication": app.lubrication},
@@ -52,6 +52,6 @@ class OilCompatibility(Check):
         return Phrase("This variant must not be used where oil contamination is possible.")
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        if app.lubrication != "dry" and not app.oil_present:
+        if app.lubricated and not app.oil_present:
             return Phrase("Run the nut dry, or use a variant rated for oil (uncoated).")
         return Phrase("Use a variant rated for oil (uncoated).")

@@ -16,7 +16,7 @@ from app.core.checks.base import (
     same,
     where_given,
 )
-from app.core.phrase import Amount, Phrase
+from app.core.phrase import Amount, Phrase, figures
 
 #: The catalog's name of the ranged wear rate (its ends give the life band).
 WEAR_RATE = "specific_wear_rate_mm3_n_m"
@@ -88,7 +88,7 @@ class WearLife(Check):
                 "travel": Amount(r.wear_travel_m, "travel"),
                 "low": Amount(low_m, "travel"),
                 "high": Amount(high_m, "travel"),
-                "cycles": _count(r.wear_travel_m / cycle_m),
+                "cycles": figures(r.wear_travel_m / cycle_m, digits_below=15),
                 "years": Amount(r.wear_life_years, "years"),
                 "required": Amount(app.required_life_years or 0.0, "years"),
             },
@@ -111,13 +111,3 @@ class WearLife(Check):
         # the running thrust is the load plus what does not change with it (a weight)
         load_n = app.load_n - r.force_n * (1.0 - r.wear_life_years / years)
         return {"load_n": load_n} if load_n >= 0.0 else None
-
-
-def _count(value: float) -> str:
-    """A count to three figures, written out and grouped: 29,000,000, not 2.9e+07.
-
-    >>> _count(28_962_114.0), _count(12.34), _count(float("inf"))
-    ('29,000,000', '12.3', 'inf')
-    """
-    rounded = float(f"{value:.3g}")
-    return f"{rounded:,.0f}" if 100 <= rounded < 1e15 else f"{rounded:.3g}"
