@@ -32,6 +32,7 @@ VARIANT_FIELDS = frozenset(
         "bearing_pressure_mpa_by_speed_m_s",
         "max_pressure_mpa",
         "dynamic_pressure_mpa",
+        "dynamic_thrust_n_by_size",
         "bearing_pv_limit_mpa_m_s",
         "max_sliding_speed_m_s",
         "temperature_range_c",

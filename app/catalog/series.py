@@ -14,7 +14,7 @@ from app.catalog.entry import Entry
 from app.catalog.family import Family, IdVariant
 from app.catalog.models import Material, Series, Sourced
 from app.contract.units import SI_UNITS, UNITS, from_si, to_si
-from app.core.formulas import geometry, pv, trapezoidal
+from app.core.formulas import bearing, geometry, pv, trapezoidal
 from app.core.model import Provenance, ScrewSpec
 
 SERIES_FIELDS = frozenset(
@@ -86,6 +86,8 @@ BEARING_VALUES = {
     "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
 }
 #: Variant values that rate the nut's wear life (Archard's law, both needed).
+#: A maker's allowable dynamic thrust of the nut by thread size, rows [d mm, P mm, N].
+THRUST_TABLE = "dynamic_thrust_n_by_size"
 WEAR_VALUES = {
     "wear_rate": ("specific_wear_rate_mm3_n_m", "mm³/(N m)"),
     "allowed_wear": ("allowed_wear_to_flank_height", ""),
@@ -349,6 +351,30 @@ def _bearing_table(v: Entry) -> Sourced:
     return Sourced(table, "m/s, Pa", v.prov(name))
 
 
+def _thrust_table(v: Entry) -> Sourced:
+    """A maker's allowable dynamic thrust by thread size, rows [d mm, P mm, thrust N],
+    to SI (m, m, N): each size once, its pitch above 0 and below its diameter, every
+    thrust above 0; not beside a ``dynamic_pressure_mpa`` (one rating in motion)."""
+    if v.has("dynamic_pressure_mpa"):
+        raise v.fail(THRUST_TABLE, "give either this or dynamic_pressure_mpa, not both")
+    rows = v.rows(THRUST_TABLE, 3)
+    if not rows:
+        raise v.fail(THRUST_TABLE, "at least one row [d mm, P mm, thrust N]")
+    for d_mm, p_mm, thrust_n in rows:
+        if not 0.0 < p_mm < d_mm:
+            raise v.fail(
+                THRUST_TABLE, f"row [{d_mm:g}, {p_mm:g}]: the pitch must be > 0 and below d"
+            )
+        if thrust_n <= 0.0:
+            raise v.fail(THRUST_TABLE, f"row Tr{d_mm:g}x{p_mm:g}: the thrust must be > 0")
+    sizes = [row[:2] for row in rows]
+    twice = next((size for size in sizes if sizes.count(size) > 1), None)
+    if twice is not None:
+        raise v.fail(THRUST_TABLE, f"size Tr{twice[0]:g}x{twice[1]:g} is listed twice")
+    table = tuple((to_si(d, "mm"), to_si(p, "mm"), thrust) for d, p, thrust in rows)
+    return Sourced(table, "m, m, N", v.prov(THRUST_TABLE))
+
+
 def _variant_fields(v: Entry) -> dict[str, Sourced]:
     """A variant's values in SI; the optional ones only when the data gives them."""
     fields = {
@@ -369,6 +395,8 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
         fields["nut_material"] = Sourced(v.text("nut_material"), "", v.prov("nut_material"))
     if v.has("bearing_pressure_mpa_by_speed_m_s"):
         fields["bearing_pressure"] = _bearing_table(v)
+    if v.has(THRUST_TABLE):
+        fields["dynamic_thrust"] = _thrust_table(v)
     if v.has("temperature_range_c"):
         t_range = v.range("temperature_range_c", positive=False)
         fields["temperature_range"] = Sourced(t_range, "C", v.prov("temperature_range_c"))
@@ -543,6 +571,73 @@ def _screw(
     )
 
 
+def _flank_pressure(row: tuple[float, ...], length_to_d: float) -> tuple[float, float]:
+    """A table row's thrust over the engaged flanks of its size's nut, ``length_to_d``
+    x d long (rule 10): (pressure Pa, area m^2)."""
+    d_m, pitch_m, thrust_n = row
+    area = bearing.engaged_flank_area(
+        length_to_d * d_m,
+        pitch_m,
+        trapezoidal.pitch_diameter(d_m, pitch_m),
+        trapezoidal.flank_height(pitch_m),
+    )
+    return float(bearing.bearing_pressure(thrust_n, area)), float(area)
+
+
+def _thrust_pressure(
+    table: Sourced, d_m: float, pitch_m: float, nut_length_m: float
+) -> tuple[float, Provenance]:
+    """The nut's flank pressure in motion from its maker's thrust table (rule 10): for a
+    listed size, its thrust over this nut's engaged flanks; for another size, the lowest
+    pressure of the listed sizes, each over a nut of this nut's length-to-d ratio."""
+    ratio = nut_length_m / d_m
+    rows = table.value
+    own = [r for r in rows if math.isclose(r[0], d_m) and math.isclose(r[1], pitch_m)]
+    row = own[0] if own else min(rows, key=lambda r: _flank_pressure(r, ratio)[0])
+    pressure, area = _flank_pressure(row, ratio)
+    size = f"Tr{from_si(row[0], 'mm'):g}x{from_si(row[1], 'mm'):g}"
+    rated = (
+        f"{size} {row[2]:g} N over {area / to_si(1.0, 'mm') ** 2:.0f} mm^2 of engaged flanks "
+        f"({ratio * row[0] / row[1]:g} turns x pi d2 H1) = {from_si(pressure, 'MPa'):.3g} MPa"
+    )
+    if own:
+        return pressure, Provenance(table.provenance.kind, f"{rated}: {table.provenance.source}")
+    rule = (
+        f"this size is not in the maker's table: the lowest flank pressure of its sizes, "
+        f"{rated} for a nut {ratio:g} d long"
+    )
+    return pressure, Provenance("derived", f"{rule}: {table.provenance.source}")
+
+
+def _thrust_rated(variant: Variant, fields: Mapping[str, Sourced], series_ends: Ends) -> Variant:
+    """A variant rated by its maker's thrust table, with the flank pressure in motion it
+    gives this size (``dynamic_pressure``), recomputed at each end of an assumed nut
+    length so that the catalog nut's rating stays the maker's thrust."""
+    table = variant.fields.get("dynamic_thrust")
+    if table is None:
+        return variant
+    d_m, pitch_m = fields["outer_diameter"].value, fields["pitch"].value
+    length_m = fields["nut_length"].value
+    pressure, prov = _thrust_pressure(table, d_m, pitch_m, length_m)
+    ends = dict(variant.ends)
+    for name, pair in series_ends.items():
+        if any("nut_length_m" in end for end in pair):
+            low, high = (
+                {
+                    **end,
+                    "dynamic_pressure_pa": _thrust_pressure(
+                        table, d_m, pitch_m, end["nut_length_m"]
+                    )[0],
+                }
+                if "nut_length_m" in end
+                else end
+                for end in pair
+            )
+            ends[name] = (low, high)
+    rated = {**variant.fields, "dynamic_pressure": Sourced(pressure, "Pa", prov)}
+    return replace(variant, fields=rated, ends=ends)
+
+
 @dataclass(frozen=True, slots=True)
 class _Context:
     """What every candidate of one series shares beyond its fields."""
@@ -553,7 +648,8 @@ class _Context:
 
 def _check_bearing(entry: Entry, fields: Mapping[str, Sourced], variants: list[Variant]) -> None:
     """A nut rated by contact pressure needs the engaged area: pitch and nut length."""
-    rated = [v.key for v in variants if {"bearing_pressure", *BEARING_VALUES} & v.fields.keys()]
+    by_pressure = {"bearing_pressure", "dynamic_thrust", *BEARING_VALUES}
+    rated = [v.key for v in variants if by_pressure & v.fields.keys()]
     if rated and not {"pitch", "nut_length"} <= fields.keys():
         raise entry.fail(
             "nut_length_mm",
@@ -587,6 +683,8 @@ def build_series(
     variants = _variants(entry, family)
     _check_bearing(entry, fields, variants)
     _check_static_friction(entry, fields, variants)
+    series_ends = _series_ends(entry, family, material)
+    variants = [_thrust_rated(v, fields, series_ends) for v in variants]
     for v in variants:
         fields.update({f"{name}_{v.field_suffix}": s for name, s in v.fields.items()})
     series = Series(
@@ -599,7 +697,7 @@ def build_series(
         fields=fields,
         screws=(),
     )
-    context = _Context(entry.prov("nut_variants"), _series_ends(entry, family, material))
+    context = _Context(entry.prov("nut_variants"), series_ends)
     screws = tuple(
         _screw(family, series, v, lead, context) for lead in fields["leads"].value for v in variants
     )

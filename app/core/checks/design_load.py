@@ -1,6 +1,6 @@
 """Axial force against the load the nut is rated for in motion: the size's design load
-(when the catalog gives one), else a polymer nut's dynamic load (its permissible flank
-pressure in motion over the engaged flank area)."""
+(when the catalog gives one), else the nut's allowable dynamic thrust (its flank pressure
+in motion, taken from its maker's thrust table, over the engaged flank area)."""
 
 from app.core.checks.base import (
     MARGIN_NOTE,
@@ -26,15 +26,16 @@ class DesignLoad(Check):
     description = (
         "The peak thrust (running load plus the force that accelerates or brakes the "
         "moving mass, the larger) against the load the nut of this size is designed for: "
-        "the size's design load, or for a polymer nut its dynamic load, the permissible "
-        "flank pressure in motion over the engaged flanks (nut length over pitch turns of "
-        "pi d2 H1 each)."
+        "the size's design load, or for a sliding nut its allowable dynamic thrust: the "
+        "maker's published thrust for the size (or, for a size its table does not list, "
+        "the lowest flank pressure of the listed sizes) as a flank pressure in motion over "
+        "the engaged flanks (nut length over pitch turns of pi d2 H1 each)."
     )
     quantity = "force"
     formula = "F = F_peak; F_design = F_size"
     source = (
-        "catalog design load of the size, or p_dyn x (L_nut / P) pi d2 H1 for a polymer "
-        "nut (see their provenance)"
+        "catalog design load of the size, or p_dyn x (L_nut / P) pi d2 H1, p_dyn from the "
+        "nut maker's allowable dynamic thrust table (see its provenance)"
     )
     sources = ("design_load", "dynamic_pressure", "nut_length", "pitch")
     capacity_sources = ("design_load", "dynamic_pressure", "nut_length")
@@ -57,8 +58,8 @@ class DesignLoad(Check):
             return Phrase("Peak thrust {f} " + verb + " the design load {cap}.", values)
         values.update(_polymer_values(s))
         return Phrase(
-            "Peak thrust {f} " + verb + " the dynamic load {cap} of this {material} nut: "
-            "{p} over its engaged flanks ({kind}: {source}).",
+            "Peak thrust {f} " + verb + " the allowable dynamic thrust {cap} of this "
+            "{material} nut: {p} over its engaged flanks ({kind}: {source}).",
             values,
         )
 
@@ -66,7 +67,7 @@ class DesignLoad(Check):
         if s.design_load_n is None:
             return Phrase(
                 "Reduce the peak thrust to at most {cap}, or carry it on a longer nut, a "
-                "larger size or a nut material rated higher in motion (bronze)." + MARGIN_NOTE,
+                "larger size or a nut material rated higher in motion." + MARGIN_NOTE,
                 {"cap": Amount(at_most(r.rated_load_n), "force")},
             )
         larger = " or choose a larger size" if reach.max_design_load_n >= r.peak_force_n else ""
@@ -82,10 +83,10 @@ class DesignLoad(Check):
 
 
 def _polymer_values(s: ScrewSpec) -> dict[str, Amount | str]:
-    """The polymer nut's rating in words: material, pressure and where it comes from."""
+    """The nut's rating in motion in words: material, pressure and where it comes from."""
     prov = s.provenance.get("dynamic_pressure")
     return {
-        "material": s.nut_material or "polymer",
+        "material": s.nut_material or "sliding",
         "p": Amount(s.dynamic_pressure_pa or 0.0, "pressure"),
         "kind": prov.kind if prov else "derived",
         "source": prov.source if prov else "catalog",
