@@ -1,6 +1,7 @@
 """Catalog errors for the fields of standard threads, nut bearing limits, ranges and a
 user's file-wide provenance: each names the file, the entry and the field."""
 
+import math
 from pathlib import Path
 
 import pytest
@@ -67,6 +68,74 @@ def test_the_minimal_family_loads(tmp_path: Path) -> None:
     (directory / "x.toml").write_text(FAMILY)
     merged = load_catalog([directory])
     assert [s.id for s in merged.series["X10"].screws] == ["X10x2-bronze", "X10x4(P2)-bronze"]
+
+
+#: The bronze nut's line of the fixture under which a thrust table is added.
+BEARING_LINE = "bearing_pressure_mpa_by_speed_m_s = { value = [[0.05, 11.0], [0.25, 1.0]], "
+
+
+def _thrust(rows: str, extra: str = "") -> str:
+    """The fixture with a maker's thrust table ``rows`` (and ``extra`` lines) on its nut."""
+    line = f'dynamic_thrust_n_by_size = {{ value = {rows}, provenance = "vendor", source = "T" }}'
+    return _changed(BEARING_LINE, f"{line}\n{extra}{BEARING_LINE}")
+
+
+THRUST = "dynamic_thrust_n_by_size"
+THRUST_ERRORS = [
+    pytest.param(_thrust("[[10.0, 2.0]]"), "rows of 3 numbers", id="thrust-row-short"),
+    pytest.param(_thrust("[[10.0, 2.0, -5.0]]"), "numbers >= 0", id="thrust-negative"),
+    pytest.param(_thrust("[[10.0, 2.0, 0.0]]"), "the thrust must be > 0", id="thrust-zero"),
+    pytest.param(_thrust("[]"), "at least one row", id="thrust-empty"),
+    pytest.param(_thrust("[[2.0, 2.0, 90.0]]"), "below d", id="thrust-pitch-not-below-d"),
+    pytest.param(_thrust("[[10.0, 0.0, 90.0]]"), "pitch must be > 0", id="thrust-pitch-zero"),
+    pytest.param(
+        _thrust("[[10.0, 2.0, 255.0], [10.0, 2.0, 278.0]]"),
+        "size Tr10x2 is listed twice",
+        id="thrust-size-twice",
+    ),
+    pytest.param(
+        _thrust(
+            "[[10.0, 2.0, 255.0]]",
+            'dynamic_pressure_mpa = { value = 2.5, provenance = "assumed", source = "x", '
+            "range = [2.5, 7.5] }\n",
+        ),
+        "either this or dynamic_pressure_mpa",
+        id="thrust-beside-a-pressure",
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "reason"), THRUST_ERRORS)
+def test_a_bad_thrust_table_names_file_entry_and_field(
+    tmp_path: Path, text: str, reason: str
+) -> None:
+    """A maker's allowable dynamic thrust table (rows [d mm, P mm, thrust N]) that is not
+    one positive thrust per size stops start-up, naming the file, variant and field."""
+    with pytest.raises(CatalogError) as caught:
+        _load(tmp_path, text)
+    error = caught.value
+    assert (error.file, error.entry, error.field) == ("x.toml", "X10.variants.bronze", THRUST)
+    assert reason in str(error)
+
+
+def test_a_thrust_table_rates_its_size_at_the_published_thrust(tmp_path: Path) -> None:
+    """A listed size rates at its row's thrust, whatever the assumed nut length (the
+    pressure is recomputed at both ends of nut_length_to_d, 1.5 and 2.5 d): X10 rows
+    255 N; a nut 2 d = 20 mm long over P 2 mm engages 10 turns of pi d2 H1 = pi 9 1 mm^2,
+    282.7 mm^2, so 0.902 MPa; at 1.5 d, 15 mm, 212.1 mm^2 and 1.202 MPa."""
+    directory = tmp_path / "extra"
+    directory.mkdir()
+    (directory / "x.toml").write_text(_thrust("[[10.0, 2.0, 255.0], [20.0, 4.0, 980.0]]"))
+    screw = load_catalog([directory]).by_id["X10x2-bronze"]
+    assert screw.dynamic_pressure_pa == pytest.approx(255.0 / (10 * math.pi * 9e-3 * 1e-3))
+    low, high = screw.assumption_ends["nut_length_to_d"]
+    for end in (low, high):
+        area = end["nut_length_m"] / 2e-3 * math.pi * 9e-3 * 1e-3
+        assert end["dynamic_pressure_pa"] * area == pytest.approx(255.0)
+    assert low["dynamic_pressure_pa"] == pytest.approx(1.202e6, rel=1e-3)
+    prov = screw.provenance["dynamic_pressure"]
+    assert (prov.kind, prov.source) == ("vendor", f"{prov.source.split(': ')[0]}: T")
+    assert prov.source.startswith("Tr10x2 255 N over 283 mm^2")
 
 
 @pytest.mark.parametrize(
