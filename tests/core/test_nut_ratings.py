@@ -102,3 +102,52 @@ def test_a_larger_size_that_slides_faster_says_why_it_fails(catalog: Catalog) ->
     text = render(large.message)
     assert "less than the 11 MPa it allows up to 50 mm/s" in text
     assert "a larger size slides faster at the same speed of turning" in text
+
+
+#: Published allowable dynamic thrust [N] of a nut of each size and material, with its
+#: source: MISUMI's lead screw nut tables as quoted in issue 29 (resin POM Tr10x2
+#: 255-278 N, Tr20x4 980-1071 N across its nut types; bronze Tr20x4 9.81 kN). The lower
+#: end of each range is what a rating may not pass; filled PTFE has no maker's rating and
+#: is held to 0.7 x MISUMI's POM value (Neale, Tribology Handbook A5: filled PTFE 7 MPa
+#: against a thermoplastic's 10 MPa).
+PUBLISHED = [
+    pytest.param("Tr10x2", "acetal", 255.0, id="MISUMI POM Tr10x2 255-278 N"),
+    pytest.param("Tr20x4", "acetal", 980.0, id="MISUMI POM Tr20x4 980-1071 N"),
+    pytest.param("Tr20x4", "bronze", 9810.0, id="MISUMI bronze Tr20x4 9.81 kN"),
+    pytest.param("Tr10x2", "ptfe", 0.7 * 255.0, id="0.7 x MISUMI POM Tr10x2"),
+    pytest.param("Tr20x4", "ptfe", 0.7 * 980.0, id="0.7 x MISUMI POM Tr20x4"),
+]
+SLOW_AXIS = Application(load_n=100.0, speed_m_s=0.0005, length_m=0.5)
+
+
+@pytest.mark.parametrize(("size", "nut", "published_n"), PUBLISHED)
+@pytest.mark.parametrize("screw", ["", "-304"], ids=["C45", "304"])
+def test_a_listed_nut_rates_at_its_published_thrust(
+    catalog: Catalog, size: str, nut: str, published_n: float, screw: str
+) -> None:
+    """The design-load check's limit for the catalog nut of a listed size is the maker's
+    value: never above it, and not below it by more than rounding."""
+    result = evaluate(SLOW_AXIS, catalog.by_id[f"{size}{screw}-{nut}"])
+    rated = next(c for c in result.checks if c.name == "design_load")
+    assert rated.limit <= published_n * (1 + 1e-12)
+    assert rated.limit == pytest.approx(published_n, rel=1e-9)
+
+
+@pytest.mark.parametrize("nut", ["acetal", "bronze", "ptfe"])
+def test_no_size_rates_above_the_flank_pressure_of_a_listed_one(catalog: Catalog, nut: str) -> None:
+    """Every ISO size's flank pressure in motion is at most that of a size its maker lists
+    (the lowest listed one governs the sizes not listed), so no unlisted size is rated
+    more generously per unit of flank than a part the maker publishes; and every ISO
+    nut of the three materials has a rating."""
+    screws = [s for s in catalog.screws if s.family_id in ("TR-C45", "TR-304")]
+    rated = [s for s in screws if s.variant == nut]
+    assert rated and all(s.dynamic_pressure_pa for s in rated)
+    unlisted = "this size is not in the maker's table"
+    listed = [s for s in rated if not s.provenance["dynamic_pressure"].source.startswith(unlisted)]
+    assert {s.id.split("-")[0] for s in listed} >= {"Tr20x4"}
+    lowest = min(s.dynamic_pressure_pa or 0.0 for s in listed)
+    for s in rated:
+        prov = s.provenance["dynamic_pressure"]
+        if prov.source.startswith(unlisted):
+            assert s.dynamic_pressure_pa == pytest.approx(lowest), s.id
+            assert prov.kind == "derived", s.id
