@@ -56,14 +56,17 @@ def table_pressure(speed_m_s: float, table: Sequence[tuple[float, float]]) -> fl
 
 
 def dynamic_load(dynamic_pressure_pa: float, area_m2: float) -> float:
-    """Permissible dynamic axial load of a polymer nut, F_dyn = p_dyn A [N]: its
-    permissible flank pressure in motion [Pa] over the engaged flank area [m^2]
+    """Allowable dynamic axial load of a sliding nut, F_dyn = p_dyn A [N]: its flank
+    pressure in motion [Pa] (its maker's allowable dynamic thrust over its catalog nut's
+    engaged flanks, catalog/README.md rule 10) over the engaged flank area [m^2]
     (``engaged_flank_area``). NaN where the nut has no such rating.
 
-    Tr20x4 acetal nut 40 mm long, p_dyn 2.5 MPa: A = 10 turns x pi x 18 mm x 2 mm.
+    Tr20x4 acetal nut 40 mm long, MISUMI's 980 N over A = 10 turns x pi x 18 mm x 2 mm
+    (1131 mm^2) is p_dyn = 0.8665 MPa; a 60 mm nut (15 turns) carries 1.5 x 980 N.
 
-    >>> round(float(dynamic_load(2.5e6, 10 * 3.141592653589793 * 0.018 * 0.002)), 1)
-    2827.4
+    >>> a_40 = 10 * 3.141592653589793 * 0.018 * 0.002
+    >>> round(float(dynamic_load(980.0 / a_40, 1.5 * a_40)), 1)
+    1470.0
     """
     return dynamic_pressure_pa * area_m2
 
