@@ -179,8 +179,9 @@ class ScrewSpec:
     #: limit over the engaged flank area [Pa m/s] and its maximum sliding speed [m/s].
     bearing_pressure_table: tuple[tuple[float, float], ...] = ()
     max_pressure_pa: float | None = None
-    #: A polymer nut's permissible flank pressure in motion [Pa]: its dynamic axial load
-    #: is this pressure over the engaged flank area (None: rated otherwise).
+    #: A sliding nut's flank pressure in motion [Pa] (from its maker's allowable dynamic
+    #: thrust): its rating in motion is this pressure over the engaged flank area (None:
+    #: rated otherwise).
     dynamic_pressure_pa: float | None = None
     nut_pv_limit_pa_m_s: float | None = None
     max_sliding_speed_m_s: float | None = None
