@@ -1,9 +1,10 @@
-"""Nut ratings through the API (issue 29, item 2): a sliding nut's allowable dynamic thrust
+"""Nut ratings through the API : a sliding nut's allowable dynamic thrust
 at its maker's published value.
 
-MISUMI's lead screw nut tables give the allowable dynamic thrust per size: resin (POM)
-Tr10x2 255-278 N and Tr20x4 980-1071 N across its nut types (the lower governs), bronze
-Tr20x4 9.81 kN (the figures quoted in issue 29). The catalog turns a listed size's thrust
+MISUMI's "Nuts for Lead Screw" table (Lead Screws - Overview, catalog pp. 685-688; text at
+docslib.org/doc/8572561) gives the allowable dynamic thrust per size: plastic nut Tr10x2
+255 N and Tr20x4 980 N (its high-strength plastic nut 278 N and 1,071 N: the lower
+governs), standard copper-alloy nut Tr20x4 9.81 kN. The catalog turns a listed size's thrust
 into a flank pressure over its nut's engaged flanks, (L / P) pi d2 H1 (Shigley's
 power-screw bearing area; ISO 2904: d2 = d - P / 2, H1 = P / 2), so a user's longer nut
 carries more; a size the table does not list takes the lowest pressure of the listed
@@ -45,7 +46,7 @@ def test_a_tr20x4_acetal_nut_rates_at_misumis_980_n_and_names_the_table(
     assert pressure_mpa == pytest.approx(0.8665, abs=1e-4)
     message = rated["message"]
     assert "allowable dynamic thrust 980 N" in message and "0.867 MPa" in message
-    assert "MISUMI lead screw nut tables" in message and "resin (POM)" in message
+    assert "Nuts for Lead Screw" in message and "the plastic nut" in message
     assert "unlubricated" in message and "sliding speed" in message
     # the fix proposes 5 % inside the rating: 0.95 x 980 N
     assert "at most 931 N" in rated["fix"] and "5 % margin" in rated["fix"]
@@ -75,15 +76,17 @@ def test_a_ptfe_nut_is_rated_below_the_pom_nut(client: TestClient) -> None:
 
 
 def test_an_unlisted_size_takes_the_lowest_listed_pressure(client: TestClient) -> None:
-    """Tr24x5 acetal is not in MISUMI's table: the lower of the listed pressures, Tr20x4's
-    980 N / 1131 mm^2 = 0.8665 MPa (Tr10x2's is 255 / 282.7 = 0.902), over its 48 mm nut
-    (9.6 turns x pi x 21.5 x 2.5 mm^2 = 1621 mm^2): 1405 N. A 60 mm Tr20x4 nut (15 turns)
+    """Tr24x5 acetal is not in MISUMI's table: the lowest of the listed pressures, Tr32x6's
+    2050 N over its 64 mm nut (10.667 turns x pi x 29 x 3 mm^2 = 2915 mm^2) = 0.7032 MPa
+    (Tr20x4's is 980 / 1131 = 0.8665, Tr10x2's 255 / 282.7 = 0.902), over Tr24x5's 48 mm nut
+    (9.6 turns x pi x 21.5 x 2.5 mm^2 = 1621 mm^2): 1140 N. A 60 mm Tr20x4 nut (15 turns)
     carries 1.5 x 980 = 1470 N."""
     tr24 = evaluate(client, "Tr24x5-acetal", **SLOW)
     rated = check(tr24, "design_load")
     area = 9.6 * math.pi * 21.5e-3 * 2.5e-3
-    assert rated["limit"] == pytest.approx(MISUMI_POM_TR20X4_N / (10 * TR20_TURN_M2) * area)
-    assert rated["limit"] == pytest.approx(1405, abs=1)
+    tr32_area = 64 / 6 * math.pi * 29e-3 * 3e-3
+    assert rated["limit"] == pytest.approx(2050 / tr32_area * area)
+    assert rated["limit"] == pytest.approx(1140, abs=1)
     assert tr24["provenance"]["dynamic_pressure"]["kind"] == "derived"
     assert "not in the maker's table" in rated["message"]
     longer = check(evaluate(client, "Tr20x4-acetal", **SLOW, nut_length_mm=60), "design_load")

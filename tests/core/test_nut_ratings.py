@@ -105,17 +105,45 @@ def test_a_larger_size_that_slides_faster_says_why_it_fails(catalog: Catalog) ->
 
 
 #: Published allowable dynamic thrust [N] of a nut of each size and material, with its
-#: source: MISUMI's lead screw nut tables as quoted in issue 29 (resin POM Tr10x2
-#: 255-278 N, Tr20x4 980-1071 N across its nut types; bronze Tr20x4 9.81 kN). The lower
-#: end of each range is what a rating may not pass; filled PTFE has no maker's rating and
-#: is held to 0.7 x MISUMI's POM value (Neale, Tribology Handbook A5: filled PTFE 7 MPa
+#: source: MISUMI, Lead Screws - Overview, "Nuts for Lead Screw" comparison table,
+#: Allowable Dynamic Thrust (N) (catalog pp. 685-688; text at docslib.org/doc/8572561):
+#: the standard (copper-alloy) nut and the plastic nut, the lower of MISUMI's two plastic
+#: nuts (its high-strength one: Tr10x2 278 N, Tr20x4 1,071 N). Every row whose diameter and
+#: pitch is an ISO size of the catalog is here. Filled PTFE has no maker's rating and is
+#: held to 0.7 x MISUMI's plastic value (Neale, Tribology Handbook A5: filled PTFE 7 MPa
 #: against a thermoplastic's 10 MPa).
+MISUMI_STANDARD_N = {
+    "Tr8x1.5": 1470.0,
+    "Tr10x2": 2550.0,
+    "Tr14x3": 4900.0,
+    "Tr18x4": 8720.0,
+    "Tr20x4": 9810.0,
+    "Tr22x5": 12360.0,
+    "Tr28x5": 17950.0,
+    "Tr32x6": 21080.0,
+    "Tr36x6": 25780.0,
+}
+MISUMI_PLASTIC_N = {
+    "Tr10x2": 255.0,
+    "Tr14x3": 490.0,
+    "Tr18x4": 873.0,
+    "Tr20x4": 980.0,
+    "Tr28x5": 1765.0,
+    "Tr32x6": 2050.0,
+}
 PUBLISHED = [
-    pytest.param("Tr10x2", "acetal", 255.0, id="MISUMI POM Tr10x2 255-278 N"),
-    pytest.param("Tr20x4", "acetal", 980.0, id="MISUMI POM Tr20x4 980-1071 N"),
-    pytest.param("Tr20x4", "bronze", 9810.0, id="MISUMI bronze Tr20x4 9.81 kN"),
-    pytest.param("Tr10x2", "ptfe", 0.7 * 255.0, id="0.7 x MISUMI POM Tr10x2"),
-    pytest.param("Tr20x4", "ptfe", 0.7 * 980.0, id="0.7 x MISUMI POM Tr20x4"),
+    *(
+        pytest.param(s, "bronze", n, id=f"MISUMI standard nut {s} {n:g} N")
+        for s, n in MISUMI_STANDARD_N.items()
+    ),
+    *(
+        pytest.param(s, "acetal", n, id=f"MISUMI plastic nut {s} {n:g} N")
+        for s, n in MISUMI_PLASTIC_N.items()
+    ),
+    *(
+        pytest.param(s, "ptfe", 0.7 * n, id=f"0.7 x MISUMI plastic {s}")
+        for s, n in MISUMI_PLASTIC_N.items()
+    ),
 ]
 SLOW_AXIS = Application(load_n=100.0, speed_m_s=0.0005, length_m=0.5)
 

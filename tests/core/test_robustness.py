@@ -21,15 +21,16 @@ Helix Linear's end of life (a quarter of the pitch off the thread, 0.483 H1, was
 assumed): their wear lives nearly doubled, so the Tr14x3 and Tr8x8(P2) PTFE nuts now last
 the 3 years asked and the Tr12x6(P3) and Tr14x6(P3) PTFE nuts no longer hinge on the nut
 length. Two were recorded again when the ISO nuts were held to their maker's allowable
-dynamic thrust (MISUMI POM Tr20x4 980 N, 0.8665 MPa over 1131 mm^2; filled PTFE 0.7 x
-POM, its lowest listed pressure 686 N / 1131 mm^2 = 0.6066 MPa): "any-lead-loaded" (400 N)
-loses the Tr14x3, Tr12x6(P3) and Tr14x6(P3) PTFE nuts (9.33 turns x pi x 12.5 x 1.5 =
-549.8 mm^2, 333 N; 8 x pi x 10.5 x 1.5 = 395.8 mm^2, 240 N), while Tr22x5 PTFE
-(8.8 x pi x 19.5 x 2.5 = 1348 mm^2, 818 N) stays; "heavy-any-lead" (1500 N) loses the
-Tr18x8(P4), Tr20x4, Tr22x5 and Tr24x5 PTFE nuts (686 N at Tr20x4, 983 N at Tr24x5's
-1621 mm^2); bronze sizes and a seed screw fill the lists. Every path must still give
-them: select, a catalog screw evaluated alone,
-and a screw outside the catalog with the same values (its variant rows built on the fly).
+dynamic thrust (MISUMI's table; filled PTFE 0.7 x its plastic nut; an unlisted size at the
+lowest listed flank pressure, Tr32x6's 0.7 x 2050 N over 10.667 x pi x 29 x 3 = 2915 mm^2,
+0.4922 MPa for PTFE): "any-lead-loaded" (400 N) loses the Tr14x3, Tr12x6(P3), Tr14x6(P3),
+Tr16x4 and Tr16x8(P4) PTFE nuts (Tr14x3's listed 343 N; Tr12x6(P3) 8 x pi x 10.5 x 1.5 =
+395.8 mm^2, 195 N; Tr16x4 8 x pi x 14 x 2 = 703.7 mm^2, 346 N), while Tr22x5 PTFE
+(8.8 x pi x 19.5 x 2.5 = 1348 mm^2, 663 N) and Tr18x8(P4) PTFE (its listed 611 N) stay;
+"heavy-any-lead" (1500 N) loses the Tr18x8(P4), Tr20x4, Tr22x5 and Tr24x5 PTFE nuts
+(686 N at Tr20x4, 798 N at Tr24x5's 1621 mm^2); bronze sizes and a seed screw fill the
+lists. Every path must still give them: select, a catalog screw evaluated alone, and a
+screw outside the catalog with the same values (its variant rows built on the fly).
 """
 
 import json
