@@ -168,12 +168,13 @@ def test_switching_to_inches_converts_the_custom_screw(client: TestClient) -> No
 
 
 def test_nut_heat_rise_is_a_difference_in_fahrenheit() -> None:
-    """A rise of 10 K is 18 °F, with no 32 °F offset."""
+    """A rise of 10 K is 18 °F of difference, with no 32 °F offset, written Δ°F so that it
+    cannot be read as a temperature."""
     from app.contract.units import DEFAULT_UNITS, amount_text
     from app.core.phrase import Amount
 
     inch = {**DEFAULT_UNITS, "length_unit": "in"}
-    assert amount_text(Amount(10.0, "temperature_rise"), inch) == "18 °F"
+    assert amount_text(Amount(10.0, "temperature_rise"), inch) == "18 Δ°F"
     assert amount_text(Amount(10.0, "temperature"), inch) == "50 °F"
     assert amount_text(Amount(10.0, "temperature_rise")) == "10 K"
     assert math.isclose(PSI, 6894.757293168361)
