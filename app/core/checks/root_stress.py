@@ -39,7 +39,7 @@ class RootStress(Check):
         "of a power screw) and (5-15) (von Mises); yield strength from the material "
         "(handbook)"
     )
-    sources = ("root_diameter", "yield_strength")
+    sources = ("root_diameter", "yield_strength", "friction_static", "friction_dynamic")
     capacity_sources = ("yield_strength",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:

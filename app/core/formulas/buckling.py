@@ -215,7 +215,7 @@ def root_von_mises_stress(load_n: float, torque_nm: float, root_diameter_m: floa
     """
     sigma = root_stress(load_n, root_diameter_m)
     tau = root_shear_stress(torque_nm, root_diameter_m)
-    return (sigma**2 + 3.0 * tau**2) ** 0.5
+    return cast(float, np.sqrt(sigma**2 + 3.0 * tau**2))
 
 
 def largest_root_load(
@@ -244,7 +244,7 @@ def largest_root_load(
     discriminant = linear**2 - 4.0 * quadratic * constant
     if constant > 0.0 or discriminant < 0.0:
         return 0.0
-    return (-linear + discriminant**0.5) / (2.0 * quadratic)
+    return (-linear + math.sqrt(discriminant)) / (2.0 * quadratic)
 
 
 def max_length_for_column(
