@@ -215,7 +215,7 @@ def root_von_mises_stress(load_n: float, torque_nm: float, root_diameter_m: floa
     """
     sigma = root_stress(load_n, root_diameter_m)
     tau = root_shear_stress(torque_nm, root_diameter_m)
-    return cast(float, np.sqrt(sigma**2 + 3.0 * tau**2))
+    return cast(float, (sigma**2 + 3.0 * tau**2) ** 0.5)
 
 
 def largest_root_load(
