@@ -171,7 +171,8 @@ class BucklingOut(BaseModel):
     )
     mode: Annotated[Literal["euler", "johnson"], From("mode")]
     root_stress_mpa: Annotated[float, From("root_stress_pa", "pressure")] = Field(
-        description="Peak thrust over the root area."
+        description="Von Mises stress at the root: the peak thrust over the root area with "
+        "the shear of the torque the screw carries with it."
     )
     yield_strength_mpa: Annotated[float | None, From("yield_strength_pa", "pressure")]
 

@@ -53,7 +53,11 @@ class Unit:
     rounded float of the exact one. A temperature scale has an ``offset`` too: the core's
     value at this unit's zero (°F: -160/9 °C), so the core's value is value x exact +
     offset. ``text`` is how the unit is written, where the symbol (the table's key) must
-    differ from another's ('°F rise', written °F)."""
+    differ from another's ('°F rise', written Δ°F).
+
+    A temperature difference (a rise, a room to a limit) is its own dimension,
+    ``temperature_rise``: K, or Δ°F (5/9 K) on the page in inches, never offset: 1 K is a
+    difference of 1 °C and of 1.8 °F (NIST SP 811 B.9)."""
 
     symbol: str
     dimension: Quantity
@@ -128,7 +132,7 @@ UNITS: dict[str, Unit] = {
         _unit("°C", "temperature", 1),
         _unit("°F", "temperature", Fraction(5, 9), Fraction(-160, 9)),
         _unit("K", "temperature_rise", 1),
-        _unit("°F rise", "temperature_rise", Fraction(5, 9), text="°F"),
+        _unit("°F rise", "temperature_rise", Fraction(5, 9), text="Δ°F"),
         _unit("", "factor", 1),
         _unit("Hz", "frequency", 1),
         _unit("H", "inductance", 1),

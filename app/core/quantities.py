@@ -110,7 +110,12 @@ class Quantities(Generic[V]):
     allowed_load_n: V
     slenderness: V
     transition_slenderness: V
+    #: The root section under the peak thrust and the torque it carries with it
+    #: (``_root_torque``): the von Mises stress of the two, and each alone [Pa]
     root_stress_pa: V
+    root_torque_nm: V
+    root_axial_stress_pa: V
+    root_shear_stress_pa: V
     pv_pa_m_s: V
     pressure_pa: V
     surface_speed_m_s: V
@@ -263,9 +268,22 @@ def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
     }
 
 
-def _column_limits(app: Application, t: CandidateTable, peak_n: float) -> dict[str, Any]:
+def _root_torque(t: CandidateTable, peak_n: float, torques: dict[str, Any]) -> Array:
+    """``torque.root_torque`` at the peak thrust, at the lower of the running and the
+    static efficiency (the thrust of a start from rest passes the thread at static
+    friction), with the nut's drag and the whole screw's inertia torque [N m]."""
+    eta = np.minimum(t.efficiency, t.efficiency_static)
+    return np.asarray(
+        torque.root_torque(peak_n, t.lead_m, eta, torques["drag_nm"], torques["inertia_screw_nm"])
+    )
+
+
+def _column_limits(
+    app: Application, t: CandidateTable, peak_n: float, torques: dict[str, Any]
+) -> dict[str, Any]:
     """Critical speed, and the screw as a column under the peak thrust: Euler when slender,
-    Johnson's parabola when short, and the stress at the root."""
+    Johnson's parabola when short, and the stress at the root under the peak thrust and
+    the torque the screw carries with it (von Mises)."""
     n_c = critical_speed.critical_speed_rpm(
         t.root_diameter_m, app.length_m, t.youngs_modulus_pa, t.density_kg_m3, app.end_fixity
     )
@@ -274,6 +292,7 @@ def _column_limits(app: Application, t: CandidateTable, peak_n: float) -> dict[s
     )
     with np.errstate(invalid="ignore"):
         transition = buckling.transition_slenderness(t.youngs_modulus_pa, t.yield_strength_pa)
+    root_nm = _root_torque(t, peak_n, torques)
     return {
         "critical_rpm": n_c,
         "allowed_rpm": critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
@@ -281,7 +300,12 @@ def _column_limits(app: Application, t: CandidateTable, peak_n: float) -> dict[s
         "allowed_load_n": buckling.allowed_buckling_load(f_cr, app.buckling_safety_factor),
         "slenderness": buckling.slenderness(t.root_diameter_m, app.length_m, app.end_fixity),
         "transition_slenderness": transition,
-        "root_stress_pa": buckling.root_stress(peak_n, t.root_diameter_m),
+        "root_stress_pa": buckling.root_von_mises_stress(peak_n, root_nm, t.root_diameter_m),
+        "root_torque_nm": root_nm,
+        "root_axial_stress_pa": np.broadcast_to(
+            buckling.root_stress(peak_n, t.root_diameter_m), root_nm.shape
+        ),
+        "root_shear_stress_pa": buckling.root_shear_stress(root_nm, t.root_diameter_m),
     }
 
 
@@ -494,7 +518,7 @@ def _values(
         "holding_force_n": np.full(len(t), motion.steady_load(app)),
         "rpm": rpm,
         **torques,
-        **_column_limits(app, t, peak_n),
+        **_column_limits(app, t, peak_n, torques),
         **_heat(app, t, force_n),
         **(limits := _pv_limit(app, t)),
         **_nut(app, t, peak_n, rpm, limits["pv_limit_pa_m_s"]),

@@ -52,7 +52,8 @@ WHY: Mapping[str, str] = {
     "motor_speed": "the motor cannot turn fast enough for every lead: a faster motor",
     "length": "no screw in the catalog is made this long: consider a ball screw or a belt",
     "design_load": "the thrust exceeds every screw's design load: consider a ball screw",
-    "root_stress": "the thrust yields every screw's root: consider a ball screw",
+    "root_stress": "the thrust and the torque it takes yield every screw's root: consider a ball "
+    "screw",
     "temperature": "no nut in the catalog is rated for this temperature: consider a metal "
     "nut outside the catalog or a ball screw",
     "coating_environment": "no nut suits this environment (oil, coating): choose another "

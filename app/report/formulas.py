@@ -151,7 +151,7 @@ FORMULAS: dict[str, Formula] = {
     "buckling.critical_load_n": _entry(buckling.column_critical_load),
     "buckling.slenderness": _entry(buckling.slenderness),
     "buckling.transition_slenderness": _entry(buckling.transition_slenderness),
-    "buckling.root_stress_mpa": _entry(buckling.root_stress),
+    "buckling.root_stress_mpa": _entry(buckling.root_von_mises_stress),
     "buckling.allowed_load_n": _entry(buckling.allowed_buckling_load),
     "pv.value_mpa_m_s": _entry(pv.pv_value),
     "pv.pressure_mpa": _entry(pv.contact_pressure),

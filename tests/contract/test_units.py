@@ -282,3 +282,96 @@ def test_the_scan_finds_conversions_not_bounds_or_doctests() -> None:
         "x = InputField(bounds=(0.0, 1e6), default=1000.0)\n"
     )
     assert scale_literals(source) == [(3, 1000.0), (4, 4.4482216152605)]
+
+
+# --- temperatures and temperature differences (issue 29, item 6) ------------------------
+
+INCH = {**DEFAULT_UNITS, "length_unit": "in"}
+
+
+def test_a_temperature_difference_converts_without_the_offset() -> None:
+    """NIST SP 811 B.9: a difference of 1 °F is 5/9 K, while t/°F = 1.8 t/°C + 32. A nut
+    rise of 211.7 K is 211.7 x 1.8 = 381.06 °F of difference, not 211.7 x 1.8 + 32 =
+    413.06 °F; on the page in millimetres it stays 211.7 K."""
+    from app.contract.units import Display, amount_text
+    from app.core.phrase import Amount
+
+    assert from_api(211.7, "temperature_rise", INCH) == pytest.approx(381.06, rel=1e-12)
+    assert from_api(211.7, "temperature", INCH) == pytest.approx(413.06, rel=1e-12)
+    assert amount_text(Amount(211.7, "temperature_rise"), INCH) == "381 Δ°F"
+    assert Display(INCH).check(211.7, "K") == "381.1 Δ°F"
+    assert Display(dict(DEFAULT_UNITS)).check(211.7, "K") == "211.7 K"
+    assert API_SYSTEM["temperature_rise"] == "K" and offset("temperature_rise", INCH) == 0.0
+
+
+#: Each ``Amount`` of a temperature in the core's sentences, by its expression: a
+#: difference (a subtraction of temperatures, a rise, a delta, a room to a limit) must
+#: carry ``temperature_rise``; an absolute temperature (a reading, a rating, or a
+#: temperature plus a difference) ``temperature``.
+_AMOUNT = re.compile(r'Amount\(\s*(?P<expr>[^"]*?),\s*"(?P<dim>temperature(?:_rise)?)"\s*\)')
+
+
+def _is_difference(expression: str) -> bool:
+    if re.search(r"\s-\s", expression):
+        return True
+    if "+" in expression:
+        return False
+    return re.search(r"rise|delta|room", expression) is not None
+
+
+def test_every_temperature_in_a_sentence_is_classified() -> None:
+    """Every temperature amount in app/ is found by the pattern (none slips past it), and
+    each difference carries the difference dimension, each temperature the absolute one."""
+    found = []
+    for path in sorted((ROOT / "app").rglob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        written = len(re.findall(r'"temperature(?:_rise)?"\s*\)', text))
+        matches = list(_AMOUNT.finditer(text))
+        assert len(matches) == written, path
+        for m in matches:
+            want = "temperature_rise" if _is_difference(m["expr"]) else "temperature"
+            assert m["dim"] == want, (path.name, m["expr"])
+            found.append(m["dim"])
+    assert {"temperature", "temperature_rise"} <= set(found)
+
+
+def test_every_temperature_check_field_and_output_is_classified() -> None:
+    """A check whose value is a temperature names its dimension here (the nut heat check
+    judges a rise against the room to the rated maximum: both differences); an input or
+    output whose name ends in _rise, _delta or _k carries the difference dimension, one
+    ending in _c the absolute one."""
+    from typing import Annotated, get_origin, get_type_hints
+
+    from pydantic import BaseModel
+
+    import app.contract.schemas as schemas
+    from app.contract.source import From
+    from app.core.checks import REGISTRY
+
+    temperature_checks = {
+        c.name: c.quantity for c in REGISTRY if c.quantity and "temperature" in c.quantity
+    }
+    assert temperature_checks == {"nut_heat": "temperature_rise"}
+
+    named: list[tuple[str, str]] = [
+        (f.api, f.dimension) for f in FIELDS if f.dimension and "temperature" in f.dimension
+    ]
+    for model in vars(schemas).values():
+        if not (isinstance(model, type) and issubclass(model, BaseModel)):
+            continue
+        for name, hint in get_type_hints(model, include_extras=True).items():
+            if get_origin(hint) is not Annotated:
+                continue
+            for source in hint.__metadata__:
+                if (
+                    isinstance(source, From)
+                    and source.quantity
+                    and "temperature" in source.quantity
+                ):
+                    named.append((name, source.quantity))
+    assert ("ambient_c", "temperature") in named
+    for name, dimension in named:
+        if name.endswith(("_rise", "_delta", "_k")) or "_rise_" in name:
+            assert dimension == "temperature_rise", name
+        elif name.endswith("_c"):
+            assert dimension == "temperature", name

@@ -174,6 +174,39 @@ def test_accuracy_sums_lead_error_backlash_and_repeatability(catalog: Catalog) -
     assert zbx.value == pytest.approx(0.1813e-3, rel=1e-6) and zbx.passed
 
 
+@pytest.mark.parametrize(
+    ("ambient_c", "passed"),
+    [
+        pytest.param(20.0, True, id="at-the-20C-reference"),
+        pytest.param(60.0, False, id="60C-grows"),
+        pytest.param(-20.0, False, id="minus-20C-shrinks"),
+    ],
+)
+def test_accuracy_adds_the_screws_thermal_growth(
+    zbx8000_l10: ScrewSpec, ambient_c: float, passed: bool
+) -> None:
+    """Issue 29, item 4. ZBX8000-L10 over a 300 mm stroke, 0.2 mm tolerance: lead error
+    0.0006 x 300 = 0.18 mm + repeatability 0.0013 mm + no backlash = 0.1813 mm (seed,
+    Screw Accuracy). 303 stainless grows 17.3e-6 /K (ASM Handbook): at 60 C, 40 K above
+    the 20 C reference, 17.3e-6 x 300 x 40 = 0.2076 mm, and as much shrinking at -20 C;
+    the worst case adds it (THK, Studying the Positioning Accuracy: thermal displacement
+    a cause of error beside the lead accuracy): 0.3889 mm, over the tolerance."""
+    app = light_app(stroke_m=0.3, positioning_tolerance_m=0.2e-3, ambient_c=ambient_c)
+    c = check(evaluate(app, zbx8000_l10), "accuracy")
+    growth_mm = 17.3e-6 * 300 * abs(ambient_c - 20.0)
+    assert c.value == pytest.approx((0.1813 + growth_mm) * 1e-3, rel=1e-9)
+    assert c.passed is passed
+    text = render(c.message)
+    assert f"thermal growth {growth_mm:.4g} mm" in text and "lead error 0.18 mm" in text
+    assert f"{abs(ambient_c - 20.0):.3g} K from the 20 °C reference" in text
+
+
+def test_accuracy_fix_names_the_thermal_growth(zbx8000_l10: ScrewSpec) -> None:
+    app = light_app(stroke_m=0.3, positioning_tolerance_m=0.2e-3, ambient_c=60.0)
+    c = check(evaluate(app, zbx8000_l10), "accuracy")
+    assert c.fix is not None and "its growth is 0.2076 mm" in render(c.fix)
+
+
 def test_traverse_fix_offers_a_lead_band_that_allows_the_speed(catalog: Catalog) -> None:
     """200 mm/s on a 10 mm lead exceeds the 100 mm/s band; the 12-25 mm band allows 250."""
     c = check(evaluate(light_app(speed_m_s=0.2), catalog.by_id["ZBX8000-L10"]), "traverse_speed")

@@ -54,7 +54,11 @@ N_C = (3.9266 / L) ** 2 * math.sqrt(E / RHO) * RD / 4 * 60 / (2 * math.pi)
 S_Y = 240e6  # 303 annealed
 SLENDER = (L / math.sqrt(2)) / (RD / 4)  # 171, above sqrt(2 pi^2 E / S_y) = 126: Euler
 F_CR = 2 * math.pi**2 * E * (math.pi * RD**4 / 64) / L**2
-STRESS = PEAK / (math.pi * RD**2 / 4)
+# root: von Mises of the peak thrust's axial stress and the shear of the torque the screw
+# carries with it, T = PEAK lead / (2 pi eta) (the lower of running and static: here
+# running, mu_d 0.15 > mu_s 0.08) + J_screw alpha + drag (Shigley eqs. 8-7, 8-8, 5-15)
+T_ROOT = PEAK * LEAD / (2 * math.pi * min(ETA, ETA_S)) + J_SCREW * ALPHA + 0.04
+STRESS = math.hypot(PEAK / (math.pi * RD**2 / 4), math.sqrt(3) * 16 * T_ROOT / (math.pi * RD**3))
 PV = PEAK / (3 * H) * RPM / 60  # H.T. cancels; the accelerating segment ends at V with m a
 DESIGN = 3e6 * 3 * math.pi * D_P * H
 LIFE_YEARS = 100e6 * 0.01 / (2 * 0.3 * 200 * 365)

@@ -168,12 +168,42 @@ def test_switching_to_inches_converts_the_custom_screw(client: TestClient) -> No
 
 
 def test_nut_heat_rise_is_a_difference_in_fahrenheit() -> None:
-    """A rise of 10 K is 18 °F, with no 32 °F offset."""
+    """A rise of 10 K is 18 °F of difference, with no 32 °F offset, written Δ°F so that it
+    cannot be read as a temperature."""
     from app.contract.units import DEFAULT_UNITS, amount_text
     from app.core.phrase import Amount
 
     inch = {**DEFAULT_UNITS, "length_unit": "in"}
-    assert amount_text(Amount(10.0, "temperature_rise"), inch) == "18 °F"
+    assert amount_text(Amount(10.0, "temperature_rise"), inch) == "18 Δ°F"
     assert amount_text(Amount(10.0, "temperature"), inch) == "50 °F"
     assert amount_text(Amount(10.0, "temperature_rise")) == "10 K"
     assert math.isclose(PSI, 6894.757293168361)
+
+
+def test_nut_heat_check_in_fahrenheit_differences(client: TestClient) -> None:
+    """Issue 29, item 6: the nut heat check's value (the nut's rise) and its limit (the
+    nut's rated maximum less the ambient) are differences: in inches both show in Δ°F,
+    K x 1.8 with no 32 °F offset (NIST SP 811 B.9: a difference of 1 °F is 5/9 K). A
+    200 kg lift on Tr14x3 with an oiled bronze nut, 12 in strokes at 0.5 in/s with 20 s
+    dwells; the grease allows 150 °C, 130 K above the 20 °C ambient: 234 Δ°F (the
+    offset would have made it 266 °F)."""
+    params = {
+        "load": "1962", "speed": "0.5", "length": "24", "stroke": "12", "dwell": "20",
+        "force_unit": "N", "length_unit": "in", "id": "Tr14x3-bronze",
+    }  # fmt: skip
+    detail = BeautifulSoup(client.get("/detail", params=params).text, "html.parser")
+    item = detail.select_one('li.check[data-check="nut_heat"]')
+    value, unit = item.select_one(".check-value").text.split(" ", 1)
+    limit, limit_unit = item.select_one(".check-limit").text.split(" ", 1)
+    application = {
+        "load_n": 1962.0, "speed_mm_s": 12.7, "length_mm": 609.6, "stroke_mm": 304.8,
+        "dwell_s": 20.0,
+    }  # fmt: skip
+    body = {"application": application, "screw": {"catalog_id": "Tr14x3-bronze"}}
+    response = client.post("/api/v1/evaluate", json=body)
+    assert response.status_code == 200, response.text
+    api = {c["name"]: c for c in response.json()["candidate"]["checks"]}["nut_heat"]
+    assert api["unit"] == "K"
+    assert unit == limit_unit == "Δ°F"
+    assert float(value) == pytest.approx(api["value"] * 1.8, rel=1e-3)
+    assert float(limit) == pytest.approx(130 * 1.8, rel=1e-3) and api["limit"] == 130.0

@@ -1,5 +1,7 @@
 """Worst-case positioning error over the stroke against the user's tolerance."""
 
+import numpy as np
+
 from app.core.checks.base import (
     Application,
     Array,
@@ -13,28 +15,40 @@ from app.core.checks.base import (
     same,
     where_given,
 )
+from app.core.formulas import accuracy
 from app.core.phrase import Amount, Phrase
+from app.core.quantities import REFERENCE_TEMPERATURE_C
 
 
 class Accuracy(Check):
     name = "accuracy"
     label = "Positioning accuracy"
     description = (
-        "Lead error over the stroke plus the largest backlash plus repeatability, against "
-        "the tolerance."
+        "Lead error over the stroke, plus the screw's thermal growth over the stroke (its "
+        "material's expansion, the screw taken at the ambient against the 20 C reference; "
+        "its own friction heat is not counted), plus the largest backlash, plus "
+        "repeatability, summed as a worst case, against the tolerance."
     )
     quantity = "length"
-    formula = "e = a_lead * stroke + b_max + r; e_allowed = tol"
-    source = "seed catalog, Screw Accuracy"
-    sources = ("lead_accuracy", "backlash", "repeatability")
+    formula = (
+        "e = a_lead * stroke + alpha * stroke * abs(T_ambient - T_ref) + b_max + r; e_allowed = tol"
+    )
+    source = (
+        "seed catalog, Screw Accuracy; thermal growth dL = alpha L dT (ASM Handbook "
+        "expansion); THK Ball Screw, Point of Selection: Studying the Positioning Accuracy "
+        "(thermal displacement a cause of error beside the lead accuracy and the clearance)"
+    )
+    sources = ("lead_accuracy", "backlash", "repeatability", "screw_expansion")
 
     def applies(self, app: Application) -> bool:
         return app.positioning_tolerance_m is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        error = q.lead_error_m + t.backlash_max_m + t.repeatability_m
+        error = accuracy.worst_case_error(
+            q.lead_error_m, q.thermal_growth_m, t.backlash_max_m, t.repeatability_m
+        )
         tolerance = same(t, app.positioning_tolerance_m)
-        return Measure(where_given(t.lead_accuracy), error, tolerance)
+        return Measure(where_given(t.lead_accuracy), np.asarray(error), tolerance)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -42,23 +56,55 @@ class Accuracy(Check):
         return {
             "a_lead": t.lead_accuracy,
             "stroke": app.stroke_m if app.stroke_m is not None else app.length_m,
+            "alpha": t.screw_expansion_per_k,
+            "T_ambient": app.ambient_c,
+            "T_ref": REFERENCE_TEMPERATURE_C,
             "b_max": t.backlash_max_m,
             "r": t.repeatability_m,
             "tol": app.positioning_tolerance_m,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        error = r.lead_error_m + s.backlash_max_m + (s.repeatability_m or 0.0)
+        repeatability = s.repeatability_m or 0.0
+        error = accuracy.worst_case_error(
+            r.lead_error_m, r.thermal_growth_m, s.backlash_max_m, repeatability
+        )
         verb = "is within" if passed else "exceeds"
         return Phrase(
-            "Worst-case error {e} " + verb + " the {tol} tolerance.",
+            "Worst-case error {e} (lead error {lead} + thermal growth {growth} + backlash "
+            "{b} + repeatability {r}) " + verb + " the {tol} tolerance. The growth takes the "
+            "screw at the {ambient} ambient, {dt} from the {ref} reference; its own friction "
+            "heat is not counted.",
             {
                 "e": Amount(error, "length"),
+                "lead": Amount(r.lead_error_m, "length"),
+                "growth": Amount(abs(r.thermal_growth_m), "length"),
+                "b": Amount(s.backlash_max_m, "length"),
+                "r": Amount(repeatability, "length"),
                 "tol": Amount(app.positioning_tolerance_m or 0.0, "length"),
+                "ambient": Amount(app.ambient_c, "temperature"),
+                "dt": Amount(abs(app.ambient_c - REFERENCE_TEMPERATURE_C), "temperature_rise"),
+                "ref": Amount(REFERENCE_TEMPERATURE_C, "temperature"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        thermal = (
+            " or hold the screw nearer the {ref} reference (its growth is {growth})"
+            if r.thermal_growth_m
+            else ""
+        )
+        values = {
+            "ref": Amount(REFERENCE_TEMPERATURE_C, "temperature"),
+            "growth": Amount(abs(r.thermal_growth_m), "length"),
+        }
         if s.anti_backlash or not reach.anti_backlash:
-            return Phrase("Choose a precision lead grade, or widen the tolerance.")
-        return Phrase("Choose an anti-backlash series (no backlash) or a precision lead grade.")
+            return Phrase(
+                "Choose a precision lead grade" + thermal + ", or widen the tolerance.", values
+            )
+        return Phrase(
+            "Choose an anti-backlash series (no backlash) or a precision lead grade"
+            + thermal
+            + ".",
+            values,
+        )

@@ -37,7 +37,7 @@ class NutHeat(Check):
         "the nut's rise over the ambient against the room to its rated maximum "
         "temperature."
     )
-    quantity = "temperature"
+    quantity = "temperature_rise"
     formula = (
         "dT = F * v * (1 / eta - 1) / (2 * sqrt(h * pi * d_3 * k * pi * d_3^2 / 4) + h * pi * "
         "D_nut * L_nut); dT_allowed = T_max - T_ambient"

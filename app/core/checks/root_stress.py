@@ -1,4 +1,5 @@
-"""Axial stress at the root section under the peak thrust against the screw's yield."""
+"""Stress at the root section under the peak thrust and the torque the screw carries with
+it (von Mises) against the screw's yield."""
 
 from app.core.checks.base import (
     MARGIN_NOTE,
@@ -23,13 +24,22 @@ class RootStress(Check):
     name = "root_stress"
     label = "Root stress (yield)"
     description = (
-        "The peak thrust spread over the root section of the screw, pushed or pulled, "
-        "against a fraction (the buckling factor) of the screw material's yield strength."
+        "The root section of the screw under the peak thrust, pushed or pulled, and the "
+        "torque it carries with it (the thread's torque for that thrust, the nut's drag and "
+        "the screw's own inertia torque), combined by von Mises, against a fraction (the "
+        "buckling factor) of the screw material's yield strength."
     )
     quantity = "pressure"
-    formula = "sigma = F_peak / (pi * d_r^2 / 4); sigma_allowed = SF * S_y"
-    source = "axial stress of a round section; yield strength from the material (handbook)"
-    sources = ("root_diameter", "yield_strength")
+    formula = (
+        "sigma_vm = sqrt((F_peak / (pi * d_r^2 / 4))^2 + 3 * (16 * T_root / (pi * d_r^3))^2); "
+        "sigma_allowed = SF * S_y"
+    )
+    source = (
+        "Shigley's Mechanical Engineering Design, 9th ed., eqs. (8-7), (8-8) (body stresses "
+        "of a power screw) and (5-15) (von Mises); yield strength from the material "
+        "(handbook)"
+    )
+    sources = ("root_diameter", "yield_strength", "friction_static", "friction_dynamic")
     capacity_sources = ("yield_strength",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -42,6 +52,7 @@ class RootStress(Check):
         return {
             "F_peak": q.peak_force_n,
             "d_r": t.root_diameter_m,
+            "T_root": q.root_torque_nm,
             "SF": app.buckling_safety_factor,
             "S_y": t.yield_strength_pa,
         }
@@ -49,10 +60,14 @@ class RootStress(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         return Phrase(
-            "{stress} at the root under the peak thrust " + verb + " {allowed} ({sf} x "
-            "yield {s_y}).",
+            "{stress} at the root (von Mises of {sigma} axial under the peak thrust and "
+            "{tau} shear from the {torque} the screw carries with it) " + verb + " {allowed} "
+            "({sf} x yield {s_y}).",
             {
                 "stress": Amount(r.root_stress_pa, "pressure"),
+                "sigma": Amount(r.root_axial_stress_pa, "pressure"),
+                "tau": Amount(r.root_shear_stress_pa, "pressure"),
+                "torque": Amount(r.root_torque_nm, "torque"),
                 "allowed": Amount(_allowed(app, s), "pressure"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
                 "s_y": Amount(s.yield_strength_pa or 0.0, "pressure"),
@@ -71,7 +86,12 @@ class RootStress(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        allowed_n = _allowed(app, s) * buckling.root_area(s.root_diameter_m)
+        if not r.peak_force_n > 0.0:
+            return {}
+        # T_root = a F + b: the thread's torque grows with the thrust, drag and inertia not
+        fixed_nm = r.drag_nm + abs(r.inertia_screw_nm)
+        per_n = (r.root_torque_nm - fixed_nm) / r.peak_force_n
+        allowed_n = buckling.largest_root_load(_allowed(app, s), s.root_diameter_m, per_n, fixed_nm)
         return load_input(app, allowed_n)
 
 

@@ -175,6 +175,78 @@ def root_stress(load_n: float, root_diameter_m: float) -> float:
     return load_n / root_area(root_diameter_m)
 
 
+@formula("tau = 16 T / (pi d_r^3)", "Shigley 9th ed., eq. (8-7), torsion of the screw body")
+def root_shear_stress(torque_nm: float, root_diameter_m: float) -> float:
+    """Torsional shear stress at the surface of the root section, tau = 16 T / (pi d_r^3)
+    [Pa].
+
+    torque_nm: the torque the section carries, T [N m]; root_diameter_m: d_r [m]. A solid
+    round section in elastic torsion. Source: Shigley [2], 9th ed., eq. (8-7); its
+    Example 8-1 (d): T_R = 26.18 N m on d_r = 28 mm gives 6.07 MPa.
+
+    >>> round(root_shear_stress(26.18, 0.028) / 1e6, 2)
+    6.07
+    """
+    return 16.0 * torque_nm / (math.pi * root_diameter_m**3)
+
+
+@formula(
+    "sigma_vm = sqrt((F / (pi d_r^2 / 4))^2 + 3 (16 T / (pi d_r^3))^2)",
+    "Shigley 9th ed., eqs. (8-7), (8-8) and (5-15): the body of a power screw under thrust "
+    "and torque, combined by the distortion-energy (von Mises) criterion",
+)
+def root_von_mises_stress(load_n: float, torque_nm: float, root_diameter_m: float) -> float:
+    """Von Mises stress at the root section of a screw carrying an axial force and a
+    torque, sigma_vm = sqrt(sigma^2 + 3 tau^2) [Pa], with sigma = F / (pi d_r^2 / 4) and
+    tau = 16 T / (pi d_r^3).
+
+    load_n: axial force F [N] (pushed or pulled: the sign does not matter); torque_nm: the
+    torque the same section carries, T [N m]; root_diameter_m: d_r [m]. Valid while the
+    section is elastic (sigma_vm below yield). Source: Shigley [2], 9th ed., eqs. (8-7)
+    and (8-8) for the body stresses and eq. (5-15) for their von Mises combination; with
+    its Example 8-1 (F = 6.4 kN, T_R = 26.18 N m, d_r = 28 mm: sigma = -10.39 MPa,
+    tau = 6.07 MPa) the body's combined stress is 14.79 MPa (14.78 from the rounded
+    components).
+
+    >>> round(root_von_mises_stress(6.4e3, 26.18, 0.028) / 1e6, 2)
+    14.79
+    >>> root_von_mises_stress(1000.0, 0.0, 0.01) == root_stress(1000.0, 0.01)
+    True
+    """
+    sigma = root_stress(load_n, root_diameter_m)
+    tau = root_shear_stress(torque_nm, root_diameter_m)
+    return cast(float, (sigma**2 + 3.0 * tau**2) ** 0.5)
+
+
+def largest_root_load(
+    allowed_pa: float, root_diameter_m: float, torque_per_n_m: float, fixed_torque_nm: float
+) -> float:
+    """The largest axial force F whose von Mises root stress, with the torque
+    T = a F + b the section carries with it, is ``allowed_pa`` [N]: the positive root of
+    (F / A)^2 + 3 c^2 (a F + b)^2 = S^2, A = pi d_r^2 / 4, c = 16 / (pi d_r^3); 0 when even
+    no thrust meets it (the torque alone is too much).
+
+    allowed_pa: S [Pa]; root_diameter_m: d_r [m]; torque_per_n_m: a, the torque per newton
+    of thrust, lead / (2 pi eta) [m]; fixed_torque_nm: b, the torque that does not grow
+    with the thrust (drag, inertia) [N m]. The inverse of ``root_von_mises_stress``.
+
+    >>> stress = root_von_mises_stress(6.4e3, 26.18, 0.028)
+    >>> round(largest_root_load(stress, 0.028, 26.18 / 6.4e3, 0.0), 6)
+    6400.0
+    >>> largest_root_load(1e6, 0.01, 0.001, 1000.0)
+    0.0
+    """
+    area = root_area(root_diameter_m)
+    c2 = 3.0 * (16.0 / (math.pi * root_diameter_m**3)) ** 2
+    quadratic = 1.0 / area**2 + c2 * torque_per_n_m**2
+    linear = 2.0 * c2 * torque_per_n_m * fixed_torque_nm
+    constant = c2 * fixed_torque_nm**2 - allowed_pa**2
+    discriminant = linear**2 - 4.0 * quadratic * constant
+    if constant > 0.0 or discriminant < 0.0:
+        return 0.0
+    return (-linear + math.sqrt(discriminant)) / (2.0 * quadratic)
+
+
 def max_length_for_column(
     critical_load_n: float,
     youngs_modulus_pa: float,

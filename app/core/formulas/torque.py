@@ -76,6 +76,40 @@ def load_torque(load_n: float, lead_m: float, efficiency: float) -> float:
     return load_n * lead_m / (2.0 * math.pi * efficiency)
 
 
+@formula(
+    "T_root = F_peak lead / (2 pi eta) + T_drag + |J_screw alpha|",
+    SEED + " (torque components), at the peak thrust",
+)
+def root_torque(
+    peak_force_n: float,
+    lead_m: float,
+    efficiency: float,
+    drag_nm: float,
+    screw_inertia_nm: float,
+) -> float:
+    """The largest torque a section of the screw carries with the peak thrust [N m]:
+    T_root = F_peak lead / (2 pi eta) + T_drag + |J_screw alpha|.
+
+    peak_force_n: the peak thrust [N]; lead_m [m]; efficiency: the thread's, eta in
+    (0, 1] (the lower of running and static: the thrust of a start from rest passes the
+    thread at static friction); drag_nm: the nut's drag torque [N m]; screw_inertia_nm:
+    the whole screw's inertia torque J_screw alpha [N m]. That is the section beside the
+    drive end, taken with the full thrust (the thrust bearing at the drive end, as usual):
+    the thread's torque and the nut's drag pass through every section between the motor
+    and the nut, the screw's own inertia torque adds up towards the drive end, and the
+    rotor's inertia torque stays in the motor shaft. The thread's term is the driving
+    one even where the load helps (back-driving needs less): the safe side.
+    Source: seed [1], torque components (``load_torque``, ``total_torque``).
+
+    >>> round(root_torque(6400.0, 0.008, 0.311, 0.0, 0.0), 2)
+    26.2
+    >>> round(root_torque(100.0, 0.002, 0.5, 0.03, -0.001), 6)
+    0.094662
+    """
+    thread_nm = peak_force_n * lead_m / (2.0 * math.pi * efficiency)
+    return thread_nm + drag_nm + abs(screw_inertia_nm)
+
+
 @formula("T = T_inertia + T_drag + T_load", SEED + " (Torque: sum of three components)")
 def total_torque(inertia_nm: float, drag_nm: float, load_nm: float) -> float:
     """Drive torque, the sum of the seed's three components [N m].
