@@ -75,7 +75,7 @@ def test_custom_screw_shows_the_api_answer_with_user_provenance(client: TestClie
     governing = page.select_one(f"li.check[data-check={api['governing_check']}] .tag")
     assert governing is not None and governing.text == "governing"
     assert page.select_one(".custom-verdict .governing")
-    kinds = {s.select_one("code").text: s.select_one(".kind") for s in page.select("ul.sources li")}
+    kinds = {s["data-value"]: s.select_one(".kind") for s in page.select("ul.sources li")}
     assert kinds["root_diameter"].text == kinds["pv_limit"].text == "user"
     assert [f["id"] for f in page.select(".chart")] == [
         "chart-critical_speed",

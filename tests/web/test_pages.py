@@ -539,7 +539,11 @@ def test_an_infeasible_change_is_not_offered_but_said(client: TestClient) -> Non
     api = client.get("/api/v1/select", params={"load_n": 0, "speed_mm_s": 50, "length_mm": 500,
                      "moving_mass_kg": 800, "orientation": "vertical"}).json()  # fmt: skip
     assert api["summary"]["input_change"] == {}
-    assert "No load within the accepted inputs admits it." in api["summary"]["message"]
+    # Tr40x7 bronze, nearest, is held to MISUMI's thrust and its sliding speed: neither a
+    # load nor a speed within the accepted inputs admits it.
+    assert re.search(
+        r"No load( and speed)? within the accepted inputs admits it\.", api["summary"]["message"]
+    )
     assert not re.search(r" -\d", api["summary"]["message"])
 
 
