@@ -1,23 +1,38 @@
 """A hybrid stepper's pull-out torque against speed from its datasheet's electrical
 values, so a user can enter a motor's numbers instead of its curve [1, 2].
 
+The curve the app draws (``microstep_pull_out_torque``, ``microstep_pull_out_curve``)
+is the torque of a sine (microstepping) chopper drive whose current amplitude per phase
+is the set phase current I. A datasheet's holding torque T_h is measured with both
+phases at I (two phases on), a current vector of sqrt(2) I; the sine drive's vector is
+I, so at low speed the motor gives T_h / sqrt(2) = 0.71 T_h, not T_h [5]. Faster, each
+phase's circuit V = E + I (R + j X) limits the current the supply can force against the
+back-EMF and the reactance [3, 4]. Held against a maker's published figure (Trinamic
+QSH4218-47-28-040: 0.25 N m at 1200 rpm on 24 V, ``tests/core/test_stepper.py``) it
+gives 0.283 N m, 13 % above; the constant-power envelope below gives 0.40 N m there.
+
+Validity: two-phase hybrid on a sine chopper drive set to the motor's rated current,
+supply 4 to 25 times the winding's rated voltage I R (the makers' range [6]), steady
+running below 3000 rpm. No resonance, iron loss or saturation: the published figure
+against which it was checked is one maker's single point, so the curve is an estimate
+to be confirmed on the maker's own curve; a library motor's published curve, where
+the library holds one, is used instead.
+
+The constant-power envelope (``corner_speed_rpm``, ``pull_out_torque``) is kept for the
+corner speed it names:
+
 A chopper drive holds the phase current at its set value I while the winding lets it:
 each full step reverses the current of one phase, from -I to +I, through the winding's
 inductance L, driven by what the supply V leaves over the resistive drop I R. That takes
 t = 2 L I / (V - I R) [2]. While a full step lasts longer than t the motor gives its
 holding torque; faster, the current (and with it the torque) reaches only the share of
 I that the step's time allows, so the torque falls as 1 / speed above the corner speed
-(constant power) [1]. The model ignores back-EMF and the mid-band resonance dips of real
-curves, so it is an envelope for sizing, to be checked against the maker's curve.
+(constant power) [1]. It ignores back-EMF and gives the full holding torque below the
+corner, which no microstepping drive gives: the app no longer draws curves with it.
 
-How much ignoring the back-EMF costs is bounded by a second, independent model
-(``sine_pull_out_torque``): a sine (microstepping) drive feeding each phase through its
-equivalent circuit V = E + I (R + j X) [3], the back-EMF E from the holding torque and
-rated current [4]. For every stepper of the library, from half to four times the corner
-speed, it gives 0.87 to 1.00 times this model's torque (``tests/core/test_stepper.py``):
-the back-EMF lowers the curve by at most about 13 %, most near the corner. No maker's
-pull-out curve published as numbers was found to check either model against, so both
-stay envelopes.
+``sine_pull_out_torque`` is the same circuit as the microstepping model with the set
+current read as an RMS value (amplitude sqrt(2) I), as some drives set it; at low speed
+it gives the full holding torque, so the app does not draw curves with it either.
 
 References
 ----------
@@ -32,6 +47,13 @@ References
    CloudrayMotor, "Back emf due to rotation": approximate peak back-EMF =
    sqrt(2) pi T_h rev/s / I_rated, holding torque T_h with both phases at the rated
    current; worked example 0.55 N m, 1.68 A, 5 rev/s: 7.3 V.
+5. R. Carlyle, StepperSim issue #38 (github.com/rcarlyle/StepperSim/issues/38): the
+   rated holding torque is measured with two coils on at 100 %, which a microstepping
+   driver never gives; multiply it by sqrt(2) / 2 (0.707) for the microstepping torque.
+6. Trinamic (ADI), QMOT QSH4218 manual V1.10, Table 2.1 (QSH4218-47-28-040: 0.40 N m,
+   2.8 A, 0.5 ohm, 0.6 mH), section 2 ("0.25Nm torque at 1200 RPM with a 24V supply")
+   and Table 6.2 (optimum driver supply 4 to 22 times, maximum 25 times, the rated
+   coil voltage).
 """
 
 import math
@@ -191,13 +213,102 @@ def sine_pull_out_torque(
     0.275
     """
     k_e = back_emf_constant(holding_torque_nm, current_a)
+    amplitude_a = math.sqrt(2.0) * current_a
+    return _circuit_torque(
+        rpm, supply_v, amplitude_a, resistance_ohm, inductance_h, step_angle_deg, k_e
+    )
+
+
+def _circuit_torque(
+    rpm: float,
+    supply_v: float,
+    amplitude_a: float,
+    resistance_ohm: float,
+    inductance_h: float,
+    step_angle_deg: float,
+    k_e: float,
+) -> float:
+    """k_e times the largest in-phase current amplitude [A] the phase circuit allows at
+    ``rpm``: |I| <= ``amplitude_a`` and |E + I (R + j N_r w L)| <= ``supply_v``."""
     omega = 2.0 * math.pi * rpm / SECONDS_PER_MINUTE
     teeth = DEGREES_PER_TURN / (STEPS_PER_CYCLE * step_angle_deg)
     impedance = complex(resistance_ohm, teeth * omega * inductance_h)
     if abs(impedance) == 0.0:
-        return holding_torque_nm
+        return k_e * amplitude_a
     centre = -k_e * omega / impedance
-    in_phase = _rightmost_common_point(
-        centre, supply_v / abs(impedance), math.sqrt(2.0) * current_a
-    )
+    in_phase = _rightmost_common_point(centre, supply_v / abs(impedance), amplitude_a)
     return 0.0 if in_phase is None else k_e * max(in_phase, 0.0)
+
+
+@formula(
+    "T = k_e max Re(I): |I| <= I_set, |E + I (R + j N_r w L)| <= V, k_e = T_h / (sqrt(2) I_set)",
+    "per-phase circuit (MathWorks, Stepper Motor block); two-coils-on holding torque "
+    "(Carlyle, StepperSim #38); checked on Trinamic QSH4218-47-28-040",
+)
+def microstep_pull_out_torque(
+    rpm: float,
+    supply_v: float,
+    current_a: float,
+    resistance_ohm: float,
+    inductance_h: float,
+    step_angle_deg: float,
+    holding_torque_nm: float,
+) -> float:
+    """Pull-out torque [N m] at ``rpm`` [rev/min] of a two-phase hybrid stepper on a sine
+    (microstepping) chopper drive whose current amplitude per phase is ``current_a`` [A],
+    the phase current set on the driver (the motor's rated current). The datasheet's
+    ``holding_torque_nm`` [N m] is with both phases at that current, a current vector
+    sqrt(2) times the sine drive's, so the torque constant is k_e = T_h / (sqrt(2) I)
+    (``back_emf_constant``) and at low speed the torque is k_e I = T_h / sqrt(2).
+    Faster, each phase is the circuit V = E + I (R + j X): back-EMF E = k_e w, reactance
+    X = N_r w L (N_r = 90 / ``step_angle_deg`` rotor teeth), phase voltage at most
+    ``supply_v`` [V]; ``resistance_ohm`` [ohm] and ``inductance_h`` [H] per phase.
+
+    Validity: as the module states (sine drive, supply 4 to 25 times I R, below 3000
+    rpm, no resonance, iron loss or saturation); checked against one maker's published
+    figure only.
+
+    Trinamic QSH4218 manual, section 2 and Table 2.1: the QSH4218-47-28-040 (0.40 N m,
+    2.8 A, 0.5 ohm, 0.6 mH, 1.8 deg) gives 0.25 N m at 1200 rpm on 24 V; the model
+    gives 0.40 / sqrt(2) = 0.283 N m there (the supply still drives the full current):
+
+    >>> round(microstep_pull_out_torque(1200.0, 24.0, 2.8, 0.5, 0.0006, 1.8, 0.40), 3)
+    0.283
+    >>> round(microstep_pull_out_torque(3000.0, 24.0, 2.8, 0.5, 0.0006, 1.8, 0.40), 3)
+    0.199
+    """
+    k_e = back_emf_constant(holding_torque_nm, current_a)
+    return _circuit_torque(
+        rpm, supply_v, current_a, resistance_ohm, inductance_h, step_angle_deg, k_e
+    )
+
+
+def microstep_pull_out_curve(
+    args: tuple[float, float, float, float, float, float],
+    max_rpm: float,
+    points: int = 48,
+    first_rpm: float = 30.0,
+) -> tuple[tuple[float, float], ...]:
+    """``microstep_pull_out_torque`` as (rpm, N m) points from standstill to ``max_rpm``,
+    for checks that read a curve as straight lines between its points. ``args`` are that
+    function's arguments after the speed (supply, current, resistance, inductance, step
+    angle, holding torque). The speeds are 0, then ``points`` steps in equal ratios from
+    ``first_rpm`` to ``max_rpm``; each point carries the torque of the next speed, so
+    (the torque never rising with speed) the straight lines lie on or below the model
+    everywhere: the safe side. The curve ends before the first speed at which the model
+    gives no torque (the back-EMF alone takes the supply).
+
+    >>> curve = microstep_pull_out_curve((24.0, 2.8, 0.5, 0.0006, 1.8, 0.40), 3000.0, 4)
+    >>> [(round(n), round(t, 3)) for n, t in curve]
+    [(0, 0.283), (30, 0.283), (95, 0.283), (300, 0.283), (949, 0.199), (3000, 0.199)]
+    """
+    ratio = (max_rpm / first_rpm) ** (1.0 / points)
+    speeds = [0.0] + [first_rpm * ratio**i for i in range(points)] + [max_rpm]
+    torques = [microstep_pull_out_torque(n, *args) for n in speeds]
+    curve = []
+    for i, rpm in enumerate(speeds):
+        torque = torques[min(i + 1, len(speeds) - 1)]
+        if torque <= 0.0:
+            break
+        curve.append((rpm, torque))
+    return tuple(curve)
