@@ -461,6 +461,16 @@ FIELDS: tuple[InputField, ...] = (
         kind="number", default=1.0, bounds=(1.0, 10.0),
     ),
     InputField(
+        api="stepper_torque_margin", page="stepper_torque_margin",
+        core="stepper_torque_margin", label="Stepper torque margin",
+        help="A stepper's pull-out torque is divided by this before the move is held "
+        "against it (a stepper that slips loses its position). 1.5, the 50 % margin "
+        "Parker recommends for steppers (Parker Motion knowledge base, Torque Margin); "
+        "Trinamic's QSH manuals ask for 30-50 % plus 10 %. 1 or more",
+        group="Safety factors",
+        kind="number", default=1.5, bounds=(1.0, 10.0),
+    ),
+    InputField(
         api="self_locking_friction_factor", page="self_locking_friction_factor",
         core="self_locking_friction_factor", label="Self-locking friction factor",
         help="Fraction of the static friction trusted to hold a vertical load, 1 or below: "

@@ -62,6 +62,7 @@ class Application:
     critical_speed_safety_factor: float = 0.8
     buckling_safety_factor: float = 0.5
     torque_safety_factor: float = 1.0
+    stepper_torque_margin: float = 1.5
     max_torque_nm: float | None = None
     brake_torque_nm: float | None = None
     self_locking_friction_factor: float = 0.5
@@ -80,6 +81,8 @@ class Application:
     #: ascending (empty: none), and continuous (RMS) torque rating.
     motor_inertia_kg_m2: float | None = None
     motor_curve: tuple[tuple[float, float], ...] = ()
+    #: True when the curve is the stepper model's, drawn from datasheet values.
+    motor_curve_modelled: bool = False
     motor_rms_torque_nm: float | None = None
     #: The stepper's controller: full step angle [deg] (None: no controller checks),
     #: microsteps per full step, and the controller's highest step rate [1/s].

@@ -47,13 +47,14 @@ def test_above_the_corner_the_power_is_constant(rpm: float, corner: float) -> No
 
 @pytest.mark.parametrize("motor_id", sorted(m.id for m in MOTORS.values() if m.kind == "stepper"))
 def test_every_library_curve_is_a_valid_motor_curve(motor_id: str) -> None:
-    """Each library motor draws a curve the motor_curve input accepts: from its holding
-    torque at standstill to the model's last speed, rpm ascending, torque falling."""
+    """Each library motor draws a curve the motor_curve input accepts: from the
+    microstepping torque T_h / sqrt 2 at standstill to at most the model's last speed,
+    rpm ascending, torque falling."""
     motor = MOTORS[motor_id]
     curve = motor.curve()
     assert _curve_points(list(curve)) == list(curve)
-    assert curve[0] == (0.0, motor.value("holding_torque_nm"))
-    assert curve[-1][0] == MAX_STEPPER_RPM
+    assert curve[0] == (0.0, pytest.approx(motor.value("holding_torque_nm") / 2**0.5))
+    assert curve[-1][0] <= MAX_STEPPER_RPM
     torques = [t for _, t in curve]
     assert torques == sorted(torques, reverse=True)
 
@@ -197,3 +198,79 @@ def test_the_drawn_curve_never_promises_more_than_the_model(
     ratio = top_ratio ** (1.0 / points)
     assert drawn <= model * (1 + 1e-12)
     assert drawn >= model / ((1 + ratio) ** 2 / (4 * ratio)) * (1 - 1e-12)
+
+
+#: Makers' pull-out figures published as text, with the datasheet values the model
+#: needs: (maker and part, source, supply V, phase current A, resistance ohm,
+#: inductance H, step angle deg, holding torque N m, speed rpm, published torque N m).
+PUBLISHED_POINTS = [
+    (
+        "Trinamic QSH4218-47-28-040",
+        "Trinamic (ADI) QMOT QSH4218 manual V1.10: section 2, '0.25Nm torque at 1200 RPM "
+        "with a 24V supply'; Table 2.1: 2.8 A, 0.5 ohm, 0.6 mH, 0.40 N m, 1.8 deg",
+        24.0,
+        2.8,
+        0.5,
+        0.0006,
+        1.8,
+        0.40,
+        1200.0,
+        0.25,
+    ),
+]
+
+
+@pytest.mark.parametrize(
+    "point", PUBLISHED_POINTS, ids=[f"{p[0]} at {p[8]:g} rpm" for p in PUBLISHED_POINTS]
+)
+def test_the_microstepping_model_meets_the_makers_published_figures(point: tuple) -> None:
+    """Within 15 % of every published figure, and never more than 15 % above it. The
+    Trinamic point: 0.40 / sqrt 2 = 0.283 N m against 0.25 published (+13 %); the
+    constant-power envelope gives the full 0.40 N m there (+60 %), which this bound
+    refuses."""
+    _, _, supply, current, resistance, inductance, step, holding, rpm, published = point
+    args = (supply, current, resistance, inductance, step, holding)
+    model = stepper.microstep_pull_out_torque(rpm, *args)
+    assert 0.85 * published <= model <= 1.15 * published, model / published
+    corner = stepper.corner_speed_rpm(supply, current, resistance, inductance, step)
+    assert stepper.pull_out_torque(rpm, holding, corner) > 1.15 * published
+
+
+def test_a_microstepping_drive_gives_the_holding_torque_over_root_two() -> None:
+    """Carlyle, StepperSim issue #38: the holding torque is rated two coils on at 100 %,
+    which a microstepping drive never gives; its torque is sqrt(2) / 2 = 0.707 of it.
+    17HS19-2004S1 (0.59 N m, 2 A) slow on 24 V: 0.59 x 0.7071 = 0.417 N m."""
+    torque = stepper.microstep_pull_out_torque(30.0, 24.0, 2.0, 1.4, 0.003, 1.8, 0.59)
+    assert torque == pytest.approx(0.59 * 0.70711, rel=1e-4)
+
+
+@settings(max_examples=200)
+@given(
+    supply=st.floats(5.0, 80.0),
+    current=st.floats(0.2, 5.0),
+    resistance=st.floats(0.0, 5.0),
+    inductance_mh=st.floats(0.2, 40.0),
+    holding=st.floats(0.01, 5.0),
+    at=st.floats(0.0, 1.0),
+)
+def test_the_drawn_microstepping_curve_never_promises_more_than_the_model(
+    supply: float,
+    current: float,
+    resistance: float,
+    inductance_mh: float,
+    holding: float,
+    at: float,
+) -> None:
+    """Read as straight lines between its points (as the motor checks read a curve),
+    the drawn curve lies on or below the model at every speed it covers, its torque
+    positive and never rising."""
+    args = (supply, current, resistance, inductance_mh / 1000, 1.8, holding)
+    curve = stepper.microstep_pull_out_curve(args, MAX_STEPPER_RPM)
+    if not curve:
+        return
+    speeds, torques = zip(*curve, strict=True)
+    rpm = at * speeds[-1]
+    drawn = float(np.interp(rpm, speeds, torques))
+    assert drawn <= stepper.microstep_pull_out_torque(rpm, *args) * (1 + 1e-12)
+    assert all(t > 0.0 for t in torques)
+    assert list(torques) == sorted(torques, reverse=True)
