@@ -233,17 +233,14 @@ def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
     """``app`` with its motor's curve, inertia, continuous torque and step angle filled
     in: a given curve first, then one drawn from the datasheet values, then the library
     motor's (raise UnknownMotor for an id ``motors`` lacks)."""
-    drawn = () if app.motor_curve else _datasheet_curve(app)
-    curve = app.motor_curve or drawn
-    modelled = bool(drawn)
+    curve = app.motor_curve or _datasheet_curve(app)
     if app.motor is None or app.motor == ANY_MOTOR:
         held = energised_holding(app, app.motor_holding_torque_nm)
-        return replace(held, motor_curve=curve, motor_curve_modelled=modelled)
+        return replace(held, motor_curve=curve)
     motor = motors.get(app.motor)
     if motor is None:
         raise UnknownMotor(unknown_motor_message(app.motor, motors))
-    given = replace(app, motor_curve=curve, motor_curve_modelled=modelled)
-    return with_library_motor(given, motor)
+    return with_library_motor(replace(app, motor_curve=curve), motor)
 
 
 def energised_holding(app: Application, holding_nm: float | None) -> Application:
@@ -266,8 +263,6 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
         detent_torque_nm=detent if detent is not None else motor.detent_torque_nm(),
         motor=motor.id,
         motor_curve=app.motor_curve or motor.curve(),
-        motor_curve_modelled=app.motor_curve_modelled
-        or (not app.motor_curve and motor.kind == "stepper"),
         motor_inertia_kg_m2=inertia if inertia is not None else motor.value("rotor_inertia_g_cm2"),
         motor_rms_torque_nm=rms if rms is not None else motor.continuous_torque_nm(),
         step_angle_deg=app.step_angle_deg or motor.step_angle_deg(),
@@ -281,7 +276,6 @@ def without_motor(app: Application) -> Application:
         app,
         motor=None,
         motor_curve=(),
-        motor_curve_modelled=False,
         motor_inertia_kg_m2=None,
         motor_rms_torque_nm=None,
         motor_supply_v=None,

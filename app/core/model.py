@@ -81,8 +81,6 @@ class Application:
     #: ascending (empty: none), and continuous (RMS) torque rating.
     motor_inertia_kg_m2: float | None = None
     motor_curve: tuple[tuple[float, float], ...] = ()
-    #: True when the curve is the stepper model's, drawn from datasheet values.
-    motor_curve_modelled: bool = False
     motor_rms_torque_nm: float | None = None
     #: The stepper's controller: full step angle [deg] (None: no controller checks),
     #: microsteps per full step, and the controller's highest step rate [1/s].

@@ -20,10 +20,11 @@ from app.core.checks.base import (
 )
 from app.core.phrase import Amount, Phrase
 
-#: Said where a stepper's curve is the model's, drawn from its datasheet values.
+#: Said of every stepper: its curve may be the model's, drawn from datasheet values.
 DATASHEET_NOTE = (
-    " The pull-out is the microstepping model's estimate from the datasheet values "
-    "(checked against one maker's published figure): confirm it on the maker's curve."
+    " Where the curve is drawn from datasheet values (a library stepper, or the values "
+    "typed in), the pull-out is the microstepping model's estimate, checked against one "
+    "maker's published figure only: confirm it on the maker's curve."
 )
 
 
@@ -60,7 +61,7 @@ class MotorCurve(Check):
         "curve."
     )
     quantity = "torque"
-    formula = "T_need = SF * T_seg; T_motor = T_curve / M (M: stepper torque margin, servo 1)"
+    formula = "T_need = SF * T_seg; T_motor = T_curve / M"
     source = (
         "Shigley sec. 8-2 (thread torque by the flow of power); motor torque-speed curve; "
         "stepper margin: Parker Motion knowledge base, Torque Margin (steppers 50 %)"
@@ -99,7 +100,7 @@ class MotorCurve(Check):
         values["margin"] = f"{margin:g}"
         return Phrase(
             text + "usable {curve} there: its pull-out {pull_out} over the stepper torque "
-            "margin {margin}." + (DATASHEET_NOTE if app.motor_curve_modelled else ""),
+            "margin {margin}." + DATASHEET_NOTE,
             values,
         )
 
