@@ -108,9 +108,10 @@ class Motor:
             self.value("step_angle_deg"),
         )
 
-    def curve(self) -> tuple[tuple[float, float], ...]:
+    def curve(self, current_is_rms: bool = False) -> tuple[tuple[float, float], ...]:
         """The torque the motor gives against speed: a stepper's pull-out curve from the
-        stepper model, a servo's peak envelope from the servo model."""
+        stepper model (its drive's current set as RMS where ``current_is_rms``, else as
+        the sine's peak), a servo's peak envelope from the servo model."""
         if self.kind == "servo":
             return servo.peak_curve(
                 self.value("peak_torque_nm"),
@@ -126,7 +127,9 @@ class Motor:
             self.value("step_angle_deg"),
             self.value("holding_torque_nm"),
         )
-        return stepper.microstep_pull_out_curve(args, MAX_STEPPER_RPM)
+        return stepper.microstep_pull_out_curve(
+            args, MAX_STEPPER_RPM, current_is_rms=current_is_rms
+        )
 
     def detent_torque_nm(self) -> float | None:
         """A stepper's published detent torque (unpowered); None where not published."""
@@ -226,7 +229,9 @@ def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
     if stepper.corner_speed_rpm(supply, current, resistance, inductance, step) <= 0.0:
         return ()
     args = (supply, current, resistance, inductance, step, app.motor_holding_torque_nm)
-    return stepper.microstep_pull_out_curve(args, MAX_STEPPER_RPM)
+    return stepper.microstep_pull_out_curve(
+        args, MAX_STEPPER_RPM, current_is_rms=app.motor_current_rms
+    )
 
 
 def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
@@ -254,18 +259,34 @@ def energised_holding(app: Application, holding_nm: float | None) -> Application
 
 def with_library_motor(app: Application, motor: Motor) -> Application:
     """``app`` driven by ``motor``, keeping any motor value the user gave; a stepper
-    holding the load energised holds it with its holding torque (``energised_holding``)."""
+    holding the load energised holds it with its holding torque (``energised_holding``),
+    and a stepper drawn from the model carries the values the model's validity range is
+    read from (``with_model_values``)."""
     inertia = app.motor_inertia_kg_m2
     rms = app.motor_rms_torque_nm
     detent = app.detent_torque_nm
+    if not app.motor_curve and motor.kind == "stepper":
+        app = with_model_values(app, motor)
     return replace(
         energised_holding(app, motor.holding_torque_nm()),
         detent_torque_nm=detent if detent is not None else motor.detent_torque_nm(),
         motor=motor.id,
-        motor_curve=app.motor_curve or motor.curve(),
+        motor_curve=app.motor_curve or motor.curve(app.motor_current_rms),
         motor_inertia_kg_m2=inertia if inertia is not None else motor.value("rotor_inertia_g_cm2"),
         motor_rms_torque_nm=rms if rms is not None else motor.continuous_torque_nm(),
         step_angle_deg=app.step_angle_deg or motor.step_angle_deg(),
+    )
+
+
+def with_model_values(app: Application, motor: Motor) -> Application:
+    """``app`` with the library stepper's drive voltage, rated current and holding
+    torque, those its curve is drawn from: what the motor-curve check reads the model's
+    validity range from (``stepper.back_emf_half_supply_rpm``)."""
+    return replace(
+        app,
+        motor_supply_v=motor.value("supply_v"),
+        motor_phase_current_a=motor.value("phase_current_a"),
+        motor_holding_torque_nm=motor.holding_torque_nm(),
     )
 
 

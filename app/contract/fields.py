@@ -407,6 +407,16 @@ FIELDS: tuple[InputField, ...] = (
         bounds=(0.01, 50.0), unit="A",
     ),
     InputField(
+        api="motor_current_rms", page="motor_current_rms", core="motor_current_rms",
+        label="Phase current set as RMS",
+        help="Yes where the driver sets the phase current as an RMS value, as Trinamic's "
+        "do (the sine's amplitude 1.41 times it, QSH4218 manual sec. 6.5): a "
+        "microstepping drive then gives the full holding torque at low speed. No (the "
+        "safe side): the set current is the sine's peak, giving the holding torque over "
+        "sqrt 2. Read for a library stepper too",
+        group="Motor and move", kind="yes-no", default=False,
+    ),
+    InputField(
         api="motor_resistance_ohm", page="motor_resistance", core="motor_resistance_ohm",
         label="Winding resistance", help="Per phase, from the datasheet",
         group="Motor and move", kind="number", bounds=(0.0, 1000.0), unit="Ω",

@@ -18,14 +18,34 @@ from app.core.checks.base import (
     at_most,
     everywhere,
 )
+from app.core.formulas import stepper
 from app.core.phrase import Amount, Phrase
 
 #: Said of every stepper: its curve may be the model's, drawn from datasheet values.
 DATASHEET_NOTE = (
     " Where the curve is drawn from datasheet values (a library stepper, or the values "
-    "typed in), the pull-out is the microstepping model's estimate, checked against one "
-    "maker's published figure only: confirm it on the maker's curve."
+    "typed in), the pull-out is the microstepping model's estimate: confirm it on the "
+    "maker's curve."
 )
+#: Said where the move runs past the model's validity range.
+BEYOND_RANGE_NOTE = (
+    " The move runs to {peak}, past {limit}, where the back-EMF reaches half the supply: "
+    "outside the microstepping model's validity range, where its pull-out is unconfirmed "
+    "(at the one maker's figure found there, Trinamic QSH4218-47-28-040 at 1200 rpm on "
+    "24 V, the model is 60 % above the published 0.25 N m read as the drive sets the "
+    "current, RMS, and 13 % above it read as a peak)."
+)
+
+
+def model_range_rpm(app: Application) -> float | None:
+    """The top of the microstepping model's validity range [rpm]
+    (``stepper.back_emf_half_supply_rpm``) for a stepper whose curve the model draws from
+    its datasheet values (None: no such values, as for a curve typed in or a servo)."""
+    values = (app.motor_supply_v, app.motor_phase_current_a, app.motor_holding_torque_nm)
+    if app.step_angle_deg is None or any(v is None for v in values):
+        return None
+    supply, current, holding = (float(v or 0.0) for v in values)
+    return stepper.back_emf_half_supply_rpm(supply, current, holding)
 
 
 def worst_segment(app: Application, r: Quantities[float]) -> str:
@@ -53,12 +73,15 @@ class MotorCurve(Check):
         "needs, times the torque safety factor, at most the torque the motor's curve gives "
         "at that segment's top speed, a stepper's pull-out divided by its torque margin; "
         "the segment nearest its curve is shown. A stepper's curve from its datasheet "
-        "values is the microstepping model: T_h / sqrt 2 at low speed (the holding torque "
-        "is rated two phases on), then the phase circuit with its back-EMF; valid for a "
-        "sine drive set to the rated current, a supply 4-25 times I R, below 3000 rpm, "
-        "and checked against one maker's published figure (Trinamic QSH4218-47-28-040, "
-        "0.25 N m at 1200 rpm on 24 V: the model 13 % above), so confirm it on the maker's "
-        "curve."
+        "values is the microstepping model: at low speed the holding torque (rated two "
+        "phases on) over sqrt 2 for a drive that sets the sine's peak, the whole of it for "
+        "one that sets the RMS (the phase-current input says which), then the phase "
+        "circuit with its back-EMF. Valid for a sine drive set to the rated current, a "
+        "supply 4-25 times I R, and speeds below that at which the back-EMF reaches half "
+        "the supply; faster moves are flagged. The one maker's figure found published as a "
+        "number lies just past that speed (Trinamic QSH4218-47-28-040, 0.25 N m at 1200 "
+        "rpm on 24 V, drive set to 2.8 A RMS: the model 60 % above it read as RMS, 13 % "
+        "read as a peak), so confirm the curve on the maker's."
     )
     quantity = "torque"
     formula = "T_need = SF * T_seg; T_motor = T_curve / M"
@@ -98,11 +121,16 @@ class MotorCurve(Check):
             return Phrase(text + "{curve} there.", values)
         values["pull_out"] = Amount(r.motor_curve_nm * margin, "torque")
         values["margin"] = f"{margin:g}"
-        return Phrase(
-            text + "usable {curve} there: its pull-out {pull_out} over the stepper torque "
-            "margin {margin}." + DATASHEET_NOTE,
-            values,
+        text += (
+            "usable {curve} there: its pull-out {pull_out} over the stepper torque margin "
+            "{margin}." + DATASHEET_NOTE
         )
+        limit = model_range_rpm(app)
+        if limit is not None and r.peak_rpm > limit:
+            values["peak"] = Amount(r.peak_rpm, "rpm")
+            values["limit"] = Amount(limit, "rpm")
+            text += BEYOND_RANGE_NOTE
+        return Phrase(text, values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         values: dict[str, Amount | str] = {
