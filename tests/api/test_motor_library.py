@@ -389,3 +389,44 @@ def test_a_library_detent_torque_fills_the_detent_input() -> None:
     assert ApplicationIn.model_validate(typed).to_core(MOTORS).detent_torque_nm == 0.01
     none = ApplicationIn.model_validate({**BASE, "motor": "pololu-1205"}).to_core(MOTORS)
     assert none.detent_torque_nm is None
+
+
+def test_a_drive_set_in_rms_gives_the_whole_holding_torque(client: TestClient) -> None:
+    """Trinamic QSH4218 manual sec. 6.5: a drive that sets the RMS drives a sine of
+    1.41 times the set current, the vector of two phases at the rated current: at the Z
+    axis's 90 rpm the SS2422 gives its whole 0.186 N m, usable 0.186 / 1.5 = 0.124 N m;
+    read as a peak (the default), 0.186 / sqrt 2 / 1.5 = 0.0877 N m."""
+    limits = {}
+    for rms in (False, True):
+        params = {**Z_AXIS, "detail": "full", "motor_current_rms": rms}
+        best = client.get("/api/v1/select", params=params).json()["candidates"][0]
+        limits[rms] = _checks(best)["motor_curve"]["limit"]
+    assert limits[False] == pytest.approx(0.186 / 2**0.5 / MARGIN, rel=1e-6)
+    assert limits[True] == pytest.approx(0.186 / MARGIN, rel=1e-6)
+
+
+@pytest.mark.parametrize("bad", ["maybe", "2", "rms"])
+def test_a_bad_current_reading_is_a_field_level_422(client: TestClient, bad: str) -> None:
+    r = client.get("/api/v1/select", params={**Z_AXIS, "motor_current_rms": bad})
+    assert r.status_code == 422
+    assert "motor_current_rms" in {d["field"] for d in r.json()["detail"]}
+
+
+def test_a_move_past_the_models_range_is_flagged(client: TestClient) -> None:
+    """The 14HS20-1504S (0.40 N m, 1.5 A) on its 24 V: k_e = 0.40 / (sqrt 2 x 1.5) =
+    0.1886 V s/rad, the back-EMF reaches half the supply at 12 / 0.1886 = 63.6 rad/s =
+    608 rpm. The Z axis at 12 mm/s (90 rpm) stays inside the model's range; at 100 mm/s
+    (750 rpm) the check says the move runs past it. A curve typed in is not the model's
+    and is never flagged."""
+    assert stepper.back_emf_half_supply_rpm(24.0, 1.5, 0.40) == pytest.approx(607.7, abs=0.1)
+    params = {**Z_AXIS, "motor": "14hs20-1504s", "detail": "full", "microsteps": 8}
+    messages = {}
+    for speed in (12.0, 100.0):
+        body = client.get("/api/v1/select", params={**params, "speed_mm_s": speed}).json()
+        messages[speed] = _checks(body["candidates"][0])["motor_curve"]["message"]
+    assert "validity range" not in messages[12.0]
+    assert "validity range" in messages[100.0] and "608 rpm" in messages[100.0]
+    typed = {**params, "speed_mm_s": 100.0, "motor": None, "motor_curve": "[[0, 0.3], [3000, 0.2]]"}
+    typed["step_angle_deg"] = 1.8
+    body = client.get("/api/v1/select", params={k: v for k, v in typed.items() if v is not None})
+    assert "validity range" not in _checks(body.json()["candidates"][0])["motor_curve"]["message"]
