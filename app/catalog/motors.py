@@ -49,6 +49,8 @@ FIELDS = {
     },
 }
 PLAIN = frozenset({"name", "frame", "kind"})
+#: Values a stepper's entry may leave out where its datasheet does not publish them.
+OPTIONAL = {"stepper": {"detent_torque_nm": "N m"}, "servo": {}}
 #: Each field's unit as held (SI, or the datasheet's own for angles, currents, voltages
 #: and speeds): what the API and the catalog page show beside the value.
 SI_UNITS = {
@@ -64,6 +66,7 @@ SI_UNITS = {
     "rated_rpm": "rpm",
     "max_rpm": "rpm",
     "top_speed_torque_nm": "N m",
+    "detent_torque_nm": "N m",
 }
 #: The motor input that asks for every library motor: the selection runs without a
 #: motor and the screw + motor pairs are ranked (``pair_applications``).
@@ -105,9 +108,10 @@ class Motor:
             self.value("step_angle_deg"),
         )
 
-    def curve(self) -> tuple[tuple[float, float], ...]:
+    def curve(self, current_is_rms: bool = False) -> tuple[tuple[float, float], ...]:
         """The torque the motor gives against speed: a stepper's pull-out curve from the
-        stepper model, a servo's peak envelope from the servo model."""
+        stepper model (its drive's current set as RMS where ``current_is_rms``, else as
+        the sine's peak), a servo's peak envelope from the servo model."""
         if self.kind == "servo":
             return servo.peak_curve(
                 self.value("peak_torque_nm"),
@@ -115,8 +119,22 @@ class Motor:
                 self.value("max_rpm"),
                 self.value("top_speed_torque_nm"),
             )
-        holding = self.value("holding_torque_nm")
-        return stepper.pull_out_curve(holding, self.corner_rpm(), MAX_STEPPER_RPM)
+        args = (
+            self.value("supply_v"),
+            self.value("phase_current_a"),
+            self.value("resistance_ohm"),
+            self.value("inductance_mh"),
+            self.value("step_angle_deg"),
+            self.value("holding_torque_nm"),
+        )
+        return stepper.microstep_pull_out_curve(
+            args, MAX_STEPPER_RPM, current_is_rms=current_is_rms
+        )
+
+    def detent_torque_nm(self) -> float | None:
+        """A stepper's published detent torque (unpowered); None where not published."""
+        detent = self.values.get("detent_torque_nm")
+        return None if detent is None else float(detent.value)
 
     def continuous_torque_nm(self) -> float | None:
         """A servo's rated (S1) torque, the limit of the cycle's RMS torque; None for a
@@ -149,12 +167,13 @@ def _motor(file: str, motor_id: str, data: Any) -> Motor:
     kind = data.get("kind", "stepper")
     if kind not in FIELDS:
         raise entry.fail("kind", f"must be one of {', '.join(FIELDS)}")
-    entry.check_known(frozenset(FIELDS[kind]) | PLAIN)
+    entry.check_known(frozenset(FIELDS[kind]) | frozenset(OPTIONAL[kind]) | PLAIN)
     for name in PLAIN - {"kind"}:
         if not isinstance(data.get(name), str) or not data[name].strip():
             raise entry.fail(name, "missing or not text")
     values = {}
-    for name, unit in FIELDS[kind].items():
+    given = {n: u for n, u in OPTIONAL[kind].items() if n in data}
+    for name, unit in {**FIELDS[kind], **given}.items():
         number = entry.number(name, allow_zero=name in MAY_BE_ZERO)
         value = to_si(number, unit) if unit else number
         values[name] = Sourced(value, SI_UNITS[name], entry.prov(name))
@@ -206,8 +225,13 @@ def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
     )
     if app.motor_holding_torque_nm is None or any(v is None for v in values):
         return ()
-    corner = stepper.corner_speed_rpm(*(float(v or 0.0) for v in values))
-    return stepper.pull_out_curve(app.motor_holding_torque_nm, corner, MAX_STEPPER_RPM)
+    supply, current, resistance, inductance, step = (float(v or 0.0) for v in values)
+    if stepper.corner_speed_rpm(supply, current, resistance, inductance, step) <= 0.0:
+        return ()
+    args = (supply, current, resistance, inductance, step, app.motor_holding_torque_nm)
+    return stepper.microstep_pull_out_curve(
+        args, MAX_STEPPER_RPM, current_is_rms=app.motor_current_rms
+    )
 
 
 def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
@@ -235,16 +259,34 @@ def energised_holding(app: Application, holding_nm: float | None) -> Application
 
 def with_library_motor(app: Application, motor: Motor) -> Application:
     """``app`` driven by ``motor``, keeping any motor value the user gave; a stepper
-    holding the load energised holds it with its holding torque (``energised_holding``)."""
+    holding the load energised holds it with its holding torque (``energised_holding``),
+    and a stepper drawn from the model carries the values the model's validity range is
+    read from (``with_model_values``)."""
     inertia = app.motor_inertia_kg_m2
     rms = app.motor_rms_torque_nm
+    detent = app.detent_torque_nm
+    if not app.motor_curve and motor.kind == "stepper":
+        app = with_model_values(app, motor)
     return replace(
         energised_holding(app, motor.holding_torque_nm()),
+        detent_torque_nm=detent if detent is not None else motor.detent_torque_nm(),
         motor=motor.id,
-        motor_curve=app.motor_curve or motor.curve(),
+        motor_curve=app.motor_curve or motor.curve(app.motor_current_rms),
         motor_inertia_kg_m2=inertia if inertia is not None else motor.value("rotor_inertia_g_cm2"),
         motor_rms_torque_nm=rms if rms is not None else motor.continuous_torque_nm(),
         step_angle_deg=app.step_angle_deg or motor.step_angle_deg(),
+    )
+
+
+def with_model_values(app: Application, motor: Motor) -> Application:
+    """``app`` with the library stepper's drive voltage, rated current and holding
+    torque, those its curve is drawn from: what the motor-curve check reads the model's
+    validity range from (``stepper.back_emf_half_supply_rpm``)."""
+    return replace(
+        app,
+        motor_supply_v=motor.value("supply_v"),
+        motor_phase_current_a=motor.value("phase_current_a"),
+        motor_holding_torque_nm=motor.holding_torque_nm(),
     )
 
 

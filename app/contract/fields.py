@@ -407,6 +407,16 @@ FIELDS: tuple[InputField, ...] = (
         bounds=(0.01, 50.0), unit="A",
     ),
     InputField(
+        api="motor_current_rms", page="motor_current_rms", core="motor_current_rms",
+        label="Phase current set as RMS",
+        help="Yes where the driver sets the phase current as an RMS value, as Trinamic's "
+        "do (the sine's amplitude 1.41 times it, QSH4218 manual sec. 6.5): a "
+        "microstepping drive then gives the full holding torque at low speed. No (the "
+        "safe side): the set current is the sine's peak, giving the holding torque over "
+        "sqrt 2. Read for a library stepper too",
+        group="Motor and move", kind="yes-no", default=False,
+    ),
+    InputField(
         api="motor_resistance_ohm", page="motor_resistance", core="motor_resistance_ohm",
         label="Winding resistance", help="Per phase, from the datasheet",
         group="Motor and move", kind="number", bounds=(0.0, 1000.0), unit="Ω",
@@ -459,6 +469,16 @@ FIELDS: tuple[InputField, ...] = (
         "motor: 1.5 asks for 50 % reserve. 1 or more; larger is safer",
         group="Safety factors",
         kind="number", default=1.0, bounds=(1.0, 10.0),
+    ),
+    InputField(
+        api="stepper_torque_margin", page="stepper_torque_margin",
+        core="stepper_torque_margin", label="Stepper torque margin",
+        help="A stepper's pull-out torque is divided by this before the move is held "
+        "against it (a stepper that slips loses its position). 1.5, the 50 % margin "
+        "Parker recommends for steppers (Parker Motion knowledge base, Torque Margin); "
+        "Trinamic's QSH manuals ask for 30-50 % plus 10 %. 1 or more",
+        group="Safety factors",
+        kind="number", default=1.5, bounds=(1.0, 10.0),
     ),
     InputField(
         api="self_locking_friction_factor", page="self_locking_friction_factor",

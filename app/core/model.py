@@ -62,6 +62,7 @@ class Application:
     critical_speed_safety_factor: float = 0.8
     buckling_safety_factor: float = 0.5
     torque_safety_factor: float = 1.0
+    stepper_torque_margin: float = 1.5
     max_torque_nm: float | None = None
     brake_torque_nm: float | None = None
     self_locking_friction_factor: float = 0.5
@@ -88,10 +89,12 @@ class Application:
     max_step_rate_hz: float | None = None
     #: A library motor's id (its curve and inertia arrive in the fields above), and a
     #: stepper's datasheet values for the pull-out model: drive voltage [V], phase
-    #: current [A], winding resistance [ohm] and inductance [H], holding torque [N m].
+    #: current [A] (set as RMS or, by default, as the sine's peak), winding resistance
+    #: [ohm] and inductance [H], holding torque [N m].
     motor: str | None = None
     motor_supply_v: float | None = None
     motor_phase_current_a: float | None = None
+    motor_current_rms: bool = False
     motor_resistance_ohm: float | None = None
     motor_inductance_h: float | None = None
     motor_holding_torque_nm: float | None = None

@@ -232,10 +232,18 @@ def rms(parts: list[Segment[Array]]) -> Array:
     return np.asarray(value, dtype=np.float64)
 
 
+def curve_margin(app: Application) -> float:
+    """What the motor's curve is divided by before a move is held against it: a
+    stepper's (one with a step angle) torque margin on its pull-out torque, 1 for a
+    servo, whose curve is already its rated envelope."""
+    return app.stepper_torque_margin if app.step_angle_deg is not None else 1.0
+
+
 def curve_torque(app: Application, rpm: Array) -> Array:
-    """The motor's torque at ``rpm``, linear between its points [N m]. Below the first
-    point it is the first point's torque; past the last point the motor cannot run (the
-    speed check rejects it), and the torque is read at the last point."""
+    """The motor's usable torque at ``rpm`` [N m]: its curve, linear between its points,
+    divided by ``curve_margin``. Below the first point it is the first point's torque;
+    past the last point the motor cannot run (the speed check rejects it), and the
+    torque is read at the last point."""
     speeds = [point[0] for point in app.motor_curve]
     torques = [point[1] for point in app.motor_curve]
-    return np.interp(np.minimum(rpm, speeds[-1]), speeds, torques)
+    return np.interp(np.minimum(rpm, speeds[-1]), speeds, torques) / curve_margin(app)

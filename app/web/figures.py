@@ -14,6 +14,7 @@ from app.contract.schemas import CandidateOut
 from app.contract.units import Display, api_value, si_to_api, sig
 from app.core.formulas import critical_speed, pv
 from app.core.index import size_of
+from app.core.motion import curve_margin
 from app.core.sweep import LeadPoint, lead_sweep
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
@@ -440,7 +441,7 @@ def result_figures(
     if candidates[0].segments:
         if app.motor_curve:
             figures["motor"] = motor_figure(
-                candidates, app.motor_curve, app.torque_safety_factor, d
+                candidates, app.motor_curve, app.torque_safety_factor, d, curve_margin(app)
             )
         figures["move"] = move_figure(candidates[0], d)
     first = None if passing else result.summary.most_excluding_check

@@ -20,22 +20,37 @@ def motor_figure(
     curve: tuple[tuple[float, float], ...],
     safety_factor: float,
     d: Display,
+    margin: float = 1.0,
 ) -> dict[str, Any]:
     """The motor's torque against speed (its curve) and, for each top candidate, every
     moving segment's top rpm and torque times the safety factor: a point above the line
-    is a segment the motor cannot drive."""
+    is a segment the motor cannot drive. A stepper's curve (its pull-out) is drawn beside
+    the usable torque the checks hold the move against, the pull-out over ``margin``."""
     unit = d.label("torque")
+    name = "Motor curve" if margin == 1.0 else "Pull-out"
     data: list[dict[str, Any]] = [
         {
             "type": "scatter",
             "mode": "lines",
-            "name": "Motor curve",
+            "name": name,
             "x": [rpm for rpm, _ in curve],
             "y": [d.value(torque, "torque") for _, torque in curve],
             "line": {"color": "#000000", "width": 2},
             "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>motor</extra>",
         }
     ]
+    if margin != 1.0:
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "lines",
+                "name": f"Usable (pull-out / {margin:g})",
+                "x": [rpm for rpm, _ in curve],
+                "y": [d.value(torque / margin, "torque") for _, torque in curve],
+                "line": {"color": "#000000", "width": 2, "dash": "dash"},
+                "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>usable</extra>",
+            }
+        )
     for colour, c in zip(PALETTE, candidates[:TOP], strict=False):
         moving = [s for s in c.segments or [] if s.name != "dwell"]
         data.append(

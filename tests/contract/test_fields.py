@@ -50,9 +50,11 @@ SHARE_LINK_NAMES = [
     "cycles_per_day", "required_life_years", "positioning_tolerance", "brake_torque",
     "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
     "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
-    "motor_supply", "motor_phase_current", "motor_resistance", "motor_inductance",
+    "motor_supply", "motor_phase_current", "motor_current_rms", "motor_resistance",
+    "motor_inductance",
     "motor_holding_torque", "decel", "dwell", "critical_speed_safety_factor",
-    "buckling_safety_factor", "torque_safety_factor", "self_locking_friction_factor",
+    "buckling_safety_factor", "torque_safety_factor", "stepper_torque_margin",
+    "self_locking_friction_factor",
     "brake_safety_factor", "rank_by", "advice", "limit",
 ]  # fmt: skip
 #: the first group, always open: the load and its direction, the moving mass and the

@@ -295,16 +295,21 @@ def test_life_chart_falls_as_one_over_thrust(catalog: Catalog) -> None:
 
 
 def test_a_library_motor_draws_its_model_curve(catalog: Catalog) -> None:
-    """The motor chart draws the library motor's pull-out curve from the stepper model:
-    the 17HS19-2004S1 holds 0.59 N m to its 530 rpm corner on 24 V (drawn from the corner
-    on 0.13 % under the model, so that straight lines between the points never exceed
-    it: (1 + r)^2 / 4 r for r = (3000 / 530)^(1 / 24))."""
+    """The motor chart draws the library motor's pull-out curve from the microstepping
+    model: the 17HS19-2004S1 (0.59 N m) gives 0.59 / sqrt 2 = 0.417 N m from standstill
+    (points at 0 and 30 rpm, each carrying the next speed's torque), and its drawn
+    torque never rises. Beside it, dashed, the usable torque the checks hold the move
+    against: the pull-out over the stepper torque margin, 0.417 / 1.5 = 0.278 N m."""
     inputs = ApplicationIn.model_validate(
         {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200,
          "motor": "17hs19-2004s1"}
     )  # fmt: skip
     figures = result_figures(run_selection(inputs, catalog), METRIC, catalog)
     curve = figures["motor"]["data"][0]
-    assert curve["x"][:2] == pytest.approx([0.0, 530.0])
-    r = (3000 / 530) ** (1 / 24)
-    assert curve["y"][:2] == pytest.approx([0.59, 0.59 / ((1 + r) ** 2 / (4 * r))])
+    assert curve["x"][:2] == pytest.approx([0.0, 30.0])
+    assert curve["y"][:2] == pytest.approx([0.59 / 2**0.5] * 2)
+    assert list(curve["y"]) == sorted(curve["y"], reverse=True)
+    usable = figures["motor"]["data"][1]
+    assert curve["name"] == "Pull-out" and usable["name"] == "Usable (pull-out / 1.5)"
+    assert usable["x"] == curve["x"]
+    assert usable["y"] == pytest.approx([t / 1.5 for t in curve["y"]])

@@ -1,23 +1,45 @@
 """A hybrid stepper's pull-out torque against speed from its datasheet's electrical
 values, so a user can enter a motor's numbers instead of its curve [1, 2].
 
+The curve the app draws (``microstep_pull_out_torque``, ``microstep_pull_out_curve``)
+is the torque of a sine (microstepping) chopper drive. A datasheet's holding torque T_h
+is measured with both phases at the rated current I, a current vector of sqrt(2) I, so
+the torque constant is k_e = T_h / (sqrt(2) I) [4, 5]. What the drive's set current
+means decides the sine's amplitude: most drives set the peak (amplitude I: T_h / sqrt(2)
+= 0.71 T_h at low speed [5]); Trinamic's set the RMS (amplitude 1.41 I: the full T_h
+[6]). Faster, each phase's circuit V = E + I (R + j X) limits the current the supply can
+force against the back-EMF and the reactance [3, 4].
+
+Checked against the one maker's figure found published as a number (Trinamic
+QSH4218-47-28-040: 0.25 N m at 1200 rpm on 24 V, its drive set to 2.8 A RMS [6];
+``tests/core/test_stepper.py``): read as the drive sets it (RMS) the model gives 0.40 N m
+there, 60 % high; read as a peak, 0.283 N m, 13 % high. At that point the back-EMF
+amplitude is 53 % of the supply: the real curve has fallen well before the speed at which
+the model's supply runs out. No published figure lies at a lower back-EMF, so the model is
+confirmed nowhere above standstill, where it is the holding torque's definition.
+
+Validity: two-phase hybrid on a sine chopper drive set to the motor's rated current,
+supply 4 to 25 times the winding's rated voltage I R (the makers' range [6]); below the
+speed at which the back-EMF amplitude reaches half the supply
+(``back_emf_half_supply_rpm``), the limit the one published figure lies beyond, the
+motor-curve check flags faster moves as outside it. No resonance, iron loss or
+saturation: the curve is an estimate to be confirmed on the maker's own curve.
+
+The constant-power envelope (``corner_speed_rpm``, ``pull_out_torque``) is kept for the
+corner speed it names:
+
 A chopper drive holds the phase current at its set value I while the winding lets it:
 each full step reverses the current of one phase, from -I to +I, through the winding's
 inductance L, driven by what the supply V leaves over the resistive drop I R. That takes
 t = 2 L I / (V - I R) [2]. While a full step lasts longer than t the motor gives its
 holding torque; faster, the current (and with it the torque) reaches only the share of
 I that the step's time allows, so the torque falls as 1 / speed above the corner speed
-(constant power) [1]. The model ignores back-EMF and the mid-band resonance dips of real
-curves, so it is an envelope for sizing, to be checked against the maker's curve.
+(constant power) [1]. It ignores back-EMF and gives the full holding torque below the
+corner, which no microstepping drive gives: the app no longer draws curves with it.
 
-How much ignoring the back-EMF costs is bounded by a second, independent model
-(``sine_pull_out_torque``): a sine (microstepping) drive feeding each phase through its
-equivalent circuit V = E + I (R + j X) [3], the back-EMF E from the holding torque and
-rated current [4]. For every stepper of the library, from half to four times the corner
-speed, it gives 0.87 to 1.00 times this model's torque (``tests/core/test_stepper.py``):
-the back-EMF lowers the curve by at most about 13 %, most near the corner. No maker's
-pull-out curve published as numbers was found to check either model against, so both
-stay envelopes.
+``sine_pull_out_torque`` is the same circuit as the microstepping model with the set
+current read as an RMS value (amplitude sqrt(2) I), as some drives set it; at low speed
+it gives the full holding torque, so the app does not draw curves with it either.
 
 References
 ----------
@@ -32,6 +54,15 @@ References
    CloudrayMotor, "Back emf due to rotation": approximate peak back-EMF =
    sqrt(2) pi T_h rev/s / I_rated, holding torque T_h with both phases at the rated
    current; worked example 0.55 N m, 1.68 A, 5 rev/s: 7.3 V.
+5. R. Carlyle, StepperSim issue #38 (github.com/rcarlyle/StepperSim/issues/38): the
+   rated holding torque is measured with two coils on at 100 %, which a microstepping
+   driver never gives; multiply it by sqrt(2) / 2 (0.707) for the microstepping torque.
+6. Trinamic (ADI), QMOT QSH4218 manual V1.10, Table 2.1 (QSH4218-47-28-040: 0.40 N m,
+   2.8 A, 0.5 ohm, 0.6 mH), section 2 ("0.25Nm torque at 1200 RPM with a 24V supply";
+   "optimized for 2.8A RMS coil current"), section 5.4 (curve tested at 2.8 A RMS),
+   section 6.5 (microstepping: "the amplitude of the waves is 1.41 times the nominal
+   motor current, while the RMS values equal the nominal motor current") and Table 6.2
+   (optimum driver supply 4 to 22 times, maximum 25 times, the rated coil voltage).
 """
 
 import math
@@ -191,13 +222,136 @@ def sine_pull_out_torque(
     0.275
     """
     k_e = back_emf_constant(holding_torque_nm, current_a)
+    amplitude_a = math.sqrt(2.0) * current_a
+    return _circuit_torque(
+        rpm, supply_v, amplitude_a, resistance_ohm, inductance_h, step_angle_deg, k_e
+    )
+
+
+def _circuit_torque(
+    rpm: float,
+    supply_v: float,
+    amplitude_a: float,
+    resistance_ohm: float,
+    inductance_h: float,
+    step_angle_deg: float,
+    k_e: float,
+) -> float:
+    """k_e times the largest in-phase current amplitude [A] the phase circuit allows at
+    ``rpm``: |I| <= ``amplitude_a`` and |E + I (R + j N_r w L)| <= ``supply_v``."""
     omega = 2.0 * math.pi * rpm / SECONDS_PER_MINUTE
     teeth = DEGREES_PER_TURN / (STEPS_PER_CYCLE * step_angle_deg)
     impedance = complex(resistance_ohm, teeth * omega * inductance_h)
     if abs(impedance) == 0.0:
-        return holding_torque_nm
+        return k_e * amplitude_a
     centre = -k_e * omega / impedance
-    in_phase = _rightmost_common_point(
-        centre, supply_v / abs(impedance), math.sqrt(2.0) * current_a
-    )
+    in_phase = _rightmost_common_point(centre, supply_v / abs(impedance), amplitude_a)
     return 0.0 if in_phase is None else k_e * max(in_phase, 0.0)
+
+
+@formula(
+    "T = k_e max Re(I): |I| <= a I_set (a = 1 peak-set, sqrt 2 RMS-set), "
+    "|E + I (R + j N_r w L)| <= V, k_e = T_h / (sqrt(2) I_set)",
+    "per-phase circuit (MathWorks, Stepper Motor block); two-coils-on holding torque "
+    "(Carlyle, StepperSim #38); RMS-set drives: Trinamic QSH4218 manual sec. 6.5",
+)
+def microstep_pull_out_torque(
+    rpm: float,
+    supply_v: float,
+    current_a: float,
+    resistance_ohm: float,
+    inductance_h: float,
+    step_angle_deg: float,
+    holding_torque_nm: float,
+    current_is_rms: bool = False,
+) -> float:
+    """Pull-out torque [N m] at ``rpm`` [rev/min] of a two-phase hybrid stepper on a sine
+    (microstepping) chopper drive set to ``current_a`` [A] per phase (the motor's rated
+    current): the sine's amplitude is ``current_a`` where the drive sets the peak, and
+    sqrt(2) ``current_a`` where it sets the RMS (``current_is_rms``, as Trinamic's do).
+    The datasheet's ``holding_torque_nm`` [N m] is with both phases at the rated current,
+    a current vector sqrt(2) times it, so the torque constant is k_e = T_h / (sqrt(2) I)
+    (``back_emf_constant``) and at low speed the torque is k_e times the amplitude:
+    T_h / sqrt(2) peak-set, T_h RMS-set. Faster, each phase is the circuit
+    V = E + I (R + j X): back-EMF E = k_e w, reactance X = N_r w L (N_r = 90 /
+    ``step_angle_deg`` rotor teeth), phase voltage at most ``supply_v`` [V];
+    ``resistance_ohm`` [ohm] and ``inductance_h`` [H] per phase.
+
+    Validity: as the module states (sine drive, supply 4 to 25 times I R, below
+    ``back_emf_half_supply_rpm``; no resonance, iron loss or saturation).
+
+    Trinamic QSH4218 manual, sections 2, 5.4 and Table 2.1: the QSH4218-47-28-040
+    (0.40 N m, 2.8 A, 0.5 ohm, 0.6 mH, 1.8 deg) gives 0.25 N m at 1200 rpm on 24 V, its
+    drive set to 2.8 A RMS. Read as the drive sets it the model gives the full 0.40 N m
+    there (the supply still drives the whole current), 60 % high; read as a peak,
+    0.40 / sqrt(2) = 0.283 N m, 13 % high:
+
+    >>> round(microstep_pull_out_torque(1200.0, 24.0, 2.8, 0.5, 0.0006, 1.8, 0.40, True), 3)
+    0.4
+    >>> round(microstep_pull_out_torque(1200.0, 24.0, 2.8, 0.5, 0.0006, 1.8, 0.40), 3)
+    0.283
+    >>> round(microstep_pull_out_torque(3000.0, 24.0, 2.8, 0.5, 0.0006, 1.8, 0.40), 3)
+    0.199
+    """
+    k_e = back_emf_constant(holding_torque_nm, current_a)
+    amplitude_a = current_a * (math.sqrt(2.0) if current_is_rms else 1.0)
+    return _circuit_torque(
+        rpm, supply_v, amplitude_a, resistance_ohm, inductance_h, step_angle_deg, k_e
+    )
+
+
+@formula(
+    "n_v = 60 V / (2 pi 2 k_e), k_e = T_h / (sqrt(2) I)",
+    "back-EMF amplitude k_e w (Duet3D); the limit past the one published figure "
+    "(Trinamic QSH4218-47-28-040 at 1200 rpm, back-EMF 53 % of the supply)",
+)
+def back_emf_half_supply_rpm(supply_v: float, current_a: float, holding_torque_nm: float) -> float:
+    """The speed [rpm] at which the back-EMF amplitude k_e w reaches half the supply
+    ``supply_v`` [V], k_e from the ``holding_torque_nm`` [N m] at the rated
+    ``current_a`` [A] (``back_emf_constant``): the top of the microstepping model's
+    validity range. The one maker's figure found published as a number lies just past it
+    (Trinamic QSH4218-47-28-040: 0.25 N m at 1200 rpm on 24 V, 53 % of the supply),
+    where the model read as the drive sets the current (RMS) is 60 % high; none lies
+    below it, so the model is confirmed nowhere in the range either, only not refuted.
+
+    The QSH4218-47-28-040 (0.40 N m, 2.8 A) on 24 V: k_e = 0.40 / (sqrt 2 x 2.8) =
+    0.101 V s/rad, n_v = 60 x 24 / (4 pi x 0.101) = 1134 rpm:
+
+    >>> round(back_emf_half_supply_rpm(24.0, 2.8, 0.40))
+    1134
+    """
+    k_e = back_emf_constant(holding_torque_nm, current_a)
+    return SECONDS_PER_MINUTE * supply_v / (2.0 * math.pi * 2.0 * k_e)
+
+
+def microstep_pull_out_curve(
+    args: tuple[float, float, float, float, float, float],
+    max_rpm: float,
+    points: int = 48,
+    first_rpm: float = 30.0,
+    current_is_rms: bool = False,
+) -> tuple[tuple[float, float], ...]:
+    """``microstep_pull_out_torque`` as (rpm, N m) points from standstill to ``max_rpm``,
+    for checks that read a curve as straight lines between its points. ``args`` are that
+    function's arguments after the speed (supply, current, resistance, inductance, step
+    angle, holding torque), ``current_is_rms`` its last. The speeds are 0, then
+    ``points`` steps in equal ratios from ``first_rpm`` to ``max_rpm``; each point
+    carries the torque of the next speed, so (the torque never rising with speed) the
+    straight lines lie on or below the model everywhere: the safe side. The curve ends
+    before the first speed at which the model gives no torque (the back-EMF alone takes
+    the supply).
+
+    >>> curve = microstep_pull_out_curve((24.0, 2.8, 0.5, 0.0006, 1.8, 0.40), 3000.0, 4)
+    >>> [(round(n), round(t, 3)) for n, t in curve]
+    [(0, 0.283), (30, 0.283), (95, 0.283), (300, 0.283), (949, 0.199), (3000, 0.199)]
+    """
+    ratio = (max_rpm / first_rpm) ** (1.0 / points)
+    speeds = [0.0] + [first_rpm * ratio**i for i in range(points)] + [max_rpm]
+    torques = [microstep_pull_out_torque(n, *args, current_is_rms) for n in speeds]
+    curve = []
+    for i, rpm in enumerate(speeds):
+        torque = torques[min(i + 1, len(speeds) - 1)]
+        if torque <= 0.0:
+            break
+        curve.append((rpm, torque))
+    return tuple(curve)
