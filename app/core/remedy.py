@@ -67,6 +67,10 @@ WHY: Mapping[str, str] = {
     "nut_heat": "every nut runs too hot at this duty: a ball screw, or a lower duty",
 }
 
+#: Checks that judge the motor, not the screw: when one excludes every screw, another
+#: motor may still drive them.
+MOTOR_BOUND = frozenset(("torque", "motor_curve", "motor_rms", "motor_speed"))
+
 #: A change of the application: core input name -> SI value (or the end fixity).
 Inputs = Mapping[str, float | str]
 
@@ -193,7 +197,8 @@ def impossible(
             "another nut)."
         )
     why = WHY.get(most_excluding or "", f"{label} excludes every screw")
+    drive = " with this motor" if most_excluding in MOTOR_BOUND else ""
     return Phrase(
-        f"No leadscrew in the catalog can do this within the accepted inputs: {tried}. "
+        f"No leadscrew in the catalog can do this{drive} within the accepted inputs: {tried}. "
         f"{why[0].upper()}{why[1:]}."
     )

@@ -462,6 +462,8 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
         "load_direction": "auto",
         "holding_source": "brake",
         "lubrication": "dry",
+        "stepper_torque_margin": 1.5,
+        "motor_current_rms": False,
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
