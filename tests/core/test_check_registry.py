@@ -72,7 +72,13 @@ APPS = {
         brake_safety_factor=1.5,
     ),
 }
-FUNCTIONS: dict[str, Any] = {"pi": math.pi, "sqrt": math.sqrt, "cos": math.cos, "max": max}
+FUNCTIONS: dict[str, Any] = {
+    "pi": math.pi,
+    "sqrt": math.sqrt,
+    "cos": math.cos,
+    "max": max,
+    "min": min,
+}
 
 
 def _expression(side: str) -> Any:
