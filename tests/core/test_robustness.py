@@ -20,7 +20,11 @@ the list. "life-advice-reject" was recorded again when the ISO nuts' allowed wea
 Helix Linear's end of life (a quarter of the pitch off the thread, 0.483 H1, was 0.25 H1
 assumed): their wear lives nearly doubled, so the Tr14x3 and Tr8x8(P2) PTFE nuts now last
 the 3 years asked and the Tr12x6(P3) and Tr14x6(P3) PTFE nuts no longer hinge on the nut
-length. Every path must still give them: select, a catalog screw evaluated alone,
+length. It was recorded once more when the seed's rated travel became capped by the wear
+life of the same polyacetal nut at the cycle's wear thrust: at 60 N the ZBX, KHD and VHD
+TFE nuts wear through in under the 3 years asked (ZBX8000-L10: 14,640 km N / 60 N =
+244 km, 244e3 / (0.4 x 2000 x 365) = 0.84 years), so ISO nuts fill the list. Every path
+must still give them: select, a catalog screw evaluated alone,
 and a screw outside the catalog with the same values (its variant rows built on the fly).
 """
 
