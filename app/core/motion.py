@@ -92,9 +92,12 @@ def cycles_per_day(app: Application) -> float | None:
     moves and both dwells (``life.cycles_per_day``); None without a duty, or for hours
     without a stroke to time the cycle by.
 
-    >>> cycles_per_day(Application(load_n=0.0, speed_m_s=0.3, length_m=0.5, accel_m_s2=10.0,
-    ...                            stroke_m=0.4, hours_per_day=1.0))
-    1327.4336283185844
+    An hour a day of 400 mm moves at 0.3 m/s, 10 m/s^2: each move 0.03 + 1.3033 + 0.03 s,
+    the cycle 2.7267 s, 3600 / 2.7267 cycles:
+
+    >>> round(cycles_per_day(Application(load_n=0.0, speed_m_s=0.3, length_m=0.5,
+    ...     accel_m_s2=10.0, stroke_m=0.4, hours_per_day=1.0)), 1)
+    1320.3
     """
     if app.cycles_per_day is not None or app.hours_per_day is None:
         return app.cycles_per_day
