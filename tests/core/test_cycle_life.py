@@ -178,3 +178,19 @@ def test_the_seed_rating_falls_with_the_load_as_the_same_nuts_wear(
     else:
         assert rated == pytest.approx(worn, rel=1e-9)
         assert "cut to" in text and "assumed wear rate" in text
+
+
+def test_the_largest_load_for_a_wear_thrust_inverts_it() -> None:
+    """The pick-and-place axis with a friction load F below m a: the ramps add
+    |15 + F| + |15 - F| = 30 N a move whatever F, the cruises 2 F x 391 mm, so F_w =
+    0.3375 + 0.9775 F; a wear thrust of 0.5 N allows F = 0.1625 / 0.9775 = 0.1662 N. Past
+    15 N the ramps grow with F too (a corner): F_w = (4 F x 4.5 + 2 F x 391) / 800 = F, so
+    20 N allows F = 20 N. Below the 0.3375 N that m a alone gives, no load does."""
+    assert motion.largest_load_for_wear(PICK_AND_PLACE, 0.5) == pytest.approx(0.1625 / 0.9775)
+    assert motion.largest_load_for_wear(PICK_AND_PLACE, 20.0) == pytest.approx(20.0)
+    assert motion.largest_load_for_wear(PICK_AND_PLACE, 0.3) is None
+    for allowed_n in (0.5, 5.0, 14.9, 20.0, 100.0):
+        load_n = motion.largest_load_for_wear(PICK_AND_PLACE, allowed_n)
+        assert load_n is not None
+        at = replace(PICK_AND_PLACE, load_n=load_n)
+        assert motion.wear_thrust(at) == pytest.approx(allowed_n, rel=1e-12)
