@@ -303,14 +303,22 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="cycles_per_day", page="cycles_per_day", core="cycles_per_day",
-        label="Cycles per day", help="Full cycles, out and back, for life",
+        label="Cycles per day", help="Full cycles, out and back, for life; or give hours per "
+        "day instead",
         group="Duty and requirements", kind="number", bounds=(1e-3, 1e7), unit="/day",
     ),
     InputField(
+        api="hours_per_day", page="hours_per_day", core="hours_per_day",
+        label="Hours per day", help="Running hours a day instead of cycles per day (not "
+        "both): the cycles follow from the cycle's time, both moves and dwells; needs a stroke",
+        group="Duty and requirements", kind="number", bounds=(1e-3, 24.0), unit="h/day",
+        needs=("stroke_mm",),
+    ),
+    InputField(
         api="required_life_years", page="required_life_years", core="required_life_years",
-        label="Required life", help="Needs stroke and cycles per day",
+        label="Required life", help="Needs stroke and cycles or hours per day",
         group="Duty and requirements", kind="number", bounds=(1e-3, 1000.0), dimension="years",
-        needs=("stroke_mm", "cycles_per_day"),
+        needs=("stroke_mm",),
     ),
     InputField(
         api="positioning_tolerance_mm", page="positioning_tolerance",

@@ -322,6 +322,23 @@ class ApplicationInputs(BaseModel):
             raise ValueError("needs " + " and ".join(needs))
         return value
 
+    @field_validator("hours_per_day", check_fields=False)
+    @classmethod
+    def _one_duty(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """The duty is cycles a day or hours a day, never both (they could disagree)."""
+        if value is not None and info.data.get("cycles_per_day") is not None:
+            raise ValueError("give cycles_per_day or hours_per_day, not both")
+        return value
+
+    @field_validator("required_life_years", check_fields=False)
+    @classmethod
+    def _a_duty(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """A required life needs a duty to turn a life into years: cycles or hours a day."""
+        given = [info.data.get(name) for name in ("cycles_per_day", "hours_per_day")]
+        if value is not None and all(v is None for v in given):
+            raise ValueError("needs cycles_per_day or hours_per_day")
+        return value
+
     @field_validator("motor", check_fields=False)
     @classmethod
     def _known_motor(cls, value: str | None, info: ValidationInfo) -> str | None:

@@ -59,6 +59,8 @@ class Application:
     ambient_c: float = 20.0
     stroke_m: float | None = None
     cycles_per_day: float | None = None
+    #: The duty as hours of running a day, instead of cycles (``motion.cycles_per_day``).
+    hours_per_day: float | None = None
     critical_speed_safety_factor: float = 0.8
     buckling_safety_factor: float = 0.5
     torque_safety_factor: float = 1.0

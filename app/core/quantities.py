@@ -141,10 +141,17 @@ class Quantities(Generic[V]):
     #: the catalog gives one, else a polymer nut's dynamic flank pressure over the engaged
     #: flank area (NaN: neither).
     rated_load_n: V
+    #: The seed's rated travel, low end, at most the nut's wear travel at the cycle's wear
+    #: thrust where its material has a wear rate (NaN: no rating) [m]; the rated band in
+    #: years of the duty, each end so capped (NaN: no rating or no duty).
+    life_travel_min_m: V
     life_years_min: V
     life_years_max: V
-    #: Nut wear (Archard): nut travel until the allowed wear depth [m] and that travel in
-    #: years of the duty (NaN: no wear rating, no thrust, or no duty)
+    #: Nut wear (Archard): the steady thrust that wears the nut as the whole cycle does
+    #: (``motion.wear_thrust``: every moving segment of both moves, m a on the ramps) [N],
+    #: nut travel until the allowed wear depth [m] and that travel in years of the duty
+    #: (NaN: no wear rating, no thrust, or no duty)
+    wear_force_n: V
     wear_travel_m: V
     wear_life_years: V
     #: Heat: the cycle's mean speed [m/s] (the top speed without a stroke), the thread's
@@ -405,12 +412,11 @@ def _flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> d
     }
 
 
-def _wear(
-    app: Application, t: CandidateTable, force_n: float, flank_area_m2: Array
-) -> dict[str, Any]:
+def _wear(app: Application, t: CandidateTable, flank_area_m2: Array) -> dict[str, Any]:
     """Nut travel until its flanks have worn the allowed depth (Archard's law at the
-    running thrust): over the engaged flanks and flank height of a standard thread, else
-    over the seed's three threads and thread depth."""
+    cycle's wear thrust, ``motion.wear_thrust``): over the engaged flanks and flank height
+    of a standard thread, else over the seed's three threads and thread depth."""
+    force_n = motion.wear_thrust(app)
     flanks = ~np.isnan(flank_area_m2)
     area = np.where(flanks, flank_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
@@ -420,9 +426,14 @@ def _wear(
             t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
         )
     travel = _finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
-    rated = bool(app.stroke_m and app.cycles_per_day)
-    years = life.life_years(travel, app.stroke_m, app.cycles_per_day) if rated else travel * np.nan
-    return {"wear_travel_m": travel, "wear_life_years": years}
+    cycles = motion.cycles_per_day(app)
+    rated = bool(app.stroke_m and cycles)
+    years = life.life_years(travel, app.stroke_m, cycles) if rated else travel * np.nan
+    return {
+        "wear_force_n": np.full(len(t), force_n),
+        "wear_travel_m": travel,
+        "wear_life_years": years,
+    }
 
 
 def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
@@ -442,15 +453,23 @@ def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]
     }
 
 
-def _duty(app: Application, t: CandidateTable) -> dict[str, Any]:
-    """Rated life in years for the duty, lead error and thermal growth over the stroke."""
+def _duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str, Any]:
+    """Rated life in years for the duty, lead error and thermal growth over the stroke.
+
+    The seed rates its nuts' travel without the load it holds at, and warns that life
+    varies with load: the rated travel is taken as at most the wear life of the same nut
+    material at this cycle's wear thrust (``wear_travel_m``, NaN where the nut has no
+    wear rate), so a rating never promises more at a high load than the wear law."""
     nan = np.full(len(t), np.nan)
-    stroke, cycles = app.stroke_m, app.cycles_per_day
+    stroke, cycles = app.stroke_m, motion.cycles_per_day(app)
     rated = bool(stroke and cycles)
     travel = app.stroke_m if app.stroke_m is not None else app.length_m
+    low_m = np.where(np.isnan(t.life_min_m), np.nan, np.fmin(t.life_min_m, wear_travel_m))
+    high_m = np.where(np.isnan(t.life_max_m), np.nan, np.fmin(t.life_max_m, wear_travel_m))
     return {
-        "life_years_min": life.life_years(t.life_min_m, stroke, cycles) if rated else nan,
-        "life_years_max": life.life_years(t.life_max_m, stroke, cycles) if rated else nan,
+        "life_travel_min_m": low_m,
+        "life_years_min": life.life_years(low_m, stroke, cycles) if rated else nan,
+        "life_years_max": life.life_years(high_m, stroke, cycles) if rated else nan,
         "lead_error_m": accuracy.cumulative_lead_error(t.lead_accuracy, travel),
         "thermal_growth_m": accuracy.thermal_growth(
             t.screw_expansion_per_k, travel, app.ambient_c - REFERENCE_TEMPERATURE_C
@@ -527,8 +546,8 @@ def _values(
                 app, t, rpm, limits["pv_temperature_factor"] * limits["pv_lubrication_factor"]
             )
         ),
-        **_duty(app, t),
-        **_wear(app, t, force_n, flanks["flank_area_m2"]),
+        **(worn := _wear(app, t, flanks["flank_area_m2"])),
+        **_duty(app, t, worn["wear_travel_m"]),
         **(holding := _holding(app, t, motion.steady_load(app))),
         **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),
         **_controller(app, t, motor["peak_rpm"]),

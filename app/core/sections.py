@@ -5,8 +5,11 @@ builds them)."""
 import math
 from typing import TYPE_CHECKING, Generic, Literal, TypeVar, cast
 
+import numpy as np
+
+from app.core import motion
 from app.core.checks.wear_life import life_band
-from app.core.formulas import critical_speed
+from app.core.formulas import critical_speed, life
 
 if TYPE_CHECKING:
     from app.core.record import Batch, Candidate
@@ -95,8 +98,11 @@ class CriticalSpeed(Section):
 #: What each life model's numbers rest on.
 LIFE_NOTES = {
     "rated": "Rated travel (seed). Life varies with load, environment and duty cycle; "
-    "longer leads generally last longer (seed).",
-    "wear": "Wear life by Archard's law at the running thrust: the nut travel until its "
+    "longer leads generally last longer (seed). The seed gives no load for its rating: "
+    "where the nut material has a wear rate, each end counts for no more than the nut's "
+    "wear life at the cycle's wear thrust (Archard's law, assumed wear rate).",
+    "wear": "Wear life by Archard's law at the cycle's wear thrust (every segment of both "
+    "moves, m a on the ramps, weighted by its travel): the nut travel until its "
     "flanks wear the allowed depth, at the high and the low end of the nut material's "
     "assumed wear rate (3:1 either way of its value; published rates scatter 2-3:1). "
     "Lubrication, heat and dirt move it further.",
@@ -129,9 +135,13 @@ class Life(Section):
 
     @property
     def travel_m(self) -> tuple[float, float]:
+        """The band of travel: the wear band, or the seed's rated band with each end at
+        most the wear band's (no cap where the nut has no wear rate)."""
+        low, high = self._band("wear_travel_m")
         if self.model == "rated":
-            return cast(float, self.screw.life_min_m), cast(float, self.screw.life_max_m)
-        return self._band("wear_travel_m")
+            seed = cast(float, self.screw.life_min_m), cast(float, self.screw.life_max_m)
+            return float(np.fmin(seed[0], low)), float(np.fmin(seed[1], high))
+        return low, high
 
     @property
     def travel_min_m(self) -> float:
@@ -141,17 +151,20 @@ class Life(Section):
     def travel_max_m(self) -> float:
         return self.travel_m[1]
 
+    def _years(self, travel_m: float) -> float | None:
+        """``travel_m`` in years of the duty (None without one)."""
+        stroke, cycles = self.app.stroke_m, motion.cycles_per_day(self.app)
+        if not (stroke and cycles):
+            return None
+        return number(life.life_years(travel_m, stroke, cycles))
+
     @property
     def years_min(self) -> float | None:
-        if self.model == "wear":
-            return number(self._band("wear_life_years")[0])
-        return number(self.batch.columns["life_years_min"][self.k])
+        return self._years(self.travel_m[0])
 
     @property
     def years_max(self) -> float | None:
-        if self.model == "wear":
-            return number(self._band("wear_life_years")[1])
-        return number(self.batch.columns["life_years_max"][self.k])
+        return self._years(self.travel_m[1])
 
     @property
     def hours(self) -> tuple[float, float]:

@@ -59,13 +59,13 @@ def shown_rms(s: Screening) -> np.ndarray:
 
 def shown_life_min(s: Screening, pos: np.ndarray) -> np.ndarray:
     """The low end of the life band the results show for the candidates at ``pos``, as
-    nut travel [m]: the seed's rated life, else the nut's wear life at the high end of its
-    wear rate's range (``Life.travel_m``); NaN where neither is given."""
+    nut travel [m]: the nut's wear life at the high end of its wear rate's range, or the
+    seed's rated life where it is shorter (``Life.travel_m``); NaN where neither is
+    given."""
     t = s.table
     share = np.array([life_band(t.screws[i])[0] for i in pos], dtype=np.float64)
     wear = s.quantities.wear_travel_m[pos] * share
-    rated = t.life_min_m[pos]
-    return np.asarray(np.where(np.isnan(rated), wear, rated), dtype=np.float64)
+    return np.asarray(np.fmin(t.life_min_m[pos], wear), dtype=np.float64)
 
 
 def _rank_order(app: Application, s: Screening) -> np.ndarray:

@@ -54,8 +54,8 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
 
 @dataclass(frozen=True, slots=True)
 class WearPoint:
-    """One wear-rated candidate at the axis's running thrust [N]: its wear life in years
-    of the duty (None without a duty) and in travel [m]."""
+    """One wear-rated candidate at the cycle's wear thrust [N] (``motion.wear_thrust``):
+    its wear life in years of the duty (None without a duty) and in travel [m]."""
 
     id: str
     force_n: float
@@ -66,14 +66,14 @@ class WearPoint:
 def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> list[WearPoint]:
     """The candidates ``ids`` of ``index`` whose nut has a wear life at this thrust, in
     the order given, their numbers from one pass over all of them. Archard's life is
-    inversely proportional to the thrust, so one point gives the life at any thrust."""
+    inversely proportional to the wear thrust, so one point gives the life at any."""
     rows = np.array([index.positions[i] for i in ids if i in index.positions], dtype=np.intp)
     if not rows.size:
         return []
     q = operating_point(app, index.table.take(rows))
     points = []
     for k, position in enumerate(rows.tolist()):
-        travel, years, force = q.wear_travel_m[k], q.wear_life_years[k], q.force_n[k]
+        travel, years, force = q.wear_travel_m[k], q.wear_life_years[k], q.wear_force_n[k]
         if np.isfinite(travel) and force > 0.0:
             life = float(years) if np.isfinite(years) else None
             screw = index.table.screws[position]

@@ -1,6 +1,7 @@
 """Nut wear life against thrust as a Plotly figure (plain dict): for the top candidates
 whose nut is rated by its wear rate, the life in years of the duty (or the travel in km,
-without a duty) at thrusts from a quarter to four times the axis's, with the band of the
+without a duty) at wear thrusts (the cycle's, ``motion.wear_thrust``) from a quarter to
+four times the axis's, with the band of the
 wear rate's scatter shaded. Archard's life is inversely proportional to the thrust, so the
 core's one number per candidate gives the whole line."""
 
@@ -10,6 +11,7 @@ from typing import Any
 from app.catalog import Catalog
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display, from_si
+from app.core import motion
 from app.core.checks.wear_life import life_band
 from app.core.model import Application
 from app.core.sweep import wear_points
@@ -56,7 +58,7 @@ def life_figure(
         data += traces
     if not data:
         return None
-    rated = bool(app.stroke_m and app.cycles_per_day)
+    rated = bool(app.stroke_m and motion.cycles_per_day(app))
     y_title = "Wear life [years]" if rated else "Wear life [km of travel]"
-    x_axis = axis(f"Axial thrust [{d.label('force')}]", True)
+    x_axis = axis(f"Wear thrust over the cycle [{d.label('force')}]", True)
     return {"data": data, "layout": layout(x_axis, axis(y_title, True))}

@@ -6,7 +6,10 @@ quarter of the pitch off the thread (Helix Linear; 0.483 H1 on a 15 deg flank)."
 import math
 
 import pytest
+from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
+
+from tests.api.calls import check, evaluate
 
 #: 200 N running thrust at 10 mm/s (PV 0.048 MPa m/s, inside acetal's 0.07), 200 mm
 #: strokes 1000 times a day, a year asked.
@@ -73,3 +76,47 @@ def test_twice_the_thrust_halves_the_life_and_fails_the_year(client: TestClient)
     assert check["limit"] == pytest.approx(1.039 / 2.0, rel=1e-3)
     assert not check["passed"]
     assert c["life"]["years"] == pytest.approx([0.3464 / 2.0, 3.149 / 2.0], rel=1e-3)
+
+
+#: The issue's pick-and-place axis: 1.5 kg at 10 m/s^2 to 300 mm/s over 400 mm, no load.
+PICK_AND_PLACE = {
+    "load_n": 0.0,
+    "moving_mass_kg": 1.5,
+    "speed_mm_s": 300.0,
+    "length_mm": 500.0,
+    "accel_mm_s2": 10000.0,
+    "stroke_mm": 400.0,
+}
+
+
+def test_a_pick_and_place_nut_wears_by_hours_a_day(client: TestClient) -> None:
+    """No load, but m a = 15 N on the four 4.5 mm ramps of a cycle: wear thrust 4 x 15 x
+    4.5 / 800 = 0.3375 N. B8000-L10-TFE (0.75 H^2 lead = 1.4637e-8 m^3, k = 1e-15 m^2/N):
+    43,370 km of travel. 8 hours a day of the 2.7267 s cycle are 10,562 cycles, 0.8 m each:
+    43.37e6 / (0.8 x 10,562 x 365) = 14.06 years, which meets 10 years asked."""
+    duty = {"hours_per_day": 8.0, "required_life_years": 10.0}
+    c = evaluate(client, "B8000-L10-TFE", **PICK_AND_PLACE, **duty)
+    wear = check(c, "wear_life")
+    assert wear["limit"] == pytest.approx(43.37e6 / (0.8 * 10562.3 * 365.0), rel=1e-3)
+    assert wear["limit"] == pytest.approx(14.06, rel=1e-3) and wear["passed"]
+    assert "wear thrust of 0.3375 N" in wear["message"]
+    assert c["life"]["years"][0] == pytest.approx(14.06 / 3.0, rel=1e-3)
+
+
+def test_cycles_and_hours_a_day_together_are_refused(client: TestClient) -> None:
+    """Both could disagree: 422 naming the hours in the API, an inline message on the page
+    (never a 500)."""
+    body = {
+        "application": {**PICK_AND_PLACE, "cycles_per_day": 100.0, "hours_per_day": 8.0},
+        "screw": {"catalog_id": "B8000-L10-TFE"},
+    }
+    r = client.post("/api/v1/evaluate", json=body)
+    assert r.status_code == 422
+    assert [d["field"] for d in r.json()["detail"]] == ["application.hours_per_day"]
+    page = client.get(
+        "/?load=0&moving_mass_kg=1.5&speed=300&length=500&accel=10000&stroke=400"
+        "&cycles_per_day=100&hours_per_day=8"
+    )
+    assert page.status_code in (200, 422)
+    error = BeautifulSoup(page.text, "html.parser").select_one("#e-hours_per_day")
+    assert error is not None and "not both" in error.text

@@ -47,7 +47,8 @@ SHARE_LINK_NAMES = [
     "load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length",
     "accel", "compression", "end_fixity", "require_anti_backlash", "coating", "family",
     "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
-    "cycles_per_day", "required_life_years", "positioning_tolerance", "brake_torque",
+    "cycles_per_day", "hours_per_day", "required_life_years", "positioning_tolerance",
+    "brake_torque",
     "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
     "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
     "motor_supply", "motor_phase_current", "motor_current_rms", "motor_resistance",
@@ -115,7 +116,9 @@ def test_api_model_fields_are_the_tables() -> None:
 @pytest.mark.parametrize("field", [f for f in FIELDS if f.bounds], ids=lambda f: f.api)
 def test_bounds_are_enforced_by_the_api_model(field: InputField) -> None:
     low, high = field.bounds or (0.0, 0.0)
-    duty = {"stroke_mm": 100.0, "cycles_per_day": 10.0, "step_angle_deg": 1.8}
+    duty = {"stroke_mm": 100.0, "step_angle_deg": 1.8}
+    # a duty in cycles beside every field but the hours, which are the duty in its place
+    duty |= {"cycles_per_day": 10.0} if field.api != "hours_per_day" else {}
     duty |= {"motor_supply_v": 400.0, "motor_phase_current_a": 1.0}
     duty |= {"motor_resistance_ohm": 1.0, "motor_inductance_mh": 1.0}
     for value, valid in ((low, True), (high, True), (high * 2 + 1, False)):
@@ -167,12 +170,25 @@ def test_to_core_converts_api_units_to_si() -> None:
 
 
 def test_required_life_needs_the_duty() -> None:
-    with pytest.raises(ValueError, match="needs stroke_mm and cycles_per_day"):
+    with pytest.raises(ValueError, match="needs stroke_mm"):
         ApplicationIn.model_validate({**REQUIRED, "required_life_years": 3})
+    with pytest.raises(ValueError, match="needs cycles_per_day or hours_per_day"):
+        ApplicationIn.model_validate({**REQUIRED, "stroke_mm": 100, "required_life_years": 3})
     duty = {"stroke_mm": 100, "cycles_per_day": 10, "required_life_years": 3}
     assert (
         ApplicationIn.model_validate({**REQUIRED, **duty}).to_core(MOTORS).required_life_years == 3
     )
+    hours = {"stroke_mm": 100, "hours_per_day": 8, "required_life_years": 3}
+    assert ApplicationIn.model_validate({**REQUIRED, **hours}).to_core(MOTORS).hours_per_day == 8
+
+
+def test_the_duty_is_cycles_or_hours_never_both() -> None:
+    """Both given could disagree: a field-level error on the hours."""
+    both = {"stroke_mm": 100, "cycles_per_day": 10, "hours_per_day": 8}
+    with pytest.raises(ValidationError) as refused:
+        ApplicationIn.model_validate({**REQUIRED, **both})
+    assert [e["loc"][0] for e in refused.value.errors()] == ["hours_per_day"]
+    assert "not both" in refused.value.errors()[0]["msg"]
 
 
 # --- the page form ----------------------------------------------------------------------
@@ -272,6 +288,10 @@ def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
     for field in FIELDS:
         if any(data[name] is None for name in field.needs):
             data[field.api] = None
+    if data["cycles_per_day"] is not None:
+        data["hours_per_day"] = None  # the duty is cycles or hours a day, not both
+    if data["cycles_per_day"] is None and data["hours_per_day"] is None:
+        data["required_life_years"] = None  # a required life needs a duty
     if data["step_angle_deg"] is None and data["motor"] is None:
         data["max_step_rate_hz"] = None  # a step rate limit needs a step angle
     if data["motor_holding_torque_nm"] is not None:

@@ -78,6 +78,7 @@ FUNCTIONS: dict[str, Any] = {
     "cos": math.cos,
     "max": max,
     "abs": abs,
+    "min": min,
 }
 
 

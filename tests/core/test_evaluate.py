@@ -113,8 +113,8 @@ def test_a_column_that_buckles_in_compression_is_fine_in_tension(zbx8000_l10: Sc
 
 def test_rated_life_for_rated_series(b8000_l10: ScrewSpec, zbx8000_l10: ScrewSpec) -> None:
     """Seed life table: B series N/A (its life is the nut's wear life instead); ZBX8000
-    100-150 million cm (uncoated)."""
-    app = light_app(stroke_m=0.1, cycles_per_day=100.0)
+    100-150 million cm (uncoated), at 1 N where the nut's wear life (14,640 km) is longer."""
+    app = light_app(load_n=1.0, stroke_m=0.1, cycles_per_day=100.0)
     worn = evaluate(app, b8000_l10).life
     assert worn is not None and worn.model == "wear"
     rated = evaluate(app, zbx8000_l10).life

@@ -161,7 +161,9 @@ def test_the_life_band_spans_the_wear_rates_scatter(catalog: Catalog) -> None:
 
     result = {c.name: c for c in evaluate(TR14, catalog.by_id["Tr14x3-acetal"]).checks}
     text = render(result["wear_life"].message)
-    assert "15.46 km of travel (5.155 km to 46.86 km" in text
+    # no moving mass, and a load against the motion both ways: every segment carries the
+    # 1962 N, so the cycle's wear thrust is the load
+    assert "15.46 km of travel at the cycle's wear thrust of 1962 N (5.155 km to 46.86 km" in text
     assert (
         render(result["wear_life"].message, {**DEFAULT_UNITS, "length_unit": "in"}).count(" mi")
         == 3

@@ -61,7 +61,14 @@ T_ROOT = PEAK * LEAD / (2 * math.pi * min(ETA, ETA_S)) + J_SCREW * ALPHA + 0.04
 STRESS = math.hypot(PEAK / (math.pi * RD**2 / 4), math.sqrt(3) * 16 * T_ROOT / (math.pi * RD**3))
 PV = PEAK / (3 * H) * RPM / 60  # H.T. cancels; the accelerating segment ends at V with m a
 DESIGN = 3e6 * 3 * math.pi * D_P * H
-LIFE_YEARS = 100e6 * 0.01 / (2 * 0.3 * 200 * 365)
+# the nut's wear (Archard, polyacetal k = 1e-6 mm^3/(N m), a quarter of H allowed, over
+# the seed's three threads 3 H.T. H, sliding H.T. per lead): travel = 0.25 H / (k F /
+# (3 H.T. H)) x lead / H.T. = 0.75 H^2 lead / (k F), with the cycle's wear thrust F: the
+# ramps' m a adds as much up as it takes off down (x_a = x_d = 3.2 mm each way), so F
+# = 219.6 N and the travel 66.65 km, short of the seed's 1e6 m (100 million cm), which it
+# caps: 66.65e3 / (2 x 0.3 x 200 x 365) = 1.522 years
+WEAR_TRAVEL = 0.75 * H**2 * LEAD / (1e-15 * F)
+LIFE_YEARS = min(100e6 * 0.01, WEAR_TRAVEL) / (2 * 0.3 * 200 * 365)
 ERROR = 0.0006 * 0.3 + 0.0 + 0.0013e-3
 SELF_LOCK_LEAD = math.pi * D_P * (0.5 * MU_S) / C  # static friction at half, the default
 

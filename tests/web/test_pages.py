@@ -280,8 +280,12 @@ def test_cross_field_error_names_the_fields_in_page_words(client: TestClient) ->
     page = soup(client.get("/", params={**AXIS, "required_life_years": "3"}))
     messages = [e.text for e in page.select("#e-form, #e-required_life_years") if e.text]
     assert len(messages) == 1
-    assert messages[0].lower().endswith("needs stroke and cycles per day.")
+    assert messages[0].lower().endswith("needs stroke.")
     assert "_" not in messages[0]
+    # with a stroke, a duty in either form: cycles or hours a day
+    page = soup(client.get("/", params={**AXIS, "stroke": "100", "required_life_years": "3"}))
+    messages = [e.text for e in page.select("#e-form, #e-required_life_years") if e.text]
+    assert messages == ["Needs cycles per day or hours per day."]
 
 
 # advanced options

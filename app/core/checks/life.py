@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -22,18 +23,27 @@ class Life(Check):
     label = "Life"
     description = (
         "The rated travel of the nut (low end of its range) in years of the given stroke "
-        "and cycles per day, against the life required; a nut rated by its wear rate "
-        "instead is judged by the nut wear life."
+        "and cycles (or hours) per day, against the life required. The seed gives no load "
+        "for its rating and says life varies with load, so where the nut material has a "
+        "wear rate the rated travel counts for no more than the nut's wear life at the "
+        "cycle's wear thrust (Archard's law, the same as the nut wear life's); a nut rated "
+        "by its wear rate alone is judged by the nut wear life."
     )
     quantity = "years"
-    formula = "life_required = Y_req; life = travel_min / (2 * stroke * cycles * 365)"
-    source = "seed catalog, Anti-Backlash Life (rated travel)"
-    sources = ("life",)
-    capacity_sources = ("life",)
+    formula = (
+        "life_required = Y_req; life = min(travel_min, wear_travel) / (2 * stroke * cycles * 365)"
+    )
+    source = (
+        "seed catalog, Anti-Backlash Life (rated travel; 'life will vary with loading, "
+        "operating environment and duty cycle'); Archard's law for the load"
+    )
+    sources = ("life", "wear_rate", "allowed_wear")
+    capacity_sources = ("life", "wear_rate", "allowed_wear")
 
     def applies(self, app: Application) -> bool:
         # without a duty there is nothing to turn the rated travel into years
-        return bool(app.required_life_years is not None and app.stroke_m and app.cycles_per_day)
+        cycles = motion.cycles_per_day(app)
+        return bool(app.required_life_years is not None and app.stroke_m and cycles)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         unrated = np.isnan(q.life_years_min)
@@ -47,26 +57,36 @@ class Life(Check):
         return {
             "Y_req": app.required_life_years,
             "travel_min": t.life_min_m,
+            "wear_travel": np.where(np.isnan(q.wear_travel_m), np.inf, q.wear_travel_m),
             "stroke": app.stroke_m,
-            "cycles": app.cycles_per_day,
+            "cycles": motion.cycles_per_day(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if np.isnan(r.life_years_min):
             return Phrase("No life rating is published for this series.")
         verb = "At least {years} rated" if passed else "Only {years} rated (low end)"
-        return Phrase(
-            verb + ", {required} required.",
-            {
-                "years": Amount(r.life_years_min, "years"),
-                "required": Amount(app.required_life_years or 0.0, "years"),
-            },
-        )
+        values = {
+            "years": Amount(r.life_years_min, "years"),
+            "required": Amount(app.required_life_years or 0.0, "years"),
+            "seed": Amount(s.life_min_m or 0.0, "travel"),
+            "travel": Amount(r.life_travel_min_m, "travel"),
+            "thrust": Amount(r.wear_force_n, "force"),
+        }
+        if r.life_travel_min_m < (s.life_min_m or 0.0):
+            return Phrase(
+                verb + ", {required} required: the seed's {seed} of travel, cut to {travel} "
+                "by the nut's wear at the cycle's wear thrust of {thrust} (Archard's law, "
+                "assumed wear rate; the seed gives no load for its rating).",
+                values,
+            )
+        return Phrase(verb + ", {required} required (the seed's {seed} of travel).", values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         if np.isnan(r.life_years_min):
             return Phrase("Choose a series whose life is rated.")
         return Phrase(
             "Choose a variant or series with a longer rated life, or shorten the stroke or "
-            "the duty."
+            "the duty; where the nut's wear cuts the rating, a lighter load or a gentler "
+            "acceleration."
         )

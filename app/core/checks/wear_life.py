@@ -3,6 +3,7 @@ life required; shown as a band over the published scatter of the wear rate."""
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -37,17 +38,23 @@ class WearLife(Check):
     name = "wear_life"
     label = "Nut wear life"
     description = (
-        "Archard's law: the running thrust over the nut's loaded flanks wears them by the "
-        "nut material's specific wear rate per metre slid; the nut travel until the wear "
-        "reaches the allowed fraction of the flank height (an ISO nut's thread a quarter "
-        "of the pitch thinner, the end of a nut's full life), in years of the given stroke "
-        "and cycles per day, against the life required. Wear rates and life tests scatter "
-        "2-3:1, so the life is shown as a band."
+        "Archard's law: the thrust over the nut's loaded flanks wears them by the nut "
+        "material's specific wear rate per metre slid. The thrust is the cycle's wear "
+        "thrust: the nut's thrust in every segment of both moves (the load with its "
+        "direction, the weight on a vertical axis, m a while accelerating and braking), "
+        "weighted by the segment's travel. The nut travel until the wear reaches the "
+        "allowed fraction of the flank height (an ISO nut's thread a quarter of the pitch "
+        "thinner, the end of a nut's full life), in years of the given stroke and cycles "
+        "(or hours) per day, against the life required; a nut with a seed life rating is "
+        "judged by the life check, which this wear life caps. Wear rates and life tests "
+        "scatter 2-3:1, so the life is shown as a band."
     )
     quantity = "years"
     formula = "Y = Y_req; Y_wear = f_w * H / (k * p) / (helix / lead) / (2 * stroke * cycles * 365)"
     source = (
-        "Archard's law h = k p s; Neale, Tribology Handbook A5 (wear depth rate K P V); "
+        "Archard's law h = k p s, summed over the cycle's segments (the load-spectrum "
+        "mean, Steinmeyer, duty cycle and equivalent load, with the wear law's exponent 1); "
+        "Neale, Tribology Handbook A5 (wear depth rate K P V); "
         "wear rates by nut material (catalog); allowed wear: Helix Linear, a quarter of "
         "the pitch off the thread; scatter: Roton, life tests vary 2-3:1"
     )
@@ -55,11 +62,13 @@ class WearLife(Check):
     capacity_sources = ("wear_rate", "allowed_wear", "nut_length")
 
     def applies(self, app: Application) -> bool:
-        return bool(app.required_life_years is not None and app.stroke_m and app.cycles_per_day)
+        cycles = motion.cycles_per_day(app)
+        return bool(app.required_life_years is not None and app.stroke_m and cycles)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         required = same(t, app.required_life_years)
-        return Measure(where_given(q.wear_life_years), required, q.wear_life_years)
+        unrated = np.isnan(t.life_min_m)  # the life check judges a rated nut's wear
+        return Measure(where_given(q.wear_life_years) & unrated, required, q.wear_life_years)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -70,11 +79,11 @@ class WearLife(Check):
             "f_w": t.allowed_wear_fraction,
             "H": np.where(flanks, t.flank_height_m, t.thread_depth_m),
             "k": t.wear_rate_m2_n,
-            "p": q.force_n / np.where(flanks, q.flank_area_m2, q.contact_area_m2),
+            "p": q.wear_force_n / np.where(flanks, q.flank_area_m2, q.contact_area_m2),
             "helix": np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m),
             "lead": t.lead_m,
             "stroke": app.stroke_m,
-            "cycles": app.cycles_per_day,
+            "cycles": motion.cycles_per_day(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
@@ -82,10 +91,13 @@ class WearLife(Check):
         cycle_m = 2.0 * (app.stroke_m or 0.0)
         verb = "meets" if passed else "falls short of"
         return Phrase(
-            "Nut wear life {travel} of travel ({low} to {high} over the wear rate's "
-            "scatter), {cycles} cycles: {years}, which " + verb + " the {required} required.",
+            "Nut wear life {travel} of travel at the cycle's wear thrust of {thrust} ({low} "
+            "to {high} over the wear rate's scatter), {cycles} cycles: {years}, which "
+            + verb
+            + " the {required} required.",
             {
                 "travel": Amount(r.wear_travel_m, "travel"),
+                "thrust": Amount(r.wear_force_n, "force"),
                 "low": Amount(low_m, "travel"),
                 "high": Amount(high_m, "travel"),
                 "cycles": figures(r.wear_travel_m / cycle_m, digits_below=15),
@@ -98,16 +110,16 @@ class WearLife(Check):
         return Phrase(
             "Wear falls with the flank pressure and the sliding per metre: a longer nut, a "
             "larger size, a longer lead or a nut material that wears less (bronze, oiled); "
-            "or a lighter load, a shorter stroke or fewer cycles."
+            "or a lighter load or moving mass, a gentler acceleration, a shorter stroke or "
+            "fewer cycles."
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float] | None:
-        # the life is inversely proportional to the thrust on the flanks
+        # the life is inversely proportional to the cycle's wear thrust
         years = app.required_life_years
         if not years or not np.isfinite(r.wear_life_years):
             return None
-        # the running thrust is the load plus what does not change with it (a weight)
-        load_n = app.load_n - r.force_n * (1.0 - r.wear_life_years / years)
-        return {"load_n": load_n} if load_n >= 0.0 else None
+        load_n = motion.largest_load_for_wear(app, r.wear_force_n * r.wear_life_years / years)
+        return None if load_n is None else {"load_n": load_n}

@@ -3,6 +3,20 @@
 from app.core.formulas.declare import SEED, formula
 
 DAYS_PER_YEAR = 365.0
+SECONDS_PER_HOUR = 3600.0
+
+
+@formula("cycles/day = hours/day x 3600 / t_cycle", "duty: running time over the cycle time")
+def cycles_per_day(hours_per_day: float, cycle_time_s: float) -> float:
+    """Cycles a day [1/day] from the hours a day the axis runs [h/day] and the time of one
+    cycle [s] (both moves and both dwells).
+
+    8 hours a day of a 2.5 s cycle:
+
+    >>> cycles_per_day(8.0, 2.5)
+    11520.0
+    """
+    return hours_per_day * SECONDS_PER_HOUR / cycle_time_s
 
 
 def travel_per_year(stroke_m: float, cycles_per_day: float) -> float:

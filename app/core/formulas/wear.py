@@ -36,7 +36,14 @@ References
    (skf.com): PTFE composite bushings PCM 202325 E in a tramway door linkage, G_h =
    c1 c2 c3 c4 c5 KM / (p v)^n with n = 1, KM = 480, p v = 0.025 applied (p v is 0.0164):
    1.3 x 1 x 1 x 0.6 x 1.5 x 480 / 0.025 = 22 500 operating hours.
+8. Steinmeyer, "The duty cycle and its equivalent load" (drive.steinmeyer.com, service
+   life calculations): a varying duty is divided into steps, each with its thrust and
+   its revolutions, and turned into the one mean load with the same effect on life,
+   F_m = (sum F_i^3 n_i q_i / sum n_i q_i)^(1/3) for a ball screw's fatigue (life ~
+   F^-3); the revolutions of each step may stand for n_i q_i.
 """
+
+from collections.abc import Sequence
 
 from app.core.formulas.declare import formula
 
@@ -105,3 +112,32 @@ def wear_life_travel(sliding_life_m: float, sliding_per_travel_m_m: float) -> fl
     25000.0
     """
     return sliding_life_m / sliding_per_travel_m_m
+
+
+@formula(
+    "F_w = sum |F_i| x_i / sum x_i over the moving segments of both moves",
+    "Archard's law summed over the cycle's segments (the load-spectrum mean [8] with the "
+    "wear law's exponent 1)",
+)
+def cycle_wear_thrust(thrusts_n: Sequence[float], travels_m: Sequence[float]) -> float:
+    """The steady thrust [N] that wears the nut as much per cycle as the cycle itself.
+
+    thrusts_n: the thrust the nut carries in each segment [N], either sign (the flank it
+    loads; the allowed wear is the thread's total thinning, both flanks together);
+    travels_m: the nut travel in each segment [m]. Archard's wear volume of a cycle is
+    sum k |F_i| s_i, and the flanks slide s_i = x_i x helix / lead in every segment, so
+    the cycle wears as the travel-weighted mean thrust would over the whole travel: the
+    load-spectrum mean of [8] with the exponent of a life ~ F^-1. A segment at rest (a
+    dwell) slides nothing and wears nothing. Valid where the wear is mild throughout
+    (the PV check); 0 without travel.
+
+    A pick-and-place move of 1.5 kg at 10 m/s^2 to 0.3 m/s over 0.4 m, no load: each
+    ramp takes 0.03 s and 4.5 mm at 15 N, the cruise 391 mm at 0 N, both ways:
+
+    >>> round(cycle_wear_thrust([15.0, 0.0, 15.0] * 2, [0.0045, 0.391, 0.0045] * 2), 4)
+    0.3375
+    """
+    total_m = sum(travels_m)
+    if total_m <= 0.0:
+        return 0.0
+    return sum(abs(f) * x for f, x in zip(thrusts_n, travels_m, strict=True)) / total_m
