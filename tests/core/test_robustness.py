@@ -29,12 +29,12 @@ Tr16x4 and Tr16x8(P4) PTFE nuts (Tr14x3's listed 343 N; Tr12x6(P3) 8 x pi x 10.5
 (8.8 x pi x 19.5 x 2.5 = 1348 mm^2, 663 N) and Tr18x8(P4) PTFE (its listed 611 N) stay;
 "heavy-any-lead" (1500 N) loses the Tr18x8(P4), Tr20x4, Tr22x5 and Tr24x5 PTFE nuts
 (686 N at Tr20x4, 798 N at Tr24x5's 1621 mm^2); bronze sizes and a seed screw fill the
-lists. "life-advice-reject" was recorded once more when the seed's rated travel became capped by the wear
-life of the same polyacetal nut at the cycle's wear thrust: at 60 N the ZBX, KHD and VHD
-TFE nuts wear through in under the 3 years asked (ZBX8000-L10: 14,640 km N / 60 N =
-244 km, 244e3 / (0.4 x 2000 x 365) = 0.84 years), so ISO nuts fill the list. Every path
-must still give them: select, a catalog screw evaluated alone,
-and a screw outside the catalog with the same values (its variant rows built on the fly).
+lists. "life-advice-reject" was recorded once more when the seed's rated travel became
+capped by the wear life of the same polyacetal nut at the cycle's wear thrust: at 60 N the
+ZBX, KHD and VHD TFE nuts wear through in under the 3 years asked (ZBX8000-L10: 14,640 km N
+/ 60 N = 244 km, 244e3 / (0.4 x 2000 x 365) = 0.84 years), so ISO nuts fill the list. Every
+path must still give them: select, a catalog screw evaluated alone, and a screw outside the
+catalog with the same values (its variant rows built on the fly).
 """
 
 import json
