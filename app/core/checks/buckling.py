@@ -16,7 +16,7 @@ from app.core.checks.base import (
     at_least,
     load_input,
     sentence,
-    stiffer_support,
+    stiffer_fixity,
 )
 from app.core.formulas import buckling
 from app.core.phrase import Amount, Phrase
@@ -80,32 +80,41 @@ class ColumnBuckling(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        def passes(fixity: EndFixity) -> bool:
-            f_cr = buckling.column_critical_load(
-                s.youngs_modulus_pa,
-                s.root_diameter_m,
-                app.length_m,
-                fixity,
-                float("nan") if s.yield_strength_pa is None else s.yield_strength_pa,
+        def critical(fixity: EndFixity) -> float:
+            return buckling.column_critical_load(
+                s.youngs_modulus_pa, s.root_diameter_m, app.length_m, fixity, _yield(s)
             )
-            return r.compressive_force_n <= app.buckling_safety_factor * f_cr
 
-        d_min = buckling.min_root_diameter_for_load(
-            s.root_diameter_m, r.allowed_load_n, r.compressive_force_n
+        force_n = at_least(r.compressive_force_n)
+        d_min = buckling.min_root_diameter_for_column(
+            force_n / app.buckling_safety_factor,
+            s.youngs_modulus_pa,
+            app.length_m,
+            app.end_fixity,
+            _yield(s),
         )
-        length = _max_length(app, s, r, at_least(r.compressive_force_n))
+        length_m = _max_length(app, s, r, force_n)
         values: dict[str, Amount | str] = {
-            "support": stiffer_support(app, passes),
-            "length": Amount(length, "length"),
+            "length": Amount(length_m, "length"),
             "fixity": app.end_fixity,
         }
         # no column of this screw carries the thrust when its root yields first
-        column = " (column at most {length} with the ends {fixity})" if length > 0 else ""
-        template = (
-            "{support}" + column + ", or move the thrust bearing so that the load pulls the screw."
-        )
-        if at_least(d_min) <= reach.max_root_diameter_m:
-            values["d"] = Amount(at_least(d_min), "length")
+        column = " (column at most {length} with the ends {fixity})" if length_m > 0 else ""
+        # a stiffer mounting is offered only when it keeps the margin at this length
+        stiffer = stiffer_fixity(app, lambda f: force_n <= app.buckling_safety_factor * critical(f))
+        if stiffer is None:
+            template = "add an intermediate support" + column
+        else:
+            values["stiffer"] = stiffer
+            values["stiffer_length"] = Amount(_max_length(app, s, r, force_n, stiffer), "length")
+            template = (
+                "mount the ends {stiffer} (column at most {stiffer_length} with the ends {stiffer})"
+            )
+            if length_m > 0:
+                template += ", or a column of at most {length} with the ends {fixity}"
+        template += ", or move the thrust bearing so that the load pulls the screw."
+        if d_min <= reach.max_root_diameter_m:
+            values["d"] = Amount(d_min, "length")
             template = "Use a root diameter of at least {d}, or " + template
         return sentence(template + MARGIN_NOTE, values)
 
@@ -117,17 +126,26 @@ class ColumnBuckling(Check):
         return {**limits, "length_m": length} if length > 0 else limits
 
 
+def _yield(s: ScrewSpec) -> float:
+    """The screw's yield strength [Pa] (NaN when unknown: Euler alone)."""
+    return float("nan") if s.yield_strength_pa is None else s.yield_strength_pa
+
+
 def _max_length(
-    app: Application, s: ScrewSpec, r: Quantities[float], force_n: float | None = None
+    app: Application,
+    s: ScrewSpec,
+    r: Quantities[float],
+    force_n: float | None = None,
+    fixity: EndFixity | None = None,
 ) -> float:
-    """Longest column carrying the peak thrust (or ``force_n``) with the buckling factor
-    [m]. A fix asks for the column that carries the thrust with its margin: in Johnson's
-    short-column range the critical load hardly grows as the column shortens, so a
-    length a margin shorter would not keep the margin."""
+    """Longest column carrying the peak thrust (or ``force_n``) with the buckling factor,
+    with the ends ``app``'s (or ``fixity``) [m]. A fix asks for the column that carries the
+    thrust with its margin: in Johnson's short-column range the critical load hardly grows
+    as the column shortens, so a length a margin shorter would not keep the margin."""
     return buckling.max_length_for_column(
         (r.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
         s.youngs_modulus_pa,
         s.root_diameter_m,
-        app.end_fixity,
-        float("nan") if s.yield_strength_pa is None else s.yield_strength_pa,
+        app.end_fixity if fixity is None else fixity,
+        _yield(s),
     )
