@@ -348,16 +348,21 @@ def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) ->
 
 
 def parse_inputs(
-    params: Mapping[str, str], units: dict[str, str], motors: Mapping[str, Any] | None = None
+    params: Mapping[str, str],
+    units: dict[str, str],
+    motors: Mapping[str, Any] | None = None,
+    supports: Mapping[str, Any] | None = None,
 ) -> tuple[ApplicationIn | None, dict[str, str]]:
     """Validate the page fields as an ``ApplicationIn``, the motor against the library
-    ``motors`` when given. Returns (inputs, errors by field).
+    ``motors`` and the support unit against ``supports`` when given. Returns (inputs,
+    errors by field).
 
     Messages name bounds in the display units; an error of no one field is under 'form'.
     """
     data, errors = page_to_api(params, units)
     try:
-        inputs = ApplicationIn.model_validate(data, context={"motors": motors})
+        context = {"motors": motors, "supports": supports}
+        inputs = ApplicationIn.model_validate(data, context=context)
     except ValidationError as exc:
         for error in exc.errors():
             loc = error.get("loc", ())

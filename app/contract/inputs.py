@@ -38,6 +38,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from app.catalog.motors import Motor, check_motor, with_motor
+from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.fields import BY_API, FIELDS, InputField
 from app.core.model import Application
 
@@ -330,6 +331,23 @@ class ApplicationInputs(BaseModel):
         motors = (info.context or {}).get("motors") if isinstance(info.context, dict) else None
         return check_motor(BY_API["motor"].to_si(value), motors)
 
+    @field_validator("support_unit", check_fields=False)
+    @classmethod
+    def _known_support(cls, value: str | None, info: ValidationInfo) -> str | None:
+        """Checked against the support library passed as validation context (the page's
+        form); the API's body is checked where the catalog is (``to_core``)."""
+        context = info.context if isinstance(info.context, dict) else {}
+        return check_support(BY_API["support_unit"].to_si(value), context.get("supports"))
+
+    @field_validator("bearing_to_nut_mm", check_fields=False)
+    @classmethod
+    def _within_length(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """The span from the thrust bearing to the nut lies on the screw."""
+        length = info.data.get("length_mm")
+        if value is not None and length is not None and value > length:
+            raise ValueError(f"at most the screw length, {length:g} (length_mm)")
+        return value
+
     @field_validator("max_step_rate_hz", check_fields=False)
     @classmethod
     def _step_angle_known(cls, value: float | None, info: ValidationInfo) -> float | None:
@@ -348,11 +366,15 @@ class ApplicationInputs(BaseModel):
             check_drivable(value, *(float(v or 0.0) for v in given))
         return value
 
-    def to_core(self, motors: Mapping[str, Motor]) -> Application:
+    def to_core(
+        self, motors: Mapping[str, Motor], supports: Mapping[str, SupportUnit] | None = None
+    ) -> Application:
         """The same application in SI for the core: each value times its ``si_factor``,
         with the library motor's curve, inertia, continuous torque and step angle filled
-        in from ``motors`` (``with_motor``; UnknownMotor for an id it lacks)."""
-        return with_motor(self.axis(), motors)
+        in from ``motors`` (``with_motor``; UnknownMotor for an id it lacks), and the
+        library support unit's axial ratings from ``supports`` (``with_support``;
+        UnknownSupport for an id it lacks)."""
+        return with_support(with_motor(self.axis(), motors), supports or {})
 
     def axis(self) -> Application:
         """The application in SI as given, without a library motor's values filled in:

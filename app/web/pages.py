@@ -75,7 +75,10 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     (the library's motors), no result yet."""
     units, values, converted, typed = form_state(params)
     return {
-        "suggestions": {"motor": motor_suggestions(catalog)},
+        "suggestions": {
+            "motor": motor_suggestions(catalog),
+            "support_unit": [(uid, unit.name) for uid, unit in catalog.supports.items()],
+        },
         "typed": typed,
         "units": units,
         "values": values,
@@ -117,7 +120,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
     units, values = context["units"], context["values"]
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
-    inputs, context["errors"] = parse_inputs(values, units, catalog.motors)
+    inputs, context["errors"] = parse_inputs(values, units, catalog.motors, catalog.supports)
     if inputs is not None:
         result, rejected = run_page_selection(inputs, catalog, units)
         context["result"], context["rejected"] = result, rejected
@@ -202,7 +205,7 @@ def link_inputs(
 ) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
     units, values, _, _ = form_state(params)
-    inputs, errors = parse_inputs(values, units, catalog.motors)
+    inputs, errors = parse_inputs(values, units, catalog.motors, catalog.supports)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
         raise AppError(422, "invalid input", detail)

@@ -20,6 +20,7 @@ from app.core.checks.base import (
 )
 from app.core.formulas import buckling
 from app.core.phrase import Amount, Phrase
+from app.core.quantities import column_length
 
 
 class ColumnBuckling(Check):
@@ -56,7 +57,7 @@ class ColumnBuckling(Check):
             "SF": app.buckling_safety_factor,
             "E": t.youngs_modulus_pa,
             "A": buckling.root_area(t.root_diameter_m),
-            "s": buckling.slenderness(t.root_diameter_m, app.length_m, app.end_fixity),
+            "s": buckling.slenderness(t.root_diameter_m, column_length(app), app.end_fixity),
             "S_y": t.yield_strength_pa,
         }
 
@@ -64,32 +65,40 @@ class ColumnBuckling(Check):
         verb = "is within" if passed else "exceeds"
         short = r.slenderness < r.transition_slenderness
         model = "Johnson, short column" if short else "Euler"
+        span = (
+            ""
+            if app.bearing_to_nut_m is None
+            else ", over {col} from the thrust bearing to the nut"
+        )
         return Phrase(
             "Peak thrust {f} in compression "
             + verb
             + " the allowed {allowed} ({sf} x "
             + model
-            + " {f_cr}, slenderness {s}).",
+            + " {f_cr}, slenderness {s}"
+            + span
+            + ").",
             {
                 "f": Amount(r.compressive_force_n, "force"),
                 "allowed": Amount(r.allowed_load_n, "force"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
                 "f_cr": Amount(r.critical_load_n, "force"),
                 "s": Amount(r.slenderness, "factor"),
+                "col": Amount(r.column_length_m, "length"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         def critical(fixity: EndFixity) -> float:
             return buckling.column_critical_load(
-                s.youngs_modulus_pa, s.root_diameter_m, app.length_m, fixity, _yield(s)
+                s.youngs_modulus_pa, s.root_diameter_m, column_length(app), fixity, _yield(s)
             )
 
         force_n = at_least(r.compressive_force_n)
         d_min = buckling.min_root_diameter_for_column(
             force_n / app.buckling_safety_factor,
             s.youngs_modulus_pa,
-            app.length_m,
+            column_length(app),
             app.end_fixity,
             _yield(s),
         )
@@ -99,7 +108,10 @@ class ColumnBuckling(Check):
             "fixity": app.end_fixity,
         }
         # no column of this screw carries the thrust when its root yields first
-        column = " (column at most {length} with the ends {fixity})" if length_m > 0 else ""
+        what = (
+            "column" if app.bearing_to_nut_m is None else "span from the thrust bearing to the nut"
+        )
+        column = f" ({what} at most {{length}} with the ends {{fixity}})" if length_m > 0 else ""
         # a stiffer mounting is offered only when it keeps the margin at this length
         stiffer = stiffer_fixity(app, lambda f: force_n <= app.buckling_safety_factor * critical(f))
         if stiffer is None:
@@ -108,10 +120,11 @@ class ColumnBuckling(Check):
             values["stiffer"] = stiffer
             values["stiffer_length"] = Amount(_max_length(app, s, r, force_n, stiffer), "length")
             template = (
-                "mount the ends {stiffer} (column at most {stiffer_length} with the ends {stiffer})"
+                f"mount the ends {{stiffer}} ({what} at most {{stiffer_length}} with the ends "
+                "{stiffer})"
             )
             if length_m > 0:
-                template += ", or a column of at most {length} with the ends {fixity}"
+                template += f", or a {what} of at most {{length}} with the ends {{fixity}}"
         template += ", or move the thrust bearing so that the load pulls the screw."
         if d_min <= reach.max_root_diameter_m:
             values["d"] = Amount(d_min, "length")
@@ -123,7 +136,13 @@ class ColumnBuckling(Check):
     ) -> Mapping[str, float]:
         limits = load_input(app, r.allowed_load_n, compressive=True)
         length = _max_length(app, s, r)
-        return {**limits, "length_m": length} if length > 0 else limits
+        return {**limits, _column_input(app): length} if length > 0 else limits
+
+
+def _column_input(app: Application) -> str:
+    """The input that sets the column's length: the span from the thrust bearing to the
+    nut when given, else the screw's length."""
+    return "length_m" if app.bearing_to_nut_m is None else "bearing_to_nut_m"
 
 
 def _yield(s: ScrewSpec) -> float:
