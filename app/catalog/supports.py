@@ -22,14 +22,15 @@ from app.core.model import Application
 #: The library's file name; family loading skips it in every catalog directory.
 SUPPORT_FILE = "supports.toml"
 SCHEMA = 1
-#: Newtons in a kilonewton, the unit the makers' tables are written in.
-N_PER_KN = 1000.0
-#: The ratings of a unit, as written (kN) -> as held (N).
-RATINGS = {"dynamic_axial_kn": "dynamic_axial_n", "static_axial_kn": "static_axial_n"}
+#: The ratings of a unit [N].
+RATINGS = ("dynamic_axial_n", "static_axial_n")
 
 
 class UnknownSupport(ValueError):
-    """A support unit id the loaded library does not hold (a 422 on ``support_unit``)."""
+    """A support unit id the loaded library does not hold: a 422 on its input."""
+
+    #: the API input that names the unit
+    field = "support_id"
 
 
 @dataclass(frozen=True, slots=True)
@@ -54,10 +55,7 @@ def _support(file: str, unit_id: str, data: Any) -> SupportUnit:
     entry.check_known(frozenset(RATINGS) | {"name"})
     if not isinstance(data.get("name"), str) or not data["name"].strip():
         raise entry.fail("name", "missing or not text")
-    values = {
-        held: Sourced(entry.number(written) * N_PER_KN, "N", entry.prov(written))
-        for written, held in RATINGS.items()
-    }
+    values = {name: Sourced(entry.number(name), "N", entry.prov(name)) for name in RATINGS}
     return SupportUnit(unit_id, data["name"], values)
 
 

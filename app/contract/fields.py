@@ -231,6 +231,34 @@ FIELDS: tuple[InputField, ...] = (
         },
     ),
     InputField(
+        api="bearing_to_nut_mm", page="bearing_to_nut", core="bearing_to_nut_m",
+        label="Thrust bearing to nut", help="The longest span from the thrust bearing to "
+        "the nut (the nut at the end of its travel farthest from the bearing): the column "
+        "that buckles; at most the screw length; empty for the whole screw",
+        group="Motion and load", kind="number", bounds=(1.0, 1e5), dimension="length",
+    ),
+    InputField(
+        api="support_id", page="support_id", core="support_unit",
+        label="Support unit", help="The thrust bearing's support unit from the library "
+        "(supports.toml: THK FK/BK fixed-side units with their axial ratings), unless the "
+        "ratings are typed below; empty or “none” for none",
+        group="Motion and load", kind="text", none_word="none",
+    ),
+    InputField(
+        api="support_static_n", page="support_static", core="support_static_n",
+        label="Thrust bearing static rating", help="The thrust bearing's static axial load "
+        "rating C0a (or its maker's permissible static axial load): the peak thrust must "
+        "stay within it over the static safety factor; empty for no check",
+        group="Motion and load", kind="number", bounds=(1e-3, 1e8), dimension="force",
+    ),
+    InputField(
+        api="support_dynamic_n", page="support_dynamic", core="support_dynamic_n",
+        label="Thrust bearing dynamic rating", help="The thrust bearing's basic dynamic "
+        "axial load rating Ca, for its L10 life (needs a stroke, cycles per day and a "
+        "required life); empty for no life check",
+        group="Motion and load", kind="number", bounds=(1e-3, 1e8), dimension="force",
+    ),
+    InputField(
         api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
         help="How the two screw ends are supported", group="Ends", kind="choice",
         default="fixed-simple", options=EndFixity, drawn=True,
@@ -238,34 +266,6 @@ FIELDS: tuple[InputField, ...] = (
             "fixed-free": "Fixed – free", "simple-simple": "Simple – simple",
             "fixed-simple": "Fixed – simple", "fixed-fixed": "Fixed – fixed",
         },
-    ),
-    InputField(
-        api="bearing_to_nut_mm", page="bearing_to_nut", core="bearing_to_nut_m",
-        label="Thrust bearing to nut", help="The longest span from the thrust bearing to "
-        "the nut (the nut at the end of its travel farthest from the bearing): the column "
-        "that buckles; at most the screw length; empty for the whole screw",
-        group="Ends", kind="number", bounds=(1.0, 1e5), dimension="length",
-    ),
-    InputField(
-        api="support_unit", page="support_unit", core="support_unit",
-        label="Support unit", help="The thrust bearing's support unit from the library "
-        "(supports.toml: THK FK/BK fixed-side units with their axial ratings), unless the "
-        "ratings are typed below; empty or “none” for none",
-        group="Ends", kind="text", none_word="none",
-    ),
-    InputField(
-        api="support_static_n", page="support_static", core="support_static_n",
-        label="Thrust bearing static rating", help="The thrust bearing's static axial load "
-        "rating C0a (or its maker's permissible static axial load): the peak thrust must "
-        "stay within it over the static safety factor; empty for no check",
-        group="Ends", kind="number", bounds=(1e-3, 1e8), dimension="force",
-    ),
-    InputField(
-        api="support_dynamic_n", page="support_dynamic", core="support_dynamic_n",
-        label="Thrust bearing dynamic rating", help="The thrust bearing's basic dynamic "
-        "axial load rating Ca, for its L10 life (needs a stroke, cycles per day and a "
-        "required life); empty for no life check",
-        group="Ends", kind="number", bounds=(1e-3, 1e8), dimension="force",
     ),
     InputField(
         api="require_anti_backlash", page="require_anti_backlash",

@@ -112,6 +112,10 @@ def describe(field: InputField) -> str:
 TEXT_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9 ._()+/-]{0,59}$"
 #: At most this many items in a list input.
 MAX_ITEMS = 50
+#: The screw's length, which bounds the span from the thrust bearing to the nut.
+LENGTH = next(field for field in FIELDS if field.core == "length_m")
+#: The support unit of the library that rates the thrust bearing.
+SUPPORT = next(field for field in FIELDS if field.core == "support_unit")
 
 
 def _split_text(value: Any) -> Any:
@@ -331,21 +335,21 @@ class ApplicationInputs(BaseModel):
         motors = (info.context or {}).get("motors") if isinstance(info.context, dict) else None
         return check_motor(BY_API["motor"].to_si(value), motors)
 
-    @field_validator("support_unit", check_fields=False)
+    @field_validator(SUPPORT.api, check_fields=False)
     @classmethod
     def _known_support(cls, value: str | None, info: ValidationInfo) -> str | None:
         """Checked against the support library passed as validation context (the page's
         form); the API's body is checked where the catalog is (``to_core``)."""
         context = info.context if isinstance(info.context, dict) else {}
-        return check_support(BY_API["support_unit"].to_si(value), context.get("supports"))
+        return check_support(SUPPORT.to_si(value), context.get("supports"))
 
     @field_validator("bearing_to_nut_mm", check_fields=False)
     @classmethod
     def _within_length(cls, value: float | None, info: ValidationInfo) -> float | None:
         """The span from the thrust bearing to the nut lies on the screw."""
-        length = info.data.get("length_mm")
+        length = info.data.get(LENGTH.api)
         if value is not None and length is not None and value > length:
-            raise ValueError(f"at most the screw length, {length:g} (length_mm)")
+            raise ValueError(f"at most the screw length, {length:g} ({LENGTH.api})")
         return value
 
     @field_validator("max_step_rate_hz", check_fields=False)

@@ -68,7 +68,7 @@ class ApiRoute(APIRoute):
                 ) from exc
             except UnknownSupport as exc:
                 raise AppError(
-                    422, "invalid input", [{"field": "support_unit", "message": str(exc)}]
+                    422, "invalid input", [{"field": exc.field, "message": str(exc)}]
                 ) from exc
             except HTTPException as exc:
                 if exc.status_code != 400:

@@ -22,6 +22,7 @@ from app.contract.form import (
     share_query,
     summary_rows,
 )
+from app.contract.inputs import SUPPORT
 from app.contract.pairs import PairRankIn
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
@@ -77,7 +78,7 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     return {
         "suggestions": {
             "motor": motor_suggestions(catalog),
-            "support_unit": [(uid, unit.name) for uid, unit in catalog.supports.items()],
+            SUPPORT.page: [(uid, unit.name) for uid, unit in catalog.supports.items()],
         },
         "typed": typed,
         "units": units,

@@ -45,14 +45,16 @@ ROOT = Path(__file__).resolve().parents[2]
 #: out must keep working, whatever the order of their parameters.
 SHARE_LINK_NAMES = [
     "load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length",
-    "accel", "compression", "end_fixity", "require_anti_backlash", "coating", "family",
+    "accel", "compression", "bearing_to_nut", "support_id", "support_static",
+    "support_dynamic", "end_fixity", "require_anti_backlash", "coating", "family",
     "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
     "cycles_per_day", "required_life_years", "positioning_tolerance", "brake_torque",
     "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
     "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
     "motor_supply", "motor_phase_current", "motor_resistance", "motor_inductance",
     "motor_holding_torque", "decel", "dwell", "critical_speed_safety_factor",
-    "buckling_safety_factor", "torque_safety_factor", "self_locking_friction_factor",
+    "buckling_safety_factor", "support_static_safety_factor", "torque_safety_factor",
+    "self_locking_friction_factor",
     "brake_safety_factor", "rank_by", "advice", "limit",
 ]  # fmt: skip
 #: the first group, always open: the load and its direction, the moving mass and the
@@ -117,7 +119,8 @@ def test_bounds_are_enforced_by_the_api_model(field: InputField) -> None:
     duty |= {"motor_supply_v": 400.0, "motor_phase_current_a": 1.0}
     duty |= {"motor_resistance_ohm": 1.0, "motor_inductance_mh": 1.0}
     for value, valid in ((low, True), (high, True), (high * 2 + 1, False)):
-        data = {**REQUIRED, **duty, field.api: value}
+        # the longest screw, so that a span from its thrust bearing to the nut lies on it
+        data = {**REQUIRED, **duty, "length_mm": 1e5, field.api: value}
         try:
             ApplicationIn.model_validate(data)
             refused: list[str] = []
@@ -270,6 +273,8 @@ def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
     for field in FIELDS:
         if any(data[name] is None for name in field.needs):
             data[field.api] = None
+    if (data["bearing_to_nut_mm"] or 0.0) > data["length_mm"]:
+        data["bearing_to_nut_mm"] = None  # the span from the thrust bearing lies on the screw
     if data["step_angle_deg"] is None and data["motor"] is None:
         data["max_step_rate_hz"] = None  # a step rate limit needs a step angle
     if data["motor_holding_torque_nm"] is not None:
