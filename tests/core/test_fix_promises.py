@@ -10,6 +10,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.contract.units import render
@@ -43,19 +44,24 @@ def amount(fix: Phrase, key: str) -> float | None:
 
 
 def promises(app: Application, screw: ScrewSpec, name: str, fix: Phrase) -> dict[str, float]:
-    """Each option of the fix applied on its own: option -> the check's utilisation then."""
+    """Each option of the fix applied on its own: option -> the check's utilisation then.
+    A buckling fix's length is the span from the thrust bearing to the nut when one is
+    given (the column that buckles), else the screw's."""
     out: dict[str, float] = {}
+    spanned = name == "buckling" and app.bearing_to_nut_m is not None
+    key = "bearing_to_nut_m" if spanned else "length_m"
     stiffer = fix.values.get("stiffer")
     if isinstance(stiffer, str):
         mounted = replace(app, end_fixity=stiffer)
         out["stiffer mounting"] = utilization(mounted, screw, name)
         stiffer_length = amount(fix, "stiffer_length")
         if stiffer_length is not None and stiffer_length > 0:
-            longest = replace(mounted, length_m=stiffer_length)
+            longest = replace(mounted, **{key: stiffer_length})  # type: ignore[arg-type]
             out["stiffer mounting's length"] = utilization(longest, screw, name)
     length = amount(fix, "length")
     if length is not None and length > 0:
-        out["length"] = utilization(replace(app, length_m=length), screw, name)
+        shorter = replace(app, **{key: length})  # type: ignore[arg-type]
+        out["length"] = utilization(shorter, screw, name)
     diameter = amount(fix, "d")
     if diameter is not None:
         thicker = replace(screw, root_diameter_m=diameter)
@@ -99,10 +105,14 @@ def mounting_promises(
 @settings(
     max_examples=10, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )
-@given(app=applications)
+@given(app=applications, span=st.none() | st.floats(0.1, 1.0))
 def test_every_option_of_a_mounting_fix_keeps_the_margin(
-    catalog: Catalog, app: Application
+    catalog: Catalog, app: Application, span: float | None
 ) -> None:
+    """Over random axes, with and without a span from the thrust bearing to the nut
+    (``span``, a share of the screw's length)."""
+    if span is not None:
+        app = replace(app, bearing_to_nut_m=span * app.length_m)
     for option, found in mounting_promises(app, catalog).items():
         assert all(u <= PROMISED for u in found), (option, found)
 
@@ -112,6 +122,7 @@ AXES = {
     "whirl": light_app(speed_m_s=0.5, length_m=1.0),
     "buckle": light_app(load_n=800.0, length_m=1.0, end_fixity="fixed-free"),
     "buckle-short": light_app(load_n=20_000.0, length_m=0.3),
+    "buckle-span": light_app(load_n=800.0, length_m=1.5, bearing_to_nut_m=1.0),
 }
 
 

@@ -107,29 +107,29 @@ class ColumnBuckling(Check):
             "length": Amount(length_m, "length"),
             "fixity": app.end_fixity,
         }
-        # no column of this screw carries the thrust when its root yields first
-        what = (
-            "column" if app.bearing_to_nut_m is None else "span from the thrust bearing to the nut"
-        )
-        column = f" ({what} at most {{length}} with the ends {{fixity}})" if length_m > 0 else ""
+        options = []
+        if d_min <= reach.max_root_diameter_m:
+            values["d"] = Amount(d_min, "length")
+            options.append("use a root diameter of at least {d}")
+        spanned = app.bearing_to_nut_m is not None
+        what = "span from the thrust bearing to the nut" if spanned else "column"
         # a stiffer mounting is offered only when it keeps the margin at this length
         stiffer = stiffer_fixity(app, lambda f: force_n <= app.buckling_safety_factor * critical(f))
-        if stiffer is None:
-            template = "add an intermediate support" + column
-        else:
+        if stiffer is not None:
             values["stiffer"] = stiffer
             values["stiffer_length"] = Amount(_max_length(app, s, r, force_n, stiffer), "length")
-            template = (
+            options.append(
                 f"mount the ends {{stiffer}} ({what} at most {{stiffer_length}} with the ends "
                 "{stiffer})"
             )
-            if length_m > 0:
-                template += f", or a {what} of at most {{length}} with the ends {{fixity}}"
-        template += ", or move the thrust bearing so that the load pulls the screw."
-        if d_min <= reach.max_root_diameter_m:
-            values["d"] = Amount(d_min, "length")
-            template = "Use a root diameter of at least {d}, or " + template
-        return sentence(template + MARGIN_NOTE, values)
+        # no column of this screw carries the thrust when its root yields first
+        shorter = f"{what} at most {{length}} with the ends {{fixity}}" if length_m > 0 else ""
+        if stiffer is None and not spanned:
+            options.append("add an intermediate support" + (f" ({shorter})" if shorter else ""))
+        elif shorter:
+            options.append(f"a {shorter.replace(' at most', ' of at most', 1)}")
+        options.append("move the thrust bearing so that the load pulls the screw")
+        return sentence(", or ".join(options) + "." + MARGIN_NOTE, values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
