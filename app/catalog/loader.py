@@ -25,6 +25,7 @@ from app.catalog.groups import Groups, read_group
 from app.catalog.models import Catalog, Material, Series, Sourced
 from app.catalog.motors import MOTOR_FILE, load_library
 from app.catalog.series import build_series
+from app.catalog.supports import SUPPORT_FILE, load_support_library
 from app.contract.units import to_si
 from app.core.index import CatalogIndex
 from app.server.paths import resource_dir
@@ -146,9 +147,10 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         _file_default(read_file(path, digest))
         for directory in directories
         for path in toml_files(directory)
-        if path.name != MOTOR_FILE
+        if path.name not in (MOTOR_FILE, SUPPORT_FILE)
     ]
     motors = load_library(directories, digest)
+    supports = load_support_library(directories, digest)
     group_files = [s for s in sources if s.name == GROUP_FILE]
     groups = Groups([read_group(s) for s in group_files])
     materials = _materials(sources)
@@ -169,4 +171,5 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         materials=materials,
         by_id={screw.id: screw for screw in screws},
         motors=motors,
+        supports=supports,
     )

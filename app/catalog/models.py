@@ -9,6 +9,7 @@ from app.core.model import Provenance, ScrewSpec
 
 if TYPE_CHECKING:
     from app.catalog.motors import Motor
+    from app.catalog.supports import SupportUnit
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,7 +49,8 @@ class Series:
 @dataclass(frozen=True, slots=True)
 class Catalog:
     """Every series, every expanded candidate, the index the core's queries read, and the
-    motor library (``motors.toml`` of every catalog directory)."""
+    motor library (``motors.toml`` of every catalog directory) and the support-unit
+    library (``supports.toml``)."""
 
     version: str
     series: Mapping[str, Series]
@@ -57,3 +59,4 @@ class Catalog:
     materials: Mapping[str, Material]
     by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)
     motors: Mapping[str, "Motor"] = field(default_factory=dict)
+    supports: Mapping[str, "SupportUnit"] = field(default_factory=dict)

@@ -231,6 +231,34 @@ FIELDS: tuple[InputField, ...] = (
         },
     ),
     InputField(
+        api="bearing_to_nut_mm", page="bearing_to_nut", core="bearing_to_nut_m",
+        label="Thrust bearing to nut", help="The longest span from the thrust bearing to "
+        "the nut (the nut at the end of its travel farthest from the bearing): the column "
+        "that buckles; at most the screw length; empty for the whole screw",
+        group="Motion and load", kind="number", bounds=(1.0, 1e5), dimension="length",
+    ),
+    InputField(
+        api="support_id", page="support_id", core="support_unit",
+        label="Support unit", help="The thrust bearing's support unit from the library "
+        "(supports.toml: THK FK/BK fixed-side units with their axial ratings), unless the "
+        "ratings are typed below; empty or “none” for none",
+        group="Motion and load", kind="text", none_word="none",
+    ),
+    InputField(
+        api="support_static_n", page="support_static", core="support_static_n",
+        label="Thrust bearing static rating", help="The thrust bearing's static axial load "
+        "rating C0a (or its maker's permissible static axial load): the peak thrust must "
+        "stay within it over the static safety factor; empty for no check",
+        group="Motion and load", kind="number", bounds=(1e-3, 1e8), dimension="force",
+    ),
+    InputField(
+        api="support_dynamic_n", page="support_dynamic", core="support_dynamic_n",
+        label="Thrust bearing dynamic rating", help="The thrust bearing's basic dynamic "
+        "axial load rating Ca, for its L10 life (needs a stroke, cycles per day and a "
+        "required life); empty for no life check",
+        group="Motion and load", kind="number", bounds=(1e-3, 1e8), dimension="force",
+    ),
+    InputField(
         api="end_fixity", page="end_fixity", core="end_fixity", label="End fixity",
         help="How the two screw ends are supported", group="Ends", kind="choice",
         default="fixed-simple", options=EndFixity, drawn=True,
@@ -469,6 +497,14 @@ FIELDS: tuple[InputField, ...] = (
         "of the root's yield strength the screw may carry: 0.5 allows half. A fraction, 1 "
         "or below; smaller is safer",
         group="Safety factors", kind="number", default=0.5, bounds=(0.01, 1.0),
+    ),
+    InputField(
+        api="support_static_safety_factor", page="support_static_safety_factor",
+        core="support_static_safety_factor", label="Thrust bearing static factor",
+        help="Static safety factor fs on the thrust bearing: its static rating over the "
+        "peak thrust must be at least this. THK's lower limits: 2 without vibration or "
+        "impact, 5 with",
+        group="Safety factors", kind="number", default=2.0, bounds=(1.0, 20.0),
     ),
     InputField(
         api="torque_safety_factor", page="torque_safety_factor",

@@ -209,8 +209,9 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
     ...     {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"},
     ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in"})
     ... # doctest: +NORMALIZE_WHITESPACE
-    ['load', 'moving_mass_kg', 'brake_torque', 'detent_torque', 'max_torque',
-     'motor_rms_torque', 'motor_inertia', 'motor_holding_torque']
+    ['load', 'moving_mass_kg', 'support_static', 'support_dynamic', 'brake_torque',
+     'detent_torque', 'max_torque', 'motor_rms_torque', 'motor_inertia',
+     'motor_holding_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
     return [field.page for field in FIELDS if field.quantity in changed]
@@ -348,16 +349,21 @@ def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) ->
 
 
 def parse_inputs(
-    params: Mapping[str, str], units: dict[str, str], motors: Mapping[str, Any] | None = None
+    params: Mapping[str, str],
+    units: dict[str, str],
+    motors: Mapping[str, Any] | None = None,
+    supports: Mapping[str, Any] | None = None,
 ) -> tuple[ApplicationIn | None, dict[str, str]]:
     """Validate the page fields as an ``ApplicationIn``, the motor against the library
-    ``motors`` when given. Returns (inputs, errors by field).
+    ``motors`` and the support unit against ``supports`` when given. Returns (inputs,
+    errors by field).
 
     Messages name bounds in the display units; an error of no one field is under 'form'.
     """
     data, errors = page_to_api(params, units)
     try:
-        inputs = ApplicationIn.model_validate(data, context={"motors": motors})
+        context = {"motors": motors, "supports": supports}
+        inputs = ApplicationIn.model_validate(data, context=context)
     except ValidationError as exc:
         for error in exc.errors():
             loc = error.get("loc", ())

@@ -38,6 +38,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from app.catalog.motors import Motor, check_motor, with_motor
+from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.fields import BY_API, FIELDS, InputField
 from app.core.model import Application
 
@@ -111,6 +112,10 @@ def describe(field: InputField) -> str:
 TEXT_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9 ._()+/-]{0,59}$"
 #: At most this many items in a list input.
 MAX_ITEMS = 50
+#: The screw's length, which bounds the span from the thrust bearing to the nut.
+LENGTH = next(field for field in FIELDS if field.core == "length_m")
+#: The support unit of the library that rates the thrust bearing.
+SUPPORT = next(field for field in FIELDS if field.core == "support_unit")
 
 
 def _split_text(value: Any) -> Any:
@@ -347,6 +352,23 @@ class ApplicationInputs(BaseModel):
         motors = (info.context or {}).get("motors") if isinstance(info.context, dict) else None
         return check_motor(BY_API["motor"].to_si(value), motors)
 
+    @field_validator(SUPPORT.api, check_fields=False)
+    @classmethod
+    def _known_support(cls, value: str | None, info: ValidationInfo) -> str | None:
+        """Checked against the support library passed as validation context (the page's
+        form); the API's body is checked where the catalog is (``to_core``)."""
+        context = info.context if isinstance(info.context, dict) else {}
+        return check_support(SUPPORT.to_si(value), context.get("supports"))
+
+    @field_validator("bearing_to_nut_mm", check_fields=False)
+    @classmethod
+    def _within_length(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """The span from the thrust bearing to the nut lies on the screw."""
+        length = info.data.get(LENGTH.api)
+        if value is not None and length is not None and value > length:
+            raise ValueError(f"at most the screw length, {length:g} ({LENGTH.api})")
+        return value
+
     @field_validator("max_step_rate_hz", check_fields=False)
     @classmethod
     def _step_angle_known(cls, value: float | None, info: ValidationInfo) -> float | None:
@@ -365,11 +387,15 @@ class ApplicationInputs(BaseModel):
             check_drivable(value, *(float(v or 0.0) for v in given))
         return value
 
-    def to_core(self, motors: Mapping[str, Motor]) -> Application:
+    def to_core(
+        self, motors: Mapping[str, Motor], supports: Mapping[str, SupportUnit] | None = None
+    ) -> Application:
         """The same application in SI for the core: each value times its ``si_factor``,
         with the library motor's curve, inertia, continuous torque and step angle filled
-        in from ``motors`` (``with_motor``; UnknownMotor for an id it lacks)."""
-        return with_motor(self.axis(), motors)
+        in from ``motors`` (``with_motor``; UnknownMotor for an id it lacks), and the
+        library support unit's axial ratings from ``supports`` (``with_support``;
+        UnknownSupport for an id it lacks)."""
+        return with_support(with_motor(self.axis(), motors), supports or {})
 
     def axis(self) -> Application:
         """The application in SI as given, without a library motor's values filled in:

@@ -109,6 +109,16 @@ class Application:
     #: The nut's length, in place of the catalog's (None: the catalog's) [m].
     nut_length_m: float | None = None
     lubrication: Lubrication = "dry"
+    #: The thrust bearing (the fixed-side support unit): a library unit's id (its ratings
+    #: arrive in the two fields after it unless given), its axial dynamic and static load
+    #: ratings [N] (None: not checked), and the static safety factor on the peak thrust.
+    support_unit: str | None = None
+    support_dynamic_n: float | None = None
+    support_static_n: float | None = None
+    support_static_safety_factor: float = 2.0
+    #: The longest span from the thrust bearing to the nut [m]: the column that buckles
+    #: (None: the screw's length).
+    bearing_to_nut_m: float | None = None
 
     @property
     def lubricated(self) -> bool:

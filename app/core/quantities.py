@@ -6,6 +6,7 @@ serves one screw (a table of one) or the whole catalog; ``row(i)`` gives one
 candidate's numbers as plain floats.
 """
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, fields
 from typing import Any, Generic, TypeVar, cast
@@ -26,6 +27,7 @@ from app.core.formulas import (
     pv,
     pv_derating,
     stepping,
+    support,
     torque,
     wear,
 )
@@ -206,6 +208,13 @@ class Quantities(Generic[V]):
     #: the nut length whose engaged turns carry the load: the user's, else the catalog's
     #: (NaN without a thread pitch) [m]
     nut_length_m: V
+    #: The column that buckles: the span from the thrust bearing to the nut when given,
+    #: else the screw's length [m]; the thrust bearing's allowed static thrust C0a / fs, the
+    #: cycle's cube-mean thrust on it and its L10 life in years of the duty (NaN: not given)
+    column_length_m: V
+    support_allowed_n: V
+    support_mean_load_n: V
+    support_life_years: V
 
     def at(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i``, each read as a float when it is read:
@@ -285,17 +294,33 @@ def _root_torque(t: CandidateTable, peak_n: float, torques: dict[str, Any]) -> A
     )
 
 
+def column_length(app: Application) -> float:
+    """The length of the screw that buckles [m]: from the thrust bearing to the nut at its
+    farthest when that span is given (THK, Ball Screw "Method for Mounting the Ball Screw
+    Shaft": the buckling load uses the distance between the mounting surfaces, the
+    bearing and the nut), else the whole screw; never longer than the screw.
+
+    >>> column_length(Application(load_n=1.0, speed_m_s=0.1, length_m=1.0, bearing_to_nut_m=0.6))
+    0.6
+    """
+    if app.bearing_to_nut_m is None:
+        return app.length_m
+    return min(app.bearing_to_nut_m, app.length_m)
+
+
 def _column_limits(
     app: Application, t: CandidateTable, peak_n: float, torques: dict[str, Any]
 ) -> dict[str, Any]:
-    """Critical speed, and the screw as a column under the peak thrust: Euler when slender,
-    Johnson's parabola when short, and the stress at the root under the peak thrust and
-    the torque the screw carries with it (von Mises)."""
+    """Critical speed over the screw's length, and the screw as a column (its span from
+    the thrust bearing to the nut) under the peak thrust: Euler when slender, Johnson's
+    parabola when short, and the stress at the root under the peak thrust and the torque
+    the screw carries with it (von Mises)."""
     n_c = critical_speed.critical_speed_rpm(
         t.root_diameter_m, app.length_m, t.youngs_modulus_pa, t.density_kg_m3, app.end_fixity
     )
+    column_m = column_length(app)
     f_cr = buckling.column_critical_load(
-        t.youngs_modulus_pa, t.root_diameter_m, app.length_m, app.end_fixity, t.yield_strength_pa
+        t.youngs_modulus_pa, t.root_diameter_m, column_m, app.end_fixity, t.yield_strength_pa
     )
     with np.errstate(invalid="ignore"):
         transition = buckling.transition_slenderness(t.youngs_modulus_pa, t.yield_strength_pa)
@@ -305,7 +330,8 @@ def _column_limits(
         "allowed_rpm": critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
         "critical_load_n": f_cr,
         "allowed_load_n": buckling.allowed_buckling_load(f_cr, app.buckling_safety_factor),
-        "slenderness": buckling.slenderness(t.root_diameter_m, app.length_m, app.end_fixity),
+        "slenderness": buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity),
+        "column_length_m": np.full(len(t), column_m),
         "transition_slenderness": transition,
         "root_stress_pa": buckling.root_von_mises_stress(peak_n, root_nm, t.root_diameter_m),
         "root_torque_nm": root_nm,
@@ -477,6 +503,42 @@ def _duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str
     }
 
 
+def travel_thrusts(app: Application) -> tuple[list[float], list[float]]:
+    """The thrust on the nut in each moving segment of both moves [N] and the distance
+    travelled in it [m] (a ramp covers v t / 2, the constant segment v t); none without
+    a stroke."""
+    p = motion.move_profile(app)
+    if p is None:
+        return [], []
+    v = p.peak_speed_m_s
+    one_move = [v * p.accel_time_s / 2.0, v * p.constant_time_s, v * p.decel_time_s / 2.0]
+    return motion.nut_forces(app)[:6], one_move * 2
+
+
+def _support(app: Application, t: CandidateTable) -> dict[str, Any]:
+    """The thrust bearing: its allowed static thrust C0a / fs, the cube-mean thrust of the
+    cycle and its L10 life in years (revolutions times the lead over the duty's travel)."""
+    nan = np.full(len(t), np.nan)
+    allowed = nan
+    if app.support_static_n is not None:
+        allowed = np.full(
+            len(t),
+            support.static_allowed_load(app.support_static_n, app.support_static_safety_factor),
+        )
+    forces, distances = travel_thrusts(app)
+    mean_n = support.mean_axial_load(forces, distances) if forces else math.nan
+    years = nan
+    duty = app.stroke_m and app.cycles_per_day
+    if app.support_dynamic_n is not None and duty and mean_n > 0.0:
+        revolutions = support.rating_life_revolutions(app.support_dynamic_n, mean_n)
+        years = life.life_years(revolutions * t.lead_m, app.stroke_m, app.cycles_per_day)
+    return {
+        "support_allowed_n": allowed,
+        "support_mean_load_n": np.full(len(t), mean_n),
+        "support_life_years": years,
+    }
+
+
 def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
     """Holding the load ``force_n`` at standstill (``motion.steady_load``: friction holds
     nothing). The thread counts as self-locking only with static friction reduced by
@@ -548,6 +610,7 @@ def _values(
         ),
         **(worn := _wear(app, t, flanks["flank_area_m2"])),
         **_duty(app, t, worn["wear_travel_m"]),
+        **_support(app, t),
         **(holding := _holding(app, t, motion.steady_load(app))),
         **(motor := _motor(app, t, rpm, holding["brake_nm"], torques)),
         **_controller(app, t, motor["peak_rpm"]),

@@ -54,6 +54,10 @@ WHY: Mapping[str, str] = {
     "design_load": "the thrust exceeds every screw's design load: consider a ball screw",
     "root_stress": "the thrust and the torque it takes yield every screw's root: consider a ball "
     "screw",
+    "support_static": "the peak thrust exceeds the thrust bearing's static rating: a "
+    "larger support unit, or a lower load or acceleration",
+    "support_life": "the thrust bearing does not last this duty on any lead: a support "
+    "unit of a higher dynamic rating",
     "temperature": "no nut in the catalog is rated for this temperature: consider a metal "
     "nut outside the catalog or a ball screw",
     "coating_environment": "no nut suits this environment (oil, coating): choose another "

@@ -50,7 +50,9 @@ def run_selection(
     """Select and rank over the catalog: the API's select response, its sentences in
     ``units`` (the API's own by default), its candidates in ``VIEWS[view]`` (every field
     by default; "csv": the CSV export's)."""
-    selection = select(inputs.to_core(catalog.motors), catalog.index, INPUT_RANGES)
+    selection = select(
+        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES
+    )
     return construct_select_out(inputs, catalog, selection_out(selection, units, view))
 
 
@@ -76,7 +78,9 @@ def run_page_selection(
     the ``rejected`` view (the list; each one's detail loads when opened), sentences in
     ``units``. The rejected are in full too only when nothing passes: then the charts and
     the advice are about them."""
-    selection = select(inputs.to_core(catalog.motors), catalog.index, INPUT_RANGES)
+    selection = select(
+        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES
+    )
     rejected = selection.rejected if not selection.passed else ()
     out = construct(
         PageSelectionOut,
@@ -93,7 +97,9 @@ def run_page_selection(
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
     """Select and rank over the catalog: the API's compact select response
     (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
-    selection = select(inputs.to_core(catalog.motors), catalog.index, INPUT_RANGES)
+    selection = select(
+        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES
+    )
     return {
         "detail": "summary",
         "inputs": inputs,
@@ -114,7 +120,7 @@ def run_evaluation(
     catalog's variant rows; a custom screw's are built here); raise UnknownScrew for a
     bad catalog id."""
     index = catalog.index
-    app = inputs.to_core(catalog.motors)
+    app = inputs.to_core(catalog.motors, catalog.supports)
     if isinstance(screw, CatalogScrewIn):
         position = index.positions.get(screw.catalog_id)
         if position is None:

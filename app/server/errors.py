@@ -12,6 +12,7 @@ from fastapi.routing import APIRoute
 from starlette.exceptions import HTTPException
 
 from app.catalog.motors import UnknownMotor
+from app.catalog.supports import UnknownSupport
 
 
 class AppError(Exception):
@@ -64,6 +65,10 @@ class ApiRoute(APIRoute):
             except UnknownMotor as exc:
                 raise AppError(
                     422, "invalid input", [{"field": "motor", "message": str(exc)}]
+                ) from exc
+            except UnknownSupport as exc:
+                raise AppError(
+                    422, "invalid input", [{"field": exc.field, "message": str(exc)}]
                 ) from exc
             except HTTPException as exc:
                 if exc.status_code != 400:

@@ -90,7 +90,7 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     values = context["values"]
     if not _started(values):
         return context
-    inputs, app_errors = parse_inputs(values, context["units"], catalog.motors)
+    inputs, app_errors = parse_inputs(values, context["units"], catalog.motors, catalog.supports)
     screw, screw_errors = parse_screw(values, context["units"])
     context["errors"] = {**app_errors, **screw_errors}
     if inputs is None or screw is None:

@@ -419,7 +419,9 @@ def result_figures(
     if not candidates:
         return {}
     d = Display(units)
-    app = result.inputs.to_core(catalog.motors) if catalog else result.inputs.axis()
+    app = (
+        result.inputs.to_core(catalog.motors, catalog.supports) if catalog else result.inputs.axis()
+    )
     length_mm, _ = api_value(app.length_m, "length")
     speed_mm_s, _ = api_value(app.speed_m_s, "speed")
     figures = {

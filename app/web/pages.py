@@ -22,6 +22,7 @@ from app.contract.form import (
     share_query,
     summary_rows,
 )
+from app.contract.inputs import SUPPORT
 from app.contract.pairs import PairRankIn
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
@@ -75,7 +76,10 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     (the library's motors), no result yet."""
     units, values, converted, typed = form_state(params)
     return {
-        "suggestions": {"motor": motor_suggestions(catalog)},
+        "suggestions": {
+            "motor": motor_suggestions(catalog),
+            SUPPORT.page: [(uid, unit.name) for uid, unit in catalog.supports.items()],
+        },
         "typed": typed,
         "units": units,
         "values": values,
@@ -117,7 +121,7 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
     units, values = context["units"], context["values"]
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
-    inputs, context["errors"] = parse_inputs(values, units, catalog.motors)
+    inputs, context["errors"] = parse_inputs(values, units, catalog.motors, catalog.supports)
     if inputs is not None:
         result, rejected = run_page_selection(inputs, catalog, units)
         context["result"], context["rejected"] = result, rejected
@@ -202,7 +206,7 @@ def link_inputs(
 ) -> tuple[ApplicationIn, dict[str, str]]:
     """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
     units, values, _, _ = form_state(params)
-    inputs, errors = parse_inputs(values, units, catalog.motors)
+    inputs, errors = parse_inputs(values, units, catalog.motors, catalog.supports)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
         raise AppError(422, "invalid input", detail)

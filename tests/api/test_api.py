@@ -453,7 +453,7 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
     # fields beyond the issue's list are optional and stay off unless given
     # the self-locking margin, the advice policy, the dwell, the microsteps, the load
-    # direction and what holds have defaults of their own
+    # direction, what holds and the thrust bearing's factor have defaults of their own
     later = {
         "self_locking_friction_factor": 0.5,
         "advice": "warn",
@@ -464,6 +464,8 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
         "lubrication": "dry",
         "stepper_torque_margin": 1.5,
         "motor_current_rms": False,
+        # the thrust bearing's static safety factor: THK's lower limit without vibration
+        "support_static_safety_factor": 2.0,
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)

@@ -127,7 +127,7 @@ def _valued_tables(path: Path) -> list[tuple[str, str, object]]:
     out = _values_of("defaults", data.get("defaults", {}))
     for entry in data.get("series", []):
         out += _values_of(entry["id"], {k: v for k, v in entry.items() if k != "id"})
-    for table in ("variants", "rules", "materials", "motors"):
+    for table in ("variants", "rules", "materials", "motors", "supports"):
         for name, values in data.get(table, {}).items():
             out += _values_of(f"{table}.{name}", values)
     if "thread_form" in data.get("family", {}):

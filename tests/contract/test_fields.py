@@ -45,7 +45,8 @@ ROOT = Path(__file__).resolve().parents[2]
 #: out must keep working, whatever the order of their parameters.
 SHARE_LINK_NAMES = [
     "load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length",
-    "accel", "compression", "end_fixity", "require_anti_backlash", "coating", "family",
+    "accel", "compression", "bearing_to_nut", "support_id", "support_static",
+    "support_dynamic", "end_fixity", "require_anti_backlash", "coating", "family",
     "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
     "cycles_per_day", "hours_per_day", "required_life_years", "positioning_tolerance",
     "brake_torque",
@@ -54,7 +55,8 @@ SHARE_LINK_NAMES = [
     "motor_supply", "motor_phase_current", "motor_current_rms", "motor_resistance",
     "motor_inductance",
     "motor_holding_torque", "decel", "dwell", "critical_speed_safety_factor",
-    "buckling_safety_factor", "torque_safety_factor", "stepper_torque_margin",
+    "buckling_safety_factor", "support_static_safety_factor", "torque_safety_factor",
+    "stepper_torque_margin",
     "self_locking_friction_factor",
     "brake_safety_factor", "rank_by", "advice", "limit",
 ]  # fmt: skip
@@ -122,7 +124,8 @@ def test_bounds_are_enforced_by_the_api_model(field: InputField) -> None:
     duty |= {"motor_supply_v": 400.0, "motor_phase_current_a": 1.0}
     duty |= {"motor_resistance_ohm": 1.0, "motor_inductance_mh": 1.0}
     for value, valid in ((low, True), (high, True), (high * 2 + 1, False)):
-        data = {**REQUIRED, **duty, field.api: value}
+        # the longest screw, so that a span from its thrust bearing to the nut lies on it
+        data = {**REQUIRED, **duty, "length_mm": 1e5, field.api: value}
         try:
             ApplicationIn.model_validate(data)
             refused: list[str] = []
@@ -292,6 +295,8 @@ def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
         data["hours_per_day"] = None  # the duty is cycles or hours a day, not both
     if data["cycles_per_day"] is None and data["hours_per_day"] is None:
         data["required_life_years"] = None  # a required life needs a duty
+    if (data["bearing_to_nut_mm"] or 0.0) > data["length_mm"]:
+        data["bearing_to_nut_mm"] = None  # the span from the thrust bearing lies on the screw
     if data["step_angle_deg"] is None and data["motor"] is None:
         data["max_step_rate_hz"] = None  # a step rate limit needs a step angle
     if data["motor_holding_torque_nm"] is not None:

@@ -224,6 +224,7 @@ ALLOWED = {
     ("app/core/model.py", 1e-9): "PASS_UTILIZATION: the rounding a pass allows",
     ("app/core/formulas/profile.py", 1e-9): "MIN_ACCEL_M_S2: an acceleration floor",
     ("app/core/formulas/trapezoidal.py", 1e-3): "ISO 2904: crest clearance 1 mm, in m",
+    ("app/core/formulas/support.py", 1e6): "ISO 281: a rating is for 10^6 revolutions",
 }
 #: keyword arguments and calls whose numbers are input bounds and defaults, in the API
 #: unit of their field: values, not conversions.

@@ -123,17 +123,21 @@ def test_max_length_remedy_brings_utilization_to_one(
     assert load / at_max == pytest.approx(1.0, rel=1e-9)
 
 
-@given(d=diameters, length=lengths, fixity=fixities, load=st.floats(1.0, 1e5))
-def test_min_root_diameter_remedy_brings_utilization_to_one(
-    d: float, length: float, fixity: str, load: float
+@given(
+    d=diameters,
+    length=lengths,
+    fixity=fixities,
+    yield_pa=st.none() | st.floats(200e6, 900e6),
+    ratio=st.floats(0.05, 20.0),
+)
+def test_min_root_diameter_carries_the_critical_load_it_is_asked_for(
+    d: float, length: float, fixity: str, yield_pa: float | None, ratio: float
 ) -> None:
-    allowed = buckling.allowed_buckling_load(
-        buckling.euler_critical_load(STEEL_E, buckling.second_moment_round(d), length, fixity),
-        0.5,
-    )
-    d_min = buckling.min_root_diameter_for_load(d, allowed, load)
-    at_min = buckling.allowed_buckling_load(
-        buckling.euler_critical_load(STEEL_E, buckling.second_moment_round(d_min), length, fixity),
-        0.5,
-    )
-    assert load / at_min == pytest.approx(1.0, rel=1e-9)
+    """The inverse of ``column_critical_load`` in the diameter, in Euler's range and in
+    Johnson's: the column of the returned diameter has the critical load asked for (a
+    load ``ratio`` times that of a column of diameter ``d``)."""
+    sy = math.nan if yield_pa is None else yield_pa
+    wanted = ratio * buckling.column_critical_load(STEEL_E, d, length, fixity, sy)
+    d_min = buckling.min_root_diameter_for_column(wanted, STEEL_E, length, fixity, sy)
+    at_min = buckling.column_critical_load(STEEL_E, d_min, length, fixity, sy)
+    assert at_min == pytest.approx(wanted, rel=1e-9)

@@ -71,6 +71,18 @@ APPS = {
         detent_torque_nm=0.02,
         brake_safety_factor=1.5,
     ),
+    # a thrust bearing rated statically and dynamically, over a duty, buckling over the
+    # span from the bearing to the nut
+    "supported-duty": light_app(
+        load_n=800.0,
+        moving_mass_kg=10.0,
+        stroke_m=0.4,
+        cycles_per_day=1000.0,
+        required_life_years=3.0,
+        support_static_n=3250.0,
+        support_dynamic_n=6660.0,
+        bearing_to_nut_m=0.3,
+    ),
 }
 FUNCTIONS: dict[str, Any] = {
     "pi": math.pi,
@@ -208,6 +220,8 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     motor = {"motor_curve", "motor_rms", "motor_speed", "inertia_ratio"}
     controller = {"step_rate", "step_resolution"}
     holding = {"holding", "holding_power_off"}
-    assert user_limits == {"torque", "accuracy", *holding, *motor, *controller}
+    # the thrust bearing's ratings are inputs, typed or a library unit's (as a motor's)
+    support = {"support_static", "support_life"}
+    assert user_limits == {"torque", "accuracy", *holding, *motor, *controller, *support}
     for c in REGISTRY:
         assert set(c.capacity_sources) <= set(c.sources), c.name

@@ -28,6 +28,8 @@ from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
 from app.core.checks.step_rate import StepRate
 from app.core.checks.step_resolution import StepResolution
+from app.core.checks.support_life import SupportLife
+from app.core.checks.support_static import SupportStatic
 from app.core.checks.temperature import Temperature
 from app.core.checks.torque import DriveTorque
 from app.core.checks.traverse_speed import TraverseSpeed
@@ -46,6 +48,7 @@ REGISTRY: tuple[Check, ...] = (
     CriticalSpeed(),
     ColumnBuckling(),
     RootStress(),
+    SupportStatic(),
     NutPV(),
     BearingPressure(),
     MaxSlidingSpeed(),
@@ -60,6 +63,7 @@ REGISTRY: tuple[Check, ...] = (
     HoldingPowerOff(),
     AntiBacklash(),
     Life(),
+    SupportLife(),
     WearLife(),
     Accuracy(),
     StepResolution(),

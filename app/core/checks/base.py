@@ -36,6 +36,7 @@ __all__ = [
     "at_most",
     "same",
     "sentence",
+    "stiffer_fixity",
 ]
 
 #: A limit rejects a candidate; advice is reported beside it.
@@ -175,8 +176,8 @@ def sentence(template: str, values: dict[str, "Amount | str"]) -> Phrase:
     return Phrase(template[:1].upper() + template[1:], values)
 
 
-def stiffer_support(app: Application, passes: Callable[[EndFixity], bool]) -> str:
-    """The first stiffer end fixity that passes, else an intermediate support."""
+def stiffer_fixity(app: Application, passes: Callable[[EndFixity], bool]) -> EndFixity | None:
+    """The first end fixity stiffer than ``app``'s for which ``passes`` holds (the check
+    with its fix margin), else None (an intermediate support is needed)."""
     stiffer = FIXITY_ORDER[FIXITY_ORDER.index(app.end_fixity) + 1 :]
-    found = [f for f in stiffer if passes(f)]
-    return f"mount the ends {found[0]}" if found else "add an intermediate support"
+    return next((f for f in stiffer if passes(f)), None)

@@ -16,10 +16,11 @@ from app.core.checks.base import (
     at_least,
     load_input,
     sentence,
-    stiffer_support,
+    stiffer_fixity,
 )
 from app.core.formulas import buckling
 from app.core.phrase import Amount, Phrase
+from app.core.quantities import column_length
 
 
 class ColumnBuckling(Check):
@@ -56,7 +57,7 @@ class ColumnBuckling(Check):
             "SF": app.buckling_safety_factor,
             "E": t.youngs_modulus_pa,
             "A": buckling.root_area(t.root_diameter_m),
-            "s": buckling.slenderness(t.root_diameter_m, app.length_m, app.end_fixity),
+            "s": buckling.slenderness(t.root_diameter_m, column_length(app), app.end_fixity),
             "S_y": t.yield_strength_pa,
         }
 
@@ -64,70 +65,106 @@ class ColumnBuckling(Check):
         verb = "is within" if passed else "exceeds"
         short = r.slenderness < r.transition_slenderness
         model = "Johnson, short column" if short else "Euler"
+        span = (
+            ""
+            if app.bearing_to_nut_m is None
+            else ", over {col} from the thrust bearing to the nut"
+        )
         return Phrase(
             "Peak thrust {f} in compression "
             + verb
             + " the allowed {allowed} ({sf} x "
             + model
-            + " {f_cr}, slenderness {s}).",
+            + " {f_cr}, slenderness {s}"
+            + span
+            + ").",
             {
                 "f": Amount(r.compressive_force_n, "force"),
                 "allowed": Amount(r.allowed_load_n, "force"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
                 "f_cr": Amount(r.critical_load_n, "force"),
                 "s": Amount(r.slenderness, "factor"),
+                "col": Amount(r.column_length_m, "length"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        def passes(fixity: EndFixity) -> bool:
-            f_cr = buckling.column_critical_load(
-                s.youngs_modulus_pa,
-                s.root_diameter_m,
-                app.length_m,
-                fixity,
-                float("nan") if s.yield_strength_pa is None else s.yield_strength_pa,
+        def critical(fixity: EndFixity) -> float:
+            return buckling.column_critical_load(
+                s.youngs_modulus_pa, s.root_diameter_m, column_length(app), fixity, _yield(s)
             )
-            return r.compressive_force_n <= app.buckling_safety_factor * f_cr
 
-        d_min = buckling.min_root_diameter_for_load(
-            s.root_diameter_m, r.allowed_load_n, r.compressive_force_n
+        force_n = at_least(r.compressive_force_n)
+        d_min = buckling.min_root_diameter_for_column(
+            force_n / app.buckling_safety_factor,
+            s.youngs_modulus_pa,
+            column_length(app),
+            app.end_fixity,
+            _yield(s),
         )
-        length = _max_length(app, s, r, at_least(r.compressive_force_n))
+        length_m = _max_length(app, s, r, force_n)
         values: dict[str, Amount | str] = {
-            "support": stiffer_support(app, passes),
-            "length": Amount(length, "length"),
+            "length": Amount(length_m, "length"),
             "fixity": app.end_fixity,
         }
+        options = []
+        if d_min <= reach.max_root_diameter_m:
+            values["d"] = Amount(d_min, "length")
+            options.append("use a root diameter of at least {d}")
+        spanned = app.bearing_to_nut_m is not None
+        what = "span from the thrust bearing to the nut" if spanned else "column"
+        # a stiffer mounting is offered only when it keeps the margin at this length
+        stiffer = stiffer_fixity(app, lambda f: force_n <= app.buckling_safety_factor * critical(f))
+        if stiffer is not None:
+            values["stiffer"] = stiffer
+            values["stiffer_length"] = Amount(_max_length(app, s, r, force_n, stiffer), "length")
+            options.append(
+                f"mount the ends {{stiffer}} ({what} at most {{stiffer_length}} with the ends "
+                "{stiffer})"
+            )
         # no column of this screw carries the thrust when its root yields first
-        column = " (column at most {length} with the ends {fixity})" if length > 0 else ""
-        template = (
-            "{support}" + column + ", or move the thrust bearing so that the load pulls the screw."
-        )
-        if at_least(d_min) <= reach.max_root_diameter_m:
-            values["d"] = Amount(at_least(d_min), "length")
-            template = "Use a root diameter of at least {d}, or " + template
-        return sentence(template + MARGIN_NOTE, values)
+        shorter = f"{what} at most {{length}} with the ends {{fixity}}" if length_m > 0 else ""
+        if stiffer is None and not spanned:
+            options.append("add an intermediate support" + (f" ({shorter})" if shorter else ""))
+        elif shorter:
+            options.append(f"a {shorter.replace(' at most', ' of at most', 1)}")
+        options.append("move the thrust bearing so that the load pulls the screw")
+        return sentence(", or ".join(options) + "." + MARGIN_NOTE, values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
         limits = load_input(app, r.allowed_load_n, compressive=True)
         length = _max_length(app, s, r)
-        return {**limits, "length_m": length} if length > 0 else limits
+        return {**limits, _column_input(app): length} if length > 0 else limits
+
+
+def _column_input(app: Application) -> str:
+    """The input that sets the column's length: the span from the thrust bearing to the
+    nut when given, else the screw's length."""
+    return "length_m" if app.bearing_to_nut_m is None else "bearing_to_nut_m"
+
+
+def _yield(s: ScrewSpec) -> float:
+    """The screw's yield strength [Pa] (NaN when unknown: Euler alone)."""
+    return float("nan") if s.yield_strength_pa is None else s.yield_strength_pa
 
 
 def _max_length(
-    app: Application, s: ScrewSpec, r: Quantities[float], force_n: float | None = None
+    app: Application,
+    s: ScrewSpec,
+    r: Quantities[float],
+    force_n: float | None = None,
+    fixity: EndFixity | None = None,
 ) -> float:
-    """Longest column carrying the peak thrust (or ``force_n``) with the buckling factor
-    [m]. A fix asks for the column that carries the thrust with its margin: in Johnson's
-    short-column range the critical load hardly grows as the column shortens, so a
-    length a margin shorter would not keep the margin."""
+    """Longest column carrying the peak thrust (or ``force_n``) with the buckling factor,
+    with the ends ``app``'s (or ``fixity``) [m]. A fix asks for the column that carries the
+    thrust with its margin: in Johnson's short-column range the critical load hardly grows
+    as the column shortens, so a length a margin shorter would not keep the margin."""
     return buckling.max_length_for_column(
         (r.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
         s.youngs_modulus_pa,
         s.root_diameter_m,
-        app.end_fixity,
-        float("nan") if s.yield_strength_pa is None else s.yield_strength_pa,
+        app.end_fixity if fixity is None else fixity,
+        _yield(s),
     )

@@ -16,7 +16,7 @@ from app.core.checks.base import (
     at_most,
     everywhere,
     sentence,
-    stiffer_support,
+    stiffer_fixity,
 )
 from app.core.formulas import critical_speed, geometry
 from app.core.phrase import Amount, Phrase
@@ -68,17 +68,16 @@ class CriticalSpeed(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        def passes(fixity: EndFixity) -> bool:
+        def allowed(fixity: EndFixity) -> float:
             n_c = critical_speed.critical_speed_rpm(
                 s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity
             )
-            return r.rpm <= app.critical_speed_safety_factor * n_c
+            return critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor)
 
         lead = critical_speed.min_lead_for_speed(app.speed_m_s, r.allowed_rpm)
         d_min = critical_speed.min_root_diameter_for_speed(s.root_diameter_m, r.allowed_rpm, r.rpm)
         options = []
         values: dict[str, Amount | str] = {
-            "support": stiffer_support(app, passes),
             "length": Amount(at_most(_max_length(app, r)), "length"),
             "fixity": app.end_fixity,
         }
@@ -89,10 +88,24 @@ class CriticalSpeed(Check):
         if at_least(d_min) <= reach.max_root_diameter_m:
             options.append("a root diameter of at least {d}")
             values["d"] = Amount(at_least(d_min), "length")
-        use = ("Use " + ", or ".join(options) + ", or {support}") if options else "{support}"
-        template = use + " (unsupported length at most {length} with the ends {fixity})."
-        template += MARGIN_NOTE
-        return sentence(template, values)
+        # a stiffer mounting is offered only when it keeps the margin at this length
+        stiffer = stiffer_fixity(app, lambda f: at_least(r.rpm) <= allowed(f))
+        if stiffer is None:
+            options.append(
+                "add an intermediate support (unsupported length at most {length} with the "
+                "ends {fixity})"
+            )
+        else:
+            length = critical_speed.max_length_for_speed(app.length_m, allowed(stiffer), r.rpm)
+            values["stiffer"] = stiffer
+            values["stiffer_length"] = Amount(at_most(length), "length")
+            options.append(
+                "mount the ends {stiffer} (unsupported length at most {stiffer_length} with "
+                "the ends {stiffer})"
+            )
+            options.append("an unsupported length of at most {length} with the ends {fixity}")
+        use = "Use " if options[0].startswith("a ") else ""
+        return sentence(use + ", or ".join(options) + "." + MARGIN_NOTE, values)
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]

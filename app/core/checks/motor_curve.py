@@ -111,7 +111,7 @@ class MotorCurve(Check):
         verb = "is within" if passed else "exceeds"
         values: dict[str, Amount | str] = {
             "segment": worst_segment(app, r),
-            "need": Amount(at_least(r.motor_worst_needed_nm), "torque"),
+            "need": Amount(r.motor_worst_needed_nm, "torque"),
             "rpm": Amount(r.motor_worst_rpm, "rpm"),
             "curve": Amount(r.motor_curve_nm, "torque"),
         }
@@ -135,7 +135,7 @@ class MotorCurve(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         values: dict[str, Amount | str] = {
             "short": Amount(r.motor_worst_needed_nm - r.motor_curve_nm, "torque"),
-            "need": Amount(r.motor_worst_needed_nm, "torque"),
+            "need": Amount(at_least(r.motor_worst_needed_nm), "torque"),
             "rpm": Amount(r.motor_worst_rpm, "rpm"),
             "segment": worst_segment(app, r),
         }

@@ -66,18 +66,6 @@ def max_length_for_load(length_m: float, allowed_load_n: float, load_n: float) -
     return length_m * ratio
 
 
-def min_root_diameter_for_load(
-    root_diameter_m: float, allowed_load_n: float, load_n: float
-) -> float:
-    """Smallest root diameter carrying the load: d_r (F / F_allowed)^(1/4) [m].
-
-    >>> round(min_root_diameter_for_load(0.01, 100.0, 1600.0), 6)
-    0.02
-    """
-    ratio: float = (load_n / allowed_load_n) ** 0.25
-    return root_diameter_m * ratio
-
-
 def root_area(root_diameter_m: float) -> float:
     """Area of the root circle, A = pi d_r^2 / 4 [m^2].
 
@@ -274,3 +262,46 @@ def max_length_for_column(
         s = 2 * math.pi / yield_strength_pa * (youngs_modulus_pa * max(squash, 0.0)) ** 0.5
     length: float = s * (root_diameter_m / 4.0) * END_FIXITY_K[end_fixity] ** 0.5
     return length
+
+
+@formula(
+    "d_r = (64 F_cr L^2 / (k pi^3 E))^(1/4) (Euler); when short, "
+    "d_r = sqrt(4 (F_cr + S_y^2 L_e^2 / (pi E)) / (pi S_y)), L_e = L / sqrt(k)",
+    "inverse of Euler (Timoshenko & Gere) and Johnson (Shigley sec. 4-13)",
+)
+def min_root_diameter_for_column(
+    critical_load_n: float,
+    youngs_modulus_pa: float,
+    length_m: float,
+    end_fixity: str,
+    yield_strength_pa: float,
+) -> float:
+    """Smallest root diameter whose column of ``length_m`` has the critical load
+    ``critical_load_n`` [m]: the inverse of ``column_critical_load`` in the diameter.
+
+    Euler: I = pi d^4 / 64 gives d = (64 F_cr L^2 / (k pi^3 E))^(1/4). When that column is
+    short (s = 4 L_e / d below the transition slenderness), Johnson: with A s^2 = 4 pi L_e^2,
+    F_cr = A S_y - S_y^2 L_e^2 / (pi E), so A = (F_cr + S_y^2 L_e^2 / (pi E)) / S_y and
+    d = sqrt(4 A / pi); the parabola lies below Euler, so this d is the larger. Euler alone
+    when the yield strength is unknown (NaN). critical_load_n [N], youngs_modulus_pa [Pa],
+    length_m [m], end_fixity a key of END_FIXITY_K, yield_strength_pa [Pa].
+    Source: Shigley [2], sec. 4-11 to 4-13, solved for d.
+
+    >>> round(min_root_diameter_for_column(4011.437, 207e9, 2.0, "simple-simple", 310e6), 5)
+    0.02
+    >>> round(min_root_diameter_for_column(151432.0, 207e9, 0.1, "fixed-simple", 310e6), 5)
+    0.025
+    """
+    k = END_FIXITY_K[end_fixity]
+    euler: float = (
+        64.0 * critical_load_n * length_m**2 / (k * math.pi**3 * youngs_modulus_pa)
+    ) ** 0.25
+    if math.isnan(yield_strength_pa):
+        return euler
+    effective_m = length_m / k**0.5
+    if 4.0 * effective_m / euler >= transition_slenderness(youngs_modulus_pa, yield_strength_pa):
+        return euler
+    parabola = yield_strength_pa**2 * effective_m**2 / (math.pi * youngs_modulus_pa)
+    area_m2 = (critical_load_n + parabola) / yield_strength_pa
+    johnson: float = (4.0 * area_m2 / math.pi) ** 0.5
+    return johnson
