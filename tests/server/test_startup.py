@@ -12,12 +12,14 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
+import httpx
 import pytest
 
 from app.catalog import CatalogError
 from app.catalog.files import MAX_FILE_BYTES
 from app.main import create_app
 from app.server.settings import Settings
+from deploy.local import free_port, stop, wait_until_healthy
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -263,3 +265,36 @@ def test_a_bad_setting_stops_the_script_naming_it(variable: str, value: str) -> 
     assert result.returncode == 2, result.stderr
     assert result.stderr.startswith("settings error:") and "Traceback" not in result.stderr
     assert variable.removeprefix("LEADSCREW_").lower() in result.stderr.lower()
+
+
+# --- the command line's catalog directories reach every worker ------------------------------
+
+
+def _console_script() -> Path:
+    """The ``leadscrew-selector`` script of this interpreter's environment."""
+    script = Path(sys.executable).parent / "leadscrew-selector"
+    assert script.is_file(), f"{script}: install the project (pip install -e .)"
+    return script
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_catalog_dir_on_the_command_line_is_served(workers: int) -> None:
+    """``leadscrew-selector --catalog-dir examples/my-family`` serves the family MY with one
+    worker (the app factory runs in the script's own process, whose settings were read
+    before the command line was applied) as with two (each worker a process of its own)."""
+    port = free_port()
+    args = [str(_console_script()), "--catalog-dir", str(EXAMPLE.parent), "--port", str(port)]
+    # the script imports the package first on PYTHONPATH: this checkout's
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    env.pop("LEADSCREW_CATALOG_DIRS", None)
+    proc = subprocess.Popen([*args, "--workers", str(workers), "--log-level", "warning"], env=env)
+    try:
+        wait_until_healthy(port, proc, "leadscrew-selector")
+        with httpx.Client(base_url=f"http://127.0.0.1:{port}", timeout=30) as client:
+            ids = {s["id"] for s in client.get("/api/v1/series").json()["series"]}
+            assert "MY-Tr8-P2" in ids, sorted(ids)
+            for _ in range(2 * workers):  # whichever worker answers
+                answer = client.get("/api/v1/series/MY-Tr8-P2", headers={"Connection": "close"})
+                assert answer.status_code == 200
+    finally:
+        stop(proc)
