@@ -13,6 +13,7 @@ decimals: a spreadsheet or script writes those, and a comma in a query string is
 
 import math
 import re
+import sys
 from collections.abc import Mapping
 from decimal import Decimal, localcontext
 from fractions import Fraction
@@ -84,6 +85,8 @@ LINK_DIGITS = 24
 FLOAT_DIGITS = 800
 #: decimal exponents read exactly: wider than any float times a unit's factor.
 EXPONENT_REACH = 400
+#: the largest finite float, exactly
+MAX_FLOAT = Fraction(sys.float_info.max)
 #: a typed number read as the API reads a query parameter: ASCII decimal, finite.
 PAGE_NUMBER: TypeAdapter[float] = TypeAdapter(
     Annotated[float, NUMBER_TEXT, Field(allow_inf_nan=False)]
@@ -246,7 +249,9 @@ def convert_text(text: str, quantity: Quantity, source: str, target: str) -> str
     key = unit_key(quantity)
     api = to_api(number, quantity, {**DEFAULT_UNITS, key: source})
     digits = min(max(sig_figures(text) + 1, 4), 6)
-    return f"{from_api(api, quantity, {**DEFAULT_UNITS, key: target}):.{digits}g}"
+    shown = from_api(api, quantity, {**DEFAULT_UNITS, key: target})
+    # past any float in the new unit (1e308 N in lbf): kept as typed, for its bound's message
+    return f"{shown:.{digits}g}" if math.isfinite(shown) else text
 
 
 def read_typed(record: str, quantity: Quantity) -> tuple[str, str] | None:
@@ -427,7 +432,10 @@ def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
         raise ValueError(error)
     if isinstance(number, float):
         return number
-    return float(number * _factor(field, units) + _offset(field, units))
+    exact = number * _factor(field, units) + _offset(field, units)
+    if abs(exact) > MAX_FLOAT:  # 1e308 lbf: past every input's bounds, which the model names
+        return sys.float_info.max if exact > 0 else -sys.float_info.max
+    return float(exact)
 
 
 def _trimmed(text: str) -> str:
