@@ -199,7 +199,7 @@ def _listed_leads_mm(entry: Entry) -> list[float]:
         pitch = entry.number("pitch_mm")
         for lead in listed:
             starts = round(lead / pitch)
-            if starts < 1 or not math.isclose(lead, starts * pitch, rel_tol=1e-6):
+            if starts < 1 or not math.isclose(lead, starts * pitch):
                 why = f"lead {lead:g} mm is not a whole number of starts of pitch {pitch:g} mm"
                 raise entry.fail("leads_mm", why)
     return listed
