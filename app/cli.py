@@ -3,6 +3,7 @@
 import argparse
 import json
 import os
+import re
 import signal
 import sys
 from collections.abc import Callable
@@ -56,10 +57,10 @@ def whole_number(low: int, high: int) -> Callable[[str], int]:
     """
 
     def parse(text: str) -> int:
-        try:
-            value = int(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+        # digits only: int() would also read "1_0" as 10 and " 8000" as 8000
+        if not re.fullmatch(r"-?[0-9]+", text):
+            raise argparse.ArgumentTypeError(f"not a whole number: {text!r}")
+        value = int(text)
         if not low <= value <= high:
             raise argparse.ArgumentTypeError(f"must be {low} to {high}, got {value}")
         return value
@@ -98,19 +99,21 @@ def _checked_settings(catalog_dirs: list[Path]) -> Settings:
     here, before any worker is forked (a worker failing at start-up is started again,
     for ever), as one line naming the setting or the catalog file. ``catalog_dirs`` (the
     command line's) replace the environment's."""
+    if catalog_dirs:
+        # set before the settings are first read: one worker runs the app factory in this
+        # process, and reads the cached settings, not the command line
+        os.environ["LEADSCREW_CATALOG_DIRS"] = json.dumps([str(p.resolve()) for p in catalog_dirs])
+        get_settings.cache_clear()
     try:
         settings = get_settings()
     except ValidationError as exc:
         raise StartError(f"settings error: {_one_line(exc)}") from exc
     except SettingsError as exc:  # a value that is not JSON where JSON is needed
         raise StartError(f"settings error: {exc}") from exc
-    dirs = catalog_dirs or settings.catalog_dirs
     try:
-        load_catalog(dirs)
+        load_catalog(settings.catalog_dirs)
     except CatalogError as exc:
         raise StartError(f"catalog error: {exc}") from exc
-    if catalog_dirs:
-        os.environ["LEADSCREW_CATALOG_DIRS"] = json.dumps([str(p.resolve()) for p in dirs])
     return settings
 
 

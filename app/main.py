@@ -14,7 +14,7 @@ from app.server.cache import ResponseCache
 from app.server.compression import NegotiatedGZipMiddleware
 from app.server.errors import AppError
 from app.server.head import HeadAsGetMiddleware
-from app.server.overload import NEVER_SHED, OverloadMiddleware, request_cost
+from app.server.overload import NEVER_SHED, OverloadMiddleware
 from app.server.paths import resource_dir
 from app.server.security import SecurityMiddleware
 from app.server.settings import Settings, get_settings
@@ -62,7 +62,6 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_in_flight=settings.max_requests_in_flight,
         retry_after_s=settings.overload_retry_after_s,
         exempt_paths=NEVER_SHED,
-        cost=request_cost,
     )
     app.add_middleware(
         ResponseCache,

@@ -1,4 +1,4 @@
-"""The attacks of issue 23, each run again against the server as shipped: "held" when
+"""The attacks of issues 23 and 31, each run again against the server as shipped: "held" when
 the defence holds, "BROKEN" when the attack gets through.
 
 1. Overload through nginx (deploy/): 256 connections of distinct selects; shedding must
@@ -14,6 +14,11 @@ the defence holds, "BROKEN" when the attack gets through.
 7. X-Cache and bad command-line values.
 8. The Kubernetes manifests: preStop, PodDisruptionBudget, probe timeouts above the
    health latency measured in 2.
+9. Issue 31: ``--catalog-dir`` with one worker and two; full forms in disguise
+   (``detail=ful%6C``, a limit in the body) counted by their cost; numbers past any float
+   and a hot axis without a 500; share links that reproduce the API and a motor curve;
+   the 405's Allow; what the cache's timing reveals. (Its hostile catalog files are in 6,
+   its command-line values in 7.)
 
 Figures are taken on whatever else the machine is doing; each attack runs seconds.
 """
@@ -29,8 +34,9 @@ import subprocess
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from concurrent.futures import ProcessPoolExecutor
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -39,9 +45,10 @@ import yaml
 from bench import load
 from bench.hostile import cli_server
 from bench.report import Report
-from deploy.local import NGINX, nginx_in_front
+from deploy.local import NGINX, free_port, nginx_in_front, stop, wait_until_healthy
 
 ROOT = Path(__file__).resolve().parents[1]
+EXAMPLE = ROOT / "examples" / "my-family" / "my-family.toml"
 SELECT = "/api/v1/select?load_n=%s&speed_mm_s=50&length_mm=500&lead_mm=10"
 COSTLY = SELECT.replace("&lead_mm=10", "") + "&detail=full&limit=100"
 HEALTH = "/api/v1/health"
@@ -300,9 +307,18 @@ def _catalog_cases(tmp: Path) -> dict[str, Path]:
         "fifo.toml": lambda p: os.mkfifo(p),
         "large.toml": lambda p: p.write_bytes(b"# " + b"x" * 100 * 1024 * 1024),
         "my-family.toml": lambda p: p.write_text(
-            (ROOT / "examples" / "my-family" / "my-family.toml")
-            .read_text()
-            .replace("starts = { value = [4] }", "starts = { value = [4000000000] }")
+            EXAMPLE.read_text().replace("value = [4] }", "value = [4000000000] }")
+        ),
+        # issue 31: a table 500 deep, a 100 GB id width, a built-in family's id, OD 0.8 P 2
+        "table.toml": lambda p: p.write_text("[" + ".".join(["a"] * 500) + "]\nx = 1\n"),
+        "width.toml": lambda p: p.write_text(
+            EXAMPLE.read_text().replace("{d_mm:g}", "{d_mm:99999999999}")
+        ),
+        "family-b.toml": lambda p: p.write_text(
+            EXAMPLE.read_text().replace('id = "MY"', 'id = "B"')
+        ),
+        "root.toml": lambda p: p.write_text(
+            EXAMPLE.read_text().replace("mm = { value = 8.0 }", "mm = { value = 0.8 }")
         ),
     }
     dirs = {}
@@ -338,6 +354,7 @@ def catalog_files(report: Report, tmp: Path) -> None:
         env = {"LEADSCREW_CATALOG_DIRS": json.dumps([str(directory)])}
         status, err, seconds = _start(["--port", "1", "--workers", "2"], env)
         ok = status == 2 and name in err and "Traceback" not in err
+        ok = ok and (name != "family-b.toml" or "b-series.toml" in err)  # both files named
         held(report, f"6. {name}", f"exit {status} in {seconds:.1f} s", ok)
         report.info("   says", err.strip().splitlines()[-1][:90] if err.strip() else "")
 
@@ -352,7 +369,7 @@ def leaks_and_options(report: Report) -> None:
     told = [h["x-cache"] for h in answers if "x-cache" in h]
     held(report, "7. a repeated query looks like a new one", f"X-Cache {told or 'absent'}",
          not told and answers[0].keys() == answers[1].keys())  # fmt: skip
-    for args in (["--port", "80000"], ["--workers", "-3"]):
+    for args in (["--port", "80000"], ["--workers", "-3"], ["--workers", "1_0"], ["--port", " 80"]):
         status, err, _ = _start(args, {})
         held(report, f"7. {' '.join(args)}", f"exit {status}",
              status == 2 and "Traceback" not in err)  # fmt: skip
@@ -375,6 +392,159 @@ def kubernetes(report: Report, slowest_health_s: float) -> None:
              f"{timeout} s vs {slowest_health_s:.2f} s", timeout > slowest_health_s)  # fmt: skip
 
 
+# --- 9. issue 31 -------------------------------------------------------------------------------
+
+
+@contextmanager
+def _served(*args: str, env: dict[str, str] | None = None) -> Iterator[int]:
+    """``python -m app.cli ARGS`` on a free port until the block ends; the port."""
+    port = free_port()
+    cmd = [sys.executable, "-m", "app.cli", "--port", str(port), "--log-level", "warning", *args]
+    proc = subprocess.Popen(cmd, cwd=ROOT, env={**os.environ, **(env or {})})
+    try:
+        wait_until_healthy(port, proc, "app.cli")
+        yield port
+    finally:
+        stop(proc)
+
+
+def catalog_dir_option(report: Report) -> None:
+    report.section("9.1 --catalog-dir with one worker and with two")
+    for workers in ("1", "2"):
+        with _served("--catalog-dir", str(EXAMPLE.parent), "--workers", workers) as port:
+            status = get(port, "/api/v1/series/MY-Tr8-P2")[0]
+        held(report, f"9.1 family MY served, {workers} worker(s)", f"{status}", status == 200)
+
+
+def _together(port: int, requests: list[Callable[[http.client.HTTPConnection], None]]) -> list[int]:
+    """Each request on a connection of its own, sent at the same moment: the statuses."""
+    barrier = threading.Barrier(len(requests))
+    statuses: list[int] = []
+
+    def one(send: Callable[[http.client.HTTPConnection], None]) -> None:
+        conn = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+        barrier.wait()
+        send(conn)
+        response = conn.getresponse()
+        response.read()
+        statuses.append(response.status)
+        conn.close()
+
+    threads = [threading.Thread(target=one, args=(send,)) for send in requests]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    return statuses
+
+
+def _encoded(i: int) -> Callable[[http.client.HTTPConnection], None]:
+    query = f"load_n={100 + i}&speed_mm_s=50&length_mm=500&detail=ful%6C&limit=1%300"
+    return lambda conn: conn.request("GET", f"/api/v1/select?{query}")
+
+
+def _in_body(i: int) -> Callable[[http.client.HTTPConnection], None]:
+    body = json.dumps({"load_n": 200 + i, "speed_mm_s": 50, "length_mm": 500, "limit": 100})
+    headers = {"Content-Type": "application/json"}
+    return lambda conn: conn.request("POST", "/api/v1/select?detail=full", body, headers)
+
+
+def overload_cost(report: Report) -> None:
+    report.section("9.3 Full forms in disguise against 13 units: one at a time, the rest shed")
+    env = {"LEADSCREW_MAX_REQUESTS_IN_FLIGHT": "13", "LEADSCREW_RESPONSE_CACHE_BYTES": "0"}
+    with _served(env=env) as port:
+        for name, make in (("detail=ful%6C&limit=1%300", _encoded), ("limit in body", _in_body)):
+            statuses = _together(port, [make(i) for i in range(8)])
+            shed = statuses.count(503)
+            report.info(f"   {name}", ", ".join(map(str, sorted(statuses))))
+            held(report, f"9.3 {name} counted 13 units", f"{shed} of 8 shed", shed > 0)
+
+
+BIG_NUMBERS = (
+    "/?load=1e308&speed=50&length=500&force_unit=lbf",
+    "/?load=50&speed=50&length=1e308&length_unit=in",
+    "/?load=50&speed=50&length=500&accel=1e308&length_unit=in",
+    "/?load=1e308&speed=50&length=500&force_unit=kgf",
+    "/export.csv?load=1e308&speed=50&length=500&force_unit=lbf",
+    "/?load=0.001&speed=3000&length=70&ambient_c=250&motor=17hs19-2004s1",
+)
+
+
+def no_server_errors(report: Report) -> None:
+    report.section("9.4 Numbers past any float, a hot axis: no 500")
+    with _served() as port:
+        for path in BIG_NUMBERS:
+            status = get(port, path)[0]
+            held(report, f"9.4 {path[:46]}", f"{status}", status in (200, 422))
+
+
+def _passed(page: bytes) -> list[str]:
+    return re.findall(r'class="count-passed">(\d+)<', page.decode())
+
+
+def reproducing_links(report: Report) -> None:
+    report.section("9.5 The API's share_url and a motor curve's link reproduce the answer")
+    bodies = ({"nut_material": "bronze "}, {"nut_material": "ANY"}, {"family": ["B "]})
+    with _served() as port:
+        for body in bodies:
+            conn = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+            payload = {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, **body}
+            conn.request("POST", "/api/v1/select", json.dumps(payload),
+                         {"Content-Type": "application/json"})  # fmt: skip
+            answer = json.loads(conn.getresponse().read())
+            conn.close()
+            api = answer["summary"]["message"].split(" of ")[0].replace("No", "0")
+            page = _passed(get(port, answer["share_url"])[2])
+            held(report, f"9.5 {body}", f"API {api}, link {page}", page == [api])
+        curve = "/?load=1&speed=50&length=500&lead=4&motor_curve=0+1%0A749.9999992498+1"
+        typed = get(port, curve)[2]
+        link = re.search(rb'class="share-link" href="([^"]+)"', typed)
+        again = get(port, link.group(1).decode().replace("&amp;", "&"))[2] if link else b""
+        held(report, "9.5 curve to 749.9999992498 rpm", f"form {_passed(typed)}, "
+             f"link {_passed(again)}", bool(link) and _passed(typed) == _passed(again))  # fmt: skip
+        for text in ("0+1%2F2%0A3000+1%2F4", "0+0%2C5%0A3000+0%2C25"):
+            page = get(port, f"/?load=1&speed=50&length=500&motor_curve={text}")[2]
+            ok = b'id="e-motor_curve"></' in page
+            held(report, f"9.5 curve {text[:22]}", "read" if ok else "refused", ok)
+
+
+def small_ones(report: Report) -> None:
+    report.section("9.8 Allow on a 405; what the cache's timing tells")
+    with _served() as port:
+        for path in ("/api/v1/select", "/api/v1/pairs"):
+            conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+            conn.request("PUT", path)
+            response = conn.getresponse()
+            response.read()
+            conn.close()
+            allow = response.getheader("allow", "")
+            held(report, f"9.8 405 on {path}", allow, {"GET", "POST"} <= set(allow.split(", ")))
+        times: list[tuple[float, float]] = []
+        for i in range(20):
+            path = SELECT % (300 + i)
+            started = time.monotonic()
+            get(port, path)
+            middle = time.monotonic()
+            get(port, path)
+            times.append((middle - started, time.monotonic() - middle))
+    miss = statistics.median(t for t, _ in times) * 1e3
+    hit = statistics.median(t for _, t in times) * 1e3
+    told = sum(1 for m, h in times if h < m)
+    report.info("   miss, hit median", f"{miss:.1f} ms, {hit:.1f} ms; hit faster in {told} of 20")
+    readme = (ROOT / "README.md").read_text()
+    honest = "its speed does" in readme and "LEADSCREW_RESPONSE_CACHE_BYTES=0" in readme
+    held(report, "9.8 README says what the cache's timing reveals", f"{honest}", honest)
+
+
+def issue_31(report: Report) -> None:
+    """The attacks of issue 31 (its items 1, 3, 4, 5, 6 (in 6 above) and 8)."""
+    catalog_dir_option(report)
+    overload_cost(report)
+    no_server_errors(report)
+    reproducing_links(report)
+    small_ones(report)
+
+
 def run(report: Report, *, seconds: float, tmp: Path) -> None:
     """Every attack, each for a few seconds."""
     overload_through_nginx(report, seconds, tmp / "nginx")
@@ -385,3 +555,4 @@ def run(report: Report, *, seconds: float, tmp: Path) -> None:
     catalog_files(report, tmp)
     leaks_and_options(report)
     kubernetes(report, slowest)
+    issue_31(report)

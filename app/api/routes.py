@@ -41,6 +41,7 @@ from app.report.service import (
 from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.errors import ApiRoute, AppError
+from app.server.overload import charge, full_form_units
 from app.server.responses import ModelJSON
 
 ERRORS: dict[int | str, dict[str, Any]] = {
@@ -108,12 +109,16 @@ DetailQuery = Annotated[
 ]
 
 
-async def _selection(inputs: ApplicationIn, catalog: CatalogDep, detail: str) -> Response:
+async def _selection(
+    request: Request, inputs: ApplicationIn, catalog: CatalogDep, detail: str
+) -> Response:
     """The select response in the form asked for; the full form (up to 50 ms for a hundred
-    candidates) on a compute thread, the compact one (a few milliseconds) on the event
-    loop, where handing it to a thread and back would cost about as much as it frees
-    (wrk -c32 on distinct compact selects: half the throughput)."""
+    candidates) counted by its validated limit and computed on a compute thread, the
+    compact one (a few milliseconds) on the event loop, where handing it to a thread and
+    back would cost about as much as it frees (wrk -c32 on distinct compact selects: half
+    the throughput)."""
     if detail == "full":
+        charge(request.scope, full_form_units(inputs.axis().limit))
         return await computed(_full_selection, inputs, catalog)
     return ModelJSON(run_selection_summary(inputs, catalog))
 
@@ -124,10 +129,10 @@ def _full_selection(inputs: ApplicationIn, catalog: CatalogDep) -> Response:
 
 @router.post("/select", response_model=SelectSummaryOut | SelectOut)
 async def select_post(
-    inputs: ApplicationIn, catalog: CatalogDep, detail: DetailQuery = "summary"
+    request: Request, inputs: ApplicationIn, catalog: CatalogDep, detail: DetailQuery = "summary"
 ) -> Response:
     """Rank every catalog candidate for the application in the JSON body."""
-    return await _selection(inputs, catalog, detail)
+    return await _selection(request, inputs, catalog, detail)
 
 
 @router.get(
@@ -139,7 +144,7 @@ async def select_get(request: Request, catalog: CatalogDep) -> Response:
     """The same as POST, with the fields (and ``detail``) as query parameters (a
     shareable link)."""
     query = parse_query(SelectQuery, request.query_params)
-    return await _selection(query.application(), catalog, query.detail)
+    return await _selection(request, query.application(), catalog, query.detail)
 
 
 #: The compare's own query parameter, besides the select's.

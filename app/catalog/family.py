@@ -5,6 +5,7 @@ its length and oil rules are data in ``catalog/common.toml``, read by the same c
 any other family (catalog/README.md, "Family files").
 """
 
+import re
 import string
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -43,6 +44,9 @@ VARIANT_FIELDS = frozenset(
 TRAVERSE_RULE = "traverse_speed"
 TRAVERSE_FIELD = "bands_lead_mm_speed_mm_s"
 RULES = {TRAVERSE_RULE: frozenset({TRAVERSE_FIELD})}
+#: A candidate's id has at most this many characters (the built-in ones up to 22): ids
+#: go in links, tables and file names.
+MAX_ID_CHARS = 60
 #: Placeholders an id pattern may use; anything else (attribute walks included) is refused.
 ID_FIELDS = frozenset(
     {
@@ -94,7 +98,7 @@ class Family:
         lead_mm = from_si(lead_m, "mm")
         pitch_mm = lead_mm if pitch_m is None else from_si(pitch_m, "mm")
         starts = round(lead_mm / pitch_mm)
-        return self.id_pattern.format(
+        made = self.id_pattern.format(
             series=series,
             lead_mm=lead_mm,
             d_mm=from_si(d_m, "mm"),
@@ -103,16 +107,31 @@ class Family:
             multi_start=f"(P{pitch_mm:g})" if starts > 1 else "",
             variant=variant,
         )
+        if len(made) > MAX_ID_CHARS:
+            raise CatalogError(
+                self.file, series, "id_pattern", f"id longer than {MAX_ID_CHARS}: {made[:40]}..."
+            )
+        return made
 
 
 def _id_pattern(entry: Entry) -> str:
-    """The id pattern, checked once here so that no candidate's id can fail later."""
+    """The id pattern, checked once here so that no candidate's id can fail later; a
+    field width or precision of three digits or more is refused before any id is made
+    (``{lead_mm:99999999999}`` would ask for 100 GB)."""
     pattern = entry.plain_text("id_pattern")
     try:
-        names = {name for _, name, _, _ in string.Formatter().parse(pattern) if name is not None}
-        unknown = names - ID_FIELDS
-        if unknown:
-            raise entry.fail("id_pattern", f"unknown placeholder {sorted(unknown)[0]!r}")
+        parts = [(name, spec) for _, name, spec, _ in string.Formatter().parse(pattern)]
+    except ValueError as exc:
+        raise entry.fail("id_pattern", f"not a usable format string: {exc}") from exc
+    names = {name for name, _ in parts if name is not None}
+    unknown = names - ID_FIELDS
+    if unknown:
+        raise entry.fail("id_pattern", f"unknown placeholder {sorted(unknown)[0]!r}")
+    for name, spec in parts:
+        if spec and ("{" in spec or re.search(r"[0-9]{3}", spec)):
+            why = "a width or precision of at most 99, without placeholders"
+            raise entry.fail("id_pattern", f"{{{name}:{spec[:20]}}}: {why}")
+    try:
         sample = {"pitch_mm": 1.0, "starts": 1, "multi_start": ""}
         pattern.format(series="S", lead_mm=1.0, d_mm=1.0, variant=IdVariant("v", "-V"), **sample)
     except (ValueError, IndexError) as exc:

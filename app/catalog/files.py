@@ -86,17 +86,27 @@ def _read_regular(path: Path) -> bytes:
     return raw
 
 
-def depth(data: object) -> int:
-    """How deeply tables and arrays nest in ``data`` (a plain value: 0).
+def depth(data: object, most: int = MAX_DEPTH) -> int:
+    """How deeply tables and arrays nest in ``data`` (a plain value: 0), counted without
+    recursion and only to one past ``most``: tomllib builds a table 500 levels deep from
+    a kilobyte of dotted keys, deeper than Python's own stack would follow.
 
-    >>> depth({"a": [1, {"b": 2}]}), depth(3)
-    (3, 0)
+    >>> depth({"a": [1, {"b": 2}]}), depth(3), depth([[[[1]]]], most=2)
+    (3, 0, 3)
     """
-    if isinstance(data, dict):
-        return 1 + max(map(depth, data.values()), default=0)
-    if isinstance(data, list):
-        return 1 + max(map(depth, data), default=0)
-    return 0
+    deepest = 0
+    stack: list[tuple[object, int]] = [(data, 0)]
+    while stack:
+        value, level = stack.pop()
+        if isinstance(value, dict):
+            value = list(value.values())
+        if not isinstance(value, list):
+            continue
+        deepest = max(deepest, level + 1)
+        if deepest > most:
+            return deepest
+        stack.extend((item, level + 1) for item in value)
+    return deepest
 
 
 def read_file(path: Path, digest: Any) -> CatalogFile:

@@ -110,10 +110,18 @@ def _family_series(
 
 
 def _unique(series: Iterable[Series]) -> dict[str, Series]:
-    """Series ids and candidate ids are unique across every directory."""
+    """Family ids (each declared by one file), series ids and candidate ids are unique
+    across every directory: a user's family with a built-in family's id would otherwise
+    join it silently, in the family filter and on the catalog page."""
     by_series: dict[str, Series] = {}
     owner: dict[str, Series] = {}
+    family_file: dict[str, str] = {}
     for s in series:
+        declared = family_file.setdefault(s.family, s.file)
+        if declared != s.file:
+            raise CatalogError(
+                s.file, "family", "id", f"family id '{s.family}' is also declared in {declared}"
+            )
         if s.id in by_series:
             raise CatalogError(s.file, s.id, "id", f"duplicate id (also in {by_series[s.id].file})")
         by_series[s.id] = s

@@ -164,6 +164,9 @@ def _diameters(entry: Entry) -> tuple[Sourced, Sourced]:
         root = Sourced(ratio * od_m, "m", Provenance("assumed", source))
     if root.value >= od_m:
         raise entry.fail(rd_name, "root diameter must be below the outer diameter")
+    if root.value <= 0:
+        root_mm = from_si(root.value, "mm")
+        raise entry.fail(rd_name, f"root diameter must be above 0, got {root_mm:.4g} mm")
     return Sourced(od_m, "m", entry.prov("outer_diameter_mm")), root
 
 
@@ -194,6 +197,13 @@ def _listed_leads_mm(entry: Entry) -> list[float]:
     if len(set(listed)) != len(listed):
         repeated = next(x for x in listed if listed.count(x) > 1)
         raise entry.fail("leads_mm", f"lead {repeated:g} mm is listed twice")
+    if entry.has("pitch_mm"):
+        pitch = entry.number("pitch_mm")
+        for lead in listed:
+            starts = round(lead / pitch)
+            if starts < 1 or not math.isclose(lead, starts * pitch):
+                why = f"lead {lead:g} mm is not a whole number of starts of pitch {pitch:g} mm"
+                raise entry.fail("leads_mm", why)
     return listed
 
 
@@ -262,6 +272,9 @@ def _geometry_fields(entry: Entry, family: Family, material: Material) -> dict[s
     od, rd = _diameters(entry)
     d_p = geometry.pitch_diameter(od.value, rd.value)
     thread = _thread_fields(entry, od.value, family)
+    d2 = thread.get("flank_pitch_diameter")
+    if d2 is not None and not rd.value < d2.value < od.value:
+        raise entry.fail("pitch_mm", "the pitch diameter d2 must lie between root and outer")
     inertia = _inertia(entry, thread.get("flank_pitch_diameter"), material)
     low, high = entry.range("backlash_mm")
     load = _design_load(entry, d_p, geometry.thread_depth(od.value, rd.value))

@@ -13,6 +13,7 @@ decimals: a spreadsheet or script writes those, and a comma in a query string is
 
 import math
 import re
+import sys
 from collections.abc import Mapping
 from decimal import Decimal, localcontext
 from fractions import Fraction
@@ -23,7 +24,13 @@ from urllib.parse import urlencode
 from pydantic import Field, TypeAdapter, ValidationError
 
 from app.contract.fields import BY_API, BY_PAGE, FIELDS, InputField
-from app.contract.inputs import NUMBER_TEXT, ApplicationIn, curve_type
+from app.contract.inputs import (
+    ASCII_NUMBER,
+    NUMBER_TEXT,
+    ApplicationIn,
+    curve_type,
+    exact_text,
+)
 from app.contract.units import (
     DEFAULT_UNITS,
     FORCE_UNITS,
@@ -78,6 +85,8 @@ LINK_DIGITS = 24
 FLOAT_DIGITS = 800
 #: decimal exponents read exactly: wider than any float times a unit's factor.
 EXPONENT_REACH = 400
+#: the largest finite float, exactly
+MAX_FLOAT = Fraction(sys.float_info.max)
 #: a typed number read as the API reads a query parameter: ASCII decimal, finite.
 PAGE_NUMBER: TypeAdapter[float] = TypeAdapter(
     Annotated[float, NUMBER_TEXT, Field(allow_inf_nan=False)]
@@ -241,7 +250,9 @@ def convert_text(text: str, quantity: Quantity, source: str, target: str) -> str
     key = unit_key(quantity)
     api = to_api(number, quantity, {**DEFAULT_UNITS, key: source})
     digits = min(max(sig_figures(text) + 1, 4), 6)
-    return f"{from_api(api, quantity, {**DEFAULT_UNITS, key: target}):.{digits}g}"
+    shown = from_api(api, quantity, {**DEFAULT_UNITS, key: target})
+    # past any float in the new unit (1e308 N in lbf): kept as typed, for its bound's message
+    return f"{shown:.{digits}g}" if math.isfinite(shown) else text
 
 
 def read_typed(record: str, quantity: Quantity) -> tuple[str, str] | None:
@@ -427,7 +438,10 @@ def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
         raise ValueError(error)
     if isinstance(number, float):
         return number
-    return float(number * _factor(field, units) + _offset(field, units))
+    exact = number * _factor(field, units) + _offset(field, units)
+    if abs(exact) > MAX_FLOAT:  # 1e308 lbf: past every input's bounds, which the model names
+        return sys.float_info.max if exact > 0 else -sys.float_info.max
+    return float(exact)
 
 
 def _trimmed(text: str) -> str:
@@ -482,13 +496,53 @@ def curve_to_api(text: str, units: Mapping[str, str]) -> Any:
     [[0.0, 0.1129848290276167], [3000.0, 0.05649241451380835]]
     """
     factor = _torque_factor(units)
-    if factor == 1:
-        return text
     try:
-        points = CURVE.validate_python(text)
+        exact = _typed_points(text, CURVE.validate_python(text))
     except ValidationError:
-        return text
-    return [[rpm, float(Fraction(repr(torque)) * factor)] for rpm, torque in points]
+        read = _hand_points(text)
+        if read is None:
+            return text
+        exact = read
+    return [[float(rpm), float(Fraction(torque) * factor)] for rpm, torque in exact]
+
+
+def _typed_points(
+    text: str, points: list[tuple[float, float]]
+) -> list[tuple[Fraction | float, Fraction | float]]:
+    """The model's ``points`` of ``text`` with each torque the exact value of its decimal
+    as typed, not the float nearest it: a link's torque in oz in is written so that the
+    exact product with the unit's factor rounds to the API's torque (``decimal_text``).
+
+    >>> _typed_points("0:0.1,1:2", [(0.0, 0.1), (1.0, 2.0)])
+    [(0.0, Fraction(1, 10)), (1.0, Fraction(2, 1))]
+    """
+    torques = ASCII_NUMBER.findall(text)[1::2]
+    if len(torques) != len(points) or any(
+        float(typed) != torque for typed, (_, torque) in zip(torques, points, strict=True)
+    ):
+        return [(rpm, Fraction(repr(torque))) for rpm, torque in points]
+    return [(rpm, Fraction(typed)) for typed, (rpm, _) in zip(torques, points, strict=True)]
+
+
+def _hand_points(text: str) -> list[tuple[Fraction | float, Fraction | float]] | None:
+    """A curve written by hand, a line (or ';') per point 'rpm torque', each number read
+    as the page reads one (``read_exact``: '0,5', '1/2', '1 1/4'); None if a line is not.
+
+    >>> _hand_points("0 1/2; 3000 0,25")
+    [(Fraction(0, 1), Fraction(1, 2)), (Fraction(3000, 1), Fraction(1, 4))]
+    >>> _hand_points("0 1 1/4"), _hand_points("0 x")
+    ([(Fraction(0, 1), Fraction(5, 4))], None)
+    """
+    points = []
+    for line in re.split(r"[\n;]", text):
+        if not line.strip():
+            continue
+        rpm_text, *torque_text = re.split(r"\s+", line.strip(), maxsplit=1)
+        rpm, torque = read_exact(rpm_text)[0], read_exact("".join(torque_text))[0]
+        if rpm is None or torque is None:
+            return None
+        points.append((rpm, torque))
+    return points
 
 
 def curve_text(value: Any, units: Mapping[str, str], digits: int | None = None) -> str:
@@ -503,7 +557,7 @@ def curve_text(value: Any, units: Mapping[str, str], digits: int | None = None) 
     points = CURVE.validate_python(value)
     if digits is not None:
         return ",".join(f"{rpm:g}:{sig(t / float(factor), digits)}" for rpm, t in points)
-    return ",".join(f"{rpm:.12g}:{decimal_text(torque, factor)}" for rpm, torque in points)
+    return ",".join(f"{exact_text(rpm)}:{decimal_text(torque, factor)}" for rpm, torque in points)
 
 
 def convert_curve(text: str, source: Mapping[str, str], target: Mapping[str, str]) -> str:
@@ -527,7 +581,7 @@ def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:
 
 
 def _exact_curve(inputs: ApplicationIn, field: InputField) -> Any:
-    """A curve's points as floats (its dumped text keeps 12 figures), else None."""
+    """A curve's points as floats, else None."""
     return getattr(inputs, field.api) if field.kind == "curve" else None
 
 

@@ -120,10 +120,27 @@ SUPPORT = next(field for field in FIELDS if field.core == "support_unit")
 
 def _split_text(value: Any) -> Any:
     """A list input given as text ('TR-C45, B' from the page or a share link) as a list;
-    a repeated query parameter or a JSON list passes unchanged."""
+    a repeated query parameter or a JSON list as its items, each without the spaces
+    around it (as the page reads them: ``["B "]`` is family B)."""
     if isinstance(value, str):
         return [item.strip() for item in value.split(",") if item.strip()]
+    if isinstance(value, list):
+        return [item.strip() if isinstance(item, str) else item for item in value]
     return value
+
+
+def _one_text(none_word: str) -> BeforeValidator:
+    """A text input as the page reads it: without the spaces around it, and the field's
+    word for none in any case ('ANY' is 'any'), so that the API and a share link of its
+    answer select the same."""
+
+    def clean(value: Any) -> Any:
+        if not isinstance(value, str):
+            return value
+        text = value.strip()
+        return none_word if none_word and text.casefold() == none_word else text
+
+    return BeforeValidator(clean)
 
 
 def _each_text(value: list[str]) -> list[str]:
@@ -145,7 +162,8 @@ def _list_out(
 def text_type(field: InputField) -> Any:
     """Text, or a list of texts, matching ``TEXT_PATTERN``; a list also as comma text."""
     if field.kind == "text":
-        return Annotated[str, Field(pattern=TEXT_PATTERN, description=describe(field))]
+        text = Field(pattern=TEXT_PATTERN, description=describe(field))
+        return Annotated[str, text, _one_text(field.none_word)]
     schema = {"type": "array", "items": {"type": "string"}, "minItems": 1}
     schema |= {"maxItems": MAX_ITEMS, "description": describe(field)}
     return Annotated[
@@ -247,7 +265,16 @@ def _curve_out(
     summary, CSV) it is the compact ``rpm:torque,rpm:torque`` text the page reads back."""
     if info.mode_is_json():
         return handler(value)
-    return ",".join(f"{rpm:.12g}:{torque:.12g}" for rpm, torque in value)
+    return ",".join(f"{exact_text(rpm)}:{exact_text(torque)}" for rpm, torque in value)
+
+
+def exact_text(value: float) -> str:
+    """The shortest decimal that reads back to ``value`` exactly.
+
+    >>> exact_text(749.9999992498), exact_text(3000.0), exact_text(1e-7)
+    ('749.9999992498', '3000', '1e-07')
+    """
+    return repr(float(value)).removesuffix(".0")
 
 
 def curve_type(field: InputField) -> Any:

@@ -3,9 +3,10 @@
 One worker computes one response at a time; when more requests arrive than it can finish
 promptly, holding them all makes every one of them slow (at 256 connections, seconds
 each, and clients time out). Past ``max_in_flight`` units of work in progress (a request
-costs what ``request_cost`` says: a full form of a hundred candidates costs as much as
-thirteen compact selects) this answers 503 with Retry-After straight away, so the
-requests that are taken stay fast and a balancer or client can go elsewhere or come back.
+costs one unit, and a full form of a hundred candidates as much as thirteen compact
+selects, counted once its input is validated: ``charge``) this answers 503 with
+Retry-After straight away, so the requests that are taken stay fast and a balancer or
+client can go elsewhere or come back.
 The health check is never shed: a worker that is busy is not down.
 """
 
@@ -28,53 +29,51 @@ BUSY = json.dumps(
 ).encode()
 
 
-#: Paths whose answer is a selection's full form, and the path that gives it on request.
-FULL_FORM_PATHS = frozenset({"/export.csv", "/export.json"})
-SELECT_PATH = "/api/v1/select"
 #: Candidates of a full form that cost as much as a compact select (about 4 ms).
 FULL_FORM_CANDIDATES_PER_UNIT = 8
-LIMIT_DEFAULT, LIMIT_MOST = 10, 100
+LIMIT_MOST = 100
+#: the scope key of the request's ``take`` (``charge``)
+WORK_KEY = "app.overload.take"
 
 
-def request_cost(scope: Scope) -> int:
-    """Units of work a request will take: 1 for a page or a compact select; a full form
-    (``detail=full``, the exports) builds every number of every returned candidate, so
-    1 + limit / 8 (``limit=100``: 13 units, about 50 ms).
+class Shed(Exception):
+    """Raised by ``charge`` when a request's work would pass the limit: answered 503."""
 
-    >>> scope = {"path": "/api/v1/select", "query_string": b"load_n=1&detail=full&limit=100"}
-    >>> request_cost(scope), request_cost({**scope, "query_string": b"limit=100"})
-    (13, 1)
+
+def full_form_units(limit: int) -> int:
+    """Units of work of a full form (``detail=full``, the exports) of ``limit``
+    candidates: it builds every number of each, so 1 + limit / 8 (100: 13 units, about
+    50 ms); a page or a compact select is 1.
+
+    >>> full_form_units(100), full_form_units(10), full_form_units(1)
+    (13, 2, 1)
     """
-    query: bytes = scope.get("query_string", b"")
-    pairs = dict(p.partition(b"=")[::2] for p in query.split(b"&"))
-    full = scope["path"] in FULL_FORM_PATHS or (
-        scope["path"] == SELECT_PATH and pairs.get(b"detail") == b"full"
-    )
-    if not full:
-        return 1
-    text = pairs.get(b"limit", b"")
-    limit = int(text) if text.isdigit() and len(text) < 4 else LIMIT_DEFAULT
     return 1 + min(max(limit, 1), LIMIT_MOST) // FULL_FORM_CANDIDATES_PER_UNIT
 
 
+def charge(scope: Scope, units: int) -> None:
+    """Count the request of ``scope`` as ``units`` of work in all, read from its validated
+    input (the raw query can hide it: ``detail=ful%6C``, or a limit in the body). It was
+    admitted as one; Shed (a 503) if the rest would pass the limit while other work is in
+    progress. Nothing without the middleware (limit off, or the health check)."""
+    take = scope.get(WORK_KEY)
+    if take is not None:
+        take(units)
+
+
 class OverloadMiddleware:
-    """Counts the work of HTTP requests in progress (``cost``: units per request); sheds a
-    request that would take it past ``max_in_flight`` with 503. A request costing more
-    than the whole allowance is still taken when nothing else is in progress."""
+    """Counts the work of HTTP requests in progress: one unit each as it arrives, more
+    when its route knows its input asks for more (``charge``); sheds a request that would
+    take it past ``max_in_flight`` with 503. A request costing more than the whole
+    allowance is still taken when nothing else is in progress."""
 
     def __init__(
-        self,
-        app: ASGIApp,
-        max_in_flight: int,
-        retry_after_s: int,
-        exempt_paths: frozenset[str],
-        cost: Callable[[Scope], int] = lambda scope: 1,
+        self, app: ASGIApp, max_in_flight: int, retry_after_s: int, exempt_paths: frozenset[str]
     ) -> None:
         self.app = app
         self.max_in_flight = max_in_flight
         self.retry_after_s = retry_after_s
         self.exempt_paths = exempt_paths
-        self.cost = cost
         self.in_flight = 0
         self.shed = 0
 
@@ -82,20 +81,44 @@ class OverloadMiddleware:
         if scope["type"] != "http" or self.max_in_flight <= 0 or scope["path"] in self.exempt_paths:
             await self.app(scope, receive, send)
             return
-        cost = self.cost(scope)
-        if self.in_flight and self.in_flight + cost > self.max_in_flight:
+        if self.in_flight + 1 > self.max_in_flight:
             self.shed += 1
             await self._busy(send)
             return
-        self.in_flight += cost
+        self.in_flight += 1
+        taken = 1
+        started = False
+
+        def take(units: int) -> None:
+            nonlocal taken
+            more = units - taken
+            others = self.in_flight - taken
+            if more <= 0:
+                return
+            if others and self.in_flight + more > self.max_in_flight:
+                raise Shed
+            self.in_flight += more
+            taken += more
+
+        async def watched_send(message: Message) -> None:
+            nonlocal started
+            started = True
+            await send(message)
+
+        scope[WORK_KEY] = take
         try:
             # let every request that already arrived reach the count above before this one
             # computes: a route that never awaits would otherwise finish before the next
             # request is counted, and the queue would build up out of sight
             await anyio.lowlevel.checkpoint()
-            await self.app(scope, receive, send)
+            await self.app(scope, receive, watched_send)
+        except Shed:
+            self.shed += 1
+            if started:
+                raise
+            await self._busy(send)
         finally:
-            self.in_flight -= cost
+            self.in_flight -= taken
 
     async def _busy(self, send: Send) -> None:
         await send_busy(send, self.retry_after_s)

@@ -6,6 +6,8 @@ import re
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
+from app.server.failures import FailureLog
+
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
 Receive = Callable[[], Awaitable[Message]]
@@ -58,6 +60,7 @@ class SecurityMiddleware:
         self.max_body = max_body_bytes
         self.max_query = max_query_chars
         self.max_params = max_query_params
+        self.failures = FailureLog()
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http":
@@ -116,15 +119,25 @@ class SecurityMiddleware:
         except BodyTooLarge:
             if not started:
                 await self._refuse(send, 413, "request body too large")
-        except Exception:
+        except Exception as exc:
             # Starlette's own 500 page is sent from outside every middleware, so without
-            # this it would go out with no security headers. Send ours, then re-raise so
-            # the server still logs the traceback.
-            if not started:
-                await self._refuse(send, 500, "internal server error", json_body=api)
-            raise
+            # this it would go out with no security headers. Ours names the request id of
+            # the log's line (app.server.failures) and closes the connection, saying so.
+            if started:
+                raise  # half a response: the server logs it and drops the connection
+            request_id = self.failures.record(scope, exc)
+            reason = f"internal server error (request {request_id})"
+            closing = [(b"x-request-id", request_id.encode()), (b"connection", b"close")]
+            await self._refuse(send, 500, reason, json_body=api, extra=closing)
 
-    async def _refuse(self, send: Send, status: int, reason: str, json_body: bool = True) -> None:
+    async def _refuse(
+        self,
+        send: Send,
+        status: int,
+        reason: str,
+        json_body: bool = True,
+        extra: list[tuple[bytes, bytes]] | None = None,
+    ) -> None:
         if json_body:
             body = json.dumps(
                 {"error": reason, "detail": [{"field": "request", "message": reason}]}
@@ -141,6 +154,7 @@ class SecurityMiddleware:
                     (b"content-type", content_type),
                     (b"content-length", str(len(body)).encode()),
                     *SECURITY_HEADERS,
+                    *(extra or []),
                 ],
             }
         )

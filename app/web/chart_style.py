@@ -21,10 +21,15 @@ def log_ticks(values: Iterable[float]) -> tuple[list[float], list[str]]:
     """Tick positions and labels for a log axis over ``values``: every decade and the 2 and
     5 between, so a reader never has to count unlabelled gridlines.
 
+    An infinite value (a share of a limit that is zero: a polymer nut past its
+    temperature) has no place on a log axis and is left out, as is zero.
+
     >>> log_ticks([30.0, 700.0])
     ([20.0, 50.0, 100.0, 200.0, 500.0, 1000.0], ['20', '50', '100', '200', '500', '1000'])
+    >>> log_ticks([math.inf, 100.0])
+    ([100.0], ['100'])
     """
-    positive = [v for v in values if v > 0]
+    positive = [v for v in values if 0 < v < math.inf]
     if not positive:
         return [], []
     low, high = min(positive), max(positive)

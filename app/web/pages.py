@@ -41,6 +41,7 @@ from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
 from app.server.headers import is_htmx_fragment
+from app.server.overload import charge, full_form_units
 from app.server.responses import ModelJSON
 from app.web.advice import check_label, no_pass_advice
 from app.web.catalog_view import KEY_FIELDS, family_sections
@@ -282,11 +283,18 @@ def _compare_page(request: Request, catalog: Catalog) -> Response:
 @router.get("/export.csv")
 async def export_csv(request: Request, catalog: CatalogDep) -> Response:
     """The result table as CSV in the link's display units."""
-    return await computed(_export_csv, request, catalog)
+    inputs, units = _export_inputs(request, catalog)
+    return await computed(_export_csv, inputs, units, catalog)
 
 
-def _export_csv(request: Request, catalog: Catalog) -> Response:
+def _export_inputs(request: Request, catalog: Catalog) -> tuple[ApplicationIn, dict[str, str]]:
+    """An export link's inputs, its full form counted by their limit (app.server.overload)."""
     inputs, units = link_inputs(request.query_params, catalog)
+    charge(request.scope, full_form_units(inputs.axis().limit))
+    return inputs, units
+
+
+def _export_csv(inputs: ApplicationIn, units: dict[str, str], catalog: Catalog) -> Response:
     body = results_csv(run_selection(inputs, catalog, units, view="csv"), units)
     return Response(body, media_type="text/csv; charset=utf-8", headers=_attachment("csv"))
 
@@ -294,11 +302,11 @@ def _export_csv(request: Request, catalog: Catalog) -> Response:
 @router.get("/export.json")
 async def export_json(request: Request, catalog: CatalogDep) -> Response:
     """The API's select response (API units) for the link's inputs."""
-    return await computed(_export_json, request, catalog)
+    inputs, _ = _export_inputs(request, catalog)
+    return await computed(_export_json, inputs, catalog)
 
 
-def _export_json(request: Request, catalog: Catalog) -> Response:
-    inputs, _ = link_inputs(request.query_params, catalog)
+def _export_json(inputs: ApplicationIn, catalog: Catalog) -> Response:
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
 
 

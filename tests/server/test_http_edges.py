@@ -54,6 +54,23 @@ def test_head_keeps_the_error_of_a_route_without_get(client: TestClient) -> None
     assert response.headers["allow"] == "POST"
 
 
+@pytest.mark.parametrize(
+    ("path", "allow"),
+    [
+        ("/api/v1/select", "GET, HEAD, POST"),
+        ("/api/v1/pairs", "GET, HEAD, POST"),
+        ("/api/v1/evaluate", "POST"),
+        ("/api/v1/health", "GET, HEAD"),
+    ],
+)
+def test_a_405_allows_every_method_of_the_path(client: TestClient, path: str, allow: str) -> None:
+    """RFC 9110, 15.5.6: a 405 lists the methods the resource supports; GET and POST on
+    /api/v1/select are two routes, and a PUT must name both."""
+    response = client.put(path)
+    assert response.status_code == 405
+    assert response.headers["allow"] == allow
+
+
 def test_head_of_a_refused_query_has_no_body(client: TestClient) -> None:
     response = client.head("/?" + "&".join(["a=1"] * 5000))
     assert response.status_code == 414 and response.content == b""

@@ -7,7 +7,7 @@ started together in one event loop, never raced against a clock.
 import asyncio
 import contextlib
 import threading
-from collections.abc import Awaitable
+from collections.abc import Awaitable, Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
@@ -15,7 +15,7 @@ import pytest
 
 from app.api import routes
 from app.main import create_app
-from app.server.overload import OverloadMiddleware, request_cost
+from app.server.overload import OverloadMiddleware
 from app.server.settings import Settings
 from tests.server.asgi import asgi_get, scope
 
@@ -144,45 +144,80 @@ def test_the_limit_can_be_turned_off() -> None:
 FULL = SELECT + b"&detail=full&limit=100"
 
 
-@pytest.mark.parametrize(
-    ("path", "query", "cost"),
-    [
-        ("/api/v1/select", SELECT, 1),
-        ("/api/v1/select", SELECT + b"&limit=100", 1),  # the compact form stays cheap
-        ("/api/v1/select", SELECT + b"&detail=full", 2),  # 10 candidates
-        ("/api/v1/select", FULL, 13),
-        ("/api/v1/select", SELECT + b"&detail=full&limit=99999999", 2),  # refused: 422
-        ("/api/v1/select", SELECT + b"&detail=full&limit=x", 2),
-        ("/export.json", b"load=100&speed=50&length=500&limit=100", 13),
-        ("/export.csv", b"load=100&speed=50&length=500", 2),
-        ("/", b"load=100&speed=50&length=500&limit=100", 1),
-    ],
-    ids=[
-        "compact",
-        "compact-100",
-        "full",
-        "full-100",
-        "full-out-of-bounds",
-        "full-bad-limit",
-        "export-json-100",
-        "export-csv",
-        "page",
-    ],
-)
-def test_a_request_costs_by_the_work_it_asks_for(path: str, query: bytes, cost: int) -> None:
-    assert request_cost(scope(path, query)) == cost
+async def asgi_post(app: Any, path: str, query: bytes, body: bytes) -> tuple[int, dict[str, str]]:
+    """One POST of a JSON ``body`` into an ASGI app: (status, headers)."""
+    sent: list[dict[str, Any]] = []
+    request = {**scope(path, query), "method": "POST"}
+    request["headers"] = [
+        (b"host", b"testserver"),
+        (b"content-type", b"application/json"),
+        (b"content-length", str(len(body)).encode()),
+    ]
+
+    async def receive() -> dict[str, Any]:
+        return {"type": "http.request", "body": body, "more_body": False}
+
+    async def send(message: dict[str, Any]) -> None:
+        sent.append(message)
+
+    await app(request, receive, send)
+    start = sent[0]
+    return start["status"], {k.decode(): v.decode() for k, v in start["headers"]}
 
 
-async def _full_burst() -> list[tuple[int, dict[str, str]]]:
+BODY = b'{"load_n": %d, "speed_mm_s": 50, "length_mm": 500, "limit": 100}'
+#: four requests each, every one a full form of a hundred candidates however it is asked
+FULL_FORMS = {
+    "query": lambda app, i: asgi_get(app, "/api/v1/select", FULL.replace(b"100", b"%d" % i, 1)),
+    # percent-encoded: 'detail=full&limit=100' once decoded
+    "encoded": lambda app, i: asgi_get(
+        app,
+        "/api/v1/select",
+        b"load_n=%d&speed_mm_s=50&length_mm=500&detail=ful%%6C&limit=1%%300" % i,
+    ),
+    "limit-in-body": lambda app, i: asgi_post(app, "/api/v1/select", b"detail=full", BODY % i),
+    "export-json": lambda app, i: asgi_get(
+        app, "/export.json", b"load=%d&speed=50&length=500&limit=100" % i
+    ),
+    "export-csv": lambda app, i: asgi_get(
+        app, "/export.csv", b"load=%d&speed=50&length=500&limit=1%%300" % i
+    ),
+}
+#: the same four as compact selects, or asking a full form of the default 10 candidates
+CHEAP = {
+    "compact": lambda app, i: asgi_get(app, "/api/v1/select", SELECT + b"&limit=100"),
+    "full-10": lambda app, i: asgi_get(app, "/api/v1/select", SELECT + b"&detail=full"),
+}
+
+
+async def _four(ask: Callable[[Any, int], Awaitable[tuple[int, dict[str, str]]]]) -> list[int]:
     app = create_app(Settings(max_requests_in_flight=32, response_cache_bytes=0))
-    return await asyncio.gather(*(asgi_get(app, "/api/v1/select", FULL) for _ in range(4)))
+    answers = await asyncio.gather(*(ask(app, 101 + i) for i in range(4)))
+    return sorted(status for status, _ in answers)
 
 
-def test_costly_requests_are_shed_by_their_cost() -> None:
-    """Four full forms of a hundred candidates (13 units each) against 32 units: two are
-    taken, two shed, where four cheap requests would all have been taken."""
-    answers = _run(_full_burst())
-    assert sorted(status for status, _ in answers) == [200, 200, 503, 503]
+@pytest.mark.parametrize("ask", FULL_FORMS.values(), ids=FULL_FORMS.keys())
+def test_a_full_form_costs_by_its_validated_limit(ask: Any) -> None:
+    """Four full forms of a hundred candidates (13 units each, once the input is read)
+    against 32 units: two are taken, two shed, however the query spells it or wherever
+    the limit is given."""
+    assert _run(_four(ask)) == [200, 200, 503, 503]
+
+
+@pytest.mark.parametrize("ask", CHEAP.values(), ids=CHEAP.keys())
+def test_cheap_requests_are_all_taken(ask: Any) -> None:
+    """Compact selects (1 unit, whatever their limit) and full forms of 10 (2 units)."""
+    assert _run(_four(ask)) == [200, 200, 200, 200]
+
+
+def test_a_full_form_alone_is_taken_whatever_its_cost() -> None:
+    """Past the whole allowance, with nothing else in progress, a request is still served."""
+
+    async def one() -> int:
+        app = create_app(Settings(max_requests_in_flight=4, response_cache_bytes=0))
+        return (await asgi_get(app, "/api/v1/select", FULL))[0]
+
+    assert _run(one()) == 200
 
 
 async def _health_beside_full_forms(release: threading.Event) -> list[str]:

@@ -172,8 +172,20 @@ def test_the_command_serves_on_the_loop_that_suits_its_workers(
         (["--port", "eighty"], "--port: not a whole number: 'eighty'"),
         (["--workers", "-3"], f"--workers: must be 1 to {cli.MAX_WORKERS}, got -3"),
         (["--workers", "0"], f"--workers: must be 1 to {cli.MAX_WORKERS}, got 0"),
+        (["--workers", "1_0"], "--workers: not a whole number: '1_0'"),
+        (["--port", " 8000"], "--port: not a whole number: ' 8000'"),
+        (["--port", "８０００"], "--port: not a whole number: '８０００'"),
     ],
-    ids=["port-too-high", "port-zero", "port-text", "workers-negative", "workers-zero"],
+    ids=[
+        "port-too-high",
+        "port-zero",
+        "port-text",
+        "workers-negative",
+        "workers-zero",
+        "workers-underscore",
+        "port-space",
+        "port-fullwidth-digits",
+    ],
 )
 def test_bad_options_are_a_usage_error(
     args: list[str],

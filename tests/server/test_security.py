@@ -8,6 +8,7 @@ its health check afterwards.
 
 import asyncio
 import json
+import logging
 import re
 import select
 import socket
@@ -30,6 +31,7 @@ from app.contract.form import ENTERED_PREFIX, UNIT_CHOICES
 from app.contract.schemas import ApplicationIn
 from app.contract.screws import CustomScrewIn
 from app.main import create_app
+from app.server.failures import FailureLog
 from app.server.settings import Settings
 from deploy.local import free_port
 from tests.server.asgi import asgi_get
@@ -131,8 +133,7 @@ def test_security_headers_on_a_413(client: TestClient) -> None:
     assert_security_headers(response)
 
 
-@pytest.fixture(scope="module")
-def failing_client() -> Iterator[TestClient]:
+def _failing_client() -> Iterator[TestClient]:
     """The app with one route that raises: what an unexpected bug looks like."""
     app = create_app()
 
@@ -145,6 +146,11 @@ def failing_client() -> Iterator[TestClient]:
         yield test_client
 
 
+failing_client = pytest.fixture(scope="module")(_failing_client)
+#: a new one for each test: its log of causes has seen none yet
+new_failing_client = pytest.fixture(_failing_client)
+
+
 @pytest.mark.parametrize(("path", "kind"), [("/api/v1/boom", "json"), ("/boom", "text/plain")])
 def test_an_unexpected_error_is_a_500_with_security_headers(
     failing_client: TestClient, path: str, kind: str
@@ -155,6 +161,37 @@ def test_an_unexpected_error_is_a_500_with_security_headers(
     assert "a bug" not in response.text  # no internals leak
     assert_security_headers(response)
     assert failing_client.get("/api/v1/health").status_code == 200
+
+
+def test_a_500_says_it_closes_and_logs_a_line_each_and_the_traceback_once(
+    new_failing_client: TestClient, caplog: pytest.LogCaptureFixture
+) -> None:
+    """Three failures of one cause: three lines (method, path, request id, error), one
+    traceback; the client gets the request id and ``Connection: close`` (the server
+    drops the connection after a 500, and says so first)."""
+    caplog.set_level(logging.ERROR, logger="uvicorn.error")
+    answers = [new_failing_client.get("/api/v1/boom", params={"n": n}) for n in range(3)]
+    ids = [a.headers["x-request-id"] for a in answers]
+    assert len(set(ids)) == 3 and all(re.fullmatch(r"[0-9a-f]{16}", i) for i in ids)
+    for answer, request_id in zip(answers, ids, strict=True):
+        assert answer.headers["connection"] == "close"
+        assert request_id in answer.json()["error"]
+    lines = [r for r in caplog.records if "/api/v1/boom" in r.getMessage()]
+    assert len(lines) == 3
+    for record, request_id in zip(lines, ids, strict=True):
+        assert f"GET /api/v1/boom request {request_id}: " in record.getMessage()
+    assert all("RuntimeError: a bug" in r.getMessage() for r in lines)
+    assert [r.exc_info is not None for r in lines] == [True, False, False]
+    assert ids[0] in lines[2].getMessage().split("traceback as request")[1]
+    assert all("\n" not in r.getMessage() for r in lines)
+
+
+def test_a_failing_path_cannot_forge_a_log_line(caplog: pytest.LogCaptureFixture) -> None:
+    caplog.set_level(logging.ERROR, logger="uvicorn.error")
+    scope = {"method": "GET", "path": "/x\nINFO forged"}
+    FailureLog().record(scope, RuntimeError("two\nlines"))
+    (record,) = caplog.records
+    assert "\n" not in record.getMessage() and record.exc_info is not None
 
 
 @pytest.mark.parametrize(

@@ -12,12 +12,14 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
+import httpx
 import pytest
 
 from app.catalog import CatalogError
 from app.catalog.files import MAX_FILE_BYTES
 from app.main import create_app
 from app.server.settings import Settings
+from deploy.local import free_port, stop, wait_until_healthy
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -210,7 +212,67 @@ def _many_starts(tmp: Path) -> list[Path]:
     return _one_dir(text, "my-family.toml")(tmp)
 
 
+def _deep_table(tmp: Path) -> list[Path]:
+    """A table 500 levels deep in 1 kB of dotted keys: tomllib reads it, and counting its
+    depth by recursion passed Python's limit (a RecursionError traceback)."""
+    return _one_dir("[" + ".".join(["a"] * 500) + "]\nx = 1\n", "table.toml")(tmp)
+
+
+def _example(old: str, new: str) -> Callable[[Path], list[Path]]:
+    """The example family with one piece of text replaced (which must be there)."""
+    assert old in EXAMPLE.read_text(), old
+    return _one_dir(EXAMPLE.read_text().replace(old, new, 1), "my-family.toml")
+
+
+#: the example's id pattern, and its first size (Tr8 x 2)
+PATTERN = 'id_pattern = "MY-Tr{d_mm:g}'
+TR8 = "outer_diameter_mm = { value = 8.0 }"
 HOSTILE: list[tuple[str, Callable[[Path], list[Path]], str, str]] = [
+    ("deep-table", _deep_table, "table.toml", "nested deeper than 16"),
+    # {d_mm:99999999999} asked for 100 GB (MemoryError); 50,000,000 took 228 MB
+    (
+        "id-width",
+        _example(PATTERN, 'id_pattern = "MY-Tr{d_mm:99999999999}'),
+        "my-family.toml",
+        "a width or precision of at most 99",
+    ),
+    (
+        "id-width-nested",
+        _example(PATTERN, 'id_pattern = "MY-Tr{d_mm:{starts}}'),
+        "my-family.toml",
+        "a width or precision of at most 99",
+    ),
+    (
+        "id-too-long",
+        _example(PATTERN, 'id_pattern = "MY-Tr{d_mm:99}'),
+        "my-family.toml",
+        "id longer than 60",
+    ),
+    (
+        "builtin-family-id",
+        _example('id = "MY"', 'id = "B"'),
+        "my-family.toml",
+        "family id 'B' is also declared in b-series.toml",
+    ),
+    # ISO 2904: d3 = d - 2 (0.5 P + a_c) = 0.8 - 2 (1 + 0.25) = -1.7 mm
+    (
+        "negative-root",
+        _example(TR8, "outer_diameter_mm = { value = 0.8 }"),
+        "my-family.toml",
+        "root diameter must be above 0, got -1.7 mm",
+    ),
+    (
+        "vanishing-diameter",
+        _example(TR8, "outer_diameter_mm = { value = 1e-300 }"),
+        "my-family.toml",
+        "root diameter must be above 0",
+    ),
+    (
+        "lead-not-starts-of-pitch",
+        _example("starts = { value = [4] }", "leads_mm = { value = [3.0] }"),
+        "my-family.toml",
+        "lead 3 mm is not a whole number of starts of pitch 2 mm",
+    ),
     ("deep", _deep, "deep.toml", "nested deeper than 16"),
     ("nested", _nested_a_little_too_deep, "nested.toml", "nested deeper than 16"),
     ("device", _device, "zero.toml", "not a regular file"),
@@ -236,7 +298,9 @@ def test_the_loader_refuses_a_hostile_file(
 
 
 @pytest.mark.parametrize(
-    ("case", "make", "file", "reason"), [HOSTILE[0], HOSTILE[3]], ids=["deep", "fifo"]
+    ("case", "make", "file", "reason"),
+    [h for h in HOSTILE if h[0] in ("deep", "fifo", "deep-table", "builtin-family-id")],
+    ids=["deep-table", "builtin-family-id", "deep", "fifo"],
 )
 def test_catalog_dirs_from_the_environment_are_checked_before_workers_start(
     tmp_path: Path, case: str, make: Callable[[Path], list[Path]], file: str, reason: str
@@ -263,3 +327,36 @@ def test_a_bad_setting_stops_the_script_naming_it(variable: str, value: str) -> 
     assert result.returncode == 2, result.stderr
     assert result.stderr.startswith("settings error:") and "Traceback" not in result.stderr
     assert variable.removeprefix("LEADSCREW_").lower() in result.stderr.lower()
+
+
+# --- the command line's catalog directories reach every worker ------------------------------
+
+
+def _console_script() -> Path:
+    """The ``leadscrew-selector`` script of this interpreter's environment."""
+    script = Path(sys.executable).parent / "leadscrew-selector"
+    assert script.is_file(), f"{script}: install the project (pip install -e .)"
+    return script
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_catalog_dir_on_the_command_line_is_served(workers: int) -> None:
+    """``leadscrew-selector --catalog-dir examples/my-family`` serves the family MY with one
+    worker (the app factory runs in the script's own process, whose settings were read
+    before the command line was applied) as with two (each worker a process of its own)."""
+    port = free_port()
+    args = [str(_console_script()), "--catalog-dir", str(EXAMPLE.parent), "--port", str(port)]
+    # the script imports the package first on PYTHONPATH: this checkout's
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    env.pop("LEADSCREW_CATALOG_DIRS", None)
+    proc = subprocess.Popen([*args, "--workers", str(workers), "--log-level", "warning"], env=env)
+    try:
+        wait_until_healthy(port, proc, "leadscrew-selector")
+        with httpx.Client(base_url=f"http://127.0.0.1:{port}", timeout=30) as client:
+            ids = {s["id"] for s in client.get("/api/v1/series").json()["series"]}
+            assert "MY-Tr8-P2" in ids, sorted(ids)
+            for _ in range(2 * workers):  # whichever worker answers
+                answer = client.get("/api/v1/series/MY-Tr8-P2", headers={"Connection": "close"})
+                assert answer.status_code == 200
+    finally:
+        stop(proc)

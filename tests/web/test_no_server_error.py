@@ -1,0 +1,54 @@
+"""Numbers past any float once converted, and an axis too hot for a polymer nut, are
+answered with the field's own message or a page, never a 500 (issue 31, item 4)."""
+
+import re
+
+import pytest
+from fastapi.testclient import TestClient
+
+AXIS = "speed=50&length=500"
+
+
+@pytest.mark.parametrize(
+    ("query", "field", "message"),
+    [
+        # 1e308 lbf is 4.4e308 N, past the largest float (1.8e308)
+        (f"load=1e308&{AXIS}&force_unit=lbf", "load", "Must be at most 224809 lbf."),
+        (f"load=-1e308&{AXIS}&force_unit=lbf", "load", "Must be at least 0 lbf."),
+        (f"load=1e308&{AXIS}&force_unit=kgf", "load", "Must be at most 101972 kgf."),
+        ("load=50&speed=50&length=1e308&length_unit=in", "length", "Must be at most 3937 in."),
+        (f"load=50&{AXIS}&accel=1e308&length_unit=in", "accel", "Must be at most 39370 in/s²."),
+        # typed in N m, shown in oz in: 1.4e310 oz in is no float; kept as typed
+        (
+            f"load=50&{AXIS}&max_torque=1e308&from_torque_unit=N_m&torque_unit=oz_in",
+            "max_torque",
+            "Must be at most 14161193 oz in.",
+        ),
+    ],
+    ids=["lbf", "lbf-negative", "kgf", "length-in", "accel-in", "torque-switched"],
+)
+def test_a_number_past_any_float_gets_its_bound(
+    client: TestClient, query: str, field: str, message: str
+) -> None:
+    """The bound is the field's (1e6 N, 1e5 mm, 1e6 mm/s², 1e5 N m) in the display unit."""
+    page = client.get(f"/?{query}")
+    assert page.status_code == 200
+    assert f'id="e-{field}">{message}<' in page.text
+    for path in ("/export.csv", "/report", "/detail"):
+        assert client.get(f"{path}?{query}").status_code == 422, path
+
+
+HOT = "load=0.001&speed=3000&length=70&ambient_c=250&motor=17hs19-2004s1"
+
+
+def test_an_axis_too_hot_for_its_nuts_draws_its_charts(client: TestClient) -> None:
+    """At 250 °C a polymer nut's PV limit is zero: its share of it is infinite, which a
+    log axis leaves out (the lead sweep drew its ticks from it and failed)."""
+    page = client.get(f"/?{HOT}")
+    assert page.status_code == 200
+    assert 'id="fig-lead_sweep"' in page.text
+    assert "Infinity" not in page.text and "NaN" not in page.text
+    top = re.search(r'/detail\?[^"]*id=([^"&]+)', page.text)
+    assert top, "no candidate on the page"
+    report = client.get(f"/report?{HOT}&id={top.group(1)}")
+    assert report.status_code == 200 and "Infinity" not in report.text
