@@ -476,7 +476,7 @@ def brake_factor(app: Application) -> float:
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
     """Every number of ``app`` for every candidate of ``t``, as arrays."""
     force_n, peak_n = axial_load(app), peak_axial_load(app)
-    rpm = geometry.screw_speed_rpm(app.speed_m_s, t.lead_m)
+    rpm = geometry.screw_speed_rpm(motion.reached_speed(app), t.lead_m)
     # no (or vanishing) thrust: an unbounded PV speed, NaN after ``_finite``
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         values = _values(app, t, force_n, peak_n, rpm)

@@ -5,6 +5,7 @@ builds them)."""
 import math
 from typing import TYPE_CHECKING, Generic, Literal, TypeVar, cast
 
+from app.core import motion
 from app.core.checks.wear_life import life_band
 from app.core.formulas import critical_speed
 
@@ -155,9 +156,10 @@ class Life(Section):
 
     @property
     def hours(self) -> tuple[float, float]:
-        """Hours of running at the top speed until the travel is done."""
+        """Hours of running at the top speed reached until the travel is done."""
         low, high = self.travel_m
-        return low / self.app.speed_m_s / 3600.0, high / self.app.speed_m_s / 3600.0
+        speed = motion.reached_speed(self.app)
+        return low / speed / 3600.0, high / speed / 3600.0
 
     @property
     def cycles(self) -> tuple[float, float] | None:

@@ -8,6 +8,7 @@ from functools import partial
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
@@ -310,18 +311,19 @@ def summarize(
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
         return _no_match(app, table)
+    note = [n] if (n := motion.speed_note(app)) is not None else []
     if passed:
-        return Summary(
-            worst, worst_count, None, {}, Phrase(f"{passed} of {evaluated} candidates pass.")
-        )
+        message = Phrase(f"{passed} of {evaluated} candidates pass.")
+        return Summary(worst, worst_count, None, {}, join([*note, message]))
     best = nearest[0]
     change = input_change(best)
     label = BY_NAME[worst].label if worst in BY_NAME else str(worst)
     parts = [
+        *note,
         Phrase(
             f"No candidate passes. {label} excludes {worst_count} of {evaluated}. "
             f"Nearest: {best.screw.id}:"
-        )
+        ),
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
     if change and not within(change, ranges):
