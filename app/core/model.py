@@ -104,6 +104,9 @@ class Application:
     #: The nut's length, in place of the catalog's (None: the catalog's) [m].
     nut_length_m: float | None = None
     lubrication: Lubrication = "dry"
+    #: The load held at rest must stay held with the power off: by the thread
+    #: self-locking with the friction margin, a brake, or a stepper's detent torque.
+    hold_power_off: bool = True
 
     @property
     def lubricated(self) -> bool:

@@ -77,8 +77,10 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     longest life at the low end of the band shown (``shown_life_min``: rated or wear;
     neither last); size: smallest outer diameter; motor_margin: the
     smallest share of the motor used (``motor_use``). Ties: lower shown torque.
-    Candidates with a warning (failed advice) come after those without, whatever the
-    policy ("reject" rejects them).
+    Where the load must be held with the power off (``hold_power_off`` and a load held),
+    the surest holds come first: largest hold margin (``efficiency.hold_margin``) first,
+    then the policy. Candidates with a warning (failed advice) come after those without,
+    whatever the policy ("reject" rejects them).
     """
     pos = np.flatnonzero(s.passed)
     torque, util = shown_torque(s)[pos], s.max_utilization[pos]
@@ -91,7 +93,8 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
         "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
-    keys = (secondary, primary, s.warned[pos].astype(np.float64))
+    hold = -np.nan_to_num(s.quantities.hold_margin[pos], nan=0.0)
+    keys = (secondary, primary, hold, s.warned[pos].astype(np.float64))
     return pos[np.lexsort(keys)]
 
 

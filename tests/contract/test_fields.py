@@ -48,7 +48,7 @@ SHARE_LINK_NAMES = [
     "accel", "compression", "end_fixity", "require_anti_backlash", "coating", "family",
     "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
     "cycles_per_day", "required_life_years", "positioning_tolerance", "brake_torque",
-    "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
+    "holding_source", "detent_torque", "hold_power_off", "motor", "max_torque", "motor_curve",
     "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
     "motor_supply", "motor_phase_current", "motor_resistance", "motor_inductance",
     "motor_holding_torque", "decel", "dwell", "critical_speed_safety_factor",
