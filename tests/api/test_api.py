@@ -453,7 +453,8 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
     # fields beyond the issue's list are optional and stay off unless given
     # the self-locking margin, the advice policy, the dwell, the microsteps, the load
-    # direction and what holds have defaults of their own
+    # direction, what holds and whether it must hold with the power off have defaults of
+    # their own
     later = {
         "self_locking_friction_factor": 0.5,
         "advice": "warn",
@@ -462,6 +463,7 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
         "load_direction": "auto",
         "holding_source": "brake",
         "lubrication": "dry",
+        "hold_power_off": True,
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)

@@ -2,6 +2,7 @@
 typed speed is a triangle, and every speed check judges the triangle's peak."""
 
 import math
+from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
@@ -66,3 +67,57 @@ def test_selection_says_the_profile_is_triangular(client: TestClient) -> None:
     assert "triangle" not in without["summary"]["message"]
     # judged at 100 mm/s rather than 500 mm/s, more screws pass
     assert body["counts"]["passed"] > without["counts"]["passed"]
+
+
+def field_errors(response: Any) -> dict[str, str]:
+    assert response.status_code == 422, response.text
+    return {e["field"]: e["message"] for e in response.json()["detail"]}
+
+
+@pytest.mark.parametrize(
+    ("extra", "room"),
+    [({"stroke_mm": 300.0}, "300 mm"), ({"stroke_mm": 280.0, "nut_length_mm": 30.0}, "270 mm")],
+    ids=["screw-length", "less-the-nut"],
+)
+def test_a_stroke_past_the_screw_is_refused(
+    client: TestClient, extra: dict[str, float], room: str
+) -> None:
+    """Screw 300 mm: a 300 mm stroke leaves no room for any nut; with a 30 mm nut typed the
+    stroke must stay under 300 - 30 = 270 mm. 422 on stroke_mm, in the API and the page."""
+    body = {"load_n": 10.0, "speed_mm_s": 100.0, "length_mm": 300.0, **extra}
+    errors = field_errors(client.post("/api/v1/select", json=body))
+    assert set(errors) == {"stroke_mm"} and room in errors["stroke_mm"]
+    page = {"load": "10", "speed": "100", "length": "300", "stroke": str(extra["stroke_mm"])}
+    if "nut_length_mm" in extra:
+        page["nut_length"] = "30"
+    html = client.get("/", params=page).text
+    assert 'id="e-stroke"' in html and room in html
+
+
+def test_each_catalog_nut_must_fit_beside_the_stroke(client: TestClient) -> None:
+    """Tr16x4's catalog nut is 2 x 16 = 32 mm: a 270 mm stroke on a 300 mm screw needs
+    302 mm and fails the stroke-travel check; 260 mm needs 292 mm and passes."""
+    body = {"load_n": 10.0, "speed_mm_s": 50.0, "length_mm": 300.0}
+    long = check(evaluate(client, "Tr16x4-ptfe", **body, stroke_mm=270.0), "stroke_travel")
+    assert not long["passed"]
+    assert (long["value"], long["limit"]) == pytest.approx((302.0, 300.0))
+    short = check(evaluate(client, "Tr16x4-ptfe", **body, stroke_mm=260.0), "stroke_travel")
+    assert short["passed"] and short["value"] == pytest.approx(292.0)
+
+
+def test_more_cycles_than_a_day_holds_are_refused(client: TestClient) -> None:
+    """200 mm at 100 mm/s, a = 1000 mm/s^2: ramps of 0.1 s (5 mm each), 190 mm at
+    100 mm/s in 1.9 s, a move of 2.1 s, a cycle of 4.2 s: at most 86,400 / 4.2 = 20,571
+    a day. With a 0.9 s dwell after each move the cycle is 6 s: at most 14,400."""
+    body = {"load_n": 10.0, "speed_mm_s": 100.0, "length_mm": 300.0, "stroke_mm": 200.0}
+    errors = field_errors(client.post("/api/v1/select", json={**body, "cycles_per_day": 20572}))
+    assert set(errors) == {"cycles_per_day"} and "20571.4" in errors["cycles_per_day"]
+    fits = client.post("/api/v1/select", json={**body, "cycles_per_day": 20571})
+    assert fits.status_code == 200
+    dwell = {**body, "dwell_s": 0.9, "cycles_per_day": 14401}
+    assert "14400" in field_errors(client.post("/api/v1/select", json=dwell))["cycles_per_day"]
+    query = {**body, "cycles_per_day": 20572}
+    assert set(field_errors(client.get("/api/v1/select", params=query))) == {"cycles_per_day"}
+    page = {"load": "10", "speed": "100", "length": "300", "stroke": "200",
+            "cycles_per_day": "20572"}  # fmt: skip
+    assert 'id="e-cycles_per_day"' in client.get("/", params=page).text

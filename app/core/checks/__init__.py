@@ -28,6 +28,7 @@ from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
 from app.core.checks.step_rate import StepRate
 from app.core.checks.step_resolution import StepResolution
+from app.core.checks.stroke_travel import StrokeTravel
 from app.core.checks.temperature import Temperature
 from app.core.checks.torque import DriveTorque
 from app.core.checks.traverse_speed import TraverseSpeed
@@ -52,6 +53,7 @@ REGISTRY: tuple[Check, ...] = (
     TraverseSpeed(),
     DesignLoad(),
     Length(),
+    StrokeTravel(),
     OilCompatibility(),
     Temperature(),
     NutHeat(),
