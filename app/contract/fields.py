@@ -352,6 +352,10 @@ FIELDS: tuple[InputField, ...] = (
         "(answered yes or no with its margin, the surest holds ranked first); no, the "
         "energised motor holds it and a drop with the power off is accepted",
         group="Duty and requirements", kind="yes-no", default=True,
+        texts={
+            "true": "Yes: the load stays put with the power off",
+            "false": "No: the energised motor holds it",
+        },
     ),
     InputField(
         api="motor", page="motor", core="motor", label="Library motor",

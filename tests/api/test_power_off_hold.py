@@ -5,6 +5,7 @@ governs; the surest holds ranked first."""
 import math
 
 import pytest
+from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
 from tests.api.calls import check, evaluate, names
@@ -95,3 +96,18 @@ def test_surest_holds_rank_first(client: TestClient) -> None:
     torques = [c["torque"]["total_nm"] for c in free]  # no stroke: the torque shown
     assert torques == sorted(torques)
     assert {c["hold_margin"] for c in free} == {None}
+
+
+def test_the_results_row_answers_and_says_which_governs(client: TestClient) -> None:
+    """On the page each row of a vertical axis answers yes or no with its margin; where
+    the rule of thumb disagrees the row says the friction calculation governs. Answered
+    "no" (the energised motor holds), the rows carry no answer."""
+    page = {"load": "0", "moving_mass_kg": "20", "orientation": "vertical", "speed": "50",
+            "length": "500"}  # fmt: skip
+    rows = BeautifulSoup(client.get("/", params=page).text, "html.parser")
+    answers = [a.text for a in rows.select("td.backdrive .hold-answer")]
+    assert answers and all(a.startswith("Holds power-off: yes, margin ") for a in answers)
+    notes = [n.text for n in rows.select("td.backdrive .rule-note")]
+    assert notes and all("friction calculation governs" in n for n in notes)
+    off = client.get("/", params={**page, "hold_power_off": "false"}).text
+    assert BeautifulSoup(off, "html.parser").select("td.backdrive .hold-answer") == []

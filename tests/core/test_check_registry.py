@@ -201,6 +201,7 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     motor = {"motor_curve", "motor_rms", "motor_speed", "inertia_ratio"}
     controller = {"step_rate", "step_resolution"}
     holding = {"holding", "holding_power_off"}
-    assert user_limits == {"torque", "accuracy", *holding, *motor, *controller}
+    # the stroke and the nut against the user's own screw length
+    assert user_limits == {"torque", "accuracy", "stroke_travel", *holding, *motor, *controller}
     for c in REGISTRY:
         assert set(c.capacity_sources) <= set(c.sources), c.name
