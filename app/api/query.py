@@ -17,8 +17,6 @@ from fastapi.exceptions import RequestValidationError
 from pydantic import BaseModel, ValidationError
 from starlette.datastructures import QueryParams
 
-from app.contract.params import unknown_message
-
 M = TypeVar("M", bound=BaseModel)
 
 
@@ -52,16 +50,8 @@ def parse_query(model: type[M], params: QueryParams) -> M:
     try:
         return model.model_validate(query_values(model, params))
     except ValidationError as exc:
-        errors = [{**_hinted(model, e), "loc": ("query", *e["loc"])} for e in exc.errors()]
+        errors = [{**e, "loc": ("query", *e["loc"])} for e in exc.errors()]
         raise RequestValidationError(errors) from None
-
-
-def _hinted(model: type[BaseModel], error: Any) -> Any:
-    """An unknown parameter's error with the likely intended name, as the pages say it
-    (``moving_mass`` -> ``moving_mass_kg``); other errors as they are."""
-    if error.get("type") != "extra_forbidden" or not error.get("loc"):
-        return error
-    return {**error, "msg": unknown_message(str(error["loc"][0]), model.model_fields)}
 
 
 @cache

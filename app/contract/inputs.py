@@ -44,6 +44,8 @@ from app.contract.fields import BY_API, FIELDS, InputField
 from app.core import motion
 from app.core.model import Application
 
+#: The API name of each core attribute.
+API_OF = {field.core: field.api for field in FIELDS}
 #: Seconds in a day, the most the cycles of a day can take [s].
 SECONDS_PER_DAY = 86400.0
 
@@ -354,21 +356,22 @@ class ApplicationInputs(BaseModel):
             check_drivable(value, *(float(v or 0.0) for v in given))
         return value
 
-    @field_validator("stroke_mm", check_fields=False)
+    @field_validator(API_OF["stroke_m"], check_fields=False)
     @classmethod
     def _stroke_fits(cls, value: float | None, info: ValidationInfo) -> float | None:
-        """The nut travels between the screw's ends: the stroke is under the screw length
-        less the nut length given (less nothing without one: each catalog nut's own length
-        is then the stroke-travel check's)."""
-        length, nut = info.data.get("length_mm"), info.data.get("nut_length_mm")
+        """The nut travels between the screw's ends: the stroke is at most the screw
+        length less the nut length given (less nothing without one: each catalog nut's
+        own length is then the stroke-travel check's)."""
+        length = info.data.get(API_OF["length_m"])
+        nut = info.data.get(API_OF["nut_length_m"])
         if value is None or length is None:
             return value
         room = float(length) - float(nut or 0.0)
-        if value >= room:
+        if value > room:
             less = f" less the nut length ({float(length):g} - {float(nut or 0.0):g} mm)"
             raise ValueError(
-                f"must be under the screw length{less if nut else ''}, {room:g} mm: the nut "
-                "cannot travel past the screw's end"
+                f"must be at most the screw length{less if nut else ''}, {room:g} mm: the "
+                "nut cannot travel past the screw's end"
             )
         return value
 
@@ -376,7 +379,8 @@ class ApplicationInputs(BaseModel):
     def _cycles_fit_a_day(self) -> "ApplicationInputs":
         """The cycles per day fit in a day: at most 86,400 s over the cycle's time (out
         and back with the dwells, ``motion.move_profile``); refused on cycles_per_day."""
-        cycles = getattr(self, "cycles_per_day", None)
+        name = API_OF["cycles_per_day"]
+        cycles = getattr(self, name, None)
         if cycles is None:
             return self
         p = motion.move_profile(self.axis())
@@ -389,7 +393,7 @@ class ApplicationInputs(BaseModel):
         )
         error = InitErrorDetails(
             type=PydanticCustomError("cycles_per_day", message),
-            loc=("cycles_per_day",),
+            loc=(name,),
             input=cycles,
         )
         raise ValidationError.from_exception_data(type(self).__name__, [error])

@@ -29,7 +29,7 @@ def likely_name(name: str, known: Iterable[str]) -> str | None:
     """The known name closest to ``name`` where one is close (difflib's ratio 0.75 or
     more); an API name given on a page is its page name.
 
-    >>> likely_name("moving_mass", BY_PAGE), likely_name("speed_mm_s", BY_PAGE)
+    >>> likely_name("moving_mass", BY_PAGE), likely_name(BY_PAGE["speed"].api, BY_PAGE)
     ('moving_mass_kg', 'speed')
     >>> likely_name("colour", BY_PAGE) is None
     True

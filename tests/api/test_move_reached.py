@@ -76,14 +76,14 @@ def field_errors(response: Any) -> dict[str, str]:
 
 @pytest.mark.parametrize(
     ("extra", "room"),
-    [({"stroke_mm": 300.0}, "300 mm"), ({"stroke_mm": 280.0, "nut_length_mm": 30.0}, "270 mm")],
+    [({"stroke_mm": 301.0}, "300 mm"), ({"stroke_mm": 280.0, "nut_length_mm": 30.0}, "270 mm")],
     ids=["screw-length", "less-the-nut"],
 )
 def test_a_stroke_past_the_screw_is_refused(
     client: TestClient, extra: dict[str, float], room: str
 ) -> None:
-    """Screw 300 mm: a 300 mm stroke leaves no room for any nut; with a 30 mm nut typed the
-    stroke must stay under 300 - 30 = 270 mm. 422 on stroke_mm, in the API and the page."""
+    """Screw 300 mm: a 301 mm stroke runs the nut off the screw; with a 30 mm nut typed the
+    stroke is at most 300 - 30 = 270 mm. 422 on stroke_mm, in the API and the page."""
     body = {"load_n": 10.0, "speed_mm_s": 100.0, "length_mm": 300.0, **extra}
     errors = field_errors(client.post("/api/v1/select", json=body))
     assert set(errors) == {"stroke_mm"} and room in errors["stroke_mm"]

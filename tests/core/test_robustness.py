@@ -20,7 +20,10 @@ the list. "life-advice-reject" was recorded again when the ISO nuts' allowed wea
 Helix Linear's end of life (a quarter of the pitch off the thread, 0.483 H1, was 0.25 H1
 assumed): their wear lives nearly doubled, so the Tr14x3 and Tr8x8(P2) PTFE nuts now last
 the 3 years asked and the Tr12x6(P3) and Tr14x6(P3) PTFE nuts no longer hinge on the nut
-length. Every path must still give them: select, a catalog screw evaluated alone,
+length. "any-lead-vertical" was recorded again when holding with the power off became a
+requirement whose surest holds rank first: the largest hold margin (lead_max / lead at
+0.5 mu_s) leads, the acetal nuts' (mu_s 0.30) ahead of the PTFE ones' (0.20). Every path
+must still give them: select, a catalog screw evaluated alone,
 and a screw outside the catalog with the same values (its variant rows built on the fly).
 """
 

@@ -58,9 +58,10 @@ def test_screening_agrees_with_full_evaluation(catalog: Catalog, app: Applicatio
 @given(app=applications)
 def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     """Counts cover every eligible candidate; passing ones come back ranked by the torque
-    shown (the peak motor torque under a move, else the drive torque), screws with a
-    warning after those without, rejected ones nearest-to-passing first (fewest failed
-    limits, then the smallest worst utilisation); each list is cut to ``app.limit``."""
+    shown (the peak motor torque under a move, else the drive torque) after the largest
+    power-off hold margin where one is required, screws with a warning after those
+    without, rejected ones nearest-to-passing first (fewest failed limits, then the
+    smallest worst utilisation); each list is cut to ``app.limit``."""
     sel = select(app, catalog.index)
     evaluations = [
         evaluate(app, catalog.index.table.screws[i])
@@ -74,12 +75,17 @@ def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     assert len(sel.rejected) == min(app.limit, sel.evaluated - sel.passed)
     assert all(e.passed for e in sel.candidates)
     assert not any(e.passed for e in sel.rejected)
-    order = [(bool(e.warned), shown_torque(e)) for e in sel.candidates]
+    order = [(bool(e.warned), -(e.hold_margin or 0.0), shown_torque(e)) for e in sel.candidates]
     assert order == sorted(order)
     if sel.candidates:
-        passing = [(bool(e.warned), shown_torque(e)) for e in evaluations if e.passed]
+        passing = [
+            (bool(e.warned), -(e.hold_margin or 0.0), shown_torque(e))
+            for e in evaluations
+            if e.passed
+        ]
         assert order[0][0] == min(passing)[0]
         assert order[0][1] == pytest.approx(min(passing)[1])
+        assert order[0][2] == pytest.approx(min(passing)[2])
     nearness = [(len(e.failed_checks), e.max_utilization) for e in sel.rejected]
     assert nearness == sorted(nearness)
 
