@@ -384,7 +384,8 @@ class ApplicationInputs(BaseModel):
         if cycles is None:
             return self
         p = motion.move_profile(self.axis())
-        if p is None or cycles * p.cycle_time_s <= SECONDS_PER_DAY:
+        # a day exactly filled passes (its product may round a hair above 86,400 s)
+        if p is None or cycles * p.cycle_time_s <= SECONDS_PER_DAY * (1.0 + 1e-12):
             return self
         most = SECONDS_PER_DAY / p.cycle_time_s
         message = (
