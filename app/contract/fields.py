@@ -381,6 +381,19 @@ FIELDS: tuple[InputField, ...] = (
         group="Duty and requirements", kind="number", bounds=(0.0, 1e5), dimension="torque",
     ),
     InputField(
+        api="hold_power_off", page="hold_power_off", core="hold_power_off",
+        label="Must hold with the power off", help="Where the axis holds a load at rest "
+        "(vertical, or a load of fixed direction): yes, each screw must hold it unpowered, "
+        "by the thread self-locking with the friction margin, a brake or the detent torque "
+        "(answered yes or no with its margin, the surest holds ranked first); no, the "
+        "energised motor holds it and a drop with the power off is accepted",
+        group="Duty and requirements", kind="yes-no", default=True,
+        texts={
+            "true": "Yes: the load stays put with the power off",
+            "false": "No: the energised motor holds it",
+        },
+    ),
+    InputField(
         api="motor", page="motor", core="motor", label="Library motor",
         help="A motor of the library (motors.toml; GET /api/v1/motors lists them): a "
         "stepper's pull-out curve, rotor inertia and step angle, or a servo's peak "

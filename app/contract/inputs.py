@@ -29,18 +29,26 @@ from pydantic import (
     Field,
     SerializationInfo,
     SerializerFunctionWrapHandler,
+    ValidationError,
     ValidationInfo,
     WithJsonSchema,
     WrapSerializer,
     create_model,
     field_validator,
+    model_validator,
 )
-from pydantic_core import PydanticCustomError
+from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from app.catalog.motors import Motor, check_motor, with_motor
 from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.fields import BY_API, FIELDS, InputField
+from app.core import motion
 from app.core.model import Application
+
+#: The API name of each core attribute.
+API_OF = {field.core: field.api for field in FIELDS}
+#: Seconds in a day, the most the cycles of a day can take [s].
+SECONDS_PER_DAY = 86400.0
 
 #: optional sign, digits with an optional point (or a point and digits), optional exponent.
 ASCII_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
@@ -413,6 +421,49 @@ class ApplicationInputs(BaseModel):
         if all(v is not None for v in given):
             check_drivable(value, *(float(v or 0.0) for v in given))
         return value
+
+    @field_validator(API_OF["stroke_m"], check_fields=False)
+    @classmethod
+    def _stroke_fits(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """The nut travels between the screw's ends: the stroke is at most the screw
+        length less the nut length given (less nothing without one: each catalog nut's
+        own length is then the stroke-travel check's)."""
+        length = info.data.get(API_OF["length_m"])
+        nut = info.data.get(API_OF["nut_length_m"])
+        if value is None or length is None:
+            return value
+        room = float(length) - float(nut or 0.0)
+        if value > room:
+            less = f" less the nut length ({float(length):g} - {float(nut or 0.0):g} mm)"
+            raise ValueError(
+                f"must be at most the screw length{less if nut else ''}, {room:g} mm: the "
+                "nut cannot travel past the screw's end"
+            )
+        return value
+
+    @model_validator(mode="after")
+    def _cycles_fit_a_day(self) -> "ApplicationInputs":
+        """The cycles per day fit in a day: at most 86,400 s over the cycle's time (out
+        and back with the dwells, ``motion.move_profile``); refused on cycles_per_day."""
+        name = API_OF["cycles_per_day"]
+        cycles = getattr(self, name, None)
+        if cycles is None:
+            return self
+        p = motion.move_profile(self.axis())
+        # a day exactly filled passes (its product may round a hair above 86,400 s)
+        if p is None or cycles * p.cycle_time_s <= SECONDS_PER_DAY * (1.0 + 1e-12):
+            return self
+        most = SECONDS_PER_DAY / p.cycle_time_s
+        message = (
+            f"must be at most {most:.6g}: one cycle (out and back, with the dwells) takes "
+            f"{p.cycle_time_s:.6g} s, and a day has 86400 s"
+        )
+        error = InitErrorDetails(
+            type=PydanticCustomError("cycles_per_day", message),
+            loc=(name,),
+            input=cycles,
+        )
+        raise ValidationError.from_exception_data(type(self).__name__, [error])
 
     def to_core(
         self, motors: Mapping[str, Motor], supports: Mapping[str, SupportUnit] | None = None

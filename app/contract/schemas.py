@@ -333,6 +333,26 @@ class CandidateOut(BaseModel):
     max_self_locking_lead_with_margin_mm: Annotated[
         float, From("max_self_locking_lead_with_margin_m", "length")
     ]
+    holds_power_off: Annotated[bool | None, From("holds_power_off")] = Field(
+        default=None,
+        description="The answer to 'must hold with the power off' where a load is held at "
+        "rest: yes when the thread self-locks with the friction margin, or the brake or "
+        "detent torque holds it; null: not required, or no load held.",
+    )
+    hold_margin: Annotated[float | None, From("hold_margin")] = Field(
+        default=None,
+        description="Its margin, holding at 1 or more: the larger of the thread's (the "
+        "longest lead that self-locks at f mu_s over the lead) and the brake's or detent "
+        "torque's over the torque needed; null as above.",
+    )
+    holds_by: Annotated[Literal["thread", "brake", "detent"] | None, From("holds_by")] = Field(
+        default=None, description="What gives that margin; null as above."
+    )
+    holding_rule: Annotated[str | None, From("holding_rule")] = Field(
+        default=None,
+        description="Where the catalog's rule of thumb (lead < OD / 8) and the physics "
+        "(self-locking at the friction margin) disagree: which governs and why.",
+    )
     holding_torque: Annotated[HoldingTorqueOut, From()]
     torque: Annotated[TorqueOut, From("torque")]
     critical_speed: Annotated[CriticalSpeedOut, From("critical_speed")]
@@ -417,7 +437,8 @@ VIEWS: dict[str, View] = {
     "row": whole(
         NAMED,
         "axial_load_n rpm efficiency self_locking seed_rule_no_backdrive "
-        "max_self_locking_lead_with_margin_mm holding_torque torque critical_speed pv life "
+        "max_self_locking_lead_with_margin_mm holds_power_off hold_margin holds_by "
+        "holding_rule holding_torque torque critical_speed pv life "
         "profile segments motor_use",
         VERDICT,
     ),

@@ -119,6 +119,9 @@ class Application:
     #: The longest span from the thrust bearing to the nut [m]: the column that buckles
     #: (None: the screw's length).
     bearing_to_nut_m: float | None = None
+    #: The load held at rest must stay held with the power off: by the thread
+    #: self-locking with the friction margin, a brake, or a stepper's detent torque.
+    hold_power_off: bool = True
 
     @property
     def lubricated(self) -> bool:

@@ -32,6 +32,7 @@ from app.core.model import (
     Segment,
     SegmentName,
 )
+from app.core.phrase import Amount, Phrase
 from app.core.table import Array, CandidateTable
 
 #: The moving segments and the sign of their acceleration along the motion.
@@ -66,6 +67,31 @@ def move_profile(app: Application) -> Profile | None:
         move_time_s=move,
         cycle_time_s=2.0 * (move + app.dwell_s),
         peak_speed_m_s=v,
+    )
+
+
+def reached_speed(app: Application) -> float:
+    """The highest speed the axis reaches [m/s]: the triangle's peak when the stroke is too
+    short to reach the typed speed, else the typed speed (also without a stroke). Every
+    speed-based check judges this speed, not the one typed."""
+    p = move_profile(app)
+    return app.speed_m_s if p is None else p.peak_speed_m_s
+
+
+def speed_note(app: Application) -> Phrase | None:
+    """When the move is a triangle: the speed typed, the speed reached, and that the speed
+    checks judge the one reached (None for a trapezoid or without a stroke)."""
+    p = move_profile(app)
+    if p is None or p.kind != "triangle":
+        return None
+    return Phrase(
+        "The stroke {s} is too short to reach the {typed} typed: the move is a triangle "
+        "that peaks at {peak}, the speed every speed check judges.",
+        {
+            "s": Amount(app.stroke_m or 0.0, "length"),
+            "typed": Amount(app.speed_m_s, "speed"),
+            "peak": Amount(p.peak_speed_m_s, "speed"),
+        },
     )
 
 

@@ -205,6 +205,13 @@ class Quantities(Generic[V]):
     #: the physical holding torque at the distrusted static friction f mu_s, the friction
     #: the self-locking margin trusts (what the brake is sized on, beside the seed's)
     holding_distrusted_nm: V
+    #: Holding with the power off, where it is required and a load is held (NaN
+    #: otherwise): the thread's margin, the longest lead that self-locks at f mu_s over
+    #: the lead; and the hold's, the larger of it and the unpowered torque (a brake's or
+    #: the detent) over the torque needed (``brake_needed_nm`` as if it did not lock).
+    #: Each holds at 1 or more.
+    hold_thread_margin: V
+    hold_margin: V
     #: the nut length whose engaged turns carry the load: the user's, else the catalog's
     #: (NaN without a thread pitch) [m]
     nut_length_m: V
@@ -558,16 +565,42 @@ def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
         efficiency.backdrive_efficiency(np.tan(t.lead_angle_rad), mu_margin, t.cos_half_angle),
     )
     brake = np.where(locks, 0.0, np.maximum(seed, distrusted))
+    max_lock = efficiency.max_self_locking_lead(t.pitch_diameter_m, mu_margin, t.cos_half_angle)
     return {
+        **_hold_margins(app, t, max_lock, np.maximum(seed, distrusted) * brake_factor(app)),
         "holding_seed_nm": np.where(locks, 0.0, seed),
         "holding_physics_nm": physics,
         "holding_distrusted_nm": distrusted,
         "brake_nm": brake,
         "brake_needed_nm": brake * brake_factor(app),
         "locks_with_margin": locks,
-        "max_lock_lead_m": efficiency.max_self_locking_lead(
-            t.pitch_diameter_m, mu_margin, t.cos_half_angle
-        ),
+        "max_lock_lead_m": max_lock,
+    }
+
+
+def unpowered_torque(app: Application) -> float | None:
+    """The torque that holds with the power off besides the thread [N m]: a brake's, or
+    a stepper's detent torque (its energised holding torque does not count); None: none."""
+    if app.holding_source == "brake":
+        return app.brake_torque_nm
+    return app.detent_torque_nm
+
+
+def _hold_margins(
+    app: Application, t: CandidateTable, max_lock_m: Array, needed_nm: Array
+) -> dict[str, Any]:
+    """The power-off hold's margins (``efficiency.hold_margin``): the thread's alone, and
+    the hold's with the unpowered torque (``unpowered_torque``) over ``needed_nm``; NaN
+    where holding with the power off is not required or no load is held."""
+    nan = np.full(len(t), np.nan)
+    if not (app.hold_power_off and motion.holds_a_load(app)):
+        return {"hold_thread_margin": nan, "hold_margin": nan}
+    torque_nm = unpowered_torque(app)
+    device = nan if torque_nm is None else np.full(len(t), torque_nm)
+    needed = np.where(needed_nm > 0.0, needed_nm, np.nan)
+    return {
+        "hold_thread_margin": efficiency.hold_margin(max_lock_m, t.lead_m, nan, 1.0),
+        "hold_margin": efficiency.hold_margin(max_lock_m, t.lead_m, device, needed),
     }
 
 
@@ -581,7 +614,7 @@ def brake_factor(app: Application) -> float:
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
     """Every number of ``app`` for every candidate of ``t``, as arrays."""
     force_n, peak_n = axial_load(app), peak_axial_load(app)
-    rpm = geometry.screw_speed_rpm(app.speed_m_s, t.lead_m)
+    rpm = geometry.screw_speed_rpm(motion.reached_speed(app), t.lead_m)
     # no (or vanishing) thrust: an unbounded PV speed, NaN after ``_finite``
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         values = _values(app, t, force_n, peak_n, rpm)

@@ -20,8 +20,10 @@ from numpy.typing import NDArray
 
 from app.core import motion
 from app.core.checks import BY_NAME
+from app.core.checks.back_driving import rule_note
 from app.core.checks.base import Check
 from app.core.model import (
+    PASS_UTILIZATION,
     PV,
     Accuracy,
     Application,
@@ -446,6 +448,37 @@ class Candidate:
     @property
     def self_locking_with_margin(self) -> bool:
         return bool(self.quantities.locks_with_margin)
+
+    @property
+    def hold_margin(self) -> float | None:
+        """The power-off hold's margin (``efficiency.hold_margin``); None where holding
+        with the power off is not required or no load is held."""
+        return number(self.quantities.hold_margin)
+
+    @property
+    def holds_power_off(self) -> bool | None:
+        """The answer to "must hold with the power off": yes at a margin of 1 or more."""
+        margin = self.hold_margin
+        return None if margin is None else margin * PASS_UTILIZATION >= 1.0
+
+    @property
+    def holds_by(self) -> str | None:
+        """What holds the load with the power off: the thread when it alone holds with
+        the friction margin (a brake beside it is then a second means), else the brake or
+        the detent torque; None where nothing is required or held."""
+        margin = self.hold_margin
+        if margin is None:
+            return None
+        thread = number(self.quantities.hold_thread_margin)
+        if thread is not None and thread * PASS_UTILIZATION >= 1.0:
+            return "thread"
+        return "brake" if self.app.holding_source == "brake" else "detent"
+
+    @property
+    def holding_rule(self) -> Phrase | None:
+        """Where the catalog's rule of thumb (lead < OD / 8) and the physics disagree:
+        which governs and why."""
+        return rule_note(self.app, self.screw, self.self_locking_with_margin)
 
     @property
     def traverse_speed_limit_m_s(self) -> float | None:

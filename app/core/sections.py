@@ -168,9 +168,10 @@ class Life(Section):
 
     @property
     def hours(self) -> tuple[float, float]:
-        """Hours of running at the top speed until the travel is done."""
+        """Hours of running at the top speed reached until the travel is done."""
         low, high = self.travel_m
-        return low / self.app.speed_m_s / 3600.0, high / self.app.speed_m_s / 3600.0
+        speed = motion.reached_speed(self.app)
+        return low / speed / 3600.0, high / speed / 3600.0
 
     @property
     def cycles(self) -> tuple[float, float] | None:

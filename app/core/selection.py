@@ -8,6 +8,7 @@ from functools import partial
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
@@ -76,8 +77,12 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     longest life at the low end of the band shown (``shown_life_min``: rated or wear;
     neither last); size: smallest outer diameter; motor_margin: the
     smallest share of the motor used (``motor_use``). Ties: lower shown torque.
-    Candidates with a warning (failed advice) come after those without, whatever the
-    policy ("reject" rejects them).
+    Where the load must be held with the power off (``hold_power_off`` and a load held),
+    the surest holds come first: the screws whose thread alone holds the load with the
+    friction margin (``hold_thread_margin`` at least 1: no brake or detent torque to fail)
+    before those that rest on one, each group in the policy's order. Candidates with a
+    warning (failed advice) come after those without, whatever the policy ("reject"
+    rejects them).
     """
     pos = np.flatnonzero(s.passed)
     torque, util = shown_torque(s)[pos], s.max_utilization[pos]
@@ -90,7 +95,9 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
         "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
-    keys = (secondary, primary, s.warned[pos].astype(np.float64))
+    thread = s.quantities.hold_thread_margin[pos]
+    rests_on_a_device = (np.isfinite(thread) & (thread < 1.0)).astype(np.float64)
+    keys = (secondary, primary, rests_on_a_device, s.warned[pos].astype(np.float64))
     return pos[np.lexsort(keys)]
 
 
@@ -310,18 +317,19 @@ def summarize(
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
         return _no_match(app, table)
+    note = [n] if (n := motion.speed_note(app)) is not None else []
     if passed:
-        return Summary(
-            worst, worst_count, None, {}, Phrase(f"{passed} of {evaluated} candidates pass.")
-        )
+        message = Phrase(f"{passed} of {evaluated} candidates pass.")
+        return Summary(worst, worst_count, None, {}, join([*note, message]))
     best = nearest[0]
     change = input_change(best)
     label = BY_NAME[worst].label if worst in BY_NAME else str(worst)
     parts = [
+        *note,
         Phrase(
             f"No candidate passes. {label} excludes {worst_count} of {evaluated}. "
             f"Nearest: {best.screw.id}:"
-        )
+        ),
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
     if change and not within(change, ranges):

@@ -16,6 +16,7 @@ from app.contract.outputs import EvaluateOut
 from app.contract.schemas import ApplicationIn
 from app.contract.screws import CustomScrewIn
 from app.contract.units import Display, api_value
+from app.core import motion
 from app.report.service import run_evaluation
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
@@ -51,7 +52,7 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
     c, d = out.candidate, Display(units)
     app = out.inputs.axis()
     length_mm, _ = api_value(app.length_m, "length")
-    speed_mm_s, _ = api_value(app.speed_m_s, "speed")
+    speed_mm_s, _ = api_value(motion.reached_speed(app), "speed")
     figures = {"critical_speed": critical_speed_figure([c], length_mm, d)}
     if c.pv.max_load_n is not None:
         figures["pv"] = pv_figure([c], speed_mm_s, c.axial_load_n, d)

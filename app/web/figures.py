@@ -12,6 +12,7 @@ from app.catalog import Catalog
 from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display, api_value, si_to_api, sig
+from app.core import motion
 from app.core.formulas import critical_speed, pv
 from app.core.index import size_of
 from app.core.motion import curve_margin
@@ -423,7 +424,7 @@ def result_figures(
         result.inputs.to_core(catalog.motors, catalog.supports) if catalog else result.inputs.axis()
     )
     length_mm, _ = api_value(app.length_m, "length")
-    speed_mm_s, _ = api_value(app.speed_m_s, "speed")
+    speed_mm_s, _ = api_value(motion.reached_speed(app), "speed")
     figures = {
         "critical_speed": critical_speed_figure(candidates, length_mm, d),
         "pv": pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d),

@@ -24,6 +24,7 @@ from app.contract.form import (
 )
 from app.contract.inputs import SUPPORT
 from app.contract.pairs import PairRankIn
+from app.contract.params import unknown_parameters
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
 from app.contract.units import TORQUE_LABELS, Display
@@ -120,6 +121,10 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         ranked_column="",
     )
     units, values = context["units"], context["values"]
+    unknown = unknown_parameters(params)
+    if unknown:
+        context["errors"] = {"form": " ".join(unknown.values())}
+        return context
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context
     inputs, context["errors"] = parse_inputs(values, units, catalog.motors, catalog.supports)
@@ -203,9 +208,15 @@ async def selector(request: Request, catalog: CatalogDep) -> Response:
 
 
 def link_inputs(
-    params: Mapping[str, str], catalog: Catalog
+    params: Mapping[str, str], catalog: Catalog, own: tuple[str, ...] = ()
 ) -> tuple[ApplicationIn, dict[str, str]]:
-    """Validated inputs and display units of an export or detail link; a 422 page if invalid."""
+    """Validated inputs and display units of an export or detail link; a 422 page if
+    invalid, or if it carries a parameter that neither the form nor the route (its
+    ``own`` names: a candidate's ``id``) reads."""
+    unknown = unknown_parameters(params, own)
+    if unknown:
+        detail = [{"field": name, "message": message} for name, message in unknown.items()]
+        raise AppError(422, "invalid input", detail)
     units, values, _, _ = form_state(params)
     inputs, errors = parse_inputs(values, units, catalog.motors, catalog.supports)
     if inputs is None:
@@ -238,7 +249,7 @@ def page_candidate(
 async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
-    inputs, units = link_inputs(request.query_params, catalog)
+    inputs, units = link_inputs(request.query_params, catalog, ("id",))
     c = page_candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
     try_query = catalog_screw_query(catalog.by_id[c.id], units)
@@ -263,7 +274,7 @@ async def compare(request: Request, catalog: CatalogDep) -> Response:
 
 
 def _compare_page(request: Request, catalog: Catalog) -> Response:
-    inputs, units = link_inputs(request.query_params, catalog)
+    inputs, units = link_inputs(request.query_params, catalog, ("ids",))
     query = share_query(inputs, units)
     context: dict[str, Any] = {"d": Display(units), "query": query, "candidates": []}
     try:

@@ -33,7 +33,7 @@ RUNNERS_UP = 4
 def report_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """The report of candidate ``id`` (else the top-ranked) for the link's inputs; a 422
     page for bad inputs, a 404 page for an unknown id."""
-    inputs, units = link_inputs(params, catalog)
+    inputs, units = link_inputs(params, catalog, ("id",))
     result, _ = run_page_selection(inputs, catalog, units)
     top = result.candidates[0].id if result.candidates else ""
     chosen = page_candidate(inputs, params.get("id", "") or top, catalog, units)

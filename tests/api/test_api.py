@@ -453,7 +453,8 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
     # fields beyond the issue's list are optional and stay off unless given
     # the self-locking margin, the advice policy, the dwell, the microsteps, the load
-    # direction, what holds and the thrust bearing's factor have defaults of their own
+    # direction, what holds, whether it must hold with the power off and the thrust
+    # bearing's factor have defaults of their own
     later = {
         "self_locking_friction_factor": 0.5,
         "advice": "warn",
@@ -466,6 +467,7 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
         "motor_current_rms": False,
         # the thrust bearing's static safety factor: THK's lower limit without vibration
         "support_static_safety_factor": 2.0,
+        "hold_power_off": True,
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)

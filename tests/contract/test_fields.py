@@ -34,6 +34,7 @@ from app.contract.form import (
 )
 from app.contract.inputs import ApplicationIn
 from app.contract.units import DEFAULT_UNITS, FORCE_UNITS, LENGTH_UNITS, TORQUE_UNITS
+from app.core import motion
 from app.core.model import Application
 from app.report.service import run_selection
 from app.web.export import results_csv
@@ -49,8 +50,8 @@ SHARE_LINK_NAMES = [
     "support_dynamic", "end_fixity", "require_anti_backlash", "coating", "family",
     "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
     "cycles_per_day", "hours_per_day", "required_life_years", "positioning_tolerance",
-    "brake_torque",
-    "holding_source", "detent_torque", "motor", "max_torque", "motor_curve",
+    "brake_torque", "holding_source", "detent_torque", "hold_power_off", "motor",
+    "max_torque", "motor_curve",
     "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
     "motor_supply", "motor_phase_current", "motor_current_rms", "motor_resistance",
     "motor_inductance",
@@ -118,9 +119,13 @@ def test_api_model_fields_are_the_tables() -> None:
 @pytest.mark.parametrize("field", [f for f in FIELDS if f.bounds], ids=lambda f: f.api)
 def test_bounds_are_enforced_by_the_api_model(field: InputField) -> None:
     low, high = field.bounds or (0.0, 0.0)
-    duty = {"stroke_mm": 100.0, "step_angle_deg": 1.8}
-    # a duty in cycles beside every field but the hours, which are the duty in its place
-    duty |= {"cycles_per_day": 10.0} if field.api != "hours_per_day" else {}
+    # the shortest stroke, fewest cycles and hardest ramps on the longest screw, so that
+    # the rules across fields (the stroke and the nut on the screw, the cycles a day holds)
+    # hold at every bound: each field's own bounds alone are judged here
+    duty = {"stroke_mm": 0.01, "cycles_per_day": 1e-3, "length_mm": 1e5, "accel_mm_s2": 1e6}
+    duty |= {"step_angle_deg": 1.8}
+    if field.api == "hours_per_day":
+        del duty["cycles_per_day"]  # the hours are the duty in the cycles' place
     duty |= {"motor_supply_v": 400.0, "motor_phase_current_a": 1.0}
     duty |= {"motor_resistance_ohm": 1.0, "motor_inductance_mh": 1.0}
     for value, valid in ((low, True), (high, True), (high * 2 + 1, False)):
@@ -288,6 +293,13 @@ def _value(field: InputField) -> st.SearchStrategy[Any]:
 def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
     """Valid inputs over the whole table; a field with ``needs`` only with them."""
     data = {field.api: draw(_value(field)) for field in FIELDS}
+    if data["stroke_mm"] is not None:  # the nut travels between the screw's ends
+        room = data["length_mm"] - (data["nut_length_mm"] or 0.0)
+        data["stroke_mm"] = data["stroke_mm"] if data["stroke_mm"] <= room else None
+    axis = Application(**{f.core: f.to_si(data[f.api]) for f in FIELDS})
+    p = motion.move_profile(axis)
+    if p is not None and (data["cycles_per_day"] or 0.0) * p.cycle_time_s > 86400.0:
+        data["cycles_per_day"] = None  # more cycles than a day holds
     for field in FIELDS:
         if any(data[name] is None for name in field.needs):
             data[field.api] = None

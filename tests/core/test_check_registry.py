@@ -222,6 +222,9 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     holding = {"holding", "holding_power_off"}
     # the thrust bearing's ratings are inputs, typed or a library unit's (as a motor's)
     support = {"support_static", "support_life"}
-    assert user_limits == {"torque", "accuracy", *holding, *motor, *controller, *support}
+    # the stroke and the nut against the user's own screw length
+    assert user_limits == {
+        "torque", "accuracy", "stroke_travel", *holding, *motor, *controller, *support
+    }  # fmt: skip
     for c in REGISTRY:
         assert set(c.capacity_sources) <= set(c.sources), c.name

@@ -32,8 +32,10 @@ Tr16x4 and Tr16x8(P4) PTFE nuts (Tr14x3's listed 343 N; Tr12x6(P3) 8 x pi x 10.5
 lists. "life-advice-reject" was recorded once more when the seed's rated travel became
 capped by the wear life of the same polyacetal nut at the cycle's wear thrust: at 60 N the
 ZBX, KHD and VHD TFE nuts wear through in under the 3 years asked (ZBX8000-L10: 14,640 km N
-/ 60 N = 244 km, 244e3 / (0.4 x 2000 x 365) = 0.84 years), so ISO nuts fill the list. Every
-path must still give them: select, a catalog screw evaluated alone, and a screw outside the
+/ 60 N = 244 km, 244e3 / (0.4 x 2000 x 365) = 0.84 years), so ISO nuts fill the list.
+"any-lead-vertical" was recorded again when holding with the power off became a
+requirement whose surest holds rank first: the screws whose thread alone holds. Every path
+must still give them: select, a catalog screw evaluated alone, and a screw outside the
 catalog with the same values (its variant rows built on the fly).
 """
 

@@ -21,6 +21,7 @@ from app.core.quantities import NAMES
 from app.core.record import Candidate
 from app.core.robustness import build_variants, robustness
 from app.core.screening import eligible_mask, screen_table
+from app.core.sections import number
 from app.core.selection import input_change, screen, select
 from app.core.table import CandidateTable
 from tests.core.conftest import applications, light_app
@@ -54,13 +55,22 @@ def test_screening_agrees_with_full_evaluation(catalog: Catalog, app: Applicatio
         assert s.total_torque_nm[k] == pytest.approx(ev.torque.total_nm, rel=1e-9)
 
 
+def rests_on_a_device(e: Candidate) -> bool:
+    """The power-off hold rests on a brake or detent torque: the thread alone does not
+    hold the load with the friction margin."""
+    thread = number(e.quantities.hold_thread_margin)
+    return thread is not None and thread < 1.0
+
+
 @FIXTURE_OK
 @given(app=applications)
 def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     """Counts cover every eligible candidate; passing ones come back ranked by the torque
-    shown (the peak motor torque under a move, else the drive torque), screws with a
-    warning after those without, rejected ones nearest-to-passing first (fewest failed
-    limits, then the smallest worst utilisation); each list is cut to ``app.limit``."""
+    shown (the peak motor torque under a move, else the drive torque), where a power-off
+    hold is required the screws whose thread alone holds before those resting on a brake
+    or detent torque, screws with a warning after those
+    without, rejected ones nearest-to-passing first (fewest failed limits, then the
+    smallest worst utilisation); each list is cut to ``app.limit``."""
     sel = select(app, catalog.index)
     evaluations = [
         evaluate(app, catalog.index.table.screws[i])
@@ -74,12 +84,15 @@ def test_selection_counts_and_order(catalog: Catalog, app: Application) -> None:
     assert len(sel.rejected) == min(app.limit, sel.evaluated - sel.passed)
     assert all(e.passed for e in sel.candidates)
     assert not any(e.passed for e in sel.rejected)
-    order = [(bool(e.warned), shown_torque(e)) for e in sel.candidates]
+    order = [(bool(e.warned), rests_on_a_device(e), shown_torque(e)) for e in sel.candidates]
     assert order == sorted(order)
     if sel.candidates:
-        passing = [(bool(e.warned), shown_torque(e)) for e in evaluations if e.passed]
+        passing = [
+            (bool(e.warned), rests_on_a_device(e), shown_torque(e)) for e in evaluations if e.passed
+        ]
         assert order[0][0] == min(passing)[0]
-        assert order[0][1] == pytest.approx(min(passing)[1])
+        assert order[0][1] == min(passing)[1]
+        assert order[0][2] == pytest.approx(min(passing)[2])
     nearness = [(len(e.failed_checks), e.max_utilization) for e in sel.rejected]
     assert nearness == sorted(nearness)
 

@@ -79,10 +79,11 @@ def test_the_verdict_rests_on_the_assumed_values_of_its_governing_check(
 
 def test_a_back_driving_vertical_screw_says_what_holds_it_power_off(catalog: Catalog) -> None:
     """Vertical, 10 kg on the nut: a screw that does not self-lock with margin names the
-    brake it needs (its brake torque) in its watch list."""
+    brake it needs (its brake torque) in its watch list. (The surest power-off holds rank
+    first, the self-locking ones among them: the list goes to 100 to reach the others.)"""
     app = Application(
         load_n=0.0, speed_m_s=0.05, length_m=0.3, moving_mass_kg=10.0,
-        orientation="vertical", brake_torque_nm=5.0,
+        orientation="vertical", brake_torque_nm=5.0, limit=100,
     )  # fmt: skip
     sel = select(app, catalog.index)
     loose = [c for c in sel.candidates if not c.self_locking_with_margin]

@@ -75,9 +75,11 @@ def test_other_queries_errors_and_posts_are_not_served_from_cache() -> None:
 
 
 def test_cache_is_bounded_by_bytes_and_can_be_turned_off() -> None:
+    # the full form: about 32 kB gzipped, each under the eighth of the budget an entry may
+    # take, some of twenty fit
     app = create_app(Settings(response_cache_bytes=8 * 40_000))
     client = TestClient(app, headers={"Accept-Encoding": "gzip"})
-    full = SELECT + "&detail=full"  # the full form: about 32 kB gzipped, some of twenty fit
+    full = SELECT + "&detail=full"
     for load in range(100, 120):
         client.get(full.replace("load_n=100", f"load_n={load}"))
     cache = _cache(app)

@@ -28,6 +28,7 @@ from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
 from app.core.checks.step_rate import StepRate
 from app.core.checks.step_resolution import StepResolution
+from app.core.checks.stroke_travel import StrokeTravel
 from app.core.checks.support_life import SupportLife
 from app.core.checks.support_static import SupportStatic
 from app.core.checks.temperature import Temperature
@@ -55,6 +56,7 @@ REGISTRY: tuple[Check, ...] = (
     TraverseSpeed(),
     DesignLoad(),
     Length(),
+    StrokeTravel(),
     OilCompatibility(),
     Temperature(),
     NutHeat(),

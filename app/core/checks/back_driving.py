@@ -39,10 +39,11 @@ class BackDriving(Check):
     capacity_sources = ("friction_static", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        """Nothing else holds with the power off: no torque given, or a stepper's
-        energised holding torque without its detent torque."""
+        """Holding with the power off is required, and nothing else holds then: no torque
+        given, or a stepper's energised holding torque without its detent torque."""
         unpowered = app.holding_source == "energised" and app.detent_torque_nm is None
-        return motion.holds_a_load(app) and (app.brake_torque_nm is None or unpowered)
+        needed = app.hold_power_off and motion.holds_a_load(app)
+        return needed and (app.brake_torque_nm is None or unpowered)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), t.lead_m, q.max_lock_lead_m)
@@ -59,26 +60,23 @@ class BackDriving(Check):
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        seed = efficiency.seed_backdrive_rule(s.lead_m, s.outer_diameter_m)
-        rule = (
-            ""
-            if seed == passed
-            else (
-                " The seed's rule of thumb (lead under diameter / 8) says "
-                + ("it does not back-drive." if seed else "it back-drives.")
-            )
-        )
-        values = {"f": Amount(app.self_locking_friction_factor, "factor")}
+        rule = rule_note(app, s, passed)
+        rule_text = "" if rule is None else " {rule}"
+        values: dict[str, Amount | Phrase] = {
+            "f": Amount(app.self_locking_friction_factor, "factor")
+        }
+        if rule is not None:
+            values["rule"] = rule
         if passed:
             return Phrase(
                 "Self-locking even with static friction at {f} x its value: the load cannot "
-                "drive the screw down." + rule,
+                "drive the screw down." + rule_text,
                 values,
             )
         return Phrase(
             "Not reliably self-locking (static friction at {f} x its value): the load can "
             "drive the screw down; holding torque {seed} (seed method), {physics} "
-            "(physics at {f} x static friction)." + rule,
+            "(physics at {f} x static friction)." + rule_text,
             {
                 **values,
                 "seed": Amount(r.holding_seed_nm, "torque"),
@@ -90,3 +88,23 @@ class BackDriving(Check):
         return brake_or_lead(
             "Give a brake (it holds with the power off) of at least {needed}", s, r, reach
         )
+
+
+def rule_note(app: Application, s: ScrewSpec, locks_with_margin: bool) -> Phrase | None:
+    """Where the catalog's rule of thumb (lead under OD / 8) and the physics (static
+    friction at the self-locking factor against the lead angle) disagree: what the rule
+    says, and that the physics governs, and why; None where they agree."""
+    seed = efficiency.seed_backdrive_rule(s.lead_m, s.outer_diameter_m)
+    if seed == locks_with_margin:
+        return None
+    return Phrase(
+        "The catalog's rule of thumb (lead under OD / 8 = {od8}) says it "
+        + ("holds" if seed else "back-drives")
+        + "; the friction calculation governs (static friction at {f} x its value "
+        "against the lead angle): the rule takes no account of this nut's friction, the "
+        "thread angle or the margin on friction.",
+        {
+            "od8": Amount(s.outer_diameter_m / 8.0, "length"),
+            "f": Amount(app.self_locking_friction_factor, "factor"),
+        },
+    )

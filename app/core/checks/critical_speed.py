@@ -1,5 +1,6 @@
 """Screw speed against the allowed fraction of its first whirling speed."""
 
+from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -44,7 +45,7 @@ class CriticalSpeed(Check):
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "v": app.speed_m_s,
+            "v": motion.reached_speed(app),
             "lead": t.lead_m,
             "SF": app.critical_speed_safety_factor,
             "beta": critical_speed.END_FIXITY_BETA[app.end_fixity],
@@ -74,7 +75,7 @@ class CriticalSpeed(Check):
             )
             return critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor)
 
-        lead = critical_speed.min_lead_for_speed(app.speed_m_s, r.allowed_rpm)
+        lead = critical_speed.min_lead_for_speed(motion.reached_speed(app), r.allowed_rpm)
         d_min = critical_speed.min_root_diameter_for_speed(s.root_diameter_m, r.allowed_rpm, r.rpm)
         options = []
         values: dict[str, Amount | str] = {

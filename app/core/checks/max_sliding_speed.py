@@ -1,5 +1,6 @@
 """Flank sliding speed of a polymer nut against the material's maximum sliding speed."""
 
+from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -56,8 +57,10 @@ class MaxSlidingSpeed(Check):
         )
 
     def _max_linear_speed(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
-        """The linear speed at which the sliding speed meets the maximum (proportional)."""
-        return app.speed_m_s * (s.max_sliding_speed_m_s or 0.0) / r.sliding_speed_m_s
+        """The linear speed at which the sliding speed meets the maximum (proportional to
+        the speed reached, the triangle's peak on a short stroke)."""
+        speed = motion.reached_speed(app)
+        return speed * (s.max_sliding_speed_m_s or 0.0) / r.sliding_speed_m_s
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(

@@ -39,7 +39,8 @@ class HoldingPowerOff(Check):
 
     def applies(self, app: Application) -> bool:
         return (
-            motion.holds_a_load(app)
+            app.hold_power_off
+            and motion.holds_a_load(app)
             and app.holding_source == "energised"
             and app.detent_torque_nm is not None
         )

@@ -1,5 +1,6 @@
 """Linear speed against the family's recommended speed for the lead (a band table)."""
 
+from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -36,13 +37,13 @@ class TraverseSpeed(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         limit = t.traverse_limit_m_s
-        return Measure(where_given(limit), same(t, app.speed_m_s), limit)
+        return Measure(where_given(limit), same(t, motion.reached_speed(app)), limit)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "v_linear": app.speed_m_s,
+            "v_linear": motion.reached_speed(app),
             "v_band": lambda lead: band_speed_m_s(lead, t.screws[0].traverse_bands),
             "lead": t.lead_m,
         }
@@ -52,7 +53,7 @@ class TraverseSpeed(Check):
         verb = "is within" if passed else "exceeds"
         note = ""
         values: dict[str, Amount | str] = {
-            "v": Amount(app.speed_m_s, "speed"),
+            "v": Amount(motion.reached_speed(app), "speed"),
             "limit": Amount(limit, "speed"),
         }
         if not s.traverse_bands[0][0] <= s.lead_m <= s.traverse_bands[-1][1]:
@@ -62,7 +63,7 @@ class TraverseSpeed(Check):
         return Phrase("{v} " + verb + " the recommended {limit} for this lead" + note + ".", values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        faster = [band for band in s.traverse_bands if band[2] >= app.speed_m_s]
+        faster = [band for band in s.traverse_bands if band[2] >= motion.reached_speed(app)]
         lead = reach.made_lead(s, faster[0][0], larger=True) if faster else None
         if lead is None:
             return Phrase(

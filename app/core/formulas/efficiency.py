@@ -7,6 +7,9 @@ The manufacturer's square-thread form is ``square_thread_efficiency`` for compar
 """
 
 import math
+from typing import Any
+
+import numpy as np
 
 from app.core.formulas.declare import SEED, SHIGLEY, formula
 
@@ -122,6 +125,29 @@ def max_self_locking_lead(
     2.5133
     """
     return math.pi * pitch_diameter_m * friction_static / cos_half_angle
+
+
+@formula(
+    "m_hold = max(lead_max / lead, T_unpowered / T_needed)",
+    SHIGLEY + " (self-locking); " + SEED + " (Back Driving)",
+)
+def hold_margin(max_lock_lead_m: Any, lead_m: Any, unpowered_nm: Any, needed_nm: Any) -> Any:
+    """Margin of holding a load with the power off [-], at 1 or more it holds: the larger
+    of the thread's, lead_max / lead (lead_max [m] the longest lead that self-locks at the
+    trusted static friction f mu_s, lead [m] the screw's: the ratio is f mu_s over the
+    friction that just locks), and the unpowered torque's, T_unpowered / T_needed (a
+    brake's or a stepper's detent torque [N m] over the holding torque needed with its
+    safety factor [N m]; NaN for no such torque). Floats or arrays; valid for lead > 0.
+
+    Source: Shigley [2] sec. 8-2, self-locking condition mu >= cos a_n tan lambda (with
+    lead = pi d_p tan lambda); seed [1] "Back Driving" for the holding torque.
+
+    >>> float(hold_margin(4.0e-3, 2.0e-3, float("nan"), 1.0))
+    2.0
+    >>> round(float(hold_margin(1.0e-3, 2.0e-3, 0.3, 0.2)), 9)
+    1.5
+    """
+    return np.fmax(np.divide(max_lock_lead_m, lead_m), np.divide(unpowered_nm, needed_nm))
 
 
 @formula("T_b = F lead eta / (2 pi)", SEED + " (Back Driving)")

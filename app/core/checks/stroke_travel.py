@@ -1,0 +1,78 @@
+"""The stroke and the nut on the screw: the nut travels the stroke between the screw's ends.
+
+The input refuses a stroke of the screw's length or more (less the nut length when one is
+typed); the catalog nut's own length differs by size (a trapezoidal nut twice the
+diameter), so that each candidate's is judged here.
+"""
+
+from app.core.checks.base import (
+    MARGIN_NOTE,
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    at_least,
+    at_most,
+    same,
+    where_given,
+)
+from app.core.phrase import Amount, Phrase
+
+
+class StrokeTravel(Check):
+    name = "stroke_travel"
+    label = "Stroke on the screw"
+    description = (
+        "The nut travels the stroke between the screw's ends: the stroke plus the nut's "
+        "length (the one typed, else the catalog's) must fit in the screw length. Where the "
+        "catalog gives no nut length the input's own limit (stroke under the screw length) "
+        "is all that is judged."
+    )
+    quantity = "length"
+    formula = "s_total = stroke + L_nut; L = L_screw"
+    source = "geometry: the nut stays on the thread over the whole stroke"
+    sources = ("nut_length",)
+
+    def applies(self, app: Application) -> bool:
+        return app.stroke_m is not None
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        total = (app.stroke_m or 0.0) + q.nut_length_m
+        return Measure(where_given(q.nut_length_m), total, same(t, app.length_m))
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {"stroke": app.stroke_m, "L_nut": q.nut_length_m, "L_screw": app.length_m}
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        verb = "fit within" if passed else "exceed"
+        return Phrase(
+            "The stroke {s} and the nut {nut} " + verb + " the screw length {L}.",
+            {
+                "s": Amount(app.stroke_m or 0.0, "length"),
+                "nut": Amount(r.nut_length_m, "length"),
+                "L": Amount(app.length_m, "length"),
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        longer = {"L": Amount(at_least((app.stroke_m or 0.0) + r.nut_length_m), "length")}
+        room = app.length_m - r.nut_length_m
+        if room <= 0.0:
+            return Phrase("Lengthen the screw to at least {L}." + MARGIN_NOTE, longer)
+        return Phrase(
+            "Shorten the stroke to at most {s}, or lengthen the screw to at least {L}."
+            + MARGIN_NOTE,
+            {**longer, "s": Amount(at_most(room), "length")},
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        return {"length_m": (app.stroke_m or 0.0) + r.nut_length_m}

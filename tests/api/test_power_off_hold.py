@@ -1,0 +1,113 @@
+"""Issue 29, item 8: "must hold with the power off" as one requirement, answered yes or no
+with its margin; the catalog's rule of thumb beside the friction calculation, saying which
+governs; the surest holds ranked first."""
+
+import math
+
+import pytest
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+from tests.api.calls import check, evaluate, names
+
+#: 20 kg on a vertical Tr16x4 with a PTFE-filled nut (mu_s 0.20, catalog
+#: iso-trapezoidal/common.toml, assumed), d_p = 14 mm, 30-degree thread (a_n = 15 deg).
+VERTICAL = {"load_n": 0.0, "moving_mass_kg": 20.0, "orientation": "vertical",
+            "speed_mm_s": 50.0, "length_mm": 500.0}  # fmt: skip
+COS_15 = math.cos(math.radians(15.0))
+
+
+def lock_lead_mm(factor: float) -> float:
+    """Shigley sec. 8-2: the longest lead that self-locks, pi d_p f mu_s / cos a_n [mm]."""
+    return math.pi * 14.0 * factor * 0.20 / COS_15
+
+
+def test_the_thread_holds_with_its_margin(client: TestClient) -> None:
+    """f = 0.5: lead_max = pi x 14 x 0.5 x 0.20 / cos 15 = 4.553 mm, margin 4.553 / 4 =
+    1.138: yes, by the thread."""
+    c = evaluate(client, "Tr16x4-ptfe", **VERTICAL)
+    assert lock_lead_mm(0.5) == pytest.approx(4.553, abs=1e-3)
+    assert c["holds_power_off"] is True and c["holds_by"] == "thread"
+    assert c["hold_margin"] == pytest.approx(lock_lead_mm(0.5) / 4.0, rel=1e-9)
+    assert check(c, "back_driving")["passed"]
+
+
+def test_a_thin_margin_is_a_no_and_a_fail(client: TestClient) -> None:
+    """f = 0.4: lead_max = 3.642 mm < 4 mm, margin 0.911: no, and the check fails."""
+    c = evaluate(client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4)
+    assert c["hold_margin"] == pytest.approx(lock_lead_mm(0.4) / 4.0, rel=1e-9)
+    assert c["hold_margin"] == pytest.approx(0.9106, abs=1e-4)
+    assert c["holds_power_off"] is False and not c["passed"]
+    assert not check(c, "back_driving")["passed"]
+
+
+def test_a_brake_answers_with_its_own_margin(client: TestClient) -> None:
+    """f = 0.4 and a 0.3 N m brake: the thread's 0.911 is not enough, the brake's margin is
+    0.3 N m over the torque needed (the larger of the seed's and the friction's at f mu_s,
+    times the holding factor 1)."""
+    c = evaluate(
+        client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4, brake_torque_nm=0.3
+    )
+    needed = c["holding_torque"]["brake_nm"]
+    assert needed > 0.0
+    assert c["holds_by"] == "brake" and c["holds_power_off"] is True
+    assert c["hold_margin"] == pytest.approx(0.3 / needed, rel=1e-9)
+
+
+def test_no_requirement_no_answer_and_no_check(client: TestClient) -> None:
+    """hold_power_off false: the energised motor holds; the back-driving check and the
+    answer are left out (the thread that would fail at f = 0.4 is no longer rejected)."""
+    c = evaluate(
+        client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4,
+        hold_power_off=False,
+    )  # fmt: skip
+    assert c["holds_power_off"] is None and c["hold_margin"] is None
+    assert "back_driving" not in names(c)
+
+
+def test_nothing_held_nothing_to_answer(client: TestClient) -> None:
+    """A horizontal axis whose load opposes the motion holds nothing at rest."""
+    c = evaluate(client, "Tr16x4-ptfe", load_n=50.0, speed_mm_s=50.0, length_mm=500.0)
+    assert c["holds_power_off"] is None and c["holds_by"] is None
+
+
+def test_the_rule_of_thumb_says_which_governs(client: TestClient) -> None:
+    """Tr16x4: lead 4 mm is not under OD / 8 = 2 mm, so the catalog's rule says it
+    back-drives, while friction at 0.5 x 0.20 holds it: the row says the friction
+    calculation governs. Where they agree (f = 0.4: both say it back-drives) it is silent."""
+    c = evaluate(client, "Tr16x4-ptfe", **VERTICAL)
+    assert not c["seed_rule_no_backdrive"] and c["holds_power_off"]
+    assert "governs" in c["holding_rule"] and "back-drives" in c["holding_rule"]
+    agree = evaluate(client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4)
+    assert agree["holding_rule"] is None
+
+
+def test_surest_holds_rank_first(client: TestClient) -> None:
+    """With the requirement (the default), the passing screws come largest hold margin
+    first; without it the order is the torque's."""
+    held = client.post("/api/v1/select", params={"detail": "full"}, json={**VERTICAL, "limit": 30})
+    margins = [c["hold_margin"] for c in held.json()["candidates"]]
+    assert len(margins) == 30 and all(m >= 1.0 for m in margins)
+    assert margins == sorted(margins, reverse=True)
+    free = client.post(
+        "/api/v1/select", params={"detail": "full"},
+        json={**VERTICAL, "limit": 30, "hold_power_off": False},
+    ).json()["candidates"]  # fmt: skip
+    torques = [c["torque"]["total_nm"] for c in free]  # no stroke: the torque shown
+    assert torques == sorted(torques)
+    assert {c["hold_margin"] for c in free} == {None}
+
+
+def test_the_results_row_answers_and_says_which_governs(client: TestClient) -> None:
+    """On the page each row of a vertical axis answers yes or no with its margin; where
+    the rule of thumb disagrees the row says the friction calculation governs. Answered
+    "no" (the energised motor holds), the rows carry no answer."""
+    page = {"load": "0", "moving_mass_kg": "20", "orientation": "vertical", "speed": "50",
+            "length": "500"}  # fmt: skip
+    rows = BeautifulSoup(client.get("/", params=page).text, "html.parser")
+    answers = [a.text for a in rows.select("td.backdrive .hold-answer")]
+    assert answers and all(a.startswith("Holds power-off: yes, margin ") for a in answers)
+    notes = [n.text for n in rows.select("td.backdrive .rule-note")]
+    assert notes and all("friction calculation governs" in n for n in notes)
+    off = client.get("/", params={**page, "hold_power_off": "false"}).text
+    assert BeautifulSoup(off, "html.parser").select("td.backdrive .hold-answer") == []
