@@ -83,12 +83,22 @@ def test_the_rule_of_thumb_says_which_governs(client: TestClient) -> None:
 
 
 def test_surest_holds_rank_first(client: TestClient) -> None:
-    """With the requirement (the default), the passing screws come largest hold margin
-    first; without it the order is the torque's."""
+    """With the requirement (the default), the passing screws whose thread alone holds
+    come first, each group in the torque's order; without it the order is the torque's.
+    With a brake of 2 N m the long leads hold only by the brake: they come after."""
     held = client.post("/api/v1/select", params={"detail": "full"}, json={**VERTICAL, "limit": 30})
-    margins = [c["hold_margin"] for c in held.json()["candidates"]]
-    assert len(margins) == 30 and all(m >= 1.0 for m in margins)
-    assert margins == sorted(margins, reverse=True)
+    rows = held.json()["candidates"]
+    assert len(rows) == 30 and all(c["hold_margin"] >= 1.0 for c in rows)
+    by_thread = [c["holds_by"] == "thread" for c in rows]
+    assert by_thread == sorted(by_thread, reverse=True)
+    torques = [c["torque"]["total_nm"] for c in rows if c["holds_by"] == "thread"]
+    assert torques == sorted(torques)
+    braked = client.post(
+        "/api/v1/select", params={"detail": "full"},
+        json={**VERTICAL, "limit": 100, "brake_torque_nm": 2.0},
+    ).json()["candidates"]  # fmt: skip
+    on_brake = [c["holds_by"] != "thread" for c in braked]
+    assert any(on_brake) and not on_brake[0] and on_brake == sorted(on_brake)
     free = client.post(
         "/api/v1/select", params={"detail": "full"},
         json={**VERTICAL, "limit": 30, "hold_power_off": False},
