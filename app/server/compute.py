@@ -1,15 +1,16 @@
 """Computing off the event loop: the full forms of a selection (``detail=full`` and the
-exports) run on a few threads of their own.
+exports), the pairs, comparisons and every page that runs a selection (results, detail)
+run on a few threads of their own.
 
-A costly request (every number of a hundred candidates takes about 50 ms) computed on
-the event loop holds up everything else the loop does, the health check included: with
-64 clients on such queries the health check waited seconds, past any probe's timeout.
-On its own threads the compute leaves the loop free to accept, parse and answer; the
-threads are few (``compute_threads``) so the loop competes for the interpreter with few
-others, and how much work waits for them is bounded by the admission in
-``app.server.overload``. A compact select or a page (a few milliseconds) stays on the
-loop: handing it to a thread and back would cost about as much as it frees.
-"""
+A costly request (every number of a hundred candidates takes about 50 ms, a results page
+of a hundred about 80 ms) computed on the event loop holds up everything else the loop
+does, the health check included: with 64 clients on such queries the health check waited
+seconds, past any probe's timeout. On its own threads the compute leaves the loop free to
+accept, parse and answer; the threads are few (``compute_threads``) so the loop competes
+for the interpreter with few others, and how much work waits for them is bounded by the
+admission in ``app.server.overload``. A compact select (a few milliseconds) stays on the
+loop: handing it to a thread and back would cost about as much as it frees. Pages that
+depend on nothing but the catalog (/catalog, /guide, /validation) are rendered once."""
 
 import asyncio
 from collections.abc import Callable
