@@ -20,7 +20,8 @@ the defence holds, "BROKEN" when the attack gets through.
    (``detail=ful%6C``, a limit in the body) counted by their cost; numbers past any float
    and a hot axis without a 500; share links that reproduce the API and a motor curve;
    the 405's Allow; what the cache's timing reveals. (Its hostile catalog files are in 6,
-   its command-line values in 7.)
+   its command-line values in 7.) Its item 7 (9.7): nginx's access log under a flood of
+   429s from one address, and SIGTERM under 16 kept-alive clients.
 
 Figures are taken on whatever else the machine is doing; each attack runs seconds.
 """
@@ -29,6 +30,7 @@ import http.client
 import json
 import multiprocessing
 import os
+import random
 import re
 import socket
 import statistics
@@ -44,7 +46,7 @@ from typing import Any
 
 import yaml
 
-from bench import load
+from bench import load, wrk
 from bench.hostile import cli_server
 from bench.report import Report
 from deploy.local import NGINX, free_port, nginx_in_front, stop, wait_until_healthy
@@ -569,6 +571,109 @@ def small_ones(report: Report) -> None:
     held(report, "9.8 README says what the cache's timing reveals", f"{honest}", honest)
 
 
+# --- 9.7 issue 31, item 7: logs and shutdown under floods -------------------------------------
+
+#: access-log lines per refusal at most: one in a hundred is sampled (deploy/)
+LOG_LINES_PER_REFUSAL = 0.02
+
+
+def refusal_log(report: Report, seconds: float, tmp: Path) -> None:
+    report.section("9.7 nginx's access log under a flood of 429s from one address")
+    if not (Path(NGINX).exists() and wrk.available()):
+        report.line("9.7 access log", "not measured", "nginx and wrk installed", None)
+        return
+    tmp.mkdir()
+    with nginx_in_front(tmp, apps=1) as port:
+        result = wrk.run(f"http://127.0.0.1:{port}/static/css/app.css", int(seconds),
+                         connections=16)  # fmt: skip
+    # nginx has stopped: its buffered lines are written
+    log = tmp / "logs" / "access.log"
+    log_bytes = log.stat().st_size
+    lines = log.read_text(errors="replace").count('" 429 ')
+    refused = result.non_2xx_3xx
+    report.info("requests, 429s", f"{result.requests:,}, {refused:,} in {seconds:g} s")
+    report.info("access.log", f"{log_bytes:,} B ({log_bytes / seconds / 1e3:.0f} kB/s), "
+                f"{lines:,} lines of 429")  # fmt: skip
+    held(report, "9.7 429s sampled in the access log", f"{lines / max(refused, 1):.4f} lines each",
+         refused > 1000 and lines / refused <= LOG_LINES_PER_REFUSAL)  # fmt: skip
+
+
+def _keep_asking(port: int, stop_at: threading.Event, log: list[tuple[float, str]]) -> None:
+    """One kept-alive client asking for the health check again and again, up to 20 ms
+    apart (idle in between, as a browser's or a balancer's connection is), until the
+    connection ends or ``stop_at``: (when the request was sent, how it ended) each, how
+    being 'answered', 'answered, close', 'closed' (end of stream) or 'reset'."""
+    sock = socket.create_connection(("127.0.0.1", port), timeout=30)
+    request = b"GET /api/v1/health HTTP/1.1\r\nHost: bench\r\n\r\n"
+    pause = random.Random(port * 1000 + threading.get_ident() % 1000)
+    try:
+        while not stop_at.wait(pause.uniform(0, 0.02)):
+            sent = time.monotonic()
+            try:
+                sock.sendall(request)
+                sent = time.monotonic()
+                data = b""
+                while b"\r\n\r\n" not in data:
+                    chunk = sock.recv(65536)
+                    if not chunk:
+                        log.append((sent, "closed"))
+                        return
+                    data += chunk
+            except (ConnectionResetError, BrokenPipeError):
+                log.append((sent, "reset"))
+                return
+            head, _, body = data.partition(b"\r\n\r\n")
+            match = re.search(rb"content-length: *(\d+)", head, re.I)
+            length = int(match.group(1)) if match else 0
+            while len(body) < length:
+                body += sock.recv(65536)
+            close = re.search(rb"connection: *close", head, re.I) is not None
+            log.append((sent, "answered, close" if close else "answered"))
+            if close:
+                return
+    finally:
+        sock.close()
+
+
+def stop_under_keep_alive(report: Report) -> None:
+    report.section("9.7 SIGTERM under 16 kept-alive clients, each asking every 0-20 ms")
+    port = free_port()
+    cmd = [sys.executable, "-m", "app.cli", "--port", str(port), "--log-level", "warning"]
+    proc = subprocess.Popen(cmd, cwd=ROOT)
+    log: list[tuple[float, str]] = []
+    halt = threading.Event()
+    try:
+        wait_until_healthy(port, proc, "app.cli")
+        clients = [threading.Thread(target=_keep_asking, args=(port, halt, log)) for _ in range(16)]
+        for client in clients:
+            client.start()
+        time.sleep(1.0)
+        signalled = time.monotonic()
+        proc.terminate()
+        for client in clients:
+            client.join(timeout=30)
+        halt.set()
+        status = proc.wait(timeout=30)
+    finally:
+        halt.set()
+        stop(proc)
+    before = [how for sent, how in log if sent < signalled]
+    after = [how for sent, how in log if sent >= signalled]
+    lost = [how for how in before if not how.startswith("answered")]
+    report.info("sent before the signal", _counted(before))
+    report.info("sent after it", _counted(after))
+    held(report, "9.7 requests sent before SIGTERM answered", f"{len(lost)} not answered",
+         not lost and len(before) > 0)  # fmt: skip
+    resets = sum(1 for _, how in log if how == "reset")
+    held(report, "9.7 requests after it: no reset", f"{resets} reset", resets == 0)
+    held(report, "9.7 exit status", f"{status}", status == 0)
+
+
+def _counted(hows: list[str]) -> str:
+    counts = {how: hows.count(how) for how in sorted(set(hows))}
+    return ", ".join(f"{how}: {n:,}" for how, n in counts.items()) or "none"
+
+
 def issue_31(report: Report) -> None:
     """The attacks of issue 31 (its items 1, 3, 4, 5, 6 (in 6 above) and 8)."""
     catalog_dir_option(report)
@@ -589,3 +694,5 @@ def run(report: Report, *, seconds: float, tmp: Path) -> None:
     leaks_and_options(report)
     kubernetes(report, slowest)
     issue_31(report)
+    refusal_log(report, seconds, tmp / "nginx-refusals")
+    stop_under_keep_alive(report)

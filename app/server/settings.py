@@ -25,6 +25,9 @@ class Settings(BaseSettings):
     max_requests_in_flight: int = 32
     #: threads that compute selections and pages, off the event loop (app.server.compute)
     compute_threads: int = 2
+    #: how often the interpreter lets another thread run while the compute threads work [s]
+    #: (Python's own is 5 ms: app.server.compute)
+    thread_switch_interval_s: float = 0.0005
     #: the Retry-After of those 503s
     overload_retry_after_s: int = 1
     # --- the server (app.cli, app.server.protocol) ---
