@@ -30,10 +30,10 @@ def executor() -> ThreadPoolExecutor:
     """The process's compute threads (one pool, whatever the number of apps).
 
     With them comes a shorter thread switch interval (``thread_switch_interval_s``). The
-    event loop gives up the interpreter at each socket call (read, send, poll) and then
-    waits for a compute thread to hand it back, which Python does every 5 ms by default:
-    a loop answering a flood makes hundreds of such calls a second, and the health check
-    queued behind them waited over a second. Every 0.5 ms, the wait is a tenth.
+    event loop gives up the interpreter at each socket call (poll, read, send) and then
+    waits for a busy compute thread to hand it back, which Python makes it do after the
+    switch interval, 5 ms by default: a loop answering a flood makes hundreds of such
+    calls a second, each of which could wait that long. At 0.5 ms each waits a tenth.
     """
     settings = get_settings()
     sys.setswitchinterval(settings.thread_switch_interval_s)

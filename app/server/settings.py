@@ -36,6 +36,9 @@ class Settings(BaseSettings):
     request_read_timeout_s: float = 10.0
     #: an idle connection between two requests is closed after this many seconds
     keep_alive_timeout_s: int = 5
+    #: on SIGTERM, requests still in progress this many seconds later are cancelled and
+    #: the process exits (under Kubernetes' 30 s grace period less the 5 s preStop pause)
+    graceful_shutdown_timeout_s: int = 20
     #: request line and headers together, in bytes, and the number of header lines (431)
     max_header_bytes: int = 32 * 1024
     max_headers: int = 100
