@@ -208,14 +208,14 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         self.received_head_bytes = self.head_bytes = self.head_count = 0
         if len(self.connections) <= self.max_connections:
             super().on_headers_complete()
-            if self.stopping and self.cycle is not None:
-                self.cycle.keep_alive = False  # answered with Connection: close
-            return
-        app, self.app = self.app, self.over_limit  # uvicorn starts ``self.app`` for the request
-        try:
-            super().on_headers_complete()
-        finally:
-            self.app = app
+        else:
+            app, self.app = self.app, self.over_limit  # uvicorn starts ``self.app`` for it
+            try:
+                super().on_headers_complete()
+            finally:
+                self.app = app
+        if self.stopping and self.cycle is not None:
+            self.cycle.keep_alive = False  # answered with Connection: close
 
     def send_400_response(self, msg: str) -> None:
         """uvicorn's answer to a request it cannot parse; 431 when the head is too large."""
