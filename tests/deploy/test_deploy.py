@@ -206,7 +206,7 @@ def test_pods_stop_and_are_disrupted_gracefully() -> None:
 
 def test_probe_timeouts_leave_room_for_a_busy_pod() -> None:
     """A probe waits longer than the health check took under the floods of attack 2 of
-    ``bench/run.py --only attacks`` (at most 3.0 s, on a 2-core machine at a load average
+    ``bench/run.py --only attacks`` (at most 2.7 s, on a 2-core machine at a load average
     of 12), and liveness, which restarts the pod, is the more patient of the two."""
     (container,) = _manifests()["Deployment"]["spec"]["template"]["spec"]["containers"]
     ready, live = container["readinessProbe"], container["livenessProbe"]
