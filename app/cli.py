@@ -143,6 +143,8 @@ def main(argv: list[str] | None = None) -> int:
         # request-read deadline and head limits: app.server.protocol, from the same settings
         http=BoundedHttpToolsProtocol,
         timeout_keep_alive=settings.keep_alive_timeout_s,
+        # kept-alive connections drain and close cleanly: app.server.protocol
+        timeout_graceful_shutdown=settings.graceful_shutdown_timeout_s,
     )
     return 0
 

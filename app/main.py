@@ -24,6 +24,8 @@ from app.web.errors import app_error_handler, http_error_handler, validation_err
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
 CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
+#: GET routes whose response depends on nothing in the request: one entry for any query.
+QUERY_FREE_PATHS = frozenset({"/catalog", "/guide", "/validation"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
 FRAGMENT_PATHS = frozenset({"/", "/detail"})
 
@@ -42,6 +44,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         redoc_url=None,
     )
     app.state.catalog = load_catalog(settings.catalog_dirs)
+    # the pages that depend on nothing but the code and the catalog, rendered once here
+    app.state.catalog_html = pages.catalog_html(app.state.catalog)
+    guide.guide_html()
+    guide.validation_html()
     app.include_router(api.router)
     app.include_router(pages.router)
     app.include_router(custom.router)
@@ -69,6 +75,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         fragment_paths=FRAGMENT_PATHS,
         max_bytes=settings.response_cache_bytes,
         max_entries=settings.response_cache_entries,
+        query_free_paths=QUERY_FREE_PATHS,
     )
     app.add_middleware(
         SecurityMiddleware,

@@ -74,7 +74,9 @@ class ResponseCache:
 
     Bounded by the bytes its entries hold (``max_bytes``; 0 turns it off) and by their
     number (``max_entries``). Responses on ``fragment_paths`` differ between an HTMX swap
-    and a full page; the others do not.
+    and a full page; the others do not. Responses on ``query_free_paths`` do not depend on
+    the query at all: one entry serves every query, so ``/catalog?x=1``, ``?x=2``... cannot
+    make the process compress its largest page again for each.
     """
 
     def __init__(
@@ -84,9 +86,11 @@ class ResponseCache:
         fragment_paths: frozenset[str],
         max_bytes: int,
         max_entries: int,
+        query_free_paths: frozenset[str] = frozenset(),
     ) -> None:
         self.app = app
-        self.paths = paths
+        self.paths = paths | query_free_paths
+        self.query_free_paths = query_free_paths
         self.fragment_paths = fragment_paths
         self.max_bytes = max_bytes
         self.max_entries = max_entries
@@ -103,7 +107,8 @@ class ResponseCache:
         headers = scope.get("headers", [])
         path: str = scope["path"]
         fragment = path in self.fragment_paths and is_htmx_fragment(headers)
-        inputs = (path, scope.get("query_string", b""), accepts_gzip(headers), fragment)
+        query = b"" if path in self.query_free_paths else scope.get("query_string", b"")
+        inputs = (path, query, accepts_gzip(headers), fragment)
         return hashlib.sha256(repr(inputs).encode()).digest()
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:

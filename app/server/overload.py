@@ -3,8 +3,9 @@
 One worker computes one response at a time; when more requests arrive than it can finish
 promptly, holding them all makes every one of them slow (at 256 connections, seconds
 each, and clients time out). Past ``max_in_flight`` units of work in progress (a request
-costs one unit, and a full form of a hundred candidates as much as thirteen compact
-selects, counted once its input is validated: ``charge``) this answers 503 with
+costs one unit, a full form of a hundred candidates as much as thirteen compact selects
+and a results page of a hundred as much as eleven, counted once its input is validated:
+``charge``) this answers 503 with
 Retry-After straight away, so the requests that are taken stay fast and a balancer or
 client can go elsewhere or come back.
 The health check is never shed: a worker that is busy is not down.
@@ -49,6 +50,21 @@ def full_form_units(limit: int) -> int:
     (13, 2, 1)
     """
     return 1 + min(max(limit, 1), LIMIT_MOST) // FULL_FORM_CANDIDATES_PER_UNIT
+
+
+#: Results a page shows for the cost of one compact select: its table, charts and rejected
+#: list (measured with ``limit`` 10, 50 and 100: about 1.3, 2.9 and 6.7 compact selects).
+PAGE_CANDIDATES_PER_UNIT = 10
+
+
+def page_units(limit: int) -> int:
+    """Units of work of a results page (full or fragment) of ``limit`` results: 1 +
+    limit / 10 (100: 11 units, about 0.75 of a full form of 100); an empty form is 1.
+
+    >>> page_units(100), page_units(10), page_units(1)
+    (11, 2, 1)
+    """
+    return 1 + min(max(limit, 1), LIMIT_MOST) // PAGE_CANDIDATES_PER_UNIT
 
 
 def charge(scope: Scope, units: int) -> None:

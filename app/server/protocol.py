@@ -17,6 +17,10 @@ value in memory as readily as a short one. This protocol adds both bounds:
   (uvicorn's own limit answers every request a bare 503, the health check included, so
   a thousand idle sockets would make a balancer take the process for dead).
 
+* on SIGTERM, a request already sent on a kept-alive connection is answered, and the
+  connection then closed cleanly (``shutdown``), where uvicorn's own would close an idle
+  connection at once and reset any request waiting unread in its socket.
+
 The limits come from ``app.server.settings`` (``LEADSCREW_*``), so every worker process that
 uvicorn starts reads the same ones.
 """
@@ -36,6 +40,13 @@ from app.server.settings import get_settings
 logger = logging.getLogger("uvicorn.error")
 #: what a header line adds to the head besides its name and value: ": " and CRLF
 HEADER_LINE_OVERHEAD_BYTES = 4
+#: On SIGTERM, how long an idle kept-alive connection stays open for a request already on
+#: its way (sent before the signal and not yet read by a busy loop, or crossing it): such a
+#: request is answered with ``Connection: close``. Then the connection is half-closed, and
+#: what the client still sends is read and dropped for ``SHUTDOWN_LINGER_S`` at most, so
+#: the close is a FIN, never a reset.
+SHUTDOWN_DRAIN_S = 0.5
+SHUTDOWN_LINGER_S = 2.0
 
 
 class HeadTooLarge(Exception):
@@ -83,6 +94,11 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         self.head_bytes = 0
         self.head_count = 0
         self.head_too_large = False
+        # set by ``shutdown``: no request after the one in progress; the drain's timer;
+        # whether the connection is half-closed (what arrives is dropped)
+        self.stopping = False
+        self.drain_timer: asyncio.TimerHandle | None = None
+        self.half_closed = False
 
     # --- the read deadline ----------------------------------------------------------
 
@@ -108,11 +124,48 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
 
     def connection_lost(self, exc: Exception | None) -> None:
         self._stop_read_deadline()
+        self._stop_drain()
         super().connection_lost(exc)
 
     def on_message_begin(self) -> None:
         super().on_message_begin()
         self._start_read_deadline()
+        # a request under way during the drain is answered, and then closes the connection
+        self._stop_drain()
+
+    # --- graceful shutdown ----------------------------------------------------------
+
+    def shutdown(self) -> None:
+        """The server stops (SIGTERM): the request in progress is answered with
+        ``Connection: close`` (as uvicorn does); an idle connection is kept for
+        ``SHUTDOWN_DRAIN_S`` so that a request already sent is answered the same way, then
+        closed cleanly (``_close_idle``)."""
+        self.stopping = True
+        if self.cycle is not None and not self.cycle.response_complete:
+            self.cycle.keep_alive = False
+            return
+        if self.received_head_bytes:
+            return  # a request's head is arriving: answered, or ended by the read deadline
+        self._unset_keepalive_if_required()
+        self.drain_timer = self.loop.call_later(SHUTDOWN_DRAIN_S, self._close_idle)
+
+    def _stop_drain(self) -> None:
+        if self.drain_timer is not None:
+            self.drain_timer.cancel()
+            self.drain_timer = None
+
+    def _close_idle(self) -> None:
+        """Half-close: a FIN tells the client no answer will come; what it still sends is
+        read and dropped (``data_received``), so the kernel never answers it with a reset;
+        the connection ends when the client closes its side, or after
+        ``SHUTDOWN_LINGER_S``."""
+        self.drain_timer = None
+        if self.transport.is_closing():
+            return
+        self.half_closed = True
+        if self.transport.can_write_eof():
+            self.transport.write_eof()
+        self.loop.call_later(SHUTDOWN_LINGER_S, self.transport.close)
 
     def on_message_complete(self) -> None:
         super().on_message_complete()
@@ -122,6 +175,8 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
     # --- the head limits ------------------------------------------------------------
 
     def data_received(self, data: bytes) -> None:
+        if self.half_closed:
+            return
         if self.reading_head:
             self.received_head_bytes += len(data)
         super().data_received(data)
@@ -153,12 +208,14 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         self.received_head_bytes = self.head_bytes = self.head_count = 0
         if len(self.connections) <= self.max_connections:
             super().on_headers_complete()
-            return
-        app, self.app = self.app, self.over_limit  # uvicorn starts ``self.app`` for the request
-        try:
-            super().on_headers_complete()
-        finally:
-            self.app = app
+        else:
+            app, self.app = self.app, self.over_limit  # uvicorn starts ``self.app`` for it
+            try:
+                super().on_headers_complete()
+            finally:
+                self.app = app
+        if self.stopping and self.cycle is not None:
+            self.cycle.keep_alive = False  # answered with Connection: close
 
     def send_400_response(self, msg: str) -> None:
         """uvicorn's answer to a request it cannot parse; 431 when the head is too large."""

@@ -25,6 +25,9 @@ class Settings(BaseSettings):
     max_requests_in_flight: int = 32
     #: threads that compute selections and pages, off the event loop (app.server.compute)
     compute_threads: int = 2
+    #: how often the interpreter lets another thread run while the compute threads work [s]
+    #: (Python's own is 5 ms: app.server.compute)
+    thread_switch_interval_s: float = 0.0005
     #: the Retry-After of those 503s
     overload_retry_after_s: int = 1
     # --- the server (app.cli, app.server.protocol) ---
@@ -33,6 +36,9 @@ class Settings(BaseSettings):
     request_read_timeout_s: float = 10.0
     #: an idle connection between two requests is closed after this many seconds
     keep_alive_timeout_s: int = 5
+    #: on SIGTERM, requests still in progress this many seconds later are cancelled and
+    #: the process exits (under Kubernetes' 30 s grace period less the 5 s preStop pause)
+    graceful_shutdown_timeout_s: int = 20
     #: request line and headers together, in bytes, and the number of header lines (431)
     max_header_bytes: int = 32 * 1024
     max_headers: int = 100

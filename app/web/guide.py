@@ -6,8 +6,9 @@ order. The column help is shared with the results table's headers.
 """
 
 from dataclasses import dataclass
+from functools import cache
 
-from fastapi import APIRouter, Request
+from fastapi import APIRouter
 from fastapi.responses import HTMLResponse, Response
 
 from app.contract.fields import BY_API
@@ -177,8 +178,15 @@ CHARTS = (
 
 
 @router.get("/guide", response_class=HTMLResponse)
-async def guide(request: Request) -> Response:
+async def guide() -> Response:
     """What each check, provenance kind, ranking order and chart means."""
+    return HTMLResponse(guide_html())
+
+
+@cache
+def guide_html() -> str:
+    """The guide, rendered once: it depends on the code alone (the registry, the tables
+    above), not on the query or the catalog."""
     rank_texts = {c.value: c.text for c in BY_API["rank_by"].choices}
     context = {
         "checks": REGISTRY,
@@ -187,12 +195,19 @@ async def guide(request: Request) -> Response:
         "columns": COLUMNS,
         "charts": CHARTS,
     }
-    return templates.TemplateResponse(request, "guide.html", context)
+    return templates.get_template("guide.html").render(context)
 
 
 @router.get("/validation", response_class=HTMLResponse)
-async def validation(request: Request) -> Response:
-    """Every published worked example beside the app's value, computed now."""
+async def validation() -> Response:
+    """Every published worked example beside the app's value."""
+    return HTMLResponse(validation_html())
+
+
+@cache
+def validation_html() -> str:
+    """The validation page, computed and rendered once: the examples and the formulas
+    they run through are fixed while the process runs."""
     rows = [
         {
             "e": e,
@@ -203,4 +218,4 @@ async def validation(request: Request) -> Response:
         for e in EXAMPLES
     ]
     context = {"rows": rows, "tolerance": f"{TOLERANCE:.0%}"}
-    return templates.TemplateResponse(request, "validation.html", context)
+    return templates.get_template("validation.html").render(context)

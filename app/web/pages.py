@@ -42,7 +42,7 @@ from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
 from app.server.headers import is_htmx_fragment
-from app.server.overload import charge, full_form_units
+from app.server.overload import charge, full_form_units, page_units
 from app.server.responses import ModelJSON
 from app.web.advice import check_label, no_pass_advice
 from app.web.catalog_view import KEY_FIELDS, family_sections
@@ -112,6 +112,17 @@ def motor_suggestions(catalog: Catalog) -> list[tuple[str, str]]:
 
 def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """Parse the page query, run the selection when the form was filled in."""
+    context, inputs = page_inputs(params, catalog)
+    if inputs is not None:
+        page_results(context, inputs, catalog)
+    return context
+
+
+def page_inputs(
+    params: Mapping[str, str], catalog: Catalog
+) -> tuple[dict[str, Any], ApplicationIn | None]:
+    """The page's form context and its validated inputs (None until the form is filled in,
+    or when it has errors, which the context carries)."""
     context = form_context(params, catalog)
     context.update(
         rejected_groups=[],
@@ -126,26 +137,30 @@ def selector_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, A
         context["errors"] = {"form": " ".join(unknown.values())}
         return context
     if not any(values.get(name, "").strip() for name in REQUIRED):
-        return context
+        return context, None
     inputs, context["errors"] = parse_inputs(values, units, catalog.motors, catalog.supports)
-    if inputs is not None:
-        result, rejected = run_page_selection(inputs, catalog, units)
-        context["result"], context["rejected"] = result, rejected
-        context["query"] = share_query(inputs, units)
-        context["share_url"] = "/?" + context["query"]
-        context["compare_fields"] = parse_qsl(context["query"])
-        context["figures"] = result_figures(result, units, catalog)
-        context["charting_passed"] = chart_candidates(result)[1]
-        context["rejected_groups"] = rejected_groups(rejected)
-        rank_by = str(inputs.model_dump()["rank_by"])
-        text = BY_PAGE["rank_by"].choice_text(rank_by)
-        context["rank_text"] = text[:1].lower() + text[1:]
-        context["ranked_column"] = RANKED_COLUMN[rank_by]
-        if not result.candidates:
-            context["advice"] = no_pass_advice(result, units)
-        if inputs.model_dump()["motor"] == ANY_MOTOR:
-            context["pairs"] = run_pairs(inputs, catalog, PAIR_RANK.get(rank_by, "motor_margin"))
-    return context
+    return context, inputs
+
+
+def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalog) -> None:
+    """Run the selection of valid ``inputs`` into the page's ``context``."""
+    units = context["units"]
+    result, rejected = run_page_selection(inputs, catalog, units)
+    context["result"], context["rejected"] = result, rejected
+    context["query"] = share_query(inputs, units)
+    context["share_url"] = "/?" + context["query"]
+    context["compare_fields"] = parse_qsl(context["query"])
+    context["figures"] = result_figures(result, units, catalog)
+    context["charting_passed"] = chart_candidates(result)[1]
+    context["rejected_groups"] = rejected_groups(rejected)
+    rank_by = str(inputs.model_dump()["rank_by"])
+    text = BY_PAGE["rank_by"].choice_text(rank_by)
+    context["rank_text"] = text[:1].lower() + text[1:]
+    context["ranked_column"] = RANKED_COLUMN[rank_by]
+    if not result.candidates:
+        context["advice"] = no_pass_advice(result, units)
+    if inputs.model_dump()["motor"] == ANY_MOTOR:
+        context["pairs"] = run_pairs(inputs, catalog, PAIR_RANK.get(rank_by, "motor_margin"))
 
 
 #: The page's ranking -> the pairs' ranking: the motor's margin, the smallest motor for the
@@ -195,8 +210,20 @@ def _is_fragment(request: Request) -> bool:
 
 @router.api_route("/", methods=["GET", "HEAD"], response_class=HTMLResponse)
 async def selector(request: Request, catalog: CatalogDep) -> Response:
-    """The selector; an HTMX request gets the results fragment and out-of-band field errors."""
-    context = selector_context(request.query_params, catalog)
+    """The selector; an HTMX request gets the results fragment and out-of-band field errors.
+    Validated here, counted by its limit (``page_units``), computed and rendered on a
+    compute thread."""
+    context, inputs = page_inputs(request.query_params, catalog)
+    if inputs is not None:
+        charge(request.scope, page_units(inputs.axis().limit))
+    return await computed(_selector_page, request, context, inputs, catalog)
+
+
+def _selector_page(
+    request: Request, context: dict[str, Any], inputs: ApplicationIn | None, catalog: Catalog
+) -> Response:
+    if inputs is not None:
+        page_results(context, inputs, catalog)
     fragment = _is_fragment(request)
     response = templates.TemplateResponse(
         request, "partials/htmx_response.html" if fragment else "index.html", context
@@ -249,6 +276,10 @@ def page_candidate(
 async def detail(request: Request, catalog: CatalogDep) -> Response:
     """One candidate's checks, formulas and provenance: the fragment a result row loads
     when its detail is opened, or (without HTMX) a page of its own linking back."""
+    return await computed(_detail_page, request, catalog)
+
+
+def _detail_page(request: Request, catalog: Catalog) -> Response:
     inputs, units = link_inputs(request.query_params, catalog, ("id",))
     c = page_candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
@@ -322,11 +353,18 @@ def _export_json(inputs: ApplicationIn, catalog: Catalog) -> Response:
 
 
 @router.api_route("/catalog", methods=["GET", "HEAD"], response_class=HTMLResponse)
-async def catalog_page(request: Request, catalog: CatalogDep) -> Response:
-    """Every family, its sizes side by side, and every series' values with provenance."""
+async def catalog_page(request: Request) -> Response:
+    """Every family, its sizes side by side, and every series' values with provenance:
+    rendered once at start-up (``catalog_html``), as it depends on the catalog alone."""
+    return HTMLResponse(request.app.state.catalog_html)
+
+
+def catalog_html(catalog: Catalog) -> str:
+    """The catalog page of ``catalog`` (about 1.3 MB; 80 ms to render, too long to do per
+    request on the event loop the health check is answered on)."""
     context = {
         "version": catalog.version,
         "families": family_sections(catalog),
         "key_fields": KEY_FIELDS,
     }
-    return templates.TemplateResponse(request, "catalog.html", context)
+    return templates.get_template("catalog.html").render(context)

@@ -7,12 +7,14 @@ by sending a header twice.
 
 import gzip
 
+import pytest
 from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
 from app.main import create_app
 from app.server.cache import ResponseCache
 from app.server.settings import Settings
+from app.web import pages
 
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
 PAGE = "/?load=100&speed=50&length=500&lead=10"
@@ -177,3 +179,31 @@ def test_vary_names_what_cached_responses_depend_on() -> None:
             assert _vary(client.get(PAGE, headers=headers).headers["vary"]) == page_vary
     for _ in range(2):
         assert _vary(client.get(SELECT).headers["vary"]) == {"accept-encoding"}
+
+
+def test_pages_that_ignore_the_query_are_one_entry_for_any_query() -> None:
+    """Issue 31: /catalog?r=1, ?r=2... each rendered and compressed a 1.3 MB page. The
+    catalog, the guide and the validation page do not depend on the query: the first
+    answer serves every query after it, bytes unchanged."""
+    client, cache = _cached()
+    for path in ("/catalog", "/guide", "/validation"):
+        first = client.get(f"{path}?r=1")
+        others = [client.get(f"{path}?r={i}") for i in range(2, 5)]
+        assert first.status_code == 200
+        assert {o.content for o in others} == {first.content}
+    assert (cache.misses, cache.hits) == (3, 9)
+    assert len(cache.entries) == 3
+
+
+def test_the_catalog_page_is_rendered_once_at_start_up(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Rendered when the app is built, never per request: with the cache off and the
+    page's builder broken afterwards, it is still served, the same each time."""
+    client, _ = _cached(Settings(response_cache_bytes=0))
+    monkeypatch.setattr(pages, "family_sections", _broken)
+    first, second = client.get("/catalog"), client.get("/catalog?x=1")
+    assert first.status_code == second.status_code == 200
+    assert first.content == second.content and "Provenance" in first.text
+
+
+def _broken(*_: object) -> None:
+    raise AssertionError("the catalog page was rendered again")

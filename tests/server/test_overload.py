@@ -17,6 +17,7 @@ from app.api import routes
 from app.main import create_app
 from app.server.overload import OverloadMiddleware
 from app.server.settings import Settings
+from app.web import pages
 from tests.server.asgi import asgi_get, scope
 
 SELECT = b"load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
@@ -255,3 +256,59 @@ def test_the_health_check_is_answered_while_full_forms_compute(
 
     monkeypatch.setattr(routes, "_full_selection", held)
     assert _run(_health_beside_full_forms(release)) == ["health", "full", "full"]
+
+
+#: four results pages of a hundred each (11 units once the input is read), however asked
+PAGES = {
+    "page": lambda app, i: asgi_get(app, "/", b"load=%d&speed=50&length=500&limit=100" % i),
+    "encoded": lambda app, i: asgi_get(app, "/", b"load=%d&speed=50&length=500&limit=1%%300" % i),
+}
+
+
+@pytest.mark.parametrize("ask", PAGES.values(), ids=PAGES.keys())
+def test_a_results_page_costs_by_its_validated_limit(ask: Any) -> None:
+    """Issue 31: distinct results pages of a hundred were counted one unit each and held
+    the health check seconds. Four of them (11 units each) against 32: two are taken
+    (4 + 10 + 10 = 24 units), the third would take 34, so it and the fourth are shed."""
+    assert _run(_four(ask)) == [200, 200, 503, 503]
+
+
+def test_results_pages_of_the_default_limit_are_all_taken() -> None:
+    """Pages of 10 results cost 2 units: four of them fit in 32."""
+    ask = lambda app, i: asgi_get(app, "/", b"load=%d&speed=50&length=500" % i)  # noqa: E731
+    assert _run(_four(ask)) == [200, 200, 200, 200]
+
+
+async def _health_beside_pages(release: threading.Event) -> list[str]:
+    app = create_app(Settings(response_cache_bytes=0))
+    finished: list[str] = []
+
+    async def call(name: str, path: str, query: bytes = b"") -> None:
+        await asgi_get(app, path, query)
+        finished.append(name)
+
+    queries = [b"load=%d&speed=50&length=500&limit=100" % (101 + i) for i in range(2)]
+    started = [asyncio.create_task(call("page", "/", q)) for q in queries]
+    for _ in range(10):  # loop turns: the pages are admitted and computing
+        await asyncio.sleep(0)
+    await call("health", "/api/v1/health")
+    release.set()
+    await asyncio.gather(*started)
+    return finished
+
+
+def test_the_health_check_is_answered_while_results_pages_compute(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Results pages compute and render on the compute threads: each waits (5 s at most)
+    until the health check has been answered, which it is, first. On the loop, the pages
+    would hold it until they finished."""
+    release = threading.Event()
+    page_results = pages.page_results
+
+    def held(*args: Any) -> None:
+        release.wait(timeout=5.0)
+        page_results(*args)
+
+    monkeypatch.setattr(pages, "page_results", held)
+    assert _run(_health_beside_pages(release)) == ["health", "page", "page"]
