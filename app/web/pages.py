@@ -135,7 +135,7 @@ def page_inputs(
     unknown = unknown_parameters(params)
     if unknown:
         context["errors"] = {"form": " ".join(unknown.values())}
-        return context
+        return context, None
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context, None
     inputs, context["errors"] = parse_inputs(values, units, catalog.motors, catalog.supports)
