@@ -26,9 +26,9 @@ from app.catalog.models import Catalog, Material, Series, Sourced
 from app.catalog.motors import MOTOR_FILE, load_library
 from app.catalog.series import build_series
 from app.catalog.supports import SUPPORT_FILE, load_support_library
-from app.contract.units import to_si
 from app.core.index import CatalogIndex
-from app.server.paths import resource_dir
+from app.core.units import to_si
+from app.paths import resource_dir
 
 USER = "user"
 MATERIAL_FIELDS = frozenset(

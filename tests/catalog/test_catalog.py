@@ -11,7 +11,7 @@ import pytest
 
 from app.catalog import PROVENANCE_KINDS, Catalog, CatalogError, load_catalog
 from app.core.model import ScrewSpec
-from app.server.paths import resource_dir
+from app.paths import resource_dir
 
 CATALOG_DIR = resource_dir("catalog")
 FILES = sorted(CATALOG_DIR.glob("*.toml"))
