@@ -2,11 +2,16 @@
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Generic, Literal, Protocol, TypeVar
+from typing import Generic, Literal, Protocol, TypeVar, get_args
 
 from app.core.phrase import Phrase
 
+#: How the screw's ends are held, from the most flexible to the stiffest: the critical
+#: speed and the buckling load rise in this order (``formulas.critical_speed``,
+#: ``formulas.buckling``).
 EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
+#: The end fixities in that order.
+FIXITY_ORDER: tuple[EndFixity, ...] = get_args(EndFixity)
 Orientation = Literal["horizontal", "vertical"]
 CoatingChoice = Literal["auto", "tfe", "none"]
 #: How the user's load acts: by the orientation (a weight when vertical, against the

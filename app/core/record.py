@@ -17,7 +17,7 @@ from functools import cached_property
 from operator import attrgetter
 
 from app.core.batch import Batch, CheckResult, Numbers
-from app.core.checks import BY_NAME
+from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import (
     PV,
     Accuracy,
@@ -62,7 +62,7 @@ GEOMETRY_SOURCES = (
 )
 #: The checks that judge the motor: a candidate's motor use is the largest of their
 #: utilisations (and the ranking by motor margin reads them).
-MOTOR_CHECKS = ("torque", "motor_curve", "motor_rms", "motor_speed")
+MOTOR_CHECKS = tuple(c.name for c in REGISTRY if c.judges_motor)
 
 
 def governing(app: Application, checks: Sequence[J]) -> J | None:

@@ -25,6 +25,10 @@ from app.core.quantities import column_length
 
 class ColumnBuckling(Check):
     name = "buckling"
+    why_none = (
+        "the thrust buckles every screw of this length: consider mounting it so that it pulls"
+        " (tension), a screw support, or a ball screw"
+    )
     label = "Column buckling"
     description = (
         "A screw pushed in compression buckles as a column. Slender screws follow Euler; "
