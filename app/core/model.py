@@ -30,7 +30,7 @@ ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "a
 
 STANDARD_GRAVITY_M_S2 = 9.80665
 #: A check passes up to this utilisation: 1 plus rounding, so that an offered remedy
-#: (e.g. "reduce the load to 369.5 N") passes when applied exactly.
+#: (e.g. "reduce the axial load to 369.5 N") passes when applied exactly.
 PASS_UTILIZATION = 1.0 + 1e-9
 
 

@@ -21,8 +21,9 @@ from app.core.quantities import NAMES
 from app.core.record import Candidate
 from app.core.robustness import build_variants, robustness
 from app.core.screening import eligible_mask, screen_table
-from app.core.selection import input_change, screen, select
+from app.core.selection import describe_change, input_change, screen, select
 from app.core.table import CandidateTable
+from app.report.service import INPUT_WORDS
 from tests.core.conftest import applications, light_app
 
 
@@ -193,7 +194,8 @@ def test_the_proposed_input_change_admits_the_nearest_candidate(
 def test_the_offered_load_limit_passes_when_applied(catalog: Catalog) -> None:
     """Found by the property test above: B14000-L60-TFE, 944.06 N at 208.4 mm/s, fixed-free,
     1.4625 m in tension: PV fails (utilization 2.55); the PV check offers load_n = 369.5 N
-    and the summary says "reduce the load to 369.5 N"; at exactly that load PV fails again."""
+    and the summary says "reduce the axial load to 369.5 N"; at exactly that load PV fails
+    again."""
     app = Application(
         load_n=944.0647658429093,
         speed_m_s=0.20840700579731275,
@@ -316,3 +318,13 @@ def test_one_candidates_numbers_equal_those_read_for_many(catalog: Catalog) -> N
         assert all(type(v) is float for v in one)
         expected = [getattr(q, name)[i] for name in NAMES]
         assert np.array_equal(np.array(one), np.array(expected), equal_nan=True)
+
+
+def test_a_change_names_its_input_by_the_field_table_label() -> None:
+    """The words come from the edge's field table (its 'Axial load' row), the value in
+    the reader's units; without a table the input keeps its core name."""
+    app = Application(load_n=944.0, speed_m_s=0.2, length_m=1.5)
+    change = {"load_n": 369.5, "speed_m_s": 0.3}
+    text = render(describe_change(app, change, INPUT_WORDS))
+    assert text == "reduce the axial load to 369.5 N and set the linear speed to 300 mm/s"
+    assert render(describe_change(app, {"load_n": 369.5})).startswith("reduce the load_n to")
