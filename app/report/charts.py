@@ -33,14 +33,14 @@ class WearLine:
 @dataclass(frozen=True, slots=True)
 class ChartData:
     """The axis's numbers in SI that the charts mark (length [m], speed [m/s], the torque
-    limit [N m], the motor's curve as (rpm, N m) pairs, the torque safety factor and the
+    limit [N m] or None, the motor's curve as (rpm, N m) pairs, the torque safety factor and the
     curve's margin, ``motion.curve_margin``), the lead sweep (empty without a catalog)
     and the wear lines (``wear_in_years``: their life is in years of a duty)."""
 
     length_m: float
     speed_m_s: float
-    max_torque_nm: float | None
-    motor_curve: tuple[tuple[float, float], ...]
+    torque_limit_nm: float | None
+    curve: tuple[tuple[float, float], ...]
     torque_safety_factor: float
     curve_margin: float
     sweep: list[LeadPoint]
@@ -76,8 +76,8 @@ def chart_data(
     return ChartData(
         length_m=app.length_m,
         speed_m_s=app.speed_m_s,
-        max_torque_nm=app.max_torque_nm,
-        motor_curve=app.motor_curve,
+        torque_limit_nm=app.max_torque_nm,
+        curve=app.motor_curve,
         torque_safety_factor=app.torque_safety_factor,
         curve_margin=motion.curve_margin(app),
         sweep=sweep,

@@ -213,7 +213,7 @@ def pv_figure(
 
 
 def torque_figure(
-    candidates: Sequence[CandidateOut], max_torque_nm: float | None, d: Display
+    candidates: Sequence[CandidateOut], limit_nm: float | None, d: Display
 ) -> dict[str, Any]:
     """Stacked bars of the running torque per candidate: inertia + drag + load.
 
@@ -233,7 +233,7 @@ def torque_figure(
         for key, name, colour in (*TORQUE_PARTS, LOAD_PART)
     ]
     extra: dict[str, Any] = {"barmode": "stack"}
-    if max_torque_nm is not None:
+    if limit_nm is not None:
         extra["shapes"] = [
             {
                 "type": "line",
@@ -241,8 +241,8 @@ def torque_figure(
                 "x0": 0,
                 "x1": 1,
                 "yref": "y",
-                "y0": _round(d.value(max_torque_nm, "torque")),
-                "y1": _round(d.value(max_torque_nm, "torque")),
+                "y0": _round(d.value(limit_nm, "torque")),
+                "y1": _round(d.value(limit_nm, "torque")),
                 "line": {"color": "#A00000", "dash": "dash", "width": 2},
             }
         ]
@@ -423,7 +423,7 @@ def result_figures(
     figures = {
         "critical_speed": critical_speed_figure(candidates, length_mm, d),
         "pv": pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d),
-        "torque": torque_figure(candidates, data.max_torque_nm, d),
+        "torque": torque_figure(candidates, data.torque_limit_nm, d),
     }
     if len(data.sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(data.sweep, candidates[0], d)
@@ -431,9 +431,9 @@ def result_figures(
     if life is not None:
         figures["life"] = life
     if candidates[0].segments:
-        if data.motor_curve:
+        if data.curve:
             figures["motor"] = motor_figure(
-                candidates, data.motor_curve, data.torque_safety_factor, d, data.curve_margin
+                candidates, data.curve, data.torque_safety_factor, d, data.curve_margin
             )
         figures["move"] = move_figure(candidates[0], d)
     first = None if passing else result.summary.most_excluding_check
