@@ -24,8 +24,9 @@ HoldingSource = Literal["brake", "energised"]
 #: How the nut is lubricated (its permissible PV's factor, ``formulas.pv_derating``).
 Lubrication = Literal["dry", "greased", "oiled"]
 RankBy = Literal["torque", "rms", "margin", "life", "size", "motor_margin"]
-#: What a failed advice check does: a warning only, rank the candidate lower, or reject.
-AdvicePolicy = Literal["warn", "rank", "reject"]
+#: What a failed advice check does: warn (such a screw always ranks after every screw
+#: without a warning), or reject the screw.
+AdvicePolicy = Literal["warn", "reject"]
 ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]
 
 STANDARD_GRAVITY_M_S2 = 9.80665
