@@ -5,7 +5,7 @@ the API name (unit in the name), the page and share-link name, the core attribut
 dimension (whose API unit and factor to SI ``app.contract.units`` holds), how the page shows it
 (label, help, form group, choices with their texts) and how it is validated (kind,
 default, bounds). The API model (``app.contract.inputs``), the page form and its parser
-(``app.page_form``), the form templates, the printed inputs summary and the CSV export are
+(``app.contract.form``), the form templates, the printed inputs summary and the CSV export are
 all generated from ``FIELDS``; none of them names an input.
 
 Choices come from the core's ``Literal`` types (``typing.get_args``); the table only adds
