@@ -44,7 +44,7 @@ class ColumnBuckling(Check):
     )
     source = (
         "Euler column (Timoshenko & Gere); Johnson parabola and transition slenderness, "
-        "Shigley's Mechanical Engineering Design, 10th ed., sec. 4-11 to 4-13"
+        "Shigley's Mechanical Engineering Design, 9th ed., sec. 4-11 to 4-13"
     )
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
