@@ -104,13 +104,13 @@ def docs_opened(page: Any, base: str) -> None:
         "c => c.startsWith('opblock-') && c !== 'opblock-deprecated')))]",
     )
     assert "opblock-get" in kinds and len(kinds) >= 2, kinds
+    health = "#operations-api-health_api_v1_health_get"
     for kind in kinds:
-        health = "#operations-api-health_api_v1_health_get"
-        block = health if kind == "opblock-get" else f".opblock.{kind} >> nth=0"
-        page.click(f"{block} .opblock-summary-control")
-        page.click(f"{block} .try-out__btn")
-    page.click("#operations-api-health_api_v1_health_get .execute")
-    page.wait_for_selector("#operations-api-health_api_v1_health_get .live-responses-table")
+        block = page.locator(health if kind == "opblock-get" else f".opblock.{kind}").first
+        block.locator(".opblock-summary-control").click()
+        block.locator(".try-out__btn").click()
+    page.click(f"{health} .execute")
+    page.wait_for_selector(f"{health} .live-responses-table")
     if page.locator("section.models.is-open").count() == 0:
         page.click(".models-control")
     page.wait_for_selector("section.models.is-open")
