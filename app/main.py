@@ -10,12 +10,12 @@ from app import __version__
 from app.api import docs
 from app.api import routes as api
 from app.catalog import load_catalog
+from app.paths import resource_dir
 from app.server.cache import ResponseCache
 from app.server.compression import NegotiatedGZipMiddleware
 from app.server.errors import AppError
 from app.server.head import HeadAsGetMiddleware
 from app.server.overload import NEVER_SHED, OverloadMiddleware
-from app.server.paths import resource_dir
 from app.server.security import SecurityMiddleware
 from app.server.settings import Settings, get_settings
 from app.server.staticfiles import PrecompressedStaticFiles

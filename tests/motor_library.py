@@ -2,6 +2,6 @@
 application (``ApplicationIn.to_core(MOTORS)``)."""
 
 from app.catalog.motors import MOTOR_FILE, load_motors
-from app.server.paths import resource_dir
+from app.paths import resource_dir
 
 MOTORS = load_motors(resource_dir("catalog") / MOTOR_FILE)

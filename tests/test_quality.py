@@ -72,31 +72,67 @@ def test_core_has_no_web_imports(path: Path) -> None:
     assert {m for m in _app_imports(path) if not m.startswith("app.core")} == set()
 
 
-#: Each folder of app/ and the folders it must not import: a layer imports only those
-#: below it (core < catalog < contract < report < api, web < main), and the server's
-#: plumbing imports no results or pages.
-NOT_IMPORTED_BY = {
-    "catalog": ("report", "api", "web"),
-    "contract": ("report", "api", "web", "server"),
-    "report": ("api", "web", "server"),
-    "server": ("contract", "report", "api", "web"),
-    "api": ("web",),
-    "web": ("api",),
-}
+#: The layers of app/, lowest first: a module imports only from its own folder and from
+#: the tiers below its own (core < catalog < contract < report < api, web < main, cli).
+#: The server's plumbing sits beside the contract: it wraps the layers above and imports
+#: no inputs, results or pages; the package's face (its version) and ``paths`` (where the
+#: bundled files live) are the floor.
+LAYERS: tuple[frozenset[str], ...] = tuple(
+    frozenset(tier.split())
+    for tier in (
+        "__init__ paths",
+        "core",
+        "catalog",
+        "contract server",
+        "report",
+        "api web",
+        "main cli",
+    )
+)
+TIER = {name: rank for rank, tier in enumerate(LAYERS) for name in tier}
 
 
-@pytest.mark.parametrize("folder", sorted(NOT_IMPORTED_BY))
-def test_no_layer_imports_one_above_it(folder: str) -> None:
-    """No upward import: e.g. the service reads share links from the contract, not from
-    the pages; the error type lives with the server, its page rendering with the web."""
-    above = tuple(f"app.{name}" for name in NOT_IMPORTED_BY[folder])
-    found = {
-        f"{path.relative_to(ROOT)} imports {name}"
-        for path in sorted((ROOT / "app" / folder).rglob("*.py"))
+def _layer(module: str) -> str:
+    """The layer of a module by dotted name: its folder (or file) under ``app``."""
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else "__init__"
+
+
+def _modules() -> list[Path]:
+    return sorted((ROOT / "app").rglob("*.py"))
+
+
+def test_every_module_has_a_layer() -> None:
+    layers = {_layer(".".join(p.relative_to(ROOT).with_suffix("").parts)) for p in _modules()}
+    assert layers == set(TIER)
+
+
+def _upward_imports(path: Path, root: Path = ROOT) -> set[str]:
+    own = _layer(".".join(path.relative_to(root).with_suffix("").parts))
+    return {
+        f"{path.relative_to(root)} imports {name}"
         for name in _app_imports(path)
-        if name.startswith(above)
+        if _layer(name) != own and TIER[_layer(name)] >= TIER[own]
     }
-    assert found == set()
+
+
+@pytest.mark.parametrize("layer", sorted(TIER))
+def test_no_layer_imports_its_own_tier_or_above(layer: str) -> None:
+    """No import sideways or upward, no exception: e.g. the catalog reads units from the
+    core's table, not the contract; the service reads share links from the contract, not
+    from the pages; the error type lives with the server, its page rendering with the web."""
+    paths = [
+        p for p in _modules() if p.relative_to(ROOT / "app").parts[0].removesuffix(".py") == layer
+    ]
+    assert paths
+    assert set().union(*map(_upward_imports, paths)) == set()
+
+
+def test_layer_scan_catches_an_upward_import(tmp_path: Path) -> None:
+    bad = tmp_path / "app" / "catalog" / "probe.py"
+    bad.parent.mkdir(parents=True)
+    bad.write_text("from app.contract.units import to_si\nfrom app.core.units import from_si\n")
+    assert _upward_imports(bad, tmp_path) == {"app/catalog/probe.py imports app.contract.units"}
 
 
 def test_import_scan_catches_a_web_import(tmp_path: Path) -> None:

@@ -6,7 +6,7 @@ than validating them. ``parse_query`` gathers the same values (every value of a 
 field, the last of any other, and the names the model does not know, which it then
 refuses) and validates them in one call, with errors located under ``query`` as FastAPI
 locates them. ``query_parameters`` gives the OpenAPI parameters FastAPI writes for the
-model, so the documentation is unchanged (``tests/test_query_path.py`` compares both).
+model, so the documentation is unchanged (``tests/api/test_query_path.py`` compares both).
 """
 
 from functools import cache

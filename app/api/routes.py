@@ -24,8 +24,7 @@ from app.contract.outputs import (
 from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
 from app.contract.schemas import ApplicationIn
 from app.contract.screws import EvaluateIn
-from app.contract.units import api_value
-from app.core.checks import REGISTRY
+from app.report.formulas import CHECKS_OUT
 from app.report.pairs import motors_out, run_pairs
 from app.report.present import series_dict
 from app.report.service import (
@@ -66,21 +65,7 @@ async def health(catalog: CatalogDep) -> dict[str, Any]:
 @router.get("/checks", response_model=ChecksOut)
 async def list_checks() -> dict[str, Any]:
     """Every check the selection runs, in order: what it means, its formula and source."""
-    return {
-        "checks": [
-            {
-                "name": c.name,
-                "label": c.label,
-                "kind": c.kind,
-                "description": c.description,
-                "formula": c.formula,
-                "source": c.source,
-                "sources": list(c.sources),
-                "unit": api_value(0.0, c.quantity)[1],
-            }
-            for c in REGISTRY
-        ]
-    }
+    return CHECKS_OUT
 
 
 @router.get("/series", response_model=SeriesListOut)

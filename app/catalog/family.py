@@ -15,7 +15,7 @@ from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.files import Layer
 from app.catalog.models import Sourced
-from app.contract.units import from_si, to_si
+from app.core.units import from_si, to_si
 
 DECLARATIONS = frozenset({"id", "name", "extends", "id_pattern", "thread_form"})
 VARIANT_FIELDS = frozenset(

@@ -5,6 +5,7 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
+from app.catalog.catalog import Catalog
 from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.family import build_family
@@ -22,13 +23,13 @@ from app.catalog.files import (
     toml_files,
 )
 from app.catalog.groups import Groups, read_group
-from app.catalog.models import Catalog, Material, Series, Sourced
+from app.catalog.models import Material, Series, Sourced
 from app.catalog.motors import MOTOR_FILE, load_library
 from app.catalog.series import build_series
 from app.catalog.supports import SUPPORT_FILE, load_support_library
-from app.contract.units import to_si
 from app.core.index import CatalogIndex
-from app.server.paths import resource_dir
+from app.core.units import to_si
+from app.paths import resource_dir
 
 USER = "user"
 MATERIAL_FIELDS = frozenset(

@@ -1,15 +1,11 @@
-"""What the loader hands to the rest of the app: sourced values, series, the catalog."""
+"""The values the loader hands to the rest of the app: sourced values, materials, series
+(the whole catalog that holds them: ``app.catalog.catalog``)."""
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from dataclasses import dataclass
+from typing import Any
 
-from app.core.index import CatalogIndex
 from app.core.model import Provenance, ScrewSpec
-
-if TYPE_CHECKING:
-    from app.catalog.motors import Motor
-    from app.catalog.supports import SupportUnit
 
 
 @dataclass(frozen=True, slots=True)
@@ -44,19 +40,3 @@ class Series:
     file: str
     fields: Mapping[str, Sourced]
     screws: tuple[ScrewSpec, ...]
-
-
-@dataclass(frozen=True, slots=True)
-class Catalog:
-    """Every series, every expanded candidate, the index the core's queries read, and the
-    motor library (``motors.toml`` of every catalog directory) and the support-unit
-    library (``supports.toml``)."""
-
-    version: str
-    series: Mapping[str, Series]
-    screws: tuple[ScrewSpec, ...]
-    index: CatalogIndex
-    materials: Mapping[str, Material]
-    by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)
-    motors: Mapping[str, "Motor"] = field(default_factory=dict)
-    supports: Mapping[str, "SupportUnit"] = field(default_factory=dict)

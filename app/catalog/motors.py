@@ -21,9 +21,9 @@ from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.files import read_file
 from app.catalog.models import Sourced
-from app.contract.units import to_si
 from app.core.formulas import servo, stepper
 from app.core.model import Application
+from app.core.units import to_si
 
 #: The library's file name; family loading skips it in every catalog directory.
 MOTOR_FILE = "motors.toml"

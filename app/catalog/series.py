@@ -13,9 +13,9 @@ from typing import Any
 from app.catalog.entry import Entry
 from app.catalog.family import Family, IdVariant
 from app.catalog.models import Material, Series, Sourced
-from app.contract.units import SI_UNITS, UNITS, from_si, to_si
 from app.core.formulas import bearing, geometry, pv, trapezoidal
 from app.core.model import Provenance, ScrewSpec
+from app.core.units import SI_UNITS, UNITS, from_si, to_si
 
 SERIES_FIELDS = frozenset(
     {

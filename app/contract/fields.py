@@ -5,7 +5,7 @@ the API name (unit in the name), the page and share-link name, the core attribut
 dimension (whose API unit and factor to SI ``app.contract.units`` holds), how the page shows it
 (label, help, form group, choices with their texts) and how it is validated (kind,
 default, bounds). The API model (``app.contract.inputs``), the page form and its parser
-(``app.page_form``), the form templates, the printed inputs summary and the CSV export are
+(``app.contract.form``), the form templates, the printed inputs summary and the CSV export are
 all generated from ``FIELDS``; none of them names an input.
 
 Choices come from the core's ``Literal`` types (``typing.get_args``); the table only adds
@@ -78,7 +78,9 @@ class InputField:
     or comma-separated text on the page and in share links. A ``curve`` field is points
     (x, y): pairs in JSON, ``x:y,x:y`` in query strings and share links, lines of "x y" on
     the page. A ``catalog_only`` field filters or ranks catalog screws and means nothing for a
-    screw of the user's own (the /custom page leaves it out).
+    screw of the user's own (the /custom page leaves it out). ``retired`` maps a choice's
+    value that is no longer offered to the one it now reads as, so that links and calls
+    already sent keep working.
     """
 
     api: str
@@ -99,6 +101,7 @@ class InputField:
     none_word: str = ""
     drawn: bool = False
     catalog_only: bool = False
+    retired: Mapping[str, str] = field(default_factory=dict)
     si_factor: float = field(init=False, default=1.0)
     quantity: Quantity | None = field(init=False, default=None)
 
@@ -568,7 +571,8 @@ FIELDS: tuple[InputField, ...] = (
         help="A failed recommendation (e.g. the traverse speed for a lead): a warning (such "
         "screws always rank after those without one), or reject them",
         group="Results", kind="choice", default="warn", options=AdvicePolicy,
-        texts={"warn": "Warn and rank last", "rank": "Warn and rank last", "reject": "Reject"},
+        texts={"warn": "Warn and rank last", "reject": "Reject"},
+        retired={"rank": "warn"},
         catalog_only=True,
     ),
     InputField(

@@ -18,7 +18,7 @@ Text numbers (a query string, or a string in JSON) must be plain ASCII decimals
 import json
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import (
@@ -299,6 +299,19 @@ def curve_type(field: InputField) -> Any:
     ]
 
 
+def _retired(field: InputField) -> Callable[[Any], Any]:
+    """A choice's retired value read as the value it now means (``InputField.retired``).
+
+    >>> _retired(BY_API["advice"])("rank"), _retired(BY_API["advice"])(["rank"])
+    ('warn', ['rank'])
+    """
+
+    def current(value: Any) -> Any:
+        return field.retired.get(value, value) if isinstance(value, str) else value
+
+    return current
+
+
 def api_type(field: InputField) -> Any:
     """The pydantic type of one table field: bounded finite number, whole number, bool or
     the core's Literal; optional (``| None``) when it has no default and is not required."""
@@ -319,7 +332,9 @@ def api_type(field: InputField) -> Any:
     elif field.kind == "curve":
         kind = curve_type(field)
     else:
-        kind = Annotated[field.options, Field(description=describe(field))]
+        kind = Annotated[
+            field.options, Field(description=describe(field)), BeforeValidator(_retired(field))
+        ]
     if field.required or field.default is not None:
         return kind
     # the description again outside the union: OpenAPI shows a parameter's own

@@ -2,11 +2,16 @@
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Generic, Literal, Protocol, TypeVar
+from typing import Generic, Literal, Protocol, TypeVar, get_args
 
 from app.core.phrase import Phrase
 
+#: How the screw's ends are held, from the most flexible to the stiffest: the critical
+#: speed and the buckling load rise in this order (``formulas.critical_speed``,
+#: ``formulas.buckling``).
 EndFixity = Literal["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"]
+#: The end fixities in that order.
+FIXITY_ORDER: tuple[EndFixity, ...] = get_args(EndFixity)
 Orientation = Literal["horizontal", "vertical"]
 CoatingChoice = Literal["auto", "tfe", "none"]
 #: How the user's load acts: by the orientation (a weight when vertical, against the
@@ -19,13 +24,14 @@ HoldingSource = Literal["brake", "energised"]
 #: How the nut is lubricated (its permissible PV's factor, ``formulas.pv_derating``).
 Lubrication = Literal["dry", "greased", "oiled"]
 RankBy = Literal["torque", "rms", "margin", "life", "size", "motor_margin"]
-#: What a failed advice check does: a warning only, rank the candidate lower, or reject.
-AdvicePolicy = Literal["warn", "rank", "reject"]
+#: What a failed advice check does: warn (such a screw always ranks after every screw
+#: without a warning), or reject the screw.
+AdvicePolicy = Literal["warn", "reject"]
 ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]
 
 STANDARD_GRAVITY_M_S2 = 9.80665
 #: A check passes up to this utilisation: 1 plus rounding, so that an offered remedy
-#: (e.g. "reduce the load to 369.5 N") passes when applied exactly.
+#: (e.g. "reduce the axial load to 369.5 N") passes when applied exactly.
 PASS_UTILIZATION = 1.0 + 1e-9
 
 

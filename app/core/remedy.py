@@ -18,62 +18,23 @@ from itertools import combinations
 
 import numpy as np
 
-from app.core.model import Application, Remedy
+from app.core.checks import BY_NAME, REGISTRY
+from app.core.model import FIXITY_ORDER, Application, Remedy
 from app.core.phrase import Phrase
 from app.core.screening import Screening, screen_table
 
 #: How far past a limit a proposed input lands: a remedy must pass at a governing
 #: utilisation of at most 1 / (1 + MARGIN).
 MARGIN = 0.05
-#: End fixities from the least to the most stiff (critical speed and buckling rise).
-FIXITIES = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
 #: Checks a stiffer mounting of the screw's ends helps.
 MOUNTING_CHECKS = frozenset({"critical_speed", "buckling"})
 #: Shares of the way to its single-input value each of two inputs moves together.
 SPLITS = (0.5, 0.75)
 #: At most this many remedies are offered, and this many changes screened.
 OFFERED, TRIED = 6, 24
-#: Why no leadscrew can do it, by the check that excludes the most.
-WHY: Mapping[str, str] = {
-    "critical_speed": "the speed needs a critical-speed margin no screw of this length "
-    "reaches, at any mounting: consider a ball screw, a rotating nut or an intermediate "
-    "screw support",
-    "buckling": "the thrust buckles every screw of this length: consider mounting it so "
-    "that it pulls (tension), a screw support, or a ball screw",
-    "pv": "no nut carries this load at this speed (PV): consider a ball screw, whose "
-    "rolling contact has no PV limit",
-    "bearing_pressure": "no nut carries this thrust at its contact pressure: consider a "
-    "longer nut or a ball screw",
-    "max_sliding_speed": "no nut slides this fast: consider a longer lead, a ball screw or a belt",
-    "wear_life": "no nut lasts this duty: consider a ball screw",
-    "torque": "the motor is too small for every screw: a larger motor or a gearbox",
-    "motor_curve": "the motor's curve is too low for every screw: a larger motor or a gearbox",
-    "motor_rms": "the motor's RMS torque is too low for every screw: a larger motor",
-    "motor_speed": "the motor cannot turn fast enough for every lead: a faster motor",
-    "length": "no screw in the catalog is made this long: consider a ball screw or a belt",
-    "design_load": "the thrust exceeds every screw's design load: consider a ball screw",
-    "root_stress": "the thrust and the torque it takes yield every screw's root: consider a ball "
-    "screw",
-    "support_static": "the peak thrust exceeds the thrust bearing's static rating: a "
-    "larger support unit, or a lower load or acceleration",
-    "support_life": "the thrust bearing does not last this duty on any lead: a support "
-    "unit of a higher dynamic rating",
-    "temperature": "no nut in the catalog is rated for this temperature: consider a metal "
-    "nut outside the catalog or a ball screw",
-    "coating_environment": "no nut suits this environment (oil, coating): choose another "
-    "nut material",
-    "vacuum": "no nut is rated for vacuum: consider a vacuum-rated ball screw",
-    "back_driving": "every screw back-drives under this load: add a brake (its torque as "
-    "an input) or a self-locking worm stage",
-    "holding": "no brake torque given holds this load on any screw: a larger brake",
-    "holding_power_off": "the motor's detent torque holds this load on no screw: add a brake",
-    "anti_backlash": "no anti-backlash nut suits this axis: a preloaded ball screw",
-    "nut_heat": "every nut runs too hot at this duty: a ball screw, or a lower duty",
-}
-
 #: Checks that judge the motor, not the screw: when one excludes every screw, another
 #: motor may still drive them.
-MOTOR_BOUND = frozenset(("torque", "motor_curve", "motor_rms", "motor_speed"))
+MOTOR_BOUND = frozenset(c.name for c in REGISTRY if c.judges_motor)
 
 #: A change of the application: core input name -> SI value (or the end fixity).
 Inputs = Mapping[str, float | str]
@@ -127,9 +88,9 @@ def _now(app: Application, key: str) -> float:
 
 def stiffer(app: Application, failed: set[str]) -> tuple[str, ...]:
     """Stiffer end fixities than ``app``'s, when a check they help fails."""
-    if not failed & MOUNTING_CHECKS or app.end_fixity not in FIXITIES:
+    if not failed & MOUNTING_CHECKS:
         return ()
-    return FIXITIES[FIXITIES.index(app.end_fixity) + 1 :]
+    return FIXITY_ORDER[FIXITY_ORDER.index(app.end_fixity) + 1 :]
 
 
 def proposals(
@@ -200,7 +161,8 @@ def impossible(
             "their fixes name what would clear it (such as a larger motor, a brake or "
             "another nut)."
         )
-    why = WHY.get(most_excluding or "", f"{label} excludes every screw")
+    check = BY_NAME.get(most_excluding or "")
+    why = (check and check.why_none) or f"{label} excludes every screw"
     drive = " with this motor" if most_excluding in MOTOR_BOUND else ""
     return Phrase(
         f"No leadscrew in the catalog can do this{drive} within the accepted inputs: {tried}. "

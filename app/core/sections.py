@@ -1,18 +1,16 @@
 """The sections of a candidate's record (torque, critical speed, life): parts whose
 numbers are read from the screening's columns when first asked for (``app.core.record``
-builds them)."""
+builds them; ``app.core.batch`` holds the columns)."""
 
 import math
-from typing import TYPE_CHECKING, Generic, Literal, TypeVar, cast
+from typing import Generic, Literal, Protocol, TypeVar, cast
 
 import numpy as np
 
 from app.core import motion
+from app.core.batch import Batch
 from app.core.checks.wear_life import life_band
 from app.core.formulas import critical_speed, life
-
-if TYPE_CHECKING:
-    from app.core.record import Batch, Candidate
 
 T = TypeVar("T")
 
@@ -22,6 +20,15 @@ def number(x: float | None) -> float | None:
     return None if x is None or math.isnan(x) else x
 
 
+class InBatch(Protocol):
+    """A candidate's record or one of its sections: its batch and its place in it."""
+
+    @property
+    def batch(self) -> Batch: ...
+    @property
+    def k(self) -> int: ...
+
+
 class Column(Generic[T]):
     """An attribute of a record or of one of its sections read from one column of the
     screening (quantities, verdicts or table) when read."""
@@ -29,8 +36,8 @@ class Column(Generic[T]):
     def __init__(self, name: str) -> None:
         self.name = name
 
-    def __get__(self, owner: "Candidate | Section", cls: type) -> T:
-        value: T = owner.batch.columns[self.name][owner.k]
+    def __get__(self, owner: InBatch, cls: type) -> T:
+        value: T = owner.batch.column(self.name)[owner.k]
         return value
 
 
@@ -39,7 +46,7 @@ class Section:
 
     __slots__ = ("app", "batch", "k", "screw")
 
-    def __init__(self, batch: "Batch", k: int) -> None:
+    def __init__(self, batch: Batch, k: int) -> None:
         self.batch, self.k, self.app = batch, k, batch.app
         self.screw = batch.slots[k].screw
 
@@ -84,7 +91,7 @@ class CriticalSpeed(Section):
 
     @property
     def margin(self) -> float:
-        return critical_speed.speed_margin(self.allowed_rpm, self.batch.columns["rpm"][self.k])
+        return critical_speed.speed_margin(self.allowed_rpm, self.batch.column("rpm")[self.k])
 
     @property
     def safety_factor(self) -> float:
@@ -129,7 +136,7 @@ class Life(Section):
 
     def _band(self, name: str) -> tuple[float, float]:
         """A wear quantity at the high and the low end of the wear rate's range."""
-        value = float(self.batch.columns[name][self.k])
+        value = float(self.batch.column(name)[self.k])
         low, high = life_band(self.screw)
         return value * low, value * high
 

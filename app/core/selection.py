@@ -21,18 +21,25 @@ from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable
 
 NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
-#: Application inputs a summary may offer to change: (words, quantity).
-INPUT_LABELS: dict[str, tuple[str, Quantity]] = {
-    "load_n": ("load", "force"),
-    "speed_m_s": ("speed", "speed"),
-    "length_m": ("length", "length"),
-    "accel_m_s2": ("acceleration", "accel"),
-}
 #: The nearest rejected candidates whose input changes the remedies start from.
 REMEDY_FROM = 8
 #: Each input's accepted range in SI, (low, high) by core name: a change outside it is
 #: never offered (the edge passes its field table's bounds; none: any value).
 Ranges = Mapping[str, tuple[float, float]]
+#: Each input a summary may name, by core name: its label in the reader's words and the
+#: quantity it measures. The edge passes its field table's (the labels live there); an
+#: input it does not name is written as its core name, its value as a bare SI number.
+Words = Mapping[str, tuple[str, Quantity]]
+
+
+def input_words(key: str, words: Words) -> tuple[str, Quantity]:
+    """Input ``key``'s label and quantity from ``words``; its core name and no unit when
+    ``words`` does not name it.
+
+    >>> input_words("load_n", {"load_n": ("axial load", "force")}), input_words("x_m", {})
+    (('axial load', 'force'), ('x_m', 'factor'))
+    """
+    return words.get(key, (key, "factor"))
 
 
 def motor_use(s: Screening) -> np.ndarray:
@@ -166,17 +173,20 @@ def _screen(
 
 
 def select(
-    app: Application, candidates: CatalogIndex | Sequence[ScrewSpec], ranges: Ranges | None = None
+    app: Application,
+    candidates: CatalogIndex | Sequence[ScrewSpec],
+    ranges: Ranges | None = None,
+    words: Words | None = None,
 ) -> Selection:
     """Screen every eligible candidate and rank the passing ones by ``app.rank_by``.
 
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
     counts cover everything screened; the summary offers input changes within ``ranges``
-    only. The passing ones' robustness is screened now; the returned candidates' numbers
-    and sections are read when first asked for. A sequence of screws is indexed here,
-    without variant rows: those of the passing ones returned are built when they are
-    judged.
+    only and names the inputs by ``words``. The passing ones' robustness is screened now;
+    the returned candidates' numbers and sections are read when first asked for. A
+    sequence of screws is indexed here, without variant rows: those of the passing ones
+    returned are built when they are judged.
     """
     index = (
         candidates
@@ -200,7 +210,7 @@ def select(
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
         summary=summarize(
-            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}, s
+            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}, s, words
         ),
         screening=s,
         ranked=tuple(ranked),
@@ -251,15 +261,17 @@ def within(change: Mapping[str, float], ranges: Ranges) -> bool:
     )
 
 
-def describe_change(app: Application, change: Mapping[str, float | str]) -> Phrase:
-    """The change in words: "reduce the load to {value}" per input ("mount the ends
-    fixed-fixed" for the end fixity)."""
+def describe_change(
+    app: Application, change: Mapping[str, float | str], words: Words | None = None
+) -> Phrase:
+    """The change in words: "reduce the axial load to {value}" per input, each named by
+    ``words`` ("mount the ends fixed-fixed" for the end fixity)."""
     parts = []
     for key, value in change.items():
         if isinstance(value, str):
             parts.append(Phrase("mount the ends {v}", {"v": value}))
             continue
-        label, quantity = INPUT_LABELS[key]
+        label, quantity = input_words(key, words or {})
         verb = "reduce" if value < getattr(app, key) else "set"
         parts.append(Phrase(f"{verb} the {label} to {{v}}", {"v": Amount(value, quantity)}))
     return join(parts, " and ")
@@ -309,10 +321,12 @@ def summarize(
     by_check: Counter[str],
     ranges: Ranges,
     screening: Screening | None = None,
+    words: Words | None = None,
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix and the
     feasible changes of the application (within ``ranges``; when the nearest screw's
-    change lies outside them, the summary says so and offers none)."""
+    change lies outside them, the summary says so and offers none), the inputs named by
+    ``words``."""
     top = by_check.most_common(1)
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
@@ -333,20 +347,22 @@ def summarize(
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
     if change and not within(change, ranges):
-        labels = " and ".join(INPUT_LABELS[k][0] for k in change)
+        labels = " and ".join(input_words(k, words or {})[0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
     found, why = _remedies(
         app, screening, nearest, (worst, label, worst_count == evaluated), ranges
     )
     if found:  # the first verified change, past its limits by the margin
-        how = describe_change(app, found[0].inputs)
+        how = describe_change(app, found[0].inputs, words)
         parts.append(Phrase("Or change the application: {how}.", {"how": how}))
     elif why is not None:
         parts.append(why)
     elif change:  # not verified (no screening given): the values at the limits
         parts.append(
-            Phrase("Or change the application: {how}.", {"how": describe_change(app, change)})
+            Phrase(
+                "Or change the application: {how}.", {"how": describe_change(app, change, words)}
+            )
         )
     return Summary(
         worst,

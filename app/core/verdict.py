@@ -1,7 +1,8 @@
 """Why this screw, in two lines: what governs it and by how much, which assumed catalog
 values that rests on, and what to watch.
 
-``verdict(candidate)`` reads a candidate record (``app.core.record.Candidate``): its
+``verdict(candidate)`` reads a candidate record (``Record``, the part of
+``app.core.record.Candidate`` it reads, so the record imports the verdict, not back): its
 governing check (the rejecting check closest to its limit), its other checks, the
 provenance of the catalog values each check reads and the ranged values its pass hinges
 on (``app.core.robustness``). Catalog keys (``pv_limit_mpa_m_s``, ``dynamic_load_lbf``)
@@ -10,14 +11,12 @@ are named in words (``value_label``); the sentences are ``Phrase``s, rendered at
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from app.core import motion
-from app.core.model import Provenance
+from app.core.batch import CheckResult
+from app.core.model import Application, Provenance, ScrewSpec
 from app.core.phrase import Amount, Phrase, join
-
-if TYPE_CHECKING:
-    from app.core.record import Candidate, CheckResult
 
 #: Catalog values by their base name (no nut variant, no unit), in the reader's words.
 VALUE_LABELS: Mapping[str, str] = {
@@ -133,8 +132,31 @@ class Verdict:
     text: Phrase
 
 
+class Record(Protocol):
+    """What a verdict reads of a candidate's record."""
+
+    @property
+    def app(self) -> Application: ...
+    @property
+    def screw(self) -> ScrewSpec: ...
+    @property
+    def passed(self) -> bool: ...
+    @property
+    def checks(self) -> tuple[CheckResult, ...]: ...
+    @property
+    def governing(self) -> CheckResult | None: ...
+    @property
+    def warnings(self) -> tuple[CheckResult, ...]: ...
+    @property
+    def hinges_on(self) -> tuple[str, ...]: ...
+    @property
+    def self_locking_with_margin(self) -> bool: ...
+    @property
+    def brake_torque_nm(self) -> float: ...
+
+
 def rests_on(
-    governing: "CheckResult | None", provenance: Mapping[str, Provenance], hinges: Sequence[str]
+    governing: CheckResult | None, provenance: Mapping[str, Provenance], hinges: Sequence[str]
 ) -> tuple[Rest, ...]:
     """The assumed catalog values the governing check reads, then the ranged values the
     pass hinges on (robustness), each once."""
@@ -151,9 +173,7 @@ def rests_on(
     return tuple(found.values())
 
 
-def runner_up(
-    checks: Sequence["CheckResult"], governing: "CheckResult | None"
-) -> "CheckResult | None":
+def runner_up(checks: Sequence[CheckResult], governing: CheckResult | None) -> CheckResult | None:
     """The numeric limit closest to its own, after the governing check."""
     others = [
         c for c in checks if c is not governing and c.kind == "limit" and c.utilization is not None
@@ -161,7 +181,7 @@ def runner_up(
     return max(others, key=lambda c: c.utilization or 0.0, default=None)
 
 
-def watch_list(c: "Candidate") -> tuple[Phrase, ...]:
+def watch_list(c: Record) -> tuple[Phrase, ...]:
     """What to keep an eye on: failed advice, the next-closest limit, and how the load is
     held with the power off."""
     found = [Phrase(f"{w.label} (advice)") for w in c.warnings]
@@ -181,7 +201,7 @@ def watch_list(c: "Candidate") -> tuple[Phrase, ...]:
 
 
 def sentence(
-    governing: "CheckResult | None", passed: bool, rest: Sequence[Rest], watch: Sequence[Phrase]
+    governing: CheckResult | None, passed: bool, rest: Sequence[Rest], watch: Sequence[Phrase]
 ) -> Phrase:
     """The verdict in words: governs (utilisation, margin); rests on; watch."""
     if governing is None:
@@ -206,7 +226,7 @@ def sentence(
     return join(parts)
 
 
-def verdict(c: "Candidate") -> Verdict:
+def verdict(c: Record) -> Verdict:
     """The verdict of candidate record ``c``."""
     g = c.governing
     rest = rests_on(g, c.screw.provenance, c.hinges_on)

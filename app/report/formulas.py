@@ -11,6 +11,7 @@ formula (the running back-drive efficiency, a margin).
 from collections.abc import Callable
 from typing import Any, TypedDict
 
+from app.contract.units import api_value
 from app.core import motion, quantities
 from app.core.checks import REGISTRY
 from app.core.formulas import (
@@ -175,3 +176,22 @@ FORMULAS.update(
         for c in REGISTRY
     }
 )
+
+
+#: Every check the selection runs, in registry order, as the API lists it: what it
+#: means, its formula, its source, the catalog values it reads and its API unit.
+CHECKS_OUT: dict[str, Any] = {
+    "checks": [
+        {
+            "name": c.name,
+            "label": c.label,
+            "kind": c.kind,
+            "description": c.description,
+            "formula": c.formula,
+            "source": c.source,
+            "sources": list(c.sources),
+            "unit": api_value(0.0, c.quantity)[1],
+        }
+        for c in REGISTRY
+    ]
+}

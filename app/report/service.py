@@ -33,6 +33,13 @@ INPUT_RANGES = {
     for f in FIELDS
     if f.bounds is not None
 }
+#: Each input a summary may name, by core name: its label in words and its quantity,
+#: from the field table.
+INPUT_WORDS = {
+    f.core: (f.label.lower(), f.dimension)
+    for f in FIELDS
+    if f.kind == "number" and f.dimension is not None
+}
 #: Where the compact select response points for the formulas table.
 FORMULAS_URL = "/api/v1/formulas"
 
@@ -51,7 +58,7 @@ def run_selection(
     ``units`` (the API's own by default), its candidates in ``VIEWS[view]`` (every field
     by default; "csv": the CSV export's)."""
     selection = select(
-        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES
+        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
     )
     return construct_select_out(inputs, catalog, selection_out(selection, units, view))
 
@@ -79,7 +86,7 @@ def run_page_selection(
     ``units``. The rejected are in full too only when nothing passes: then the charts and
     the advice are about them."""
     selection = select(
-        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES
+        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
     )
     rejected = selection.rejected if not selection.passed else ()
     out = construct(
@@ -98,7 +105,7 @@ def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, 
     """Select and rank over the catalog: the API's compact select response
     (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
     selection = select(
-        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES
+        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
     )
     return {
         "detail": "summary",

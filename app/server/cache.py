@@ -10,7 +10,7 @@ that someone else had run the same inputs.
 
 An entry is keyed by a digest of exactly what its response depends on: the path, the
 query, whether the body is gzip-compressed and (on pages) whether it is an HTMX
-fragment, each decided by ``app.headers`` the same way the response itself decides it.
+fragment, each decided by ``app.server.headers`` the same way the response itself decides it.
 Header values never enter the key, so a client cannot grow the cache by sending long
 ones, nor store one kind of response where another kind is looked up.
 """

@@ -1,6 +1,6 @@
 """Gzip for dynamic responses, decided by the same header reading as the response cache.
 
-The gzip-or-not choice is ``app.headers.accepts_gzip``, the function the cache keys on
+The gzip-or-not choice is ``app.server.headers.accepts_gzip``, the function the cache keys on
 (Starlette's ``GZipMiddleware`` looks for ``gzip`` anywhere in the first Accept-Encoding
 line, ``gzip;q=0`` included). The rules are Starlette's: a body under ``minimum_size``
 goes as it is; any larger one gets ``Vary: Accept-Encoding``, and is compressed when the

@@ -13,7 +13,7 @@ class ModelJSON(Response):
     ``app.report.service``; validating them again on every request cost more than serializing
     them (1.5 ms of 2.3 ms for a select). They are served as they are, byte for byte what
     the validated model would give (non-finite floats as null);
-    tests/test_api_serialization.py checks that the served JSON equals the model's.
+    tests/api/test_api_serialization.py checks that the served JSON equals the model's.
     """
 
     media_type = "application/json"

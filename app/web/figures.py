@@ -12,16 +12,13 @@ from app.catalog import Catalog
 from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display, api_value, si_to_api, sig
-from app.core import motion
 from app.core.formulas import critical_speed, pv
-from app.core.index import size_of
-from app.core.motion import curve_margin
-from app.core.sweep import LeadPoint, lead_sweep
+from app.report.charts import LeadPoint, chart_data
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
 from app.web.chart_style import layout as _layout
 from app.web.chart_style import rounded as _round
-from app.web.life_figures import life_figure
+from app.web.life_figures import LIFE_TOP, life_figure
 from app.web.motion_figures import motor_figure, move_figure
 
 TORQUE_PARTS = (("inertia_nm", "Inertia", "#56B4E9"), ("drag_nm", "Drag", "#E69F00"))
@@ -216,7 +213,7 @@ def pv_figure(
 
 
 def torque_figure(
-    candidates: Sequence[CandidateOut], max_torque_nm: float | None, d: Display
+    candidates: Sequence[CandidateOut], limit_nm: float | None, d: Display
 ) -> dict[str, Any]:
     """Stacked bars of the running torque per candidate: inertia + drag + load.
 
@@ -236,7 +233,7 @@ def torque_figure(
         for key, name, colour in (*TORQUE_PARTS, LOAD_PART)
     ]
     extra: dict[str, Any] = {"barmode": "stack"}
-    if max_torque_nm is not None:
+    if limit_nm is not None:
         extra["shapes"] = [
             {
                 "type": "line",
@@ -244,8 +241,8 @@ def torque_figure(
                 "x0": 0,
                 "x1": 1,
                 "yref": "y",
-                "y0": _round(d.value(max_torque_nm, "torque")),
-                "y1": _round(d.value(max_torque_nm, "torque")),
+                "y0": _round(d.value(limit_nm, "torque")),
+                "y1": _round(d.value(limit_nm, "torque")),
                 "line": {"color": "#A00000", "dash": "dash", "width": 2},
             }
         ]
@@ -420,31 +417,23 @@ def result_figures(
     if not candidates:
         return {}
     d = Display(units)
-    app = (
-        result.inputs.to_core(catalog.motors, catalog.supports) if catalog else result.inputs.axis()
-    )
-    length_mm, _ = api_value(app.length_m, "length")
-    speed_mm_s, _ = api_value(motion.reached_speed(app), "speed")
+    data = chart_data(result.inputs, catalog, [c.id for c in candidates], LIFE_TOP)
+    length_mm, _ = api_value(data.length_m, "length")
+    speed_mm_s, _ = api_value(data.speed_m_s, "speed")
     figures = {
         "critical_speed": critical_speed_figure(candidates, length_mm, d),
         "pv": pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d),
-        "torque": torque_figure(candidates, app.max_torque_nm, d),
+        "torque": torque_figure(candidates, data.torque_limit_nm, d),
     }
-    top = candidates[0]
-    sweep = (
-        lead_sweep(app, catalog.index, size_of(catalog.by_id[top.id]))
-        if catalog is not None
-        else []
-    )
-    if len(sweep) > 1:
-        figures["lead_sweep"] = lead_sweep_figure(sweep, top, d)
-    life = life_figure(candidates, app, catalog, d) if catalog is not None else None
+    if len(data.sweep) > 1:
+        figures["lead_sweep"] = lead_sweep_figure(data.sweep, candidates[0], d)
+    life = life_figure(data.wear, data.wear_in_years, d)
     if life is not None:
         figures["life"] = life
     if candidates[0].segments:
-        if app.motor_curve:
+        if data.curve:
             figures["motor"] = motor_figure(
-                candidates, app.motor_curve, app.torque_safety_factor, d, curve_margin(app)
+                candidates, data.curve, data.torque_safety_factor, d, data.curve_margin
             )
         figures["move"] = move_figure(candidates[0], d)
     first = None if passing else result.summary.most_excluding_check

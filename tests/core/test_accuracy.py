@@ -1,4 +1,4 @@
-"""Positioning accuracy terms (app.core.accuracy): lead error and thermal growth."""
+"""Positioning accuracy terms (app.core.formulas.accuracy): lead error and thermal growth."""
 
 import pytest
 

@@ -1,4 +1,5 @@
-"""Euler column buckling (app.core.buckling) against published examples, and its remedies."""
+"""Euler column buckling (app.core.formulas.buckling) against published examples, and its
+remedies."""
 
 import math
 

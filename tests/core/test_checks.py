@@ -6,10 +6,11 @@ import pytest
 
 from app.catalog import Catalog
 from app.contract.units import render
+from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.formulas import limits
 from app.core.model import Application, ScrewSpec
-from app.core.record import Candidate, CheckResult
+from app.core.record import Candidate
 from tests.core.conftest import light_app
 
 ALWAYS = [

@@ -1,4 +1,5 @@
-"""Critical (whirling) speed from beam theory (app.core.critical_speed) and its remedies."""
+"""Critical (whirling) speed from beam theory (app.core.formulas.critical_speed) and its
+remedies."""
 
 import math
 

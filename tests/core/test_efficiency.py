@@ -1,4 +1,5 @@
-"""Thread efficiency, back-driving, self-locking and holding torque (app.core.efficiency)."""
+"""Thread efficiency, back-driving, self-locking and holding torque
+(app.core.formulas.efficiency)."""
 
 import math
 

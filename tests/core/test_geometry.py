@@ -1,4 +1,5 @@
-"""Screw geometry and kinematics (app.core.geometry) against the seed and published examples."""
+"""Screw geometry and kinematics (app.core.formulas.geometry) against the seed and published
+examples."""
 
 import math
 

@@ -6,10 +6,10 @@ import math
 import pytest
 
 from app.catalog import Catalog
+from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.formulas import heat
 from app.core.model import Application
-from app.core.record import CheckResult
 
 
 @pytest.mark.parametrize(

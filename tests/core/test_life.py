@@ -1,4 +1,4 @@
-"""Anti-backlash nut life converted to service years (app.core.life)."""
+"""Anti-backlash nut life converted to service years (app.core.formulas.life)."""
 
 import pytest
 from hypothesis import given

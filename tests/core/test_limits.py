@@ -1,4 +1,4 @@
-"""A family's band table and temperature range (app.core.limits), on the seed's data."""
+"""A family's band table and temperature range (app.core.formulas.limits), on the seed's data."""
 
 import pytest
 from hypothesis import given

@@ -1,4 +1,4 @@
-"""PV of the plastic nut by the seed's three-thread method (app.core.pv)."""
+"""PV of the plastic nut by the seed's three-thread method (app.core.formulas.pv)."""
 
 import math
 

@@ -10,8 +10,9 @@ from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.catalog.motors import with_motor
+from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import Application
-from app.core.remedy import MARGIN, part_way, past_limit
+from app.core.remedy import MARGIN, impossible, part_way, past_limit
 from app.core.selection import screen, select
 from app.report.service import INPUT_RANGES
 
@@ -118,3 +119,21 @@ def test_when_some_screws_are_excluded_otherwise_it_does_not_say_no_leadscrew_ca
     text = summary.impossible.template
     assert text.startswith("No leadscrew in the catalog can do this with this motor")
     assert "a larger motor or a gearbox" in text
+
+
+def test_why_none_is_the_excluding_checks_own_text() -> None:
+    """The sentence for a check that excludes every screw is the one its module gives
+    (``Check.why_none``), and only a motor check adds 'with this motor'."""
+    speed = impossible("critical_speed", "Critical speed", True, ())
+    assert BY_NAME["critical_speed"].why_none[1:] in speed.template
+    assert "with this motor" not in speed.template
+    rms = impossible("motor_rms", "Motor RMS torque", True, ())
+    assert "with this motor" in rms.template
+    assert BY_NAME["motor_rms"].why_none[1:] in rms.template
+
+
+def test_a_check_without_its_own_text_is_named() -> None:
+    checks = [c for c in REGISTRY if not c.why_none]
+    assert checks, "every check has a text: this test has nothing to try"
+    text = impossible(checks[0].name, checks[0].label, True, ()).template
+    assert f"{checks[0].label[1:]} excludes every screw" in text

@@ -5,10 +5,10 @@ import pytest
 
 from app.catalog import Catalog
 from app.contract.units import render
+from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.formulas import stepping
 from app.core.model import Application
-from app.core.record import CheckResult
 
 
 @pytest.mark.parametrize(

@@ -1,4 +1,5 @@
-"""Drive torque: inertia + drag + load (app.core.torque), seed formulas and Shigley ex. 8-1."""
+"""Drive torque: inertia + drag + load (app.core.formulas.torque), seed formulas and Shigley
+ex. 8-1."""
 
 import math
 

@@ -19,7 +19,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 @pytest.mark.parametrize("key", sorted(FORMULAS))
 def test_formula_names_an_existing_core_function(key: str) -> None:
-    """'app.core.pv.pv_value', or a check's 'app.core.checks.pv.NutPV.measure'."""
+    """'app.core.formulas.pv.pv_value', or a check's 'app.core.checks.pv.NutPV.measure'."""
     parts = FORMULAS[key]["function"].split(".")
     for cut in range(len(parts) - 1, 0, -1):
         try:

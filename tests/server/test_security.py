@@ -1,6 +1,6 @@
 """Security headers on every kind of response, no reflected markup, bounded requests.
 
-Payloads go into every page parameter (``app.page_form`` field and unit names) and every API
+Payloads go into every page parameter (``app.contract.form`` field and unit names) and every API
 field; whatever comes back must not carry them as live markup. Oversized requests get a
 4xx before the body is read, in process and from a real uvicorn, and the server answers
 its health check afterwards.

@@ -1,6 +1,6 @@
 """Start-up with a broken extra catalog: the app refuses to start and names file and field.
 
-The loader's own rules are unit-tested in tests/test_catalog.py; these tests check what an
+The loader's own rules are unit-tested in tests/catalog/test_catalog.py; these tests check what an
 operator sees: ``create_app`` raising ``CatalogError``, and the console script and uvicorn
 exiting non-zero with the file and the field on stderr.
 """

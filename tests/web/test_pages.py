@@ -18,7 +18,7 @@ from fastapi.testclient import TestClient
 from httpx import Response
 
 from app.catalog import Catalog
-from app.contract.fields import BY_API, BY_PAGE
+from app.contract.fields import BY_API, BY_PAGE, FIELDS
 from app.contract.inputs import ApplicationIn
 from app.contract.outputs import SelectOut
 from app.contract.units import DEFAULT_UNITS
@@ -544,9 +544,13 @@ def test_an_infeasible_change_is_not_offered_but_said(client: TestClient) -> Non
                      "moving_mass_kg": 800, "orientation": "vertical"}).json()  # fmt: skip
     assert api["summary"]["input_change"] == {}
     # Tr40x7 bronze, nearest, is held to MISUMI's thrust and its sliding speed: neither a
-    # load nor a speed within the accepted inputs admits it.
+    # load nor a speed within the accepted inputs admits it; each named by its form label.
+    load, speed = (
+        next(f.label.lower() for f in FIELDS if f.core == k) for k in ("load_n", "speed_m_s")
+    )
     assert re.search(
-        r"No load( and speed)? within the accepted inputs admits it\.", api["summary"]["message"]
+        rf"No {load}( and {speed})? within the accepted inputs admits it\.",
+        api["summary"]["message"],
     )
     assert not re.search(r" -\d", api["summary"]["message"])
 

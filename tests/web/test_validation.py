@@ -7,8 +7,8 @@ from fastapi.testclient import TestClient
 from app.contract.fields import BY_API
 from app.contract.units import sig
 from app.core.checks import REGISTRY
+from app.report.validation import EXAMPLES, TOLERANCE, Example
 from app.web.guide import PROVENANCE
-from app.web.validation import EXAMPLES, TOLERANCE, Example
 
 
 def test_the_table_holds_at_least_twelve_examples_from_several_sources() -> None:

@@ -17,6 +17,7 @@ from app.core.phrase import Amount, Phrase
 
 class AntiBacklash(Check):
     name = "anti_backlash"
+    why_none = "no anti-backlash nut suits this axis: a preloaded ball screw"
     label = "Anti-backlash"
     description = "An anti-backlash (preloaded) nut when the axis must not have backlash."
     formula = "passes when anti_backlash"

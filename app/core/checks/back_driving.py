@@ -22,6 +22,10 @@ from app.core.phrase import Amount, Phrase
 
 class BackDriving(Check):
     name = "back_driving"
+    why_none = (
+        "every screw back-drives under this load: add a brake (its torque as an input) or a "
+        "self-locking worm stage"
+    )
     label = "Self-locking (vertical axis, no brake)"
     description = (
         "On a vertical axis with no brake the load pushes the nut down. The thread holds it "

@@ -13,7 +13,7 @@ from typing import ClassVar, Literal
 import numpy as np
 
 from app.core import motion
-from app.core.model import Application, EndFixity, ScrewSpec
+from app.core.model import FIXITY_ORDER, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities, compression_sign
 from app.core.table import Array, CandidateTable, Mask, Reach
@@ -57,10 +57,6 @@ def at_most(limit: float) -> float:
 def at_least(limit: float) -> float:
     """A proposed lower value, ``FIX_MARGIN`` above the ``limit`` it must reach."""
     return limit * (1.0 + FIX_MARGIN)
-
-
-#: End fixities from the most to the least flexible.
-FIXITY_ORDER: tuple[EndFixity, ...] = ("fixed-free", "simple-simple", "fixed-simple", "fixed-fixed")
 
 
 @dataclass(frozen=True, slots=True)
@@ -107,6 +103,13 @@ class Check:
     sources: ClassVar[tuple[str, ...]] = ()
     #: catalog fields the capacity rests on; empty: the capacity is the user's input
     capacity_sources: ClassVar[tuple[str, ...]] = ()
+    #: when this check excludes every screw of the catalog: why no leadscrew can do it
+    #: and what kind of drive could (lower case, no full stop); empty: the remedy says
+    #: only that the check excludes every screw
+    why_none: ClassVar[str] = ""
+    #: whether the check judges the motor rather than the screw (another motor may
+    #: still drive the screws it rejects)
+    judges_motor: ClassVar[bool] = False
 
     def applies(self, app: Application) -> bool:
         """Whether the check runs at all for this application (default: always)."""

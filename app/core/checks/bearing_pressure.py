@@ -22,6 +22,9 @@ from app.core.phrase import Amount, Phrase
 
 class BearingPressure(Check):
     name = "bearing_pressure"
+    why_none = (
+        "no nut carries this thrust at its contact pressure: consider a longer nut or a ball screw"
+    )
     label = "Nut contact pressure"
     description = (
         "The peak thrust (load and m a) spread over the engaged flanks of the nut (nut "

@@ -25,6 +25,10 @@ from app.core.quantities import column_length
 
 class ColumnBuckling(Check):
     name = "buckling"
+    why_none = (
+        "the thrust buckles every screw of this length: consider mounting it so that it pulls"
+        " (tension), a screw support, or a ball screw"
+    )
     label = "Column buckling"
     description = (
         "A screw pushed in compression buckles as a column. Slender screws follow Euler; "
@@ -40,7 +44,7 @@ class ColumnBuckling(Check):
     )
     source = (
         "Euler column (Timoshenko & Gere); Johnson parabola and transition slenderness, "
-        "Shigley's Mechanical Engineering Design, 10th ed., sec. 4-11 to 4-13"
+        "Shigley's Mechanical Engineering Design, 9th ed., sec. 4-11 to 4-13"
     )
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")

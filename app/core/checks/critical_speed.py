@@ -25,6 +25,10 @@ from app.core.phrase import Amount, Phrase
 
 class CriticalSpeed(Check):
     name = "critical_speed"
+    why_none = (
+        "the speed needs a critical-speed margin no screw of this length reaches, at any "
+        "mounting: consider a ball screw, a rotating nut or an intermediate screw support"
+    )
     label = "Critical speed"
     description = (
         "A long thin screw whirls when it turns near its first bending frequency; the "

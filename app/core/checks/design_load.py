@@ -22,6 +22,7 @@ from app.core.phrase import Amount, Phrase
 
 class DesignLoad(Check):
     name = "design_load"
+    why_none = "the thrust exceeds every screw's design load: consider a ball screw"
     label = "Design load"
     description = (
         "The peak thrust (running load plus the force that accelerates or brakes the "

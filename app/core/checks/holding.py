@@ -63,6 +63,7 @@ def holding_phrase(
 
 class Holding(Check):
     name = "holding"
+    why_none = "no brake torque given holds this load on any screw: a larger brake"
     label = "Holding torque (vertical axis)"
     description = (
         "Where the axis holds a load at rest (vertical, or a load of fixed direction) the "

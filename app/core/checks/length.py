@@ -20,6 +20,7 @@ from app.core.phrase import Amount, Phrase
 
 class Length(Check):
     name = "length"
+    why_none = "no screw in the catalog is made this long: consider a ball screw or a belt"
     label = "Length"
     description = "The screw length against the longest screw made in this variant."
     quantity = "length"

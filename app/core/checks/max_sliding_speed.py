@@ -20,6 +20,7 @@ from app.core.phrase import Amount, Phrase
 
 class MaxSlidingSpeed(Check):
     name = "max_sliding_speed"
+    why_none = "no nut slides this fast: consider a longer lead, a ball screw or a belt"
     label = "Nut sliding speed"
     description = (
         "The speed at which the nut's flanks slide on the screw (the helix at the pitch "

@@ -67,6 +67,8 @@ def accel_that_fits(r: Quantities[float]) -> float | None:
 
 class MotorCurve(Check):
     name = "motor_curve"
+    why_none = "the motor's curve is too low for every screw: a larger motor or a gearbox"
+    judges_motor = True
     label = "Motor torque-speed curve"
     description = (
         "Each segment of the move (accelerate, constant, decelerate, dwell; both ways) "

@@ -20,6 +20,8 @@ from app.core.phrase import Amount, Phrase
 
 class MotorRms(Check):
     name = "motor_rms"
+    why_none = "the motor's RMS torque is too low for every screw: a larger motor"
+    judges_motor = True
     label = "Motor RMS torque"
     description = (
         "The root-mean-square motor torque over the cycle (out and back, with the dwells), "

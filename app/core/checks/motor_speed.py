@@ -27,6 +27,8 @@ def top_curve_rpm(app: Application) -> float:
 
 class MotorSpeed(Check):
     name = "motor_speed"
+    why_none = "the motor cannot turn fast enough for every lead: a faster motor"
+    judges_motor = True
     label = "Motor speed"
     description = (
         "The screw's top speed in the move (the triangle's peak when the stroke is short) "

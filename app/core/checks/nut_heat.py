@@ -28,6 +28,7 @@ def headroom(app: Application, t: CandidateTable) -> Array:
 
 class NutHeat(Check):
     name = "nut_heat"
+    why_none = "every nut runs too hot at this duty: a ball screw, or a lower duty"
     label = "Nut heat"
     description = (
         "With a stroke (the duty: moves and dwells), the thread's friction power at the "

@@ -18,6 +18,7 @@ from app.core.phrase import Phrase
 
 class OilCompatibility(Check):
     name = "coating_environment"
+    why_none = "no nut suits this environment (oil, coating): choose another nut material"
     label = "Oil and lubricants"
     description = (
         "Some variants (a dry-film coating) must not be lubricated or run where oil may "

@@ -23,6 +23,10 @@ from app.core.phrase import Amount, Phrase
 
 class NutPV(Check):
     name = "pv"
+    why_none = (
+        "no nut carries this load at this speed (PV): consider a ball screw, whose rolling "
+        "contact has no PV limit"
+    )
     label = "PV (nut material)"
     description = (
         "A plastic nut heats and wears with pressure times sliding speed; above its PV "

@@ -22,6 +22,7 @@ from app.core.phrase import Amount, Phrase
 
 class RootStress(Check):
     name = "root_stress"
+    why_none = "the thrust and the torque it takes yield every screw's root: consider a ball screw"
     label = "Root stress (yield)"
     description = (
         "The root section of the screw under the peak thrust, pushed or pulled, and the "

@@ -22,6 +22,10 @@ from app.core.phrase import Amount, Phrase
 
 class SupportLife(Check):
     name = "support_life"
+    why_none = (
+        "the thrust bearing does not last this duty on any lead: a support unit of a higher "
+        "dynamic rating"
+    )
     label = "Thrust bearing life"
     description = (
         "The thrust bearing's basic rating life L10 = (Ca / Fm)^3 million revolutions "

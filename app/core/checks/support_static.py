@@ -29,6 +29,10 @@ def rating_source(app: Application) -> str:
 
 class SupportStatic(Check):
     name = "support_static"
+    why_none = (
+        "the peak thrust exceeds the thrust bearing's static rating: a larger support unit, "
+        "or a lower load or acceleration"
+    )
     label = "Thrust bearing (static)"
     description = (
         "The screw's thrust bearing (the fixed-side support unit) carries the peak thrust "

@@ -20,6 +20,10 @@ from app.core.phrase import Amount, Phrase
 
 class Temperature(Check):
     name = "temperature"
+    why_none = (
+        "no nut in the catalog is rated for this temperature: consider a metal nut outside "
+        "the catalog or a ball screw"
+    )
     label = "Operating temperature"
     description = "The ambient temperature against the assembly's rated range."
     formula = "passes when T_min <= T_ambient <= T_max"

@@ -23,6 +23,8 @@ from app.core.phrase import Amount, Phrase
 
 class DriveTorque(Check):
     name = "torque"
+    why_none = "the motor is too small for every screw: a larger motor or a gearbox"
+    judges_motor = True
     label = "Drive torque"
     description = (
         "The torque the screw needs, with the torque safety factor, against the drive: the "

@@ -25,6 +25,7 @@ def outgassing_known(t: CandidateTable) -> Mask:
 
 class Vacuum(Check):
     name = "vacuum"
+    why_none = "no nut is rated for vacuum: consider a vacuum-rated ball screw"
     label = "Vacuum (outgassing)"
     kind = "advice"
     description = (

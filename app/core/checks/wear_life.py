@@ -36,6 +36,7 @@ def life_band(s: ScrewSpec) -> tuple[float, float]:
 
 class WearLife(Check):
     name = "wear_life"
+    why_none = "no nut lasts this duty: consider a ball screw"
     label = "Nut wear life"
     description = (
         "Archard's law: the thrust over the nut's loaded flanks wears them by the nut "

@@ -109,7 +109,7 @@ def johnson_critical_load(
     """Johnson's parabola for intermediate columns, F_cr = A (S_y - (S_y s / 2 pi)^2 / E) [N].
 
     Valid below the transition slenderness; at s = 0 it is the squash load A S_y.
-    Source: Shigley [2], sec. 4-13, eq. 4-48 (with the effective length, C = 1).
+    Source: Shigley [2], sec. 4-13, eq. 4-46 (with the effective length, C = 1).
 
     >>> round(johnson_critical_load(1e-4, 310e6, 207e9, 50.0))
     28060
@@ -169,7 +169,7 @@ def root_shear_stress(torque_nm: float, root_diameter_m: float) -> float:
     [Pa].
 
     torque_nm: the torque the section carries, T [N m]; root_diameter_m: d_r [m]. A solid
-    round section in elastic torsion. Source: Shigley [2], 9th ed., eq. (8-7); its
+    round section in elastic torsion. Source: Shigley [2], eq. (8-7); its
     Example 8-1 (d): T_R = 26.18 N m on d_r = 28 mm gives 6.07 MPa.
 
     >>> round(root_shear_stress(26.18, 0.028) / 1e6, 2)
@@ -190,7 +190,7 @@ def root_von_mises_stress(load_n: float, torque_nm: float, root_diameter_m: floa
 
     load_n: axial force F [N] (pushed or pulled: the sign does not matter); torque_nm: the
     torque the same section carries, T [N m]; root_diameter_m: d_r [m]. Valid while the
-    section is elastic (sigma_vm below yield). Source: Shigley [2], 9th ed., eqs. (8-7)
+    section is elastic (sigma_vm below yield). Source: Shigley [2], eqs. (8-7)
     and (8-8) for the body stresses and eq. (5-15) for their von Mises combination; with
     its Example 8-1 (F = 6.4 kN, T_R = 26.18 N m, d_r = 28 mm: sigma = -10.39 MPa,
     tau = 6.07 MPa) the body's combined stress is 14.79 MPa (14.78 from the rounded

@@ -16,7 +16,7 @@ from typing import Any, TypeVar, cast
 #: The seed catalog the series data and many formulas come from.
 SEED = "seed catalog, Leadscrew Assemblies: Design and Engineering Data"
 #: Power screws: efficiency, self-locking, raising and lowering torque.
-SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed., sec. 8-2"
+SHIGLEY = "Shigley's Mechanical Engineering Design, 9th ed., sec. 8-2"
 
 F = TypeVar("F", bound=Callable[..., Any])
 

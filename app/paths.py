@@ -10,8 +10,8 @@ inside it (``app/templates``, ``app/static``, ``app/catalog_data``).
 
 from pathlib import Path
 
-#: the ``app`` package's folder (this module sits in ``app/server``)
-_PACKAGE = Path(__file__).resolve().parents[1]
+#: the ``app`` package's folder (this module sits in it)
+_PACKAGE = Path(__file__).resolve().parent
 _INSTALLED = {"templates": "templates", "static": "static", "catalog": "catalog_data"}
 
 

@@ -2,7 +2,7 @@
 
 Each example names its source, its inputs and the published value, and computes the app's
 value live by calling the core's formula functions, so the page always shows what the
-running code gives. ``tests/test_validation.py`` iterates this same list and holds every
+running code gives. ``tests/web/test_validation.py`` iterates this same list and holds every
 ratio within ``TOLERANCE``: the page and the test cannot drift apart.
 """
 

@@ -1,0 +1,230 @@
+"""The screening's arrays at the positions of a batch of candidates, read when first
+asked for: the columns (one per quantity, verdict or table column, taken for the whole
+batch at once), each candidate's check results and its move. The candidate records
+(``app.core.record``) and their sections (``app.core.sections``) read their numbers here.
+"""
+
+import math
+from collections.abc import Mapping, Sequence
+from functools import cached_property
+from typing import Any, Literal, NamedTuple
+
+import numpy as np
+from numpy.typing import NDArray
+
+from app.core import motion
+from app.core.checks import BY_NAME
+from app.core.checks.base import Check
+from app.core.model import Application, Motion, ScrewSpec, Segment
+from app.core.phrase import Phrase, Quantity
+from app.core.quantities import Quantities
+from app.core.screening import Screening
+from app.core.table import Array
+
+#: The screening's per-candidate verdicts a record reads as columns.
+VERDICTS = frozenset({"passed", "max_utilization"})
+#: Positions in a screening, as an index array (NumPy picks with one four times faster
+#: than with a list).
+Positions = NDArray[np.intp]
+
+
+def positions_array(positions: Sequence[int]) -> Positions:
+    """``positions`` as an index array."""
+    return np.asarray(positions, dtype=np.intp)
+
+
+class Batch:
+    """The screening's arrays at the positions of some candidates: each column taken for
+    all of them at once, when first read (``column``)."""
+
+    def __init__(self, app: Application, sc: Screening, positions: Sequence[int]) -> None:
+        self.app, self.screening = app, sc
+        self.positions = [int(i) for i in positions]
+        self.at = positions_array(self.positions)
+        self._columns: dict[str, list[Any]] = {}
+
+    def column(self, name: str) -> list[Any]:
+        """The screening's column ``name`` at the batch's positions, as Python values: a
+        quantity (``Quantities``), else a verdict (``passed``, ``max_utilization``), else a
+        column of the table; taken once, when first read."""
+        if name not in self._columns:
+            sc = self.screening
+            source = getattr(sc.quantities, name, None)
+            if source is None:
+                source = getattr(sc, name) if name in VERDICTS else getattr(sc.table, name)
+            self._columns[name] = source[self.at].tolist()
+        return self._columns[name]
+
+    @cached_property
+    def slots(self) -> list["Slot"]:
+        """Each candidate's slot: what its sections and checks read."""
+        sc, app = self.screening, self.app
+        return [Slot(app, sc, i) for i in self.positions]
+
+    @cached_property
+    def results(self) -> list[tuple["CheckResult", ...]]:
+        """Per candidate, every check that applies, in registry order: read from the
+        screening's arrays in one pass over the checks. Demand and capacity are NaN for
+        a yes/no check; the utilisation None where it is not a finite number (no demand
+        or limit, or a zero limit)."""
+        sc, at, slots = self.screening, self.at, self.slots
+        nan = [math.nan] * len(at)
+        per: list[list[CheckResult]] = [[] for _ in at]
+        for name, m in sc.measures.items():
+            check = BY_NAME[name]
+            rows = zip(
+                m.applicable[at].tolist(),
+                nan if m.demand is None else m.demand[at].tolist(),
+                nan if m.capacity is None else m.capacity[at].tolist(),
+                _utilizations(sc.utilization[name], at),
+                sc.failed[name][at].tolist(),
+                slots,
+                per,
+                strict=True,
+            )
+            for applies, demand, capacity, utilization, failed, slot, out in rows:
+                if applies:
+                    out.append(
+                        CheckResult(
+                            name, check.kind, not failed, utilization, demand, capacity, check, slot
+                        )
+                    )
+        return [tuple(checks) for checks in per]
+
+    @cached_property
+    def motions(self) -> list[Motion | None]:
+        """The move and its segments' torques per candidate (None each without a stroke)."""
+        p = motion.move_profile(self.app)
+        if p is None:
+            return [None] * len(self.at)
+        hold = np.array(self.column("brake_nm"))
+        parts = motion.segments(self.app, p, self.screening.table.take(self.at), hold)
+        columns = [(s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist()) for s in parts]
+        peak, rms = self.column("motor_peak_nm"), self.column("motor_rms_nm")
+        return [
+            Motion(
+                profile=p,
+                segments=tuple(
+                    Segment(s.name, s.direction, s.duration_s, rpm[k], thrust[k], torque[k])
+                    for s, rpm, thrust, torque in columns
+                ),
+                peak_nm=peak[k],
+                rms_nm=rms[k],
+            )
+            for k in range(len(self.at))
+        ]
+
+
+def _utilizations(values: Array | None, index: Positions) -> list[float | None]:
+    if values is None:
+        return [None] * len(index)
+    picked = values[index]
+    finite = np.isfinite(picked).tolist()
+    return [v if ok else None for v, ok in zip(picked.tolist(), finite, strict=True)]
+
+
+class Numbers:
+    """One candidate's quantities (``Quantities``' names, SI), each read when first asked
+    for: ``record.quantities.total_nm``."""
+
+    __slots__ = ("_batch", "_k")
+
+    def __init__(self, batch: Batch, k: int) -> None:
+        self._batch, self._k = batch, k
+
+    def __getattr__(self, name: str) -> float:
+        return float(self._batch.column(name)[self._k])
+
+
+class CheckResult(NamedTuple):
+    """One check of one candidate: demand against capacity, with the message and the fix.
+
+    ``value`` (demand) and ``limit`` (capacity) are SI in ``quantity``; None for yes/no
+    checks. ``utilization`` = value / limit. The message, the fix and ``input_limits``
+    (application inputs any one of which, set to the given SI value, would make the check
+    pass, e.g. {"load_n": 120.0}) are written when read: most results are ranked or
+    counted, not read.
+    """
+
+    name: str
+    kind: Literal["limit", "advice"]
+    passed: bool
+    utilization: float | None
+    demand: float
+    capacity: float
+    check: Check
+    slot: "Slot"
+
+    @property
+    def label(self) -> str:
+        return self.check.label
+
+    @property
+    def formula(self) -> str:
+        return self.check.formula
+
+    @property
+    def sources(self) -> tuple[str, ...]:
+        return self.check.sources
+
+    @property
+    def numeric(self) -> bool:
+        return not (math.isnan(self.demand) or math.isnan(self.capacity))
+
+    @property
+    def value(self) -> float | None:
+        return self.demand if self.numeric else None
+
+    @property
+    def limit(self) -> float | None:
+        return self.capacity if self.numeric else None
+
+    @property
+    def quantity(self) -> Quantity | None:
+        return self.check.quantity if self.numeric else None
+
+    @property
+    def message(self) -> Phrase:
+        at = self.slot
+        return self.check.explain(at.app, at.screw, at.row, self.passed)
+
+    @property
+    def fix(self) -> Phrase | None:
+        return None if self.passed else self.slot.fix_of(self.check)
+
+    @property
+    def input_limits(self) -> Mapping[str, float] | None:
+        if self.passed:
+            return None
+        at = self.slot
+        limits = self.check.input_limits(at.app, at.screw, at.row)
+        return dict(limits) if limits else None
+
+
+class Slot:
+    """What a candidate's checks read to write their sentences: the application, its
+    screw, its quantities and the catalog's reach, and its fixes, each written once. (A
+    slot holds no reference to the record or its batch, so the batch keeps the slots
+    and a record holds no reference cycle: it is freed as soon as it is dropped.)"""
+
+    __slots__ = ("_fixes", "_row", "app", "position", "screening", "screw")
+
+    def __init__(self, app: Application, sc: Screening, position: int) -> None:
+        self.app, self.screening, self.position = app, sc, position
+        self.screw: ScrewSpec = sc.table.screws[position]
+        self._row: Quantities[float] | None = None
+        self._fixes: dict[str, Phrase | None] = {}
+
+    @property
+    def row(self) -> Quantities[float]:
+        """Every quantity as a float (NaN: no such limit)."""
+        if self._row is None:
+            self._row = self.screening.quantities.at(self.position)
+        return self._row
+
+    def fix_of(self, check: Check) -> Phrase | None:
+        """What would make ``check`` pass, within what the catalog offers."""
+        if check.name not in self._fixes:
+            reach = self.screening.reach
+            self._fixes[check.name] = check.fix(self.app, self.screw, self.row, reach)
+        return self._fixes[check.name]

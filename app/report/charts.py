@@ -1,0 +1,87 @@
+"""The numbers behind a result's charts that the candidates' output models do not carry:
+the axis read from the inputs once, the lead sweep of the top candidate's size
+(``app.core.sweep.lead_sweep``) and the wear life of the wear-rated candidates at the
+cycle's wear thrust (``app.core.sweep.wear_points``). The pages draw them
+(``app.web.figures``); nothing here knows a chart."""
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from app.catalog import Catalog
+from app.contract.schemas import ApplicationIn
+from app.core import motion
+from app.core.checks.wear_life import life_band
+from app.core.index import size_of
+from app.core.model import Application
+from app.core.sweep import LeadPoint as LeadPoint
+from app.core.sweep import lead_sweep, wear_points
+from app.core.units import from_si
+
+
+@dataclass(frozen=True, slots=True)
+class WearLine:
+    """One wear-rated candidate at the cycle's wear thrust ``force_n`` [N]: its life
+    (years of the duty, or km of travel without a duty) and the shares of that life at
+    the wear rate's high and low ends (``life_band``)."""
+
+    id: str
+    force_n: float
+    life: float
+    band: tuple[float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class ChartData:
+    """The axis's numbers in SI that the charts mark (length [m], the speed the move
+    reaches [m/s], ``motion.reached_speed``, the torque
+    limit [N m] or None, the motor's curve as (rpm, N m) pairs, the torque safety factor and the
+    curve's margin, ``motion.curve_margin``), the lead sweep (empty without a catalog)
+    and the wear lines (``wear_in_years``: their life is in years of a duty)."""
+
+    length_m: float
+    speed_m_s: float
+    torque_limit_nm: float | None
+    curve: tuple[tuple[float, float], ...]
+    torque_safety_factor: float
+    curve_margin: float
+    sweep: list[LeadPoint]
+    wear: list[WearLine]
+    wear_in_years: bool
+
+
+def _wear_lines(
+    app: Application, catalog: Catalog, ids: Sequence[str], top: int
+) -> tuple[list[WearLine], bool]:
+    lines = []
+    for point in wear_points(app, catalog.index, ids)[:top]:
+        life = point.life_years
+        if life is None:
+            life = from_si(point.travel_m, "km")
+        lines.append(WearLine(point.id, point.force_n, life, life_band(catalog.by_id[point.id])))
+    return lines, bool(app.stroke_m and motion.cycles_per_day(app))
+
+
+def chart_data(
+    inputs: ApplicationIn, catalog: Catalog | None, ids: Sequence[str], wear_top: int
+) -> ChartData:
+    """The charts' numbers for a result whose candidates are ``ids``, best first (at
+    least one): the lead sweep of the first one's size and the wear lines of the first
+    ``wear_top`` wear-rated ones, given the catalog; the axis alone without it."""
+    app = inputs.to_core(catalog.motors, catalog.supports) if catalog else inputs.axis()
+    sweep: list[LeadPoint] = []
+    wear: list[WearLine] = []
+    in_years = False
+    if catalog is not None:
+        sweep = lead_sweep(app, catalog.index, size_of(catalog.by_id[ids[0]]))
+        wear, in_years = _wear_lines(app, catalog, ids, wear_top)
+    return ChartData(
+        length_m=app.length_m,
+        speed_m_s=motion.reached_speed(app),
+        torque_limit_nm=app.max_torque_nm,
+        curve=app.motor_curve,
+        torque_safety_factor=app.torque_safety_factor,
+        curve_margin=motion.curve_margin(app),
+        sweep=sweep,
+        wear=wear,
+        wear_in_years=in_years,
+    )
