@@ -27,7 +27,7 @@ from typing import Annotated, Any, Literal, Optional
 from pydantic import Field
 
 from app.contract.source import From, Writer
-from app.contract.units import Display, Quantity, sig
+from app.contract.units import Display, Quantity, si_to_api, sig
 from app.core import motion, quantities
 from app.core.formulas import (
     accuracy,
@@ -110,8 +110,9 @@ class Reported:
 
 
 def screw_inertia(values: tuple[float, float], w: Writer) -> float:
-    """The screw's rotary inertia [kg m²] from its inertia per length and length."""
-    return torque.screw_inertia(*values)
+    """The screw's rotary inertia, in the API's unit, from its inertia per length [kg m²/m]
+    and the screw's length [m]."""
+    return si_to_api(torque.screw_inertia(*values), "inertia")
 
 
 REPORTED: tuple[Reported, ...] = (
@@ -248,6 +249,19 @@ REPORTED: tuple[Reported, ...] = (
             "T = T_inertia_screw + T_inertia_mass + T_inertia_motor",
             SEED,
         ),
+    ),
+    Reported(
+        "screw_inertia_kg_m2",
+        "Screw inertia",
+        "The screw's rotary inertia over its length: the catalog's inertia per length × "
+        "the screw length. The motor accelerates it with the moving mass and its rotor.",
+        quantity="inertia",
+        better="lower",
+        column=True,
+        csv=True,
+        compare=True,
+        formula=Formula(torque.screw_inertia),
+        source=From(("screw.inertia_kg_m2_per_m", "app.length_m"), via=screw_inertia),
     ),
     Reported("torque.inertia_screw_nm", formula=Formula(torque.inertia_torque)),
     Reported(

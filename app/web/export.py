@@ -63,10 +63,10 @@ def cell(value: Any) -> Any:
 API_SUFFIXES = ("_mm_s", "_mm", "_nm", "_n", "_rpm", "_kg_m2", "_s")
 
 
-def _name(key: str) -> str:
+def csv_name(key: str) -> str:
     """A key of the output table without its API unit suffix.
 
-    >>> _name("torque.total_nm"), _name("lead_mm"), _name("rpm"), _name("fix")
+    >>> csv_name("torque.total_nm"), csv_name("lead_mm"), csv_name("rpm"), csv_name("fix")
     ('torque.total', 'lead', 'rpm', 'fix')
     """
     return next((key.removesuffix(s) for s in API_SUFFIXES if key.endswith(s)), key)
@@ -98,7 +98,7 @@ def _columns(d: Display) -> list[tuple[str, Getter]]:
     for row in REPORTED:
         if not row.csv:
             continue
-        name, unit = _name(row.key), row.unit_label(d)
+        name, unit = csv_name(row.key), row.unit_label(d)
         if row.key == "utilization":
             out += [
                 (_heading("", f"{name}.{c.name}", unit), _utilization(c.name)) for c in REGISTRY
