@@ -510,6 +510,7 @@ REPORTED: tuple[Reported, ...] = (
         csv=True,
         type=str,
     ),
+    Reported("verdict.governs_label", csv=True, type=str),
     Reported("fix", csv=True, type=str),
 )
 

@@ -194,7 +194,7 @@ class HoldingTorqueOut(BaseModel):
     physics_nm: Annotated[float, From("holding_torque_physics_nm", "torque")] = Field(
         description="F lead eta_b / 2 pi, back-drive eta, static mu."
     )
-    brake_nm: Annotated[float, From("brake_torque_nm", "torque")] = Field(
+    brake_nm: Annotated[float, From("brake_nm", "torque")] = Field(
         description="Holding torque needed: the larger of the two; 0 when self-locking with "
         "margin (before the torque safety factor)."
     )
@@ -357,7 +357,7 @@ class CandidateFields(BaseModel):
         "yes/no check)."
     )
     governing_check: Annotated[str | None, From("governing_check")] = Field(
-        description="The check with the highest utilisation (or a failed yes/no check)."
+        description="The check with the highest utilization (or a failed yes/no check)."
     )
     governing_limit_provenance: Annotated[
         ProvenanceKind | None, From("governing_limit_provenance")

@@ -175,7 +175,7 @@ def watch_list(c: "Candidate") -> tuple[Phrase, ...]:
                 Phrase(f"power off: held by the detent torque at {percent(detent.utilization)}")
             )
         else:
-            brake = Amount(c.brake_torque_nm, "torque")
+            brake = Amount(c.brake_nm, "torque")
             found.append(Phrase("back-drives: a brake of {t} holds it power-off", {"t": brake}))
     return tuple(found)
 

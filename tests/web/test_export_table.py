@@ -49,3 +49,13 @@ def test_every_row_carries_every_input_in_display_units(client: TestClient) -> N
     assert {r["input:load [lbf]"] for r in rows} == {"22.5"}
     assert {float(r["input:length [in]"]) for r in rows} == {500.0}
     assert {r["input:end_fixity"] for r in rows} == {"fixed-simple"}
+
+
+def test_the_governing_check_is_named_by_its_label_beside_its_id(client: TestClient) -> None:
+    """The id in ``governing_check``, the words the page shows in a column of their own."""
+    rows = _table(client.get("/export.csv", params=AXIS).text)
+    labels = {check.name: check.label for check in REGISTRY}
+    passed = [r for r in rows if r["status"] == "passed"]
+    assert passed
+    for row in passed:
+        assert row["verdict.governs_label"] == labels[row["governing_check"]]
