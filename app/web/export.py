@@ -60,7 +60,10 @@ def cell(value: Any) -> Any:
 
 #: the API unit suffixes a number's key ends in, left out of its CSV heading, which names
 #: the display unit in brackets instead.
-API_SUFFIXES = ("_mm_s", "_mm", "_nm", "_n", "_rpm", "_kg_m2", "_s")
+API_SUFFIXES = (
+    *("_mpa_m_s", "_m_s", "_mm_s2", "_mm_s", "_mm", "_m", "_nm", "_n", "_mpa"),
+    *("_rpm", "_kg_m2", "_kg", "_w", "_k", "_c", "_s", "_hz", "_deg"),
+)
 
 
 def csv_name(key: str) -> str:
