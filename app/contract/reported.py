@@ -170,6 +170,7 @@ REPORTED: tuple[Reported, ...] = (
         csv=True,
         compare=True,
         formula=Formula(geometry.screw_speed_rpm),
+        views=("summary",),
     ),
     Reported("axial_load_n", formula=Formula(quantities.axial_load)),
     Reported("peak_axial_load_n", formula=Formula(quantities.peak_axial_load)),
@@ -192,6 +193,7 @@ REPORTED: tuple[Reported, ...] = (
             "T = max(|T_segment| over the moving segments of both moves, T_breakaway)",
             "move profile",
         ),
+        views=("summary",),
     ),
     Reported(
         "torque.total_nm",
@@ -206,6 +208,7 @@ REPORTED: tuple[Reported, ...] = (
         csv=True,
         compare=True,
         formula=Formula(torque.total_torque),
+        views=("summary",),
     ),
     Reported(
         "torque.rms_nm",
@@ -220,6 +223,7 @@ REPORTED: tuple[Reported, ...] = (
         ranks=("rms",),
         compare=True,
         formula=Formula(profile.rms_torque),
+        views=("summary",),
     ),
     Reported(
         "motor_use",
@@ -233,6 +237,7 @@ REPORTED: tuple[Reported, ...] = (
         css="motor-use",
         ranks=("motor_margin",),
         csv=True,
+        views=("summary",),
     ),
     Reported(
         "torque.inertia_nm",
@@ -308,6 +313,7 @@ REPORTED: tuple[Reported, ...] = (
     Reported(
         "torque.peak_nm",
         formula=Formula(motion.segments, "T = max |T_segment| over the cycle", "move profile"),
+        views=("summary",),
     ),
     Reported(
         "efficiency",
@@ -320,6 +326,7 @@ REPORTED: tuple[Reported, ...] = (
         csv=True,
         compare=True,
         formula=Formula(efficiency.forward_efficiency),
+        views=("summary",),
     ),
     Reported("efficiency_square_thread", formula=Formula(efficiency.square_thread_efficiency)),
     Reported("backdrive_efficiency", formula=Formula(efficiency.backdrive_efficiency)),
@@ -327,7 +334,13 @@ REPORTED: tuple[Reported, ...] = (
         "backdrive_efficiency_running",
         formula=Formula(efficiency.backdrive_efficiency, "eta_b at the running (dynamic) friction"),
     ),
-    Reported("self_locking", csv=True, type=bool, formula=Formula(efficiency.is_self_locking)),
+    Reported(
+        "self_locking",
+        csv=True,
+        type=bool,
+        formula=Formula(efficiency.is_self_locking),
+        views=("summary",),
+    ),
     Reported(
         "self_locking_with_margin",
         type=bool,
@@ -386,6 +399,7 @@ REPORTED: tuple[Reported, ...] = (
         column=True,
         compare=True,
         formula=Formula(critical_speed.speed_margin),
+        views=("summary",),
     ),
     Reported(
         "critical_speed.allowed_rpm",
@@ -429,6 +443,7 @@ REPORTED: tuple[Reported, ...] = (
         csv=True,
         compare=True,
         formula=Formula(life.life_years),
+        views=("summary",),
     ),
     Reported(
         "life.travel_million_cm",

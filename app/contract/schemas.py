@@ -437,15 +437,7 @@ VIEWS: dict[str, View] = {
         ),
         view_of("row"),
     ),
-    "summary": merged(
-        {
-            **whole(NAMED, "rpm efficiency self_locking motor_use", VERDICT),
-            "torque": whole("total_nm peak_nm rms_nm peak_motor_nm"),
-            "critical_speed": whole("margin"),
-            "life": whole("years"),
-        },
-        view_of("summary"),
-    ),
+    "summary": merged(whole(NAMED, VERDICT), view_of("summary")),
     "rejected": merged(whole("id governing_check failed fix"), view_of("rejected")),
     "csv": view_of("csv"),
     "full": whole(*CandidateOut.model_fields),
