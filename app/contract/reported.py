@@ -83,24 +83,40 @@ class Formula:
 class Reported:
     """One reported number (or value) of a candidate; see the module's docstring."""
 
+    #: its path in the candidate's JSON, and its one name: ``torque.total_nm``
     key: str
+    #: the heading of its column or row, and what it means (the heading's hover text, the
+    #: guide, the field's description)
     label: str = ""
     help: str = ""
+    #: the display quantity of a number in a unit (converted by the page's switches), else
+    #: the unit as text ("rpm", "years"; "" for a share or a count)
     quantity: Quantity | None = None
     unit: str = ""
+    #: which way is better, for the compare page's best mark and the ranked column's order
     better: Better = None
+    #: how its cell renders (``Cell``), and a number's significant figures (a margin's
+    #: decimals)
     cell: Cell = "number"
     digits: int = 4
+    #: a column of the results table: when shown, a second line under the heading, whether
+    #: the heading names the unit (a composite cell names its own), the cell's CSS class,
+    #: and the rankings it shows (the ranking input's choices)
     column: bool = False
     shown: Shown = "always"
     note: str = ""
     unit_heading: bool = True
     css: str = ""
     ranks: tuple[str, ...] = ()
+    #: a column of the CSV (headed by the key without its API unit, in the display unit);
+    #: a row of the compare page; the candidate's views it is in besides ``full``
     csv: bool = False
     compare: bool = False
     views: tuple[ViewName, ...] = ()
+    #: the core function behind it (``app.report.formulas``)
     formula: Formula | None = None
+    #: for a number the hand-written models do not hold: where it comes from in the core's
+    #: record, and its type; the row then adds it to ``CandidateOut``
     source: From | None = None
     type: Any = float
 

@@ -89,12 +89,13 @@ def quantity_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
         values = [value_of(c, entry.key) for c in cs]
         if all(v is None for v in values):
             continue
-        if entry.cell == "holding":
-            cells = tuple(_holding(c, d) for c in cs)
+        unit = entry.unit_label(d)
+        if entry.cell == "holding":  # words, each with its own unit
+            cells, unit = tuple(_holding(c, d) for c in cs), ""
         else:
             cells = tuple(show(entry, v, d) for v in values)
         best = best_columns([_ranked(v) for v in values], entry.better)
-        rows.append(Row(entry.key, entry.label, entry.unit_label(d), cells, best, entry.better))
+        rows.append(Row(entry.key, entry.label, unit, cells, best, entry.better))
     return rows
 
 
