@@ -179,3 +179,18 @@ def test_wheel_carries_templates_static_and_catalog(tmp_path: Path) -> None:
     ):
         assert required in names
     assert any(n.startswith("app/static/vendor/htmx-2") for n in names)
+
+
+def test_app_runs_no_generated_code() -> None:
+    """No ``exec``, ``eval`` or ``compile`` in the app: plain code (the design guide)."""
+    found = []
+    for path in (ROOT / "app").rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            named = getattr(node, "func", None)
+            if isinstance(node, ast.Call) and getattr(named, "id", "") in (
+                "exec",
+                "eval",
+                "compile",
+            ):
+                found.append(f"{path.relative_to(ROOT)}:{node.lineno}")
+    assert found == []

@@ -40,7 +40,7 @@ class RemedyOut(BaseModel):
     )
     passing: int = Field(description="Candidates that pass with the change made.")
     utilization: float = Field(
-        description="The lowest governing utilisation among them: at most 1 / 1.05."
+        description="The lowest governing utilization among them: at most 1 / 1.05."
     )
 
 
@@ -112,7 +112,7 @@ class SelectQuery(ApplicationIn):
     detail: Literal["summary", "full"] = Field(
         "summary",
         description="summary (default): passing candidates as the results table shows "
-        "them, rejected ones as their failed checks with utilisation and fix, formulas at "
+        "them, rejected ones as their failed checks with utilization and fix, formulas at "
         "/api/v1/formulas (SelectSummaryOut); full: every number, check message, formula "
         "and provenance of every candidate, and the formulas table (SelectOut).",
     )

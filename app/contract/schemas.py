@@ -10,7 +10,7 @@ import operator
 from collections.abc import Mapping
 from functools import reduce
 from types import GenericAlias, UnionType
-from typing import Annotated, Any, Literal, Union, get_args, get_origin
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Union, get_args, get_origin
 
 from pydantic import (
     BaseModel,
@@ -20,6 +20,7 @@ from pydantic import (
 )
 
 from app.contract.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
+from app.contract.reported import added_fields, merged, view_of
 from app.contract.source import (
     From,
     check_limit,
@@ -193,7 +194,7 @@ class HoldingTorqueOut(BaseModel):
     physics_nm: Annotated[float, From("holding_torque_physics_nm", "torque")] = Field(
         description="F lead eta_b / 2 pi, back-drive eta, static mu."
     )
-    brake_nm: Annotated[float, From("brake_torque_nm", "torque")] = Field(
+    brake_nm: Annotated[float, From("brake_nm", "torque")] = Field(
         description="Holding torque needed: the larger of the two; 0 when self-locking with "
         "margin (before the torque safety factor)."
     )
@@ -276,13 +277,14 @@ class VerdictOut(BaseModel):
     )
 
 
-class CandidateOut(BaseModel):
+class CandidateFields(BaseModel):
     """One candidate: every number, every check with its message, formula and fix, and
     the provenance of the catalog values it uses. Each field says where it comes from in
     the core's candidate record (``From``); the forms of a candidate (``VIEWS``: the
     results table's row, the compact select's summary, a rejected candidate in the
     compact select, the CSV's row) are sets of these fields, and ``full`` is all of
-    them."""
+    them. A number of the output table (``app.contract.reported``) that gives its own
+    source is added as a field of its own: ``CandidateOut`` is this model with them."""
 
     id: Annotated[str, From("screw.id")]
     series: Annotated[str, From("screw.series_id")]
@@ -375,7 +377,7 @@ class CandidateOut(BaseModel):
         "yes/no check)."
     )
     governing_check: Annotated[str | None, From("governing_check")] = Field(
-        description="The check with the highest utilisation (or a failed yes/no check)."
+        description="The check with the highest utilization (or a failed yes/no check)."
     )
     governing_limit_provenance: Annotated[
         ProvenanceKind | None, From("governing_limit_provenance")
@@ -432,33 +434,33 @@ NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nu
 VERDICT = (
     "utilization governing_check governing_limit_provenance passed robust hinges_on warned verdict"
 )
-#: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all).
+if TYPE_CHECKING:  # mypy cannot see fields made at run time (see app.contract.inputs)
+    CandidateOut = CandidateFields
+else:
+    CandidateOut = create_model(
+        "CandidateOut",
+        __base__=CandidateFields,
+        __doc__=CandidateFields.__doc__,
+        **added_fields(CandidateFields.model_fields),
+    )
+
+#: The forms of a candidate, each a set of ``CandidateOut``'s fields (``full``: all); the
+#: output table adds its numbers to the views it names (``csv`` is the table's alone).
 VIEWS: dict[str, View] = {
-    "row": whole(
-        NAMED,
-        "axial_load_n rpm efficiency self_locking seed_rule_no_backdrive "
-        "max_self_locking_lead_with_margin_mm holds_power_off hold_margin holds_by "
-        "holding_rule holding_torque torque critical_speed pv life "
-        "profile segments motor_use",
-        VERDICT,
-    ),
-    "summary": {
-        **whole(NAMED, "rpm efficiency self_locking motor_use", VERDICT),
-        "torque": whole("total_nm peak_nm rms_nm peak_motor_nm"),
-        "critical_speed": whole("margin"),
-        "life": whole("years"),
-    },
-    "rejected": whole("id governing_check failed fix"),
-    "csv": {
-        **whole(
-            "id series anti_backlash outer_diameter_mm root_diameter_mm lead_mm coated rpm "
-            "efficiency self_locking utilization governing_check fix motor_use"
+    "row": merged(
+        whole(
+            NAMED,
+            "axial_load_n rpm efficiency self_locking seed_rule_no_backdrive "
+            "max_self_locking_lead_with_margin_mm holds_power_off hold_margin holds_by "
+            "holding_rule holding_torque torque critical_speed pv life "
+            "profile segments motor_use",
+            VERDICT,
         ),
-        "torque": whole("total_nm inertia_nm drag_nm load_nm peak_motor_nm"),
-        "holding_torque": whole("seed_method_nm physics_nm"),
-        "critical_speed": whole("allowed_rpm"),
-        "life": whole("years"),
-    },
+        view_of("row"),
+    ),
+    "summary": merged(whole(NAMED, VERDICT), view_of("summary")),
+    "rejected": merged(whole("id governing_check failed fix"), view_of("rejected")),
+    "csv": view_of("csv"),
     "full": whole(*CandidateOut.model_fields),
 }
 

@@ -170,7 +170,7 @@ class Quantities(Generic[V]):
     #: the brake torque to fit: ``brake_nm`` times the brake safety factor (``brake_factor``)
     brake_needed_nm: V
     locks_with_margin: V
-    max_lock_lead_m: V
+    max_self_locking_lead_with_margin_m: V
     #: The move: the peak rpm (the top speed's without a stroke); the largest torque in
     #: magnitude and the RMS torque over the cycle (NaN without a stroke); the segment
     #: that uses the most of the motor curve (index in ``motion.segments``, -1 without a
@@ -574,7 +574,7 @@ def _holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
         "brake_nm": brake,
         "brake_needed_nm": brake * brake_factor(app),
         "locks_with_margin": locks,
-        "max_lock_lead_m": max_lock,
+        "max_self_locking_lead_with_margin_m": max_lock,
     }
 
 

@@ -107,10 +107,10 @@ class Candidate:
     self_locking = Column[bool]("self_locking")
     seed_rule_no_backdrive = Column[bool]("seed_rule_no_backdrive")
     max_self_locking_lead_m = Column[float]("max_self_locking_lead_m")
-    max_self_locking_lead_with_margin_m = Column[float]("max_lock_lead_m")
+    max_self_locking_lead_with_margin_m = Column[float]("max_self_locking_lead_with_margin_m")
     holding_torque_seed_nm = Column[float]("holding_seed_nm")
     holding_torque_physics_nm = Column[float]("holding_physics_nm")
-    brake_torque_nm = Column[float]("brake_nm")
+    brake_nm = Column[float]("brake_nm")
     max_utilization = Column[float]("max_utilization")
     passed = Column[bool]("passed")
 

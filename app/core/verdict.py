@@ -152,7 +152,7 @@ class Record(Protocol):
     @property
     def self_locking_with_margin(self) -> bool: ...
     @property
-    def brake_torque_nm(self) -> float: ...
+    def brake_nm(self) -> float: ...
 
 
 def rests_on(
@@ -195,7 +195,7 @@ def watch_list(c: Record) -> tuple[Phrase, ...]:
                 Phrase(f"power off: held by the detent torque at {percent(detent.utilization)}")
             )
         else:
-            brake = Amount(c.brake_torque_nm, "torque")
+            brake = Amount(c.brake_nm, "torque")
             found.append(Phrase("back-drives: a brake of {t} holds it power-off", {"t": brake}))
     return tuple(found)
 

@@ -23,7 +23,6 @@ from app.core.formulas import torque
 from app.core.model import Provenance, ScrewSpec
 from app.core.record import GEOMETRY_SOURCES, Candidate
 from app.core.selection import Selection
-from app.report.construct import construct
 from app.report.reader import reader
 
 BY_CORE = {field.core: field for field in FIELDS}
@@ -73,26 +72,23 @@ def selection_out(
 def counts_and_summary(sel: Selection, units: Units[str, str]) -> dict[str, Any]:
     """The counts and the summary of a selection, shared by the compact and full forms."""
     return {
-        "counts": construct(
-            CountsOut,
+        "counts": CountsOut.model_construct(
             evaluated=sel.evaluated,
             passed=sel.passed,
             rejected=sel.evaluated - sel.passed,
             failed_by_check=dict(sel.failed_by_check),
         ),
-        "summary": construct(
-            SummaryOut,
+        "summary": SummaryOut.model_construct(
             message=render(sel.summary.message, units),
             most_excluding_check=sel.summary.most_excluding_check,
             best_rejected_id=sel.summary.best_rejected_id,
             input_change=_api_change(sel.summary.input_change),
             changes=[
-                construct(ChangeOut, inputs=_api_change(c.inputs), admits=c.admits)
+                ChangeOut.model_construct(inputs=_api_change(c.inputs), admits=c.admits)
                 for c in sel.summary.changes
             ],
             remedies=[
-                construct(
-                    RemedyOut,
+                RemedyOut.model_construct(
                     inputs=api_inputs(r.inputs),
                     passing=r.passing,
                     utilization=r.utilization,

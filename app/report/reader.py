@@ -1,16 +1,16 @@
 """Reading a view of an output model from a source: each field as its ``From`` declares
 (``app.contract.source``), nested models by their own view.
 
-``reader(model, view)`` compiles the view of a model once into one function, as
-``dataclasses`` compiles ``__init__``: a field reads ``s.screw.lead_m * 1000.0`` inline,
-so a view costs about what a hand-written function would (a compact select reads some
-twenty fields of twenty candidates on every request).
+``reader(model, view)`` works out once per view which fields it reads and how (a getter
+per field: the path's ``attrgetter``, the unit's factor, the nested model's own reader),
+and returns the function that reads them: a compact select reads some twenty fields of
+twenty candidates on every request, so nothing is looked up per call.
 """
 
 import math
 from collections.abc import Callable
 from functools import cache, lru_cache
-from operator import attrgetter
+from operator import attrgetter, itemgetter
 from types import UnionType
 from typing import Any, Literal, Union, cast, get_args, get_origin
 
@@ -21,10 +21,11 @@ from app.contract.schemas import VIEWS, View
 from app.contract.source import From, Writer
 from app.contract.units import API_UNITS, DEFAULT_UNITS
 from app.core.phrase import Phrase
-from app.report.construct import construct, from_fields
 
 #: (source, record, sentences' writer) -> the view: a dict of JSON values, or the model.
 Reader = Callable[[Any, Any, Writer], Any]
+#: (source, record, sentences' writer) -> one field's value.
+Getter = Callable[[Any, Any, Writer], Any]
 
 
 @cache
@@ -33,20 +34,21 @@ def reader(
 ) -> Reader:
     """The function that reads ``model`` in ``VIEWS[view]`` (at ``path``, field names, for
     a nested model) from a source: as a dict of JSON values (``as_dict``) or as the model
-    holding the view's fields alone (``construct``, no validation)."""
+    holding the view's fields alone (``model_construct``: no validation)."""
     shown = _view(model, view, path)
-    whole = len(shown) == len(model.model_fields)
-    make = from_fields if whole else construct
-    env: dict[str, Any] = {"make": make, "model": model, "_plain": _plain}
-    items = [
-        f"{name!r}: {_expression(info, view, (*path, name), as_dict, env, f'_{i}')}"
-        for i, (name, info) in enumerate(model.model_fields.items())
+    fields = tuple(
+        (name, _getter(info, view, (*path, name), as_dict))
+        for name, info in model.model_fields.items()
         if name in shown
-    ]
-    values = "{" + ", ".join(items) + "}"
-    body = values if as_dict else f"make(model, {values})" if whole else f"make(model, **{values})"
-    exec(f"def read(s, r, u):\n    return {body}\n", env)
-    return cast(Reader, env["read"])
+    )
+
+    def read_dict(s: Any, r: Any, u: Writer) -> dict[str, Any]:
+        return {name: get(s, r, u) for name, get in fields}
+
+    def read_model(s: Any, r: Any, u: Writer) -> BaseModel:
+        return model.model_construct(**{name: get(s, r, u) for name, get in fields})
+
+    return read_dict if as_dict else read_model
 
 
 def _view(model: type[BaseModel], view: str, path: tuple[str, ...]) -> View:
@@ -60,55 +62,79 @@ def _view(model: type[BaseModel], view: str, path: tuple[str, ...]) -> View:
     return cast(View, part)
 
 
-def _expression(
-    info: FieldInfo, view: str, path: tuple[str, ...], as_dict: bool, env: dict[str, Any], key: str
-) -> str:
-    """The Python expression of one field's value over ``s`` (the source), ``r`` (the
-    record) and ``u`` (the sentences' writer); the values it needs go in ``env`` under
-    ``key``."""
+def _getter(info: FieldInfo, view: str, path: tuple[str, ...], as_dict: bool) -> Getter:
+    """How one field's value is read from ``s`` (the source), ``r`` (the record) and ``u``
+    (the sentences' writer)."""
     source = next((m for m in info.metadata if isinstance(m, From)), None)
     if source is None:
-        env[key] = info.default
-        return key
-    value = _access(source.path, env, key)
+        default = info.default
+        return lambda s, r, u: default
+    at = _access(source.path)
     nested, shape = _nested(info.annotation)
     if nested is not None:
         read = reader(nested, view, path, as_dict)
-        env[key] = _shared(read) if nested.model_config.get("frozen") else read
-        each = {
-            "list": f"[{key}(x, r, u) for x in v]",
-            "dict": f"{{k: {key}(x, r, u) for k, x in v.items()}}",
-        }.get(shape, f"{key}(v, r, u)")
-        return f"(None if (v := {value}) is None else {each})"
+        return _each(at, _shared(read) if nested.model_config.get("frozen") else read, shape)
     if source.via is not None:
-        env[key] = source.via
-        return f"{key}({value}, u)"
+        via = source.via
+        return lambda s, r, u: via(at(s, r), u)
     if source.quantity is not None:
-        env[key], env[key + "q"] = _scaled, API_UNITS[source.quantity][1]
-        return f"{key}({value}, {key}q)"
-    kind = _kind(info.annotation)
+        scale = API_UNITS[source.quantity][1]
+        return lambda s, r, u: _scaled(at(s, r), scale)
+    return _written(at, _kind(info.annotation))
+
+
+def _each(at: Callable[[Any, Any], Any], read: Reader, shape: str) -> Getter:
+    """A nested model's value: read from the value at the path, or from each of its items
+    (``shape``: "one", "list" or "dict"); None where that value is None."""
+
+    def one(s: Any, r: Any, u: Writer) -> Any:
+        v = at(s, r)
+        return None if v is None else read(v, r, u)
+
+    def each(s: Any, r: Any, u: Writer) -> Any:
+        v = at(s, r)
+        return None if v is None else [read(x, r, u) for x in v]
+
+    def each_value(s: Any, r: Any, u: Writer) -> Any:
+        v = at(s, r)
+        return None if v is None else {k: read(x, r, u) for k, x in v.items()}
+
+    return {"list": each, "dict": each_value}.get(shape, one)
+
+
+def _written(at: Callable[[Any, Any], Any], kind: str) -> Getter:
+    """A plain value as its kind (``_kind``) is written."""
     if kind == "number":
-        return f"(v if (v := {value}) == v else None)"
+        return lambda s, r, u: _number(at(s, r))
     if kind == "text":
-        return f"(v if type(v := {value}) is str else _plain(v, u))"
+        return lambda s, r, u: v if type(v := at(s, r)) is str else _plain(v, u)
     if kind == "texts":
-        return f"list({value})"
-    return value if kind == "raw" else f"_plain({value}, u)"
+        return lambda s, r, u: list(at(s, r))
+    if kind == "raw":
+        return lambda s, r, u: at(s, r)
+    return lambda s, r, u: _plain(at(s, r), u)
 
 
-def _access(path: str | tuple[str, ...], env: dict[str, Any], key: str) -> str:
-    """The expression of the value at ``path`` (see ``app.contract.source``)."""
+def _number(value: Any) -> Any:
+    """A float as JSON holds it: NaN as None."""
+    return value if value == value else None
+
+
+def _access(path: str | tuple[str, ...]) -> Callable[[Any, Any], Any]:
+    """The value at ``path`` (see ``app.contract.source``) of (source, record)."""
     if isinstance(path, tuple):
-        env[key + "g"], env[key + "w"] = attrgetter(*path), _whole
-        return f"{key}w({key}g(s))"
-    base, names = ("r", path[1:]) if path.startswith("/") else ("s", path)
+        together = attrgetter(*path)
+        return lambda s, r: _whole(together(s))
+    from_record, names = (True, path[1:]) if path.startswith("/") else (False, path)
     if not names:
-        return base
+        return (lambda s, r: r) if from_record else (lambda s, r: s)
     if names.isdigit():
-        return f"{base}[{int(names)}]"
-    if not all(n.isidentifier() for n in names.split(".")):
+        get: Callable[[Any], Any] = itemgetter(int(names))
+    elif all(n.isidentifier() for n in names.split(".")):
+        get = attrgetter(names)
+    else:
         raise ValueError(f"not an attribute path: {path!r}")
-    return f"{base}.{names}"
+    return (lambda s, r: get(r)) if from_record else (lambda s, r: get(s))
 
 
 def _whole(values: tuple[Any, ...]) -> tuple[Any, ...] | None:

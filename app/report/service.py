@@ -14,7 +14,6 @@ from app.contract.units import DEFAULT_UNITS
 from app.core.evaluate import evaluate
 from app.core.robustness import build_variants
 from app.core.selection import select, with_robustness
-from app.report.construct import construct
 from app.report.formulas import FORMULAS
 from app.report.present import (
     candidate_view,
@@ -67,8 +66,7 @@ def construct_select_out(
     inputs: ApplicationIn, catalog: Catalog, selected: dict[str, Any]
 ) -> SelectOut:
     """The select response around ``selection_out``'s candidates, counts and summary."""
-    return construct(
-        SelectOut,
+    return SelectOut.model_construct(
         inputs=inputs,
         **selected,
         catalog_version=catalog.version,
@@ -89,8 +87,7 @@ def run_page_selection(
         inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
     )
     rejected = selection.rejected if not selection.passed else ()
-    out = construct(
-        PageSelectionOut,
+    out = PageSelectionOut.model_construct(
         inputs=inputs,
         candidates=[candidate_view(c, "row", units) for c in selection.candidates],
         rejected=[candidate_view(c, "full", units) for c in rejected],
@@ -139,8 +136,7 @@ def run_evaluation(
         candidate = evaluate(app, spec)  # a screw of the user's own: any size can be made
         variants, at = build_variants([spec]), 0
     candidate = with_robustness(app, candidate, variants, at)
-    return construct(
-        EvaluateOut,
+    return EvaluateOut.model_construct(
         inputs=inputs,
         candidate=candidate_view(candidate, "full", units),
         catalog_version=catalog.version,
@@ -184,8 +180,7 @@ def run_compare(
 ) -> CompareOut:
     """Catalog screws ``ids`` (checked by ``compare_ids``) evaluated for ``inputs``, each
     in full with its robustness and verdict, side by side."""
-    return construct(
-        CompareOut,
+    return CompareOut.model_construct(
         inputs=inputs,
         candidates=[
             run_evaluation(inputs, CatalogScrewIn(catalog_id=i), catalog, units).candidate

@@ -42,7 +42,7 @@ class Change:
 @dataclass(frozen=True, slots=True)
 class RemedyLink:
     """A verified remedy: its changes in words, the link that makes them all, how many
-    screws then pass and the lowest governing utilisation among them."""
+    screws then pass and the lowest governing utilization among them."""
 
     changes: tuple[Change, ...]
     href: str

@@ -11,6 +11,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Literal
 
+from app.contract.reported import REPORTED, show, value_of
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display
 from app.core.checks import REGISTRY
@@ -61,10 +62,6 @@ def _row(
     return Row(key, label, unit, cells, best_columns(values, better), better)
 
 
-def _life_years(c: CandidateOut) -> float | None:
-    return None if c.life is None or c.life.years is None else c.life.years[0]
-
-
 def _holding(c: CandidateOut, d: Display) -> str:
     if c.self_locking_with_margin:
         return "self-locking"
@@ -73,58 +70,37 @@ def _holding(c: CandidateOut, d: Display) -> str:
     return f"brake ≥ {d.text(c.holding_torque.brake_nm, 'torque', 3)} {d.label('torque')}"
 
 
+def _ranked(value: object) -> float | None:
+    """The number a row ranks by: a band by its low end (the safe side), text not at all."""
+    if isinstance(value, list):
+        return value[0] if value else None
+    return value if isinstance(value, float) and not isinstance(value, bool) else None
+
+
 def quantity_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
-    """The candidates' key numbers: torques, efficiency, holding, critical speed, life
-    (years with a duty, else the rated travel) and the governing utilisation (PV and every
-    other check follow in ``check_rows``)."""
-    t, torque = d.label("torque"), (lambda v: d.text(v, "torque"))
-    rows = [
-        _row("peak", "Peak motor torque", t, [c.torque.peak_motor_nm for c in cs], torque, "lower"),
-        _row("running", "Running torque", t, [c.torque.total_nm for c in cs], torque, "lower"),
-    ]
-    if any(c.torque.rms_nm is not None for c in cs):
-        rows.append(_row("rms", "RMS torque", t, [c.torque.rms_nm for c in cs], torque, "lower"))
-    rows += [
-        _row("efficiency", "Efficiency", "", [c.efficiency for c in cs], percent, "higher"),
-        Row(
-            "holding",
-            "Holding, power off",
-            "",
-            tuple(_holding(c, d) for c in cs),
-            best_columns([c.holding_torque.brake_nm for c in cs], "lower"),
-            "lower",
-        ),
-        _row(
-            "critical",
-            "Critical speed margin",
-            "×",
-            [c.critical_speed.margin for c in cs],
-            lambda v: f"{v:.2f}",
-            "higher",
-        ),
-        _row("life", "Life", "years", [_life_years(c) for c in cs], lambda v: f"{v:.3g}", "higher"),
-        _row(
-            "travel",
-            "Rated travel",
-            "million cm",
-            [None if c.life is None else c.life.travel_million_cm[0] for c in cs],
-            lambda v: f"{v:.3g}",
-            "higher",
-        ),
-        _row(
-            "governing",
-            "Governing utilisation",
-            "",
-            [c.verdict.utilization for c in cs],
-            percent,
-            "lower",
-        ),
-    ]
+    """A row per compare row of the output table (``app.contract.reported``), in its
+    order: each candidate's value written as the results table writes it (a band as its
+    range), the best marked by the row's ``better``; a row no candidate has a value for
+    is left out (the RMS torque without a move)."""
+    rows = []
+    for entry in REPORTED:
+        if not entry.compare:
+            continue
+        values = [value_of(c, entry.key) for c in cs]
+        if all(v is None for v in values):
+            continue
+        unit = entry.unit_label(d)
+        if entry.cell == "holding":  # words, each with its own unit
+            cells, unit = tuple(_holding(c, d) for c in cs), ""
+        else:
+            cells = tuple(show(entry, v, d) for v in values)
+        best = best_columns([_ranked(v) for v in values], entry.better)
+        rows.append(Row(entry.key, entry.label, unit, cells, best, entry.better))
     return rows
 
 
 def check_rows(cs: Sequence[CandidateOut]) -> list[Row]:
-    """Each check's utilisation, in registry order, for the checks that apply to any of
+    """Each check's utilization, in registry order, for the checks that apply to any of
     the candidates with a number."""
     rows = []
     for check in REGISTRY:
@@ -135,6 +111,7 @@ def check_rows(cs: Sequence[CandidateOut]) -> list[Row]:
 
 
 def compare_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
-    """Every row of the compare view: the verdicts, the key numbers, each check."""
+    """Every row of the compare view: the verdicts, the output table's compare rows,
+    each check."""
     verdicts = Row("verdict", "Verdict", "", tuple(c.verdict.text for c in cs), frozenset(), None)
     return [verdicts, *quantity_rows(cs, d), *check_rows(cs)]

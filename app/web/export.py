@@ -8,12 +8,16 @@ from typing import Any
 from app.contract.fields import FIELDS, InputField
 from app.contract.form import curve_text
 from app.contract.outputs import SelectOut
+from app.contract.reported import BY_KEY, REPORTED, Reported, value_of
 from app.contract.schemas import CandidateOut
-from app.contract.units import Display, Quantity
+from app.contract.units import Display
 from app.core.checks import REGISTRY
 
-#: the header's unit of a check's utilisation: demand over capacity (1 is at the limit).
-UTILISATION_UNIT = "demand/capacity"
+#: A CSV column's value of a candidate.
+Getter = Callable[[CandidateOut], Any]
+
+#: the header's unit of a check's utilization: demand over capacity (1 is at the limit).
+UTILIZATION_UNIT = BY_KEY["utilization"].unit
 
 #: a text cell starting with one of these is a formula to a spreadsheet (CWE-1236); the
 #: fullwidth forms count too, since spreadsheets in East Asian locales read them as ASCII.
@@ -54,61 +58,60 @@ def cell(value: Any) -> Any:
     return safe_cell(tidy(value))
 
 
-def _utilisation(name: str) -> Callable[[CandidateOut], Any]:
+#: the API unit suffixes a number's key ends in, left out of its CSV heading, which names
+#: the display unit in brackets instead.
+API_SUFFIXES = (
+    *("_mpa_m_s", "_m_s", "_mm_s2", "_mm_s", "_mm", "_m", "_nm", "_n", "_mpa"),
+    *("_rpm", "_kg_m2", "_kg", "_w", "_k", "_c", "_s", "_hz", "_deg"),
+)
+
+
+def csv_name(key: str) -> str:
+    """A key of the output table without its API unit suffix.
+
+    >>> csv_name("torque.total_nm"), csv_name("lead_mm"), csv_name("rpm"), csv_name("fix")
+    ('torque.total', 'lead', 'rpm', 'fix')
+    """
+    return next((key.removesuffix(s) for s in API_SUFFIXES if key.endswith(s)), key)
+
+
+def _getter(row: Reported, d: Display, index: int | None = None) -> Getter:
+    def get(c: CandidateOut) -> Any:
+        value = value_of(c, row.key)
+        if index is not None:
+            value = None if value is None else value[index]
+        if row.quantity is None or value is None:
+            return value
+        return d.value(value, row.quantity)
+
+    return get
+
+
+def _utilization(name: str) -> Getter:
     def get(c: CandidateOut) -> Any:
         return c.utilization.get(name)
 
     return get
 
 
-def _years(index: int) -> Callable[[CandidateOut], Any]:
-    def get(c: CandidateOut) -> Any:
-        life = c.life
-        return None if life is None or life.years is None else life.years[index]
-
-    return get
-
-
-def _columns(d: Display) -> list[tuple[str, Callable[[CandidateOut], Any]]]:
-    def unit(quantity: Quantity, get: Callable[[CandidateOut], float]) -> Any:
-        return lambda c: d.value(get(c), quantity)
-
-    length, torque = d.label("length"), d.label("torque")
-    return [
-        ("id", lambda c: c.id),
-        ("series", lambda c: c.series),
-        ("anti_backlash", lambda c: c.anti_backlash),
-        (f"outer_diameter [{length}]", unit("length", lambda c: c.outer_diameter_mm)),
-        (f"root_diameter [{length}]", unit("length", lambda c: c.root_diameter_mm)),
-        (f"lead [{length}]", unit("length", lambda c: c.lead_mm)),
-        ("coating", lambda c: "TFE" if c.coated else "none"),
-        ("rpm", lambda c: c.rpm),
-        (f"torque_total [{torque}]", unit("torque", lambda c: c.torque.total_nm)),
-        (f"torque_inertia [{torque}]", unit("torque", lambda c: c.torque.inertia_nm)),
-        (f"torque_drag [{torque}]", unit("torque", lambda c: c.torque.drag_nm)),
-        (f"torque_load [{torque}]", unit("torque", lambda c: c.torque.load_nm)),
-        (f"torque_peak [{torque}]", unit("torque", lambda c: c.torque.peak_motor_nm)),
-        ("motor_use", lambda c: c.motor_use),
-        ("efficiency", lambda c: c.efficiency),
-        ("self_locking", lambda c: c.self_locking),
-        (
-            f"holding_torque_seed [{torque}]",
-            unit("torque", lambda c: c.holding_torque.seed_method_nm),
-        ),
-        (
-            f"holding_torque_physics [{torque}]",
-            unit("torque", lambda c: c.holding_torque.physics_nm),
-        ),
-        ("critical_speed_allowed [rpm]", lambda c: c.critical_speed.allowed_rpm),
-        *(
-            (f"{check.name}_utilisation [{UTILISATION_UNIT}]", _utilisation(check.name))
-            for check in REGISTRY
-        ),
-        ("life_min [year]", _years(0)),
-        ("life_max [year]", _years(1)),
-        ("governing_check", lambda c: c.governing_check),
-        ("fix", lambda c: c.fix),
-    ]
+def _columns(d: Display) -> list[tuple[str, Getter]]:
+    """A column per CSV row of the output table, headed by its key and display unit: a
+    band as its low and high ends, the utilizations as a column per check."""
+    out: list[tuple[str, Getter]] = []
+    for row in REPORTED:
+        if not row.csv:
+            continue
+        name, unit = csv_name(row.key), row.unit_label(d)
+        if row.key == "utilization":
+            out += [
+                (_heading("", f"{name}.{c.name}", unit), _utilization(c.name)) for c in REGISTRY
+            ]
+        elif row.cell in ("band", "life"):
+            out.append((_heading("", f"{name}_min", unit), _getter(row, d, 0)))
+            out.append((_heading("", f"{name}_max", unit), _getter(row, d, 1)))
+        else:
+            out.append((_heading("", name, "" if unit == name else unit), _getter(row, d)))
+    return out
 
 
 def _heading(prefix: str, name: str, unit: str) -> str:
@@ -140,7 +143,7 @@ def _trailing(groups: list[tuple[str, list[list[Any]]]]) -> tuple[list[str], lis
 
 
 def _table(
-    columns: list[tuple[str, Callable[[CandidateOut], Any]]],
+    columns: list[tuple[str, Getter]],
     rows: list[tuple[str, Any, CandidateOut]],
     trailing: tuple[list[str], list[Any]],
 ) -> str:
@@ -160,7 +163,7 @@ def _table(
 
 def results_csv(result: SelectOut, units: dict[str, str]) -> str:
     """One table: a row per passing candidate (ranked) and per rejected one shown, with a
-    column per check of the registry for its utilisation (empty where the check does not
+    column per check of the registry for its utilization (empty where the check does not
     apply or is yes/no), then a column per input (``input:<page name> [unit]``, in the
     display units, the same on every row); the candidates need only the ``csv`` view's
     fields."""

@@ -2,16 +2,17 @@
 
 The guide iterates the check registry, so a new check appears here with its label,
 description, formula and source; the ranking text follows ``app.core.selection``'s rank
-order. The column help is shared with the results table's headers.
+order. The column help is the output table's (``app.contract.reported``), as the
+results table's headers show it.
 """
 
-from dataclasses import dataclass
 from functools import cache
 
 from fastapi import APIRouter
 from fastapi.responses import HTMLResponse, Response
 
 from app.contract.fields import BY_API
+from app.contract.reported import REPORTED
 from app.contract.units import sig
 from app.core.checks import REGISTRY
 from app.report.validation import EXAMPLES, TOLERANCE
@@ -20,97 +21,8 @@ from app.web.templating import templates
 router = APIRouter(include_in_schema=False)
 
 
-@dataclass(frozen=True, slots=True)
-class Column:
-    """One results column: its heading and what its number means."""
-
-    key: str
-    heading: str
-    help: str
-
-
-COLUMNS = (
-    Column(
-        "screw",
-        "Screw",
-        "Catalog id of the screw and nut; the tags say whether the "
-        "screw is TFE coated and whether the nut takes up the play (anti-backlash).",
-    ),
-    Column("od", "OD", "Outer (major) diameter of the thread."),
-    Column("lead", "Lead", "Travel of the nut per turn of the screw."),
-    Column("rpm", "Speed", "Screw speed that gives your linear speed: 60 × speed / lead."),
-    Column(
-        "torque",
-        "Torque",
-        "Motor torque while accelerating: inertia + drag + load, before the torque safety factor.",
-    ),
-    Column(
-        "peak",
-        "Peak torque",
-        "Given a move: the largest motor torque of any moving segment (accelerating, "
-        "running, braking, either way) or of starting from rest, the rotor's inertia "
-        "included, before the torque safety factor; below it, the torque while accelerating.",
-    ),
-    Column(
-        "rms",
-        "RMS torque",
-        "Given a move: the root-mean-square motor torque over the whole cycle, dwells "
-        "included: what heats the motor, against its continuous (RMS) rating.",
-    ),
-    Column(
-        "motor",
-        "Motor used",
-        "Given a motor: the largest share of it the screw uses (its maximum torque, its "
-        "torque curve, its RMS rating, its top speed); the motor margin is the rest.",
-    ),
-    Column(
-        "breakdown",
-        "Breakdown",
-        "The torque's parts: accelerating the screw and the "
-        "moving mass, the nut's drag, and pushing the load through the thread.",
-    ),
-    Column(
-        "efficiency",
-        "Efficiency",
-        "Share of the motor's work that reaches the load "
-        "(running friction, thread flank angle included).",
-    ),
-    Column(
-        "holds",
-        "Holds the load?",
-        "Whether the load alone can turn the screw with the "
-        "motor off. “Self-locking” holds it; “back-drives” needs a brake of at least "
-        "the torque shown.",
-    ),
-    Column(
-        "critical",
-        "Critical speed margin",
-        "Allowed speed (whirling speed × your "
-        "critical-speed factor) over the operating speed; above 1× passes.",
-    ),
-    Column(
-        "pv",
-        "PV used",
-        "Nut contact pressure × sliding speed as a share of the nut "
-        "material's PV limit; up to 100 % passes.",
-    ),
-    Column(
-        "life",
-        "Life",
-        "Expected wear life: years at your stroke and cycles per day, else million cm of travel.",
-    ),
-    Column("governing", "Governing", "The check closest to its limit for this screw."),
-)
-BY_COLUMN = {c.key: c for c in COLUMNS}
-#: The column each ranking orders (``rank_by`` -> column key), marked in the table.
-RANKED_COLUMN = {
-    "torque": "torque",
-    "rms": "rms",
-    "margin": "governing",
-    "life": "life",
-    "size": "od",
-    "motor_margin": "motor",
-}
+#: The results table's columns, each a row of the output table with its label and help.
+COLUMNS = tuple(r for r in REPORTED if r.column)
 
 PROVENANCE = (
     ("seed", "Printed in the leadscrew maker's catalog the app's data started from."),
@@ -129,7 +41,7 @@ RANKING = {
     "margin first.",
     "rms": "lowest RMS motor torque over the cycle first (the motor's continuous duty); "
     "without a move, as the lowest torque. Equal torques: the lower peak torque first.",
-    "margin": "the screw furthest from every limit first (lowest worst utilisation); "
+    "margin": "the screw furthest from every limit first (lowest worst utilization); "
     "equal margins: the lower torque first.",
     "life": "longest life first, by the low end of the band shown: the seed's rated "
     "life, else the nut's wear life (Archard, at the high end of its wear rate); screws "

@@ -25,6 +25,7 @@ from app.contract.form import (
 from app.contract.inputs import SUPPORT
 from app.contract.pairs import PairRankIn
 from app.contract.params import unknown_parameters
+from app.contract.reported import columns, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
 from app.contract.units import TORQUE_LABELS, Display
@@ -49,7 +50,6 @@ from app.web.catalog_view import KEY_FIELDS, family_sections
 from app.web.compare import compare_rows
 from app.web.export import results_csv
 from app.web.figures import chart_candidates, result_figures
-from app.web.guide import BY_COLUMN, RANKED_COLUMN
 from app.web.screw_form import catalog_screw_query
 from app.web.templating import templates
 
@@ -127,9 +127,11 @@ def page_inputs(
     context.update(
         rejected_groups=[],
         check_label=check_label,
-        columns=BY_COLUMN,
+        columns=columns,
+        show=show,
+        value_of=value_of,
         rank_text="",
-        ranked_column="",
+        ranked_by="",
     )
     units, values = context["units"], context["values"]
     unknown = unknown_parameters(params)
@@ -156,7 +158,7 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     rank_by = str(inputs.model_dump()["rank_by"])
     text = BY_PAGE["rank_by"].choice_text(rank_by)
     context["rank_text"] = text[:1].lower() + text[1:]
-    context["ranked_column"] = RANKED_COLUMN[rank_by]
+    context["ranked_by"] = rank_by
     if not result.candidates:
         context["advice"] = no_pass_advice(result, units)
     if inputs.model_dump()["motor"] == ANY_MOTOR:

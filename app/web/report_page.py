@@ -2,7 +2,7 @@
 
 ``/report?<share-link query>&id=<candidate id>`` shows the inputs with their units, the
 chosen candidate (the top-ranked one without an id) and the runners-up, its torque
-breakdown, every check with its value, limit, utilisation, formula and the provenance of
+breakdown, every check with its value, limit, utilization, formula and the provenance of
 each catalog value, the charts (critical speed, PV, torque, motor), the date and the
 catalog's version. The browser makes the PDF ("Save as PDF" prints the page), so the app
 needs no PDF library; the print stylesheet sizes every chart to the page.

@@ -173,11 +173,11 @@ def test_recommended_brake_holds_the_load(catalog: Catalog) -> None:
             continue
         seed_below_physics += ev.holding_torque_seed_nm < ev.holding_torque_physics_nm
         needed = max(ev.holding_torque_seed_nm, ev.holding_torque_physics_nm)
-        if ev.brake_torque_nm < needed:
+        if ev.brake_nm < needed:
             short.append(screw.id)
         fix = next(c.fix for c in ev.checks if c.name == "back_driving")
         # the fix asks for the brake torque with its margin, never less
-        assert fix is not None and f"{at_least(ev.brake_torque_nm):.3g} N m" in render(fix)
+        assert fix is not None and f"{at_least(ev.brake_nm):.3g} N m" in render(fix)
     assert short == []
     assert seed_below_physics > 0  # the case that made the seed value alone unsafe
 

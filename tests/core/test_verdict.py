@@ -92,4 +92,4 @@ def test_a_back_driving_vertical_screw_says_what_holds_it_power_off(catalog: Cat
         watch = verdict(c).watch
         assert any("brake" in w.template for w in watch)
         brake = next(w for w in watch if "brake" in w.template).values["t"]
-        assert brake.value == pytest.approx(c.brake_torque_nm)  # type: ignore[union-attr]
+        assert brake.value == pytest.approx(c.brake_nm)  # type: ignore[union-attr]

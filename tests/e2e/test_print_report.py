@@ -122,7 +122,7 @@ def test_report_pdf_holds_inputs_candidate_provenance_and_whole_charts(
     assert "Runners-up" in flat
     for label in ("standard", "handbook", "vendor"):
         assert re.search(rf"\b{label}\b", flat), label
-    assert "Formula" in flat and "Utilisation" in flat
+    assert "Formula" in flat and "Utilization" in flat
     catalog = page.inner_text(".report-date").split("catalog ")[1].split(" ")[0]
     assert f"catalog {catalog}" in flat
     date = page.get_attribute(".report-date time", "datetime")

@@ -204,7 +204,7 @@ def test_the_compact_select_gives_the_peak_torque_and_the_motor_use(
     for r in passed:
         assert float(r["motor_use"]) == pytest.approx(listed[r["id"]]["motor_use"], rel=1e-9)
         peak = listed[r["id"]]["torque"]["peak_motor_nm"]
-        assert float(r["torque_peak [oz in]"]) == pytest.approx(peak / OZ_IN, rel=1e-9)
+        assert float(r["torque.peak_motor [oz in]"]) == pytest.approx(peak / OZ_IN, rel=1e-9)
 
 
 @pytest.mark.parametrize(

@@ -1,4 +1,4 @@
-"""The CSV: one table, a row per candidate, a column per check's utilisation and per input."""
+"""The CSV: one table, a row per candidate, a column per check's utilization and per input."""
 
 import csv
 import io
@@ -6,7 +6,7 @@ import io
 from fastapi.testclient import TestClient
 
 from app.core.checks import REGISTRY
-from app.web.export import UTILISATION_UNIT
+from app.web.export import UTILIZATION_UNIT
 
 AXIS = {"load": "100", "speed": "50", "length": "500", "limit": "5"}
 API_AXIS = {"load_n": "100", "speed_mm_s": "50", "length_mm": "500", "limit": "5"}
@@ -17,17 +17,17 @@ def _table(text: str) -> list[dict[str, str]]:
     return list(csv.DictReader(io.StringIO(text)))
 
 
-def test_each_candidate_row_carries_every_checks_utilisation(client: TestClient) -> None:
+def test_each_candidate_row_carries_every_checks_utilization(client: TestClient) -> None:
     rows = _table(client.get("/export.csv", params=AXIS).text)
     api = client.get("/api/v1/select", params=API_AXIS).json()
     header = list(rows[0])
     for check in REGISTRY:
-        assert f"{check.name}_utilisation [{UTILISATION_UNIT}]" in header
+        assert f"utilization.{check.name} [{UTILIZATION_UNIT}]" in header
     passed = [r for r in rows if r["status"] == "passed"]
     assert [r["id"] for r in passed] == [c["id"] for c in api["candidates"]]
     for row, candidate in zip(passed, api["candidates"], strict=True):
         for check in REGISTRY:
-            cell = row[f"{check.name}_utilisation [{UTILISATION_UNIT}]"]
+            cell = row[f"utilization.{check.name} [{UTILIZATION_UNIT}]"]
             value = candidate["utilization"].get(check.name)
             if value is None:
                 assert cell == ""
@@ -37,7 +37,7 @@ def test_each_candidate_row_carries_every_checks_utilisation(client: TestClient)
 
 def test_the_csv_header_names_units(client: TestClient) -> None:
     header = _table(client.get("/export.csv", params={**AXIS, "length_unit": "in"}).text)[0]
-    assert "lead [in]" in header and "torque_total [N m]" in header
+    assert "lead [in]" in header and "torque.total [N m]" in header
     assert "input:load [N]" in header and "input:length [in]" in header
 
 
@@ -49,3 +49,13 @@ def test_every_row_carries_every_input_in_display_units(client: TestClient) -> N
     assert {r["input:load [lbf]"] for r in rows} == {"22.5"}
     assert {float(r["input:length [in]"]) for r in rows} == {500.0}
     assert {r["input:end_fixity"] for r in rows} == {"fixed-simple"}
+
+
+def test_the_governing_check_is_named_by_its_label_beside_its_id(client: TestClient) -> None:
+    """The id in ``governing_check``, the words the page shows in a column of their own."""
+    rows = _table(client.get("/export.csv", params=AXIS).text)
+    labels = {check.name: check.label for check in REGISTRY}
+    passed = [r for r in rows if r["status"] == "passed"]
+    assert passed
+    for row in passed:
+        assert row["verdict.governs_label"] == labels[row["governing_check"]]

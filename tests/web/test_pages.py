@@ -655,10 +655,10 @@ def test_csv_export_has_a_row_per_candidate_in_display_units(client: TestClient)
     assert [r["id"] for r in passed] == [c["id"] for c in api["candidates"]]
     assert [r["rank"] for r in passed] == [str(i + 1) for i in range(len(passed))]
     assert len(rows) == len(api["candidates"]) + len(api["rejected"])
-    total = float(passed[0]["torque_total [lb in]"])
+    total = float(passed[0]["torque.total [lb in]"])
     expected = api["candidates"][0]["torque"]["total_nm"] / 0.112984829027617
     assert math.isclose(total, expected, rel_tol=1e-9)  # written to 10 significant figures
-    peak = float(passed[0]["torque_peak [lb in]"])
+    peak = float(passed[0]["torque.peak_motor [lb in]"])
     expected_peak = api["candidates"][0]["torque"]["peak_motor_nm"] / 0.112984829027617
     assert math.isclose(peak, expected_peak, rel_tol=1e-9)
     assert {r["motor_use"] for r in rows} == {""}  # no motor given

@@ -4,6 +4,8 @@ checks with formulas and provenance, the charts, the date and the catalog versio
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
+from app.core.checks import BY_NAME
+
 AXIS = {"load": "100", "speed": "50", "length": "500"}
 
 
@@ -63,3 +65,14 @@ def test_results_and_detail_link_to_the_report(client: TestClient) -> None:
     cid = page.select_one("tbody.candidate")["data-id"]
     detail = BeautifulSoup(client.get("/detail", params={**AXIS, "id": cid}).text, "html.parser")
     assert detail.select_one(".report-link-row a")["href"].startswith("/report?load=100")
+
+
+def test_the_report_names_the_governing_checks_by_their_labels(client: TestClient) -> None:
+    """The words the results table shows (the registry's labels), never a check's id."""
+    api = client.get(
+        "/api/v1/select", params={"load_n": "100", "speed_mm_s": "50", "length_mm": "500"}
+    ).json()["candidates"]
+    page = soup(client, AXIS)
+    governing = [tr.select("td")[3].text for tr in page.select("table.runners-up tbody tr")]
+    assert governing == [BY_NAME[c["governing_check"]].label for c in api[1:5]]
+    assert f"Governing check: {BY_NAME[api[0]['governing_check']].label}" in page.text

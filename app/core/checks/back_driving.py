@@ -50,7 +50,7 @@ class BackDriving(Check):
         return needed and (app.brake_torque_nm is None or unpowered)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), t.lead_m, q.max_lock_lead_m)
+        return Measure(everywhere(t), t.lead_m, q.max_self_locking_lead_with_margin_m)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

@@ -105,7 +105,7 @@ def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) 
     """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
     that self-locks with margin, when it is made in one."""
     values = {"needed": Amount(at_least(r.brake_needed_nm), "torque")}
-    lead = reach.made_lead(s, r.max_lock_lead_m, larger=False)
+    lead = reach.made_lead(s, r.max_self_locking_lead_with_margin_m, larger=False)
     if lead is None:
         return Phrase(start + "." + MARGIN_NOTE, values)
     return Phrase(

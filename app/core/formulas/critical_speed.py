@@ -76,11 +76,11 @@ def speed_at_length(rpm_at_length: float, length_m: float, new_length_m: float) 
     return rpm_at_length * (length_m / new_length_m) ** 2
 
 
-@formula("margin = n_allowed / n", "inverse of the critical-speed utilisation")
+@formula("margin = n_allowed / n", "inverse of the critical-speed utilization")
 def speed_margin(allowed_rpm: float, operating_rpm: float) -> float:
     """How many times the operating speed fits under the allowed speed [-].
 
-    margin = n_allowed / n, the inverse of the critical-speed check's utilisation.
+    margin = n_allowed / n, the inverse of the critical-speed check's utilization.
 
     >>> speed_margin(900.0, 300.0)
     3.0

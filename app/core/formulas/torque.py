@@ -16,6 +16,7 @@ def angular_acceleration(linear_accel_m_s2: float, lead_m: float) -> float:
     return 2.0 * math.pi * linear_accel_m_s2 / lead_m
 
 
+@formula("J = (J/L) x L", SEED + " (screw inertia table, per inch of length)")
 def screw_inertia(inertia_per_length_kg_m2_per_m: float, length_m: float) -> float:
     """Screw rotary inertia I = (inertia per length) x length [kg m^2].
 

@@ -1,0 +1,47 @@
+"""``app.report.reader``: a view of a candidate read from the core's record, as the model
+or as plain JSON values, the two alike and valid for their own models."""
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.catalog import Catalog
+from app.contract.outputs import SelectOut
+from app.contract.schemas import VIEWS, ApplicationIn, CandidateOut, view_model
+from app.contract.source import Writer
+from app.contract.units import DEFAULT_UNITS
+from app.core.selection import select
+from app.main import create_app
+from app.report.reader import reader
+from app.report.service import INPUT_RANGES
+
+#: a move, a duty and a vacuum: profile, segments, life and outgassing on every candidate
+AXIS = {"load_n": 20, "speed_mm_s": 100, "length_mm": 500, "stroke_mm": 300, "lead_mm": 10}
+AXIS |= {"accel_mm_s2": 1000, "cycles_per_day": 100}
+
+
+def test_a_full_selection_through_the_api_validates_against_its_own_model() -> None:
+    """The select response (built without validation at every level) is valid JSON for
+    ``SelectOut``: every required field of every nested model is there."""
+    client = TestClient(create_app())
+    query = "load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10&stroke_mm=300&detail=full"
+    body = client.get(f"/api/v1/select?{query}&accel_mm_s2=1000&vacuum=true").json()
+    out = SelectOut.model_validate(body)
+    assert out.candidates and out.candidates[0].segments
+    assert isinstance(out.candidates[0], CandidateOut)
+
+
+@pytest.mark.parametrize("view", sorted(VIEWS))
+def test_each_view_reads_alike_as_json_and_as_the_model(catalog: Catalog, view: str) -> None:
+    """The dict reader writes what the model reader's model serialises, and that is valid
+    for the view's own model (``view_model``): no field missing, none extra."""
+    app = ApplicationIn.model_validate(AXIS).to_core(catalog.motors, catalog.supports)
+    selection = select(app, catalog.index, INPUT_RANGES)
+    checked = view_model(CandidateOut, VIEWS[view], view.title())
+    assert selection.candidates
+    for c in [*selection.candidates[:5], *selection.rejected[:5]]:
+        as_json = reader(CandidateOut, view, as_dict=True)(c, c, Writer(DEFAULT_UNITS))
+        model = reader(CandidateOut, view)(c, c, Writer(DEFAULT_UNITS))
+        assert set(model.model_fields_set) == set(VIEWS[view]), c.screw.id
+        assert checked.model_validate(as_json).model_dump(mode="json") == as_json, c.screw.id
+        dumped = checked.model_validate(model, from_attributes=True).model_dump(mode="json")
+        assert dumped == as_json, c.screw.id
