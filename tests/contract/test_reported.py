@@ -26,7 +26,7 @@ MOVE = {
     "lead": "10",
     "stroke": "300",
     "accel": "1000",
-    "moving_mass": "2",
+    "moving_mass_kg": "2",
     "cycles_per_day": "100",
     "max_torque": "1",
 }
