@@ -23,8 +23,9 @@ CORE = Path(__file__).resolve().parents[2] / "app" / "core"
 MUTATORS = frozenset(
     {"append", "extend", "insert", "add", "update", "setdefault", "pop", "popitem", "clear"}
 )
-#: Decorators that keep results between calls.
-MEMOIZERS = frozenset({"cache", "lru_cache", "cached_property"})
+#: Decorators that keep results between calls. (``functools.cached_property`` keeps a
+#: number on its own record, built for one query and dropped with it: not between queries.)
+MEMOIZERS = frozenset({"cache", "lru_cache"})
 
 
 def _module_names(tree: ast.Module) -> set[str]:
