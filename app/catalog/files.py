@@ -11,14 +11,17 @@ except by files of the first layout (no ``schema`` key), which keep their old me
 they layer over the built-in seed group.
 """
 
+import hashlib
 import stat
 import tomllib
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from app.catalog.errors import CatalogError
+
+T = TypeVar("T")
 
 SCHEMA = 2
 #: Files without a ``schema`` key are the first layout (series files over the seed group).
@@ -253,3 +256,36 @@ def over(base: Layer, top: Layer) -> Layer:
         nut_types=_merge_nested(base.nut_types, top.nut_types),
         rules=_merge_nested(base.rules, top.rules),
     )
+
+
+def library_entries(path: Path, digest: Any, table: str, schema: int) -> tuple[str, dict[str, Any]]:
+    """A library file's name and its ``[table.ID]`` entries (motors, support units), its
+    bytes fed to ``digest`` (a new SHA-256 when None); refused unless it declares
+    ``schema`` and holds only that table, with at least one entry."""
+    source = read_file(path, digest if digest is not None else hashlib.sha256())
+    if source.data.get("schema") != schema:
+        raise CatalogError(source.name, "-", "schema", f"must be {schema}")
+    unknown = set(source.data) - {"schema", table}
+    if unknown:
+        raise CatalogError(source.name, "-", sorted(unknown)[0], "unknown key")
+    entries = source.data.get(table)
+    if not isinstance(entries, dict) or not entries:
+        raise CatalogError(source.name, "-", table, f"no [{table}.ID] entries")
+    return source.name, entries
+
+
+def merge_libraries(
+    directories: Iterable[Path], filename: str, load: Callable[[Path], dict[str, T]], what: str
+) -> dict[str, T]:
+    """The entries of every directory's library file ``filename`` read by ``load``, ids
+    unique across directories (a duplicate names its file and id)."""
+    out: dict[str, T] = {}
+    for directory in directories:
+        path = directory / filename
+        if not path.exists():
+            continue
+        for key, value in load(path).items():
+            if key in out:
+                raise CatalogError(str(path), f"{what}s.{key}", "-", f"duplicate {what} id")
+            out[key] = value
+    return out

@@ -11,7 +11,6 @@ user gives those inputs directly. A stepper's datasheet values typed in are draw
 same way.
 """
 
-import hashlib
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -19,7 +18,7 @@ from typing import Any
 
 from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
-from app.catalog.files import read_file
+from app.catalog.files import library_entries, merge_libraries
 from app.catalog.models import Sourced
 from app.core.formulas import servo, stepper
 from app.core.model import Application
@@ -187,30 +186,13 @@ def _motor(file: str, motor_id: str, data: Any) -> Motor:
 
 def load_motors(path: Path, digest: Any = None) -> dict[str, Motor]:
     """Every motor of one library file, validated (its bytes feed ``digest``)."""
-    source = read_file(path, digest if digest is not None else hashlib.sha256())
-    if source.data.get("schema") != SCHEMA:
-        raise CatalogError(source.name, "-", "schema", f"must be {SCHEMA}")
-    unknown = set(source.data) - {"schema", "motors"}
-    if unknown:
-        raise CatalogError(source.name, "-", sorted(unknown)[0], "unknown key")
-    motors = source.data.get("motors")
-    if not isinstance(motors, dict) or not motors:
-        raise CatalogError(source.name, "-", "motors", "no [motors.ID] entries")
-    return {mid: _motor(source.name, mid, data) for mid, data in motors.items()}
+    name, motors = library_entries(path, digest, "motors", SCHEMA)
+    return {mid: _motor(name, mid, data) for mid, data in motors.items()}
 
 
 def load_library(directories: Iterable[Path], digest: Any = None) -> dict[str, Motor]:
     """The motors of every directory's library file, ids unique across directories."""
-    out: dict[str, Motor] = {}
-    for directory in directories:
-        path = directory / MOTOR_FILE
-        if not path.exists():
-            continue
-        for mid, motor in load_motors(path, digest).items():
-            if mid in out:
-                raise CatalogError(str(path), f"motors.{mid}", "-", "duplicate motor id")
-            out[mid] = motor
-    return out
+    return merge_libraries(directories, MOTOR_FILE, lambda p: load_motors(p, digest), "motor")
 
 
 def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:

@@ -7,7 +7,6 @@ called by ``app.contract.inputs``): its dynamic and static axial ratings, unless
 gives those ratings directly.
 """
 
-import hashlib
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -15,7 +14,7 @@ from typing import Any
 
 from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
-from app.catalog.files import read_file
+from app.catalog.files import library_entries, merge_libraries
 from app.catalog.models import Sourced
 from app.core.model import Application
 
@@ -61,30 +60,13 @@ def _support(file: str, unit_id: str, data: Any) -> SupportUnit:
 
 def load_supports(path: Path, digest: Any = None) -> dict[str, SupportUnit]:
     """Every support unit of one library file, validated (its bytes feed ``digest``)."""
-    source = read_file(path, digest if digest is not None else hashlib.sha256())
-    if source.data.get("schema") != SCHEMA:
-        raise CatalogError(source.name, "-", "schema", f"must be {SCHEMA}")
-    unknown = set(source.data) - {"schema", "supports"}
-    if unknown:
-        raise CatalogError(source.name, "-", sorted(unknown)[0], "unknown key")
-    units = source.data.get("supports")
-    if not isinstance(units, dict) or not units:
-        raise CatalogError(source.name, "-", "supports", "no [supports.ID] entries")
-    return {uid: _support(source.name, uid, data) for uid, data in units.items()}
+    name, units = library_entries(path, digest, "supports", SCHEMA)
+    return {uid: _support(name, uid, data) for uid, data in units.items()}
 
 
 def load_support_library(directories: Iterable[Path], digest: Any = None) -> dict[str, SupportUnit]:
     """The support units of every directory's library file, ids unique across them."""
-    out: dict[str, SupportUnit] = {}
-    for directory in directories:
-        path = directory / SUPPORT_FILE
-        if not path.exists():
-            continue
-        for uid, unit in load_supports(path, digest).items():
-            if uid in out:
-                raise CatalogError(str(path), f"supports.{uid}", "-", "duplicate support id")
-            out[uid] = unit
-    return out
+    return merge_libraries(directories, SUPPORT_FILE, lambda p: load_supports(p, digest), "support")
 
 
 def unknown_support_message(value: str, supports: Mapping[str, SupportUnit]) -> str:
