@@ -1,0 +1,284 @@
+"""What to order: one line per candidate that a buyer can send for a quote, and the
+basis it rests on (a maker's ordering-code scheme, a standard's designation, or neither).
+
+Rules, each cited where it is used:
+
+- ISO metric trapezoidal screws (a pitch given, 30° flank): the designation of ISO 2903
+  clause 12 (also DIN 103): ``Tr d x P`` for one start, ``Tr d x lead (P pitch)`` for
+  several (iso-trapezoidal.md: "Tr16x8(P4)"), with the tolerance class: 7e for the
+  screw, 7H for the nut, the medium class ISO 2903 clause 9 recommends for the normal
+  length of engagement (one of its seven recommended classes, 7H 8H 9H 7e 8e 8c 9c:
+  ISO 2903-2:2025 scope, standards.iteh.ai).
+- The seed's series (B, ZBX, KHD, VHD): the seed prints no part-number scheme, only
+  "we can custom machine screws to your requirements (quote to your drawings)", "lengths
+  can be specified up to 4 m, or up to 2.4 m with TFE coating" (End Machining) and
+  "please fax for a quote"; so the line is a specification, not a maker's code.
+- A value the catalog only assumes (provenance kind ``assumed``), or a rating derived
+  from an assumed input (its catalog range is an assumption's, ``assumption_ends``), is
+  named after "Confirm with the maker:" with the value taken.
+
+Lengths are written in mm, the unit of the standard's designation and of the seed's
+catalog, whatever the page's display units.
+"""
+
+import math
+from collections.abc import Callable
+from fractions import Fraction
+
+from app.core.model import ScrewSpec
+
+#: ISO 2903 clause 9: the medium tolerance class for the normal length of engagement.
+SCREW_CLASS = "7e"
+NUT_CLASS = "7H"
+#: The flank half-angle of ISO 2901's basic profile (30° flank angle), degrees.
+ISO_HALF_ANGLE_DEG = 15.0
+#: The seed's families: one maker's series (catalog/common.toml, group ``seed``).
+SEED_FAMILIES = frozenset({"B", "ZBX", "KHD", "VHD"})
+#: The catalog's derived design load of the seed's nuts rests on this assumed pressure.
+DESIGN_PRESSURE = "design_contact_pressure_mpa"
+
+#: Screw materials in a buyer's words (catalog material names; others as named).
+MATERIALS = {
+    "stainless-303": "303 stainless steel, rolled",
+    "stainless-304": "1.4301 (304) stainless steel, rolled",
+    "c45-steel": "C45 (1.0503) steel, rolled",
+    "steel": "carbon steel",
+}
+#: Nut materials in a buyer's words (catalog nut materials; others as named).
+NUTS = {
+    "bronze": "bronze (CuSn7Zn4 / CuSn12)",
+    "acetal": "acetal (POM)",
+    "polyacetal": "polyacetal with lubricating additive",
+    "PTFE-filled polymer": "PTFE-filled polymer",
+}
+
+SEED_BASIS = (
+    "No ordering code: the seed prints no part-number scheme (End Machining: 'quote to "
+    "your drawings'; 'please fax for a quote'), so this is a specification to quote, and "
+    "the catalog id is not a maker's part number. Maker: not named in the seed; its axial "
+    "take-up text and 50 lb preload example match Kerk Motion Products, now AMETEK Haydon "
+    "Kerk (kerkmotion.com KerkTech anti-backlash overview; patent EP1084355B1), but no "
+    "Kerk page lists the B, ZBX, KHD or VHD series, so the maker is inferred, not published."
+)
+ISO_BASIS = (
+    "ISO 2904 / DIN 103 trapezoidal thread, designated as ISO 2903 clause 12 writes it "
+    "(Tr d x P; several starts Tr d x lead (P pitch)); tolerance class 7e screw / 7H nut, "
+    "the medium class ISO 2903 clause 9 recommends for a normal length of engagement. Any "
+    "maker of trapezoidal screws can quote it; the catalog names no maker."
+)
+CUSTOM_BASIS = "Your own screw: no catalog series and no standard designation."
+OTHER_BASIS = "A catalog series of your own: the catalog names no maker or ordering code."
+
+
+def _mm(value_m: float) -> str:
+    """A length [m] in mm, to six significant figures without float noise.
+
+    >>> _mm(0.009525), _mm(0.5), _mm(0.0127)
+    ('9.525', '500', '12.7')
+    """
+    return f"{value_m * 1000:.6g}"
+
+
+def _inch_fraction(value_m: float) -> str | None:
+    """A diameter [m] as a fraction of an inch when it is a whole number of sixteenths
+    (the seed's size rule, catalog/README.md), else None.
+
+    >>> _inch_fraction(0.009525), _inch_fraction(0.0127), _inch_fraction(0.016)
+    ('3/8', '1/2', None)
+    """
+    sixteenths = value_m / 0.0254 * 16
+    if abs(sixteenths - round(sixteenths)) > 1e-6:
+        return None
+    inches = Fraction(round(sixteenths), 16)
+    return str(inches) if inches.denominator > 1 else f"{inches}"
+
+
+def _length(length_m: float) -> str:
+    """The screw's length as the app takes it (between the supports, the input's help)
+    and its ends, which the seed machines to the buyer's drawing (End Machining)."""
+    return f"{_mm(length_m)} mm between the supports plus the ends, end machining to drawing"
+
+
+def iso_designation(spec: ScrewSpec) -> str | None:
+    """The ISO 2903 clause 12 designation of the thread without its tolerance class,
+    ``Tr16x4`` or ``Tr16x8(P4)``; None unless the screw is an ISO trapezoidal thread (a
+    pitch given, a 30° flank, a whole number of starts)."""
+    if spec.pitch_m is None or spec.pitch_m <= 0.0:
+        return None
+    if not math.isclose(math.degrees(spec.thread_half_angle_rad), ISO_HALF_ANGLE_DEG):
+        return None
+    starts = spec.lead_m / spec.pitch_m
+    if not math.isclose(starts, round(starts), rel_tol=1e-9) or round(starts) < 1:
+        return None
+    d, pitch = _mm(spec.outer_diameter_m), _mm(spec.pitch_m)
+    return f"Tr{d}x{pitch}" if round(starts) == 1 else f"Tr{d}x{_mm(spec.lead_m)}(P{pitch})"
+
+
+#: The values a maker can confirm: provenance key, what it is, and the value taken.
+CONFIRMABLE: tuple[tuple[str, str, Callable[[ScrewSpec], str | None]], ...] = (
+    ("lead", "that this lead is made in this size", lambda s: f"{_mm(s.lead_m)} mm"),
+    (
+        "thread_half_angle",
+        "the thread form",
+        lambda s: f"{2 * math.degrees(s.thread_half_angle_rad):.3g}° flank angle",
+    ),
+    ("root_diameter", "the root diameter", lambda s: f"{s.root_diameter_m * 1000:.3g} mm"),
+    (
+        "design_load",
+        "the nut's design load",
+        lambda s: None if s.design_load_n is None else f"{s.design_load_n:.3g} N",
+    ),
+    (
+        "pv_limit",
+        "the nut's PV limit",
+        lambda s: None if s.pv_limit_pa_m_s is None else f"{s.pv_limit_pa_m_s / 1e6:.3g} MPa m/s",
+    ),
+    (
+        "bearing_pv_limit",
+        "the nut's PV limit",
+        lambda s: (
+            None if s.nut_pv_limit_pa_m_s is None else f"{s.nut_pv_limit_pa_m_s / 1e6:.3g} MPa m/s"
+        ),
+    ),
+    (
+        "max_pressure",
+        "the nut's allowable contact pressure",
+        lambda s: None if s.max_pressure_pa is None else f"{s.max_pressure_pa / 1e6:.3g} MPa",
+    ),
+    (
+        "max_sliding_speed",
+        "the nut's maximum sliding speed",
+        lambda s: None if s.max_sliding_speed_m_s is None else f"{s.max_sliding_speed_m_s:.3g} m/s",
+    ),
+    (
+        "nut_length",
+        "the nut length",
+        lambda s: None if s.nut_length_m is None else f"{_mm(s.nut_length_m)} mm",
+    ),
+    ("friction_static", "the static friction coefficient", lambda s: f"{s.friction_static:g}"),
+    ("friction_dynamic", "the running friction coefficient", lambda s: f"{s.friction_dynamic:g}"),
+    (
+        "backlash",
+        "the axial play",
+        lambda s: f"{_mm(s.backlash_min_m)}-{_mm(s.backlash_max_m)} mm",
+    ),
+    (
+        "wear_rate",
+        "the nut's wear rate",
+        lambda s: None if s.wear_rate_m2_n is None else f"{s.wear_rate_m2_n * 1e9:.2g} mm³/(N m)",
+    ),
+)
+
+
+def _assumed(spec: ScrewSpec, key: str) -> bool:
+    """Whether the catalog only assumes value ``key``: its provenance kind is ``assumed``,
+    or (the design load) it is derived from the assumed design contact pressure."""
+    provenance = spec.provenance.get(key)
+    if provenance is None:
+        return False
+    if provenance.kind == "assumed":
+        return True
+    return key == "design_load" and DESIGN_PRESSURE in spec.assumption_ends
+
+
+def to_confirm(spec: ScrewSpec) -> list[str]:
+    """What to confirm with the maker: each confirmable value the catalog assumes, with
+    the value taken ("the root diameter (taken as 7.43 mm)"), in ``CONFIRMABLE`` order."""
+    out = []
+    for key, what, value in CONFIRMABLE:
+        taken = value(spec)
+        if taken is not None and _assumed(spec, key):
+            out.append(f"{what} (taken as {taken})")
+    return out
+
+
+def _nut_words(spec: ScrewSpec) -> str:
+    return NUTS.get(spec.nut_material, spec.nut_material or "material to state")
+
+
+def _screw_words(spec: ScrewSpec) -> str:
+    return MATERIALS.get(spec.material_name, spec.material_name or "material to state")
+
+
+def _iso_line(spec: ScrewSpec, thread: str, length_m: float) -> str:
+    """ISO 2903 clause 12: screw class 7e, nut class 7H (medium, normal engagement)."""
+    nut_length = "" if spec.nut_length_m is None else f", at least {_mm(spec.nut_length_m)} mm long"
+    return (
+        f"Trapezoidal leadscrew {thread}-{SCREW_CLASS} right-hand, {_screw_words(spec)}, "
+        f"{_length(length_m)}; nut {thread}-"
+        f"{NUT_CLASS}, {_nut_words(spec)}{nut_length}, flange or cylindrical: to state "
+        "(the catalog does not give the nut's shape)."
+    )
+
+
+def _series_line(spec: ScrewSpec, length_m: float) -> str:
+    """The seed's series: its size (series number = sixteenths of an inch, derived), lead,
+    coating and nut (seed: Physical properties, TFE Coating, End Machining)."""
+    inch = _inch_fraction(spec.outer_diameter_m)
+    size = (
+        f"{inch} in ({_mm(spec.outer_diameter_m)} mm)"
+        if inch
+        else f"{_mm(spec.outer_diameter_m)} mm"
+    )
+    kind = "anti-backlash (axial take-up)" if spec.anti_backlash else "free-wheeling"
+    coating = "TFE coated" if spec.coated else "uncoated"
+    return (
+        f"{spec.series_id} leadscrew assembly: screw {size} OD, lead {_mm(spec.lead_m)} mm, "
+        f"{_screw_words(spec)}, {coating}, {_length(length_m)}; nut {kind}, {_nut_words(spec)}, flange or cylindrical: to state (the "
+        "catalog does not give the nut's shape)."
+    )
+
+
+def _custom_line(spec: ScrewSpec, length_m: float) -> str:
+    flank = 2 * math.degrees(spec.thread_half_angle_rad)
+    return (
+        f"Leadscrew to your geometry: outer diameter {_mm(spec.outer_diameter_m)} mm, root "
+        f"diameter {_mm(spec.root_diameter_m)} mm, lead {_mm(spec.lead_m)} mm, "
+        f"{flank:.3g}° flank angle, {_screw_words(spec)}, {_length(length_m)}; nut to match: material and shape to state."
+    )
+
+
+def ordering_line(spec: ScrewSpec, length_m: float) -> str:
+    """The line a buyer sends for a quote of ``spec`` at screw length ``length_m`` [m]:
+    the ISO 2903 designation with its tolerance class for an ISO trapezoidal screw, else a
+    specification (size, lead, screw and nut materials, nut type, length, "end machining
+    to drawing"); then what to confirm with the maker where the catalog assumes a value
+    (``to_confirm``). No maker publishes an ordering-code scheme for the catalog's series
+    (module docstring), so no maker's code is given.
+
+    >>> from app.core.model import Provenance
+    >>> spec = ScrewSpec(
+    ...     id="Tr16x8(P4)-bronze", series_id="Tr16-P4", series_name="Tr16 P4",
+    ...     anti_backlash=False, coated=False, outer_diameter_m=0.016,
+    ...     root_diameter_m=0.0115, lead_m=0.008, thread_half_angle_rad=math.radians(15),
+    ...     friction_static=0.16, friction_dynamic=0.13, youngs_modulus_pa=207e9,
+    ...     density_kg_m3=7800.0, screw_expansion_per_k=11.7e-6, inertia_kg_m2_per_m=2.9e-5,
+    ...     material_name="c45-steel", nut_material="bronze", family_id="TR-C45",
+    ...     pitch_m=0.004, nut_length_m=0.032,
+    ...     provenance={"nut_length": Provenance("assumed", "2 x d")})
+    >>> print(ordering_line(spec, 0.5))  # doctest: +NORMALIZE_WHITESPACE
+    Trapezoidal leadscrew Tr16x8(P4)-7e right-hand, C45 (1.0503) steel, rolled, 500 mm
+    between the supports plus the ends, end machining to drawing; nut Tr16x8(P4)-7H, bronze (CuSn7Zn4 /
+    CuSn12), at least 32 mm long, flange or cylindrical: to state (the catalog does not
+    give the nut's shape). Confirm with the maker: the nut length (taken as 32 mm).
+    """
+    thread = iso_designation(spec)
+    if spec.series_id == "custom":
+        line = _custom_line(spec, length_m)
+    elif thread is not None:
+        line = _iso_line(spec, thread, length_m)
+    else:
+        line = _series_line(spec, length_m)
+    confirm = to_confirm(spec)
+    return f"{line} Confirm with the maker: {'; '.join(confirm)}." if confirm else line
+
+
+def ordering_basis(spec: ScrewSpec) -> str:
+    """What the ordering line rests on: the standard and its clauses for an ISO screw,
+    the seed's want of a part-number scheme and what is public of its maker for the
+    seed's series, else that the catalog names no maker."""
+    if spec.series_id == "custom":
+        return CUSTOM_BASIS
+    if iso_designation(spec) is not None:
+        return ISO_BASIS
+    return SEED_BASIS if spec.family_id in SEED_FAMILIES else OTHER_BASIS
