@@ -26,6 +26,7 @@ from typing import Annotated, Any, Literal, Optional
 
 from pydantic import Field
 
+from app.catalog import ordering
 from app.contract.source import From, Writer
 from app.contract.units import Display, Quantity, si_to_api, sig
 from app.core import motion, quantities
@@ -131,6 +132,17 @@ def screw_inertia(values: tuple[float, float], w: Writer) -> float:
     return si_to_api(torque.screw_inertia(*values), "inertia")
 
 
+def order_line(values: tuple[Any, float], w: Writer) -> str:
+    """The line to send for a quote, from the screw and its length [m]
+    (``app.catalog.ordering.ordering_line``)."""
+    return ordering.ordering_line(*values)
+
+
+def order_basis(screw: Any, w: Writer) -> str:
+    """What the ordering line rests on (``app.catalog.ordering.ordering_basis``)."""
+    return ordering.ordering_basis(screw)
+
+
 REPORTED: tuple[Reported, ...] = (
     Reported(
         "id",
@@ -150,6 +162,28 @@ REPORTED: tuple[Reported, ...] = (
         "The nut's material, as the catalog names it.",
         cell="text",
         compare=True,
+        type=str,
+    ),
+    Reported(
+        "order_line",
+        "To order",
+        "The line to send a maker for a quote: the ISO 2903 designation with its tolerance "
+        "class for an ISO trapezoidal screw, else the size, lead, materials, nut and length; "
+        "then what to confirm with the maker where the catalog assumes a value.",
+        cell="text",
+        csv=True,
+        compare=True,
+        source=From(("screw", "app.length_m"), via=order_line),
+        type=str,
+        views=("summary",),
+    ),
+    Reported(
+        "order_basis",
+        "Ordering basis",
+        "What the ordering line rests on: the standard's designation, or why there is no "
+        "maker's ordering code, and the maker where that is public.",
+        cell="text",
+        source=From("screw", via=order_basis),
         type=str,
     ),
     Reported(

@@ -1,0 +1,163 @@
+"""The ordering line (app.catalog.ordering): the ISO 2903 designation with its tolerance
+class, the seed series' specification, a custom screw's geometry, and what to confirm
+with the maker exactly where the catalog assumes a value."""
+
+import dataclasses
+import math
+
+import pytest
+
+from app.catalog import Catalog
+from app.catalog.ordering import (
+    CONFIRMABLE,
+    CUSTOM_BASIS,
+    ISO_BASIS,
+    SEED_BASIS,
+    iso_designation,
+    ordering_basis,
+    ordering_line,
+    to_confirm,
+)
+from app.catalog.own import OwnGeometry, own_screw
+from app.core.model import Provenance
+
+# ISO 2903 clause 12 (and iso-trapezoidal.md): "Tr d x P" for a single start,
+# "Tr d x lead (P pitch)" for several; tolerance class 7e screw / 7H nut (ISO 2903 clause 9,
+# medium class, normal length of engagement).
+ISO_CASES = [
+    ("Tr16x4-bronze", "Tr16x4", "C45 (1.0503) steel", "bronze (CuSn7Zn4 / CuSn12)"),
+    ("Tr16x8(P4)-bronze", "Tr16x8(P4)", "C45 (1.0503) steel", "bronze (CuSn7Zn4 / CuSn12)"),
+    ("Tr8x8(P2)-304-acetal", "Tr8x8(P2)", "1.4301 (304) stainless steel", "acetal (POM)"),
+    ("Tr20x4-ptfe", "Tr20x4", "C45 (1.0503) steel", "PTFE-filled polymer"),
+]
+
+
+@pytest.mark.parametrize(
+    ("cid", "thread", "screw", "nut"), ISO_CASES, ids=[c[0] for c in ISO_CASES]
+)
+def test_iso_screws_are_designated_with_their_tolerance_class(
+    catalog: Catalog, cid: str, thread: str, screw: str, nut: str
+) -> None:
+    spec = catalog.by_id[cid]
+    assert iso_designation(spec) == thread
+    line = ordering_line(spec, 0.5)
+    assert line.startswith(f"Trapezoidal leadscrew {thread}-7e right-hand, {screw}")
+    assert f"nut {thread}-7H, {nut}" in line
+    # the nut length the pressure checks read (2 x d, catalog) is what the buyer asks for
+    assert f"at least {spec.nut_length_m * 1000:g} mm long" in line
+    assert "500 mm between the supports plus the ends, end machining to drawing" in line
+    assert "flange or cylindrical" in line
+    assert ordering_basis(spec) == ISO_BASIS
+
+
+def test_starts_follow_lead_over_pitch(catalog: Catalog) -> None:
+    """Tr8x2 with 1, 2 and 4 starts (iso-trapezoidal.md: Tr8x2, Tr8x4(P2), Tr8x8(P2))."""
+    found = {
+        cid: iso_designation(catalog.by_id[cid])
+        for cid in ("Tr8x2-acetal", "Tr8x4(P2)-acetal", "Tr8x8(P2)-acetal")
+    }
+    assert found == {
+        "Tr8x2-acetal": "Tr8x2",
+        "Tr8x4(P2)-acetal": "Tr8x4(P2)",
+        "Tr8x8(P2)-acetal": "Tr8x8(P2)",
+    }
+
+
+# The seed's families: series number = sixteenths of an inch (catalog/README.md size rule),
+# 303 stainless rolled screw and polyacetal nut (seed: Physical properties).
+SEED_CASES = [
+    ("B4000-L2", "B4000", "1/4 in (6.35 mm)", "free-wheeling", "uncoated"),
+    ("ZBX6000-L10", "ZBX6000", "3/8 in (9.525 mm)", "anti-backlash (axial take-up)", "uncoated"),
+    (
+        "KHD6000-L5-TFE",
+        "KHD6000",
+        "3/8 in (9.525 mm)",
+        "anti-backlash (axial take-up)",
+        "TFE coated",
+    ),
+    ("VHD12000-L20", "VHD12000", "3/4 in (19.05 mm)", "anti-backlash (axial take-up)", "uncoated"),
+    ("B14000-L25.4-TFE", "B14000", "7/8 in (22.225 mm)", "free-wheeling", "TFE coated"),
+]
+
+
+@pytest.mark.parametrize(
+    ("cid", "series", "size", "nut", "coating"), SEED_CASES, ids=[c[0] for c in SEED_CASES]
+)
+def test_seed_series_get_a_specification_not_a_code(
+    catalog: Catalog, cid: str, series: str, size: str, nut: str, coating: str
+) -> None:
+    spec = catalog.by_id[cid]
+    assert iso_designation(spec) is None  # a 29 deg Acme form, no pitch: no Tr designation
+    line = ordering_line(spec, 0.75)
+    lead = f"{spec.lead_m * 1000:g}"
+    assert line.startswith(f"{series} leadscrew assembly: screw {size} OD, lead {lead} mm")
+    assert f"303 stainless steel, rolled, {coating}, 750 mm between the supports" in line
+    assert f"nut {nut}, polyacetal with lubricating additive" in line
+    # the seed prints no part-number scheme; the maker is inferred, and the basis says so
+    assert ordering_basis(spec) == SEED_BASIS
+    assert "no part-number scheme" in SEED_BASIS and "inferred, not published" in SEED_BASIS
+
+
+def test_seed_lines_name_the_assumed_lead_root_and_nut_rating(catalog: Catalog) -> None:
+    """ZBX6000-L10: the lead list, the root diameter (0.78 x OD) and the PV limit are
+    assumed in catalog/common.toml; the design load is derived from the assumed 3 MPa."""
+    spec = catalog.by_id["ZBX6000-L10"]
+    line = ordering_line(spec, 0.5)
+    _, _, confirm = line.partition(" Confirm with the maker: ")
+    assert "that this lead is made in this size (taken as 10 mm)" in confirm
+    assert f"the root diameter (taken as {0.78 * 9.525:.3g} mm)" in confirm
+    assert "the nut's PV limit (taken as 0.105 MPa m/s)" in confirm
+    assert f"the nut's design load (taken as {spec.design_load_n:.3g} N)" in confirm
+    assert "the thread form (taken as 29° flank angle)" in confirm
+
+
+def test_confirmation_appears_exactly_where_the_provenance_says_assumed(
+    catalog: Catalog,
+) -> None:
+    for spec in catalog.screws:
+        confirm = " ".join(to_confirm(spec))
+        for key, what, _ in CONFIRMABLE:
+            kind = spec.provenance[key].kind if key in spec.provenance else None
+            derived_from_assumed = key == "design_load" and (
+                "design_contact_pressure_mpa" in spec.assumption_ends
+            )
+            if kind == "assumed" or (derived_from_assumed and spec.design_load_n is not None):
+                assert what in confirm, (spec.id, key)
+            elif key not in ("pv_limit", "bearing_pv_limit"):  # two keys, one phrase
+                assert what not in confirm, (spec.id, key)
+
+
+def test_a_published_value_drops_out_of_the_confirmation(catalog: Catalog) -> None:
+    spec = catalog.by_id["ZBX6000-L10"]
+    published = {**spec.provenance, "lead": Provenance("vendor", "a maker's size chart")}
+    line = ordering_line(dataclasses.replace(spec, provenance=published), 0.5)
+    assert "that this lead is made" not in line
+    assert "that this lead is made" in ordering_line(spec, 0.5)
+
+
+def test_nothing_assumed_means_no_confirmation(catalog: Catalog) -> None:
+    spec = catalog.by_id["Tr16x4-bronze"]
+    sure = {k: Provenance("vendor", "maker") for k in spec.provenance}
+    line = ordering_line(dataclasses.replace(spec, provenance=sure), 0.5)
+    assert "Confirm" not in line and line.endswith("the nut's shape).")
+
+
+def test_a_custom_screw_is_specified_by_its_geometry(catalog: Catalog) -> None:
+    """The user's own screw: every value 'user', so nothing to confirm; a 30 deg flank
+    without a pitch is not given an ISO designation (the pitch is unknown)."""
+    geometry = OwnGeometry(
+        outer_diameter_m=0.016,
+        root_diameter_m=0.0115,
+        lead_m=0.008,
+        thread_half_angle_rad=math.radians(15.0),
+        friction_static=0.2,
+        friction_dynamic=0.15,
+    )
+    spec = own_screw(geometry, catalog.materials["steel"], "steel")
+    assert iso_designation(spec) is None
+    assert ordering_line(spec, 0.4) == (
+        "Leadscrew to your geometry: outer diameter 16 mm, root diameter 11.5 mm, lead 8 mm, "
+        "30° flank angle, carbon steel, 400 mm between the supports plus the ends, end "
+        "machining to drawing; nut to match: material and shape to state."
+    )
+    assert ordering_basis(spec) == CUSTOM_BASIS
