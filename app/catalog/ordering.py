@@ -52,6 +52,9 @@ NUTS = {
     "PTFE-filled polymer": "PTFE-filled polymer",
 }
 
+#: The nut's shape: the catalog does not give it, so the buyer states it.
+NUT_SHAPE = "flange or cylindrical: to state (the catalog does not give the nut's shape)"
+
 SEED_BASIS = (
     "No ordering code: the seed prints no part-number scheme (End Machining: 'quote to "
     "your drawings'; 'please fax for a quote'), so this is a specification to quote, and "
@@ -205,9 +208,8 @@ def _iso_line(spec: ScrewSpec, thread: str, length_m: float) -> str:
     nut_length = "" if spec.nut_length_m is None else f", at least {_mm(spec.nut_length_m)} mm long"
     return (
         f"Trapezoidal leadscrew {thread}-{SCREW_CLASS} right-hand, {_screw_words(spec)}, "
-        f"{_length(length_m)}; nut {thread}-"
-        f"{NUT_CLASS}, {_nut_words(spec)}{nut_length}, flange or cylindrical: to state "
-        "(the catalog does not give the nut's shape)."
+        f"{_length(length_m)}; nut {thread}-{NUT_CLASS}, {_nut_words(spec)}{nut_length}, "
+        f"{NUT_SHAPE}."
     )
 
 
@@ -224,8 +226,8 @@ def _series_line(spec: ScrewSpec, length_m: float) -> str:
     coating = "TFE coated" if spec.coated else "uncoated"
     return (
         f"{spec.series_id} leadscrew assembly: screw {size} OD, lead {_mm(spec.lead_m)} mm, "
-        f"{_screw_words(spec)}, {coating}, {_length(length_m)}; nut {kind}, {_nut_words(spec)}, flange or cylindrical: to state (the "
-        "catalog does not give the nut's shape)."
+        f"{_screw_words(spec)}, {coating}, {_length(length_m)}; nut {kind}, "
+        f"{_nut_words(spec)}, {NUT_SHAPE}."
     )
 
 
@@ -234,7 +236,8 @@ def _custom_line(spec: ScrewSpec, length_m: float) -> str:
     return (
         f"Leadscrew to your geometry: outer diameter {_mm(spec.outer_diameter_m)} mm, root "
         f"diameter {_mm(spec.root_diameter_m)} mm, lead {_mm(spec.lead_m)} mm, "
-        f"{flank:.3g}° flank angle, {_screw_words(spec)}, {_length(length_m)}; nut to match: material and shape to state."
+        f"{flank:.3g}° flank angle, {_screw_words(spec)}, {_length(length_m)}; nut to "
+        "match: material and shape to state."
     )
 
 
@@ -258,9 +261,9 @@ def ordering_line(spec: ScrewSpec, length_m: float) -> str:
     ...     provenance={"nut_length": Provenance("assumed", "2 x d")})
     >>> print(ordering_line(spec, 0.5))  # doctest: +NORMALIZE_WHITESPACE
     Trapezoidal leadscrew Tr16x8(P4)-7e right-hand, C45 (1.0503) steel, rolled, 500 mm
-    between the supports plus the ends, end machining to drawing; nut Tr16x8(P4)-7H, bronze (CuSn7Zn4 /
-    CuSn12), at least 32 mm long, flange or cylindrical: to state (the catalog does not
-    give the nut's shape). Confirm with the maker: the nut length (taken as 32 mm).
+    between the supports plus the ends, end machining to drawing; nut Tr16x8(P4)-7H,
+    bronze (CuSn7Zn4 / CuSn12), at least 32 mm long, flange or cylindrical: to state (the
+    catalog does not give the nut's shape). Confirm with the maker: the nut length (taken as 32 mm).
     """
     thread = iso_designation(spec)
     if spec.series_id == "custom":
