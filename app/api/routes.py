@@ -8,6 +8,7 @@ from starlette.datastructures import QueryParams
 
 from app import __version__
 from app.api.query import parse_query, query_parameters
+from app.contract.machine import MachineIn, MachineOut
 from app.contract.outputs import (
     ChecksOut,
     CompareOut,
@@ -25,6 +26,7 @@ from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
 from app.contract.schemas import ApplicationIn
 from app.contract.screws import EvaluateIn
 from app.report.formulas import CHECKS_OUT
+from app.report.machine import UnknownChoice, run_machine
 from app.report.pairs import motors_out, run_pairs
 from app.report.present import series_dict
 from app.report.service import (
@@ -219,4 +221,25 @@ async def evaluate_post(body: EvaluateIn, catalog: CatalogDep) -> Response:
             404,
             "unknown screw",
             [{"field": "screw.catalog_id", "message": f"no catalog screw '{str(exc)[:100]}'"}],
+        ) from exc
+
+
+@router.post("/machine", response_model=MachineOut)
+async def machine_post(request: Request, body: MachineIn, catalog: CatalogDep) -> Response:
+    """Stacked axes sized together, the top axis first: each axis's moving mass takes the
+    axes above it (their moving mass, frame, motor and chosen screw), so each gets its own
+    ranked screws and the machine the axis that governs. Costs one selection per axis."""
+    charge(request.scope, len(body.axes))
+    return await computed(_machine, body, catalog)
+
+
+def _machine(body: MachineIn, catalog: CatalogDep) -> Response:
+    try:
+        return ModelJSON(run_machine(body, catalog))
+    except UnknownChoice as exc:
+        i, choice = exc.args
+        raise AppError(
+            422,
+            "unknown screw",
+            [{"field": f"axes.{i}.choice", "message": f"no catalog screw '{choice[:100]}'"}],
         ) from exc

@@ -405,6 +405,16 @@ REPORTED: tuple[Reported, ...] = (
         "max_self_locking_lead_with_margin_mm",
         formula=Formula(efficiency.max_self_locking_lead, "lead = pi d_p f mu_s / cos a_n"),
     ),
+    Reported("holds_power_off", csv=True, type=bool),
+    Reported(
+        "hold_margin",
+        csv=True,
+        formula=Formula(
+            efficiency.hold_margin,
+            "max(lead_max / lead, T_unpowered / (f T_needed)); holds at 1 or more",
+        ),
+    ),
+    Reported("holds_by", csv=True, type=str),
     Reported(
         "holding_torque.brake_nm",
         "Holds the load?",

@@ -2,7 +2,7 @@
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import Generic, Literal, Protocol, TypeVar, get_args
+from typing import Any, Generic, Literal, Protocol, TypeVar, get_args
 
 from app.core.phrase import Phrase
 
@@ -33,6 +33,16 @@ STANDARD_GRAVITY_M_S2 = 9.80665
 #: A check passes up to this utilisation: 1 plus rounding, so that an offered remedy
 #: (e.g. "reduce the axial load to 369.5 N") passes when applied exactly.
 PASS_UTILIZATION = 1.0 + 1e-9
+
+
+def holds(margin: Any) -> Any:
+    """A hold's margin holds at 1 or more (to the pass rounding, ``PASS_UTILIZATION``);
+    NaN (no such hold) does not. A float or an array of margins.
+
+    >>> holds(1.0 - 1e-12), holds(0.99), holds(float("nan"))
+    (True, False, False)
+    """
+    return margin * PASS_UTILIZATION >= 1.0
 
 
 @dataclass(frozen=True, slots=True)

@@ -20,7 +20,6 @@ from app.core.batch import Batch, CheckResult, Numbers
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.back_driving import rule_note
 from app.core.model import (
-    PASS_UTILIZATION,
     PV,
     Accuracy,
     Application,
@@ -34,6 +33,7 @@ from app.core.model import (
     ScrewSpec,
     Segment,
     failed_advice,
+    holds,
 )
 from app.core.phrase import Phrase
 from app.core.robustness import Robustness
@@ -223,7 +223,7 @@ class Candidate:
     def holds_power_off(self) -> bool | None:
         """The answer to "must hold with the power off": yes at a margin of 1 or more."""
         margin = self.hold_margin
-        return None if margin is None else margin * PASS_UTILIZATION >= 1.0
+        return None if margin is None else bool(holds(margin))
 
     @property
     def holds_by(self) -> str | None:
@@ -234,7 +234,7 @@ class Candidate:
         if margin is None:
             return None
         thread = number(self.quantities.hold_thread_margin)
-        if thread is not None and thread * PASS_UTILIZATION >= 1.0:
+        if thread is not None and holds(thread):
             return "thread"
         return "brake" if self.app.holding_source == "brake" else "detent"
 

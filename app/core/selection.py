@@ -12,7 +12,7 @@ from app.core import motion
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
-from app.core.model import Application, Change, Remedy, ScrewSpec, Summary
+from app.core.model import Application, Change, Remedy, ScrewSpec, Summary, holds
 from app.core.phrase import Amount, Phrase, Quantity, join
 from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.remedy import impossible, remedies
@@ -103,7 +103,7 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
     thread = s.quantities.hold_thread_margin[pos]
-    rests_on_a_device = (np.isfinite(thread) & (thread < 1.0)).astype(np.float64)
+    rests_on_a_device = (np.isfinite(thread) & ~holds(thread)).astype(np.float64)
     keys = (secondary, primary, rests_on_a_device, s.warned[pos].astype(np.float64))
     return pos[np.lexsort(keys)]
 

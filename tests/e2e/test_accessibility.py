@@ -116,6 +116,19 @@ def docs_opened(page: Any, base: str) -> None:
     page.wait_for_selector("section.models.is-open")
 
 
+#: a two-axis machine: a Z axis riding on an X axis, each by its selector link
+MACHINE = urllib.parse.urlencode(
+    {
+        "name1": "Z",
+        "link1": "/?load=0&moving_mass_kg=0.5&speed=10&length=250&accel=200"
+        "&orientation=vertical&stroke=200&lead=8&brake_torque=0.1",
+        "frame1": "0.3",
+        "name2": "X",
+        "link2": "load=0&moving_mass_kg=0.8&speed=100&length=400&accel=1000&stroke=300",
+    }
+)
+
+
 def visit(path: str, ready: str = "main") -> Callable[[Any, str], None]:
     def go(page: Any, base: str) -> None:
         page.goto(base + path)
@@ -135,6 +148,7 @@ STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
     "/detail": {"page": first_candidate},
     "/custom": {"results": visit(f"/custom?{SCREW}", ".custom-verdict"), "error": custom_error},
     "/docs": {"opened": docs_opened},
+    "/machine": {"results": visit(f"/machine?{MACHINE}", "table.machine")},
 }
 #: answers that are not a route of their own
 ERRORS = {"error-404": visit("/no-such-page", "main")}

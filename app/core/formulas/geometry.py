@@ -101,3 +101,22 @@ def helix_travel(lead_m: float, pitch_diameter_m: float) -> float:
     """
     travel: float = (lead_m**2 + (math.pi * pitch_diameter_m) ** 2) ** 0.5
     return travel
+
+
+@formula(
+    "m = rho pi d_p^2 L / 4",
+    "solid cylinder at the pitch diameter: the thread's flanks fill about half the "
+    "annulus between root and outer diameter",
+)
+def screw_mass(density_kg_m3: float, pitch_diameter_m: float, length_m: float) -> float:
+    """A threaded screw's mass m = rho pi d_p^2 L / 4 [kg]: density [kg/m^3], pitch
+    (mean) diameter [m], length [m]. A symmetric thread's flanks fill about half the
+    annulus between the root and outer diameters, so the cylinder at the mean diameter
+    carries about the same metal; valid for solid screws.
+
+    A Tr16x4 steel screw (d2 = 14 mm, 7850 kg/m^3), 1 m long: 1.21 kg.
+
+    >>> round(screw_mass(7850.0, 0.014, 1.0), 3)
+    1.208
+    """
+    return density_kg_m3 * math.pi * pitch_diameter_m**2 * length_m / 4.0

@@ -1,0 +1,107 @@
+"""A machine of stacked axes in the API: its axes in, each axis sized out
+(``app.core.machine``)."""
+
+from types import GenericAlias
+from typing import Any, Optional, cast
+
+from pydantic import BaseModel, ConfigDict, Field, create_model
+
+from app.contract.inputs import ApplicationIn
+from app.contract.schemas import CandidateSummaryOut
+
+#: The most axes a stack may have (Z on X on Y).
+MAX_AXES = 3
+
+
+class AxisIn(BaseModel):
+    """One axis of the stack, in the API's units."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str = Field(
+        min_length=1, max_length=40, description="The axis's name, e.g. Z.", examples=["Z"]
+    )
+    inputs: ApplicationIn = Field(
+        description="The axis as the select call takes it; its moving_mass_kg is its own "
+        "carriage and payload, without the axes above it."
+    )
+    frame_kg: float = Field(
+        default=0.0,
+        ge=0.0,
+        le=10_000.0,
+        description="Mass that moves with this axis when it rides on the one below, "
+        "besides its moving mass, screw and motor: rails, base plate, bearings [kg].",
+    )
+    motor_kg: float = Field(
+        default=0.0,
+        ge=0.0,
+        le=1_000.0,
+        description="Its motor's mass [kg] (0: counted in frame_kg).",
+    )
+    choice: str | None = Field(
+        default=None,
+        max_length=100,
+        description="The catalog screw chosen for this axis (null: its first-ranked). It "
+        "decides the mass the axes below carry.",
+    )
+
+
+class MachineIn(BaseModel):
+    """The axes of a machine, the top one first: each rides on the next."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    axes: list[AxisIn] = Field(min_length=1, max_length=MAX_AXES)
+
+
+MachineAxisOut = create_model(
+    "MachineAxisOut",
+    __doc__="One axis sized, with the axes above it in its moving mass.",
+    name=(str, ...),
+    carried_kg=(float, Field(description="Mass of the axes above, added to its own [kg].")),
+    moving_mass_kg=(float, Field(description="The mass it was sized with [kg].")),
+    screw_kg=(
+        float | None,
+        Field(
+            description="The chosen screw's mass over the axis's length [kg] "
+            "(geometry.screw_mass); null when no screw is chosen."
+        ),
+    ),
+    total_kg=(
+        float,
+        Field(
+            description="What it brings to the axis below: moving mass, frame, motor and "
+            "screw [kg]."
+        ),
+    ),
+    evaluated=(int, ...),
+    passed=(int, ...),
+    chosen=(
+        cast(Any, Optional[CandidateSummaryOut]),  # noqa: UP045 (a run-time type)
+        Field(description="The chosen screw (summary view); null when none passes."),
+    ),
+    candidates=(
+        cast(Any, GenericAlias(list, (CandidateSummaryOut,))),
+        Field(description="Its ranked passing screws (summary view)."),
+    ),
+    share_url=(str, Field(description="This axis alone, with the carried mass, on the page.")),
+)
+
+
+MachineOut = create_model(
+    "MachineOut",
+    __doc__="A machine of stacked axes sized together.",
+    axes=(
+        cast(Any, GenericAlias(list, (MachineAxisOut,))),
+        Field(description="Each axis, the top one first."),
+    ),
+    governing=(
+        str | None,
+        Field(
+            description="The axis nearest its limit: one with no passing screw first, else "
+            "the chosen screw with the highest governing utilisation."
+        ),
+    ),
+    moved_kg=(float, Field(description="The mass the bottom axis moves [kg].")),
+    catalog_version=(str, ...),
+)

@@ -1,0 +1,60 @@
+"""A machine of stacked axes sized (``app.core.machine``), as the API's answer."""
+
+from typing import Any
+
+from app.catalog import Catalog
+from app.contract.form import share_query
+from app.contract.machine import MachineIn
+from app.core.machine import Axis, AxisResult, size_machine
+from app.report.present import candidate_json
+from app.report.service import INPUT_RANGES, INPUT_WORDS
+
+
+class UnknownChoice(LookupError):
+    """An axis's chosen screw that the catalog does not hold: (axis index, id)."""
+
+
+def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
+    """The core's axes from the API's, each application in SI with its library motor."""
+    return [
+        Axis(
+            name=a.name,
+            app=a.inputs.to_core(catalog.motors, catalog.supports),
+            frame_kg=a.frame_kg,
+            motor_kg=a.motor_kg,
+            choice=a.choice,
+        )
+        for a in body.axes
+    ]
+
+
+def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
+    inputs = body.axes[i].inputs.model_copy(update={"moving_mass_kg": r.app.moving_mass_kg})
+    return {
+        "name": r.axis.name,
+        "carried_kg": r.carried_kg,
+        "moving_mass_kg": r.app.moving_mass_kg,
+        "screw_kg": None if r.chosen is None else r.screw_kg,
+        "total_kg": r.total_kg,
+        "evaluated": r.selection.evaluated,
+        "passed": r.selection.passed,
+        "chosen": None if r.chosen is None else candidate_json(r.chosen, "summary"),
+        "candidates": [candidate_json(c, "summary") for c in r.selection.candidates],
+        "share_url": "/?" + share_query(inputs),
+    }
+
+
+def run_machine(body: MachineIn, catalog: Catalog) -> dict[str, Any]:
+    """Size the machine's axes, top first (``MachineOut``'s fields as JSON values);
+    ``UnknownChoice`` for a chosen id the catalog lacks."""
+    axes = machine_axes(body, catalog)
+    for i, a in enumerate(axes):
+        if a.choice is not None and a.choice not in catalog.index.positions:
+            raise UnknownChoice(i, a.choice)
+    machine = size_machine(axes, catalog.index, INPUT_RANGES, INPUT_WORDS)
+    return {
+        "axes": [_axis_out(body, i, r) for i, r in enumerate(machine.axes)],
+        "governing": machine.governing,
+        "moved_kg": machine.moved_kg,
+        "catalog_version": catalog.version,
+    }

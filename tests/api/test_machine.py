@@ -1,0 +1,80 @@
+"""POST /api/v1/machine: stacked axes sized together, the top axis first."""
+
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+Z = {
+    "load_n": 0,
+    "moving_mass_kg": 0.5,
+    "speed_mm_s": 10,
+    "length_mm": 250,
+    "accel_mm_s2": 200,
+    "orientation": "vertical",
+    "stroke_mm": 200,
+    "lead_mm": 8,
+    "motor": "17hs19-2004s1",
+    "brake_torque_nm": 0.1,
+}
+X = {
+    "load_n": 0,
+    "moving_mass_kg": 0.8,
+    "speed_mm_s": 100,
+    "length_mm": 400,
+    "accel_mm_s2": 1000,
+    "stroke_mm": 300,
+    "motor": "17hs19-2004s1",
+}
+
+
+def printer(**z: Any) -> dict[str, Any]:
+    return {
+        "axes": [
+            {"name": "Z", "inputs": Z, "frame_kg": 0.3, "motor_kg": 0.4, **z},
+            {"name": "X", "inputs": X, "frame_kg": 0.5, "motor_kg": 0.4},
+            {"name": "Y", "inputs": {**X, "moving_mass_kg": 0.5}, "motor_kg": 0.4},
+        ]
+    }
+
+
+def test_a_printer_gantry_is_sized_top_down(client: TestClient) -> None:
+    r = client.post("/api/v1/machine", json=printer())
+    assert r.status_code == 200
+    z, x, y = r.json()["axes"]
+    assert [a["name"] for a in (z, x, y)] == ["Z", "X", "Y"]
+    assert z["total_kg"] == pytest.approx(0.5 + 0.3 + 0.4 + z["screw_kg"], rel=1e-12)
+    assert x["carried_kg"] == pytest.approx(z["total_kg"], rel=1e-12)
+    assert x["moving_mass_kg"] == pytest.approx(0.8 + z["total_kg"], rel=1e-12)
+    assert y["carried_kg"] == pytest.approx(x["total_kg"], rel=1e-12)
+    for a in (z, x, y):
+        assert a["chosen"]["id"] == a["candidates"][0]["id"] and a["passed"] > 0
+        assert f"moving_mass_kg={a['moving_mass_kg']:g}"[:18] in a["share_url"]
+    assert r.json()["moved_kg"] == pytest.approx(y["moving_mass_kg"], rel=1e-12)
+
+
+def test_the_axis_share_link_reproduces_its_choice(client: TestClient) -> None:
+    x = client.post("/api/v1/machine", json=printer()).json()["axes"][1]
+    page = client.get(x["share_url"])
+    assert page.status_code == 200 and x["chosen"]["id"] in page.text
+
+
+def test_choosing_another_z_screw_changes_what_x_carries(client: TestClient) -> None:
+    first = client.post("/api/v1/machine", json=printer()).json()["axes"]
+    other = first[0]["candidates"][-1]["id"]
+    second = client.post("/api/v1/machine", json=printer(choice=other)).json()["axes"]
+    assert second[0]["chosen"]["id"] == other
+    change = second[0]["screw_kg"] - first[0]["screw_kg"]
+    assert second[1]["carried_kg"] - first[1]["carried_kg"] == pytest.approx(change, rel=1e-9)
+
+
+def test_a_bad_machine_is_refused_by_field(client: TestClient) -> None:
+    r = client.post("/api/v1/machine", json=printer(choice="Tr99x1-gold"))
+    assert r.status_code == 422 and r.json()["detail"][0]["field"] == "axes.0.choice"
+    four = printer()
+    four["axes"].append(four["axes"][-1])
+    assert client.post("/api/v1/machine", json=four).status_code == 422
+    bad = printer()
+    bad["axes"][1]["inputs"] = {**X, "speed_mm_s": -1}
+    r = client.post("/api/v1/machine", json=bad)
+    assert r.status_code == 422 and "speed_mm_s" in str(r.json()["detail"])

@@ -1,0 +1,105 @@
+"""Stacked axes sized together (``app.core.machine``): each axis carries the ones above."""
+
+import math
+from dataclasses import replace
+
+import pytest
+
+from app.catalog import Catalog
+from app.core.formulas import geometry
+from app.core.machine import Axis, size_machine
+from app.core.model import STANDARD_GRAVITY_M_S2, Application
+from app.core.selection import select
+
+Z = Application(
+    load_n=0.0,
+    speed_m_s=0.01,
+    length_m=0.25,
+    accel_m_s2=0.2,
+    moving_mass_kg=0.5,
+    orientation="vertical",
+    stroke_m=0.2,
+    lead_m=0.008,
+    brake_torque_nm=0.1,
+)
+X = Application(
+    load_n=0.0, speed_m_s=0.1, length_m=0.4, accel_m_s2=1.0, moving_mass_kg=0.8, stroke_m=0.3
+)
+Y = replace(X, moving_mass_kg=0.5)
+
+
+def stack(choice: str | None = None) -> list[Axis]:
+    return [
+        Axis("Z", Z, frame_kg=0.3, motor_kg=0.4, choice=choice),
+        Axis("X", X, frame_kg=0.5, motor_kg=0.4),
+        Axis("Y", Y, motor_kg=0.4),
+    ]
+
+
+def test_each_axis_carries_the_whole_axis_above(catalog: Catalog) -> None:
+    m = size_machine(stack(), catalog.index, {}, {})
+    z, x, y = m.axes
+    assert z.carried_kg == 0.0 and z.app.moving_mass_kg == 0.5
+    # Z brings its 0.5 kg carriage, 0.3 kg frame, 0.4 kg motor and its screw to X
+    screw = z.chosen.screw  # type: ignore[union-attr]
+    d2 = float(z.chosen.pitch_diameter_m)  # type: ignore[union-attr]
+    by_hand = screw.density_kg_m3 * math.pi * d2**2 / 4.0 * 0.25
+    assert z.screw_kg == pytest.approx(by_hand, rel=1e-12)
+    assert x.carried_kg == pytest.approx(0.5 + 0.3 + 0.4 + by_hand, rel=1e-12)
+    assert x.app.moving_mass_kg == pytest.approx(0.8 + x.carried_kg, rel=1e-12)
+    assert y.carried_kg == pytest.approx(x.total_kg, rel=1e-12)
+    assert m.moved_kg == pytest.approx(0.5 + y.carried_kg, rel=1e-12)
+
+
+def test_a_lower_axis_is_the_single_axis_with_the_mass_it_carries(catalog: Catalog) -> None:
+    m = size_machine(stack(), catalog.index, {}, {})
+    x = m.axes[1]
+    alone = select(replace(X, moving_mass_kg=0.8 + x.carried_kg), catalog.index)
+    assert [c.screw.id for c in x.selection.candidates] == [c.screw.id for c in alone.candidates]
+    assert x.chosen is not None and x.chosen.screw.id == alone.candidates[0].screw.id
+
+
+def test_the_top_axis_alone_is_todays_select(catalog: Catalog) -> None:
+    (z,) = size_machine(stack()[:1], catalog.index, {}, {}).axes
+    alone = select(Z, catalog.index)
+    assert z.chosen is not None and z.chosen.screw.id == alone.candidates[0].screw.id
+    assert float(z.chosen.torque.required_nm) == float(alone.candidates[0].torque.required_nm)
+
+
+def test_another_screw_on_the_upper_axis_updates_the_axes_below(catalog: Catalog) -> None:
+    first = size_machine(stack(), catalog.index, {}, {})
+    other = first.axes[0].selection.candidates[-1].screw.id
+    assert other != first.axes[0].chosen.screw.id  # type: ignore[union-attr]
+    second = size_machine(stack(other), catalog.index, {}, {})
+    assert second.axes[0].chosen.screw.id == other  # type: ignore[union-attr]
+    difference = second.axes[0].screw_kg - first.axes[0].screw_kg
+    assert difference != 0.0
+    for a, b in zip(first.axes[1:], second.axes[1:], strict=True):
+        assert b.carried_kg - a.carried_kg == pytest.approx(difference, rel=1e-9)
+
+
+def test_the_weight_of_the_axes_above_loads_a_vertical_axis(catalog: Catalog) -> None:
+    """A vertical axis under another: the upper axis's mass is weight on its nut."""
+    under = replace(Z, moving_mass_kg=0.2, lead_m=None)
+    axes = [Axis("top", X, frame_kg=1.0), Axis("lift", under)]
+    lift = size_machine(axes, catalog.index, {}, {}).axes[1]
+    top = size_machine(axes[:1], catalog.index, {}, {}).axes[0]
+    weight = (0.2 + top.total_kg) * STANDARD_GRAVITY_M_S2
+    assert lift.chosen is not None
+    assert float(lift.chosen.quantities.holding_force_n) == pytest.approx(weight, rel=1e-12)
+
+
+def test_the_axis_with_nothing_passing_governs(catalog: Catalog) -> None:
+    impossible = replace(Y, load_n=1.0e6)
+    m = size_machine([*stack()[:2], Axis("Y", impossible)], catalog.index, {}, {})
+    assert m.axes[2].chosen is None and m.governing == "Y"
+    fine = size_machine(stack(), catalog.index, {}, {})
+    worst = max(fine.axes, key=lambda r: float(r.chosen.max_utilization))  # type: ignore[union-attr]
+    assert fine.governing == worst.axis.name
+
+
+def test_screw_mass_of_a_tr16x4_by_hand() -> None:
+    """Tr16x4: d2 = 16 - 0.5 x 4 = 14 mm (ISO 2904); steel 7850 kg/m^3, 1 m long."""
+    assert geometry.screw_mass(7850.0, 0.014, 1.0) == pytest.approx(
+        7850.0 * math.pi * 0.014**2 / 4.0, rel=1e-12
+    )
