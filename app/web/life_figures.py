@@ -50,5 +50,7 @@ def life_figure(wear: Sequence[WearLine], in_years: bool, d: Display) -> dict[st
     if not data:
         return None
     y_title = "Wear life [years]" if in_years else "Wear life [km of travel]"
-    x_axis = axis(f"Wear thrust over the cycle [{d.label('force')}]", True)
-    return {"data": data, "layout": layout(x_axis, axis(y_title, True))}
+    thrusts = [x for trace in data for x in trace["x"]]
+    lives = [y for trace in data for y in trace["y"]]
+    x_axis = axis(f"Wear thrust over the cycle [{d.label('force')}]", True, thrusts)
+    return {"data": data, "layout": layout(x_axis, axis(y_title, True, lives))}
