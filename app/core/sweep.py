@@ -124,7 +124,8 @@ def pressure_limits(
             pressure = float(q.peak_force_n[k] / q.flank_area_m2[k])
         elif np.isfinite(q.pv_limit_pa_m_s[k]) and q.pv_limit_pa_m_s[k] > 0 and pv_speed > 0:
             speeds = pv_speed * span**steps
-            allowed = bearing.pv_pressure(q.pv_limit_pa_m_s[k], speeds)
+            pv_limit = float(q.pv_limit_pa_m_s[k])
+            allowed = np.array([bearing.pv_pressure(pv_limit, float(v)) for v in speeds])
             check, speed, pressure = "pv", pv_speed, float(q.pressure_pa[k])
         else:
             continue
