@@ -12,7 +12,8 @@ import numpy as np
 from app.core.formulas import bearing
 from app.core.index import CatalogIndex, SizeKey
 from app.core.model import Application
-from app.core.quantities import nut_allowed_pressures, operating_point
+from app.core.quantities import Quantities, nut_allowed_pressures, operating_point
+from app.core.table import Array
 from app.core.screening import screen_table
 
 
@@ -98,37 +99,46 @@ class PressureLimit:
     allowed_pa: tuple[float, ...]
 
 
+def _operating(q: Quantities[Array], k: int) -> tuple[str, float, float] | None:
+    """The check judging candidate ``k``'s nut pressure with its sliding speed [m/s] and
+    pressure [Pa] as that check takes them; None without such a limit or speed."""
+    flank_speed, pv_speed = float(q.sliding_speed_m_s[k]), float(q.surface_speed_m_s[k])
+    if np.isfinite(q.nut_allowed_pressure_pa[k]) and flank_speed > 0.0:
+        return "bearing_pressure", flank_speed, float(q.peak_force_n[k] / q.flank_area_m2[k])
+    if np.isfinite(q.pv_limit_pa_m_s[k]) and q.pv_limit_pa_m_s[k] > 0.0 and pv_speed > 0.0:
+        return "pv", pv_speed, float(q.pressure_pa[k])
+    return None
+
+
 def pressure_limits(
     app: Application, index: CatalogIndex, ids: Sequence[str], span: float, points: int
 ) -> list[PressureLimit]:
     """The candidates ``ids`` whose nut has a pressure limit that moves with the sliding
-    speed, in the order given: the allowed pressure at ``points`` speeds spaced evenly in
-    log from the operating sliding speed over ``span`` to it times ``span``, with the
-    limits the checks use (``nut_allowed_pressures`` for the flanks, PV_lim / v for the
-    seed's PV), derated as the checks derate them."""
+    speed, in the order given, each with the pressure it allows at the same ``points``
+    speeds, spaced evenly in log from the lowest operating sliding speed over ``span`` to
+    the highest times ``span`` (so nuts of one material draw one curve): the limits the
+    checks use (``nut_allowed_pressures`` for the flanks, PV_lim / v for the seed's PV),
+    derated as the checks derate them."""
     rows = np.array([index.positions[i] for i in ids if i in index.positions], dtype=np.intp)
     if not rows.size:
         return []
     q = operating_point(app, index.table.take(rows))
-    steps = np.linspace(-1.0, 1.0, points)
+    found = [(k, op) for k in range(len(rows)) if (op := _operating(q, k)) is not None]
+    if not found:
+        return []
+    operating_speeds = [speed for _, (_, speed, _) in found]
+    speeds = np.geomspace(min(operating_speeds) / span, max(operating_speeds) * span, points)
     out = []
-    for k, position in enumerate(rows.tolist()):
-        screw = index.table.screws[position]
-        flank_speed, pv_speed = float(q.sliding_speed_m_s[k]), float(q.surface_speed_m_s[k])
-        if np.isfinite(q.nut_allowed_pressure_pa[k]) and flank_speed > 0.0:
-            speeds = flank_speed * span**steps
+    for k, (check, speed, pressure) in found:
+        position = int(rows[k])
+        if check == "bearing_pressure":
             same = index.table.take(np.full(points, position, dtype=np.intp))
             limit = np.full(points, q.nut_pv_limit_pa_m_s[k])
             allowed = nut_allowed_pressures(same, limit, speeds)
-            check, speed = "bearing_pressure", flank_speed
-            pressure = float(q.peak_force_n[k] / q.flank_area_m2[k])
-        elif np.isfinite(q.pv_limit_pa_m_s[k]) and q.pv_limit_pa_m_s[k] > 0 and pv_speed > 0:
-            speeds = pv_speed * span**steps
+        else:
             pv_limit = float(q.pv_limit_pa_m_s[k])
             allowed = np.array([bearing.pv_pressure(pv_limit, float(v)) for v in speeds])
-            check, speed, pressure = "pv", pv_speed, float(q.pressure_pa[k])
-        else:
-            continue
+        screw = index.table.screws[position]
         out.append(
             PressureLimit(
                 screw.id,

@@ -218,48 +218,59 @@ PRESSURE_LIMITS = {"bearing_pressure": "allowed pressure", "pv": "PV limit"}
 
 
 def _pressure_groups(limits: Sequence[PressureLimit]) -> list[list[PressureLimit]]:
-    """The first TOP distinct limit curves with their operating points, each with the
-    nuts it holds: screws of one size and nut share both, and draw them once."""
-    groups: dict[tuple[float, ...], list[PressureLimit]] = {}
+    """The first TOP distinct limit curves, each with the nuts it holds: nuts of one
+    material (and derating) allow the same pressure at each speed, and draw one curve."""
+    groups: dict[tuple[object, ...], list[PressureLimit]] = {}
     for line in limits:
-        key = tuple(_round(v) for v in (line.speed_m_s, line.pressure_pa, *line.allowed_pa))
+        key = (line.check, *(_round(p) for p in line.allowed_pa))
         if key in groups or len(groups) < TOP:
             groups.setdefault(key, []).append(line)
     return list(groups.values())
 
 
 def _pressure_traces(group: list[PressureLimit], colour: str, d: Display) -> list[dict[str, Any]]:
-    """Nuts' allowed pressure against sliding speed (line) and their operating point
-    (cross) in one colour."""
-    line, ids = group[0], ", ".join(g.id for g in group)
+    """One curve of allowed pressure against sliding speed and, in its colour, a cross
+    at each of its nuts' operating pressure and speed (one per spot, naming its nuts),
+    under the curve's one legend entry."""
+    line = group[0]
     pairs = [
         (_round(d.value(v * 1e3, "speed")), _round(d.value(p / 1e6, "pressure")))
         for v, p in zip(line.speeds_m_s, line.allowed_pa, strict=True)
         if math.isfinite(p) and p > 0
     ]
+    spots: dict[tuple[float, float], list[str]] = {}
+    for member in group:
+        spot = (
+            _round(d.value(member.speed_m_s * 1e3, "speed")),
+            _round(d.value(member.pressure_pa / 1e6, "pressure")),
+        )
+        spots.setdefault(spot, []).append(member.id)
     speed, pressure = d.label("speed"), d.label("pressure")
-    x = _round(d.value(line.speed_m_s * 1e3, "speed"))
-    y = _round(d.value(line.pressure_pa / 1e6, "pressure"))
+    name = ", ".join(member.id for member in group)
     return [
         {
             "type": "scatter",
             "mode": "lines",
-            "name": f"{ids}: {PRESSURE_LIMITS[line.check]}",
-            "x": [px for px, _ in pairs],
-            "y": [py for _, py in pairs],
+            "name": f"{name}: {PRESSURE_LIMITS[line.check]}",
+            "x": [x for x, _ in pairs],
+            "y": [y for _, y in pairs],
             "line": {"color": colour, "width": 2},
+            "legendgroup": name,
             "hovertemplate": f"%{{x:.4g}} {speed}<br>allowed %{{y:.4g}} {pressure}"
-            f"<extra>{line.id}</extra>",
+            f"<extra>{PRESSURE_LIMITS[line.check]}</extra>",
         },
         {
             "type": "scatter",
             "mode": "markers",
-            "name": f"{ids}: operating",
-            "x": [x],
-            "y": [y],
+            "name": f"{name}: operating",
+            "legendgroup": name,
+            "showlegend": False,
+            "x": [x for x, _ in spots],
+            "y": [y for _, y in spots],
+            "text": [", ".join(ids) for ids in spots.values()],
             "marker": {"size": 12, "symbol": "x", "color": colour},
-            "hovertemplate": f"%{{x:.4g}} {speed}<br>%{{y:.4g}} {pressure}"
-            f"<extra>{line.id} operating</extra>",
+            "hovertemplate": f"%{{text}}<br>%{{x:.4g}} {speed}, %{{y:.4g}} {pressure}"
+            "<extra>operating</extra>",
         },
     ]
 
