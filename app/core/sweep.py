@@ -13,8 +13,8 @@ from app.core.formulas import bearing
 from app.core.index import CatalogIndex, SizeKey
 from app.core.model import Application
 from app.core.quantities import Quantities, nut_allowed_pressures, operating_point
-from app.core.table import Array
 from app.core.screening import screen_table
+from app.core.table import Array
 
 
 @dataclass(frozen=True, slots=True)
