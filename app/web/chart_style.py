@@ -10,8 +10,8 @@ from app.contract.units import sig
 PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
 #: mantissas labelled on log axes within each decade.
 LOG_STEPS = (1.0, 2.0, 5.0)
-#: a log axis spanning more decades than this labels the decades alone.
-LOG_DECADES_STEPPED = 2.5
+#: a log axis whose 1-2-5 labels would number more than this labels its decades alone.
+LOG_LABELS_MAX = 8
 
 
 def rounded(value: float) -> float:
@@ -34,9 +34,9 @@ def _decade_ticks(low: float, high: float, steps: tuple[float, ...]) -> list[flo
 
 def log_ticks(values: Iterable[float]) -> tuple[list[float], list[str]]:
     """Tick positions and labels for a log axis over ``values``: every decade and the 2 and
-    5 between, so a reader never has to count unlabelled gridlines; over more than
-    ``LOG_DECADES_STEPPED`` decades the decades alone, so the labels do not crowd a
-    small or printed chart (``minor_log_ticks`` keeps the 2 and 5 as gridlines).
+    5 between, so a reader never has to count unlabelled gridlines; the decades alone
+    where those would be more than ``LOG_LABELS_MAX`` labels, which would crowd a phone's
+    or a printed chart (``minor_log_ticks`` keeps the 2 and 5 as gridlines).
 
     An infinite value (a share of a limit that is zero: a polymer nut past its
     temperature) has no place on a log axis and is left out, as is zero.
@@ -52,8 +52,9 @@ def log_ticks(values: Iterable[float]) -> tuple[list[float], list[str]]:
     if not positive:
         return [], []
     low, high = min(positive), max(positive)
-    steps = LOG_STEPS if math.log10(high / low) <= LOG_DECADES_STEPPED else (1.0,)
-    shown = _decade_ticks(low, high, steps)
+    shown = _decade_ticks(low, high, LOG_STEPS)
+    if len(shown) > LOG_LABELS_MAX:
+        shown = _decade_ticks(low, high, (1.0,))
     return shown, [sig(t, 3) for t in shown]
 
 

@@ -331,7 +331,9 @@ def torque_figure(
         ]
     return {
         "data": data,
-        "layout": _layout(_axis(""), _axis(f"Running torque [{unit}]"), **extra),
+        "layout": _layout(
+            {**_axis("Screw"), "type": "category"}, _axis(f"Running torque [{unit}]"), **extra
+        ),
     }
 
 
