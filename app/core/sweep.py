@@ -103,8 +103,9 @@ def _operating(q: Quantities[Array], k: int) -> tuple[str, float, float] | None:
     """The check judging candidate ``k``'s nut pressure with its sliding speed [m/s] and
     pressure [Pa] as that check takes them; None without such a limit or speed."""
     flank_speed, pv_speed = float(q.sliding_speed_m_s[k]), float(q.surface_speed_m_s[k])
-    if np.isfinite(q.nut_allowed_pressure_pa[k]) and flank_speed > 0.0:
-        return "bearing_pressure", flank_speed, float(q.peak_force_n[k] / q.flank_area_m2[k])
+    area = float(q.flank_area_m2[k])
+    if np.isfinite(q.nut_allowed_pressure_pa[k]) and flank_speed > 0.0 and area > 0.0:
+        return "bearing_pressure", flank_speed, float(q.peak_force_n[k]) / area
     if np.isfinite(q.pv_limit_pa_m_s[k]) and q.pv_limit_pa_m_s[k] > 0.0 and pv_speed > 0.0:
         return "pv", pv_speed, float(q.pressure_pa[k])
     return None
