@@ -116,27 +116,30 @@ def test_no_tick_labels_overlap_on_a_phone(
     assert console_errors == []
 
 
-def test_no_tick_labels_overlap_in_the_printed_report(
-    page: Any, live_server: str, artifacts: Path, console_errors: list[str]
+@pytest.mark.parametrize("path", ["/report", "/"], ids=["report", "results"])
+def test_no_tick_labels_overlap_when_printed(
+    page: Any, live_server: str, artifacts: Path, console_errors: list[str], path: str
 ) -> None:
     """The tick labels measured as the PDF is made (app.js redraws the charts at their
     printed box's size once the print stylesheet applies), then the PDF's pages rendered
-    to PNG to look at."""
-    drawn(page, f"{live_server}/report?{DUTY}")
-    page.screenshot(path=str(artifacts / "report-charts-1280.png"), full_page=True)
+    to PNG to look at: the filed report (two charts a row) and the printed results (three
+    a row)."""
+    name = "report-charts" if path == "/report" else "results-charts"
+    drawn(page, f"{live_server}{path}?{DUTY}")
+    page.screenshot(path=str(artifacts / f"{name}-1280.png"), full_page=True)
     page.evaluate(RECORD_PRINTED_TICKS)
-    pdf = artifacts / "report-charts.pdf"
+    pdf = artifacts / f"{name}.pdf"
     page.pdf(path=str(pdf), prefer_css_page_size=True, print_background=True)
     printed = page.evaluate("window.printedTicks")
     assert printed and len(printed) >= 5
     assert_ticks_readable(printed)
     if shutil.which("pdftoppm") is None:
         pytest.fail("pdftoppm (poppler-utils) is needed to render the PDF's pages")
-    for old in artifacts.glob("report-charts-page-*.png"):
+    for old in artifacts.glob(f"{name}-page-*.png"):
         old.unlink()
     subprocess.run(
-        ["pdftoppm", "-r", "100", "-png", str(pdf), str(artifacts / "report-charts-page")],
+        ["pdftoppm", "-r", "100", "-png", str(pdf), str(artifacts / f"{name}-page")],
         check=True,
     )
-    assert len(list(artifacts.glob("report-charts-page-*.png"))) >= 2
+    assert list(artifacts.glob(f"{name}-page-*.png"))
     assert console_errors == []
