@@ -402,6 +402,16 @@ def _table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
     return out
 
 
+def nut_allowed_pressures(t: CandidateTable, pv_limit_pa_m_s: Array, speed_m_s: Array) -> Array:
+    """The pressure each nut's material allows at its sliding speed [Pa]: the lowest of
+    its table value, p_max and the (derated) ``pv_limit_pa_m_s`` over the speed [m/s]
+    (``bearing.allowable_pressure``); NaN for a nut with none of them."""
+    allowed: Array = bearing.allowable_pressure(
+        _table_pressures(t, speed_m_s), t.max_pressure_pa, pv_limit_pa_m_s, speed_m_s
+    )
+    return allowed
+
+
 def _nut_length(app: Application, t: CandidateTable) -> Array:
     """The nut length whose engaged turns carry the load: the user's, else the catalog's
     (NaN where the catalog gives none) [m]."""
@@ -426,9 +436,7 @@ def _flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> d
     factors of ``_pv_limit``) and that pressure over the engaged flank area."""
     speed = pv.surface_speed(rpm, t.flank_helix_travel_m)
     pv_limit = t.nut_pv_limit_pa_m_s * derate
-    allowed = bearing.allowable_pressure(
-        _table_pressures(t, speed), t.max_pressure_pa, pv_limit, speed
-    )
+    allowed = nut_allowed_pressures(t, pv_limit, speed)
     area = _flank_area(app, t)
     return {
         "nut_pv_limit_pa_m_s": pv_limit,

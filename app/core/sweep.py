@@ -1,17 +1,20 @@
 """Sweeps for the charts: one size and nut with every lead the catalog offers, screened
 for an application, to show the trade-off that picks the lead (drive torque against the
-speed and PV limits); and the wear life of the top candidates at the axis's thrust, from
-which the life at any thrust follows."""
+speed and PV limits); the wear life of the top candidates at the axis's thrust, from
+which the life at any thrust follows; and the pressure each top candidate's nut allows
+against the sliding speed, beside its operating pressure and speed."""
 
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
 
+from app.core.formulas import bearing
 from app.core.index import CatalogIndex, SizeKey
 from app.core.model import Application
-from app.core.quantities import operating_point
+from app.core.quantities import Quantities, nut_allowed_pressures, operating_point
 from app.core.screening import screen_table
+from app.core.table import Array
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,3 +82,72 @@ def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> li
             screw = index.table.screws[position]
             points.append(WearPoint(screw.id, float(force), life, float(travel)))
     return points
+
+
+@dataclass(frozen=True, slots=True)
+class PressureLimit:
+    """One candidate's nut: the check that judges its pressure ('bearing_pressure': the
+    engaged flanks against the material's table, p_max and PV; 'pv': the seed's three
+    threads against its PV limit), its operating sliding speed [m/s] and pressure [Pa],
+    and the pressure its material allows [Pa] at each of ``speeds_m_s`` [m/s]."""
+
+    id: str
+    check: str
+    speed_m_s: float
+    pressure_pa: float
+    speeds_m_s: tuple[float, ...]
+    allowed_pa: tuple[float, ...]
+
+
+def _operating(q: Quantities[Array], k: int) -> tuple[str, float, float] | None:
+    """The check judging candidate ``k``'s nut pressure with its sliding speed [m/s] and
+    pressure [Pa] as that check takes them; None without such a limit or speed."""
+    flank_speed, pv_speed = float(q.sliding_speed_m_s[k]), float(q.surface_speed_m_s[k])
+    area = float(q.flank_area_m2[k])
+    if np.isfinite(q.nut_allowed_pressure_pa[k]) and flank_speed > 0.0 and area > 0.0:
+        return "bearing_pressure", flank_speed, float(q.peak_force_n[k]) / area
+    if np.isfinite(q.pv_limit_pa_m_s[k]) and q.pv_limit_pa_m_s[k] > 0.0 and pv_speed > 0.0:
+        return "pv", pv_speed, float(q.pressure_pa[k])
+    return None
+
+
+def pressure_limits(
+    app: Application, index: CatalogIndex, ids: Sequence[str], span: float, points: int
+) -> list[PressureLimit]:
+    """The candidates ``ids`` whose nut has a pressure limit that moves with the sliding
+    speed, in the order given, each with the pressure it allows at the same ``points``
+    speeds, spaced evenly in log from the lowest operating sliding speed over ``span`` to
+    the highest times ``span`` (so nuts of one material draw one curve): the limits the
+    checks use (``nut_allowed_pressures`` for the flanks, PV_lim / v for the seed's PV),
+    derated as the checks derate them."""
+    rows = np.array([index.positions[i] for i in ids if i in index.positions], dtype=np.intp)
+    if not rows.size:
+        return []
+    q = operating_point(app, index.table.take(rows))
+    found = [(k, op) for k in range(len(rows)) if (op := _operating(q, k)) is not None]
+    if not found:
+        return []
+    operating_speeds = [speed for _, (_, speed, _) in found]
+    speeds = np.geomspace(min(operating_speeds) / span, max(operating_speeds) * span, points)
+    out = []
+    for k, (check, speed, pressure) in found:
+        position = int(rows[k])
+        if check == "bearing_pressure":
+            same = index.table.take(np.full(points, position, dtype=np.intp))
+            limit = np.full(points, q.nut_pv_limit_pa_m_s[k])
+            allowed = nut_allowed_pressures(same, limit, speeds)
+        else:
+            pv_limit = float(q.pv_limit_pa_m_s[k])
+            allowed = np.array([bearing.pv_pressure(pv_limit, float(v)) for v in speeds])
+        screw = index.table.screws[position]
+        out.append(
+            PressureLimit(
+                screw.id,
+                check,
+                speed,
+                pressure,
+                tuple(float(v) for v in speeds),
+                tuple(float(p) for p in allowed),
+            )
+        )
+    return out

@@ -1,7 +1,8 @@
 """The numbers behind a result's charts that the candidates' output models do not carry:
 the axis read from the inputs once, the lead sweep of the top candidate's size
 (``app.core.sweep.lead_sweep``) and the wear life of the wear-rated candidates at the
-cycle's wear thrust (``app.core.sweep.wear_points``). The pages draw them
+cycle's wear thrust (``app.core.sweep.wear_points``) and the pressure each top nut allows
+against the sliding speed (``app.core.sweep.pressure_limits``). The pages draw them
 (``app.web.figures``); nothing here knows a chart."""
 
 from collections.abc import Sequence
@@ -14,7 +15,8 @@ from app.core.checks.wear_life import life_band
 from app.core.index import size_of
 from app.core.model import Application
 from app.core.sweep import LeadPoint as LeadPoint
-from app.core.sweep import lead_sweep, wear_points
+from app.core.sweep import PressureLimit as PressureLimit
+from app.core.sweep import lead_sweep, pressure_limits, wear_points
 from app.core.units import from_si
 
 
@@ -36,7 +38,8 @@ class ChartData:
     reaches [m/s], ``motion.reached_speed``, the torque
     limit [N m] or None, the motor's curve as (rpm, N m) pairs, the torque safety factor and the
     curve's margin, ``motion.curve_margin``), the lead sweep (empty without a catalog)
-    and the wear lines (``wear_in_years``: their life is in years of a duty)."""
+    the wear lines (``wear_in_years``: their life is in years of a duty) and the nuts'
+    pressure limits (empty without a catalog)."""
 
     length_m: float
     speed_m_s: float
@@ -47,6 +50,7 @@ class ChartData:
     sweep: list[LeadPoint]
     wear: list[WearLine]
     wear_in_years: bool
+    pressure: list[PressureLimit]
 
 
 def _wear_lines(
@@ -61,6 +65,12 @@ def _wear_lines(
     return lines, bool(app.stroke_m and motion.cycles_per_day(app))
 
 
+#: the pressure-limit curves span the operating sliding speed divided and multiplied by
+#: this factor, at this many points.
+PRESSURE_SPAN = 10.0
+PRESSURE_POINTS = 41
+
+
 def chart_data(
     inputs: ApplicationIn, catalog: Catalog | None, ids: Sequence[str], wear_top: int
 ) -> ChartData:
@@ -70,10 +80,14 @@ def chart_data(
     app = inputs.to_core(catalog.motors, catalog.supports) if catalog else inputs.axis()
     sweep: list[LeadPoint] = []
     wear: list[WearLine] = []
+    pressure: list[PressureLimit] = []
     in_years = False
     if catalog is not None:
         sweep = lead_sweep(app, catalog.index, size_of(catalog.by_id[ids[0]]))
         wear, in_years = _wear_lines(app, catalog, ids, wear_top)
+        pressure = pressure_limits(
+            app, catalog.index, ids[:wear_top], PRESSURE_SPAN, PRESSURE_POINTS
+        )
     return ChartData(
         length_m=app.length_m,
         speed_m_s=motion.reached_speed(app),
@@ -84,4 +98,5 @@ def chart_data(
         sweep=sweep,
         wear=wear,
         wear_in_years=in_years,
+        pressure=pressure,
     )

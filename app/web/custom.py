@@ -44,6 +44,15 @@ router = APIRouter(include_in_schema=False)
 #: screw fields that must be filled in before an evaluation runs.
 SCREW_REQUIRED = tuple(f.name for f in SCREW_FIELDS if f.required)
 EXPORT_NAME = "leadscrew-custom"
+#: the PV chart of one screw the catalog does not hold: its PV-limited load against
+#: linear speed (``pv_figure``), captioned as such in place of the selector's.
+CHART_CAPTIONS = {
+    "pv": (
+        "PV limit",
+        "Largest axial load the nut's PV limit allows against linear speed; the cross is "
+        "your load and speed.",
+    )
+}
 
 
 def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict[str, Any]]:
@@ -100,6 +109,7 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     query = _query(inputs, screw, context["units"])
     context.update(result=result, query=query, share_url="/custom?" + query)
     context["figures"] = candidate_figures(result, context["units"])
+    context["chart_captions"] = CHART_CAPTIONS
     context.update(screw=screw, screw_rows=screw_rows(screw, context["units"]))
     return context
 

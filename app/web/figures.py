@@ -5,6 +5,7 @@ Each figure is ``{"data": [...], "layout": {...}}`` in the user's display units,
 the tests use to validate them.
 """
 
+import math
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
@@ -13,7 +14,7 @@ from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display, api_value, si_to_api, sig
 from app.core.formulas import critical_speed, pv
-from app.report.charts import LeadPoint, chart_data
+from app.report.charts import LeadPoint, PressureLimit, chart_data
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
 from app.web.chart_style import layout as _layout
@@ -212,6 +213,88 @@ def pv_figure(
     }
 
 
+#: how each check's limit curve is named in the legend.
+PRESSURE_LIMITS = {"bearing_pressure": "allowed pressure", "pv": "PV limit"}
+
+
+def _pressure_groups(limits: Sequence[PressureLimit]) -> list[list[PressureLimit]]:
+    """The first TOP distinct limit curves, each with the nuts it holds: nuts of one
+    material (and derating) allow the same pressure at each speed, and draw one curve."""
+    groups: dict[tuple[object, ...], list[PressureLimit]] = {}
+    for line in limits:
+        key = (line.check, *(_round(p) for p in line.allowed_pa))
+        if key in groups or len(groups) < TOP:
+            groups.setdefault(key, []).append(line)
+    return list(groups.values())
+
+
+def _pressure_traces(group: list[PressureLimit], colour: str, d: Display) -> list[dict[str, Any]]:
+    """One curve of allowed pressure against sliding speed and, in its colour, a cross
+    at each of its nuts' operating pressure and speed (one per spot, naming its nuts),
+    under the curve's one legend entry."""
+    line = group[0]
+    pairs = [
+        (_round(d.value(v * 1e3, "speed")), _round(d.value(p / 1e6, "pressure")))
+        for v, p in zip(line.speeds_m_s, line.allowed_pa, strict=True)
+        if math.isfinite(p) and p > 0
+    ]
+    spots: dict[tuple[float, float], list[str]] = {}
+    for member in group:
+        spot = (
+            _round(d.value(member.speed_m_s * 1e3, "speed")),
+            _round(d.value(member.pressure_pa / 1e6, "pressure")),
+        )
+        spots.setdefault(spot, []).append(member.id)
+    speed, pressure = d.label("speed"), d.label("pressure")
+    name = ", ".join(member.id for member in group)
+    return [
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "name": f"{name}: {PRESSURE_LIMITS[line.check]}",
+            "x": [x for x, _ in pairs],
+            "y": [y for _, y in pairs],
+            "line": {"color": colour, "width": 2},
+            "legendgroup": name,
+            "hovertemplate": f"%{{x:.4g}} {speed}<br>allowed %{{y:.4g}} {pressure}"
+            f"<extra>{PRESSURE_LIMITS[line.check]}</extra>",
+        },
+        {
+            "type": "scatter",
+            "mode": "markers",
+            "name": f"{name}: operating",
+            "legendgroup": name,
+            "showlegend": False,
+            "x": [x for x, _ in spots],
+            "y": [y for _, y in spots],
+            "text": [", ".join(ids) for ids in spots.values()],
+            "marker": {"size": 12, "symbol": "x", "color": colour},
+            "hovertemplate": f"%{{text}}<br>%{{x:.4g}} {speed}, %{{y:.4g}} {pressure}"
+            "<extra>operating</extra>",
+        },
+    ]
+
+
+def pressure_figure(limits: Sequence[PressureLimit], d: Display) -> dict[str, Any]:
+    """The pressure each top nut's material allows against the sliding speed (log-log),
+    with each nut's operating pressure and speed as a cross in its colour: the gap
+    between a cross and its line is the margin. The curves are the core's
+    (``app.core.sweep.pressure_limits``): the PV limit's p = PV / v, capped by the
+    material's maximum pressure and pressure-speed table where it has them."""
+    data: list[dict[str, Any]] = []
+    for colour, group in zip(PALETTE, _pressure_groups(limits), strict=False):
+        data += _pressure_traces(group, colour, d)
+    speeds = [x for trace in data for x in trace["x"]]
+    pressures = [y for trace in data for y in trace["y"]]
+    return {
+        "data": data,
+        "layout": _layout(
+            _axis(f"Sliding speed at the thread [{d.label('speed')}]", True, speeds),
+            _axis(f"Contact pressure [{d.label('pressure')}]", True, pressures),
+        ),
+    }
+
+
 def torque_figure(
     candidates: Sequence[CandidateOut], limit_nm: float | None, d: Display
 ) -> dict[str, Any]:
@@ -248,7 +331,9 @@ def torque_figure(
         ]
     return {
         "data": data,
-        "layout": _layout(_axis(""), _axis(f"Running torque [{unit}]"), **extra),
+        "layout": _layout(
+            {**_axis("Screw"), "type": "category"}, _axis(f"Running torque [{unit}]"), **extra
+        ),
     }
 
 
@@ -411,7 +496,9 @@ def result_figures(
     result: SelectOut | PageSelectionOut, units: dict[str, str], catalog: Catalog | None = None
 ) -> dict[str, dict[str, Any]]:
     """The charts of a result, keyed 'critical_speed', 'pv', 'torque' and, given the
-    catalog, 'lead_sweep' and 'life' (wear-rated nuts). When nothing passes, the chart of
+    catalog, 'lead_sweep' and 'life' (wear-rated nuts). Given the catalog, 'pv' is the
+    top nuts' allowed pressure against sliding speed (none when no nut has such a
+    limit); without it, the PV-limited load against linear speed. When nothing passes, the chart of
     the check that excludes the most screws comes first."""
     candidates, passing = chart_candidates(result)
     if not candidates:
@@ -420,11 +507,12 @@ def result_figures(
     data = chart_data(result.inputs, catalog, [c.id for c in candidates], LIFE_TOP)
     length_mm, _ = api_value(data.length_m, "length")
     speed_mm_s, _ = api_value(data.speed_m_s, "speed")
-    figures = {
-        "critical_speed": critical_speed_figure(candidates, length_mm, d),
-        "pv": pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d),
-        "torque": torque_figure(candidates, data.torque_limit_nm, d),
-    }
+    figures = {"critical_speed": critical_speed_figure(candidates, length_mm, d)}
+    if data.pressure:
+        figures["pv"] = pressure_figure(data.pressure, d)
+    elif catalog is None:
+        figures["pv"] = pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d)
+    figures["torque"] = torque_figure(candidates, data.torque_limit_nm, d)
     if len(data.sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(data.sweep, candidates[0], d)
     life = life_figure(data.wear, data.wear_in_years, d)

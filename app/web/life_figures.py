@@ -1,7 +1,7 @@
 """Nut wear life against thrust as a Plotly figure (plain dict): for the top candidates
-whose nut is rated by its wear rate, the life in years of the duty (or the travel in km,
-without a duty) at wear thrusts (the cycle's, ``motion.wear_thrust``) from a quarter to
-four times the axis's, with the band of the
+whose nut is rated by its wear rate, the life in years of the duty (or the travel, in km
+or in miles with inches, without a duty) at wear thrusts (the cycle's,
+``motion.wear_thrust``) from a quarter to four times the axis's, with the band of the
 wear rate's scatter shaded. Archard's life is inversely proportional to the thrust, so the
 core's one number per candidate gives the whole line."""
 
@@ -43,12 +43,15 @@ def life_figure(wear: Sequence[WearLine], in_years: bool, d: Display) -> dict[st
     data: list[dict[str, Any]] = []
     for line in wear:
         colour = PALETTE[len(data) // 3 % len(PALETTE)]
-        traces = _traces(line.id, line.life, line.force_n, line.band, d)
+        life = line.life if in_years else d.value(line.life, "travel")
+        traces = _traces(line.id, life, line.force_n, line.band, d)
         traces[1]["fillcolor"] = colour + "33"
         traces[2]["line"]["color"] = colour
         data += traces
     if not data:
         return None
-    y_title = "Wear life [years]" if in_years else "Wear life [km of travel]"
-    x_axis = axis(f"Wear thrust over the cycle [{d.label('force')}]", True)
-    return {"data": data, "layout": layout(x_axis, axis(y_title, True))}
+    y_title = "Wear life [years]" if in_years else f"Wear life as travel [{d.label('travel')}]"
+    thrusts = [x for trace in data for x in trace["x"]]
+    lives = [y for trace in data for y in trace["y"]]
+    x_axis = axis(f"Wear thrust over the cycle [{d.label('force')}]", True, thrusts)
+    return {"data": data, "layout": layout(x_axis, axis(y_title, True, lives))}

@@ -30,9 +30,12 @@ router = APIRouter(include_in_schema=False)
 RUNNERS_UP = 4
 
 
-def report_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
-    """The report of candidate ``id`` (else the top-ranked) for the link's inputs; a 422
-    page for bad inputs, a 404 page for an unknown id."""
+def report_context(
+    params: Mapping[str, str], catalog: Catalog, base_url: str = "/"
+) -> dict[str, Any]:
+    """The report of candidate ``id`` (else the top-ranked) for the link's inputs, its
+    link absolute under ``base_url`` (the address the report was served from, ending in
+    '/'); a 422 page for bad inputs, a 404 page for an unknown id."""
     inputs, units = link_inputs(params, catalog, ("id",))
     result, _ = run_page_selection(inputs, catalog, units)
     top = result.candidates[0].id if result.candidates else ""
@@ -51,7 +54,7 @@ def report_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
         "charting_passed": bool(result.candidates),
         "query": query,
         "share_url": "/?" + query,
-        "report_url": f"/report?{query}&{urlencode({'id': chosen.id})}",
+        "report_link": f"{base_url.rstrip('/')}/report?{query}&{urlencode({'id': chosen.id})}",
         "date": datetime.now(UTC).date().isoformat(),
         "catalog_version": catalog.version,
     }
@@ -60,5 +63,5 @@ def report_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
 @router.api_route("/report", methods=["GET", "HEAD"], response_class=HTMLResponse)
 async def report(request: Request, catalog: CatalogDep) -> Response:
     """The print-ready report of one candidate."""
-    context = report_context(request.query_params, catalog)
+    context = report_context(request.query_params, catalog, str(request.base_url))
     return templates.TemplateResponse(request, "report.html", context)

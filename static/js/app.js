@@ -148,7 +148,15 @@
   }
 
   var PRINT_FONT_SIZE = 8;
-  var SCREEN_LAYOUT = { width: null, height: null, autosize: true, "font.size": 12 };
+  // printed, the plot takes the top margin the screen keeps clear for the toolbar
+  var PRINT_TOP_MARGIN = 18;
+  var SCREEN_LAYOUT = {
+    width: null,
+    height: null,
+    autosize: true,
+    "font.size": 12,
+    "margin.t": 36,
+  };
 
   function eachChart(action) {
     if (!window.Plotly) {
@@ -205,6 +213,7 @@
         width: chart.clientWidth,
         height: chart.clientHeight,
         "font.size": PRINT_FONT_SIZE,
+        "margin.t": PRINT_TOP_MARGIN,
       });
     });
   }

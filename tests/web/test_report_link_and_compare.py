@@ -1,0 +1,65 @@
+"""The filed report carries its absolute link (from the host it was served from) and its
+date; the compare page has the screw's size, lead, nut and speed rows and writes a life
+band as its range, as the results table does."""
+
+from datetime import UTC, datetime
+from urllib.parse import parse_qsl, urlsplit
+
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+AXIS = {"load": "100", "speed": "50", "length": "500"}
+DUTY = {**AXIS, "stroke": "200", "cycles_per_day": "1000"}
+
+
+def test_the_report_link_is_absolute_on_the_host_it_was_served_from(client: TestClient) -> None:
+    for host in ("testserver", "selector.example.org:8443"):
+        response = client.get("/report", params=AXIS, headers={"host": host})
+        page = BeautifulSoup(response.text, "html.parser")
+        cid = page.select_one("#report-heading .cid").text
+        link = page.select_one(".report-date a.report-link")
+        assert link["href"] == link.text
+        parts = urlsplit(link["href"])
+        assert (parts.scheme, parts.netloc, parts.path) == ("http", host, "/report")
+        assert dict(parse_qsl(parts.query)) == {**AXIS, "id": cid}
+        # the link reopens the same report
+        again = BeautifulSoup(client.get(f"/report?{parts.query}").text, "html.parser")
+        assert again.select_one("#report-heading .cid").text == cid
+
+
+def test_the_report_is_dated(client: TestClient) -> None:
+    before = datetime.now(UTC).date().isoformat()
+    page = BeautifulSoup(client.get("/report", params=AXIS).text, "html.parser")
+    date = page.select_one(".report-date time")["datetime"]
+    assert date in {before, datetime.now(UTC).date().isoformat()}
+    assert page.select_one(".report-date time").text == date
+
+
+def test_compare_has_size_lead_nut_and_speed_rows_and_life_ranges(client: TestClient) -> None:
+    """Each row's cells are the API's values for the candidates compared; the life (years
+    of the duty) is its band 'low–high', as the results table writes it."""
+    api = client.get(
+        "/api/v1/select",
+        params={
+            "load_n": "100", "speed_mm_s": "50", "length_mm": "500", "stroke_mm": "200",
+            "cycles_per_day": "1000",
+        },
+    ).json()["candidates"][:3]  # fmt: skip
+    ids = [c["id"] for c in api]
+    page = BeautifulSoup(
+        client.get("/compare", params=[*DUTY.items(), *(("ids", i) for i in ids)]).text,
+        "html.parser",
+    )
+    rows = {
+        tr["data-row"]: [td.contents[0].strip() for td in tr.select("td")]
+        for tr in page.select("table.compare tbody tr")
+    }
+    assert rows["nut_material"] == [c["nut_material"] for c in api]
+    assert [float(v) for v in rows["outer_diameter_mm"]] == [c["outer_diameter_mm"] for c in api]
+    assert [float(v) for v in rows["lead_mm"]] == [c["lead_mm"] for c in api]
+    assert [float(v) for v in rows["rpm"]] == [round(c["rpm"]) for c in api]
+    for cell, c in zip(rows["life.years"], api, strict=True):
+        low, high = (float(v.replace(",", "")) for v in cell.split("–"))
+        assert low == float(f"{c['life']['years'][0]:.3g}")
+        assert high == float(f"{c['life']['years'][1]:.3g}")
+        assert low < high
