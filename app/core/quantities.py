@@ -226,6 +226,16 @@ class Quantities(Generic[V]):
     support_allowed_n: V
     support_mean_load_n: V
     support_life_years: V
+    #: The energy of one cycle [J] (``motion.cycle_energy``; NaN without a move): the
+    #: motor's work at its shaft where it drives, the energy braking gives back, the work
+    #: done on the load, the thread's friction and the nut's drag losses, and a stepper's
+    #: copper loss (NaN without its phase current and resistance).
+    cycle_motor_work_j: V
+    cycle_regen_j: V
+    cycle_load_work_j: V
+    cycle_thread_loss_j: V
+    cycle_drag_loss_j: V
+    cycle_copper_loss_j: V
 
     def at(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i``, each read as a float when it is read:
@@ -683,6 +693,7 @@ def _motor(
     peak_rpm = worst_rpm = rpm
     nan = np.full(len(t), np.nan)
     fitting = nan
+    parts: list[Segment[Array]] = []
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
         index, peak, rms = np.full(len(t), -1.0), nan, nan
@@ -711,6 +722,7 @@ def _motor(
         "motor_worst_rpm": worst_rpm,
         "motor_curve_nm": curve,
         "motor_fitting_accel_m_s2": fitting,
+        **motion.cycle_energy(app, t, parts),
     }
 
 
