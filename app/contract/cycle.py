@@ -126,7 +126,7 @@ def parse_moves_text(value: Any) -> Any:
         value = ";".join(value)
     if not isinstance(value, str):
         return value
-    moves = []
+    moves: list[dict[str, str]] = []
     for text in (t for t in value.split(";") if t.strip()):
         parts = [p.strip() for p in text.split(":")]
         if len(parts) > len(ORDER):
