@@ -472,6 +472,8 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
         # the thrust bearing's static safety factor: THK's lower limit without vibration
         "support_static_safety_factor": 2.0,
         "hold_power_off": True,
+        # the cycle's own moves: none, out and back over the stroke
+        "moves": [],
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
