@@ -15,7 +15,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
-from app.contract.fields import BY_API, InputField
+from app.contract.fields import BY_API, FIELDS, InputField
 from app.core.model import LoadDirection, Move
 
 #: The most moves a cycle may have (every result stays quick).
@@ -40,8 +40,18 @@ def _bounds(api: str) -> tuple[float, float]:
 
 SPEED, ACCEL, DWELL = _bounds("speed_mm_s"), _bounds("accel_mm_s2"), _bounds("dwell_s")
 MASS, LOAD = _bounds("moving_mass_kg"), _bounds("load_n")
+
+
+def _by_core(core: str) -> InputField:
+    """The scalar input of the core attribute ``core``."""
+    return next(f for f in FIELDS if f.core == core)
+
+
 #: The longest move [mm]: the longest screw.
-DISTANCE = _bounds("length_mm")[1]
+DISTANCE = (_by_core("length_m").bounds or (0.0, 0.0))[1]
+#: A cycle ends where it starts to this share of its longest move: the binary rounding
+#: of the typed decimals, nothing more (``closing_error_mm``).
+CLOSING_SHARE = 1e-12
 
 
 class MoveIn(BaseModel):
@@ -92,7 +102,7 @@ class MoveIn(BaseModel):
         accel = self.accel_mm_s2 * _si("accel_mm_s2")
         decel = accel if self.decel_mm_s2 is None else self.decel_mm_s2 * _si("decel_mm_s2")
         return Move(
-            distance_m=self.distance_mm * _si("stroke_mm"),
+            distance_m=self.distance_mm * _by_core("stroke_m").si_factor,
             speed_m_s=self.speed_mm_s * _si("speed_mm_s"),
             accel_m_s2=accel,
             decel_m_s2=decel,
@@ -165,5 +175,14 @@ def span_mm(moves: list[MoveIn]) -> float:
 
 
 def closing_error_mm(moves: list[MoveIn]) -> float:
-    """Where the cycle ends, from its start [mm]: 0 for a cycle that can repeat."""
-    return math.fsum(m.distance_mm for m in moves)
+    """Where the cycle ends, from its start [mm], 0 for a cycle that can repeat (within
+    ``CLOSING_SHARE`` of its longest move: 0 then).
+
+    >>> closing_error_mm([MoveIn(distance_mm=0.1, speed_mm_s=1, accel_mm_s2=1),
+    ...     MoveIn(distance_mm=0.2, speed_mm_s=1, accel_mm_s2=1),
+    ...     MoveIn(distance_mm=-0.3, speed_mm_s=1, accel_mm_s2=1)])
+    0.0
+    """
+    end = math.fsum(m.distance_mm for m in moves)
+    longest = max((abs(m.distance_mm) for m in moves), default=0.0)
+    return 0.0 if abs(end) <= CLOSING_SHARE * longest else end

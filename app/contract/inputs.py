@@ -478,7 +478,7 @@ class ApplicationInputs(BaseModel):
         room = length - float(getattr(self, API_OF["nut_length_m"]) or 0.0)
         closing, span = closing_error_mm(self.moves), span_mm(self.moves)
         message = ""
-        if abs(closing) > 1e-9 * max(span, 1.0):
+        if closing:
             message = f"must end where they start (to repeat): they sum to {closing:.6g} mm"
         elif span > room:
             message = f"span {span:.6g} mm, more than the {room:g} mm the nut can travel"
