@@ -263,11 +263,13 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
 def with_model_values(app: Application, motor: Motor) -> Application:
     """``app`` with the library stepper's drive voltage, rated current and holding
     torque, those its curve is drawn from: what the motor-curve check reads the model's
-    validity range from (``stepper.back_emf_half_supply_rpm``)."""
+    validity range from (``stepper.back_emf_half_supply_rpm``); and its winding
+    resistance, for the copper loss of a cycle (``motion.cycle_energy``)."""
     return replace(
         app,
         motor_supply_v=motor.value("supply_v"),
         motor_phase_current_a=motor.value("phase_current_a"),
+        motor_resistance_ohm=motor.value("resistance_ohm"),
         motor_holding_torque_nm=motor.holding_torque_nm(),
     )
 

@@ -23,6 +23,7 @@ from urllib.parse import urlencode
 
 from pydantic import Field, TypeAdapter, ValidationError
 
+from app.contract.cycle import moves_text
 from app.contract.fields import BY_API, BY_PAGE, FIELDS, InputField
 from app.contract.inputs import (
     ASCII_NUMBER,
@@ -51,6 +52,8 @@ UNIT_CHOICES = {"force_unit": FORCE_UNITS, "length_unit": LENGTH_UNITS, "torque_
 ENTERED_PREFIX = "from_"
 #: prefix of the hidden fields that keep a number as typed, with its unit ('50|N').
 TYPED_PREFIX = "typed_"
+#: The query name of the cycle's moves, on the page as in the API (``app.contract.cycle``).
+MOVES = "moves"
 #: pydantic error type -> (message template, context key of the bound).
 BOUND_MESSAGES = {
     "greater_than": ("Must be more than {bound}.", "gt"),
@@ -198,6 +201,9 @@ def page_to_api(
             errors[field.page] = error
         else:
             data[field.api] = value
+    if params.get(MOVES, "").strip():
+        # the moves in the API's units, as the API's query string carries them
+        data[MOVES] = params[MOVES]
     return data, errors
 
 
@@ -592,6 +598,8 @@ def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS)
         (f.page, link_text(f, _exact_curve(inputs, f) or v, units))
         for f, v in shown_inputs(inputs.model_dump())
     ]
+    if inputs.moves:
+        pairs.append((MOVES, moves_text(inputs.moves)))
     pairs += [(k, v) for k, v in units.items() if v != DEFAULT_UNITS[k]]
     return urlencode(pairs)
 

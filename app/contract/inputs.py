@@ -41,6 +41,7 @@ from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from app.catalog.motors import Motor, check_motor, with_motor
 from app.catalog.supports import SupportUnit, check_support, with_support
+from app.contract.cycle import MAX_MOVES, MoveIn, closing_error_mm, parse_moves_text, span_mm
 from app.contract.fields import BY_API, FIELDS, InputField
 from app.core import motion
 from app.core.model import Application
@@ -365,6 +366,16 @@ class ApplicationInputs(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
+    moves: Annotated[list[MoveIn], BeforeValidator(parse_moves_text)] = Field(
+        default_factory=list,
+        max_length=MAX_MOVES,
+        description="The cycle as its moves, each with its own distance, speed, ramps, "
+        "dwell, mass and load (``app.contract.cycle``); in a query string one text, "
+        "distance:speed:accel:decel:dwell:mass:load:direction in mm, mm/s, mm/s², s, kg "
+        "and N, moves joined by ';'. Empty: out and back over the stroke from the scalar "
+        "inputs. With moves, the stroke (when not given) is the span the nut covers.",
+    )
+
     @field_validator("*")
     @classmethod
     def _needs(cls, value: Any, info: ValidationInfo) -> Any:
@@ -372,7 +383,8 @@ class ApplicationInputs(BaseModel):
 
         Fields validate in table order, so the needed ones are already in ``info.data``.
         """
-        needs = BY_API[str(info.field_name)].needs
+        field = BY_API.get(str(info.field_name))
+        needs = () if field is None else field.needs
         if value is not None and any(info.data.get(name) is None for name in needs):
             raise ValueError("needs " + " and ".join(needs))
         return value
@@ -457,6 +469,27 @@ class ApplicationInputs(BaseModel):
         return value
 
     @model_validator(mode="after")
+    def _moves_fit(self) -> "ApplicationInputs":
+        """A cycle of moves ends where it starts (it repeats), and the nut's span stays on
+        the screw (its length less the nut length given); refused on ``moves``."""
+        if not self.moves:
+            return self
+        length = float(getattr(self, API_OF["length_m"]))
+        room = length - float(getattr(self, API_OF["nut_length_m"]) or 0.0)
+        closing, span = closing_error_mm(self.moves), span_mm(self.moves)
+        message = ""
+        if closing:
+            message = f"must end where they start (to repeat): they sum to {closing:.6g} mm"
+        elif span > room:
+            message = f"span {span:.6g} mm, more than the {room:g} mm the nut can travel"
+        if not message:
+            return self
+        error = InitErrorDetails(
+            type=PydanticCustomError("moves", message), loc=("moves",), input=self.moves
+        )
+        raise ValidationError.from_exception_data(type(self).__name__, [error])
+
+    @model_validator(mode="after")
     def _cycles_fit_a_day(self) -> "ApplicationInputs":
         """The cycles per day fit in a day: at most 86,400 s over the cycle's time (out
         and back with the dwells, ``motion.move_profile``); refused on cycles_per_day."""
@@ -493,7 +526,12 @@ class ApplicationInputs(BaseModel):
     def axis(self) -> Application:
         """The application in SI as given, without a library motor's values filled in:
         for the axis's own numbers (length, speed, a torque limit typed in)."""
-        return Application(**{f.core: f.to_si(getattr(self, f.api)) for f in FIELDS})
+        values = {f.core: f.to_si(getattr(self, f.api)) for f in FIELDS}
+        if self.moves:
+            values["moves"] = tuple(m.to_core() for m in self.moves)
+            if values["stroke_m"] is None:
+                values["stroke_m"] = span_mm(self.moves) * BY_API[API_OF["stroke_m"]].si_factor
+        return Application(**values)
 
 
 if TYPE_CHECKING:

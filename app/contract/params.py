@@ -11,7 +11,7 @@ from collections.abc import Collection, Iterable, Mapping
 from difflib import get_close_matches
 
 from app.contract.fields import BY_API, BY_PAGE
-from app.contract.form import ENTERED_PREFIX, TYPED_PREFIX
+from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX
 from app.contract.units import DEFAULT_UNITS
 
 #: Every name a page with the application form reads, whatever the route.
@@ -21,6 +21,7 @@ PAGE_NAMES = frozenset(
         *DEFAULT_UNITS,
         *(ENTERED_PREFIX + key for key in DEFAULT_UNITS),
         *(TYPED_PREFIX + page for page in BY_PAGE),
+        MOVES,
     ]
 )
 

@@ -35,6 +35,7 @@ from app.core.formulas import (
     buckling,
     critical_speed,
     efficiency,
+    energy,
     geometry,
     life,
     limits,
@@ -513,6 +514,81 @@ REPORTED: tuple[Reported, ...] = (
         better="higher",
         cell="band",
         compare=True,
+    ),
+    *(
+        Reported(
+            key,
+            label,
+            help,
+            quantity="energy",
+            better="lower" if key != "cycle_regen_j" else None,
+            csv=True,
+            compare=True,
+            formula=Formula(function, text, source) if text else Formula(function),
+            source=From("quantities." + key, "energy"),
+        )
+        for key, label, help, function, text, source in (
+            (
+                "cycle_motor_work_j",
+                "Motor work per cycle",
+                "Given a move: the work the motor gives at its shaft in one cycle, summed over "
+                "the segments where it drives (torque times the turns).",
+                energy.shaft_energy,
+                "E = sum max(0, T_i 2 pi x_i / lead) over the segments",
+                "work of a constant torque over the turns",
+            ),
+            (
+                "cycle_regen_j",
+                "Braking energy per cycle",
+                "Given a move: the energy braking gives back to the drive in one cycle, where "
+                "the motor holds back a decelerating mass or a descending load, before the "
+                "drive's own losses (a drive without a regenerative path burns it in a "
+                "resistor).",
+                energy.shaft_energy,
+                "E = sum max(0, -T_i 2 pi x_i / lead) over the segments",
+                "work of a constant torque over the turns",
+            ),
+            (
+                "cycle_load_work_j",
+                "Work on the load per cycle",
+                "Given a move: the work done on the load in one cycle, sum F x over the "
+                "segments: the external loads and the weight raised less the weight lowered "
+                "(the moving mass's kinetic energy cancels over each move).",
+                motion.cycle_energy,
+                "W = sum F_i x_i over the moving segments",
+                "work of a force",
+            ),
+            (
+                "cycle_thread_loss_j",
+                "Thread friction loss per cycle",
+                "Given a move: the energy the thread's friction turns into heat in one cycle, "
+                "F x (1/eta - 1) where the motor drives and |F| x (1 - eta_b) where the load "
+                "does.",
+                energy.thread_loss,
+                "",
+                "",
+            ),
+            (
+                "cycle_drag_loss_j",
+                "Drag loss per cycle",
+                "Given a move: the nut's drag torque times the turns of one cycle (the top of "
+                "the series' drag range).",
+                energy.shaft_energy,
+                "E = T_drag 2 pi sum x_i / lead",
+                "work of a constant torque over the turns",
+            ),
+            (
+                "cycle_copper_loss_j",
+                "Copper loss per cycle",
+                "Given a move and a stepper's phase current and winding resistance: the heat "
+                "of its two windings over the whole cycle, 2 I_rms² R t, the drive holding "
+                "the current at rest too (empty for a servo, whose torque constant is not an "
+                "input).",
+                energy.stepper_copper_loss,
+                "",
+                "",
+            ),
+        )
     ),
     Reported("accuracy.lead_error_mm", formula=Formula(accuracy.cumulative_lead_error)),
     Reported("accuracy.thermal_growth_mm", formula=Formula(accuracy.thermal_growth)),

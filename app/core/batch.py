@@ -98,7 +98,7 @@ class Batch:
         if p is None:
             return [None] * len(self.at)
         hold = np.array(self.column("brake_nm"))
-        parts = motion.segments(self.app, p, self.screening.table.take(self.at), hold)
+        parts = motion.segments(self.app, self.screening.table.take(self.at), hold)
         columns = [(s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist()) for s in parts]
         peak, rms = self.column("motor_peak_nm"), self.column("motor_rms_nm")
         return [

@@ -54,6 +54,25 @@ class Provenance:
 
 
 @dataclass(frozen=True, slots=True)
+class Move:
+    """One move of a cycle, in SI: the signed distance [m] (above 0 up or out, below 0
+    down or back), the top speed [m/s], the acceleration and deceleration [m/s^2] (0:
+    reached at once), the dwell after it [s], the mass it moves [kg], and the external
+    load on it [N] with how it acts (``LoadDirection``: ``auto`` a weight on a vertical
+    axis and against the motion on a horizontal one, ``opposes`` against the motion,
+    ``fixed`` against the up or out move, as a weight, spring or press does)."""
+
+    distance_m: float
+    speed_m_s: float
+    accel_m_s2: float
+    decel_m_s2: float
+    dwell_s: float = 0.0
+    moving_mass_kg: float = 0.0
+    load_n: float = 0.0
+    load_direction: LoadDirection = "auto"
+
+
+@dataclass(frozen=True, slots=True)
 class Application:
     """What the axis must do, in SI. Optional fields switch on optional checks."""
 
@@ -138,6 +157,10 @@ class Application:
     #: The load held at rest must stay held with the power off: by the thread
     #: self-locking with the friction margin, a brake, or a stepper's detent torque.
     hold_power_off: bool = True
+    #: The cycle as its moves, each with its own distance, speed, ramps, dwell, mass and
+    #: load (empty: out and back over the stroke from the scalar inputs above,
+    #: ``motion.cycle``).
+    moves: tuple[Move, ...] = ()
 
     @property
     def lubricated(self) -> bool:

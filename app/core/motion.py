@@ -18,16 +18,18 @@ horizontal one.
 
 import itertools
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
-from app.core.formulas import geometry, life, profile, torque, wear
+from app.core.formulas import energy, geometry, life, profile, torque, wear
 from app.core.formulas.declare import formula
 from app.core.model import (
     STANDARD_GRAVITY_M_S2,
     Application,
     Direction,
+    Move,
     Profile,
     Segment,
     SegmentName,
@@ -50,39 +52,99 @@ def decel(app: Application) -> float:
     return app.accel_m_s2 if app.decel_m_s2 is None else app.decel_m_s2
 
 
-def move_profile(app: Application) -> Profile | None:
-    """The move over the stroke (None without a stroke, or a stroke of 0)."""
-    if not app.stroke_m:
-        return None
-    a, d = app.accel_m_s2, decel(app)
-    v = profile.peak_speed(app.stroke_m, app.speed_m_s, a, d)
+def cycle(app: Application) -> tuple[Move, ...]:
+    """The cycle's moves: the application's own, else out and back over the stroke (0
+    without one) from the scalar inputs, each followed by the dwell.
+
+    >>> [m.distance_m for m in cycle(Application(load_n=1.0, speed_m_s=0.1, length_m=0.5,
+    ...                                          stroke_m=0.2))]
+    [0.2, -0.2]
+    """
+    if app.moves:
+        return app.moves
+    stroke = app.stroke_m or 0.0
+    one = Move(
+        distance_m=stroke,
+        speed_m_s=app.speed_m_s,
+        accel_m_s2=app.accel_m_s2,
+        decel_m_s2=decel(app),
+        dwell_s=app.dwell_s,
+        moving_mass_kg=app.moving_mass_kg,
+        load_n=app.load_n,
+        load_direction=app.load_direction,
+    )
+    return (one, replace(one, distance_m=-stroke))
+
+
+def sense(move: Move) -> float:
+    """The sign of a move's velocity along the axis: +1 up (out), -1 down (back)."""
+    return math.copysign(1.0, move.distance_m)
+
+
+def direction_word(app: Application, move: Move) -> Direction:
+    """A move's direction in words: up or down on a vertical axis, out or back."""
+    pair = directions(app)
+    return pair[0][0] if sense(move) > 0.0 else pair[1][0]
+
+
+def _profile(move: Move, cycle_time_s: float) -> Profile:
+    """One move's trapezoid (or triangle) over its distance; a move of no distance takes
+    no time."""
+    stroke, a, d = abs(move.distance_m), move.accel_m_s2, move.decel_m_s2
+    if stroke == 0.0:
+        return Profile("trapezoid", 0.0, 0.0, 0.0, 0.0, cycle_time_s, 0.0)
+    v = profile.peak_speed(stroke, move.speed_m_s, a, d)
     t_a, t_d = profile.ramp_time(v, a), profile.ramp_time(v, d)
-    t_c = profile.constant_time(app.stroke_m, v, a, d)
-    move = t_a + t_c + t_d
+    t_c = profile.constant_time(stroke, v, a, d)
     return Profile(
-        kind="triangle" if v < app.speed_m_s else "trapezoid",
+        kind="triangle" if v < move.speed_m_s else "trapezoid",
         accel_time_s=t_a,
         constant_time_s=t_c,
         decel_time_s=t_d,
-        move_time_s=move,
-        cycle_time_s=2.0 * (move + app.dwell_s),
+        move_time_s=t_a + t_c + t_d,
+        cycle_time_s=cycle_time_s,
         peak_speed_m_s=v,
     )
 
 
+def profiles(app: Application) -> list[Profile] | None:
+    """Each move's profile, its ``cycle_time_s`` the whole cycle's (every move and every
+    dwell); None without a stroke (or a stroke of 0) and no moves of the user's own."""
+    if not (app.moves or app.stroke_m):
+        return None
+    moves = cycle(app)
+    times = [_profile(m, 0.0).move_time_s for m in moves]
+    total = 0.0
+    for move, move_s in zip(moves, times, strict=True):
+        total += move_s + move.dwell_s
+    return [_profile(m, total) for m in moves]
+
+
+def move_profile(app: Application) -> Profile | None:
+    """The cycle's fastest move (the first of the fastest) with the cycle's time: for
+    out and back over the stroke, the move over the stroke (None without a stroke, or a
+    stroke of 0, and no moves of the user's own)."""
+    every = profiles(app)
+    if every is None:
+        return None
+    return max(every, key=lambda p: p.peak_speed_m_s)
+
+
 def reached_speed(app: Application) -> float:
     """The highest speed the axis reaches [m/s]: the triangle's peak when the stroke is too
-    short to reach the typed speed, else the typed speed (also without a stroke). Every
-    speed-based check judges this speed, not the one typed."""
+    short to reach the typed speed, else the typed speed (also without a stroke); the
+    fastest move's of a cycle of moves. Every speed-based check judges this speed, not the
+    one typed."""
     p = move_profile(app)
     return app.speed_m_s if p is None else p.peak_speed_m_s
 
 
 def speed_note(app: Application) -> Phrase | None:
     """When the move is a triangle: the speed typed, the speed reached, and that the speed
-    checks judge the one reached (None for a trapezoid or without a stroke)."""
+    checks judge the one reached (None for a trapezoid, without a stroke, or for a cycle
+    of moves of the user's own)."""
     p = move_profile(app)
-    if p is None or p.kind != "triangle":
+    if p is None or p.kind != "triangle" or app.moves:
         return None
     return Phrase(
         "The stroke {s} is too short to reach the {typed} typed: the move is a triangle "
@@ -96,21 +158,41 @@ def speed_note(app: Application) -> Phrase | None:
 
 
 def directions(app: Application) -> tuple[tuple[Direction, float], tuple[Direction, float]]:
-    """The two moves of the cycle and the sign of each one's velocity along the axis:
+    """The two directions of motion and the sign of each one's velocity along the axis:
     up (out) along it, down (back) against it."""
     if app.orientation == "vertical":
         return (("up", 1.0), ("down", -1.0))
     return (("out", 1.0), ("back", -1.0))
 
 
-def load_sense(app: Application) -> tuple[float, float]:
-    """How the user's load acts, as (s, o): (1, 0) one way, against the up (out) move, as
-    a weight does; (0, 1) against the motion both ways, as friction does. ``auto``: a
-    weight on a vertical axis, against the motion on a horizontal one."""
-    direction = app.load_direction
+def load_sense(app: Application, move: Move | None = None) -> tuple[float, float]:
+    """How the user's load acts (on ``move``: its own load direction), as (s, o): (1, 0)
+    one way, against the up (out) move, as a weight does; (0, 1) against the motion both
+    ways, as friction does. ``auto``: a weight on a vertical axis, against the motion on a
+    horizontal one."""
+    direction = app.load_direction if move is None else move.load_direction
     if direction == "auto":
         direction = "fixed" if app.orientation == "vertical" else "opposes"
     return (1.0, 0.0) if direction == "fixed" else (0.0, 1.0)
+
+
+def equivalent_stroke(app: Application) -> float | None:
+    """The stroke [m] of an out-and-back cycle that travels as far as the cycle: the
+    stroke itself, or half the travel of the user's moves (what turns a travel into
+    cycles and years)."""
+    if not app.moves:
+        return app.stroke_m
+    return sum(abs(m.distance_m) for m in app.moves) / 2.0
+
+
+def segment_labels(app: Application) -> list[str]:
+    """Each segment of ``segments`` in words ("accelerate up"; "decelerate out, move 3"
+    in a cycle of the user's own moves)."""
+    out = []
+    for k, move in enumerate(cycle(app)):
+        where = f", move {k + 1}" if app.moves else ""
+        out += [f"{name} {direction_word(app, move)}{where}" for name in ORDER]
+    return out
 
 
 def cycles_per_day(app: Application) -> float | None:
@@ -133,13 +215,31 @@ def cycles_per_day(app: Application) -> float | None:
 
 def holds_a_load(app: Application) -> bool:
     """Whether the axis must hold a load at rest: a vertical axis (its moving mass's
-    weight) or a load of fixed direction (a spring or press on a horizontal one)."""
-    return app.orientation == "vertical" or load_sense(app)[0] > 0.0
+    weight) or a load of fixed direction (a spring or press on a horizontal one) on any
+    move."""
+    if app.orientation == "vertical":
+        return True
+    return any(load_sense(app, m)[0] > 0.0 for m in cycle(app))
+
+
+def _rest_load(app: Application, move: Move) -> float:
+    """The load held at rest after ``move`` [N]: its mass's weight on a vertical axis and
+    its load when it acts one way (friction holds nothing)."""
+    weight = move.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
+    return weight + move.load_n * load_sense(app, move)[0]
+
+
+def rest_loads(app: Application) -> list[float]:
+    """The load held in the dwell after each move [N] (``_rest_load``)."""
+    return [_rest_load(app, m) for m in cycle(app)]
 
 
 def steady_load(app: Application) -> float:
     """The load the axis holds at rest [N]: the weight m g of the moving mass on a
-    vertical axis and the user's load when it acts one way (friction holds nothing)."""
+    vertical axis and the user's load when it acts one way (friction holds nothing); the
+    largest after any move of a cycle of the user's own."""
+    if app.moves:
+        return max(rest_loads(app))
     weight = app.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
     return weight + app.load_n * load_sense(app)[0]
 
@@ -148,33 +248,52 @@ def steady_load(app: Application) -> float:
 Form = tuple[float, float]
 
 
+def _move_forms(app: Application, move: Move) -> list[Form]:
+    """The nut force of the accelerate, constant and decelerate segments of ``move`` as
+    forms in the load (``nut_force_forms``); a move of the user's own carries its own
+    load, so its forms do not scale with the application's load (h = 0)."""
+    weight = move.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
+    fixed, opposing = load_sense(app, move)
+    v = sense(move)
+    forms: list[Form] = []
+    for _, sign in RAMPS:
+        rate = move.accel_m_s2 if sign > 0 else move.decel_m_s2
+        g = move.moving_mass_kg * v * sign * rate + weight
+        h = fixed + v * opposing
+        forms.append((g + h * move.load_n, 0.0) if app.moves else (g, h))
+    return forms
+
+
 @formula(
     "F_nut = m x'' + W + F (s_fixed + v o_opposing)",
     "Newton's second law on the moving mass; the load's direction",
 )
 def nut_force_forms(app: Application) -> list[Form]:
     """The force the nut exerts on the moving mass along the axis (up or out positive) in
-    each moving segment of both moves, and at rest, as a linear form in the load F:
-    F_nut = m x'' + W + F (s + v o), with x'' the segment's acceleration along the axis
-    (+a, 0, -d moving up or out; -a, 0, +d moving down or back), W = m g on a vertical
-    axis, v = +1 up or out and -1 down or back, and (s, o) = (1, 0) for a load of fixed
-    direction (a weight, spring or press: against the up or out move) or (0, 1) for one
-    that opposes the motion both ways (friction, cutting) (``load_sense``). At rest
-    F_nut = W + F s.
+    each moving segment of every move of the cycle (``cycle``), and at rest, as a linear
+    form in the load F: F_nut = m x'' + W + F (s + v o), with x'' the segment's
+    acceleration along the axis (+a, 0, -d moving up or out; -a, 0, +d moving down or
+    back), W = m g on a vertical axis, v = +1 up or out and -1 down or back, and
+    (s, o) = (1, 0) for a load of fixed direction (a weight, spring or press: against the
+    up or out move) or (0, 1) for one that opposes the motion both ways (friction,
+    cutting) (``load_sense``). At rest F_nut = W + F s: once for out and back, after each
+    move of a cycle of the user's own (whose forms hold their own loads, h = 0).
 
     >>> app = Application(load_n=10.0, speed_m_s=0.1, length_m=0.5, moving_mass_kg=2.0,
     ...                   accel_m_s2=3.0, decel_m_s2=5.0)
     >>> [g + h * app.load_n for g, h in nut_force_forms(app)]
     [16.0, 10.0, 0.0, -16.0, -10.0, 0.0, 0.0]
     """
+    forms = [f for move in cycle(app) for f in _move_forms(app, move)]
+    if app.moves:
+        return [*forms, *((f, 0.0) for f in rest_loads(app))]
     weight = app.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
-    fixed, opposing = load_sense(app)
-    forms: list[Form] = []
-    for _, v in directions(app):
-        for _, sign in RAMPS:
-            rate = app.accel_m_s2 if sign > 0 else decel(app)
-            forms.append((app.moving_mass_kg * v * sign * rate + weight, fixed + v * opposing))
-    return [*forms, (weight, fixed)]
+    return [*forms, (weight, load_sense(app)[0])]
+
+
+def moving_forms(app: Application) -> list[Form]:
+    """``nut_force_forms`` of the moving segments alone, move after move."""
+    return [f for move in cycle(app) for f in _move_forms(app, move)]
 
 
 def nut_forces(app: Application) -> list[float]:
@@ -212,10 +331,13 @@ def segment_travels(p: Profile | None) -> tuple[float, float, float]:
 
 
 def wear_forms(app: Application) -> tuple[list[Form], list[float]]:
-    """Each moving segment of both moves: the nut's thrust as a form in the load
+    """Each moving segment of every move: the nut's thrust as a form in the load
     (``nut_force_forms``) and the segment's travel [m] (``segment_travels``)."""
-    travels = list(segment_travels(move_profile(app)))
-    return nut_force_forms(app)[:-1], travels * 2
+    every = profiles(app)
+    moves = cycle(app)
+    parts = [None] * len(moves) if every is None else every
+    travels = [x for p in parts for x in segment_travels(p)]
+    return moving_forms(app), travels
 
 
 def wear_thrust(app: Application) -> float:
@@ -223,6 +345,24 @@ def wear_thrust(app: Application) -> float:
     over ``wear_forms``): the load with its direction, the weight and m a on the ramps."""
     forms, travels = wear_forms(app)
     return wear.cycle_wear_thrust([g + h * app.load_n for g, h in forms], travels)
+
+
+def lead_move(app: Application) -> Move:
+    """The move whose start needs the most thrust (its accelerate segment's thrust against
+    the motion; the first move out and back over the stroke): the move the torque
+    breakdown and break-away describe."""
+    moves = cycle(app)
+    if not app.moves:
+        return moves[0]
+    starts = [sense(m) * (g + h * app.load_n) for m in moves for g, h in _move_forms(app, m)[:1]]
+    return moves[starts.index(max(starts))]
+
+
+def running_thrust(app: Application, move: Move) -> float:
+    """The thrust against the motion at the top speed of ``move`` [N] (its constant
+    segment)."""
+    g, h = _move_forms(app, move)[1]
+    return sense(move) * (g + h * app.load_n)
 
 
 def largest_load_for_wear(app: Application, allowed_n: float) -> float | None:
@@ -256,38 +396,42 @@ def largest_load_for_wear(app: Application, allowed_n: float) -> float | None:
 
 
 def _move(
-    app: Application, p: Profile, t: CandidateTable, direction: tuple[Direction, float]
+    app: Application,
+    p: Profile,
+    t: CandidateTable,
+    rows: list[tuple[SegmentName, Direction, float, Array]],
 ) -> list[Segment[Array]]:
-    """The three moving segments of one move, for every candidate."""
+    """The three moving segments of one move (its ``moving_torques`` rows), for every
+    candidate."""
     rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
     times = (p.accel_time_s, p.constant_time_s, p.decel_time_s)
-    move = [m for m in moving_torques(app, t) if m[1] == direction[0]]
     return [
         Segment(
             name=name,
-            direction=direction[0],
+            direction=direction,
             duration_s=duration,
             rpm=rpm,
             thrust_n=np.full(len(t), thrust),
             torque_nm=torque_nm,
         )
-        for (name, _, thrust, torque_nm), duration in zip(move, times, strict=True)
+        for (name, direction, thrust, torque_nm), duration in zip(rows, times, strict=True)
     ]
 
 
 def moving_torques(
     app: Application, t: CandidateTable
 ) -> list[tuple[SegmentName, Direction, float, Array]]:
-    """Each moving segment of both moves, for every candidate: its name and direction,
+    """Each moving segment of every move, for every candidate: its name and direction,
     the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
     through the thread, the nut's drag, and the screw's and the rotor's inertia times the
     angular acceleration (whether the segment has a stroke to last or not)."""
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
-    rates = {"accelerate": app.accel_m_s2, "constant": 0.0, "decelerate": decel(app)}
-    forces = iter(nut_forces(app))
+    forces = iter(g + h * app.load_n for g, h in moving_forms(app))
     out: list[tuple[SegmentName, Direction, float, Array]] = []
-    for name_d, v in directions(app):
+    for move in cycle(app):
+        v, word = sense(move), direction_word(app, move)
+        rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
         for name, sign in RAMPS:
             thrust = v * next(forces)
             thread = profile.thread_torque(
@@ -295,32 +439,42 @@ def moving_torques(
             )
             alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
             spin = torque.inertia_torque(inertia, alpha)
-            out.append((name, name_d, thrust, thread + t.drag_max_nm + spin))
+            out.append((name, word, thrust, thread + t.drag_max_nm + spin))
     return out
 
 
-def _dwell(app: Application, direction: Direction, hold_nm: Array) -> Segment[Array]:
-    """The dwell after a move: at rest, holding the load where there is one to hold."""
-    held = holds_a_load(app)
+def _dwell(
+    app: Application, move: Move, rest_n: float, hold_nm: Array, steady_n: float
+) -> Segment[Array]:
+    """The dwell after ``move``: at rest, holding its load ``rest_n`` where there is one
+    to hold (``hold_nm`` holds ``steady_n``, the largest; the holding torque is linear in
+    the load held)."""
+    held = app.orientation == "vertical" or load_sense(app, move)[0] > 0.0
+    hold = hold_nm if rest_n == steady_n else hold_nm * (rest_n / steady_n)
     return Segment(
         name="dwell",
-        direction=direction,
-        duration_s=app.dwell_s,
+        direction=direction_word(app, move),
+        duration_s=move.dwell_s,
         rpm=np.zeros(len(hold_nm)),
-        thrust_n=np.full(len(hold_nm), steady_load(app)),
-        torque_nm=hold_nm if held else np.zeros(len(hold_nm)),
+        thrust_n=np.full(len(hold_nm), rest_n),
+        torque_nm=hold if held else np.zeros(len(hold_nm)),
     )
 
 
-def segments(
-    app: Application, p: Profile, t: CandidateTable, hold_nm: Array
-) -> list[Segment[Array]]:
-    """Every segment of the cycle, for every candidate of ``t``; ``hold_nm`` is the
-    holding torque of each (0 where the thread self-locks with margin)."""
+def segments(app: Application, t: CandidateTable, hold_nm: Array) -> list[Segment[Array]]:
+    """Every segment of the cycle (a move's accelerate, constant, decelerate and dwell,
+    move after move; ``segment_labels`` names them), for every candidate of ``t``;
+    ``hold_nm`` is the holding torque of each at ``steady_load`` (0 where the thread
+    self-locks with margin). Empty without a profile."""
+    every = profiles(app)
+    if every is None:
+        return []
+    rows = moving_torques(app, t)
+    steady = steady_load(app)
     out: list[Segment[Array]] = []
-    for direction in directions(app):
-        out += _move(app, p, t, direction)
-        out.append(_dwell(app, direction[0], hold_nm))
+    for k, (move, p, rest) in enumerate(zip(cycle(app), every, rest_loads(app), strict=True)):
+        out += _move(app, p, t, rows[3 * k : 3 * k + 3])
+        out.append(_dwell(app, move, rest, hold_nm, steady))
     return out
 
 
@@ -346,3 +500,70 @@ def curve_torque(app: Application, rpm: Array) -> Array:
     speeds = [point[0] for point in app.motor_curve]
     torques = [point[1] for point in app.motor_curve]
     return np.interp(np.minimum(rpm, speeds[-1]), speeds, torques) / curve_margin(app)
+
+
+#: The energy of one cycle, per candidate [J] (``cycle_energy``).
+ENERGY = (
+    "cycle_motor_work_j",
+    "cycle_regen_j",
+    "cycle_load_work_j",
+    "cycle_thread_loss_j",
+    "cycle_drag_loss_j",
+    "cycle_copper_loss_j",
+)
+
+
+def copper_current_rms(app: Application) -> float | None:
+    """A stepper's RMS phase current [A] where its step angle, current and winding
+    resistance are given (the current as typed, or the sine's peak over sqrt 2); None
+    otherwise (a servo's copper loss needs its torque constant, which is not an input)."""
+    current = app.motor_phase_current_a
+    if app.step_angle_deg is None or current is None or app.motor_resistance_ohm is None:
+        return None
+    return current if app.motor_current_rms else current / math.sqrt(2.0)
+
+
+def cycle_energy(
+    app: Application, t: CandidateTable, parts: list[Segment[Array]]
+) -> dict[str, Array]:
+    """The energy of one cycle over ``parts`` (``segments``), per candidate [J]: the
+    motor's work at its shaft where it drives (``energy.shaft_energy`` above 0), the
+    energy braking gives back on decelerate and down segments (its work below 0, before
+    the drive's own losses), the work done on the load (sum F x: its weight and external
+    load; the moving mass's kinetic energy cancels over each move), the thread's friction
+    (``energy.thread_loss``) and the nut's drag, and a stepper's copper loss over the
+    whole cycle (``energy.stepper_copper_loss``, the drive holding its current at rest
+    too: NaN without its current and resistance). NaN without a profile. The balance:
+    motor work - braking = load work + thread loss + drag loss."""
+    nan = np.full(len(t), np.nan)
+    every = profiles(app)
+    if every is None or not parts:
+        return dict.fromkeys(ENERGY, nan)
+    travels = [x for p in every for x in (*segment_travels(p), 0.0)]
+    zero = np.zeros(len(t))
+    motor, regen, load, thread = zero, zero, zero, zero
+    for s, x in zip(parts, travels, strict=True):
+        shaft = energy.shaft_energy(s.torque_nm, x, t.lead_m)
+        motor = motor + np.maximum(shaft, 0.0)
+        regen = regen + np.maximum(-shaft, 0.0)
+        load = load + s.thrust_n * x
+        thread = thread + energy.thread_loss(
+            s.thrust_n, x, t.efficiency, t.backdrive_efficiency_signed
+        )
+    current = copper_current_rms(app)
+    copper = nan
+    if current is not None:
+        joules = energy.stepper_copper_loss(
+            current, app.motor_resistance_ohm or 0.0, every[0].cycle_time_s
+        )
+        copper = np.full(len(t), joules)
+    return {
+        "cycle_motor_work_j": motor,
+        "cycle_regen_j": regen,
+        "cycle_load_work_j": load,
+        "cycle_thread_loss_j": thread,
+        "cycle_drag_loss_j": np.asarray(
+            energy.shaft_energy(t.drag_max_nm, sum(travels), t.lead_m), dtype=np.float64
+        ),
+        "cycle_copper_loss_j": copper,
+    }

@@ -36,6 +36,7 @@ Quantity = Literal[
     "frequency",  # 1/s (step pulses per second)
     "inductance",  # H
     "power",  # W
+    "energy",  # J
     "conductivity",  # W/(m K)
     "wear_rate",  # m^2/N: wear volume per load and sliding distance, m^3/(N m)
 ]

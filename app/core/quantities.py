@@ -43,7 +43,11 @@ REFERENCE_TEMPERATURE_C = 20.0
 @formula("F = load (+ m g when vertical), the running thrust", "statics")
 def axial_load(app: Application) -> float:
     """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical
-    (on the up move, or on the move against a load of fixed direction)."""
+    (on the up move, or on the move against a load of fixed direction); in a cycle of the
+    user's own moves, the top-speed thrust of the move that starts hardest
+    (``motion.lead_move``)."""
+    if app.moves:
+        return motion.running_thrust(app, motion.lead_move(app))
     if app.orientation == "vertical":
         return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
     return app.load_n
@@ -222,6 +226,16 @@ class Quantities(Generic[V]):
     support_allowed_n: V
     support_mean_load_n: V
     support_life_years: V
+    #: The energy of one cycle [J] (``motion.cycle_energy``; NaN without a move): the
+    #: motor's work at its shaft where it drives, the energy braking gives back, the work
+    #: done on the load, the thread's friction and the nut's drag losses, and a stepper's
+    #: copper loss (NaN without its phase current and resistance).
+    cycle_motor_work_j: V
+    cycle_regen_j: V
+    cycle_load_work_j: V
+    cycle_thread_loss_j: V
+    cycle_drag_loss_j: V
+    cycle_copper_loss_j: V
 
     def at(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i``, each read as a float when it is read:
@@ -257,11 +271,14 @@ def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
     moving mass) at the thread's efficiency, plus the nut's drag. Starting from rest the
     thread is at static friction while the load and m a already act. The required torque
     is the larger of break-away and the peak of the moving segments of both moves
-    (``motion.moving_torques``: decelerating a descending load may need more)."""
-    alpha = torque.angular_acceleration(app.accel_m_s2, t.lead_m)
+    (``motion.moving_torques``: decelerating a descending load may need more). The
+    breakdown and break-away are those of the move that starts hardest
+    (``motion.lead_move``: out and back, the scalar inputs)."""
+    move = motion.lead_move(app)
+    alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
-    j_mass = torque.reflected_mass_inertia(app.moving_mass_kg, t.lead_m)
-    inertial_force_n = app.moving_mass_kg * app.accel_m_s2
+    j_mass = torque.reflected_mass_inertia(move.moving_mass_kg, t.lead_m)
+    inertial_force_n = move.moving_mass_kg * move.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
     t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
     t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency)
@@ -467,9 +484,9 @@ def _wear(app: Application, t: CandidateTable, flank_area_m2: Array) -> dict[str
             t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
         )
     travel = _finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
-    cycles = motion.cycles_per_day(app)
-    rated = bool(app.stroke_m and cycles)
-    years = life.life_years(travel, app.stroke_m, cycles) if rated else travel * np.nan
+    cycles, stroke = motion.cycles_per_day(app), motion.equivalent_stroke(app)
+    rated = bool(stroke and cycles)
+    years = life.life_years(travel, stroke, cycles) if rated else travel * np.nan
     return {
         "wear_force_n": np.full(len(t), force_n),
         "wear_travel_m": travel,
@@ -479,9 +496,15 @@ def _wear(app: Application, t: CandidateTable, flank_area_m2: Array) -> dict[str
 
 def _heat(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
     """Friction power at the cycle's mean speed and the nut's steady temperature rise:
-    the screw conducts the heat away both ways as a fin, the nut's surface convects it."""
+    the screw conducts the heat away both ways as a fin, the nut's surface convects it.
+    A cycle of the user's own moves heats at its mean friction power: its travel-weighted
+    mean thrust (``motion.wear_thrust``) at its mean speed, every segment through the
+    forward efficiency (a segment the load drives loses less: the safe side)."""
     p = motion.move_profile(app)
-    mean_speed = app.speed_m_s if p is None else 2.0 * (app.stroke_m or 0.0) / p.cycle_time_s
+    stroke = motion.equivalent_stroke(app) or 0.0
+    mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
+    if app.moves:
+        force_n = motion.wear_thrust(app)
     power = _finite(heat.friction_power(force_n, mean_speed, t.efficiency))
     h = heat.FREE_CONVECTION_W_M2_K
     fin = heat.fin_conductance(t.root_diameter_m, t.thermal_conductivity_w_m_k, h)
@@ -502,7 +525,7 @@ def _duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str
     material at this cycle's wear thrust (``wear_travel_m``, NaN where the nut has no
     wear rate), so a rating never promises more at a high load than the wear law."""
     nan = np.full(len(t), np.nan)
-    stroke, cycles = app.stroke_m, motion.cycles_per_day(app)
+    stroke, cycles = motion.equivalent_stroke(app), motion.cycles_per_day(app)
     rated = bool(stroke and cycles)
     travel = app.stroke_m if app.stroke_m is not None else app.length_m
     low_m = np.where(np.isnan(t.life_min_m), np.nan, np.fmin(t.life_min_m, wear_travel_m))
@@ -519,15 +542,13 @@ def _duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str
 
 
 def travel_thrusts(app: Application) -> tuple[list[float], list[float]]:
-    """The thrust on the nut in each moving segment of both moves [N] and the distance
-    travelled in it [m] (a ramp covers v t / 2, the constant segment v t); none without
-    a stroke."""
-    p = motion.move_profile(app)
-    if p is None:
+    """The thrust on the nut in each moving segment of every move [N] and the distance
+    travelled in it [m] (a ramp covers v t / 2, the constant segment v t,
+    ``motion.wear_forms``); none without a stroke."""
+    if motion.move_profile(app) is None:
         return [], []
-    v = p.peak_speed_m_s
-    one_move = [v * p.accel_time_s / 2.0, v * p.constant_time_s, v * p.decel_time_s / 2.0]
-    return motion.nut_forces(app)[:6], one_move * 2
+    forms, travels = motion.wear_forms(app)
+    return [g + h * app.load_n for g, h in forms], travels
 
 
 def _support(app: Application, t: CandidateTable) -> dict[str, Any]:
@@ -543,10 +564,11 @@ def _support(app: Application, t: CandidateTable) -> dict[str, Any]:
     forces, distances = travel_thrusts(app)
     mean_n = support.mean_axial_load(forces, distances) if forces else math.nan
     years = nan
-    duty = app.stroke_m and app.cycles_per_day
+    stroke = motion.equivalent_stroke(app)
+    duty = stroke and app.cycles_per_day
     if app.support_dynamic_n is not None and duty and mean_n > 0.0:
         revolutions = support.rating_life_revolutions(app.support_dynamic_n, mean_n)
-        years = life.life_years(revolutions * t.lead_m, app.stroke_m, app.cycles_per_day)
+        years = life.life_years(revolutions * t.lead_m, stroke, app.cycles_per_day)
     return {
         "support_allowed_n": allowed,
         "support_mean_load_n": np.full(len(t), mean_n),
@@ -679,12 +701,13 @@ def _motor(
     peak_rpm = worst_rpm = rpm
     nan = np.full(len(t), np.nan)
     fitting = nan
+    parts: list[Segment[Array]] = []
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
         index, peak, rms = np.full(len(t), -1.0), nan, nan
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
-        parts = motion.segments(app, p, t, hold_nm)
+        parts = motion.segments(app, t, hold_nm)
         signed = np.stack([s.torque_nm for s in parts])
         magnitude = np.abs(signed)
         speeds = np.stack([s.rpm for s in parts])
@@ -693,7 +716,7 @@ def _motor(
         columns = np.arange(len(t))
         worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
         peak, rms = magnitude.max(axis=0), motion.rms(parts)
-        if app.motor_curve and app.accel_m_s2 > 0.0:
+        if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = _fitting_accel(app, parts, signed, index, worst_rpm)
     curve = motion.curve_torque(app, worst_rpm) if app.motor_curve else nan
     return {
@@ -707,6 +730,7 @@ def _motor(
         "motor_worst_rpm": worst_rpm,
         "motor_curve_nm": curve,
         "motor_fitting_accel_m_s2": fitting,
+        **motion.cycle_energy(app, t, parts),
     }
 
 

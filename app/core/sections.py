@@ -160,7 +160,7 @@ class Life(Section):
 
     def _years(self, travel_m: float) -> float | None:
         """``travel_m`` in years of the duty (None without one)."""
-        stroke, cycles = self.app.stroke_m, motion.cycles_per_day(self.app)
+        stroke, cycles = motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
         if not (stroke and cycles):
             return None
         return number(life.life_years(travel_m, stroke, cycles))
@@ -183,7 +183,7 @@ class Life(Section):
     @property
     def cycles(self) -> tuple[float, float] | None:
         """Cycles (out and back over the stroke) until the travel is done."""
-        stroke = self.app.stroke_m
+        stroke = motion.equivalent_stroke(self.app)
         if not stroke:
             return None
         low, high = self.travel_m

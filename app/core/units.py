@@ -128,6 +128,7 @@ UNITS: dict[str, Unit] = {
         _unit("Hz", "frequency", 1),
         _unit("H", "inductance", 1),
         _unit("W", "power", 1),
+        _unit("J", "energy", 1),
         _unit("W/(m K)", "conductivity", 1),
         _unit("mH", "inductance", _MM),
         _unit("m³/(N m)", "wear_rate", 1),

@@ -19,7 +19,7 @@ from pydantic import BaseModel
 
 from app.catalog import Catalog, load_catalog
 from app.contract.fields import BY_API, FIELDS
-from app.contract.inputs import describe
+from app.contract.inputs import ApplicationIn, describe
 from app.contract.outputs import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 from app.core.model import ProvenanceKind
 
@@ -349,6 +349,9 @@ def test_get_select_documents_every_query_parameter(api: Api) -> None:
         if parameter["name"] == "detail":
             continue
         text = parameter.get("description") or parameter["schema"].get("description")
+        if parameter["name"] == "moves":  # the cycle's moves: their own model, not a row
+            assert text == ApplicationIn.model_fields["moves"].description
+            continue
         assert text == describe(BY_API[parameter["name"]]), parameter["name"]
 
 
@@ -469,6 +472,8 @@ def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
         # the thrust bearing's static safety factor: THK's lower limit without vibration
         "support_static_safety_factor": 2.0,
         "hold_power_off": True,
+        # the cycle's own moves: none, out and back over the stroke
+        "moves": [],
     }
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)

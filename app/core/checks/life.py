@@ -43,7 +43,8 @@ class Life(Check):
     def applies(self, app: Application) -> bool:
         # without a duty there is nothing to turn the rated travel into years
         cycles = motion.cycles_per_day(app)
-        return bool(app.required_life_years is not None and app.stroke_m and cycles)
+        stroke = motion.equivalent_stroke(app)
+        return bool(app.required_life_years is not None and stroke and cycles)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         unrated = np.isnan(q.life_years_min)
@@ -58,7 +59,7 @@ class Life(Check):
             "Y_req": app.required_life_years,
             "travel_min": t.life_min_m,
             "wear_travel": np.where(np.isnan(q.wear_travel_m), np.inf, q.wear_travel_m),
-            "stroke": app.stroke_m,
+            "stroke": motion.equivalent_stroke(app),
             "cycles": motion.cycles_per_day(app),
         }
 

@@ -53,9 +53,7 @@ def worst_segment(app: Application, r: Quantities[float]) -> str:
     p = motion.move_profile(app)
     if p is None or r.motor_worst_segment < 0:
         return "move at the top speed"
-    names = [(name, d) for d, _ in motion.directions(app) for name in motion.ORDER]
-    name, direction = names[int(r.motor_worst_segment)]
-    return f"{name} {direction}"
+    return motion.segment_labels(app)[int(r.motor_worst_segment)]
 
 
 def accel_that_fits(r: Quantities[float]) -> float | None:

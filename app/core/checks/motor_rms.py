@@ -33,7 +33,7 @@ class MotorRms(Check):
     sources = ("inertia_per_length", "drag_torque", "friction_dynamic")
 
     def applies(self, app: Application) -> bool:
-        return app.motor_rms_torque_nm is not None and app.stroke_m is not None
+        return app.motor_rms_torque_nm is not None and (app.stroke_m is not None or bool(app.moves))
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), q.motor_rms_needed_nm, same(t, app.motor_rms_torque_nm))

@@ -52,7 +52,7 @@ class NutHeat(Check):
 
     def applies(self, app: Application) -> bool:
         # the heat depends on the duty: without a stroke (and its dwells) there is none
-        return bool(app.stroke_m)
+        return bool(app.stroke_m or app.moves)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         room = headroom(app, t)

@@ -1,6 +1,7 @@
 """The thrust bearing's rating life (ISO 281) in years of the duty, against the life
 required."""
 
+from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -40,7 +41,11 @@ class SupportLife(Check):
     source = "ISO 281:2007 basic rating life (ball bearings); THK Ball Screw, average axial load"
 
     def applies(self, app: Application) -> bool:
-        duty = app.stroke_m and app.cycles_per_day and app.required_life_years is not None
+        duty = (
+            motion.equivalent_stroke(app)
+            and app.cycles_per_day
+            and app.required_life_years is not None
+        )
         return bool(duty and app.support_dynamic_n is not None)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -55,7 +60,7 @@ class SupportLife(Check):
             "C_a": app.support_dynamic_n,
             "F_m": q.support_mean_load_n,
             "lead": t.lead_m,
-            "stroke": app.stroke_m,
+            "stroke": motion.equivalent_stroke(app),
             "cycles": app.cycles_per_day,
         }
 

@@ -64,7 +64,8 @@ class WearLife(Check):
 
     def applies(self, app: Application) -> bool:
         cycles = motion.cycles_per_day(app)
-        return bool(app.required_life_years is not None and app.stroke_m and cycles)
+        stroke = motion.equivalent_stroke(app)
+        return bool(app.required_life_years is not None and stroke and cycles)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         required = same(t, app.required_life_years)
@@ -83,13 +84,13 @@ class WearLife(Check):
             "p": q.wear_force_n / np.where(flanks, q.flank_area_m2, q.contact_area_m2),
             "helix": np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m),
             "lead": t.lead_m,
-            "stroke": app.stroke_m,
+            "stroke": motion.equivalent_stroke(app),
             "cycles": motion.cycles_per_day(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         low_m, high_m = (r.wear_travel_m * share for share in life_band(s))
-        cycle_m = 2.0 * (app.stroke_m or 0.0)
+        cycle_m = 2.0 * (motion.equivalent_stroke(app) or 0.0)
         verb = "meets" if passed else "falls short of"
         return Phrase(
             "Nut wear life {travel} of travel at the cycle's wear thrust of {thrust} ({low} "

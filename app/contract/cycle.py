@@ -1,0 +1,188 @@
+"""A cycle of moves at the edge: one move's API model, and the compact text a query
+string and a share link carry.
+
+A move is an object with its units in its names (``distance_mm``: above 0 up or out,
+below 0 down or back; ``speed_mm_s``, ``accel_mm_s2``, ``decel_mm_s2``, ``dwell_s``,
+``moving_mass_kg``, ``load_n``, ``load_direction``), each bounded as the scalar input of
+the same name (``app.contract.fields``). In a query string the list is one ``moves``
+parameter, each move ``distance:speed:accel:decel:dwell:mass:load:direction`` in those
+API units and moves joined by ``;`` (``moves_text`` writes it, ``parse_moves_text``
+reads it, for the API and the page alike).
+"""
+
+import math
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator
+
+from app.contract.fields import BY_API, FIELDS, InputField
+from app.core.model import LoadDirection, Move
+
+#: The most moves a cycle may have (every result stays quick).
+MAX_MOVES = 50
+#: The move's fields in the order the compact text gives them.
+ORDER = (
+    "distance_mm",
+    "speed_mm_s",
+    "accel_mm_s2",
+    "decel_mm_s2",
+    "dwell_s",
+    "moving_mass_kg",
+    "load_n",
+    "load_direction",
+)
+
+
+def _bounds(api: str) -> tuple[float, float]:
+    """The bounds of the scalar input ``api`` (low, high) in its API unit."""
+    return BY_API[api].bounds or (0.0, 0.0)
+
+
+SPEED, ACCEL, DWELL = _bounds("speed_mm_s"), _bounds("accel_mm_s2"), _bounds("dwell_s")
+MASS, LOAD = _bounds("moving_mass_kg"), _bounds("load_n")
+
+
+def _by_core(core: str) -> InputField:
+    """The scalar input of the core attribute ``core``."""
+    return next(f for f in FIELDS if f.core == core)
+
+
+#: The longest move [mm]: the longest screw.
+DISTANCE = (_by_core("length_m").bounds or (0.0, 0.0))[1]
+#: A cycle ends where it starts to this share of its longest move: the binary rounding
+#: of the typed decimals, nothing more (``closing_error_mm``).
+CLOSING_SHARE = 1e-12
+
+
+class MoveIn(BaseModel):
+    """One move of the cycle, in the API's units; the dwell after it."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    distance_mm: float = Field(
+        ge=-DISTANCE,
+        le=DISTANCE,
+        description="Travel of the move [mm]: above 0 up (out), below 0 down (back); not 0.",
+    )
+    speed_mm_s: float = Field(ge=SPEED[0], le=SPEED[1], description="Top speed [mm/s].")
+    accel_mm_s2: float = Field(
+        ge=ACCEL[0], le=ACCEL[1], description="Acceleration [mm/s²]; 0: the speed at once."
+    )
+    decel_mm_s2: float | None = Field(
+        default=None,
+        ge=ACCEL[0],
+        le=ACCEL[1],
+        description="Deceleration [mm/s²]; empty: the acceleration.",
+    )
+    dwell_s: float = Field(
+        default=0.0, ge=DWELL[0], le=DWELL[1], description="Rest after the move [s]."
+    )
+    moving_mass_kg: float = Field(
+        default=0.0, ge=MASS[0], le=MASS[1], description="Mass the move carries [kg]."
+    )
+    load_n: float = Field(
+        default=0.0, ge=LOAD[0], le=LOAD[1], description="External axial load [N]."
+    )
+    load_direction: LoadDirection = Field(
+        default="auto",
+        description="How the load acts, as the scalar load_direction: auto (a weight when "
+        "vertical, against the motion when horizontal), opposes (against the motion), "
+        "fixed (against the up or out move).",
+    )
+
+    @field_validator("distance_mm")
+    @classmethod
+    def _moves(cls, value: float) -> float:
+        if value == 0.0:
+            raise ValueError("must not be 0: a pause is the dwell of the move before it")
+        return value
+
+    def to_core(self) -> Move:
+        """The move in SI."""
+        accel = self.accel_mm_s2 * _si("accel_mm_s2")
+        decel = accel if self.decel_mm_s2 is None else self.decel_mm_s2 * _si("decel_mm_s2")
+        return Move(
+            distance_m=self.distance_mm * _by_core("stroke_m").si_factor,
+            speed_m_s=self.speed_mm_s * _si("speed_mm_s"),
+            accel_m_s2=accel,
+            decel_m_s2=decel,
+            dwell_s=self.dwell_s,
+            moving_mass_kg=self.moving_mass_kg,
+            load_n=self.load_n,
+            load_direction=self.load_direction,
+        )
+
+
+def _si(api: str) -> float:
+    field: InputField = BY_API[api]
+    return field.si_factor
+
+
+def parse_moves_text(value: Any) -> Any:
+    """Moves as the query string gives them (one text, or the texts of a repeated
+    parameter, ``;`` between moves and ``:`` between a move's values in ``ORDER``) as
+    move objects for ``MoveIn`` to validate; anything else as it is (JSON's list of
+    objects). A value left empty takes the field's default.
+
+    >>> parse_moves_text("300:250:2500:2500:0.2:2.5:10:opposes;-300:250:2500:2500")
+    ... # doctest: +NORMALIZE_WHITESPACE
+    [{'distance_mm': '300', 'speed_mm_s': '250', 'accel_mm_s2': '2500',
+      'decel_mm_s2': '2500', 'dwell_s': '0.2', 'moving_mass_kg': '2.5', 'load_n': '10',
+      'load_direction': 'opposes'},
+     {'distance_mm': '-300', 'speed_mm_s': '250', 'accel_mm_s2': '2500',
+      'decel_mm_s2': '2500'}]
+    """
+    if isinstance(value, list) and all(isinstance(v, str) for v in value):
+        value = ";".join(value)
+    if not isinstance(value, str):
+        return value
+    moves: list[dict[str, str]] = []
+    for text in (t for t in value.split(";") if t.strip()):
+        parts = [p.strip() for p in text.split(":")]
+        if len(parts) > len(ORDER):
+            raise ValueError(
+                f"move {len(moves)} has {len(parts)} values; a move has at most "
+                f"{len(ORDER)}: {':'.join(ORDER)}"
+            )
+        moves.append({name: part for name, part in zip(ORDER, parts, strict=False) if part})
+    return moves
+
+
+def _number(value: float) -> str:
+    """A number as its shortest exact text ('300', '0.2', '2.5e-05')."""
+    return repr(value).removesuffix(".0") if math.isfinite(value) else "0"
+
+
+def moves_text(moves: list[MoveIn]) -> str:
+    """The moves as one query value (``parse_moves_text`` reads it back exactly)."""
+    rows = []
+    for move in moves:
+        values = [getattr(move, name) for name in ORDER]
+        rows.append(
+            ":".join("" if v is None else v if isinstance(v, str) else _number(v) for v in values)
+        )
+    return ";".join(rows)
+
+
+def span_mm(moves: list[MoveIn]) -> float:
+    """The nut's travel range over the cycle [mm]: the highest position less the lowest,
+    from the start at 0."""
+    position, low, high = 0.0, 0.0, 0.0
+    for move in moves:
+        position += move.distance_mm
+        low, high = min(low, position), max(high, position)
+    return high - low
+
+
+def closing_error_mm(moves: list[MoveIn]) -> float:
+    """Where the cycle ends, from its start [mm], 0 for a cycle that can repeat (within
+    ``CLOSING_SHARE`` of its longest move: 0 then).
+
+    >>> closing_error_mm([MoveIn(distance_mm=0.1, speed_mm_s=1, accel_mm_s2=1),
+    ...     MoveIn(distance_mm=0.2, speed_mm_s=1, accel_mm_s2=1),
+    ...     MoveIn(distance_mm=-0.3, speed_mm_s=1, accel_mm_s2=1)])
+    0.0
+    """
+    end = math.fsum(m.distance_mm for m in moves)
+    longest = max((abs(m.distance_mm) for m in moves), default=0.0)
+    return 0.0 if abs(end) <= CLOSING_SHARE * longest else end

@@ -1,0 +1,83 @@
+"""A cycle of moves through the API: the moves as JSON and as the query's compact text,
+refused move by move, carried by share links, and their energy per cycle reported."""
+
+from typing import Any
+from urllib.parse import parse_qs, urlsplit
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.contract.cycle import MoveIn, moves_text, parse_moves_text
+from tests.api.calls import API, evaluate
+
+#: A pick-and-place: 2.5 kg out, 0.5 kg back, 300 mm at 250 mm/s, 0.2 s dwells.
+MOVES = [
+    {"distance_mm": 300, "speed_mm_s": 250, "accel_mm_s2": 2500, "decel_mm_s2": 2500,
+     "dwell_s": 0.2, "moving_mass_kg": 2.5, "load_n": 10, "load_direction": "opposes"},
+    {"distance_mm": -300, "speed_mm_s": 250, "accel_mm_s2": 2500, "decel_mm_s2": 2500,
+     "dwell_s": 0.2, "moving_mass_kg": 0.5, "load_n": 10, "load_direction": "opposes"},
+]  # fmt: skip
+TEXT = "300:250:2500:2500:0.2:2.5:10:opposes;-300:250:2500:2500:0.2:0.5:10:opposes"
+AXIS = {"load_n": 10, "speed_mm_s": 250, "length_mm": 500}
+
+
+def test_the_compact_text_reads_back_exactly() -> None:
+    moves = [MoveIn.model_validate(m) for m in MOVES]
+    assert moves_text(moves) == TEXT
+    assert [MoveIn.model_validate(m) for m in parse_moves_text(TEXT)] == moves
+
+
+def test_moves_as_json_and_as_text_give_the_same_candidate(client: TestClient) -> None:
+    as_json = evaluate(client, "B8000-L10", **AXIS, moves=MOVES)
+    as_text = evaluate(client, "B8000-L10", **AXIS, moves=TEXT)
+    assert as_json == as_text
+    assert as_json["torque"]["rms_nm"] > 0.0
+    # the balance the energy rows keep: motor work - braking = load + thread + drag
+    balance = sum(as_json[k] for k in ("cycle_load_work_j", "cycle_thread_loss_j",
+                                       "cycle_drag_loss_j"))  # fmt: skip
+    assert as_json["cycle_motor_work_j"] - as_json["cycle_regen_j"] == pytest.approx(balance)
+
+
+def test_a_library_stepper_reports_its_copper_loss(client: TestClient) -> None:
+    """STEPPERONLINE 17HS19-2004S1 (2.0 A, 1.4 ohm, the library's values) over the 3 s
+    cycle: (2.0 / sqrt 2)^2 x 2 x 1.4 x 3 = 16.8 J; a cycle with no motor has none."""
+    stepper = evaluate(client, "B8000-L10", **AXIS, moves=MOVES, motor="17hs19-2004s1")
+    assert stepper["cycle_copper_loss_j"] == pytest.approx(16.8)
+    assert evaluate(client, "B8000-L10", **AXIS, moves=MOVES)["cycle_copper_loss_j"] is None
+
+
+@pytest.mark.parametrize(
+    ("moves", "field"),
+    [
+        ([MOVES[0], {**MOVES[1], "speed_mm_s": -1}], "moves.1.speed_mm_s"),
+        ([{**MOVES[0], "distance_mm": 0}, MOVES[1]], "moves.0.distance_mm"),
+        ([MOVES[0], {**MOVES[1], "load_direction": "sideways"}], "moves.1.load_direction"),
+        ([MOVES[0], {**MOVES[1], "colour": "red"}], "moves.1.colour"),
+        ([MOVES[0]], "moves"),  # does not return to its start
+        ([{**MOVES[0], "distance_mm": 600}, {**MOVES[1], "distance_mm": -600}], "moves"),
+        ("300:250:2500:2500:0.2:x;-300:250:2500:2500", "moves.0.moving_mass_kg"),
+    ],
+    ids=["speed", "zero-distance", "direction", "unknown", "open", "span", "text"],
+)
+def test_a_bad_move_is_refused_by_its_index_and_field(
+    client: TestClient, moves: Any, field: str
+) -> None:
+    body = {"application": {**AXIS, "moves": moves}, "screw": {"catalog_id": "B8000-L10"}}
+    response = client.post(f"{API}/evaluate", json=body)
+    assert response.status_code == 422, response.text
+    assert "application." + field in [d["field"] for d in response.json()["detail"]]
+
+
+def test_the_share_link_carries_the_moves(client: TestClient) -> None:
+    """The select's share link holds the moves as one text; the page it opens reads them
+    (no unknown parameter), and the API's GET with the same text gives the same result."""
+    posted = client.post(f"{API}/select", json={**AXIS, "moves": MOVES})
+    assert posted.status_code == 200, posted.text
+    share = posted.json()["share_url"]
+    assert parse_qs(urlsplit(share).query)["moves"] == [TEXT]
+    page = client.get(share)
+    assert page.status_code == 200 and "Unknown parameter" not in page.text
+    query = "&".join(f"{k}={v}" for k, v in {**AXIS, "moves": TEXT}.items())
+    got = client.get(f"{API}/select?{query}")
+    assert got.status_code == 200, got.text
+    assert got.json()["candidates"] == posted.json()["candidates"]
