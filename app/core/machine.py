@@ -85,11 +85,18 @@ def _chosen(
     return evaluate(app, index.row(index.positions[choice]), index.table.reach)
 
 
+def carrying(app: Application, carried_kg: float) -> Application:
+    """``app`` with ``carried_kg`` more moving mass: in its scalar move and in each move
+    of its cycle."""
+    moves = tuple(replace(m, moving_mass_kg=m.moving_mass_kg + carried_kg) for m in app.moves)
+    return replace(app, moving_mass_kg=app.moving_mass_kg + carried_kg, moves=moves)
+
+
 def size_axis(
     axis: Axis, carried_kg: float, index: CatalogIndex, ranges: Ranges, words: Words
 ) -> AxisResult:
     """One axis with ``carried_kg`` of upper axes added to its moving mass."""
-    app = replace(axis.app, moving_mass_kg=axis.app.moving_mass_kg + carried_kg)
+    app = carrying(axis.app, carried_kg)
     sel = select(app, index, ranges, words)
     chosen = _chosen(app, index, sel, axis.choice)
     screw_kg = 0.0 if chosen is None else screw_mass(app, chosen)

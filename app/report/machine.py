@@ -29,7 +29,12 @@ def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
 
 
 def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
-    inputs = body.axes[i].inputs.model_copy(update={"moving_mass_kg": r.app.moving_mass_kg})
+    given = body.axes[i].inputs
+    moves = [
+        m.model_copy(update={"moving_mass_kg": m.moving_mass_kg + r.carried_kg})
+        for m in given.moves
+    ]
+    inputs = given.model_copy(update={"moving_mass_kg": r.app.moving_mass_kg, "moves": moves})
     return {
         "name": r.axis.name,
         "carried_kg": r.carried_kg,

@@ -78,3 +78,15 @@ def test_a_bad_machine_is_refused_by_field(client: TestClient) -> None:
     bad["axes"][1]["inputs"] = {**X, "speed_mm_s": -1}
     r = client.post("/api/v1/machine", json=bad)
     assert r.status_code == 422 and "speed_mm_s" in str(r.json()["detail"])
+
+
+def test_an_axis_share_link_carries_its_moves_with_the_mass_above(client: TestClient) -> None:
+    moves = "300:100:1000:1000:0.2:1:0:auto;-300:100:1000:1000:0.2:0.5:0:auto"
+    body = printer()
+    body["axes"][1]["inputs"] = {**X, "moves": moves}
+    r = client.post("/api/v1/machine", json=body)
+    assert r.status_code == 200
+    z, x = r.json()["axes"][:2]
+    page = client.get(x["share_url"])
+    assert page.status_code == 200 and x["chosen"]["id"] in page.text
+    assert f"{1 + z['total_kg']!r}"[:8] in x["share_url"].replace("%3A", ":")

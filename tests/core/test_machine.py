@@ -8,7 +8,7 @@ import pytest
 from app.catalog import Catalog
 from app.core.formulas import geometry
 from app.core.machine import Axis, size_machine
-from app.core.model import STANDARD_GRAVITY_M_S2, Application
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, Move
 from app.core.selection import select
 
 Z = Application(
@@ -103,3 +103,15 @@ def test_screw_mass_of_a_tr16x4_by_hand() -> None:
     assert geometry.screw_mass(7850.0, 0.014, 1.0) == pytest.approx(
         7850.0 * math.pi * 0.014**2 / 4.0, rel=1e-12
     )
+
+
+def test_each_move_of_a_lower_cycle_carries_the_axes_above(catalog: Catalog) -> None:
+    """X as a cycle of moves (1 kg out, 0.5 kg back): each move's mass takes Z's total."""
+    out = Move(0.3, 0.1, 1.0, 1.0, dwell_s=0.2, moving_mass_kg=1.0)
+    back = Move(-0.3, 0.1, 1.0, 1.0, dwell_s=0.2, moving_mass_kg=0.5)
+    x = replace(X, moves=(out, back))
+    z, lower = size_machine([stack()[0], Axis("X", x)], catalog.index, {}, {}).axes
+    assert [m.moving_mass_kg for m in lower.app.moves] == [
+        pytest.approx(1.0 + z.total_kg, rel=1e-12),
+        pytest.approx(0.5 + z.total_kg, rel=1e-12),
+    ]
