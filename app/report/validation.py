@@ -170,8 +170,10 @@ WEIHONG_NOTE = (
     "Through the selection's own cycle (out and back, each move and its 1 s stop). As the "
     "maker does, the table's 10 kg enters as the inertia m (lead / 2π)² at the motor, "
     "outside the screw's efficiency; the app's own model, m a through the thread at 0.9, "
-    "gives about 2 % more RMS and 5 % more peak. The screw's efficiency 0.9 is the maker's, "
-    "given to a square thread by its friction (μ 0.032)."
+    "gives about 2 % more RMS and 5 % more peak. The guide friction is the maker's "
+    "μ W g = 0.1 × 9.8 × 10 N; the screw's efficiency 0.9 is the maker's, given to a "
+    "square thread by its friction (μ 0.032); the screw's inertia a solid 20 mm rod at "
+    "the maker's 7.9 t/m³."
 )
 
 # fmt: off
