@@ -107,7 +107,7 @@ WEIHONG_LEAD_M, WEIHONG_SCREW_D_M, WEIHONG_SCREW_L_M = 0.02, 0.02, 0.5
 WEIHONG_J_COUPLING, WEIHONG_J_MOTOR = 10e-6, 0.14e-4
 
 
-def _weihong_screw() -> ScrewSpec:
+def weihong_screw() -> ScrewSpec:
     """The example's ball screw as a screw of the app's: a square thread on a 20 mm pitch
     diameter, lead 20 mm, whose friction gives the stated efficiency 0.9
     (``efficiency.friction_for_efficiency``), inertia of a solid 20 mm steel rod at the
@@ -149,7 +149,7 @@ def weihong_application(mass_as_inertia: bool = True) -> Application:
 def weihong_cycle(mass_as_inertia: bool = True) -> Quantities[np.ndarray]:
     """The example's operating point, by the selection's own path (``operating_point``:
     ``motion.cycle``, ``motion.segments``, ``motion.rms``)."""
-    table = CandidateTable.build([_weihong_screw()])
+    table = CandidateTable.build([weihong_screw()])
     return operating_point(weihong_application(mass_as_inertia), table)
 
 

@@ -25,13 +25,13 @@ WITHIN = 0.01
 
 def _parts() -> list[motion.Segment[np.ndarray]]:
     app = v.weihong_application()
-    return motion.segments(app, CandidateTable.build([v._weihong_screw()]), np.zeros(1))
+    return motion.segments(app, CandidateTable.build([v.weihong_screw()]), np.zeros(1))
 
 
 def test_the_screw_carries_the_stated_efficiency_and_the_maker_load_inertia() -> None:
     """J_L = J_C + W B_P^2 / (4 pi^2) + W_B B_D^2 / 8 with W_B = pi (0.01)^2 x 7900 x 0.5 =
     1.24 kg: 1e-5 + 1.013e-4 + 0.620e-4 = 1.733e-4 kg m^2, printed 1.73e-4."""
-    table = CandidateTable.build([v._weihong_screw()])
+    table = CandidateTable.build([v.weihong_screw()])
     assert table.efficiency[0] == pytest.approx(0.9, abs=1e-12)
     app = v.weihong_application()
     screw = torque.screw_inertia(table.inertia_kg_m2_per_m[0], app.length_m)
@@ -84,7 +84,7 @@ def test_a_longer_stop_lowers_the_rms_as_the_square_root_of_the_cycle() -> None:
     if the stop were left out of the cycle time."""
     app = v.weihong_application()
     longer = replace(app, moves=tuple(replace(m, dwell_s=3.0) for m in app.moves))
-    table = CandidateTable.build([v._weihong_screw()])
+    table = CandidateTable.build([v.weihong_screw()])
     base = motion.rms(motion.segments(app, table, np.zeros(1)))[0]
     slow = motion.rms(motion.segments(longer, table, np.zeros(1)))[0]
     assert slow == pytest.approx(base / math.sqrt(2.0), rel=1e-12)
