@@ -42,6 +42,23 @@ def forward_efficiency(tan_lead: float, friction: float, cos_half_angle: float) 
     return _positive_part(eta)
 
 
+@formula("mu = (1 - eta) cos a_n / (eta / tan l + tan l)", SHIGLEY + " (Acme form)")
+def friction_for_efficiency(tan_lead: float, efficiency: float, cos_half_angle: float) -> float:
+    """The friction coefficient at which the thread drives at a stated efficiency [-]:
+    ``forward_efficiency`` solved for mu, mu = (1 - eta) cos a_n / (eta / tan l + tan l).
+
+    tan_lead: tan(lambda) [-]; efficiency: eta, 0 < eta < 1 [-]; cos_half_angle:
+    cos(a_n) [-]. For a screw known by its efficiency alone (a ball screw's maker states
+    eta): the friction that gives the thread that efficiency.
+    Source: Shigley [2], eq. 8-4 (Acme form), rearranged.
+
+    >>> tan_l = 1 / math.pi
+    >>> round(forward_efficiency(tan_l, friction_for_efficiency(tan_l, 0.9, 1.0), 1.0), 12)
+    0.9
+    """
+    return (1.0 - efficiency) * cos_half_angle / (efficiency / tan_lead + tan_lead)
+
+
 @formula("eta_b = (cos a_n tan l - mu_s) / (tan l (cos a_n + mu_s tan l)), 0 if negative", SHIGLEY)
 def backdrive_efficiency(tan_lead: float, friction: float, cos_half_angle: float) -> float:
     """Efficiency of the load turning the screw (back-driving) [-].
