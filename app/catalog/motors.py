@@ -51,14 +51,14 @@ PLAIN = frozenset({"name", "frame", "kind"})
 #: Values a stepper's entry may leave out where its datasheet does not publish them.
 OPTIONAL = {"stepper": {"detent_torque_nm": "N m"}, "servo": {}}
 #: Each field's unit as held (SI, or the datasheet's own for angles, currents, voltages
-#: and speeds): what the API and the catalog page show beside the value.
+#: and speeds); the edges show each value in the unit its name carries (``NAMED_UNITS``).
 SI_UNITS = {
     "step_angle_deg": "deg",
     "holding_torque_nm": "N m",
     "phase_current_a": "A",
     "resistance_ohm": "ohm",
     "inductance_mh": "H",
-    "rotor_inertia_g_cm2": "kg m2",
+    "rotor_inertia_g_cm2": "kg m²",
     "supply_v": "V",
     "rated_torque_nm": "N m",
     "peak_torque_nm": "N m",
@@ -66,6 +66,14 @@ SI_UNITS = {
     "max_rpm": "rpm",
     "top_speed_torque_nm": "N m",
     "detent_torque_nm": "N m",
+}
+#: Field -> the unit (a key of the unit table) its name carries and its file is written
+#: in: the API shows the value in it (the fields not listed are held in that unit).
+NAMED_UNITS = {
+    name: unit
+    for units in (*FIELDS.values(), *OPTIONAL.values())
+    for name, unit in units.items()
+    if unit
 }
 #: The motor input that asks for every library motor: the selection runs without a
 #: motor and the screw + motor pairs are ranked (``pair_applications``).

@@ -24,8 +24,9 @@ class MotorOut(BaseModel):
     frame: str
     kind: Literal["stepper", "servo"]
     values: dict[str, SourcedOut] = Field(
-        description="Each datasheet value in SI (angles in deg, speeds in rpm) with its "
-        "provenance; a stepper's curve is drawn by the stepper model, a servo's by the "
+        description="Each datasheet value in the unit its name carries (inductance_mh in "
+        "mH, rotor_inertia_g_cm2 in g cm², torques in N m, angles in deg, speeds in rpm) "
+        "with its provenance; a stepper's curve is drawn by the stepper model, a servo's by the "
         "servo model (GET /api/v1/formulas)"
     )
     curve: list[tuple[float, float]] = Field(

@@ -3,21 +3,29 @@
 from typing import Any
 
 from app.catalog import Catalog
-from app.catalog.motors import Motor, pair_applications
+from app.catalog.models import Sourced
+from app.catalog.motors import NAMED_UNITS, Motor, pair_applications
 from app.contract.inputs import ApplicationIn
 from app.contract.pairs import PAIR_RANKS, MotorOut, MotorsOut, PairRankIn, PairsOut
+from app.contract.units import UNITS, from_si
 from app.core.pairs import Pair, rank_pairs
 
 
-def motor_out(motor: Motor) -> MotorOut:
-    values = {
-        name: {
-            "value": v.value,
-            "unit": v.unit,
-            "provenance": {"kind": v.provenance.kind, "source": v.provenance.source},
-        }
-        for name, v in motor.values.items()
+def named_value(name: str, held: Sourced) -> dict[str, Any]:
+    """A library value as the API shows it: in the unit its name carries (``inductance_mh``
+    in mH, ``rotor_inertia_g_cm2`` in g cm², as the datasheet and the file give it), with
+    its provenance."""
+    unit = NAMED_UNITS.get(name)
+    value = held.value if unit is None else from_si(held.value, unit)
+    return {
+        "value": value,
+        "unit": held.unit if unit is None else UNITS[unit].text,
+        "provenance": {"kind": held.provenance.kind, "source": held.provenance.source},
     }
+
+
+def motor_out(motor: Motor) -> MotorOut:
+    values = {name: named_value(name, v) for name, v in motor.values.items()}
     return MotorOut.model_validate(
         {
             "id": motor.id,
