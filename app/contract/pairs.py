@@ -6,7 +6,7 @@ from typing import Any, Literal
 from pydantic import BaseModel, Field, ValidationInfo, field_validator
 
 from app.contract.inputs import ApplicationIn
-from app.contract.outputs import SourcedOut
+from app.contract.outputs import API_URL, SourcedOut
 
 PairRankIn = Literal["motor_margin", "motor_size", "torque"]
 #: What each pair ranking sorts by, in words (the API's ``ranked_by`` and the page).
@@ -16,6 +16,26 @@ PAIR_RANKS: dict[str, str] = {
     "the share used",
     "torque": "the peak drive torque (lowest first)",
 }
+
+
+#: The application's ``rank_by`` -> the pairs' ranking it means (the motor's margin, the
+#: smallest motor for the smallest screw, the lowest torque); any other ranks the pairs
+#: by the motor's margin. The page and the API rank the pairs by it unless asked otherwise.
+PAIR_RANK_OF: dict[str, PairRankIn] = {
+    "motor_margin": "motor_margin",
+    "size": "motor_size",
+    "torque": "torque",
+}
+DEFAULT_PAIR_RANK: PairRankIn = "motor_margin"
+
+
+def pair_rank_of(inputs: ApplicationIn, asked: PairRankIn | None = None) -> PairRankIn:
+    """The pairs' ranking: the one ``asked`` for, else the one the application's
+    ``rank_by`` means (``PAIR_RANK_OF``), as the page ranks them."""
+    if asked is not None:
+        return asked
+    rank_by = str(inputs.model_dump(include={"rank_by"})["rank_by"])
+    return PAIR_RANK_OF.get(rank_by, DEFAULT_PAIR_RANK)
 
 
 class MotorOut(BaseModel):
@@ -72,14 +92,22 @@ class PairsOut(BaseModel):
     motors: int
     pairs_passed: int
     pairs: list[PairOut]
+    share_url: str = Field(
+        description="The page of the same axis with the motor 'any', which shows the pairs "
+        "(ranked as the application's rank_by means)."
+    )
+    api_url: str = Field(description=API_URL)
 
 
 class PairsQuery(ApplicationIn):
     """The GET pairs' query: the application's fields and the ranking of the pairs."""
 
-    pair_rank: PairRankIn = Field(
-        "motor_margin",
-        description="motor_margin (default): "
+    pair_rank: PairRankIn | None = Field(
+        None,
+        description="By default the ranking the application's rank_by means, as the page "
+        "ranks the pairs ("
+        + ", ".join(f"{k} -> {v}" for k, v in PAIR_RANK_OF.items())
+        + f"; any other -> {DEFAULT_PAIR_RANK}); motor_margin: "
         + PAIR_RANKS["motor_margin"]
         + "; motor_size: "
         + PAIR_RANKS["motor_size"]

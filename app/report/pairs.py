@@ -4,9 +4,18 @@ from typing import Any
 
 from app.catalog import Catalog
 from app.catalog.models import Sourced
-from app.catalog.motors import NAMED_UNITS, Motor, pair_applications
+from app.catalog.motors import ANY_MOTOR, NAMED_UNITS, Motor, pair_applications
+from app.contract.form import share_query
 from app.contract.inputs import ApplicationIn
-from app.contract.pairs import PAIR_RANKS, MotorOut, MotorsOut, PairRankIn, PairsOut
+from app.contract.pairs import (
+    PAIR_RANKS,
+    MotorOut,
+    MotorsOut,
+    PairRankIn,
+    PairsOut,
+    pair_rank_of,
+)
+from app.contract.params import api_url
 from app.contract.units import UNITS, from_si
 from app.core.pairs import Pair, rank_pairs
 
@@ -73,9 +82,11 @@ def _pair_out(pair: Pair, rank: PairRankIn, catalog: Catalog) -> dict[str, Any]:
     }
 
 
-def run_pairs(inputs: ApplicationIn, catalog: Catalog, rank: PairRankIn) -> PairsOut:
+def run_pairs(inputs: ApplicationIn, catalog: Catalog, asked: PairRankIn | None = None) -> PairsOut:
     """Every eligible catalog screw with every library motor for the axis of ``inputs``
-    (any motor given there is set aside), the passing pairs ranked by ``rank``."""
+    (any motor given there is set aside), the passing pairs ranked as ``asked``, else
+    as the application's ``rank_by`` means (``pair_rank_of``: the page's ranking)."""
+    rank = pair_rank_of(inputs, asked)
     alone, motors = pair_applications(inputs.axis(), catalog.motors)
     found = rank_pairs(alone, motors, catalog.index, rank)
     return PairsOut.model_validate(
@@ -89,5 +100,16 @@ def run_pairs(inputs: ApplicationIn, catalog: Catalog, rank: PairRankIn) -> Pair
             "motors": found.motors,
             "pairs_passed": found.pairs_passed,
             "pairs": [_pair_out(p, rank, catalog) for p in found.pairs],
+            **pairs_urls(inputs, asked),
         }
     )
+
+
+def pairs_urls(inputs: ApplicationIn, asked: PairRankIn | None) -> dict[str, str]:
+    """The page of the same axis with the motor "any" (it shows the pairs) and the API's
+    GET of the same pairs (its ``pair_rank`` where one was asked for)."""
+    extra = [] if asked is None else [("pair_rank", asked)]
+    return {
+        "share_url": "/?" + share_query(inputs.model_copy(update={"motor": ANY_MOTOR})),
+        "api_url": api_url("pairs", inputs, extra),
+    }
