@@ -12,32 +12,47 @@ operations that take one (validated and posted by ``tests/api/test_docs_examples
 from collections.abc import Sequence
 from typing import Any
 
+from app.contract.fields import FIELDS
 from app.contract.inputs import ApplicationIn
 from app.contract.params import api_url
 
-Z_AXIS: dict[str, Any] = {
-    "load_n": 0,
-    "moving_mass_kg": 1.0,
-    "orientation": "vertical",
-    "speed_mm_s": 12,
-    "accel_mm_s2": 200,
-    "length_mm": 350,
-    "stroke_mm": 200,
-    "lead_mm": 8,
-    "cycles_per_day": 40,
-    "required_life_years": 5,
-    "hold_power_off": False,
-}
-PICK_AND_PLACE: dict[str, Any] = {
-    "load_n": 0,
-    "moving_mass_kg": 1.5,
-    "speed_mm_s": 300,
-    "length_mm": 500,
-    "accel_mm_s2": 10000,
-    "stroke_mm": 400,
-    "cycles_per_day": 20000,
-    "motor": "17hs19-2004s1",
-}
+#: Each input by the label the form shows it under (the field table's).
+BY_LABEL = {field.label: field for field in FIELDS}
+
+
+def _application(values: dict[str, Any]) -> dict[str, Any]:
+    """An application written by the form's labels, in the API's units (the unit each API
+    name carries), as an API body: each value under its API name."""
+    return {BY_LABEL[label].api: value for label, value in values.items()}
+
+
+Z_AXIS = _application(
+    {
+        "Axial load": 0,  # N: the gantry's weight is its mass's
+        "Moving mass": 1.0,  # kg
+        "Orientation": "vertical",
+        "Linear speed": 12,  # mm/s
+        "Acceleration": 200,  # mm/s²
+        "Screw length": 350,  # mm
+        "Stroke": 200,  # mm
+        "Lead": 8,  # mm
+        "Cycles per day": 40,
+        "Required life": 5,  # years
+        "Must hold with the power off": False,
+    }
+)
+PICK_AND_PLACE = _application(
+    {
+        "Axial load": 0,  # N: no process force, the head's mass alone
+        "Moving mass": 1.5,  # kg
+        "Linear speed": 300,  # mm/s
+        "Screw length": 500,  # mm
+        "Acceleration": 10000,  # mm/s²
+        "Stroke": 400,  # mm
+        "Cycles per day": 20000,
+        "Library motor": "17hs19-2004s1",
+    }
+)
 #: The catalog screw each axis is evaluated on.
 Z_SCREW, PICK_AND_PLACE_SCREW = "Tr8x8(P2)-bronze", "B4000-L25-TFE"
 

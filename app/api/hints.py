@@ -1,5 +1,6 @@
 """The API's route: a name it does not read, where it is a page's (a share link's
-``load`` for ``load_n``) or close to an API name, answered with the name to use.
+``load``, whose API name carries its unit) or close to an API name, answered with the
+name to use.
 
 The input models refuse unknown names (``extra="forbid"``): pydantic's message, "Extra
 inputs are not permitted", says nothing of the name meant. The field table knows both

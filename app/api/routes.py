@@ -17,6 +17,7 @@ from app.api.examples import (
 )
 from app.api.hints import HintedRoute
 from app.api.query import parse_query, query_parameters
+from app.contract.fields import BY_PAGE
 from app.contract.outputs import (
     ChecksOut,
     CompareOut,
@@ -64,9 +65,10 @@ router = APIRouter(prefix="/api/v1", tags=["api"], responses=ERRORS, route_class
 ApplicationBody = Annotated[ApplicationIn, Body(openapi_examples=APPLICATION_EXAMPLES)]
 #: What every GET of an application says of its query.
 QUERY_NAMES = (
-    " The query carries the API's names and units (`load_n`, `speed_mm_s`); a share "
-    "link's page names (`load`, `speed`) are refused, each 422 naming the API's. Every "
-    "response's `api_url` is its query in this form, beside `share_url`, the page's."
+    f" The query carries the API's names and units (`{BY_PAGE['load'].api}`, "
+    f"`{BY_PAGE['speed'].api}`); a share link's page names (`load`, `speed`) are "
+    "refused, each 422 naming the API's. Every response's `api_url` is its query in this "
+    "form, beside `share_url`, the page's."
 )
 
 
@@ -149,9 +151,9 @@ async def select_post(
     detail: DetailQuery = "summary",
 ) -> Response:
     """Rank every catalog candidate for the application in the JSON body: the passing
-    screws, best first by `rank_by`, and the rejected ones with their failed checks and
+    screws, best first by the ranking asked for, and the rejected ones with their failed checks and
     fixes; `detail=full` gives every number, check, formula and provenance. Inputs are
-    in the API's units, the unit in each name (`speed_mm_s`); `share_url` is the page of
+    in the API's units, the unit in each name (a speed in mm/s); `share_url` is the page of
     the same inputs, `api_url` the GET of the same query."""
     return await _selection(request, inputs, catalog, detail)
 
@@ -227,7 +229,7 @@ async def pairs_post(
 ) -> Response:
     """Every catalog screw with every library motor for the axis in the JSON body (its
     own motor set aside): the passing pairs, ranked as the page ranks them (by what the
-    application's `rank_by` means) unless `pair_rank` says otherwise. `share_url` is the
+    application's own ranking means) unless `pair_rank` says otherwise. `share_url` is the
     page of the same axis with the motor "any", `api_url` the GET of the same query."""
     return await computed(_pairs, inputs, catalog, pair_rank)
 

@@ -5,8 +5,10 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, Field, ValidationInfo, field_validator
 
+from app.contract.fields import FIELDS
 from app.contract.inputs import ApplicationIn
 from app.contract.outputs import API_URL, SourcedOut
+from app.core.model import RankBy
 
 PairRankIn = Literal["motor_margin", "motor_size", "torque"]
 #: What each pair ranking sorts by, in words (the API's ``ranked_by`` and the page).
@@ -18,7 +20,7 @@ PAIR_RANKS: dict[str, str] = {
 }
 
 
-#: The application's ``rank_by`` -> the pairs' ranking it means (the motor's margin, the
+#: The application's ranking (``RANK_BY``) -> the pairs' ranking it means (the motor's margin, the
 #: smallest motor for the smallest screw, the lowest torque); any other ranks the pairs
 #: by the motor's margin. The page and the API rank the pairs by it unless asked otherwise.
 PAIR_RANK_OF: dict[str, PairRankIn] = {
@@ -27,15 +29,17 @@ PAIR_RANK_OF: dict[str, PairRankIn] = {
     "torque": "torque",
 }
 DEFAULT_PAIR_RANK: PairRankIn = "motor_margin"
+#: The application's input that ranks the screws (its choices are the core's ``RankBy``).
+RANK_BY = next(field for field in FIELDS if field.options is RankBy)
 
 
 def pair_rank_of(inputs: ApplicationIn, asked: PairRankIn | None = None) -> PairRankIn:
     """The pairs' ranking: the one ``asked`` for, else the one the application's
-    ``rank_by`` means (``PAIR_RANK_OF``), as the page ranks them."""
+    ranking (``RANK_BY``) means (``PAIR_RANK_OF``), as the page ranks them."""
     if asked is not None:
         return asked
-    rank_by = str(inputs.model_dump(include={"rank_by"})["rank_by"])
-    return PAIR_RANK_OF.get(rank_by, DEFAULT_PAIR_RANK)
+    ranked = str(inputs.model_dump(include={RANK_BY.api})[RANK_BY.api])
+    return PAIR_RANK_OF.get(ranked, DEFAULT_PAIR_RANK)
 
 
 class MotorOut(BaseModel):
@@ -94,7 +98,7 @@ class PairsOut(BaseModel):
     pairs: list[PairOut]
     share_url: str = Field(
         description="The page of the same axis with the motor 'any', which shows the pairs "
-        "(ranked as the application's rank_by means)."
+        f"(ranked as the application's {RANK_BY.api} means)."
     )
     api_url: str = Field(description=API_URL)
 
@@ -104,7 +108,7 @@ class PairsQuery(ApplicationIn):
 
     pair_rank: PairRankIn | None = Field(
         None,
-        description="By default the ranking the application's rank_by means, as the page "
+        description=f"By default the ranking the application's {RANK_BY.api} means, as the page "
         "ranks the pairs ("
         + ", ".join(f"{k} -> {v}" for k, v in PAIR_RANK_OF.items())
         + f"; any other -> {DEFAULT_PAIR_RANK}); motor_margin: "

@@ -85,7 +85,7 @@ def _pair_out(pair: Pair, rank: PairRankIn, catalog: Catalog) -> dict[str, Any]:
 def run_pairs(inputs: ApplicationIn, catalog: Catalog, asked: PairRankIn | None = None) -> PairsOut:
     """Every eligible catalog screw with every library motor for the axis of ``inputs``
     (any motor given there is set aside), the passing pairs ranked as ``asked``, else
-    as the application's ``rank_by`` means (``pair_rank_of``: the page's ranking)."""
+    as the application's own ranking means (``pair_rank_of``: the page's ranking)."""
     rank = pair_rank_of(inputs, asked)
     alone, motors = pair_applications(inputs.axis(), catalog.motors)
     found = rank_pairs(alone, motors, catalog.index, rank)

@@ -9,6 +9,8 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.contract.fields import BY_PAGE
+from app.contract.inputs import ApplicationIn
+from app.contract.params import api_query, api_url
 from app.contract.units import DEFAULT_UNITS
 
 #: A vertical axis with a library motor, a list, a choice, a yes-no and a curve-free
@@ -135,3 +137,14 @@ def test_a_custom_screw_has_no_links(client: TestClient) -> None:
     screw |= {"friction_dynamic": 0.15, "friction_static": 0.2}
     body = _ok(client.post("/api/v1/evaluate", json={"application": AXIS, "screw": screw}))
     assert body["api_url"] is None and body["share_url"] is None
+
+
+def test_the_api_query_is_the_share_link_s_under_the_api_s_names() -> None:
+    """Required fields and non-defaults, numbers exact, a list repeated, the motor's id as
+    the library writes it; the route's own names after them, encoded."""
+    inputs = ApplicationIn(load_n=100, speed_mm_s=50, length_mm=500, family="B, TR-C45")
+    assert api_query(inputs) == "load_n=100&speed_mm_s=50&length_mm=500&family=B&family=TR-C45"
+    inputs = ApplicationIn(load_n=0.1, speed_mm_s=5, length_mm=90, motor=" ANY")
+    assert api_url("compare", inputs, [("ids", "a,b")]) == (
+        "/api/v1/compare?load_n=0.1&speed_mm_s=5&length_mm=90&motor=any&ids=a%2Cb"
+    )
