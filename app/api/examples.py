@@ -15,6 +15,7 @@ from typing import Any
 from app.contract.fields import FIELDS
 from app.contract.inputs import ApplicationIn
 from app.contract.params import api_url
+from app.contract.units import si_to_api
 
 #: Each input by the label the form shows it under (the field table's).
 BY_LABEL = {field.label: field for field in FIELDS}
@@ -47,7 +48,7 @@ PICK_AND_PLACE = _application(
         "Moving mass": 1.5,  # kg
         "Linear speed": 300,  # mm/s
         "Screw length": 500,  # mm
-        "Acceleration": 10000,  # mm/s²
+        "Acceleration": si_to_api(10.0, "accel"),  # 10 m/s², in mm/s²
         "Stroke": 400,  # mm
         "Cycles per day": 20000,
         "Library motor": "17hs19-2004s1",
