@@ -51,14 +51,14 @@ PLAIN = frozenset({"name", "frame", "kind"})
 #: Values a stepper's entry may leave out where its datasheet does not publish them.
 OPTIONAL = {"stepper": {"detent_torque_nm": "N m"}, "servo": {}}
 #: Each field's unit as held (SI, or the datasheet's own for angles, currents, voltages
-#: and speeds): what the API and the catalog page show beside the value.
+#: and speeds); the edges show each value in the unit its name carries (``NAMED_UNITS``).
 SI_UNITS = {
     "step_angle_deg": "deg",
     "holding_torque_nm": "N m",
     "phase_current_a": "A",
     "resistance_ohm": "ohm",
     "inductance_mh": "H",
-    "rotor_inertia_g_cm2": "kg m2",
+    "rotor_inertia_g_cm2": "kg m²",
     "supply_v": "V",
     "rated_torque_nm": "N m",
     "peak_torque_nm": "N m",
@@ -66,6 +66,14 @@ SI_UNITS = {
     "max_rpm": "rpm",
     "top_speed_torque_nm": "N m",
     "detent_torque_nm": "N m",
+}
+#: Field -> the unit (a key of the unit table) its name carries and its file is written
+#: in: the API shows the value in it (the fields not listed are held in that unit).
+NAMED_UNITS = {
+    name: unit
+    for units in (*FIELDS.values(), *OPTIONAL.values())
+    for name, unit in units.items()
+    if unit
 }
 #: The motor input that asks for every library motor: the selection runs without a
 #: motor and the screw + motor pairs are ranked (``pair_applications``).
@@ -159,9 +167,22 @@ def _check_servo(entry: Entry, motor: Motor) -> None:
         raise entry.fail("rated_rpm", "must be below max_rpm")
 
 
+def motor_key(text: str) -> str:
+    """A motor id as typed, as the library holds it: without the spaces around it, in
+    lowercase (a datasheet writes 17HS19-2004S1, the library 17hs19-2004s1).
+
+    >>> motor_key(" 17HS19-2004S1 ")
+    '17hs19-2004s1'
+    """
+    return text.strip().lower()
+
+
 def _motor(file: str, motor_id: str, data: Any) -> Motor:
     if not isinstance(data, dict):
         raise CatalogError(file, f"motors.{motor_id}", "-", "must be a table")
+    if motor_key(motor_id) != motor_id:
+        reason = f"a motor id is lowercase ('{motor_key(motor_id)}'): inputs read any case"
+        raise CatalogError(file, f"motors.{motor_id}", "-", reason)
     entry = Entry(file, f"motors.{motor_id}", data)
     kind = data.get("kind", "stepper")
     if kind not in FIELDS:
@@ -307,8 +328,10 @@ def unknown_motor_message(value: str, motors: Mapping[str, Motor]) -> str:
 
 
 def check_motor(value: str | None, motors: Mapping[str, Motor] | None) -> str | None:
-    """A motor id of the library (or none): the 422 names the ids on offer. Without a
-    library to hand (``motors`` None) the id is checked where the catalog is."""
+    """A motor id of the library (or none) in any case, as the library holds it
+    (``motor_key``): the 422 names the ids on offer. Without a library to hand (``motors``
+    None) the id is checked where the catalog is."""
+    value = None if value is None else motor_key(value)
     if value is not None and value != ANY_MOTOR and motors is not None and value not in motors:
         raise ValueError(unknown_motor_message(value, motors))
     return value

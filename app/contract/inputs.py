@@ -409,8 +409,10 @@ class ApplicationInputs(BaseModel):
     @field_validator("motor", check_fields=False)
     @classmethod
     def _known_motor(cls, value: str | None, info: ValidationInfo) -> str | None:
-        """Checked against the library passed as validation context (the page's form);
-        the API's body is checked where the catalog is (``to_core``)."""
+        """Read in any case and without the spaces around it, held as the library writes
+        its ids (``check_motor``), so the API, the page and the share link carry one id;
+        checked against the library passed as validation context (the page's form), the
+        API's body where the catalog is (``to_core``)."""
         motors = (info.context or {}).get("motors") if isinstance(info.context, dict) else None
         return check_motor(BY_API["motor"].to_si(value), motors)
 

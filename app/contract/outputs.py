@@ -21,6 +21,13 @@ from app.contract.schemas import (
     RejectedSummaryOut,
 )
 
+#: What every response's two links are.
+SHARE_URL = "The page of the same inputs (the share link, the page's names)."
+API_URL = (
+    "The API's GET of the same query (the API's names and units): share_url's inputs "
+    "as this API reads them."
+)
+
 
 class CountsOut(BaseModel):
     evaluated: int
@@ -80,7 +87,8 @@ class SelectionBaseOut(BaseModel):
     counts: CountsOut
     summary: SummaryOut
     catalog_version: str
-    share_url: str
+    share_url: str = Field(description=SHARE_URL)
+    api_url: str = Field(description=API_URL)
 
 
 class SelectOut(SelectionBaseOut):
@@ -131,6 +139,28 @@ class SelectQuery(ApplicationIn):
         return ApplicationIn.model_construct(self.model_fields_set - {"detail"}, **values)
 
 
+class EvaluateQuery(ApplicationIn):
+    """The GET evaluate's query: the application's fields and one catalog screw's id."""
+
+    catalog_id: str = Field(
+        pattern=r"^[A-Za-z0-9][A-Za-z0-9 ._()+/-]{0,59}$",
+        description="The catalog screw to evaluate (GET /api/v1/series lists them).",
+    )
+
+    @field_validator("*")
+    @classmethod
+    def _needs(cls, value: Any, info: ValidationInfo) -> Any:
+        """The application's fields as ``ApplicationIn`` checks them; the id as it is."""
+        if info.field_name == "catalog_id":
+            return value
+        return super()._needs(value, info)
+
+    def application(self) -> ApplicationIn:
+        """The application's fields alone, as the body of a POST would give them."""
+        values = {name: getattr(self, name) for name in ApplicationIn.model_fields}
+        return ApplicationIn.model_construct(self.model_fields_set - {"catalog_id"}, **values)
+
+
 #: The compact select's ``detail``.
 SummaryDetail = Literal["summary"]
 #: The default select response (``detail=full`` gives ``SelectOut``): the passing
@@ -145,7 +175,8 @@ SelectSummaryOut = create_model(
     counts=(CountsOut, ...),
     summary=(SummaryOut, ...),
     catalog_version=(str, ...),
-    share_url=(str, ...),
+    share_url=(str, Field(description=SHARE_URL)),
+    api_url=(str, Field(description=API_URL)),
     formulas_url=(
         str,
         Field(description="The formulas table (GET), the same for every query."),
@@ -160,6 +191,7 @@ class CompareOut(BaseModel):
     candidates: list[CandidateOut]
     catalog_version: str
     share_url: str = Field(description="The compare page of the same inputs and ids.")
+    api_url: str = Field(description=API_URL)
 
 
 class EvaluateOut(BaseModel):
@@ -167,6 +199,12 @@ class EvaluateOut(BaseModel):
     candidate: CandidateOut
     catalog_version: str
     formulas: dict[str, FormulaOut]
+    share_url: str | None = Field(
+        description="A catalog screw's report page for the same inputs (none for a custom screw)."
+    )
+    api_url: str | None = Field(
+        description="The API's GET of the same query, a catalog screw's (none for a custom screw)."
+    )
 
 
 class SourcedOut(BaseModel):

@@ -5,8 +5,10 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, Field, ValidationInfo, field_validator
 
+from app.contract.fields import FIELDS
 from app.contract.inputs import ApplicationIn
-from app.contract.outputs import SourcedOut
+from app.contract.outputs import API_URL, SourcedOut
+from app.core.model import RankBy
 
 PairRankIn = Literal["motor_margin", "motor_size", "torque"]
 #: What each pair ranking sorts by, in words (the API's ``ranked_by`` and the page).
@@ -18,14 +20,37 @@ PAIR_RANKS: dict[str, str] = {
 }
 
 
+#: The application's ranking (``RANK_BY``) -> the pairs' ranking it means (the motor's margin, the
+#: smallest motor for the smallest screw, the lowest torque); any other ranks the pairs
+#: by the motor's margin. The page and the API rank the pairs by it unless asked otherwise.
+PAIR_RANK_OF: dict[str, PairRankIn] = {
+    "motor_margin": "motor_margin",
+    "size": "motor_size",
+    "torque": "torque",
+}
+DEFAULT_PAIR_RANK: PairRankIn = "motor_margin"
+#: The application's input that ranks the screws (its choices are the core's ``RankBy``).
+RANK_BY = next(field for field in FIELDS if field.options is RankBy)
+
+
+def pair_rank_of(inputs: ApplicationIn, asked: PairRankIn | None = None) -> PairRankIn:
+    """The pairs' ranking: the one ``asked`` for, else the one the application's
+    ranking (``RANK_BY``) means (``PAIR_RANK_OF``), as the page ranks them."""
+    if asked is not None:
+        return asked
+    ranked = str(inputs.model_dump(include={RANK_BY.api})[RANK_BY.api])
+    return PAIR_RANK_OF.get(ranked, DEFAULT_PAIR_RANK)
+
+
 class MotorOut(BaseModel):
     id: str
     name: str
     frame: str
     kind: Literal["stepper", "servo"]
     values: dict[str, SourcedOut] = Field(
-        description="Each datasheet value in SI (angles in deg, speeds in rpm) with its "
-        "provenance; a stepper's curve is drawn by the stepper model, a servo's by the "
+        description="Each datasheet value in the unit its name carries (inductance_mh in "
+        "mH, rotor_inertia_g_cm2 in g cm², torques in N m, angles in deg, speeds in rpm) "
+        "with its provenance; a stepper's curve is drawn by the stepper model, a servo's by the "
         "servo model (GET /api/v1/formulas)"
     )
     curve: list[tuple[float, float]] = Field(
@@ -71,14 +96,22 @@ class PairsOut(BaseModel):
     motors: int
     pairs_passed: int
     pairs: list[PairOut]
+    share_url: str = Field(
+        description="The page of the same axis with the motor 'any', which shows the pairs "
+        f"(ranked as the application's {RANK_BY.api} means)."
+    )
+    api_url: str = Field(description=API_URL)
 
 
 class PairsQuery(ApplicationIn):
     """The GET pairs' query: the application's fields and the ranking of the pairs."""
 
-    pair_rank: PairRankIn = Field(
-        "motor_margin",
-        description="motor_margin (default): "
+    pair_rank: PairRankIn | None = Field(
+        None,
+        description=f"By default the ranking the application's {RANK_BY.api} means, as the page "
+        "ranks the pairs ("
+        + ", ".join(f"{k} -> {v}" for k, v in PAIR_RANK_OF.items())
+        + f"; any other -> {DEFAULT_PAIR_RANK}); motor_margin: "
         + PAIR_RANKS["motor_margin"]
         + "; motor_size: "
         + PAIR_RANKS["motor_size"]

@@ -5,13 +5,20 @@ give the result without it. The names a page reads come from the tables: every i
 page name (``FIELDS``), the display-unit switches (``DEFAULT_UNITS``), the units the
 form's numbers were typed in (``from_<switch>``) and each field's typed record
 (``typed_<field>``), plus the route's own (``id``, ``ids``).
+
+The API reads the API names alone: given a page's name (a share link's ``load`` for
+its API name, with the unit), its 422 names the API's (``api_hint``); every response
+carries the API query
+of its inputs beside the share link (``api_query``).
 """
 
-from collections.abc import Collection, Iterable, Mapping
+from collections.abc import Collection, Iterable, Mapping, Sequence
 from difflib import get_close_matches
+from urllib.parse import parse_qsl, urlencode
 
 from app.contract.fields import BY_API, BY_PAGE
-from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX
+from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX, share_query
+from app.contract.inputs import ApplicationIn
 from app.contract.units import DEFAULT_UNITS
 
 #: Every name a page with the application form reads, whatever the route.
@@ -58,3 +65,56 @@ def unknown_parameters(params: Mapping[str, str], extra: Collection[str] = ()) -
     own names ``extra`` -> its message (empty when every name is read)."""
     known = PAGE_NAMES | frozenset(extra)
     return {name: unknown_message(name, known) for name in params if name not in known}
+
+
+def api_query(inputs: ApplicationIn) -> str:
+    """The API's query string of ``inputs``: the share link's (required fields and
+    non-defaults, each number exact, in the API's units: the page's default units) under
+    the API's names, a list as the parameter repeated (as the API's query reads it);
+    tested in ``tests/api/test_api_links.py``."""
+    pairs: list[tuple[str, str]] = []
+    for name, value in parse_qsl(share_query(inputs), keep_blank_values=True):
+        if name == MOVES:  # the cycle's text, the same in the API
+            pairs.append((name, value))
+            continue
+        field = BY_PAGE[name]
+        items = value.split(",") if field.kind == "list" else [value]
+        pairs += [(field.api, item) for item in items]
+    return urlencode(pairs)
+
+
+#: Where the API's routes are.
+API_PREFIX = "/api/v1"
+
+
+def api_url(route: str, inputs: ApplicationIn, extra: Sequence[tuple[str, str]] = ()) -> str:
+    """The API's GET of ``route`` for ``inputs`` and the route's own ``extra`` names
+    (``[("ids", "a,b")]``: ``&ids=a%2Cb``)."""
+    tail = f"&{urlencode(extra)}" if extra else ""
+    return f"{API_PREFIX}/{route}?{api_query(inputs)}{tail}"
+
+
+def api_hint(name: str, known: Iterable[str] = BY_API) -> str | None:
+    """What the API says of a name it does not read where it knows better: a page's name
+    of an input (the field table's) and the API's name of it, a page's unit switch, or
+    the API name ``name`` is close to; None for any other.
+
+    >>> api_hint("colour") is None
+    True
+    >>> api_hint("load").startswith("'load' is the page's name (share links): the API's is")
+    True
+    """
+    field = BY_PAGE.get(name)
+    if field is not None and field.api != name:
+        unit = f", in {field.unit}" if field.unit else ""
+        return (
+            f"'{name}' is the page's name (share links): the API's is '{field.api}' "
+            f"({field.label}{unit})"
+        )
+    if name in DEFAULT_UNITS or name.startswith((ENTERED_PREFIX, TYPED_PREFIX)):
+        return (
+            f"'{name[:100]}' is a page's setting: the API reads every number in the unit "
+            "its name carries (the api_url of a response is the API's query)"
+        )
+    close = get_close_matches(name, list(known), n=1, cutoff=0.75)
+    return f"'{name[:100]}' is not an API name: did you mean '{close[0]}'?" if close else None

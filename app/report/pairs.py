@@ -3,21 +3,38 @@
 from typing import Any
 
 from app.catalog import Catalog
-from app.catalog.motors import Motor, pair_applications
+from app.catalog.models import Sourced
+from app.catalog.motors import ANY_MOTOR, NAMED_UNITS, Motor, pair_applications
+from app.contract.form import share_query
 from app.contract.inputs import ApplicationIn
-from app.contract.pairs import PAIR_RANKS, MotorOut, MotorsOut, PairRankIn, PairsOut
+from app.contract.pairs import (
+    PAIR_RANKS,
+    MotorOut,
+    MotorsOut,
+    PairRankIn,
+    PairsOut,
+    pair_rank_of,
+)
+from app.contract.params import api_url
+from app.contract.units import UNITS, from_si
 from app.core.pairs import Pair, rank_pairs
 
 
-def motor_out(motor: Motor) -> MotorOut:
-    values = {
-        name: {
-            "value": v.value,
-            "unit": v.unit,
-            "provenance": {"kind": v.provenance.kind, "source": v.provenance.source},
-        }
-        for name, v in motor.values.items()
+def named_value(name: str, held: Sourced) -> dict[str, Any]:
+    """A library value as the API shows it: in the unit its name carries (``inductance_mh``
+    in mH, ``rotor_inertia_g_cm2`` in g cm², as the datasheet and the file give it), with
+    its provenance."""
+    unit = NAMED_UNITS.get(name)
+    value = held.value if unit is None else from_si(held.value, unit)
+    return {
+        "value": value,
+        "unit": held.unit if unit is None else UNITS[unit].text,
+        "provenance": {"kind": held.provenance.kind, "source": held.provenance.source},
     }
+
+
+def motor_out(motor: Motor) -> MotorOut:
+    values = {name: named_value(name, v) for name, v in motor.values.items()}
     return MotorOut.model_validate(
         {
             "id": motor.id,
@@ -65,9 +82,11 @@ def _pair_out(pair: Pair, rank: PairRankIn, catalog: Catalog) -> dict[str, Any]:
     }
 
 
-def run_pairs(inputs: ApplicationIn, catalog: Catalog, rank: PairRankIn) -> PairsOut:
+def run_pairs(inputs: ApplicationIn, catalog: Catalog, asked: PairRankIn | None = None) -> PairsOut:
     """Every eligible catalog screw with every library motor for the axis of ``inputs``
-    (any motor given there is set aside), the passing pairs ranked by ``rank``."""
+    (any motor given there is set aside), the passing pairs ranked as ``asked``, else
+    as the application's own ranking means (``pair_rank_of``: the page's ranking)."""
+    rank = pair_rank_of(inputs, asked)
     alone, motors = pair_applications(inputs.axis(), catalog.motors)
     found = rank_pairs(alone, motors, catalog.index, rank)
     return PairsOut.model_validate(
@@ -81,5 +100,16 @@ def run_pairs(inputs: ApplicationIn, catalog: Catalog, rank: PairRankIn) -> Pair
             "motors": found.motors,
             "pairs_passed": found.pairs_passed,
             "pairs": [_pair_out(p, rank, catalog) for p in found.pairs],
+            **pairs_urls(inputs, asked),
         }
     )
+
+
+def pairs_urls(inputs: ApplicationIn, asked: PairRankIn | None) -> dict[str, str]:
+    """The page of the same axis with the motor "any" (it shows the pairs) and the API's
+    GET of the same pairs (its ``pair_rank`` where one was asked for)."""
+    extra = [] if asked is None else [("pair_rank", asked)]
+    return {
+        "share_url": "/?" + share_query(inputs.model_copy(update={"motor": ANY_MOTOR})),
+        "api_url": api_url("pairs", inputs, extra),
+    }

@@ -2,12 +2,13 @@
 
 from collections.abc import Container, Mapping, Sequence
 from typing import Any
-from urllib.parse import quote
+from urllib.parse import quote, urlencode
 
 from app.catalog import Catalog
 from app.contract.fields import FIELDS
 from app.contract.form import share_query
 from app.contract.outputs import CompareOut, EvaluateOut, FormulaOut, PageSelectionOut, SelectOut
+from app.contract.params import api_url
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn, CustomScrewIn
 from app.contract.units import DEFAULT_UNITS
@@ -71,6 +72,7 @@ def construct_select_out(
         **selected,
         catalog_version=catalog.version,
         share_url="/?" + share_query(inputs),
+        api_url=api_url("select", inputs, [("detail", "full")]),
         formulas=FORMULAS_OUT,
     )
 
@@ -94,6 +96,7 @@ def run_page_selection(
         **counts_and_summary(selection, units),
         catalog_version=catalog.version,
         share_url="/?" + share_query(inputs),
+        api_url=api_url("select", inputs),
     )
     return out, [candidate_view(c, "rejected", units) for c in selection.rejected]
 
@@ -110,6 +113,7 @@ def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, 
         **selection_summary(selection),
         "catalog_version": catalog.version,
         "share_url": "/?" + share_query(inputs),
+        "api_url": api_url("select", inputs),
         "formulas_url": FORMULAS_URL,
     }
 
@@ -136,12 +140,26 @@ def run_evaluation(
         candidate = evaluate(app, spec)  # a screw of the user's own: any size can be made
         variants, at = build_variants([spec]), 0
     candidate = with_robustness(app, candidate, variants, at)
+    share_url, url = evaluate_urls(inputs, screw, units)
     return EvaluateOut.model_construct(
         inputs=inputs,
         candidate=candidate_view(candidate, "full", units),
         catalog_version=catalog.version,
         formulas=FORMULAS_OUT,
+        share_url=share_url,
+        api_url=url,
     )
+
+
+def evaluate_urls(
+    inputs: ApplicationIn, screw: CatalogScrewIn | CustomScrewIn, units: Mapping[str, str]
+) -> tuple[str | None, str | None]:
+    """A catalog screw's report page and the API's GET of the same evaluation; none for
+    a custom screw (its geometry has no query form in the API)."""
+    if not isinstance(screw, CatalogScrewIn):
+        return None, None
+    report = f"/report?{share_query(inputs, units)}&{urlencode([('id', screw.catalog_id)])}"
+    return report, api_url("evaluate", inputs, [("catalog_id", screw.catalog_id)])
 
 
 #: How many candidates a compare takes.
@@ -188,4 +206,5 @@ def run_compare(
         ],
         catalog_version=catalog.version,
         share_url=compare_url(inputs, ids, units),
+        api_url=api_url("compare", inputs, [("ids", ",".join(ids))]),
     )

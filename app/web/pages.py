@@ -23,7 +23,6 @@ from app.contract.form import (
     summary_rows,
 )
 from app.contract.inputs import SUPPORT
-from app.contract.pairs import PairRankIn
 from app.contract.params import unknown_parameters
 from app.contract.reported import columns, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
@@ -162,16 +161,7 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     if not result.candidates:
         context["advice"] = no_pass_advice(result, units)
     if inputs.model_dump()["motor"] == ANY_MOTOR:
-        context["pairs"] = run_pairs(inputs, catalog, PAIR_RANK.get(rank_by, "motor_margin"))
-
-
-#: The page's ranking -> the pairs' ranking: the motor's margin, the smallest motor for the
-#: smallest screw, the lowest torque; any other ranking ranks the pairs by the margin.
-PAIR_RANK: dict[str, PairRankIn] = {
-    "motor_margin": "motor_margin",
-    "size": "motor_size",
-    "torque": "torque",
-}
+        context["pairs"] = run_pairs(inputs, catalog)
 
 
 def rejected_groups(rejected: list[CandidateOut]) -> list[dict[str, Any]]:

@@ -105,8 +105,9 @@ def test_the_library_lists_every_value_with_provenance(client: TestClient) -> No
     motors = client.get("/api/v1/motors").json()["motors"]
     servo = next(m for m in motors if m["id"] == "pittman-14204s004")
     assert servo["kind"] == "servo" and servo["continuous_torque_nm"] == pytest.approx(0.18)
-    assert servo["values"]["rotor_inertia_g_cm2"]["value"] == pytest.approx(2.6e-5)
-    assert servo["values"]["rotor_inertia_g_cm2"]["unit"] == "kg m2"
+    # Ametek Pittman 14204S004 data sheet: 2.6E-05 kg m2 = 260 g cm2 (1 g cm2 = 1e-7 kg m2)
+    assert servo["values"]["rotor_inertia_g_cm2"]["value"] == pytest.approx(260.0)
+    assert servo["values"]["rotor_inertia_g_cm2"]["unit"] == "g cm²"
     assert servo["curve"] == [[0.0, 1.4], [3226.0, 0.18]]
     for motor in motors:
         for value in motor["values"].values():

@@ -19,6 +19,7 @@ FULL_FIELDS = {
     "summary",
     "catalog_version",
     "share_url",
+    "api_url",
     "formulas",
 }
 
