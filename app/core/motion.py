@@ -285,17 +285,21 @@ def moving_torques(
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
     rates = {"accelerate": app.accel_m_s2, "constant": 0.0, "decelerate": decel(app)}
+    spins = {
+        name: torque.inertia_torque(
+            inertia, torque.angular_acceleration(sign * rates[name], t.lead_m)
+        )
+        for name, sign in RAMPS
+    }
     forces = iter(nut_forces(app))
     out: list[tuple[SegmentName, Direction, float, Array]] = []
     for name_d, v in directions(app):
-        for name, sign in RAMPS:
+        for name, _ in RAMPS:
             thrust = v * next(forces)
             thread = profile.thread_torque(
                 thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
             )
-            alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
-            spin = torque.inertia_torque(inertia, alpha)
-            out.append((name, name_d, thrust, thread + t.drag_max_nm + spin))
+            out.append((name, name_d, thrust, thread + t.drag_max_nm + spins[name]))
     return out
 
 
