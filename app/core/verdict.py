@@ -11,6 +11,7 @@ are named in words (``value_label``); the sentences are ``Phrase``s, rendered at
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Protocol
 
 from app.core import motion
@@ -69,6 +70,7 @@ VARIANT_ENDINGS = ("_uncoated", "_tfe", "_bronze", "_acetal", "_ptfe")
 UNCERTAIN = ("assumed",)
 
 
+@lru_cache(maxsize=1024)  # a pure function of the key, read for every verdict
 def value_label(key: str) -> str:
     """A catalog key in words: its variant and unit endings dropped, then named.
 
