@@ -169,9 +169,22 @@ SelectSummaryOut = create_model(
     "SelectSummaryOut",
     __doc__="The default select response; ``detail=full`` gives ``SelectOut``.",
     detail=(SummaryDetail, ...),
-    inputs=(ApplicationIn, ...),
+    inputs=(
+        dict[str, Any],
+        Field(
+            description="The inputs (ApplicationIn's fields) that differ from their "
+            "defaults; every other input is at its default (the full form echoes them all)."
+        ),
+    ),
     candidates=(cast(Any, GenericAlias(list, (CandidateSummaryOut,))), ...),
     rejected=(cast(Any, GenericAlias(list, (RejectedSummaryOut,))), ...),
+    labels=(
+        dict[str, str],
+        Field(
+            description="Catalog key -> the value in words, once for every key a "
+            "candidate's verdict rests on (``verdict.rests_on``)."
+        ),
+    ),
     counts=(CountsOut, ...),
     summary=(SummaryOut, ...),
     catalog_version=(str, ...),

@@ -431,9 +431,15 @@ def whole(*groups: str) -> dict[str, Any]:
 
 #: What names a candidate, and its verdict: in the row and the summary alike.
 NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
-VERDICT = (
-    "utilization governing_check governing_limit_provenance passed robust hinges_on warned verdict"
-)
+RANKED = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
+VERDICT = RANKED + " verdict"
+#: The verdict in the compact select, without what the candidate already gives or the
+#: response names once: the governing check and its utilisation are the candidate's
+#: ``governing_check`` and ``utilization``, the margin is 1 - that utilisation, the
+#: check's label is at /api/v1/checks, a catalog value's label is in the response's
+#: ``labels``, whether the pass hinges on a value is whether ``hinges_on`` names it, and
+#: the sentence is these in words.
+COMPACT_VERDICT = {"verdict": {"rests_on": {"field": True, "kind": True}, "watch": True}}
 if TYPE_CHECKING:  # mypy cannot see fields made at run time (see app.contract.inputs)
     CandidateOut = CandidateFields
 else:
@@ -458,8 +464,8 @@ VIEWS: dict[str, View] = {
         ),
         view_of("row"),
     ),
-    "summary": merged(whole(NAMED, VERDICT), view_of("summary")),
-    "rejected": merged(whole("id governing_check failed fix"), view_of("rejected")),
+    "summary": merged(whole(NAMED, RANKED), COMPACT_VERDICT, view_of("summary")),
+    "rejected": merged(whole("id governing_check failed"), view_of("rejected")),
     "csv": view_of("csv"),
     "full": whole(*CandidateOut.model_fields),
 }

@@ -88,27 +88,29 @@ def eligible_mask(app: Application, table: CandidateTable) -> Mask:
     return mask
 
 
-def _failed(m: Measure, utilization: Array | None) -> Mask:
-    """Where a check applies and fails: over its limit, or a yes/no failure."""
-    if utilization is None:
-        failed = np.zeros(len(m.applicable), dtype=bool)
-    else:
-        failed = utilization > PASS_UTILIZATION
-    if m.flagged is not None:
-        failed |= m.flagged
-    return m.applicable & failed
-
-
-def _worst(
-    measures: dict[str, Measure], utilization: dict[str, Array | None], n_failed: Array
-) -> Array:
-    """Worst utilisation of the rejecting checks per candidate; a failed yes/no check ranks
-    behind every numeric near-miss (1 + the number of failed checks)."""
-    worst = np.zeros(len(n_failed))
-    for name, u in utilization.items():
-        if u is not None:
-            worst = np.fmax(worst, np.where(measures[name].applicable, u, np.nan))
-    return np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)
+def _judge(
+    measures: list[Measure], n: int
+) -> tuple[list[bool], NDArray[np.bool_], NDArray[np.float64], NDArray[np.bool_]]:
+    """Every check's measure over ``n`` candidates as rows of one array each, judged
+    with one division and one comparison for all checks: whether each check is numeric,
+    where it applies, its utilisation demand / capacity (NaN where the limit does not
+    exist, and for a yes/no check) and where it fails (applies, and over its limit or
+    flagged)."""
+    numeric = [m.demand is not None and m.capacity is not None for m in measures]
+    demand = np.full((len(measures), n), np.nan)
+    capacity = np.full((len(measures), n), np.nan)
+    applicable = np.empty((len(measures), n), dtype=bool)
+    flagged = np.zeros((len(measures), n), dtype=bool)
+    for i, m in enumerate(measures):
+        applicable[i] = m.applicable
+        if numeric[i]:
+            demand[i], capacity[i] = m.demand, m.capacity
+        if m.flagged is not None:
+            flagged[i] = m.flagged
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = demand / capacity
+    failed = applicable & ((ratio > PASS_UTILIZATION) | flagged)
+    return numeric, applicable, ratio, failed
 
 
 def _rejects(app: Application, name: str) -> bool:
@@ -127,26 +129,24 @@ def screen_table(
     index = np.arange(len(table)) if index is None else index
     q = operating_point(app, table)
     measures = {c.name: c.measure(app, table, q) for c in REGISTRY if c.applies(app)}
-    with np.errstate(invalid="ignore", divide="ignore"):
-        utilization = {name: m.utilization() for name, m in measures.items()}
-    failed = {name: _failed(m, utilization[name]) for name, m in measures.items()}
-    rejecting = {name: mask for name, mask in failed.items() if _rejects(app, name)}
-    n_failed = np.zeros(len(table))
-    for mask in rejecting.values():
-        n_failed += mask
-    warned = np.zeros(len(table), dtype=bool)
-    for name, mask in failed.items():
-        if name not in rejecting:
-            warned |= mask
-    worst = _worst(measures, {k: utilization[k] for k in rejecting}, n_failed)
+    names = list(measures)
+    numeric, applicable, ratio, failed = _judge(list(measures.values()), len(table))
+    utilization = {name: ratio[i] if numeric[i] else None for i, name in enumerate(names)}
+    rows = [i for i, name in enumerate(names) if _rejects(app, name)]
+    others = [i for i in range(len(names)) if i not in rows]
+    n_failed = failed[rows].sum(axis=0, dtype=np.float64)
+    warned = failed[others].any(axis=0)
+    # a check that does not apply, or a yes/no check (NaN), leaves the worst as it is
+    worst = np.fmax.reduce(np.where(applicable[rows], ratio[rows], np.nan), axis=0, initial=0.0)
+    worst = np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)
     return Screening(
         index,
         table,
         q,
         measures,
         utilization,
-        failed,
-        rejecting,
+        {name: failed[i] for i, name in enumerate(names)},
+        {names[i]: failed[i] for i in rows},
         n_failed == 0,
         worst,
         n_failed,

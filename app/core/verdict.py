@@ -11,6 +11,7 @@ are named in words (``value_label``); the sentences are ``Phrase``s, rendered at
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import cached_property, lru_cache
 from typing import Protocol
 
 from app.core import motion
@@ -69,6 +70,7 @@ VARIANT_ENDINGS = ("_uncoated", "_tfe", "_bronze", "_acetal", "_ptfe")
 UNCERTAIN = ("assumed",)
 
 
+@lru_cache(maxsize=1024)  # a pure function of the key, read for every verdict
 def value_label(key: str) -> str:
     """A catalog key in words: its variant and unit endings dropped, then named.
 
@@ -117,11 +119,12 @@ class Rest:
     hinges: bool
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)
 class Verdict:
     """A candidate's verdict: the governing check (name, label, utilisation, margin =
     1 - utilisation: the share of the limit left), what it rests on, what to watch, and
-    all of it as one or two sentences (``text``)."""
+    all of it as one or two sentences (``text``, put in words when first read: the
+    compact select gives the parts alone)."""
 
     governs: str | None
     governs_label: str
@@ -129,7 +132,13 @@ class Verdict:
     margin: float | None
     rests_on: tuple[Rest, ...]
     watch: tuple[Phrase, ...]
-    text: Phrase
+    #: whether the candidate passes, and its governing check (the sentence's words)
+    passed: bool
+    governing: CheckResult | None
+
+    @cached_property
+    def text(self) -> Phrase:
+        return sentence(self.governing, self.passed, self.rests_on, self.watch)
 
 
 class Record(Protocol):
@@ -239,5 +248,6 @@ def verdict(c: Record) -> Verdict:
         margin=None if u is None else 1.0 - u,
         rests_on=rest,
         watch=watch,
-        text=sentence(g, bool(c.passed), rest, watch),
+        passed=bool(c.passed),
+        governing=g,
     )

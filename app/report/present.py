@@ -48,10 +48,12 @@ def candidate_json(
 
 def selection_summary(sel: Selection) -> dict[str, Any]:
     """Candidates, rejected, counts and summary in the compact form (``SelectSummaryOut``):
-    the passing candidates in the ``summary`` view, the rejected in the ``rejected`` one."""
+    the passing candidates in the ``summary`` view, the rejected in the ``rejected`` one,
+    and the words of each catalog value their verdicts rest on, once."""
     return {
         "candidates": [candidate_json(c, "summary") for c in sel.candidates],
         "rejected": [candidate_json(c, "rejected") for c in sel.rejected],
+        "labels": {r.field: r.label for c in sel.candidates for r in c.verdict.rests_on},
         **counts_and_summary(sel, DEFAULT_UNITS),
     }
 

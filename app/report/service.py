@@ -109,7 +109,7 @@ def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, 
     )
     return {
         "detail": "summary",
-        "inputs": inputs,
+        "inputs": inputs.model_dump(mode="json", exclude_defaults=True),
         **selection_summary(selection),
         "catalog_version": catalog.version,
         "share_url": "/?" + share_query(inputs),

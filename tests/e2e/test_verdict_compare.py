@@ -27,7 +27,7 @@ def test_each_row_reads_its_verdict(
     page.goto(f"{live_server}/?{AXIS}")
     lines = page.locator("table.candidates p.verdict-line")
     lines.first.wait_for()
-    expected = api(live_server, "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=300")
+    expected = api(live_server, "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=300&detail=full")
     texts = [c["verdict"]["text"] for c in expected["candidates"]]
     assert lines.all_inner_texts() == texts
     assert all(t.startswith("Governed by ") for t in texts)

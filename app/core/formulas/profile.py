@@ -106,6 +106,10 @@ def thread_torque(
     >>> round(thread_torque(-100.0, 0.002 * math.pi, 0.5, 0.4), 6)
     -0.04
     """
+    if isinstance(thrust_n, float | int):  # one thrust for every candidate: one branch
+        if thrust_n >= 0.0:
+            return thrust_n * lead_m / (2.0 * math.pi * efficiency)
+        return thrust_n * lead_m * backdrive_efficiency / (2.0 * math.pi)
     driving = thrust_n * lead_m / (2.0 * math.pi * efficiency)
     driven = thrust_n * lead_m * backdrive_efficiency / (2.0 * math.pi)
     return driving * (thrust_n >= 0.0) + driven * (thrust_n < 0.0)
