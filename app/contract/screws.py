@@ -62,7 +62,7 @@ class CustomScrewIn(BaseModel):
     friction_static: Annotated[
         float, bounded_number(1e-3, 1.0, "Static friction coefficient."), NotBool
     ]
-    material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
+    material: Literal["steel", "stainless-303", "c45-steel", "stainless-304"] | MaterialIn = "steel"
     drag_torque_nm: Annotated[
         float, bounded_number(0.0, 1e4, "Nut drag torque [N m]."), NotBool
     ] = 0.0
@@ -79,6 +79,29 @@ class CustomScrewIn(BaseModel):
     pv_limit_mpa_m_s: (
         Annotated[float, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s]."), NotBool] | None
     ) = None
+    pitch_mm: (
+        Annotated[
+            float,
+            bounded_number(0.01, 1000.0, "Thread pitch [mm]: the lead over the starts."),
+            NotBool,
+        ]
+        | None
+    ) = None
+    nut_length_mm: (
+        Annotated[
+            float,
+            bounded_number(0.1, 10000.0, "Nut length [mm]: the engaged thread length."),
+            NotBool,
+        ]
+        | None
+    ) = None
+    nut_material: str | None = Field(
+        default=None,
+        max_length=40,
+        description="A catalog nut material (GET /api/v1/nut-materials: 'bronze', "
+        "'acetal', 'ptfe'): its limits rate the nut; a nut rated by contact pressure needs "
+        "pitch_mm and nut_length_mm.",
+    )
 
     @field_validator("root_diameter_mm")
     @classmethod
@@ -86,6 +109,17 @@ class CustomScrewIn(BaseModel):
         outer = info.data.get("outer_diameter_mm")
         if outer is not None and value >= outer:
             raise ValueError("must be smaller than outer_diameter_mm")
+        return value
+
+    @field_validator("pitch_mm")
+    @classmethod
+    def _pitch_divides_lead(cls, value: float | None, info: ValidationInfo) -> float | None:
+        lead = info.data.get("lead_mm")
+        if value is None or lead is None:
+            return value
+        starts = round(lead / value)
+        if starts < 1 or not math.isclose(lead, starts * value, rel_tol=1e-6):
+            raise ValueError(f"the lead {lead:g} mm must be a whole number of pitches")
         return value
 
     @field_validator("friction_dynamic", "friction_static")

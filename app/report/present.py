@@ -13,15 +13,22 @@ from collections.abc import Mapping as Units
 from typing import Any, cast
 
 from app.catalog import Material, Series
+from app.catalog.own import (
+    NutMaterial,
+    OwnGeometry,
+    UnknownNutMaterial,
+    own_screw,
+    user_material,
+)
 from app.contract.fields import FIELDS
 from app.contract.outputs import ChangeOut, CountsOut, RemedyOut, SummaryOut
 from app.contract.schemas import CandidateOut
 from app.contract.screws import CustomScrewIn, MaterialIn
 from app.contract.source import Writer
 from app.contract.units import DEFAULT_UNITS, api_to_si, render
-from app.core.formulas import torque
 from app.core.model import Provenance, ScrewSpec
-from app.core.record import GEOMETRY_SOURCES, Candidate
+from app.core.phrase import Quantity
+from app.core.record import Candidate
 from app.core.selection import Selection
 from app.report.reader import reader
 
@@ -137,61 +144,43 @@ def series_dict(series: Series) -> dict[str, Any]:
     }
 
 
-def custom_screw(data: CustomScrewIn, materials: Mapping[str, Material]) -> ScrewSpec:
-    """A ScrewSpec from a validated ``CustomScrewIn``; named materials from the catalog."""
-    user = Provenance("user", "given in the request")
-    yield_prov: Provenance | None = user
+def custom_screw(
+    data: CustomScrewIn,
+    materials: Mapping[str, Material],
+    nuts: Mapping[str, NutMaterial] | None = None,
+) -> ScrewSpec:
+    """A ScrewSpec from a validated ``CustomScrewIn`` (``app.catalog.own``): named screw
+    materials from the catalog, the user's own with the thermal expansion of steel, and
+    the catalog's nut material by name (``nuts``; UnknownNutMaterial for a name it lacks)."""
     if isinstance(data.material, MaterialIn):
-        e, rho = data.material.youngs_modulus_pa, data.material.density_kg_m3
-        alpha = materials["steel"].expansion_per_k.value
-        yield_pa = data.material.yield_strength_pa
+        own = data.material
+        material = user_material(
+            own.youngs_modulus_pa, own.density_kg_m3, own.yield_strength_pa, materials["steel"]
+        )
         material_name = "custom"
-        e_prov = rho_prov = user
     else:
-        material = materials[data.material]
-        e, rho = material.youngs_modulus_pa.value, material.density_kg_m3.value
-        alpha = material.expansion_per_k.value
-        strength = material.yield_strength_pa
-        yield_pa = None if strength is None else strength.value
-        yield_prov = None if strength is None else strength.provenance
-        material_name = data.material
-        e_prov, rho_prov = material.youngs_modulus_pa.provenance, material.density_kg_m3.provenance
-    rd = api_to_si(data.root_diameter_mm, "length")
-    inertia = data.inertia_kg_m2_per_m
-    if inertia is None:
-        inertia = torque.solid_rod_inertia_per_length(rho, rd)
-        inertia_prov = Provenance("derived", "solid rod at the root diameter: rho pi d_r^4 / 32")
-    else:
-        inertia_prov = user
-    return ScrewSpec(
-        id="custom",
-        series_id="custom",
-        series_name="Custom screw",
-        anti_backlash=False,
-        coated=False,
+        material, material_name = materials[data.material], data.material
+    nut = None
+    if data.nut_material is not None:
+        nut = (nuts or {}).get(data.nut_material)
+        if nut is None:
+            known = ", ".join(nuts or {}) or "none"
+            raise UnknownNutMaterial(f"unknown nut material '{data.nut_material}' (known: {known})")
+    geometry = OwnGeometry(
         outer_diameter_m=api_to_si(data.outer_diameter_mm, "length"),
-        root_diameter_m=rd,
+        root_diameter_m=api_to_si(data.root_diameter_mm, "length"),
         lead_m=api_to_si(data.lead_mm, "length"),
         thread_half_angle_rad=math.radians(data.thread_half_angle_deg),
         friction_static=data.friction_static,
         friction_dynamic=data.friction_dynamic,
-        youngs_modulus_pa=e,
-        density_kg_m3=rho,
-        screw_expansion_per_k=alpha,
-        inertia_kg_m2_per_m=inertia,
-        drag_torque_min_nm=data.drag_torque_nm,
-        drag_torque_max_nm=data.drag_torque_nm,
-        pv_limit_pa_m_s=(
-            None if data.pv_limit_mpa_m_s is None else api_to_si(data.pv_limit_mpa_m_s, "pv")
-        ),
-        material_name=material_name,
-        yield_strength_pa=yield_pa,
-        provenance={
-            **({"yield_strength": yield_prov} if yield_pa is not None and yield_prov else {}),
-            **dict.fromkeys(GEOMETRY_SOURCES, user),
-            "pv_limit": user,
-            "inertia_per_length": inertia_prov,
-            "youngs_modulus": e_prov,
-            "density": rho_prov,
-        },
+        drag_torque_nm=data.drag_torque_nm,
+        pv_limit_pa_m_s=_si_or_none(data.pv_limit_mpa_m_s, "pv"),
+        inertia_kg_m2_per_m=data.inertia_kg_m2_per_m,
+        pitch_m=_si_or_none(data.pitch_mm, "length"),
+        nut_length_m=_si_or_none(data.nut_length_mm, "length"),
     )
+    return own_screw(geometry, material, material_name, nut)
+
+
+def _si_or_none(value: float | None, quantity: Quantity) -> float | None:
+    return None if value is None else api_to_si(value, quantity)

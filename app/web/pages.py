@@ -285,7 +285,7 @@ def _detail_page(request: Request, catalog: Catalog) -> Response:
     inputs, units = link_inputs(request.query_params, catalog, ("id",))
     c = page_candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
-    try_query = catalog_screw_query(catalog.by_id[c.id], units)
+    try_query = catalog_screw_query(catalog.by_id[c.id], units, catalog.nut_materials)
     context = {
         "c": c,
         "d": Display(units),
