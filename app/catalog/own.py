@@ -11,7 +11,7 @@ own candidates with their provenance (``nut_materials``): the user's screw with 
 is rated exactly as a catalog screw of the same size with that nut."""
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from app.catalog.models import Material, Series, Sourced
 from app.catalog.series import NOT_GIVEN, thrust_pressure
@@ -40,7 +40,8 @@ class OwnGeometry:
     drag_torque_nm: float = 0.0
     pv_limit_pa_m_s: float | None = None
     inertia_kg_m2_per_m: float | None = None
-    #: thread pitch and nut length [m] (None: not given; a nut material needs both)
+    #: thread pitch and nut length [m] (None: not given; a nut rated by its contact
+    #: pressure needs both; the nut length then is the nut material's family's)
     pitch_m: float | None = None
     nut_length_m: float | None = None
 
@@ -68,7 +69,8 @@ class NutMaterial:
     is read from, its limits as ScrewSpec values (SI, ``NUT_VALUES``), its temperature
     range [C], whether oil suits it, its maker's dynamic thrust table (rows d [m], P [m],
     thrust [N]; None: not rated so), the running and static friction the catalog gives
-    it (a suggestion: the user gives the screw's own), and each value's provenance."""
+    it (a suggestion: the user gives the screw's own), the nut's length over the screw's
+    diameter the family takes (None: none), and each value's provenance."""
 
     key: str
     name: str
@@ -79,6 +81,7 @@ class NutMaterial:
     thrust_table: Sourced | None
     friction_dynamic: float
     friction_static: float
+    nut_length_to_d: float | None = None
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
 
     def rates_by_pressure(self) -> bool:
@@ -112,6 +115,9 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
     thrust = series.fields.get(f"dynamic_thrust_{screw.variant}")
     if thrust is not None:
         prov["dynamic_thrust"] = thrust.provenance
+    length = series.fields.get("nut_length")
+    if length is not None:
+        prov["nut_length"] = length.provenance
     return NutMaterial(
         key=screw.variant,
         name=screw.nut_material,
@@ -122,6 +128,7 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
         thrust_table=thrust,
         friction_dynamic=screw.friction_dynamic,
         friction_static=screw.friction_static,
+        nut_length_to_d=None if length is None else length.value / screw.outer_diameter_m,
         provenance=prov,
     )
 
@@ -165,7 +172,9 @@ def _thread(geometry: OwnGeometry) -> dict[str, object]:
     return out
 
 
-def _thread_provenance(geometry: OwnGeometry) -> dict[str, Provenance]:
+def _thread_provenance(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, Provenance]:
+    """The thread values' provenance: the user's pitch, the basic profile's d2 and H1, the
+    nut length the user gives or the nut material's family takes."""
     prov = {}
     if geometry.pitch_m is not None:
         prov["pitch"] = USER
@@ -173,7 +182,17 @@ def _thread_provenance(geometry: OwnGeometry) -> dict[str, Provenance]:
         prov["flank_height"] = THREAD_RULE
     if geometry.nut_length_m is not None:
         prov["nut_length"] = USER
+    elif nut is not None and nut.nut_length_to_d is not None:
+        prov["nut_length"] = nut.provenance["nut_length"]
     return prov
+
+
+def _with_nut_length(geometry: OwnGeometry, nut: NutMaterial | None) -> OwnGeometry:
+    """The geometry with the nut length the nut material's family takes (its length over
+    d times the screw's outer diameter) when the user gives none."""
+    if geometry.nut_length_m is not None or nut is None or nut.nut_length_to_d is None:
+        return geometry
+    return replace(geometry, nut_length_m=nut.nut_length_to_d * geometry.outer_diameter_m)
 
 
 def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
@@ -205,6 +224,8 @@ def own_screw(
         inertia = torque.solid_rod_inertia_per_length(rho, geometry.root_diameter_m)
         inertia_source = DERIVED_INERTIA
     strength = material.yield_strength_pa
+    thread_provenance = _thread_provenance(geometry, nut)
+    geometry = _with_nut_length(geometry, nut)
     nut_values = _nut(geometry, nut)
     dynamic = nut_values.pop("_dynamic_pressure_provenance", None)
     provenance: dict[str, Provenance] = {
@@ -214,8 +235,8 @@ def own_screw(
         "inertia_per_length": inertia_source,
         "youngs_modulus": material.youngs_modulus_pa.provenance,
         "density": material.density_kg_m3.provenance,
-        **_thread_provenance(geometry),
         **({} if nut is None else _nut_provenance(nut)),
+        **thread_provenance,
         **({} if not isinstance(dynamic, Provenance) else {"dynamic_pressure": dynamic}),
     }
     if geometry.pv_limit_pa_m_s is None:

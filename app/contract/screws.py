@@ -87,20 +87,13 @@ class CustomScrewIn(BaseModel):
         ]
         | None
     ) = None
-    nut_length_mm: (
-        Annotated[
-            float,
-            bounded_number(0.1, 10000.0, "Nut length [mm]: the engaged thread length."),
-            NotBool,
-        ]
-        | None
-    ) = None
     nut_material: str | None = Field(
         default=None,
         max_length=40,
         description="A catalog nut material (GET /api/v1/nut-materials: 'bronze', "
-        "'acetal', 'ptfe'): its limits rate the nut; a nut rated by contact pressure needs "
-        "pitch_mm and nut_length_mm.",
+        "'acetal', 'ptfe'): its limits rate the nut, with the nut length its catalog family "
+        "takes (2 x d; the application's nut_length_mm sets another); a nut rated by "
+        "contact pressure needs pitch_mm.",
     )
 
     @field_validator("root_diameter_mm")

@@ -177,7 +177,6 @@ def custom_screw(
         pv_limit_pa_m_s=_si_or_none(data.pv_limit_mpa_m_s, "pv"),
         inertia_kg_m2_per_m=data.inertia_kg_m2_per_m,
         pitch_m=_si_or_none(data.pitch_mm, "length"),
-        nut_length_m=_si_or_none(data.nut_length_mm, "length"),
     )
     return own_screw(geometry, material, material_name, nut)
 

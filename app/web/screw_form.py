@@ -265,15 +265,13 @@ def _material_values(spec: ScrewSpec) -> dict[str, float | str | None]:
 
 def _nut_values(spec: ScrewSpec, nuts: Container[str]) -> dict[str, float | str | None]:
     """A catalog screw's nut as the custom form's: its nut material when it is one of the
-    catalog's (``nuts``), with the thread pitch and nut length it is rated over."""
+    catalog's (``nuts``), with the thread pitch it is rated over (the nut length is the
+    nut material's family's, as the catalog's)."""
     if spec.variant not in nuts:
         return {}
     return {
         NUT_FIELD: spec.variant,
         "pitch_mm": None if spec.pitch_m is None else si_to_api(spec.pitch_m, "length"),
-        "nut_length_mm": (
-            None if spec.nut_length_m is None else si_to_api(spec.nut_length_m, "length")
-        ),
     }
 
 
@@ -281,7 +279,7 @@ def catalog_screw_query(
     spec: ScrewSpec, units: Mapping[str, str] = DEFAULT_UNITS, nuts: Container[str] = ()
 ) -> str:
     """A catalog screw's geometry, friction, material, inertia, largest drag, PV limit and
-    nut material (one of ``nuts``, with its pitch and nut length) as the custom form's
+    nut material (one of ``nuts``, with its pitch) as the custom form's
     query (in the display ``units``), to try the same screw with other values."""
     pv_limit = spec.pv_limit_pa_m_s
     values = {

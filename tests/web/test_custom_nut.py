@@ -98,7 +98,7 @@ def test_try_this_screw_gives_the_catalog_rows_checks_and_answer(
 
 def test_a_bronze_nut_gives_the_custom_screw_the_nut_checks(client: TestClient) -> None:
     bare = soup(client.get(f"/custom?{TR12X3}&{AXIS}").text)
-    nut = soup(client.get(f"/custom?{TR12X3}&nut=bronze&pitch_mm=3&nut_length_mm=24&{AXIS}").text)
+    nut = soup(client.get(f"/custom?{TR12X3}&nut=bronze&pitch_mm=3&{AXIS}").text)
     bare_checks = {li["data-check"] for li in bare.select("li.check")}
     nut_checks = {li["data-check"] for li in nut.select("li.check")}
     added = {"bearing_pressure", "max_sliding_speed", "design_load", "wear_life", "temperature"}
@@ -117,7 +117,7 @@ def test_skipped_checks_are_named_with_the_missing_values(client: TestClient) ->
     assert "Nut contact pressure (no allowed contact pressure" in verdict
     no_thread = soup(client.get(f"/custom?{TR12X3}&nut=bronze&{AXIS}").text)
     verdict = " ".join(no_thread.select_one(".custom-verdict").text.split())
-    assert "Nut contact pressure (no nut length or pitch)" in verdict
+    assert "Nut contact pressure (no pitch)" in verdict
 
 
 def test_the_api_refuses_an_unknown_nut_and_a_pitch_that_does_not_divide_the_lead(
@@ -144,3 +144,28 @@ def test_the_api_refuses_an_unknown_nut_and_a_pitch_that_does_not_divide_the_lea
     assert "pitch_mm" in odd.text
     page = soup(client.get(f"/custom?{TR12X3}&nut=unobtainium&load=100&speed=20&length=400").text)
     assert page.select_one("#e-nut").text.strip()
+
+
+def test_the_applications_nut_length_sets_the_custom_nuts(client: TestClient) -> None:
+    """The nut length is the family's 2 x d (24 mm for Tr12) unless the application's
+    nut length sets another: the contact pressure falls as 1 / L (engaged turns L / P)."""
+    screw = {
+        "outer_diameter_mm": 12,
+        "root_diameter_mm": 8.5,
+        "lead_mm": 3,
+        "pitch_mm": 3,
+        "thread_half_angle_deg": 15,
+        "friction_dynamic": 0.13,
+        "friction_static": 0.16,
+        "nut_material": "bronze",
+    }
+    app = {"load_n": 500, "speed_mm_s": 20, "length_mm": 400}
+
+    def used(**extra: float) -> float:
+        body = {"application": {**app, **extra}, "screw": screw}
+        response = client.post("/api/v1/evaluate", json=body)
+        assert response.status_code == 200, response.text
+        return float(response.json()["candidate"]["utilization"]["bearing_pressure"])
+
+    assert used(nut_length_mm=30) == pytest.approx(used() * 24 / 30, rel=1e-6)
+    assert used(nut_length_mm=24) == pytest.approx(used(), rel=1e-12)
