@@ -111,7 +111,7 @@ class CustomScrewIn(BaseModel):
         if value is None or lead is None:
             return value
         starts = round(lead / value)
-        if starts < 1 or not math.isclose(lead, starts * value, rel_tol=1e-6):
+        if starts < 1 or not math.isclose(lead, starts * value):
             raise ValueError(f"the lead {lead:g} mm must be a whole number of pitches")
         return value
 
