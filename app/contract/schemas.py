@@ -116,6 +116,10 @@ class TorqueOut(BaseModel):
         "starting from rest, rotor included, before the torque safety factor: what the "
         "drive must give at its peak (the results table's torque when a move is given).",
     )
+    peak_segment: Annotated[str, From("peak_segment")] = Field(
+        description="Where the peak motor torque occurs: 'starting from rest' (the "
+        "break-away) or a moving segment of either move ('decelerating down').",
+    )
 
 
 class ProfileOut(BaseModel):
