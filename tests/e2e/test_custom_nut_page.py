@@ -32,6 +32,16 @@ def _context(browser: Any, width: int, height: int = 900) -> Any:
     return context
 
 
+def _collect(errors: list[str]) -> Any:
+    """A console listener that keeps the page's errors in ``errors``."""
+
+    def listen(message: Any) -> None:
+        if message.type == "error":
+            errors.append(message.text)
+
+    return listen
+
+
 def _axe(page: Any) -> list[str]:
     page.wait_for_load_state("networkidle")
     result = page.evaluate(
@@ -48,7 +58,7 @@ def test_a_bronze_nut_gives_the_custom_screw_the_catalogs_checks(
         context = _context(browser, width)
         page = context.new_page()
         errors: list[str] = []
-        page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+        page.on("console", _collect(errors))
         page.goto(live_server + "/custom")
         page.select_option("#f-material", "c45-steel")
         page.select_option("#f-nut", "bronze")
