@@ -28,7 +28,7 @@ from app.contract.params import unknown_parameters
 from app.contract.reported import columns, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
-from app.contract.units import TORQUE_LABELS, Display
+from app.contract.units import UNIT_LABELS, Display
 from app.report.pairs import run_pairs
 from app.report.service import (
     BadIds,
@@ -100,7 +100,7 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
         "true_words": TRUE_WORDS,
         "set_groups": set_groups,
         "unit_choices": UNIT_CHOICES,
-        "torque_labels": TORQUE_LABELS,
+        "unit_labels": UNIT_LABELS,
     }
 
 
