@@ -136,3 +136,33 @@ def test_the_phone_bar_shows_the_top_screws_whole_id(
     assert not page.locator("#result-bar").is_visible()
     page.screenshot(path=str(artifacts / "result-bar-long-id-1280.png"))
     wide.close()
+
+
+def test_the_acceleration_unit_choice_converts_and_its_link_reproduces_the_answer(
+    browser: Any, live_server: str, artifacts: Path
+) -> None:
+    """2000 mm/s² typed, then g chosen: the field shows 0.2039 g (2 / 9.80665), the
+    results stay the same, and the share link opens in g with the same answer."""
+    for width in (1280, 390):
+        context = _context(browser, width)
+        page = context.new_page()
+        page.goto(f"{live_server}/?load=50&speed=200&length=500&stroke=300&accel=2000")
+        page.wait_for_selector("tbody.candidate")
+        before = page.locator("tbody.candidate .torque-peak").first.inner_text()
+        page.select_option("#f-accel_unit", "g")
+        page.wait_for_function("() => location.search.includes('accel_unit=g')")
+        page.wait_for_function(
+            "() => Math.abs(parseFloat(document.querySelector('#f-accel').value) - 0.20394) < 1e-4"
+        )
+        assert "g" in page.locator("label[for=f-accel] .unit").inner_text()
+        page.wait_for_selector("tbody.candidate")
+        assert page.locator("tbody.candidate .torque-peak").first.inner_text() == before
+        link = page.get_attribute("a.share-link", "href")
+        assert link is not None and "accel_unit=g" in link
+        other = context.new_page()
+        other.goto(live_server + link)
+        assert other.input_value("#f-accel_unit") == "g"
+        assert other.locator("tbody.candidate .torque-peak").first.inner_text() == before
+        page.screenshot(path=str(artifacts / f"accel-unit-g-{width}.png"))
+        assert _axe(page) == []
+        context.close()
