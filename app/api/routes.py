@@ -23,10 +23,10 @@ from app.contract.outputs import (
 )
 from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
 from app.contract.schemas import ApplicationIn
-from app.contract.screws import EvaluateIn
+from app.contract.screws import EvaluateIn, NutMaterialsOut
 from app.report.formulas import CHECKS_OUT
 from app.report.pairs import motors_out, run_pairs
-from app.report.present import series_dict
+from app.report.present import nut_materials_out, series_dict
 from app.report.service import (
     FORMULAS_OUT,
     BadIds,
@@ -164,6 +164,14 @@ async def compare_get(request: Request, catalog: CatalogDep) -> Response:
 
 def _compare(inputs: ApplicationIn, ids: list[str], catalog: CatalogDep) -> Response:
     return ModelJSON(run_compare(inputs, ids, catalog))
+
+
+@router.get("/nut-materials", response_model=NutMaterialsOut)
+async def list_nut_materials(catalog: CatalogDep) -> NutMaterialsOut:
+    """The catalog's nut materials a custom screw's ``nut_material`` may name: each one's
+    limits (pressure by sliding speed, maximum pressure, PV, sliding speed, the maker's
+    dynamic thrust, wear) with their provenance."""
+    return nut_materials_out(catalog.nut_materials, catalog.version)
 
 
 @router.get("/motors", response_model=MotorsOut)

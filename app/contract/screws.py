@@ -16,6 +16,7 @@ from pydantic import (
 )
 
 from app.contract.inputs import ApplicationIn, NotBool, bounded_number
+from app.contract.schemas import ProvenanceOut
 
 
 class MaterialIn(BaseModel):
@@ -151,3 +152,23 @@ class EvaluateIn(BaseModel):
 
     application: ApplicationIn
     screw: ScrewIn
+
+
+class NutValueOut(BaseModel):
+    label: str
+    value: str = Field(description="The value as text with its unit (MPa, m/s, mm³/(N m)).")
+    provenance: ProvenanceOut | None
+
+
+class NutMaterialOut(BaseModel):
+    key: str = Field(description="The name a custom screw's nut_material takes.")
+    name: str
+    family: str = Field(description="The catalog family its values are read from.")
+    values: list[NutValueOut]
+
+
+class NutMaterialsOut(BaseModel):
+    """The catalog's nut materials a custom screw may take, with their limits."""
+
+    catalog_version: str
+    nut_materials: list[NutMaterialOut]

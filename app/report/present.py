@@ -22,10 +22,16 @@ from app.catalog.own import (
 )
 from app.contract.fields import FIELDS
 from app.contract.outputs import ChangeOut, CountsOut, RemedyOut, SummaryOut
-from app.contract.schemas import CandidateOut
-from app.contract.screws import CustomScrewIn, MaterialIn
+from app.contract.schemas import CandidateOut, ProvenanceOut
+from app.contract.screws import (
+    CustomScrewIn,
+    MaterialIn,
+    NutMaterialOut,
+    NutMaterialsOut,
+    NutValueOut,
+)
 from app.contract.source import Writer
-from app.contract.units import DEFAULT_UNITS, api_to_si, render
+from app.contract.units import DEFAULT_UNITS, api_to_si, from_si, render, sig
 from app.core.model import Provenance, ScrewSpec
 from app.core.phrase import Quantity
 from app.core.record import Candidate
@@ -183,3 +189,92 @@ def custom_screw(
 
 def _si_or_none(value: float | None, quantity: Quantity) -> float | None:
     return None if value is None else api_to_si(value, quantity)
+
+
+#: A nut material's values as the page lists them: (key of its provenance, label).
+NUT_ROWS = (
+    ("bearing_pressure", "Allowed contact pressure by sliding speed"),
+    ("max_pressure", "Maximum contact pressure"),
+    ("bearing_pv_limit", "PV limit over the engaged flanks"),
+    ("max_sliding_speed", "Maximum sliding speed"),
+    ("dynamic_thrust", "Allowable dynamic thrust by size"),
+    ("wear_rate", "Specific wear rate"),
+    ("allowed_wear", "Allowed wear depth, share of the flank height"),
+    ("temperature_range", "Temperature range"),
+    ("oil_compatible", "Oil and lubricants"),
+    ("friction_dynamic", "Running friction the catalog takes (yours is used)"),
+)
+
+
+def _nut_text(nut: NutMaterial, key: str) -> str | None:
+    """One value of a nut material as text in SI-derived units (MPa, m/s, mm³/(N m))."""
+    limits = nut.limits
+    if key == "bearing_pressure":
+        table = limits["bearing_pressure_table"]
+        rows = [f"{sig(v)} m/s: {sig(from_si(p, 'MPa'))} MPa" for v, p in table]  # type: ignore[attr-defined]
+        return "; ".join(rows) or None
+    if key == "dynamic_thrust":
+        if nut.thrust_table is None:
+            return None
+        rows = nut.thrust_table.value
+        sizes = [
+            f"Tr{sig(from_si(d, 'mm'))}x{sig(from_si(p, 'mm'))} {sig(n)} N" for d, p, n in rows
+        ]
+        return ", ".join(sizes)
+    if key == "temperature_range":
+        t = nut.temperature_c
+        return None if t is None else f"{sig(t[0])} to {sig(t[1])} °C"
+    if key == "oil_compatible":
+        return "suits oil" if nut.oil_compatible else "no oil"
+    if key == "friction_dynamic":
+        return f"{sig(nut.friction_dynamic)} (static {sig(nut.friction_static)})"
+    spec_name, unit = NUT_UNITS[key]
+    value = limits.get(spec_name)
+    return None if value is None else f"{sig(from_si(float(value), unit))} {unit}".strip()  # type: ignore[arg-type]
+
+
+#: The ScrewSpec value and the unit each plain nut value is shown in.
+NUT_UNITS = {
+    "max_pressure": ("max_pressure_pa", "MPa"),
+    "bearing_pv_limit": ("nut_pv_limit_pa_m_s", "MPa m/s"),
+    "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
+    "wear_rate": ("wear_rate_m2_n", "mm³/(N m)"),
+    "allowed_wear": ("allowed_wear_fraction", ""),
+}
+
+
+def nut_rows(nut: NutMaterial) -> list[tuple[str, str, Provenance | None]]:
+    """(label, value, provenance) of each value a catalog nut material gives."""
+    rows = []
+    for key, row_label in NUT_ROWS:
+        text = _nut_text(nut, key)
+        if text is not None:
+            rows.append((row_label, text, nut.provenance.get(key)))
+    return rows
+
+
+def _provenance_out(p: Provenance | None) -> ProvenanceOut | None:
+    return None if p is None else ProvenanceOut.model_validate({"kind": p.kind, "source": p.source})
+
+
+def nut_materials_out(nuts: Mapping[str, NutMaterial], version: str) -> NutMaterialsOut:
+    """The catalog's nut materials with each value's text and provenance."""
+    return NutMaterialsOut(
+        catalog_version=version,
+        nut_materials=[
+            NutMaterialOut(
+                key=key,
+                name=nut.name,
+                family=nut.family,
+                values=[
+                    NutValueOut(
+                        label=label,
+                        value=text,
+                        provenance=_provenance_out(p),
+                    )
+                    for label, text, p in nut_rows(nut)
+                ],
+            )
+            for key, nut in nuts.items()
+        ],
+    )

@@ -169,3 +169,17 @@ def test_the_applications_nut_length_sets_the_custom_nuts(client: TestClient) ->
 
     assert used(nut_length_mm=30) == pytest.approx(used() * 24 / 30, rel=1e-6)
     assert used(nut_length_mm=24) == pytest.approx(used(), rel=1e-12)
+
+
+def test_the_api_lists_the_nut_materials_with_their_provenance(
+    client: TestClient, catalog: Catalog
+) -> None:
+    response = client.get("/api/v1/nut-materials")
+    assert response.status_code == 200
+    listed = {n["key"]: n for n in response.json()["nut_materials"]}
+    assert set(listed) == set(catalog.nut_materials)
+    bronze = {v["label"]: v for v in listed["bronze"]["values"]}
+    pressure = bronze["Allowed contact pressure by sliding speed"]
+    assert pressure["value"].startswith("0.05 m/s: 11 MPa")  # Shigley Table 8-4
+    assert pressure["provenance"]["kind"] == "handbook"
+    assert bronze["Maximum sliding speed"]["provenance"]["kind"] == "vendor"
