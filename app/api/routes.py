@@ -35,11 +35,11 @@ from app.contract.outputs import (
 )
 from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
 from app.contract.schemas import ApplicationIn
-from app.contract.screws import CatalogScrewIn, CustomScrewIn, EvaluateIn
+from app.contract.screws import CatalogScrewIn, CustomScrewIn, EvaluateIn, NutMaterialsOut
 from app.report.formulas import CHECKS_OUT
 from app.report.machine import UnknownChoice, run_machine
 from app.report.pairs import motors_out, run_pairs
-from app.report.present import series_dict
+from app.report.present import nut_materials_out, series_dict
 from app.report.service import (
     FORMULAS_OUT,
     BadIds,
@@ -213,6 +213,14 @@ def _compare(inputs: ApplicationIn, ids: list[str], catalog: CatalogDep) -> Resp
     return ModelJSON(run_compare(inputs, ids, catalog))
 
 
+@router.get("/nut-materials", response_model=NutMaterialsOut, summary="List the nut materials")
+async def list_nut_materials(catalog: CatalogDep) -> NutMaterialsOut:
+    """The catalog's nut materials a custom screw's ``nut_material`` may name: each one's
+    limits (pressure by sliding speed, maximum pressure, PV, sliding speed, the maker's
+    dynamic thrust, wear) with their provenance."""
+    return nut_materials_out(catalog.nut_materials, catalog.version)
+
+
 @router.get("/motors", response_model=MotorsOut, summary="List the library motors")
 async def list_motors(catalog: CatalogDep) -> MotorsOut:
     """The motor library: each motor's datasheet values with their provenance, and the
@@ -302,7 +310,7 @@ def _evaluation(
         ) from exc
 
 
-@router.post("/machine", response_model=MachineOut)
+@router.post("/machine", response_model=MachineOut, summary="Size stacked axes together")
 async def machine_post(request: Request, body: MachineIn, catalog: CatalogDep) -> Response:
     """Stacked axes sized together, the top axis first: each axis's moving mass takes the
     axes above it (their moving mass, frame, motor and chosen screw), so each gets its own

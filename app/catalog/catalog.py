@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 from app.catalog.models import Material, Series
 from app.catalog.motors import Motor
+from app.catalog.own import NutMaterial
 from app.catalog.supports import SupportUnit
 from app.core.index import CatalogIndex
 from app.core.model import ScrewSpec
@@ -25,3 +26,5 @@ class Catalog:
     by_id: Mapping[str, ScrewSpec] = field(default_factory=dict)
     motors: Mapping[str, Motor] = field(default_factory=dict)
     supports: Mapping[str, SupportUnit] = field(default_factory=dict)
+    #: the nut materials a screw of the user's own may take (``own.nut_materials``)
+    nut_materials: Mapping[str, NutMaterial] = field(default_factory=dict)

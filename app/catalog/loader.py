@@ -25,6 +25,7 @@ from app.catalog.files import (
 from app.catalog.groups import Groups, read_group
 from app.catalog.models import Material, Series, Sourced
 from app.catalog.motors import MOTOR_FILE, load_library
+from app.catalog.own import nut_materials
 from app.catalog.series import build_series
 from app.catalog.supports import SUPPORT_FILE, load_support_library
 from app.core.index import CatalogIndex
@@ -181,4 +182,5 @@ def load_catalog(extra_dirs: Iterable[Path] = ()) -> Catalog:
         by_id={screw.id: screw for screw in screws},
         motors=motors,
         supports=supports,
+        nut_materials=nut_materials(by_series.values()),
     )

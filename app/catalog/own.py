@@ -2,18 +2,27 @@
 (``app.catalog.series``), built from the user's geometry and friction in SI and a screw
 material, the catalog's by name or the user's constants (``user_material``). Every value
 the user gives carries the provenance "user"; the inertia, when not given, is derived
-(a solid rod at the root diameter, ``formulas.torque.solid_rod_inertia_per_length``)."""
+(a solid rod at the root diameter, ``formulas.torque.solid_rod_inertia_per_length``).
 
-from dataclasses import dataclass
+A nut material (``NutMaterial``) is one of the catalog's nut variants rated by its
+material (a bronze nut's pressure-speed table, a polymer nut's maximum pressure and PV,
+the sliding speed, the wear rate, a maker's dynamic thrust table), read from the catalog's
+own candidates with their provenance (``nut_materials``): the user's screw with that nut
+is rated exactly as a catalog screw of the same size with that nut."""
 
-from app.catalog.models import Material, Sourced
-from app.core.formulas import torque
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field, replace
+
+from app.catalog.models import Material, Series, Sourced
+from app.catalog.series import NOT_GIVEN, thrust_pressure
+from app.core.formulas import torque, trapezoidal
 from app.core.model import Provenance, ScrewSpec
 from app.core.record import GEOMETRY_SOURCES
 
 #: What the user gives in a request.
 USER = Provenance("user", "given in the request")
 DERIVED_INERTIA = Provenance("derived", "solid rod at the root diameter: rho pi d_r^4 / 32")
+THREAD_RULE = Provenance("derived", "basic profile from the pitch: d2 = d - 0.5 P, H1 = 0.5 P")
 
 
 @dataclass(frozen=True, slots=True)
@@ -31,6 +40,108 @@ class OwnGeometry:
     drag_torque_nm: float = 0.0
     pv_limit_pa_m_s: float | None = None
     inertia_kg_m2_per_m: float | None = None
+    #: thread pitch and nut length [m] (None: not given; a nut rated by its contact
+    #: pressure needs both; the nut length then is the nut material's family's)
+    pitch_m: float | None = None
+    nut_length_m: float | None = None
+
+
+class UnknownNutMaterial(ValueError):
+    """A nut material the loaded catalog does not hold (a 422 on ``field``)."""
+
+    field = "screw.nut_material"
+
+
+#: The ScrewSpec values a nut material sets, by its provenance key.
+NUT_VALUES = {
+    "bearing_pressure": "bearing_pressure_table",
+    "max_pressure": "max_pressure_pa",
+    "bearing_pv_limit": "nut_pv_limit_pa_m_s",
+    "max_sliding_speed": "max_sliding_speed_m_s",
+    "wear_rate": "wear_rate_m2_n",
+    "allowed_wear": "allowed_wear_fraction",
+}
+
+
+@dataclass(frozen=True, slots=True)
+class NutMaterial:
+    """One catalog nut material: its key (the variant, "bronze"), its name, the family it
+    is read from, its limits as ScrewSpec values (SI, ``NUT_VALUES``), its temperature
+    range [C], whether oil suits it, its maker's dynamic thrust table (rows d [m], P [m],
+    thrust [N]; None: not rated so), the running and static friction the catalog gives
+    it (a suggestion: the user gives the screw's own), the nut's length over the screw's
+    diameter the family takes (None: none), and each value's provenance."""
+
+    key: str
+    name: str
+    family: str
+    limits: Mapping[str, object]
+    temperature_c: tuple[float, float] | None
+    oil_compatible: bool
+    thrust_table: Sourced | None
+    friction_dynamic: float
+    friction_static: float
+    nut_length_to_d: float | None = None
+    provenance: Mapping[str, Provenance] = field(default_factory=dict)
+
+    def rates_by_pressure(self) -> bool:
+        """Whether a limit reads the engaged flank area (pitch and nut length needed)."""
+        pressure = ("bearing_pressure_table", "max_pressure_pa", "nut_pv_limit_pa_m_s")
+        return self.thrust_table is not None or any(
+            self.limits.get(name) not in (None, ()) for name in pressure
+        )
+
+
+#: The values that rate a nut by its material (a maker's nut rated per size by its maker,
+#: by a three-thread PV limit and a rated life, is not a material preset).
+MATERIAL_RATINGS = (
+    "bearing_pressure_table",
+    "max_pressure_pa",
+    "nut_pv_limit_pa_m_s",
+    "max_sliding_speed_m_s",
+)
+
+
+def _rated(screw: ScrewSpec) -> bool:
+    """Whether a catalog candidate's nut is rated by its material."""
+    return any(getattr(screw, name) not in (None, ()) for name in MATERIAL_RATINGS)
+
+
+def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
+    """The nut material of one catalog candidate, with its provenance."""
+    keys = (*NUT_VALUES, "temperature_range", "oil_compatible", "friction_dynamic")
+    prov = {k: screw.provenance[k] for k in (*keys, "friction_static") if k in screw.provenance}
+    low, high = screw.temperature_min_c, screw.temperature_max_c
+    thrust = series.fields.get(f"dynamic_thrust_{screw.variant}")
+    if thrust is not None:
+        prov["dynamic_thrust"] = thrust.provenance
+    length = series.fields.get("nut_length")
+    if length is not None:
+        prov["nut_length"] = length.provenance
+    return NutMaterial(
+        key=screw.variant,
+        name=screw.nut_material,
+        family=series.family_name,
+        limits={name: getattr(screw, name) for name in NUT_VALUES.values()},
+        temperature_c=None if low is None or high is None else (low, high),
+        oil_compatible=screw.oil_compatible,
+        thrust_table=thrust,
+        friction_dynamic=screw.friction_dynamic,
+        friction_static=screw.friction_static,
+        nut_length_to_d=None if length is None else length.value / screw.outer_diameter_m,
+        provenance=prov,
+    )
+
+
+def nut_materials(series: Iterable[Series]) -> dict[str, NutMaterial]:
+    """The catalog's nut materials by variant key, each read from the first candidate
+    that has it (the variants a family declares are the same for all its sizes)."""
+    found: dict[str, NutMaterial] = {}
+    for s in series:
+        for screw in s.screws:
+            if screw.variant and screw.variant not in found and _rated(screw):
+                found[screw.variant] = _nut_material(s, screw)
+    return found
 
 
 def user_material(
@@ -47,14 +158,91 @@ def user_material(
     )
 
 
-def own_screw(geometry: OwnGeometry, material: Material, material_name: str) -> ScrewSpec:
-    """The candidate "custom" from the user's ``geometry`` and a ``material``."""
+def _thread(geometry: OwnGeometry) -> dict[str, object]:
+    """The pitch, pitch diameter d2 and flank height H1 of a thread with a pitch, by the
+    basic profile (d2 = d - 0.5 P, H1 = 0.5 P: ISO 2904 and ASME B1.5 Acme alike), and
+    the nut length; nothing but the nut length without a pitch."""
+    out: dict[str, object] = {"nut_length_m": geometry.nut_length_m}
+    if geometry.pitch_m is not None:
+        out["pitch_m"] = geometry.pitch_m
+        out["flank_pitch_diameter_m"] = trapezoidal.pitch_diameter(
+            geometry.outer_diameter_m, geometry.pitch_m
+        )
+        out["flank_height_m"] = trapezoidal.flank_height(geometry.pitch_m)
+    return out
+
+
+def _thread_provenance(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, Provenance]:
+    """The thread values' provenance: the user's pitch, the basic profile's d2 and H1, the
+    nut length the user gives or the nut material's family takes."""
+    prov = {}
+    if geometry.pitch_m is not None:
+        prov["pitch"] = USER
+        prov["flank_pitch_diameter"] = THREAD_RULE
+        prov["flank_height"] = THREAD_RULE
+    if geometry.nut_length_m is not None:
+        prov["nut_length"] = USER
+    elif nut is not None and nut.nut_length_to_d is not None:
+        prov["nut_length"] = nut.provenance["nut_length"]
+    return prov
+
+
+def _with_nut_length(geometry: OwnGeometry, nut: NutMaterial | None) -> OwnGeometry:
+    """The geometry with the nut length the nut material's family takes (its length over
+    d times the screw's outer diameter) when the user gives none."""
+    if geometry.nut_length_m is not None or nut is None or nut.nut_length_to_d is None:
+        return geometry
+    return replace(geometry, nut_length_m=nut.nut_length_to_d * geometry.outer_diameter_m)
+
+
+def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
+    """The ScrewSpec values of the nut: its material's limits, and its flank pressure in
+    motion from the maker's thrust table for this size (``series.thrust_pressure``)."""
+    if nut is None:
+        return {}
+    values: dict[str, object] = {**nut.limits, "nut_material": nut.name}
+    values["oil_compatible"] = nut.oil_compatible
+    if nut.temperature_c is not None:
+        values["temperature_min_c"], values["temperature_max_c"] = nut.temperature_c
+    length, pitch = geometry.nut_length_m, geometry.pitch_m
+    if nut.thrust_table is not None and length is not None and pitch is not None:
+        pressure, prov = thrust_pressure(nut.thrust_table, geometry.outer_diameter_m, pitch, length)
+        values["dynamic_pressure_pa"] = pressure
+        values["_dynamic_pressure_provenance"] = prov
+    return values
+
+
+def own_screw(
+    geometry: OwnGeometry, material: Material, material_name: str, nut: NutMaterial | None = None
+) -> ScrewSpec:
+    """The candidate "custom" from the user's ``geometry``, a ``material`` and a catalog
+    ``nut`` material (None: no nut rating beyond a given PV limit). A value the screw
+    lacks has the catalog's "not checked" provenance (``series.NOT_GIVEN``)."""
     rho = material.density_kg_m3.value
     inertia, inertia_source = geometry.inertia_kg_m2_per_m, USER
     if inertia is None:
         inertia = torque.solid_rod_inertia_per_length(rho, geometry.root_diameter_m)
         inertia_source = DERIVED_INERTIA
     strength = material.yield_strength_pa
+    thread_provenance = _thread_provenance(geometry, nut)
+    geometry = _with_nut_length(geometry, nut)
+    nut_values = _nut(geometry, nut)
+    dynamic = nut_values.pop("_dynamic_pressure_provenance", None)
+    provenance: dict[str, Provenance] = {
+        **({} if strength is None else {"yield_strength": strength.provenance}),
+        **dict.fromkeys(GEOMETRY_SOURCES, USER),
+        "pv_limit": USER,
+        "inertia_per_length": inertia_source,
+        "youngs_modulus": material.youngs_modulus_pa.provenance,
+        "density": material.density_kg_m3.provenance,
+        **({} if nut is None else _nut_provenance(nut)),
+        **thread_provenance,
+        **({} if not isinstance(dynamic, Provenance) else {"dynamic_pressure": dynamic}),
+    }
+    if geometry.pv_limit_pa_m_s is None:
+        provenance["pv_limit"] = NOT_GIVEN["pv_limit"]
+    for name, not_given in NOT_GIVEN.items():
+        provenance.setdefault(name, not_given)
     return ScrewSpec(
         id="custom",
         series_id="custom",
@@ -76,12 +264,20 @@ def own_screw(geometry: OwnGeometry, material: Material, material_name: str) -> 
         pv_limit_pa_m_s=geometry.pv_limit_pa_m_s,
         material_name=material_name,
         yield_strength_pa=None if strength is None else strength.value,
-        provenance={
-            **({} if strength is None else {"yield_strength": strength.provenance}),
-            **dict.fromkeys(GEOMETRY_SOURCES, USER),
-            "pv_limit": USER,
-            "inertia_per_length": inertia_source,
-            "youngs_modulus": material.youngs_modulus_pa.provenance,
-            "density": material.density_kg_m3.provenance,
-        },
+        thermal_conductivity_w_m_k=_conductivity(material),
+        provenance=provenance,
+        **_thread(geometry),  # type: ignore[arg-type]
+        **nut_values,  # type: ignore[arg-type]
     )
+
+
+def _conductivity(material: Material) -> float | None:
+    k = material.thermal_conductivity_w_m_k
+    return None if k is None else k.value
+
+
+def _nut_provenance(nut: NutMaterial) -> dict[str, Provenance]:
+    """The provenance of the values a nut material sets, under the catalog's keys."""
+    prov = {k: p for k, p in nut.provenance.items() if not k.startswith("friction")}
+    prov["nut_material"] = Provenance("user", f"the catalog's {nut.key} nut ({nut.family})")
+    return prov

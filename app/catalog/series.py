@@ -597,7 +597,7 @@ def _flank_pressure(row: tuple[float, ...], length_to_d: float) -> tuple[float, 
     return float(bearing.bearing_pressure(thrust_n, area)), float(area)
 
 
-def _thrust_pressure(
+def thrust_pressure(
     table: Sourced, d_m: float, pitch_m: float, nut_length_m: float
 ) -> tuple[float, Provenance]:
     """The nut's flank pressure in motion from its maker's thrust table (rule 10): for a
@@ -631,14 +631,14 @@ def _thrust_rated(variant: Variant, fields: Mapping[str, Sourced], series_ends: 
         return variant
     d_m, pitch_m = fields["outer_diameter"].value, fields["pitch"].value
     length_m = fields["nut_length"].value
-    pressure, prov = _thrust_pressure(table, d_m, pitch_m, length_m)
+    pressure, prov = thrust_pressure(table, d_m, pitch_m, length_m)
     ends = dict(variant.ends)
     for name, pair in series_ends.items():
         if any("nut_length_m" in end for end in pair):
             low, high = (
                 {
                     **end,
-                    "dynamic_pressure_pa": _thrust_pressure(
+                    "dynamic_pressure_pa": thrust_pressure(
                         table, d_m, pitch_m, end["nut_length_m"]
                     )[0],
                 }

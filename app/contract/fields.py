@@ -359,7 +359,7 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="brake_torque_nm", page="brake_torque", core="brake_torque_nm",
-        label="Holding torque", group="Duty and requirements", kind="number",
+        label="Holding torque at the screw", group="Duty and requirements", kind="number",
         help="Vertical axis (or a load of fixed direction): a brake's, or a stepper's "
         "energised holding torque (say which below), at the screw; empty when the screw "
         "must hold the load by itself, or, when the motor holds it energised, for the "
@@ -480,7 +480,7 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="motor_holding_torque_nm", page="motor_holding_torque",
-        core="motor_holding_torque_nm", label="Holding torque",
+        core="motor_holding_torque_nm", label="Motor holding torque",
         help="At the phase current: with the step angle and the four values above it "
         "draws the stepper's pull-out curve (when no curve is given)",
         group="Motor and move", kind="number", bounds=(1e-4, 100.0), dimension="torque",
@@ -571,7 +571,7 @@ FIELDS: tuple[InputField, ...] = (
         help="A failed recommendation (e.g. the traverse speed for a lead): a warning (such "
         "screws always rank after those without one), or reject them",
         group="Results", kind="choice", default="warn", options=AdvicePolicy,
-        texts={"warn": "Warn and rank last", "reject": "Reject"},
+        texts={"warn": "Warn and rank them last", "reject": "Reject them"},
         retired={"rank": "warn"},
         catalog_only=True,
     ),

@@ -33,12 +33,14 @@ from app.contract.inputs import (
     exact_text,
 )
 from app.contract.units import (
+    ACCEL_UNITS,
     DEFAULT_UNITS,
     FORCE_UNITS,
     LENGTH_UNITS,
     TORQUE_UNITS,
     UNIT_QUANTITIES,
     Quantity,
+    accel_choice,
     display_system,
     exact_factor,
     exact_offset,
@@ -47,7 +49,12 @@ from app.contract.units import (
     to_api,
 )
 
-UNIT_CHOICES = {"force_unit": FORCE_UNITS, "length_unit": LENGTH_UNITS, "torque_unit": TORQUE_UNITS}
+UNIT_CHOICES = {
+    "force_unit": FORCE_UNITS,
+    "length_unit": LENGTH_UNITS,
+    "torque_unit": TORQUE_UNITS,
+    "accel_unit": ACCEL_UNITS,
+}
 #: prefix of the hidden fields that record which units the form's numbers are in.
 ENTERED_PREFIX = "from_"
 #: prefix of the hidden fields that keep a number as typed, with its unit ('50|N').
@@ -158,11 +165,14 @@ def read_number(text: str) -> tuple[float | None, str]:
 
 
 def parse_units(params: Mapping[str, str]) -> dict[str, str]:
-    """Display units from the query, unknown values falling back to metric."""
-    return {
+    """Display units from the query, unknown values falling back to metric (the
+    acceleration to in/s² on a page in inches, ``accel_choice``)."""
+    units = {
         key: params.get(key, default) if params.get(key, default) in UNIT_CHOICES[key] else default
         for key, default in DEFAULT_UNITS.items()
     }
+    units["accel_unit"] = accel_choice({**units, "accel_unit": params.get("accel_unit", "")})
+    return units
 
 
 def _api_value(field: InputField, raw: str, units: dict[str, str]) -> tuple[Any, str]:
@@ -591,6 +601,14 @@ def _exact_curve(inputs: ApplicationIn, field: InputField) -> Any:
     return getattr(inputs, field.api) if field.kind == "curve" else None
 
 
+def _unit_default(key: str, units: Mapping[str, str]) -> str:
+    """The choice a link without ``key`` is read with (the acceleration's follows the
+    length's: in/s² in inches), so a link names every other."""
+    if key == "accel_unit":
+        return accel_choice({**units, "accel_unit": ""})
+    return DEFAULT_UNITS[key]
+
+
 def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
     """Query string of the page link for these inputs: required fields and non-defaults,
     each number reproducing the input exactly."""
@@ -600,7 +618,7 @@ def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS)
     ]
     if inputs.moves:
         pairs.append((MOVES, moves_text(inputs.moves)))
-    pairs += [(k, v) for k, v in units.items() if v != DEFAULT_UNITS[k]]
+    pairs += [(k, v) for k, v in units.items() if v != _unit_default(k, units)]
     return urlencode(pairs)
 
 

@@ -230,7 +230,8 @@ REPORTED: tuple[Reported, ...] = (
         "Peak torque",
         "Given a move: the largest motor torque of any moving segment (accelerating, "
         "running, braking, either way) or of starting from rest, the rotor's inertia "
-        "included, before the torque safety factor; below it, the torque while accelerating.",
+        "included, before the torque safety factor; below it, the segment it occurs in "
+        "(and the torque while accelerating when that is another).",
         quantity="torque",
         better="lower",
         cell="peak",

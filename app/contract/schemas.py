@@ -116,6 +116,10 @@ class TorqueOut(BaseModel):
         "starting from rest, rotor included, before the torque safety factor: what the "
         "drive must give at its peak (the results table's torque when a move is given).",
     )
+    peak_segment: Annotated[str, From("peak_segment")] = Field(
+        description="Where the peak motor torque occurs: 'starting from rest' (the "
+        "break-away) or a moving segment of either move ('decelerating down').",
+    )
 
 
 class ProfileOut(BaseModel):
@@ -252,6 +256,14 @@ class RestOut(BaseModel):
     )
 
 
+class SkipOut(BaseModel):
+    check: Annotated[str, From("check")] = Field(description="The check's name.")
+    label: Annotated[str, From("label")]
+    missing: Annotated[list[str], From("missing")] = Field(
+        description="The values this screw lacks that the check reads, in words."
+    )
+
+
 class VerdictOut(BaseModel):
     """Why this screw: what governs it, what that rests on, what to watch."""
 
@@ -274,6 +286,14 @@ class VerdictOut(BaseModel):
     )
     text: Annotated[str, From("text", via=phrase_text)] = Field(
         description="All of it in one or two sentences."
+    )
+    skipped: Annotated[list[SkipOut], From("skipped")] = Field(
+        description="Checks that run for this application but could not for this screw, "
+        "each with the values it lacks."
+    )
+    summary: Annotated[str, From("summary", via=phrase_text)] = Field(
+        description="Passes or fails in one line; never 'passes every check' when a check "
+        "could not run, and then which did not and why."
     )
 
 

@@ -16,6 +16,7 @@ from pydantic import (
 )
 
 from app.contract.inputs import ApplicationIn, NotBool, bounded_number
+from app.contract.schemas import ProvenanceOut
 
 
 class MaterialIn(BaseModel):
@@ -62,7 +63,7 @@ class CustomScrewIn(BaseModel):
     friction_static: Annotated[
         float, bounded_number(1e-3, 1.0, "Static friction coefficient."), NotBool
     ]
-    material: Literal["steel", "stainless-303"] | MaterialIn = "steel"
+    material: Literal["steel", "stainless-303", "c45-steel", "stainless-304"] | MaterialIn = "steel"
     drag_torque_nm: Annotated[
         float, bounded_number(0.0, 1e4, "Nut drag torque [N m]."), NotBool
     ] = 0.0
@@ -79,6 +80,22 @@ class CustomScrewIn(BaseModel):
     pv_limit_mpa_m_s: (
         Annotated[float, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s]."), NotBool] | None
     ) = None
+    pitch_mm: (
+        Annotated[
+            float,
+            bounded_number(0.01, 1000.0, "Thread pitch [mm]: the lead over the starts."),
+            NotBool,
+        ]
+        | None
+    ) = None
+    nut_material: str | None = Field(
+        default=None,
+        max_length=40,
+        description="A catalog nut material (GET /api/v1/nut-materials: 'bronze', "
+        "'acetal', 'ptfe'): its limits rate the nut, with the nut length its catalog family "
+        "takes (2 x d; the application's nut_length_mm sets another); a nut rated by "
+        "contact pressure needs pitch_mm.",
+    )
 
     @field_validator("root_diameter_mm")
     @classmethod
@@ -86,6 +103,17 @@ class CustomScrewIn(BaseModel):
         outer = info.data.get("outer_diameter_mm")
         if outer is not None and value >= outer:
             raise ValueError("must be smaller than outer_diameter_mm")
+        return value
+
+    @field_validator("pitch_mm")
+    @classmethod
+    def _pitch_divides_lead(cls, value: float | None, info: ValidationInfo) -> float | None:
+        lead = info.data.get("lead_mm")
+        if value is None or lead is None:
+            return value
+        starts = round(lead / value)
+        if starts < 1 or not math.isclose(lead, starts * value):
+            raise ValueError(f"the lead {lead:g} mm must be a whole number of pitches")
         return value
 
     @field_validator("friction_dynamic", "friction_static")
@@ -124,3 +152,23 @@ class EvaluateIn(BaseModel):
 
     application: ApplicationIn
     screw: ScrewIn
+
+
+class NutValueOut(BaseModel):
+    label: str
+    value: str = Field(description="The value as text with its unit (MPa, m/s, mm³/(N m)).")
+    provenance: ProvenanceOut | None
+
+
+class NutMaterialOut(BaseModel):
+    key: str = Field(description="The name a custom screw's nut_material takes.")
+    name: str
+    family: str = Field(description="The catalog family its values are read from.")
+    values: list[NutValueOut]
+
+
+class NutMaterialsOut(BaseModel):
+    """The catalog's nut materials a custom screw may take, with their limits."""
+
+    catalog_version: str
+    nut_materials: list[NutMaterialOut]

@@ -65,14 +65,20 @@ DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
     },
     "length_unit": {
         "mm": {
-            "length": "mm", "speed": "mm/s", "accel": "mm/s²", "pressure": "MPa", "pv": "MPa m/s",
+            "length": "mm", "speed": "mm/s", "pressure": "MPa", "pv": "MPa m/s",
             "temperature": "°C", "temperature_rise": "K", "travel": "km travelled",
         },
         "in": {
-            "length": "in", "speed": "in/s", "accel": "in/s²", "pressure": "psi",
+            "length": "in", "speed": "in/s", "pressure": "psi",
             "pv": "psi ft/min", "temperature": "°F", "temperature_rise": "°F rise",
             "travel": "mi",
         },
+    },
+    "accel_unit": {
+        "mm_s2": {"accel": "mm/s²"},
+        "m_s2": {"accel": "m/s²"},
+        "g": {"accel": "g"},
+        "in_s2": {"accel": "in/s²"},
     },
     "torque_unit": {
         "N_m": {"torque": "N m", "inertia": "kg m²"},
@@ -81,7 +87,14 @@ DISPLAY_CHOICES: dict[str, dict[str, dict[Quantity, str]]] = {
     },
 }  # fmt: skip
 #: the page's default choices: the API's units.
-DEFAULT_UNITS = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
+DEFAULT_UNITS = {
+    "force_unit": "N",
+    "length_unit": "mm",
+    "torque_unit": "N_m",
+    "accel_unit": "mm_s2",
+}
+#: the acceleration unit a page in inches takes when its query names none (in/s²).
+INCH_ACCEL = "in_s2"
 #: switch -> the dimensions it sets.
 UNIT_QUANTITIES: dict[str, tuple[Quantity, ...]] = {
     key: tuple(choices[DEFAULT_UNITS[key]]) for key, choices in DISPLAY_CHOICES.items()
@@ -105,8 +118,34 @@ def _choice_factors(key: str, main: Quantity) -> dict[str, float]:
 FORCE_UNITS = _choice_factors("force_unit", "force")
 LENGTH_UNITS = _choice_factors("length_unit", "length")
 TORQUE_UNITS = _choice_factors("torque_unit", "torque")
-#: torque choice -> its symbol, for the page's switch.
+ACCEL_UNITS = _choice_factors("accel_unit", "accel")
+#: torque and acceleration choices -> their symbols, for the page's switches.
 TORQUE_LABELS = {c: u["torque"] for c, u in DISPLAY_CHOICES["torque_unit"].items()}
+UNIT_LABELS = {
+    **TORQUE_LABELS,
+    **{c: u["accel"] for c, u in DISPLAY_CHOICES["accel_unit"].items()},
+    "g": "g (9.80665 m/s²)",
+}
+
+
+def accel_choice(units: Mapping[str, str]) -> str:
+    """The acceleration switch's choice: the one given, else in/s² on a page in inches
+    and mm/s² otherwise (a link from before the switch keeps its unit).
+
+    >>> accel_choice({"length_unit": "in"}), accel_choice({"length_unit": "in", "accel_unit": "g"})
+    ('in_s2', 'g')
+    """
+    given = units.get("accel_unit")
+    if given in DISPLAY_CHOICES["accel_unit"]:
+        return given
+    return INCH_ACCEL if units.get("length_unit") == "in" else DEFAULT_UNITS["accel_unit"]
+
+
+def _key(units: Mapping[str, str]) -> tuple[str, ...]:
+    """The display system's key of the page's ``units``: its choices in the switches'
+    order."""
+    chosen = {**units, "accel_unit": accel_choice(units)}
+    return tuple(chosen[key] for key in DISPLAY_CHOICES)
 
 
 def _offset(symbol: str) -> float:
@@ -139,8 +178,7 @@ DISPLAY_OFFSETS = {
 
 
 def _display_unit(quantity: Quantity, units: Mapping[str, str]) -> Unit:
-    choices = (units["force_unit"], units["length_unit"], units["torque_unit"])
-    return UNITS[_chosen(choices)[quantity]]
+    return UNITS[_chosen(_key(units))[quantity]]
 
 
 def exact_factor(quantity: Quantity, units: Mapping[str, str]) -> Fraction:
@@ -161,8 +199,7 @@ def offset(quantity: Quantity, units: Mapping[str, str]) -> float:
     >>> offset("temperature", {**DEFAULT_UNITS, "length_unit": "in"})
     -17.77777777777778
     """
-    key = (units["force_unit"], units["length_unit"], units["torque_unit"])
-    return DISPLAY_OFFSETS[key].get(quantity, 0.0)
+    return DISPLAY_OFFSETS[_key(units)].get(quantity, 0.0)
 
 
 def display_system(units: Mapping[str, str]) -> dict[Quantity, tuple[str, float]]:
@@ -172,7 +209,7 @@ def display_system(units: Mapping[str, str]) -> dict[Quantity, tuple[str, float]
     ...     "speed"]
     ('in/s', 25.4)
     """
-    return DISPLAY_SYSTEMS[units["force_unit"], units["length_unit"], units["torque_unit"]]
+    return DISPLAY_SYSTEMS[_key(units)]
 
 
 def api_to_si(value: float, quantity: Quantity) -> float:

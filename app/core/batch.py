@@ -92,6 +92,18 @@ class Batch:
         return [tuple(checks) for checks in per]
 
     @cached_property
+    def skipped(self) -> list[tuple[Check, ...]]:
+        """Per candidate, every check that runs for this application but not for this
+        candidate (a value it reads is missing), in registry order."""
+        sc, at = self.screening, self.at
+        per: list[list[Check]] = [[] for _ in at]
+        for name, m in sc.measures.items():
+            for applies, out in zip(m.applicable[at].tolist(), per, strict=True):
+                if not applies:
+                    out.append(BY_NAME[name])
+        return [tuple(checks) for checks in per]
+
+    @cached_property
     def motions(self) -> list[Motion | None]:
         """The move and its segments' torques per candidate (None each without a stroke)."""
         p = motion.move_profile(self.app)

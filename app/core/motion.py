@@ -418,6 +418,12 @@ def _move(
     ]
 
 
+def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]]:
+    """The moving segments of both moves, name and direction, in the order of
+    ``moving_torques``."""
+    return [(name, direction) for direction, _ in directions(app) for name, _ in RAMPS]
+
+
 def moving_torques(
     app: Application, t: CandidateTable
 ) -> list[tuple[SegmentName, Direction, float, Array]]:

@@ -203,6 +203,9 @@ class Quantities(Generic[V]):
     compressive_force_n: V
     inertia_motor_nm: V
     peak_torque_nm: V
+    #: where the peak torque occurs: the index of its segment in
+    #: ``motion.moving_torques`` (-1: starting from rest, the break-away)
+    peak_torque_segment: V
     #: the load held at rest (``motion.steady_load``: weight and loads of fixed direction;
     #: friction holds nothing) [N]
     holding_force_n: V
@@ -292,6 +295,7 @@ def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
     )
     moving = np.stack([np.abs(m[3]) for m in motion.moving_torques(app, t)])
     peak = np.maximum(moving.max(axis=0), t_start)
+    segment = np.where(moving.max(axis=0) > t_start, np.argmax(moving, axis=0), -1)
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
@@ -304,6 +308,7 @@ def _torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, A
         "total_nm": t_total,
         "breakaway_nm": t_start,
         "peak_torque_nm": peak,
+        "peak_torque_segment": segment,
         "required_nm": peak * app.torque_safety_factor,
     }
 

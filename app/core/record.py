@@ -19,6 +19,7 @@ from operator import attrgetter
 from app.core.batch import Batch, CheckResult, Numbers
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.back_driving import rule_note
+from app.core.checks.base import Check
 from app.core.model import (
     PV,
     Accuracy,
@@ -143,6 +144,11 @@ class Candidate:
     def checks(self) -> tuple[CheckResult, ...]:
         """Every check that applies, in registry order."""
         return self.batch.results[self.k]
+
+    @property
+    def skipped(self) -> tuple[Check, ...]:
+        """The checks that run for this application but could not for this screw."""
+        return self.batch.skipped[self.k]
 
     @cached_property
     def governing(self) -> CheckResult | None:

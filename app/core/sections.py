@@ -80,6 +80,24 @@ class Torque(Section):
     def safety_factor(self) -> float:
         return self.app.torque_safety_factor
 
+    @property
+    def peak_segment(self) -> str:
+        """Where the peak motor torque occurs, in words: "starting from rest" (the
+        break-away) or the moving segment's ("decelerating down")."""
+        index = int(self.batch.column("peak_torque_segment")[self.k])
+        if index < 0:
+            return "starting from rest"
+        name, direction = motion.moving_segment_names(self.app)[index]
+        return f"{SEGMENT_WORDS[name]} {direction}"
+
+
+#: A moving segment's name as the sub-line of the peak torque says it.
+SEGMENT_WORDS = {
+    "accelerate": "accelerating",
+    "constant": "at constant speed",
+    "decelerate": "decelerating",
+}
+
 
 class CriticalSpeed(Section):
     """The screw's critical speed and the speed allowed [rpm], and the margin

@@ -93,6 +93,7 @@ UNITS: dict[str, Unit] = {
         _unit("m/s²", "accel", 1),
         _unit("mm/s²", "accel", _MM),
         _unit("in/s²", "accel", _IN),
+        _unit("g", "accel", _G_N),
         _unit("N m", "torque", 1),
         _unit("oz in", "torque", _LBF / 16 * _IN),
         _unit("lb in", "torque", _LBF * _IN),

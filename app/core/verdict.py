@@ -16,6 +16,7 @@ from typing import Protocol
 
 from app.core import motion
 from app.core.batch import CheckResult
+from app.core.checks.base import Check
 from app.core.model import Application, Provenance, ScrewSpec
 from app.core.phrase import Amount, Phrase, join
 
@@ -31,6 +32,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "design_load": "design load",
     "design_load_factor": "design load factor",
     "drag_torque": "nut drag torque",
+    "dynamic_pressure": "flank pressure rating in motion",
     "dynamic_load": "dynamic load rating",
     "friction_dynamic": "running friction",
     "friction_static": "static friction",
@@ -68,6 +70,30 @@ UNIT_ENDINGS = ("_mm3_n_m", "_mpa_m_s", "_n_m", "_m_s", "_mpa", "_lbf", "_kgf", 
 VARIANT_ENDINGS = ("_uncoated", "_tfe", "_bronze", "_acetal", "_ptfe")
 #: Provenance kinds a result may rest on without having been measured for this part.
 UNCERTAIN = ("assumed",)
+#: The screw's value behind each catalog key a check reads that a screw may lack (None or
+#: an empty table: not given), to say why a check could not run.
+SPEC_VALUES: Mapping[str, str] = {
+    "allowed_wear": "allowed_wear_fraction",
+    "bearing_pressure": "bearing_pressure_table",
+    "bearing_pv_limit": "nut_pv_limit_pa_m_s",
+    "design_load": "design_load_n",
+    "dynamic_pressure": "dynamic_pressure_pa",
+    "lead_accuracy": "lead_accuracy_m_per_m",
+    "life": "life_min_m",
+    "max_length": "max_length_m",
+    "max_pressure": "max_pressure_pa",
+    "max_sliding_speed": "max_sliding_speed_m_s",
+    "nut_length": "nut_length_m",
+    "outgassing": "outgassing",
+    "pitch": "pitch_m",
+    "pv_limit": "pv_limit_pa_m_s",
+    "repeatability": "repeatability_m",
+    "temperature_range": "temperature_max_c",
+    "thermal_conductivity": "thermal_conductivity_w_m_k",
+    "traverse_speed": "traverse_bands",
+    "wear_rate": "wear_rate_m2_n",
+    "yield_strength": "yield_strength_pa",
+}
 
 
 @lru_cache(maxsize=1024)  # a pure function of the key, read for every verdict
@@ -119,6 +145,73 @@ class Rest:
     hinges: bool
 
 
+@dataclass(frozen=True, slots=True)
+class Skip:
+    """A check that runs for the application but could not for this screw: its name,
+    its label and the values the screw lacks, in words."""
+
+    check: str
+    label: str
+    missing: tuple[str, ...]
+
+    def phrase(self) -> str:
+        """'Nut contact pressure (no nut length or pitch)'."""
+        names = list(self.missing)
+        listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
+        return f"{self.label} (no {listed})"
+
+
+#: Thread values a nut rating is read over (the engaged flank area): missing, they
+#: stop the check whatever the nut's rating.
+THREAD_VALUES = ("nut_length", "pitch")
+
+
+def _lacks(screw: ScrewSpec, key: str) -> bool:
+    attr = SPEC_VALUES.get(key)
+    return attr is not None and getattr(screw, attr) in (None, ())
+
+
+def missing_values(check: Check, screw: ScrewSpec) -> tuple[str, ...]:
+    """The values ``check`` needs that ``screw`` lacks, in words, each once: its
+    capacity's values (the limit it is held to) and the thread values its rating is read
+    over; when one of its ratings is there, only the thread values it lacks."""
+    ratings = [k for k in check.capacity_sources if k not in THREAD_VALUES] or [
+        k for k in check.sources if k not in THREAD_VALUES and k in SPEC_VALUES
+    ]
+    thread = [k for k in THREAD_VALUES if k in check.sources or k in check.capacity_sources]
+    rated = any(not _lacks(screw, k) for k in ratings if k in SPEC_VALUES)
+    needed = thread if rated else [*ratings, *thread]
+    return tuple(dict.fromkeys(value_label(k) for k in needed if _lacks(screw, k)))
+
+
+def skips(checks: Sequence[Check], screw: ScrewSpec) -> tuple[Skip, ...]:
+    """Each check in ``checks`` that could not run for ``screw`` for want of a value,
+    with the values it lacks (a check with nothing to judge on this screw, such as oil on
+    a nut that suits oil, is not a skip)."""
+    found = (Skip(c.name, c.label, missing_values(c, screw)) for c in checks)
+    return tuple(skip for skip in found if skip.missing)
+
+
+def summary(passed: bool, checks: Sequence[CheckResult], skipped: Sequence[Skip]) -> Phrase:
+    """The one-line summary every page shows: never "passes every check" when a check
+    could not run; then the checks that did not run and why.
+
+    A pass with nothing skipped is "Passes every check."; with skipped checks it is
+    "Passes the N checks that ran; not checked: ...".
+    """
+    limits = [c for c in checks if c.kind == "limit"]
+    if not passed:
+        failed = [c.label for c in checks if not c.passed and c.kind == "limit"]
+        head = f"Fails {', '.join(failed)}." if failed else "Fails."
+    elif not skipped:
+        head = "Passes every check."
+    else:
+        head = f"Passes the {len(limits)} checks that ran."
+    if not skipped:
+        return Phrase(head)
+    return Phrase(f"{head} Not checked: {'; '.join(s.phrase() for s in skipped)}.")
+
+
 @dataclass(frozen=True)
 class Verdict:
     """A candidate's verdict: the governing check (name, label, utilisation, margin =
@@ -135,6 +228,8 @@ class Verdict:
     #: whether the candidate passes, and its governing check (the sentence's words)
     passed: bool
     governing: CheckResult | None
+    skipped: tuple[Skip, ...]
+    summary: Phrase
 
     @cached_property
     def text(self) -> Phrase:
@@ -156,6 +251,8 @@ class Record(Protocol):
     def governing(self) -> CheckResult | None: ...
     @property
     def warnings(self) -> tuple[CheckResult, ...]: ...
+    @property
+    def skipped(self) -> tuple[Check, ...]: ...
     @property
     def hinges_on(self) -> tuple[str, ...]: ...
     @property
@@ -241,6 +338,7 @@ def verdict(c: Record) -> Verdict:
     rest = rests_on(g, c.screw.provenance, c.hinges_on)
     watch = watch_list(c)
     u = None if g is None else g.utilization
+    skipped = skips(c.skipped, c.screw)
     return Verdict(
         governs=None if g is None else g.name,
         governs_label="" if g is None else g.label,
@@ -250,4 +348,6 @@ def verdict(c: Record) -> Verdict:
         watch=watch,
         passed=bool(c.passed),
         governing=g,
+        skipped=skipped,
+        summary=summary(bool(c.passed), c.checks, skipped),
     )

@@ -13,15 +13,28 @@ from collections.abc import Mapping as Units
 from typing import Any, cast
 
 from app.catalog import Material, Series
+from app.catalog.own import (
+    NutMaterial,
+    OwnGeometry,
+    UnknownNutMaterial,
+    own_screw,
+    user_material,
+)
 from app.contract.fields import FIELDS
 from app.contract.outputs import ChangeOut, CountsOut, RemedyOut, SummaryOut
-from app.contract.schemas import CandidateOut
-from app.contract.screws import CustomScrewIn, MaterialIn
+from app.contract.schemas import CandidateOut, ProvenanceOut
+from app.contract.screws import (
+    CustomScrewIn,
+    MaterialIn,
+    NutMaterialOut,
+    NutMaterialsOut,
+    NutValueOut,
+)
 from app.contract.source import Writer
-from app.contract.units import DEFAULT_UNITS, api_to_si, render
-from app.core.formulas import torque
+from app.contract.units import DEFAULT_UNITS, api_to_si, from_si, render, sig
 from app.core.model import Provenance, ScrewSpec
-from app.core.record import GEOMETRY_SOURCES, Candidate
+from app.core.phrase import Quantity
+from app.core.record import Candidate
 from app.core.selection import Selection
 from app.report.reader import reader
 
@@ -139,61 +152,131 @@ def series_dict(series: Series) -> dict[str, Any]:
     }
 
 
-def custom_screw(data: CustomScrewIn, materials: Mapping[str, Material]) -> ScrewSpec:
-    """A ScrewSpec from a validated ``CustomScrewIn``; named materials from the catalog."""
-    user = Provenance("user", "given in the request")
-    yield_prov: Provenance | None = user
+def custom_screw(
+    data: CustomScrewIn,
+    materials: Mapping[str, Material],
+    nuts: Mapping[str, NutMaterial] | None = None,
+) -> ScrewSpec:
+    """A ScrewSpec from a validated ``CustomScrewIn`` (``app.catalog.own``): named screw
+    materials from the catalog, the user's own with the thermal expansion of steel, and
+    the catalog's nut material by name (``nuts``; UnknownNutMaterial for a name it lacks)."""
     if isinstance(data.material, MaterialIn):
-        e, rho = data.material.youngs_modulus_pa, data.material.density_kg_m3
-        alpha = materials["steel"].expansion_per_k.value
-        yield_pa = data.material.yield_strength_pa
+        own = data.material
+        material = user_material(
+            own.youngs_modulus_pa, own.density_kg_m3, own.yield_strength_pa, materials["steel"]
+        )
         material_name = "custom"
-        e_prov = rho_prov = user
     else:
-        material = materials[data.material]
-        e, rho = material.youngs_modulus_pa.value, material.density_kg_m3.value
-        alpha = material.expansion_per_k.value
-        strength = material.yield_strength_pa
-        yield_pa = None if strength is None else strength.value
-        yield_prov = None if strength is None else strength.provenance
-        material_name = data.material
-        e_prov, rho_prov = material.youngs_modulus_pa.provenance, material.density_kg_m3.provenance
-    rd = api_to_si(data.root_diameter_mm, "length")
-    inertia = data.inertia_kg_m2_per_m
-    if inertia is None:
-        inertia = torque.solid_rod_inertia_per_length(rho, rd)
-        inertia_prov = Provenance("derived", "solid rod at the root diameter: rho pi d_r^4 / 32")
-    else:
-        inertia_prov = user
-    return ScrewSpec(
-        id="custom",
-        series_id="custom",
-        series_name="Custom screw",
-        anti_backlash=False,
-        coated=False,
+        material, material_name = materials[data.material], data.material
+    nut = None
+    if data.nut_material is not None:
+        nut = (nuts or {}).get(data.nut_material)
+        if nut is None:
+            known = ", ".join(nuts or {}) or "none"
+            raise UnknownNutMaterial(f"unknown nut material '{data.nut_material}' (known: {known})")
+    geometry = OwnGeometry(
         outer_diameter_m=api_to_si(data.outer_diameter_mm, "length"),
-        root_diameter_m=rd,
+        root_diameter_m=api_to_si(data.root_diameter_mm, "length"),
         lead_m=api_to_si(data.lead_mm, "length"),
         thread_half_angle_rad=math.radians(data.thread_half_angle_deg),
         friction_static=data.friction_static,
         friction_dynamic=data.friction_dynamic,
-        youngs_modulus_pa=e,
-        density_kg_m3=rho,
-        screw_expansion_per_k=alpha,
-        inertia_kg_m2_per_m=inertia,
-        drag_torque_min_nm=data.drag_torque_nm,
-        drag_torque_max_nm=data.drag_torque_nm,
-        pv_limit_pa_m_s=(
-            None if data.pv_limit_mpa_m_s is None else api_to_si(data.pv_limit_mpa_m_s, "pv")
-        ),
-        material_name=material_name,
-        yield_strength_pa=yield_pa,
-        provenance={
-            **({"yield_strength": yield_prov} if yield_pa is not None and yield_prov else {}),
-            **dict.fromkeys(GEOMETRY_SOURCES, user),
-            "pv_limit": user,
-            "inertia_per_length": inertia_prov,
-            "youngs_modulus": e_prov,
-            "density": rho_prov,
-        },
+        drag_torque_nm=data.drag_torque_nm,
+        pv_limit_pa_m_s=_si_or_none(data.pv_limit_mpa_m_s, "pv"),
+        inertia_kg_m2_per_m=data.inertia_kg_m2_per_m,
+        pitch_m=_si_or_none(data.pitch_mm, "length"),
+    )
+    return own_screw(geometry, material, material_name, nut)
+
+
+def _si_or_none(value: float | None, quantity: Quantity) -> float | None:
+    return None if value is None else api_to_si(value, quantity)
+
+
+#: A nut material's values as the page lists them: (key of its provenance, label).
+NUT_ROWS = (
+    ("bearing_pressure", "Allowed contact pressure by sliding speed"),
+    ("max_pressure", "Maximum contact pressure"),
+    ("bearing_pv_limit", "PV limit over the engaged flanks"),
+    ("max_sliding_speed", "Maximum sliding speed"),
+    ("dynamic_thrust", "Allowable dynamic thrust by size"),
+    ("wear_rate", "Specific wear rate"),
+    ("allowed_wear", "Allowed wear depth, share of the flank height"),
+    ("temperature_range", "Temperature range"),
+    ("oil_compatible", "Oil and lubricants"),
+    ("friction_dynamic", "Running friction the catalog takes (yours is used)"),
+)
+
+
+def _nut_text(nut: NutMaterial, key: str) -> str | None:
+    """One value of a nut material as text in SI-derived units (MPa, m/s, mm³/(N m))."""
+    limits = nut.limits
+    if key == "bearing_pressure":
+        table = limits["bearing_pressure_table"]
+        rows = [f"{sig(v)} m/s: {sig(from_si(p, 'MPa'))} MPa" for v, p in table]  # type: ignore[attr-defined]
+        return "; ".join(rows) or None
+    if key == "dynamic_thrust":
+        if nut.thrust_table is None:
+            return None
+        rows = nut.thrust_table.value
+        sizes = [
+            f"Tr{sig(from_si(d, 'mm'))}x{sig(from_si(p, 'mm'))} {sig(n)} N" for d, p, n in rows
+        ]
+        return ", ".join(sizes)
+    if key == "temperature_range":
+        t = nut.temperature_c
+        return None if t is None else f"{sig(t[0])} to {sig(t[1])} °C"
+    if key == "oil_compatible":
+        return "suits oil" if nut.oil_compatible else "no oil"
+    if key == "friction_dynamic":
+        return f"{sig(nut.friction_dynamic)} (static {sig(nut.friction_static)})"
+    spec_name, unit = NUT_UNITS[key]
+    value = limits.get(spec_name)
+    return None if value is None else f"{sig(from_si(float(value), unit))} {unit}".strip()  # type: ignore[arg-type]
+
+
+#: The ScrewSpec value and the unit each plain nut value is shown in.
+NUT_UNITS = {
+    "max_pressure": ("max_pressure_pa", "MPa"),
+    "bearing_pv_limit": ("nut_pv_limit_pa_m_s", "MPa m/s"),
+    "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
+    "wear_rate": ("wear_rate_m2_n", "mm³/(N m)"),
+    "allowed_wear": ("allowed_wear_fraction", ""),
+}
+
+
+def nut_rows(nut: NutMaterial) -> list[tuple[str, str, Provenance | None]]:
+    """(label, value, provenance) of each value a catalog nut material gives."""
+    rows = []
+    for key, row_label in NUT_ROWS:
+        text = _nut_text(nut, key)
+        if text is not None:
+            rows.append((row_label, text, nut.provenance.get(key)))
+    return rows
+
+
+def _provenance_out(p: Provenance | None) -> ProvenanceOut | None:
+    return None if p is None else ProvenanceOut.model_validate({"kind": p.kind, "source": p.source})
+
+
+def nut_materials_out(nuts: Mapping[str, NutMaterial], version: str) -> NutMaterialsOut:
+    """The catalog's nut materials with each value's text and provenance."""
+    return NutMaterialsOut(
+        catalog_version=version,
+        nut_materials=[
+            NutMaterialOut(
+                key=key,
+                name=nut.name,
+                family=nut.family,
+                values=[
+                    NutValueOut(
+                        label=label,
+                        value=text,
+                        provenance=_provenance_out(p),
+                    )
+                    for label, text, p in nut_rows(nut)
+                ],
+            )
+            for key, nut in nuts.items()
+        ],
     )

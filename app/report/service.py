@@ -136,7 +136,7 @@ def run_evaluation(
         candidate = evaluate(app, index.row(position), index.table.reach)
         variants, (at,) = index.variants_at([position])
     else:
-        spec = custom_screw(screw, catalog.materials)
+        spec = custom_screw(screw, catalog.materials, catalog.nut_materials)
         candidate = evaluate(app, spec)  # a screw of the user's own: any size can be made
         variants, at = build_variants([spec]), 0
     candidate = with_robustness(app, candidate, variants, at)

@@ -17,6 +17,7 @@ from app.contract.schemas import ApplicationIn
 from app.contract.screws import CustomScrewIn
 from app.contract.units import Display, api_value
 from app.core import motion
+from app.report.present import nut_rows
 from app.report.service import run_evaluation
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
@@ -31,6 +32,8 @@ from app.web.screw_form import (
     MATERIAL_FIELDS,
     MATERIAL_LABEL,
     MATERIALS,
+    NUT_FIELD,
+    NUT_LABEL,
     OWN_MATERIAL,
     SCREW_FIELDS,
     convert_screw,
@@ -98,10 +101,17 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     """Parse the page query; evaluate the screw once the form is filled in and valid."""
     context = _base_context(params, catalog)
     values = context["values"]
+    nuts = catalog.nut_materials
+    chosen = values.get(NUT_FIELD, "").strip()
+    context.update(nut_materials=nuts, nut_label=NUT_LABEL, nut=nuts.get(chosen))
+    context["nut_rows"] = nut_rows(nuts[chosen]) if chosen in nuts else []
     if not _started(values):
         return context
     inputs, app_errors = parse_inputs(values, context["units"], catalog.motors, catalog.supports)
     screw, screw_errors = parse_screw(values, context["units"])
+    if chosen and chosen not in nuts:
+        screw_errors[NUT_FIELD] = f"Choose one of: {', '.join(nuts)}, or none."
+        screw = None
     context["errors"] = {**app_errors, **screw_errors}
     if inputs is None or screw is None:
         return context
@@ -158,6 +168,8 @@ def _label(name: str) -> str:
     """The form label of a screw or application field; other keys as they are."""
     if name == "material":
         return MATERIAL_LABEL
+    if name == NUT_FIELD:
+        return NUT_LABEL
     if name in BY_NAME:
         return BY_NAME[name].label
     return BY_PAGE[name].label if name in BY_PAGE else name

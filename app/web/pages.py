@@ -27,7 +27,7 @@ from app.contract.params import unknown_parameters
 from app.contract.reported import columns, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
-from app.contract.units import TORQUE_LABELS, Display
+from app.contract.units import UNIT_LABELS, Display
 from app.report.pairs import run_pairs
 from app.report.service import (
     BadIds,
@@ -99,7 +99,7 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
         "true_words": TRUE_WORDS,
         "set_groups": set_groups,
         "unit_choices": UNIT_CHOICES,
-        "torque_labels": TORQUE_LABELS,
+        "unit_labels": UNIT_LABELS,
     }
 
 
@@ -275,7 +275,7 @@ def _detail_page(request: Request, catalog: Catalog) -> Response:
     inputs, units = link_inputs(request.query_params, catalog, ("id",))
     c = page_candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
-    try_query = catalog_screw_query(catalog.by_id[c.id], units)
+    try_query = catalog_screw_query(catalog.by_id[c.id], units, catalog.nut_materials)
     context = {
         "c": c,
         "d": Display(units),

@@ -10,7 +10,7 @@ named materials or 'custom', which takes the ``MaterialIn`` fields.
 """
 
 import math
-from collections.abc import Mapping
+from collections.abc import Container, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, get_args
@@ -43,6 +43,11 @@ from app.core.model import ScrewSpec
 OWN_MATERIAL = "custom"
 #: the form's label of the material choice.
 MATERIAL_LABEL = "Screw material"
+#: the nut material choice: one of the catalog's nut materials, or none (the page's
+#: name; ``nut_material`` is the selector's catalog filter, the API's is NUT_API).
+NUT_FIELD = "nut"
+NUT_API = "nut_material"
+NUT_LABEL = "Nut material"
 
 
 @dataclass(frozen=True, slots=True)
@@ -98,7 +103,7 @@ def _number_fields(model: type[BaseModel]) -> tuple[ScrewField, ...]:
     """The number fields of ``model`` (all but the material) in declaration order."""
     fields = []
     for name, info in model.model_fields.items():
-        if name == "material":
+        if name in ("material", NUT_API):
             continue
         default = "" if info.is_required() or info.default is None else f"{info.default:g}"
         label, unit, hint = split_description(_description(info))
@@ -192,6 +197,9 @@ def parse_screw(
         data["material"] = material
     else:
         errors["material"] = f"Choose one of: {', '.join(MATERIALS)}."
+    nut = params.get(NUT_FIELD, "").strip()
+    if nut:
+        data[NUT_API] = nut
     screw = _validate(CustomScrewIn, data, errors, units)
     return (screw if isinstance(screw, CustomScrewIn) else None), errors
 
@@ -209,7 +217,10 @@ def screw_values(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS)
     the display ``units``."""
     dump = screw.model_dump()
     material = dump.pop("material")
+    nut = dump.pop(NUT_API)
     values = {"material": material if isinstance(material, str) else OWN_MATERIAL}
+    if nut is not None:
+        values[NUT_FIELD] = nut
     if isinstance(material, dict):
         dump.update(material)
     for name, value in dump.items():
@@ -252,11 +263,25 @@ def _material_values(spec: ScrewSpec) -> dict[str, float | str | None]:
     }
 
 
-def catalog_screw_query(spec: ScrewSpec, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
-    """A catalog screw's geometry, friction, material, largest drag and PV limit as the
-    custom form's query (in the display ``units``), to try the same screw with other
-    values."""
-    pv_limit = spec.pv_limit_pa_m_s or spec.nut_pv_limit_pa_m_s
+def _nut_values(spec: ScrewSpec, nuts: Container[str]) -> dict[str, float | str | None]:
+    """A catalog screw's nut as the custom form's: its nut material when it is one of the
+    catalog's (``nuts``), with the thread pitch it is rated over (the nut length is the
+    nut material's family's, as the catalog's)."""
+    if spec.variant not in nuts:
+        return {}
+    return {
+        NUT_FIELD: spec.variant,
+        "pitch_mm": None if spec.pitch_m is None else si_to_api(spec.pitch_m, "length"),
+    }
+
+
+def catalog_screw_query(
+    spec: ScrewSpec, units: Mapping[str, str] = DEFAULT_UNITS, nuts: Container[str] = ()
+) -> str:
+    """A catalog screw's geometry, friction, material, inertia, largest drag, PV limit and
+    nut material (one of ``nuts``, with its pitch) as the custom form's
+    query (in the display ``units``), to try the same screw with other values."""
+    pv_limit = spec.pv_limit_pa_m_s
     values = {
         "outer_diameter_mm": si_to_api(spec.outer_diameter_m, "length"),
         "root_diameter_mm": si_to_api(spec.root_diameter_m, "length"),
@@ -266,6 +291,8 @@ def catalog_screw_query(spec: ScrewSpec, units: Mapping[str, str] = DEFAULT_UNIT
         "friction_static": spec.friction_static,
         "drag_torque_nm": spec.drag_torque_max_nm,
         "pv_limit_mpa_m_s": None if pv_limit is None else si_to_api(pv_limit, "pv"),
+        "inertia_kg_m2_per_m": spec.inertia_kg_m2_per_m,
+        **_nut_values(spec, nuts),
         **_material_values(spec),
     }
     return urlencode(
@@ -281,4 +308,4 @@ def _shown(name: str, value: float, units: Mapping[str, str]) -> str:
     """A catalog screw's API value in the field's display unit, to 6 figures."""
     field = BY_NAME.get(name)
     factor = 1.0 if field is None else float(field.factor(units))
-    return f"{value / factor:.6g}"
+    return f"{value / factor:.12g}"

@@ -904,7 +904,7 @@ BAD_SCREW: list[tuple[str, Any, int, str]] = [
     ("material-extra-field",
      {**CUSTOM_SCREW, "material": {"youngs_modulus_pa": 2e11, "density_kg_m3": 7850.0,
                                    "poisson": 0.3}}, 422, "screw.material.poisson"),
-    ("custom-extra-field", {**CUSTOM_SCREW, "pitch_mm": 2.0}, 422, "screw.pitch_mm"),
+    ("custom-extra-field", {**CUSTOM_SCREW, "starts": 2}, 422, "screw.starts"),
 ]  # fmt: skip
 
 

@@ -33,7 +33,13 @@ from app.contract.form import (
     share_query,
 )
 from app.contract.inputs import ApplicationIn
-from app.contract.units import DEFAULT_UNITS, FORCE_UNITS, LENGTH_UNITS, TORQUE_UNITS
+from app.contract.units import (
+    ACCEL_UNITS,
+    DEFAULT_UNITS,
+    FORCE_UNITS,
+    LENGTH_UNITS,
+    TORQUE_UNITS,
+)
 from app.core import motion
 from app.core.model import Application
 from app.report.service import run_selection
@@ -329,6 +335,7 @@ def test_share_links_round_trip(inputs: ApplicationIn) -> None:
             "force_unit": st.sampled_from(list(FORCE_UNITS)),
             "length_unit": st.sampled_from(list(LENGTH_UNITS)),
             "torque_unit": st.sampled_from(list(TORQUE_UNITS)),
+            "accel_unit": st.sampled_from(list(ACCEL_UNITS)),
         }
     ),
 )

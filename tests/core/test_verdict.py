@@ -1,14 +1,17 @@
 """A candidate's verdict (app.core.verdict): what governs with its utilisation and margin,
 the assumed values it rests on in words, and what to watch."""
 
+from dataclasses import replace
+
 import pytest
 
 from app.catalog import Catalog
 from app.contract.units import DEFAULT_UNITS, render
+from app.core.checks import BY_NAME
 from app.core.model import Application
 from app.core.record import governing
 from app.core.selection import select
-from app.core.verdict import percent, value_label, verdict
+from app.core.verdict import missing_values, percent, value_label, verdict
 
 #: A horizontal axis where most screws pass with room (100 N, 50 mm/s, 300 mm).
 EASY = Application(load_n=100.0, speed_m_s=0.05, length_m=0.3)
@@ -93,3 +96,44 @@ def test_a_back_driving_vertical_screw_says_what_holds_it_power_off(catalog: Cat
         assert any("brake" in w.template for w in watch)
         brake = next(w for w in watch if "brake" in w.template).values["t"]
         assert brake.value == pytest.approx(c.brake_nm)  # type: ignore[union-attr]
+
+
+def test_a_pass_with_skipped_checks_never_says_every_check(catalog: Catalog) -> None:
+    """The summary every page shows: a check that runs for the application but not for a
+    screw (a value it reads is missing) turns "Passes every check." into the count that
+    ran and the checks that did not, each with the values it lacks."""
+    sel = select(EASY, catalog.screws)
+    passing = [c for c in sel.candidates if c.passed]
+    skipped = [c for c in passing if c.verdict.skipped]
+    complete = [c for c in passing if not c.verdict.skipped]
+    assert skipped, "some catalog screw lacks a value a check reads"
+    for c in skipped:
+        text = render(c.verdict.summary, DEFAULT_UNITS)
+        limits = [k for k in c.checks if k.kind == "limit"]
+        assert "every check" not in text
+        assert text.startswith(f"Passes the {len(limits)} checks that ran.")
+        for skip in c.verdict.skipped:
+            assert skip.missing and f"{skip.label} (no " in text
+            assert skip.check not in {k.name for k in c.checks}
+    for c in complete:
+        assert render(c.verdict.summary, DEFAULT_UNITS) == "Passes every check."
+
+
+def test_a_nut_rated_by_pressure_without_its_thread_lacks_only_the_thread(
+    catalog: Catalog,
+) -> None:
+    """A bronze nut (pressure-speed table) on a screw without pitch and nut length: the
+    contact-pressure check could not run for want of those two, not of a rating."""
+    row = catalog.by_id["Tr12x3-bronze"]
+    bare = replace(row, pitch_m=None, nut_length_m=None)
+    check = BY_NAME["bearing_pressure"]
+    assert missing_values(check, row) == ()
+    assert missing_values(check, bare) == ("nut length", "pitch")
+    unrated = replace(bare, bearing_pressure_table=())
+    assert missing_values(check, unrated) == (
+        "allowed contact pressure",
+        "maximum contact pressure",
+        "nut PV limit",
+        "nut length",
+        "pitch",
+    )
