@@ -126,6 +126,13 @@ def _inertia_per_m(material: Material, outer_m: float) -> float:
     return math.pi * material.density_kg_m3.value * outer_m**4 / 32.0
 
 
+def size_id(family_id: str, nut_id: str) -> str:
+    """The series (one nominal size of the family) a nut belongs to: the family and the
+    size part of the maker's article number ("HIWIN-ROLLED R16" for R16-05T3-FSIDIN), so
+    that the leads of one size sweep together."""
+    return f"{family_id} {nut_id.split('-', 1)[0]}"
+
+
 def _spec(
     family: Entry, row: Entry, material: Material, prov: Mapping[str, Provenance]
 ) -> ScrewSpec:
@@ -140,7 +147,7 @@ def _spec(
     lead_accuracy = family.number("lead_accuracy_um_per_300mm") * 1e-6 / 0.3
     return ScrewSpec(
         id=row.entry,
-        series_id=row.entry,
+        series_id=size_id(family.plain_text("id"), row.entry),
         series_name=row.plain_text("name", row.entry),
         anti_backlash=family.plain_flag("anti_backlash"),
         coated=False,
@@ -158,7 +165,9 @@ def _spec(
         drag_torque_max_nm=drag_max,
         backlash_max_m=play,
         lead_accuracy_m_per_m=lead_accuracy,
-        yield_strength_pa=None if material.yield_strength_pa is None else material.yield_strength_pa.value,
+        yield_strength_pa=None
+        if material.yield_strength_pa is None
+        else material.yield_strength_pa.value,
         material_name=family.plain_text("material"),
         nut_material="steel",
         family_id=family.plain_text("id"),
@@ -215,26 +224,23 @@ def _provenance(
     return prov
 
 
-def _display(spec: ScrewSpec, prov: Mapping[str, Provenance]) -> dict[str, Sourced]:
-    """The series' fields as the catalog page and API show them."""
+def _display(specs: list[ScrewSpec], prov: Mapping[str, Provenance]) -> dict[str, Sourced]:
+    """A size's fields as the catalog page and API show them: the family's values and
+    the leads it is made in (each nut's own ratings are on its candidate)."""
+    first = specs[0]
     values: dict[str, tuple[Any, str]] = {
         "screw_type": ("ball", ""),
-        "outer_diameter": (spec.outer_diameter_m, "m"),
-        "root_diameter": (spec.root_diameter_m, "m"),
-        "lead": (spec.lead_m, "m"),
-        "nut_length": (spec.nut_length_m, "m"),
-        "dynamic_load": (spec.dynamic_load_n, "N"),
-        "static_load": (spec.static_load_n, "N"),
-        "ball_diameter": (spec.ball_diameter_m, "m"),
-        "dn_limit": (spec.dn_limit_mm_rpm, "mm rpm"),
-        "accuracy_grade": (spec.accuracy_grade, ""),
-        "lead_accuracy": (spec.lead_accuracy_m_per_m, "m/m"),
-        "drag_torque": ((spec.drag_torque_min_nm, spec.drag_torque_max_nm), "N m"),
-        "backlash": (spec.backlash_max_m, "m"),
+        "leads": (sorted(s.lead_m for s in specs), "m"),
+        "dn_limit": (first.dn_limit_mm_rpm, "mm rpm"),
+        "accuracy_grade": (first.accuracy_grade, ""),
+        "lead_accuracy": (first.lead_accuracy_m_per_m, "m/m"),
+        "friction_dynamic": (first.friction_dynamic, ""),
+        "friction_static": (first.friction_static, ""),
     }
-    type_prov = Provenance("vendor", "ball screw family")
+    family_prov = Provenance("vendor", "ball screw family")
+    named = {**prov, "leads": prov["lead"]}
     return {
-        k: Sourced(v, unit, prov.get(k, type_prov))
+        k: Sourced(v, unit, named.get(k, family_prov))
         for k, (v, unit) in values.items()
         if v is not None
     }
@@ -255,23 +261,24 @@ def build_ball_series(source: CatalogFile, materials: Mapping[str, Material]) ->
     rows = source.data.get("nut")
     if not isinstance(rows, list) or not rows:
         raise CatalogError(source.name, "-", "nut", "no [[nut]] rows")
-    out = []
+    sizes: dict[str, list[ScrewSpec]] = {}
     for index, raw in enumerate(rows):
         if not isinstance(raw, Mapping) or not isinstance(raw.get("id"), str):
             raise CatalogError(source.name, f"nut[{index}]", "id", "missing or not text")
         row = Entry(source.name, raw["id"], raw)
         row.check_known(NUT_KEYS)
         spec = _spec(family, row, material, prov)
-        out.append(
-            Series(
-                id=spec.id,
-                name=spec.series_name,
-                family=spec.family_id,
-                family_name=family.plain_text("name"),
-                type=f"ball screw, {spec.variant}",
-                file=source.name,
-                fields=_display(spec, prov),
-                screws=(spec,),
-            )
+        sizes.setdefault(spec.series_id, []).append(spec)
+    return [
+        Series(
+            id=sid,
+            name=sid,
+            family=specs[0].family_id,
+            family_name=family.plain_text("name"),
+            type=f"ball screw, {specs[0].variant}",
+            file=source.name,
+            fields=_display(specs, prov),
+            screws=tuple(sorted(specs, key=lambda s: s.lead_m)),
         )
-    return out
+        for sid, specs in sizes.items()
+    ]

@@ -57,8 +57,7 @@ class BallLife(Check):
     )
     quantity = "years"
     formula = (
-        "life_required = Y_req; "
-        "life = (Ca / (f_w * F_m))**3 * 1e6 / (travel / lead * cycles * 365)"
+        "life_required = Y_req; life = (Ca / (f_w * F_m))**3 * 1e6 / (travel / lead * cycles * 365)"
     )
     source = (
         "ISO 3408-5 rated life; HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, "
