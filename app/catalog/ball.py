@@ -123,7 +123,7 @@ def _drag_torques(family: Entry, ca_n: float, lead_m: float) -> tuple[float, flo
 def _inertia_per_m(material: Material, outer_m: float) -> float:
     """Rotating inertia of the shaft per metre [kg m^2/m], a solid steel cylinder of the
     outer diameter (HIWIN F 3.21 takes the nominal diameter)."""
-    return math.pi * material.density_kg_m3.value * outer_m**4 / 32.0
+    return math.pi * float(material.density_kg_m3.value) * outer_m**4 / 32.0
 
 
 def size_id(family_id: str, nut_id: str) -> str:

@@ -69,7 +69,8 @@ def required_dynamic_load(load_factor: float, mean_load_n: float, life_revolutio
     >>> round(required_dynamic_load(1.2, 1000.0, 20000 * 60 * 2400.0), 1)
     17073.1
     """
-    return load_factor * mean_load_n * (life_revolutions / REVOLUTIONS_RATED) ** (1.0 / 3.0)
+    cube_root: float = (life_revolutions / REVOLUTIONS_RATED) ** (1.0 / 3.0)
+    return load_factor * mean_load_n * cube_root
 
 
 @formula("DN = d_s [mm] x n_max [rpm]", HIWIN + ", sec. 3.7.6 (DN value)")
