@@ -30,7 +30,7 @@ FAMILY_FIELDS = frozenset(
         "material",
         "anti_backlash",
         "accuracy_grade",
-        "lead_accuracy_um_per_300mm",
+        "lead_accuracy_mm_per_300mm",
         "dn_limit_mm_rpm",
         "friction_dynamic",
         "friction_static",
@@ -144,7 +144,8 @@ def _spec(
         raise row.fail("root_diameter_mm", "must be below the outer diameter")
     play = _row_value(row, "axial_play_mm") or 0.0
     drag_min, drag_max = _drag_torques(family, ca, lead)
-    lead_accuracy = family.number("lead_accuracy_um_per_300mm") * 1e-6 / 0.3
+    per_300mm = to_si(family.number("lead_accuracy_mm_per_300mm"), "mm")
+    lead_accuracy = per_300mm / to_si(300.0, "mm")
     return ScrewSpec(
         id=row.entry,
         series_id=size_id(family.plain_text("id"), row.entry),
@@ -187,7 +188,7 @@ def _spec(
 FAMILY_PROVENANCE = {
     "friction_static": "friction_static",
     "friction_dynamic": "friction_dynamic",
-    "lead_accuracy": "lead_accuracy_um_per_300mm",
+    "lead_accuracy": "lead_accuracy_mm_per_300mm",
     "dn_limit": "dn_limit_mm_rpm",
     "accuracy_grade": "accuracy_grade",
     "drag_torque": "preload_friction_factor",

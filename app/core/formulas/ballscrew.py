@@ -9,11 +9,12 @@ Accessories, BS-08-2-EN-1704-K, sec. 3.7.1).
 from collections.abc import Sequence
 
 from app.core.formulas.declare import formula
+from app.core.units import from_si
 
 #: The makers' catalog the ball-screw rules come from.
 HIWIN = "HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K"
-REVOLUTIONS_RATED = 1e6
-MM_PER_M = 1000.0
+#: The rated life's revolutions, 10^6 (ISO 3408-5).
+REVOLUTIONS_RATED = 10.0**6
 
 
 @formula(
@@ -82,7 +83,7 @@ def dn_value(diameter_m: float, rpm: float) -> float:
     >>> dn_value(0.032, 2400.0)
     76800.0
     """
-    return diameter_m * MM_PER_M * rpm
+    return from_si(diameter_m, "mm") * rpm
 
 
 @formula("n_DN = DN_max / d_s [mm]", HIWIN + ", sec. 3.7.6 (DN value)")
@@ -93,7 +94,7 @@ def dn_speed_limit(dn_limit_mm_rpm: float, diameter_m: float) -> float:
     >>> round(dn_speed_limit(70000.0, 0.016), 1)
     4375.0
     """
-    return dn_limit_mm_rpm / (diameter_m * MM_PER_M)
+    return dn_limit_mm_rpm / from_si(diameter_m, "mm")
 
 
 @formula("T_d = K_p F_pr P / (2 pi)", HIWIN + ", sec. 3.6.3 F 3.2 (idle torque of a preloaded nut)")
