@@ -7,10 +7,13 @@ Table 4.4 (rolled flange single nut FSCDIN/FSIDIN, p. 35-36), Table 4.5 (rolled 
 p. 37), Table 6.4 (ground DIN single nut FSC, p. 48-49), sec. 3.7.6 (DN limits).
 """
 
+from pathlib import Path
+
 import pytest
 
-from app.catalog import Catalog
+from app.catalog import Catalog, load_catalog
 from app.catalog.ball import NOT_APPLICABLE
+from app.catalog.errors import CatalogError
 
 BALL_FAMILIES = {"HIWIN-ROLLED", "HIWIN-ROLLED-RSIT", "HIWIN-GROUND"}
 
@@ -119,3 +122,67 @@ def test_the_leads_of_one_size_share_a_series(catalog: Catalog) -> None:
         "R16-20K2-FSCDIN",
     ]
     assert series.fields["leads"].value == pytest.approx([0.005, 0.01, 0.016, 0.02])
+
+
+def _family_text(root_mm: float = 12.9, with_ca_source: bool = True) -> str:
+    """A one-nut ball-screw family of a user's own, in the built-in file's form."""
+    src = '{ provenance = "user", source = "test table" }'
+    columns = [
+        f"outer_diameter_mm = {src}",
+        f"lead_mm = {src}",
+        f"nut_length_mm = {src}",
+        f"root_diameter_mm = {src}",
+        f"static_load_n = {src}",
+    ] + ([f"dynamic_load_n = {src}"] if with_ca_source else [])
+    value = 'provenance = "user", source = "test"'
+    return "\n".join(
+        [
+            "[ballscrew]",
+            'id = "MY-BALL"',
+            'name = "my ball screws"',
+            'kind = "rolled"',
+            'material = "c45-steel"',
+            "anti_backlash = false",
+            f'accuracy_grade = {{ value = "T7", {value} }}',
+            f"lead_accuracy_mm_per_300mm = {{ value = 0.052, {value} }}",
+            f"dn_limit_mm_rpm = {{ value = 70000.0, {value} }}",
+            f"friction_dynamic = {{ value = 0.01, {value} }}",
+            f"friction_static = {{ value = 0.003, {value} }}",
+            f"preload_fraction = {{ value = 0.0, {value} }}",
+            f"preload_friction_factor = {{ min = 0.1, max = 0.3, {value} }}",
+            "[ballscrew.columns]",
+            *columns,
+            "[[nut]]",
+            'id = "MY16-05"',
+            "outer_diameter_mm = 15.5",
+            "lead_mm = 5.0",
+            "nut_length_mm = 40.0",
+            f"root_diameter_mm = {root_mm}",
+            "dynamic_load_n = 6500",
+            "static_load_n = 11700",
+            "",
+        ]
+    )
+
+
+def test_a_users_ball_screw_family_loads(tmp_path: Path) -> None:
+    (tmp_path / "ballscrew-mine.toml").write_text(_family_text())
+    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    assert (screw.screw_type, screw.dynamic_load_n, screw.family_id) == ("ball", 6500.0, "MY-BALL")
+    assert screw.provenance["dynamic_load"].kind == "user"
+
+
+@pytest.mark.parametrize(
+    ("text", "field"),
+    [
+        pytest.param(_family_text(root_mm=16.0), "root_diameter_mm", id="root-above-od"),
+        pytest.param(_family_text(with_ca_source=False), "columns", id="no-source-for-ca"),
+    ],
+)
+def test_a_bad_ball_screw_family_is_refused_naming_the_field(
+    tmp_path: Path, text: str, field: str
+) -> None:
+    (tmp_path / "ballscrew-mine.toml").write_text(text)
+    with pytest.raises(CatalogError) as err:
+        load_catalog([tmp_path])
+    assert field in str(err.value)

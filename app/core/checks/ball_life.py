@@ -21,7 +21,8 @@ from app.core.phrase import Amount, Phrase
 from app.core.quantities import travel_thrusts
 
 #: The load factor f_w on the cubic mean load: the top of HIWIN's 1.1 to 1.2 for
-#: operation without impact (1.3 to 1.8 in normal operation, sec. 3.7.2).
+#: operation without impact (1.3 to 1.8 in normal operation, sec. 3.7.2); MISUMI's
+#: "impactless run" 1.0 to 1.2 and "normal run" 1.2 to 1.5 (Selection of Ball Screws 3).
 LOAD_FACTOR = 1.2
 
 
