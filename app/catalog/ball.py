@@ -219,6 +219,22 @@ def _provenance(
     prov["youngs_modulus"] = material.youngs_modulus_pa.provenance
     prov["density"] = material.density_kg_m3.provenance
     prov["screw_expansion"] = material.expansion_per_k.provenance
+    not_published = Provenance(
+        "derived", "not published in the maker's ball-screw table: not checked for it"
+    )
+    for name in ("max_length", "outgassing", "repeatability", "temperature_range", "pitch"):
+        prov[name] = not_published
+    prov["traverse_speed"] = NOT_APPLICABLE
+    prov["type"] = Provenance("vendor", "ball screw: the maker's nut table")
+    prov["oil_compatible"] = Provenance(
+        "vendor", "HIWIN BS-08-2-EN-1704-K sec. 3.9: lubricated with grease or oil"
+    )
+    for name, value in (
+        ("yield_strength", material.yield_strength_pa),
+        ("thermal_conductivity", material.thermal_conductivity_w_m_k),
+    ):
+        if value is not None:
+            prov[name] = value.provenance
     prov["inertia_per_length"] = Provenance(
         "derived", "solid shaft of the outer diameter: J/L = pi rho d^4 / 32"
     )
