@@ -5,6 +5,7 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
+from app.catalog.ball import build_ball_series, is_ball_family
 from app.catalog.catalog import Catalog
 from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
@@ -105,6 +106,8 @@ def _family_series(
     source: CatalogFile, groups: Groups, materials: Mapping[str, Material]
 ) -> list[Series]:
     """Every series of one family file, built over the group the file layers on."""
+    if is_ball_family(source):
+        return build_ball_series(source, materials)
     schema = check_shape(source, FAMILY_KEYS)
     own = layer_of(source)
     family = build_family(over(groups.base_of(source, own.family, schema), own))

@@ -156,6 +156,44 @@ REPORTED: tuple[Reported, ...] = (
         type=str,
     ),
     Reported("series", csv=True, type=str),
+    Reported(
+        "screw_type",
+        "Type",
+        "The kind of screw: 'lead' (a sliding nut, rated by PV, flank pressure and wear) "
+        "or 'ball' (a rolling ball nut, rated by its L10 life, static load rating and DN "
+        "speed; it always back-drives).",
+        cell="text",
+        column=True,
+        csv=True,
+        compare=True,
+        views=("row", "summary", "csv"),
+        source=From("screw.screw_type"),
+        type=str,
+    ),
+    Reported(
+        "dynamic_load_n",
+        "Ca",
+        "A ball nut's basic dynamic load rating: the axial load at which 90 % of nuts run "
+        "10^6 revolutions (the maker's table; empty for a leadscrew).",
+        quantity="force",
+        better="higher",
+        csv=True,
+        compare=True,
+        views=("row", "summary", "csv"),
+        source=From("screw.dynamic_load_n", "force"),
+    ),
+    Reported(
+        "static_load_n",
+        "C0a",
+        "A ball nut's basic static load rating: the axial load that dents the ball track "
+        "by 0.0001 of the ball diameter (the maker's table; empty for a leadscrew).",
+        quantity="force",
+        better="higher",
+        csv=True,
+        compare=True,
+        views=("row", "summary", "csv"),
+        source=From("screw.static_load_n", "force"),
+    ),
     Reported("anti_backlash", csv=True, type=bool),
     Reported(
         "nut_material",

@@ -27,6 +27,8 @@ RankBy = Literal["torque", "rms", "margin", "life", "size", "motor_margin"]
 #: What a failed advice check does: warn (such a screw always ranks after every screw
 #: without a warning), or reject the screw.
 AdvicePolicy = Literal["warn", "reject"]
+#: What kind of screw a candidate is: a sliding leadscrew or a ball screw.
+ScrewType = Literal["lead", "ball"]
 ProvenanceKind = Literal["seed", "standard", "handbook", "vendor", "derived", "assumed", "user"]
 
 STANDARD_GRAVITY_M_S2 = 9.80665
@@ -251,6 +253,16 @@ class ScrewSpec:
     assumption_ends: Mapping[str, tuple[Mapping[str, float], Mapping[str, float]]] = field(
         default_factory=dict
     )
+    #: A ball screw ("ball") or a sliding leadscrew ("lead"). A ball nut's ratings: the
+    #: basic dynamic and static axial load ratings Ca and C0a [N], its ball diameter [m],
+    #: the maker's DN speed limit [mm rpm] and the lead accuracy grade (None or empty:
+    #: not a ball screw, or not published).
+    screw_type: ScrewType = "lead"
+    dynamic_load_n: float | None = None
+    static_load_n: float | None = None
+    ball_diameter_m: float | None = None
+    dn_limit_mm_rpm: float | None = None
+    accuracy_grade: str = ""
 
 
 class Judged(Protocol):

@@ -8,7 +8,7 @@ from functools import partial
 
 import numpy as np
 
-from app.core import motion
+from app.core import kinds, motion
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
@@ -210,7 +210,16 @@ def select(
         passed=n_passed,
         failed_by_check=dict(by_check.most_common()),
         summary=summarize(
-            app, index.table, len(s.index), n_passed, rejected, by_check, ranges or {}, s, words
+            app,
+            index.table,
+            len(s.index),
+            n_passed,
+            rejected,
+            by_check,
+            ranges or {},
+            s,
+            words,
+            [c.screw.id for c in returned[: len(ranked)]],
         ),
         screening=s,
         ranked=tuple(ranked),
@@ -322,6 +331,7 @@ def summarize(
     ranges: Ranges,
     screening: Screening | None = None,
     words: Words | None = None,
+    passing_ids: Sequence[str] = (),
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix and the
     feasible changes of the application (within ``ranges``; when the nearest screw's
@@ -334,11 +344,15 @@ def summarize(
     note = [n] if (n := motion.speed_note(app)) is not None else []
     if passed:
         message = Phrase(f"{passed} of {evaluated} candidates pass.")
-        return Summary(worst, worst_count, None, {}, join([*note, message]))
+        first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]
+        parts = [p for p in first if p is not None]
+        return Summary(worst, worst_count, None, {}, join([*parts, *note, message]))
     best = nearest[0]
     change = input_change(best)
     label = BY_NAME[worst].label if worst in BY_NAME else str(worst)
+    both = None if screening is None else kinds.neither(screening)
     parts = [
+        *([both] if both is not None else []),
         *note,
         Phrase(
             f"No candidate passes. {label} excludes {worst_count} of {evaluated}. "

@@ -176,6 +176,11 @@ class CandidateTable:
     wear_rate_m2_n: Array
     allowed_wear_fraction: Array
     flank_helix_travel_m: Array
+    #: ball screws: the flag, Ca and C0a [N] and the DN limit [mm rpm] (NaN: none)
+    ball: Mask
+    dynamic_load_n: Array
+    static_load_n: Array
+    dn_limit_mm_rpm: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together
@@ -206,6 +211,7 @@ class CandidateTable:
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
         traverse, extrapolated = _bands(screws, lead)
+        ball = np.array([s.screw_type == "ball" for s in screws], dtype=bool)
         tables, which = _pressure_tables(screws)
         reach = Reach(
             max_lead_m=_largest(lead),
@@ -250,7 +256,8 @@ class CandidateTable:
             efficiency_square_thread=efficiency.square_thread_efficiency(tan_l, mu_d),
             backdrive_efficiency=efficiency.backdrive_efficiency(tan_l, mu_s, cos_a),
             self_locking=mu_s >= efficiency.self_locking_limit_friction(tan_l, cos_a),
-            seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od),
+            # the seed's rule of thumb is a sliding thread's: a ball screw always back-drives
+            seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
             traverse_limit_m_s=traverse,
             traverse_extrapolated=extrapolated,
@@ -260,6 +267,10 @@ class CandidateTable:
             backdrive_efficiency_signed=profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
             yield_strength_pa=col("yield_strength_pa"),
             thermal_conductivity_w_m_k=col("thermal_conductivity_w_m_k"),
+            ball=ball,
+            dynamic_load_n=col("dynamic_load_n"),
+            static_load_n=col("static_load_n"),
+            dn_limit_mm_rpm=col("dn_limit_mm_rpm"),
             **_nut_columns(screws, lead),
         )
 

@@ -32,6 +32,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "design_load": "design load",
     "design_load_factor": "design load factor",
     "drag_torque": "nut drag torque",
+    "dn_limit": "DN speed limit",
     "dynamic_pressure": "flank pressure rating in motion",
     "dynamic_load": "dynamic load rating",
     "friction_dynamic": "running friction",

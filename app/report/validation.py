@@ -13,7 +13,18 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from app.contract.units import from_si, to_si
-from app.core.formulas import buckling, efficiency, geometry, heat, pv, servo, stepper, torque, wear
+from app.core.formulas import (
+    ballscrew,
+    buckling,
+    efficiency,
+    geometry,
+    heat,
+    pv,
+    servo,
+    stepper,
+    torque,
+    wear,
+)
 from app.core.formulas import critical_speed as cs
 from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
@@ -155,6 +166,7 @@ def weihong_cycle(mass_as_inertia: bool = True) -> Quantities[np.ndarray]:
 
 SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Example 8-1"
 MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
+MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
 NOOK = "Nook Industries, Acme and lead screw assembly application selection example"
 WEIHONG = (
     "Weihong, WISE servo (WSDV) user manual, 3.5.2.1 Example of Motor Selection for Ball "
@@ -240,6 +252,9 @@ EXAMPLES: tuple[Example, ...] = (
     Example("Fin heat", "Incropera & DeWitt, Heat and Mass Transfer, 6th ed., Example 3.9",
             "5 mm copper rod (k 398), h 100 W/(m² K), 75 K", 8.3, "W",
             lambda: heat.fin_conductance(0.005, 398.0, 100.0) * 75.0),
+    Example("Ball screw L10 life", f"{MISUMI_LIFE}, 6-1 Life Calculation Example",
+            "BSS1520, C 4400 N, mean load 250 N, 2118 rpm, f_w 1.2", 24824.0, "h",
+            lambda: ballscrew.rated_life_revolutions(4400.0, 1.2, 250.0) / (60.0 * 2118.0)),
     Example("Sliding wear life", "SKF, composite plain bearings, calculation example",
             "PTFE composite, c 1.17, KM 480, p v 0.025 applied", 22500.0, "h",
             _skf_composite_life_h),

@@ -22,6 +22,7 @@ from app.contract.fields import BY_API, FIELDS
 from app.contract.inputs import ApplicationIn, describe
 from app.contract.outputs import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 from app.core.model import ProvenanceKind
+from tests.leadscrews import leadscrew_families
 
 API = "/api/v1"
 #: The select response in its full form (every number, message and formula).
@@ -234,7 +235,11 @@ def assert_candidate(candidate: dict[str, Any]) -> None:
     assert len(names) == len(set(names)), names
     assert "governing_check" in candidate
     assert candidate["governing_check"] is None or candidate["governing_check"] in names
-    assert candidate["passed"] == all(c["passed"] for c in candidate["checks"])
+    # a failed advice check only warns (advice "warn" by default): a ball screw in a vacuum
+    # has no outgassing data, and passes with that warning
+    assert candidate["passed"] == all(
+        c["passed"] for c in candidate["checks"] if c["kind"] == "limit"
+    )
 
 
 def max_utilization(candidate: dict[str, Any]) -> float:
@@ -524,7 +529,9 @@ def test_rejected_carry_failed_checks_and_a_fix(api: Api, name: str) -> None:
 
 
 def test_nothing_passes_still_answers_with_rejected(api: Api) -> None:
-    body = select(api, **SELECT_INPUTS["nothing-passes"])
+    # the leadscrews by name: a ball screw carries this axis
+    lead = ",".join(leadscrew_families(load_catalog()))
+    body = select(api, **SELECT_INPUTS["nothing-passes"], family=lead)
     assert body["candidates"] == [] and body["counts"]["passed"] == 0
     assert body["rejected"] and body["summary"]["best_rejected_id"] == body["rejected"][0]["id"]
 

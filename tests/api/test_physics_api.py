@@ -10,6 +10,7 @@ from fastapi.testclient import TestClient
 
 from app.catalog import Catalog
 from tests.api.calls import check, evaluate
+from tests.leadscrews import leadscrew_families
 
 G = 9.80665
 COS_ACME = math.cos(math.radians(14.5))
@@ -232,9 +233,13 @@ def test_fixes_stay_within_the_catalog(client: TestClient, catalog: Catalog) -> 
     assert rejected == sorted(rejected)
 
 
-def test_nothing_passes_lists_feasible_changes_as_data(client: TestClient) -> None:
-    """3000 N at 500 mm/s over 3 m: no screw takes it; each offered change admits its screw."""
-    axis = {"load_n": 3000, "speed_mm_s": 500, "length_mm": 3000}
+def test_nothing_passes_lists_feasible_changes_as_data(
+    client: TestClient, catalog: Catalog
+) -> None:
+    """3000 N at 500 mm/s over 3 m: no leadscrew takes it (a ball screw does: the
+    leadscrews by name); each offered change admits its screw."""
+    lead = leadscrew_families(catalog)
+    axis = {"load_n": 3000, "speed_mm_s": 500, "length_mm": 3000, "family": list(lead)}
     body = post(client, "select", axis)
     assert body["counts"]["passed"] == 0
     changes = body["summary"]["changes"]

@@ -60,7 +60,8 @@ def _family_ids(paths: Iterable[Path]) -> set[str]:
     """The family ids that catalog files declare (a group's common file declares none)."""
     found = set()
     for path in paths:
-        family = tomllib.loads(path.read_text()).get("family", {})
+        data = tomllib.loads(path.read_text())
+        family = data.get("family", data.get("ballscrew", {}))
         if "id" in family:
             found.add(family["id"])
     return found

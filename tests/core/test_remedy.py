@@ -15,6 +15,13 @@ from app.core.model import Application
 from app.core.remedy import MARGIN, impossible, part_way, past_limit
 from app.core.selection import screen, select
 from app.report.service import INPUT_RANGES
+from tests.leadscrews import leadscrew_families
+
+
+def lead(catalog: Catalog) -> tuple[str, ...]:
+    """The leadscrew families: these remedies are a leadscrew's (a ball screw carries the
+    loads and speeds that exclude every leadscrew here)."""
+    return leadscrew_families(catalog)
 
 
 def test_a_proposal_lands_five_percent_past_its_limit() -> None:
@@ -61,7 +68,7 @@ def test_every_remedy_passes_with_the_margin(
 def test_remedies_span_more_than_one_dimension(catalog: Catalog) -> None:
     """10 kN at 500 mm/s over 3 m: the offered changes move two inputs together, or the
     mounting with an input, not only one input at a time."""
-    app = Application(load_n=10_000.0, speed_m_s=0.5, length_m=3.0)
+    app = Application(load_n=10_000.0, speed_m_s=0.5, length_m=3.0, families=lead(catalog))
     remedies = select(app, catalog.index, INPUT_RANGES).summary.remedies
     assert remedies
     assert any(len(r.inputs) >= 2 for r in remedies)
@@ -71,6 +78,7 @@ def test_a_long_fast_axis_is_offered_a_stiffer_mounting(catalog: Catalog) -> Non
     """Critical speed excludes everything at 2 m, 400 mm/s, fixed-free: a stiffer end
     fixity (alone or with one input) is among the remedies."""
     app = Application(load_n=100.0, speed_m_s=0.4, length_m=2.0, end_fixity="fixed-free")
+    app = replace(app, families=lead(catalog))
     sel = select(app, catalog.index, INPUT_RANGES)
     assert sel.passed == 0 and sel.summary.most_excluding_check == "critical_speed"
     remedies = sel.summary.remedies
@@ -87,6 +95,7 @@ def test_a_long_fast_axis_is_offered_a_stiffer_mounting(catalog: Catalog) -> Non
 def test_when_no_change_helps_it_says_no_leadscrew_can_and_why(catalog: Catalog) -> None:
     """400 deg C ambient: no nut is rated for it and no input change helps."""
     app = Application(load_n=100.0, speed_m_s=0.05, length_m=0.3, ambient_c=400.0)
+    app = replace(app, families=lead(catalog))
     summary = select(app, catalog.index, INPUT_RANGES).summary
     assert summary.remedies == ()
     assert summary.impossible is not None
@@ -111,6 +120,7 @@ def test_when_some_screws_are_excluded_otherwise_it_does_not_say_no_leadscrew_ca
         stroke_m=0.2,
         moving_mass_kg=5.0,
         orientation="vertical",
+        families=lead(catalog),
     )
     motor_app = with_motor(replace(app, motor="17hs19-2004s1"), catalog.motors)
     summary = select(motor_app, catalog.index, INPUT_RANGES).summary

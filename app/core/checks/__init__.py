@@ -8,6 +8,9 @@ Screening, evaluation, the formulas table, the API's check list and the page ite
 from app.core.checks.accuracy import Accuracy
 from app.core.checks.anti_backlash import AntiBacklash
 from app.core.checks.back_driving import BackDriving
+from app.core.checks.ball_life import BallLife
+from app.core.checks.ball_speed import BallSpeed
+from app.core.checks.ball_static import BallStatic
 from app.core.checks.base import Check
 from app.core.checks.bearing_pressure import BearingPressure
 from app.core.checks.buckling import ColumnBuckling
@@ -54,7 +57,9 @@ REGISTRY: tuple[Check, ...] = (
     BearingPressure(),
     MaxSlidingSpeed(),
     TraverseSpeed(),
+    BallSpeed(),
     DesignLoad(),
+    BallStatic(),
     Length(),
     StrokeTravel(),
     OilCompatibility(),
@@ -65,6 +70,7 @@ REGISTRY: tuple[Check, ...] = (
     HoldingPowerOff(),
     AntiBacklash(),
     Life(),
+    BallLife(),
     SupportLife(),
     WearLife(),
     Accuracy(),

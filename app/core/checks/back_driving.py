@@ -64,6 +64,13 @@ class BackDriving(Check):
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        if s.screw_type == "ball" and not passed:
+            return Phrase(
+                "A ball screw always back-drives (rolling friction, efficiency near 90 % "
+                "both ways): the load drives the screw down with the power off; holding "
+                "torque {physics}. A brake is needed.",
+                {"physics": Amount(r.holding_distrusted_nm, "torque")},
+            )
         rule = rule_note(app, s, passed)
         rule_text = "" if rule is None else " {rule}"
         values: dict[str, Amount | Phrase] = {
@@ -99,7 +106,7 @@ def rule_note(app: Application, s: ScrewSpec, locks_with_margin: bool) -> Phrase
     friction at the self-locking factor against the lead angle) disagree: what the rule
     says, and that the physics governs, and why; None where they agree."""
     seed = efficiency.seed_backdrive_rule(s.lead_m, s.outer_diameter_m)
-    if seed == locks_with_margin:
+    if seed == locks_with_margin or s.screw_type == "ball":  # a sliding thread's rule
         return None
     return Phrase(
         "The catalog's rule of thumb (lead under OD / 8 = {od8}) says it "

@@ -50,7 +50,9 @@ class Life(Check):
         unrated = np.isnan(q.life_years_min)
         worn = ~np.isnan(t.wear_rate_m2_n)  # the wear-life check judges these
         required = same(t, app.required_life_years)
-        return Measure(~(unrated & worn), required, q.life_years_min, flagged=unrated & ~worn)
+        # a ball nut has no rated travel: its L10 life is the ball-life check
+        judged = ~(unrated & worn) & ~t.ball
+        return Measure(judged, required, q.life_years_min, flagged=unrated & ~worn & ~t.ball)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

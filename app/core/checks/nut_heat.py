@@ -56,7 +56,8 @@ class NutHeat(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         room = headroom(app, t)
-        applicable = where_given(q.nut_temperature_rise_k) & where_given(room)
+        # a ball nut rolls: no sliding-friction heat balance
+        applicable = where_given(q.nut_temperature_rise_k) & where_given(room) & ~t.ball
         return Measure(applicable, q.nut_temperature_rise_k, room)
 
     def symbols(

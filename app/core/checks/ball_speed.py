@@ -1,0 +1,74 @@
+"""Ball screw: the peak screw speed against the maker's DN limit (nominal diameter [mm]
+times speed [rpm]), which bounds the ball recirculation's noise, heat and life."""
+
+from app.core.checks.base import (
+    MARGIN_NOTE,
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    at_most,
+)
+from app.core.formulas import ballscrew
+from app.core.phrase import Amount, Phrase
+
+
+class BallSpeed(Check):
+    name = "ball_speed"
+    why_none = (
+        "the speed exceeds every ball screw's DN limit: a belt drive, a rack and pinion or "
+        "a linear motor"
+    )
+    label = "DN speed limit (ball screw)"
+    description = (
+        "A ball screw's peak speed against the maker's DN limit: outer diameter [mm] times "
+        "speed [rpm] at most 70,000 for rolled and 90,000 for ground ball screws (HIWIN), "
+        "beyond which the ball recirculation runs noisy and hot and its life drops. The "
+        "critical speed of the shaft is checked separately. Applies to ball screws only."
+    )
+    quantity = "rpm"
+    formula = "n = n_peak; n_DN = DN_max / (d_s * 1000)"
+    source = "HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, sec. 3.7.6 (DN value)"
+    sources = ("dn_limit", "outer_diameter")
+    capacity_sources = ("dn_limit",)
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        limit = ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m)
+        return Measure(t.ball.copy(), q.peak_rpm, limit)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {"n_peak": q.peak_rpm, "DN_max": t.dn_limit_mm_rpm, "d_s": t.outer_diameter_m}
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        limit = ballscrew.dn_speed_limit(s.dn_limit_mm_rpm or 0.0, s.outer_diameter_m)
+        verb = "within" if passed else "above"
+        return Phrase(
+            "Peak speed {n}, " + verb + " the {limit} that the maker's DN limit of {dn} "
+            "mm rpm allows this diameter.",
+            {
+                "n": Amount(r.peak_rpm, "rpm"),
+                "limit": Amount(limit, "rpm"),
+                "dn": Amount(s.dn_limit_mm_rpm or 0.0, "factor"),
+            },
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        limit = ballscrew.dn_speed_limit(s.dn_limit_mm_rpm or 0.0, s.outer_diameter_m)
+        return Phrase(
+            "Keep the screw at or below {n}: a longer lead for the same linear speed, a "
+            "ground screw (higher DN limit) or a lower speed." + MARGIN_NOTE,
+            {"n": Amount(at_most(limit), "rpm")},
+        )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        limit = ballscrew.dn_speed_limit(s.dn_limit_mm_rpm or 0.0, s.outer_diameter_m)
+        return {"speed_m_s": at_most(limit) / 60.0 * s.lead_m}

@@ -1,0 +1,71 @@
+"""Leadscrews and ball screws in one ranking: what the summary says first when one kind
+passes and the other does not, or when neither does."""
+
+from collections import Counter
+from collections.abc import Sequence
+
+import numpy as np
+
+from app.core.checks import BY_NAME
+from app.core.phrase import Phrase
+from app.core.screening import Screening
+from app.core.table import Mask
+
+#: How many passing ball screws the summary names.
+NAMED = 3
+#: The shaft's own limits, which any screw of that length and speed meets.
+SHAFT_CHECKS = frozenset({"critical_speed", "buckling", "root_stress"})
+NOT_A_SCREW = "a belt drive, a rack and pinion or a linear motor"
+
+
+def _most_excluding(sc: Screening, rows: Mask) -> tuple[str, int]:
+    """The check that fails the most of ``rows``, and how many it fails."""
+    counts = Counter({n: int(np.count_nonzero(m & rows)) for n, m in sc.failed_by_check.items()})
+    name, count = counts.most_common(1)[0] if counts else ("", 0)
+    return name, count
+
+
+def _label(name: str) -> str:
+    return BY_NAME[name].label if name in BY_NAME else name
+
+
+def no_leadscrew(sc: Screening, passing_ids: Sequence[str]) -> Phrase | None:
+    """When ball screws pass and no leadscrew does (both kinds screened): say so first,
+    with the check that excludes the most leadscrews and the passing ball screws, before
+    any change of the axis is offered; None otherwise."""
+    ball = sc.table.ball
+    lead = ~ball
+    if not lead.any() or (sc.passed & lead).any() or not (sc.passed & ball).any():
+        return None
+    name, count = _most_excluding(sc, lead)
+    balls = [i for i in passing_ids if sc.table.screws[_position(sc, i)].screw_type == "ball"]
+    return Phrase(
+        f"No leadscrew passes: {_label(name)} excludes {count} of {int(lead.sum())} "
+        f"leadscrews. {int(np.count_nonzero(sc.passed & ball))} ball screws do"
+        + (f", first {', '.join(balls[:NAMED])}." if balls else ".")
+    )
+
+
+def _position(sc: Screening, screw_id: str) -> int:
+    return next(i for i, s in enumerate(sc.table.screws) if s.id == screw_id)
+
+
+def neither(sc: Screening) -> Phrase | None:
+    """When both kinds were screened and none passes: the limit that excludes the most
+    ball screws, and what kind of drive could do it; None otherwise."""
+    ball = sc.table.ball
+    if not ball.any() or not (~ball).any() or sc.passed.any():
+        return None
+    name, count = _most_excluding(sc, ball)
+    check = BY_NAME.get(name)
+    if name.startswith("ball_") and check is not None and check.why_none:
+        what = check.why_none
+    elif name in SHAFT_CHECKS:
+        what = f"a screw shaft this long and fast cannot: {NOT_A_SCREW} can"
+    else:
+        what = f"its fix names what would clear it, or {NOT_A_SCREW}"
+    total = int(ball.sum())
+    return Phrase(
+        f"Neither a leadscrew nor a ball screw in the catalog can do this: {_label(name)} "
+        f"excludes {count} of {total} ball screws too; {what}."
+    )

@@ -1,0 +1,188 @@
+"""The ball-screw families (catalog/hiwin/ballscrew-*.toml, app/catalog/ball.py): their
+values against the maker's tables, their provenance, and the leadscrew ratings they do
+not have.
+
+Source: HIWIN GmbH, Ballscrews & Accessories, catalogue BS-08-2-EN-1704-K (www.hiwin.de):
+Table 4.4 (rolled flange single nut FSCDIN/FSIDIN, p. 35-36), Table 4.5 (rolled RSIT,
+p. 37), Table 6.4 (ground DIN single nut FSC, p. 48-49), sec. 3.7.6 (DN limits).
+"""
+
+from pathlib import Path
+
+import pytest
+
+from app.catalog import Catalog, load_catalog
+from app.catalog.ball import NOT_APPLICABLE
+from app.catalog.errors import CatalogError
+
+BALL_FAMILIES = {"HIWIN-ROLLED", "HIWIN-ROLLED-RSIT", "HIWIN-GROUND"}
+
+
+def _ball(catalog: Catalog) -> list:
+    return [s for s in catalog.screws if s.screw_type == "ball"]
+
+
+@pytest.mark.parametrize(
+    ("nut", "od_mm", "lead_mm", "length_mm", "root_mm", "ca_n", "c0a_n", "ball_mm"),
+    [
+        # Table 4.4: ds, P, L, dk, Cdyn, C0 (no ball diameter printed)
+        pytest.param("R16-05T3-FSIDIN", 15.5, 5, 40, 12.9, 6500, 11700, None, id="rolled-16x5"),
+        pytest.param("R25-10K4-FSCDIN", 24.5, 10, 61, 21.8, 16100, 44900, None, id="rolled-25x10"),
+        pytest.param("R40-10K4-FSCDIN", 37.8, 10, 70, 32.8, 45000, 123000, None, id="rolled-40x10"),
+        pytest.param(
+            "R63-10T6-FSIDIN", 63.1, 10, 120, 58.0, 61920, 214090, None, id="rolled-63x10"
+        ),
+        # Table 4.5
+        pytest.param("R12-04B1-RSIT", 12.0, 4, 34, 9.5, 3000, 5700, None, id="rsit-12x4"),
+        # Table 6.4: ds, P, ball diameter, L, dk, Cdyn, C0
+        pytest.param("R20-05K4-FSC", 20, 5, 40, 17.32, 14900, 36400, 3.175, id="ground-20x5"),
+        pytest.param("R32-10K5-FSC", 32, 10, 73, 28.74, 30800, 94500, 3.969, id="ground-32x10"),
+        pytest.param("R40-10K5-FSC", 40, 10, 83, 34.91, 63400, 184000, 6.35, id="ground-40x10"),
+    ],
+)
+def test_values_are_the_makers_table(
+    catalog: Catalog,
+    nut: str,
+    od_mm: float,
+    lead_mm: float,
+    length_mm: float,
+    root_mm: float,
+    ca_n: float,
+    c0a_n: float,
+    ball_mm: float | None,
+) -> None:
+    s = catalog.by_id[nut]
+    assert s.screw_type == "ball"
+    assert s.outer_diameter_m == pytest.approx(od_mm / 1e3)
+    assert s.lead_m == pytest.approx(lead_mm / 1e3)
+    assert s.nut_length_m == pytest.approx(length_mm / 1e3)
+    assert s.root_diameter_m == pytest.approx(root_mm / 1e3)
+    assert (s.dynamic_load_n, s.static_load_n) == (ca_n, c0a_n)
+    assert s.ball_diameter_m == (None if ball_mm is None else pytest.approx(ball_mm / 1e3))
+    table = "Table 6.4" if nut.endswith("-FSC") else "Table 4.5" if "RSIT" in nut else "Table 4.4"
+    for name in ("dynamic_load", "static_load", "root_diameter", "nut_length"):
+        assert s.provenance[name].kind == "vendor"
+        assert (
+            table in s.provenance[name].source and "BS-08-2-EN-1704-K" in s.provenance[name].source
+        )
+
+
+def test_at_least_twenty_sizes_and_leads_from_12x4_to_40x10(catalog: Catalog) -> None:
+    pairs = {(round(s.outer_diameter_m * 1e3), round(s.lead_m * 1e3)) for s in _ball(catalog)}
+    assert len(pairs) >= 20
+    assert {(12, 4), (20, 5), (32, 10), (40, 10), (50, 10)} <= pairs
+    assert {s.family_id for s in _ball(catalog)} == BALL_FAMILIES
+
+
+def test_dn_limits_grades_and_play_are_the_makers(catalog: Catalog) -> None:
+    """Sec. 3.7.6: DN 70,000 rolled, 90,000 ground; Table 4.1 T7 v300p 0.052 mm; Table 6.1
+    T3 e300 12 um; Table 4.4 max. axial play 0.04 mm of R16-05T3 (rolled nuts come with
+    play, sec. 3.6: no preload, no drag)."""
+    rolled, ground = catalog.by_id["R16-05T3-FSIDIN"], catalog.by_id["R32-10K5-FSC"]
+    assert (rolled.dn_limit_mm_rpm, ground.dn_limit_mm_rpm) == (70_000.0, 90_000.0)
+    assert (rolled.accuracy_grade, ground.accuracy_grade) == ("T7", "T3")
+    assert rolled.lead_accuracy_m_per_m == pytest.approx(52e-6 / 0.3)
+    assert ground.lead_accuracy_m_per_m == pytest.approx(12e-6 / 0.3)
+    assert (rolled.backlash_max_m, rolled.drag_torque_max_nm) == (pytest.approx(4e-5), 0.0)
+    assert not rolled.anti_backlash and ground.anti_backlash
+
+
+def test_a_preloaded_nuts_drag_is_hiwins_idle_torque_at_its_largest_preload(
+    catalog: Catalog,
+) -> None:
+    """HIWIN F 3.2, T_d = K_p F_pr P / (2000 pi), K_p 0.1 to 0.3, at the single nut's
+    largest preload 5 % of Cdyn (sec. 3.6.2), an assumed upper bound: R32-10K5-FSC,
+    0.3 x 1540 N x 10 mm / (2000 pi) = 0.7353 N m."""
+    s = catalog.by_id["R32-10K5-FSC"]
+    assert s.drag_torque_max_nm == pytest.approx(
+        0.3 * 0.05 * 30800 * 10 / (2000 * 3.141592653589793)
+    )
+    assert s.drag_torque_min_nm == pytest.approx(s.drag_torque_max_nm / 3)
+    assert s.provenance["drag_torque"].kind == "vendor"
+
+
+def test_a_ball_nut_has_no_leadscrew_nut_ratings(catalog: Catalog) -> None:
+    """No PV, flank pressure, sliding speed, wear or design load: each says why."""
+    for s in _ball(catalog):
+        assert s.pv_limit_pa_m_s is None and s.design_load_n is None
+        assert s.max_sliding_speed_m_s is None and s.wear_rate_m2_n is None
+        assert not s.bearing_pressure_table and s.life_min_m is None
+        assert s.thread_half_angle_rad == 0.0
+        for name in ("pv_limit", "bearing_pressure", "max_sliding_speed", "design_load"):
+            assert s.provenance[name] == NOT_APPLICABLE
+    assert "not applicable to a ball screw" in NOT_APPLICABLE.source
+
+
+def test_the_leads_of_one_size_share_a_series(catalog: Catalog) -> None:
+    series = catalog.series["HIWIN-ROLLED R16"]
+    assert [s.id for s in series.screws] == [
+        "R16-05T3-FSIDIN",
+        "R16-10K3-FSCDIN",
+        "R16-16K3-FSCDIN",
+        "R16-20K2-FSCDIN",
+    ]
+    assert series.fields["leads"].value == pytest.approx([0.005, 0.01, 0.016, 0.02])
+
+
+def _family_text(root_mm: float = 12.9, with_ca_source: bool = True) -> str:
+    """A one-nut ball-screw family of a user's own, in the built-in file's form."""
+    src = '{ provenance = "user", source = "test table" }'
+    columns = [
+        f"outer_diameter_mm = {src}",
+        f"lead_mm = {src}",
+        f"nut_length_mm = {src}",
+        f"root_diameter_mm = {src}",
+        f"static_load_n = {src}",
+    ] + ([f"dynamic_load_n = {src}"] if with_ca_source else [])
+    value = 'provenance = "user", source = "test"'
+    return "\n".join(
+        [
+            "[ballscrew]",
+            'id = "MY-BALL"',
+            'name = "my ball screws"',
+            'kind = "rolled"',
+            'material = "c45-steel"',
+            "anti_backlash = false",
+            f'accuracy_grade = {{ value = "T7", {value} }}',
+            f"lead_accuracy_mm_per_300mm = {{ value = 0.052, {value} }}",
+            f"dn_limit_mm_rpm = {{ value = 70000.0, {value} }}",
+            f"friction_dynamic = {{ value = 0.01, {value} }}",
+            f"friction_static = {{ value = 0.003, {value} }}",
+            f"preload_fraction = {{ value = 0.0, {value} }}",
+            f"preload_friction_factor = {{ min = 0.1, max = 0.3, {value} }}",
+            "[ballscrew.columns]",
+            *columns,
+            "[[nut]]",
+            'id = "MY16-05"',
+            "outer_diameter_mm = 15.5",
+            "lead_mm = 5.0",
+            "nut_length_mm = 40.0",
+            f"root_diameter_mm = {root_mm}",
+            "dynamic_load_n = 6500",
+            "static_load_n = 11700",
+            "",
+        ]
+    )
+
+
+def test_a_users_ball_screw_family_loads(tmp_path: Path) -> None:
+    (tmp_path / "ballscrew-mine.toml").write_text(_family_text())
+    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    assert (screw.screw_type, screw.dynamic_load_n, screw.family_id) == ("ball", 6500.0, "MY-BALL")
+    assert screw.provenance["dynamic_load"].kind == "user"
+
+
+@pytest.mark.parametrize(
+    ("text", "field"),
+    [
+        pytest.param(_family_text(root_mm=16.0), "root_diameter_mm", id="root-above-od"),
+        pytest.param(_family_text(with_ca_source=False), "columns", id="no-source-for-ca"),
+    ],
+)
+def test_a_bad_ball_screw_family_is_refused_naming_the_field(
+    tmp_path: Path, text: str, field: str
+) -> None:
+    (tmp_path / "ballscrew-mine.toml").write_text(text)
+    with pytest.raises(CatalogError) as err:
+        load_catalog([tmp_path])
+    assert field in str(err.value)

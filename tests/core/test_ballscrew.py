@@ -1,0 +1,164 @@
+"""Ball screws in the core: their formulas (app.core.formulas.ballscrew) against published
+worked examples, their checks (ball_life, ball_static, ball_speed), the leadscrew checks
+that do not apply to them, and one ranking of both kinds."""
+
+import math
+from dataclasses import replace
+
+import pytest
+
+from app.catalog import Catalog
+from app.core.evaluate import evaluate
+from app.core.formulas import ballscrew
+from app.core.model import Application
+from app.core.selection import select
+from app.core.table import CandidateTable
+from tests.core.conftest import light_app
+
+#: Checks of a sliding nut, which a ball nut does not have.
+LEADSCREW_ONLY = {
+    "pv",
+    "bearing_pressure",
+    "max_sliding_speed",
+    "nut_heat",
+    "life",
+    "wear_life",
+    "design_load",
+}
+
+
+def test_misumi_life_calculation_example() -> None:
+    """MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678, 6-1 Life
+    Calculation Example: BSS1520, C = 4400 N, P_m = 250 N, N_m = 2118 rpm, f_w = 1.2 ->
+    L_h = 10^6 / (60 x 2118) x (4400 / (250 x 1.2))^3 = 24824 h."""
+    hours = ballscrew.rated_life_revolutions(4400.0, 1.2, 250.0) / (60.0 * 2118.0)
+    assert hours == pytest.approx(24824.0, rel=0.01)
+
+
+def test_mitcalc_required_dynamic_load_example() -> None:
+    """MITCalc Ball screws, preliminary design (scribd 'Ball Screw Design & Calculations'):
+    F_m 1000 N, n_m 2400 rpm, f_w 1.2, L_h 20,000 h -> Ca_req 17073.1 N; its DN check
+    32 mm x 2400 rpm = 76,800."""
+    ca = ballscrew.required_dynamic_load(1.2, 1000.0, 20_000 * 60 * 2400.0)
+    assert ca == pytest.approx(17073.1, rel=1e-4)
+    assert ballscrew.dn_value(0.032, 2400.0) == 76_800.0
+    # the rated life at exactly that rating is the life asked
+    assert ballscrew.rated_life_revolutions(ca, 1.2, 1000.0) == pytest.approx(20_000 * 60 * 2400.0)
+
+
+def test_the_cubic_mean_load_weighs_each_segment_by_its_travel() -> None:
+    """HIWIN BS-08-2-EN-1704-K F 3.9 with n_i t_i as travel: a constant load is its own
+    mean; a short heavy segment dominates a long light one more than its share."""
+    assert ballscrew.cubic_mean_load([700.0, -700.0], [0.3, 0.3]) == pytest.approx(700.0)
+    mixed = ballscrew.cubic_mean_load([1000.0, 100.0], [0.1, 0.9])
+    assert mixed == pytest.approx((1000.0**3 * 0.1 + 100.0**3 * 0.9) ** (1 / 3))
+    assert mixed > 1000.0 * 0.1 + 100.0 * 0.9
+    assert ballscrew.cubic_mean_load([500.0], [0.0]) == 0.0
+
+
+def test_a_ball_screws_efficiency_is_in_hiwins_range(catalog: Catalog) -> None:
+    """The thread-efficiency formula with a 0 flank angle and mu = 0.01 (HIWIN Fig. 2.1's
+    highest curve) gives 0.85 to 0.95 forward (HIWIN F 3.15: eta_1 0.85 to 0.95):
+    R16-05T3, d_p = (15.5 + 12.9) / 2 = 14.2 mm, tan(lambda) = 5 / (pi 14.2) = 0.11208,
+    eta = 0.11208 (1 - 0.01 x 0.11208) / (0.11208 + 0.01) = 0.9171."""
+    t = CandidateTable.build([catalog.by_id["R16-05T3-FSIDIN"], catalog.by_id["R40-10K4-FSCDIN"]])
+    tan_l = 5.0 / (math.pi * 14.2)
+    assert t.efficiency[0] == pytest.approx(tan_l * (1 - 0.01 * tan_l) / (tan_l + 0.01))
+    assert t.efficiency[0] == pytest.approx(0.9171, abs=1e-4)
+    assert all(0.85 <= e <= 0.95 for e in t.efficiency)
+    assert not t.self_locking.any() and not t.seed_rule_no_backdrive.any()
+
+
+def _check(app: Application, screw_id: str, name: str, catalog: Catalog):  # type: ignore[no-untyped-def]
+    return next(c for c in evaluate(app, catalog.by_id[screw_id]).checks if c.name == name)
+
+
+@pytest.mark.parametrize(("load_n", "passes"), [(5000.0, True), (6000.0, False)])
+def test_static_safety_on_the_peak_load(catalog: Catalog, load_n: float, passes: bool) -> None:
+    """R16-05T3-FSIDIN, C0a = 11,700 N (HIWIN Table 4.4), f_s = 2 (THK Table 21): 5000 N x 2
+    = 10,000 N passes, 6000 N x 2 = 12,000 N does not."""
+    c = _check(light_app(load_n=load_n), "R16-05T3-FSIDIN", "ball_static", catalog)
+    assert c.passed is passes
+    assert c.utilization == pytest.approx(2 * load_n / 11_700.0)
+    assert "Not applicable to a ball screw" in c.message.template
+
+
+@pytest.mark.parametrize(("speed_m_s", "passes"), [(0.3, True), (0.5, False)])
+def test_dn_speed_limit(catalog: Catalog, speed_m_s: float, passes: bool) -> None:
+    """R16-05T3-FSIDIN, rolled: DN 70,000 / 15.5 mm = 4516 rpm (HIWIN sec. 3.7.6); lead 5 mm:
+    0.3 m/s is 3600 rpm, 0.5 m/s 6000 rpm."""
+    c = _check(light_app(speed_m_s=speed_m_s), "R16-05T3-FSIDIN", "ball_speed", catalog)
+    assert c.passed is passes
+    assert c.capacity == pytest.approx(70_000.0 / 15.5)
+    assert c.demand == pytest.approx(speed_m_s / 0.005 * 60.0)
+
+
+def test_l10_life_in_years_of_the_duty(catalog: Catalog) -> None:
+    """500 N throughout (no moving mass), 200 mm stroke, 1000 cycles a day, R16-05T3 (Ca
+    6500 N, lead 5 mm), f_w 1.2: L = (6500 / 600)^3 x 10^6 = 1.2714e9 rev; a day is
+    2 x 0.2 / 0.005 x 1000 = 80,000 rev; 1.2714e9 / (80,000 x 365) = 43.54 years."""
+    app = light_app(load_n=500.0, stroke_m=0.2, cycles_per_day=1000.0, required_life_years=50.0)
+    c = _check(app, "R16-05T3-FSIDIN", "ball_life", catalog)
+    assert c.capacity == pytest.approx(43.54, rel=1e-3)
+    assert not c.passed
+    easy = _check(replace(app, required_life_years=40.0), "R16-05T3-FSIDIN", "ball_life", catalog)
+    assert easy.passed
+
+
+def test_leadscrew_checks_do_not_run_for_a_ball_screw_and_ball_checks_not_for_a_leadscrew(
+    catalog: Catalog,
+) -> None:
+    app = light_app(stroke_m=0.2, cycles_per_day=1000.0, required_life_years=1.0)
+    ball = {c.name for c in evaluate(app, catalog.by_id["R16-05T3-FSIDIN"]).checks}
+    lead = {c.name for c in evaluate(app, catalog.by_id["ZBX8000-L10"]).checks}
+    assert not ball & LEADSCREW_ONLY
+    assert {"ball_life", "ball_static", "ball_speed", "critical_speed", "buckling"} <= ball
+    assert not {n for n in lead if n.startswith("ball_")}
+
+
+def test_a_ball_screw_always_back_drives(catalog: Catalog) -> None:
+    """A vertical load with no brake: the ball screw cannot hold it (mu 0.003 against a
+    lead angle of atan 0.112), and says a brake is needed."""
+    app = light_app(orientation="vertical")
+    c = _check(app, "R16-05T3-FSIDIN", "back_driving", catalog)
+    assert not c.passed
+    assert "always back-drives" in c.message.template
+    assert "brake" in c.message.template
+
+
+def test_when_no_leadscrew_passes_the_summary_says_so_first_and_names_ball_screws(
+    catalog: Catalog,
+) -> None:
+    """2 kN at 0.5 m/s over 1 m: the leadscrews' nuts cannot (design load, sliding
+    speed), rolled and ground ball screws can."""
+    app = Application(
+        load_n=2000.0,
+        speed_m_s=0.5,
+        length_m=1.0,
+        stroke_m=0.8,
+        cycles_per_day=2000.0,
+        required_life_years=5.0,
+        moving_mass_kg=50.0,
+        accel_m_s2=2.0,
+    )
+    sel = select(app, catalog.index)
+    assert sel.passed > 0
+    assert {c.screw.screw_type for c in sel.candidates} == {"ball"}
+    first = sel.summary.message.values["p0"].template
+    assert first.startswith("No leadscrew passes: ")
+    assert sel.candidates[0].screw.id in first
+    # naming the leadscrew families: none passes
+    lead = tuple(sorted({s.family_id for s in catalog.screws if s.screw_type == "lead"}))
+    assert select(replace(app, families=lead), catalog.index).passed == 0
+
+
+def test_when_neither_kind_can_it_names_the_limit_and_another_drive(catalog: Catalog) -> None:
+    """3 m/s over a 2 m screw: every screw whirls (critical speed), ball screws too; the
+    summary names the limit and a belt, a rack and pinion or a linear motor."""
+    app = Application(load_n=200.0, speed_m_s=3.0, length_m=2.0)
+    sel = select(app, catalog.index)
+    assert sel.passed == 0
+    first = sel.summary.message.values["p0"].template
+    assert first.startswith("Neither a leadscrew nor a ball screw in the catalog can do this")
+    assert "Critical speed" in first
+    assert "a belt drive, a rack and pinion or a linear motor" in first
