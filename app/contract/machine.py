@@ -80,6 +80,17 @@ MachineAxisOut = create_model(
         cast(Any, Optional[CandidateSummaryOut]),  # noqa: UP045 (a run-time type)
         Field(description="The chosen screw (summary view); null when none passes."),
     ),
+    verdict=(
+        str | None,
+        Field(description="The chosen screw's verdict in one or two sentences."),
+    ),
+    energy_j=(
+        dict[str, float | None] | None,
+        Field(
+            description="The chosen screw's energy per cycle [J], by the output table's "
+            "keys (cycle_motor_work_j ...: /api/v1/formulas); null when none is chosen."
+        ),
+    ),
     candidates=(
         cast(Any, GenericAlias(list, (CandidateSummaryOut,))),
         Field(description="Its ranked passing screws (summary view)."),

@@ -1,13 +1,29 @@
 """A machine of stacked axes sized (``app.core.machine``), as the API's answer."""
 
+import math
 from typing import Any
 
 from app.catalog import Catalog
 from app.contract.form import share_query
 from app.contract.machine import MachineIn
+from app.contract.reported import REPORTED
+from app.contract.source import Writer
+from app.contract.units import DEFAULT_UNITS
 from app.core.machine import Axis, AxisResult, size_machine
 from app.report.present import candidate_json
 from app.report.service import INPUT_RANGES, INPUT_WORDS
+
+#: The energy per cycle's numbers of the output table (their keys are the record's).
+ENERGY_KEYS = tuple(r.key for r in REPORTED if r.quantity == "energy")
+
+
+def energy_of(r: AxisResult) -> dict[str, float | None] | None:
+    """The chosen screw's energy per cycle [J] by the output table's keys; None without
+    a chosen screw."""
+    if r.chosen is None:
+        return None
+    values = {key: float(getattr(r.chosen.quantities, key)) for key in ENERGY_KEYS}
+    return {key: v if math.isfinite(v) else None for key, v in values.items()}
 
 
 class UnknownChoice(LookupError):
@@ -44,6 +60,8 @@ def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
         "evaluated": r.selection.evaluated,
         "passed": r.selection.passed,
         "chosen": None if r.chosen is None else candidate_json(r.chosen, "summary"),
+        "energy_j": energy_of(r),
+        "verdict": None if r.chosen is None else Writer(DEFAULT_UNITS).text(r.chosen.verdict.text),
         "candidates": [candidate_json(c, "summary") for c in r.selection.candidates],
         "share_url": "/?" + share_query(inputs),
     }

@@ -90,3 +90,21 @@ def test_an_axis_share_link_carries_its_moves_with_the_mass_above(client: TestCl
     page = client.get(x["share_url"])
     assert page.status_code == 200 and x["chosen"]["id"] in page.text
     assert f"{1 + z['total_kg']!r}"[:8] in x["share_url"].replace("%3A", ":")
+
+
+def test_each_axis_gives_its_energy_per_cycle_from_the_output_table(client: TestClient) -> None:
+    """The machine's energy figures are the chosen screw's own, as the select call gives
+    them (the output table's energy rows), and balance: motor work - braking = work on
+    the load + thread and drag losses."""
+    z = client.post("/api/v1/machine", json=printer()).json()["axes"][0]
+    e = z["energy_j"]
+    alone = client.post(
+        "/api/v1/evaluate?detail=full",
+        json={"application": Z, "screw": {"catalog_id": z["chosen"]["id"]}},
+    ).json()["candidate"]
+    for key, value in e.items():
+        assert value == pytest.approx(alone[key], rel=1e-12, abs=1e-15) if value else True
+    drive = e["cycle_motor_work_j"] - e["cycle_regen_j"]
+    losses = e["cycle_load_work_j"] + e["cycle_thread_loss_j"] + e["cycle_drag_loss_j"]
+    assert drive == pytest.approx(losses, rel=1e-9)
+    assert z["verdict"].startswith(("Governed", "Passes", "Fails"))
