@@ -47,12 +47,18 @@
       return;
     }
     var queued = chartQueue.length;
+    var wanted = {};
     figures.forEach(function (script) {
       var target = document.getElementById(script.dataset.chart);
-      if (target && !target.classList.contains("js-plotly-plot") && chartQueue.indexOf(script) < 0) {
+      if (!target || target.classList.contains("js-plotly-plot")) {
+        return;
+      }
+      wanted[target.id] = true;
+      if (chartQueue.indexOf(script) < 0) {
         chartQueue.push(script);
       }
     });
+    releaseKeptCharts(wanted);
     if (!queued && chartQueue.length) {
       requestAnimationFrame(function () {
         setTimeout(drawNextChart);
@@ -101,7 +107,14 @@
     var config = Object.assign({}, PLOT_CONFIG, {
       toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
     });
-    window.Plotly.newPlot(target, figure.data, figure.layout, config);
+    var kept = keptCharts[target.id];
+    if (kept) {
+      delete keptCharts[target.id];
+      target.replaceWith(kept);
+      window.Plotly.react(kept, figure.data, figure.layout, config);
+    } else {
+      window.Plotly.newPlot(target, figure.data, figure.layout, config);
+    }
   }
 
   // A field's error shows once the field has been left or the form submitted (results
@@ -357,17 +370,32 @@
       note.hidden = false;
     } else {
       target.classList.remove("stale");
-      purgeCharts(target);
+      keepCharts(target);
     }
   }
 
-  // the swap replaces the charts: Plotly.purge drops each old chart's window resize
-  // listener (kept for ever otherwise) and its thousands of SVG nodes, which htmx would
-  // walk one by one while cleaning up the old results
-  function purgeCharts(target) {
+  // the swap replaces the charts: each drawn chart is taken out of the old results first
+  // (htmx would otherwise walk its thousands of SVG nodes one by one while cleaning up)
+  // and kept to be redrawn with the new figure by Plotly.react, about three times faster
+  // than drawing it anew; one the new answer has no figure for is purged, which drops its
+  // window resize listener (kept for ever otherwise)
+  var keptCharts = {};
+
+  function keepCharts(target) {
+    releaseKeptCharts();
     eachChart(function (chart) {
       if (target.contains(chart)) {
-        window.Plotly.purge(chart);
+        chart.remove();
+        keptCharts[chart.id] = chart;
+      }
+    });
+  }
+
+  function releaseKeptCharts(wanted) {
+    Object.keys(keptCharts).forEach(function (id) {
+      if (!wanted || !wanted[id]) {
+        window.Plotly.purge(keptCharts[id]);
+        delete keptCharts[id];
       }
     });
   }
