@@ -352,10 +352,31 @@
     });
   }
 
+  // the form's requests queue (hx-sync "queue last") rather than abort one another, and
+  // an answer to values typed over since it was asked for is dropped: the newer one follows
+  var edits = 0;
+
+  function countEdit(event) {
+    if (event.target.form === selectorForm()) {
+      edits += 1;
+    }
+  }
+
+  function stampRequest(event) {
+    if (event.detail.elt === selectorForm()) {
+      event.detail.xhr.selectorEdits = edits;
+    }
+  }
+
   // a field being retyped answers with errors only: keep the last results, dimmed
   function keepStaleResults(event) {
     var target = event.detail.target;
     if (!target || target.id !== "results") {
+      return;
+    }
+    var asked = event.detail.xhr.selectorEdits;
+    if (asked !== undefined && asked !== edits) {
+      event.detail.shouldSwap = false;
       return;
     }
     var keep = event.detail.serverResponse.indexOf("data-keep-results") !== -1;
@@ -451,6 +472,8 @@
   document.addEventListener("click", onClick);
   document.addEventListener("htmx:beforeSwap", keepStaleResults);
   document.addEventListener("htmx:beforeRequest", markLoading);
+  document.addEventListener("htmx:beforeRequest", stampRequest);
+  document.addEventListener("input", countEdit, true);
   document.addEventListener("htmx:afterRequest", markLoading);
   window.addEventListener("beforeprint", dateReport);
   window.matchMedia("print").addEventListener("change", onPrintMedia);

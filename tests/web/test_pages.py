@@ -58,7 +58,7 @@ def test_empty_selector_is_a_form_with_a_label_on_every_field(client: TestClient
     page = soup(client.get("/"))
     form = page.select_one("form#selector[action='/'][method='get']")
     assert form is not None and form.select_one("button[type=submit]")
-    assert form["hx-get"] == "/" and "delay:150ms" in str(form["hx-trigger"])
+    assert form["hx-get"] == "/" and "delay:60ms" in str(form["hx-trigger"])
     for name in ("load", "lead", "speed", "length"):
         assert page.select_one(f"#f-{name}[name={name}]")
     for field in form.select("input:not([type=hidden]), select"):
