@@ -164,11 +164,18 @@
       if (!line.hasAttribute("data-error")) {
         line.setAttribute("data-error", line.textContent);
       }
-      var text = isTouched(form, line.id.slice(2)) ? line.getAttribute("data-error") : "";
+      var name = line.id.slice(2);
+      var text = isTouched(form, name) ? line.getAttribute("data-error") || missing(form, name) : "";
       if (line.textContent !== text) {
         line.textContent = text;
       }
     });
+  }
+
+  // a required field left empty before any answer named it
+  function missing(form, name) {
+    var field = form.elements.namedItem(name);
+    return field && field.dataset && field.dataset.missing && !field.value.trim() ? field.dataset.missing : "";
   }
 
   function onFieldLeft(event) {
