@@ -156,9 +156,7 @@
     if (!form) {
       return;
     }
-    if (document.querySelector("#results .result-head")) {
-      form.classList.add("submitted");
-    }
+    markAnswered(form);
     takeAnswerErrors(form);
     errorLines(form).forEach(function (line) {
       if (!line.hasAttribute("data-error")) {
@@ -196,7 +194,14 @@
     }
   }
 
-  // the server's errors as the page loaded: a page answered with errors was submitted
+  // results on the page count as a submission
+  function markAnswered(form) {
+    if (document.querySelector("#results .result-head")) {
+      form.classList.add("submitted");
+    }
+  }
+
+  // a page loaded with results, or with the server's errors, was submitted
   function startErrors() {
     var form = selectorForm();
     if (!form) {
@@ -208,6 +213,7 @@
     if (answered) {
       form.classList.add("submitted");
     }
+    markAnswered(form);
     form.addEventListener("focusout", onFieldLeft);
   }
 
