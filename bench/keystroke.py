@@ -1,5 +1,6 @@
-"""Keystroke to results in Chromium (issue 24): the time from one keystroke in a field of
-the selector's form to the results region holding the answer to the new value.
+"""Keystroke to results in Chromium (issues 24 and 34): the time from one keystroke in a
+field of the selector's form to the results table holding the answer to the new value, and
+to every chart of that answer drawn.
 
 Debian's Chromium (``/usr/bin/chromium``) is driven through Playwright against a server
 started as ``bench.web.server`` starts it. Each keystroke replaces the last character of a
@@ -7,9 +8,11 @@ field (load, speed, length, stroke, acceleration, moving mass and the motor's to
 every value is new to the server's response cache and each answer is computed. In the
 page, performance.now() marks the ``input`` event, htmx sending the request (after the
 form's trigger delay), the response arriving, a MutationObserver seeing the results
-region change, htmx settling (the charts are drawn there) and the next frame after it.
-Target: the median from keystroke to updated results under 300 ms.
-"""
+region change, the next frame after that (the table painted), htmx settling, and app.js's
+``charts:drawn`` (its last chart drawn: the charts wait for the table and draw one a task)
+with the next frame after it.
+Targets (issue 34): keystroke to the updated table at most 200 ms median, the trigger delay
+included; keystroke to every chart drawn at most 400 ms median."""
 
 import statistics
 from pathlib import Path
@@ -19,7 +22,10 @@ from bench.report import Report
 from bench.web import server
 
 CHROMIUM = "/usr/bin/chromium"
-TARGET_MS = 300.0
+#: keystroke to the results table updated, median (ms)
+TABLE_TARGET_MS = 200.0
+#: keystroke to every chart of the answer drawn and painted, median (ms)
+CHARTS_TARGET_MS = 400.0
 #: a move and a motor, so the table has every column and the charts their curves
 START = (
     "/?load=50&speed=200&length=500&stroke=300&accel=2000&moving_mass_kg=5&max_torque=0.5"
@@ -47,22 +53,36 @@ MARKS = """() => {
     if (current && current.sent === undefined) current.sent = performance.now();
   });
   document.body.addEventListener('htmx:beforeSwap', () => {
-    if (current && current.response === undefined) current.response = performance.now();
+    const mark = current;
+    if (mark && mark.response === undefined) {
+      mark.response = performance.now();
+      // registered before app.js's own frame callbacks: the first task after the paint
+      requestAnimationFrame(() => setTimeout(() => { mark.shown = performance.now(); }));
+    }
   });
   new MutationObserver(() => {
-    if (current && current.response !== undefined && current.swapped === undefined) {
-      current.swapped = performance.now();
+    const mark = current;
+    if (mark && mark.response !== undefined && mark.swapped === undefined) {
+      mark.swapped = performance.now();
     }
   }).observe(results, {childList: true, subtree: true});
   document.body.addEventListener('htmx:afterSettle', () => {
+    if (current && current.response !== undefined && current.settled === undefined) {
+      current.settled = performance.now();
+    }
+  });
+  document.addEventListener('charts:drawn', () => {
     const mark = current;
-    if (mark && mark.swapped !== undefined && mark.settled === undefined) {
-      mark.settled = performance.now();
+    if (mark && mark.response !== undefined && mark.drawn === undefined) {
+      mark.drawn = performance.now();
       requestAnimationFrame(() => setTimeout(() => { mark.painted = performance.now(); }));
     }
   });
 }"""
-DONE = "() => { const m = window.__bench.marks; return m.length && m[m.length - 1].painted; }"
+DONE = """() => {
+  const m = window.__bench.marks;
+  return m.length && m[m.length - 1].painted && m[m.length - 1].shown;
+}"""
 
 
 def type_keys(page: Any) -> list[dict[str, float]]:
@@ -84,38 +104,40 @@ def percentile(values: list[float], share: float) -> float:
     return ordered[min(len(ordered) - 1, round(share * (len(ordered) - 1)))]
 
 
+def verdict(report: Report, name: str, values: list[float], target_ms: float) -> None:
+    median = statistics.median(values)
+    report.line(
+        f"{name}, median", f"{median:.0f} ms", f"<= {target_ms:.0f} ms", median <= target_ms
+    )
+    report.line(f"{name}, p90", f"{percentile(values, 0.9):.0f} ms", "(shown)", None)
+
+
 def show(report: Report, marks: list[dict[str, float]]) -> None:
     def spans(start: str, end: str) -> list[float]:
         return [m[end] - m[start] for m in marks]
 
-    total = spans("key", "swapped")
-    report.info("keystrokes measured", f"{len(total)} over {len(KEYS)} fields")
-    report.line(
-        "keystroke to results, median",
-        f"{statistics.median(total):.0f} ms",
-        f"< {TARGET_MS:.0f} ms",
-        statistics.median(total) < TARGET_MS,
-    )
-    report.line("keystroke to results, p90", f"{percentile(total, 0.9):.0f} ms", "(shown)", None)
+    report.info("keystrokes measured", f"{len(marks)} over {len(KEYS)} fields")
+    verdict(report, "keystroke to results table", spans("key", "swapped"), TABLE_TARGET_MS)
+    verdict(report, "keystroke to charts drawn", spans("key", "painted"), CHARTS_TARGET_MS)
     report.info("  where it goes (medians)", "")
     for name, start, end in (
         ("trigger delay (keystroke to request)", "key", "sent"),
         ("server and network (request to response)", "sent", "response"),
         ("swap (response to results updated)", "response", "swapped"),
-        ("settle and charts (updated to settled)", "swapped", "settled"),
-        ("to the next frame after settling", "settled", "painted"),
+        ("table painted (updated to the frame after)", "swapped", "shown"),
+        ("settle (response to settled)", "response", "settled"),
+        ("charts (settled to last chart drawn)", "settled", "drawn"),
+        ("to the next frame after the charts", "drawn", "painted"),
     ):
         report.info(f"    {name}", f"{statistics.median(spans(start, end)):.1f} ms")
-    report.info(
-        "keystroke to charts drawn and painted, median",
-        f"{statistics.median(spans('key', 'painted')):.0f} ms",
-    )
 
 
 def run(report: Report) -> None:
     report.section("Keystroke to results in Chromium (the form, htmx swap, charts)")
     if not Path(CHROMIUM).exists():
-        report.line("keystroke to results, median", "no Chromium", f"< {TARGET_MS:.0f} ms", None)
+        report.line(
+            "keystroke to results table", "no Chromium", f"<= {TABLE_TARGET_MS:.0f} ms", None
+        )
         return
     from playwright.sync_api import sync_playwright
 

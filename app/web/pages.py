@@ -11,6 +11,7 @@ from app.catalog import Catalog
 from app.catalog.motors import ANY_MOTOR
 from app.contract.fields import BY_PAGE, FIELDS, GROUPS
 from app.contract.form import (
+    PLAIN_MESSAGES,
     TRUE_WORDS,
     UNIT_CHOICES,
     convert_entered,
@@ -74,7 +75,8 @@ def form_state(
 def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """What every page with the application form renders before any result: the typed
     values and units, the field table and its groups, the choices a text field suggests
-    (the library's motors), no result yet."""
+    (the library's motors), the message of a required field left empty (the page shows it
+    as the field is left, before any answer), no result yet."""
     units, values, converted, typed = form_state(params)
     return {
         "suggestions": {
@@ -100,6 +102,7 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
         "set_groups": set_groups,
         "unit_choices": UNIT_CHOICES,
         "unit_labels": UNIT_LABELS,
+        "missing_message": PLAIN_MESSAGES["missing"],
     }
 
 

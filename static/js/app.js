@@ -1,8 +1,9 @@
 /*
  * The page's one script. Draws every chart from its <script type="application/json">
- * figure (on load and after each htmx swap), loading Plotly only when the first chart
- * arrives so the empty form stays light, keeps aria-invalid in step with the inline
- * error messages that htmx swaps out of band, copies share links, lets a click on a result
+ * figure (on load and after each htmx swap, once the table is painted, one chart a task,
+ * those in view first), loading Plotly only when the first chart arrives so the empty
+ * form stays light, shows each field's error once the field has been left or the form
+ * submitted and keeps aria-invalid in step with it, copies share links, lets a click on a result
  * row open its detail (whose body htmx loads on first opening), marks a detail busy while
  * it loads, keeps the last results (dimmed) while a field is being retyped, and sizes
  * the charts and dates the printed report. Nothing here is needed for the form to work.
@@ -32,6 +33,10 @@
     document.head.appendChild(script);
   }
 
+  // charts wait for the table to be painted, then draw one a task (a keystroke is not held
+  // up behind all of them), those in view first
+  var chartQueue = [];
+
   function drawCharts(root) {
     var figures = root.querySelectorAll('script[type="application/json"][data-chart]');
     if (!figures.length) {
@@ -41,17 +46,209 @@
       loadPlotly();
       return;
     }
+    var queued = chartQueue.length;
+    var wanted = {};
     figures.forEach(function (script) {
       var target = document.getElementById(script.dataset.chart);
       if (!target || target.classList.contains("js-plotly-plot")) {
         return;
       }
-      var figure = JSON.parse(script.textContent);
-      var config = Object.assign({}, PLOT_CONFIG, {
-        toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
-      });
-      window.Plotly.newPlot(target, figure.data, figure.layout, config);
+      wanted[target.id] = true;
+      if (chartQueue.indexOf(script) < 0) {
+        chartQueue.push(script);
+      }
     });
+    releaseKeptCharts(wanted);
+    if (!queued && chartQueue.length) {
+      requestAnimationFrame(function () {
+        setTimeout(drawNextChart);
+      });
+    }
+  }
+
+  function inView(script) {
+    var box = document.getElementById(script.dataset.chart).getBoundingClientRect();
+    return box.bottom > 0 && box.top < window.innerHeight;
+  }
+
+  function drawNextChart() {
+    chartQueue = chartQueue.filter(function (script) {
+      return script.isConnected;
+    });
+    if (!chartQueue.length) {
+      return;
+    }
+    var visible = chartQueue.filter(inView);
+    var script = visible.length ? visible[0] : chartQueue[0];
+    chartQueue.splice(chartQueue.indexOf(script), 1);
+    plot(script);
+    if (chartQueue.length) {
+      setTimeout(drawNextChart);
+    } else {
+      document.dispatchEvent(new CustomEvent("charts:drawn"));
+    }
+  }
+
+  // every chart waiting in the queue, now (the printout needs them all)
+  function drawAllCharts() {
+    chartQueue.splice(0).forEach(function (script) {
+      if (script.isConnected) {
+        plot(script);
+      }
+    });
+  }
+
+  function plot(script) {
+    var target = document.getElementById(script.dataset.chart);
+    if (!target || target.classList.contains("js-plotly-plot")) {
+      return;
+    }
+    var figure = JSON.parse(script.textContent);
+    var config = Object.assign({}, PLOT_CONFIG, {
+      toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
+    });
+    var kept = keptCharts[target.id];
+    if (kept) {
+      delete keptCharts[target.id];
+      target.replaceWith(kept);
+      window.Plotly.react(kept, figure.data, figure.layout, config);
+    } else {
+      window.Plotly.newPlot(target, figure.data, figure.layout, config);
+    }
+  }
+
+  // A field's error shows once the field has been left or the form submitted (results
+  // shown count as a submission, as does a page the server answered with errors): the
+  // first keystroke in an empty form says nothing under the fields not yet reached. Each
+  // error line keeps the server's message in data-error and shows it only then; its space
+  // is reserved (app.css), so no field moves when a message appears or clears.
+  function selectorForm() {
+    return document.getElementById("selector");
+  }
+
+  function isTouched(form, name) {
+    var wrapper = document.getElementById("w-" + name);
+    return form.classList.contains("submitted") || (!!wrapper && wrapper.classList.contains("touched"));
+  }
+
+  function errorLines(form) {
+    return form.querySelectorAll("span.error[id^='e-']");
+  }
+
+  // the errors an htmx answer listed (#field-errors, swapped out of band) become the lines'
+  function takeAnswerErrors(form) {
+    var holder = document.getElementById("field-errors");
+    if (!holder || holder.hasAttribute("data-applied")) {
+      return;
+    }
+    holder.setAttribute("data-applied", "");
+    var errors = {};
+    holder.querySelectorAll("[data-error-for]").forEach(function (item) {
+      errors[item.dataset.errorFor] = item.textContent;
+    });
+    errorLines(form).forEach(function (line) {
+      line.setAttribute("data-error", errors[line.id.slice(2)] || "");
+    });
+  }
+
+  function showErrors() {
+    var form = selectorForm();
+    if (!form) {
+      return;
+    }
+    markAnswered(form);
+    takeAnswerErrors(form);
+    errorLines(form).forEach(function (line) {
+      if (!line.hasAttribute("data-error")) {
+        line.setAttribute("data-error", line.textContent);
+      }
+      var name = line.id.slice(2);
+      var text = isTouched(form, name) ? line.getAttribute("data-error") || missing(form, name) : "";
+      if (line.textContent !== text) {
+        line.textContent = text;
+      }
+    });
+  }
+
+  // a required field left empty before any answer named it
+  function missing(form, name) {
+    var field = form.elements.namedItem(name);
+    return field && field.dataset && field.dataset.missing && !field.value.trim() ? field.dataset.missing : "";
+  }
+
+  function onFieldLeft(event) {
+    var name = event.target.name;
+    var wrapper = name && document.getElementById("w-" + name);
+    if (wrapper && !wrapper.classList.contains("touched")) {
+      wrapper.classList.add("touched");
+      showErrors();
+      syncInvalid();
+    }
+  }
+
+  function onSubmit(event) {
+    if (event.target === selectorForm()) {
+      event.target.classList.add("submitted");
+      showErrors();
+      syncInvalid();
+    }
+  }
+
+  // results on the page count as a submission
+  function markAnswered(form) {
+    if (document.querySelector("#results .result-head")) {
+      form.classList.add("submitted");
+    }
+  }
+
+  // a page loaded with results, or with the server's errors, was submitted
+  function startErrors() {
+    var form = selectorForm();
+    if (!form) {
+      return;
+    }
+    var answered = Array.prototype.some.call(errorLines(form), function (line) {
+      return line.textContent.trim() !== "";
+    });
+    if (answered) {
+      form.classList.add("submitted");
+    }
+    markAnswered(form);
+    form.addEventListener("focusout", onFieldLeft);
+  }
+
+  // an answer of errors only under fields not yet reached changes nothing on the page: no
+  // banner, no count of fields to correct (its out-of-band status and bar are dropped)
+  var quietAnswer = false;
+
+  function isQuiet(response) {
+    var form = selectorForm();
+    if (!form || form.classList.contains("submitted") || response.indexOf("data-keep-results") < 0) {
+      return false;
+    }
+    var named = /data-error-for="([a-z0-9_]+)"/g;
+    var match;
+    while ((match = named.exec(response)) !== null) {
+      if (isTouched(form, match[1])) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // a field redrawn in new units stays as reached as it was
+  function onOobSwap(event) {
+    var target = event.detail.target;
+    if (!target) {
+      return;
+    }
+    if (quietAnswer && (target.id === "status" || target.id === "result-bar")) {
+      event.detail.shouldSwap = false;
+    }
+    var field = event.detail.fragment.firstElementChild;
+    if (target.classList.contains("touched") && field) {
+      field.classList.add("touched");
+    }
   }
 
   function syncInvalid() {
@@ -176,31 +373,71 @@
     });
   }
 
+  // the form's requests queue (hx-sync "queue last") rather than abort one another, and
+  // an answer to values typed over since it was asked for is dropped: the newer one follows
+  var edits = 0;
+
+  function countEdit(event) {
+    if (event.target.form === selectorForm()) {
+      edits += 1;
+    }
+  }
+
+  function stampRequest(event) {
+    if (event.detail.elt === selectorForm()) {
+      event.detail.xhr.selectorEdits = edits;
+    }
+  }
+
   // a field being retyped answers with errors only: keep the last results, dimmed
   function keepStaleResults(event) {
     var target = event.detail.target;
     if (!target || target.id !== "results") {
       return;
     }
+    var asked = event.detail.xhr.selectorEdits;
+    if (asked !== undefined && asked !== edits) {
+      event.detail.shouldSwap = false;
+      return;
+    }
     var keep = event.detail.serverResponse.indexOf("data-keep-results") !== -1;
     var note = target.querySelector(".stale-note");
-    if (keep && note) {
+    quietAnswer = isQuiet(event.detail.serverResponse);
+    if (quietAnswer) {
+      event.detail.swapOverride = "none";
+      event.detail.ignoreTitle = true;
+    } else if (keep && note) {
       event.detail.swapOverride = "none";
       target.classList.add("stale");
       note.hidden = false;
     } else {
       target.classList.remove("stale");
-      purgeCharts(target);
+      keepCharts(target);
     }
   }
 
-  // the swap replaces the charts: Plotly.purge drops each old chart's window resize
-  // listener (kept for ever otherwise) and its thousands of SVG nodes, which htmx would
-  // walk one by one while cleaning up the old results
-  function purgeCharts(target) {
+  // the swap replaces the charts: each drawn chart is taken out of the old results first
+  // (htmx would otherwise walk its thousands of SVG nodes one by one while cleaning up)
+  // and kept to be redrawn with the new figure by Plotly.react, about three times faster
+  // than drawing it anew; one the new answer has no figure for is purged, which drops its
+  // window resize listener (kept for ever otherwise)
+  var keptCharts = {};
+
+  function keepCharts(target) {
+    releaseKeptCharts();
     eachChart(function (chart) {
       if (target.contains(chart)) {
-        window.Plotly.purge(chart);
+        chart.remove();
+        keptCharts[chart.id] = chart;
+      }
+    });
+  }
+
+  function releaseKeptCharts(wanted) {
+    Object.keys(keptCharts).forEach(function (id) {
+      if (!wanted || !wanted[id]) {
+        window.Plotly.purge(keptCharts[id]);
+        delete keptCharts[id];
       }
     });
   }
@@ -220,6 +457,7 @@
 
   function onPrintMedia(event) {
     if (event.matches) {
+      drawAllCharts();
       sizeForPrint();
     } else {
       sizeForScreen();
@@ -238,11 +476,26 @@
     revealCopyButtons();
   }
 
-  document.addEventListener("DOMContentLoaded", refresh);
+  // the new errors and their aria-invalid in the swap's own task, before it is painted
+  function afterSwap() {
+    quietAnswer = false;
+    showErrors();
+    syncInvalid();
+  }
+
+  document.addEventListener("DOMContentLoaded", function () {
+    startErrors();
+    refresh();
+  });
+  document.addEventListener("htmx:afterSwap", afterSwap);
+  document.addEventListener("htmx:oobBeforeSwap", onOobSwap);
+  document.addEventListener("submit", onSubmit, true);
   document.addEventListener("htmx:afterSettle", refresh);
   document.addEventListener("click", onClick);
   document.addEventListener("htmx:beforeSwap", keepStaleResults);
   document.addEventListener("htmx:beforeRequest", markLoading);
+  document.addEventListener("htmx:beforeRequest", stampRequest);
+  document.addEventListener("input", countEdit, true);
   document.addEventListener("htmx:afterRequest", markLoading);
   window.addEventListener("beforeprint", dateReport);
   window.matchMedia("print").addEventListener("change", onPrintMedia);

@@ -84,6 +84,18 @@ def typed_error(page: Any, base: str) -> None:
     page.wait_for_selector("#results.stale")
 
 
+def typing(page: Any, base: str) -> None:
+    """A new form being filled in: the load typed (its answer names the empty speed and
+    length, not shown yet) and the length left empty (its error shown)."""
+    page.goto(f"{base}/")
+    with page.expect_response(lambda r: "load=5" in r.url):
+        page.locator("#f-load").press_sequentially("5")
+    page.wait_for_function("() => !document.querySelector('#busy.htmx-request')")
+    page.focus("#f-length")
+    page.keyboard.press("Tab")
+    page.wait_for_function("() => document.querySelector('#e-length').textContent.trim() !== ''")
+
+
 def custom_error(page: Any, base: str) -> None:
     page.goto(f"{base}/custom?{SCREW}")
     page.fill("#f-root_diameter_mm", "12")
@@ -144,6 +156,7 @@ STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
         "detail-open": open_detail,
         "no-pass": visit(f"/?{IMPOSSIBLE}", ".no-pass"),
         "error-422-inline": typed_error,
+        "typing": typing,
     },
     "/detail": {"page": first_candidate},
     "/custom": {"results": visit(f"/custom?{SCREW}", ".custom-verdict"), "error": custom_error},
