@@ -13,6 +13,7 @@ that row. A row with every number left empty is not a move (a new row, not yet t
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 from app.contract.cycle import MAX_MOVES, ORDER, parse_moves_text
 from app.contract.fields import BY_API, FIELDS, InputField
@@ -186,3 +187,15 @@ def cell_errors(errors: Mapping[str, str], index: list[int]) -> dict[str, str]:
         else:
             out.setdefault(name, message)
     return out
+
+
+def shown_moves(moves: list[Mapping[str, Any]], units: Mapping[str, str]) -> list[list[Any]]:
+    """The API's moves (``MoveIn`` dumps) as a table of inputs: a row per move, a value per
+    column in its display unit (an empty deceleration: the acceleration's, None).
+
+    >>> inch = {"force_unit": "N", "length_unit": "in", "torque_unit": "N_m"}
+    >>> shown_moves([{"distance_mm": 254.0, "speed_mm_s": 25.4, "decel_mm_s2": None,
+    ...     "load_direction": "auto"}], inch)[0][:4]
+    [10.0, 1.0, None, None]
+    """
+    return [[c.field.display_value(move.get(c.api), units) for c in COLUMNS] for move in moves]

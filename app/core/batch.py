@@ -127,7 +127,6 @@ class Batch:
             for k in range(len(self.at))
         ]
 
-
     def _curve(self, rpm: Array) -> list[float] | None:
         """The motor's usable torque at each candidate's ``rpm`` [N m], as the motor_curve
         check holds a segment against it (None without a curve)."""
