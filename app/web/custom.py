@@ -10,7 +10,7 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
-from app.contract.form import entered_units, parse_inputs, share_query
+from app.contract.form import entered_units, share_query
 from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
 from app.contract.schemas import ApplicationIn
@@ -24,7 +24,7 @@ from app.server.headers import is_htmx_fragment
 from app.server.responses import ModelJSON
 from app.web.export import candidate_csv
 from app.web.figures import critical_speed_figure, pv_figure, torque_figure
-from app.web.pages import REQUIRED, form_context
+from app.web.pages import REQUIRED, form_context, parse_page
 from app.web.screw_form import (
     BY_NAME,
     DEFAULT_MATERIAL,
@@ -100,7 +100,8 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     values = context["values"]
     if not _started(values):
         return context
-    inputs, app_errors = parse_inputs(values, context["units"], catalog.motors, catalog.supports)
+    rows, units = context["move_rows"], context["units"]
+    inputs, app_errors = parse_page(params, values, rows, units, catalog)
     screw, screw_errors = parse_screw(values, context["units"])
     context["errors"] = {**app_errors, **screw_errors}
     if inputs is None or screw is None:

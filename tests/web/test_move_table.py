@@ -196,3 +196,18 @@ def test_cells_and_buttons_are_known_parameters(client: TestClient) -> None:
     html = page(client, {**TYPED, "m0_colour": "red"})
     assert "m0_colour" in html.text
     assert "Unknown parameter 'm1_dist'" not in html.text
+
+
+def test_the_custom_screws_page_reads_the_table_too(client: TestClient) -> None:
+    screw = {"outer_diameter_mm": "10", "root_diameter_mm": "8", "lead_mm": "2",
+             "friction_dynamic": "0.15", "friction_static": "0.2"}  # fmt: skip
+    cells_only = {k: v for k, v in TYPED.items() if k.startswith("m")}
+    params = {**screw, "load": "10", "speed": "250", "length": "500", **cells_only}
+    html = BeautifulSoup(client.get("/custom?" + urlencode(params)).text, "html.parser")
+    link = html.select_one("a.share-link")
+    assert link is not None
+    moves = dict(parse_qsl(urlsplit(str(link["href"])).query))["moves"]
+    assert moves.startswith("300:250:2500::0:2.5:0:opposes;-300:")  # empty decel: the accel
+    bad = {**params, "m1_accel": "-1"}
+    refused = BeautifulSoup(client.get("/custom?" + urlencode(bad)).text, "html.parser")
+    assert refused.select_one("#e-m1_accel").text == "Must be at least 0 mm/s²."
