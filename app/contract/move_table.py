@@ -35,21 +35,32 @@ class Column:
     label: str
 
 
-def _scalar(core: str) -> InputField:
-    return next(f for f in FIELDS if f.core == core)
+def _scalar(api: str) -> InputField:
+    """The scalar input a move's value shares its unit and bounds with: the one of the same
+    API name, the stroke for the distance (the first value)."""
+    return BY_API[api] if api in BY_API else next(f for f in FIELDS if f.core == "stroke_m")
 
 
-COLUMNS = (
-    Column("dist", "distance_mm", _scalar("stroke_m"), "Distance"),
-    Column("speed", "speed_mm_s", BY_API["speed_mm_s"], "Speed"),
-    Column("accel", "accel_mm_s2", BY_API["accel_mm_s2"], "Acceleration"),
-    Column("decel", "decel_mm_s2", BY_API["decel_mm_s2"], "Deceleration"),
-    Column("dwell", "dwell_s", BY_API["dwell_s"], "Dwell after"),
-    Column("mass", "moving_mass_kg", BY_API["moving_mass_kg"], "Moving mass"),
-    Column("load", "load_n", BY_API["load_n"], "Load"),
-    Column("dir", "load_direction", BY_API["load_direction"], "Load direction"),
+#: The columns in the order of the compact text (``ORDER``), each with its cell key and
+#: its heading.
+COLUMNS = tuple(
+    Column(key, api, _scalar(api), label)
+    for key, label, api in zip(
+        ("dist", "speed", "accel", "decel", "dwell", "mass", "load", "dir"),
+        (
+            "Distance",
+            "Speed",
+            "Acceleration",
+            "Deceleration",
+            "Dwell after",
+            "Moving mass",
+            "Load",
+            "Load direction",
+        ),
+        ORDER,
+        strict=True,
+    )
 )
-assert tuple(c.api for c in COLUMNS) == ORDER
 BY_KEY = {c.key: c for c in COLUMNS}
 BY_MOVE_API = {c.api: c for c in COLUMNS}
 #: The column of a choice (the load direction), which alone never makes a row a move.
@@ -194,8 +205,7 @@ def shown_moves(moves: list[Mapping[str, Any]], units: Mapping[str, str]) -> lis
     column in its display unit (an empty deceleration: the acceleration's, None).
 
     >>> inch = {"force_unit": "N", "length_unit": "in", "torque_unit": "N_m"}
-    >>> shown_moves([{"distance_mm": 254.0, "speed_mm_s": 25.4, "decel_mm_s2": None,
-    ...     "load_direction": "auto"}], inch)[0][:4]
-    [10.0, 1.0, None, None]
+    >>> shown_moves([dict(zip(ORDER, [254.0, 25.4, 254.0, None]))], inch)[0][:5]
+    [10.0, 1.0, 10.0, None, None]
     """
     return [[c.field.display_value(move.get(c.api), units) for c in COLUMNS] for move in moves]

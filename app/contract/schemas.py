@@ -148,7 +148,7 @@ class SegmentOut(BaseModel):
     curve_nm: Annotated[float | None, From("curve_nm", "torque")] = Field(
         default=None,
         description="The motor's usable torque at the segment's top speed (its curve over "
-        "the stepper margin), which the motor_curve check holds the torque times the "
+        "the stepper margin), which the torque-speed curve check holds the torque times the "
         "safety factor against; null without a curve.",
     )
     governs: Annotated[bool, From("governs")] = Field(

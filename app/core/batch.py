@@ -128,7 +128,7 @@ class Batch:
         ]
 
     def _curve(self, rpm: Array) -> list[float] | None:
-        """The motor's usable torque at each candidate's ``rpm`` [N m], as the motor_curve
+        """The motor's usable torque at each candidate's ``rpm`` [N m], as the curve check
         check holds a segment against it (None without a curve)."""
         if not self.app.motor_curve:
             return None

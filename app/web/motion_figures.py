@@ -164,7 +164,7 @@ def _governing(segments: list[SegmentOut], d: Display) -> dict[str, Any] | None:
 def cycle_torque_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
     """The top candidate's motor torque over one cycle, a step per segment (negative: the
     motor brakes), beside the motor's usable torque at each segment's top speed (the
-    number the motor_curve check holds the torque times the safety factor against,
+    number the torque-speed curve check holds the torque times the safety factor against,
     drawn either way), the governing segment marked."""
     segments = top.segments or []
     unit = d.label("torque")

@@ -211,3 +211,23 @@ def test_the_custom_screws_page_reads_the_table_too(client: TestClient) -> None:
     bad = {**params, "m1_accel": "-1"}
     refused = BeautifulSoup(client.get("/custom?" + urlencode(bad)).text, "html.parser")
     assert refused.select_one("#e-m1_accel").text == "Must be at least 0 mm/s²."
+
+
+def test_a_change_of_units_converts_the_cells_exactly(client: TestClient) -> None:
+    """Typed in mm and shown in inches: each cell the shortest text that reads back to the
+    same value in mm, so switching back gives the typed numbers, and the link is unchanged."""
+    typed = {**TYPED, "from_length_unit": "mm"}
+    inches = page(client, {**typed, "length_unit": "in"})
+    rows = cells(inches)
+    assert float(rows[0]["dist"]) * INCH == 300.0 and float(rows[1]["speed"]) * INCH == 250.0
+    assert rows[0]["mass"] == "2.5"  # a mass follows the force unit, N here
+    back = page(client, {**{k: v for k, v in TYPED.items() if not k.startswith("m")},
+                         **{f"m{i}_{k}": v for i, row in enumerate(rows) for k, v in row.items()},
+                         "from_length_unit": "in", "length": str(500 / INCH)})  # fmt: skip
+    assert [r["dist"] for r in cells(back)] == ["300", "-300"]
+    assert cells(back)[0]["speed"] == "250"
+    fragment = client.get(
+        "/?" + urlencode({**typed, "length_unit": "in"}), headers={"HX-Request": "true"}
+    )
+    table = BeautifulSoup(fragment.text, "html.parser").select_one("#moves-table")
+    assert table is not None and table["hx-swap-oob"] == "true"
