@@ -92,6 +92,18 @@ def move_rows(params: Mapping[str, str], units: dict[str, str]) -> list[Row]:
     return converted_rows(table_rows(params, entered), entered, units)
 
 
+def focus_row(params: Mapping[str, str], rows: list[Row]) -> int | None:
+    """The row whose first cell takes the focus after an edit of the table: the row added,
+    or the one now where a row was removed (-1: no row left, the add button); None
+    without an edit."""
+    if ADD_MOVE in params:
+        return len(rows) - 1
+    if REMOVE_MOVE in params:
+        drop = params[REMOVE_MOVE]
+        return min(int(drop), len(rows) - 1) if drop.isdigit() else None
+    return None
+
+
 def parse_page(
     params: Mapping[str, str],
     values: Mapping[str, str],
@@ -122,7 +134,7 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
         "move_columns": COLUMNS,
         "move_cells": [cell(i, c.key) for i in range(len(rows)) for c in COLUMNS],
         "moves_redrawn": edited or bool(converted),
-        "new_row": len(rows) - 1 if ADD_MOVE in params else None,
+        "focus_row": focus_row(params, rows),
         "suggestions": {
             "motor": motor_suggestions(catalog),
             SUPPORT.page: [(uid, unit.name) for uid, unit in catalog.supports.items()],

@@ -96,8 +96,13 @@ def test_a_move_is_added_by_a_plain_get(client: TestClient) -> None:
 
 def test_a_move_is_removed_by_a_plain_get(client: TestClient) -> None:
     three = {**TYPED, "m2_dist": "50", "m2_speed": "10", "m2_accel": "100"}
-    rows = cells(page(client, {**three, "remove_move": "0"}))
-    assert [r["dist"] for r in rows] == ["-300", "50"]
+    html = page(client, {**three, "remove_move": "0"})
+    assert [r["dist"] for r in cells(html)] == ["-300", "50"]
+    # the focus stays in the table: on the row now in the removed one's place
+    assert [str(e["id"]) for e in html.select("[autofocus]")] == ["f-m0_dist"]
+    last = page(client, {**AXIS, "m0_dist": "1", "remove_move": "0"})
+    assert not cells(last)
+    assert [str(e["name"]) for e in last.select("[autofocus]")] == ["add_move"]
 
 
 def test_a_link_fills_the_table_in_display_units(client: TestClient) -> None:
