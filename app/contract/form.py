@@ -359,7 +359,7 @@ def form_defaults(units: dict[str, str]) -> dict[str, str]:
 def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) -> str:
     """A pydantic error in the page's words: bounds in display units, API names as labels."""
     kind = str(error.get("type", ""))
-    field = BY_PAGE.get(page)
+    field = BY_PAGE.get(page) or _move_field(page)
     if kind in BOUND_MESSAGES:
         template, key = BOUND_MESSAGES[kind]
         bound = float(error.get("ctx", {}).get(key, 0.0))
@@ -373,6 +373,24 @@ def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) ->
     for other in sorted(FIELDS, key=lambda f: -len(f.api)):
         message = message.replace(other.api, other.label.lower())
     return message[:1].upper() + message[1:].rstrip(".") + "."
+
+
+def _move_field(page: str) -> InputField | None:
+    """The scalar input whose unit and bounds a move's value shares (``moves.0.speed_mm_s``:
+    the speed; the distance: the stroke), else None."""
+    api = page.rpartition(".")[2] if page.startswith(MOVES + ".") else ""
+    if api == "distance_mm":
+        return next(f for f in FIELDS if f.core == "stroke_m")
+    return BY_API.get(api)
+
+
+def _error_page(loc: tuple[Any, ...]) -> str:
+    """The page name an error is said at: a field's page name, ``moves`` for the cycle as a
+    whole, ``moves.<move>.<api name>`` for one value of a move, else 'form'."""
+    if loc and loc[0] == MOVES:
+        return ".".join(str(part) for part in loc[:3])
+    field = BY_API.get(str(loc[0])) if loc else None
+    return "form" if field is None else field.page
 
 
 def parse_inputs(
@@ -393,9 +411,7 @@ def parse_inputs(
         inputs = ApplicationIn.model_validate(data, context=context)
     except ValidationError as exc:
         for error in exc.errors():
-            loc = error.get("loc", ())
-            field = BY_API.get(str(loc[0])) if loc else None
-            page = "form" if field is None else field.page
+            page = _error_page(tuple(error.get("loc", ())))
             errors.setdefault(page, _page_message(error, page, units))
         return None, errors
     return (inputs, {}) if not errors else (None, errors)

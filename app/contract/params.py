@@ -4,7 +4,8 @@ A link with a misspelled input (``moving_mass=3`` for ``moving_mass_kg``) would 
 give the result without it. The names a page reads come from the tables: every input's
 page name (``FIELDS``), the display-unit switches (``DEFAULT_UNITS``), the units the
 form's numbers were typed in (``from_<switch>``) and each field's typed record
-(``typed_<field>``), plus the route's own (``id``, ``ids``).
+(``typed_<field>``), the cells of the table of moves and its buttons
+(``app.contract.move_table``), plus the route's own (``id``, ``ids``).
 
 The API reads the API names alone: given a page's name (a share link's ``load`` for
 its API name, with the unit), its 422 names the API's (``api_hint``); every response
@@ -19,6 +20,7 @@ from urllib.parse import parse_qsl, urlencode
 from app.contract.fields import BY_API, BY_PAGE
 from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX, share_query
 from app.contract.inputs import ApplicationIn
+from app.contract.move_table import ADD_MOVE, REMOVE_MOVE, is_cell
 from app.contract.units import DEFAULT_UNITS
 
 #: Every name a page with the application form reads, whatever the route.
@@ -29,6 +31,8 @@ PAGE_NAMES = frozenset(
         *(ENTERED_PREFIX + key for key in DEFAULT_UNITS),
         *(TYPED_PREFIX + page for page in BY_PAGE),
         MOVES,
+        ADD_MOVE,
+        REMOVE_MOVE,
     ]
 )
 
@@ -64,7 +68,11 @@ def unknown_parameters(params: Mapping[str, str], extra: Collection[str] = ()) -
     """Each parameter of ``params`` that no page field or switch reads, nor the route's
     own names ``extra`` -> its message (empty when every name is read)."""
     known = PAGE_NAMES | frozenset(extra)
-    return {name: unknown_message(name, known) for name in params if name not in known}
+    return {
+        name: unknown_message(name, known)
+        for name in params
+        if name not in known and not is_cell(name)
+    }
 
 
 def api_query(inputs: ApplicationIn) -> str:

@@ -149,6 +149,17 @@ class SegmentOut(BaseModel):
     torque_nm: Annotated[float, From("torque_nm", "torque")] = Field(
         description="Motor torque; negative: the motor brakes."
     )
+    curve_nm: Annotated[float | None, From("curve_nm", "torque")] = Field(
+        default=None,
+        description="The motor's usable torque at the segment's top speed (its curve over "
+        "the stepper margin), which the torque-speed curve check holds the torque times the "
+        "safety factor against; null without a curve.",
+    )
+    governs: Annotated[bool, From("governs")] = Field(
+        default=False,
+        description="The segment that governs the motor: nearest its curve, or the largest "
+        "torque without one.",
+    )
 
 
 class CriticalSpeedOut(BaseModel):

@@ -111,20 +111,41 @@ class Batch:
             return [None] * len(self.at)
         hold = np.array(self.column("brake_nm"))
         parts = motion.segments(self.app, self.screening.table.take(self.at), hold)
-        columns = [(s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist()) for s in parts]
+        columns = [
+            (s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist(), self._curve(s.rpm))
+            for s in parts
+        ]
         peak, rms = self.column("motor_peak_nm"), self.column("motor_rms_nm")
+        worst = self.column("motor_worst_segment")
         return [
             Motion(
                 profile=p,
                 segments=tuple(
-                    Segment(s.name, s.direction, s.duration_s, rpm[k], thrust[k], torque[k])
-                    for s, rpm, thrust, torque in columns
+                    Segment(
+                        s.name,
+                        s.direction,
+                        s.duration_s,
+                        rpm[k],
+                        thrust[k],
+                        torque[k],
+                        None if curve is None else curve[k],
+                        i == worst[k],
+                    )
+                    for i, (s, rpm, thrust, torque, curve) in enumerate(columns)
                 ),
                 peak_nm=peak[k],
                 rms_nm=rms[k],
             )
             for k in range(len(self.at))
         ]
+
+    def _curve(self, rpm: Array) -> list[float] | None:
+        """The motor's usable torque at each candidate's ``rpm`` [N m], as the curve check
+        check holds a segment against it (None without a curve)."""
+        if not self.app.motor_curve:
+            return None
+        curve: list[float] = motion.curve_torque(self.app, rpm).tolist()
+        return curve
 
 
 def _utilizations(values: Array | None, index: Positions) -> list[float | None]:

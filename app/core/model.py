@@ -345,7 +345,11 @@ class Profile:
 class Segment(Generic[V]):
     """One segment of the cycle: its duration [s], the screw's top speed in it [rpm], the
     thrust against the motion [N] and the motor torque [N m] (negative: the motor brakes).
-    ``V`` is an array (one element per candidate) or a float."""
+    ``V`` is an array (one element per candidate) or a float. A candidate's own segments
+    also carry the motor's usable torque at the segment's speed [N m] (its curve over the
+    stepper margin, ``motion.curve_torque``; None without a curve) and whether the segment
+    governs the motor: the one nearest its curve, or the largest torque without a curve
+    (``Quantities.motor_worst_segment``)."""
 
     name: SegmentName
     direction: Direction
@@ -353,6 +357,8 @@ class Segment(Generic[V]):
     rpm: V
     thrust_n: V
     torque_nm: V
+    curve_nm: float | None = None
+    governs: bool = False
 
 
 @dataclass(frozen=True, slots=True)

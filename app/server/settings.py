@@ -11,8 +11,11 @@ class Settings(BaseSettings):
 
     catalog_dirs: list[Path] = []
     max_body_bytes: int = 64 * 1024
-    max_query_chars: int = 4096
-    max_query_params: int = 100
+    #: the selector's form submits every field and each cell of its table of moves: about
+    #: 70 parameters and 1.2 KB, and 8 and 100 bytes more a move (tests/web/test_move_table.py);
+    #: 50 moves (the most a cycle has) stay within these
+    max_query_chars: int = 8192
+    max_query_params: int = 512
     #: bytes of whole responses kept per process for repeated selection queries (0: off)
     response_cache_bytes: int = 16 * 1024 * 1024
     #: responses kept at most, however small (0: off)

@@ -10,7 +10,7 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
-from app.contract.form import entered_units, parse_inputs, share_query
+from app.contract.form import entered_units, share_query
 from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
 from app.contract.schemas import ApplicationIn
@@ -25,7 +25,7 @@ from app.server.headers import is_htmx_fragment
 from app.server.responses import ModelJSON
 from app.web.export import candidate_csv
 from app.web.figures import critical_speed_figure, pv_figure, torque_figure
-from app.web.pages import REQUIRED, form_context
+from app.web.pages import REQUIRED, form_context, parse_page
 from app.web.screw_form import (
     BY_NAME,
     DEFAULT_MATERIAL,
@@ -107,7 +107,8 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     context["nut_rows"] = nut_rows(nuts[chosen]) if chosen in nuts else []
     if not _started(values):
         return context
-    inputs, app_errors = parse_inputs(values, context["units"], catalog.motors, catalog.supports)
+    rows, units = context["move_rows"], context["units"]
+    inputs, app_errors = parse_page(params, values, rows, units, catalog)
     screw, screw_errors = parse_screw(values, context["units"])
     if chosen and chosen not in nuts:
         screw_errors[NUT_FIELD] = f"Choose one of: {', '.join(nuts)}, or none."

@@ -7,6 +7,7 @@ from typing import Any
 
 from app.contract.fields import FIELDS, InputField
 from app.contract.form import curve_text
+from app.contract.move_table import COLUMNS, shown_moves
 from app.contract.outputs import SelectOut
 from app.contract.reported import BY_KEY, REPORTED, Reported, value_of
 from app.contract.schemas import CandidateOut
@@ -135,6 +136,16 @@ def _input_value(field: InputField, value: Any, units: dict[str, str]) -> Any:
     return field.display_value(value, units)
 
 
+def _move_rows(inputs: dict[str, Any], units: dict[str, str]) -> list[list[Any]]:
+    """One (``<move>.<column>``, value in the display units, display unit) per cell of the
+    cycle's moves, moves counted from 1; none without moves."""
+    return [
+        [f"{i}.{column.key}", value, column.field.display_unit(units)]
+        for i, row in enumerate(shown_moves(inputs.get("moves") or [], units), start=1)
+        for column, value in zip(COLUMNS, row, strict=True)
+    ]
+
+
 def _trailing(groups: list[tuple[str, list[list[Any]]]]) -> tuple[list[str], list[Any]]:
     """The columns every row carries after the candidate's own (the inputs, a custom
     screw's values): headings ``<prefix><name> [unit]`` and the values."""
@@ -165,21 +176,28 @@ def results_csv(result: SelectOut, units: dict[str, str]) -> str:
     """One table: a row per passing candidate (ranked) and per rejected one shown, with a
     column per check of the registry for its utilization (empty where the check does not
     apply or is yes/no), then a column per input (``input:<page name> [unit]``, in the
-    display units, the same on every row); the candidates need only the ``csv`` view's
+    display units, the same on every row) and per cell of the cycle's moves
+    (``move:<move>.<column> [unit]``); the candidates need only the ``csv`` view's
     fields."""
     rows: list[tuple[str, Any, CandidateOut]] = [
         ("passed", rank, c) for rank, c in enumerate(result.candidates, start=1)
     ]
     rows += [("rejected", "", c) for c in result.rejected]
-    inputs = _input_rows(result.inputs.model_dump(), units)
-    return _table(_columns(Display(units)), rows, _trailing([("input:", inputs)]))
+    dump = result.inputs.model_dump()
+    groups = [("input:", _input_rows(dump, units)), ("move:", _move_rows(dump, units))]
+    return _table(_columns(Display(units)), rows, _trailing(groups))
 
 
 def candidate_csv(
     inputs: dict[str, Any], screw_rows: list[list[Any]], c: CandidateOut, units: dict[str, str]
 ) -> str:
     """One screw of the user's own as a one-row table: its status and columns, then a
-    column per screw value (``screw:<name> [unit]``) and per input (``input:...``)."""
+    column per screw value (``screw:<name> [unit]``), per input (``input:...``) and per
+    cell of the moves (``move:...``)."""
     status = "passed" if c.passed else "rejected"
-    groups = [("screw:", screw_rows), ("input:", _input_rows(inputs, units))]
+    groups = [
+        ("screw:", screw_rows),
+        ("input:", _input_rows(inputs, units)),
+        ("move:", _move_rows(inputs, units)),
+    ]
     return _table(_columns(Display(units)), [(status, "", c)], _trailing(groups))

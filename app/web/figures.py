@@ -20,7 +20,7 @@ from app.web.chart_style import axis as _axis
 from app.web.chart_style import layout as _layout
 from app.web.chart_style import rounded as _round
 from app.web.life_figures import LIFE_TOP, life_figure
-from app.web.motion_figures import motor_figure, move_figure
+from app.web.motion_figures import cycle_torque_figure, motor_figure, move_figure
 
 TORQUE_PARTS = (("inertia_nm", "Inertia", "#56B4E9"), ("drag_nm", "Drag", "#E69F00"))
 LOAD_PART = ("load_nm", "Load", "#0072B2")
@@ -31,7 +31,16 @@ PV_SPAN = 10.0
 TOP = 5
 #: chart key -> the check whose failures it explains.
 CHART_CHECKS = {"critical_speed": "critical_speed", "pv": "pv", "torque": "torque"}
-CHART_KEYS = ("critical_speed", "pv", "torque", "lead_sweep", "motor", "move", "life")
+CHART_KEYS = (
+    "critical_speed",
+    "pv",
+    "torque",
+    "lead_sweep",
+    "motor",
+    "move",
+    "cycle_torque",
+    "life",
+)
 
 
 def _span(centre: float, factor: float) -> list[float]:
@@ -524,5 +533,6 @@ def result_figures(
                 candidates, data.curve, data.torque_safety_factor, d, data.curve_margin
             )
         figures["move"] = move_figure(candidates[0], d)
+        figures["cycle_torque"] = cycle_torque_figure(candidates[0], d)
     first = None if passing else result.summary.most_excluding_check
     return {key: figures[key] for key in chart_order(figures, first)}

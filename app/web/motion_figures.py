@@ -129,3 +129,73 @@ def _about_zero(values: list[float]) -> dict[str, Any]:
     speed and the torque axes share their zero."""
     top = max((abs(v) for v in values), default=0.0) * 1.1 or 1.0
     return {"range": [-top, top], "zeroline": True, "zerolinecolor": "#999999"}
+
+
+def _steps(segments: list[SegmentOut], values: list[float]) -> tuple[list[float], list[float]]:
+    """Each segment's value held over its time: the start and end of each, one after the
+    other (time [s], value)."""
+    times, shown = [], []
+    t = 0.0
+    for s, value in zip(segments, values, strict=True):
+        times += [t, t + s.duration_s]
+        shown += [value, value]
+        t += s.duration_s
+    return times, shown
+
+
+def _governing(segments: list[SegmentOut], d: Display) -> dict[str, Any] | None:
+    """A marker at the middle of the segment that governs the motor, at its torque."""
+    t = 0.0
+    for s in segments:
+        if s.governs:
+            return {
+                "type": "scatter",
+                "mode": "markers",
+                "name": f"Governs: {s.name} {s.direction}",
+                "x": [t + s.duration_s / 2],
+                "y": [d.value(s.torque_nm, "torque")],
+                "marker": {"symbol": "diamond", "size": 12, "color": "#CC79A7"},
+                "hovertemplate": "%{y:.4g}<extra>governs</extra>",
+            }
+        t += s.duration_s
+    return None
+
+
+def cycle_torque_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
+    """The top candidate's motor torque over one cycle, a step per segment (negative: the
+    motor brakes), beside the motor's usable torque at each segment's top speed (the
+    number the torque-speed curve check holds the torque times the safety factor against,
+    drawn either way), the governing segment marked."""
+    segments = top.segments or []
+    unit = d.label("torque")
+    times, torques = _steps(segments, [d.value(s.torque_nm, "torque") for s in segments])
+    data: list[dict[str, Any]] = [
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "name": "Motor torque",
+            "x": times,
+            "y": torques,
+            "line": {"color": "#D55E00", "width": 2},
+            "hovertemplate": f"%{{x:.3g}} s<br>%{{y:.4g}} {unit}<extra>torque</extra>",
+        }
+    ]
+    if segments and all(s.curve_nm is not None for s in segments):
+        usable = [d.value(s.curve_nm or 0.0, "torque") for s in segments]
+        for sign, name in ((1.0, "Usable motor torque"), (-1.0, "Usable braking torque")):
+            data.append(
+                {
+                    "type": "scatter",
+                    "mode": "lines",
+                    "name": name,
+                    "x": times,
+                    "y": _steps(segments, [sign * u for u in usable])[1],
+                    "line": {"color": "#000000", "width": 1.5, "dash": "dash"},
+                    "hovertemplate": f"%{{x:.3g}} s<br>%{{y:.4g}} {unit}<extra>motor</extra>",
+                }
+            )
+    marker = _governing(segments, d)
+    if marker is not None:
+        data.append(marker)
+    y_axis = {**axis(f"Motor torque [{unit}]"), "zeroline": True, "zerolinecolor": "#999999"}
+    return {"data": data, "layout": layout(axis("Time [s]"), y_axis)}

@@ -11,6 +11,7 @@ from app.catalog import Catalog
 from app.catalog.motors import ANY_MOTOR
 from app.contract.fields import BY_PAGE, FIELDS, GROUPS
 from app.contract.form import (
+    MOVES,
     PLAIN_MESSAGES,
     TRUE_WORDS,
     UNIT_CHOICES,
@@ -24,6 +25,18 @@ from app.contract.form import (
     summary_rows,
 )
 from app.contract.inputs import SUPPORT
+from app.contract.move_table import (
+    ADD_MOVE,
+    COLUMNS,
+    REMOVE_MOVE,
+    Row,
+    cell,
+    cell_errors,
+    converted_rows,
+    is_cell,
+    moves_of_rows,
+    table_rows,
+)
 from app.contract.params import unknown_parameters
 from app.contract.reported import columns, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
@@ -72,13 +85,57 @@ def form_state(
     return units, values, converted_fields(entered, units), typed
 
 
+def move_rows(params: Mapping[str, str], units: dict[str, str]) -> list[Row]:
+    """The table of moves in the display ``units``: as typed (in the units the form was
+    in) or from the link's ``moves``, edited by the add and remove buttons."""
+    entered = entered_units(params, units)
+    return converted_rows(table_rows(params, entered), entered, units)
+
+
+def focus_row(params: Mapping[str, str], rows: list[Row]) -> int | None:
+    """The row whose first cell takes the focus after an edit of the table: the row added,
+    or the one now where a row was removed (-1: no row left, the add button); None
+    without an edit."""
+    if ADD_MOVE in params:
+        return len(rows) - 1
+    if REMOVE_MOVE in params:
+        drop = params[REMOVE_MOVE]
+        return min(int(drop), len(rows) - 1) if drop.isdigit() else None
+    return None
+
+
+def parse_page(
+    params: Mapping[str, str],
+    values: Mapping[str, str],
+    rows: list[Row],
+    units: dict[str, str],
+    catalog: Catalog,
+) -> tuple[ApplicationIn | None, dict[str, str]]:
+    """The form's inputs with the table's rows as its ``moves`` (a link's ``moves`` text
+    as it is when it is no table: the model names its fault), errors at their cells."""
+    text, bad, index = moves_of_rows(rows, units)
+    data = dict(values)
+    if rows or any(is_cell(name) for name in params):
+        data[MOVES] = text
+    inputs, errors = parse_inputs(data, units, catalog.motors, catalog.supports)
+    errors = {**cell_errors(errors, index), **bad}
+    return (None, errors) if errors else (inputs, {})
+
+
 def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """What every page with the application form renders before any result: the typed
     values and units, the field table and its groups, the choices a text field suggests
     (the library's motors), the message of a required field left empty (the page shows it
-    as the field is left, before any answer), no result yet."""
+    as the field is left, before any answer), the table of moves, no result yet."""
     units, values, converted, typed = form_state(params)
+    rows = move_rows(params, units)
+    edited = ADD_MOVE in params or REMOVE_MOVE in params
     return {
+        "move_rows": rows,
+        "move_columns": COLUMNS,
+        "move_cells": [cell(i, c.key) for i in range(len(rows)) for c in COLUMNS],
+        "moves_redrawn": edited or bool(converted),
+        "focus_row": focus_row(params, rows),
         "suggestions": {
             "motor": motor_suggestions(catalog),
             SUPPORT.page: [(uid, unit.name) for uid, unit in catalog.supports.items()],
@@ -142,7 +199,7 @@ def page_inputs(
         return context, None
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context, None
-    inputs, context["errors"] = parse_inputs(values, units, catalog.motors, catalog.supports)
+    inputs, context["errors"] = parse_page(params, values, context["move_rows"], units, catalog)
     return context, inputs
 
 
@@ -240,7 +297,7 @@ def link_inputs(
         detail = [{"field": name, "message": message} for name, message in unknown.items()]
         raise AppError(422, "invalid input", detail)
     units, values, _, _ = form_state(params)
-    inputs, errors = parse_inputs(values, units, catalog.motors, catalog.supports)
+    inputs, errors = parse_page(params, values, move_rows(params, units), units, catalog)
     if inputs is None:
         detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
         raise AppError(422, "invalid input", detail)

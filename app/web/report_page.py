@@ -1,7 +1,8 @@
 """The report an engineer files: one candidate of a result on a print-ready page.
 
 ``/report?<share-link query>&id=<candidate id>`` shows the inputs with their units, the
-chosen candidate (the top-ranked one without an id) and the runners-up, its torque
+chosen candidate (the top-ranked one without an id) and the runners-up, the cycle's moves
+and its energy per cycle, its torque
 breakdown, every check with its value, limit, utilization, formula and the provenance of
 each catalog value, the charts (critical speed, PV, torque, motor), the date and the
 catalog's version. The browser makes the PDF ("Save as PDF" prints the page), so the app
@@ -18,6 +19,8 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.contract.form import share_query, summary_rows
+from app.contract.move_table import COLUMNS, shown_moves
+from app.contract.reported import REPORTED, show, value_of
 from app.contract.units import Display
 from app.report.service import run_page_selection
 from app.server.deps import CatalogDep
@@ -50,6 +53,13 @@ def report_context(
         "units": units,
         "d": Display(units),
         "input_rows": summary_rows,
+        "move_columns": COLUMNS,
+        "moves": shown_moves(result.inputs.model_dump().get("moves") or [], units),
+        "energy": [
+            (row, show(row, value_of(chosen, row.key), Display(units)))
+            for row in REPORTED
+            if row.quantity == "energy"
+        ],
         "figures": result_figures(result, units, catalog),
         "charting_passed": bool(result.candidates),
         "query": query,

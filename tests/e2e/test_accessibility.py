@@ -128,6 +128,12 @@ def docs_opened(page: Any, base: str) -> None:
     page.wait_for_selector("section.models.is-open")
 
 
+#: a cycle of two moves, out with a part and back empty
+MOVES = urllib.parse.urlencode(
+    {"moves": "300:250:2500:2500:0.2:2.5:10:opposes;-300:250:2500:2500:0.2:0.5:10:opposes"}
+)
+
+
 #: a two-axis machine: a Z axis riding on an X axis, each by its selector link
 MACHINE = urllib.parse.urlencode(
     {
@@ -157,6 +163,8 @@ STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
         "no-pass": visit(f"/?{IMPOSSIBLE}", ".no-pass"),
         "error-422-inline": typed_error,
         "typing": typing,
+        "moves": visit(f"/?{AXIS}&{MOVES}", "tbody.candidate"),
+        "moves-cell-error": visit(f"/?{AXIS}&{MOVES}&m0_speed=fast", "#moves-table"),
     },
     "/detail": {"page": first_candidate},
     "/custom": {"results": visit(f"/custom?{SCREW}", ".custom-verdict"), "error": custom_error},
