@@ -26,6 +26,7 @@ from collections.abc import Callable
 from fractions import Fraction
 
 from app.core.model import ScrewSpec
+from app.core.units import from_si
 
 #: ISO 2903 clause 9: the medium tolerance class for the normal length of engagement.
 SCREW_CLASS = "7e"
@@ -79,7 +80,7 @@ def _mm(value_m: float) -> str:
     >>> _mm(0.009525), _mm(0.5), _mm(0.0127)
     ('9.525', '500', '12.7')
     """
-    return f"{value_m * 1000:.6g}"
+    return f"{from_si(value_m, 'mm'):.6g}"
 
 
 def _inch_fraction(value_m: float) -> str | None:
@@ -89,8 +90,8 @@ def _inch_fraction(value_m: float) -> str | None:
     >>> _inch_fraction(0.009525), _inch_fraction(0.0127), _inch_fraction(0.016)
     ('3/8', '1/2', None)
     """
-    sixteenths = value_m / 0.0254 * 16
-    if abs(sixteenths - round(sixteenths)) > 1e-6:
+    sixteenths = from_si(value_m, "in") * 16
+    if not math.isclose(sixteenths, round(sixteenths), rel_tol=1e-7):
         return None
     inches = Fraction(round(sixteenths), 16)
     return str(inches) if inches.denominator > 1 else f"{inches}"
@@ -111,7 +112,7 @@ def iso_designation(spec: ScrewSpec) -> str | None:
     if not math.isclose(math.degrees(spec.thread_half_angle_rad), ISO_HALF_ANGLE_DEG):
         return None
     starts = spec.lead_m / spec.pitch_m
-    if not math.isclose(starts, round(starts), rel_tol=1e-9) or round(starts) < 1:
+    if not math.isclose(starts, round(starts)) or round(starts) < 1:
         return None
     d, pitch = _mm(spec.outer_diameter_m), _mm(spec.pitch_m)
     return f"Tr{d}x{pitch}" if round(starts) == 1 else f"Tr{d}x{_mm(spec.lead_m)}(P{pitch})"
@@ -125,7 +126,7 @@ CONFIRMABLE: tuple[tuple[str, str, Callable[[ScrewSpec], str | None]], ...] = (
         "the thread form",
         lambda s: f"{2 * math.degrees(s.thread_half_angle_rad):.3g}° flank angle",
     ),
-    ("root_diameter", "the root diameter", lambda s: f"{s.root_diameter_m * 1000:.3g} mm"),
+    ("root_diameter", "the root diameter", lambda s: f"{from_si(s.root_diameter_m, 'mm'):.3g} mm"),
     (
         "design_load",
         "the nut's design load",
@@ -134,19 +135,27 @@ CONFIRMABLE: tuple[tuple[str, str, Callable[[ScrewSpec], str | None]], ...] = (
     (
         "pv_limit",
         "the nut's PV limit",
-        lambda s: None if s.pv_limit_pa_m_s is None else f"{s.pv_limit_pa_m_s / 1e6:.3g} MPa m/s",
+        lambda s: (
+            None
+            if s.pv_limit_pa_m_s is None
+            else f"{from_si(s.pv_limit_pa_m_s, 'MPa m/s'):.3g} MPa m/s"
+        ),
     ),
     (
         "bearing_pv_limit",
         "the nut's PV limit",
         lambda s: (
-            None if s.nut_pv_limit_pa_m_s is None else f"{s.nut_pv_limit_pa_m_s / 1e6:.3g} MPa m/s"
+            None
+            if s.nut_pv_limit_pa_m_s is None
+            else f"{from_si(s.nut_pv_limit_pa_m_s, 'MPa m/s'):.3g} MPa m/s"
         ),
     ),
     (
         "max_pressure",
         "the nut's allowable contact pressure",
-        lambda s: None if s.max_pressure_pa is None else f"{s.max_pressure_pa / 1e6:.3g} MPa",
+        lambda s: (
+            None if s.max_pressure_pa is None else f"{from_si(s.max_pressure_pa, 'MPa'):.3g} MPa"
+        ),
     ),
     (
         "max_sliding_speed",
@@ -168,7 +177,11 @@ CONFIRMABLE: tuple[tuple[str, str, Callable[[ScrewSpec], str | None]], ...] = (
     (
         "wear_rate",
         "the nut's wear rate",
-        lambda s: None if s.wear_rate_m2_n is None else f"{s.wear_rate_m2_n * 1e9:.2g} mm³/(N m)",
+        lambda s: (
+            None
+            if s.wear_rate_m2_n is None
+            else f"{from_si(s.wear_rate_m2_n, 'mm³/(N m)'):.2g} mm³/(N m)"
+        ),
     ),
 )
 

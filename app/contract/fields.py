@@ -586,3 +586,6 @@ FIELDS: tuple[InputField, ...] = (
 
 BY_API = {field.api: field for field in FIELDS}
 BY_PAGE = {field.page: field for field in FIELDS}
+#: The moving mass's field: a machine adds the axes an axis carries to it
+#: (``app.report.machine``).
+MOVING_MASS = BY_API["moving_mass_kg"]

@@ -22,7 +22,7 @@ class AxisIn(BaseModel):
         min_length=1, max_length=40, description="The axis's name, e.g. Z.", examples=["Z"]
     )
     inputs: ApplicationIn = Field(
-        description="The axis as the select call takes it; its moving_mass_kg is its own "
+        description="The axis as the select call takes it; its moving mass is its own "
         "carriage and payload, without the axes above it."
     )
     frame_kg: float = Field(
@@ -59,7 +59,10 @@ MachineAxisOut = create_model(
     __doc__="One axis sized, with the axes above it in its moving mass.",
     name=(str, ...),
     carried_kg=(float, Field(description="Mass of the axes above, added to its own [kg].")),
-    moving_mass_kg=(float, Field(description="The mass it was sized with [kg].")),
+    sized_mass_kg=(
+        float,
+        Field(description="The moving mass it was sized with: its own and the carried [kg]."),
+    ),
     screw_kg=(
         float | None,
         Field(
@@ -110,7 +113,7 @@ MachineOut = create_model(
         str | None,
         Field(
             description="The axis nearest its limit: one with no passing screw first, else "
-            "the chosen screw with the highest governing utilisation."
+            "the chosen screw with the highest governing utilization."
         ),
     ),
     moved_kg=(float, Field(description="The mass the bottom axis moves [kg].")),

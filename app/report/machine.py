@@ -4,6 +4,7 @@ import math
 from typing import Any
 
 from app.catalog import Catalog
+from app.contract.fields import MOVING_MASS
 from app.contract.form import share_query
 from app.contract.machine import MachineIn
 from app.contract.reported import REPORTED
@@ -45,16 +46,13 @@ def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
 
 
 def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
-    given = body.axes[i].inputs
-    moves = [
-        m.model_copy(update={"moving_mass_kg": m.moving_mass_kg + r.carried_kg})
-        for m in given.moves
-    ]
-    inputs = given.model_copy(update={"moving_mass_kg": r.app.moving_mass_kg, "moves": moves})
+    given, mass = body.axes[i].inputs, MOVING_MASS.api
+    moves = [m.model_copy(update={mass: getattr(m, mass) + r.carried_kg}) for m in given.moves]
+    inputs = given.model_copy(update={mass: getattr(given, mass) + r.carried_kg, "moves": moves})
     return {
         "name": r.axis.name,
         "carried_kg": r.carried_kg,
-        "moving_mass_kg": r.app.moving_mass_kg,
+        "sized_mass_kg": getattr(inputs, mass),
         "screw_kg": None if r.chosen is None else r.screw_kg,
         "total_kg": r.total_kg,
         "evaluated": r.selection.evaluated,

@@ -166,7 +166,7 @@ def critical_speed_figure(
 
 
 def pv_figure(
-    candidates: Sequence[CandidateOut], speed_mm_s: float, load_n: float, d: Display
+    candidates: Sequence[CandidateOut], speed_mm_per_s: float, load_n: float, d: Display
 ) -> dict[str, Any]:
     """PV limit of each nut as the largest load vs linear speed (log-log), one line per
     distinct limit, and the operating point.
@@ -174,7 +174,7 @@ def pv_figure(
     Each curve moves the PV-limited load at the user's speed to other speeds with
     ``app.core.formulas.pv.max_load_at_speed`` (F_max proportional to 1 / v).
     """
-    speeds = _span(speed_mm_s, PV_SPAN)
+    speeds = _span(speed_mm_per_s, PV_SPAN)
     x = [_round(d.value(v, "speed")) for v in speeds]
     data: list[dict[str, Any]] = []
     for colour, group in zip(
@@ -191,7 +191,7 @@ def pv_figure(
                 "name": curve_name(group),
                 "x": x,
                 "y": [
-                    _round(d.value(pv.max_load_at_speed(max_load, speed_mm_s, v), "force"))
+                    _round(d.value(pv.max_load_at_speed(max_load, speed_mm_per_s, v), "force"))
                     for v in speeds
                 ],
                 "line": {"color": colour, "width": 2},
@@ -205,7 +205,7 @@ def pv_figure(
             "type": "scatter",
             "mode": "markers",
             "name": "Operating point",
-            "x": [_round(d.value(speed_mm_s, "speed"))],
+            "x": [_round(d.value(speed_mm_per_s, "speed"))],
             "y": [point_y],
             "marker": {"size": 12, "symbol": "x", "color": "#000000"},
             "hovertemplate": f"%{{x:.4g}} {d.label('speed')}<br>%{{y:.4g}} "
@@ -243,15 +243,18 @@ def _pressure_traces(group: list[PressureLimit], colour: str, d: Display) -> lis
     under the curve's one legend entry."""
     line = group[0]
     pairs = [
-        (_round(d.value(v * 1e3, "speed")), _round(d.value(p / 1e6, "pressure")))
+        (
+            _round(d.value(si_to_api(v, "speed"), "speed")),
+            _round(d.value(si_to_api(p, "pressure"), "pressure")),
+        )
         for v, p in zip(line.speeds_m_s, line.allowed_pa, strict=True)
         if math.isfinite(p) and p > 0
     ]
     spots: dict[tuple[float, float], list[str]] = {}
     for member in group:
         spot = (
-            _round(d.value(member.speed_m_s * 1e3, "speed")),
-            _round(d.value(member.pressure_pa / 1e6, "pressure")),
+            _round(d.value(si_to_api(member.speed_m_s, "speed"), "speed")),
+            _round(d.value(si_to_api(member.pressure_pa, "pressure"), "pressure")),
         )
         spots.setdefault(spot, []).append(member.id)
     speed, pressure = d.label("speed"), d.label("pressure")
@@ -515,12 +518,12 @@ def result_figures(
     d = Display(units)
     data = chart_data(result.inputs, catalog, [c.id for c in candidates], LIFE_TOP)
     length_mm, _ = api_value(data.length_m, "length")
-    speed_mm_s, _ = api_value(data.speed_m_s, "speed")
+    speed_mm_per_s, _ = api_value(data.speed_m_s, "speed")
     figures = {"critical_speed": critical_speed_figure(candidates, length_mm, d)}
     if data.pressure:
         figures["pv"] = pressure_figure(data.pressure, d)
     elif catalog is None:
-        figures["pv"] = pv_figure(candidates, speed_mm_s, candidates[0].axial_load_n, d)
+        figures["pv"] = pv_figure(candidates, speed_mm_per_s, candidates[0].axial_load_n, d)
     figures["torque"] = torque_figure(candidates, data.torque_limit_nm, d)
     if len(data.sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(data.sweep, candidates[0], d)

@@ -45,12 +45,12 @@ def test_a_printer_gantry_is_sized_top_down(client: TestClient) -> None:
     assert [a["name"] for a in (z, x, y)] == ["Z", "X", "Y"]
     assert z["total_kg"] == pytest.approx(0.5 + 0.3 + 0.4 + z["screw_kg"], rel=1e-12)
     assert x["carried_kg"] == pytest.approx(z["total_kg"], rel=1e-12)
-    assert x["moving_mass_kg"] == pytest.approx(0.8 + z["total_kg"], rel=1e-12)
+    assert x["sized_mass_kg"] == pytest.approx(0.8 + z["total_kg"], rel=1e-12)
     assert y["carried_kg"] == pytest.approx(x["total_kg"], rel=1e-12)
     for a in (z, x, y):
         assert a["chosen"]["id"] == a["candidates"][0]["id"] and a["passed"] > 0
-        assert f"moving_mass_kg={a['moving_mass_kg']:g}"[:18] in a["share_url"]
-    assert r.json()["moved_kg"] == pytest.approx(y["moving_mass_kg"], rel=1e-12)
+        assert f"moving_mass_kg={a['sized_mass_kg']:g}"[:18] in a["share_url"]
+    assert r.json()["moved_kg"] == pytest.approx(y["sized_mass_kg"], rel=1e-12)
 
 
 def test_the_axis_share_link_reproduces_its_choice(client: TestClient) -> None:

@@ -59,11 +59,14 @@ MOTOR_INPUTS = {
 }  # fmt: skip
 REQUIRED = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 SCANNED = ("app", "templates", "static")
-#: third-party bundles and the SI core are not the project's edge code; a move of the
-#: cycle is a model of its own whose fields share the scalar inputs' names by design (a
-#: move has its own speed, mass and load: app/contract/cycle.py).
+#: third-party bundles, the SI core and the catalog are not the project's edge code (the
+#: catalog sits below the contract and names its own values: a provenance key such as
+#: ``nut_length`` is a catalog field's name, not the input's); a move of the cycle is a
+#: model of its own whose fields share the scalar inputs' names by design (a move has its
+#: own speed, mass and load: app/contract/cycle.py).
 NOT_SCANNED = (
     ROOT / "app" / "core",
+    ROOT / "app" / "catalog",
     ROOT / "static" / "vendor",
     ROOT / "app" / "contract" / "cycle.py",
 )

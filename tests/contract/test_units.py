@@ -228,8 +228,9 @@ ALLOWED = {
     ("app/core/formulas/support.py", 1e6): "ISO 281: a rating is for 10^6 revolutions",
 }
 #: keyword arguments and calls whose numbers are input bounds and defaults, in the API
-#: unit of their field: values, not conversions.
-VALUE_KEYWORDS = ("bounds", "default")
+#: unit of their field (pydantic's ``ge``/``le``/``gt``/``lt`` are bounds too): values,
+#: not conversions.
+VALUE_KEYWORDS = ("bounds", "default", "ge", "le", "gt", "lt")
 VALUE_CALLS = ("bounded_number",)
 
 

@@ -13,6 +13,7 @@ from app.contract.schemas import ApplicationIn
 from app.report.charts import PRESSURE_POINTS, PRESSURE_SPAN
 from app.report.service import run_selection
 from app.web.figures import result_figures
+from tests.leadscrews import leadscrew_families
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
@@ -28,6 +29,8 @@ NO_DUTY = {"load_n": 200, "speed_mm_s": 20, "length_mm": 500, "nut_material": "a
 
 
 def figures(catalog: Catalog, inputs: dict[str, Any], units: dict[str, str]) -> dict[str, Any]:
+    """The result's figures over the leadscrews (a ball nut has no PV chart)."""
+    inputs = {"family": list(leadscrew_families(catalog)), **inputs}
     result = run_selection(ApplicationIn.model_validate(inputs), catalog)
     return result_figures(result, units, catalog)
 

@@ -58,7 +58,7 @@ def test_the_page_sizes_each_axis_with_the_axes_above(client: TestClient) -> Non
         ]
     }
     api = client.post("/api/v1/machine", json=body).json()["axes"]
-    assert f"{api[1]['carried_kg']:.4g}" == x[3] and f"{api[1]['moving_mass_kg']:.4g}" == x[4]
+    assert f"{api[1]['carried_kg']:.4g}" == x[3] and f"{api[1]['sized_mass_kg']:.4g}" == x[4]
     assert api[0]["chosen"]["id"] in z[1] and "governs" in page.text
 
 
