@@ -36,6 +36,7 @@ FAMILY_FIELDS = frozenset(
         "friction_static",
         "preload_fraction",
         "preload_friction_factor",
+        "temperature_range",
         "columns",
     }
 )
@@ -146,6 +147,7 @@ def _spec(
     drag_min, drag_max = _drag_torques(family, ca, lead)
     per_300mm = to_si(family.number("lead_accuracy_mm_per_300mm"), "mm")
     lead_accuracy = per_300mm / to_si(300.0, "mm")
+    t_min, t_max = family.range("temperature_range", positive=False)
     return ScrewSpec(
         id=row.entry,
         series_id=size_id(family.plain_text("id"), row.entry),
@@ -181,6 +183,8 @@ def _spec(
         ball_diameter_m=_row_value(row, "ball_diameter_mm"),
         dn_limit_mm_rpm=family.number("dn_limit_mm_rpm"),
         accuracy_grade=family.text("accuracy_grade"),
+        temperature_min_c=t_min,
+        temperature_max_c=t_max,
     )
 
 
@@ -192,6 +196,7 @@ FAMILY_PROVENANCE = {
     "dn_limit": "dn_limit_mm_rpm",
     "accuracy_grade": "accuracy_grade",
     "drag_torque": "preload_friction_factor",
+    "temperature_range": "temperature_range",
 }
 COLUMN_PROVENANCE = {
     "outer_diameter": "outer_diameter_mm",
@@ -222,7 +227,7 @@ def _provenance(
     not_published = Provenance(
         "derived", "not published in the maker's ball-screw table: not checked for it"
     )
-    for name in ("max_length", "outgassing", "repeatability", "temperature_range", "pitch"):
+    for name in ("max_length", "outgassing", "repeatability", "pitch"):
         prov[name] = not_published
     prov["traverse_speed"] = NOT_APPLICABLE
     prov["type"] = Provenance("vendor", "ball screw: the maker's nut table")
