@@ -121,6 +121,14 @@ def _drag_torques(family: Entry, ca_n: float, lead_m: float) -> tuple[float, flo
     )
 
 
+def _temperature_range(family: Entry) -> tuple[float | None, float | None]:
+    """The family's operating temperature range [deg C], (None, None) when it gives none
+    (the temperature check then says it could not run)."""
+    if not family.has("temperature_range"):
+        return None, None
+    return family.range("temperature_range", positive=False)
+
+
 def _inertia_per_m(material: Material, outer_m: float) -> float:
     """Rotating inertia of the shaft per metre [kg m^2/m], a solid steel cylinder of the
     outer diameter (HIWIN F 3.21 takes the nominal diameter)."""
@@ -147,7 +155,7 @@ def _spec(
     drag_min, drag_max = _drag_torques(family, ca, lead)
     per_300mm = to_si(family.number("lead_accuracy_mm_per_300mm"), "mm")
     lead_accuracy = per_300mm / to_si(300.0, "mm")
-    t_min, t_max = family.range("temperature_range", positive=False)
+    t_min, t_max = _temperature_range(family)
     return ScrewSpec(
         id=row.entry,
         series_id=size_id(family.plain_text("id"), row.entry),
@@ -217,7 +225,7 @@ def _provenance(
     material's, or 'not applicable to a ball screw' for a leadscrew's nut rating."""
     prov = {name: NOT_APPLICABLE for name in LEADSCREW_ONLY}
     prov.update({k: columns[c] for k, c in COLUMN_PROVENANCE.items() if c in columns})
-    prov.update({k: family.prov(v) for k, v in FAMILY_PROVENANCE.items()})
+    prov.update({k: family.prov(v) for k, v in FAMILY_PROVENANCE.items() if family.has(v)})
     prov["thread_half_angle"] = Provenance(
         "derived", "rolling contact: the thread-efficiency formula with a 0 flank angle"
     )
@@ -227,8 +235,8 @@ def _provenance(
     not_published = Provenance(
         "derived", "not published in the maker's ball-screw table: not checked for it"
     )
-    for name in ("max_length", "outgassing", "repeatability", "pitch"):
-        prov[name] = not_published
+    for name in ("max_length", "outgassing", "repeatability", "temperature_range", "pitch"):
+        prov.setdefault(name, not_published)
     prov["traverse_speed"] = NOT_APPLICABLE
     prov["type"] = Provenance("vendor", "ball screw: the maker's nut table")
     prov["oil_compatible"] = Provenance(
