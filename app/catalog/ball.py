@@ -193,6 +193,7 @@ def _spec(
         accuracy_grade=family.text("accuracy_grade"),
         temperature_min_c=t_min,
         temperature_max_c=t_max,
+        preload_n=family.number("preload_fraction", allow_zero=True) * ca,
     )
 
 
@@ -204,6 +205,7 @@ FAMILY_PROVENANCE = {
     "dn_limit": "dn_limit_mm_rpm",
     "accuracy_grade": "accuracy_grade",
     "drag_torque": "preload_friction_factor",
+    "preload": "preload_fraction",
     "temperature_range": "temperature_range",
 }
 COLUMN_PROVENANCE = {
