@@ -314,7 +314,7 @@ def _ball_line(spec: ScrewSpec, length_m: float) -> str:
     e300 = spec.lead_accuracy_m_per_m * 0.3 if spec.lead_accuracy_m_per_m else None
     code = ""
     if spec.family_id.startswith("HIWIN"):
-        deviation = "" if e300 is None else "-" + f"{e300 * 1000:.3f}".replace(".", ",")
+        deviation = "" if e300 is None else "-" + _mm(e300).replace(".", ",")
         code = f"HIWIN {spec.id}-<thread length>-<total length>{deviation} (HIWIN order code); "
     grade = spec.accuracy_grade or "to state"
     nominal = _nominal_diameter_mm(spec.id, spec.outer_diameter_m)
