@@ -36,6 +36,7 @@ FAMILY_FIELDS = frozenset(
         "friction_static",
         "preload_fraction",
         "preload_friction_factor",
+        "temperature_range",
         "columns",
     }
 )
@@ -120,6 +121,14 @@ def _drag_torques(family: Entry, ca_n: float, lead_m: float) -> tuple[float, flo
     )
 
 
+def _temperature_range(family: Entry) -> tuple[float | None, float | None]:
+    """The family's operating temperature range [deg C], (None, None) when it gives none
+    (the temperature check then says it could not run)."""
+    if not family.has("temperature_range"):
+        return None, None
+    return family.range("temperature_range", positive=False)
+
+
 def _inertia_per_m(material: Material, outer_m: float) -> float:
     """Rotating inertia of the shaft per metre [kg m^2/m], a solid steel cylinder of the
     outer diameter (HIWIN F 3.21 takes the nominal diameter)."""
@@ -146,6 +155,7 @@ def _spec(
     drag_min, drag_max = _drag_torques(family, ca, lead)
     per_300mm = to_si(family.number("lead_accuracy_mm_per_300mm"), "mm")
     lead_accuracy = per_300mm / to_si(300.0, "mm")
+    t_min, t_max = _temperature_range(family)
     return ScrewSpec(
         id=row.entry,
         series_id=size_id(family.plain_text("id"), row.entry),
@@ -181,6 +191,9 @@ def _spec(
         ball_diameter_m=_row_value(row, "ball_diameter_mm"),
         dn_limit_mm_rpm=family.number("dn_limit_mm_rpm"),
         accuracy_grade=family.text("accuracy_grade"),
+        temperature_min_c=t_min,
+        temperature_max_c=t_max,
+        preload_n=family.number("preload_fraction", allow_zero=True) * ca,
     )
 
 
@@ -192,6 +205,8 @@ FAMILY_PROVENANCE = {
     "dn_limit": "dn_limit_mm_rpm",
     "accuracy_grade": "accuracy_grade",
     "drag_torque": "preload_friction_factor",
+    "preload": "preload_fraction",
+    "temperature_range": "temperature_range",
 }
 COLUMN_PROVENANCE = {
     "outer_diameter": "outer_diameter_mm",
@@ -212,7 +227,7 @@ def _provenance(
     material's, or 'not applicable to a ball screw' for a leadscrew's nut rating."""
     prov = {name: NOT_APPLICABLE for name in LEADSCREW_ONLY}
     prov.update({k: columns[c] for k, c in COLUMN_PROVENANCE.items() if c in columns})
-    prov.update({k: family.prov(v) for k, v in FAMILY_PROVENANCE.items()})
+    prov.update({k: family.prov(v) for k, v in FAMILY_PROVENANCE.items() if family.has(v)})
     prov["thread_half_angle"] = Provenance(
         "derived", "rolling contact: the thread-efficiency formula with a 0 flank angle"
     )
@@ -223,7 +238,7 @@ def _provenance(
         "derived", "not published in the maker's ball-screw table: not checked for it"
     )
     for name in ("max_length", "outgassing", "repeatability", "temperature_range", "pitch"):
-        prov[name] = not_published
+        prov.setdefault(name, not_published)
     prov["traverse_speed"] = NOT_APPLICABLE
     prov["type"] = Provenance("vendor", "ball screw: the maker's nut table")
     prov["oil_compatible"] = Provenance(

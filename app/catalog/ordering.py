@@ -13,6 +13,15 @@ Rules, each cited where it is used:
   "we can custom machine screws to your requirements (quote to your drawings)", "lengths
   can be specified up to 4 m, or up to 2.4 m with TFE coating" (End Machining) and
   "please fax for a quote"; so the line is a specification, not a maker's code.
+- Ball screws: HIWIN's order code, explained in HIWIN GmbH's ballscrew catalogue
+  (Ballscrews & Accessories, www.hiwin.de), section "HIWIN order code" (sec. 1.2 of the
+  edition whose contents list it so; sec. 2.2.4, p. 95, of HIWIN GmbH's combined
+  catalogue): [starts][R/L][nominal d]-[lead][K/T/B recirculation][circuits]-[nut
+  type]-[thread length]-[total length]-[lead deviation per 300 mm], e.g.
+  2R40-20K4-FSCDIN-800-1000-0,052 (starts "1" may be left out). The catalog's nut id is
+  the code up to the nut type; the lengths are the buyer's drawing's. The part is a ball
+  screw per ISO 3408 (formerly DIN 69051), its tolerance class (T7 rolled, T3 ground)
+  the family's.
 - A value the catalog only assumes (provenance kind ``assumed``), or a rating derived
   from an assumed input (its catalog range is an assumption's, ``assumption_ends``), is
   named after "Confirm with the maker:" with the value taken.
@@ -22,6 +31,7 @@ catalog, whatever the page's display units.
 """
 
 import math
+import re
 from collections.abc import Callable
 from fractions import Fraction
 
@@ -69,6 +79,18 @@ ISO_BASIS = (
     "(Tr d x P; several starts Tr d x lead (P pitch)); tolerance class 7e screw / 7H nut, "
     "the medium class ISO 2903 clause 9 recommends for a normal length of engagement. Any "
     "maker of trapezoidal screws can quote it; the catalog names no maker."
+)
+BALL_BASIS = (
+    "HIWIN order code, as HIWIN GmbH's ballscrew catalogue (Ballscrews & Accessories, "
+    "www.hiwin.de) explains it in its section 'HIWIN order code': thread direction and "
+    "nominal diameter, lead, recirculation type and circuits, nut type (the catalog's nut "
+    "id, from catalogue BS-08-2-EN-1704-K Tables 4.4, 4.5 and 6.4), then thread length, "
+    "total length and lead deviation per 300 mm (the tolerance class). A ball screw per "
+    "ISO 3408 (formerly DIN 69051)."
+)
+BALL_OTHER_BASIS = (
+    "A ball-screw family of your own: the catalog names no maker's order code; the line is "
+    "a specification per ISO 3408 (formerly DIN 69051)."
 )
 CUSTOM_BASIS = "Your own screw: no catalog series and no standard designation."
 OTHER_BASIS = "A catalog series of your own: the catalog names no maker or ordering code."
@@ -254,6 +276,73 @@ def _custom_line(spec: ScrewSpec, length_m: float) -> str:
     )
 
 
+def _nominal_diameter_mm(code: str, outer_m: float) -> str:
+    """A ball screw's nominal diameter [mm] from its maker's code, else its outer
+    diameter [m] in mm.
+
+    >>> _nominal_diameter_mm("R20-10K3-FSCDIN", 0.0193)
+    '20'
+    >>> _nominal_diameter_mm("R08-02.5T2-RSIT", 0.0077)
+    '8'
+    >>> _nominal_diameter_mm("MY16-05", 0.0155)
+    '15.5'
+    """
+    found = re.match(r"[RL](\d+(?:\.\d+)?)-", code)
+    return f"{float(found.group(1)):g}" if found else _mm(outer_m)
+
+
+def _preload_words(spec: ScrewSpec) -> str:
+    """A ball nut's play or preload as the family gives it."""
+    if not spec.preload_n:
+        play = f"axial play at most {_mm(spec.backlash_max_m)} mm, " if spec.backlash_max_m else ""
+        return f"{play}no preload"
+    share = (
+        ""
+        if not spec.dynamic_load_n
+        else f", {100 * spec.preload_n / spec.dynamic_load_n:.3g} % of Ca"
+    )
+    return f"preloaded ({spec.preload_n:.3g} N{share})"
+
+
+def _ball_confirm(spec: ScrewSpec) -> list[str]:
+    """What to confirm with the maker of a ball screw: each assumed value it rests on."""
+    out = []
+    if spec.preload_n and _assumed(spec, "preload"):
+        out.append(
+            f"the preload (taken as {spec.preload_n:.3g} N, the largest a single nut allows; "
+            "the drag torque is computed at it)"
+        )
+    if spec.temperature_max_c is not None and _assumed(spec, "temperature_range"):
+        out.append(
+            f"the operating temperature range (taken as {spec.temperature_min_c:g} to "
+            f"{spec.temperature_max_c:g} °C)"
+        )
+    return out
+
+
+def _ball_line(spec: ScrewSpec, length_m: float) -> str:
+    """A ball screw: the maker's order code (HIWIN's, module docstring) with the lengths
+    to state, then the part in words: ISO 3408, nominal diameter x lead, rolled or ground,
+    tolerance class and lead deviation, nut and preload, lengths and end machining."""
+    e300 = spec.lead_accuracy_m_per_m * 0.3 if spec.lead_accuracy_m_per_m else None
+    code = ""
+    if spec.family_id.startswith("HIWIN"):
+        deviation = "" if e300 is None else "-" + _mm(e300).replace(".", ",")
+        code = f"HIWIN {spec.id}-<thread length>-<total length>{deviation} (HIWIN order code); "
+    grade = spec.accuracy_grade or "to state"
+    nominal = _nominal_diameter_mm(spec.id, spec.outer_diameter_m)
+    steel = _screw_words(spec).removesuffix(", rolled")
+    deviation_words = "" if e300 is None else f", lead deviation {_mm(e300)} mm per 300 mm"
+    nut_length = "" if spec.nut_length_m is None else f", {_mm(spec.nut_length_m)} mm long"
+    return (
+        f"{code}ball screw per ISO 3408 (DIN 69051), nominal diameter "
+        f"{nominal} x lead {_mm(spec.lead_m)} mm, {spec.variant}, "
+        f"tolerance class {grade}{deviation_words}, {steel}; nut "
+        f"{spec.id.rsplit('-', 1)[-1]}{nut_length}, {_preload_words(spec)}; threaded length "
+        f"to cover the stroke plus the nut, {_length(length_m)}."
+    )
+
+
 def ordering_line(spec: ScrewSpec, length_m: float) -> str:
     """The line a buyer sends for a quote of ``spec`` at screw length ``length_m`` [m]:
     the ISO 2903 designation with its tolerance class for an ISO trapezoidal screw, else a
@@ -279,6 +368,10 @@ def ordering_line(spec: ScrewSpec, length_m: float) -> str:
     catalog does not give the nut's shape). Confirm with the maker: the nut length (taken as 32 mm).
     """
     thread = iso_designation(spec)
+    if spec.screw_type == "ball":
+        confirm = _ball_confirm(spec)
+        line = _ball_line(spec, length_m)
+        return f"{line} Confirm with the maker: {'; '.join(confirm)}." if confirm else line
     if spec.series_id == "custom":
         line = _custom_line(spec, length_m)
     elif thread is not None:
@@ -293,6 +386,8 @@ def ordering_basis(spec: ScrewSpec) -> str:
     """What the ordering line rests on: the standard and its clauses for an ISO screw,
     the seed's want of a part-number scheme and what is public of its maker for the
     seed's series, else that the catalog names no maker."""
+    if spec.screw_type == "ball":
+        return BALL_BASIS if spec.family_id.startswith("HIWIN") else BALL_OTHER_BASIS
     if spec.series_id == "custom":
         return CUSTOM_BASIS
     if iso_designation(spec) is not None:

@@ -149,7 +149,8 @@ REPORTED: tuple[Reported, ...] = (
         "id",
         "Screw",
         "Catalog id of the screw and nut; the tags say whether the screw is TFE coated and "
-        "whether the nut takes up the play (anti-backlash).",
+        "whether the nut takes up the play (anti-backlash), or that it is a ball screw "
+        "(preloaded or not).",
         cell="screw",
         column=True,
         csv=True,

@@ -302,6 +302,11 @@ class VerdictOut(BaseModel):
         description="Checks that run for this application but could not for this screw, "
         "each with the values it lacks."
     )
+    not_applicable: Annotated[list[str], From("not_applicable")] = Field(
+        description="Checks that do not apply to this kind of screw (a leadscrew nut's "
+        "PV, pressure, speed, design-load, wear and heat checks on a ball screw): not "
+        "counted as skipped."
+    )
     summary: Annotated[str, From("summary", via=phrase_text)] = Field(
         description="Passes or fails in one line; never 'passes every check' when a check "
         "could not run, and then which did not and why."

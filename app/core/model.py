@@ -263,6 +263,8 @@ class ScrewSpec:
     ball_diameter_m: float | None = None
     dn_limit_mm_rpm: float | None = None
     accuracy_grade: str = ""
+    #: a ball nut's axial preload [N] (0: a nut with play; None: not a ball screw)
+    preload_n: float | None = None
 
 
 class Judged(Protocol):

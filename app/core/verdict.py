@@ -162,6 +162,33 @@ class Skip:
         return f"{self.label} (no {listed})"
 
 
+#: The checks of a sliding nut's ratings (PV, flank pressure, sliding and traverse speed,
+#: design load, wear, rated travel, friction heat): a ball nut rolls and has none of
+#: these ratings (its own are the L10 life, the static rating and the DN speed), so for
+#: a ball screw they do not apply: not a check that could not run.
+LEADSCREW_NUT_CHECKS = frozenset(
+    {
+        "pv",
+        "bearing_pressure",
+        "max_sliding_speed",
+        "traverse_speed",
+        "design_load",
+        "wear_life",
+        "life",
+        "nut_heat",
+    }
+)
+NOT_APPLICABLE_TEXT = "Leadscrew-nut checks do not apply to a ball screw."
+
+
+def not_applicable(checks: Sequence[Check], screw: ScrewSpec) -> tuple[str, ...]:
+    """The labels of ``checks`` that do not apply to ``screw``: a leadscrew nut's checks
+    on a ball screw; none for a leadscrew."""
+    if screw.screw_type != "ball":
+        return ()
+    return tuple(c.label for c in checks if c.name in LEADSCREW_NUT_CHECKS)
+
+
 #: Thread values a nut rating is read over (the engaged flank area): missing, they
 #: stop the check whatever the nut's rating.
 THREAD_VALUES = ("nut_length", "pitch")
@@ -188,14 +215,26 @@ def missing_values(check: Check, screw: ScrewSpec) -> tuple[str, ...]:
 def skips(checks: Sequence[Check], screw: ScrewSpec) -> tuple[Skip, ...]:
     """Each check in ``checks`` that could not run for ``screw`` for want of a value,
     with the values it lacks (a check with nothing to judge on this screw, such as oil on
-    a nut that suits oil, is not a skip)."""
-    found = (Skip(c.name, c.label, missing_values(c, screw)) for c in checks)
+    a nut that suits oil, is not a skip, nor a check that does not apply to its kind of
+    screw: ``not_applicable``)."""
+    inapplicable = set(not_applicable(checks, screw))
+    found = (
+        Skip(c.name, c.label, missing_values(c, screw))
+        for c in checks
+        if c.label not in inapplicable
+    )
     return tuple(skip for skip in found if skip.missing)
 
 
-def summary(passed: bool, checks: Sequence[CheckResult], skipped: Sequence[Skip]) -> Phrase:
+def summary(
+    passed: bool,
+    checks: Sequence[CheckResult],
+    skipped: Sequence[Skip],
+    inapplicable: Sequence[str] = (),
+) -> Phrase:
     """The one-line summary every page shows: never "passes every check" when a check
-    could not run; then the checks that did not run and why.
+    could not run; then the checks that did not run and why, and once, for a ball screw,
+    that the leadscrew nut's checks do not apply (they are not counted as not checked).
 
     A pass with nothing skipped is "Passes every check."; with skipped checks it is
     "Passes the N checks that ran; not checked: ...".
@@ -208,9 +247,12 @@ def summary(passed: bool, checks: Sequence[CheckResult], skipped: Sequence[Skip]
         head = "Passes every check."
     else:
         head = f"Passes the {len(limits)} checks that ran."
-    if not skipped:
-        return Phrase(head)
-    return Phrase(f"{head} Not checked: {'; '.join(s.phrase() for s in skipped)}.")
+    parts = [head]
+    if skipped:
+        parts.append(f"Not checked: {'; '.join(s.phrase() for s in skipped)}.")
+    if inapplicable:
+        parts.append(NOT_APPLICABLE_TEXT)
+    return Phrase(" ".join(parts))
 
 
 @dataclass(frozen=True)
@@ -230,6 +272,8 @@ class Verdict:
     passed: bool
     governing: CheckResult | None
     skipped: tuple[Skip, ...]
+    #: the labels of the checks that do not apply to this kind of screw
+    not_applicable: tuple[str, ...]
     summary: Phrase
 
     @cached_property
@@ -340,6 +384,7 @@ def verdict(c: Record) -> Verdict:
     watch = watch_list(c)
     u = None if g is None else g.utilization
     skipped = skips(c.skipped, c.screw)
+    inapplicable = not_applicable(c.skipped, c.screw)
     return Verdict(
         governs=None if g is None else g.name,
         governs_label="" if g is None else g.label,
@@ -350,5 +395,6 @@ def verdict(c: Record) -> Verdict:
         passed=bool(c.passed),
         governing=g,
         skipped=skipped,
-        summary=summary(bool(c.passed), c.checks, skipped),
+        not_applicable=inapplicable,
+        summary=summary(bool(c.passed), c.checks, skipped, inapplicable),
     )

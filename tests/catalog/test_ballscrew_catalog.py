@@ -186,3 +186,15 @@ def test_a_bad_ball_screw_family_is_refused_naming_the_field(
     with pytest.raises(CatalogError) as err:
         load_catalog([tmp_path])
     assert field in str(err.value)
+
+
+def test_every_ball_screw_has_an_assumed_operating_range(
+    catalog: Catalog,
+) -> None:
+    """HIWIN BS-08-2-EN-1704-K gives no operating range; the families take THK's 80 C
+    limit for products with resin and rubber parts (THK Ball Spline Precautions on Use,
+    item 3), labelled assumed, so the temperature check runs (400 C: test_advice)."""
+    for screw in _ball(catalog):
+        assert (screw.temperature_min_c, screw.temperature_max_c) == (-20.0, 80.0), screw.id
+        prov = screw.provenance["temperature_range"]
+        assert prov.kind == "assumed" and "80 C" in prov.source, screw.id

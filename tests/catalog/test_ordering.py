@@ -9,6 +9,7 @@ import pytest
 
 from app.catalog import Catalog
 from app.catalog.ordering import (
+    BALL_BASIS,
     CONFIRMABLE,
     CUSTOM_BASIS,
     ISO_BASIS,
@@ -161,3 +162,45 @@ def test_a_custom_screw_is_specified_by_its_geometry(catalog: Catalog) -> None:
         "machining to drawing; nut to match: material and shape to state."
     )
     assert ordering_basis(spec) == CUSTOM_BASIS
+
+
+# HIWIN's order code (HIWIN GmbH ballscrew catalogue, section "HIWIN order code"):
+# [R/L][d]-[lead][recirculation][circuits]-[nut type]-[thread length]-[total length]-
+# [lead deviation per 300 mm], e.g. 2R40-20K4-FSCDIN-800-1000-0,052. Tolerance classes of
+# BS-08-2-EN-1704-K: rolled T7 (52 um / 300 mm, Table 4.1), ground T3 (12 um, Table 6.1).
+BALL_CASES = [
+    ("R20-10K3-FSCDIN", "-0,052", "nominal diameter 20 x lead 10 mm, rolled", "T7"),
+    ("R08-02.5T2-RSIT", "-0,052", "nominal diameter 8 x lead 2.5 mm, rolled", "T7"),
+    ("R20-05K4-FSC", "-0,012", "nominal diameter 20 x lead 5 mm, ground", "T3"),
+]
+
+
+@pytest.mark.parametrize(
+    ("cid", "deviation", "size", "grade"), BALL_CASES, ids=[c[0] for c in BALL_CASES]
+)
+def test_a_ball_screw_is_ordered_by_hiwins_code_not_as_a_leadscrew(
+    catalog: Catalog, cid: str, deviation: str, size: str, grade: str
+) -> None:
+    spec = catalog.by_id[cid]
+    line = ordering_line(spec, 0.5)
+    assert line.startswith(f"HIWIN {cid}-<thread length>-<total length>{deviation} ")
+    assert "ball screw per ISO 3408 (DIN 69051)" in line and size in line
+    assert f"tolerance class {grade}," in line
+    assert "leadscrew" not in line and "anti-backlash" not in line
+    assert "500 mm between the supports plus the ends, end machining to drawing" in line
+    assert ordering_basis(spec) == BALL_BASIS
+
+
+def test_a_rolled_ball_nut_has_play_and_a_ground_one_an_assumed_preload(catalog: Catalog) -> None:
+    """HIWIN sec. 3.6: rolled nuts come with slight play (Table 4.4: at most 0.04 mm for
+    R20-10K3-FSCDIN); the ground nut's preload is the catalog's assumption, 5 % of Ca
+    (sec. 3.6.2's most for a single nut): 0.05 x 14,900 N = 745 N (Table 6.4, R20-05K4-FSC)."""
+    rolled = ordering_line(catalog.by_id["R20-10K3-FSCDIN"], 0.5)
+    assert "axial play at most 0.04 mm, no preload" in rolled
+    assert "the preload" not in rolled
+    ground = ordering_line(catalog.by_id["R20-05K4-FSC"], 0.5)
+    assert "preloaded (745 N, 5 % of Ca)" in ground
+    confirm = ground.split("Confirm with the maker: ", 1)[1]
+    assert confirm.startswith("the preload (taken as 745 N")
+    for line in (rolled, ground):
+        assert "the operating temperature range (taken as -20 to 80 °C)" in line

@@ -11,7 +11,13 @@ from app.core.checks import BY_NAME
 from app.core.model import Application
 from app.core.record import governing
 from app.core.selection import select
-from app.core.verdict import missing_values, percent, value_label, verdict
+from app.core.verdict import (
+    LEADSCREW_NUT_CHECKS,
+    missing_values,
+    percent,
+    value_label,
+    verdict,
+)
 from tests.leadscrews import leadscrew_families
 
 #: A horizontal axis where most screws pass with room (100 N, 50 mm/s, 300 mm).
@@ -118,7 +124,37 @@ def test_a_pass_with_skipped_checks_never_says_every_check(catalog: Catalog) -> 
             assert skip.missing and f"{skip.label} (no " in text
             assert skip.check not in {k.name for k in c.checks}
     for c in complete:
-        assert render(c.verdict.summary, DEFAULT_UNITS) == "Passes every check."
+        text = render(c.verdict.summary, DEFAULT_UNITS)
+        tail = (
+            " Leadscrew-nut checks do not apply to a ball screw."
+            if c.screw.screw_type == "ball"
+            else ""
+        )
+        assert text == "Passes every check." + tail
+
+
+def test_a_ball_screw_is_not_skipped_on_checks_its_nut_has_no_rating_for(
+    catalog: Catalog,
+) -> None:
+    """A ball nut rolls (HIWIN BS-08-2-EN-1704-K rates it by Cdyn, C0 and the DN speed,
+    no PV or flank pressure): the leadscrew nut's checks do not apply to it, so they are
+    said once as not applicable and never listed under "Not checked"; a leadscrew has
+    none not applicable."""
+    sel = select(EASY, catalog.screws)
+    balls = [c for c in sel.candidates if c.screw.screw_type == "ball"]
+    leads = [c for c in sel.candidates if c.screw.screw_type == "lead"]
+    assert balls and leads
+    for c in balls:
+        text = render(c.verdict.summary, DEFAULT_UNITS)
+        assert c.verdict.not_applicable, c.screw.id
+        assert "PV (nut material)" in c.verdict.not_applicable
+        assert text.count("Leadscrew-nut checks do not apply to a ball screw.") == 1
+        skipped = {s.check for s in c.verdict.skipped}
+        assert not skipped & LEADSCREW_NUT_CHECKS, (c.screw.id, skipped)
+        for label in c.verdict.not_applicable:
+            assert f"{label} (no " not in text
+    assert all(c.verdict.not_applicable == () for c in leads)
+    assert set(BY_NAME) >= LEADSCREW_NUT_CHECKS
 
 
 def test_a_nut_rated_by_pressure_without_its_thread_lacks_only_the_thread(

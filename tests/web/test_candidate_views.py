@@ -227,3 +227,35 @@ def test_the_csv_view_writes_the_csv_of_the_full_form(
     assert results_csv(run_selection(inputs, catalog, units, view="csv"), units) == full
     header, *rows = full.split("\r\n")[:-1]
     assert rows and sum(h.startswith("input:") for h in header.split(",")) == len(FIELDS)
+
+
+def test_the_screw_type_shows_in_the_table_and_the_compare(
+    client: TestClient, catalog: Catalog
+) -> None:
+    """Leadscrews and ball screws rank together: each row's Type column and its id cell's
+    tag say which it is (a ball screw carries no TFE-coating tag, and a preloaded ball nut
+    is 'preloaded', not 'anti-backlash'); the compare page has the Type row."""
+    query = {"load": 100, "speed": 50, "length": 500}
+    page = BeautifulSoup(client.get("/", params=query).text, "html.parser")
+    heads = [th.get_text(" ", strip=True) for th in page.select("table.candidates thead th")]
+    column = heads.index("Type")
+    seen = set()
+    for row in page.select("tbody.candidate"):
+        spec = catalog.by_id[row["data-id"]]
+        seen.add(spec.screw_type)
+        cells = row.select_one("tr").find_all(["th", "td"], recursive=False)
+        assert cells[column].get_text(strip=True) == spec.screw_type
+        tags = [t.get_text() for t in row.select("th.screw .tag")]
+        if spec.screw_type == "ball":
+            assert "ball screw" in tags and not row.select("th.screw .coating")
+            assert ("preloaded" in tags) == spec.anti_backlash and "anti-backlash" not in tags
+        else:
+            assert row.select_one("th.screw .coating") and "ball screw" not in tags
+    assert seen == {"ball", "lead"}
+    ball = next(s.id for s in catalog.screws if s.screw_type == "ball")
+    lead = next(s.id for s in catalog.screws if s.screw_type == "lead")
+    compare = client.get("/compare", params={**query, "ids": f"{ball},{lead}"})
+    assert compare.status_code == 200
+    table = BeautifulSoup(compare.text, "html.parser")
+    row = next(tr for tr in table.select("tr") if tr.th and tr.th.get_text(strip=True) == "Type")
+    assert [td.get_text(strip=True) for td in row.find_all("td")] == ["ball", "lead"]

@@ -13,6 +13,7 @@ from app.contract.schemas import ApplicationIn
 from app.core.formulas.critical_speed import critical_speed_rpm
 from app.report.service import run_selection
 from app.web.figures import TOP, chart_candidates, result_figures
+from tests.leadscrews import leadscrew_families
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
@@ -135,9 +136,13 @@ def test_legend_sits_below_the_plot_clear_of_the_toolbar(result: SelectOut) -> N
         assert figure["layout"]["margin"]["t"] >= 30
 
 
-def test_lead_sweep_evaluates_every_lead_of_the_top_size(
-    result: SelectOut, catalog: Catalog
-) -> None:
+def test_lead_sweep_evaluates_every_lead_of_the_top_size(catalog: Catalog) -> None:
+    """A leadscrew's sweep (a ball nut has no PV, so its sweep has no PV trace)."""
+    inputs = ApplicationIn(
+        load_n=100, speed_mm_s=50, length_mm=500, lead_mm=10, max_torque_nm=0.3,
+        family=list(leadscrew_families(catalog)),
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
     figure = result_figures(result, METRIC, catalog)["lead_sweep"]
     top = result.candidates[0]
     same = [
@@ -168,7 +173,9 @@ def test_a_size_with_one_lead_of_its_nut_has_no_sweep(catalog: Catalog) -> None:
     (bronze) screw's size and nut has nothing to sweep, so the chart is left out rather
     than drawn as three nuts stacked on one lead. At 20 mm/s (800 rpm) its bronze nut
     slides at 800 / 60 x pi x 7.25 mm = 0.30 m/s, within bronze's 0.42 m/s."""
-    inputs = ApplicationIn(load_n=100, speed_mm_s=20, length_mm=500)
+    inputs = ApplicationIn(
+        load_n=100, speed_mm_s=20, length_mm=500, family=list(leadscrew_families(catalog))
+    )
     result = run_selection(inputs, catalog)
     assert result.candidates[0].id == "Tr8x1.5-bronze"
     assert "lead_sweep" not in result_figures(result, METRIC, catalog)
@@ -199,8 +206,12 @@ def test_axes_and_values_follow_the_display_units(result: SelectOut) -> None:
     assert imperial["torque"]["data"][2]["y"][0] == pytest.approx(metric_load / OZ_IN, rel=1e-3)
 
 
+#: 10 kN at 500 mm/s over 3 m: no leadscrew passes (a 50 x 40 ball screw does).
+NOTHING_PASSES = {"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000}
+
+
 def test_nothing_passing_charts_the_nearest_rejected(catalog: Catalog) -> None:
-    inputs = ApplicationIn(load_n=10000, speed_mm_s=500, length_mm=3000)
+    inputs = ApplicationIn(**NOTHING_PASSES, family=list(leadscrew_families(catalog)))
     result = run_selection(inputs, catalog)
     assert plain(result)["candidates"] == []
     candidates, passing = chart_candidates(result)
@@ -216,7 +227,8 @@ def test_nothing_passing_charts_the_nearest_rejected(catalog: Catalog) -> None:
 
 
 def test_nothing_passing_puts_the_most_excluding_checks_chart_first(catalog: Catalog) -> None:
-    result = run_selection(ApplicationIn(load_n=10000, speed_mm_s=500, length_mm=3000), catalog)
+    inputs = ApplicationIn(**NOTHING_PASSES, family=list(leadscrew_families(catalog)))
+    result = run_selection(inputs, catalog)
     summary = result.summary.model_copy(update={"most_excluding_check": "pv"})
     by_pv = result.model_copy(update={"summary": summary})
     assert list(result_figures(by_pv, METRIC, catalog))[:3] == ["pv", "critical_speed", "torque"]

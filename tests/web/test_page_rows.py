@@ -8,6 +8,7 @@ from app.catalog import Catalog
 from app.contract.schemas import VIEWS, ApplicationIn
 from app.contract.units import DEFAULT_UNITS
 from app.report.service import run_page_selection, run_selection
+from tests.leadscrews import leadscrew_families
 
 ROW = set(VIEWS["row"])
 
@@ -53,7 +54,11 @@ def test_the_rejected_are_in_full_only_when_nothing_passes(catalog: Catalog) -> 
     passing = ApplicationIn.model_validate({"load_n": 100, "speed_mm_s": 50, "length_mm": 500})
     page, compact = run_page_selection(passing, catalog, DEFAULT_UNITS)
     assert page.candidates and not page.rejected and compact
-    none = ApplicationIn.model_validate({"load_n": 5000, "speed_mm_s": 500, "length_mm": 2000})
+    # 5 kN at 500 mm/s over 2 m: no leadscrew passes (ball screws do, so they are left out)
+    none = ApplicationIn.model_validate(
+        {"load_n": 5000, "speed_mm_s": 500, "length_mm": 2000,
+         "family": list(leadscrew_families(catalog))}
+    )  # fmt: skip
     page, compact = run_page_selection(none, catalog, DEFAULT_UNITS)
     assert not page.candidates and page.rejected
     assert [c.id for c in page.rejected] == [r.id for r in compact]

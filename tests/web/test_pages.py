@@ -24,6 +24,7 @@ from app.contract.outputs import SelectOut
 from app.contract.units import DEFAULT_UNITS
 from app.web.advice import proposal
 from app.web.export import results_csv, safe_cell
+from tests.leadscrews import leadscrew_families
 
 ROOT = Path(__file__).resolve().parents[2]
 AXIS = {"load": "100", "lead": "10", "speed": "50", "length": "500"}
@@ -42,6 +43,14 @@ def soup(response: Response) -> BeautifulSoup:
 
 def candidate_ids(page: BeautifulSoup) -> list[str]:
     return [str(t["data-id"]) for t in page.select("table.candidates tbody.candidate")]
+
+
+@pytest.fixture(scope="module")
+def lead(catalog: Catalog) -> str:
+    """The leadscrew families as the page takes them (comma-separated; the API's query
+    repeats the parameter: ``lead.split(",")``), for the
+    tests of a leadscrew's answer (ball screws rank beside them by default)."""
+    return ",".join(leadscrew_families(catalog))
 
 
 def api_select(client: TestClient, **params: Any) -> dict[str, Any]:
@@ -183,10 +192,12 @@ def test_same_axis_in_other_units_gives_same_candidates(
     assert unit_text in other.select_one("dl.inputs").text
 
 
-def test_table_values_follow_the_display_units(client: TestClient) -> None:
-    api = api_select(client)["candidates"][0]
+def test_table_values_follow_the_display_units(client: TestClient, lead: str) -> None:
+    # the length check's value: a leadscrew's (a ball screw's maker gives no maximum length)
+    api = api_select(client, family=lead.split(","))["candidates"][0]
     params = {
         **AXIS,
+        "family": lead,
         "lead": "0.393701",
         "speed": "1.968504",
         "length": "19.68504",
@@ -483,12 +494,16 @@ def test_rejected_are_grouped_by_failing_check_with_fixes(client: TestClient) ->
         assert item.select_one(".fix").text.startswith("Fix:")
 
 
-def test_no_passing_candidate_lists_verified_remedies_with_apply_links(client: TestClient) -> None:
-    params = {"load": "10000", "speed": "500", "length": "3000"}
+def test_no_passing_candidate_lists_verified_remedies_with_apply_links(
+    client: TestClient, lead: str
+) -> None:
+    # no leadscrew passes 10 kN at 500 mm/s over 3 m (a 50 x 40 ball screw does)
+    params = {"load": "10000", "speed": "500", "length": "3000", "family": lead}
     api = client.get(
         "/api/v1/select",
-        params={"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000, "detail": "full"},
-    ).json()
+        params={"load_n": 10000, "speed_mm_s": 500, "length_mm": 3000, "detail": "full",
+                "family": lead.split(",")},
+    ).json()  # fmt: skip
     page = soup(client.get("/", params=params))
     assert api["counts"]["passed"] == 0
     notice = page.select_one(".notice.no-pass[role=region]")
@@ -520,8 +535,11 @@ def test_no_passing_candidate_lists_verified_remedies_with_apply_links(client: T
     assert "nearest rejected" in page.select_one("#charts-heading").text
 
 
-def test_apply_all_makes_every_change_and_the_nearest_screw_passes(client: TestClient) -> None:
-    page = soup(client.get("/", params={"load": "3000", "speed": "500", "length": "3000"}))
+def test_apply_all_makes_every_change_and_the_nearest_screw_passes(
+    client: TestClient, lead: str
+) -> None:
+    params = {"load": "3000", "speed": "500", "length": "3000", "family": lead}
+    page = soup(client.get("/", params=params))
     link = page.select_one("a.apply-all") or page.select_one("a.apply")
     assert link is not None
     href = link["href"]
@@ -537,15 +555,16 @@ HEAVY_VERTICAL = {"load": "0", "speed": "50", "length": "500", "moving_mass_kg":
                   "orientation": "vertical"}  # fmt: skip
 
 
-def test_an_infeasible_change_is_not_offered_but_said(client: TestClient) -> None:
+def test_an_infeasible_change_is_not_offered_but_said(client: TestClient, lead: str) -> None:
     """The nearest screw would need a load below zero: the page answers, offers no change
     and says that no accepted load admits it; the API proposes nothing out of bounds."""
-    page = client.get("/", params=HEAVY_VERTICAL)
+    page = client.get("/", params={**HEAVY_VERTICAL, "family": lead})
     assert page.status_code == 200
     notice = soup(page).select_one(".notice.no-pass")
     assert notice is not None and not notice.select("ul.input-changes li")
     api = client.get("/api/v1/select", params={"load_n": 0, "speed_mm_s": 50, "length_mm": 500,
-                     "moving_mass_kg": 800, "orientation": "vertical"}).json()  # fmt: skip
+                     "moving_mass_kg": 800, "orientation": "vertical",
+                     "family": lead.split(",")}).json()  # fmt: skip
     assert api["summary"]["input_change"] == {}
     # Tr40x7 bronze, nearest, is held to MISUMI's thrust and its sliding speed: neither a
     # load nor a speed within the accepted inputs admits it; each named by its form label.
@@ -567,9 +586,13 @@ def test_an_infeasible_change_is_not_offered_but_said(client: TestClient) -> Non
     ],
     ids=["metric", "inch"],
 )
-def test_every_apply_link_is_accepted(client: TestClient, params: dict[str, str]) -> None:
+def test_every_apply_link_is_accepted(
+    client: TestClient, lead: str, params: dict[str, str]
+) -> None:
     """Each proposed change lies within its field's bounds: every Apply link renders a page
-    without an input error, and carries the proposal as shown (3 figures), in any unit."""
+    without an input error, and carries the proposal as shown (3 figures), in any unit
+    (the leadscrews: a ball screw passes this axis)."""
+    params = {**params, "family": lead}
     page = soup(client.get("/", params=params))
     assert page.select("a.apply")
     for link in page.select("a.apply, a.apply-all"):

@@ -4,7 +4,9 @@ checks with formulas and provenance, the charts, the date and the catalog versio
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
+from app.catalog import Catalog
 from app.core.checks import BY_NAME
+from tests.leadscrews import leadscrew_families
 
 AXIS = {"load": "100", "speed": "50", "length": "500"}
 
@@ -28,10 +30,13 @@ def test_report_of_the_top_screw_without_an_id(client: TestClient) -> None:
 
 
 def test_report_of_a_chosen_screw_shows_its_checks_provenance_and_charts(
-    client: TestClient,
+    client: TestClient, catalog: Catalog
 ) -> None:
-    top = soup(client, AXIS).select("table.runners-up tbody th a")[0].text
-    page = soup(client, {**AXIS, "id": top})
+    # the leadscrews (ball screws rank first here): a leadscrew's thread values are the
+    # ISO standard's, and its run charts PV (a ball nut has no PV)
+    lead = {**AXIS, "family": ",".join(leadscrew_families(catalog))}
+    top = soup(client, lead).select("table.runners-up tbody th a")[0].text
+    page = soup(client, {**lead, "id": top})
     assert page.select_one("#report-heading .cid").text == top
     checks = page.select("ol.checks li.check")
     assert checks and all(c.select_one("code") for c in checks)  # each with its formula
@@ -41,7 +46,9 @@ def test_report_of_a_chosen_screw_shows_its_checks_provenance_and_charts(
         dt.text: dd.text
         for dt, dd in zip(page.select("dl.inputs dt"), page.select("dl.inputs dd"), strict=True)
     }
+    families = rows.pop("Families")
     assert rows == {"Axial load": "100 N", "Linear speed": "50 mm/s", "Screw length": "500 mm"}
+    assert families.replace(" ", "").split(",") == lead["family"].split(",")
     assert {s["id"] for s in page.select("script[data-chart]")} >= {
         "fig-critical_speed",
         "fig-pv",
