@@ -65,15 +65,21 @@ def kind_families(catalog: Catalog, kind: Kind, asked: list[str] | None) -> list
     return [f for f in found if not asked or f in asked]
 
 
+def _asked(inputs: ApplicationIn) -> list[str] | None:
+    """The query's own families (the ``family`` input), None for every family."""
+    asked: list[str] | None = getattr(inputs, "family", None)
+    return asked
+
+
 def kinds_offered(inputs: ApplicationIn, catalog: Catalog) -> bool:
     """The catalog offers both kinds within the query's families."""
-    return all(kind_families(catalog, k, inputs.family) for k in KINDS)
+    return all(kind_families(catalog, k, _asked(inputs)) for k in KINDS)
 
 
 def _side(
     inputs: ApplicationIn, catalog: Catalog, kind: Kind, units: Mapping[str, str]
 ) -> VersusSideOut:
-    families = kind_families(catalog, kind, inputs.family)
+    families = kind_families(catalog, kind, _asked(inputs))
     notes = list(NOTES[kind])
     if not families:
         return VersusSideOut(
@@ -82,7 +88,8 @@ def _side(
     # the first of each list is all the view reads: the ranking does not depend on the limit
     one_kind = inputs.model_copy(update={"family": families, "limit": 1})
     selected = run_selection(one_kind, catalog, units)
-    best: CandidateOut | None = (selected.candidates or selected.rejected or [None])[0]
+    found = selected.candidates or selected.rejected
+    best: CandidateOut | None = found[0] if found else None
     passed = bool(selected.candidates)
     excluded = [] if passed or best is None else _excluding(best)
     return VersusSideOut.model_construct(
