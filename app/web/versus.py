@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display
+from app.core.phrase import figures
 from app.web.compare import Row, best_columns, compare_rows
 
 
@@ -19,6 +20,19 @@ def _holds(c: CandidateOut) -> str:
     if c.holds_power_off:
         return f"yes: by the {c.holds_by}" if c.holds_by else "yes"
     return "no: a brake is needed"
+
+
+def _life(c: CandidateOut) -> str:
+    """The life in years of the duty: a leadscrew's wear band, a ball nut's L10 (its
+    check's capacity, given a required life); the travel when no duty gives years."""
+    l10 = next((k.limit for k in c.checks if k.name == "ball_life"), None)
+    if l10 is not None:
+        return f"{figures(l10)} years (L10)"
+    if c.life is None:
+        return "—"
+    if c.life.years:
+        return f"{'–'.join(figures(v) for v in c.life.years)} years ({c.life.model})"
+    return f"{'–'.join(figures(v) for v in c.life.travel_km)} km travelled ({c.life.model})"
 
 
 def _low(band: list[float]) -> float | None:
@@ -34,6 +48,7 @@ def kind_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
     length = d.label("length")
     return [
         Row("holds_power_off", "Holds with the power off", "", holds, frozenset(), None),
+        Row("life", "Life (wear or L10)", "", tuple(_life(c) for c in cs), frozenset(), None),
         Row(
             "accuracy.lead_error_mm",
             "Lead error over the stroke",
