@@ -116,3 +116,18 @@ def test_the_results_page_links_to_it_when_both_kinds_are_offered(client: TestCl
 
 def test_bad_input_is_a_422_page(client: TestClient) -> None:
     assert client.get("/versus", params={**LIGHT, "load": "-1"}).status_code == 422
+
+
+def test_a_vertical_axis_says_which_kind_holds_with_the_power_off(client: TestClient) -> None:
+    """A 5 kg vertical load without a brake: the leadscrew's thread self-locks, a ball
+    screw back-drives (its efficiency too high to lock) and needs the brake its fix names."""
+    query = {"load": "50", "moving_mass_kg": "5", "speed": "50", "length": "400"}
+    page = _page(client, {**query, "orientation": "vertical"})
+    api_query = {"load_n": "50", "moving_mass_kg": "5", "speed_mm_s": "50", "length_mm": "400"}
+    lead, ball = client.get(
+        "/api/v1/versus", params={**api_query, "orientation": "vertical"}
+    ).json()["sides"]
+    assert (lead["candidate"]["holds_by"], lead["candidate"]["holds_power_off"]) == ("thread", True)
+    assert ball["candidate"]["holds_power_off"] is False
+    assert _rows(page)["holds_power_off"] == ["yes: the thread self-locks", "no: a brake is needed"]
+    assert "brake" in page.select(".versus-status li")[1].text
