@@ -32,6 +32,7 @@ from app.contract.outputs import (
     SelectSummaryOut,
     SeriesListOut,
     SeriesOut,
+    VersusOut,
 )
 from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
 from app.contract.schemas import ApplicationIn
@@ -50,6 +51,7 @@ from app.report.service import (
     run_selection,
     run_selection_summary,
 )
+from app.report.versus import run_versus
 from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
@@ -211,6 +213,31 @@ async def compare_get(request: Request, catalog: CatalogDep) -> Response:
 
 def _compare(inputs: ApplicationIn, ids: list[str], catalog: CatalogDep) -> Response:
     return ModelJSON(run_compare(inputs, ids, catalog))
+
+
+@router.get(
+    "/versus",
+    response_model=VersusOut,
+    openapi_extra={"parameters": query_parameters(ApplicationIn)},
+    summary="Leadscrew against ball screw for an axis",
+    description=_get_doc(
+        "The selection run once per kind of screw (the catalog's leadscrew families, then "
+        "its ball-screw families, within `family` when given): each kind's first-ranked "
+        "passing screw in full (as `detail=full` gives it), else its nearest rejected one "
+        "with `excluded_by`, the limits it fails; `candidate` is null when the catalog "
+        "offers no screw of that kind for the query. Each side carries cited notes on its "
+        "kind's noise and play; `price_note` says why no price is shown.",
+        "versus",
+    ),
+)
+async def versus_get(request: Request, catalog: CatalogDep) -> Response:
+    inputs = parse_query(ApplicationIn, request.query_params)
+    charge(request.scope, 2 * full_form_units(1))
+    return await computed(_versus, inputs, catalog)
+
+
+def _versus(inputs: ApplicationIn, catalog: CatalogDep) -> Response:
+    return ModelJSON(run_versus(inputs, catalog))
 
 
 @router.get("/nut-materials", response_model=NutMaterialsOut, summary="List the nut materials")

@@ -272,3 +272,38 @@ class ErrorDetail(BaseModel):
 class ErrorOut(BaseModel):
     error: str
     detail: list[ErrorDetail]
+
+
+class CitedNoteOut(BaseModel):
+    """A sentence about a kind of screw and the page it rests on."""
+
+    topic: Literal["noise", "backlash"]
+    text: str
+    source: str = Field(description="The cited page: maker or publication, title, URL.")
+
+
+class VersusSideOut(BaseModel):
+    """One kind of screw's best candidate for the application, or its nearest rejected."""
+
+    screw_type: Literal["lead", "ball"]
+    passed: bool = Field(description="A screw of this kind passes every check.")
+    candidate: CandidateOut | None = Field(
+        description="The kind's first-ranked passing screw, else its nearest rejected one "
+        "(lowest worst utilization); null when the catalog offers none of this kind for "
+        "the query's families."
+    )
+    excluded_by: list[str] = Field(
+        description="When none passes: the checks the shown screw fails, by label."
+    )
+    notes: list[CitedNoteOut] = Field(description="Cited notes on this kind's noise and play.")
+
+
+class VersusOut(BaseModel):
+    """The best leadscrew against the best ball screw for one application."""
+
+    inputs: ApplicationIn
+    sides: list[VersusSideOut] = Field(description="The leadscrew side, then the ball screw's.")
+    price_note: str = Field(description="Why no price band is shown.")
+    catalog_version: str
+    share_url: str = Field(description="The versus page of the same inputs.")
+    api_url: str = Field(description=API_URL)

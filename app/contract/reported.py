@@ -144,6 +144,16 @@ def order_basis(screw: Any, w: Writer) -> str:
     return ordering.ordering_basis(screw)
 
 
+def peak_power(record: Any, w: Writer) -> float:
+    """The largest mechanical power at the motor shaft [W], driving or braking: with a
+    move, |T ω| of each segment at its top speed (a ramp's torque reaches that speed at
+    its end); without one, the accelerating torque at the screw's speed."""
+    segments = record.segments
+    if segments:
+        return max(abs(energy.shaft_power(s.torque_nm, s.rpm)) for s in segments)
+    return abs(energy.shaft_power(record.torque.total_nm, record.rpm))
+
+
 REPORTED: tuple[Reported, ...] = (
     Reported(
         "id",
@@ -418,6 +428,23 @@ REPORTED: tuple[Reported, ...] = (
         compare=True,
         formula=Formula(efficiency.forward_efficiency),
         views=("summary",),
+    ),
+    Reported(
+        "peak_power_w",
+        "Peak power",
+        "The largest mechanical power at the motor shaft, torque × angular speed, driving "
+        "or braking: with a move, each segment's torque at its top speed; without one, "
+        "the accelerating torque at the screw's speed. Before the torque safety factor.",
+        quantity="power",
+        better="lower",
+        csv=True,
+        compare=True,
+        formula=Formula(
+            energy.shaft_power,
+            "P = max |T_segment 2 pi n_segment / 60| over the cycle (T 2 pi n / 60 without a move)",
+            "power of a torque at a shaft's angular speed",
+        ),
+        source=From(via=peak_power),
     ),
     Reported("efficiency_square_thread", formula=Formula(efficiency.square_thread_efficiency)),
     Reported("backdrive_efficiency", formula=Formula(efficiency.backdrive_efficiency)),

@@ -52,6 +52,7 @@ from app.report.service import (
     run_page_selection,
     run_selection,
 )
+from app.report.versus import KIND_NAMES, kinds_offered, run_versus, versus_url
 from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.errors import AppError
@@ -65,6 +66,7 @@ from app.web.export import results_csv
 from app.web.figures import chart_candidates, result_figures
 from app.web.screw_form import catalog_screw_query
 from app.web.templating import templates
+from app.web.versus import versus_rows
 
 router = APIRouter(include_in_schema=False)
 #: page fields that must be filled in before a selection runs.
@@ -211,6 +213,7 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     context["query"] = share_query(inputs, units)
     context["share_url"] = "/?" + context["query"]
     context["compare_fields"] = parse_qsl(context["query"])
+    context["versus_url"] = versus_url(inputs, units) if kinds_offered(inputs, catalog) else None
     context["figures"] = result_figures(result, units, catalog)
     context["charting_passed"] = chart_candidates(result)[1]
     context["rejected_groups"] = rejected_groups(rejected)
@@ -372,6 +375,32 @@ def _compare_page(request: Request, catalog: Catalog) -> Response:
         share_url=compare_url(inputs, ids, units),
     )
     return templates.TemplateResponse(request, "compare.html", context)
+
+
+@router.api_route("/versus", methods=["GET", "HEAD"], response_class=HTMLResponse)
+async def versus(request: Request, catalog: CatalogDep) -> Response:
+    """The best leadscrew against the best ball screw for the link's inputs."""
+    return await computed(_versus_page, request, catalog)
+
+
+def _versus_page(request: Request, catalog: Catalog) -> Response:
+    inputs, units = link_inputs(request.query_params, catalog)
+    out = run_versus(inputs, catalog, units)
+    shown = [s for s in out.sides if s.candidate is not None]
+    candidates = [s.candidate for s in shown if s.candidate is not None]
+    d = Display(units)
+    context: dict[str, Any] = {
+        "d": d,
+        "query": share_query(inputs, units),
+        "out": out,
+        "shown": shown,
+        "kind_names": KIND_NAMES,
+        "rows": versus_rows(candidates, d),
+        "compare_url": compare_url(inputs, [c.id for c in candidates], units)
+        if len(candidates) == 2
+        else None,
+    }
+    return templates.TemplateResponse(request, "versus.html", context)
 
 
 @router.get("/export.csv")

@@ -84,7 +84,7 @@ def test_every_get_example_link_is_answered(app: FastAPI, client: TestClient) ->
         for link in re.findall(r"\]\((/api/v1/[^)\s]+)\)", op.get("description", ""))
     ]
     assert {p for p, _ in links} == {
-        "/api/v1/select", "/api/v1/pairs", "/api/v1/compare", "/api/v1/evaluate",
+        "/api/v1/select", "/api/v1/pairs", "/api/v1/compare", "/api/v1/evaluate", "/api/v1/versus",
     }  # fmt: skip
     for path, link in links:
         assert link.startswith(path + "?")

@@ -170,6 +170,10 @@ STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
     "/custom": {"results": visit(f"/custom?{SCREW}", ".custom-verdict"), "error": custom_error},
     "/docs": {"opened": docs_opened},
     "/machine": {"results": visit(f"/machine?{MACHINE}", "table.machine")},
+    "/versus": {
+        "both": visit(f"/versus?{AXIS}", "table.versus"),
+        "one-kind-fails": visit("/versus?load=3000&speed=400&length=500", "table.versus"),
+    },
 }
 #: answers that are not a route of their own
 ERRORS = {"error-404": visit("/no-such-page", "main")}

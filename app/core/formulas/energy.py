@@ -82,3 +82,17 @@ def stepper_copper_loss(current_rms_a: float, resistance_ohm: float, time_s: flo
     11.2
     """
     return 2.0 * current_rms_a**2 * resistance_ohm * time_s
+
+
+@formula("P = T omega = T 2 pi n / 60", "power of a torque at a shaft's angular speed")
+def shaft_power(torque_nm: float, speed_rpm: float) -> float:
+    """Mechanical power at the motor shaft [W]: torque [N m] times the angular speed
+    omega = 2 pi n / 60 [rad/s], n the speed [rpm]; below 0 when the motor brakes. Valid
+    for any finite torque and speed. Floats or arrays.
+
+    1 N m at 60 rpm (one turn a second) is 2 pi W:
+
+    >>> round(shaft_power(1.0, 60.0), 4)
+    6.2832
+    """
+    return torque_nm * 2.0 * math.pi * speed_rpm / 60.0

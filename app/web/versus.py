@@ -1,0 +1,73 @@
+"""The leadscrew-against-ball-screw view: the compare rows of the two kinds' best
+screws (``app.web.compare``) and the rows that only matter between kinds, each value
+read from the candidates' output models (the API's numbers), shown in the display units.
+"""
+
+from collections.abc import Sequence
+
+from app.contract.schemas import CandidateOut
+from app.contract.units import Display
+from app.core.phrase import figures
+from app.web.compare import Row, best_columns, compare_rows
+
+
+def _holds(c: CandidateOut) -> str:
+    """Whether the load stays put with the power off, and by what."""
+    if c.holds_power_off is None:
+        return "nothing to hold"
+    if c.holds_by == "thread":
+        return "yes: the thread self-locks"
+    if c.holds_power_off:
+        return f"yes: by the {c.holds_by}" if c.holds_by else "yes"
+    return "no: a brake is needed"
+
+
+def _life(c: CandidateOut) -> str:
+    """The life in years of the duty: a leadscrew's wear band, a ball nut's L10 (its
+    check's capacity, given a required life); the travel when no duty gives years."""
+    l10 = next((k.limit for k in c.checks if k.name == "ball_life"), None)
+    if l10 is not None:
+        return f"{figures(l10)} years (L10)"
+    if c.life is None:
+        return "—"
+    if c.life.years:
+        return f"{'–'.join(figures(v) for v in c.life.years)} years ({c.life.model})"
+    return f"{'–'.join(figures(v) for v in c.life.travel_km)} km travelled ({c.life.model})"
+
+
+def _low(band: list[float]) -> float | None:
+    return band[0] if band else None
+
+
+def kind_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
+    """The rows that differ in kind between a leadscrew and a ball screw: holding with
+    the power off, the lead error and the nut's play (backlash)."""
+    holds = tuple(_holds(c) for c in cs)
+    errors = [c.accuracy.lead_error_mm for c in cs]
+    plays = [c.accuracy.backlash_mm for c in cs]
+    length = d.label("length")
+    return [
+        Row("holds_power_off", "Holds with the power off", "", holds, frozenset(), None),
+        Row("life", "Life (wear or L10)", "", tuple(_life(c) for c in cs), frozenset(), None),
+        Row(
+            "accuracy.lead_error_mm",
+            "Lead error over the stroke",
+            length,
+            tuple("—" if e is None else d.text(e, "length", 3) for e in errors),
+            best_columns(errors, "lower"),
+            "lower",
+        ),
+        Row(
+            "accuracy.backlash_mm",
+            "Backlash (axial play)",
+            length,
+            tuple("—" if not p else "–".join(d.text(v, "length", 3) for v in p) for p in plays),
+            best_columns([_low(p) for p in plays], "lower"),
+            "lower",
+        ),
+    ]
+
+
+def versus_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
+    """Every row of the view: the compare rows, then the rows between kinds."""
+    return [*compare_rows(cs, d), *kind_rows(cs, d)]
