@@ -190,7 +190,7 @@ REPORTED: tuple[Reported, ...] = (
         better="higher",
         csv=True,
         compare=True,
-        views=("row", "summary", "csv"),
+        views=("row", "csv"),
         source=From("screw.dynamic_load_n", "force"),
     ),
     Reported(
@@ -202,7 +202,7 @@ REPORTED: tuple[Reported, ...] = (
         better="higher",
         csv=True,
         compare=True,
-        views=("row", "summary", "csv"),
+        views=("row", "csv"),
         source=From("screw.static_load_n", "force"),
     ),
     Reported("anti_backlash", csv=True, type=bool),
@@ -225,7 +225,6 @@ REPORTED: tuple[Reported, ...] = (
         compare=True,
         source=From(("screw", "app.length_m"), via=order_line),
         type=str,
-        views=("summary",),
     ),
     Reported(
         "order_basis",
