@@ -220,12 +220,13 @@ class HoldingTorqueOut(BaseModel):
 
 class LifeOut(BaseModel):
     model: Annotated[
-        Literal["rated", "wear"],
+        Literal["rated", "wear", "l10"],
         From("model"),
         Field(
             description="rated: the seed's rated travel; wear: the nut's wear by Archard's "
             "law (an ISO or other nut the seed rates none), its band the wear rate's "
-            "published 3:1 scatter"
+            "published 3:1 scatter; l10: a ball nut's L10 fatigue life (ISO 3408-5) at the "
+            "cycle's cubic mean load, one value"
         ),
     ]
     travel_million_cm: Annotated[

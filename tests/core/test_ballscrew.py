@@ -162,3 +162,25 @@ def test_when_neither_kind_can_it_names_the_limit_and_another_drive(catalog: Cat
     assert first.startswith("Neither a leadscrew nor a ball screw in the catalog can do this")
     assert "Critical speed" in first
     assert "a belt drive, a rack and pinion or a linear motor" in first
+
+
+def test_a_ball_nuts_life_is_its_l10_in_travel_and_years(catalog: Catalog) -> None:
+    """R20-10K3-FSCDIN (HIWIN Table 4.4: Ca 10,000 N) under 2,000 N against the motion
+    both ways, 600 mm strokes, 1,000 cycles a day: L10 = (10000 / (1.2 x 2000))^3 x 10^6
+    = 72.338e6 revolutions x 10 mm = 723.38 km; a cycle is 1.2 m of travel, so
+    723,380 / (1.2 x 1000 x 365) = 1.6515 years: the life section and the ball_life
+    check give the same."""
+    app = Application(
+        load_n=2000.0, speed_m_s=0.5, length_m=0.8, stroke_m=0.6, cycles_per_day=1000.0,
+        required_life_years=5.0,
+    )  # fmt: skip
+    c = evaluate(app, catalog.by_id["R20-10K3-FSCDIN"])
+    life = c.life
+    assert life is not None and life.model == "l10"
+    travel = (10_000.0 / (1.2 * 2000.0)) ** 3 * 1e6 * 0.010
+    assert life.travel_m == pytest.approx((travel, travel), rel=1e-12)
+    assert life.years_min == pytest.approx(travel / (1.2 * 1000.0 * 365.0), rel=1e-12)
+    (check,) = [k for k in c.checks if k.name == "ball_life"]
+    assert check.limit == pytest.approx(life.years_min, rel=1e-12)  # the life it offers
+    assert evaluate(replace(app, stroke_m=None, cycles_per_day=None, required_life_years=None),
+                    catalog.by_id["R20-10K3-FSCDIN"]).life is None  # fmt: skip

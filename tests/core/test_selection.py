@@ -190,7 +190,10 @@ def test_nothing_passes_and_the_summary_names_the_nearest_fix(catalog: Catalog) 
     sel = select(app, catalog.index)
     assert sel.passed == 0 and not sel.candidates
     assert sel.summary.best_rejected_id == sel.rejected[0].screw.id
-    assert render(sel.summary.message).startswith("No candidate passes.")
+    # both kinds are in the catalog and neither passes: the summary says so first (issue 32)
+    assert render(sel.summary.message).startswith(
+        "Neither a leadscrew nor a ball screw in the catalog can do this: Critical speed"
+    )
     worst = max(sel.failed_by_check, key=lambda k: sel.failed_by_check[k])
     assert sel.summary.most_excluding_check == worst
 
