@@ -23,8 +23,8 @@ def test_form_renders(client: TestClient) -> None:
 
 def test_results_show_load_torque(client: TestClient) -> None:
     """ZBX8000, 10 mm lead, 100 N: T = F L / (2 pi eta) with Shigley's Acme efficiency."""
-    api = client.get("/api/v1/evaluate", params={})  # GET is not an evaluate route
-    assert api.status_code == 405
+    api = client.get("/api/v1/evaluate", params={})  # a GET evaluate needs its query
+    assert api.status_code == 422
     body = client.post(
         "/api/v1/evaluate",
         json={

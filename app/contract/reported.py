@@ -760,11 +760,13 @@ def show(row: Reported, value: Any, d: Display) -> str:
     ('3.14×', '—')
     >>> show(BY_KEY["life.travel_million_cm"], [1.5, 4.5], d)
     '1.5–4.5'
+    >>> show(BY_KEY["life.years"], [21.8, 21.8], d)  # one value (a ball nut's L10)
+    '21.8'
     """
     if value is None or (isinstance(value, float) and not math.isfinite(value)):
         return "—"
     if isinstance(value, list):
-        return "–".join(figures(v) for v in value)
+        return "–".join(dict.fromkeys(figures(v) for v in value))
     if row.cell == "whole":
         return f"{value:.0f}"
     if row.cell == "percent":

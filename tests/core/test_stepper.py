@@ -317,13 +317,3 @@ def test_the_drawn_microstepping_curve_never_promises_more_than_the_model(
     assert drawn <= stepper.microstep_pull_out_torque(rpm, *args) * (1 + 1e-12)
     assert all(t > 0.0 for t in torques)
     assert list(torques) == sorted(torques, reverse=True)
-
-
-def test_a_motors_curve_is_drawn_once_and_read_by_every_query_naming_it() -> None:
-    """The curve depends on the motor's values alone: a second query naming the same
-    motor reads the curve already drawn (the same object), equal to one drawn afresh.
-    The values: the QSH4218-47-28-040 on 24 V of ``back_emf_half_supply_rpm``."""
-    args = (24.0, 2.8, 0.5, 0.0006, 1.8, 0.40)
-    first = stepper.microstep_pull_out_curve(args, MAX_STEPPER_RPM)
-    assert stepper.microstep_pull_out_curve(args, MAX_STEPPER_RPM) is first
-    assert stepper.microstep_pull_out_curve.__wrapped__(args, MAX_STEPPER_RPM) == first

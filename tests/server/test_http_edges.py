@@ -49,7 +49,7 @@ def test_head_answers_every_get_route_with_its_headers_and_no_body(
 
 
 def test_head_keeps_the_error_of_a_route_without_get(client: TestClient) -> None:
-    response = client.head("/api/v1/evaluate")
+    response = client.head("/api/v1/machine")  # POST only (evaluate has a GET now)
     assert response.status_code == 405 and response.content == b""
     assert response.headers["allow"] == "POST"
 
@@ -59,7 +59,8 @@ def test_head_keeps_the_error_of_a_route_without_get(client: TestClient) -> None
     [
         ("/api/v1/select", "GET, HEAD, POST"),
         ("/api/v1/pairs", "GET, HEAD, POST"),
-        ("/api/v1/evaluate", "POST"),
+        ("/api/v1/evaluate", "GET, HEAD, POST"),
+        ("/api/v1/machine", "POST"),
         ("/api/v1/health", "GET, HEAD"),
     ],
 )

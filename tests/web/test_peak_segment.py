@@ -46,7 +46,10 @@ def test_the_named_segment_carries_the_peak(client: TestClient, body: dict[str, 
 
 
 def test_a_hard_stop_peaks_while_decelerating_and_the_cell_says_so(client: TestClient) -> None:
-    found = _candidates(client, HARD_STOP)
+    # a preloaded ball nut's drag (R32-40K2-FSC: about 1.25 N m at the assumed 5 % preload)
+    # outweighs the braking thrust through its lead, so its peak is the accelerating one:
+    # the premise (the thrust decides) holds for the sliding nuts
+    found = [c for c in _candidates(client, HARD_STOP) if c["screw_type"] == "lead"]
     assert {c["torque"]["peak_segment"] for c in found} == {"decelerating out"}  # type: ignore[index]
     query = {
         "load": 10,

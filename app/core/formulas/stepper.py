@@ -66,7 +66,6 @@ References
 """
 
 import math
-from functools import lru_cache
 
 from app.core.formulas.declare import formula
 
@@ -325,9 +324,6 @@ def back_emf_half_supply_rpm(supply_v: float, current_a: float, holding_torque_n
     return SECONDS_PER_MINUTE * supply_v / (2.0 * math.pi * 2.0 * k_e)
 
 
-#: A motor's curve depends on its values alone: drawn once per motor (and per set of
-#: datasheet values a user gives), not on every query that names it.
-@lru_cache(maxsize=256)
 def microstep_pull_out_curve(
     args: tuple[float, float, float, float, float, float],
     max_rpm: float,
