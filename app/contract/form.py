@@ -230,9 +230,10 @@ def entered_units(params: Mapping[str, str], units: dict[str, str]) -> dict[str,
 def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str]:
     """Page fields whose numbers change when going from ``entered`` to ``units``.
 
+    >>> same = {"length_unit": "mm", "accel_unit": "mm_s2"}
     >>> converted_fields(
-    ...     {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m", "accel_unit": "mm_s2"},
-    ...     {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "oz_in", "accel_unit": "mm_s2"})
+    ...     {"force_unit": "N", "torque_unit": "N_m", **same},
+    ...     {"force_unit": "lbf", "torque_unit": "oz_in", **same})
     ... # doctest: +NORMALIZE_WHITESPACE
     ['load', 'moving_mass_kg', 'support_static', 'support_dynamic', 'brake_torque',
      'detent_torque', 'max_torque', 'motor_rms_torque', 'motor_inertia',
