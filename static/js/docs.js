@@ -12,10 +12,12 @@
 //   operations' tags (h3) follow the title (h1) with no h2: the title block becomes a
 //   named region and an "Operations" heading (visually hidden) leads the operations.
 // - the controls Swagger UI draws for a parameter (an enum's select, an array's or
-//   object's text box) and the request body's text box carry no label (WCAG 1.3.1, 4.1.2;
-//   axe: label, select-name): each is named after its parameter ("limit (query)") or
-//   "Request body" as it is drawn, and each operation's responses table (a region) after
-//   its operation, so that no two regions share a name (axe: landmark-unique).
+//   object's text box), the request body's text box and the select of named examples
+//   (drawn when an operation has more than one) carry no label (WCAG 1.3.1, 4.1.2;
+//   axe: label, select-name): each is named after its parameter ("limit (query)"),
+//   "Request body" or "Examples, request body" ("Examples, response 200") as it is
+//   drawn, and each operation's responses table (a region) after its operation, so
+//   that no two regions share a name (axe: landmark-unique).
 // The code samples use the "idea" highlighting theme: the default "agate" draws numbers
 // in #d36363 on #333 (3.45:1, under the 4.5:1 of WCAG 1.4.3).
 document.addEventListener("DOMContentLoaded", function () {
@@ -55,7 +57,13 @@ document.addEventListener("DOMContentLoaded", function () {
         return;
       }
       var row = control.closest("tr[data-param-name]");
-      if (row) {
+      if (control.classList.contains("examples-select-element")) {
+        var response = control.closest("tr.response[data-code]");
+        control.setAttribute(
+          "aria-label",
+          response ? "Examples, response " + response.dataset.code : "Examples, request body"
+        );
+      } else if (row) {
         control.setAttribute("aria-label", row.dataset.paramName + " (" + row.dataset.paramIn + ")");
       } else if (control.closest(".body-param")) {
         control.setAttribute("aria-label", "Request body");
