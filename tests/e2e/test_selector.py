@@ -10,8 +10,15 @@ import urllib.request
 from pathlib import Path
 from typing import Any
 
+from app.catalog.loader import load_catalog
+from tests.leadscrews import leadscrew_families
+
 AXIS = "load=100&lead=10&speed=50&length=500"
 OZ_IN = 0.0070615518142260435  # N m: 4.4482216152605 N x 0.0254 m / 16 (NIST SP 811)
+#: the leadscrew families, for tests of the PV chart: ball screws rank beside leadscrews by
+#: default and have no PV chart.
+LEADSCREWS = leadscrew_families(load_catalog())
+LEAD_AXIS = AXIS + "&family=" + ",".join(LEADSCREWS)
 PNG_BUTTON = ".modebar-btn[data-title='Download plot as a PNG']"
 
 
@@ -19,8 +26,9 @@ def ids(page: Any) -> list[str]:
     return list(page.eval_on_selector_all("tbody.candidate", "rows => rows.map(r => r.dataset.id)"))
 
 
-def api_select(live_server: str) -> dict[str, Any]:
+def api_select(live_server: str, families: tuple[str, ...] = ()) -> dict[str, Any]:
     query = "load_n=100&lead_mm=10&speed_mm_s=50&length_mm=500"
+    query += "".join(f"&family={family}" for family in families)
     with urllib.request.urlopen(f"{live_server}/api/v1/select?detail=full&{query}") as response:
         body: dict[str, Any] = json.load(response)
     return body
@@ -91,7 +99,7 @@ def test_advanced_options_update_results(
 def test_switching_units_converts_form_table_and_charts(
     page: Any, live_server: str, console_errors: list[str]
 ) -> None:
-    open_results(page, live_server)
+    open_results(page, live_server, LEAD_AXIS)
     before = ids(page)
     torque_nm = float(page.inner_text("tbody.candidate .torque-total"))
     page.focus("#f-force_unit")
@@ -115,7 +123,8 @@ def test_switching_units_converts_form_table_and_charts(
     )
     assert page.input_value("#f-speed") == "1.969"
     assert "[in/s]" in page.text_content("#chart-pv .g-xtitle")
-    assert "[lbf]" in page.text_content("#chart-pv .g-ytitle")
+    # the PV chart plots contact pressure (force per area) against sliding speed
+    assert "[psi]" in page.text_content("#chart-pv .g-ytitle")
     assert ids(page) == before
     page.reload()
     page.wait_for_selector("#results table.candidates tbody.candidate")
@@ -153,14 +162,12 @@ def test_invalid_input_shows_inline_message_and_keeps_typing(
 def test_each_chart_renders_its_traces_with_png_export(
     page: Any, live_server: str, console_errors: list[str]
 ) -> None:
-    api = api_select(live_server)
+    api = api_select(live_server, LEADSCREWS)
     top = api["candidates"][:5]
-    expected = {
-        "critical_speed": len(top) + 2,
-        "pv": sum(c["pv"]["max_load_n"] is not None for c in top) + 1,
-        "torque": 3,
-    }
-    open_results(page, live_server)
+    # the PV chart: per nut material's limit curve a line and its operating crosses
+    curves = {(c["nut_material"], c["pv"]["limit_mpa_m_s"]) for c in top}
+    expected = {"critical_speed": len(top) + 2, "pv": 2 * len(curves), "torque": 3}
+    open_results(page, live_server, LEAD_AXIS)
     for chart, count in expected.items():
         selector = f"#chart-{chart}"
         page.wait_for_selector(f"{selector} .main-svg")
