@@ -139,7 +139,7 @@ def test_submitting_shows_every_error(
     type_and_wait(page, "load", "5")
     assert page.evaluate(SHOWN) == {}
     with page.expect_response(lambda r: "load=5" in r.url):
-        page.click("#selector button[type=submit]")
+        page.click("#selector .actions button[type=submit]")
     page.wait_for_selector("#results .notice.invalid")
     assert page.evaluate(SHOWN) == {"e-speed": "Required.", "e-length": "Required."}
     for name in ("speed", "length"):
@@ -156,7 +156,7 @@ def test_without_javascript_a_submitted_form_shows_every_error(
     page = context.new_page()
     page.goto(live_server + "/")
     page.fill("#f-load", "abc")
-    page.click("#selector button[type=submit]")
+    page.click("#selector .actions button[type=submit]")
     page.wait_for_selector("#results .notice.invalid")
     assert page.inner_text("#e-load") == "Enter a number."
     assert page.inner_text("#e-speed") == "Required."

@@ -256,13 +256,13 @@ def test_form_works_without_javascript(browser: Any, live_server: str) -> None:
     page.fill("#f-load", "100")
     page.fill("#f-speed", "50")
     page.fill("#f-length", "500")
-    page.click("#selector button[type=submit]")
+    page.click("#selector .actions button[type=submit]")
     page.wait_for_selector("#results table.candidates tbody.candidate")
     # the form's order: the load, its direction, the moving mass and the orientation first
     up_front = r"load=100&load_direction=auto&moving_mass_kg=&orientation=horizontal&lead="
     assert re.search(up_front + r"&speed=50&length=500", page.url)
     page.select_option("#f-force_unit", "lbf")
-    page.click("#selector button[type=submit]")
+    page.click("#selector .actions button[type=submit]")
     page.wait_for_function("() => document.querySelector('#f-load').value === '22.48'")
     context.close()
 

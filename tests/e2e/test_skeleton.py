@@ -14,7 +14,7 @@ def test_submit_swaps_results_and_pushes_url(page: Any, live_server: str) -> Non
     page.fill("#f-lead", "10")
     page.fill("#f-speed", "50")
     page.fill("#f-length", "500")
-    page.click("#selector button[type=submit]")
+    page.click("#selector .actions button[type=submit]")
     page.wait_for_selector("#results table.candidates tbody.candidate")
     first = page.locator("#results table.candidates tbody.candidate").first
     assert first.get_attribute("data-id") == top  # the page ranks as the API does
