@@ -17,7 +17,9 @@ API_AXIS = "load_n=50&speed_mm_s=200&length_mm=500"
 
 
 def _first(live_server: str) -> dict[str, Any]:
-    with urllib.request.urlopen(f"{live_server}/api/v1/select?{API_AXIS}", timeout=30) as r:
+    """The top candidate of the full select (the compact one leaves the line out)."""
+    url = f"{live_server}/api/v1/select?{API_AXIS}&detail=full"
+    with urllib.request.urlopen(url, timeout=30) as r:
         candidate: dict[str, Any] = json.load(r)["candidates"][0]
     return candidate
 
