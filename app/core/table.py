@@ -10,6 +10,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from operator import attrgetter
 from types import MappingProxyType
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -116,6 +117,44 @@ def _largest(values: Array) -> float:
     """The largest given value (NaN: not given); unbounded when none is."""
     given = values[~np.isnan(values)]
     return float(given.max()) if given.size else math.inf
+
+
+#: Columns copied from each screw's catalog value as they are: column -> ScrewSpec field.
+COPIED = {
+    "youngs_modulus_pa": "youngs_modulus_pa",
+    "density_kg_m3": "density_kg_m3",
+    "screw_expansion_per_k": "screw_expansion_per_k",
+    "inertia_kg_m2_per_m": "inertia_kg_m2_per_m",
+    "drag_max_nm": "drag_torque_max_nm",
+    "pv_limit_pa_m_s": "pv_limit_pa_m_s",
+    "design_load_n": "design_load_n",
+    "max_length_m": "max_length_m",
+    "life_min_m": "life_min_m",
+    "life_max_m": "life_max_m",
+    "lead_accuracy": "lead_accuracy_m_per_m",
+    "backlash_max_m": "backlash_max_m",
+    "temperature_min_c": "temperature_min_c",
+    "temperature_max_c": "temperature_max_c",
+    "yield_strength_pa": "yield_strength_pa",
+    "thermal_conductivity_w_m_k": "thermal_conductivity_w_m_k",
+    "dynamic_load_n": "dynamic_load_n",
+    "static_load_n": "static_load_n",
+    "dn_limit_mm_rpm": "dn_limit_mm_rpm",
+}
+
+
+def _thread_efficiencies(tan_l: Array, mu_s: Array, mu_d: Array, cos_a: Array) -> dict[str, Any]:
+    """The thread's efficiencies driving and back-driven, running and from rest, and
+    whether it self-locks (``formulas.efficiency``, ``formulas.profile``)."""
+    return {
+        "efficiency": efficiency.forward_efficiency(tan_l, mu_d, cos_a),
+        "efficiency_static": efficiency.forward_efficiency(tan_l, mu_s, cos_a),
+        "efficiency_square_thread": efficiency.square_thread_efficiency(tan_l, mu_d),
+        "backdrive_efficiency": efficiency.backdrive_efficiency(tan_l, mu_s, cos_a),
+        "self_locking": mu_s >= efficiency.self_locking_limit_friction(tan_l, cos_a),
+        "backdrive_efficiency_running": efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
+        "backdrive_efficiency_signed": profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
+    }
 
 
 @dataclass(frozen=True, slots=True)
@@ -233,29 +272,10 @@ class CandidateTable:
             thread_depth_m=geometry.thread_depth(od, rd),
             helix_travel_m=geometry.helix_travel(lead, d_p),
             lead_angle_rad=np.arctan(tan_l),
-            youngs_modulus_pa=col("youngs_modulus_pa"),
-            density_kg_m3=col("density_kg_m3"),
-            screw_expansion_per_k=col("screw_expansion_per_k"),
-            inertia_kg_m2_per_m=col("inertia_kg_m2_per_m"),
-            drag_max_nm=col("drag_torque_max_nm"),
-            pv_limit_pa_m_s=col("pv_limit_pa_m_s"),
-            design_load_n=col("design_load_n"),
-            max_length_m=col("max_length_m"),
-            life_min_m=col("life_min_m"),
-            life_max_m=col("life_max_m"),
-            lead_accuracy=col("lead_accuracy_m_per_m"),
-            backlash_max_m=col("backlash_max_m"),
             repeatability_m=np.nan_to_num(col("repeatability_m")),
-            temperature_min_c=col("temperature_min_c"),
-            temperature_max_c=col("temperature_max_c"),
             coated=flag("coated"),
             anti_backlash=flag("anti_backlash"),
             oil_compatible=flag("oil_compatible"),
-            efficiency=efficiency.forward_efficiency(tan_l, mu_d, cos_a),
-            efficiency_static=efficiency.forward_efficiency(tan_l, mu_s, cos_a),
-            efficiency_square_thread=efficiency.square_thread_efficiency(tan_l, mu_d),
-            backdrive_efficiency=efficiency.backdrive_efficiency(tan_l, mu_s, cos_a),
-            self_locking=mu_s >= efficiency.self_locking_limit_friction(tan_l, cos_a),
             # the seed's rule of thumb is a sliding thread's: a ball screw always back-drives
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
@@ -263,14 +283,9 @@ class CandidateTable:
             traverse_extrapolated=extrapolated,
             friction_static=mu_s,
             cos_half_angle=cos_a,
-            backdrive_efficiency_running=efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
-            backdrive_efficiency_signed=profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
-            yield_strength_pa=col("yield_strength_pa"),
-            thermal_conductivity_w_m_k=col("thermal_conductivity_w_m_k"),
             ball=ball,
-            dynamic_load_n=col("dynamic_load_n"),
-            static_load_n=col("static_load_n"),
-            dn_limit_mm_rpm=col("dn_limit_mm_rpm"),
+            **{name: col(attr) for name, attr in COPIED.items()},
+            **_thread_efficiencies(tan_l, mu_s, mu_d, cos_a),
             **_nut_columns(screws, lead),
         )
 
