@@ -270,7 +270,7 @@
   }
 
   function revealCopyButtons() {
-    document.querySelectorAll("button.copy-link[hidden], button.print-report[hidden]").forEach(function (button) {
+    document.querySelectorAll("button.copy-link[hidden], button.copy-order[hidden], button.print-report[hidden]").forEach(function (button) {
       button.hidden = false;
     });
   }
@@ -313,7 +313,27 @@
     );
   }
 
+  // an ordering line's button copies the line beside it
+  function onCopyLine(button) {
+    var row = button.closest(".order-row");
+    var line = row.querySelector(".order-line").textContent.trim();
+    var status = row.querySelector(".copy-order-status");
+    copyText(line).then(
+      function () {
+        status.textContent = "Line copied.";
+      },
+      function () {
+        status.textContent = "Select the line and copy it.";
+      }
+    );
+  }
+
   function onClick(event) {
+    var line = event.target.closest("button.copy-order");
+    if (line) {
+      onCopyLine(line);
+      return;
+    }
     if (event.target.closest("button.print-report")) {
       window.print();
       return;
