@@ -29,6 +29,7 @@ from app.core.formulas import critical_speed as cs
 from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
+from app.report import thk_example as thk
 
 #: largest relative difference from a published value the app may show.
 TOLERANCE = 0.01
@@ -262,5 +263,38 @@ EXAMPLES: tuple[Example, ...] = (
             lambda: float(weihong_cycle().motor_peak_nm[0]), WEIHONG_NOTE),
     Example("RMS torque of a cycle", WEIHONG, WEIHONG_INPUTS, 0.067, "N m",
             lambda: float(weihong_cycle().motor_rms_nm[0]), WEIHONG_NOTE),
+    Example("Axial load, acceleration (Fa1)", thk.SOURCE, thk.INPUTS, 550.0, "N",
+            lambda: thk.axial_load(1), thk.NOTE),
+    Example("Axial load, deceleration (Fa3)", thk.SOURCE, thk.INPUTS, -516.0, "N",
+            lambda: thk.axial_load(3), thk.NOTE),
+    Example("Axial load, back, acceleration (Fa4)", thk.SOURCE, thk.INPUTS, -550.0, "N",
+            lambda: thk.axial_load(4), thk.NOTE),
+    Example("Axial load, back, deceleration (Fa6)", thk.SOURCE, thk.INPUTS, 516.0, "N",
+            lambda: thk.axial_load(6), thk.NOTE),
+    Example("Peak axial load (Fa max)", thk.SOURCE, thk.INPUTS, 550.0, "N",
+            lambda: float(thk.cycle(mass_as_inertia=False).peak_force_n[0]), thk.NOTE),
+    Example("Cubic mean axial load (Fm1)", thk.SOURCE, thk.INPUTS, 225.0, "N",
+            thk.mean_load_one_direction, thk.MEAN_NOTE),
+    Example("Ball screw rated life L10", thk.SOURCE, "Ca 5.4 kN, Fm 225 N, f_w 1.5",
+            4.1e9, "rev", thk.life_revolutions, thk.MEAN_NOTE),
+    Example("Permissible buckling load", thk.SOURCE,
+            "d1 17.5 mm, 1100 mm, fixed–fixed, factor 0.5", 15500.0, "N",
+            thk.buckling_load_n),
+    Example("Permissible rotational speed", thk.SOURCE,
+            "d1 17.5 mm, 1100 mm, fixed–supported, factor 0.8", 2180.0, "rpm",
+            thk.critical_speed_rpm),
+    Example("Load inertia at the screw", thk.SOURCE, thk.INPUTS, 3.39e-3, "kg m²",
+            thk.load_inertia_kg_m2, thk.NOTE),
+    Example("Friction torque, uniform motion (T1)", thk.SOURCE, thk.INPUTS, 0.120, "N m",
+            lambda: thk.segment_torque_nm("constant"), thk.NOTE),
+    Example("Acceleration torque (T2)", thk.SOURCE, thk.INPUTS, 4.61, "N m",
+            lambda: thk.segment_torque_nm("accelerate") - thk.segment_torque_nm("constant"),
+            thk.NOTE),
+    Example("Torque during acceleration (Tk)", thk.SOURCE, thk.INPUTS, 4.73, "N m",
+            lambda: float(thk.cycle().motor_peak_nm[0]), thk.NOTE),
+    Example("Torque during deceleration (Tg)", thk.SOURCE, thk.INPUTS, -4.49, "N m",
+            lambda: thk.segment_torque_nm("decelerate"), thk.NOTE),
+    Example("RMS torque of a cycle (Trms)", thk.SOURCE, thk.INPUTS, 1.305, "N m",
+            lambda: float(thk.cycle().motor_rms_nm[0]), thk.NOTE),
 )
 # fmt: on
