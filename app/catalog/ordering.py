@@ -18,7 +18,11 @@ Rules, each cited where it is used:
   edition whose contents list it so; sec. 2.2.4, p. 95, of HIWIN GmbH's combined
   catalogue): [starts][R/L][nominal d]-[lead][K/T/B recirculation][circuits]-[nut
   type]-[thread length]-[total length]-[lead deviation per 300 mm], e.g.
-  2R40-20K4-FSCDIN-800-1000-0,052 (starts "1" may be left out). The catalog's nut id is
+  2R40-20K4-FSCDIN-800-1000-0,052 (starts "1" may be left out); the shaft alone
+  1R40-10-800-1000-0,052, the nut alone R40-10K3-FSCDIN (the page as published:
+  https://vettevideo.com/hiwin_catalogues/linear_guideways/hiwin_linear_guideways_95.html).
+  The ball-filling letter (D, T, Q for two to four starts filled) has no printed example
+  and is not written. The catalog's nut id is
   the code up to the nut type; the lengths are the buyer's drawing's. The part is a ball
   screw per ISO 3408 (formerly DIN 69051), its tolerance class (T7 rolled, T3 ground)
   the family's.
@@ -276,6 +280,69 @@ def _custom_line(spec: ScrewSpec, length_m: float) -> str:
     )
 
 
+#: A HIWIN nut code (module docstring): thread direction, nominal diameter, lead,
+#: recirculation type and number of circuits, nut shape and type.
+HIWIN_NUT = re.compile(r"([RL])(\d+(?:\.\d+)?)-(\d+(?:\.\d+)?)([KTB])(\d+)-([A-Z]+)")
+
+
+def _hiwin_size(value_mm: float) -> str:
+    """A diameter or lead [mm] as HIWIN's codes write it: two digits before the point.
+
+    >>> _hiwin_size(8.0), _hiwin_size(2.5), _hiwin_size(40.0)
+    ('08', '02.5', '40')
+    """
+    whole, _, fraction = f"{value_mm:g}".partition(".")
+    return whole.zfill(2) + ("." + fraction if fraction else "")
+
+
+def _hiwin_lengths(
+    thread_mm: float | None, total_mm: float | None, deviation_mm: float | None
+) -> str:
+    """The shaft's part of a HIWIN code: thread length, total length [mm] (a placeholder
+    where the buyer's drawing gives it) and the lead deviation per 300 mm [mm], with a
+    decimal comma."""
+    thread = "<thread length>" if thread_mm is None else f"{thread_mm:g}"
+    total = "<total length>" if total_mm is None else f"{total_mm:g}"
+    deviation = "" if deviation_mm is None else "-" + f"{deviation_mm:.6g}".replace(".", ",")
+    return f"{thread}-{total}{deviation}"
+
+
+def hiwin_nut_code(
+    hand: str, nominal_mm: float, lead_mm: float, recirculation: str, circuits: int, nut: str
+) -> str:
+    """HIWIN's code of a nut without the shaft (module docstring): ``hand`` R or L,
+    nominal diameter and lead [mm], recirculation K (cassette), T (internal) or B
+    (external) and the number of circuits, nut shape and type (e.g. FSCDIN)."""
+    return f"{hand}{_hiwin_size(nominal_mm)}-{_hiwin_size(lead_mm)}{recirculation}{circuits}-{nut}"
+
+
+def hiwin_order_code(
+    nut_code: str,
+    thread_mm: float | None,
+    total_mm: float | None,
+    deviation_mm: float | None,
+    starts: int | None = None,
+) -> str:
+    """HIWIN's code of a ball screw, shaft and nut (module docstring): the number of
+    thread starts (None leaves out the single start, as HIWIN allows), the nut's code,
+    thread and total length [mm] and the lead deviation per 300 mm [mm]."""
+    return f"{starts or ''}{nut_code}-{_hiwin_lengths(thread_mm, total_mm, deviation_mm)}"
+
+
+def hiwin_shaft_code(
+    hand: str,
+    nominal_mm: float,
+    lead_mm: float,
+    thread_mm: float | None,
+    total_mm: float | None,
+    deviation_mm: float | None,
+    starts: int | None = None,
+) -> str:
+    """HIWIN's code of a ball-screw shaft without the nut (module docstring)."""
+    size = f"{hand}{_hiwin_size(nominal_mm)}-{_hiwin_size(lead_mm)}"
+    return f"{starts or ''}{size}-{_hiwin_lengths(thread_mm, total_mm, deviation_mm)}"
+
+
 def _nominal_diameter_mm(code: str, outer_m: float) -> str:
     """A ball screw's nominal diameter [mm] from its maker's code, else its outer
     diameter [m] in mm.
@@ -327,8 +394,8 @@ def _ball_line(spec: ScrewSpec, length_m: float) -> str:
     e300 = spec.lead_accuracy_m_per_m * 0.3 if spec.lead_accuracy_m_per_m else None
     code = ""
     if spec.family_id.startswith("HIWIN"):
-        deviation = "" if e300 is None else "-" + _mm(e300).replace(".", ",")
-        code = f"HIWIN {spec.id}-<thread length>-<total length>{deviation} (HIWIN order code); "
+        deviation = None if e300 is None else from_si(e300, "mm")
+        code = f"HIWIN {hiwin_order_code(spec.id, None, None, deviation)} (HIWIN order code); "
     grade = spec.accuracy_grade or "to state"
     nominal = _nominal_diameter_mm(spec.id, spec.outer_diameter_m)
     steel = _screw_words(spec).removesuffix(", rolled")

@@ -12,8 +12,12 @@ from app.catalog.ordering import (
     BALL_BASIS,
     CONFIRMABLE,
     CUSTOM_BASIS,
+    HIWIN_NUT,
     ISO_BASIS,
     SEED_BASIS,
+    hiwin_nut_code,
+    hiwin_order_code,
+    hiwin_shaft_code,
     iso_designation,
     ordering_basis,
     ordering_line,
@@ -204,3 +208,37 @@ def test_a_rolled_ball_nut_has_play_and_a_ground_one_an_assumed_preload(catalog:
     assert confirm.startswith("the preload (taken as 745 N")
     for line in (rolled, ground):
         assert "the operating temperature range (taken as -20 to 80 °C)" in line
+
+
+# HIWIN GmbH's combined catalogue, sec. 2.2.4 "HIWIN order code", p. 95
+# (https://vettevideo.com/hiwin_catalogues/linear_guideways/hiwin_linear_guideways_95.html):
+# its three printed examples, each built from the parameters the page names.
+def test_hiwins_printed_order_codes_are_built_from_their_parameters() -> None:
+    nut = hiwin_nut_code("R", 40.0, 20.0, "K", 4, "FSCDIN")
+    assert hiwin_order_code(nut, 800.0, 1000.0, 0.052, starts=2) == (
+        "2R40-20K4-FSCDIN-800-1000-0,052"
+    )
+    assert hiwin_shaft_code("R", 40.0, 10.0, 800.0, 1000.0, 0.052, starts=1) == (
+        "1R40-10-800-1000-0,052"
+    )
+    assert hiwin_nut_code("R", 40.0, 10.0, "K", 3, "FSCDIN") == "R40-10K3-FSCDIN"
+
+
+def test_every_hiwin_nut_id_of_the_catalog_follows_the_makers_scheme(catalog: Catalog) -> None:
+    """Each HIWIN nut id read back into its parts rebuilds itself, and its lead and
+    nominal diameter are the row's (R20-10K3-FSCDIN: 20 mm nominal, lead 10 mm)."""
+    hiwin = [s for s in catalog.by_id.values() if s.family_id.startswith("HIWIN")]
+    assert len(hiwin) >= 20
+    for spec in hiwin:
+        found = HIWIN_NUT.fullmatch(spec.id)
+        assert found, spec.id
+        hand, nominal, lead, recirculation, circuits, nut = found.groups()
+        rebuilt = hiwin_nut_code(
+            hand, float(nominal), float(lead), recirculation, int(circuits), nut
+        )
+        assert rebuilt == spec.id
+        assert float(lead) / 1000 == pytest.approx(spec.lead_m)
+        # the shaft's outer diameter is at most the nominal one, down to 14.0 mm for
+        # the 16 mm high-lead R16-20K2-FSCDIN (Table 4.4)
+        nominal_m = float(nominal) / 1000
+        assert 0.85 * nominal_m <= spec.outer_diameter_m <= 1.01 * nominal_m, spec.id
