@@ -50,6 +50,15 @@ def _position(sc: Screening, screw_id: str) -> int:
     return next(i for i, s in enumerate(sc.table.screws) if s.id == screw_id)
 
 
+def _only_back_driving(sc: Screening, rows: Mask) -> int:
+    """How many of ``rows`` fail the back-driving check and no other."""
+    others = np.zeros(len(rows), dtype=bool)
+    for name, mask in sc.failed_by_check.items():
+        if name != "back_driving":
+            others |= mask
+    return int(np.count_nonzero(rows & sc.failed_by_check["back_driving"] & ~others))
+
+
 def neither(sc: Screening) -> Phrase | None:
     """When both kinds were screened and none passes: the limit that excludes the most
     ball screws, and what kind of drive could do it; None otherwise."""
@@ -60,6 +69,11 @@ def neither(sc: Screening) -> Phrase | None:
     check = BY_NAME.get(name)
     if name.startswith("ball_") and check is not None and check.why_none:
         what = check.why_none
+    elif name == "back_driving" and (only := _only_back_driving(sc, ball)):
+        what = (
+            f"{only} of them pass every other check: a ball screw with a brake can (each "
+            "one's fix gives the brake's holding torque)"
+        )
     elif name in SHAFT_CHECKS:
         what = f"a screw shaft this long and fast cannot: {NOT_A_SCREW} can"
     else:

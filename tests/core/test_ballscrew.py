@@ -164,6 +164,29 @@ def test_when_neither_kind_can_it_names_the_limit_and_another_drive(catalog: Cat
     assert "a belt drive, a rack and pinion or a linear motor" in first
 
 
+def test_when_only_the_brake_is_missing_it_says_a_ball_screw_with_a_brake(
+    catalog: Catalog,
+) -> None:
+    """50 kg lifted at 0.1 m/s: no leadscrew's nut runs at it, and every ball screw
+    passes everything but back-driving; with a 5 N m brake ball screws pass."""
+    app = Application(
+        load_n=0.0, speed_m_s=0.1, length_m=0.5, moving_mass_kg=50.0, orientation="vertical"
+    )
+    sel = select(app, catalog.index)
+    assert sel.passed == 0
+    first = sel.summary.message.values["p0"].template
+    balls = sum(1 for s in catalog.screws if s.screw_type == "ball")
+    assert f"{balls} of them pass every other check: a ball screw with a brake can" in first
+    braked = select(replace(app, brake_torque_nm=5.0), catalog.index)
+    assert {c.screw.screw_type for c in braked.candidates} == {"ball"}
+    # 2 kN more: the smallest nuts fail their static rating too, and only the others
+    # are counted (54 of the 57)
+    heavy = select(replace(app, load_n=2000.0), catalog.index)
+    text = heavy.summary.message.values["p0"].template
+    assert f"{balls} of them" not in text
+    assert "of them pass every other check" in text
+
+
 def test_a_ball_nuts_life_is_its_l10_in_travel_and_years(catalog: Catalog) -> None:
     """R20-10K3-FSCDIN (HIWIN Table 4.4: Ca 10,000 N) under 2,000 N against the motion
     both ways, 600 mm strokes, 1,000 cycles a day: L10 = (10000 / (1.2 x 2000))^3 x 10^6

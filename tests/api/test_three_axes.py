@@ -1,0 +1,133 @@
+"""Three axes worked by hand beside the app's answer, and the kind of screw it advises:
+a fast long horizontal axis, a 3D printer's Z axis and a 50 kg lift. Steel's E / rho
+is the catalog's; n_c = 60 / (2 pi) (beta / L)^2 sqrt(E / rho) d_r / 4 (Blevins table
+8-1), beta = 3.927 fixed-supported; g = 9.80665 m/s^2; the default acceleration 1 m/s^2."""
+
+import math
+from typing import Any
+
+import pytest
+from fastapi.testclient import TestClient
+
+G = 9.80665
+BETA_FIXED_SUPPORTED = 3.927
+#: sqrt(E / rho) of steel, 206 GPa over 7850 kg/m^3 [m/s]; the catalog's steels differ
+#: by well under 1 % in it.
+STEEL_WAVE_M_S = math.sqrt(206e9 / 7850.0)
+WITHIN = 0.01
+
+
+def _whirl_rpm(root_m: float, length_m: float) -> float:
+    omega = (BETA_FIXED_SUPPORTED / length_m) ** 2 * STEEL_WAVE_M_S * root_m / 4
+    return omega * 60 / (2 * math.pi)
+
+
+def _select(client: TestClient, query: str) -> Any:
+    response = client.get("/api/v1/select?" + query)
+    assert response.status_code == 200
+    return response.json()
+
+
+def _evaluate(client: TestClient, query: str, screw_id: str) -> Any:
+    response = client.get(f"/api/v1/evaluate?{query}&catalog_id={screw_id}")
+    assert response.status_code == 200
+    return response.json()["candidate"]
+
+
+FAST = "load_n=5000&speed_mm_s=1000&length_mm=2000"
+
+
+def test_5_kn_at_1_m_s_over_2_m_is_beyond_every_screw_as_mounted(client: TestClient) -> None:
+    """/?load=5000&speed=1000&length=2000. The largest rolled ball screw of the catalog,
+    R50-40K3-FSCDIN (HIWIN Table 4.4: root 45 mm, lead 40 mm, C0a 123 kN): 1000 / 40 =
+    25 rev/s = 1500 rpm; T = 5000 x 0.04 / (2 pi eta) = 33.1 N m at eta 0.961; n_c =
+    9.549 x (3.927 / 2)^2 x 5123 x 0.045 / 4 = 2122 rpm, 0.8 of it 1697 > 1500: it does
+    not whirl, but its DN 50 x 1500 = 75,000 passes HIWIN's 70,000 for rolled screws
+    (utilization 75 / 70 = 1.071). Every leadscrew and every other ball screw whirls or
+    buckles: the app advises no screw as mounted, names a belt, a rack and pinion or a
+    linear motor, and offers the changes that let a ball screw do it (fixed-fixed ends,
+    a shorter screw or a lower speed)."""
+    answer = _select(client, FAST)
+    assert answer["counts"]["passed"] == 0
+    summary = answer["summary"]
+    assert summary["most_excluding_check"] == "critical_speed"
+    assert summary["message"].startswith("Neither a leadscrew nor a ball screw")
+    assert "a belt drive, a rack and pinion or a linear motor" in summary["message"]
+    assert any(r["inputs"] == {"end_fixity": "fixed-fixed"} for r in summary["remedies"])
+    ball = _evaluate(client, FAST, "R50-40K3-FSCDIN")
+    assert ball["rpm"] == pytest.approx(1500.0)
+    load_nm = 5000 * 0.04 / (2 * math.pi * ball["efficiency"])
+    assert ball["torque"]["load_nm"] == pytest.approx(load_nm, rel=1e-9)
+    assert load_nm == pytest.approx(33.1, rel=WITHIN)
+    assert ball["critical_speed"]["theoretical_rpm"] == pytest.approx(
+        _whirl_rpm(0.045, 2.0), rel=WITHIN
+    )
+    assert ball["utilization"]["ball_speed"] == pytest.approx(75_000 / 70_000)
+    assert ball["utilization"]["ball_static"] == pytest.approx(2 * 5000 / 123_000)
+
+
+Z_AXIS = "load_n=0&moving_mass_kg=2&speed_mm_s=10&length_mm=300&orientation=vertical"
+
+
+def test_a_printer_z_axis_gets_a_self_locking_leadscrew(client: TestClient) -> None:
+    """2 kg vertical at 10 mm/s over 300 mm. Tr8x1.5 in bronze: weight 2 x 9.807 =
+    19.61 N, 10 / 1.5 = 6.67 rev/s = 400 rpm, T = 19.61 x 0.0015 / (2 pi 0.3256) =
+    0.01438 N m, m a through the thread 2 x 1 x 0.0015 / (2 pi 0.3256) = 0.00147 N m;
+    n_c = 9.549 x (3.927 / 0.3)^2 x 5123 x 0.0062 / 4 = 13,020 rpm. It self-locks: the
+    Z holds with the motor off. Every ball screw back-drives (eta about 0.9 both ways):
+    with no brake each is rejected for that alone, so the app advises a leadscrew."""
+    answer = _select(client, Z_AXIS)
+    assert answer["counts"]["passed"] > 0
+    assert set(answer["counts"]["failed_by_check"]) == {"back_driving"}
+    first = answer["candidates"][0]
+    assert first["screw_type"] == "lead" and first["self_locking"]
+    assert all(c["screw_type"] == "lead" for c in answer["candidates"])
+    lead = _evaluate(client, Z_AXIS, "Tr8x1.5-bronze")
+    assert lead["rpm"] == pytest.approx(400.0)
+    eta = lead["efficiency"]
+    assert lead["torque"]["load_nm"] == pytest.approx(2 * G * 0.0015 / (2 * math.pi * eta))
+    assert lead["torque"]["inertia_mass_nm"] == pytest.approx(
+        2 * 1.0 * 0.0015 / (2 * math.pi * eta)
+    )
+    assert lead["critical_speed"]["theoretical_rpm"] == pytest.approx(
+        _whirl_rpm(0.0062, 0.3), rel=WITHIN
+    )
+    ball = _evaluate(client, Z_AXIS, "R12-05K4-FSCDIN")
+    assert [f["name"] for f in ball["failed"]] == ["back_driving"]
+
+
+LIFT = "load_n=0&moving_mass_kg=50&speed_mm_s=100&length_mm=500&orientation=vertical"
+LIFT_DUTY = "&stroke_mm=400&cycles_per_day=1000&required_life_years=5"
+
+
+def test_a_50_kg_lift_at_100_mm_s_needs_a_ball_screw_with_a_brake(client: TestClient) -> None:
+    """50 kg vertical at 100 mm/s: 490 N. The leadscrews' nuts cannot run at this speed
+    and load (PV, sliding speed) and the slower self-locking ones cannot hold it; every
+    ball screw passes every check but back-driving: the summary says a ball screw with a
+    brake can. With a 5 N m brake, 400 mm strokes, 1000 cycles a day and 5 years asked,
+    ball screws pass and no leadscrew does. R12-05K4-FSCDIN (HIWIN Table 4.4: Ca 5500 N):
+    ramps of 0.1^2 / 2 = 5 mm at 1 m/s^2; up 540.3 / 490.3 / 440.3 N, down 440.3 /
+    490.3 / 540.3 N over 5 / 390 / 5 mm; F_m = ((540.3^3 + 440.3^3) x 10 / 800 + 490.3^3
+    x 780 / 800)^(1/3) = 490.6 N; L10 = (5500 / (1.2 x 490.6))^3 x 10^6 = 815e6 rev x
+    5 mm = 4077 km; 0.8 km a day: 4077 / 0.8 / 365 = 13.96 years. T = 490.3 x 0.005 /
+    (2 pi 0.935) = 0.417 N m at 1200 rpm."""
+    bare = _select(client, LIFT)
+    assert bare["counts"]["passed"] == 0
+    assert "a ball screw with a brake can" in bare["summary"]["message"]
+    braked = _select(client, LIFT + "&brake_torque_nm=5" + LIFT_DUTY)
+    assert braked["counts"]["passed"] > 0
+    assert braked["summary"]["message"].startswith("No leadscrew passes")
+    assert all(c["screw_type"] == "ball" for c in braked["candidates"])
+    ball = _evaluate(client, LIFT + "&brake_torque_nm=5" + LIFT_DUTY, "R12-05K4-FSCDIN")
+    assert ball["passed"]
+    assert ball["rpm"] == pytest.approx(1200.0)
+    weight = 50 * G
+    assert ball["torque"]["load_nm"] == pytest.approx(
+        weight * 0.005 / (2 * math.pi * ball["efficiency"])
+    )
+    loads = [weight + 50.0, weight, weight - 50.0]
+    cubes = (loads[0] ** 3 + loads[2] ** 3) * 0.010 + loads[1] ** 3 * 0.780
+    mean_n = (cubes / 0.800) ** (1 / 3)
+    years = (5500 / (1.2 * mean_n)) ** 3 * 1e6 * 0.005 / (0.8 * 1000) / 365
+    assert years == pytest.approx(13.96, rel=WITHIN)
+    assert ball["life"]["years"][0] == pytest.approx(years, rel=WITHIN)
