@@ -3,12 +3,13 @@ Use)", through the app's own core: axial loads per phase, the mean load, the rat
 the buckling load, the critical speed and the motor torques.
 
 THK Ball Screw General Catalog, "Examples of Selecting a Ball Screw", printed pp. A-744 to
-A-747 (THK's catalog 15 "Ball Screw"; read through a distributor's copy,
-https://bondy.dk/wp-content/uploads/THK-spindler.pdf). The printed selection conditions:
-table 60 kg and work 20 kg, stroke 1000 mm, top speed 1 m/s, acceleration and
-deceleration times 0.15 s, direct drive, motor rotor inertia 1e-3 kg m^2, a stop of 2.6 s
-after each move; the chosen screw WTF2040-2 (shaft 20 mm, root d1 17.5 mm, lead 40 mm,
-1200 mm long, Ca 5.4 kN, C0a 13.6 kN, shaft inertia 1.23e-3 kg cm^2/mm, efficiency 0.9).
+A-747 (a distributor's copy: https://bondy.dk/wp-content/uploads/THK-spindler.pdf). The
+figures are those pages' as transcribed in a public repository's reference tests; the PDF
+itself was not at hand. The printed selection conditions: table 60 kg and work 20 kg,
+stroke 1000 mm, top speed 1 m/s, acceleration and deceleration times 0.15 s, direct
+drive, motor rotor inertia 1e-3 kg m^2, a stop of 2.6 s after each move; the chosen
+screw WTF2040-2 (shaft 20 mm, root d1 17.5 mm, lead 40 mm, 1200 mm long, Ca 5.4 kN,
+C0a 13.6 kN, shaft inertia 1.23e-3 kg cm^2/mm, efficiency 0.9).
 """
 
 import numpy as np

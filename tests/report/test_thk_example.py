@@ -1,7 +1,8 @@
 """THK's whole ball-screw selection example through the app's own core: THK Ball Screw
 General Catalog, "Examples of Selecting a Ball Screw", High-speed Transfer Equipment
-(Horizontal Use), printed pp. A-744 to A-747 (read through a distributor's copy,
-https://bondy.dk/wp-content/uploads/THK-spindler.pdf).
+(Horizontal Use), printed pp. A-744 to A-747 (a distributor's copy:
+https://bondy.dk/wp-content/uploads/THK-spindler.pdf; the figures as transcribed from those
+pages in a public repository's reference tests).
 
 Printed: Fa1..Fa6 = 550, 17, -516, -550, -17, 516 N; Fm1 = Fm2 = 225 N; L = 4.1e9 rev
 (Ca 5.4 kN, f_w 1.5); P1 = 20 x 17.5^4 / 1100^2 x 10^4 = 15,500 N; N1 = 15.1 x 17.5 /
