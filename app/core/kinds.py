@@ -75,7 +75,10 @@ def neither(sc: Screening) -> Phrase | None:
             "one's fix gives the brake's holding torque)"
         )
     elif name in SHAFT_CHECKS:
-        what = f"a screw shaft this long and fast cannot: {NOT_A_SCREW} can"
+        what = (
+            "no screw shaft this long and fast does as mounted; stiffer end fixing or a "
+            f"shorter shaft may (each screw's fix says which), otherwise {NOT_A_SCREW} can"
+        )
     else:
         what = f"its fix names what would clear it, or {NOT_A_SCREW}"
     total = int(ball.sum())
