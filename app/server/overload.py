@@ -40,6 +40,9 @@ FULL_FORM_CANDIDATES_PER_UNIT = 8
 LIMIT_MOST = 100
 #: the scope key of the request's ``take`` (``charge``)
 WORK_KEY = "app.overload.take"
+#: the scope key of the connection's ``shed`` notice, called when its request is shed
+#: (``app.server.protocol`` then reads nothing more from it for Retry-After seconds)
+SHED_KEY = "app.overload.shed"
 
 
 class Shed(Exception):
@@ -154,7 +157,7 @@ class OverloadMiddleware:
             self.in_flight and self.in_flight + taken > self.max_in_flight
         ):
             self.shed += 1
-            await self._busy(send)
+            await self._busy(scope, send)
             return
         self.in_flight += taken
         started = False
@@ -186,7 +189,7 @@ class OverloadMiddleware:
             self.shed += 1
             if started:
                 raise
-            await self._busy(send)
+            await self._busy(scope, send)
         finally:
             self.in_flight -= taken
 
@@ -201,7 +204,10 @@ class OverloadMiddleware:
         query = dict(parse_qsl(scope["query_string"].decode("latin-1"), keep_blank_values=True))
         return max(1, stated(query))
 
-    async def _busy(self, send: Send) -> None:
+    async def _busy(self, scope: Scope, send: Send) -> None:
+        notice = scope.get(SHED_KEY)
+        if notice is not None:
+            notice()
         await send_busy(send, self.retry_after_s)
 
 
