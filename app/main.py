@@ -15,7 +15,13 @@ from app.server.cache import ResponseCache
 from app.server.compression import NegotiatedGZipMiddleware
 from app.server.errors import AppError
 from app.server.head import HeadAsGetMiddleware
-from app.server.overload import NEVER_SHED, OverloadMiddleware
+from app.server.overload import (
+    NEVER_SHED,
+    OverloadMiddleware,
+    full_form_stated_units,
+    page_stated_units,
+    select_stated_units,
+)
 from app.server.security import SecurityMiddleware
 from app.server.settings import Settings, get_settings
 from app.server.staticfiles import PrecompressedStaticFiles
@@ -28,6 +34,14 @@ CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/exp
 QUERY_FREE_PATHS = frozenset({"/catalog", "/guide", "/validation"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
 FRAGMENT_PATHS = frozenset({"/", "/detail"})
+#: What each costly route's query states it costs, read before its input is validated: a
+#: flood of them is shed for the price of reading a query (app.server.overload).
+STATED_COSTS = {
+    "/": page_stated_units,
+    "/api/v1/select": select_stated_units,
+    "/export.csv": full_form_stated_units,
+    "/export.json": full_form_stated_units,
+}
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:
@@ -69,6 +83,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         max_in_flight=settings.max_requests_in_flight,
         retry_after_s=settings.overload_retry_after_s,
         exempt_paths=NEVER_SHED,
+        stated_costs=STATED_COSTS,
     )
     app.add_middleware(
         ResponseCache,

@@ -238,8 +238,10 @@ def costly_queries(report: Report, seconds: float) -> float:
         slowest_all = max(slowest_all, slowest)
         tail = p99(health)
         report.info(f"{name}: answers", _statuses(result))
-        report.info(f"{name}: health p50, slowest", f"{p50 * 1e3:.0f} ms, {slowest * 1e3:.0f} ms"
-                    f" ({ok} of {len(health)} answered 200)")  # fmt: skip
+        report.info(f"{name}: health p50, p99, slowest", f"{p50 * 1e3:.0f} ms, "
+                    f"{tail * 1e3:.0f} ms, {slowest * 1e3:.0f} ms ({ok} of {len(health)} "
+                    "answered 200)")  # fmt: skip
+        report.info(f"{name}: load average (1 min)", f"{os.getloadavg()[0]:.1f}")
         held(report, f"2. {name}: health p99 under {HEALTH_P99_S:g} s", f"{tail * 1e3:.0f} ms",
              ok == len(health) > 0 and tail < HEALTH_P99_S)  # fmt: skip
     timeout = container()["readinessProbe"]["timeoutSeconds"]

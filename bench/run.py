@@ -3,6 +3,9 @@
     python3 bench/run.py            # core, HTTP, page weight, memory, keystroke to
                                     # results in Chromium, hostile load
     python3 bench/run.py --soak     # plus a 60 s no-error load test per endpoint
+    python3 bench/run.py --only floods --seconds 30
+                                    # health p99 under issue 31's floods of one worker,
+                                    # 64 connections each, and the probes set from them
 
 Figures are printed, never asserted: timing depends on the machine. The exit code is 0
 whenever the benchmarks ran, whatever they measured.
@@ -41,7 +44,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seconds", type=int, default=10, help="wrk duration per endpoint")
     parser.add_argument(
         "--only",
-        choices=("core", "http", "keystroke", "hostile", "attacks"),
+        choices=("core", "http", "keystroke", "hostile", "attacks", "floods"),
         help="run one part",
     )
     args = parser.parse_args(argv)
@@ -73,6 +76,8 @@ def main(argv: list[str] | None = None) -> int:
     if args.only in (None, "hostile", "attacks"):
         with tempfile.TemporaryDirectory(prefix="leadscrew-attacks-") as tmp:
             attacks.run(report, seconds=min(args.seconds, 5), tmp=Path(tmp))
+    if args.only == "floods":
+        attacks.kubernetes(report, attacks.costly_queries(report, args.seconds))
     report.info("load average at the end", " ".join(f"{x:.2f}" for x in os.getloadavg()))
     report.summary()
     return 0

@@ -17,6 +17,13 @@ value in memory as readily as a short one. This protocol adds both bounds:
   (uvicorn's own limit answers every request a bare 503, the health check included, so
   a thousand idle sockets would make a balancer take the process for dead).
 
+* after a request is shed (503, ``app.server.overload``), nothing more is read from its
+  connection for the Retry-After (``overload_retry_after_s``), unless it came through the
+  proxy (``X-Forwarded-For``: nginx limits each address itself, and its next request on
+  that connection may be another client's). A client that asks again at once, told to
+  wait, waits: 64 such clients otherwise kept the event loop refusing 700 requests a
+  second, starving the computing they waited for, and the health check queued behind.
+
 * on SIGTERM, a request already sent on a kept-alive connection is answered, and the
   connection then closed cleanly (``shutdown``), where uvicorn's own would close an idle
   connection at once and reset any request waiting unread in its socket.
@@ -33,7 +40,15 @@ from uvicorn.config import Config
 from uvicorn.protocols.http.httptools_impl import STATUS_LINE, HttpToolsProtocol
 from uvicorn.server import ServerState
 
-from app.server.overload import NEVER_SHED, ASGIApp, Receive, Scope, Send, send_busy
+from app.server.overload import (
+    NEVER_SHED,
+    SHED_KEY,
+    ASGIApp,
+    Receive,
+    Scope,
+    Send,
+    send_busy,
+)
 from app.server.security import SECURITY_HEADERS
 from app.server.settings import get_settings
 
@@ -99,6 +114,11 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         self.stopping = False
         self.drain_timer: asyncio.TimerHandle | None = None
         self.half_closed = False
+        # a request shed (``_was_shed``): reading pauses once its answer is sent, for
+        # ``shed_pause_s``
+        self.shed_pause_s = float(settings.overload_retry_after_s)
+        self.pause_after_response = False
+        self.shed_timer: asyncio.TimerHandle | None = None
 
     # --- the read deadline ----------------------------------------------------------
 
@@ -125,6 +145,7 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
     def connection_lost(self, exc: Exception | None) -> None:
         self._stop_read_deadline()
         self._stop_drain()
+        self._end_shed_pause()
         super().connection_lost(exc)
 
     def on_message_begin(self) -> None:
@@ -141,6 +162,7 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         ``SHUTDOWN_DRAIN_S`` so that a request already sent is answered the same way, then
         closed cleanly (``_close_idle``)."""
         self.stopping = True
+        self._end_shed_pause()  # what was sent meanwhile is answered or closed cleanly
         if self.cycle is not None and not self.cycle.response_complete:
             self.cycle.keep_alive = False
             return
@@ -166,6 +188,27 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         if self.transport.can_write_eof():
             self.transport.write_eof()
         self.loop.call_later(SHUTDOWN_LINGER_S, self.transport.close)
+
+    # --- a pause after a shed request ------------------------------------------------
+
+    def _was_shed(self) -> None:
+        """Called by the overload middleware (``SHED_KEY``) when it sheds this request."""
+        proxied = any(name == b"x-forwarded-for" for name, _ in self.scope["headers"])
+        self.pause_after_response = not proxied
+
+    def on_response_complete(self) -> None:
+        super().on_response_complete()
+        if self.pause_after_response and not self.stopping and not self.transport.is_closing():
+            self.flow.pause_reading()
+            self.shed_timer = self.loop.call_later(self.shed_pause_s, self._end_shed_pause)
+        self.pause_after_response = False
+
+    def _end_shed_pause(self) -> None:
+        if self.shed_timer is not None:
+            self.shed_timer.cancel()
+            self.shed_timer = None
+            if not self.transport.is_closing():
+                self.flow.resume_reading()
 
     def on_message_complete(self) -> None:
         super().on_message_complete()
@@ -204,6 +247,7 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         super().on_header(name, value)
 
     def on_headers_complete(self) -> None:
+        self.scope[SHED_KEY] = self._was_shed  # type: ignore[literal-required]
         self.reading_head = False
         self.received_head_bytes = self.head_bytes = self.head_count = 0
         if len(self.connections) <= self.max_connections:

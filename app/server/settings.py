@@ -31,7 +31,8 @@ class Settings(BaseSettings):
     #: how often the interpreter lets another thread run while the compute threads work [s]
     #: (Python's own is 5 ms: app.server.compute)
     thread_switch_interval_s: float = 0.0005
-    #: the Retry-After of those 503s
+    #: the Retry-After of those 503s [s], and how long nothing more is read from a
+    #: connection after its request was shed (not through the proxy: app.server.protocol)
     overload_retry_after_s: int = 1
     # --- the server (app.cli, app.server.protocol) ---
     #: a request's head and body must arrive within this many seconds of the connection

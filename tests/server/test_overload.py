@@ -14,7 +14,7 @@ from typing import Any
 import pytest
 
 from app.api import routes
-from app.main import create_app
+from app.main import STATED_COSTS, create_app
 from app.server.overload import OverloadMiddleware
 from app.server.settings import Settings
 from app.web import pages
@@ -312,3 +312,71 @@ def test_the_health_check_is_answered_while_results_pages_compute(
 
     monkeypatch.setattr(pages, "page_results", held)
     assert _run(_health_beside_pages(release)) == ["health", "page", "page"]
+
+
+async def _stated_scenario() -> dict[str, Any]:
+    """Two results pages of a hundred held in progress (11 units each of 32), then a
+    third page, a compact select and the health check arrive."""
+    held = HeldApp()
+    shedder = OverloadMiddleware(
+        held,
+        max_in_flight=32,
+        retry_after_s=1,
+        exempt_paths=frozenset({"/api/v1/health"}),
+        stated_costs=STATED_COSTS,
+    )
+    page = b"load=%d&speed=50&length=500&limit=100"
+    waiting = [asyncio.create_task(asgi_get(shedder, "/", page % i)) for i in (101, 102)]
+    while held.holding < 2:
+        await asyncio.sleep(0)
+    third = await asgi_get(shedder, "/", page % 103)
+    reached_by_third = held.holding
+    in_flight = shedder.in_flight
+    compact = asyncio.create_task(asgi_get(shedder, "/api/v1/select", SELECT))
+    while held.holding < 3:
+        await asyncio.sleep(0)
+    health = await asgi_get(shedder, "/api/v1/health")
+    held.release.set()
+    served = await asyncio.gather(*waiting, compact)
+    return {
+        "third": third[0],
+        "reached_by_third": reached_by_third,
+        "in_flight": in_flight,
+        "health": health[0],
+        "served": [status for status, _ in served],
+        "in_flight_after": shedder.in_flight,
+    }
+
+
+def test_a_query_stating_its_cost_is_shed_before_its_input_is_read() -> None:
+    """Results pages of a hundred state 11 units each (1 + 100 / 10, ``page_units``): with
+    two in progress (22 of 32) a third is refused at the door, the route never reached
+    (validating it only to refuse it cost the event loop 2.5 ms a request); a compact
+    select (1 unit) is still taken, and the health check answered."""
+    got = _run(_stated_scenario())
+    assert got["third"] == 503
+    assert got["reached_by_third"] == 2
+    assert got["in_flight"] == 22
+    assert got["health"] == 200
+    assert got["served"] == [200, 200, 200]
+    assert got["in_flight_after"] == 0
+
+
+@pytest.mark.parametrize(
+    ("path", "query", "units"),
+    [
+        ("/", {"limit": "100"}, 11),
+        ("/", {}, 1),  # the default limit (10) is charged once validated: 2 units
+        ("/", {"limit": "1e2"}, 1),  # not plain digits: charged once validated
+        ("/api/v1/select", {"limit": "100"}, 1),
+        ("/api/v1/select", {"limit": "100", "detail": "full"}, 13),
+        ("/export.csv", {"limit": "100"}, 13),
+        ("/export.json", {}, 1),
+    ],
+)
+def test_the_stated_cost_is_a_lower_bound_of_the_charged_one(
+    path: str, query: dict[str, str], units: int
+) -> None:
+    """What a query states is what validation would charge for it when it is spelled
+    plainly (``page_units`` and ``full_form_units`` of its limit), and less otherwise."""
+    assert STATED_COSTS[path](query) == units
