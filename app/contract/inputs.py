@@ -55,7 +55,7 @@ SECONDS_PER_DAY = 86400.0
 ASCII_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 ASCII_SPACE = " \t\n\r\f\v"
 #: the error for text that is not a number: pydantic's type, and what the API expects (the
-#: page form also reads a decimal comma and fractions, ``app.contract.form.read_exact``).
+#: page form also reads a decimal comma and fractions, ``app.contract.exact.read_exact``).
 NOT_A_NUMBER = {
     "float": (
         "float_parsing",
