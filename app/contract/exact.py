@@ -1,8 +1,8 @@
 """Numbers typed on the page and written in share links, exactly.
 
-A typed number is read by the API's own rule (``app.contract.inputs.NUMBER_TEXT``) and
-also as engineers write numbers by hand (``read_number``): a decimal comma ('20,5') and
-fractions ('5/16', '1 1/4', '1-1/4'), each read exactly before the one rounding to a
+A typed number is read by the API's own rule (``app.contract.input_types.NUMBER_TEXT``)
+and also as engineers write numbers by hand (``read_number``): a decimal comma ('20,5')
+and fractions ('5/16', '1 1/4', '1-1/4'), each read exactly before the one rounding to a
 float. A value in a display unit is written back as the shortest decimal that reads to
 the same float (``link_number``), so a share link reproduces its result.
 """
@@ -19,7 +19,7 @@ from typing import Annotated
 from pydantic import Field, TypeAdapter, ValidationError
 
 from app.contract.fields import InputField
-from app.contract.inputs import NUMBER_TEXT
+from app.contract.input_types import NUMBER_TEXT
 from app.contract.units import DEFAULT_UNITS, Quantity, display_system, exact_factor, exact_offset
 
 PLAIN_MESSAGES = {

@@ -4,9 +4,9 @@
 of a result. Every input's page name, display quantity, kind and default come from the
 field table (``app.contract.fields``); this module maps the form to and from the API's
 ``ApplicationIn``, so the page and the API validate the same model. Numbers typed on the
-page are read by the API's own rule (``app.contract.inputs.NUMBER_TEXT``): the page accepts
-every number text the API's query string accepts, to the same value, and also the ways
-engineers write numbers by hand (``app.contract.exact.read_number``): a decimal comma
+page are read by the API's own rule (``app.contract.input_types.NUMBER_TEXT``): the page
+accepts every number text the API's query string accepts, to the same value, and also the
+ways engineers write numbers by hand (``app.contract.exact.read_number``): a decimal comma
 ('20,5') and, in imperial, fractions ('5/16', '1 1/4', '1-1/4'). The API keeps to JSON
 numbers and ASCII decimals: a spreadsheet or script writes those, and a comma in a query
 string is ambiguous. A motor's torque curve is read and written by

@@ -15,7 +15,8 @@ from pydantic import (
     field_validator,
 )
 
-from app.contract.inputs import ApplicationIn, NotBool, bounded_number
+from app.contract.input_types import NotBool, bounded_number
+from app.contract.inputs import ApplicationIn
 from app.contract.schemas import ProvenanceOut
 
 
