@@ -17,7 +17,7 @@ from pydantic import (
 
 from app.contract.input_types import NotBool, bounded_number
 from app.contract.inputs import ApplicationIn
-from app.contract.schemas import ProvenanceOut
+from app.contract.sections import ProvenanceOut
 
 
 class MaterialIn(BaseModel):
