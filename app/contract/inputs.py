@@ -11,7 +11,8 @@ Typing: mypy cannot see the fields of a model made at run time, so for mypy
 (``inputs.<api name>``) is then a type error on purpose; code reads ``inputs.to_core()``, a
 typed dataclass in SI, or goes through the table.
 
-Each field's type, from number text to a torque curve, is ``app.contract.input_types``'.
+Each field's type (number text, bounds, texts and lists, torque curves) is made by
+``app.contract.input_types``.
 """
 
 from collections.abc import Mapping

@@ -1,9 +1,9 @@
 """The candidate's output model, ``CandidateOut``, with its parts (checks, torque, life,
 verdict, ...: ``app.contract.sections``) and its views (row, summary, rejected, csv, full),
-shared by the API, pages, figures and CSV (pydantic v2). The screw inputs are in ``app.contract.screws``, the
-responses around the candidates (selection, compare, catalog, errors) in
-``app.contract.outputs``; the application input ``ApplicationIn`` is generated from the
-field table in ``app.contract.inputs`` and re-exported here.
+shared by the API, pages, figures and CSV (pydantic v2). The screw inputs are in
+``app.contract.screws``, the responses around the candidates (selection, compare, catalog,
+errors) in ``app.contract.outputs``; the application input ``ApplicationIn`` is generated
+from the field table in ``app.contract.inputs`` and re-exported here.
 """
 
 import operator
