@@ -10,7 +10,9 @@ from collections.abc import Iterable, Mapping
 from typing import Any, TypeGuard
 
 from app.catalog.errors import CatalogError
+from app.catalog.models import Sourced
 from app.core.model import Provenance
+from app.core.units import SI_UNITS, UNITS, to_si
 
 PROVENANCE_KINDS = ("seed", "standard", "handbook", "vendor", "derived", "assumed", "user")
 
@@ -186,3 +188,16 @@ class Entry:
         for name in self.data:
             if name not in known:
                 raise self.fail(name, "unknown field (see catalog/README.md for the fields)")
+
+
+def sourced(entry: Entry, name: str, unit: str = "") -> Sourced:
+    """A catalog number given in ``unit``, in SI with its SI unit."""
+    si_unit = SI_UNITS[UNITS[unit].dimension]
+    return Sourced(to_si(entry.number(name), unit), si_unit, entry.prov(name))
+
+
+def optional(entry: Entry, values: Mapping[str, tuple[str, str]]) -> dict[str, Sourced]:
+    """The numbers of ``values`` (field name -> (catalog key, unit)) the entry gives, in SI."""
+    return {
+        name: sourced(entry, key, unit) for name, (key, unit) in values.items() if entry.has(key)
+    }

@@ -14,7 +14,8 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 
 from app.catalog.models import Material, Series, Sourced
-from app.catalog.series import NOT_GIVEN, thrust_pressure
+from app.catalog.nut_ratings import thrust_pressure
+from app.catalog.series import NOT_GIVEN
 from app.core.formulas import torque, trapezoidal
 from app.core.model import Provenance, ScrewSpec
 from app.core.record import GEOMETRY_SOURCES
@@ -197,7 +198,7 @@ def _with_nut_length(geometry: OwnGeometry, nut: NutMaterial | None) -> OwnGeome
 
 def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
     """The ScrewSpec values of the nut: its material's limits, and its flank pressure in
-    motion from the maker's thrust table for this size (``series.thrust_pressure``)."""
+    motion from the maker's thrust table for this size (``nut_ratings.thrust_pressure``)."""
     if nut is None:
         return {}
     values: dict[str, object] = {**nut.limits, "nut_material": nut.name}

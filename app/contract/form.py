@@ -4,34 +4,27 @@
 of a result. Every input's page name, display quantity, kind and default come from the
 field table (``app.contract.fields``); this module maps the form to and from the API's
 ``ApplicationIn``, so the page and the API validate the same model. Numbers typed on the
-page are read by the API's own rule (``app.contract.inputs.NUMBER_TEXT``): the page accepts
-every number text the API's query string accepts, to the same value, and also the ways
-engineers write numbers by hand (``read_number``): a decimal comma ('20,5') and, in
-imperial, fractions ('5/16', '1 1/4', '1-1/4'). The API keeps to JSON numbers and ASCII
-decimals: a spreadsheet or script writes those, and a comma in a query string is ambiguous.
+page are read by the API's own rule (``app.contract.input_types.NUMBER_TEXT``): the page
+accepts every number text the API's query string accepts, to the same value, and also the
+ways engineers write numbers by hand (``app.contract.exact.read_number``): a decimal comma
+('20,5') and, in imperial, fractions ('5/16', '1 1/4', '1-1/4'). The API keeps to JSON
+numbers and ASCII decimals: a spreadsheet or script writes those, and a comma in a query
+string is ambiguous. A motor's torque curve is read and written by
+``app.contract.torque_curve``.
 """
 
 import math
-import re
-import sys
 from collections.abc import Mapping
-from decimal import Decimal, localcontext
-from fractions import Fraction
-from functools import lru_cache
-from typing import Annotated, Any
+from typing import Any
 from urllib.parse import urlencode
 
-from pydantic import Field, TypeAdapter, ValidationError
+from pydantic import ValidationError
 
 from app.contract.cycle import moves_text
+from app.contract.exact import PLAIN_MESSAGES, link_number, page_value, read_number, sig_figures
 from app.contract.fields import BY_API, BY_PAGE, FIELDS, InputField
-from app.contract.inputs import (
-    ASCII_NUMBER,
-    NUMBER_TEXT,
-    ApplicationIn,
-    curve_type,
-    exact_text,
-)
+from app.contract.inputs import ApplicationIn
+from app.contract.torque_curve import convert_curve, curve_text, curve_to_api
 from app.contract.units import (
     ACCEL_UNITS,
     DEFAULT_UNITS,
@@ -41,9 +34,6 @@ from app.contract.units import (
     UNIT_QUANTITIES,
     Quantity,
     accel_choice,
-    display_system,
-    exact_factor,
-    exact_offset,
     from_api,
     sig,
     to_api,
@@ -68,100 +58,7 @@ BOUND_MESSAGES = {
     "less_than": ("Must be less than {bound}.", "lt"),
     "less_than_equal": ("Must be at most {bound}.", "le"),
 }
-PLAIN_MESSAGES = {
-    "missing": "Required.",
-    "float_parsing": "Enter a number.",
-    "int_parsing": "Enter a whole number.",
-    "int_from_float": "Enter a whole number.",
-    "finite_number": "Enter a finite number.",
-}
-#: a fraction as engineers write one: '5/16', '1 1/4', '1-1/4', signed, at most 20 digits
-#: a part (enough for any fraction of a unit; longer text is a mistake, not a measure).
-FRACTION = re.compile(r"([+-]?)(?:([0-9]{1,20})(?: +|-))?([0-9]{1,20})/([0-9]{1,20})")
-#: a decimal comma in place of the point: '20,5', ',5', '-0,125', '1,5e3'.
-DECIMAL_COMMA = re.compile(r"[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?")
-#: '1,234' or '12,500': a thousands separator to some readers, a decimal comma to others.
-THOUSANDS = re.compile(r"[+-]?[1-9][0-9]{0,2}(?:,[0-9]{3})+")
-ZERO_DENOMINATOR = "A fraction's denominator cannot be 0."
-AMBIGUOUS_COMMA = (
-    "Ambiguous: {text} reads as {point} with a decimal comma and as {whole} with a "
-    "thousands separator; write {point} or {whole}."
-)
 TRUE_WORDS = {"1", "true", "on", "yes"}
-#: figures enough for any decimal to read back to the float it was written from (17 are
-#: enough for a float; the display unit's factor takes one more).
-LINK_DIGITS = 24
-#: significant digits of the longest exact decimal of a float (2**-1074 has 751).
-FLOAT_DIGITS = 800
-#: decimal exponents read exactly: wider than any float times a unit's factor.
-EXPONENT_REACH = 400
-#: the largest finite float, exactly
-MAX_FLOAT = Fraction(sys.float_info.max)
-#: a typed number read as the API reads a query parameter: ASCII decimal, finite.
-PAGE_NUMBER: TypeAdapter[float] = TypeAdapter(
-    Annotated[float, NUMBER_TEXT, Field(allow_inf_nan=False)]
-)
-
-
-def _fraction(match: re.Match[str]) -> tuple[Fraction | None, str]:
-    """The exact value of a matched fraction ('-1 1/4': -5/4), or (None, the message)."""
-    sign, whole, numerator, denominator = match.groups()
-    if int(denominator) == 0:
-        return None, ZERO_DENOMINATOR
-    value = int(whole or 0) + Fraction(int(numerator), int(denominator))
-    return (-value if sign == "-" else value), ""
-
-
-def read_exact(text: str) -> tuple[Fraction | float | None, str]:
-    """(the exact value, '') of a number text the page accepts, else (None, the message).
-
-    The API's ASCII decimals are read exactly (a float past ``EXPONENT_REACH``, which no
-    input's bounds allow); a decimal comma as the point ('20,5'), except where it could be
-    a thousands separator ('1,234'); a fraction or mixed number ('5/16', '1 1/4', '1-1/4').
-    Every accepted value is a finite float.
-
-    >>> read_exact("20,5"), read_exact("1-1/4"), read_exact("1/0")[1]
-    ((Fraction(41, 2), ''), (Fraction(5, 4), ''), "A fraction's denominator cannot be 0.")
-    """
-    text = text.strip(" \t\n\r\f\v")
-    fraction = FRACTION.fullmatch(text)
-    if fraction is not None:
-        value, error = _fraction(fraction)
-        if value is not None and not math.isfinite(float(value)):
-            return None, PLAIN_MESSAGES["finite_number"]
-        return value, error
-    if THOUSANDS.fullmatch(text):
-        point, whole = text.replace(",", ".", 1), text.replace(",", "")
-        if text.count(",") == 1:
-            return None, AMBIGUOUS_COMMA.format(text=text, point=point, whole=whole)
-        return None, f"Write {whole} without the thousands separators."
-    if DECIMAL_COMMA.fullmatch(text):
-        text = text.replace(",", ".")
-    try:
-        number = PAGE_NUMBER.validate_python(text)
-    except ValidationError as exc:
-        return None, PLAIN_MESSAGES.get(exc.errors()[0]["type"], "Enter a number.")
-    decimal = Decimal(text)
-    if not -EXPONENT_REACH <= decimal.adjusted() <= EXPONENT_REACH:
-        return number, ""
-    return Fraction(decimal), ""
-
-
-#: a curve's points (rpm, N m) as the model reads and checks them.
-CURVE: TypeAdapter[list[tuple[float, float]]] = TypeAdapter(
-    curve_type(next(f for f in FIELDS if f.kind == "curve"))
-)
-
-
-def read_number(text: str) -> tuple[float | None, str]:
-    """(the number, '') for number text the page accepts (``read_exact``), else (None, the
-    page's message).
-
-    >>> read_number(" 1e3"), read_number("1_000"), read_number("1e400"), read_number("5/16")
-    ((1000.0, ''), (None, 'Enter a number.'), (None, 'Enter a finite number.'), (0.3125, ''))
-    """
-    value, error = read_exact(text)
-    return (None, error) if value is None else (float(value), "")
 
 
 def parse_units(params: Mapping[str, str]) -> dict[str, str]:
@@ -246,16 +143,6 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
 def unit_key(quantity: Quantity) -> str:
     """The display-unit key that sets a quantity's unit ('length_unit' for a speed)."""
     return next(key for key, qs in UNIT_QUANTITIES.items() if quantity in qs)
-
-
-def sig_figures(text: str) -> int:
-    """Significant digits written in a number text (leading zeros and exponent left out).
-
-    >>> sig_figures("50"), sig_figures("0.0125"), sig_figures("1.50e3")
-    (2, 3, 3)
-    """
-    mantissa = text.strip().lower().split("e")[0].lstrip("+-")
-    return len(mantissa.replace(".", "").lstrip("0")) or 1
 
 
 def convert_text(text: str, quantity: Quantity, source: str, target: str) -> str:
@@ -426,183 +313,6 @@ def shown_inputs(inputs: Mapping[str, Any]) -> list[tuple[InputField, Any]]:
         for field in FIELDS
         if field.required or inputs[field.api] != field.default
     ]
-
-
-def _factor(field: InputField, units: Mapping[str, str]) -> Fraction:
-    """The factor from ``field``'s display unit to its API unit, as the decimal it is
-    defined as (25.4, not the binary float nearest to it); a temperature scale's exactly
-    (5/9 for °F), so that its offset cancels: 32 °F reads as 0 °C, not 1e-31."""
-    if not field.quantity:
-        return Fraction(1)
-    return _scale(field.quantity, tuple(sorted({**DEFAULT_UNITS, **units}.items())))[0]
-
-
-def _offset(field: InputField, units: Mapping[str, str]) -> Fraction:
-    """The API value at the zero of ``field``'s display unit, exactly: 0 but for °F."""
-    if not field.quantity:
-        return Fraction(0)
-    return _scale(field.quantity, tuple(sorted({**DEFAULT_UNITS, **units}.items())))[1]
-
-
-@lru_cache(maxsize=512)
-def _scale(quantity: Quantity, units: tuple[tuple[str, str], ...]) -> tuple[Fraction, Fraction]:
-    """(factor, offset) of ``quantity`` from the display ``units`` to the API's, exactly;
-    a few dozen unit choices, each worked out once (``_factor``, ``_offset``)."""
-    chosen = dict(units)
-    offset = exact_offset(quantity, chosen)
-    if offset:
-        return exact_factor(quantity, chosen), offset
-    return Fraction(repr(display_system(chosen)[quantity][1])), Fraction(0)
-
-
-def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
-    """The API value of number ``text`` the page accepts (``read_exact``), typed in
-    ``field``'s display unit: the exact number times the unit's factor, rounded once, so
-    that every API value has a text that reads back to it exactly (``link_number``). A
-    decimal beyond any float's reach (``1e-99999999``) is read as a float, without its
-    exact value.
-
-    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
-    >>> page_value(BY_PAGE["length"], "3937.0078", inch), page_value(BY_PAGE["lead"], "5/16", inch)
-    (99999.99812, 7.9375)
-    """
-    number, error = read_exact(text)
-    if number is None:
-        raise ValueError(error)
-    if isinstance(number, float):
-        return number
-    exact = number * _factor(field, units) + _offset(field, units)
-    if abs(exact) > MAX_FLOAT:  # 1e308 lbf: past every input's bounds, which the model names
-        return sys.float_info.max if exact > 0 else -sys.float_info.max
-    return float(exact)
-
-
-def _trimmed(text: str) -> str:
-    """A formatted decimal without the trailing zeros of its mantissa ('1.500e+6': '1.5e+6')."""
-    mantissa, e, exponent = text.partition("e")
-    if "." in mantissa:
-        mantissa = mantissa.rstrip("0").rstrip(".")
-    return mantissa + e + exponent
-
-
-def decimal_text(value: float, factor: Fraction, offset: Fraction = Fraction(0)) -> str:
-    """``value`` less ``offset`` over ``factor`` as the decimal with the fewest figures (6
-    at least) that reads back, times ``factor`` plus ``offset`` rounded once, to exactly
-    ``value``."""
-    if factor == 1 and offset == 0:  # the shortest text that reads back is the float's repr
-        return _trimmed(repr(value))
-    exact = (Fraction(value) - offset) / factor
-    # an offset (°F) can need every digit of the float: 1e-142 °C is 32.000...0018 °F
-    reach = LINK_DIGITS if offset == 0 else FLOAT_DIGITS
-    with localcontext(prec=reach):
-        shown = Decimal(exact.numerator) / Decimal(exact.denominator)
-    for digits in range(6, reach):
-        text = _trimmed(f"{shown:.{digits}g}")
-        if float(Fraction(Decimal(text)) * factor + offset) == value:
-            break
-    return text
-
-
-def link_number(field: InputField, value: float, units: Mapping[str, str]) -> str:
-    """A number of a link in display units, with the fewest figures (6 at least) that the
-    page reads back (``page_value``) to exactly ``value``.
-
-    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
-    >>> link_number(BY_PAGE["length"], 100000.0, inch), link_number(BY_PAGE["load"], 100.4824, {})
-    ('3937.007874015748', '100.4824')
-    """
-    units = {**DEFAULT_UNITS, **units}
-    return decimal_text(value, _factor(field, units), _offset(field, units))
-
-
-def _torque_factor(units: Mapping[str, str]) -> Fraction:
-    """The exact factor from the display torque unit to N m (a curve's torques)."""
-    return Fraction(repr(display_system({**DEFAULT_UNITS, **units})["torque"][1]))
-
-
-def curve_to_api(text: str, units: Mapping[str, str]) -> Any:
-    """A curve typed on the page, torques in the display unit, as the API's points (rpm,
-    N m), each torque its exact product rounded once; text the model refuses is passed
-    as typed, so that its message names the point.
-
-    >>> curve_to_api("0:16,3000:8", {"torque_unit": "oz_in"})
-    [[0.0, 0.1129848290276167], [3000.0, 0.05649241451380835]]
-    """
-    factor = _torque_factor(units)
-    try:
-        exact = _typed_points(text, CURVE.validate_python(text))
-    except ValidationError:
-        read = _hand_points(text)
-        if read is None:
-            return text
-        exact = read
-    return [[float(rpm), float(Fraction(torque) * factor)] for rpm, torque in exact]
-
-
-def _typed_points(
-    text: str, points: list[tuple[float, float]]
-) -> list[tuple[Fraction | float, Fraction | float]]:
-    """The model's ``points`` of ``text`` with each torque the exact value of its decimal
-    as typed, not the float nearest it: a link's torque in oz in is written so that the
-    exact product with the unit's factor rounds to the API's torque (``decimal_text``).
-
-    >>> _typed_points("0:0.1,1:2", [(0.0, 0.1), (1.0, 2.0)])
-    [(0.0, Fraction(1, 10)), (1.0, Fraction(2, 1))]
-    """
-    torques = ASCII_NUMBER.findall(text)[1::2]
-    if len(torques) != len(points) or any(
-        float(typed) != torque for typed, (_, torque) in zip(torques, points, strict=True)
-    ):
-        return [(rpm, Fraction(repr(torque))) for rpm, torque in points]
-    return [(rpm, Fraction(typed)) for typed, (rpm, _) in zip(torques, points, strict=True)]
-
-
-def _hand_points(text: str) -> list[tuple[Fraction | float, Fraction | float]] | None:
-    """A curve written by hand, a line (or ';') per point 'rpm torque', each number read
-    as the page reads one (``read_exact``: '0,5', '1/2', '1 1/4'); None if a line is not.
-
-    >>> _hand_points("0 1/2; 3000 0,25")
-    [(Fraction(0, 1), Fraction(1, 2)), (Fraction(3000, 1), Fraction(1, 4))]
-    >>> _hand_points("0 1 1/4"), _hand_points("0 x")
-    ([(Fraction(0, 1), Fraction(5, 4))], None)
-    """
-    points = []
-    for line in re.split(r"[\n;]", text):
-        if not line.strip():
-            continue
-        rpm_text, *torque_text = re.split(r"\s+", line.strip(), maxsplit=1)
-        rpm, torque = read_exact(rpm_text)[0], read_exact("".join(torque_text))[0]
-        if rpm is None or torque is None:
-            return None
-        points.append((rpm, torque))
-    return points
-
-
-def curve_text(value: Any, units: Mapping[str, str], digits: int | None = None) -> str:
-    """The API's curve (pairs, or its 'rpm:torque,...' text) with torques in the display
-    unit, each the shortest decimal that reads back to the API's torque exactly (or to
-    ``digits`` significant figures, for reading).
-
-    >>> curve_text("0:0.1129848290276167,3000:0.05649241451380835", {"torque_unit": "oz_in"})
-    '0:16,3000:8'
-    """
-    factor = _torque_factor(units)
-    points = CURVE.validate_python(value)
-    if digits is not None:
-        return ",".join(f"{rpm:g}:{sig(t / float(factor), digits)}" for rpm, t in points)
-    return ",".join(f"{exact_text(rpm)}:{decimal_text(torque, factor)}" for rpm, torque in points)
-
-
-def convert_curve(text: str, source: Mapping[str, str], target: Mapping[str, str]) -> str:
-    """A curve typed with torques in ``source``'s unit re-expressed in ``target``'s, as the
-    page writes it (a line 'rpm torque' per point); text that is no curve as typed."""
-    points = curve_to_api(text, source)
-    if isinstance(points, str):
-        try:
-            points = CURVE.validate_python(points)
-        except ValidationError:
-            return text
-    return curve_text(points, target).replace(",", "\n").replace(":", " ")
 
 
 def link_text(field: InputField, value: Any, units: Mapping[str, str]) -> str:

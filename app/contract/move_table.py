@@ -1,7 +1,7 @@
 """The page's table of moves: one row per move, one cell per value, in display units.
 
 A cell is the page field ``m<row>_<column>`` (``m0_dist``, ``m2_speed``); its number is
-read as every page number is (``app.contract.form.read_number``) in the unit of the scalar
+read as every page number is (``app.contract.exact.read_number``) in the unit of the scalar
 input it stands beside (the distance as the stroke, the load as the axial load), and the
 table's rows become the API's ``moves`` in its own units, each value exact, so that the
 share link's ``moves`` text (``app.contract.cycle.moves_text``) gives the same answer.
@@ -16,8 +16,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from app.contract.cycle import MAX_MOVES, ORDER, parse_moves_text
+from app.contract.exact import link_number, page_value, read_number
 from app.contract.fields import BY_API, FIELDS, InputField
-from app.contract.form import MOVES, link_number, page_value, read_number
+from app.contract.form import MOVES
 
 #: The submit button that adds an empty row, and the one (its value the row) that drops one.
 ADD_MOVE = "add_move"

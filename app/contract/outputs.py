@@ -14,12 +14,8 @@ from pydantic import (
 )
 
 from app.contract.inputs import ApplicationIn
-from app.contract.schemas import (
-    CandidateOut,
-    CandidateSummaryOut,
-    ProvenanceOut,
-    RejectedSummaryOut,
-)
+from app.contract.schemas import CandidateOut, CandidateSummaryOut, RejectedSummaryOut
+from app.contract.sections import ProvenanceOut
 
 #: What every response's two links are.
 SHARE_URL = "The page of the same inputs (the share link, the page's names)."

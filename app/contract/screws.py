@@ -15,8 +15,9 @@ from pydantic import (
     field_validator,
 )
 
-from app.contract.inputs import ApplicationIn, NotBool, bounded_number
-from app.contract.schemas import ProvenanceOut
+from app.contract.input_types import NotBool, bounded_number
+from app.contract.inputs import ApplicationIn
+from app.contract.sections import ProvenanceOut
 
 
 class MaterialIn(BaseModel):

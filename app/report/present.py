@@ -22,7 +22,7 @@ from app.catalog.own import (
 )
 from app.contract.fields import FIELDS
 from app.contract.outputs import ChangeOut, CountsOut, RemedyOut, SummaryOut
-from app.contract.schemas import CandidateOut, ProvenanceOut
+from app.contract.schemas import CandidateOut
 from app.contract.screws import (
     CustomScrewIn,
     MaterialIn,
@@ -30,6 +30,7 @@ from app.contract.screws import (
     NutMaterialsOut,
     NutValueOut,
 )
+from app.contract.sections import ProvenanceOut
 from app.contract.source import Writer
 from app.contract.units import DEFAULT_UNITS, api_to_si, from_si, render, sig
 from app.core.model import Provenance, ScrewSpec

@@ -14,8 +14,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from app.contract.exact import page_value
 from app.contract.fields import BY_API
-from app.contract.form import page_value, share_query
+from app.contract.form import share_query
 from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.units import sig

@@ -6,11 +6,11 @@ from collections.abc import Callable
 from typing import Any
 
 from app.contract.fields import FIELDS, InputField
-from app.contract.form import curve_text
 from app.contract.move_table import COLUMNS, shown_moves
 from app.contract.outputs import SelectOut
 from app.contract.reported import BY_KEY, REPORTED, Reported, value_of
 from app.contract.schemas import CandidateOut
+from app.contract.torque_curve import curve_text
 from app.contract.units import Display
 from app.core.checks import REGISTRY
 

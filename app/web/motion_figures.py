@@ -5,7 +5,8 @@ one cycle. Numbers come from the core's segments; nothing is recomputed here."""
 from collections.abc import Sequence
 from typing import Any
 
-from app.contract.schemas import CandidateOut, SegmentOut
+from app.contract.schemas import CandidateOut
+from app.contract.sections import SegmentOut
 from app.contract.units import Display
 from app.web.chart_style import PALETTE, axis, layout
 

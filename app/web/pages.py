@@ -9,10 +9,10 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.catalog.motors import ANY_MOTOR
+from app.contract.exact import PLAIN_MESSAGES
 from app.contract.fields import BY_PAGE, FIELDS, GROUPS
 from app.contract.form import (
     MOVES,
-    PLAIN_MESSAGES,
     TRUE_WORDS,
     UNIT_CHOICES,
     convert_entered,

@@ -19,14 +19,8 @@ from urllib.parse import urlencode
 from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 
-from app.contract.form import (
-    BOUND_MESSAGES,
-    PLAIN_MESSAGES,
-    convert_text,
-    decimal_text,
-    read_exact,
-    unit_key,
-)
+from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
+from app.contract.form import BOUND_MESSAGES, convert_text, unit_key
 from app.contract.screws import CustomScrewIn, MaterialIn
 from app.contract.units import (
     API_UNIT_QUANTITY,

@@ -19,7 +19,8 @@ from pydantic import BaseModel
 
 from app.catalog import Catalog, load_catalog
 from app.contract.fields import BY_API, FIELDS
-from app.contract.inputs import ApplicationIn, describe
+from app.contract.input_types import describe
+from app.contract.inputs import ApplicationIn
 from app.contract.outputs import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 from app.core.model import ProvenanceKind
 from tests.leadscrews import leadscrew_families

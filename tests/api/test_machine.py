@@ -5,27 +5,7 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 
-Z = {
-    "load_n": 0,
-    "moving_mass_kg": 0.5,
-    "speed_mm_s": 10,
-    "length_mm": 250,
-    "accel_mm_s2": 200,
-    "orientation": "vertical",
-    "stroke_mm": 200,
-    "lead_mm": 8,
-    "motor": "17hs19-2004s1",
-    "brake_torque_nm": 0.1,
-}
-X = {
-    "load_n": 0,
-    "moving_mass_kg": 0.8,
-    "speed_mm_s": 100,
-    "length_mm": 400,
-    "accel_mm_s2": 1000,
-    "stroke_mm": 300,
-    "motor": "17hs19-2004s1",
-}
+from tests.machine_axes import X, Z
 
 
 def printer(**z: Any) -> dict[str, Any]:

@@ -22,16 +22,11 @@ from hypothesis import strategies as st
 from pydantic import BaseModel, ValidationError
 
 import app.contract.schemas
+import app.contract.sections
 from app.catalog import Catalog
+from app.contract.exact import link_number, page_value, read_number
 from app.contract.fields import BY_API, BY_PAGE, FIELDS, GROUPS, InputField
-from app.contract.form import (
-    link_number,
-    page_value,
-    parse_inputs,
-    parse_units,
-    read_number,
-    share_query,
-)
+from app.contract.form import parse_inputs, parse_units, share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.move_table import ADD_MOVE, REMOVE_MOVE, is_cell
 from app.contract.units import (
@@ -448,7 +443,8 @@ def test_page_and_api_agree_on_any_number_text(client: TestClient, text: str) ->
 def _output_field_names() -> set[str]:
     """Field names of the API's output models (…Out): an input name that is also one of
     these is spelled by the output side for the output's own meaning."""
-    models = [m for m in vars(app.contract.schemas).values() if isinstance(m, type)]
+    spaces = (vars(app.contract.schemas), vars(app.contract.sections))
+    models = [m for space in spaces for m in space.values() if isinstance(m, type)]
     outputs = [m for m in models if issubclass(m, BaseModel) and m.__name__.endswith("Out")]
     return {name for model in outputs for name in model.model_fields}
 

@@ -8,8 +8,8 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 
-from app.contract.form import curve_to_api
 from app.contract.inputs import ApplicationIn
+from app.contract.torque_curve import curve_to_api
 
 PASSED = re.compile(r'class="count-passed">(\d+)<')
 SHARE = re.compile(r'class="share-link" href="([^"]+)"')

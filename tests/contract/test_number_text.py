@@ -15,14 +15,9 @@ from fastapi.testclient import TestClient
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from app.contract.exact import ZERO_DENOMINATOR, page_value, read_exact, read_number
 from app.contract.fields import BY_PAGE
-from app.contract.form import (
-    ZERO_DENOMINATOR,
-    page_value,
-    parse_inputs,
-    read_exact,
-    read_number,
-)
+from app.contract.form import parse_inputs
 from app.contract.units import DEFAULT_UNITS
 
 INCH = {**DEFAULT_UNITS, "length_unit": "in"}

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.catalog.motors import MAX_STEPPER_RPM
-from app.contract.inputs import _curve_points
+from app.contract.input_types import _curve_points
 from app.core.formulas import stepper
 from tests.motor_library import MOTORS
 

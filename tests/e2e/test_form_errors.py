@@ -20,7 +20,7 @@ TOPS = """() => Object.fromEntries(
 #: the error lines showing a message: id -> text
 SHOWN = """() => Object.fromEntries([...document.querySelectorAll('#selector span.error')]
   .filter(s => s.textContent.trim()).map(s => [s.id, s.textContent]))"""
-#: the ambiguous-comma message (app.contract.form.AMBIGUOUS_COMMA) runs to two lines or more
+#: the ambiguous-comma message (app.contract.exact.AMBIGUOUS_COMMA) runs to two lines or more
 AMBIGUOUS = "1,234"
 
 

@@ -6,12 +6,11 @@ from urllib.parse import urlencode
 from fastapi.testclient import TestClient
 
 from app.web.machine import link_query
+from tests import machine_axes
 
-Z = (
-    "/?load=0&moving_mass_kg=0.5&speed=10&length=250&accel=200&orientation=vertical"
-    "&stroke=200&lead=8&motor=17hs19-2004s1&brake_torque=0.1"
-)
-X = "load=0&moving_mass_kg=0.8&speed=100&length=400&accel=1000&stroke=300&motor=17hs19-2004s1"
+#: the axes' selector links, the first a whole link and the second its query alone
+Z = "/?" + machine_axes.page_query(machine_axes.Z)
+X = machine_axes.page_query(machine_axes.X)
 AXES = {"name1": "Z", "link1": Z, "frame1": "0.3", "motor1": "0.4", "name2": "X", "link2": X}
 
 
@@ -30,31 +29,10 @@ def test_the_page_sizes_each_axis_with_the_axes_above(client: TestClient) -> Non
     page = client.get("/machine?" + urlencode(AXES))
     assert page.status_code == 200
     z, x = rows(page.text)
-    z_in = {
-        "load_n": 0,
-        "moving_mass_kg": 0.5,
-        "speed_mm_s": 10,
-        "length_mm": 250,
-        "accel_mm_s2": 200,
-        "orientation": "vertical",
-        "stroke_mm": 200,
-        "lead_mm": 8,
-        "motor": "17hs19-2004s1",
-        "brake_torque_nm": 0.1,
-    }
-    x_in = {
-        "load_n": 0,
-        "moving_mass_kg": 0.8,
-        "speed_mm_s": 100,
-        "length_mm": 400,
-        "accel_mm_s2": 1000,
-        "stroke_mm": 300,
-        "motor": "17hs19-2004s1",
-    }
     body = {
         "axes": [
-            {"name": "Z", "inputs": z_in, "frame_kg": 0.3, "motor_kg": 0.4},
-            {"name": "X", "inputs": x_in},
+            {"name": "Z", "inputs": machine_axes.Z, "frame_kg": 0.3, "motor_kg": 0.4},
+            {"name": "X", "inputs": machine_axes.X},
         ]
     }
     api = client.post("/api/v1/machine", json=body).json()["axes"]

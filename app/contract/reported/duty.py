@@ -1,0 +1,111 @@
+"""The output table's rows of life and duty: the nut's life, and the energy of one
+cycle (the motor's work, braking, the work on the load, the losses)."""
+
+from app.contract.reported.row import Formula, Reported
+from app.contract.source import From
+from app.core import motion
+from app.core.formulas import energy, life
+
+ROWS: tuple[Reported, ...] = (
+    Reported(
+        "life.years",
+        "Life",
+        "Expected wear life: years at your stroke and cycles per day, else million cm of travel.",
+        unit="years",
+        better="higher",
+        cell="life",
+        column=True,
+        note="years or travel",
+        unit_heading=False,
+        css="life",
+        ranks=("life",),
+        csv=True,
+        compare=True,
+        formula=Formula(life.life_years),
+        views=("summary",),
+    ),
+    Reported(
+        "life.travel_million_cm",
+        "Rated travel",
+        "The nut's life as travel: the seed's rating, else its wear life by Archard's law.",
+        unit="million cm",
+        better="higher",
+        cell="band",
+        compare=True,
+    ),
+    *(
+        Reported(
+            key,
+            label,
+            help,
+            quantity="energy",
+            better="lower" if key != "cycle_regen_j" else None,
+            csv=True,
+            compare=True,
+            formula=Formula(function, text, source) if text else Formula(function),
+            source=From("quantities." + key, "energy"),
+        )
+        for key, label, help, function, text, source in (
+            (
+                "cycle_motor_work_j",
+                "Motor work per cycle",
+                "Given a move: the work the motor gives at its shaft in one cycle, summed over "
+                "the segments where it drives (torque times the turns).",
+                energy.shaft_energy,
+                "E = sum max(0, T_i 2 pi x_i / lead) over the segments",
+                "work of a constant torque over the turns",
+            ),
+            (
+                "cycle_regen_j",
+                "Braking energy per cycle",
+                "Given a move: the energy braking gives back to the drive in one cycle, where "
+                "the motor holds back a decelerating mass or a descending load, before the "
+                "drive's own losses (a drive without a regenerative path burns it in a "
+                "resistor).",
+                energy.shaft_energy,
+                "E = sum max(0, -T_i 2 pi x_i / lead) over the segments",
+                "work of a constant torque over the turns",
+            ),
+            (
+                "cycle_load_work_j",
+                "Work on the load per cycle",
+                "Given a move: the work done on the load in one cycle, sum F x over the "
+                "segments: the external loads and the weight raised less the weight lowered "
+                "(the moving mass's kinetic energy cancels over each move).",
+                motion.cycle_energy,
+                "W = sum F_i x_i over the moving segments",
+                "work of a force",
+            ),
+            (
+                "cycle_thread_loss_j",
+                "Thread friction loss per cycle",
+                "Given a move: the energy the thread's friction turns into heat in one cycle, "
+                "F x (1/eta - 1) where the motor drives and |F| x (1 - eta_b) where the load "
+                "does.",
+                energy.thread_loss,
+                "",
+                "",
+            ),
+            (
+                "cycle_drag_loss_j",
+                "Drag loss per cycle",
+                "Given a move: the nut's drag torque times the turns of one cycle (the top of "
+                "the series' drag range).",
+                energy.shaft_energy,
+                "E = T_drag 2 pi sum x_i / lead",
+                "work of a constant torque over the turns",
+            ),
+            (
+                "cycle_copper_loss_j",
+                "Copper loss per cycle",
+                "Given a move and a stepper's phase current and winding resistance: the heat "
+                "of its two windings over the whole cycle, 2 I_rms² R t, the drive holding "
+                "the current at rest too (empty for a servo, whose torque constant is not an "
+                "input).",
+                energy.stepper_copper_loss,
+                "",
+                "",
+            ),
+        )
+    ),
+)
