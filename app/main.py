@@ -19,7 +19,7 @@ from app.server.overload import NEVER_SHED, OverloadMiddleware
 from app.server.security import SecurityMiddleware
 from app.server.settings import Settings, get_settings
 from app.server.staticfiles import PrecompressedStaticFiles
-from app.web import custom, guide, machine, pages, report_page
+from app.web import result_parts, custom, guide, machine, pages, report_page
 from app.web.errors import app_error_handler, http_error_handler, validation_error_handler
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
@@ -53,6 +53,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(custom.router)
     app.include_router(machine.router)
     app.include_router(report_page.router)
+    app.include_router(result_parts.router)
     app.include_router(guide.router)
     app.include_router(docs.router)
     app.mount("/static", PrecompressedStaticFiles(directory=resource_dir("static")), name="static")
