@@ -215,7 +215,8 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     context["share_url"] = "/?" + context["query"]
     context["compare_fields"] = parse_qsl(context["query"])
     context["versus_url"] = versus_url(inputs, units) if kinds_offered(inputs, catalog) else None
-    context["charted"] = bool(chart_candidates(result)[0])
+    charted, context["charting_passed"] = chart_candidates(result)
+    context["charted"] = bool(charted)
     context["rejected_groups"] = rejected_groups(rejected)
     rank_by = str(inputs.model_dump()["rank_by"])
     text = BY_PAGE["rank_by"].choice_text(rank_by)
