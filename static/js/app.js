@@ -173,20 +173,30 @@
       });
   }
 
+  // a kept chart whose new figure is the one it shows (an edit the chart does not depend
+  // on: the stroke for the critical speed) is put back as it is, not drawn again
   function plot(script) {
     var target = document.getElementById(script.dataset.chart);
     if (!target || target.classList.contains("js-plotly-plot")) {
       return;
     }
-    var figure = JSON.parse(script.textContent);
-    var config = Object.assign({}, PLOT_CONFIG, {
-      toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
-    });
+    var text = script.textContent;
     var kept = keptCharts[target.id];
     if (kept) {
       delete keptCharts[target.id];
       target.replaceWith(kept);
-      window.Plotly.react(kept, figure.data, figure.layout, config);
+      target = kept;
+      if (kept.figureText === text) {
+        return;
+      }
+    }
+    var figure = JSON.parse(text);
+    var config = Object.assign({}, PLOT_CONFIG, {
+      toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
+    });
+    target.figureText = text;
+    if (kept) {
+      window.Plotly.react(target, figure.data, figure.layout, config);
     } else {
       window.Plotly.newPlot(target, figure.data, figure.layout, config);
     }
