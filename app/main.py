@@ -19,15 +19,17 @@ from app.server.overload import NEVER_SHED, OverloadMiddleware
 from app.server.security import SecurityMiddleware
 from app.server.settings import Settings, get_settings
 from app.server.staticfiles import PrecompressedStaticFiles
-from app.web import result_parts, custom, guide, machine, pages, report_page
+from app.web import custom, guide, machine, pages, report_page, result_parts
 from app.web.errors import app_error_handler, http_error_handler, validation_error_handler
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
-CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
+CACHED_PATHS = frozenset(
+    {"/", "/detail", "/charts", "/rejected", "/api/v1/select", "/export.csv", "/export.json"}
+)
 #: GET routes whose response depends on nothing in the request: one entry for any query.
 QUERY_FREE_PATHS = frozenset({"/catalog", "/guide", "/validation"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
-FRAGMENT_PATHS = frozenset({"/", "/detail"})
+FRAGMENT_PATHS = frozenset({"/", "/detail", "/charts", "/rejected"})
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:

@@ -53,8 +53,8 @@ def test_charts_arrive_after_the_table_and_draw_in_view_first(
     assert 1 <= drawn["drawn"] <= len(shown)
     for chart in shown:
         assert page.locator(f"#{chart} .main-svg").count() >= 1
-    # a chart out of view draws when scrolled to; the torque chart answers the new load: its load torque is 1.5 times the old (the
-    # load torque F l / (2 pi eta) is proportional to F)
+    # a chart out of view draws when scrolled to; the torque chart answers the new load:
+    # its load torque is 1.5 times the old (F l / (2 pi eta) is proportional to F)
     page.evaluate("() => document.getElementById('chart-torque').scrollIntoView()")
     page.wait_for_function("() => document.getElementById('chart-torque').data")
     after = page.evaluate(LOAD_TORQUE)
