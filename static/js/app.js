@@ -537,6 +537,10 @@
       target.classList.remove("stale");
       var charts = target.querySelector("section.charts");
       chartsHeight = charts ? charts.offsetHeight : 0;
+      var url = chartsUrl(event.detail.serverResponse);
+      if (url) {
+        askCharts(url);
+      }
       keepCharts(target);
     }
   }
@@ -544,6 +548,48 @@
   // the new results' charts arrive after them (/charts): until then their place keeps the
   // old charts' height, so nothing below them moves, nor the page under the reader
   var chartsHeight = 0;
+
+  // an answer's charts are asked for (/charts, its query) as soon as the answer arrives, so
+  // the server computes them while the table is swapped in and painted; they take their
+  // place once both are done
+  var chartsAsked = {};
+
+  function askCharts(url) {
+    if (!chartsAsked[url]) {
+      chartsAsked = {};
+      chartsAsked[url] = fetch(url, { headers: { "HX-Request": "true" } }).then(function (response) {
+        return response.ok ? response.text() : Promise.reject(new Error(response.statusText));
+      });
+    }
+    return chartsAsked[url];
+  }
+
+  function chartsUrl(answer) {
+    var found = /id="charts-slot"[^>]* data-src="([^"]+)"/.exec(answer);
+    return found ? found[1].replace(/&amp;/g, "&") : null;
+  }
+
+  function loadCharts() {
+    var slot = document.getElementById("charts-slot");
+    if (!slot || slot.hasAttribute("data-asked")) {
+      return;
+    }
+    slot.setAttribute("data-asked", "");
+    askCharts(slot.dataset.src).then(
+      function (html) {
+        var holder = document.createElement("div");
+        holder.innerHTML = html;
+        var section = holder.querySelector("section.charts");
+        if (slot.isConnected && section) {
+          slot.replaceWith(section);
+          drawCharts(document);
+        }
+      },
+      function () {
+        slot.removeAttribute("data-asked");
+      }
+    );
+  }
 
   function holdChartsPlace() {
     var slot = document.getElementById("charts-slot");
@@ -633,12 +679,14 @@
   function afterSwap() {
     labelCells();
     holdChartsPlace();
+    loadCharts();
     quietAnswer = false;
     showErrors();
     syncInvalid();
   }
 
   document.addEventListener("DOMContentLoaded", function () {
+    loadCharts();
     startErrors();
     refresh();
   });

@@ -101,11 +101,11 @@ def test_full_page_renders_results_table_charts_and_counts(client: TestClient) -
     assert page.select_one(".count-evaluated").text == str(counts["evaluated"])
     assert page.select_one(".count-passed").text == str(counts["passed"])
     assert page.select_one(".count-rejected").text == str(counts["rejected"])
-    # the charts load after the table, from /charts with the same query (htmx, or the link)
+    # the charts load after the table, from /charts with the same query (app.js, or the link)
     assert not page.select("script[type='application/json'][data-chart]")
-    slot = page.select_one("section#charts-slot[hx-trigger=load]")
+    slot = page.select_one("section#charts-slot[data-src]")
     charts_url = "/charts?load=100&lead=10&speed=50&length=500"
-    assert slot["hx-get"] == slot.select_one("a[href]")["href"] == charts_url
+    assert slot["data-src"] == slot.select_one("a[href]")["href"] == charts_url
     part = soup(client.get(charts_url, headers=HX))
     assert not part.select("html, h1") and part.select_one("section.charts")
     charts = part.select("script[type='application/json'][data-chart]")
