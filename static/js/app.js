@@ -1,12 +1,14 @@
 /*
- * The page's one script. Draws every chart from its <script type="application/json">
- * figure (on load and after each htmx swap, once the table is painted, one chart a task,
- * those in view first), loading Plotly only when the first chart arrives so the empty
- * form stays light, shows each field's error once the field has been left or the form
- * submitted and keeps aria-invalid in step with it, copies share links, lets a click on a result
- * row open its detail (whose body htmx loads on first opening), marks a detail busy while
- * it loads, keeps the last results (dimmed) while a field is being retyped, and sizes
- * the charts and dates the printed report. Nothing here is needed for the form to work.
+ * The page's one script. Fetches a result's charts (/charts) as soon as its answer arrives
+ * and draws each from its <script type="application/json"> figure, one a task once the
+ * table is painted: those in view at once, the others when scrolled to or once no field
+ * has been edited for a moment. Loads Plotly only when the first chart arrives so the
+ * empty form stays light, shows each field's error once the field has been left or the
+ * form submitted and keeps aria-invalid in step with it, copies share links, lets a click
+ * on a result row open its detail, loads a detail's body (and the rejected list) on first
+ * opening and marks it busy meanwhile, writes each cell's phone label from its column's
+ * heading, keeps the last results (dimmed) while a field is being retyped, and sizes the
+ * charts and dates the printed report. Nothing here is needed for the form to work.
  */
 (function () {
   "use strict";
