@@ -25,19 +25,23 @@ from app.server.overload import (
 from app.server.security import SecurityMiddleware
 from app.server.settings import Settings, get_settings
 from app.server.staticfiles import PrecompressedStaticFiles
-from app.web import custom, guide, machine, pages, report_page
+from app.web import custom, guide, machine, pages, report_page, result_parts
 from app.web.errors import app_error_handler, http_error_handler, validation_error_handler
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
-CACHED_PATHS = frozenset({"/", "/detail", "/api/v1/select", "/export.csv", "/export.json"})
+CACHED_PATHS = frozenset(
+    {"/", "/detail", "/charts", "/rejected", "/api/v1/select", "/export.csv", "/export.json"}
+)
 #: GET routes whose response depends on nothing in the request: one entry for any query.
 QUERY_FREE_PATHS = frozenset({"/catalog", "/guide", "/validation"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
-FRAGMENT_PATHS = frozenset({"/", "/detail"})
+FRAGMENT_PATHS = frozenset({"/", "/detail", "/charts", "/rejected"})
 #: What each costly route's query states it costs, read before its input is validated: a
 #: flood of them is shed for the price of reading a query (app.server.overload).
 STATED_COSTS = {
     "/": page_stated_units,
+    "/charts": page_stated_units,
+    "/rejected": page_stated_units,
     "/api/v1/select": select_stated_units,
     "/export.csv": full_form_stated_units,
     "/export.json": full_form_stated_units,
@@ -67,6 +71,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.include_router(custom.router)
     app.include_router(machine.router)
     app.include_router(report_page.router)
+    app.include_router(result_parts.router)
     app.include_router(guide.router)
     app.include_router(docs.router)
     app.mount("/static", PrecompressedStaticFiles(directory=resource_dir("static")), name="static")

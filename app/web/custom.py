@@ -24,8 +24,9 @@ from app.server.errors import AppError
 from app.server.headers import is_htmx_fragment
 from app.server.responses import ModelJSON
 from app.web.export import candidate_csv
-from app.web.figures import critical_speed_figure, pv_figure, torque_figure
+from app.web.figures import critical_speed_figure, torque_figure
 from app.web.pages import REQUIRED, form_context, parse_page
+from app.web.pressure_figures import pv_figure
 from app.web.screw_form import (
     BY_NAME,
     DEFAULT_MATERIAL,

@@ -63,7 +63,7 @@ from app.web.advice import check_label, no_pass_advice
 from app.web.catalog_view import KEY_FIELDS, family_sections
 from app.web.compare import compare_rows
 from app.web.export import results_csv
-from app.web.figures import chart_candidates, result_figures
+from app.web.figures import chart_candidates
 from app.web.screw_form import catalog_screw_query
 from app.web.templating import templates
 from app.web.versus import versus_rows
@@ -150,6 +150,7 @@ def form_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
         "share_url": None,
         "query": "",
         "figures": {},
+        "charted": False,
         "charting_passed": True,
         "converted": converted,
         "d": Display(units),
@@ -214,8 +215,8 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     context["share_url"] = "/?" + context["query"]
     context["compare_fields"] = parse_qsl(context["query"])
     context["versus_url"] = versus_url(inputs, units) if kinds_offered(inputs, catalog) else None
-    context["figures"] = result_figures(result, units, catalog)
-    context["charting_passed"] = chart_candidates(result)[1]
+    charted, context["charting_passed"] = chart_candidates(result)
+    context["charted"] = bool(charted)
     context["rejected_groups"] = rejected_groups(rejected)
     rank_by = str(inputs.model_dump()["rank_by"])
     text = BY_PAGE["rank_by"].choice_text(rank_by)
@@ -280,6 +281,7 @@ def _selector_page(
     if inputs is not None:
         page_results(context, inputs, catalog)
     fragment = _is_fragment(request)
+    context["fragment"] = fragment
     response = templates.TemplateResponse(
         request, "partials/htmx_response.html" if fragment else "index.html", context
     )

@@ -1,12 +1,14 @@
 /*
- * The page's one script. Draws every chart from its <script type="application/json">
- * figure (on load and after each htmx swap, once the table is painted, one chart a task,
- * those in view first), loading Plotly only when the first chart arrives so the empty
- * form stays light, shows each field's error once the field has been left or the form
- * submitted and keeps aria-invalid in step with it, copies share links, lets a click on a result
- * row open its detail (whose body htmx loads on first opening), marks a detail busy while
- * it loads, keeps the last results (dimmed) while a field is being retyped, and sizes
- * the charts and dates the printed report. Nothing here is needed for the form to work.
+ * The page's one script. Fetches a result's charts (/charts) as soon as its answer arrives
+ * and draws each from its <script type="application/json"> figure, one a task once the
+ * table is painted: those in view at once, the others when scrolled to or once no field
+ * has been edited for a moment. Loads Plotly only when the first chart arrives so the
+ * empty form stays light, shows each field's error once the field has been left or the
+ * form submitted and keeps aria-invalid in step with it, copies share links, lets a click
+ * on a result row open its detail, loads a detail's body (and the rejected list) on first
+ * opening and marks it busy meanwhile, writes each cell's phone label from its column's
+ * heading, keeps the last results (dimmed) while a field is being retyped, and sizes the
+ * charts and dates the printed report. Nothing here is needed for the form to work.
  */
 (function () {
   "use strict";
@@ -20,13 +22,13 @@
 
   // Plotly is large: fetch it (a 'self' script, as the CSP allows) once charts need it
   function loadPlotly() {
-    var results = document.getElementById("results");
-    if (plotlyLoading || !results || !results.dataset.plotly) {
+    var holder = document.querySelector("[data-plotly]");
+    if (plotlyLoading || !holder) {
       return;
     }
     plotlyLoading = true;
     var script = document.createElement("script");
-    script.src = results.dataset.plotly;
+    script.src = holder.dataset.plotly;
     script.addEventListener("load", function () {
       drawCharts(document);
     });
@@ -34,8 +36,16 @@
   }
 
   // charts wait for the table to be painted, then draw one a task (a keystroke is not held
-  // up behind all of them), those in view first
+  // up behind all of them). Those in view draw at once, and "charts:drawn" says how many
+  // (an answer is finished when they are); the others draw as they are scrolled into view,
+  // or once no field has been edited for QUIET_MS
+  var QUIET_MS = 500;
   var chartQueue = [];
+  var waiting = [];
+  var drawing = false;
+  var drawnInView = 0;
+  var quietTimer = null;
+  var watcher = window.IntersectionObserver ? new IntersectionObserver(onSeen) : null;
 
   function drawCharts(root) {
     var figures = root.querySelectorAll('script[type="application/json"][data-chart]');
@@ -46,72 +56,149 @@
       loadPlotly();
       return;
     }
-    var queued = chartQueue.length;
     var wanted = {};
+    var added = false;
     figures.forEach(function (script) {
       var target = document.getElementById(script.dataset.chart);
       if (!target || target.classList.contains("js-plotly-plot")) {
         return;
       }
       wanted[target.id] = true;
-      if (chartQueue.indexOf(script) < 0) {
+      if (chartQueue.indexOf(script) >= 0 || waiting.indexOf(script) >= 0) {
+        return;
+      }
+      added = true;
+      if (inView(target)) {
         chartQueue.push(script);
+      } else {
+        waiting.push(script);
+        if (watcher) {
+          watcher.observe(target);
+        }
       }
     });
     releaseKeptCharts(wanted);
-    if (!queued && chartQueue.length) {
-      requestAnimationFrame(function () {
-        setTimeout(drawNextChart);
-      });
+    if (added) {
+      startDrawing();
     }
   }
 
-  function inView(script) {
-    var box = document.getElementById(script.dataset.chart).getBoundingClientRect();
+  function inView(target) {
+    var box = target.getBoundingClientRect();
     return box.bottom > 0 && box.top < window.innerHeight;
   }
 
-  function drawNextChart() {
-    chartQueue = chartQueue.filter(function (script) {
-      return script.isConnected;
-    });
-    if (!chartQueue.length) {
-      return;
-    }
-    var visible = chartQueue.filter(inView);
-    var script = visible.length ? visible[0] : chartQueue[0];
-    chartQueue.splice(chartQueue.indexOf(script), 1);
-    plot(script);
-    if (chartQueue.length) {
-      setTimeout(drawNextChart);
-    } else {
-      document.dispatchEvent(new CustomEvent("charts:drawn"));
-    }
+  function connected(script) {
+    return script.isConnected;
   }
 
-  // every chart waiting in the queue, now (the printout needs them all)
-  function drawAllCharts() {
-    chartQueue.splice(0).forEach(function (script) {
-      if (script.isConnected) {
-        plot(script);
+  function startDrawing() {
+    if (drawing) {
+      return;
+    }
+    drawing = true;
+    requestAnimationFrame(function () {
+      setTimeout(drawNextChart);
+    });
+  }
+
+  function drawNextChart() {
+    chartQueue = chartQueue.filter(connected);
+    var script = chartQueue.shift();
+    if (script) {
+      plot(script);
+      drawnInView += 1;
+    }
+    if (chartQueue.length) {
+      setTimeout(drawNextChart);
+      return;
+    }
+    drawing = false;
+    var detail = { drawn: drawnInView, waiting: waiting.filter(connected).length };
+    drawnInView = 0;
+    document.dispatchEvent(new CustomEvent("charts:drawn", { detail: detail }));
+    waitForQuiet();
+  }
+
+  // a waiting chart scrolled into view joins the queue
+  function onSeen(entries) {
+    entries.forEach(function (entry) {
+      if (!entry.isIntersecting) {
+        return;
+      }
+      watcher.unobserve(entry.target);
+      var script = waiting.filter(function (s) {
+        return s.dataset.chart === entry.target.id && s.isConnected;
+      })[0];
+      if (script) {
+        waiting.splice(waiting.indexOf(script), 1);
+        chartQueue.push(script);
+        startDrawing();
       }
     });
   }
 
+  function waitForQuiet() {
+    clearTimeout(quietTimer);
+    quietTimer = waiting.length ? setTimeout(drawRest, QUIET_MS) : null;
+  }
+
+  // the charts out of view, one a task, while no field is edited
+  function drawRest() {
+    waiting = waiting.filter(connected);
+    var script = waiting.shift();
+    if (!script) {
+      return;
+    }
+    unwatch(script);
+    plot(script);
+    quietTimer = waiting.length ? setTimeout(drawRest) : null;
+  }
+
+  function unwatch(script) {
+    var target = document.getElementById(script.dataset.chart);
+    if (watcher && target) {
+      watcher.unobserve(target);
+    }
+  }
+
+  // every chart not yet drawn, now (the printout needs them all)
+  function drawAllCharts() {
+    chartQueue
+      .splice(0)
+      .concat(waiting.splice(0))
+      .forEach(function (script) {
+        if (script.isConnected) {
+          unwatch(script);
+          plot(script);
+        }
+      });
+  }
+
+  // a kept chart whose new figure is the one it shows (an edit the chart does not depend
+  // on: the stroke for the critical speed) is put back as it is, not drawn again
   function plot(script) {
     var target = document.getElementById(script.dataset.chart);
     if (!target || target.classList.contains("js-plotly-plot")) {
       return;
     }
-    var figure = JSON.parse(script.textContent);
-    var config = Object.assign({}, PLOT_CONFIG, {
-      toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
-    });
+    var text = script.textContent;
     var kept = keptCharts[target.id];
     if (kept) {
       delete keptCharts[target.id];
       target.replaceWith(kept);
-      window.Plotly.react(kept, figure.data, figure.layout, config);
+      target = kept;
+      if (kept.figureText === text) {
+        return;
+      }
+    }
+    var figure = JSON.parse(text);
+    var config = Object.assign({}, PLOT_CONFIG, {
+      toImageButtonOptions: { format: "png", filename: script.dataset.chart, scale: 2 },
+    });
+    target.figureText = text;
+    if (kept) {
+      window.Plotly.react(target, figure.data, figure.layout, config);
     } else {
       window.Plotly.newPlot(target, figure.data, figure.layout, config);
     }
@@ -343,19 +430,35 @@
       onCopy(button);
       return;
     }
-    var row = event.target.closest("tr.main[data-detail]");
+    var row = event.target.closest("tbody.candidate > tr.main");
     if (row && !event.target.closest("a, button, summary, input, select, label")) {
-      var detail = document.getElementById(row.dataset.detail);
+      var detail = row.parentElement.querySelector("details.detail");
       if (detail) {
         detail.open = !detail.open;
       }
     }
   }
 
-  // a result's <details class="detail"> loads its body from /detail when first opened
+  // a result's <details class="detail"> loads its body when first opened, from the link it
+  // holds for a reader without JavaScript (the same /detail URL, answered as a fragment)
+  // (the rejected list likewise, from /rejected)
+  function onToggle(event) {
+    var detail = event.target;
+    if (!detail.matches || !detail.matches("details.detail, details.rejected") || !detail.open) {
+      return;
+    }
+    var body = detail.querySelector(":scope > .pending");
+    var link = body && body.querySelector("a[href]");
+    if (!link || !window.htmx || detail.hasAttribute("data-asked")) {
+      return;
+    }
+    detail.setAttribute("data-asked", "");
+    window.htmx.ajax("GET", link.getAttribute("href"), { source: detail, target: body, swap: "outerHTML" });
+  }
+
   function markLoading(event) {
     var detail = event.detail.elt;
-    if (detail.matches("details.detail")) {
+    if (detail.matches("details.detail, details.rejected")) {
       if (event.type === "htmx:beforeRequest") {
         detail.setAttribute("aria-busy", "true");
       } else {
@@ -400,6 +503,8 @@
   function countEdit(event) {
     if (event.target.form === selectorForm()) {
       edits += 1;
+      clearTimeout(quietTimer);
+      quietTimer = null;
     }
   }
 
@@ -432,8 +537,68 @@
       note.hidden = false;
     } else {
       target.classList.remove("stale");
+      var charts = target.querySelector("section.charts");
+      chartsHeight = charts ? charts.offsetHeight : 0;
+      var url = chartsUrl(event.detail.serverResponse);
+      if (url) {
+        askCharts(url);
+      }
       keepCharts(target);
     }
+  }
+
+  // the new results' charts arrive after them (/charts): until then their place keeps the
+  // old charts' height, so nothing below them moves, nor the page under the reader
+  var chartsHeight = 0;
+
+  // an answer's charts are asked for (/charts, its query) as soon as the answer arrives, so
+  // the server computes them while the table is swapped in and painted; they take their
+  // place once both are done
+  var chartsAsked = {};
+
+  function askCharts(url) {
+    if (!chartsAsked[url]) {
+      chartsAsked = {};
+      chartsAsked[url] = fetch(url, { headers: { "HX-Request": "true" } }).then(function (response) {
+        return response.ok ? response.text() : Promise.reject(new Error(response.statusText));
+      });
+    }
+    return chartsAsked[url];
+  }
+
+  function chartsUrl(answer) {
+    var found = /id="charts-slot"[^>]* data-src="([^"]+)"/.exec(answer);
+    return found ? found[1].replace(/&amp;/g, "&") : null;
+  }
+
+  function loadCharts() {
+    var slot = document.getElementById("charts-slot");
+    if (!slot || slot.hasAttribute("data-asked")) {
+      return;
+    }
+    slot.setAttribute("data-asked", "");
+    askCharts(slot.dataset.src).then(
+      function (html) {
+        var holder = document.createElement("div");
+        holder.innerHTML = html;
+        var section = holder.querySelector("section.charts");
+        if (slot.isConnected && section) {
+          slot.replaceWith(section);
+          drawCharts(document);
+        }
+      },
+      function () {
+        slot.removeAttribute("data-asked");
+      }
+    );
+  }
+
+  function holdChartsPlace() {
+    var slot = document.getElementById("charts-slot");
+    if (slot && chartsHeight) {
+      slot.style.minHeight = chartsHeight + "px";
+    }
+    chartsHeight = 0;
   }
 
   // the swap replaces the charts: each drawn chart is taken out of the old results first
@@ -497,13 +662,33 @@
   }
 
   // the new errors and their aria-invalid in the swap's own task, before it is painted
+  // an HTMX answer writes each cell's label (shown above its value on a phone) once, on
+  // its column's heading: each cell takes its heading's
+  function labelCells() {
+    document.querySelectorAll("table.candidates").forEach(function (table) {
+      var heads = table.querySelectorAll("thead th");
+      table.querySelectorAll("tr.main").forEach(function (row) {
+        Array.prototype.forEach.call(row.children, function (cell, i) {
+          var label = heads[i] && heads[i].dataset.label;
+          if (label && cell.tagName === "TD" && !cell.hasAttribute("data-label")) {
+            cell.setAttribute("data-label", label);
+          }
+        });
+      });
+    });
+  }
+
   function afterSwap() {
+    labelCells();
+    holdChartsPlace();
+    loadCharts();
     quietAnswer = false;
     showErrors();
     syncInvalid();
   }
 
   document.addEventListener("DOMContentLoaded", function () {
+    loadCharts();
     startErrors();
     refresh();
   });
@@ -512,6 +697,7 @@
   document.addEventListener("submit", onSubmit, true);
   document.addEventListener("htmx:afterSettle", refresh);
   document.addEventListener("click", onClick);
+  document.addEventListener("toggle", onToggle, true);
   document.addEventListener("htmx:beforeSwap", keepStaleResults);
   document.addEventListener("htmx:beforeRequest", markLoading);
   document.addEventListener("htmx:beforeRequest", stampRequest);

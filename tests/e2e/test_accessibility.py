@@ -155,11 +155,20 @@ def visit(path: str, ready: str = "main") -> Callable[[Any, str], None]:
     return go
 
 
+def parts_loaded(page: Any, base: str) -> None:
+    """The results with the parts loaded after the table: the charts, the rejected list."""
+    page.goto(f"{base}/?{AXIS}")
+    page.wait_for_selector("section.charts .chart-grid")
+    page.click("details.rejected > summary")
+    page.wait_for_selector("li.rejected-candidate")
+
+
 #: pages that need a query or an interaction to show what they show (path -> states)
 STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
     "/": {
         "results": visit(f"/?{AXIS}", "tbody.candidate"),
         "detail-open": open_detail,
+        "charts-and-rejected": parts_loaded,
         "no-pass": visit(f"/?{IMPOSSIBLE}", ".no-pass"),
         "error-422-inline": typed_error,
         "typing": typing,
@@ -167,6 +176,8 @@ STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
         "moves-cell-error": visit(f"/?{AXIS}&{MOVES}&m0_speed=fast", "#moves-table"),
     },
     "/detail": {"page": first_candidate},
+    "/charts": {"page": visit(f"/charts?{AXIS}", ".chart .main-svg")},
+    "/rejected": {"page": visit(f"/rejected?{AXIS}", "li.rejected-candidate")},
     "/custom": {"results": visit(f"/custom?{SCREW}", ".custom-verdict"), "error": custom_error},
     "/docs": {"opened": docs_opened},
     "/machine": {"results": visit(f"/machine?{MACHINE}", "table.machine")},

@@ -12,7 +12,8 @@ from app.contract.outputs import SelectOut
 from app.contract.schemas import ApplicationIn
 from app.core.formulas.critical_speed import critical_speed_rpm
 from app.report.service import run_selection
-from app.web.figures import TOP, chart_candidates, result_figures
+from app.web.curves import TOP
+from app.web.figures import chart_candidates, result_figures
 from tests.leadscrews import leadscrew_families
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}

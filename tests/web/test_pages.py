@@ -101,7 +101,14 @@ def test_full_page_renders_results_table_charts_and_counts(client: TestClient) -
     assert page.select_one(".count-evaluated").text == str(counts["evaluated"])
     assert page.select_one(".count-passed").text == str(counts["passed"])
     assert page.select_one(".count-rejected").text == str(counts["rejected"])
-    charts = page.select("script[type='application/json'][data-chart]")
+    # the charts load after the table, from /charts with the same query (app.js, or the link)
+    assert not page.select("script[type='application/json'][data-chart]")
+    slot = page.select_one("section#charts-slot[data-src]")
+    charts_url = "/charts?load=100&lead=10&speed=50&length=500"
+    assert slot["data-src"] == slot.select_one("a[href]")["href"] == charts_url
+    part = soup(client.get(charts_url, headers=HX))
+    assert not part.select("html, h1") and part.select_one("section.charts")
+    charts = part.select("script[type='application/json'][data-chart]")
     assert [c["id"] for c in charts] == [
         "fig-critical_speed",
         "fig-pv",
@@ -110,8 +117,12 @@ def test_full_page_renders_results_table_charts_and_counts(client: TestClient) -
         "fig-life",
     ]
     for script in charts:
-        assert page.select_one(f"#{script['data-chart']}.chart")
+        assert part.select_one(f"#{script['data-chart']}.chart")
         assert json.loads(script.string)["data"]
+    # without JavaScript the link opens them as a page, its way back to the results
+    alone = soup(client.get(charts_url))
+    assert len(alone.select("main script[data-chart]")) == len(charts)
+    assert alone.select_one("a.back-link")["href"] == "/?load=100&lead=10&speed=50&length=500"
 
 
 def test_htmx_request_gets_fragment_with_push_url_and_oob_errors(client: TestClient) -> None:
@@ -347,27 +358,32 @@ def detail_url(query: str, cid: str) -> str:
 
 
 def test_results_link_each_detail_instead_of_embedding_it(client: TestClient) -> None:
-    """The checks load when a detail is opened (htmx), or open as a page without JS."""
+    """The checks load when a detail is opened (app.js asks its link's URL as a fragment),
+    or open as a page without JS; the rejected list loads the same way, from /rejected."""
     api = api_select(client)
     page = soup(client.get("/", params=AXIS, headers=HX))
     query = "load=100&lead=10&speed=50&length=500"
     assert not page.select("li.check, ol.checks, dl.facts")
     bodies = page.select("table.candidates tbody.candidate")
     for n, (body, c) in enumerate(zip(bodies, api["candidates"], strict=True), start=1):
-        details = body.select_one("details.detail")
-        assert body.select_one("tr.main")["data-detail"] == details["id"] == f"detail-{n}"
-        assert details["hx-get"] == detail_url(query, c["id"])
-        assert details["hx-trigger"] == "toggle once"
-        assert details["hx-target"] == "find .detail-body"
-        assert details["hx-swap"] == "outerHTML"
-        assert details.select_one("summary").text.endswith(f"provenance for {c['id']}")
-        assert details.select_one(".detail-body a[href]")["href"] == detail_url(query, c["id"])
-    rejected = page.select("li.rejected-candidate")
+        details = body.select_one("tr.detail-row details.detail")
+        assert details["id"] == f"detail-{n}"
+        assert details.select_one("summary").text.startswith(f"Detail of {c['id']}:")
+        assert details.select_one(".detail-body.pending a[href]")["href"] == detail_url(
+            query, c["id"]
+        )
+    assert not page.select("li.rejected-candidate")
+    link = page.select_one("details.rejected > .rejected-body.pending > a[href]")
+    assert link["href"] == f"/rejected?{query}"
+    part = soup(client.get(link["href"], headers=HX))
+    assert not part.select("html, h1")
+    rejected = part.select("div.rejected-body:not(.pending) li.rejected-candidate")
     assert len(rejected) == len(api["rejected"])
     for item in rejected:
-        details = item.select_one("details.detail[hx-trigger='toggle once']")
-        assert details["hx-get"] == detail_url(query, item["data-id"])
-        assert details.select_one(".detail-body a")["href"] == details["hx-get"]
+        details = item.select_one("details.detail")
+        assert details.select_one(".detail-body a")["href"] == detail_url(query, item["data-id"])
+    alone = soup(client.get(link["href"]))
+    assert len(alone.select("main li.rejected-candidate")) == len(rejected)
 
 
 def test_detail_fragment_and_page(client: TestClient) -> None:
@@ -485,7 +501,8 @@ def test_detail_lists_every_check_with_formula_and_provenance(client: TestClient
 def test_rejected_are_grouped_by_failing_check_with_fixes(client: TestClient) -> None:
     api = api_select(client)
     page = soup(client.get("/", params=AXIS))
-    section = page.select_one("details.rejected:not([open])")
+    link = page.select_one("details.rejected:not([open]) .rejected-body a[href]")
+    section = soup(client.get(link["href"], headers=HX))
     groups = section.select("section.reject-group")
     assert {g["data-check"] for g in groups} == {c["governing_check"] for c in api["rejected"]}
     shown = [li["data-id"] for li in section.select("li.rejected-candidate")]
