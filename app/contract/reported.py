@@ -29,7 +29,7 @@ from pydantic import Field
 from app.catalog import ordering
 from app.contract.source import From, Writer
 from app.contract.units import Display, Quantity, si_to_api, sig
-from app.core import motion, quantities
+from app.core import cycle_energy, motion, quantities, segments
 from app.core.formulas import (
     accuracy,
     buckling,
@@ -148,9 +148,9 @@ def peak_power(record: Any, w: Writer) -> float:
     """The largest mechanical power at the motor shaft [W], driving or braking: with a
     move, |T ω| of each segment at its top speed (a ramp's torque reaches that speed at
     its end); without one, the accelerating torque at the screw's speed."""
-    segments = record.segments
-    if segments:
-        return max(abs(energy.shaft_power(s.torque_nm, s.rpm)) for s in segments)
+    parts = record.segments
+    if parts:
+        return max(abs(energy.shaft_power(s.torque_nm, s.rpm)) for s in parts)
     return abs(energy.shaft_power(record.torque.total_nm, record.rpm))
 
 
@@ -412,7 +412,7 @@ REPORTED: tuple[Reported, ...] = (
     ),
     Reported(
         "torque.peak_nm",
-        formula=Formula(motion.segments, "T = max |T_segment| over the cycle", "move profile"),
+        formula=Formula(segments.segments, "T = max |T_segment| over the cycle", "move profile"),
         views=("summary",),
     ),
     Reported(
@@ -620,7 +620,7 @@ REPORTED: tuple[Reported, ...] = (
                 "Given a move: the work done on the load in one cycle, sum F x over the "
                 "segments: the external loads and the weight raised less the weight lowered "
                 "(the moving mass's kinetic energy cancels over each move).",
-                motion.cycle_energy,
+                cycle_energy.cycle_energy,
                 "W = sum F_i x_i over the moving segments",
                 "work of a force",
             ),
@@ -688,7 +688,7 @@ REPORTED: tuple[Reported, ...] = (
     Reported(
         "segments.thrust_n",
         formula=Formula(
-            motion.segments,
+            segments.segments,
             "F = s F_steady + m a, a = +a, 0, -d along the motion; F_steady = load (+ m g "
             "when vertical), s = +1 out, back and up, -1 down; in a dwell F_steady when "
             "vertical",

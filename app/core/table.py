@@ -27,6 +27,11 @@ def column(values: Sequence[float | None]) -> Array:
     return np.array(values, dtype=np.float64)
 
 
+def finite(values: Array) -> Array:
+    """NaN where a limit is unbounded (e.g. the PV speed limit with no thrust at all)."""
+    return np.where(np.isfinite(values), values, np.nan)
+
+
 def _bands(screws: Sequence[ScrewSpec], lead_m: Array) -> tuple[Array, Mask]:
     """Each screw's family traverse limit [m/s] (NaN without a table) and off-table flag;
     screws sharing a table are looked up together."""
