@@ -17,14 +17,16 @@ from app.core.model import Application, Segment
 from app.core.table import Array, CandidateTable
 
 
-def torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+def torques(
+    app: Application, t: CandidateTable, force_n: float, moving: list[segments.Moving]
+) -> dict[str, Any]:
     """Motor torque: the screw's and the rotor's inertia J alpha, and every force that
     passes through the sliding thread (the load and the force m a that accelerates the
     moving mass) at the thread's efficiency, plus the nut's drag. Starting from rest the
     thread is at static friction while the load and m a already act. The required torque
     is the larger of break-away and the peak of the moving segments of both moves
-    (``segments.moving_torques``: decelerating a descending load may need more). The
-    breakdown and break-away are those of the move that starts hardest
+    (``moving``, the rows of ``segments.moving_torques``: decelerating a descending load
+    may need more). The breakdown and break-away are those of the move that starts hardest
     (``motion.lead_move``: out and back, the scalar inputs)."""
     move = motion.lead_move(app)
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
@@ -35,23 +37,25 @@ def torques(app: Application, t: CandidateTable, force_n: float) -> dict[str, An
     t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
     t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency)
     t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
-    t_total = torque.total_torque(t_screw + t_motor + t_mass, t.drag_max_nm, t_load)
+    t_inertia = t_screw + t_motor + t_mass
+    t_total = torque.total_torque(t_inertia, t.drag_max_nm, t_load)
     t_start = (
         torque.load_torque(force_n + inertial_force_n, t.lead_m, t.efficiency_static)
         + t_screw
         + t_motor
         + t.drag_max_nm
     )
-    moving = np.stack([np.abs(m[3]) for m in segments.moving_torques(app, t)])
-    peak = np.maximum(moving.max(axis=0), t_start)
-    segment = np.where(moving.max(axis=0) > t_start, np.argmax(moving, axis=0), -1)
+    magnitude = np.abs(np.stack([m[3] for m in moving]))
+    largest = magnitude.max(axis=0)
+    peak = np.maximum(largest, t_start)
+    segment = np.where(largest > t_start, np.argmax(magnitude, axis=0), -1)
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
         "inertia_screw_nm": t_screw,
         "inertia_mass_nm": t_mass,
         "inertia_motor_nm": t_motor,
-        "inertia_nm": t_screw + t_motor + t_mass,
+        "inertia_nm": t_inertia,
         "drag_nm": t.drag_max_nm,
         "load_nm": t_load,
         "total_nm": t_total,
@@ -75,10 +79,16 @@ def controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str
 
 
 def motor_point(
-    app: Application, t: CandidateTable, rpm: Array, hold_nm: Array, torques: dict[str, Any]
+    app: Application,
+    t: CandidateTable,
+    rpm: Array,
+    hold_nm: Array,
+    torques: dict[str, Any],
+    moving: list[segments.Moving],
 ) -> dict[str, Any]:
-    """The motor's view of the move: every segment's torque against the curve. Without a
-    stroke there is no profile: the one point is today's torque at the top speed, ``rpm``."""
+    """The motor's view of the move: every segment's torque against the curve (the moving
+    ones' ``moving``, from ``segments.moving_torques``). Without a stroke there is no
+    profile: the one point is today's torque at the top speed, ``rpm``."""
     p = motion.move_profile(app)
     peak_rpm = worst_rpm = rpm
     nan = np.full(len(t), np.nan)
@@ -89,7 +99,7 @@ def motor_point(
         index, peak, rms = np.full(len(t), -1.0), nan, nan
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
-        parts = segments.segments(app, t, hold_nm)
+        parts = segments.segments(app, t, hold_nm, moving)
         signed = np.stack([s.torque_nm for s in parts])
         magnitude = np.abs(signed)
         speeds = np.stack([s.rpm for s in parts])

@@ -22,17 +22,20 @@ from app.core.table import Array, CandidateTable, finite
 REFERENCE_TEMPERATURE_C = 20.0
 
 
-def heat_balance(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+def heat_balance(
+    app: Application, t: CandidateTable, force_n: float, wear_n: float
+) -> dict[str, Any]:
     """Friction power at the cycle's mean speed and the nut's steady temperature rise:
     the screw conducts the heat away both ways as a fin, the nut's surface convects it.
     A cycle of the user's own moves heats at its mean friction power: its travel-weighted
-    mean thrust (``motion.wear_thrust``) at its mean speed, every segment through the
-    forward efficiency (a segment the load drives loses less: the safe side)."""
+    mean thrust (``wear_n``, ``motion.wear_thrust``) at its mean speed, every segment
+    through the forward efficiency (a segment the load drives loses less: the safe
+    side)."""
     p = motion.move_profile(app)
     stroke = motion.equivalent_stroke(app) or 0.0
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
     if app.moves:
-        force_n = motion.wear_thrust(app)
+        force_n = wear_n
     power = finite(heat.friction_power(force_n, mean_speed, t.efficiency))
     h = heat.FREE_CONVECTION_W_M2_K
     fin = heat.fin_conductance(t.root_diameter_m, t.thermal_conductivity_w_m_k, h)

@@ -13,7 +13,6 @@ torque in each segment, for every candidate, is ``segments``'; the cycle's energ
 
 import itertools
 import math
-from dataclasses import replace
 
 from app.core.formulas import life, profile, wear
 from app.core.formulas.declare import formula
@@ -53,17 +52,19 @@ def cycle(app: Application) -> tuple[Move, ...]:
     if app.moves:
         return app.moves
     stroke = app.stroke_m or 0.0
-    one = Move(
-        distance_m=stroke,
-        speed_m_s=app.speed_m_s,
-        accel_m_s2=app.accel_m_s2,
-        decel_m_s2=decel(app),
-        dwell_s=app.dwell_s,
-        moving_mass_kg=app.moving_mass_kg,
-        load_n=app.load_n,
-        load_direction=app.load_direction,
+    return tuple(
+        Move(
+            distance_m=distance_m,
+            speed_m_s=app.speed_m_s,
+            accel_m_s2=app.accel_m_s2,
+            decel_m_s2=decel(app),
+            dwell_s=app.dwell_s,
+            moving_mass_kg=app.moving_mass_kg,
+            load_n=app.load_n,
+            load_direction=app.load_direction,
+        )
+        for distance_m in (stroke, -stroke)
     )
-    return (one, replace(one, distance_m=-stroke))
 
 
 def sense(move: Move) -> float:

@@ -118,11 +118,13 @@ def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> di
     }
 
 
-def wear_life(app: Application, t: CandidateTable, flank_area_m2: Array) -> dict[str, Any]:
+def wear_life(
+    app: Application, t: CandidateTable, flank_area_m2: Array, force_n: float
+) -> dict[str, Any]:
     """Nut travel until its flanks have worn the allowed depth (Archard's law at the
-    cycle's wear thrust, ``motion.wear_thrust``): over the engaged flanks and flank height
-    of a standard thread, else over the seed's three threads and thread depth."""
-    force_n = motion.wear_thrust(app)
+    cycle's wear thrust ``force_n``, ``motion.wear_thrust``): over the engaged flanks and
+    flank height of a standard thread, else over the seed's three threads and thread
+    depth."""
     flanks = ~np.isnan(flank_area_m2)
     area = np.where(flanks, flank_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)

@@ -13,7 +13,7 @@ from typing import Any, Generic, TypeVar, cast
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core import column, drive, duty, holding, motion, nut
+from app.core import column, drive, duty, holding, motion, nut, segments
 from app.core.formulas import (
     geometry,
 )
@@ -38,11 +38,12 @@ def axial_load(app: Application) -> float:
 
 
 @formula("F_peak = max |F_nut| over the segments of both moves and at rest", "Newton's second law")
-def peak_axial_load(app: Application) -> float:
+def peak_axial_load(app: Application, forces: Sequence[float] = ()) -> float:
     """Peak thrust on the nut [N]: the largest force the nut exerts on the moving mass in
     any segment of either move or at rest (``motion.nut_force_forms``), so the running
     thrust plus m a accelerating against the load, or plus m d braking a mass that moves
-    with it, whichever is larger (Newton's second law).
+    with it, whichever is larger (Newton's second law). ``forces``: those forces [N]
+    when already worked out (``motion.nut_forces``).
 
     >>> peak_axial_load(Application(load_n=5.0, speed_m_s=0.1, length_m=0.5,
     ...                             moving_mass_kg=50.0, accel_m_s2=5.0))
@@ -51,7 +52,7 @@ def peak_axial_load(app: Application) -> float:
     ...     moving_mass_kg=20.0, accel_m_s2=1.0, decel_m_s2=2.0, orientation="vertical")), 2)
     236.13
     """
-    return max(abs(f) for f in motion.nut_forces(app))
+    return max(abs(f) for f in forces or motion.nut_forces(app))
 
 
 def compression_sign(app: Application) -> float:
@@ -61,12 +62,12 @@ def compression_sign(app: Application) -> float:
 
 
 @formula("F_c = max(0, c F_nut) over the segments of both moves and at rest", "statics")
-def compressive_axial_load(app: Application) -> float:
+def compressive_axial_load(app: Application, forces: Sequence[float] = ()) -> float:
     """The largest thrust that pushes the screw onto its thrust bearing [N], in any segment
     of either move or at rest: c F_nut with c = +1 when an up (out) force compresses the
     screw (``app.compression``), else -1; 0 when the screw is only ever pulled. A
     horizontal axis whose load opposes the motion compresses the screw on one of the two
-    moves whichever end holds the bearing.
+    moves whichever end holds the bearing. ``forces`` as for ``peak_axial_load``.
 
     >>> compressive_axial_load(Application(load_n=5.0, speed_m_s=0.1, length_m=0.5,
     ...                                    moving_mass_kg=50.0, accel_m_s2=5.0,
@@ -74,7 +75,7 @@ def compressive_axial_load(app: Application) -> float:
     255.0
     """
     c = compression_sign(app)
-    return max(0.0, *(c * f for f in motion.nut_forces(app)))
+    return max(0.0, *(c * f for f in forces or motion.nut_forces(app)))
 
 
 @dataclass(frozen=True, slots=True)
@@ -254,32 +255,35 @@ NAMES = tuple(f.name for f in fields(Quantities))
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
     """Every number of ``app`` for every candidate of ``t``, as arrays."""
-    force_n, peak_n = axial_load(app), peak_axial_load(app)
     rpm = geometry.screw_speed_rpm(motion.reached_speed(app), t.lead_m)
     # no (or vanishing) thrust: an unbounded PV speed, NaN after ``table.finite``
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        values = _values(app, t, force_n, peak_n, rpm)
+        values = _values(app, t, rpm)
     return Quantities(**{k: np.asarray(v, dtype=np.float64) for k, v in values.items()})
 
 
-def _values(
-    app: Application, t: CandidateTable, force_n: float, peak_n: float, rpm: Array
-) -> dict[str, Any]:
-    torques = drive.torques(app, t, force_n)
+def _values(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
+    """The numbers of ``operating_point``; each of the axis's own (its thrusts and the
+    moving segments' torques) worked out once and handed to every part that reads it."""
+    forces = motion.nut_forces(app)
+    force_n, peak_n = axial_load(app), peak_axial_load(app, forces)
+    wear_n, steady_n = motion.wear_thrust(app), motion.steady_load(app)
+    moving = segments.moving_torques(app, t)
+    torques = drive.torques(app, t, force_n, moving)
     derate = (limits := nut.pv_limit(app, t))["pv_temperature_factor"]
     flank = nut.flanks(app, t, rpm, derate * limits["pv_lubrication_factor"])
-    worn = nut.wear_life(app, t, flank["flank_area_m2"])
-    held = holding.holding(app, t, motion.steady_load(app))
-    motor = drive.motor_point(app, t, rpm, held["brake_nm"], torques)
+    worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n)
+    held = holding.holding(app, t, steady_n)
+    motor = drive.motor_point(app, t, rpm, held["brake_nm"], torques, moving)
     return {
         "force_n": np.full(len(t), force_n),
         "peak_force_n": np.full(len(t), peak_n),
-        "compressive_force_n": np.full(len(t), compressive_axial_load(app)),
-        "holding_force_n": np.full(len(t), motion.steady_load(app)),
+        "compressive_force_n": np.full(len(t), compressive_axial_load(app, forces)),
+        "holding_force_n": np.full(len(t), steady_n),
         "rpm": rpm,
         **torques,
         **column.column_limits(app, t, peak_n, torques),
-        **duty.heat_balance(app, t, force_n),
+        **duty.heat_balance(app, t, force_n, wear_n),
         **limits,
         **nut.seed_pv(app, t, peak_n, rpm, limits["pv_limit_pa_m_s"]),
         **flank,

@@ -31,12 +31,16 @@ from app.core.motion import (
 )
 from app.core.table import Array, CandidateTable
 
+#: A moving segment for every candidate: its name and direction, the thrust against the
+#: motion [N] and the motor torque [N m] (``moving_torques``).
+Moving = tuple[SegmentName, Direction, float, Array]
+
 
 def _move(
     app: Application,
     p: Profile,
     t: CandidateTable,
-    rows: list[tuple[SegmentName, Direction, float, Array]],
+    rows: list[Moving],
 ) -> list[Segment[Array]]:
     """The three moving segments of one move (its ``moving_torques`` rows), for every
     candidate."""
@@ -61,9 +65,7 @@ def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]
     return [(name, direction) for direction, _ in directions(app) for name, _ in RAMPS]
 
 
-def moving_torques(
-    app: Application, t: CandidateTable
-) -> list[tuple[SegmentName, Direction, float, Array]]:
+def moving_torques(app: Application, t: CandidateTable) -> list[Moving]:
     """Each moving segment of every move, for every candidate: its name and direction,
     the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
     through the thread, the nut's drag, and the screw's and the rotor's inertia times the
@@ -71,7 +73,7 @@ def moving_torques(
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
     forces = iter(g + h * app.load_n for g, h in moving_forms(app))
-    out: list[tuple[SegmentName, Direction, float, Array]] = []
+    out: list[Moving] = []
     for move in cycle(app):
         v, word = sense(move), direction_word(app, move)
         rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
@@ -104,15 +106,18 @@ def _dwell(
     )
 
 
-def segments(app: Application, t: CandidateTable, hold_nm: Array) -> list[Segment[Array]]:
+def segments(
+    app: Application, t: CandidateTable, hold_nm: Array, moving: list[Moving] | None = None
+) -> list[Segment[Array]]:
     """Every segment of the cycle (a move's accelerate, constant, decelerate and dwell,
     move after move; ``segment_labels`` names them), for every candidate of ``t``;
     ``hold_nm`` is the holding torque of each at ``steady_load`` (0 where the thread
-    self-locks with margin). Empty without a profile."""
+    self-locks with margin); ``moving`` the rows of ``moving_torques`` when already
+    computed. Empty without a profile."""
     every = profiles(app)
     if every is None:
         return []
-    rows = moving_torques(app, t)
+    rows = moving_torques(app, t) if moving is None else moving
     steady = steady_load(app)
     out: list[Segment[Array]] = []
     for k, (move, p, rest) in enumerate(zip(cycle(app), every, rest_loads(app), strict=True)):
