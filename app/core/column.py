@@ -20,9 +20,10 @@ def root_torque(t: CandidateTable, peak_n: float, torques: dict[str, Any]) -> Ar
     """``torque.root_torque`` at the peak thrust, at the lower of the running and the
     static efficiency (the thrust of a start from rest passes the thread at static
     friction), with the nut's drag and the whole screw's inertia torque [N m]."""
-    eta = np.minimum(t.efficiency, t.efficiency_static)
     return np.asarray(
-        torque.root_torque(peak_n, t.lead_m, eta, torques["drag_nm"], torques["inertia_screw_nm"])
+        torque.root_torque(
+            peak_n, t.lead_m, t.root_efficiency, torques["drag_nm"], torques["inertia_screw_nm"]
+        )
     )
 
 
@@ -54,9 +55,9 @@ def column_limits(
     f_cr = buckling.column_critical_load(
         t.youngs_modulus_pa, t.root_diameter_m, column_m, app.end_fixity, t.yield_strength_pa
     )
-    with np.errstate(invalid="ignore"):
-        transition = buckling.transition_slenderness(t.youngs_modulus_pa, t.yield_strength_pa)
     root_nm = root_torque(t, peak_n, torques)
+    axial = buckling.root_stress(peak_n, t.root_diameter_m)
+    shear = buckling.root_shear_stress(root_nm, t.root_diameter_m)
     return {
         "critical_rpm": n_c,
         "allowed_rpm": critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
@@ -64,11 +65,10 @@ def column_limits(
         "allowed_load_n": buckling.allowed_buckling_load(f_cr, app.buckling_safety_factor),
         "slenderness": buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity),
         "column_length_m": np.full(len(t), column_m),
-        "transition_slenderness": transition,
-        "root_stress_pa": buckling.root_von_mises_stress(peak_n, root_nm, t.root_diameter_m),
+        "transition_slenderness": t.transition_slenderness,
+        # buckling.root_von_mises_stress of the two stresses, each worked out once
+        "root_stress_pa": buckling.von_mises_stress(axial, shear),
         "root_torque_nm": root_nm,
-        "root_axial_stress_pa": np.broadcast_to(
-            buckling.root_stress(peak_n, t.root_diameter_m), root_nm.shape
-        ),
-        "root_shear_stress_pa": buckling.root_shear_stress(root_nm, t.root_diameter_m),
+        "root_axial_stress_pa": np.broadcast_to(axial, root_nm.shape),
+        "root_shear_stress_pa": shear,
     }

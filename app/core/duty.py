@@ -37,10 +37,14 @@ def heat_balance(
     if app.moves:
         force_n = wear_n
     power = finite(heat.friction_power(force_n, mean_speed, t.efficiency))
-    h = heat.FREE_CONVECTION_W_M2_K
-    fin = heat.fin_conductance(t.root_diameter_m, t.thermal_conductivity_w_m_k, h)
-    nut_d = heat.NUT_OUTER_TO_D * t.outer_diameter_m
-    rise = heat.temperature_rise(power, fin, nut_length(app, t), nut_d, h)
+    # the fin conductance and nut diameter in still air follow from the catalog alone
+    rise = heat.temperature_rise(
+        power,
+        t.fin_conductance_w_k,
+        nut_length(app, t),
+        t.nut_outer_diameter_m,
+        heat.FREE_CONVECTION_W_M2_K,
+    )
     return {
         "heat_speed_m_s": np.full(len(t), mean_speed),
         "friction_power_w": power,

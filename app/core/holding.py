@@ -23,25 +23,25 @@ def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, An
     at that same distrusted friction (back-drive efficiency at f mu_s), times the brake's
     safety factor (the torque safety factor when none is given)."""
     mu_margin = t.friction_static * app.self_locking_friction_factor
-    locks = mu_margin >= efficiency.self_locking_limit_friction(
-        np.tan(t.lead_angle_rad), t.cos_half_angle
-    )
+    locks = mu_margin >= t.self_locking_friction
     seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
     physics = efficiency.holding_torque(force_n, t.lead_m, t.backdrive_efficiency)
     distrusted = efficiency.holding_torque(
         force_n,
         t.lead_m,
-        efficiency.backdrive_efficiency(np.tan(t.lead_angle_rad), mu_margin, t.cos_half_angle),
+        efficiency.backdrive_efficiency(t.tan_lead_angle, mu_margin, t.cos_half_angle),
     )
-    brake = np.where(locks, 0.0, np.maximum(seed, distrusted))
+    unlocked = np.maximum(seed, distrusted)
+    brake = np.where(locks, 0.0, unlocked)
+    factor = brake_factor(app)
     max_lock = efficiency.max_self_locking_lead(t.pitch_diameter_m, mu_margin, t.cos_half_angle)
     return {
-        **hold_margins(app, t, max_lock, np.maximum(seed, distrusted) * brake_factor(app)),
+        **hold_margins(app, t, max_lock, unlocked * factor),
         "holding_seed_nm": np.where(locks, 0.0, seed),
         "holding_physics_nm": physics,
         "holding_distrusted_nm": distrusted,
         "brake_nm": brake,
-        "brake_needed_nm": brake * brake_factor(app),
+        "brake_needed_nm": brake * factor,
         "locks_with_margin": locks,
         "max_self_locking_lead_with_margin_m": max_lock,
     }

@@ -43,7 +43,7 @@ def seed_pv(
     """PV of the nut (seed, three threads in contact) and its limits inverted at the
     permissible PV ``limit``, at the peak thrust ``force_n``: an accelerating segment ends
     at the top speed still carrying m a."""
-    area = pv.contact_area(t.helix_travel_m, t.thread_depth_m)
+    area = t.contact_area_m2
     return {
         "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m),
         "pressure_pa": np.broadcast_to(pv.contact_pressure(force_n, area), rpm.shape),
@@ -87,7 +87,10 @@ def nut_length(app: Application, t: CandidateTable) -> Array:
 
 def flank_area(app: Application, t: CandidateTable) -> Array:
     """The engaged flank area (L / P) pi d2 H1 of a standard thread's nut [m^2] (NaN
-    without a thread pitch), with the nut length of ``nut_length``."""
+    without a thread pitch), with the nut length of ``nut_length`` (the catalog's, worked
+    out with the table)."""
+    if app.nut_length_m is None:
+        return t.catalog_flank_area_m2
     area = bearing.engaged_flank_area(
         nut_length(app, t), t.pitch_m, t.flank_pitch_diameter_m, t.flank_height_m
     )
@@ -126,7 +129,7 @@ def wear_life(
     flank height of a standard thread, else over the seed's three threads and thread
     depth."""
     flanks = ~np.isnan(flank_area_m2)
-    area = np.where(flanks, flank_area_m2, pv.contact_area(t.helix_travel_m, t.thread_depth_m))
+    area = np.where(flanks, flank_area_m2, t.contact_area_m2)
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
     helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
     with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
