@@ -210,7 +210,9 @@ def holds_a_load(app: Application) -> bool:
     move."""
     if app.orientation == "vertical":
         return True
-    return any(load_sense(app, m)[0] > 0.0 for m in cycle(app))
+    if not app.moves:  # out and back: both moves carry the application's load direction
+        return load_sense(app)[0] > 0.0
+    return any(load_sense(app, m)[0] > 0.0 for m in app.moves)
 
 
 def _rest_load(app: Application, move: Move) -> float:
