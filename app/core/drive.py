@@ -45,7 +45,7 @@ def torques(
         + t_motor
         + t.drag_max_nm
     )
-    magnitude = np.abs(np.stack([m[3] for m in moving]))
+    magnitude = np.abs(np.array([m[3] for m in moving]))
     largest = magnitude.max(axis=0)
     peak = np.maximum(largest, t_start)
     segment = np.where(largest > t_start, np.argmax(magnitude, axis=0), -1)
@@ -100,9 +100,9 @@ def motor_point(
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = segments.segments(app, t, hold_nm, moving)
-        signed = np.stack([s.torque_nm for s in parts])
+        signed = np.array([s.torque_nm for s in parts])
         magnitude = np.abs(signed)
-        speeds = np.stack([s.rpm for s in parts])
+        speeds = np.array([s.rpm for s in parts])
         load = magnitude / segments.curve_torque(app, speeds) if app.motor_curve else magnitude
         index = np.argmax(load, axis=0)
         columns = np.arange(len(t))

@@ -93,7 +93,7 @@ def eligible_mask(app: Application, table: CandidateTable) -> Mask:
 def _rows(values: Sequence[NDArray[Any] | None], missing: NDArray[Any]) -> NDArray[Any]:
     """``values`` as the rows of one array, ``missing`` where a value is None; at least
     one row (``missing``) when there are none."""
-    return np.stack([missing if v is None else v for v in values] or [missing])[: len(values)]
+    return np.array([missing if v is None else v for v in values] or [missing])[: len(values)]
 
 
 def _judge(
