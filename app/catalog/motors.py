@@ -285,7 +285,7 @@ def with_model_values(app: Application, motor: Motor) -> Application:
     """``app`` with the library stepper's drive voltage, rated current and holding
     torque, those its curve is drawn from: what the motor-curve check reads the model's
     validity range from (``stepper.back_emf_half_supply_rpm``); and its winding
-    resistance, for the copper loss of a cycle (``motion.cycle_energy``)."""
+    resistance, for the copper loss of a cycle (``cycle_energy.cycle_energy``)."""
     return replace(
         app,
         motor_supply_v=motor.value("supply_v"),

@@ -12,7 +12,7 @@ from typing import Any, Literal, NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core import motion
+from app.core import motion, segments
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
 from app.core.model import Application, Motion, ScrewSpec, Segment
@@ -110,7 +110,7 @@ class Batch:
         if p is None:
             return [None] * len(self.at)
         hold = np.array(self.column("brake_nm"))
-        parts = motion.segments(self.app, self.screening.table.take(self.at), hold)
+        parts = segments.segments(self.app, self.screening.table.take(self.at), hold)
         columns = [
             (s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist(), self._curve(s.rpm))
             for s in parts
@@ -144,7 +144,7 @@ class Batch:
         check holds a segment against it (None without a curve)."""
         if not self.app.motor_curve:
             return None
-        curve: list[float] = motion.curve_torque(self.app, rpm).tolist()
+        curve: list[float] = segments.curve_torque(self.app, rpm).tolist()
         return curve
 
 

@@ -349,7 +349,7 @@ class Segment(Generic[V]):
     thrust against the motion [N] and the motor torque [N m] (negative: the motor brakes).
     ``V`` is an array (one element per candidate) or a float. A candidate's own segments
     also carry the motor's usable torque at the segment's speed [N m] (its curve over the
-    stepper margin, ``motion.curve_torque``; None without a curve) and whether the segment
+    stepper margin, ``segments.curve_torque``; None without a curve) and whether the segment
     governs the motor: the one nearest its curve, or the largest torque without a curve
     (``Quantities.motor_worst_segment``)."""
 

@@ -1,29 +1,20 @@
-"""The move over time and the motor that drives it, for many candidates at once.
+"""The cycle of moves over time and the thrust on the nut in each of its segments.
 
-``move_profile(app)`` is the application's trapezoid (or triangle); ``segments`` gives,
-for every candidate, the thrust and motor torque of each segment of the cycle: accelerate,
-constant, decelerate and dwell, up and down on a vertical axis, out and back on a
-horizontal one. The torque of a moving segment is the thrust through the thread (by the
-direction the power flows, ``profile.thread_torque``), the nut's drag, and the rotary
-inertia of the screw and the motor's rotor times the angular acceleration; the moving
-mass enters through the thrust as m a (against the motion when accelerating, with it
-when decelerating). In a dwell the motor holds the load: the holding torque where the
-axis holds a load (vertical, or a load of fixed direction) and does not self-lock, else
-nothing. Every thrust comes from the force the nut
-exerts on the moving mass in the axis's own frame (``nut_force_forms``): the load acts
-one way (a weight, spring or press) or against the motion both ways (friction), as the
-user says; by default downwards on a vertical axis and against the motion on a
-horizontal one.
+``cycle(app)`` is the cycle's moves (out and back over the stroke by default);
+``move_profile(app)`` the application's trapezoid (or triangle). Every thrust comes from
+the force the nut exerts on the moving mass in the axis's own frame
+(``nut_force_forms``): the moving mass enters as m a (against the motion when
+accelerating, with it when decelerating), and the load acts one way (a weight, spring
+or press) or against the motion both ways (friction), as the user says; by default
+downwards on a vertical axis and against the motion on a horizontal one. The motor's
+torque in each segment, for every candidate, is ``segments``'; the cycle's energy
+``cycle_energy``'s.
 """
 
 import itertools
 import math
-from dataclasses import replace
-from typing import Any
 
-import numpy as np
-
-from app.core.formulas import energy, geometry, life, profile, torque, wear
+from app.core.formulas import life, profile, wear
 from app.core.formulas.declare import formula
 from app.core.model import (
     STANDARD_GRAVITY_M_S2,
@@ -31,11 +22,9 @@ from app.core.model import (
     Direction,
     Move,
     Profile,
-    Segment,
     SegmentName,
 )
 from app.core.phrase import Amount, Phrase
-from app.core.table import Array, CandidateTable
 
 #: The moving segments and the sign of their acceleration along the motion.
 RAMPS: tuple[tuple[SegmentName, float], ...] = (
@@ -63,17 +52,19 @@ def cycle(app: Application) -> tuple[Move, ...]:
     if app.moves:
         return app.moves
     stroke = app.stroke_m or 0.0
-    one = Move(
-        distance_m=stroke,
-        speed_m_s=app.speed_m_s,
-        accel_m_s2=app.accel_m_s2,
-        decel_m_s2=decel(app),
-        dwell_s=app.dwell_s,
-        moving_mass_kg=app.moving_mass_kg,
-        load_n=app.load_n,
-        load_direction=app.load_direction,
+    return tuple(
+        Move(
+            distance_m=distance_m,
+            speed_m_s=app.speed_m_s,
+            accel_m_s2=app.accel_m_s2,
+            decel_m_s2=decel(app),
+            dwell_s=app.dwell_s,
+            moving_mass_kg=app.moving_mass_kg,
+            load_n=app.load_n,
+            load_direction=app.load_direction,
+        )
+        for distance_m in (stroke, -stroke)
     )
-    return (one, replace(one, distance_m=-stroke))
 
 
 def sense(move: Move) -> float:
@@ -219,7 +210,9 @@ def holds_a_load(app: Application) -> bool:
     move."""
     if app.orientation == "vertical":
         return True
-    return any(load_sense(app, m)[0] > 0.0 for m in cycle(app))
+    if not app.moves:  # out and back: both moves carry the application's load direction
+        return load_sense(app)[0] > 0.0
+    return any(load_sense(app, m)[0] > 0.0 for m in app.moves)
 
 
 def _rest_load(app: Application, move: Move) -> float:
@@ -393,183 +386,3 @@ def largest_load_for_wear(app: Application, allowed_n: float) -> float | None:
             share = (allowed_n - thrust(low)) / (thrust(high) - thrust(low))
             return low + share * (high - low)
     return None
-
-
-def _move(
-    app: Application,
-    p: Profile,
-    t: CandidateTable,
-    rows: list[tuple[SegmentName, Direction, float, Array]],
-) -> list[Segment[Array]]:
-    """The three moving segments of one move (its ``moving_torques`` rows), for every
-    candidate."""
-    rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
-    times = (p.accel_time_s, p.constant_time_s, p.decel_time_s)
-    return [
-        Segment(
-            name=name,
-            direction=direction,
-            duration_s=duration,
-            rpm=rpm,
-            thrust_n=np.full(len(t), thrust),
-            torque_nm=torque_nm,
-        )
-        for (name, direction, thrust, torque_nm), duration in zip(rows, times, strict=True)
-    ]
-
-
-def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]]:
-    """The moving segments of both moves, name and direction, in the order of
-    ``moving_torques``."""
-    return [(name, direction) for direction, _ in directions(app) for name, _ in RAMPS]
-
-
-def moving_torques(
-    app: Application, t: CandidateTable
-) -> list[tuple[SegmentName, Direction, float, Array]]:
-    """Each moving segment of every move, for every candidate: its name and direction,
-    the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
-    through the thread, the nut's drag, and the screw's and the rotor's inertia times the
-    angular acceleration (whether the segment has a stroke to last or not)."""
-    inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
-    inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
-    forces = iter(g + h * app.load_n for g, h in moving_forms(app))
-    out: list[tuple[SegmentName, Direction, float, Array]] = []
-    for move in cycle(app):
-        v, word = sense(move), direction_word(app, move)
-        rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
-        for name, sign in RAMPS:
-            thrust = v * next(forces)
-            thread = profile.thread_torque(
-                thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
-            )
-            alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
-            spin = torque.inertia_torque(inertia, alpha)
-            out.append((name, word, thrust, thread + t.drag_max_nm + spin))
-    return out
-
-
-def _dwell(
-    app: Application, move: Move, rest_n: float, hold_nm: Array, steady_n: float
-) -> Segment[Array]:
-    """The dwell after ``move``: at rest, holding its load ``rest_n`` where there is one
-    to hold (``hold_nm`` holds ``steady_n``, the largest; the holding torque is linear in
-    the load held)."""
-    held = app.orientation == "vertical" or load_sense(app, move)[0] > 0.0
-    hold = hold_nm if rest_n == steady_n else hold_nm * (rest_n / steady_n)
-    return Segment(
-        name="dwell",
-        direction=direction_word(app, move),
-        duration_s=move.dwell_s,
-        rpm=np.zeros(len(hold_nm)),
-        thrust_n=np.full(len(hold_nm), rest_n),
-        torque_nm=hold if held else np.zeros(len(hold_nm)),
-    )
-
-
-def segments(app: Application, t: CandidateTable, hold_nm: Array) -> list[Segment[Array]]:
-    """Every segment of the cycle (a move's accelerate, constant, decelerate and dwell,
-    move after move; ``segment_labels`` names them), for every candidate of ``t``;
-    ``hold_nm`` is the holding torque of each at ``steady_load`` (0 where the thread
-    self-locks with margin). Empty without a profile."""
-    every = profiles(app)
-    if every is None:
-        return []
-    rows = moving_torques(app, t)
-    steady = steady_load(app)
-    out: list[Segment[Array]] = []
-    for k, (move, p, rest) in enumerate(zip(cycle(app), every, rest_loads(app), strict=True)):
-        out += _move(app, p, t, rows[3 * k : 3 * k + 3])
-        out.append(_dwell(app, move, rest, hold_nm, steady))
-    return out
-
-
-def rms(parts: list[Segment[Array]]) -> Array:
-    """RMS motor torque over the cycle, per candidate [N m]."""
-    torques: list[Any] = [s.torque_nm for s in parts]
-    value = profile.rms_torque(torques, [s.duration_s for s in parts])
-    return np.asarray(value, dtype=np.float64)
-
-
-def curve_margin(app: Application) -> float:
-    """What the motor's curve is divided by before a move is held against it: a
-    stepper's (one with a step angle) torque margin on its pull-out torque, 1 for a
-    servo, whose curve is already its rated envelope."""
-    return app.stepper_torque_margin if app.step_angle_deg is not None else 1.0
-
-
-def curve_torque(app: Application, rpm: Array) -> Array:
-    """The motor's usable torque at ``rpm`` [N m]: its curve, linear between its points,
-    divided by ``curve_margin``. Below the first point it is the first point's torque;
-    past the last point the motor cannot run (the speed check rejects it), and the
-    torque is read at the last point."""
-    speeds = [point[0] for point in app.motor_curve]
-    torques = [point[1] for point in app.motor_curve]
-    return np.interp(np.minimum(rpm, speeds[-1]), speeds, torques) / curve_margin(app)
-
-
-#: The energy of one cycle, per candidate [J] (``cycle_energy``).
-ENERGY = (
-    "cycle_motor_work_j",
-    "cycle_regen_j",
-    "cycle_load_work_j",
-    "cycle_thread_loss_j",
-    "cycle_drag_loss_j",
-    "cycle_copper_loss_j",
-)
-
-
-def copper_current_rms(app: Application) -> float | None:
-    """A stepper's RMS phase current [A] where its step angle, current and winding
-    resistance are given (the current as typed, or the sine's peak over sqrt 2); None
-    otherwise (a servo's copper loss needs its torque constant, which is not an input)."""
-    current = app.motor_phase_current_a
-    if app.step_angle_deg is None or current is None or app.motor_resistance_ohm is None:
-        return None
-    return current if app.motor_current_rms else current / math.sqrt(2.0)
-
-
-def cycle_energy(
-    app: Application, t: CandidateTable, parts: list[Segment[Array]]
-) -> dict[str, Array]:
-    """The energy of one cycle over ``parts`` (``segments``), per candidate [J]: the
-    motor's work at its shaft where it drives (``energy.shaft_energy`` above 0), the
-    energy braking gives back on decelerate and down segments (its work below 0, before
-    the drive's own losses), the work done on the load (sum F x: its weight and external
-    load; the moving mass's kinetic energy cancels over each move), the thread's friction
-    (``energy.thread_loss``) and the nut's drag, and a stepper's copper loss over the
-    whole cycle (``energy.stepper_copper_loss``, the drive holding its current at rest
-    too: NaN without its current and resistance). NaN without a profile. The balance:
-    motor work - braking = load work + thread loss + drag loss."""
-    nan = np.full(len(t), np.nan)
-    every = profiles(app)
-    if every is None or not parts:
-        return dict.fromkeys(ENERGY, nan)
-    travels = [x for p in every for x in (*segment_travels(p), 0.0)]
-    zero = np.zeros(len(t))
-    motor, regen, load, thread = zero, zero, zero, zero
-    for s, x in zip(parts, travels, strict=True):
-        shaft = energy.shaft_energy(s.torque_nm, x, t.lead_m)
-        motor = motor + np.maximum(shaft, 0.0)
-        regen = regen + np.maximum(-shaft, 0.0)
-        load = load + s.thrust_n * x
-        thread = thread + energy.thread_loss(
-            s.thrust_n, x, t.efficiency, t.backdrive_efficiency_signed
-        )
-    current = copper_current_rms(app)
-    copper = nan
-    if current is not None:
-        joules = energy.stepper_copper_loss(
-            current, app.motor_resistance_ohm or 0.0, every[0].cycle_time_s
-        )
-        copper = np.full(len(t), joules)
-    return {
-        "cycle_motor_work_j": motor,
-        "cycle_regen_j": regen,
-        "cycle_load_work_j": load,
-        "cycle_thread_loss_j": thread,
-        "cycle_drag_loss_j": np.asarray(
-            energy.shaft_energy(t.drag_max_nm, sum(travels), t.lead_m), dtype=np.float64
-        ),
-        "cycle_copper_loss_j": copper,
-    }

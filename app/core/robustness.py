@@ -90,10 +90,12 @@ def robustness(
         if rows.size:
             screened[rows] = screen_table(app, variants.table.take(rows)).passed
     found = []
+    start, names = variants.start.tolist(), variants.names
     for p in positions:
+        low, high = start[p], start[p + 1]
         hinges: list[str] = []
-        for r in range(variants.start[p], variants.start[p + 1]):
-            if not screened[r] and variants.names[r] not in hinges:
-                hinges.append(variants.names[r])
+        for name, passed in zip(names[low:high], screened[low:high].tolist(), strict=True):
+            if not passed and name not in hinges:
+                hinges.append(name)
         found.append(Robustness(not hinges, tuple(hinges)))
     return found

@@ -5,7 +5,9 @@
 screw is screened as a table of one. So a check is computed by one piece of code.
 """
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -88,6 +90,12 @@ def eligible_mask(app: Application, table: CandidateTable) -> Mask:
     return mask
 
 
+def _rows(values: Sequence[NDArray[Any] | None], missing: NDArray[Any]) -> NDArray[Any]:
+    """``values`` as the rows of one array, ``missing`` where a value is None; at least
+    one row (``missing``) when there are none."""
+    return np.array([missing if v is None else v for v in values] or [missing])[: len(values)]
+
+
 def _judge(
     measures: list[Measure], n: int
 ) -> tuple[list[bool], NDArray[np.bool_], NDArray[np.float64], NDArray[np.bool_]]:
@@ -97,16 +105,13 @@ def _judge(
     exist, and for a yes/no check) and where it fails (applies, and over its limit or
     flagged)."""
     numeric = [m.demand is not None and m.capacity is not None for m in measures]
-    demand = np.full((len(measures), n), np.nan)
-    capacity = np.full((len(measures), n), np.nan)
-    applicable = np.empty((len(measures), n), dtype=bool)
-    flagged = np.zeros((len(measures), n), dtype=bool)
-    for i, m in enumerate(measures):
-        applicable[i] = m.applicable
-        if numeric[i]:
-            demand[i], capacity[i] = m.demand, m.capacity
-        if m.flagged is not None:
-            flagged[i] = m.flagged
+    nan, no = np.full(n, np.nan), np.zeros(n, dtype=bool)
+    demand = _rows([m.demand if ok else None for m, ok in zip(measures, numeric, strict=True)], nan)
+    capacity = _rows(
+        [m.capacity if ok else None for m, ok in zip(measures, numeric, strict=True)], nan
+    )
+    applicable = _rows([m.applicable for m in measures], no)
+    flagged = _rows([m.flagged for m in measures], no)
     with np.errstate(invalid="ignore", divide="ignore"):
         ratio = demand / capacity
     failed = applicable & ((ratio > PASS_UTILIZATION) | flagged)

@@ -7,7 +7,7 @@ from typing import Generic, Literal, Protocol, TypeVar, cast
 
 import numpy as np
 
-from app.core import motion
+from app.core import motion, segments
 from app.core.batch import Batch
 from app.core.checks.ball_life import LOAD_FACTOR, mean_load
 from app.core.checks.wear_life import life_band
@@ -88,7 +88,7 @@ class Torque(Section):
         index = int(self.batch.column("peak_torque_segment")[self.k])
         if index < 0:
             return "starting from rest"
-        name, direction = motion.moving_segment_names(self.app)[index]
+        name, direction = segments.moving_segment_names(self.app)[index]
         return f"{SEGMENT_WORDS[name]} {direction}"
 
 

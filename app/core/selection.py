@@ -48,7 +48,7 @@ def motor_use(s: Screening) -> np.ndarray:
     shares = [use for name in MOTOR_CHECKS if (use := s.utilization.get(name)) is not None]
     if not shares:
         return s.total_torque_nm
-    return np.asarray(np.nanmax(np.stack(shares), axis=0), dtype=np.float64)
+    return np.asarray(np.nanmax(np.array(shares), axis=0), dtype=np.float64)
 
 
 def shown_torque(s: Screening) -> np.ndarray:

@@ -12,7 +12,8 @@ import numpy as np
 from app.core.formulas import bearing
 from app.core.index import CatalogIndex, SizeKey
 from app.core.model import Application
-from app.core.quantities import Quantities, nut_allowed_pressures, operating_point
+from app.core.nut import nut_allowed_pressures
+from app.core.quantities import Quantities, operating_point
 from app.core.screening import screen_table
 from app.core.table import Array
 

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.formulas import efficiency, geometry, limits, profile
+from app.core.formulas import bearing, buckling, efficiency, geometry, heat, limits, profile, pv
 from app.core.model import ScrewSpec
 
 Array = NDArray[np.float64]
@@ -25,6 +25,11 @@ Mask = NDArray[np.bool_]
 def column(values: Sequence[float | None]) -> Array:
     """Float column; None (no such limit) becomes NaN (as numpy converts it)."""
     return np.array(values, dtype=np.float64)
+
+
+def finite(values: Array) -> Array:
+    """NaN where a limit is unbounded (e.g. the PV speed limit with no thrust at all)."""
+    return np.where(np.isfinite(values), values, np.nan)
 
 
 def _bands(screws: Sequence[ScrewSpec], lead_m: Array) -> tuple[Array, Mask]:
@@ -157,6 +162,34 @@ def _thread_efficiencies(tan_l: Array, mu_s: Array, mu_d: Array, cos_a: Array) -
     }
 
 
+def _axis_free(c: dict[str, Array]) -> dict[str, Any]:
+    """Numbers the operating point reads that follow from the catalog alone, each the
+    same formula call it would make per query: tan of the lead angle and the static
+    friction at which the thread self-locks (``efficiency``), the seed's contact area of
+    three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
+    area at the catalog's nut length (``bearing``), the screw's fin conductance in still
+    air and the nut's outside diameter (``heat``), and the lower of the running and the
+    static efficiency (the root section's torque)."""
+    tan_l = np.tan(c["lead_angle_rad"])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        transition = buckling.transition_slenderness(c["youngs_modulus_pa"], c["yield_strength_pa"])
+    flanks = bearing.engaged_flank_area(
+        c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
+    )
+    return {
+        "tan_lead_angle": tan_l,
+        "self_locking_friction": efficiency.self_locking_limit_friction(tan_l, c["cos_half_angle"]),
+        "contact_area_m2": pv.contact_area(c["helix_travel_m"], c["thread_depth_m"]),
+        "transition_slenderness": transition,
+        "catalog_flank_area_m2": np.asarray(flanks, dtype=np.float64),
+        "fin_conductance_w_k": heat.fin_conductance(
+            c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
+        ),
+        "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * c["outer_diameter_m"],
+        "root_efficiency": np.minimum(c["efficiency"], c["efficiency_static"]),
+    }
+
+
 @dataclass(frozen=True, slots=True)
 class CandidateTable:
     """One element per candidate: catalog values (SI) and axis-independent derived ones."""
@@ -220,6 +253,20 @@ class CandidateTable:
     dynamic_load_n: Array
     static_load_n: Array
     dn_limit_mm_rpm: Array
+    #: Axis-free numbers of the operating point (``_axis_free``): tan of ``lead_angle_rad``,
+    #: the static friction at which the thread self-locks, the seed's contact area of
+    #: three threads [m^2], the transition slenderness, the engaged flank area at the
+    #: catalog's nut length [m^2] (NaN: no thread pitch or nut length), the screw's fin
+    #: conductance [W/K], the nut's outside diameter [m] and min(efficiency,
+    #: efficiency_static).
+    tan_lead_angle: Array
+    self_locking_friction: Array
+    contact_area_m2: Array
+    transition_slenderness: Array
+    catalog_flank_area_m2: Array
+    fin_conductance_w_k: Array
+    nut_outer_diameter_m: Array
+    root_efficiency: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together
@@ -260,18 +307,24 @@ class CandidateTable:
             anti_backlash=bool(flag("anti_backlash").any()),
             leads=_leads(screws),
         )
+        columns = dict(
+            pitch_diameter_m=d_p,
+            thread_depth_m=geometry.thread_depth(od, rd),
+            helix_travel_m=geometry.helix_travel(lead, d_p),
+            lead_angle_rad=np.arctan(tan_l),
+            friction_static=mu_s,
+            cos_half_angle=cos_a,
+            **{name: col(attr) for name, attr in COPIED.items()},
+            **_thread_efficiencies(tan_l, mu_s, mu_d, cos_a),
+            **_nut_columns(screws, lead),
+        )
+        columns["root_diameter_m"], columns["outer_diameter_m"] = rd, od
         return cls(
             reach=reach,
             pressure_tables=tables,
             pressure_table=which,
             screws=screws,
             lead_m=lead,
-            outer_diameter_m=od,
-            root_diameter_m=rd,
-            pitch_diameter_m=d_p,
-            thread_depth_m=geometry.thread_depth(od, rd),
-            helix_travel_m=geometry.helix_travel(lead, d_p),
-            lead_angle_rad=np.arctan(tan_l),
             repeatability_m=np.nan_to_num(col("repeatability_m")),
             coated=flag("coated"),
             anti_backlash=flag("anti_backlash"),
@@ -281,12 +334,9 @@ class CandidateTable:
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
             traverse_limit_m_s=traverse,
             traverse_extrapolated=extrapolated,
-            friction_static=mu_s,
-            cos_half_angle=cos_a,
             ball=ball,
-            **{name: col(attr) for name, attr in COPIED.items()},
-            **_thread_efficiencies(tan_l, mu_s, mu_d, cos_a),
-            **_nut_columns(screws, lead),
+            **columns,
+            **_axis_free(columns),
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 from app.catalog import Catalog
 from app.contract.schemas import ApplicationIn
-from app.core import motion
+from app.core import motion, segments
 from app.core.checks.wear_life import life_band
 from app.core.index import size_of
 from app.core.model import Application
@@ -37,7 +37,7 @@ class ChartData:
     """The axis's numbers in SI that the charts mark (length [m], the speed the move
     reaches [m/s], ``motion.reached_speed``, the torque
     limit [N m] or None, the motor's curve as (rpm, N m) pairs, the torque safety factor and the
-    curve's margin, ``motion.curve_margin``), the lead sweep (empty without a catalog)
+    curve's margin, ``segments.curve_margin``), the lead sweep (empty without a catalog)
     the wear lines (``wear_in_years``: their life is in years of a duty) and the nuts'
     pressure limits (empty without a catalog)."""
 
@@ -94,7 +94,7 @@ def chart_data(
         torque_limit_nm=app.max_torque_nm,
         curve=app.motor_curve,
         torque_safety_factor=app.torque_safety_factor,
-        curve_margin=motion.curve_margin(app),
+        curve_margin=segments.curve_margin(app),
         sweep=sweep,
         wear=wear,
         wear_in_years=in_years,

@@ -14,7 +14,7 @@ C0a 13.6 kN, shaft inertia 1.23e-3 kg cm^2/mm, efficiency 0.9).
 
 import numpy as np
 
-from app.core import motion
+from app.core import motion, segments
 from app.core.formulas import ballscrew, buckling, efficiency, geometry, torque
 from app.core.formulas import critical_speed as cs
 from app.core.model import Application, Move, ScrewSpec
@@ -99,7 +99,7 @@ def phases() -> list[tuple[float, float]]:
     outward direction) and its travel [m], from the app's own segments with the mass
     carried through the thread: THK's Fa1 to Fa6 and l1 to l6."""
     app = application(mass_as_inertia=False)
-    parts = motion.segments(app, CandidateTable.build([screw()]), np.zeros(1))
+    parts = segments.segments(app, CandidateTable.build([screw()]), np.zeros(1))
     moving = [s for s in parts if s.name != "dwell"]
     every = motion.profiles(app) or []
     travels = [x for p in every for x in motion.segment_travels(p)]
@@ -152,5 +152,5 @@ def load_inertia_kg_m2() -> float:
 def segment_torque_nm(name: str) -> float:
     """The motor torque of the out move's ``name`` segment (THK's Tk, Tt, Tg)."""
     app = application(mass_as_inertia=True)
-    parts = motion.segments(app, CandidateTable.build([screw()]), np.zeros(1))
+    parts = segments.segments(app, CandidateTable.build([screw()]), np.zeros(1))
     return float(next(s for s in parts if s.name == name).torque_nm[0])

@@ -160,7 +160,7 @@ def weihong_application(mass_as_inertia: bool = True) -> Application:
 
 def weihong_cycle(mass_as_inertia: bool = True) -> Quantities[np.ndarray]:
     """The example's operating point, by the selection's own path (``operating_point``:
-    ``motion.cycle``, ``motion.segments``, ``motion.rms``)."""
+    ``motion.cycle``, ``segments.segments``, ``segments.rms``)."""
     table = CandidateTable.build([weihong_screw()])
     return operating_point(weihong_application(mass_as_inertia), table)
 

@@ -13,7 +13,7 @@ from app.catalog import Catalog, CatalogError
 from app.catalog.motors import load_motors
 from app.contract.form import parse_inputs, parse_units, share_query
 from app.contract.inputs import ApplicationIn
-from app.core import motion
+from app.core import segments
 from app.core.evaluate import evaluate
 from app.core.formulas import stepper
 from tests.motor_library import MOTORS
@@ -381,8 +381,8 @@ def test_a_servo_curve_has_no_stepper_margin() -> None:
     """The margin divides a stepper's pull-out only: a servo's envelope is its rating."""
     servo = ApplicationIn.model_validate({**BASE, "motor": "yaskawa-sgm7j-01a"}).to_core(MOTORS)
     stepper_app = ApplicationIn.model_validate({**BASE, "motor": "pololu-1205"}).to_core(MOTORS)
-    assert motion.curve_margin(servo) == 1.0
-    assert motion.curve_margin(stepper_app) == 1.5
+    assert segments.curve_margin(servo) == 1.0
+    assert segments.curve_margin(stepper_app) == 1.5
 
 
 def test_a_library_detent_torque_fills_the_detent_input() -> None:

@@ -21,7 +21,7 @@ from app.contract.units import DEFAULT_UNITS, render
 from app.core.evaluate import evaluate
 from app.core.formulas import pv_derating
 from app.core.model import Application
-from app.core.quantities import _pv_limit
+from app.core.nut import pv_limit
 
 AXIS = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 350.0}
 RATING = 0.105  # MPa m/s
@@ -104,7 +104,7 @@ def test_the_derating_reads_the_ambient_not_the_nut_rise(catalog: Catalog) -> No
     nut's own rise (the rise is the PV's own heat, judged by the nut heat check)."""
     table = catalog.index.table.take(np.array([catalog.index.positions["B8000-L10"]]))
     app = Application(load_n=100.0, speed_m_s=0.05, length_m=0.35, ambient_c=33.0)
-    out = _pv_limit(app, table)
+    out = pv_limit(app, table)
     assert out["pv_temperature_factor"][0] == pytest.approx(60.0 / 73.0)
     assert out["pv_limit_pa_m_s"][0] == pytest.approx(60.0 / 73.0 * RATING * 1e6)
 

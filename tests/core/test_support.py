@@ -12,11 +12,12 @@ from hypothesis import strategies as st
 from app.catalog import Catalog
 from app.catalog.supports import UnknownSupport, with_support
 from app.core.checks.base import FIX_MARGIN
+from app.core.column import column_length
+from app.core.duty import travel_thrusts
 from app.core.evaluate import evaluate
 from app.core.formulas import buckling, support
 from app.core.model import Application, ScrewSpec
 from app.core.phrase import Amount
-from app.core.quantities import column_length, travel_thrusts
 from tests.core.conftest import STEEL_E, light_app
 
 #: THK Support Unit catalog, Models EK, BK, FK, EF, BF and FF (513-2E; studylib.net/doc/

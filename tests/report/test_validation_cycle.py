@@ -14,8 +14,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from app.core import motion
+from app.core import motion, segments
 from app.core.formulas import torque
+from app.core.model import Segment
 from app.core.table import CandidateTable
 from app.report import validation as v
 
@@ -23,9 +24,9 @@ from app.report import validation as v
 WITHIN = 0.01
 
 
-def _parts() -> list[motion.Segment[np.ndarray]]:
+def _parts() -> list[Segment[np.ndarray]]:
     app = v.weihong_application()
-    return motion.segments(app, CandidateTable.build([v.weihong_screw()]), np.zeros(1))
+    return segments.segments(app, CandidateTable.build([v.weihong_screw()]), np.zeros(1))
 
 
 def test_the_screw_carries_the_stated_efficiency_and_the_maker_load_inertia() -> None:
@@ -57,10 +58,10 @@ def test_every_segment_torque_matches_the_maker() -> None:
 
 def test_rms_and_peak_match_the_maker_through_the_selection_path() -> None:
     """T_rms = sqrt((0.2309^2 x 0.1 + 0.0347^2 x 0.8 + 0.1616^2 x 0.1) / 2) = 0.0667
-    (printed 0.067): the same from ``motion.rms`` over the segments and from the
+    (printed 0.067): the same from ``segments.rms`` over the segments and from the
     operating point the selection reports; the peak is T_a."""
     q = v.weihong_cycle()
-    assert float(motion.rms(_parts())[0]) == pytest.approx(float(q.motor_rms_nm[0]), rel=1e-12)
+    assert float(segments.rms(_parts())[0]) == pytest.approx(float(q.motor_rms_nm[0]), rel=1e-12)
     assert q.motor_rms_nm[0] == pytest.approx(0.067, rel=WITHIN)
     assert q.motor_peak_nm[0] == pytest.approx(0.231, rel=WITHIN)
     by_hand = math.sqrt((0.2309**2 * 0.1 + 0.03466**2 * 0.8 + 0.1616**2 * 0.1) / 2.0)
@@ -85,6 +86,6 @@ def test_a_longer_stop_lowers_the_rms_as_the_square_root_of_the_cycle() -> None:
     app = v.weihong_application()
     longer = replace(app, moves=tuple(replace(m, dwell_s=3.0) for m in app.moves))
     table = CandidateTable.build([v.weihong_screw()])
-    base = motion.rms(motion.segments(app, table, np.zeros(1)))[0]
-    slow = motion.rms(motion.segments(longer, table, np.zeros(1)))[0]
+    base = segments.rms(segments.segments(app, table, np.zeros(1)))[0]
+    slow = segments.rms(segments.segments(longer, table, np.zeros(1)))[0]
     assert slow == pytest.approx(base / math.sqrt(2.0), rel=1e-12)

@@ -6,7 +6,7 @@ from typing import Any
 from app.contract.reported.row import Formula, Reported
 from app.contract.source import From, Writer
 from app.contract.units import si_to_api
-from app.core import motion, quantities
+from app.core import quantities, segments
 from app.core.formulas import efficiency, energy, geometry, profile, torque
 from app.core.formulas.declare import SEED
 
@@ -21,9 +21,9 @@ def peak_power(record: Any, w: Writer) -> float:
     """The largest mechanical power at the motor shaft [W], driving or braking: with a
     move, |T ω| of each segment at its top speed (a ramp's torque reaches that speed at
     its end); without one, the accelerating torque at the screw's speed."""
-    segments = record.segments
-    if segments:
-        return max(abs(energy.shaft_power(s.torque_nm, s.rpm)) for s in segments)
+    parts = record.segments
+    if parts:
+        return max(abs(energy.shaft_power(s.torque_nm, s.rpm)) for s in parts)
     return abs(energy.shaft_power(record.torque.total_nm, record.rpm))
 
 
@@ -181,7 +181,7 @@ ROWS: tuple[Reported, ...] = (
     ),
     Reported(
         "torque.peak_nm",
-        formula=Formula(motion.segments, "T = max |T_segment| over the cycle", "move profile"),
+        formula=Formula(segments.segments, "T = max |T_segment| over the cycle", "move profile"),
         views=("summary",),
     ),
     Reported(

@@ -3,7 +3,7 @@ cycle (the motor's work, braking, the work on the load, the losses)."""
 
 from app.contract.reported.row import Formula, Reported
 from app.contract.source import From
-from app.core import motion
+from app.core import cycle_energy
 from app.core.formulas import energy, life
 
 ROWS: tuple[Reported, ...] = (
@@ -72,7 +72,7 @@ ROWS: tuple[Reported, ...] = (
                 "Given a move: the work done on the load in one cycle, sum F x over the "
                 "segments: the external loads and the weight raised less the weight lowered "
                 "(the moving mass's kinetic energy cancels over each move).",
-                motion.cycle_energy,
+                cycle_energy.cycle_energy,
                 "W = sum F_i x_i over the moving segments",
                 "work of a force",
             ),

@@ -2,7 +2,7 @@
 profile and each segment's time, speed, thrust and torque."""
 
 from app.contract.reported.row import Formula, Reported
-from app.core import motion
+from app.core import motion, segments
 from app.core.formulas import accuracy, geometry, profile
 
 ROWS: tuple[Reported, ...] = (
@@ -38,7 +38,7 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "segments.thrust_n",
         formula=Formula(
-            motion.segments,
+            segments.segments,
             "F = s F_steady + m a, a = +a, 0, -d along the motion; F_steady = load (+ m g "
             "when vertical), s = +1 out, back and up, -1 down; in a dwell F_steady when "
             "vertical",

@@ -15,9 +15,9 @@ from app.core.checks.base import (
     same,
     where_given,
 )
+from app.core.duty import REFERENCE_TEMPERATURE_C
 from app.core.formulas import accuracy
 from app.core.phrase import Amount, Phrase
-from app.core.quantities import REFERENCE_TEMPERATURE_C
 
 
 class Accuracy(Check):

@@ -16,9 +16,9 @@ from app.core.checks.base import (
     ScrewSpec,
     same,
 )
+from app.core.duty import travel_thrusts
 from app.core.formulas import ballscrew, life
 from app.core.phrase import Amount, Phrase
-from app.core.quantities import travel_thrusts
 
 #: The load factor f_w on the cubic mean load: the top of HIWIN's 1.1 to 1.2 for
 #: operation without impact (1.3 to 1.8 in normal operation, sec. 3.7.2); MISUMI's

@@ -18,9 +18,9 @@ from app.core.checks.base import (
     sentence,
     stiffer_fixity,
 )
+from app.core.column import column_length
 from app.core.formulas import buckling
 from app.core.phrase import Amount, Phrase
-from app.core.quantities import column_length
 
 
 class ColumnBuckling(Check):

@@ -19,8 +19,8 @@ from app.core.checks.base import (
     same,
 )
 from app.core.formulas import efficiency
+from app.core.holding import brake_factor
 from app.core.phrase import Amount, Phrase
-from app.core.quantities import brake_factor
 
 
 def power_state(app: Application) -> str:

@@ -2,7 +2,7 @@
 
 import math
 
-from app.core import motion
+from app.core import motion, segments
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -103,8 +103,8 @@ class MotorCurve(Check):
         return {
             "SF": app.torque_safety_factor,
             "T_seg": q.motor_worst_nm,
-            "T_curve": q.motor_curve_nm * motion.curve_margin(app),
-            "M": motion.curve_margin(app),
+            "T_curve": q.motor_curve_nm * segments.curve_margin(app),
+            "M": segments.curve_margin(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
@@ -116,7 +116,7 @@ class MotorCurve(Check):
             "curve": Amount(r.motor_curve_nm, "torque"),
         }
         text = "The {segment} segment needs {need} at {rpm}, which " + verb + " the motor's "
-        margin = motion.curve_margin(app)
+        margin = segments.curve_margin(app)
         if app.step_angle_deg is None:
             return Phrase(text + "{curve} there.", values)
         values["pull_out"] = Amount(r.motor_curve_nm * margin, "torque")

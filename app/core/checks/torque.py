@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from app.core import motion
+from app.core import segments
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -51,7 +51,7 @@ class DriveTorque(Check):
     ) -> Mapping[str, object]:
         return {
             "SF": app.torque_safety_factor,
-            "T_move": np.max([np.abs(m[3]) for m in motion.moving_torques(app, t)], axis=0),
+            "T_move": np.max([np.abs(m[3]) for m in segments.moving_torques(app, t)], axis=0),
             "T_breakaway": q.breakaway_nm,
             "T_drive": app.max_torque_nm,
         }

@@ -203,7 +203,21 @@ def root_von_mises_stress(load_n: float, torque_nm: float, root_diameter_m: floa
     """
     sigma = root_stress(load_n, root_diameter_m)
     tau = root_shear_stress(torque_nm, root_diameter_m)
-    return cast(float, (sigma**2 + 3.0 * tau**2) ** 0.5)
+    return von_mises_stress(sigma, tau)
+
+
+@formula("sigma_vm = sqrt(sigma^2 + 3 tau^2)", "Shigley 9th ed., eq. (5-15)")
+def von_mises_stress(axial_pa: float, shear_pa: float) -> float:
+    """Von Mises stress of a normal stress and a shear stress on the same section,
+    sigma_vm = sqrt(sigma^2 + 3 tau^2) [Pa]; axial_pa: sigma [Pa], shear_pa: tau [Pa]
+    (either sign). Valid while the section is elastic. Source: Shigley [2], eq. (5-15)
+    with one normal and one shear stress; its Example 8-1 body stresses
+    (sigma = -10.39 MPa, tau = 6.07 MPa) give 14.78 MPa.
+
+    >>> round(von_mises_stress(-10.39e6, 6.07e6) / 1e6, 2)
+    14.78
+    """
+    return cast(float, (axial_pa**2 + 3.0 * shear_pa**2) ** 0.5)
 
 
 def largest_root_load(

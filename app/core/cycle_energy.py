@@ -1,0 +1,81 @@
+"""The energy of one cycle for many candidates at once, from its segments.
+
+``cycle_energy`` sums each segment's (``segments.segments``) shaft work, the work on the
+load, the thread's friction and the nut's drag over the segment's travel, and adds a
+stepper's copper loss over the whole cycle.
+"""
+
+import math
+
+import numpy as np
+
+from app.core.formulas import energy
+from app.core.model import Application, Segment
+from app.core.motion import profiles, segment_travels
+from app.core.table import Array, CandidateTable
+
+#: The energy of one cycle, per candidate [J] (``cycle_energy``).
+ENERGY = (
+    "cycle_motor_work_j",
+    "cycle_regen_j",
+    "cycle_load_work_j",
+    "cycle_thread_loss_j",
+    "cycle_drag_loss_j",
+    "cycle_copper_loss_j",
+)
+
+
+def copper_current_rms(app: Application) -> float | None:
+    """A stepper's RMS phase current [A] where its step angle, current and winding
+    resistance are given (the current as typed, or the sine's peak over sqrt 2); None
+    otherwise (a servo's copper loss needs its torque constant, which is not an input)."""
+    current = app.motor_phase_current_a
+    if app.step_angle_deg is None or current is None or app.motor_resistance_ohm is None:
+        return None
+    return current if app.motor_current_rms else current / math.sqrt(2.0)
+
+
+def cycle_energy(
+    app: Application, t: CandidateTable, parts: list[Segment[Array]]
+) -> dict[str, Array]:
+    """The energy of one cycle over ``parts`` (``segments``), per candidate [J]: the
+    motor's work at its shaft where it drives (``energy.shaft_energy`` above 0), the
+    energy braking gives back on decelerate and down segments (its work below 0, before
+    the drive's own losses), the work done on the load (sum F x: its weight and external
+    load; the moving mass's kinetic energy cancels over each move), the thread's friction
+    (``energy.thread_loss``) and the nut's drag, and a stepper's copper loss over the
+    whole cycle (``energy.stepper_copper_loss``, the drive holding its current at rest
+    too: NaN without its current and resistance). NaN without a profile. The balance:
+    motor work - braking = load work + thread loss + drag loss."""
+    nan = np.full(len(t), np.nan)
+    every = profiles(app)
+    if every is None or not parts:
+        return dict.fromkeys(ENERGY, nan)
+    travels = [x for p in every for x in (*segment_travels(p), 0.0)]
+    zero = np.zeros(len(t))
+    motor, regen, load, thread = zero, zero, zero, zero
+    for s, x in zip(parts, travels, strict=True):
+        shaft = energy.shaft_energy(s.torque_nm, x, t.lead_m)
+        motor = motor + np.maximum(shaft, 0.0)
+        regen = regen + np.maximum(-shaft, 0.0)
+        load = load + s.thrust_n * x
+        thread = thread + energy.thread_loss(
+            s.thrust_n, x, t.efficiency, t.backdrive_efficiency_signed
+        )
+    current = copper_current_rms(app)
+    copper = nan
+    if current is not None:
+        joules = energy.stepper_copper_loss(
+            current, app.motor_resistance_ohm or 0.0, every[0].cycle_time_s
+        )
+        copper = np.full(len(t), joules)
+    return {
+        "cycle_motor_work_j": motor,
+        "cycle_regen_j": regen,
+        "cycle_load_work_j": load,
+        "cycle_thread_loss_j": thread,
+        "cycle_drag_loss_j": np.asarray(
+            energy.shaft_energy(t.drag_max_nm, sum(travels), t.lead_m), dtype=np.float64
+        ),
+        "cycle_copper_loss_j": copper,
+    }

@@ -1,0 +1,145 @@
+"""The motor's view of the axis for many candidates at once: the torque breakdown of the
+move that starts hardest, each segment's torque against the motor's curve, the RMS torque,
+the acceleration that fits the curve and the stepper controller's step rate.
+"""
+
+from typing import Any
+
+import numpy as np
+
+from app.core import cycle_energy, motion, segments
+from app.core.formulas import (
+    geometry,
+    stepping,
+    torque,
+)
+from app.core.model import Application, Segment
+from app.core.table import Array, CandidateTable
+
+
+def torques(
+    app: Application, t: CandidateTable, force_n: float, moving: list[segments.Moving]
+) -> dict[str, Any]:
+    """Motor torque: the screw's and the rotor's inertia J alpha, and every force that
+    passes through the sliding thread (the load and the force m a that accelerates the
+    moving mass) at the thread's efficiency, plus the nut's drag. Starting from rest the
+    thread is at static friction while the load and m a already act. The required torque
+    is the larger of break-away and the peak of the moving segments of both moves
+    (``moving``, the rows of ``segments.moving_torques``: decelerating a descending load
+    may need more). The breakdown and break-away are those of the move that starts hardest
+    (``motion.lead_move``: out and back, the scalar inputs)."""
+    move = motion.lead_move(app)
+    alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
+    j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
+    j_mass = torque.reflected_mass_inertia(move.moving_mass_kg, t.lead_m)
+    inertial_force_n = move.moving_mass_kg * move.accel_m_s2
+    t_screw = torque.inertia_torque(j_screw, alpha)
+    t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
+    t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency)
+    t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
+    t_inertia = t_screw + t_motor + t_mass
+    t_total = torque.total_torque(t_inertia, t.drag_max_nm, t_load)
+    t_start = (
+        torque.load_torque(force_n + inertial_force_n, t.lead_m, t.efficiency_static)
+        + t_screw
+        + t_motor
+        + t.drag_max_nm
+    )
+    magnitude = np.abs(np.array([m[3] for m in moving]))
+    largest = magnitude.max(axis=0)
+    peak = np.maximum(largest, t_start)
+    segment = np.where(largest > t_start, np.argmax(magnitude, axis=0), -1)
+    return {
+        "angular_accel_rad_s2": alpha,
+        "inertia_kg_m2": j_screw + j_mass,
+        "inertia_screw_nm": t_screw,
+        "inertia_mass_nm": t_mass,
+        "inertia_motor_nm": t_motor,
+        "inertia_nm": t_inertia,
+        "drag_nm": t.drag_max_nm,
+        "load_nm": t_load,
+        "total_nm": t_total,
+        "breakaway_nm": t_start,
+        "peak_torque_nm": peak,
+        "peak_torque_segment": segment,
+        "required_nm": peak * app.torque_safety_factor,
+    }
+
+
+def controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str, Any]:
+    """The step rate the peak speed needs and the travel of one step pulse."""
+    if app.step_angle_deg is None:
+        nan = np.full(len(t), np.nan)
+        return {"step_rate_hz": nan, "step_resolution_m": nan}
+    per_rev = stepping.steps_per_rev(app.step_angle_deg, app.microsteps)
+    return {
+        "step_rate_hz": stepping.step_rate(peak_rpm, per_rev),
+        "step_resolution_m": 1.0 / stepping.steps_per_metre(per_rev, t.lead_m),
+    }
+
+
+def motor_point(
+    app: Application,
+    t: CandidateTable,
+    rpm: Array,
+    hold_nm: Array,
+    torques: dict[str, Any],
+    moving: list[segments.Moving],
+) -> dict[str, Any]:
+    """The motor's view of the move: every segment's torque against the curve (the moving
+    ones' ``moving``, from ``segments.moving_torques``). Without a stroke there is no
+    profile: the one point is today's torque at the top speed, ``rpm``."""
+    p = motion.move_profile(app)
+    peak_rpm = worst_rpm = rpm
+    nan = np.full(len(t), np.nan)
+    fitting = nan
+    parts: list[Segment[Array]] = []
+    if p is None:
+        worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
+        index, peak, rms = np.full(len(t), -1.0), nan, nan
+    else:
+        peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
+        parts = segments.segments(app, t, hold_nm, moving)
+        signed = np.array([s.torque_nm for s in parts])
+        magnitude = np.abs(signed)
+        speeds = np.array([s.rpm for s in parts])
+        load = magnitude / segments.curve_torque(app, speeds) if app.motor_curve else magnitude
+        index = np.argmax(load, axis=0)
+        columns = np.arange(len(t))
+        worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
+        peak, rms = magnitude.max(axis=0), segments.rms(parts)
+        if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
+            fitting = fitting_accel(app, parts, signed, index, worst_rpm)
+    curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan
+    return {
+        "peak_rpm": peak_rpm,
+        "motor_peak_nm": peak,
+        "motor_rms_nm": rms,
+        "motor_rms_needed_nm": rms * app.torque_safety_factor,
+        "motor_worst_segment": index,
+        "motor_worst_nm": worst_nm,
+        "motor_worst_needed_nm": worst_nm * app.torque_safety_factor,
+        "motor_worst_rpm": worst_rpm,
+        "motor_curve_nm": curve,
+        "motor_fitting_accel_m_s2": fitting,
+        **cycle_energy.cycle_energy(app, t, parts),
+    }
+
+
+def fitting_accel(
+    app: Application, parts: list[Segment[Array]], torque_nm: Array, worst: Array, rpm: Array
+) -> Array:
+    """The acceleration [m/s^2] at which each candidate's worst segment fits the motor
+    curve, where that segment accelerates: its torque is affine in the acceleration,
+    T(a) = T_run + k a with T_run the constant-speed segment's that follows, so
+    a = (T_curve / SF - T_run) / k, the curve read at the segment's speed ``rpm``. NaN
+    where another segment is the worst, or where no acceleration fits (k <= 0, or T_run
+    alone over the curve)."""
+    columns = np.arange(torque_nm.shape[1])
+    accelerating = np.array([s.name == "accelerate" for s in parts])[worst]
+    after = np.minimum(worst + 1, len(parts) - 1)
+    t_acc, t_run = torque_nm[worst, columns], torque_nm[after, columns]
+    slope = (t_acc - t_run) / app.accel_m_s2
+    room = segments.curve_torque(app, rpm) / app.torque_safety_factor - t_run
+    fits = accelerating & (slope > 0.0) & (room > 0.0)
+    return np.where(fits, room / np.where(fits, slope, 1.0), np.nan)

@@ -1,0 +1,111 @@
+"""The duty for many candidates at once: the rated life in years, lead error and thermal
+growth over the stroke, the nut's heat balance, and the thrust bearing's load and life.
+"""
+
+import math
+from typing import Any
+
+import numpy as np
+
+from app.core import motion
+from app.core.formulas import (
+    accuracy,
+    heat,
+    life,
+    support,
+)
+from app.core.model import Application
+from app.core.nut import nut_length
+from app.core.table import Array, CandidateTable, finite
+
+#: Ambient temperature at which the screw's length is nominal [C].
+REFERENCE_TEMPERATURE_C = 20.0
+
+
+def heat_balance(
+    app: Application, t: CandidateTable, force_n: float, wear_n: float
+) -> dict[str, Any]:
+    """Friction power at the cycle's mean speed and the nut's steady temperature rise:
+    the screw conducts the heat away both ways as a fin, the nut's surface convects it.
+    A cycle of the user's own moves heats at its mean friction power: its travel-weighted
+    mean thrust (``wear_n``, ``motion.wear_thrust``) at its mean speed, every segment
+    through the forward efficiency (a segment the load drives loses less: the safe
+    side)."""
+    p = motion.move_profile(app)
+    stroke = motion.equivalent_stroke(app) or 0.0
+    mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
+    if app.moves:
+        force_n = wear_n
+    power = finite(heat.friction_power(force_n, mean_speed, t.efficiency))
+    # the fin conductance and nut diameter in still air follow from the catalog alone
+    rise = heat.temperature_rise(
+        power,
+        t.fin_conductance_w_k,
+        nut_length(app, t),
+        t.nut_outer_diameter_m,
+        heat.FREE_CONVECTION_W_M2_K,
+    )
+    return {
+        "heat_speed_m_s": np.full(len(t), mean_speed),
+        "friction_power_w": power,
+        "nut_temperature_rise_k": rise,
+    }
+
+
+def duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str, Any]:
+    """Rated life in years for the duty, lead error and thermal growth over the stroke.
+
+    The seed rates its nuts' travel without the load it holds at, and warns that life
+    varies with load: the rated travel is taken as at most the wear life of the same nut
+    material at this cycle's wear thrust (``wear_travel_m``, NaN where the nut has no
+    wear rate), so a rating never promises more at a high load than the wear law."""
+    nan = np.full(len(t), np.nan)
+    stroke, cycles = motion.equivalent_stroke(app), motion.cycles_per_day(app)
+    rated = bool(stroke and cycles)
+    travel = app.stroke_m if app.stroke_m is not None else app.length_m
+    low_m = np.where(np.isnan(t.life_min_m), np.nan, np.fmin(t.life_min_m, wear_travel_m))
+    high_m = np.where(np.isnan(t.life_max_m), np.nan, np.fmin(t.life_max_m, wear_travel_m))
+    return {
+        "life_travel_min_m": low_m,
+        "life_years_min": life.life_years(low_m, stroke, cycles) if rated else nan,
+        "life_years_max": life.life_years(high_m, stroke, cycles) if rated else nan,
+        "lead_error_m": accuracy.cumulative_lead_error(t.lead_accuracy, travel),
+        "thermal_growth_m": accuracy.thermal_growth(
+            t.screw_expansion_per_k, travel, app.ambient_c - REFERENCE_TEMPERATURE_C
+        ),
+    }
+
+
+def travel_thrusts(app: Application) -> tuple[list[float], list[float]]:
+    """The thrust on the nut in each moving segment of every move [N] and the distance
+    travelled in it [m] (a ramp covers v t / 2, the constant segment v t,
+    ``motion.wear_forms``); none without a stroke."""
+    if motion.move_profile(app) is None:
+        return [], []
+    forms, travels = motion.wear_forms(app)
+    return [g + h * app.load_n for g, h in forms], travels
+
+
+def support_bearing(app: Application, t: CandidateTable) -> dict[str, Any]:
+    """The thrust bearing: its allowed static thrust C0a / fs, the cube-mean thrust of the
+    cycle and its L10 life in years (revolutions times the lead over the duty's travel)."""
+    nan = np.full(len(t), np.nan)
+    allowed = nan
+    if app.support_static_n is not None:
+        allowed = np.full(
+            len(t),
+            support.static_allowed_load(app.support_static_n, app.support_static_safety_factor),
+        )
+    forces, distances = travel_thrusts(app)
+    mean_n = support.mean_axial_load(forces, distances) if forces else math.nan
+    years = nan
+    stroke = motion.equivalent_stroke(app)
+    duty = stroke and app.cycles_per_day
+    if app.support_dynamic_n is not None and duty and mean_n > 0.0:
+        revolutions = support.rating_life_revolutions(app.support_dynamic_n, mean_n)
+        years = life.life_years(revolutions * t.lead_m, stroke, app.cycles_per_day)
+    return {
+        "support_allowed_n": allowed,
+        "support_mean_load_n": np.full(len(t), mean_n),
+        "support_life_years": years,
+    }

@@ -1,0 +1,80 @@
+"""Holding the load at rest for many candidates at once: whether the thread self-locks with
+margin, the torque a brake (or the motor) must hold otherwise, and the power-off hold's
+margins.
+"""
+
+from typing import Any
+
+import numpy as np
+
+from app.core import motion
+from app.core.formulas import (
+    efficiency,
+)
+from app.core.model import Application
+from app.core.table import Array, CandidateTable
+
+
+def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
+    """Holding the load ``force_n`` at standstill (``motion.steady_load``: friction holds
+    nothing). The thread counts as self-locking only with static friction reduced by
+    ``app.self_locking_friction_factor``; otherwise a brake (or the motor) must hold the
+    larger of the seed's value (forward efficiency, running friction) and the physical one
+    at that same distrusted friction (back-drive efficiency at f mu_s), times the brake's
+    safety factor (the torque safety factor when none is given)."""
+    mu_margin = t.friction_static * app.self_locking_friction_factor
+    locks = mu_margin >= t.self_locking_friction
+    seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
+    physics = efficiency.holding_torque(force_n, t.lead_m, t.backdrive_efficiency)
+    distrusted = efficiency.holding_torque(
+        force_n,
+        t.lead_m,
+        efficiency.backdrive_efficiency(t.tan_lead_angle, mu_margin, t.cos_half_angle),
+    )
+    unlocked = np.maximum(seed, distrusted)
+    brake = np.where(locks, 0.0, unlocked)
+    factor = brake_factor(app)
+    max_lock = efficiency.max_self_locking_lead(t.pitch_diameter_m, mu_margin, t.cos_half_angle)
+    return {
+        **hold_margins(app, t, max_lock, unlocked * factor),
+        "holding_seed_nm": np.where(locks, 0.0, seed),
+        "holding_physics_nm": physics,
+        "holding_distrusted_nm": distrusted,
+        "brake_nm": brake,
+        "brake_needed_nm": brake * factor,
+        "locks_with_margin": locks,
+        "max_self_locking_lead_with_margin_m": max_lock,
+    }
+
+
+def unpowered_torque(app: Application) -> float | None:
+    """The torque that holds with the power off besides the thread [N m]: a brake's, or
+    a stepper's detent torque (its energised holding torque does not count); None: none."""
+    if app.holding_source == "brake":
+        return app.brake_torque_nm
+    return app.detent_torque_nm
+
+
+def hold_margins(
+    app: Application, t: CandidateTable, max_lock_m: Array, needed_nm: Array
+) -> dict[str, Any]:
+    """The power-off hold's margins (``efficiency.hold_margin``): the thread's alone, and
+    the hold's with the unpowered torque (``unpowered_torque``) over ``needed_nm``; NaN
+    where holding with the power off is not required or no load is held."""
+    nan = np.full(len(t), np.nan)
+    if not (app.hold_power_off and motion.holds_a_load(app)):
+        return {"hold_thread_margin": nan, "hold_margin": nan}
+    torque_nm = unpowered_torque(app)
+    device = nan if torque_nm is None else np.full(len(t), torque_nm)
+    needed = np.where(needed_nm > 0.0, needed_nm, np.nan)
+    return {
+        "hold_thread_margin": efficiency.hold_margin(max_lock_m, t.lead_m, nan, 1.0),
+        "hold_margin": efficiency.hold_margin(max_lock_m, t.lead_m, device, needed),
+    }
+
+
+def brake_factor(app: Application) -> float:
+    """The safety factor on the holding torque: the brake's, else the torque factor."""
+    if app.brake_safety_factor is None:
+        return app.torque_safety_factor
+    return app.brake_safety_factor

@@ -1,0 +1,147 @@
+"""The nut for many candidates at once: its PV and the limits PV sets, its engaged flanks and
+the pressure and load they allow, and its wear life (Archard).
+"""
+
+from typing import Any
+
+import numpy as np
+
+from app.core import motion
+from app.core.formulas import (
+    bearing,
+    geometry,
+    life,
+    pv,
+    pv_derating,
+    wear,
+)
+from app.core.model import Application
+from app.core.table import Array, CandidateTable, finite
+
+
+def pv_limit(app: Application, t: CandidateTable) -> dict[str, Any]:
+    """The nut's permissible PV at the ambient and its lubrication: the rating times the
+    temperature factor (``pv_derating.temperature_factors`` at the ambient; 1 where the
+    material's highest temperature is unknown) times the lubrication factor.
+
+    A PV rating is the PV whose own friction heat brings the nut to its highest
+    temperature from the rating's room [pv_derating 1-3]: it already holds the nut's rise,
+    so only the ambient above the room derates it (the rise itself is the nut heat
+    check's, with the duty)."""
+    temperature = pv_derating.temperature_factors(app.ambient_c, t.temperature_max_c)
+    lubrication = pv_derating.LUBRICATION_FACTORS[app.lubrication][0]
+    return {
+        "pv_temperature_factor": temperature,
+        "pv_lubrication_factor": np.full(len(t), lubrication),
+        "pv_limit_pa_m_s": t.pv_limit_pa_m_s * temperature * lubrication,
+    }
+
+
+def seed_pv(
+    app: Application, t: CandidateTable, force_n: float, rpm: Array, limit: Array
+) -> dict[str, Any]:
+    """PV of the nut (seed, three threads in contact) and its limits inverted at the
+    permissible PV ``limit``, at the peak thrust ``force_n``: an accelerating segment ends
+    at the top speed still carrying m a."""
+    area = t.contact_area_m2
+    return {
+        "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m),
+        "pressure_pa": np.broadcast_to(pv.contact_pressure(force_n, area), rpm.shape),
+        "surface_speed_m_s": pv.surface_speed(rpm, t.helix_travel_m),
+        "contact_area_m2": area,
+        "pv_max_load_n": pv.max_load_for_pv(limit, rpm, t.thread_depth_m),
+        "pv_max_speed_m_s": finite(
+            geometry.linear_speed(pv.max_rpm_for_pv(limit, force_n, t.thread_depth_m), t.lead_m)
+        ),
+    }
+
+
+def table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
+    """Each candidate's pressure-speed table value at its sliding speed [Pa] (NaN without
+    a table); candidates sharing a table are interpolated together."""
+    out = np.full(len(t), np.nan)
+    for position, table in enumerate(t.pressure_tables):
+        rows = np.flatnonzero(t.pressure_table == position)
+        if rows.size:
+            out[rows] = bearing.table_pressure(speed_m_s[rows], table)
+    return out
+
+
+def nut_allowed_pressures(t: CandidateTable, pv_limit_pa_m_s: Array, speed_m_s: Array) -> Array:
+    """The pressure each nut's material allows at its sliding speed [Pa]: the lowest of
+    its table value, p_max and the (derated) ``pv_limit_pa_m_s`` over the speed [m/s]
+    (``bearing.allowable_pressure``); NaN for a nut with none of them."""
+    allowed: Array = bearing.allowable_pressure(
+        table_pressures(t, speed_m_s), t.max_pressure_pa, pv_limit_pa_m_s, speed_m_s
+    )
+    return allowed
+
+
+def nut_length(app: Application, t: CandidateTable) -> Array:
+    """The nut length whose engaged turns carry the load: the user's, else the catalog's
+    (NaN where the catalog gives none) [m]."""
+    if app.nut_length_m is None:
+        return t.nut_length_m
+    return np.where(np.isnan(t.nut_length_m), np.nan, app.nut_length_m)
+
+
+def flank_area(app: Application, t: CandidateTable) -> Array:
+    """The engaged flank area (L / P) pi d2 H1 of a standard thread's nut [m^2] (NaN
+    without a thread pitch), with the nut length of ``nut_length`` (the catalog's, worked
+    out with the table)."""
+    if app.nut_length_m is None:
+        return t.catalog_flank_area_m2
+    area = bearing.engaged_flank_area(
+        nut_length(app, t), t.pitch_m, t.flank_pitch_diameter_m, t.flank_height_m
+    )
+    return np.asarray(area, dtype=np.float64)
+
+
+def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> dict[str, Any]:
+    """The engaged flanks of the nut: sliding speed n / 60 times the helix of one turn at
+    d2, the pressure the nut material allows at it (the lowest of its table value, p_max
+    and PV_lim / v, the PV limit derated by ``derate``, the temperature and lubrication
+    factors of ``pv_limit``) and that pressure over the engaged flank area."""
+    speed = pv.surface_speed(rpm, t.flank_helix_travel_m)
+    pv_limit = t.nut_pv_limit_pa_m_s * derate
+    allowed = nut_allowed_pressures(t, pv_limit, speed)
+    area = flank_area(app, t)
+    return {
+        "nut_pv_limit_pa_m_s": pv_limit,
+        "flank_area_m2": area,
+        "sliding_speed_m_s": speed,
+        "nut_allowed_pressure_pa": allowed,
+        "nut_allowed_load_n": allowed * area,
+        "rated_load_n": np.where(
+            np.isnan(t.design_load_n),
+            bearing.dynamic_load(t.dynamic_pressure_pa, area),
+            t.design_load_n,
+        ),
+        "nut_length_m": np.where(np.isnan(t.pitch_m), np.nan, nut_length(app, t)),
+    }
+
+
+def wear_life(
+    app: Application, t: CandidateTable, flank_area_m2: Array, force_n: float
+) -> dict[str, Any]:
+    """Nut travel until its flanks have worn the allowed depth (Archard's law at the
+    cycle's wear thrust ``force_n``, ``motion.wear_thrust``): over the engaged flanks and
+    flank height of a standard thread, else over the seed's three threads and thread
+    depth."""
+    flanks = ~np.isnan(flank_area_m2)
+    area = np.where(flanks, flank_area_m2, t.contact_area_m2)
+    height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
+    helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
+    with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
+        sliding = wear.wear_life_sliding(
+            t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
+        )
+    travel = finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
+    cycles, stroke = motion.cycles_per_day(app), motion.equivalent_stroke(app)
+    rated = bool(stroke and cycles)
+    years = life.life_years(travel, stroke, cycles) if rated else travel * np.nan
+    return {
+        "wear_force_n": np.full(len(t), force_n),
+        "wear_travel_m": travel,
+        "wear_life_years": years,
+    }

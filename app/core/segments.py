@@ -1,0 +1,150 @@
+"""Each segment of the cycle for many candidates at once: its thrust and motor torque.
+
+``segments`` gives, for every candidate, the thrust and motor torque of each segment of
+the cycle (``motion.cycle``): accelerate, constant, decelerate and dwell, up and down on
+a vertical axis, out and back on a horizontal one. The torque of a moving segment is the
+thrust through the thread (by the direction the power flows, ``profile.thread_torque``),
+the nut's drag, and the rotary inertia of the screw and the motor's rotor times the
+angular acceleration; the moving mass enters through the thrust as m a. In a dwell the
+motor holds the load: the holding torque where the axis holds a load (vertical, or a
+load of fixed direction) and does not self-lock, else nothing. ``curve_torque`` reads
+the motor's curve at a segment's speed.
+"""
+
+from typing import Any
+
+import numpy as np
+
+from app.core.formulas import geometry, profile, torque
+from app.core.model import Application, Direction, Move, Profile, Segment, SegmentName
+from app.core.motion import (
+    RAMPS,
+    cycle,
+    direction_word,
+    directions,
+    load_sense,
+    moving_forms,
+    profiles,
+    rest_loads,
+    sense,
+    steady_load,
+)
+from app.core.table import Array, CandidateTable
+
+#: A moving segment for every candidate: its name and direction, the thrust against the
+#: motion [N] and the motor torque [N m] (``moving_torques``).
+Moving = tuple[SegmentName, Direction, float, Array]
+
+
+def _move(
+    app: Application,
+    p: Profile,
+    t: CandidateTable,
+    rows: list[Moving],
+) -> list[Segment[Array]]:
+    """The three moving segments of one move (its ``moving_torques`` rows), for every
+    candidate."""
+    rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
+    times = (p.accel_time_s, p.constant_time_s, p.decel_time_s)
+    return [
+        Segment(
+            name=name,
+            direction=direction,
+            duration_s=duration,
+            rpm=rpm,
+            thrust_n=np.full(len(t), thrust),
+            torque_nm=torque_nm,
+        )
+        for (name, direction, thrust, torque_nm), duration in zip(rows, times, strict=True)
+    ]
+
+
+def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]]:
+    """The moving segments of both moves, name and direction, in the order of
+    ``moving_torques``."""
+    return [(name, direction) for direction, _ in directions(app) for name, _ in RAMPS]
+
+
+def moving_torques(app: Application, t: CandidateTable) -> list[Moving]:
+    """Each moving segment of every move, for every candidate: its name and direction,
+    the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
+    through the thread, the nut's drag, and the screw's and the rotor's inertia times the
+    angular acceleration (whether the segment has a stroke to last or not)."""
+    inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
+    inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
+    forces = iter(g + h * app.load_n for g, h in moving_forms(app))
+    out: list[Moving] = []
+    for move in cycle(app):
+        v, word = sense(move), direction_word(app, move)
+        rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
+        for name, sign in RAMPS:
+            thrust = v * next(forces)
+            thread = profile.thread_torque(
+                thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
+            )
+            alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
+            spin = torque.inertia_torque(inertia, alpha)
+            out.append((name, word, thrust, thread + t.drag_max_nm + spin))
+    return out
+
+
+def _dwell(
+    app: Application, move: Move, rest_n: float, hold_nm: Array, steady_n: float
+) -> Segment[Array]:
+    """The dwell after ``move``: at rest, holding its load ``rest_n`` where there is one
+    to hold (``hold_nm`` holds ``steady_n``, the largest; the holding torque is linear in
+    the load held)."""
+    held = app.orientation == "vertical" or load_sense(app, move)[0] > 0.0
+    hold = hold_nm if rest_n == steady_n else hold_nm * (rest_n / steady_n)
+    return Segment(
+        name="dwell",
+        direction=direction_word(app, move),
+        duration_s=move.dwell_s,
+        rpm=np.zeros(len(hold_nm)),
+        thrust_n=np.full(len(hold_nm), rest_n),
+        torque_nm=hold if held else np.zeros(len(hold_nm)),
+    )
+
+
+def segments(
+    app: Application, t: CandidateTable, hold_nm: Array, moving: list[Moving] | None = None
+) -> list[Segment[Array]]:
+    """Every segment of the cycle (a move's accelerate, constant, decelerate and dwell,
+    move after move; ``segment_labels`` names them), for every candidate of ``t``;
+    ``hold_nm`` is the holding torque of each at ``steady_load`` (0 where the thread
+    self-locks with margin); ``moving`` the rows of ``moving_torques`` when already
+    computed. Empty without a profile."""
+    every = profiles(app)
+    if every is None:
+        return []
+    rows = moving_torques(app, t) if moving is None else moving
+    steady = steady_load(app)
+    out: list[Segment[Array]] = []
+    for k, (move, p, rest) in enumerate(zip(cycle(app), every, rest_loads(app), strict=True)):
+        out += _move(app, p, t, rows[3 * k : 3 * k + 3])
+        out.append(_dwell(app, move, rest, hold_nm, steady))
+    return out
+
+
+def rms(parts: list[Segment[Array]]) -> Array:
+    """RMS motor torque over the cycle, per candidate [N m]."""
+    torques: list[Any] = [s.torque_nm for s in parts]
+    value = profile.rms_torque(torques, [s.duration_s for s in parts])
+    return np.asarray(value, dtype=np.float64)
+
+
+def curve_margin(app: Application) -> float:
+    """What the motor's curve is divided by before a move is held against it: a
+    stepper's (one with a step angle) torque margin on its pull-out torque, 1 for a
+    servo, whose curve is already its rated envelope."""
+    return app.stepper_torque_margin if app.step_angle_deg is not None else 1.0
+
+
+def curve_torque(app: Application, rpm: Array) -> Array:
+    """The motor's usable torque at ``rpm`` [N m]: its curve, linear between its points,
+    divided by ``curve_margin``. Below the first point it is the first point's torque;
+    past the last point the motor cannot run (the speed check rejects it), and the
+    torque is read at the last point."""
+    speeds = [point[0] for point in app.motor_curve]
+    torques = [point[1] for point in app.motor_curve]
+    return np.interp(np.minimum(rpm, speeds[-1]), speeds, torques) / curve_margin(app)

@@ -1,0 +1,75 @@
+"""The candidate table's axis-free columns: each is the formula call the operating point
+would make per query, worked out once at load, to the bit."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from app.catalog import Catalog
+from app.core.formulas import bearing, buckling, efficiency, heat, pv
+from app.core.model import Application
+from app.core.quantities import operating_point
+from app.core.table import CandidateTable
+
+
+@pytest.fixture(scope="module")
+def table(catalog: Catalog) -> CandidateTable:
+    return catalog.index.table
+
+
+def _same(a: np.ndarray, b: np.ndarray) -> bool:
+    """Equal element by element, NaN where the other is NaN."""
+    return bool(np.array_equal(np.asarray(a), np.asarray(b), equal_nan=True))
+
+
+def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
+    t = table
+    tan_l = np.tan(t.lead_angle_rad)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        transition = buckling.transition_slenderness(t.youngs_modulus_pa, t.yield_strength_pa)
+    h = heat.FREE_CONVECTION_W_M2_K
+    expected = {
+        "tan_lead_angle": tan_l,
+        "self_locking_friction": efficiency.self_locking_limit_friction(tan_l, t.cos_half_angle),
+        "contact_area_m2": pv.contact_area(t.helix_travel_m, t.thread_depth_m),
+        "transition_slenderness": transition,
+        "catalog_flank_area_m2": bearing.engaged_flank_area(
+            t.nut_length_m, t.pitch_m, t.flank_pitch_diameter_m, t.flank_height_m
+        ),
+        "fin_conductance_w_k": heat.fin_conductance(
+            t.root_diameter_m, t.thermal_conductivity_w_m_k, h
+        ),
+        "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
+        "root_efficiency": np.minimum(t.efficiency, t.efficiency_static),
+    }
+    assert {
+        name: _same(getattr(t, name), value) for name, value in expected.items()
+    } == dict.fromkeys(expected, True)
+
+
+def test_a_nut_length_typed_as_the_catalogs_gives_the_catalogs_flank_area(
+    table: CandidateTable,
+) -> None:
+    """The user's nut length goes through the formula per query; typed equal to a
+    screw's catalog length it must give the area worked out at load."""
+    rows = np.flatnonzero(~np.isnan(table.catalog_flank_area_m2))
+    assert rows.size
+    one = table.take(rows[:1])
+    app = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5)
+    typed = dataclasses.replace(app, nut_length_m=float(one.nut_length_m[0]))
+    catalog_area = operating_point(app, one).flank_area_m2
+    typed_area = operating_point(typed, one).flank_area_m2
+    assert catalog_area[0] > 0.0
+    assert typed_area[0] == catalog_area[0]
+
+
+def test_von_mises_of_the_two_root_stresses_is_the_combined_formula() -> None:
+    """Shigley 9th ed., Example 8-1 (F = 6.4 kN, T_R = 26.18 N m, d_r = 28 mm): the body's
+    combined stress 14.79 MPa, the same from its two stresses as from the load and
+    torque."""
+    sigma = buckling.root_stress(6.4e3, 0.028)
+    tau = buckling.root_shear_stress(26.18, 0.028)
+    combined = buckling.root_von_mises_stress(6.4e3, 26.18, 0.028)
+    assert buckling.von_mises_stress(sigma, tau) == combined
+    assert combined / 1e6 == pytest.approx(14.79, abs=0.005)
