@@ -20,6 +20,7 @@ from app.core.formulas import critical_speed as cs
 from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
+from app.core.units import to_si
 
 SOURCE = (
     "THK Ball Screw General Catalog, 'Examples of Selecting a Ball Screw', High-speed "
@@ -31,8 +32,8 @@ STROKE_M, SPEED_M_S, RAMP_S, STOP_S = 1.0, 1.0, 0.15, 2.6
 GUIDE_N = 17.0
 LEAD_M, SHAFT_D_M, ROOT_D_M, LENGTH_M = 0.040, 0.020, 0.0175, 1.2
 CA_N, FW, ETA = 5400.0, 1.5, 0.9
-#: THK's shaft inertia 1.23e-3 kg cm^2 per mm, in kg m^2 per m.
-INERTIA_KG_M2_PER_M = 1.23e-3 * 1e-4 / 1e-3
+#: THK's shaft inertia 1.23e-3 kg cm^2 (1.23 g cm^2) per mm, in kg m^2 per m.
+INERTIA_KG_M2_PER_M = to_si(1.23, "g cm²") / to_si(1.0, "mm")
 J_MOTOR = 1e-3
 #: THK's buckling check: distance between the mounting points 1100 mm, fixed-fixed
 #: (eta_2 = 20), safety 0.5; critical speed: 1100 mm, fixed-supported (lambda_2 = 15.1),
@@ -80,10 +81,11 @@ def application(mass_as_inertia: bool) -> Application:
     ramp = SPEED_M_S / RAMP_S
     out = Move(STROKE_M, SPEED_M_S, ramp, ramp, STOP_S, mass, GUIDE_N, "opposes")
     back = Move(-STROKE_M, SPEED_M_S, ramp, ramp, STOP_S, mass, GUIDE_N, "opposes")
+    # the three required fields in their order: steady load, speed, screw length
     return Application(
-        load_n=GUIDE_N,
-        speed_m_s=SPEED_M_S,
-        length_m=LENGTH_M,
+        GUIDE_N,
+        SPEED_M_S,
+        LENGTH_M,
         moves=(out, back),
         motor_inertia_kg_m2=J_MOTOR + reflected,
     )

@@ -127,7 +127,7 @@ def test_the_index_is_built_once_at_load(monkeypatch: pytest.MonkeyPatch) -> Non
         for params in (query, {**query, "lead_mm": 10.0}):
             assert client.get("/api/v1/select", params=params).status_code == 200
         page = {"load": "120", "speed": "40", "length": "400", "lead": "10"}
-        assert "lead_sweep" in client.get("/", params=page).text
+        assert "lead_sweep" in client.get("/charts", params=page).text
         assert client.get("/detail", params={**page, "id": "ZBX8000-L10"}).status_code == 200
         for screw in ({"catalog_id": "ZBX8000-L10"}, custom):
             body = {"application": query, "screw": screw}
