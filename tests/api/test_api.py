@@ -460,26 +460,13 @@ def test_select_is_deterministic(api: Api, name: str) -> None:
 def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     inputs = select(api, **BASE)["inputs"]
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
-    # fields beyond the issue's list are optional and stay off unless given
-    # the self-locking margin, the advice policy, the dwell, the microsteps, the load
-    # direction, what holds, whether it must hold with the power off and the thrust
-    # bearing's factor have defaults of their own
-    later = {
-        "self_locking_friction_factor": 0.5,
-        "advice": "warn",
-        "dwell_s": 0.0,
-        "microsteps": 1,
-        "load_direction": "auto",
-        "holding_source": "brake",
-        "lubrication": "dry",
-        "stepper_torque_margin": 1.5,
-        "motor_current_rms": False,
-        # the thrust bearing's static safety factor: THK's lower limit without vibration
-        "support_static_safety_factor": 2.0,
-        "hold_power_off": True,
-        # the cycle's own moves: none, out and back over the stroke
-        "moves": [],
-    }
+    # fields beyond the issue's list echo the default of their row of the field table
+    # (app/contract/fields.py), and the cycle's moves none (out and back over the stroke)
+    later = {f.api: f.default for f in FIELDS if f.api not in ISSUE_DEFAULTS}
+    later = {k: v for k, v in later.items() if v is not None} | {"moves": []}
+    # the defaults with a published basis, not only the table's word: the thrust bearing's
+    # static safety factor is THK's lower limit without vibration
+    assert later["support_static_safety_factor"] == 2.0
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
     assert all(inputs[k] is None for k in rest)
