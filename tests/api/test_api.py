@@ -379,10 +379,21 @@ def test_series_lists_every_catalog_series(api: Api, catalog: Catalog) -> None:
     assert listed == {screw.id for screw in catalog.screws}
 
 
+@pytest.fixture(scope="module")
+def listed_series(api: Api) -> dict[str, dict[str, Any]]:
+    """GET /api/v1/series, validated against its model: each series' entry by its id (the
+    first one of an id), read once for the tests of every series below."""
+    entries: dict[str, dict[str, Any]] = {}
+    for entry in ok(api.get(f"{API}/series"), SeriesListOut)["series"]:
+        entries.setdefault(entry["id"], entry)
+    return entries
+
+
 @pytest.mark.parametrize("series_id", SERIES_IDS)
-def test_series_every_field_has_value_unit_and_provenance(api: Api, series_id: str) -> None:
-    body = ok(api.get(f"{API}/series"), SeriesListOut)
-    series = next(s for s in body["series"] if s["id"] == series_id)
+def test_series_every_field_has_value_unit_and_provenance(
+    listed_series: dict[str, dict[str, Any]], series_id: str
+) -> None:
+    series = listed_series[series_id]
     for key in ("name", "family", "family_name", "type", "file"):
         assert isinstance(series[key], str) and series[key], key
     assert series["fields"], series_id
@@ -399,10 +410,11 @@ def test_series_every_field_has_value_unit_and_provenance(api: Api, series_id: s
 
 
 @pytest.mark.parametrize("series_id", SERIES_IDS)
-def test_series_by_id_is_the_listed_entry(api: Api, series_id: str) -> None:
-    listed = ok(api.get(f"{API}/series"), SeriesListOut)["series"]
+def test_series_by_id_is_the_listed_entry(
+    api: Api, listed_series: dict[str, dict[str, Any]], series_id: str
+) -> None:
     one = ok(api.get(f"{API}/series/{series_id}"), SeriesOut)
-    assert one == next(s for s in listed if s["id"] == series_id)
+    assert one == listed_series[series_id]
 
 
 @pytest.mark.parametrize(
@@ -461,26 +473,13 @@ def test_select_is_deterministic(api: Api, name: str) -> None:
 def test_select_echoes_inputs_with_the_issue_defaults(api: Api) -> None:
     inputs = select(api, **BASE)["inputs"]
     assert {k: inputs[k] for k in (*BASE, *ISSUE_DEFAULTS)} == {**BASE, **ISSUE_DEFAULTS}
-    # fields beyond the issue's list are optional and stay off unless given
-    # the self-locking margin, the advice policy, the dwell, the microsteps, the load
-    # direction, what holds, whether it must hold with the power off and the thrust
-    # bearing's factor have defaults of their own
-    later = {
-        "self_locking_friction_factor": 0.5,
-        "advice": "warn",
-        "dwell_s": 0.0,
-        "microsteps": 1,
-        "load_direction": "auto",
-        "holding_source": "brake",
-        "lubrication": "dry",
-        "stepper_torque_margin": 1.5,
-        "motor_current_rms": False,
-        # the thrust bearing's static safety factor: THK's lower limit without vibration
-        "support_static_safety_factor": 2.0,
-        "hold_power_off": True,
-        # the cycle's own moves: none, out and back over the stroke
-        "moves": [],
-    }
+    # fields beyond the issue's list echo the default of their row of the field table
+    # (app/contract/fields.py), and the cycle's moves none (out and back over the stroke)
+    later = {f.api: f.default for f in FIELDS if f.api not in ISSUE_DEFAULTS}
+    later = {k: v for k, v in later.items() if v is not None} | {"moves": []}
+    # the defaults with a published basis, not only the table's word: the thrust bearing's
+    # static safety factor is THK's lower limit without vibration
+    assert later["support_static_safety_factor"] == 2.0
     assert {k: inputs[k] for k in later} == later
     rest = set(inputs) - set(BASE) - set(ISSUE_DEFAULTS) - set(later)
     assert all(inputs[k] is None for k in rest)

@@ -15,17 +15,40 @@ def _link_moves(page: Any) -> str:
     return urllib.parse.parse_qs(urllib.parse.urlsplit(page.url).query).get("moves", [""])[0]
 
 
+#: every answer htmx has swapped and settled, by its request's address
+RECORD_SETTLED = """() => {
+  window.settledUrls = [];
+  document.addEventListener("htmx:afterSettle", (event) => {
+    const xhr = event.detail.xhr;
+    window.settledUrls.push(xhr ? xhr.responseURL : "");
+  });
+}"""
+
+
+def _wait_settled(page: Any, query: str) -> None:
+    """Wait until the answer to the request carrying ``query`` (``name=value``, whole) is
+    swapped and settled: the table and the errors are redrawn from it, so nothing of an
+    earlier keystroke's answer is read, and no later swap moves the page under a test."""
+    page.wait_for_function(
+        "query => window.settledUrls.some(url => new URL(url).search.slice(1).split('&')"
+        ".includes(query))",
+        arg=query,
+    )
+
+
 def test_a_move_is_edited_and_a_row_added_with_the_keyboard(
     page: Any, live_server: str, artifacts: Path, console_errors: list[str]
 ) -> None:
     page.goto(f"{live_server}/?{LINK}")
     page.wait_for_selector("tbody.candidate")
     assert page.locator("#moves-table tbody tr").count() == 2
+    page.evaluate(RECORD_SETTLED)
     # the first move's speed retyped: the result and the address follow
     page.focus("#f-m0_speed")
     page.keyboard.press("Control+A")
     page.keyboard.type("200")
-    page.wait_for_function("() => location.search.includes('300%3A200%3A')")
+    _wait_settled(page, "m0_speed=200")
+    assert "300%3A200%3A" in page.evaluate("location.search")
     assert _link_moves(page).startswith("300:200:2500")
     # Tab reaches the acceleration next, in row order
     page.keyboard.press("Tab")
@@ -33,7 +56,7 @@ def test_a_move_is_edited_and_a_row_added_with_the_keyboard(
     # a row added from the keyboard: the new row's first cell takes the focus
     page.focus("#moves-table button[name=add_move]")
     page.keyboard.press("Enter")
-    page.wait_for_selector("#f-m2_dist")
+    _wait_settled(page, "add_move=1")
     page.wait_for_function(
         "() => document.activeElement && document.activeElement.id === 'f-m2_dist'"
     )
@@ -41,7 +64,7 @@ def test_a_move_is_edited_and_a_row_added_with_the_keyboard(
     assert page.input_value("#f-m0_speed") == "200"
     # a distance alone: the move's speed is required, said at its cell
     page.keyboard.type("50")
-    page.wait_for_function("() => document.querySelector('#e-m2_speed').textContent.trim() !== ''")
+    _wait_settled(page, "m2_dist=50")
     assert page.text_content("#e-m2_speed").strip() == "Required."
     page.locator("#moves-table").screenshot(path=str(artifacts / "move-table-1280.png"))
     page.set_viewport_size({"width": 390, "height": 844})
