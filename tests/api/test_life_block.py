@@ -82,8 +82,25 @@ def test_the_page_names_the_life_model(client: TestClient) -> None:
     }
     page = BeautifulSoup(client.get("/", params=params).text, "html.parser")
     marks = {tag.text for tag in page.select("td.life .life-model")}
-    assert marks == {"wear"}
+    # the wear rates are assumed (catalog notes): the cell says so where it is read
+    assert marks == {"wear, assumed rate"}
     r = client.get("/detail", params={**params, "id": "Tr12x3-bronze"})
     detail = BeautifulSoup(r.text, "html.parser").select_one("dd.life")
     assert detail is not None and "Wear life (assumed wear rates)" in detail.text
     assert "hours at the top speed" in detail.text and "cycles" in detail.text
+
+
+def test_a_ball_nut_life_is_named_l10_not_wear(client: TestClient) -> None:
+    """A ball nut's life is its L10 fatigue life (ISO 3408-5), in the cell and the detail:
+    never the leadscrew's assumed wear rate."""
+    params = {"load": "500", "speed": "100", "length": "500", "stroke": "400"}
+    params |= {"cycles_per_day": "1000", "family": "HIWIN-GROUND"}
+    page = BeautifulSoup(client.get("/", params=params).text, "html.parser")
+    marks = {tag.text for tag in page.select("td.life .life-model")}
+    assert marks == {"L10"}
+    first = page.select_one("tbody.candidate[data-id]")
+    assert first is not None
+    r = client.get("/detail", params={**params, "id": first["data-id"]})
+    detail = BeautifulSoup(r.text, "html.parser").select_one("dd.life")
+    assert detail is not None and "L10 fatigue life (ISO 3408-5)" in detail.text
+    assert "assumed wear" not in detail.text
