@@ -38,10 +38,13 @@ def report_context(
 ) -> dict[str, Any]:
     """The report of candidate ``id`` (else the top-ranked) for the link's inputs, its
     link absolute under ``base_url`` (the address the report was served from, ending in
-    '/'); a 422 page for bad inputs, a 404 page for an unknown id."""
+    '/'); when nothing passes and no id is given, the nearest rejected candidate; a 422
+    page for bad inputs, a 404 page for an unknown id."""
     inputs, units = link_inputs(params, catalog, ("id",))
     result, _ = run_page_selection(inputs, catalog, units)
-    top = result.candidates[0].id if result.candidates else ""
+    # without an id: the top-ranked screw, or, when none passes, the nearest rejected one
+    nearest = result.summary.best_rejected_id or ""
+    top = result.candidates[0].id if result.candidates else nearest
     chosen = page_candidate(inputs, params.get("id", "") or top, catalog, units)
     ranks = {c.id: rank for rank, c in enumerate(result.candidates, start=1)}
     query = share_query(inputs, units)

@@ -29,6 +29,21 @@ def test_report_of_the_top_screw_without_an_id(client: TestClient) -> None:
     assert api["catalog_version"] in page.select_one(".report-date").text
 
 
+def test_with_nothing_passing_the_report_is_of_the_nearest_rejected_screw(
+    client: TestClient,
+) -> None:
+    """200 kN at 2 m/s over 6 m: no screw passes; without an id the report is of the
+    nearest rejected one (the API's best_rejected_id), marked rejected with its fix."""
+    axis = {"load": "200000", "speed": "2000", "length": "6000"}
+    api = client.get(
+        "/api/v1/select", params={"load_n": "200000", "speed_mm_s": "2000", "length_mm": "6000"}
+    ).json()
+    assert api["counts"]["passed"] == 0 and api["summary"]["best_rejected_id"]
+    page = soup(client, axis)
+    assert page.select_one("#report-heading .cid").text == api["summary"]["best_rejected_id"]
+    assert "rejected:" in page.select_one("#report-heading").parent.text
+
+
 def test_report_of_a_chosen_screw_shows_its_checks_provenance_and_charts(
     client: TestClient, catalog: Catalog
 ) -> None:
