@@ -256,6 +256,9 @@ def test_axe_finds_no_violation(
     page = context.new_page()
     state(page, live_server)
     page.wait_for_load_state("networkidle")
+    # colours are judged once every CSS transition has ended (Swagger UI's buttons fade
+    # for 0.3 s: on a busy machine axe could read a colour half-way)
+    page.wait_for_function("() => document.getAnimations().every(a => a.playState !== 'running')")
     result = page.evaluate(
         "tags => axe.run(document, {runOnly: {type: 'tag', values: tags}})", RULE_TAGS
     )
