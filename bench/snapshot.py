@@ -58,8 +58,7 @@ QUERIES = {
     "compact-none-pass": "/api/v1/select?load_n=20000&speed_mm_s=900&length_mm=2000",
     "compact-reject": "/api/v1/select?load_n=150&speed_mm_s=30&length_mm=300"
     "&nut_material=acetal&advice=reject&limit=5&rank_by=life",
-    "evaluate": "/api/v1/evaluate?catalog_id=Tr12x3-bronze&load_n=100&speed_mm_s=50"
-    "&length_mm=500",
+    "evaluate": "/api/v1/evaluate?catalog_id=Tr12x3-bronze&load_n=100&speed_mm_s=50&length_mm=500",
     "fragment": "/?load=100&speed=50&length=500&lead=10",
 }
 #: name -> headers of a query asked as htmx asks (the results fragment).
