@@ -196,7 +196,7 @@ class Life(Section):
 
     def _years(self, travel_m: float) -> float | None:
         """``travel_m`` in years of the duty (None without one)."""
-        stroke, cycles = motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
+        stroke, cycles = self.batch.duty
         if not (stroke and cycles):
             return None
         return number(life.life_years(travel_m, stroke, cycles))
@@ -213,7 +213,7 @@ class Life(Section):
     def hours(self) -> tuple[float, float]:
         """Hours of running at the top speed reached until the travel is done."""
         low, high = self.travel_m
-        speed = motion.reached_speed(self.app)
+        speed = self.batch.reached_speed_m_s
         return low / speed / 3600.0, high / speed / 3600.0
 
     @property

@@ -11,7 +11,7 @@ are named in words (``value_label``); the sentences are ``Phrase``s, rendered at
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from functools import cache, cached_property
+from functools import cached_property
 from typing import Protocol
 
 from app.core import motion
@@ -97,7 +97,6 @@ SPEC_VALUES: Mapping[str, str] = {
 }
 
 
-@cache
 def value_label(key: str) -> str:
     """A catalog key in words: its variant and unit endings dropped, then named.
 
