@@ -5,7 +5,8 @@
 
 A speed change must not move a number: record before it, compare after each step. The
 queries cover lead and ball screws, a vertical axis, moves of the user's own, a stepper
-and a servo from the motor library, every check's inputs, and the page in imperial units.
+and a servo from the motor library, every check's inputs, the page in imperial units,
+the compact select beside the full one, an evaluate and the results fragment.
 """
 
 import argparse
