@@ -5,7 +5,8 @@
 
 A speed change must not move a number: record before it, compare after each step. The
 queries cover lead and ball screws, a vertical axis, moves of the user's own, a stepper
-and a servo from the motor library, every check's inputs, and the page in imperial units.
+and a servo from the motor library, every check's inputs, the page in imperial units,
+the compact select beside the full one, an evaluate and the results fragment.
 """
 
 import argparse
@@ -48,7 +49,21 @@ QUERIES = {
     "&nut_length_mm=20&coating=none&rank_by=life&advice=reject&limit=5",
     "page-imperial": "/?load=25&speed=2&length=20&lead=0.5&stroke=15&force_unit=lbf"
     "&length_unit=in&torque_unit=oz_in&orientation=vertical&moving_mass_kg=4",
+    "compact-default": "/api/v1/select?load_n=137&speed_mm_s=50&length_mm=500&lead_mm=10",
+    "compact-vertical": "/api/v1/select?load_n=40&moving_mass_kg=12&orientation=vertical"
+    "&speed_mm_s=80&length_mm=600&accel_mm_s2=2000&stroke_mm=450&hold_power_off=true&lead_mm=5",
+    "compact-ball": "/api/v1/select?load_n=3000&speed_mm_s=400&length_mm=800"
+    "&family=HIWIN-ROLLED&stroke_mm=600&hours_per_day=8&required_life_years=3",
+    "compact-stepper": "/api/v1/select?load_n=30&moving_mass_kg=3&speed_mm_s=150"
+    "&length_mm=400&accel_mm_s2=3000&motor=17hs19-2004s1&lead_mm=8&microsteps=16",
+    "compact-none-pass": "/api/v1/select?load_n=20000&speed_mm_s=900&length_mm=2000",
+    "compact-reject": "/api/v1/select?load_n=150&speed_mm_s=30&length_mm=300"
+    "&nut_material=acetal&advice=reject&limit=5&rank_by=life",
+    "evaluate": "/api/v1/evaluate?catalog_id=Tr12x3-bronze&load_n=100&speed_mm_s=50&length_mm=500",
+    "fragment": "/?load=100&speed=50&length=500&lead=10",
 }
+#: name -> headers of a query asked as htmx asks (the results fragment).
+HEADERS = {"fragment": {"HX-Request": "true"}}
 
 
 def responses() -> dict[str, bytes]:
@@ -56,7 +71,7 @@ def responses() -> dict[str, bytes]:
     out = {}
     with TestClient(create_app()) as client:
         for name, path in QUERIES.items():
-            r = client.get(path)
+            r = client.get(path, headers=HEADERS.get(name))
             out[name] = f"{r.status_code}\n".encode() + r.content
     return out
 
@@ -74,7 +89,7 @@ def core_arrays() -> dict[str, bytes]:
     catalog = load_catalog()
     out = {}
     for name, path in QUERIES.items():
-        if not path.startswith("/api/"):
+        if not path.startswith("/api/v1/select"):
             continue
         pairs = QueryParams(urlsplit(path).query)
         query = parse_query(SelectQuery, pairs).application()

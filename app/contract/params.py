@@ -75,13 +75,15 @@ def unknown_parameters(params: Mapping[str, str], extra: Collection[str] = ()) -
     }
 
 
-def api_query(inputs: ApplicationIn) -> str:
+def api_query(inputs: ApplicationIn, share: str | None = None) -> str:
     """The API's query string of ``inputs``: the share link's (required fields and
     non-defaults, each number exact, in the API's units: the page's default units) under
     the API's names, a list as the parameter repeated (as the API's query reads it);
-    tested in ``tests/api/test_api_links.py``."""
+    ``share``: the share link's query in the default units when the caller has it
+    already. Tested in ``tests/api/test_api_links.py``."""
     pairs: list[tuple[str, str]] = []
-    for name, value in parse_qsl(share_query(inputs), keep_blank_values=True):
+    shared = share_query(inputs) if share is None else share
+    for name, value in parse_qsl(shared, keep_blank_values=True):
         if name == MOVES:  # the cycle's text, the same in the API
             pairs.append((name, value))
             continue
@@ -95,11 +97,16 @@ def api_query(inputs: ApplicationIn) -> str:
 API_PREFIX = "/api/v1"
 
 
-def api_url(route: str, inputs: ApplicationIn, extra: Sequence[tuple[str, str]] = ()) -> str:
+def api_url(
+    route: str,
+    inputs: ApplicationIn,
+    extra: Sequence[tuple[str, str]] = (),
+    share: str | None = None,
+) -> str:
     """The API's GET of ``route`` for ``inputs`` and the route's own ``extra`` names
-    (``[("ids", "a,b")]``: ``&ids=a%2Cb``)."""
+    (``[("ids", "a,b")]``: ``&ids=a%2Cb``); ``share`` as ``api_query`` takes it."""
     tail = f"&{urlencode(extra)}" if extra else ""
-    return f"{API_PREFIX}/{route}?{api_query(inputs)}{tail}"
+    return f"{API_PREFIX}/{route}?{api_query(inputs, share)}{tail}"
 
 
 def api_hint(name: str, known: Iterable[str] = BY_API) -> str | None:

@@ -292,8 +292,9 @@ def amount_text(amount: Amount, units: Mapping[str, str] = DEFAULT_UNITS) -> str
     '1 in'
     """
     value, _ = api_value(amount.value, amount.quantity)
-    unit, _ = display_system(units)[amount.quantity]
-    shown = from_api(value, amount.quantity, units)
+    key = _key(units)  # the display system looked up once (``from_api``'s arithmetic)
+    unit, scale = DISPLAY_SYSTEMS[key][amount.quantity]
+    shown = (value - DISPLAY_OFFSETS[key].get(amount.quantity, 0.0)) / scale
     return f"{plain(shown, TEXT_FORMATS[amount.quantity])} {unit}".strip()
 
 

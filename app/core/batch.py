@@ -56,6 +56,18 @@ class Batch:
         return self._columns[name]
 
     @cached_property
+    def reached_speed_m_s(self) -> float:
+        """The top speed the axis reaches (``motion.reached_speed``), the same for every
+        candidate: worked out once per batch."""
+        return motion.reached_speed(self.app)
+
+    @cached_property
+    def duty(self) -> tuple[float | None, float | None]:
+        """The equivalent stroke [m] and the cycles a day (``motion.equivalent_stroke``,
+        ``motion.cycles_per_day``) that turn a travel into years: once per batch."""
+        return motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
+
+    @cached_property
     def slots(self) -> list["Slot"]:
         """Each candidate's slot: what its sections and checks read."""
         sc, app = self.screening, self.app

@@ -186,9 +186,10 @@ class Candidate:
     def warned(self) -> tuple[str, ...]:
         return tuple(c.name for c in failed_advice(self.checks))
 
-    @property
+    @cached_property
     def utilization(self) -> dict[str, float | None]:
-        """Check -> demand / capacity (None for a yes/no check)."""
+        """Check -> demand / capacity (None for a yes/no check); read by the response and
+        by the motor's use alike, so built once."""
         return {c.name: c.utilization for c in self.checks}
 
     @property

@@ -3,6 +3,7 @@ numbers are read from the screening's columns when first asked for (``app.core.r
 builds them; ``app.core.batch`` holds the columns)."""
 
 import math
+from functools import cached_property
 from typing import Generic, Literal, Protocol, TypeVar, cast
 
 import numpy as np
@@ -144,9 +145,8 @@ class Life(Section):
     with the model it comes from: the seed's rated travel ("rated") or, for a nut the
     seed gives none, the nut's wear by Archard's law over the wear rate's published
     scatter ("wear"; ``app.core.checks.wear_life``). Also in hours of running at the
-    top speed and, with a stroke, in cycles (out and back)."""
-
-    __slots__ = ()
+    top speed and, with a stroke, in cycles (out and back). Its band of travel is worked
+    out once: the years, hours and cycles all read it."""
 
     @property
     def model(self) -> Literal["rated", "wear", "l10"]:
@@ -173,7 +173,7 @@ class Life(Section):
         low, high = life_band(self.screw)
         return value * low, value * high
 
-    @property
+    @cached_property
     def travel_m(self) -> tuple[float, float]:
         """The band of travel: the wear band, or the seed's rated band with each end at
         most the wear band's (no cap where the nut has no wear rate)."""
@@ -196,7 +196,7 @@ class Life(Section):
 
     def _years(self, travel_m: float) -> float | None:
         """``travel_m`` in years of the duty (None without one)."""
-        stroke, cycles = motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
+        stroke, cycles = self.batch.duty
         if not (stroke and cycles):
             return None
         return number(life.life_years(travel_m, stroke, cycles))
@@ -213,7 +213,7 @@ class Life(Section):
     def hours(self) -> tuple[float, float]:
         """Hours of running at the top speed reached until the travel is done."""
         low, high = self.travel_m
-        speed = motion.reached_speed(self.app)
+        speed = self.batch.reached_speed_m_s
         return low / speed / 3600.0, high / speed / 3600.0
 
     @property

@@ -10,7 +10,7 @@ are named in words (``value_label``); the sentences are ``Phrase``s, rendered at
 """
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Protocol
 
@@ -258,8 +258,9 @@ def summary(
 class Verdict:
     """A candidate's verdict: the governing check (name, label, utilisation, margin =
     1 - utilisation: the share of the limit left), what it rests on, what to watch, and
-    all of it as one or two sentences (``text``, put in words when first read: the
-    compact select gives the parts alone)."""
+    all of it as one or two sentences (``text``). The sentence, the checks that could not
+    run and the summary line are worked out when first read: the compact select gives the
+    governing check's parts alone."""
 
     governs: str | None
     governs_label: str
@@ -270,14 +271,28 @@ class Verdict:
     #: whether the candidate passes, and its governing check (the sentence's words)
     passed: bool
     governing: CheckResult | None
-    skipped: tuple[Skip, ...]
-    #: the labels of the checks that do not apply to this kind of screw
-    not_applicable: tuple[str, ...]
-    summary: Phrase
+    #: the screw, its checks, and the checks that run for the application but not for it
+    screw: ScrewSpec = field(repr=False, compare=False)
+    checks: tuple[CheckResult, ...] = field(repr=False, compare=False)
+    runnable: tuple[Check, ...] = field(repr=False, compare=False)
 
     @cached_property
     def text(self) -> Phrase:
         return sentence(self.governing, self.passed, self.rests_on, self.watch)
+
+    @cached_property
+    def skipped(self) -> tuple[Skip, ...]:
+        """The checks that could not run for this screw, each with what it lacks."""
+        return skips(self.runnable, self.screw)
+
+    @cached_property
+    def not_applicable(self) -> tuple[str, ...]:
+        """The labels of the checks that do not apply to this kind of screw."""
+        return not_applicable(self.runnable, self.screw)
+
+    @cached_property
+    def summary(self) -> Phrase:
+        return summary(self.passed, self.checks, self.skipped, self.not_applicable)
 
 
 class Record(Protocol):
@@ -379,21 +394,17 @@ def sentence(
 def verdict(c: Record) -> Verdict:
     """The verdict of candidate record ``c``."""
     g = c.governing
-    rest = rests_on(g, c.screw.provenance, c.hinges_on)
-    watch = watch_list(c)
     u = None if g is None else g.utilization
-    skipped = skips(c.skipped, c.screw)
-    inapplicable = not_applicable(c.skipped, c.screw)
     return Verdict(
         governs=None if g is None else g.name,
         governs_label="" if g is None else g.label,
         utilization=u,
         margin=None if u is None else 1.0 - u,
-        rests_on=rest,
-        watch=watch,
+        rests_on=rests_on(g, c.screw.provenance, c.hinges_on),
+        watch=watch_list(c),
         passed=bool(c.passed),
         governing=g,
-        skipped=skipped,
-        not_applicable=inapplicable,
-        summary=summary(bool(c.passed), c.checks, skipped, inapplicable),
+        screw=c.screw,
+        checks=c.checks,
+        runnable=c.skipped,
     )

@@ -67,12 +67,13 @@ def construct_select_out(
     inputs: ApplicationIn, catalog: Catalog, selected: dict[str, Any]
 ) -> SelectOut:
     """The select response around ``selection_out``'s candidates, counts and summary."""
+    share = share_query(inputs)
     return SelectOut.model_construct(
         inputs=inputs,
         **selected,
         catalog_version=catalog.version,
-        share_url="/?" + share_query(inputs),
-        api_url=api_url("select", inputs, [("detail", "full")]),
+        share_url="/?" + share,
+        api_url=api_url("select", inputs, [("detail", "full")], share),
         formulas=FORMULAS_OUT,
     )
 
@@ -89,14 +90,15 @@ def run_page_selection(
         inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
     )
     rejected = selection.rejected if not selection.passed else ()
+    share = share_query(inputs)
     out = PageSelectionOut.model_construct(
         inputs=inputs,
         candidates=[candidate_view(c, "row", units) for c in selection.candidates],
         rejected=[candidate_view(c, "full", units) for c in rejected],
         **counts_and_summary(selection, units),
         catalog_version=catalog.version,
-        share_url="/?" + share_query(inputs),
-        api_url=api_url("select", inputs),
+        share_url="/?" + share,
+        api_url=api_url("select", inputs, share=share),
     )
     return out, [candidate_view(c, "rejected", units) for c in selection.rejected]
 
@@ -107,13 +109,14 @@ def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, 
     selection = select(
         inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
     )
+    share = share_query(inputs)
     return {
         "detail": "summary",
         "inputs": inputs.model_dump(mode="json", exclude_defaults=True),
         **selection_summary(selection),
         "catalog_version": catalog.version,
-        "share_url": "/?" + share_query(inputs),
-        "api_url": api_url("select", inputs),
+        "share_url": "/?" + share,
+        "api_url": api_url("select", inputs, share=share),
         "formulas_url": FORMULAS_URL,
     }
 

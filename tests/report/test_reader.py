@@ -45,3 +45,32 @@ def test_each_view_reads_alike_as_json_and_as_the_model(catalog: Catalog, view: 
         assert checked.model_validate(as_json).model_dump(mode="json") == as_json, c.screw.id
         dumped = checked.model_validate(model, from_attributes=True).model_dump(mode="json")
         assert dumped == as_json, c.screw.id
+
+
+#: Ball screws beside leadscrews, with a duty: ball nuts' checks do not apply to
+#: leadscrews' ratings, and some leadscrews lack a value a check reads.
+MIXED = {**AXIS, "family": ["HIWIN-ROLLED", "B"]}
+
+
+def test_the_compact_view_leaves_the_verdicts_summary_unread_and_it_reads_the_same_later(
+    catalog: Catalog,
+) -> None:
+    """The compact select reads a verdict's parts alone: its summary line and the checks
+    that could not run are worked out only when a full view reads them, and then say
+    what a record read in full from the start says."""
+    app = ApplicationIn.model_validate(MIXED).to_core(catalog.motors, catalog.supports)
+    compact_first = select(app, catalog.index, INPUT_RANGES).candidates
+    full_first = select(app, catalog.index, INPUT_RANGES).candidates
+    assert {c.screw.screw_type for c in compact_first} == {"ball", "lead"}
+    for c in compact_first:
+        reader(CandidateOut, "summary", as_dict=True)(c, c, Writer(DEFAULT_UNITS))
+        assert {"summary", "skipped", "not_applicable"}.isdisjoint(vars(c.verdict))
+    read = [
+        [reader(CandidateOut, "full", as_dict=True)(c, c, Writer(DEFAULT_UNITS))["verdict"]]
+        for c in (*compact_first, *full_first)
+    ]
+    half = len(compact_first)
+    assert read[:half] == read[half:]
+    pairs = zip(compact_first, read[:half], strict=True)
+    ball = [v for c, [v] in pairs if c.screw.screw_type == "ball"]
+    assert all(v["not_applicable"] for v in ball)

@@ -63,7 +63,8 @@ class TraverseSpeed(Check):
         return Phrase("{v} " + verb + " the recommended {limit} for this lead" + note + ".", values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        faster = [band for band in s.traverse_bands if band[2] >= motion.reached_speed(app)]
+        reached_m_s = motion.reached_speed(app)
+        faster = [band for band in s.traverse_bands if band[2] >= reached_m_s]
         lead = reach.made_lead(s, faster[0][0], larger=True) if faster else None
         if lead is None:
             return Phrase(
