@@ -124,7 +124,8 @@ def is_plain_health_check(scope: Mapping[str, Any]) -> bool:
 
 class HealthRecorder:
     """The app, keeping its answer to a plain health check in ``store`` (``HEALTH_ANSWER``)
-    when it is a 200 sent whole: headers as they leave the outermost middleware, and body."""
+    when it is a 200 sent whole and not compressed: headers as they leave the outermost
+    middleware, and body."""
 
     def __init__(self, app: ASGIApp, store: dict[str, Any]) -> None:
         self.app = app
@@ -137,8 +138,10 @@ class HealthRecorder:
             if message["type"] == "http.response.start":
                 start.update(message)
             elif start.get("status") == 200 and not message.get("more_body", False):
-                answer = (list(start.get("headers", [])), bytes(message.get("body", b"")))
-                self.store.setdefault(HEALTH_ANSWER, answer)
+                headers = list(start.get("headers", []))
+                # a compressed answer suits only a client that accepts gzip
+                if not any(name == b"content-encoding" for name, _ in headers):
+                    self.store.setdefault(HEALTH_ANSWER, (headers, bytes(message.get("body", b""))))
             await send(message)
 
         await self.app(scope, receive, recording)
@@ -280,7 +283,8 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
         if app is not service_unavailable and is_plain_health_check(cycle.scope):
             answer: HealthAnswer | None = self.app_state.get(HEALTH_ANSWER)
             if answer is None:
-                app = HealthRecorder(app, self.app_state)
+                if cycle.scope["method"] == "GET":  # a HEAD's answer has no body to keep
+                    app = HealthRecorder(app, self.app_state)
             elif not self.flow.write_paused and not self.pipeline:
                 self._answer_health(cycle, answer)
                 return

@@ -194,3 +194,14 @@ def test_the_first_health_check_goes_through_the_app(served: Served) -> None:
         assert _unanswered(sock)
         served.gate.shut.clear()
         assert _read(sock, 1).startswith(b"HTTP/1.1 200 ")
+
+
+def test_a_first_head_is_not_kept_as_the_answer(served: Served) -> None:
+    """A HEAD's answer has no body: the first GET is the one kept, and answers in full."""
+    head = _ask(served.port, f"HEAD {HEALTH} HTTP/1.1")
+    first = _ask(served.port, f"GET {HEALTH} HTTP/1.1")
+    served.gate.shut.set()
+    again = _ask(served.port, f"GET {HEALTH} HTTP/1.1")
+    assert served.gate.entered == [HEALTH, HEALTH]
+    assert _without_date(again) == _without_date(first)
+    assert _without_date(head) == _without_date(first).partition(b"\r\n\r\n")[0] + b"\r\n\r\n"
