@@ -24,6 +24,14 @@ value in memory as readily as a short one. This protocol adds both bounds:
   wait, waits: 64 such clients otherwise kept the event loop refusing 700 requests a
   second, starving the computing they waited for, and the health check queued behind.
 
+* the health check (GET or HEAD of the health path, no query, no body) is answered as
+  soon as its head is parsed, with the bytes the app gave the first time it was asked
+  (``HealthRecorder``; the answer rests on the version and the catalog, both fixed for
+  the life of the process): it never waits for an ASGI task to start and run through the
+  middleware behind a flood's work on the event loop (64 clients pulling the 1.4 MB
+  catalog page made its p99 1.05 s). Behind a request still in progress on the same
+  connection it keeps its turn (pipelining), through the app as before.
+
 * on SIGTERM, a request already sent on a kept-alive connection is answered, and the
   connection then closed cleanly (``shutdown``), where uvicorn's own would close an idle
   connection at once and reset any request waiting unread in its socket.
@@ -34,16 +42,24 @@ uvicorn starts reads the same ones.
 
 import asyncio
 import logging
+from collections.abc import Mapping
 from typing import Any
 
 from uvicorn.config import Config
-from uvicorn.protocols.http.httptools_impl import STATUS_LINE, HttpToolsProtocol
+from uvicorn.protocols.http.flow_control import service_unavailable
+from uvicorn.protocols.http.httptools_impl import (
+    STATUS_LINE,
+    HttpToolsProtocol,
+    RequestResponseCycle,
+)
+from uvicorn.protocols.utils import get_client_addr, get_path_with_query_string
 from uvicorn.server import ServerState
 
 from app.server.overload import (
     NEVER_SHED,
     SHED_KEY,
     ASGIApp,
+    Message,
     Receive,
     Scope,
     Send,
@@ -62,6 +78,13 @@ HEADER_LINE_OVERHEAD_BYTES = 4
 #: the close is a FIN, never a reset.
 SHUTDOWN_DRAIN_S = 0.5
 SHUTDOWN_LINGER_S = 2.0
+#: the ``app_state`` key (shared by every connection of one server) of the health check's
+#: answer as the app gave it: (headers, body)
+HEALTH_ANSWER = "app.server.health_answer"
+#: request headers that announce a body: such a request goes through the app, whose
+#: limits decide what to do with it
+BODY_HEADERS = frozenset({b"content-length", b"transfer-encoding"})
+HealthAnswer = tuple[list[tuple[bytes, bytes]], bytes]
 
 
 class HeadTooLarge(Exception):
@@ -82,6 +105,46 @@ class OverLimit:
             await self.app(scope, receive, send)
             return
         await send_busy(send, self.retry_after_s, *SECURITY_HEADERS, (b"connection", b"close"))
+
+
+def is_plain_health_check(scope: Mapping[str, Any]) -> bool:
+    """A GET or HEAD of the health path with no query and no body: always the same answer.
+
+    >>> scope = {"path": "/api/v1/health", "method": "HEAD", "query_string": b"", "headers": []}
+    >>> is_plain_health_check(scope), is_plain_health_check({**scope, "query_string": b"x=1"})
+    (True, False)
+    """
+    return (
+        scope["path"] in NEVER_SHED
+        and scope["method"] in ("GET", "HEAD")
+        and not scope["query_string"]
+        and not any(name in BODY_HEADERS for name, _ in scope["headers"])
+    )
+
+
+class HealthRecorder:
+    """The app, keeping its answer to a plain health check in ``store`` (``HEALTH_ANSWER``)
+    when it is a 200 sent whole and not compressed: headers as they leave the outermost
+    middleware, and body."""
+
+    def __init__(self, app: ASGIApp, store: dict[str, Any]) -> None:
+        self.app = app
+        self.store = store
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        start: Message = {}
+
+        async def recording(message: Message) -> None:
+            if message["type"] == "http.response.start":
+                start.update(message)
+            elif start.get("status") == 200 and not message.get("more_body", False):
+                headers = list(start.get("headers", []))
+                # a compressed answer suits only a client that accepts gzip
+                if not any(name == b"content-encoding" for name, _ in headers):
+                    self.store.setdefault(HEALTH_ANSWER, (headers, bytes(message.get("body", b""))))
+            await send(message)
+
+        await self.app(scope, receive, recording)
 
 
 class BoundedHttpToolsProtocol(HttpToolsProtocol):
@@ -209,6 +272,55 @@ class BoundedHttpToolsProtocol(HttpToolsProtocol):
             self.shed_timer = None
             if not self.transport.is_closing():
                 self.flow.resume_reading()
+
+    # --- the health check, answered here ---------------------------------------------
+
+    def _start_asgi_task(self, cycle: RequestResponseCycle, app: Any) -> None:
+        """Start the app on a request, or answer a plain health check at once from the
+        app's recorded answer (``HealthRecorder`` records the first). Not for one taken
+        off the pipeline with more behind it: each would answer the next from inside the
+        last, as deep as the pipeline is long."""
+        if app is not service_unavailable and is_plain_health_check(cycle.scope):
+            answer: HealthAnswer | None = self.app_state.get(HEALTH_ANSWER)
+            if answer is None:
+                if cycle.scope["method"] == "GET":  # a HEAD's answer has no body to keep
+                    app = HealthRecorder(app, self.app_state)
+            elif not self.flow.write_paused and not self.pipeline:
+                self._answer_health(cycle, answer)
+                return
+        super()._start_asgi_task(cycle, app)
+
+    def _answer_health(self, cycle: RequestResponseCycle, answer: HealthAnswer) -> None:
+        """Write the recorded answer as uvicorn's cycle writes the app's: the server's
+        default headers (date, server) first, ``connection: close`` when the connection
+        is not kept alive, no body to a HEAD; then complete the response as it does."""
+        headers, body = answer
+        scope = cycle.scope
+        cycle.keep_alive = cycle.keep_alive and not self.stopping
+        cycle.response_started = cycle.response_complete = True
+        cycle.waiting_for_100_continue = False
+        if self.access_log:
+            self.access_logger.info(
+                '%s - "%s %s HTTP/%s" %d',
+                get_client_addr(scope),
+                scope["method"],
+                get_path_with_query_string(scope),
+                scope["http_version"],
+                200,
+            )
+        content = [STATUS_LINE[200]]
+        for name, value in (*cycle.default_headers, *headers):
+            content += [name, b": ", value, b"\r\n"]
+        if not cycle.keep_alive:
+            content.append(b"connection: close\r\n")
+        content.append(b"\r\n")
+        if scope["method"] != "HEAD":
+            content.append(body)
+        self.transport.write(b"".join(content))
+        cycle.message_event.set()
+        if not cycle.keep_alive:
+            self.transport.close()
+        cycle.on_response()
 
     def on_message_complete(self) -> None:
         super().on_message_complete()
