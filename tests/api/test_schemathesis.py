@@ -100,7 +100,8 @@ def test_enough_cases_were_generated(request: pytest.FixtureRequest) -> None:
     Skipped when the fuzz test was not selected for every operation; fails when it was but
     ran elsewhere (another xdist worker), since the count would then prove nothing."""
     names = {_fuzz_test_name(operation): operation for operation in OPERATIONS}
-    selected = {names[i.originalname] for i in request.session.items if i.originalname in names}
+    collected = (getattr(item, "originalname", None) for item in request.session.items)
+    selected = {names[name] for name in collected if name in names}
     if selected != set(OPERATIONS):
         pytest.skip("the fuzz test was not selected for every operation")
     assert set(cases_run) == set(OPERATIONS), (
