@@ -7,11 +7,20 @@ content type and the documented body schema, and a request the schema forbids mu
 4xx. Deterministic (``derandomize``, no example database), so CI sees the same cases on
 every run.
 
+One test function per operation (``test_api_conforms_to_its_schema_get_api_v1_select``),
+each ``schema.parametrize()`` over the schema filtered to that operation, so each runs
+schemathesis' phases for it under a node id of its own and pytest-xdist schedules and
+reports each. (One ``schema.parametrize()`` over the whole schema gives every operation's
+item the same node id under pytest 9, and xdist then runs one of them.) ``--dist
+loadfile`` keeps this module on one worker, where the count of generated requests is
+summed.
+
 ``test_fuzz_regressions`` replays requests an earlier run found answered with a 500 or a
 200 where the schema forbids them (vanishing numbers, a thread too steep to drive at its
 friction, a boolean given as a number); they are refused with a 4xx now.
 """
 
+import re
 from typing import Any
 
 import pytest
@@ -54,27 +63,51 @@ OPERATIONS = sorted(
     for method in methods
 )
 cases_run: dict[str, int] = {}
+FUZZ_TEST = "test_api_conforms_to_its_schema"
 
 
-@schema.parametrize()
-@settings(
-    max_examples=EXAMPLES_PER_OPERATION,
-    derandomize=True,
-    database=None,
-    deadline=None,
-    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
-)
-def test_api_conforms_to_its_schema(case: Any) -> None:
-    # per documented operation; its cases include probes with undocumented methods
-    label = f"{case.operation.method.upper()} {case.operation.path}"
-    cases_run[label] = cases_run.get(label, 0) + 1
-    case.call_and_validate(checks=CHECKS)
+def _fuzz_test(operation: str) -> Any:
+    """The fuzz test of one documented operation ("METHOD /path"), as its own function."""
+    method, path = operation.split(" ", 1)
+
+    @settings(
+        max_examples=EXAMPLES_PER_OPERATION,
+        derandomize=True,
+        database=None,
+        deadline=None,
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+    )
+    def test(case: Any) -> None:
+        # its cases include probes with undocumented methods: counted for the documented one
+        cases_run[operation] = cases_run.get(operation, 0) + 1
+        case.call_and_validate(checks=CHECKS)
+
+    test.__name__ = test.__qualname__ = _fuzz_test_name(operation)
+    return schema.include(method=method, path=path).parametrize()(test)
 
 
-def test_enough_cases_were_generated() -> None:
-    """Runs after the fuzz test in this module; skipped when that did not run in full."""
-    if set(cases_run) != set(OPERATIONS):
-        pytest.skip("the fuzz test did not run for every operation in this process")
+def _fuzz_test_name(operation: str) -> str:
+    return f"{FUZZ_TEST}_{re.sub(r'[^a-z0-9]+', '_', operation.lower()).strip('_')}"
+
+
+for _operation in OPERATIONS:
+    globals()[_fuzz_test_name(_operation)] = _fuzz_test(_operation)
+
+
+def test_enough_cases_were_generated(request: pytest.FixtureRequest) -> None:
+    """Runs after the fuzz test in this module, in the same process (``--dist loadfile``).
+
+    Skipped when the fuzz test was not selected for every operation; fails when it was but
+    ran elsewhere (another xdist worker), since the count would then prove nothing."""
+    names = {_fuzz_test_name(operation): operation for operation in OPERATIONS}
+    collected = (getattr(item, "originalname", None) for item in request.session.items)
+    selected = {names[name] for name in collected if name in names}
+    if selected != set(OPERATIONS):
+        pytest.skip("the fuzz test was not selected for every operation")
+    assert set(cases_run) == set(OPERATIONS), (
+        "the fuzz test ran for these operations in another process; run this module on one"
+        f" worker (--dist loadfile): {sorted(set(OPERATIONS) - set(cases_run))}"
+    )
     total = sum(cases_run.values())
     print(f"\nschemathesis requests per operation: {cases_run}, total {total}")
     assert total >= MIN_TOTAL_CASES, cases_run

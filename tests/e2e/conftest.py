@@ -15,7 +15,7 @@ from typing import Any
 
 import pytest
 
-from deploy.local import free_port
+from deploy.local import START_CEILING_S, free_port
 
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = [
@@ -29,7 +29,7 @@ CHROMIUM_ARGS = [
 ARTIFACTS = Path(__file__).resolve().parents[2] / "test-artifacts"
 #: how long the server may take to answer its health check: a ceiling, not a wait (it is
 #: polled); on a machine shared by several test runs the app's start has taken over 30 s
-SERVER_START_LIMIT_S = 120
+SERVER_START_LIMIT_S = START_CEILING_S
 
 
 @pytest.fixture(scope="session")

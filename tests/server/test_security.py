@@ -14,7 +14,6 @@ import select
 import socket
 import subprocess
 import sys
-import time
 from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from html.parser import HTMLParser
@@ -33,7 +32,7 @@ from app.contract.screws import CustomScrewIn
 from app.main import create_app
 from app.server.failures import FailureLog
 from app.server.settings import Settings
-from deploy.local import free_port
+from deploy.local import free_port, wait_until_healthy
 from tests.server.asgi import asgi_get
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -465,10 +464,7 @@ def live_port() -> Iterator[int]:
     cmd = [sys.executable, "-m", "uvicorn", "app.main:create_app", "--factory"]
     proc = subprocess.Popen([*cmd, "--port", str(port), "--log-level", "warning"], cwd=ROOT)
     try:
-        deadline = time.monotonic() + 60
-        while _status(port, "/api/v1/health") != 200:
-            assert proc.poll() is None and time.monotonic() < deadline, "uvicorn did not start"
-            time.sleep(0.1)
+        wait_until_healthy(port, proc, "uvicorn")
         yield port
     finally:
         proc.terminate()

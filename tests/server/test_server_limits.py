@@ -20,7 +20,7 @@ import httpx
 import pytest
 
 from app.server.security import SECURITY_HEADERS
-from deploy.local import free_port
+from deploy.local import free_port, wait_until_healthy
 
 ROOT = Path(__file__).resolve().parents[2]
 READ_TIMEOUT_S = 2
@@ -53,10 +53,7 @@ def port() -> Iterator[int]:
     cmd = [sys.executable, "-m", "app.cli", "--port", str(free), "--log-level", "warning"]
     proc = subprocess.Popen(cmd, cwd=ROOT, env=env)
     try:
-        deadline = time.monotonic() + 60
-        while _status(free, "/api/v1/health") != 200:
-            assert proc.poll() is None and time.monotonic() < deadline, "server did not start"
-            time.sleep(0.1)
+        wait_until_healthy(free, proc, "app.cli")
         yield free
     finally:
         proc.terminate()

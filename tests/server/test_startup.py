@@ -19,7 +19,7 @@ from app.catalog import CatalogError
 from app.catalog.files import MAX_FILE_BYTES
 from app.main import create_app
 from app.server.settings import Settings
-from deploy.local import free_port, stop, wait_until_healthy
+from deploy.local import START_CEILING_S, free_port, stop, wait_until_healthy
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -133,7 +133,7 @@ def _run(args: list[str], env: dict[str, str] | None = None) -> subprocess.Compl
         env={**os.environ, **(env or {})},
         capture_output=True,
         text=True,
-        timeout=60,
+        timeout=START_CEILING_S,  # a ceiling: the run ends when the process does
         check=False,
     )
 
