@@ -15,7 +15,8 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
-from app.contract.fields import BY_API, FIELDS, InputField
+from app.contract.fields import BY_API, FIELDS
+from app.contract.input_field import InputField
 from app.core.model import LoadDirection, Move
 
 #: The most moves a cycle may have (every result stays quick).

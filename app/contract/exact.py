@@ -18,7 +18,7 @@ from typing import Annotated
 
 from pydantic import Field, TypeAdapter, ValidationError
 
-from app.contract.fields import InputField
+from app.contract.input_field import InputField
 from app.contract.input_types import NUMBER_TEXT
 from app.contract.units import DEFAULT_UNITS, Quantity, display_system, exact_factor, exact_offset
 

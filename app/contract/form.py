@@ -22,7 +22,8 @@ from pydantic import ValidationError
 
 from app.contract.cycle import moves_text
 from app.contract.exact import PLAIN_MESSAGES, link_number, page_value, read_number, sig_figures
-from app.contract.fields import BY_API, BY_PAGE, FIELDS, InputField
+from app.contract.fields import BY_API, BY_PAGE, FIELDS
+from app.contract.input_field import InputField
 from app.contract.inputs import ApplicationIn
 from app.contract.torque_curve import convert_curve, curve_text, curve_to_api
 from app.contract.units import (

@@ -24,7 +24,7 @@ from pydantic import (
 )
 from pydantic_core import PydanticCustomError
 
-from app.contract.fields import InputField
+from app.contract.input_field import InputField
 
 #: optional sign, digits with an optional point (or a point and digits), optional exponent.
 ASCII_NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")

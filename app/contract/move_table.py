@@ -17,8 +17,9 @@ from typing import Any
 
 from app.contract.cycle import MAX_MOVES, ORDER, parse_moves_text
 from app.contract.exact import link_number, page_value, read_number
-from app.contract.fields import BY_API, FIELDS, InputField
+from app.contract.fields import BY_API, FIELDS
 from app.contract.form import MOVES
+from app.contract.input_field import InputField
 
 #: The submit button that adds an empty row, and the one (its value the row) that drops one.
 ADD_MOVE = "add_move"

@@ -5,7 +5,8 @@ import io
 from collections.abc import Callable
 from typing import Any
 
-from app.contract.fields import FIELDS, InputField
+from app.contract.fields import FIELDS
+from app.contract.input_field import InputField
 from app.contract.move_table import COLUMNS, shown_moves
 from app.contract.outputs import SelectOut
 from app.contract.reported import BY_KEY, REPORTED, Reported, value_of

@@ -10,7 +10,7 @@ from fastapi.responses import HTMLResponse, Response
 from app.catalog import Catalog
 from app.catalog.motors import ANY_MOTOR
 from app.contract.exact import PLAIN_MESSAGES
-from app.contract.fields import BY_PAGE, FIELDS, GROUPS
+from app.contract.fields import BY_PAGE, FIELDS
 from app.contract.form import (
     MOVES,
     TRUE_WORDS,
@@ -24,6 +24,7 @@ from app.contract.form import (
     share_query,
     summary_rows,
 )
+from app.contract.input_field import GROUPS
 from app.contract.inputs import SUPPORT
 from app.contract.move_table import (
     ADD_MOVE,

@@ -20,7 +20,8 @@ from hypothesis import strategies as st
 
 import app.contract.units
 import app.core.phrase
-from app.contract.fields import FIELDS, InputField
+from app.contract.fields import FIELDS
+from app.contract.input_field import InputField
 from app.contract.units import (
     API_SYSTEM,
     API_UNITS,
