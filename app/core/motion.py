@@ -148,6 +148,27 @@ def speed_note(app: Application) -> Phrase | None:
     )
 
 
+def life_unchecked(app: Application) -> bool:
+    """Whether the duty turns each nut's life into years but no required life is given,
+    so no life check runs (the rated, wear and L10 life checks need one)."""
+    return (
+        app.required_life_years is None
+        and bool(equivalent_stroke(app))
+        and bool(cycles_per_day(app))
+    )
+
+
+def life_note(app: Application) -> Phrase | None:
+    """With a duty but no required life: that life is not checked, where each screw's
+    life at the duty is read, and what to give to check it (None otherwise)."""
+    if not life_unchecked(app):
+        return None
+    return Phrase(
+        "Life is not checked: no required life is given. Each screw's life at this duty "
+        "is in its row and its watch list; give a required life to reject the short-lived."
+    )
+
+
 def directions(app: Application) -> tuple[tuple[Direction, float], tuple[Direction, float]]:
     """The two directions of motion and the sign of each one's velocity along the axis:
     up (out) along it, down (back) against it."""

@@ -345,8 +345,10 @@ def summarize(
     if passed:
         message = Phrase(f"{passed} of {evaluated} candidates pass.")
         first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]
+        life = motion.life_note(app)
         parts = [p for p in first if p is not None]
-        return Summary(worst, worst_count, None, {}, join([*parts, *note, message]))
+        after = [] if life is None else [life]
+        return Summary(worst, worst_count, None, {}, join([*parts, *note, message, *after]))
     best = nearest[0]
     change = input_change(best)
     label = BY_NAME[worst].label if worst in BY_NAME else str(worst)

@@ -19,6 +19,7 @@ from app.core.batch import CheckResult
 from app.core.checks.base import Check
 from app.core.model import Application, Provenance, ScrewSpec
 from app.core.phrase import Amount, Phrase, join
+from app.core.sections import Life
 
 #: Catalog values by their base name (no nut variant, no unit), in the reader's words.
 VALUE_LABELS: Mapping[str, str] = {
@@ -318,6 +319,8 @@ class Record(Protocol):
     def self_locking_with_margin(self) -> bool: ...
     @property
     def brake_nm(self) -> float: ...
+    @property
+    def life(self) -> Life | None: ...
 
 
 def rests_on(
@@ -362,7 +365,19 @@ def watch_list(c: Record) -> tuple[Phrase, ...]:
         else:
             brake = Amount(c.brake_nm, "torque")
             found.append(Phrase("back-drives: a brake of {t} holds it power-off", {"t": brake}))
+    short = _unchecked_life(c)
+    if short is not None:
+        found.append(short)
     return tuple(found)
+
+
+def _unchecked_life(c: Record) -> Phrase | None:
+    """With a duty but no required life (no life check runs): the life at the duty, the
+    low end of its band, so that a short-lived screw is seen where its verdict is read."""
+    if not motion.life_unchecked(c.app) or c.life is None or c.life.years_min is None:
+        return None
+    years = Amount(c.life.years_min, "years")
+    return Phrase("life {y} at this duty, not checked (no required life given)", {"y": years})
 
 
 def sentence(
