@@ -297,7 +297,7 @@ def test_keystroke_to_results_latency_is_measured(
         page.wait_for_function(
             "v => document.querySelector('dl.inputs').textContent.includes(v + ' N')"
             " && !document.querySelector('.htmx-request')",
-            value[:-1],
+            arg=value[:-1],
         )
         start = page.evaluate(
             """value => { window.__done = null;
