@@ -293,7 +293,12 @@ def test_keystroke_to_results_latency_is_measured(
     for value in ("120", "130", "140", "150", "160", "170", "180"):
         page.fill("#f-load", value[:-1])
         page.wait_for_function(f"() => location.search.includes('load={value[:-1]}&')")
-        page.wait_for_timeout(100)
+        # the previous answer in place and no request in flight before the clock starts
+        page.wait_for_function(
+            "v => document.querySelector('dl.inputs').textContent.includes(v + ' N')"
+            " && !document.querySelector('.htmx-request')",
+            arg=value[:-1],
+        )
         start = page.evaluate(
             """value => { window.__done = null;
               const poll = () => {

@@ -8,6 +8,14 @@ from typing import Any
 IMPERIAL = "/?force_unit=lbf&length_unit=in&torque_unit=oz_in"
 
 
+def charts_fit(page: Any) -> None:
+    """Wait until every drawn chart has been resized into the (new) viewport's width."""
+    page.wait_for_function(
+        "() => [...document.querySelectorAll('.chart .main-svg')]"
+        ".every(svg => Number(svg.getAttribute('width')) <= window.innerWidth)"
+    )
+
+
 def test_imperial_selector_typed_with_a_comma_and_a_fraction(
     page: Any, live_server: str, artifacts: Path, console_errors: list[str]
 ) -> None:
@@ -28,7 +36,7 @@ def test_imperial_selector_typed_with_a_comma_and_a_fraction(
     assert limit.endswith(" lbf")
     page.screenshot(path=str(artifacts / "imperial-selector-1280.png"), full_page=True)
     page.set_viewport_size({"width": 390, "height": 844})
-    page.wait_for_timeout(300)  # the charts' resize
+    charts_fit(page)
     page.screenshot(path=str(artifacts / "imperial-selector-390.png"), full_page=True)
     assert console_errors == []
 
@@ -78,6 +86,6 @@ def test_custom_screw_in_inches(
     assert "outer 0.5 " in page.inner_text(".facts")
     page.screenshot(path=str(artifacts / "imperial-custom-1280.png"), full_page=True)
     page.set_viewport_size({"width": 390, "height": 844})
-    page.wait_for_timeout(300)
+    charts_fit(page)
     page.screenshot(path=str(artifacts / "imperial-custom-390.png"), full_page=True)
     assert console_errors == []
