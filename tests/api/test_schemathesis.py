@@ -11,9 +11,9 @@ One test function per operation (``test_api_conforms_to_its_schema_get_api_v1_se
 each ``schema.parametrize()`` over the schema filtered to that operation, so each runs
 schemathesis' phases for it under a node id of its own and pytest-xdist schedules and
 reports each. (One ``schema.parametrize()`` over the whole schema gives every operation's
-item the same node id under pytest 9, and xdist then runs one of them.) ``--dist
-loadfile`` keeps this module on one worker, where the count of generated requests is
-summed.
+item the same node id under pytest 9, and xdist then runs one of them.) The module's
+``xdist_group`` mark keeps it on one worker (``--dist loadgroup``), where the count of
+generated requests is summed.
 
 ``test_fuzz_regressions`` replays requests an earlier run found answered with a 500 or a
 200 where the schema forbids them (vanishing numbers, a thread too steep to drive at its
@@ -63,6 +63,7 @@ OPERATIONS = sorted(
     for method in methods
 )
 cases_run: dict[str, int] = {}
+pytestmark = pytest.mark.xdist_group("schemathesis")
 FUZZ_TEST = "test_api_conforms_to_its_schema"
 
 
@@ -95,7 +96,7 @@ for _operation in OPERATIONS:
 
 
 def test_enough_cases_were_generated(request: pytest.FixtureRequest) -> None:
-    """Runs after the fuzz test in this module, in the same process (``--dist loadfile``).
+    """Runs after the fuzz test in this module, in the same process (its ``xdist_group``).
 
     Skipped when the fuzz test was not selected for every operation; fails when it was but
     ran elsewhere (another xdist worker), since the count would then prove nothing."""
@@ -106,7 +107,7 @@ def test_enough_cases_were_generated(request: pytest.FixtureRequest) -> None:
         pytest.skip("the fuzz test was not selected for every operation")
     assert set(cases_run) == set(OPERATIONS), (
         "the fuzz test ran for these operations in another process; run this module on one"
-        f" worker (--dist loadfile): {sorted(set(OPERATIONS) - set(cases_run))}"
+        f" worker (its xdist_group mark): {sorted(set(OPERATIONS) - set(cases_run))}"
     )
     total = sum(cases_run.values())
     print(f"\nschemathesis requests per operation: {cases_run}, total {total}")
