@@ -4,7 +4,6 @@ property tests' settings."""
 from collections.abc import Iterator
 
 import pytest
-from _pytest.nodeid import NodeId
 from fastapi import FastAPI
 from fastapi.testclient import TestClient
 from hypothesis import settings
@@ -37,6 +36,8 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         }
         suffix = "@" + "_".join(sorted(names))
         if names and not item.nodeid.endswith(suffix):
+            from _pytest.nodeid import NodeId  # pytest 9.2's structured ids (older: none)
+
             item._id = NodeId.parse(item.nodeid + suffix)
 
 
