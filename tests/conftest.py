@@ -18,6 +18,29 @@ settings.register_profile("untimed", deadline=None)
 settings.load_profile("untimed")
 
 
+@pytest.hookimpl(trylast=True)
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """``--dist loadgroup``: the node id of a test marked ``xdist_group(name)`` ends in
+    ``@name``, which tells the scheduler to keep the group on one worker.
+
+    pytest-xdist 3.8 writes that suffix to ``item._nodeid``, which pytest 9.2 no longer
+    reads (its node ids are structured): the marks were ignored and every test spread
+    (pytest-dev/pytest-xdist issue 1386). This writes it where pytest 9.2 reads it, the
+    same way xdist names a group; a no-op where xdist has already added it."""
+    if not getattr(config.option, "loadgroup", False):  # set on xdist workers only
+        return
+    for item in items:
+        marks = item.iter_markers("xdist_group")
+        names = {
+            str(mark.args[0] if mark.args else mark.kwargs.get("name", "default")) for mark in marks
+        }
+        suffix = "@" + "_".join(sorted(names))
+        if names and not item.nodeid.endswith(suffix):
+            from _pytest.nodeid import NodeId  # pytest 9.2's structured ids (older: none)
+
+            item._id = NodeId.parse(item.nodeid + suffix)
+
+
 @pytest.fixture(scope="session")
 def catalog() -> Catalog:
     return load_catalog()

@@ -2,6 +2,7 @@
 scalar evaluations by the documented key, for every ranking criterion. (Agreement of the
 screen with ``evaluate`` candidate by candidate: test_selection.py.)"""
 
+import dataclasses
 import math
 
 import pytest
@@ -9,20 +10,28 @@ import pytest
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
+from app.core.record import Candidate
 from app.core.selection import select
 
+#: the axis every ranking is checked on; ``rank_by`` set per test
+APP = Application(load_n=150.0, speed_m_s=0.04, length_m=0.6, limit=100)
 
+
+@pytest.fixture(scope="module")
+def everything(catalog: Catalog) -> list[Candidate]:
+    """The full scalar evaluation of every screw of the catalog, made once for the four
+    rankings: ``evaluate`` reads no ``rank_by`` (only ``selection`` orders by it)."""
+    return [evaluate(APP, s) for s in catalog.screws]
+
+
+# one xdist worker evaluates the catalog for the four (``--dist loadgroup``)
+@pytest.mark.xdist_group("ranking-evaluations")
 @pytest.mark.parametrize("rank_by", ["torque", "margin", "life", "size"])
-def test_select_equals_evaluating_everything(catalog: Catalog, rank_by: str) -> None:
+def test_select_equals_evaluating_everything(
+    catalog: Catalog, everything: list[Candidate], rank_by: str
+) -> None:
     """Ranking from the screen equals sorting full evaluations by the documented key."""
-    app = Application(
-        load_n=150.0,
-        speed_m_s=0.04,
-        length_m=0.6,
-        rank_by=rank_by,  # type: ignore[arg-type]
-        limit=100,
-    )
-    everything = [evaluate(app, s) for s in catalog.screws]
+    app = dataclasses.replace(APP, rank_by=rank_by)  # type: ignore[arg-type]
     passing = [e for e in everything if e.passed]
     key = {
         "torque": lambda e: (e.torque.total_nm, e.max_utilization),

@@ -32,6 +32,10 @@ K8S = ROOT / "deploy" / "k8s"
 K8S_VERSION = "1.33.0"
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
 FULL = "&detail=full&limit=100"
+#: the tests of one proxy fixture run on one xdist worker (``--dist loadgroup``), so each
+#: proxy (nginx and two app processes) starts once
+ON_PROXY = pytest.mark.xdist_group("deploy-proxy")
+ON_SHEDDING_PROXY = pytest.mark.xdist_group("deploy-shedding-proxy")
 
 
 def need_nginx() -> None:
@@ -60,6 +64,7 @@ def shedding_proxy(tmp_path_factory: pytest.TempPathFactory) -> Iterator[tuple[s
         yield f"http://127.0.0.1:{port}", prefix
 
 
+@ON_PROXY
 def test_the_proxy_serves_the_app(proxy: str) -> None:
     response = httpx.get(proxy + SELECT, timeout=10)
     assert response.status_code == 200 and response.json()["candidates"]
@@ -68,6 +73,7 @@ def test_the_proxy_serves_the_app(proxy: str) -> None:
     assert head.status_code == 200 and head.content == b""
 
 
+@ON_PROXY
 def test_static_files_come_from_nginx_gzipped_with_cache_headers(proxy: str) -> None:
     raw = (ROOT / "static" / "css" / "app.css").read_bytes()
     with httpx.stream(
@@ -81,6 +87,7 @@ def test_static_files_come_from_nginx_gzipped_with_cache_headers(proxy: str) -> 
     assert "immutable" in vendor.headers["cache-control"]
 
 
+@ON_PROXY
 def test_the_proxy_refuses_oversized_heads_and_bodies(proxy: str) -> None:
     big_header = httpx.get(proxy + "/api/v1/health", headers={"X-Big": "a" * 20_000}, timeout=10)
     assert big_header.status_code in (400, 431, 494)
@@ -88,6 +95,7 @@ def test_the_proxy_refuses_oversized_heads_and_bodies(proxy: str) -> None:
     assert body.status_code == 413
 
 
+@ON_PROXY
 def test_a_slow_header_flood_does_not_stop_normal_requests(proxy: str) -> None:
     port = int(proxy.rsplit(":", 1)[1])
     stop = threading.Event()
@@ -113,6 +121,7 @@ def test_a_slow_header_flood_does_not_stop_normal_requests(proxy: str) -> None:
     assert open_counts[:2] == [200, 200]
 
 
+@ON_SHEDDING_PROXY
 def test_shedding_processes_stay_in_the_pool(shedding_proxy: tuple[str, Path]) -> None:
     """Both processes shed (503) under concurrent costly requests; nginx passes the 503 on
     (with Retry-After) but never takes a process out of the pool for it, so the health
@@ -132,6 +141,7 @@ def test_shedding_processes_stay_in_the_pool(shedding_proxy: tuple[str, Path]) -
     assert httpx.get(url + SELECT, timeout=10).status_code == 200
 
 
+@ON_SHEDDING_PROXY
 def test_a_request_flood_gets_429_with_retry_after_and_no_error_log(
     shedding_proxy: tuple[str, Path],
 ) -> None:
@@ -226,6 +236,7 @@ def test_an_invalid_manifest_is_caught() -> None:
         kubernetes_validate.validate(broken, K8S_VERSION, strict=True)
 
 
+@ON_SHEDDING_PROXY
 def test_refusals_are_sampled_in_the_access_log(shedding_proxy: tuple[str, Path]) -> None:
     """Issue 31: a flood of 429s from one address wrote a line each (7 MB/s). One refusal
     in a hundred is logged now, every other answer still is; lines are buffered, and

@@ -55,6 +55,10 @@ def test_the_constraints_pin_every_dependency_exactly() -> None:
         assert re.sub(r"[-_.]+", "-", name).lower() in pinned, requirement
 
 
+#: the tests of the install run on one xdist worker (``--dist loadgroup``): it is made once
+ON_INSTALL = pytest.mark.xdist_group("run-command-install")
+
+
 @pytest.fixture(scope="module")
 def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The README's install step, into a temporary target, run from outside the checkout."""
@@ -87,10 +91,12 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "app/catalog_data/common.toml",
     ],
 )
+@ON_INSTALL
 def test_the_install_carries(installed: Path, path: str) -> None:
     assert (installed / path).is_file()
 
 
+@ON_INSTALL
 def test_the_install_leaves_out_tests_and_benchmarks(installed: Path) -> None:
     assert not (installed / "tests").exists() and not (installed / "bench").exists()
     entry_points = next(installed.glob("*.dist-info")) / "entry_points.txt"
@@ -133,6 +139,7 @@ def _serve_select_stop(args: list[str], cwd: Path, env: dict[str, str]) -> None:
     assert proc.returncode == 0, output
 
 
+@ON_INSTALL
 def test_installed_console_script_serves_and_stops_cleanly(installed: Path) -> None:
     """``leadscrew-selector`` as installed: outside the checkout, from the install only."""
     _, serve = readme_run_command()

@@ -458,6 +458,10 @@ def test_a_large_body_within_the_limit_is_read(client: TestClient) -> None:
 # --- oversized bodies against a real uvicorn -------------------------------------------
 
 
+#: the tests of the live server run on one xdist worker (``--dist loadgroup``): it starts once
+ON_LIVE_SERVER = pytest.mark.xdist_group("security-live-server")
+
+
 @pytest.fixture(scope="module")
 def live_port() -> Iterator[int]:
     port = free_port()
@@ -503,6 +507,7 @@ def _post_raw(port: int, head: str, body_chunks: Iterator[bytes]) -> tuple[bytes
     return answer, sent
 
 
+@ON_LIVE_SERVER
 def test_real_server_refuses_a_10mb_body_before_reading_it(live_port: int) -> None:
     head = (
         "POST /api/v1/select HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
@@ -514,6 +519,7 @@ def test_real_server_refuses_a_10mb_body_before_reading_it(live_port: int) -> No
     assert _status(live_port, "/api/v1/health") == 200
 
 
+@ON_LIVE_SERVER
 def test_real_server_refuses_a_10mb_chunked_body(live_port: int) -> None:
     head = (
         "POST /api/v1/select HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
@@ -527,6 +533,7 @@ def test_real_server_refuses_a_10mb_chunked_body(live_port: int) -> None:
     assert _status(live_port, "/api/v1/health") == 200
 
 
+@ON_LIVE_SERVER
 def test_real_server_refuses_oversized_queries(live_port: int) -> None:
     """A 100 KB request line stops in uvicorn's parser (400, before the app); 5,000
     parameters in a shorter query reach the app and get its 414."""

@@ -29,6 +29,8 @@ KEEP_ALIVE_S = 1
 CLOSE_WITHIN_S = 10
 MAX_HEADER_BYTES = 32 * 1024
 MB = 1024 * 1024
+#: every test uses the module's one server: they run on one xdist worker (``--dist loadgroup``)
+pytestmark = pytest.mark.xdist_group("server-limits")
 #: open connections past which requests are refused (1,024 by default; fewer sockets here)
 MAX_CONNECTIONS = 64
 
