@@ -291,7 +291,7 @@ def _null_values(annotation: Any) -> bool:
     return get_origin(annotation) is dict and _nullable(get_args(annotation)[1])
 
 
-def _absent(info: FieldInfo, default: Any = None, absent: str = COMPACT_ABSENT) -> FieldInfo:
+def _absent(info: FieldInfo, default: Any = None, absent: str = COMPACT_ABSENT) -> Any:
     """A field that can be null (or a dict with null values), as the compact form gives
     it: optional (its default None is never served), absent when not worked out."""
     return Field(default, description=f"{info.description or ''}{absent}".strip())

@@ -5,6 +5,11 @@
 per field: the path's ``attrgetter``, the unit's factor, the nested model's own reader),
 and returns the function that reads them: a compact select reads some twenty fields of
 twenty candidates on every request, so nothing is looked up per call.
+
+A compact view (``COMPACT_VIEWS``) read as JSON is in the compact form: each number to
+``COMPACT_FIGURES`` significant figures, and a value not worked out for the query (None,
+a non-finite number, a dict's None value) left out; the getters of such a view do it as
+they read, so the finished dict is never walked again.
 """
 
 import math
