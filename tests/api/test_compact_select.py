@@ -1,6 +1,5 @@
 """The compact select (the default ``detail``): numbers to 6 significant figures and no
-null values, each number the full form's to 6 figures, and the default request within
-issue 30's 12 kB."""
+null values, each number the full form's to 6 figures (its size: test_select_detail.py)."""
 
 from typing import Any
 
@@ -9,9 +8,10 @@ from fastapi.testclient import TestClient
 
 from app.contract.schemas import VIEWS
 from tests.compact_form import assert_compact_of, null_keys
+from tests.machine_axes import X, Z
 
 API = "/api/v1/select"
-#: bench/web.py's default request (issue 30: its compact JSON at most 12 kB before gzip).
+#: bench/web.py's default request.
 DEFAULT = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}
 QUERIES: dict[str, dict[str, Any]] = {
     "default": DEFAULT,
@@ -41,16 +41,6 @@ def _select(client: TestClient, query: dict[str, Any], **extra: str) -> dict[str
     response = client.get(API, params={**query, **extra})
     assert response.status_code == 200, response.text
     return dict(response.json())
-
-
-def test_the_default_compact_select_is_at_most_12_kb(client: TestClient) -> None:
-    """Issue 30 item 5: the default request's compact JSON, before gzip, within 12,000
-    bytes (13,638 before this form rounded numbers and left out nulls)."""
-    response = client.get(API, params=DEFAULT, headers={"Accept-Encoding": "identity"})
-    assert response.status_code == 200
-    body = response.json()
-    assert body["candidates"] and body["rejected"]
-    assert len(response.content) <= 12_000
 
 
 @pytest.mark.parametrize("query", QUERIES.values(), ids=QUERIES.keys())
@@ -88,3 +78,19 @@ def test_no_compact_candidate_has_a_null_value(client: TestClient, query: dict[s
     body = _select(client, query)
     for group in ("candidates", "rejected"):
         assert null_keys(body[group], group) == []
+
+
+def test_the_machines_candidates_are_compact_too(client: TestClient) -> None:
+    """POST /api/v1/machine gives each axis' candidates and its choice in the same compact
+    form: no null value, and the choice is the axis' candidate of the same id."""
+    axes = [
+        {"name": "Z", "inputs": Z, "frame_kg": 0.3, "motor_kg": 0.4},
+        {"name": "X", "inputs": X, "frame_kg": 0.5, "motor_kg": 0.4},
+    ]
+    response = client.post("/api/v1/machine", json={"axes": axes})
+    assert response.status_code == 200, response.text
+    for axis in response.json()["axes"]:
+        assert axis["candidates"] and axis["chosen"], axis["name"]
+        assert null_keys([axis["chosen"], *axis["candidates"]], axis["name"]) == []
+        same = next(c for c in axis["candidates"] if c["id"] == axis["chosen"]["id"])
+        assert same == axis["chosen"]
