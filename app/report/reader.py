@@ -29,6 +29,7 @@ from app.core.phrase import Phrase
 
 #: A number to ``COMPACT_FIGURES`` significant figures, as text (the fastest of the ways).
 FIGURES = f"%.{COMPACT_FIGURES}g"
+INF = math.inf
 #: (source, record, sentences' writer) -> the view: a dict of JSON values, or the model.
 Reader = Callable[[Any, Any, Writer], Any]
 #: (source, record, sentences' writer) -> one field's value.
@@ -99,7 +100,7 @@ def _getter(
     if source.quantity is not None:
         scale = API_UNITS[source.quantity][1]
         if compact:
-            return lambda s, r, u: _compact(_scaled(at(s, r), scale))
+            return lambda s, r, u: _scaled_figures(at(s, r), scale)
         return lambda s, r, u: _scaled(at(s, r), scale)
     kind = _kind(info.annotation)
     if compact and kind == "number":
@@ -149,9 +150,16 @@ def _number(value: Any) -> Any:
 def _figures(value: float | None) -> float | None:
     """A number in the compact form: to ``COMPACT_FIGURES`` significant figures; None
     (left out) for None or a non-finite number."""
-    if value is None or not math.isfinite(value):
+    if value is None or not -INF < value < INF:  # NaN compares false
         return None
     return float(FIGURES % value)
+
+
+def _scaled_figures(value: Any, scale: float) -> Any:
+    """An SI number (or a tuple of them) in the API unit, in the compact form."""
+    if type(value) is tuple:
+        return [_figures(v * scale) for v in value]
+    return None if value is None else _figures(value * scale)
 
 
 def _compact(value: Any) -> Any:
@@ -161,7 +169,11 @@ def _compact(value: Any) -> Any:
     if kind is float:
         return _figures(value)
     if kind is dict:
-        return {k: c for k, v in value.items() if (c := _compact(v)) is not None}
+        return {
+            k: c
+            for k, v in value.items()
+            if (c := _figures(v) if type(v) is float else _compact(v)) is not None
+        }
     if kind is list:
         return [_compact(v) for v in value]
     return value
