@@ -156,9 +156,11 @@ async def select_post(
 ) -> Response:
     """Rank every catalog candidate for the application in the JSON body: the passing
     screws, best first by the ranking asked for, and the rejected ones with their failed checks and
-    fixes; `detail=full` gives every number, check, formula and provenance. Inputs are
-    in the API's units, the unit in each name (a speed in mm/s); `share_url` is the page of
-    the same inputs, `api_url` the GET of the same query."""
+    fixes; `detail=full` gives every number, check, formula and provenance. The compact
+    form gives numbers to 6 significant figures and leaves out values not worked out for
+    this query; `detail=full` gives every field at full precision. Inputs are in the API's
+    units, the unit in each name (a speed in mm/s); `share_url` is the page of the same
+    inputs, `api_url` the GET of the same query."""
     return await _selection(request, inputs, catalog, detail)
 
 
@@ -168,7 +170,10 @@ async def select_post(
     openapi_extra={"parameters": query_parameters(SelectQuery)},
     summary="Select screws for an axis (query)",
     description=_get_doc(
-        "The same as POST, with the fields (and `detail`) as query parameters.", "select"
+        "The same as POST, with the fields (and `detail`) as query parameters. The compact "
+        "form gives numbers to 6 significant figures and leaves out values not worked out "
+        "for this query; `detail=full` gives every field at full precision.",
+        "select",
     ),
 )
 async def select_get(request: Request, catalog: CatalogDep) -> Response:

@@ -118,7 +118,9 @@ class SelectQuery(ApplicationIn):
         description="summary (default): passing candidates as the results table shows "
         "them, rejected ones as their failed checks with utilization and fix, formulas at "
         "/api/v1/formulas (SelectSummaryOut); full: every number, check message, formula "
-        "and provenance of every candidate, and the formulas table (SelectOut).",
+        "and provenance of every candidate, and the formulas table (SelectOut). The "
+        "compact form gives numbers to 6 significant figures and leaves out values not "
+        "worked out for this query; detail=full gives every field at full precision.",
     )
 
     @field_validator("*")
@@ -163,7 +165,9 @@ SummaryDetail = Literal["summary"]
 #: candidates in the ``summary`` view, the rejected in the ``rejected`` view.
 SelectSummaryOut = create_model(
     "SelectSummaryOut",
-    __doc__="The default select response; ``detail=full`` gives ``SelectOut``.",
+    __doc__="The default select response, the compact form: its candidates give numbers to "
+    "6 significant figures and leave out values not worked out for this query; "
+    "``detail=full`` gives ``SelectOut``, every field at full precision.",
     detail=(SummaryDetail, ...),
     inputs=(
         dict[str, Any],

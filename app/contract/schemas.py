@@ -13,6 +13,7 @@ from types import GenericAlias, UnionType
 from typing import TYPE_CHECKING, Annotated, Any, Literal, Union, get_args, get_origin
 
 from pydantic import BaseModel, Field, create_model
+from pydantic.fields import FieldInfo
 
 from app.contract.inputs import ApplicationIn as ApplicationIn  # re-exported for the API and pages
 from app.contract.reported import added_fields, merged, view_of
@@ -231,12 +232,32 @@ VIEWS: dict[str, View] = {
     "csv": view_of("csv"),
     "full": whole(*CandidateOut.model_fields),
 }
+#: The views of the compact select (and /machine), as JSON: each number to
+#: ``COMPACT_FIGURES`` significant figures, and a value not worked out for this query
+#: (null in the full form, a non-finite number, a check's utilisation where it did not
+#: run) left out rather than given as null. ``detail=full`` gives every field at full
+#: precision. ``app.report.reader`` applies it as it reads such a view; ``view_model``
+#: with ``compact`` describes it.
+COMPACT_VIEWS = frozenset({"summary", "rejected"})
+COMPACT_FIGURES = 6
+#: What a compact view model's doc and each of its optional fields add.
+COMPACT_DOC = (
+    "The compact form: numbers to 6 significant figures; a value not worked out for this "
+    "query (null in the full form) is absent, never null."
+)
+COMPACT_ABSENT = " Absent when not worked out for this query (null in the full form)."
+COMPACT_ENTRIES = " An entry not worked out for this query (null in the full form) is absent."
 
 
-def view_model(model: type[BaseModel], view: View, name: str) -> type[BaseModel]:
+def view_model(
+    model: type[BaseModel], view: View, name: str, compact: bool = False
+) -> type[BaseModel]:
     """The model of one view of ``model``: its fields in the view, in the model's order,
     each with its description and default; a nested model cut to its own view (named
-    ``<Model><name>``, e.g. TorqueSummaryOut). For OpenAPI and for validating a view."""
+    ``<Model><name>``, e.g. TorqueSummaryOut). For OpenAPI and for validating a view.
+    ``compact`` (``COMPACT_VIEWS``): a field that can be null is optional and never null
+    instead (absent when not worked out), and so are a dict's values; nested models
+    (taken whole too) alike."""
     unknown = set(view) - set(model.model_fields)
     if unknown:
         raise ValueError(f"{model.__name__} has no field {', '.join(sorted(unknown))}")
@@ -245,25 +266,61 @@ def view_model(model: type[BaseModel], view: View, name: str) -> type[BaseModel]
         part = view.get(field_name)
         if part is None:
             continue
-        annotation = info.annotation if part is True else _cut(info.annotation, part, name)
-        fields[field_name] = (annotation, info)
+        annotation = (
+            info.annotation
+            if part is True and not compact
+            else _cut(info.annotation, part, name, compact)
+        )
+        if compact and _nullable(annotation):
+            fields[field_name] = (_not_null(annotation), _absent(info))
+        elif compact and _null_values(info.annotation):
+            fields[field_name] = (annotation, _absent(info, info.default, COMPACT_ENTRIES))
+        else:
+            fields[field_name] = (annotation, info)
     title = f"{model.__name__.removesuffix('Out')}{name}Out"
-    return create_model(title, __doc__=model.__doc__, **fields)
+    doc = f"{model.__doc__ or ''}\n\n{COMPACT_DOC}".strip() if compact else model.__doc__
+    return create_model(title, __doc__=doc, **fields)
 
 
-def _cut(annotation: Any, view: View, name: str) -> Any:
-    """``annotation`` with its model (alone, optional, or in a list) cut to ``view``."""
+def _nullable(annotation: Any) -> bool:
+    return get_origin(annotation) in (UnionType, Union) and type(None) in get_args(annotation)
+
+
+def _null_values(annotation: Any) -> bool:
+    """A dict whose values can be null."""
+    return get_origin(annotation) is dict and _nullable(get_args(annotation)[1])
+
+
+def _absent(info: FieldInfo, default: Any = None, absent: str = COMPACT_ABSENT) -> Any:
+    """A field that can be null (or a dict with null values), as the compact form gives
+    it: optional (its default None is never served), absent when not worked out."""
+    return Field(default, description=f"{info.description or ''}{absent}".strip())
+
+
+def _cut(annotation: Any, view: View | Literal[True], name: str, compact: bool = False) -> Any:
+    """``annotation`` with its model (alone, optional, in a list or a dict) cut to ``view``
+    (True: whole); in the compact form a dict's values never null."""
     if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return view_model(annotation, view, name)
+        whole_model = whole(*annotation.model_fields) if view is True else view
+        return view_model(annotation, whole_model, name, compact)
     origin = get_origin(annotation)
-    if origin is None:
+    if origin not in (UnionType, Union, list, dict):
         return annotation
-    args = tuple(_cut(a, view, name) for a in get_args(annotation))
+    args = tuple(_cut(a, view, name, compact) for a in get_args(annotation))
     if origin in (UnionType, Union):
         return reduce(operator.or_, args)
+    if compact and origin is dict:
+        args = (args[0], _not_null(args[1]))
     return GenericAlias(origin, args)
 
 
+def _not_null(annotation: Any) -> Any:
+    """``annotation`` without None (the compact form leaves out null values)."""
+    if not _nullable(annotation):
+        return annotation
+    return reduce(operator.or_, [a for a in get_args(annotation) if a is not type(None)])
+
+
 #: The compact select's candidate and rejected candidate, and the page's row, as models.
-CandidateSummaryOut = view_model(CandidateOut, VIEWS["summary"], "Summary")
-RejectedSummaryOut = view_model(CandidateOut, VIEWS["rejected"], "Rejected")
+CandidateSummaryOut = view_model(CandidateOut, VIEWS["summary"], "Summary", compact=True)
+RejectedSummaryOut = view_model(CandidateOut, VIEWS["rejected"], "Rejected", compact=True)

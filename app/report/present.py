@@ -56,7 +56,9 @@ def candidate_json(
     c: Candidate, view: str, units: Units[str, str] = DEFAULT_UNITS
 ) -> dict[str, Any]:
     """One candidate's ``VIEWS[view]`` as plain JSON values (nested dicts): the compact
-    select response, byte for byte what the view's model would serialise."""
+    select response, byte for byte what the view's model would serialise of the fields it
+    gives (a compact view's numbers to 6 significant figures, its null values left out:
+    ``app.contract.schemas.COMPACT_VIEWS``)."""
     return cast(dict[str, Any], reader(CandidateOut, view, as_dict=True)(c, c, Writer(units)))
 
 

@@ -5,6 +5,11 @@
 per field: the path's ``attrgetter``, the unit's factor, the nested model's own reader),
 and returns the function that reads them: a compact select reads some twenty fields of
 twenty candidates on every request, so nothing is looked up per call.
+
+A compact view (``COMPACT_VIEWS``) read as JSON is in the compact form: each number to
+``COMPACT_FIGURES`` significant figures, and a value not worked out for the query (None,
+a non-finite number, a dict's None value) left out; the getters of such a view do it as
+they read, so the finished dict is never walked again.
 """
 
 import math
@@ -17,11 +22,14 @@ from typing import Any, Literal, Union, cast, get_args, get_origin
 from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
-from app.contract.schemas import VIEWS, View
+from app.contract.schemas import COMPACT_FIGURES, COMPACT_VIEWS, VIEWS, View
 from app.contract.source import From, Writer
 from app.contract.units import API_UNITS, DEFAULT_UNITS
 from app.core.phrase import Phrase
 
+#: A number to ``COMPACT_FIGURES`` significant figures, as text (the fastest of the ways).
+FIGURES = f"%.{COMPACT_FIGURES}g"
+INF = math.inf
 #: (source, record, sentences' writer) -> the view: a dict of JSON values, or the model.
 Reader = Callable[[Any, Any, Writer], Any]
 #: (source, record, sentences' writer) -> one field's value.
@@ -36,14 +44,21 @@ def reader(
     a nested model) from a source: as a dict of JSON values (``as_dict``) or as the model
     holding the view's fields alone (``model_construct``: no validation)."""
     shown = _view(model, view, path)
+    compact = as_dict and view in COMPACT_VIEWS
     fields = tuple(
-        (name, _getter(info, view, (*path, name), as_dict))
+        (name, _getter(info, view, (*path, name), as_dict, compact))
         for name, info in model.model_fields.items()
         if name in shown
     )
 
     def read_dict(s: Any, r: Any, u: Writer) -> dict[str, Any]:
         return {name: get(s, r, u) for name, get in fields}
+
+    def read_compact(s: Any, r: Any, u: Writer) -> dict[str, Any]:
+        return {name: v for name, get in fields if (v := get(s, r, u)) is not None}
+
+    if compact:
+        return read_compact
 
     def read_model(s: Any, r: Any, u: Writer) -> BaseModel:
         return model.model_construct(**{name: get(s, r, u) for name, get in fields})
@@ -62,9 +77,12 @@ def _view(model: type[BaseModel], view: str, path: tuple[str, ...]) -> View:
     return cast(View, part)
 
 
-def _getter(info: FieldInfo, view: str, path: tuple[str, ...], as_dict: bool) -> Getter:
+def _getter(
+    info: FieldInfo, view: str, path: tuple[str, ...], as_dict: bool, compact: bool = False
+) -> Getter:
     """How one field's value is read from ``s`` (the source), ``r`` (the record) and ``u``
-    (the sentences' writer)."""
+    (the sentences' writer); ``compact``: in the compact form (``COMPACT_VIEWS``), numbers
+    to ``COMPACT_FIGURES`` significant figures and a dict without its null values."""
     source = next((m for m in info.metadata if isinstance(m, From)), None)
     if source is None:
         default = info.default
@@ -76,11 +94,20 @@ def _getter(info: FieldInfo, view: str, path: tuple[str, ...], as_dict: bool) ->
         return _each(at, _shared(read) if nested.model_config.get("frozen") else read, shape)
     if source.via is not None:
         via = source.via
+        if compact:
+            return lambda s, r, u: _compact(via(at(s, r), u))
         return lambda s, r, u: via(at(s, r), u)
     if source.quantity is not None:
         scale = API_UNITS[source.quantity][1]
+        if compact:
+            return lambda s, r, u: _scaled_figures(at(s, r), scale)
         return lambda s, r, u: _scaled(at(s, r), scale)
-    return _written(at, _kind(info.annotation))
+    kind = _kind(info.annotation)
+    if compact and kind == "number":
+        return lambda s, r, u: _figures(at(s, r))
+    if compact and kind == "plain":
+        return lambda s, r, u: _compact(_plain(at(s, r), u))
+    return _written(at, kind)
 
 
 def _each(at: Callable[[Any, Any], Any], read: Reader, shape: str) -> Getter:
@@ -118,6 +145,38 @@ def _written(at: Callable[[Any, Any], Any], kind: str) -> Getter:
 def _number(value: Any) -> Any:
     """A float as JSON holds it: NaN as None."""
     return value if value == value else None
+
+
+def _figures(value: float | None) -> float | None:
+    """A number in the compact form: to ``COMPACT_FIGURES`` significant figures; None
+    (left out) for None or a non-finite number."""
+    if value is None or not -INF < value < INF:  # NaN compares false
+        return None
+    return float(FIGURES % value)
+
+
+def _scaled_figures(value: Any, scale: float) -> Any:
+    """An SI number (or a tuple of them) in the API unit, in the compact form."""
+    if type(value) is tuple:
+        return [_figures(v * scale) for v in value]
+    return None if value is None else _figures(value * scale)
+
+
+def _compact(value: Any) -> Any:
+    """A JSON value in the compact form: its numbers to ``COMPACT_FIGURES`` significant
+    figures, a dict without its null values (a list keeps each place: None stays)."""
+    kind = type(value)
+    if kind is float:
+        return _figures(value)
+    if kind is dict:
+        return {
+            k: c
+            for k, v in value.items()
+            if (c := _figures(v) if type(v) is float else _compact(v)) is not None
+        }
+    if kind is list:
+        return [_compact(v) for v in value]
+    return value
 
 
 def _access(path: str | tuple[str, ...]) -> Callable[[Any, Any], Any]:

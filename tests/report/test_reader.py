@@ -6,13 +6,14 @@ from fastapi.testclient import TestClient
 
 from app.catalog import Catalog
 from app.contract.outputs import SelectOut
-from app.contract.schemas import VIEWS, ApplicationIn, CandidateOut, view_model
+from app.contract.schemas import COMPACT_VIEWS, VIEWS, ApplicationIn, CandidateOut, view_model
 from app.contract.source import Writer
 from app.contract.units import DEFAULT_UNITS
 from app.core.selection import select
 from app.main import create_app
 from app.report.reader import reader
 from app.report.service import INPUT_RANGES
+from tests.compact_form import assert_compact_of
 
 #: a move, a duty and a vacuum: profile, segments, life and outgassing on every candidate
 AXIS = {"load_n": 20, "speed_mm_s": 100, "length_mm": 500, "stroke_mm": 300, "lead_mm": 10}
@@ -33,18 +34,28 @@ def test_a_full_selection_through_the_api_validates_against_its_own_model() -> N
 @pytest.mark.parametrize("view", sorted(VIEWS))
 def test_each_view_reads_alike_as_json_and_as_the_model(catalog: Catalog, view: str) -> None:
     """The dict reader writes what the model reader's model serialises, and that is valid
-    for the view's own model (``view_model``): no field missing, none extra."""
+    for the view's own model (``view_model``): no field missing, none extra. A compact
+    view (``COMPACT_VIEWS``) as JSON is the model's in the compact form: numbers to 6
+    significant figures, null values left out, and its model says so (a field that can
+    be null optional)."""
     app = ApplicationIn.model_validate(AXIS).to_core(catalog.motors, catalog.supports)
     selection = select(app, catalog.index, INPUT_RANGES)
-    checked = view_model(CandidateOut, VIEWS[view], view.title())
+    compact = view in COMPACT_VIEWS
+    checked = view_model(CandidateOut, VIEWS[view], view.title(), compact=compact)
+    full_precision = view_model(CandidateOut, VIEWS[view], view.title())
     assert selection.candidates
     for c in [*selection.candidates[:5], *selection.rejected[:5]]:
         as_json = reader(CandidateOut, view, as_dict=True)(c, c, Writer(DEFAULT_UNITS))
         model = reader(CandidateOut, view)(c, c, Writer(DEFAULT_UNITS))
         assert set(model.model_fields_set) == set(VIEWS[view]), c.screw.id
-        assert checked.model_validate(as_json).model_dump(mode="json") == as_json, c.screw.id
-        dumped = checked.model_validate(model, from_attributes=True).model_dump(mode="json")
-        assert dumped == as_json, c.screw.id
+        valid = checked.model_validate(as_json).model_dump(mode="json", exclude_unset=compact)
+        assert valid == as_json, c.screw.id
+        of_model = full_precision.model_validate(model, from_attributes=True)
+        dumped = of_model.model_dump(mode="json")
+        if compact:
+            assert_compact_of(as_json, dumped, VIEWS[view], c.screw.id)
+        else:
+            assert dumped == as_json, c.screw.id
 
 
 #: Ball screws beside leadscrews, with a duty: ball nuts' checks do not apply to

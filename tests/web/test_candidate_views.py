@@ -1,7 +1,7 @@
 """The forms of a candidate (``VIEWS`` of ``CandidateOut``) and the numbers the row and
 the summary show besides the breakdown: the nut's material, the motor's peak and RMS
-torque over the move (null without a stroke), the share of the motor used, and the
-column the ranking orders."""
+torque over the move (without a stroke: null in the full form, absent in the compact
+one), the share of the motor used, and the column the ranking orders."""
 
 import csv
 import io
@@ -17,6 +17,7 @@ from app.contract.schemas import VIEWS, ApplicationIn, CandidateOut, CandidateSu
 from app.core.evaluate import evaluate
 from app.report.service import run_selection
 from app.web.export import results_csv
+from tests.compact_form import RELATIVE
 from tests.motor_library import MOTORS
 
 AXIS = {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}
@@ -37,6 +38,15 @@ def _compact(client: TestClient, params: dict[str, Any]) -> list[dict[str, Any]]
     candidates: list[dict[str, Any]] = response.json()["candidates"]
     assert candidates
     return candidates
+
+
+def _forms(client: TestClient, params: dict[str, Any]) -> list[tuple[list[Any], float]]:
+    """The compact select's candidates, its numbers to 6 significant figures (within
+    ``RELATIVE`` of the core's), and the full form's, the core's numbers exactly."""
+    return [
+        (_compact(client, params), RELATIVE),
+        (_compact(client, {**params, "detail": "full"}), 0.0),
+    ]
 
 
 def test_views_name_fields_of_the_one_model() -> None:
@@ -69,18 +79,19 @@ def test_motor_peak_and_rms_torque_are_the_cores(
     client: TestClient, catalog: Catalog, params: dict[str, Any]
 ) -> None:
     app = ApplicationIn.model_validate(params).to_core(MOTORS)
-    for c in _compact(client, params):
-        row = catalog.index.row(catalog.index.positions[c["id"]])
-        motion = evaluate(app, row, catalog.index.table.reach).motion
-        if motion is None:
-            assert "stroke_mm" not in params
-            assert c["torque"]["peak_nm"] is None and c["torque"]["rms_nm"] is None
-        else:
-            assert (c["torque"]["peak_nm"], c["torque"]["rms_nm"]) == (
-                motion.peak_nm,
-                motion.rms_nm,
-            )
-            assert c["torque"]["peak_nm"] >= c["torque"]["rms_nm"] > 0
+    for candidates, rel in _forms(client, params):
+        for c in candidates:
+            row = catalog.index.row(catalog.index.positions[c["id"]])
+            motion = evaluate(app, row, catalog.index.table.reach).motion
+            if motion is None:
+                assert "stroke_mm" not in params
+                # null in the full form, left out of the compact one
+                assert c["torque"].get("peak_nm") is None and c["torque"].get("rms_nm") is None
+            else:
+                assert (c["torque"]["peak_nm"], c["torque"]["rms_nm"]) == pytest.approx(
+                    (motion.peak_nm, motion.rms_nm), rel=rel, abs=0.0
+                )
+                assert c["torque"]["peak_nm"] >= c["torque"]["rms_nm"] > 0
 
 
 @pytest.mark.parametrize("move", [False, True], ids=["no-stroke", "move"])
@@ -195,16 +206,20 @@ def test_the_compact_select_gives_the_peak_torque_and_the_motor_use(
 ) -> None:
     motor_nm = 0.4
     app = ApplicationIn.model_validate({**MOVE, "max_torque_nm": motor_nm}).to_core(MOTORS)
-    for c in _compact(client, {**MOVE, "max_torque_nm": motor_nm}):
-        record = evaluate(app, catalog.index.row(catalog.index.positions[c["id"]]))
-        assert c["torque"]["peak_motor_nm"] == record.quantities.peak_torque_nm
-        share = record.quantities.peak_torque_nm * app.torque_safety_factor / motor_nm
-        assert c["motor_use"] == pytest.approx(share, rel=1e-12)
-    assert all(c["motor_use"] is None for c in _compact(client, MOVE))
+    for candidates, rel in _forms(client, {**MOVE, "max_torque_nm": motor_nm}):
+        for c in candidates:
+            record = evaluate(app, catalog.index.row(catalog.index.positions[c["id"]]))
+            peak_nm = record.quantities.peak_torque_nm
+            assert c["torque"]["peak_motor_nm"] == pytest.approx(peak_nm, rel=rel, abs=0.0)
+            share = peak_nm * app.torque_safety_factor / motor_nm
+            assert c["motor_use"] == pytest.approx(share, rel=max(rel, 1e-12))
+    # no motor: null in the full form, left out of the compact one
+    assert all("motor_use" not in c for c in _compact(client, MOVE))
     exported = client.get("/export.csv", params=MOTOR_PAGE).text
     rows = list(csv.DictReader(io.StringIO(exported)))
     any_lead = {k: v for k, v in MOVE.items() if k != "lead_mm"}
-    listed = {c["id"]: c for c in _compact(client, {**any_lead, "max_torque_nm": 56.6 * OZ_IN})}
+    full = {**any_lead, "max_torque_nm": 56.6 * OZ_IN, "detail": "full"}
+    listed = {c["id"]: c for c in _compact(client, full)}
     passed = [r for r in rows if r["status"] == "passed"]
     assert [r["id"] for r in passed] == list(listed)
     for r in passed:

@@ -19,7 +19,8 @@ def _table(text: str) -> list[dict[str, str]]:
 
 def test_each_candidate_row_carries_every_checks_utilization(client: TestClient) -> None:
     rows = _table(client.get("/export.csv", params=AXIS).text)
-    api = client.get("/api/v1/select", params=API_AXIS).json()
+    # the full form: every number at full precision (the compact one has 6 figures)
+    api = client.get("/api/v1/select", params={**API_AXIS, "detail": "full"}).json()
     header = list(rows[0])
     for check in REGISTRY:
         assert f"utilization.{check.name} [{UTILIZATION_UNIT}]" in header
