@@ -254,12 +254,13 @@ NAMES = tuple(f.name for f in fields(Quantities))
 
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
-    """Every number of ``app`` for every candidate of ``t``, as arrays."""
+    """Every number of ``app`` for every candidate of ``t``, as float arrays (each part
+    gives its numbers as float arrays of the table's length: a flag as 0 or 1, an index
+    as a float)."""
     rpm = geometry.screw_speed_rpm(motion.reached_speed(app), t.lead_m)
     # no (or vanishing) thrust: an unbounded PV speed, NaN after ``table.finite``
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        values = _values(app, t, rpm)
-    return Quantities(**{k: np.asarray(v, dtype=np.float64) for k, v in values.items()})
+        return Quantities(**_values(app, t, rpm))
 
 
 def _values(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
