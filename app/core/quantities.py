@@ -78,7 +78,10 @@ def compressive_axial_load(app: Application, forces: Sequence[float] = ()) -> fl
     return max(0.0, *(c * f for f in forces or motion.nut_forces(app)))
 
 
-@dataclass(frozen=True, slots=True)
+# Not frozen: a frozen dataclass sets each of its hundred fields through
+# object.__setattr__, which cost tens of microseconds per select (built twice: the
+# operating point and the head of a joint screening). Nothing assigns to one.
+@dataclass(slots=True)
 class Quantities(Generic[V]):
     """One axis's numbers, SI; ``V`` is an array (one element per candidate) or a float."""
 

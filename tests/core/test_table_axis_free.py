@@ -118,3 +118,12 @@ def test_the_column_and_whirl_formulas_give_the_same_numbers_from_the_columns(
     assert _same(
         buckling.root_stress(1234.5, d_r, t.root_area_m2), buckling.root_stress(1234.5, d_r)
     )
+
+
+def test_the_seed_pv_from_the_contact_area_column_is_the_formulas(table: CandidateTable) -> None:
+    t = table
+    rpm = np.linspace(10.0, 3000.0, len(t))
+    whole = pv.pv_value(250.0, rpm, t.helix_travel_m, t.thread_depth_m)
+    assert _same(
+        pv.pv_value(250.0, rpm, t.helix_travel_m, t.thread_depth_m, t.contact_area_m2), whole
+    )
