@@ -49,21 +49,33 @@ def column_limits(
     parabola when short, and the stress at the root under the peak thrust and the torque
     the screw carries with it (von Mises)."""
     n_c = critical_speed.critical_speed_rpm(
-        t.root_diameter_m, app.length_m, t.youngs_modulus_pa, t.density_kg_m3, app.end_fixity
+        t.root_diameter_m,
+        app.length_m,
+        t.youngs_modulus_pa,
+        t.density_kg_m3,
+        app.end_fixity,
+        (t.wave_speed_m_s, t.root_gyration_m),
     )
     column_m = column_length(app)
+    s = buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity)
     f_cr = buckling.column_critical_load(
-        t.youngs_modulus_pa, t.root_diameter_m, column_m, app.end_fixity, t.yield_strength_pa
+        t.youngs_modulus_pa,
+        t.root_diameter_m,
+        column_m,
+        app.end_fixity,
+        t.yield_strength_pa,
+        section=(t.root_area_m2, t.root_second_moment_m4, t.transition_slenderness),
+        slenderness_ratio=s,
     )
     root_nm = root_torque(t, peak_n, torques)
-    axial = buckling.root_stress(peak_n, t.root_diameter_m)
-    shear = buckling.root_shear_stress(root_nm, t.root_diameter_m)
+    axial = buckling.root_stress(peak_n, t.root_diameter_m, t.root_area_m2)
+    shear = buckling.root_shear_stress(root_nm, t.root_diameter_m, t.root_pi_d_cubed_m3)
     return {
         "critical_rpm": n_c,
         "allowed_rpm": critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
         "critical_load_n": f_cr,
         "allowed_load_n": buckling.allowed_buckling_load(f_cr, app.buckling_safety_factor),
-        "slenderness": buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity),
+        "slenderness": s,
         "column_length_m": np.full(len(t), column_m),
         "transition_slenderness": t.transition_slenderness,
         # buckling.root_von_mises_stress of the two stresses, each worked out once

@@ -48,7 +48,8 @@ def torques(
     magnitude = np.abs(np.array([m[3] for m in moving]))
     largest = magnitude.max(axis=0)
     peak = np.maximum(largest, t_start)
-    segment = np.where(largest > t_start, np.argmax(magnitude, axis=0), -1)
+    # the segment's index as a float, as every number of ``Quantities`` is
+    segment = np.where(largest > t_start, np.argmax(magnitude, axis=0), -1.0)
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
@@ -116,7 +117,7 @@ def motor_point(
         "motor_peak_nm": peak,
         "motor_rms_nm": rms,
         "motor_rms_needed_nm": rms * app.torque_safety_factor,
-        "motor_worst_segment": index,
+        "motor_worst_segment": np.asarray(index, dtype=np.float64),
         "motor_worst_nm": worst_nm,
         "motor_worst_needed_nm": worst_nm * app.torque_safety_factor,
         "motor_worst_rpm": worst_rpm,

@@ -42,7 +42,7 @@ def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, An
         "holding_distrusted_nm": distrusted,
         "brake_nm": brake,
         "brake_needed_nm": brake * factor,
-        "locks_with_margin": locks,
+        "locks_with_margin": locks.astype(np.float64),
         "max_self_locking_lead_with_margin_m": max_lock,
     }
 

@@ -45,7 +45,7 @@ def seed_pv(
     at the top speed still carrying m a."""
     area = t.contact_area_m2
     return {
-        "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m),
+        "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m, area),
         "pressure_pa": np.broadcast_to(pv.contact_pressure(force_n, area), rpm.shape),
         "surface_speed_m_s": pv.surface_speed(rpm, t.helix_travel_m),
         "contact_area_m2": area,

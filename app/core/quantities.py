@@ -78,7 +78,10 @@ def compressive_axial_load(app: Application, forces: Sequence[float] = ()) -> fl
     return max(0.0, *(c * f for f in forces or motion.nut_forces(app)))
 
 
-@dataclass(frozen=True, slots=True)
+# Not frozen: a frozen dataclass sets each of its hundred fields through
+# object.__setattr__, which cost tens of microseconds per select (built twice: the
+# operating point and the head of a joint screening). Nothing assigns to one.
+@dataclass(slots=True)
 class Quantities(Generic[V]):
     """One axis's numbers, SI; ``V`` is an array (one element per candidate) or a float."""
 
@@ -254,12 +257,13 @@ NAMES = tuple(f.name for f in fields(Quantities))
 
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
-    """Every number of ``app`` for every candidate of ``t``, as arrays."""
+    """Every number of ``app`` for every candidate of ``t``, as float arrays (each part
+    gives its numbers as float arrays of the table's length: a flag as 0 or 1, an index
+    as a float)."""
     rpm = geometry.screw_speed_rpm(motion.reached_speed(app), t.lead_m)
     # no (or vanishing) thrust: an unbounded PV speed, NaN after ``table.finite``
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        values = _values(app, t, rpm)
-    return Quantities(**{k: np.asarray(v, dtype=np.float64) for k, v in values.items()})
+        return Quantities(**_values(app, t, rpm))
 
 
 def _values(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:

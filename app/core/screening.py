@@ -7,6 +7,8 @@ screw is screened as a table of one. So a check is computed by one piece of code
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from itertools import repeat
+from operator import attrgetter, getitem
 from typing import Any
 
 import numpy as np
@@ -17,6 +19,9 @@ from app.core.checks.base import Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import NAMES, Quantities, operating_point
 from app.core.table import Array, CandidateTable, Mask
+
+#: Every array of a ``Quantities``, in declaration order, as one tuple.
+_ALL_QUANTITIES = attrgetter(*NAMES)
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,7 +57,7 @@ class Screening:
         return Screening(
             index,
             table,
-            Quantities(*(getattr(self.quantities, name)[cut] for name in NAMES)),
+            Quantities(*map(getitem, _ALL_QUANTITIES(self.quantities), repeat(cut))),
             {name: m.head(n) for name, m in self.measures.items()},
             {name: None if u is None else u[cut] for name, u in self.utilization.items()},
             {name: mask[cut] for name, mask in self.failed.items()},

@@ -15,7 +15,17 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.formulas import bearing, buckling, efficiency, geometry, heat, limits, profile, pv
+from app.core.formulas import (
+    bearing,
+    buckling,
+    critical_speed,
+    efficiency,
+    geometry,
+    heat,
+    limits,
+    profile,
+    pv,
+)
 from app.core.model import ScrewSpec
 
 Array = NDArray[np.float64]
@@ -168,11 +178,15 @@ def _axis_free(c: dict[str, Array]) -> dict[str, Any]:
     friction at which the thread self-locks (``efficiency``), the seed's contact area of
     three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
     area at the catalog's nut length (``bearing``), the screw's fin conductance in still
-    air and the nut's outside diameter (``heat``), and the lower of the running and the
-    static efficiency (the root section's torque)."""
+    air and the nut's outside diameter (``heat``), the lower of the running and the
+    static efficiency (the root section's torque), and the root section's and the
+    shaft's own terms of the column, stress and whirl formulas (``buckling``,
+    ``critical_speed``)."""
     tan_l = np.tan(c["lead_angle_rad"])
+    d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
     with np.errstate(invalid="ignore", divide="ignore"):
-        transition = buckling.transition_slenderness(c["youngs_modulus_pa"], c["yield_strength_pa"])
+        transition = buckling.transition_slenderness(e, c["yield_strength_pa"])
+        wave, gyration = critical_speed.shaft_terms(d_r, e, c["density_kg_m3"])
     flanks = bearing.engaged_flank_area(
         c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
     )
@@ -187,6 +201,11 @@ def _axis_free(c: dict[str, Array]) -> dict[str, Any]:
         ),
         "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * c["outer_diameter_m"],
         "root_efficiency": np.minimum(c["efficiency"], c["efficiency_static"]),
+        "root_area_m2": buckling.root_area(d_r),
+        "root_second_moment_m4": buckling.second_moment_round(d_r),
+        "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),
+        "wave_speed_m_s": wave,
+        "root_gyration_m": gyration,
     }
 
 
@@ -267,6 +286,14 @@ class CandidateTable:
     fin_conductance_w_k: Array
     nut_outer_diameter_m: Array
     root_efficiency: Array
+    #: The root section's area [m^2], second moment [m^4] and pi d_r^3 [m^3]
+    #: (``buckling``), sqrt(E / rho) [m/s] and the radius of gyration d_r / 4 [m]
+    #: (``critical_speed.shaft_terms``).
+    root_area_m2: Array
+    root_second_moment_m4: Array
+    root_pi_d_cubed_m3: Array
+    wave_speed_m_s: Array
+    root_gyration_m: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together

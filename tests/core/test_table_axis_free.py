@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from app.catalog import Catalog
-from app.core.formulas import bearing, buckling, efficiency, heat, pv
+from app.core.formulas import bearing, buckling, critical_speed, efficiency, heat, pv
 from app.core.model import Application
 from app.core.quantities import operating_point
 from app.core.table import CandidateTable
@@ -42,6 +42,11 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         ),
         "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
         "root_efficiency": np.minimum(t.efficiency, t.efficiency_static),
+        "root_area_m2": buckling.root_area(t.root_diameter_m),
+        "root_second_moment_m4": buckling.second_moment_round(t.root_diameter_m),
+        "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(t.root_diameter_m),
+        "wave_speed_m_s": (t.youngs_modulus_pa / t.density_kg_m3) ** 0.5,
+        "root_gyration_m": t.root_diameter_m / 4.0,
     }
     assert {
         name: _same(getattr(t, name), value) for name, value in expected.items()
@@ -73,3 +78,52 @@ def test_von_mises_of_the_two_root_stresses_is_the_combined_formula() -> None:
     combined = buckling.root_von_mises_stress(6.4e3, 26.18, 0.028)
     assert buckling.von_mises_stress(sigma, tau) == combined
     assert combined / 1e6 == pytest.approx(14.79, abs=0.005)
+
+
+@pytest.mark.parametrize("fixity", ["fixed-free", "simple-simple", "fixed-simple", "fixed-fixed"])
+@pytest.mark.parametrize("length_m", [0.05, 0.3, 1.5])
+def test_the_column_and_whirl_formulas_give_the_same_numbers_from_the_columns(
+    table: CandidateTable, fixity: str, length_m: float
+) -> None:
+    """Each formula from the table's worked-out terms, to the bit, at lengths where
+    Johnson (short) and Euler (slender) govern."""
+    t = table
+    d_r, e, s_y = t.root_diameter_m, t.youngs_modulus_pa, t.yield_strength_pa
+    with np.errstate(invalid="ignore", divide="ignore"):
+        whole = buckling.column_critical_load(e, d_r, length_m, fixity, s_y)
+    section = (t.root_area_m2, t.root_second_moment_m4, t.transition_slenderness)
+    s = buckling.slenderness(d_r, length_m, fixity)
+    pieces = buckling.column_critical_load(
+        e, d_r, length_m, fixity, s_y, section=section, slenderness_ratio=s
+    )
+    assert _same(pieces, whole)
+    # the shortest column is Johnson's for some screws, the longest Euler's for some
+    short = s < t.transition_slenderness
+    if length_m == 0.05:
+        assert bool(np.any(short))
+    if length_m == 1.5:
+        assert bool(np.any(~short))
+    rho = t.density_kg_m3
+    assert _same(
+        critical_speed.critical_speed_rpm(
+            d_r, length_m, e, rho, fixity, (t.wave_speed_m_s, t.root_gyration_m)
+        ),
+        critical_speed.critical_speed_rpm(d_r, length_m, e, rho, fixity),
+    )
+    torque_nm = np.linspace(0.01, 5.0, len(t))
+    assert _same(
+        buckling.root_shear_stress(torque_nm, d_r, t.root_pi_d_cubed_m3),
+        buckling.root_shear_stress(torque_nm, d_r),
+    )
+    assert _same(
+        buckling.root_stress(1234.5, d_r, t.root_area_m2), buckling.root_stress(1234.5, d_r)
+    )
+
+
+def test_the_seed_pv_from_the_contact_area_column_is_the_formulas(table: CandidateTable) -> None:
+    t = table
+    rpm = np.linspace(10.0, 3000.0, len(t))
+    whole = pv.pv_value(250.0, rpm, t.helix_travel_m, t.thread_depth_m)
+    assert _same(
+        pv.pv_value(250.0, rpm, t.helix_travel_m, t.thread_depth_m, t.contact_area_m2), whole
+    )

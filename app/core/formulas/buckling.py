@@ -128,11 +128,18 @@ def column_critical_load(
     length_m: float,
     end_fixity: str,
     yield_strength_pa: float,
+    *,
+    section: tuple[float, float, float] | None = None,
+    slenderness_ratio: float | None = None,
 ) -> float:
     """Critical load of the screw as a column [N]: Euler when slender, Johnson when short.
 
     F_cr = pi^2 E A / s^2 for s >= s_1, else A (S_y - (S_y s / 2 pi)^2 / E); Euler alone
     when the yield strength is unknown (NaN). Works on floats or NumPy arrays.
+    ``section``: the root's area A [m^2], second moment I [m^4] and the transition
+    slenderness s_1, and ``slenderness_ratio``: s, when already worked out with these
+    same functions (``root_area``, ``second_moment_round``, ``transition_slenderness``,
+    ``slenderness``: the candidate table's columns), the same numbers.
     Source: Shigley [2], sec. 4-11 to 4-13.
 
     >>> round(column_critical_load(207e9, 0.02, 2.0, "simple-simple", 310e6))
@@ -140,42 +147,63 @@ def column_critical_load(
     >>> round(column_critical_load(207e9, 0.025, 0.1, "fixed-simple", 310e6))
     151432
     """
-    area = root_area(root_diameter_m)
-    s = slenderness(root_diameter_m, length_m, end_fixity)
-    euler = euler_critical_load(
-        youngs_modulus_pa, second_moment_round(root_diameter_m), length_m, end_fixity
+    if section is None:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            transition = transition_slenderness(youngs_modulus_pa, yield_strength_pa)
+        section = (root_area(root_diameter_m), second_moment_round(root_diameter_m), transition)
+    area, second_moment_m4, transition = section
+    s = (
+        slenderness(root_diameter_m, length_m, end_fixity)
+        if slenderness_ratio is None
+        else slenderness_ratio
     )
+    euler = euler_critical_load(youngs_modulus_pa, second_moment_m4, length_m, end_fixity)
     johnson = johnson_critical_load(area, yield_strength_pa, youngs_modulus_pa, s)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        short = s < transition_slenderness(youngs_modulus_pa, yield_strength_pa)
-    return cast(float, np.where(short, johnson, euler)[()])
+    return cast(float, np.where(s < transition, johnson, euler)[()])
 
 
 @formula("sigma = F_peak / (pi d_r^2 / 4)", "axial stress")
-def root_stress(load_n: float, root_diameter_m: float) -> float:
-    """Axial stress at the root section, sigma = F / (pi d_r^2 / 4) [Pa].
+def root_stress(load_n: float, root_diameter_m: float, area_m2: float | None = None) -> float:
+    """Axial stress at the root section, sigma = F / (pi d_r^2 / 4) [Pa]; ``area_m2``: the
+    root area when already worked out (``root_area``: the candidate table's column), the
+    same number.
 
     The example of a 25 mm root carrying 200 kN: 407 MPa.
 
     >>> round(root_stress(200e3, 0.025) / 1e6, 1)
     407.4
     """
-    return load_n / root_area(root_diameter_m)
+    return load_n / (root_area(root_diameter_m) if area_m2 is None else area_m2)
 
 
 @formula("tau = 16 T / (pi d_r^3)", "Shigley 9th ed., eq. (8-7), torsion of the screw body")
-def root_shear_stress(torque_nm: float, root_diameter_m: float) -> float:
+def root_shear_stress(
+    torque_nm: float, root_diameter_m: float, pi_d_cubed_m3: float | None = None
+) -> float:
     """Torsional shear stress at the surface of the root section, tau = 16 T / (pi d_r^3)
     [Pa].
 
-    torque_nm: the torque the section carries, T [N m]; root_diameter_m: d_r [m]. A solid
-    round section in elastic torsion. Source: Shigley [2], eq. (8-7); its
-    Example 8-1 (d): T_R = 26.18 N m on d_r = 28 mm gives 6.07 MPa.
+    torque_nm: the torque the section carries, T [N m]; root_diameter_m: d_r [m];
+    pi_d_cubed_m3: pi d_r^3 [m^3] when already worked out (``root_pi_d_cubed``: the
+    candidate table's column), the same number. A solid round section in elastic
+    torsion. Source: Shigley [2], eq. (8-7); its Example 8-1 (d): T_R = 26.18 N m on
+    d_r = 28 mm gives 6.07 MPa.
 
     >>> round(root_shear_stress(26.18, 0.028) / 1e6, 2)
     6.07
     """
-    return 16.0 * torque_nm / (math.pi * root_diameter_m**3)
+    section = root_pi_d_cubed(root_diameter_m) if pi_d_cubed_m3 is None else pi_d_cubed_m3
+    return 16.0 * torque_nm / section
+
+
+def root_pi_d_cubed(root_diameter_m: float) -> float:
+    """pi d_r^3 [m^3], the root section's term of the torsional shear stress
+    (``root_shear_stress``: 16 over it is one over the polar section modulus).
+
+    >>> round(root_pi_d_cubed(0.028) * 1e6, 4)
+    68.9642
+    """
+    return math.pi * root_diameter_m**3
 
 
 @formula(

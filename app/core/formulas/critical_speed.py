@@ -29,13 +29,16 @@ def critical_speed_rpm(
     youngs_modulus_pa: float,
     density_kg_m3: float,
     end_fixity: str,
+    shaft: tuple[float, float] | None = None,
 ) -> float:
     """First whirling speed n_c [rpm] of a round shaft.
 
     n_c = 60 / (2 pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4
 
     root_diameter_m: d_r [m]; length_m: unsupported length L [m]; youngs_modulus_pa:
-    E [Pa]; density_kg_m3: rho [kg/m^3]; end_fixity: a key of END_FIXITY_BETA.
+    E [Pa]; density_kg_m3: rho [kg/m^3]; end_fixity: a key of END_FIXITY_BETA; shaft:
+    sqrt(E / rho) [m/s] and d_r / 4 [m] when already worked out (``shaft_terms``: the
+    candidate table's columns), the same numbers.
     Source: Blevins [5] table 8-1; Thomson [3] gives 476 rpm for a 1 in steel root at
     100 in, simple-simple.
 
@@ -43,12 +46,23 @@ def critical_speed_rpm(
     475.2
     """
     beta = END_FIXITY_BETA[end_fixity]
-    omega: float = (
-        (beta / length_m) ** 2
-        * (youngs_modulus_pa / density_kg_m3) ** 0.5
-        * (root_diameter_m / 4.0)
+    wave_m_s, gyration_m = (
+        shaft_terms(root_diameter_m, youngs_modulus_pa, density_kg_m3) if shaft is None else shaft
     )
+    omega: float = (beta / length_m) ** 2 * wave_m_s * gyration_m
     return omega * 60.0 / (2.0 * math.pi)
+
+
+def shaft_terms(
+    root_diameter_m: float, youngs_modulus_pa: float, density_kg_m3: float
+) -> tuple[float, float]:
+    """The shaft's own terms of ``critical_speed_rpm``: sqrt(E / rho) [m/s] and the root
+    section's radius of gyration d_r / 4 [m].
+
+    >>> [round(x, 5) for x in shaft_terms(0.0254, 206e9, 7850.0)]
+    [5122.69833, 0.00635]
+    """
+    return (youngs_modulus_pa / density_kg_m3) ** 0.5, root_diameter_m / 4.0
 
 
 @formula("n = SF x n_c", "Thomson (80 % of critical)")

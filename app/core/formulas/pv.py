@@ -43,17 +43,27 @@ def surface_speed(rpm: float, helix_travel_m: float) -> float:
 
 
 @formula("PV = F / (3 H.T. h) x n H.T.", SEED + " (PV Calculation, 3 threads in contact)")
-def pv_value(load_n: float, rpm: float, helix_travel_m: float, thread_depth_m: float) -> float:
+def pv_value(
+    load_n: float,
+    rpm: float,
+    helix_travel_m: float,
+    thread_depth_m: float,
+    contact_area_m2: float | None = None,
+) -> float:
     """PV of the nut [Pa m/s] by the seed's three-thread method.
 
-    PV = (F / (3 H.T. h)) x (n H.T.) ; F [N], n [rpm], H.T. [m], h [m].
+    PV = (F / (3 H.T. h)) x (n H.T.) ; F [N], n [rpm], H.T. [m], h [m]; contact_area_m2:
+    3 H.T. h [m^2] when already worked out (``contact_area``: the candidate table's
+    column), the same number.
     Source: seed [1], PV calculation. bnb-industries bushing example (5/8 in, 35 lb,
     120 rpm, PV 1066 psi ft/min) checks the same P x V arithmetic.
 
     >>> round(pv_value(100.0, 600.0, 0.02, 0.001), 1)
     333333.3
     """
-    area = contact_area(helix_travel_m, thread_depth_m)
+    area = (
+        contact_area(helix_travel_m, thread_depth_m) if contact_area_m2 is None else contact_area_m2
+    )
     return contact_pressure(load_n, area) * surface_speed(rpm, helix_travel_m)
 
 

@@ -1,0 +1,84 @@
+"""The operating point's numbers as the screening reads them: every one a float array of
+the table's length, whatever the application switches on, and the screening of the first
+rows of a table (``Screening.head``) the same numbers as the whole table's first rows."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from app.catalog import Catalog
+from app.core.model import Application, Move
+from app.core.quantities import NAMES, operating_point
+from app.core.screening import screen_table
+
+PLAIN = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5)
+APPS = {
+    "plain": PLAIN,
+    "stroke": dataclasses.replace(
+        PLAIN, moving_mass_kg=3.0, accel_m_s2=2.0, stroke_m=0.3, cycles_per_day=500.0
+    ),
+    "vertical-hold": dataclasses.replace(
+        PLAIN,
+        orientation="vertical",
+        moving_mass_kg=12.0,
+        accel_m_s2=2.0,
+        stroke_m=0.4,
+        hold_power_off=True,
+        brake_torque_nm=0.3,
+    ),
+    "stepper": dataclasses.replace(
+        PLAIN,
+        moving_mass_kg=3.0,
+        accel_m_s2=3.0,
+        stroke_m=0.3,
+        motor_curve=((0.0, 0.5), (600.0, 0.3), (1500.0, 0.1)),
+        step_angle_deg=1.8,
+        microsteps=16,
+        motor_inertia_kg_m2=5.4e-6,
+    ),
+    "moves-support": dataclasses.replace(
+        PLAIN,
+        moves=(
+            Move(0.3, 0.25, 2.5, 2.5, 0.2, 2.5, 10.0, "opposes"),
+            Move(-0.3, 0.25, 2.5, 2.5, 0.2, 0.5, 10.0, "opposes"),
+        ),
+        support_static_n=9000.0,
+        support_dynamic_n=6000.0,
+        bearing_to_nut_m=0.4,
+        nut_length_m=0.02,
+    ),
+}
+
+
+@pytest.mark.parametrize("name", list(APPS))
+def test_every_number_is_a_float_array_of_the_tables_length(catalog: Catalog, name: str) -> None:
+    t = catalog.index.table
+    q = operating_point(APPS[name], t)
+    odd = {
+        field: (type(v).__name__, getattr(v, "dtype", None), getattr(v, "shape", None))
+        for field in NAMES
+        if not (
+            isinstance(v := getattr(q, field), np.ndarray)
+            and v.dtype == np.float64
+            and v.shape == (len(t),)
+        )
+    }
+    assert odd == {}
+
+
+@pytest.mark.parametrize("name", ["plain", "vertical-hold"])
+def test_the_head_of_a_screening_is_the_whole_screenings_first_rows(
+    catalog: Catalog, name: str
+) -> None:
+    app, t = APPS[name], catalog.index.table
+    whole = screen_table(app, t)
+    n = 40
+    index = np.arange(n, dtype=np.intp)
+    head = whole.head(n, index, t.take(index))
+    for field in NAMES:
+        part, full = getattr(head.quantities, field), getattr(whole.quantities, field)
+        assert np.array_equal(part, full[:n], equal_nan=True), field
+    assert np.array_equal(head.passed, whole.passed[:n])
+    assert np.array_equal(head.max_utilization, whole.max_utilization[:n], equal_nan=True)
+    assert head.failed.keys() == whole.failed.keys()
