@@ -16,7 +16,7 @@ request (after the form's trigger delay), the response arriving, a MutationObser
 the results region change, the next frame after that (the table painted), htmx settling,
 the charts' request (/charts, sent by app.js as the answer arrives; its resource timing)
 and its answer, and app.js's
-``charts:drawn`` (the last chart in view drawn, one a task) with the next frame after it.
+``charts:drawn`` (the last chart in view drawn) with the next frame after it.
 Targets (issue 34): keystroke to the updated table at most 200 ms median, the trigger delay
 included; keystroke to every chart in view drawn at most 400 ms median."""
 

@@ -1,6 +1,8 @@
 """The one path from validated inputs to a result, shared by the API and the pages."""
 
 from collections.abc import Container, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 from urllib.parse import quote, urlencode
 
@@ -78,6 +80,23 @@ def construct_select_out(
     )
 
 
+#: How many page selections are kept: a results page's charts and rejected list (/charts,
+#: /rejected) ask for the selection the page has just made, within a moment of it.
+RECENT_PAGE_SELECTIONS = 8
+
+
+@dataclass(frozen=True)
+class _PageQuery:
+    """A page selection's inputs, compared and hashed by their JSON, the display units
+    and the catalog's identity and version (the catalog itself is kept, so its identity
+    stays its own while the entry lives)."""
+
+    key: tuple[str, tuple[tuple[str, str], ...], int, str]
+    inputs: ApplicationIn = field(compare=False)
+    catalog: Catalog = field(compare=False)
+    units: Mapping[str, str] = field(compare=False)
+
+
 def run_page_selection(
     inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
 ) -> tuple[PageSelectionOut, list[CandidateOut]]:
@@ -85,7 +104,16 @@ def run_page_selection(
     view; their checks' sentences load with each row's detail) and the rejected ones in
     the ``rejected`` view (the list; each one's detail loads when opened), sentences in
     ``units``. The rejected are in full too only when nothing passes: then the charts and
-    the advice are about them."""
+    the advice are about them. The last few are kept (``RECENT_PAGE_SELECTIONS``): the
+    page's charts, asked for as its table arrives, are drawn from the same selection
+    without making it again. Callers read the result and never change it."""
+    key = (inputs.model_dump_json(), tuple(sorted(units.items())), id(catalog), catalog.version)
+    return _page_selection(_PageQuery(key, inputs, catalog, units))
+
+
+@lru_cache(maxsize=RECENT_PAGE_SELECTIONS)
+def _page_selection(query: _PageQuery) -> tuple[PageSelectionOut, list[CandidateOut]]:
+    inputs, catalog, units = query.inputs, query.catalog, query.units
     selection = select(
         inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
     )

@@ -68,8 +68,18 @@ def minor_log_ticks(values: Iterable[float], labelled: Sequence[float]) -> list[
 
 
 def axis(title: str, log: bool = False, values: Iterable[float] = ()) -> dict[str, Any]:
-    """An axis with its title; a log axis labels each decade and the 2 and 5 between."""
-    spec: dict[str, Any] = {"title": {"text": title}, "automargin": True, "zeroline": False}
+    """An axis with its title; a log axis labels each decade and the 2 and 5 between.
+
+    The margins grow to hold the tick labels (``automargin``), so no label reaches past
+    the chart's edge: Plotly is told so (``ticklabeloverflow``), rather than measuring
+    every label on every draw to hide those that would (its default for numeric axes,
+    measured at a fifth to a third of the time a chart takes to draw in Chromium)."""
+    spec: dict[str, Any] = {
+        "title": {"text": title},
+        "automargin": True,
+        "ticklabeloverflow": "allow",
+        "zeroline": False,
+    }
     if log:
         values = list(values)
         tickvals, ticktext = log_ticks(values)

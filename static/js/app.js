@@ -1,14 +1,14 @@
 /*
  * The page's one script. Fetches a result's charts (/charts) as soon as its answer arrives
- * and draws each from its <script type="application/json"> figure, one a task once the
- * table is painted: those in view at once, the others when scrolled to or once no field
- * has been edited for a moment. Loads Plotly only when the first chart arrives so the
- * empty form stays light, shows each field's error once the field has been left or the
- * form submitted and keeps aria-invalid in step with it, copies share links, lets a click
- * on a result row open its detail, loads a detail's body (and the rejected list) on first
- * opening and marks it busy meanwhile, writes each cell's phone label from its column's
- * heading, keeps the last results (dimmed) while a field is being retyped, and sizes the
- * charts and dates the printed report. Nothing here is needed for the form to work.
+ * and draws each from its <script type="application/json"> figure once the table is
+ * painted: those in view at once (giving way to a keystroke), the others when scrolled
+ * to or once no field has been edited for a moment. Loads Plotly only when the first
+ * chart arrives so the empty form stays light, shows each field's error once the field
+ * has been left or the form submitted and keeps aria-invalid in step with it, copies
+ * share links, lets a click on a result row open its detail, loads a detail's body (and
+ * the rejected list) on first opening and marks it busy meanwhile, writes each cell's
+ * phone label from its column's heading, keeps the last results (dimmed) while a field
+ * is being retyped, and sizes the charts and dates the printed report. Nothing here is needed for the form to work.
  */
 (function () {
   "use strict";
@@ -35,10 +35,10 @@
     document.head.appendChild(script);
   }
 
-  // charts wait for the table to be painted, then draw one a task (a keystroke is not held
-  // up behind all of them). Those in view draw at once, and "charts:drawn" says how many
-  // (an answer is finished when they are); the others draw as they are scrolled into view,
-  // or once no field has been edited for QUIET_MS
+  // charts wait for the table to be painted, then draw (a keystroke waiting is not held
+  // up behind all of them: see inputWaiting). Those in view draw at once, and
+  // "charts:drawn" says how many (an answer is finished when they are); the others draw
+  // as they are scrolled into view, or once no field has been edited for QUIET_MS
   var QUIET_MS = 500;
   var chartQueue = [];
   var waiting = [];
@@ -102,13 +102,23 @@
     });
   }
 
+  // the charts in view draw back to back in one task, so one frame paints them all (a
+  // frame between each cost a fifth to a third more work), but give way to a keystroke
+  // waiting to be handled; where the browser cannot tell (no isInputPending), one a task
+  function inputWaiting() {
+    var scheduling = navigator.scheduling;
+    return !scheduling || !scheduling.isInputPending || scheduling.isInputPending();
+  }
+
   function drawNextChart() {
-    chartQueue = chartQueue.filter(connected);
-    var script = chartQueue.shift();
-    if (script) {
-      plot(script);
-      drawnInView += 1;
-    }
+    do {
+      chartQueue = chartQueue.filter(connected);
+      var script = chartQueue.shift();
+      if (script) {
+        plot(script);
+        drawnInView += 1;
+      }
+    } while (chartQueue.length && !inputWaiting());
     if (chartQueue.length) {
       setTimeout(drawNextChart);
       return;

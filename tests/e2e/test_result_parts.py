@@ -80,3 +80,46 @@ def test_an_htmx_answer_labels_its_cells_as_a_full_page_does(
     page.wait_for_selector("tbody.candidate")
     assert page.evaluate(CELL_LABELS) == full
     assert console_errors == []
+
+
+#: app.js's QUIET_MS and a little: the charts out of view are drawn by then
+QUIET_MS = 800
+#: each chart drawn (Plotly.react or newPlot) with the number of frames run before it
+FRAMES = """() => {
+  window.__frames = 0;
+  window.__draws = [];
+  const tick = () => { window.__frames += 1; requestAnimationFrame(tick); };
+  requestAnimationFrame(tick);
+  for (const name of ['react', 'newPlot']) {
+    const draw = Plotly[name];
+    Plotly[name] = function (target) {
+      window.__draws.push([target.id, window.__frames]);
+      return draw.apply(this, arguments);
+    };
+  }
+}"""
+
+
+def test_the_charts_in_view_are_painted_in_one_frame(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    """The charts in view draw back to back (no frame painted between them, which would
+    cost the page a layout and a paint each), giving way only to a keystroke waiting."""
+    page.goto(f"{live_server}/?{AXIS}")
+    page.wait_for_selector("#chart-torque .main-svg")
+    page.evaluate("() => document.querySelector('section.charts').scrollIntoView()")
+    page.wait_for_function(
+        "() => [...document.querySelectorAll('.chart')].every(c => c.querySelector('svg'))"
+    )
+    page.wait_for_timeout(QUIET_MS)
+    page.evaluate(DRAWN)
+    page.evaluate(FRAMES)
+    # a new speed changes every chart: the critical speed's operating points too
+    page.fill("#f-speed", "80")
+    page.evaluate("() => document.querySelector('section.charts').scrollIntoView()")
+    page.wait_for_function("() => window.__drawn.length > 0")
+    drawn = page.evaluate("() => window.__drawn[0].drawn")
+    draws = page.evaluate("() => window.__draws")[:drawn]
+    assert drawn >= 2 and len(draws) == drawn, (drawn, draws)
+    assert len({frames for _, frames in draws}) == 1, draws
+    assert console_errors == []

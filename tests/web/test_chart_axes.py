@@ -122,3 +122,15 @@ def test_the_pv_chart_follows_the_unit_choice(catalog: Catalog) -> None:
     for m, i in zip(metric["data"], imperial["data"], strict=True):
         assert i["x"] == pytest.approx([x / 25.4 for x in m["x"]], rel=1e-4)
         assert i["y"] == pytest.approx([y * 1e6 / PSI for y in m["y"]], rel=1e-4)
+
+
+def test_every_axis_grows_its_margin_to_hold_its_labels(catalog: Catalog) -> None:
+    """Plotly is told that no tick label passes the chart's edge (it skips measuring each
+    one on every draw to hide those that would), which holds only because each axis's
+    margin grows to hold its labels: every axis of every chart has both."""
+    drawn = figures(catalog, DUTY, METRIC)
+    assert {"critical_speed", "torque", "move", "cycle_torque"} <= set(drawn)
+    for key, figure in drawn.items():
+        for name, spec in axes(figure).items():
+            assert spec["automargin"] is True, (key, name)
+            assert spec["ticklabeloverflow"] == "allow", (key, name)

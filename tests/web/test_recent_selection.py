@@ -1,0 +1,62 @@
+"""A results page's charts and rejected list (/charts, /rejected) are drawn from the
+selection the page has just made (``run_page_selection`` keeps the last few), not from a
+second one; other inputs, other units or another catalog make their own."""
+
+from typing import Any
+
+import pytest
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+from app.catalog import Catalog
+from app.contract.units import DEFAULT_UNITS
+from app.report import service
+from app.web.pages import link_inputs
+
+HX = {"HX-Request": "true"}
+
+
+@pytest.fixture
+def selections(monkeypatch: pytest.MonkeyPatch) -> list[Any]:
+    """Every selection made (each call of the core's ``select``) from here on."""
+    made: list[Any] = []
+    select = service.select
+
+    def counted(*args: Any, **kwargs: Any) -> Any:
+        made.append(args[0])
+        return select(*args, **kwargs)
+
+    monkeypatch.setattr(service, "select", counted)
+    service._page_selection.cache_clear()
+    return made
+
+
+def test_charts_and_rejected_reuse_the_pages_selection(
+    client: TestClient, selections: list[Any]
+) -> None:
+    page = client.get("/?load=123&lead=10&speed=50&length=500", headers=HX)
+    assert page.status_code == 200 and len(selections) == 1
+    slot = BeautifulSoup(page.text, "html.parser").select_one("#charts-slot[data-src]")
+    assert slot is not None
+    charts = client.get(str(slot["data-src"]), headers=HX)
+    rejected = client.get(str(slot["data-src"]).replace("/charts", "/rejected"), headers=HX)
+    assert charts.status_code == rejected.status_code == 200
+    assert "data-chart" in charts.text
+    assert len(selections) == 1
+
+
+def test_other_inputs_or_units_select_again(
+    client: TestClient, catalog: Catalog, selections: list[Any]
+) -> None:
+    query = {"load": "124", "lead": "10", "speed": "50", "length": "500"}
+    inputs, units = link_inputs(query, catalog)
+    first, _ = service.run_page_selection(inputs, catalog, units)
+    assert service.run_page_selection(inputs, catalog, units)[0] is first
+    assert len(selections) == 1
+    inches = {**DEFAULT_UNITS, "length_unit": "in"}
+    in_inches, _ = service.run_page_selection(inputs, catalog, inches)
+    assert len(selections) == 2 and in_inches is not first
+    heavier, _ = link_inputs({**query, "load": "125"}, catalog)
+    other, _ = service.run_page_selection(heavier, catalog, units)
+    assert len(selections) == 3
+    assert other.inputs.model_dump()["load_n"] == 125 != first.inputs.model_dump()["load_n"]
