@@ -13,6 +13,7 @@ import math
 import os
 import subprocess
 import sys
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from html.parser import HTMLParser
@@ -213,17 +214,18 @@ def throughput(report: Report, seconds: int) -> None:
             ("fragment, distinct queries", 0.05),
         ):
             r = results[name]
-            ratio = r.requests_per_s / ceiling
+            ratio = r.answered_per_s / ceiling  # 503s of shed requests are not throughput
             report.line(
-                f"{name}: throughput / ceiling",
+                f"{name}: answered throughput / ceiling",
                 f"{ratio * 100:.1f} %",
                 f">= {share * 100:.0f} %",
                 ratio >= share,
             )
             report.line(f"{name}: p99 latency", f"{r.p99_ms:.1f} ms", "< 50 ms", r.p99_ms < 50)
             report.line(f"{name}: errors in the {seconds} s run", f"{r.errors}", "0", r.errors == 0)
+        time.sleep(2.0)  # the work wrk's connections left in progress ends (Retry-After 1 s)
         page_weight(report, port)
-        one = results["select, distinct queries"].requests_per_s
+        one = results["select, distinct queries"].answered_per_s
     two_workers(report, seconds, one)
 
 
@@ -247,7 +249,7 @@ def two_workers(report: Report, seconds: int, one_rps: float) -> None:
         distinct_select(port, 2)  # warm-up: both workers load the catalog and the code
         r = distinct_select(port, seconds)
     _show(report, "select, distinct queries, 2 workers", r)
-    ratio = r.requests_per_s / one_rps if one_rps else 0.0
+    ratio = r.answered_per_s / one_rps if one_rps else 0.0
     report.line(
         "two workers / one worker (distinct select)", f"{ratio:.2f}", ">= 1.8", ratio >= 1.8
     )

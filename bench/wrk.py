@@ -24,6 +24,18 @@ class WrkResult:
     def errors(self) -> int:
         return self.non_2xx_3xx + sum(self.socket_errors.values())
 
+    @property
+    def answered_per_s(self) -> float:
+        """Requests a second answered with 2xx/3xx: a shed request's quick 503 is not
+        throughput.
+
+        >>> WrkResult(1000, 100.0, 1.0, 2.0, 250, {}).answered_per_s
+        75.0
+        """
+        if not self.requests:
+            return 0.0
+        return self.requests_per_s * (self.requests - self.non_2xx_3xx) / self.requests
+
 
 def _ms(text: str) -> float:
     match = re.fullmatch(r"([\d.]+)(us|ms|s|m|h)", text)
