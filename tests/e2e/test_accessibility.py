@@ -87,8 +87,10 @@ def open_detail(page: Any, base: str) -> None:
 
 
 def typed_error(page: Any, base: str) -> None:
-    """A field retyped to nonsense: the 422 answer's inline error, results kept dimmed."""
+    """A field retyped to nonsense: the 422 answer's inline error, results kept dimmed
+    (typed once the results and their charts have arrived, as a reader would)."""
     page.goto(f"{base}/?{AXIS}")
+    settle(page)
     page.fill("#f-load", "abc")
     page.wait_for_function("() => document.querySelector('#e-load').textContent.trim() !== ''")
     page.wait_for_selector("#results.stale")
