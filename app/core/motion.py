@@ -148,14 +148,15 @@ def speed_note(app: Application) -> Phrase | None:
     )
 
 
+def has_duty(app: Application) -> bool:
+    """Whether a stroke and the cycles (or hours) a day turn a travel into years."""
+    return bool(equivalent_stroke(app)) and bool(cycles_per_day(app))
+
+
 def life_unchecked(app: Application) -> bool:
     """Whether the duty turns each nut's life into years but no required life is given,
     so no life check runs (the rated, wear and L10 life checks need one)."""
-    return (
-        app.required_life_years is None
-        and bool(equivalent_stroke(app))
-        and bool(cycles_per_day(app))
-    )
+    return app.required_life_years is None and has_duty(app)
 
 
 def life_note(app: Application) -> Phrase | None:

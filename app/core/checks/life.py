@@ -42,9 +42,7 @@ class Life(Check):
 
     def applies(self, app: Application) -> bool:
         # without a duty there is nothing to turn the rated travel into years
-        cycles = motion.cycles_per_day(app)
-        stroke = motion.equivalent_stroke(app)
-        return bool(app.required_life_years is not None and stroke and cycles)
+        return app.required_life_years is not None and motion.has_duty(app)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         unrated = np.isnan(q.life_years_min)

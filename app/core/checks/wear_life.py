@@ -63,9 +63,7 @@ class WearLife(Check):
     capacity_sources = ("wear_rate", "allowed_wear", "nut_length")
 
     def applies(self, app: Application) -> bool:
-        cycles = motion.cycles_per_day(app)
-        stroke = motion.equivalent_stroke(app)
-        return bool(app.required_life_years is not None and stroke and cycles)
+        return app.required_life_years is not None and motion.has_duty(app)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         required = same(t, app.required_life_years)
