@@ -566,12 +566,28 @@
   // place once both are done
   var chartsAsked = {};
 
+  // a refused or failed ask is forgotten, so the next ask is a new request; its error
+  // carries how long to wait first (the answer's Retry-After, else CHARTS_RETRY_S)
+  var CHARTS_RETRY_S = 1;
+  var CHARTS_RETRY_MOST_S = 30;
+  var CHARTS_TRIES = 5;
+
   function askCharts(url) {
     if (!chartsAsked[url]) {
       chartsAsked = {};
-      chartsAsked[url] = fetch(url, { headers: { "HX-Request": "true" } }).then(function (response) {
-        return response.ok ? response.text() : Promise.reject(new Error(response.statusText));
-      });
+      chartsAsked[url] = fetch(url, { headers: { "HX-Request": "true" } })
+        .then(function (response) {
+          if (response.ok) {
+            return response.text();
+          }
+          var error = new Error(response.statusText);
+          error.retryAfterS = Number(response.headers.get("Retry-After")) || CHARTS_RETRY_S;
+          throw error;
+        })
+        .catch(function (error) {
+          delete chartsAsked[url];
+          throw error;
+        });
     }
     return chartsAsked[url];
   }
@@ -597,8 +613,14 @@
           drawCharts(document);
         }
       },
-      function () {
+      function (error) {
         slot.removeAttribute("data-asked");
+        var tries = Number(slot.dataset.tries || 0) + 1;
+        slot.dataset.tries = String(tries);
+        if (tries < CHARTS_TRIES) {
+          var waitS = Math.min(error.retryAfterS || CHARTS_RETRY_S, CHARTS_RETRY_MOST_S);
+          setTimeout(loadCharts, waitS * 1000);
+        }
       }
     );
   }

@@ -1,0 +1,56 @@
+"""The results' charts are asked again when /charts is refused (503 with Retry-After from
+a busy worker, or a failed request), after the wait the answer names, a few times at
+most; a refused answer is not kept as the answer for that query."""
+
+import itertools
+import time
+from typing import Any
+
+AXIS = "load=100&lead=10&speed=50&length=500"
+
+
+def refuse_first(page: Any, refusals: int, retry_after_s: int) -> list[float]:
+    """Answer the first ``refusals`` /charts requests 503 with ``retry_after_s``; pass the
+    rest to the server. Returns the monotonic time of every /charts request."""
+    asked: list[float] = []
+
+    def handle(route: Any) -> None:
+        asked.append(time.monotonic())
+        if len(asked) <= refusals:
+            route.fulfill(
+                status=503,
+                headers={"Retry-After": str(retry_after_s)},
+                body='{"error": "server busy"}',
+            )
+        else:
+            route.continue_()
+
+    page.route("**/charts?*", handle)
+    return asked
+
+
+def test_refused_charts_are_asked_again_after_retry_after(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    asked = refuse_first(page, refusals=2, retry_after_s=1)
+    page.goto(f"{live_server}/?{AXIS}")
+    page.wait_for_selector("#chart-torque .main-svg", timeout=15_000)
+    assert len(asked) == 3
+    # each new ask waited the answer's Retry-After (1 s), not less
+    assert all(later - earlier >= 0.9 for earlier, later in itertools.pairwise(asked))
+    assert page.query_selector("#charts-slot") is None
+    assert [e for e in console_errors if "503" not in e] == []
+
+
+def test_charts_always_refused_are_asked_a_few_times_and_the_link_stays(
+    page: Any, live_server: str
+) -> None:
+    asked = refuse_first(page, refusals=100, retry_after_s=1)
+    page.goto(f"{live_server}/?{AXIS}")
+    deadline = time.monotonic() + 15
+    while len(asked) < 5 and time.monotonic() < deadline:
+        page.wait_for_timeout(100)
+    # past the last ask, twice its Retry-After passes without another
+    page.wait_for_timeout(2_000)
+    assert len(asked) == 5  # CHARTS_TRIES in static/js/app.js
+    assert page.is_visible("#charts-slot .charts-link a")
