@@ -81,6 +81,6 @@ def column_limits(
         # buckling.root_von_mises_stress of the two stresses, each worked out once
         "root_stress_pa": buckling.von_mises_stress(axial, shear),
         "root_torque_nm": root_nm,
-        "root_axial_stress_pa": np.broadcast_to(axial, root_nm.shape),
+        "root_axial_stress_pa": np.asarray(axial, dtype=np.float64),
         "root_shear_stress_pa": shear,
     }

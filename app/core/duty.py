@@ -14,7 +14,7 @@ from app.core.formulas import (
     life,
     support,
 )
-from app.core.model import Application
+from app.core.model import Application, Profile
 from app.core.nut import nut_length
 from app.core.table import Array, CandidateTable, finite
 
@@ -23,15 +23,14 @@ REFERENCE_TEMPERATURE_C = 20.0
 
 
 def heat_balance(
-    app: Application, t: CandidateTable, force_n: float, wear_n: float
+    app: Application, t: CandidateTable, force_n: float, wear_n: float, p: Profile | None
 ) -> dict[str, Any]:
     """Friction power at the cycle's mean speed and the nut's steady temperature rise:
     the screw conducts the heat away both ways as a fin, the nut's surface convects it.
     A cycle of the user's own moves heats at its mean friction power: its travel-weighted
     mean thrust (``wear_n``, ``motion.wear_thrust``) at its mean speed, every segment
     through the forward efficiency (a segment the load drives loses less: the safe
-    side)."""
-    p = motion.move_profile(app)
+    side). ``p``: the move's profile (``motion.move_profile``)."""
     stroke = motion.equivalent_stroke(app) or 0.0
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
     if app.moves:
@@ -76,19 +75,23 @@ def duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str,
     }
 
 
-def travel_thrusts(app: Application) -> tuple[list[float], list[float]]:
+def travel_thrusts(
+    app: Application, c: motion.Cycle | None = None
+) -> tuple[list[float], list[float]]:
     """The thrust on the nut in each moving segment of every move [N] and the distance
     travelled in it [m] (a ramp covers v t / 2, the constant segment v t,
-    ``motion.wear_forms``); none without a stroke."""
-    if motion.move_profile(app) is None:
+    ``motion.wear_forms``); none without a stroke. ``c``: the cycle when already worked
+    out (``motion.cycle_of``)."""
+    c = c or motion.cycle_of(app)
+    if c.fastest is None:
         return [], []
-    forms, travels = motion.wear_forms(app)
-    return [g + h * app.load_n for g, h in forms], travels
+    return [g + h * app.load_n for g, h in c.moving], c.travels
 
 
-def support_bearing(app: Application, t: CandidateTable) -> dict[str, Any]:
+def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:
     """The thrust bearing: its allowed static thrust C0a / fs, the cube-mean thrust of the
-    cycle and its L10 life in years (revolutions times the lead over the duty's travel)."""
+    cycle ``c`` (``motion.cycle_of``) and its L10 life in years (revolutions times the
+    lead over the duty's travel)."""
     nan = np.full(len(t), np.nan)
     allowed = nan
     if app.support_static_n is not None:
@@ -96,7 +99,7 @@ def support_bearing(app: Application, t: CandidateTable) -> dict[str, Any]:
             len(t),
             support.static_allowed_load(app.support_static_n, app.support_static_safety_factor),
         )
-    forces, distances = travel_thrusts(app)
+    forces, distances = travel_thrusts(app, c)
     mean_n = support.mean_axial_load(forces, distances) if forces else math.nan
     years = nan
     stroke = motion.equivalent_stroke(app)

@@ -46,7 +46,7 @@ def seed_pv(
     area = t.contact_area_m2
     return {
         "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m, area),
-        "pressure_pa": np.broadcast_to(pv.contact_pressure(force_n, area), rpm.shape),
+        "pressure_pa": np.asarray(pv.contact_pressure(force_n, area), dtype=np.float64),
         "surface_speed_m_s": pv.surface_speed(rpm, t.helix_travel_m),
         "contact_area_m2": area,
         "pv_max_load_n": pv.max_load_for_pv(limit, rpm, t.thread_depth_m),
