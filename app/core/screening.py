@@ -24,7 +24,9 @@ from app.core.table import Array, CandidateTable, Mask
 _ALL_QUANTITIES = attrgetter(*NAMES)
 
 
-@dataclass(frozen=True, slots=True)
+# Not frozen, as ``Quantities``: a frozen dataclass sets each of its fields through
+# object.__setattr__ (built twice per select). Nothing assigns to one.
+@dataclass(slots=True)
 class Screening:
     """Per eligible candidate (``index`` into the full table): its numbers and checks.
 

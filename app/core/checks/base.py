@@ -59,7 +59,10 @@ def at_least(limit: float) -> float:
     return limit * (1.0 + FIX_MARGIN)
 
 
-@dataclass(frozen=True, slots=True)
+# Not frozen: a frozen dataclass sets each field through object.__setattr__, and a
+# select builds 26 of these (each check's, and the head of a joint screening). Nothing
+# assigns to one.
+@dataclass(slots=True)
 class Measure:
     """A check over many candidates: where it applies, demand and capacity, or failures."""
 
