@@ -12,7 +12,7 @@ import numpy as np
 from app.core.formulas import energy
 from app.core.model import Application, Profile, Segment
 from app.core.motion import segment_travels
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 #: The energy of one cycle, per candidate [J] (``cycle_energy``).
 ENERGY = (
@@ -48,7 +48,7 @@ def cycle_energy(
     whole cycle (``energy.stepper_copper_loss``, the drive holding its current at rest
     too: NaN without its current and resistance). NaN without a profile. The balance:
     motor work - braking = load work + thread loss + drag loss."""
-    nan = np.full(len(t), np.nan)
+    nan = filled(len(t), np.nan)
     if every is None or not parts:
         return dict.fromkeys(ENERGY, nan)
     travels = [x for p in every for x in (*segment_travels(p), 0.0)]
@@ -68,7 +68,7 @@ def cycle_energy(
         joules = energy.stepper_copper_loss(
             current, app.motor_resistance_ohm or 0.0, every[0].cycle_time_s
         )
-        copper = np.full(len(t), joules)
+        copper = filled(len(t), joules)
     return {
         "cycle_motor_work_j": motor,
         "cycle_regen_j": regen,

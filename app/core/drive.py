@@ -14,7 +14,7 @@ from app.core.formulas import (
     torque,
 )
 from app.core.model import Application, Move, Segment
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 
 def torques(
@@ -73,7 +73,7 @@ def torques(
 def controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str, Any]:
     """The step rate the peak speed needs and the travel of one step pulse."""
     if app.step_angle_deg is None:
-        nan = np.full(len(t), np.nan)
+        nan = filled(len(t), np.nan)
         return {"step_rate_hz": nan, "step_resolution_m": nan}
     per_rev = stepping.steps_per_rev(app.step_angle_deg, app.microsteps)
     return {
@@ -97,12 +97,12 @@ def motor_point(
     today's torque at the top speed, ``rpm``."""
     p = c.fastest
     peak_rpm = worst_rpm = rpm
-    nan = np.full(len(t), np.nan)
+    nan = filled(len(t), np.nan)
     fitting = nan
     parts: list[Segment[Array]] = []
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
-        index, peak, rms = np.full(len(t), -1.0), nan, nan
+        index, peak, rms = filled(len(t), -1.0), nan, nan
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = segments.segments(app, t, hold_nm, moving, c)

@@ -16,7 +16,7 @@ from app.core.formulas import (
 )
 from app.core.model import Application, Profile
 from app.core.nut import nut_length
-from app.core.table import Array, CandidateTable, finite
+from app.core.table import Array, CandidateTable, filled, finite
 
 #: Ambient temperature at which the screw's length is nominal [C].
 REFERENCE_TEMPERATURE_C = 20.0
@@ -45,21 +45,24 @@ def heat_balance(
         heat.FREE_CONVECTION_W_M2_K,
     )
     return {
-        "heat_speed_m_s": np.full(len(t), mean_speed),
+        "heat_speed_m_s": filled(len(t), mean_speed),
         "friction_power_w": power,
         "nut_temperature_rise_k": rise,
     }
 
 
-def duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str, Any]:
+def duty(
+    app: Application, t: CandidateTable, wear_travel_m: Array, cycles: float | None
+) -> dict[str, Any]:
     """Rated life in years for the duty, lead error and thermal growth over the stroke.
 
     The seed rates its nuts' travel without the load it holds at, and warns that life
     varies with load: the rated travel is taken as at most the wear life of the same nut
     material at this cycle's wear thrust (``wear_travel_m``, NaN where the nut has no
-    wear rate), so a rating never promises more at a high load than the wear law."""
-    nan = np.full(len(t), np.nan)
-    stroke, cycles = motion.equivalent_stroke(app), motion.cycles_per_day(app)
+    wear rate), so a rating never promises more at a high load than the wear law.
+    ``cycles``: the cycles a day (``motion.cycles_per_day``)."""
+    nan = filled(len(t), np.nan)
+    stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
     travel = app.stroke_m if app.stroke_m is not None else app.length_m
     low_m = np.where(np.isnan(t.life_min_m), np.nan, np.fmin(t.life_min_m, wear_travel_m))
@@ -92,10 +95,10 @@ def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dic
     """The thrust bearing: its allowed static thrust C0a / fs, the cube-mean thrust of the
     cycle ``c`` (``motion.cycle_of``) and its L10 life in years (revolutions times the
     lead over the duty's travel)."""
-    nan = np.full(len(t), np.nan)
+    nan = filled(len(t), np.nan)
     allowed = nan
     if app.support_static_n is not None:
-        allowed = np.full(
+        allowed = filled(
             len(t),
             support.static_allowed_load(app.support_static_n, app.support_static_safety_factor),
         )
@@ -109,6 +112,6 @@ def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dic
         years = life.life_years(revolutions * t.lead_m, stroke, app.cycles_per_day)
     return {
         "support_allowed_n": allowed,
-        "support_mean_load_n": np.full(len(t), mean_n),
+        "support_mean_load_n": filled(len(t), mean_n),
         "support_life_years": years,
     }

@@ -226,9 +226,13 @@ def cycles_per_day(app: Application) -> float | None:
     ...     accel_m_s2=10.0, stroke_m=0.4, hours_per_day=1.0)), 1)
     1320.3
     """
+    return _cycles_per_day(app, None if app.hours_per_day is None else move_profile(app))
+
+
+def _cycles_per_day(app: Application, p: Profile | None) -> float | None:
+    """``cycles_per_day`` with the move's profile ``p`` (``move_profile``)."""
     if app.cycles_per_day is not None or app.hours_per_day is None:
         return app.cycles_per_day
-    p = move_profile(app)
     return None if p is None else life.cycles_per_day(app.hours_per_day, p.cycle_time_s)
 
 
@@ -441,7 +445,7 @@ class Cycle:
     ``moving``: ``moving_forms``; ``forces``: ``nut_forces`` [N]; ``steady_n``:
     ``steady_load`` [N]; ``travels``: each moving segment's travel [m] (``wear_forms``);
     ``wear_n``: ``wear_thrust`` [N]; ``lead``: ``lead_move``; ``reached_m_s``:
-    ``reached_speed`` [m/s]."""
+    ``reached_speed`` [m/s]; ``cycles_per_day``: ``cycles_per_day``."""
 
     moves: tuple[Move, ...]
     profiles: list[Profile] | None
@@ -453,6 +457,7 @@ class Cycle:
     wear_n: float
     lead: Move
     reached_m_s: float
+    cycles_per_day: float | None
 
 
 def cycle_of(app: Application) -> Cycle:
@@ -474,4 +479,5 @@ def cycle_of(app: Application) -> Cycle:
         wear_n=wear.cycle_wear_thrust([g + h * load for g, h in moving], travels),
         lead=_lead(app, moves, moving),
         reached_m_s=app.speed_m_s if top is None else top.peak_speed_m_s,
+        cycles_per_day=_cycles_per_day(app, top),
     )

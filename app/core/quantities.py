@@ -19,7 +19,7 @@ from app.core.formulas import (
 )
 from app.core.formulas.declare import formula
 from app.core.model import STANDARD_GRAVITY_M_S2, Application
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 V = TypeVar("V")
 
@@ -278,14 +278,14 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
     torques = drive.torques(app, t, force_n, moving, c.lead)
     derate = (limits := nut.pv_limit(app, t))["pv_temperature_factor"]
     flank = nut.flanks(app, t, rpm, derate * limits["pv_lubrication_factor"])
-    worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n)
+    worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n, c.cycles_per_day)
     held = holding.holding(app, t, steady_n)
     motor = drive.motor_point(app, t, rpm, held["brake_nm"], torques, moving, c)
     return {
-        "force_n": np.full(len(t), force_n),
-        "peak_force_n": np.full(len(t), peak_n),
-        "compressive_force_n": np.full(len(t), compressive_axial_load(app, forces)),
-        "holding_force_n": np.full(len(t), steady_n),
+        "force_n": filled(len(t), force_n),
+        "peak_force_n": filled(len(t), peak_n),
+        "compressive_force_n": filled(len(t), compressive_axial_load(app, forces)),
+        "holding_force_n": filled(len(t), steady_n),
         "rpm": rpm,
         **torques,
         **column.column_limits(app, t, peak_n, torques),
@@ -294,7 +294,7 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
         **nut.seed_pv(app, t, peak_n, rpm, limits["pv_limit_pa_m_s"]),
         **flank,
         **worn,
-        **duty.duty(app, t, worn["wear_travel_m"]),
+        **duty.duty(app, t, worn["wear_travel_m"], c.cycles_per_day),
         **duty.support_bearing(app, t, c),
         **held,
         **motor,

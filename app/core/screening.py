@@ -18,7 +18,7 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import NAMES, Quantities, operating_point
-from app.core.table import Array, CandidateTable, Mask
+from app.core.table import Array, CandidateTable, Mask, filled
 
 #: Every array of a ``Quantities``, in declaration order, as one tuple.
 _ALL_QUANTITIES = attrgetter(*NAMES)
@@ -112,7 +112,7 @@ def _judge(
     exist, and for a yes/no check) and where it fails (applies, and over its limit or
     flagged)."""
     numeric = [m.demand is not None and m.capacity is not None for m in measures]
-    nan, no = np.full(n, np.nan), np.zeros(n, dtype=bool)
+    nan, no = filled(n, np.nan), np.zeros(n, dtype=bool)
     demand = _rows([m.demand if ok else None for m, ok in zip(measures, numeric, strict=True)], nan)
     capacity = _rows(
         [m.capacity if ok else None for m, ok in zip(measures, numeric, strict=True)], nan

@@ -27,7 +27,7 @@ from app.core.motion import (
     rest_loads,
     sense,
 )
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 #: A moving segment for every candidate: its name and direction, the thrust against the
 #: motion [N] and the motor torque [N m] (``moving_torques``).
@@ -50,7 +50,7 @@ def _move(
             direction=direction,
             duration_s=duration,
             rpm=rpm,
-            thrust_n=np.full(len(t), thrust),
+            thrust_n=filled(len(t), thrust),
             torque_nm=torque_nm,
         )
         for (name, direction, thrust, torque_nm), duration in zip(rows, times, strict=True)
@@ -101,7 +101,7 @@ def _dwell(
         direction=direction_word(app, move),
         duration_s=move.dwell_s,
         rpm=np.zeros(len(hold_nm)),
-        thrust_n=np.full(len(hold_nm), rest_n),
+        thrust_n=filled(len(hold_nm), rest_n),
         torque_nm=hold if held else np.zeros(len(hold_nm)),
     )
 
