@@ -49,10 +49,10 @@ def torques(
         + t.drag_max_nm
     )
     magnitude = np.abs(np.array([m[3] for m in moving]))
-    largest = magnitude.max(axis=0)
+    largest = np.maximum.reduce(magnitude, axis=0)
     peak = np.maximum(largest, t_start)
     # the segment's index as a float, as every number of ``Quantities`` is
-    segment = np.where(largest > t_start, np.argmax(magnitude, axis=0), -1.0)
+    segment = np.where(largest > t_start, magnitude.argmax(axis=0), -1.0)
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
@@ -110,10 +110,10 @@ def motor_point(
         magnitude = np.abs(signed)
         speeds = np.array([s.rpm for s in parts])
         load = magnitude / segments.curve_torque(app, speeds) if app.motor_curve else magnitude
-        index = np.argmax(load, axis=0)
+        index = load.argmax(axis=0)
         columns = np.arange(len(t))
         worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
-        peak, rms = magnitude.max(axis=0), segments.rms(parts)
+        peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = fitting_accel(app, parts, signed, index, worst_rpm)
     curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan

@@ -146,8 +146,8 @@ def screen_table(
     utilization = {name: ratio[i] if numeric[i] else None for i, name in enumerate(names)}
     rows = [i for i, name in enumerate(names) if _rejects(app, name)]
     others = [i for i in range(len(names)) if i not in rows]
-    n_failed = failed[rows].sum(axis=0, dtype=np.float64)
-    warned = failed[others].any(axis=0)
+    n_failed = np.add.reduce(failed[rows], axis=0, dtype=np.float64)
+    warned = np.logical_or.reduce(failed[others], axis=0)
     # a check that does not apply, or a yes/no check (NaN), leaves the worst as it is
     worst = np.fmax.reduce(np.where(applicable[rows], ratio[rows], np.nan), axis=0, initial=0.0)
     worst = np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)
