@@ -13,7 +13,7 @@ from app.core.formulas import (
     torque,
 )
 from app.core.model import Application
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 
 def root_torque(t: CandidateTable, peak_n: float, torques: dict[str, Any]) -> Array:
@@ -76,11 +76,11 @@ def column_limits(
         "critical_load_n": f_cr,
         "allowed_load_n": buckling.allowed_buckling_load(f_cr, app.buckling_safety_factor),
         "slenderness": s,
-        "column_length_m": np.full(len(t), column_m),
+        "column_length_m": filled(len(t), column_m),
         "transition_slenderness": t.transition_slenderness,
         # buckling.root_von_mises_stress of the two stresses, each worked out once
         "root_stress_pa": buckling.von_mises_stress(axial, shear),
         "root_torque_nm": root_nm,
-        "root_axial_stress_pa": np.broadcast_to(axial, root_nm.shape),
+        "root_axial_stress_pa": np.asarray(axial, dtype=np.float64),
         "root_shear_stress_pa": shear,
     }

@@ -10,9 +10,9 @@ import math
 import numpy as np
 
 from app.core.formulas import energy
-from app.core.model import Application, Segment
-from app.core.motion import profiles, segment_travels
-from app.core.table import Array, CandidateTable
+from app.core.model import Application, Profile, Segment
+from app.core.motion import segment_travels
+from app.core.table import Array, CandidateTable, filled
 
 #: The energy of one cycle, per candidate [J] (``cycle_energy``).
 ENERGY = (
@@ -36,9 +36,10 @@ def copper_current_rms(app: Application) -> float | None:
 
 
 def cycle_energy(
-    app: Application, t: CandidateTable, parts: list[Segment[Array]]
+    app: Application, t: CandidateTable, parts: list[Segment[Array]], every: list[Profile] | None
 ) -> dict[str, Array]:
-    """The energy of one cycle over ``parts`` (``segments``), per candidate [J]: the
+    """The energy of one cycle over ``parts`` (``segments``) of the moves whose profiles
+    are ``every`` (``motion.profiles``), per candidate [J]: the
     motor's work at its shaft where it drives (``energy.shaft_energy`` above 0), the
     energy braking gives back on decelerate and down segments (its work below 0, before
     the drive's own losses), the work done on the load (sum F x: its weight and external
@@ -47,8 +48,7 @@ def cycle_energy(
     whole cycle (``energy.stepper_copper_loss``, the drive holding its current at rest
     too: NaN without its current and resistance). NaN without a profile. The balance:
     motor work - braking = load work + thread loss + drag loss."""
-    nan = np.full(len(t), np.nan)
-    every = profiles(app)
+    nan = filled(len(t), np.nan)
     if every is None or not parts:
         return dict.fromkeys(ENERGY, nan)
     travels = [x for p in every for x in (*segment_travels(p), 0.0)]
@@ -68,7 +68,7 @@ def cycle_energy(
         joules = energy.stepper_copper_loss(
             current, app.motor_resistance_ohm or 0.0, every[0].cycle_time_s
         )
-        copper = np.full(len(t), joules)
+        copper = filled(len(t), joules)
     return {
         "cycle_motor_work_j": motor,
         "cycle_regen_j": regen,

@@ -13,12 +13,16 @@ from app.core.formulas import (
     stepping,
     torque,
 )
-from app.core.model import Application, Segment
-from app.core.table import Array, CandidateTable
+from app.core.model import Application, Move, Segment
+from app.core.table import Array, CandidateTable, filled
 
 
 def torques(
-    app: Application, t: CandidateTable, force_n: float, moving: list[segments.Moving]
+    app: Application,
+    t: CandidateTable,
+    force_n: float,
+    moving: list[segments.Moving],
+    move: Move,
 ) -> dict[str, Any]:
     """Motor torque: the screw's and the rotor's inertia J alpha, and every force that
     passes through the sliding thread (the load and the force m a that accelerates the
@@ -27,8 +31,7 @@ def torques(
     is the larger of break-away and the peak of the moving segments of both moves
     (``moving``, the rows of ``segments.moving_torques``: decelerating a descending load
     may need more). The breakdown and break-away are those of the move that starts hardest
-    (``motion.lead_move``: out and back, the scalar inputs)."""
-    move = motion.lead_move(app)
+    (``move``, ``motion.lead_move``: out and back, the scalar inputs)."""
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     j_mass = torque.reflected_mass_inertia(move.moving_mass_kg, t.lead_m)
@@ -46,10 +49,10 @@ def torques(
         + t.drag_max_nm
     )
     magnitude = np.abs(np.array([m[3] for m in moving]))
-    largest = magnitude.max(axis=0)
+    largest = np.maximum.reduce(magnitude, axis=0)
     peak = np.maximum(largest, t_start)
     # the segment's index as a float, as every number of ``Quantities`` is
-    segment = np.where(largest > t_start, np.argmax(magnitude, axis=0), -1.0)
+    segment = np.where(largest > t_start, magnitude.argmax(axis=0), -1.0)
     return {
         "angular_accel_rad_s2": alpha,
         "inertia_kg_m2": j_screw + j_mass,
@@ -70,7 +73,7 @@ def torques(
 def controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str, Any]:
     """The step rate the peak speed needs and the travel of one step pulse."""
     if app.step_angle_deg is None:
-        nan = np.full(len(t), np.nan)
+        nan = filled(len(t), np.nan)
         return {"step_rate_hz": nan, "step_resolution_m": nan}
     per_rev = stepping.steps_per_rev(app.step_angle_deg, app.microsteps)
     return {
@@ -86,29 +89,31 @@ def motor_point(
     hold_nm: Array,
     torques: dict[str, Any],
     moving: list[segments.Moving],
+    c: motion.Cycle,
 ) -> dict[str, Any]:
-    """The motor's view of the move: every segment's torque against the curve (the moving
-    ones' ``moving``, from ``segments.moving_torques``). Without a stroke there is no
-    profile: the one point is today's torque at the top speed, ``rpm``."""
-    p = motion.move_profile(app)
+    """The motor's view of the move of the cycle ``c`` (``motion.cycle_of``): every
+    segment's torque against the curve (the moving ones' ``moving``, from
+    ``segments.moving_torques``). Without a stroke there is no profile: the one point is
+    today's torque at the top speed, ``rpm``."""
+    p = c.fastest
     peak_rpm = worst_rpm = rpm
-    nan = np.full(len(t), np.nan)
+    nan = filled(len(t), np.nan)
     fitting = nan
     parts: list[Segment[Array]] = []
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
-        index, peak, rms = np.full(len(t), -1.0), nan, nan
+        index, peak, rms = filled(len(t), -1.0), nan, nan
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
-        parts = segments.segments(app, t, hold_nm, moving)
+        parts = segments.segments(app, t, hold_nm, moving, c)
         signed = np.array([s.torque_nm for s in parts])
         magnitude = np.abs(signed)
         speeds = np.array([s.rpm for s in parts])
         load = magnitude / segments.curve_torque(app, speeds) if app.motor_curve else magnitude
-        index = np.argmax(load, axis=0)
+        index = load.argmax(axis=0)
         columns = np.arange(len(t))
         worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
-        peak, rms = magnitude.max(axis=0), segments.rms(parts)
+        peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = fitting_accel(app, parts, signed, index, worst_rpm)
     curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan
@@ -123,7 +128,7 @@ def motor_point(
         "motor_worst_rpm": worst_rpm,
         "motor_curve_nm": curve,
         "motor_fitting_accel_m_s2": fitting,
-        **cycle_energy.cycle_energy(app, t, parts),
+        **cycle_energy.cycle_energy(app, t, parts, c.profiles),
     }
 
 

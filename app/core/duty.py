@@ -14,24 +14,23 @@ from app.core.formulas import (
     life,
     support,
 )
-from app.core.model import Application
+from app.core.model import Application, Profile
 from app.core.nut import nut_length
-from app.core.table import Array, CandidateTable, finite
+from app.core.table import Array, CandidateTable, filled, finite
 
 #: Ambient temperature at which the screw's length is nominal [C].
 REFERENCE_TEMPERATURE_C = 20.0
 
 
 def heat_balance(
-    app: Application, t: CandidateTable, force_n: float, wear_n: float
+    app: Application, t: CandidateTable, force_n: float, wear_n: float, p: Profile | None
 ) -> dict[str, Any]:
     """Friction power at the cycle's mean speed and the nut's steady temperature rise:
     the screw conducts the heat away both ways as a fin, the nut's surface convects it.
     A cycle of the user's own moves heats at its mean friction power: its travel-weighted
     mean thrust (``wear_n``, ``motion.wear_thrust``) at its mean speed, every segment
     through the forward efficiency (a segment the load drives loses less: the safe
-    side)."""
-    p = motion.move_profile(app)
+    side). ``p``: the move's profile (``motion.move_profile``)."""
     stroke = motion.equivalent_stroke(app) or 0.0
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
     if app.moves:
@@ -46,21 +45,24 @@ def heat_balance(
         heat.FREE_CONVECTION_W_M2_K,
     )
     return {
-        "heat_speed_m_s": np.full(len(t), mean_speed),
+        "heat_speed_m_s": filled(len(t), mean_speed),
         "friction_power_w": power,
         "nut_temperature_rise_k": rise,
     }
 
 
-def duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str, Any]:
+def duty(
+    app: Application, t: CandidateTable, wear_travel_m: Array, cycles: float | None
+) -> dict[str, Any]:
     """Rated life in years for the duty, lead error and thermal growth over the stroke.
 
     The seed rates its nuts' travel without the load it holds at, and warns that life
     varies with load: the rated travel is taken as at most the wear life of the same nut
     material at this cycle's wear thrust (``wear_travel_m``, NaN where the nut has no
-    wear rate), so a rating never promises more at a high load than the wear law."""
-    nan = np.full(len(t), np.nan)
-    stroke, cycles = motion.equivalent_stroke(app), motion.cycles_per_day(app)
+    wear rate), so a rating never promises more at a high load than the wear law.
+    ``cycles``: the cycles a day (``motion.cycles_per_day``)."""
+    nan = filled(len(t), np.nan)
+    stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
     travel = app.stroke_m if app.stroke_m is not None else app.length_m
     low_m = np.where(np.isnan(t.life_min_m), np.nan, np.fmin(t.life_min_m, wear_travel_m))
@@ -76,27 +78,31 @@ def duty(app: Application, t: CandidateTable, wear_travel_m: Array) -> dict[str,
     }
 
 
-def travel_thrusts(app: Application) -> tuple[list[float], list[float]]:
+def travel_thrusts(
+    app: Application, c: motion.Cycle | None = None
+) -> tuple[list[float], list[float]]:
     """The thrust on the nut in each moving segment of every move [N] and the distance
     travelled in it [m] (a ramp covers v t / 2, the constant segment v t,
-    ``motion.wear_forms``); none without a stroke."""
-    if motion.move_profile(app) is None:
+    ``motion.wear_forms``); none without a stroke. ``c``: the cycle when already worked
+    out (``motion.cycle_of``)."""
+    c = c or motion.cycle_of(app)
+    if c.fastest is None:
         return [], []
-    forms, travels = motion.wear_forms(app)
-    return [g + h * app.load_n for g, h in forms], travels
+    return [g + h * app.load_n for g, h in c.moving], c.travels
 
 
-def support_bearing(app: Application, t: CandidateTable) -> dict[str, Any]:
+def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:
     """The thrust bearing: its allowed static thrust C0a / fs, the cube-mean thrust of the
-    cycle and its L10 life in years (revolutions times the lead over the duty's travel)."""
-    nan = np.full(len(t), np.nan)
+    cycle ``c`` (``motion.cycle_of``) and its L10 life in years (revolutions times the
+    lead over the duty's travel)."""
+    nan = filled(len(t), np.nan)
     allowed = nan
     if app.support_static_n is not None:
-        allowed = np.full(
+        allowed = filled(
             len(t),
             support.static_allowed_load(app.support_static_n, app.support_static_safety_factor),
         )
-    forces, distances = travel_thrusts(app)
+    forces, distances = travel_thrusts(app, c)
     mean_n = support.mean_axial_load(forces, distances) if forces else math.nan
     years = nan
     stroke = motion.equivalent_stroke(app)
@@ -106,6 +112,6 @@ def support_bearing(app: Application, t: CandidateTable) -> dict[str, Any]:
         years = life.life_years(revolutions * t.lead_m, stroke, app.cycles_per_day)
     return {
         "support_allowed_n": allowed,
-        "support_mean_load_n": np.full(len(t), mean_n),
+        "support_mean_load_n": filled(len(t), mean_n),
         "support_life_years": years,
     }

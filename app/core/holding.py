@@ -12,7 +12,7 @@ from app.core.formulas import (
     efficiency,
 )
 from app.core.model import Application
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 
 def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, Any]:
@@ -61,11 +61,11 @@ def hold_margins(
     """The power-off hold's margins (``efficiency.hold_margin``): the thread's alone, and
     the hold's with the unpowered torque (``unpowered_torque``) over ``needed_nm``; NaN
     where holding with the power off is not required or no load is held."""
-    nan = np.full(len(t), np.nan)
+    nan = filled(len(t), np.nan)
     if not (app.hold_power_off and motion.holds_a_load(app)):
         return {"hold_thread_margin": nan, "hold_margin": nan}
     torque_nm = unpowered_torque(app)
-    device = nan if torque_nm is None else np.full(len(t), torque_nm)
+    device = nan if torque_nm is None else filled(len(t), torque_nm)
     needed = np.where(needed_nm > 0.0, needed_nm, np.nan)
     return {
         "hold_thread_margin": efficiency.hold_margin(max_lock_m, t.lead_m, nan, 1.0),

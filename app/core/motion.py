@@ -13,6 +13,7 @@ torque in each segment, for every candidate, is ``segments``'; the cycle's energ
 
 import itertools
 import math
+from dataclasses import dataclass
 
 from app.core.formulas import life, profile, wear
 from app.core.formulas.declare import formula
@@ -98,12 +99,13 @@ def _profile(move: Move, cycle_time_s: float) -> Profile:
     )
 
 
-def profiles(app: Application) -> list[Profile] | None:
+def profiles(app: Application, moves: tuple[Move, ...] = ()) -> list[Profile] | None:
     """Each move's profile, its ``cycle_time_s`` the whole cycle's (every move and every
-    dwell); None without a stroke (or a stroke of 0) and no moves of the user's own."""
+    dwell); None without a stroke (or a stroke of 0) and no moves of the user's own.
+    ``moves``: the cycle's moves when already worked out (``cycle``)."""
     if not (app.moves or app.stroke_m):
         return None
-    moves = cycle(app)
+    moves = moves or cycle(app)
     times = [_profile(m, 0.0).move_time_s for m in moves]
     total = 0.0
     for move, move_s in zip(moves, times, strict=True):
@@ -115,7 +117,11 @@ def move_profile(app: Application) -> Profile | None:
     """The cycle's fastest move (the first of the fastest) with the cycle's time: for
     out and back over the stroke, the move over the stroke (None without a stroke, or a
     stroke of 0, and no moves of the user's own)."""
-    every = profiles(app)
+    return fastest(profiles(app))
+
+
+def fastest(every: list[Profile] | None) -> Profile | None:
+    """The first of the fastest of the profiles ``every`` (None: none)."""
     if every is None:
         return None
     return max(every, key=lambda p: p.peak_speed_m_s)
@@ -220,9 +226,13 @@ def cycles_per_day(app: Application) -> float | None:
     ...     accel_m_s2=10.0, stroke_m=0.4, hours_per_day=1.0)), 1)
     1320.3
     """
+    return _cycles_per_day(app, None if app.hours_per_day is None else move_profile(app))
+
+
+def _cycles_per_day(app: Application, p: Profile | None) -> float | None:
+    """``cycles_per_day`` with the move's profile ``p`` (``move_profile``)."""
     if app.cycles_per_day is not None or app.hours_per_day is None:
         return app.cycles_per_day
-    p = move_profile(app)
     return None if p is None else life.cycles_per_day(app.hours_per_day, p.cycle_time_s)
 
 
@@ -244,9 +254,10 @@ def _rest_load(app: Application, move: Move) -> float:
     return weight + move.load_n * load_sense(app, move)[0]
 
 
-def rest_loads(app: Application) -> list[float]:
-    """The load held in the dwell after each move [N] (``_rest_load``)."""
-    return [_rest_load(app, m) for m in cycle(app)]
+def rest_loads(app: Application, moves: tuple[Move, ...] = ()) -> list[float]:
+    """The load held in the dwell after each move [N] (``_rest_load``), of ``moves`` when
+    the cycle's moves are already worked out."""
+    return [_rest_load(app, m) for m in moves or cycle(app)]
 
 
 def steady_load(app: Application) -> float:
@@ -299,16 +310,21 @@ def nut_force_forms(app: Application) -> list[Form]:
     >>> [g + h * app.load_n for g, h in nut_force_forms(app)]
     [16.0, 10.0, 0.0, -16.0, -10.0, 0.0, 0.0]
     """
-    forms = [f for move in cycle(app) for f in _move_forms(app, move)]
+    return _with_rest(app, moving_forms(app))
+
+
+def _with_rest(app: Application, moving: list[Form]) -> list[Form]:
+    """``nut_force_forms`` from the forms of the moving segments (``moving_forms``)."""
     if app.moves:
-        return [*forms, *((f, 0.0) for f in rest_loads(app))]
+        return [*moving, *((f, 0.0) for f in rest_loads(app))]
     weight = app.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
-    return [*forms, (weight, load_sense(app)[0])]
+    return [*moving, (weight, load_sense(app)[0])]
 
 
-def moving_forms(app: Application) -> list[Form]:
-    """``nut_force_forms`` of the moving segments alone, move after move."""
-    return [f for move in cycle(app) for f in _move_forms(app, move)]
+def moving_forms(app: Application, moves: tuple[Move, ...] = ()) -> list[Form]:
+    """``nut_force_forms`` of the moving segments alone, move after move (of ``moves``
+    when the cycle's moves are already worked out)."""
+    return [f for move in moves or cycle(app) for f in _move_forms(app, move)]
 
 
 def nut_forces(app: Application) -> list[float]:
@@ -348,11 +364,15 @@ def segment_travels(p: Profile | None) -> tuple[float, float, float]:
 def wear_forms(app: Application) -> tuple[list[Form], list[float]]:
     """Each moving segment of every move: the nut's thrust as a form in the load
     (``nut_force_forms``) and the segment's travel [m] (``segment_travels``)."""
-    every = profiles(app)
     moves = cycle(app)
+    return moving_forms(app, moves), _travels(moves, profiles(app, moves))
+
+
+def _travels(moves: tuple[Move, ...], every: list[Profile] | None) -> list[float]:
+    """Each moving segment's travel of ``moves`` with their profiles ``every``
+    (``segment_travels``)."""
     parts = [None] * len(moves) if every is None else every
-    travels = [x for p in parts for x in segment_travels(p)]
-    return moving_forms(app), travels
+    return [x for p in parts for x in segment_travels(p)]
 
 
 def wear_thrust(app: Application) -> float:
@@ -367,9 +387,15 @@ def lead_move(app: Application) -> Move:
     the motion; the first move out and back over the stroke): the move the torque
     breakdown and break-away describe."""
     moves = cycle(app)
+    return _lead(app, moves, moving_forms(app, moves) if app.moves else [])
+
+
+def _lead(app: Application, moves: tuple[Move, ...], moving: list[Form]) -> Move:
+    """``lead_move`` of ``moves``, whose moving segments' forms are ``moving`` (read for
+    the user's own moves alone)."""
     if not app.moves:
         return moves[0]
-    starts = [sense(m) * (g + h * app.load_n) for m in moves for g, h in _move_forms(app, m)[:1]]
+    starts = [sense(m) * (g + h * app.load_n) for m, (g, h) in zip(moves, moving[::3], strict=True)]
     return moves[starts.index(max(starts))]
 
 
@@ -408,3 +434,50 @@ def largest_load_for_wear(app: Application, allowed_n: float) -> float | None:
             share = (allowed_n - thrust(low)) / (thrust(high) - thrust(low))
             return low + share * (high - low)
     return None
+
+
+@dataclass(frozen=True, slots=True)
+class Cycle:
+    """The cycle's numbers that are the same for every candidate, worked out once per
+    query (``cycle_of``) and handed to each part of the operating point that reads them.
+
+    ``moves``: ``cycle``; ``profiles``: ``profiles``; ``fastest``: ``move_profile``;
+    ``moving``: ``moving_forms``; ``forces``: ``nut_forces`` [N]; ``steady_n``:
+    ``steady_load`` [N]; ``travels``: each moving segment's travel [m] (``wear_forms``);
+    ``wear_n``: ``wear_thrust`` [N]; ``lead``: ``lead_move``; ``reached_m_s``:
+    ``reached_speed`` [m/s]; ``cycles_per_day``: ``cycles_per_day``."""
+
+    moves: tuple[Move, ...]
+    profiles: list[Profile] | None
+    fastest: Profile | None
+    moving: list[Form]
+    forces: list[float]
+    steady_n: float
+    travels: list[float]
+    wear_n: float
+    lead: Move
+    reached_m_s: float
+    cycles_per_day: float | None
+
+
+def cycle_of(app: Application) -> Cycle:
+    """The ``Cycle`` of ``app``: each number the function it names gives, the moves and
+    their forms built once."""
+    moves = cycle(app)
+    every = profiles(app, moves)
+    moving = moving_forms(app, moves)
+    travels = _travels(moves, every)
+    load, top = app.load_n, fastest(every)
+    return Cycle(
+        moves=moves,
+        profiles=every,
+        fastest=top,
+        moving=moving,
+        forces=[g + h * load for g, h in _with_rest(app, moving)],
+        steady_n=steady_load(app),
+        travels=travels,
+        wear_n=wear.cycle_wear_thrust([g + h * load for g, h in moving], travels),
+        lead=_lead(app, moves, moving),
+        reached_m_s=app.speed_m_s if top is None else top.peak_speed_m_s,
+        cycles_per_day=_cycles_per_day(app, top),
+    )

@@ -16,7 +16,7 @@ from app.core.formulas import (
     wear,
 )
 from app.core.model import Application
-from app.core.table import Array, CandidateTable, finite
+from app.core.table import Array, CandidateTable, filled, finite
 
 
 def pv_limit(app: Application, t: CandidateTable) -> dict[str, Any]:
@@ -32,7 +32,7 @@ def pv_limit(app: Application, t: CandidateTable) -> dict[str, Any]:
     lubrication = pv_derating.LUBRICATION_FACTORS[app.lubrication][0]
     return {
         "pv_temperature_factor": temperature,
-        "pv_lubrication_factor": np.full(len(t), lubrication),
+        "pv_lubrication_factor": filled(len(t), lubrication),
         "pv_limit_pa_m_s": t.pv_limit_pa_m_s * temperature * lubrication,
     }
 
@@ -46,7 +46,7 @@ def seed_pv(
     area = t.contact_area_m2
     return {
         "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m, area),
-        "pressure_pa": np.broadcast_to(pv.contact_pressure(force_n, area), rpm.shape),
+        "pressure_pa": np.asarray(pv.contact_pressure(force_n, area), dtype=np.float64),
         "surface_speed_m_s": pv.surface_speed(rpm, t.helix_travel_m),
         "contact_area_m2": area,
         "pv_max_load_n": pv.max_load_for_pv(limit, rpm, t.thread_depth_m),
@@ -59,7 +59,7 @@ def seed_pv(
 def table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
     """Each candidate's pressure-speed table value at its sliding speed [Pa] (NaN without
     a table); candidates sharing a table are interpolated together."""
-    out = np.full(len(t), np.nan)
+    out = filled(len(t), np.nan)
     for position, table in enumerate(t.pressure_tables):
         rows = np.flatnonzero(t.pressure_table == position)
         if rows.size:
@@ -122,12 +122,16 @@ def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> di
 
 
 def wear_life(
-    app: Application, t: CandidateTable, flank_area_m2: Array, force_n: float
+    app: Application,
+    t: CandidateTable,
+    flank_area_m2: Array,
+    force_n: float,
+    cycles: float | None,
 ) -> dict[str, Any]:
     """Nut travel until its flanks have worn the allowed depth (Archard's law at the
     cycle's wear thrust ``force_n``, ``motion.wear_thrust``): over the engaged flanks and
     flank height of a standard thread, else over the seed's three threads and thread
-    depth."""
+    depth; in years at ``cycles`` a day (``motion.cycles_per_day``)."""
     flanks = ~np.isnan(flank_area_m2)
     area = np.where(flanks, flank_area_m2, t.contact_area_m2)
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
@@ -137,11 +141,11 @@ def wear_life(
             t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
         )
     travel = finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
-    cycles, stroke = motion.cycles_per_day(app), motion.equivalent_stroke(app)
+    stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
     years = life.life_years(travel, stroke, cycles) if rated else travel * np.nan
     return {
-        "wear_force_n": np.full(len(t), force_n),
+        "wear_force_n": filled(len(t), force_n),
         "wear_travel_m": travel,
         "wear_life_years": years,
     }

@@ -19,7 +19,7 @@ from app.core.formulas import (
 )
 from app.core.formulas.declare import formula
 from app.core.model import STANDARD_GRAVITY_M_S2, Application
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 V = TypeVar("V")
 
@@ -260,40 +260,42 @@ def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
     """Every number of ``app`` for every candidate of ``t``, as float arrays (each part
     gives its numbers as float arrays of the table's length: a flag as 0 or 1, an index
     as a float)."""
-    rpm = geometry.screw_speed_rpm(motion.reached_speed(app), t.lead_m)
+    c = motion.cycle_of(app)
+    rpm = geometry.screw_speed_rpm(c.reached_m_s, t.lead_m)
     # no (or vanishing) thrust: an unbounded PV speed, NaN after ``table.finite``
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        return Quantities(**_values(app, t, rpm))
+        return Quantities(**_values(app, t, rpm, c))
 
 
-def _values(app: Application, t: CandidateTable, rpm: Array) -> dict[str, Any]:
-    """The numbers of ``operating_point``; each of the axis's own (its thrusts and the
-    moving segments' torques) worked out once and handed to every part that reads it."""
-    forces = motion.nut_forces(app)
+def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) -> dict[str, Any]:
+    """The numbers of ``operating_point``; each of the axis's own (its cycle ``c``, its
+    thrusts and the moving segments' torques) worked out once and handed to every part
+    that reads it."""
+    forces = c.forces
     force_n, peak_n = axial_load(app), peak_axial_load(app, forces)
-    wear_n, steady_n = motion.wear_thrust(app), motion.steady_load(app)
-    moving = segments.moving_torques(app, t)
-    torques = drive.torques(app, t, force_n, moving)
+    wear_n, steady_n = c.wear_n, c.steady_n
+    moving = segments.moving_torques(app, t, c)
+    torques = drive.torques(app, t, force_n, moving, c.lead)
     derate = (limits := nut.pv_limit(app, t))["pv_temperature_factor"]
     flank = nut.flanks(app, t, rpm, derate * limits["pv_lubrication_factor"])
-    worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n)
+    worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n, c.cycles_per_day)
     held = holding.holding(app, t, steady_n)
-    motor = drive.motor_point(app, t, rpm, held["brake_nm"], torques, moving)
+    motor = drive.motor_point(app, t, rpm, held["brake_nm"], torques, moving, c)
     return {
-        "force_n": np.full(len(t), force_n),
-        "peak_force_n": np.full(len(t), peak_n),
-        "compressive_force_n": np.full(len(t), compressive_axial_load(app, forces)),
-        "holding_force_n": np.full(len(t), steady_n),
+        "force_n": filled(len(t), force_n),
+        "peak_force_n": filled(len(t), peak_n),
+        "compressive_force_n": filled(len(t), compressive_axial_load(app, forces)),
+        "holding_force_n": filled(len(t), steady_n),
         "rpm": rpm,
         **torques,
         **column.column_limits(app, t, peak_n, torques),
-        **duty.heat_balance(app, t, force_n, wear_n),
+        **duty.heat_balance(app, t, force_n, wear_n, c.fastest),
         **limits,
         **nut.seed_pv(app, t, peak_n, rpm, limits["pv_limit_pa_m_s"]),
         **flank,
         **worn,
-        **duty.duty(app, t, worn["wear_travel_m"]),
-        **duty.support_bearing(app, t),
+        **duty.duty(app, t, worn["wear_travel_m"], c.cycles_per_day),
+        **duty.support_bearing(app, t, c),
         **held,
         **motor,
         **drive.controller(app, t, motor["peak_rpm"]),

@@ -11,6 +11,7 @@ The variant rows of a catalog are built once, at load (``app.core.index``); a sc
 the user's own has its few built when it is judged. Either way ``robustness`` reads them.
 """
 
+from bisect import bisect_left
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -86,16 +87,14 @@ def robustness(
     """
     if screened is None:
         rows = variants.rows(positions)
-        screened = np.zeros(len(variants.table), dtype=bool)
+        screened = np.ones(len(variants.table), dtype=bool)  # the rows not screened: unread
         if rows.size:
             screened[rows] = screen_table(app, variants.table.take(rows)).passed
+    failing = np.flatnonzero(~screened).tolist()
     found = []
     start, names = variants.start.tolist(), variants.names
     for p in positions:
-        low, high = start[p], start[p + 1]
-        hinges: list[str] = []
-        for name, passed in zip(names[low:high], screened[low:high].tolist(), strict=True):
-            if not passed and name not in hinges:
-                hinges.append(name)
-        found.append(Robustness(not hinges, tuple(hinges)))
+        low, high = bisect_left(failing, start[p]), bisect_left(failing, start[p + 1])
+        hinges = tuple(dict.fromkeys(map(names.__getitem__, failing[low:high])))
+        found.append(Robustness(not hinges, hinges))
     return found

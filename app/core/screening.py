@@ -18,13 +18,15 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import NAMES, Quantities, operating_point
-from app.core.table import Array, CandidateTable, Mask
+from app.core.table import Array, CandidateTable, Mask, filled
 
 #: Every array of a ``Quantities``, in declaration order, as one tuple.
 _ALL_QUANTITIES = attrgetter(*NAMES)
 
 
-@dataclass(frozen=True, slots=True)
+# Not frozen, as ``Quantities``: a frozen dataclass sets each of its fields through
+# object.__setattr__ (built twice per select). Nothing assigns to one.
+@dataclass(slots=True)
 class Screening:
     """Per eligible candidate (``index`` into the full table): its numbers and checks.
 
@@ -110,7 +112,7 @@ def _judge(
     exist, and for a yes/no check) and where it fails (applies, and over its limit or
     flagged)."""
     numeric = [m.demand is not None and m.capacity is not None for m in measures]
-    nan, no = np.full(n, np.nan), np.zeros(n, dtype=bool)
+    nan, no = filled(n, np.nan), np.zeros(n, dtype=bool)
     demand = _rows([m.demand if ok else None for m, ok in zip(measures, numeric, strict=True)], nan)
     capacity = _rows(
         [m.capacity if ok else None for m, ok in zip(measures, numeric, strict=True)], nan
@@ -144,8 +146,8 @@ def screen_table(
     utilization = {name: ratio[i] if numeric[i] else None for i, name in enumerate(names)}
     rows = [i for i, name in enumerate(names) if _rejects(app, name)]
     others = [i for i in range(len(names)) if i not in rows]
-    n_failed = failed[rows].sum(axis=0, dtype=np.float64)
-    warned = failed[others].any(axis=0)
+    n_failed = np.add.reduce(failed[rows], axis=0, dtype=np.float64)
+    warned = np.logical_or.reduce(failed[others], axis=0)
     # a check that does not apply, or a yes/no check (NaN), leaves the worst as it is
     worst = np.fmax.reduce(np.where(applicable[rows], ratio[rows], np.nan), axis=0, initial=0.0)
     worst = np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)

@@ -19,17 +19,15 @@ from app.core.formulas import geometry, profile, torque
 from app.core.model import Application, Direction, Move, Profile, Segment, SegmentName
 from app.core.motion import (
     RAMPS,
-    cycle,
+    Cycle,
+    cycle_of,
     direction_word,
     directions,
     load_sense,
-    moving_forms,
-    profiles,
     rest_loads,
     sense,
-    steady_load,
 )
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, filled
 
 #: A moving segment for every candidate: its name and direction, the thrust against the
 #: motion [N] and the motor torque [N m] (``moving_torques``).
@@ -52,7 +50,7 @@ def _move(
             direction=direction,
             duration_s=duration,
             rpm=rpm,
-            thrust_n=np.full(len(t), thrust),
+            thrust_n=filled(len(t), thrust),
             torque_nm=torque_nm,
         )
         for (name, direction, thrust, torque_nm), duration in zip(rows, times, strict=True)
@@ -65,16 +63,18 @@ def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]
     return [(name, direction) for direction, _ in directions(app) for name, _ in RAMPS]
 
 
-def moving_torques(app: Application, t: CandidateTable) -> list[Moving]:
+def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) -> list[Moving]:
     """Each moving segment of every move, for every candidate: its name and direction,
     the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
     through the thread, the nut's drag, and the screw's and the rotor's inertia times the
-    angular acceleration (whether the segment has a stroke to last or not)."""
+    angular acceleration (whether the segment has a stroke to last or not). ``c``: the
+    cycle when already worked out (``motion.cycle_of``)."""
+    c = c or cycle_of(app)
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
-    forces = iter(g + h * app.load_n for g, h in moving_forms(app))
+    forces = iter(g + h * app.load_n for g, h in c.moving)
     out: list[Moving] = []
-    for move in cycle(app):
+    for move in c.moves:
         v, word = sense(move), direction_word(app, move)
         rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
         for name, sign in RAMPS:
@@ -101,26 +101,32 @@ def _dwell(
         direction=direction_word(app, move),
         duration_s=move.dwell_s,
         rpm=np.zeros(len(hold_nm)),
-        thrust_n=np.full(len(hold_nm), rest_n),
+        thrust_n=filled(len(hold_nm), rest_n),
         torque_nm=hold if held else np.zeros(len(hold_nm)),
     )
 
 
 def segments(
-    app: Application, t: CandidateTable, hold_nm: Array, moving: list[Moving] | None = None
+    app: Application,
+    t: CandidateTable,
+    hold_nm: Array,
+    moving: list[Moving] | None = None,
+    c: Cycle | None = None,
 ) -> list[Segment[Array]]:
     """Every segment of the cycle (a move's accelerate, constant, decelerate and dwell,
     move after move; ``segment_labels`` names them), for every candidate of ``t``;
     ``hold_nm`` is the holding torque of each at ``steady_load`` (0 where the thread
-    self-locks with margin); ``moving`` the rows of ``moving_torques`` when already
-    computed. Empty without a profile."""
-    every = profiles(app)
+    self-locks with margin); ``moving`` the rows of ``moving_torques`` and ``c`` the
+    cycle (``motion.cycle_of``) when already computed. Empty without a profile."""
+    c = c or cycle_of(app)
+    every = c.profiles
     if every is None:
         return []
-    rows = moving_torques(app, t) if moving is None else moving
-    steady = steady_load(app)
+    rows = moving_torques(app, t, c) if moving is None else moving
+    steady = c.steady_n
     out: list[Segment[Array]] = []
-    for k, (move, p, rest) in enumerate(zip(cycle(app), every, rest_loads(app), strict=True)):
+    rests = rest_loads(app, c.moves)
+    for k, (move, p, rest) in enumerate(zip(c.moves, every, rests, strict=True)):
         out += _move(app, p, t, rows[3 * k : 3 * k + 3])
         out.append(_dwell(app, move, rest, hold_nm, steady))
     return out

@@ -94,3 +94,23 @@ def test_lubrication_factors_follow_igus_table_1_4_on_the_safe_side() -> None:
 def test_the_formula_is_declared_with_its_source() -> None:
     declared = formula_of(pv_derating.temperature_factor)
     assert "T_max - T_ambient" in declared.text and "igus" in declared.source
+
+
+@given(
+    ambient_c=st.floats(-60.0, pv_derating.REFERENCE_C),
+    max_c=st.floats(-60.0, 400.0),
+)
+def test_up_to_the_reference_ambient_the_array_form_skips_to_one(
+    ambient_c: float, max_c: float
+) -> None:
+    """At an ambient up to the reference the array form answers 1 without working the
+    share out; the clipped share it skips is 1 there too, to the bit (above the
+    reference, below it, at it and unknown)."""
+    highest = np.array([max_c, pv_derating.REFERENCE_C, np.nan])
+    span = highest - pv_derating.REFERENCE_C
+    with np.errstate(invalid="ignore", divide="ignore"):
+        share = np.clip((highest - ambient_c) / span, 0.0, 1.0)
+    worked_out = np.where(np.isfinite(share) & (span > 0), share, 1.0)
+    skipped = pv_derating.temperature_factors(ambient_c, highest)
+    assert skipped.tobytes() == worked_out.tobytes()
+    assert skipped.tolist() == [1.0, 1.0, 1.0]

@@ -16,7 +16,7 @@ from app.core import motion
 from app.core.model import FIXITY_ORDER, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities, compression_sign
-from app.core.table import Array, CandidateTable, Mask, Reach
+from app.core.table import Array, CandidateTable, Mask, Reach, filled
 
 __all__ = [
     "FIX_MARGIN",
@@ -59,7 +59,10 @@ def at_least(limit: float) -> float:
     return limit * (1.0 + FIX_MARGIN)
 
 
-@dataclass(frozen=True, slots=True)
+# Not frozen: a frozen dataclass sets each field through object.__setattr__, and a
+# select builds 26 of these (each check's, and the head of a joint screening). Nothing
+# assigns to one.
+@dataclass(slots=True)
 class Measure:
     """A check over many candidates: where it applies, demand and capacity, or failures."""
 
@@ -146,7 +149,7 @@ def everywhere(t: CandidateTable) -> Mask:
 
 def same(t: CandidateTable, value: float | None) -> Array:
     """An application value for every candidate (NaN when not given)."""
-    return np.full(len(t), np.nan if value is None else value)
+    return filled(len(t), np.nan if value is None else value)
 
 
 def where_given(capacity: Array) -> Mask:

@@ -92,11 +92,16 @@ def temperature_factor(ambient_c: float, max_c: float, reference_c: float = REFE
 def temperature_factors(ambient_c: float, max_c: FloatArray) -> FloatArray:
     """``temperature_factor`` at one ambient [C] for many materials' highest temperatures
     ``max_c`` [C]; 1 where a highest temperature is unknown (NaN) or not above the
-    reference.
+    reference. At an ambient up to the reference every factor is 1 (the clipped share
+    is at least 1 there), so none is worked out.
 
     >>> temperature_factors(56.5, np.array([93.0, np.nan, 10.0])).tolist()
     [0.5, 1.0, 1.0]
+    >>> temperature_factors(20.0, np.array([93.0, np.nan])).tolist()
+    [1.0, 1.0]
     """
+    if ambient_c <= REFERENCE_C:
+        return np.ones(len(max_c))
     span = max_c - REFERENCE_C
     with np.errstate(invalid="ignore", divide="ignore"):
         share = np.clip((max_c - ambient_c) / span, 0.0, 1.0)
