@@ -1,6 +1,7 @@
 """Application factory: load the catalog (fail fast), wire routes and middleware."""
 
 import gc
+from functools import partial
 
 from fastapi import FastAPI
 from fastapi.exceptions import RequestValidationError
@@ -10,6 +11,7 @@ from app import __version__
 from app.api import docs
 from app.api import routes as api
 from app.catalog import load_catalog
+from app.contract.schemas import ApplicationIn
 from app.paths import resource_dir
 from app.server.cache import ResponseCache
 from app.server.compression import NegotiatedGZipMiddleware
@@ -18,6 +20,7 @@ from app.server.head import HeadAsGetMiddleware
 from app.server.overload import (
     NEVER_SHED,
     OverloadMiddleware,
+    StatedCosts,
     full_form_stated_units,
     page_stated_units,
     select_stated_units,
@@ -36,12 +39,18 @@ CACHED_PATHS = frozenset(
 QUERY_FREE_PATHS = frozenset({"/catalog", "/guide", "/validation"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
 FRAGMENT_PATHS = frozenset({"/", "/detail", "/charts", "/rejected"})
+#: A page that leaves its limit out states the default one once it fills a required field.
+PAGE_STATED_UNITS = partial(
+    page_stated_units,
+    required=pages.REQUIRED,
+    default_limit=ApplicationIn.model_fields["limit"].default,
+)
 #: What each costly route's query states it costs, read before its input is validated: a
 #: flood of them is shed for the price of reading a query (app.server.overload).
-STATED_COSTS = {
-    "/": page_stated_units,
-    "/charts": page_stated_units,
-    "/rejected": page_stated_units,
+STATED_COSTS: StatedCosts = {
+    "/": PAGE_STATED_UNITS,
+    "/charts": PAGE_STATED_UNITS,
+    "/rejected": PAGE_STATED_UNITS,
     "/api/v1/select": select_stated_units,
     "/export.csv": full_form_stated_units,
     "/export.json": full_form_stated_units,

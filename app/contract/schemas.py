@@ -192,7 +192,6 @@ def whole(*groups: str) -> dict[str, Any]:
 #: What names a candidate, and its verdict: in the row and the summary alike.
 NAMED = "id series series_name anti_backlash outer_diameter_mm lead_mm coated nut_material"
 RANKED = "utilization governing_check governing_limit_provenance passed robust hinges_on warned"
-VERDICT = RANKED + " verdict"
 #: The verdict in the compact select, without what the candidate already gives or the
 #: response names once: the governing check and its utilisation are the candidate's
 #: ``governing_check`` and ``utilization``, the margin is 1 - that utilisation, the
@@ -200,6 +199,10 @@ VERDICT = RANKED + " verdict"
 #: ``labels``, whether the pass hinges on a value is whether ``hinges_on`` names it, and
 #: the sentence is these in words.
 COMPACT_VERDICT = {"verdict": {"rests_on": {"field": True, "kind": True}, "watch": True}}
+#: The verdict in the results table's row: its sentence, and the governing check's label
+#: (the report's runners-up); a row's checks, skips and summary are its detail's, loaded
+#: when opened (reading them for every row was a fifth of the row's cost).
+ROW_VERDICT = {"verdict": {"text": True, "governs_label": True}}
 
 
 if TYPE_CHECKING:  # mypy cannot see fields made at run time (see app.contract.inputs)
@@ -223,8 +226,9 @@ VIEWS: dict[str, View] = {
             "max_self_locking_lead_with_margin_mm holds_power_off hold_margin holds_by "
             "holding_rule holding_torque torque critical_speed pv life "
             "profile segments motor_use",
-            VERDICT,
+            RANKED,
         ),
+        ROW_VERDICT,
         view_of("row"),
     ),
     "summary": merged(whole(NAMED, RANKED), COMPACT_VERDICT, view_of("summary")),

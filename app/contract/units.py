@@ -23,6 +23,7 @@ References
 
 from collections.abc import Mapping
 from fractions import Fraction
+from functools import cached_property
 from itertools import product
 from typing import get_args
 
@@ -399,9 +400,17 @@ class Display:
     def __init__(self, units: dict[str, str]) -> None:
         self.units = units
 
+    @cached_property
+    def _system(self) -> tuple[dict[Quantity, tuple[str, float]], dict[Quantity, float]]:
+        """The display system and its offsets, looked up once: a results table converts
+        some two hundred numbers (``from_api``'s arithmetic)."""
+        key = _key(self.units)
+        return DISPLAY_SYSTEMS[key], DISPLAY_OFFSETS[key]
+
     def value(self, api_value: float, quantity: Quantity) -> float:
         """The number in display units."""
-        return from_api(api_value, quantity, self.units)
+        system, offsets = self._system
+        return (api_value - offsets.get(quantity, 0.0)) / system[quantity][1]
 
     def text(self, api_value: float | None, quantity: Quantity, digits: int = 4) -> str:
         """The number in display units as text; an em dash for None."""
@@ -410,7 +419,7 @@ class Display:
         return sig(self.value(api_value, quantity), digits)
 
     def label(self, quantity: Quantity) -> str:
-        return label(quantity, self.units)
+        return self._system[0][quantity][0]
 
     def check(self, api_value: float | None, api_unit: str) -> str:
         """A check's value or limit with its unit, converted where the unit is a display one.

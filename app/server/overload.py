@@ -4,7 +4,7 @@ One worker computes one response at a time; when more requests arrive than it ca
 promptly, holding them all makes every one of them slow (at 256 connections, seconds
 each, and clients time out). Past ``max_in_flight`` units of work in progress (a request
 costs one unit, a full form of a hundred candidates as much as thirteen compact selects
-and a results page of a hundred as much as eleven, counted once its input is validated:
+and a results page of a hundred as much as twenty-one, counted once its input is validated:
 ``charge``) this answers 503 with Retry-After straight away, so the requests that are
 taken stay fast and a balancer or client can go elsewhere or come back.
 
@@ -16,7 +16,7 @@ The health check is never shed: a worker that is busy is not down.
 """
 
 import json
-from collections.abc import Awaitable, Callable, Mapping, MutableMapping
+from collections.abc import Awaitable, Callable, Collection, Mapping, MutableMapping
 from typing import Any
 from urllib.parse import parse_qsl
 
@@ -60,17 +60,19 @@ def full_form_units(limit: int) -> int:
     return 1 + min(max(limit, 1), LIMIT_MOST) // FULL_FORM_CANDIDATES_PER_UNIT
 
 
-#: Results a page shows for the cost of one compact select: its table, charts and rejected
-#: list (measured with ``limit`` 10, 50 and 100: about 1.3, 2.9 and 6.7 compact selects).
-PAGE_CANDIDATES_PER_UNIT = 10
+#: Results a page shows for the cost of one compact select: its selection, table rows and
+#: rendering (CPU of the whole request in process, distinct queries, against a compact
+#: select of the default query: with ``limit`` 10, 50 and 100, about 3, 11 and 20 compact
+#: selects; the charts and the rejected list are requests of their own).
+PAGE_CANDIDATES_PER_UNIT = 5
 
 
 def page_units(limit: int) -> int:
     """Units of work of a results page (full or fragment) of ``limit`` results: 1 +
-    limit / 10 (100: 11 units, about 0.75 of a full form of 100); an empty form is 1.
+    limit / 5 (100: 21 units); an empty form is 1.
 
     >>> page_units(100), page_units(10), page_units(1)
-    (11, 2, 1)
+    (21, 3, 1)
     """
     return 1 + min(max(limit, 1), LIMIT_MOST) // PAGE_CANDIDATES_PER_UNIT
 
@@ -87,12 +89,25 @@ def stated_limit(query: Mapping[str, str]) -> int:
     return int(raw) if raw.isdigit() and len(raw) <= 3 else 1
 
 
-def page_stated_units(query: Mapping[str, str]) -> int:
-    """Units a results page states in its query: ``page_units`` of its limit.
+def page_stated_units(
+    query: Mapping[str, str], required: Collection[str] = (), default_limit: int = 1
+) -> int:
+    """Units a results page states in its query: ``page_units`` of its limit, or of
+    ``default_limit`` when the query leaves the limit out and fills one of the
+    ``required`` fields (a page's limit comes from its query alone, so it is the default
+    one: charged so once validated, unless the input is invalid and nothing is computed).
+    Pages of the default limit are the common flood: refused only once validated, each
+    took the event loop 1.3 ms (tests/server/test_overload.py), at the door 0.1 ms.
 
     >>> page_stated_units({"limit": "100"}), page_stated_units({})
-    (11, 1)
+    (21, 1)
+    >>> page_stated_units({"load": "100"}, required=("load",), default_limit=10)
+    3
+    >>> page_stated_units({"load": " "}, required=("load",), default_limit=10)
+    1
     """
+    if "limit" not in query and any(query.get(name, "").strip() for name in required):
+        return page_units(default_limit)
     return page_units(stated_limit(query))
 
 
