@@ -302,12 +302,12 @@ RESIZED = """() => [...document.querySelectorAll('.js-plotly-plot')].every(chart
                           - chart.getBoundingClientRect().width) < 1; })"""
 
 
-def resize(page: Any, width: int) -> None:
+def resize(page: Any, width: int, height: int = HEIGHT) -> None:
     """``page`` at ``width``: the layout is CSS media queries, which apply at once, and the
     charts, which Plotly redraws for the new width (RESIZED); nothing else the app draws
-    depends on the width it was loaded at."""
-    if page.viewport_size["width"] != width:
-        page.set_viewport_size({"width": width, "height": HEIGHT})
+    depends on the width it was loaded at (static/js/app.js reads no width)."""
+    if page.viewport_size != {"width": width, "height": height}:
+        page.set_viewport_size({"width": width, "height": height})
         page.wait_for_function(RESIZED)
 
 
