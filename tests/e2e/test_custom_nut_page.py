@@ -7,6 +7,8 @@ second time: "/custom bronze-nut", "/custom results" (its checks not run named) 
 from pathlib import Path
 from typing import Any
 
+from tests.e2e.test_accessibility import resize
+
 #: Tr12x3 (ISO 2904: d 12 mm, P 3 mm, d3 8.5 mm) in C45 steel, as the form takes it
 TR12X3 = {
     "outer_diameter_mm": "12",
@@ -42,47 +44,50 @@ def _collect(errors: list[str]) -> Any:
 def test_a_bronze_nut_gives_the_custom_screw_the_catalogs_checks(
     browser: Any, live_server: str, artifacts: Path
 ) -> None:
-    for width in (1280, 390):
-        context = _context(browser, width)
-        page = context.new_page()
-        errors: list[str] = []
-        page.on("console", _collect(errors))
-        page.goto(live_server + "/custom")
-        page.select_option("#f-material", "c45-steel")
-        page.select_option("#f-nut", "bronze")
-        for name, value in {**TR12X3, "pitch_mm": "3", **AXIS}.items():
-            page.fill(f"#f-{name}", value)
-        page.wait_for_function("() => location.search.includes('length=400')")
-        page.wait_for_selector("li.check[data-check=bearing_pressure]")
-        custom = _check_names(page)
+    """Typed on a phone (390 px), then the same page resized to 1280 px (``resize``)."""
+    context = _context(browser, 390)
+    page = context.new_page()
+    errors: list[str] = []
+    page.on("console", _collect(errors))
+    page.goto(live_server + "/custom")
+    page.select_option("#f-material", "c45-steel")
+    page.select_option("#f-nut", "bronze")
+    for name, value in {**TR12X3, "pitch_mm": "3", **AXIS}.items():
+        page.fill(f"#f-{name}", value)
+    page.wait_for_function("() => location.search.includes('length=400')")
+    page.wait_for_selector("li.check[data-check=bearing_pressure]")
+    query = "&".join(f"{k}={v}" for k, v in AXIS.items())
+    catalog = context.new_page()
+    catalog.goto(f"{live_server}/detail?{query}&id=Tr12x3-bronze")
+    for width in (390, 1280):
+        resize(page, width)
         assert page.locator("table.nut-limits .kind-handbook").count() >= 1
-        query = "&".join(f"{k}={v}" for k, v in AXIS.items())
-        catalog = context.new_page()
-        catalog.goto(f"{live_server}/detail?{query}&id=Tr12x3-bronze")
-        assert custom == _check_names(catalog)
+        assert _check_names(page) == _check_names(catalog)
         assert (
             page.locator(".custom-verdict").inner_text().split(".")[0]
             == catalog.locator(".verdict").inner_text().split(".")[0]
         )
         page.screenshot(path=str(artifacts / f"custom-bronze-nut-{width}.png"), full_page=True)
-        assert errors == []
-        context.close()
+    assert errors == []
+    context.close()
 
 
 def test_a_screw_without_nut_data_names_the_checks_it_skipped(
     browser: Any, live_server: str, artifacts: Path
 ) -> None:
+    """Loaded at 1280 px, then resized to 390 px (``resize``)."""
     query = "&".join(f"{k}={v}" for k, v in {**TR12X3, **AXIS}.items())
+    context = _context(browser, 1280)
+    page = context.new_page()
+    page.goto(f"{live_server}/custom?{query}")
     for width in (1280, 390):
-        context = _context(browser, width)
-        page = context.new_page()
-        page.goto(f"{live_server}/custom?{query}")
+        resize(page, width)
         verdict = page.locator(".custom-verdict").inner_text()
         assert "every check" not in verdict
         assert "Not checked:" in verdict and "Nut contact pressure (no " in verdict
         assert page.locator(".custom-verdict").is_visible()
         page.screenshot(path=str(artifacts / f"custom-skipped-checks-{width}.png"))
-        context.close()
+    context.close()
 
 
 def test_the_phone_bar_shows_the_top_screws_whole_id(
@@ -127,26 +132,28 @@ def test_the_acceleration_unit_choice_converts_and_its_link_reproduces_the_answe
     browser: Any, live_server: str, artifacts: Path
 ) -> None:
     """2000 mm/s² typed, then g chosen: the field shows 0.2039 g (2 / 9.80665), the
-    results stay the same, and the share link opens in g with the same answer."""
-    for width in (1280, 390):
-        context = _context(browser, width)
-        page = context.new_page()
-        page.goto(f"{live_server}/?load=50&speed=200&length=500&stroke=300&accel=2000")
-        page.wait_for_selector("tbody.candidate")
-        before = page.locator("tbody.candidate .torque-peak").first.inner_text()
-        page.select_option("#f-accel_unit", "g")
-        page.wait_for_function("() => location.search.includes('accel_unit=g')")
-        page.wait_for_function(
-            "() => Math.abs(parseFloat(document.querySelector('#f-accel').value) - 0.20394) < 1e-4"
-        )
+    results stay the same, and the share link opens in g with the same answer. Chosen on
+    a phone (390 px), then the same page resized to 1280 px (``resize``)."""
+    context = _context(browser, 390)
+    page = context.new_page()
+    page.goto(f"{live_server}/?load=50&speed=200&length=500&stroke=300&accel=2000")
+    page.wait_for_selector("tbody.candidate")
+    before = page.locator("tbody.candidate .torque-peak").first.inner_text()
+    page.select_option("#f-accel_unit", "g")
+    page.wait_for_function("() => location.search.includes('accel_unit=g')")
+    page.wait_for_function(
+        "() => Math.abs(parseFloat(document.querySelector('#f-accel').value) - 0.20394) < 1e-4"
+    )
+    page.wait_for_selector("tbody.candidate")
+    link = page.get_attribute("a.share-link", "href")
+    assert link is not None and "accel_unit=g" in link
+    other = context.new_page()
+    other.goto(live_server + link)
+    assert other.input_value("#f-accel_unit") == "g"
+    assert other.locator("tbody.candidate .torque-peak").first.inner_text() == before
+    for width in (390, 1280):
+        resize(page, width)
         assert "g" in page.locator("label[for=f-accel] .unit").inner_text()
-        page.wait_for_selector("tbody.candidate")
         assert page.locator("tbody.candidate .torque-peak").first.inner_text() == before
-        link = page.get_attribute("a.share-link", "href")
-        assert link is not None and "accel_unit=g" in link
-        other = context.new_page()
-        other.goto(live_server + link)
-        assert other.input_value("#f-accel_unit") == "g"
-        assert other.locator("tbody.candidate .torque-peak").first.inner_text() == before
         page.screenshot(path=str(artifacts / f"accel-unit-g-{width}.png"))
-        context.close()
+    context.close()

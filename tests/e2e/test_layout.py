@@ -8,6 +8,8 @@ from typing import Any
 
 import pytest
 
+from tests.e2e.test_accessibility import resize
+
 #: every optional column: the peak and RMS torque of a move, the share of a motor used.
 WIDEST = (
     "load=50&speed=200&length=500&stroke=300&accel=2000&moving_mass_kg=5&max_torque=0.5"
@@ -25,26 +27,33 @@ def open_first_detail(page: Any) -> None:
     page.wait_for_selector("tbody.candidate >> nth=0 >> dl.facts")
 
 
-@pytest.mark.parametrize("width", [1280, 390])
 def test_the_results_fit_the_viewport_with_a_detail_open(
-    browser: Any, live_server: str, artifacts: Path, width: int
+    browser: Any, live_server: str, artifacts: Path
 ) -> None:
-    context = browser.new_context(viewport={"width": width, "height": 900})
+    """Loaded once at 1280 px and resized to 390 px (``resize``: the charts redrawn), with
+    every detail closed, then with the first one open at each width."""
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
     page.goto(f"{live_server}/?{WIDEST}")
     page.wait_for_selector("tbody.candidate .motor-use")
-    closed = page.evaluate(WIDTHS)
-    assert closed["page"] <= closed["viewport"] == width
-    if width == 1280:  # the table itself, not only the page: no column scrolled away
-        assert closed["table"] <= closed["region"]
-        governing = page.locator("table.candidates thead th:last-child")
-        assert "Governing" in governing.inner_text()
-        box = governing.bounding_box()
-        assert box is not None and box["width"] > 40 and box["x"] + box["width"] <= width
+    closed: dict[int, dict[str, float]] = {}
+    for width in (1280, 390):
+        resize(page, width)
+        closed[width] = page.evaluate(WIDTHS)
+        assert closed[width]["page"] <= closed[width]["viewport"] == width
+        if width == 1280:  # the table itself, not only the page: no column scrolled away
+            assert closed[width]["table"] <= closed[width]["region"]
+            governing = page.locator("table.candidates thead th:last-child")
+            assert "Governing" in governing.inner_text()
+            box = governing.bounding_box()
+            assert box is not None and box["width"] > 40 and box["x"] + box["width"] <= width
     open_first_detail(page)
-    opened = page.evaluate(WIDTHS)
-    assert opened["page"] <= width and opened["table"] <= max(opened["region"], closed["table"])
-    page.screenshot(path=str(artifacts / f"results-detail-open-{width}.png"))
+    for width in (390, 1280):
+        resize(page, width)
+        opened = page.evaluate(WIDTHS)
+        assert opened["page"] <= width
+        assert opened["table"] <= max(opened["region"], closed[width]["table"])
+        page.screenshot(path=str(artifacts / f"results-detail-open-{width}.png"))
     context.close()
 
 
@@ -75,24 +84,26 @@ def test_the_phone_results_bar_covers_no_result(
 PLAIN = "load=50&speed=200&length=500&moving_mass_kg=5"
 
 
-@pytest.mark.parametrize("width", [1280, 390])
 def test_the_results_start_near_the_top_with_advanced_closed(
-    browser: Any, live_server: str, artifacts: Path, width: int
+    browser: Any, live_server: str, artifacts: Path
 ) -> None:
     """With Advanced closed the results begin within a screen and a half and the first
     candidate within two screens, at either width (measured: results at 0.66 and 1.25
-    screens, the first candidate at 1.05 and 1.56), not five screens down."""
-    context = browser.new_context(viewport={"width": width, "height": 900})
+    screens, the first candidate at 1.05 and 1.56), not five screens down. Loaded at
+    1280 px, then resized to 390 px."""
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
     page.goto(f"{live_server}/?{PLAIN}")
     page.wait_for_selector("tbody.candidate")
     assert page.locator("details.advanced[open]").count() == 0
-    tops = page.evaluate(
-        """() => ['#results', 'tbody.candidate'].map(
-             s => document.querySelector(s).getBoundingClientRect().top + scrollY)"""
-    )
-    assert 0 < tops[0] <= 1.5 * 900 and tops[0] < tops[1] <= 2 * 900
-    page.screenshot(path=str(artifacts / f"results-start-{width}.png"))
+    for width in (1280, 390):
+        resize(page, width)
+        tops = page.evaluate(
+            """() => ['#results', 'tbody.candidate'].map(
+                 s => document.querySelector(s).getBoundingClientRect().top + scrollY)"""
+        )
+        assert 0 < tops[0] <= 1.5 * 900 and tops[0] < tops[1] <= 2 * 900, width
+        page.screenshot(path=str(artifacts / f"results-start-{width}.png"))
     context.close()
 
 
@@ -108,26 +119,28 @@ SET_GROUPS = PLAIN + "&stroke=200&accel=2000&max_torque=0.4"
 #: error line and "Add a move" button, no row) then joined the form: 82.8 px and its 9.6 px
 #: margin at 1280 px, 2839 + 92.4 = 2931 px, 3.26 screens (measured 2931.5 px); at 390 px
 #: the results begin at 3537 px, 3.93 screens
-@pytest.mark.parametrize(("width", "screens"), [(1280, 3.3), (390, 4.5)])
 def test_the_results_stay_near_the_top_with_advanced_groups_open(
-    browser: Any, live_server: str, artifacts: Path, width: int, screens: float
+    browser: Any, live_server: str, artifacts: Path
 ) -> None:
     """Only the groups holding a set value open, each spanning the panel with its fields
     in columns, and on a phone an Advanced field's help shows while it is in use: with
     three groups open the results begin at 2.33 screens at 1280 px and 3.28 at 390 px
-    (3.83 and 5.16 when every group was one tall column with its help always shown)."""
-    context = browser.new_context(viewport={"width": width, "height": 900})
+    (3.83 and 5.16 when every group was one tall column with its help always shown).
+    Loaded at 1280 px, then resized to 390 px."""
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
     page.goto(f"{live_server}/?{SET_GROUPS}")
     page.wait_for_selector("tbody.candidate")
     assert page.locator("details.group[open]").count() == 3
     assert page.locator("details.group:not([open])").count() >= 2
-    top = page.evaluate("() => document.querySelector('#results').getBoundingClientRect().top")
-    assert 0 < top <= screens * 900
-    if width == 390:  # a field's help appears when the field is focused
-        hint = page.locator("#h-stroke")
-        assert not hint.is_visible()
-        page.focus("#f-stroke")
-        assert hint.is_visible()
-    page.screenshot(path=str(artifacts / f"advanced-groups-open-{width}.png"), full_page=True)
+    for width, screens in ((1280, 3.3), (390, 4.5)):
+        resize(page, width)
+        top = page.evaluate("() => document.querySelector('#results').getBoundingClientRect().top")
+        assert 0 < top <= screens * 900, width
+        if width == 390:  # a field's help appears when the field is focused
+            hint = page.locator("#h-stroke")
+            assert not hint.is_visible()
+            page.focus("#f-stroke")
+            assert hint.is_visible()
+        page.screenshot(path=str(artifacts / f"advanced-groups-open-{width}.png"), full_page=True)
     context.close()
