@@ -1,10 +1,13 @@
 """HTTP figures: throughput and latency against a bare ceiling, page weight, memory, soak.
 
-Each server is a real uvicorn subprocess (``--http httptools --workers 1``, access log
-off) pinned to CPU 0 when there are two or more CPUs; wrk runs pinned to the others, so
-the server and the load generator do not fight over one core. The app runs on the event
-loop the command serves it on (``app.cli.event_loop``: asyncio's for one worker, uvloop
-for several); the bare ceiling on uvloop, the faster of the two for it.
+The app is served as ``leadscrew-selector`` serves it (``python -m app.cli``, log level
+warning: no access log): its event loop (``app.cli.event_loop``: asyncio's for one worker,
+uvloop for several) and its HTTP protocol (``app.server.protocol``, which reads nothing
+more from a connection it has shed for the answer's Retry-After, so a client told to come
+back later is not served again at once). The bare ceiling is a plain uvicorn subprocess
+(``--http httptools``, uvloop, the faster of the two loops for it). One worker is pinned
+to CPU 0 when there are two or more CPUs; wrk runs pinned to the others, so the server and
+the load generator do not fight over one core.
 """
 
 import gzip
@@ -20,7 +23,6 @@ from html.parser import HTMLParser
 from pathlib import Path
 from urllib.parse import urlsplit
 
-from app.cli import event_loop
 from bench import wrk
 from bench.report import Report
 from deploy.local import free_port, stop, wait_until_healthy
@@ -51,15 +53,17 @@ def fetch(
 
 @contextmanager
 def server(target: str, *, factory: bool, workers: int = 1) -> Iterator[tuple[int, int]]:
-    """A uvicorn subprocess serving ``target`` with this checkout's code (its root first
-    on PYTHONPATH); yields (port, pid) once it answers. One worker is pinned to CPU 0;
+    """A subprocess serving ``target`` with this checkout's code (its root first on
+    PYTHONPATH): the app (``factory``) as ``python -m app.cli`` serves it, anything else by
+    plain uvicorn; yields (port, pid) once it answers. One worker is pinned to CPU 0;
     more share every CPU with wrk."""
     port = free_port()
-    cmd = [sys.executable, "-m", "uvicorn", target, *(["--factory"] if factory else [])]
-    loop = event_loop(workers) if factory else "uvloop"
-    cmd += ["--loop", loop, "--http", "httptools", "--workers", str(workers)]
+    if factory:
+        cmd = [sys.executable, "-m", "app.cli", "--workers", str(workers)]
+    else:
+        cmd = [sys.executable, "-m", "uvicorn", target, "--loop", "uvloop", "--http", "httptools"]
+        cmd += ["--no-access-log"]
     cmd += ["--host", "127.0.0.1", "--port", str(port), "--log-level", "warning"]
-    cmd += ["--no-access-log"]
     if CLIENT_CPUS is not None and workers == 1:
         cmd = ["taskset", "-c", SERVER_CPU, *cmd]
     env = {
