@@ -10,7 +10,6 @@ from app.contract.schemas import COMPACT_VIEWS, VIEWS, ApplicationIn, CandidateO
 from app.contract.source import Writer
 from app.contract.units import DEFAULT_UNITS
 from app.core.selection import select
-from app.main import create_app
 from app.report.reader import reader
 from app.report.service import INPUT_RANGES
 from tests.compact_form import assert_compact_of
@@ -20,10 +19,11 @@ AXIS = {"load_n": 20, "speed_mm_s": 100, "length_mm": 500, "stroke_mm": 300, "le
 AXIS |= {"accel_mm_s2": 1000, "cycles_per_day": 100}
 
 
-def test_a_full_selection_through_the_api_validates_against_its_own_model() -> None:
+def test_a_full_selection_through_the_api_validates_against_its_own_model(
+    client: TestClient,
+) -> None:
     """The select response (built without validation at every level) is valid JSON for
     ``SelectOut``: every required field of every nested model is there."""
-    client = TestClient(create_app())
     query = "load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10&stroke_mm=300&detail=full"
     body = client.get(f"/api/v1/select?{query}&accel_mm_s2=1000&vacuum=true").json()
     out = SelectOut.model_validate(body)

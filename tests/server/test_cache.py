@@ -18,6 +18,8 @@ from app.web import pages
 
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
 PAGE = "/?load=100&speed=50&length=500&lead=10"
+#: each test builds an app of its own settings, over the one built-in catalog
+pytestmark = pytest.mark.usefixtures("catalog_loaded_once")
 
 
 def _cache(app: FastAPI) -> ResponseCache:

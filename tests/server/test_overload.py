@@ -21,6 +21,8 @@ from app.web import pages
 from tests.server.asgi import asgi_get, scope
 
 SELECT = b"load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
+#: each test builds an app of its own settings, over the one built-in catalog
+pytestmark = pytest.mark.usefixtures("catalog_loaded_once")
 
 
 def _run(coroutine: Awaitable[Any]) -> Any:

@@ -162,6 +162,7 @@ def test_an_unexpected_error_is_a_500_with_security_headers(
     assert failing_client.get("/api/v1/health").status_code == 200
 
 
+@pytest.mark.usefixtures("catalog_loaded_once")
 def test_a_500_says_it_closes_and_logs_a_line_each_and_the_traceback_once(
     new_failing_client: TestClient, caplog: pytest.LogCaptureFixture
 ) -> None:
@@ -438,6 +439,7 @@ def test_oversized_queries_get_414(
     assert client.get("/api/v1/health").status_code == 200
 
 
+@pytest.mark.usefixtures("catalog_loaded_once")
 def test_many_parameters_are_refused_even_in_a_short_query() -> None:
     app = create_app(Settings(max_query_chars=1_000_000))
     with TestClient(app) as test_client:

@@ -202,9 +202,9 @@ def test_warnings_are_listed_beside_the_candidate(client: TestClient) -> None:
 
 
 def test_catalog_groups_series_by_family_with_a_comparison_table(
-    client: TestClient, catalog: Catalog
+    catalog_page: BeautifulSoup, catalog: Catalog
 ) -> None:
-    page = soup(client.get("/catalog").text)
+    page = catalog_page
     sections = page.select("section.family")
     families = list(dict.fromkeys(s.family for s in catalog.series.values()))
     assert [s["data-family"] for s in sections] == families
@@ -224,8 +224,8 @@ def test_catalog_groups_series_by_family_with_a_comparison_table(
     assert iso.select_one("td.variants").text == "bronze, acetal, ptfe"
 
 
-def test_catalog_regions_have_unique_labels(client: TestClient) -> None:
-    page = soup(client.get("/catalog").text)
+def test_catalog_regions_have_unique_labels(catalog_page: BeautifulSoup) -> None:
+    page = catalog_page
     regions = page.select("[role=region]")
     labels = [r.get("aria-label") or r.get("aria-labelledby") for r in regions]
     assert all(labels) and len(set(labels)) == len(labels)

@@ -169,9 +169,11 @@ def test_share_url_reopens_the_same_results(client: TestClient) -> None:
     ],
     ids=["empty", "results", "error", "catalog", "detail", "custom"],
 )
-def test_no_inline_script_style_or_handler(client: TestClient, path: str) -> None:
+def test_no_inline_script_style_or_handler(
+    client: TestClient, path: str, request: pytest.FixtureRequest
+) -> None:
     """The CSP (script-src 'self'; style-src 'self') would block any of these."""
-    page = soup(client.get(path))
+    page = request.getfixturevalue("catalog_page") if path == "/catalog" else soup(client.get(path))
     for script in page.select("script"):
         assert script.get("src") or script.get("type") == "application/json", script
     assert not page.select("style, [style]")
@@ -751,9 +753,9 @@ def test_export_links_carry_the_share_query(client: TestClient) -> None:
 
 
 def test_catalog_page_lists_every_series_with_provenance(
-    client: TestClient, catalog: Catalog
+    catalog_page: BeautifulSoup, catalog: Catalog
 ) -> None:
-    page = soup(client.get("/catalog"))
+    page = catalog_page
     sections = page.select("details.series")
     assert [s["id"] for s in sections] == list(catalog.series)
     for section in sections:
