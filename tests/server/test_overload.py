@@ -317,17 +317,23 @@ def test_the_health_check_is_answered_while_results_pages_compute(
     assert _run(_health_beside_pages(release)) == ["health", "page", "page"]
 
 
-async def _stated_scenario() -> dict[str, Any]:
-    """Two results pages of fifty held in progress (11 units each of 32), then a third
-    page, a compact select and the health check arrive."""
-    held = HeldApp()
-    shedder = OverloadMiddleware(
-        held,
+def stating_shedder(app: Any) -> OverloadMiddleware:
+    """``app`` behind the middleware as the app sets it (32 units, the health check never
+    shed), with the costs its routes state before their input is read."""
+    return OverloadMiddleware(
+        app,
         max_in_flight=32,
         retry_after_s=1,
         exempt_paths=frozenset({"/api/v1/health"}),
         stated_costs=STATED_COSTS,
     )
+
+
+async def _stated_scenario() -> dict[str, Any]:
+    """Two results pages of fifty held in progress (11 units each of 32), then a third
+    page, a compact select and the health check arrive."""
+    held = HeldApp()
+    shedder = stating_shedder(held)
     page = b"load=%d&speed=50&length=500&limit=50"
     waiting = [asyncio.create_task(asgi_get(shedder, "/", page % i)) for i in (101, 102)]
     while held.holding < 2:
@@ -393,13 +399,7 @@ async def _default_pages_scenario() -> tuple[int, int, int]:
     """Ten results pages of the default limit (no ``limit`` in the query) held in
     progress against 32 units, then an eleventh arrives."""
     held = HeldApp()
-    shedder = OverloadMiddleware(
-        held,
-        max_in_flight=32,
-        retry_after_s=1,
-        exempt_paths=frozenset({"/api/v1/health"}),
-        stated_costs=STATED_COSTS,
-    )
+    shedder = stating_shedder(held)
     page = b"load=%d&speed=50&length=500"
     waiting = [asyncio.create_task(asgi_get(shedder, "/", page % (101 + i))) for i in range(10)]
     while held.holding < 10:
