@@ -256,7 +256,17 @@ def from_api(value: float, quantity: Quantity, units: Mapping[str, str]) -> floa
     >>> from_api(-40.0, "temperature", {**DEFAULT_UNITS, "length_unit": "in"})
     -40.0
     """
-    return (value - offset(quantity, units)) / display_system(units)[quantity][1]
+    return _in_display(value, quantity, display_system(units), DISPLAY_OFFSETS[_key(units)])
+
+
+def _in_display(
+    value: float,
+    quantity: Quantity,
+    system: Mapping[Quantity, tuple[str, float]],
+    offsets: Mapping[Quantity, float],
+) -> float:
+    """``from_api`` in the display system ``system`` with its ``offsets``."""
+    return (value - offsets.get(quantity, 0.0)) / system[quantity][1]
 
 
 #: dimension -> number format in sentences (a speed in rpm needs no decimals).
@@ -409,8 +419,7 @@ class Display:
 
     def value(self, api_value: float, quantity: Quantity) -> float:
         """The number in display units."""
-        system, offsets = self._system
-        return (api_value - offsets.get(quantity, 0.0)) / system[quantity][1]
+        return _in_display(api_value, quantity, *self._system)
 
     def text(self, api_value: float | None, quantity: Quantity, digits: int = 4) -> str:
         """The number in display units as text; an em dash for None."""

@@ -29,15 +29,15 @@ LOAD_FACTOR = 1.2
 def mean_load(app: Application) -> float:
     """The cycle's cubic mean axial load [N], each moving segment weighted by its travel
     (its revolutions); 0 without a stroke."""
-    forces, travels = travel_thrusts(app)
-    return ballscrew.cubic_mean_load(forces, travels)
+    return ballscrew.cubic_mean_load(*travel_thrusts(app))
 
 
 def life_years(app: Application, dynamic_load_n: Array, lead_m: Array) -> Array:
     """The L10 life in years of the duty [year] for each nut of rating Ca [N] and lead [m]."""
-    _, travels = travel_thrusts(app)
+    forces, travels = travel_thrusts(app)
     cycles = motion.cycles_per_day(app) or 0.0
-    revolutions = ballscrew.rated_life_revolutions(dynamic_load_n, LOAD_FACTOR, mean_load(app))
+    mean_n = ballscrew.cubic_mean_load(forces, travels)
+    revolutions = ballscrew.rated_life_revolutions(dynamic_load_n, LOAD_FACTOR, mean_n)
     revolutions_per_day = sum(travels) / lead_m * cycles
     return np.asarray(revolutions / (revolutions_per_day * life.DAYS_PER_YEAR), dtype=np.float64)
 
@@ -68,9 +68,13 @@ class BallLife(Check):
     capacity_sources = ("dynamic_load",)
 
     def applies(self, app: Application) -> bool:
-        cycles = motion.cycles_per_day(app)
-        loaded = app.stroke_m is not None and mean_load(app) > 0.0
-        return bool(app.required_life_years is not None and app.stroke_m and cycles and loaded)
+        # the cheap conditions first: the mean load works out the whole cycle
+        return bool(
+            app.required_life_years is not None
+            and app.stroke_m
+            and motion.cycles_per_day(app)
+            and mean_load(app) > 0.0
+        )
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -80,12 +84,12 @@ class BallLife(Check):
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        _, travels = travel_thrusts(app)
+        forces, travels = travel_thrusts(app)
         return {
             "Y_req": app.required_life_years,
             "Ca": t.dynamic_load_n,
             "f_w": LOAD_FACTOR,
-            "F_m": mean_load(app),
+            "F_m": ballscrew.cubic_mean_load(forces, travels),
             "travel": sum(travels),
             "lead": t.lead_m,
             "cycles": motion.cycles_per_day(app),
