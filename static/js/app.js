@@ -547,7 +547,8 @@
       note.hidden = false;
     } else {
       target.classList.remove("stale");
-      var charts = target.querySelector("section.charts");
+      // the old charts, or the slot still holding their place
+      var charts = target.querySelector("section.charts, #charts-slot");
       chartsHeight = charts ? charts.offsetHeight : 0;
       var url = chartsUrl(event.detail.serverResponse);
       if (url) {

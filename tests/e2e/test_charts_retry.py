@@ -54,3 +54,31 @@ def test_charts_always_refused_are_asked_a_few_times_and_the_link_stays(
     page.wait_for_timeout(2_000)
     assert len(asked) == 5  # CHARTS_TRIES in static/js/app.js
     assert page.is_visible("#charts-slot .charts-link a")
+
+
+def test_a_new_answer_before_the_charts_arrive_sets_no_inline_style(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    """While an answer's charts are on their way their slot holds the old charts' height;
+    the next answer's swap must not copy that height onto the new slot as a style
+    attribute, which the page's policy (style-src 'self') refuses."""
+    page.goto(f"{live_server}/?{AXIS}")
+    page.wait_for_selector("#chart-torque .main-svg", timeout=15_000)
+    held: list[Any] = []
+
+    def hold(route: Any) -> None:  # asked, never answered
+        held.append(route)
+
+    page.route("**/charts?*", hold)
+    page.fill("#f-load", "200")
+    page.wait_for_function("() => location.search.includes('load=200')")
+    page.wait_for_function(
+        "() => parseFloat(getComputedStyle(document.getElementById('charts-slot')).minHeight) > 0"
+    )
+    page.fill("#f-load", "300")
+    page.wait_for_function("() => location.search.includes('load=300')")
+    page.wait_for_function("() => !document.querySelector('.htmx-request, .htmx-settling')")
+    assert held, "the charts were asked for"
+    slot = page.locator("#charts-slot")
+    assert float(slot.evaluate("s => parseFloat(getComputedStyle(s).minHeight)")) > 0
+    assert console_errors == []
