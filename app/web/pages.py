@@ -39,7 +39,7 @@ from app.contract.move_table import (
     table_rows,
 )
 from app.contract.params import unknown_parameters
-from app.contract.reported import columns, show, value_of
+from app.contract.reported import columns, row_cells, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
 from app.contract.units import UNIT_LABELS, Display
@@ -191,6 +191,7 @@ def page_inputs(
         rejected_groups=[],
         check_label=check_label,
         columns=columns,
+        row_cells=row_cells,
         show=show,
         value_of=value_of,
         rank_text="",

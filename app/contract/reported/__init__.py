@@ -10,9 +10,9 @@ Everything that shows a number reads this table:
 - the output models: a row with a ``source`` adds its field to ``CandidateOut``
   (``app.contract.schemas``), and the views take the rows that name them;
 - the results table (``templates/partials/candidates.html``) loops over ``columns``:
-  a plain number renders by its ``cell`` kind (``show``), a composite cell (the screw,
-  the torque with a move, the breakdown, holding, life, governing) by the macro of that
-  name in ``templates/partials/cells.html``;
+  a plain number renders by its ``cell`` kind (``show``; a row at a time: ``row_cells``),
+  a composite cell (``COMPOSITE``: the screw, the torque with a move, the breakdown,
+  holding, life, governing) by the macro of that name in ``templates/partials/cells.html``;
 - the CSV (``app.web.export``), the compare page (``app.web.compare``), the guide's
   column help (``app.web.guide``) and the formulas table (``app.report.formulas``).
 
@@ -30,12 +30,21 @@ from typing import Annotated, Any, Optional
 from pydantic import Field
 
 from app.contract.reported import capacity, drive, duty, holding, moves, order, screw, verdict
-from app.contract.reported.row import Better, Cell, Formula, Reported, Shown, ViewName
+from app.contract.reported.row import (
+    COMPOSITE,
+    Better,
+    Cell,
+    Formula,
+    Reported,
+    Shown,
+    ViewName,
+)
 from app.contract.units import Display, sig
 from app.core.phrase import figures
 
 __all__ = [
     "BY_KEY",
+    "COMPOSITE",
     "REPORTED",
     "Better",
     "Cell",
@@ -46,6 +55,7 @@ __all__ = [
     "added_fields",
     "columns",
     "merged",
+    "row_cells",
     "show",
     "value_of",
     "view_of",
@@ -108,6 +118,25 @@ def show(row: Reported, value: Any, d: Display) -> str:
     if isinstance(value, float):
         return d.text(value, row.quantity, row.digits) if row.quantity else sig(value, row.digits)
     return str(value)
+
+
+def row_cells(model: Any, shown: Iterable[Reported], d: Display) -> list[tuple[Reported, Any]]:
+    """A candidate's results-table row: each shown column with its plain cell's text
+    (``show``), None for a composite cell (``COMPOSITE``: its macro draws it). One call
+    a row, where the table calling ``show`` and ``value_of`` a cell cost a fifth of its
+    rendering.
+
+    >>> from app.contract.units import DEFAULT_UNITS
+    >>> shown = [BY_KEY["lead_mm"], BY_KEY["efficiency"], BY_KEY["id"]]
+    >>> d = Display(dict(DEFAULT_UNITS))
+    >>> cells = row_cells({"lead_mm": 10.0, "efficiency": 0.456}, shown, d)
+    >>> [(row.key, text) for row, text in cells]
+    [('lead_mm', '10'), ('efficiency', '46 %'), ('id', None)]
+    """
+    return [
+        (row, None if row.cell in COMPOSITE else show(row, value_of(model, row.key), d))
+        for row in shown
+    ]
 
 
 def columns(move: bool, motor: bool) -> list[Reported]:

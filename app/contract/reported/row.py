@@ -25,6 +25,11 @@ Cell = Literal[
     "life",  # the life band in years, else the rated travel, with its model
     "governing",  # the governing check's label with the pass marks and warnings
 ]
+#: The cells drawn by a macro of their own (``templates/partials/cells.html``, one macro
+#: per kind, named as it); every other kind is plain text, written by ``show``.
+COMPOSITE: frozenset[Cell] = frozenset(
+    ("screw", "peak", "breakdown", "holding", "life", "governing")
+)
 #: When a results-table column is shown: always, with a move (a stroke), without one, or
 #: when a motor is given (or the ranking is by motor margin).
 Shown = Literal["always", "move", "no_move", "motor"]
