@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from app.core import motion, segments
-from app.core.checks import BY_NAME
+from app.core.checks import BY_NAME, ball_life
 from app.core.checks.base import Check
 from app.core.model import Application, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
@@ -66,6 +66,12 @@ class Batch:
         """The equivalent stroke [m] and the cycles a day (``motion.equivalent_stroke``,
         ``motion.cycles_per_day``) that turn a travel into years: once per batch."""
         return motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
+
+    @cached_property
+    def mean_load_n(self) -> float:
+        """The cycle's cubic mean axial load [N] a ball nut's L10 life is rated at
+        (``ball_life.mean_load``), the same for every candidate: worked out once per batch."""
+        return ball_life.mean_load(self.app)
 
     @cached_property
     def slots(self) -> list["Slot"]:

@@ -10,7 +10,7 @@ import numpy as np
 
 from app.core import motion, segments
 from app.core.batch import Batch
-from app.core.checks.ball_life import LOAD_FACTOR, mean_load
+from app.core.checks.ball_life import LOAD_FACTOR
 from app.core.checks.wear_life import life_band
 from app.core.formulas import ballscrew, critical_speed, life
 
@@ -157,7 +157,7 @@ class Life(Section):
     def _l10_travel_m(self) -> float:
         """A ball nut's L10 life as travel [m]: its rated revolutions times the lead
         (infinite without a thrust to tire it)."""
-        load_n, s = mean_load(self.app), self.screw
+        load_n, s = self.batch.mean_load_n, self.screw
         if not (load_n > 0.0 and s.dynamic_load_n):
             return math.inf
         return ballscrew.rated_life_revolutions(s.dynamic_load_n, LOAD_FACTOR, load_n) * s.lead_m

@@ -106,9 +106,9 @@ def _excluding(c: CandidateOut) -> list[str]:
     ]
 
 
-def versus_url(inputs: ApplicationIn, units: Mapping[str, str]) -> str:
-    """The versus page's link: the share link's query."""
-    return f"/versus?{share_query(inputs, units)}"
+def versus_url(query: str) -> str:
+    """The versus page's link: the share link's ``query`` (``share_query``)."""
+    return f"/versus?{query}"
 
 
 def run_versus(
@@ -120,6 +120,6 @@ def run_versus(
         sides=[_side(inputs, catalog, k, units) for k in KINDS],
         price_note=PRICE_NOTE,
         catalog_version=catalog.version,
-        share_url=versus_url(inputs, units),
+        share_url=versus_url(share_query(inputs, units)),
         api_url=api_url("versus", inputs),
     )

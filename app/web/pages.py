@@ -216,17 +216,19 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     context["query"] = share_query(inputs, units)
     context["share_url"] = "/?" + context["query"]
     context["compare_fields"] = parse_qsl(context["query"])
-    context["versus_url"] = versus_url(inputs, units) if kinds_offered(inputs, catalog) else None
+    offered = kinds_offered(inputs, catalog)
+    context["versus_url"] = versus_url(context["query"]) if offered else None
     charted, context["charting_passed"] = chart_candidates(result)
     context["charted"] = bool(charted)
     context["rejected_groups"] = rejected_groups(rejected)
-    rank_by = str(inputs.model_dump()["rank_by"])
+    given = inputs.model_dump()
+    rank_by = str(given["rank_by"])
     text = BY_PAGE["rank_by"].choice_text(rank_by)
     context["rank_text"] = text[:1].lower() + text[1:]
     context["ranked_by"] = rank_by
     if not result.candidates:
         context["advice"] = no_pass_advice(result, units)
-    if inputs.model_dump()["motor"] == ANY_MOTOR:
+    if given["motor"] == ANY_MOTOR:
         context["pairs"] = run_pairs(inputs, catalog)
 
 
