@@ -60,8 +60,10 @@ PRICE_NOTE = (
 
 def kind_families(catalog: Catalog, kind: Kind, asked: list[str] | None) -> list[str]:
     """The catalog's families of screws of ``kind``, within ``asked`` when given, in
-    catalog order."""
-    found = dict.fromkeys(s.family_id for s in catalog.index.table.screws if s.screw_type == kind)
+    catalog order: read off each series' first screw (a series is one size of one
+    family, every screw of it of one kind), not off each of the catalog's screws."""
+    firsts = (series.screws[0] for series in catalog.series.values() if series.screws)
+    found = dict.fromkeys(s.family_id for s in firsts if s.screw_type == kind)
     return [f for f in found if not asked or f in asked]
 
 

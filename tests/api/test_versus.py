@@ -7,6 +7,8 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 
+from app.report.versus import KINDS, kind_families
+
 #: a light horizontal axis both kinds pass
 LIGHT = {"load_n": "100", "speed_mm_s": "50", "length_mm": "500", "stroke_mm": "200"}
 #: 3 kN at 400 mm/s: every leadscrew's nut slides too fast (PV/speed), a ball screw passes
@@ -41,6 +43,20 @@ def test_each_side_is_the_first_of_its_kinds_selection(client: TestClient) -> No
     assert body["api_url"].startswith("/api/v1/versus?")
     assert body["share_url"].startswith("/versus?")
     assert "no cited, dated list price" in body["price_note"]
+
+
+def test_each_kinds_families_read_off_the_series_are_those_of_every_screw(
+    client: TestClient,
+) -> None:
+    """``kind_families`` reads each series' first screw: the families, in catalog order,
+    that every screw of the catalog gives, within the families asked for."""
+    catalog = client.app.state.catalog  # type: ignore[attr-defined]
+    families = _families(client)
+    for kind in KINDS:
+        assert kind_families(catalog, kind, None) == families[kind]
+    asked = [families["ball"][-1], families["lead"][0]]
+    assert kind_families(catalog, "ball", asked) == [families["ball"][-1]]
+    assert kind_families(catalog, "lead", asked) == [families["lead"][0]]
 
 
 def test_a_kind_without_a_passing_screw_shows_its_nearest_rejected(client: TestClient) -> None:
