@@ -2,7 +2,7 @@
 
 from collections.abc import Container, Mapping, Sequence
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from typing import Any
 from urllib.parse import quote, urlencode
 
@@ -15,6 +15,7 @@ from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn, CustomScrewIn
 from app.contract.units import DEFAULT_UNITS
 from app.core.evaluate import evaluate
+from app.core.record import Candidate
 from app.core.robustness import build_variants
 from app.core.selection import select, with_robustness
 from app.report.formulas import FORMULAS
@@ -81,7 +82,9 @@ def construct_select_out(
 
 
 #: How many page selections are kept: a results page's charts and rejected list (/charts,
-#: /rejected) ask for the selection the page has just made, within a moment of it.
+#: /rejected) ask for the selection the page has just made, within a moment of it. Each
+#: keeps the records of its nearest rejected candidates for /rejected to list, and with
+#: them the screening's arrays (some 0.6 MB of the default catalog).
 RECENT_PAGE_SELECTIONS = 8
 
 
@@ -97,22 +100,54 @@ class _PageQuery:
     units: Mapping[str, str] = field(compare=False)
 
 
+@dataclass(frozen=True)
+class _PageSelection:
+    """A page selection as its parts read it: the page's result, the nearest rejected
+    candidates' records and their list in the ``rejected`` view, written when first read
+    (the page shows how many there are; /rejected, asked when the list is opened, lists
+    them, and each one's fixes cost more than a table row)."""
+
+    result: PageSelectionOut
+    nearest: Sequence[Candidate] = field(repr=False)
+    units: Mapping[str, str] = field(repr=False)
+
+    @cached_property
+    def rejected(self) -> list[CandidateOut]:
+        return [candidate_view(c, "rejected", self.units) for c in self.nearest]
+
+
 def run_page_selection(
     inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
 ) -> tuple[PageSelectionOut, list[CandidateOut]]:
+    """The results page's selection (``run_page_result``) and its nearest rejected
+    candidates in the ``rejected`` view (the list /rejected shows), sentences in
+    ``units``. Callers read the result and never change it."""
+    page = _page_selection(_page_query(inputs, catalog, units))
+    return page.result, page.rejected
+
+
+def run_page_result(
+    inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]
+) -> tuple[PageSelectionOut, int]:
     """The results page's selection: the passing candidates as table rows (the ``row``
-    view; their checks' sentences load with each row's detail) and the rejected ones in
-    the ``rejected`` view (the list; each one's detail loads when opened), sentences in
-    ``units``. The rejected are in full too only when nothing passes: then the charts and
-    the advice are about them. The last few are kept (``RECENT_PAGE_SELECTIONS``): the
-    page's charts, asked for as its table arrives, are drawn from the same selection
-    without making it again. Callers read the result and never change it."""
+    view; their checks' sentences load with each row's detail) and how many nearest
+    rejected candidates it lists (the list loads when opened: ``run_page_selection``),
+    sentences in ``units``. The rejected are in full too only when nothing passes: then
+    the charts and the advice are about them. The last few are kept
+    (``RECENT_PAGE_SELECTIONS``): the page's charts, asked for as its table arrives, and
+    its rejected list are drawn from the same selection without making it again.
+    Callers read the result and never change it."""
+    page = _page_selection(_page_query(inputs, catalog, units))
+    return page.result, len(page.nearest)
+
+
+def _page_query(inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str]) -> _PageQuery:
     key = (inputs.model_dump_json(), tuple(sorted(units.items())), id(catalog), catalog.version)
-    return _page_selection(_PageQuery(key, inputs, catalog, units))
+    return _PageQuery(key, inputs, catalog, units)
 
 
 @lru_cache(maxsize=RECENT_PAGE_SELECTIONS)
-def _page_selection(query: _PageQuery) -> tuple[PageSelectionOut, list[CandidateOut]]:
+def _page_selection(query: _PageQuery) -> _PageSelection:
     inputs, catalog, units = query.inputs, query.catalog, query.units
     selection = select(
         inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
@@ -128,7 +163,7 @@ def _page_selection(query: _PageQuery) -> tuple[PageSelectionOut, list[Candidate
         share_url="/?" + share,
         api_url=api_url("select", inputs, share=share),
     )
-    return out, [candidate_view(c, "rejected", units) for c in selection.rejected]
+    return _PageSelection(out, selection.rejected, units)
 
 
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:

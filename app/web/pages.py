@@ -50,7 +50,7 @@ from app.report.service import (
     compare_url,
     run_compare,
     run_evaluation,
-    run_page_selection,
+    run_page_result,
     run_selection,
 )
 from app.report.versus import KIND_NAMES, kinds_offered, run_versus, versus_url
@@ -188,7 +188,6 @@ def page_inputs(
     or when it has errors, which the context carries)."""
     context = form_context(params, catalog)
     context.update(
-        rejected_groups=[],
         check_label=check_label,
         columns=columns,
         row_cells=row_cells,
@@ -211,8 +210,8 @@ def page_inputs(
 def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalog) -> None:
     """Run the selection of valid ``inputs`` into the page's ``context``."""
     units = context["units"]
-    result, rejected = run_page_selection(inputs, catalog, units)
-    context["result"], context["rejected"] = result, rejected
+    result, context["rejected_count"] = run_page_result(inputs, catalog, units)
+    context["result"] = result
     context["query"] = share_query(inputs, units)
     context["share_url"] = "/?" + context["query"]
     context["compare_fields"] = parse_qsl(context["query"])
@@ -220,7 +219,6 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     context["versus_url"] = versus_url(context["query"]) if offered else None
     charted, context["charting_passed"] = chart_candidates(result)
     context["charted"] = bool(charted)
-    context["rejected_groups"] = rejected_groups(rejected)
     given = inputs.model_dump()
     rank_by = str(given["rank_by"])
     text = BY_PAGE["rank_by"].choice_text(rank_by)

@@ -22,7 +22,7 @@ from app.contract.form import share_query, summary_rows
 from app.contract.move_table import COLUMNS, shown_moves
 from app.contract.reported import REPORTED, show, value_of
 from app.contract.units import Display
-from app.report.service import run_page_selection
+from app.report.service import run_page_result
 from app.server.deps import CatalogDep
 from app.web.figures import result_figures
 from app.web.pages import link_inputs, page_candidate
@@ -41,7 +41,7 @@ def report_context(
     '/'); when nothing passes and no id is given, the nearest rejected candidate; a 422
     page for bad inputs, a 404 page for an unknown id."""
     inputs, units = link_inputs(params, catalog, ("id",))
-    result, _ = run_page_selection(inputs, catalog, units)
+    result, _ = run_page_result(inputs, catalog, units)
     # without an id: the top-ranked screw, or, when none passes, the nearest rejected one
     nearest = result.summary.best_rejected_id or ""
     top = result.candidates[0].id if result.candidates else nearest

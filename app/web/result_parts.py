@@ -16,7 +16,7 @@ from fastapi.responses import HTMLResponse, Response
 from app.catalog import Catalog
 from app.contract.form import share_query
 from app.contract.schemas import ApplicationIn
-from app.report.service import run_page_selection
+from app.report.service import run_page_result, run_page_selection
 from app.server.compute import computed
 from app.server.deps import CatalogDep
 from app.server.headers import is_htmx_fragment
@@ -46,7 +46,7 @@ def _inputs(request: Request, catalog: Catalog) -> tuple[ApplicationIn, dict[str
 def _charts_page(
     request: Request, inputs: ApplicationIn, units: dict[str, str], catalog: Catalog
 ) -> Response:
-    result, _ = run_page_selection(inputs, catalog, units)
+    result, _ = run_page_result(inputs, catalog, units)
     query = share_query(inputs, units)
     context: dict[str, Any] = {
         "figures": result_figures(result, units, catalog),

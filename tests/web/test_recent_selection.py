@@ -60,3 +60,33 @@ def test_other_inputs_or_units_select_again(
     other, _ = service.run_page_selection(heavier, catalog, units)
     assert len(selections) == 3
     assert other.inputs.model_dump()["load_n"] == 125 != first.inputs.model_dump()["load_n"]
+
+
+def test_the_rejected_list_is_written_when_it_is_asked_for(
+    client: TestClient, monkeypatch: pytest.MonkeyPatch, selections: list[Any]
+) -> None:
+    """The page shows how many nearest rejected candidates there are; their list (each
+    one's failed checks and fixes) is written when /rejected asks for it, once, from the
+    page's selection, and holds as many as the page said."""
+    views: list[str] = []
+    view = service.candidate_view
+
+    def counted(c: Any, name: str, *args: Any) -> Any:
+        views.append(name)
+        return view(c, name, *args)
+
+    monkeypatch.setattr(service, "candidate_view", counted)
+    page = client.get("/?load=126&lead=10&speed=50&length=500", headers=HX)
+    assert page.status_code == 200 and "rejected" not in views
+    summary = BeautifulSoup(page.text, "html.parser").select_one("details.rejected summary")
+    assert summary is not None
+    shown = int(
+        summary.text.split("(")[1].split()[0]
+    )  # "Rejected: 12 candidates (10 nearest shown)"
+    rows = views.count("row")
+    for _ in range(2):
+        listed = client.get("/rejected?load=126&lead=10&speed=50&length=500", headers=HX)
+        assert listed.status_code == 200
+        found = BeautifulSoup(listed.text, "html.parser").select("li.rejected-candidate")
+        assert len(found) == shown == views.count("rejected")
+    assert views.count("row") == rows and len(selections) == 1
