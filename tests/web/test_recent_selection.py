@@ -80,9 +80,8 @@ def test_the_rejected_list_is_written_when_it_is_asked_for(
     assert page.status_code == 200 and "rejected" not in views
     summary = BeautifulSoup(page.text, "html.parser").select_one("details.rejected summary")
     assert summary is not None
-    shown = int(
-        summary.text.split("(")[1].split()[0]
-    )  # "Rejected: 12 candidates (10 nearest shown)"
+    # "Rejected: 12 candidates (10 nearest shown)"
+    shown = int(summary.text.split("(")[1].split()[0])
     rows = views.count("row")
     for _ in range(2):
         listed = client.get("/rejected?load=126&lead=10&speed=50&length=500", headers=HX)
