@@ -62,17 +62,17 @@ def full_form_units(limit: int) -> int:
 
 #: Results a page shows for the cost of one compact select: its selection, table rows and
 #: rendering (CPU of the whole request in process, distinct queries, against a compact
-#: select of the default query: with ``limit`` 10, 50 and 100, about 3, 11 and 20 compact
-#: selects; the charts and the rejected list are requests of their own).
-PAGE_CANDIDATES_PER_UNIT = 5
+#: select of the default query: with ``limit`` 10, 50 and 100, about 2.5, 7 and 13 to 15
+#: compact selects; the charts and the rejected list are requests of their own).
+PAGE_CANDIDATES_PER_UNIT = 7
 
 
 def page_units(limit: int) -> int:
     """Units of work of a results page (full or fragment) of ``limit`` results: 1 +
-    limit / 5 (100: 21 units); an empty form is 1.
+    limit / 7 (100: 15 units); an empty form is 1.
 
     >>> page_units(100), page_units(10), page_units(1)
-    (21, 3, 1)
+    (15, 2, 1)
     """
     return 1 + min(max(limit, 1), LIMIT_MOST) // PAGE_CANDIDATES_PER_UNIT
 
@@ -100,9 +100,9 @@ def page_stated_units(
     took the event loop 1.3 ms (tests/server/test_overload.py), at the door 0.1 ms.
 
     >>> page_stated_units({"limit": "100"}), page_stated_units({})
-    (21, 1)
+    (15, 1)
     >>> page_stated_units({"load": "100"}, required=("load",), default_limit=10)
-    3
+    2
     >>> page_stated_units({"load": " "}, required=("load",), default_limit=10)
     1
     """

@@ -260,7 +260,7 @@ def test_the_health_check_is_answered_while_full_forms_compute(
     assert _run(_health_beside_full_forms(release)) == ["health", "full", "full"]
 
 
-#: four results pages of a hundred each (21 units, ``page_units``), however asked
+#: four results pages of a hundred each (15 units, ``page_units``), however asked
 PAGES = {
     "page": lambda app, i: asgi_get(app, "/", b"load=%d&speed=50&length=500&limit=100" % i),
     "encoded": lambda app, i: asgi_get(app, "/", b"load=%d&speed=50&length=500&limit=1%%300" % i),
@@ -270,13 +270,13 @@ PAGES = {
 @pytest.mark.parametrize("ask", PAGES.values(), ids=PAGES.keys())
 def test_a_results_page_costs_by_its_validated_limit(ask: Any) -> None:
     """Issue 31: distinct results pages of a hundred were counted one unit each and held
-    the health check seconds. Four of them (21 units each) against 32: one is taken, the
-    second would take 42, so it, the third and the fourth are shed."""
-    assert _run(_four(ask)) == [200, 503, 503, 503]
+    the health check seconds. Four of them (15 units each) against 32: two are taken, the
+    third would take 45, so it and the fourth are shed."""
+    assert _run(_four(ask)) == [200, 200, 503, 503]
 
 
 def test_results_pages_of_the_default_limit_are_all_taken() -> None:
-    """Pages of 10 results cost 3 units: four of them fit in 32."""
+    """Pages of 10 results cost 2 units: four of them fit in 32."""
     ask = lambda app, i: asgi_get(app, "/", b"load=%d&speed=50&length=500" % i)  # noqa: E731
     assert _run(_four(ask)) == [200, 200, 200, 200]
 
@@ -289,7 +289,7 @@ async def _health_beside_pages(release: threading.Event) -> list[str]:
         await asgi_get(app, path, query)
         finished.append(name)
 
-    # pages of fifty: 11 units each, both taken
+    # pages of fifty: 8 units each, both taken
     queries = [b"load=%d&speed=50&length=500&limit=50" % (101 + i) for i in range(2)]
     started = [asyncio.create_task(call("page", "/", q)) for q in queries]
     for _ in range(10):  # loop turns: the pages are admitted and computing
@@ -330,11 +330,11 @@ def stating_shedder(app: Any) -> OverloadMiddleware:
 
 
 async def _stated_scenario() -> dict[str, Any]:
-    """Two results pages of fifty held in progress (11 units each of 32), then a third
-    page, a compact select and the health check arrive."""
+    """Two results pages of a hundred held in progress (15 units each of 32), then a
+    third page, a compact select and the health check arrive."""
     held = HeldApp()
     shedder = stating_shedder(held)
-    page = b"load=%d&speed=50&length=500&limit=50"
+    page = b"load=%d&speed=50&length=500&limit=100"
     waiting = [asyncio.create_task(asgi_get(shedder, "/", page % i)) for i in (101, 102)]
     while held.holding < 2:
         await asyncio.sleep(0)
@@ -358,14 +358,14 @@ async def _stated_scenario() -> dict[str, Any]:
 
 
 def test_a_query_stating_its_cost_is_shed_before_its_input_is_read() -> None:
-    """Results pages of fifty state 11 units each (1 + 50 / 5, ``page_units``): with
-    two in progress (22 of 32) a third is refused at the door, the route never reached
+    """Results pages of a hundred state 15 units each (1 + 100 / 7, ``page_units``): with
+    two in progress (30 of 32) a third is refused at the door, the route never reached
     (validating it only to refuse it cost the event loop 2.5 ms a request); a compact
     select (1 unit) is still taken, and the health check answered."""
     got = _run(_stated_scenario())
     assert got["third"] == 503
     assert got["reached_by_third"] == 2
-    assert got["in_flight"] == 22
+    assert got["in_flight"] == 30
     assert got["health"] == 200
     assert got["served"] == [200, 200, 200]
     assert got["in_flight_after"] == 0
@@ -374,11 +374,11 @@ def test_a_query_stating_its_cost_is_shed_before_its_input_is_read() -> None:
 @pytest.mark.parametrize(
     ("path", "query", "units"),
     [
-        ("/", {"limit": "100"}, 21),
+        ("/", {"limit": "100"}, 15),
         ("/", {}, 1),  # the empty form: nothing is computed
-        # no limit, a required field filled: the default limit (10), 3 units, as validated
-        ("/", {"load": "100"}, 3),
-        ("/charts", {"load": "100", "speed": "50"}, 3),
+        # no limit, a required field filled: the default limit (10), 2 units, as validated
+        ("/", {"load": "100"}, 2),
+        ("/charts", {"load": "100", "speed": "50"}, 2),
         ("/", {"load": "100", "limit": "1e2"}, 1),  # not plain digits: charged once validated
         ("/", {"limit": "1e2"}, 1),  # not plain digits: charged once validated
         ("/api/v1/select", {"limit": "100"}, 1),
@@ -396,28 +396,28 @@ def test_the_stated_cost_is_a_lower_bound_of_the_charged_one(
 
 
 async def _default_pages_scenario() -> tuple[int, int, int]:
-    """Ten results pages of the default limit (no ``limit`` in the query) held in
-    progress against 32 units, then an eleventh arrives."""
+    """Sixteen results pages of the default limit (no ``limit`` in the query) held in
+    progress against 32 units, then a seventeenth arrives."""
     held = HeldApp()
     shedder = stating_shedder(held)
     page = b"load=%d&speed=50&length=500"
-    waiting = [asyncio.create_task(asgi_get(shedder, "/", page % (101 + i))) for i in range(10)]
-    while held.holding < 10:
+    waiting = [asyncio.create_task(asgi_get(shedder, "/", page % (101 + i))) for i in range(16)]
+    while held.holding < 16:
         await asyncio.sleep(0)
-    eleventh = asyncio.create_task(asgi_get(shedder, "/", page % 111))
+    last = asyncio.create_task(asgi_get(shedder, "/", page % 117))
     for _ in range(10):  # loop turns: refused, or taken and held with the others
         await asyncio.sleep(0)
     reached = held.holding
     held.release.set()
     await asyncio.gather(*waiting)
-    return (await eleventh)[0], reached, shedder.in_flight
+    return (await last)[0], reached, shedder.in_flight
 
 
 def test_pages_of_the_default_limit_are_shed_before_their_input_is_read() -> None:
-    """A page of the default limit (10 results, ``page_units`` 3) states its 3 units
-    though its query leaves the limit out: ten take 30 of the 32 units, and the eleventh
+    """A page of the default limit (10 results, ``page_units`` 2) states its 2 units
+    though its query leaves the limit out: sixteen take the 32 units, and the seventeenth
     is refused at the door (the route never reached). Refused only once validated, each
     such refusal cost the event loop the validation of a form (about 1.3 ms against
     0.1 ms at the door, in process), which under 32 clients asking again at once was most
     of what the worker did."""
-    assert _run(_default_pages_scenario()) == (503, 10, 0)
+    assert _run(_default_pages_scenario()) == (503, 16, 0)
