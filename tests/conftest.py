@@ -73,7 +73,7 @@ def catalog_page(client: TestClient) -> BeautifulSoup:
 def series_bodies(client: TestClient, catalog: Catalog) -> dict[str, BeautifulSoup]:
     """Every series' values as the catalog page's ``<details>`` loads them (the HTMX
     fragment of /catalog/{series_id}), by series id, parsed once for the tests that read
-    them (1.1 MB of HTML in all: about 1.5 s of CPU to parse)."""
+    them (1.2 MB of HTML in all: about 2 s of CPU to parse)."""
     bodies = {}
     for series_id in catalog.series:
         response = client.get(f"/catalog/{quote(series_id)}", headers={"HX-Request": "true"})

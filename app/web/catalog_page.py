@@ -5,7 +5,7 @@ and source: a page of its own, or (to an HTMX request) the fragment the list's
 ``<details>`` loads when first opened.
 
 The list depends on the catalog alone and is rendered once at start-up; a series page
-takes about a millisecond to render and is kept by the response cache, one entry per
+takes about 2 ms to render and is kept by the response cache, one entry per
 series and kind (page or fragment) for any query (``app.main``)."""
 
 from fastapi import APIRouter, Request
@@ -30,7 +30,7 @@ async def catalog_page(request: Request) -> Response:
 
 def catalog_html(catalog: Catalog) -> str:
     """The catalog page of ``catalog``: the families' comparison tables and one closed
-    ``<details>`` per series (about 170 kB; its series' values are pages of their own)."""
+    ``<details>`` per series (about 120 kB; its series' values are pages of their own)."""
     context = {
         "version": catalog.version,
         "families": family_sections(catalog),
