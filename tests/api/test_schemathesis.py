@@ -90,7 +90,8 @@ def api_schema() -> Iterator[Any]:
     """The schema, with the app's lifespan started once (as the transport's own client
     does) and every object alive now (the app, its catalog, the schema) frozen out of the
     cyclic collector's passes while the fuzz tests run: the passes it makes over the cases
-    each operation generates took about 15 % of the module's time."""
+    each operation generates took about 15 % of the module's time run alone (``-n 0``;
+    under ``-n 2`` the difference was within the noise of a shared machine)."""
     gc.collect()
     gc.freeze()
     try:
