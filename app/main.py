@@ -28,17 +28,18 @@ from app.server.overload import (
 from app.server.security import SecurityMiddleware
 from app.server.settings import Settings, get_settings
 from app.server.staticfiles import PrecompressedStaticFiles
-from app.web import custom, guide, machine, pages, report_page, result_parts
+from app.web import catalog_page, custom, guide, machine, pages, report_page, result_parts
 from app.web.errors import app_error_handler, http_error_handler, validation_error_handler
 
 #: GET routes whose response depends only on the query (and the catalog, fixed at start-up).
 CACHED_PATHS = frozenset(
     {"/", "/detail", "/charts", "/rejected", "/api/v1/select", "/export.csv", "/export.json"}
 )
-#: GET routes whose response depends on nothing in the request: one entry for any query.
-QUERY_FREE_PATHS = frozenset({"/catalog", "/guide", "/validation"})
+#: GET routes whose response depends on nothing in the request but the path: one entry for
+#: any query. "/catalog/*" stands for every path under /catalog/ (each series' page).
+QUERY_FREE_PATHS = frozenset({"/catalog", "/catalog/*", "/guide", "/validation"})
 #: Cached paths that answer an HTMX swap with a fragment and anything else with a page.
-FRAGMENT_PATHS = frozenset({"/", "/detail", "/charts", "/rejected"})
+FRAGMENT_PATHS = frozenset({"/", "/detail", "/charts", "/rejected", "/catalog/*"})
 #: A page that leaves its limit out states the default one once it fills a required field.
 PAGE_STATED_UNITS = partial(
     page_stated_units,
@@ -72,11 +73,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     app.state.catalog = load_catalog(settings.catalog_dirs)
     # the pages that depend on nothing but the code and the catalog, rendered once here
-    app.state.catalog_html = pages.catalog_html(app.state.catalog)
+    app.state.catalog_html = catalog_page.catalog_html(app.state.catalog)
     guide.guide_html()
     guide.validation_html()
     app.include_router(api.router)
     app.include_router(pages.router)
+    app.include_router(catalog_page.router)
     app.include_router(custom.router)
     app.include_router(machine.router)
     app.include_router(report_page.router)

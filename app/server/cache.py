@@ -18,7 +18,7 @@ ones, nor store one kind of response where another kind is looked up.
 import hashlib
 import sys
 from collections import OrderedDict
-from collections.abc import Awaitable, Callable, MutableMapping
+from collections.abc import Awaitable, Callable, Iterable, MutableMapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -69,6 +69,24 @@ def merge_vary(headers: list[tuple[bytes, bytes]], names: tuple[str, ...]) -> No
     headers.append((b"vary", ", ".join(listed).encode("latin-1")))
 
 
+class PathSet:
+    """Paths named exactly, and every path that starts as a name ending in "*" does.
+
+    >>> paths = PathSet({"/", "/catalog", "/catalog/*"})
+    >>> "/catalog" in paths, "/catalog/B6000" in paths, "/catalogue" in paths, "/x" in paths
+    (True, True, False, False)
+    """
+
+    def __init__(self, names: Iterable[str]) -> None:
+        self.names = frozenset(names)
+        self.prefixes = tuple(name[:-1] for name in self.names if name.endswith("*"))
+
+    def __contains__(self, path: object) -> bool:
+        if path in self.names:
+            return True
+        return isinstance(path, str) and bool(self.prefixes) and path.startswith(self.prefixes)
+
+
 class ResponseCache:
     """LRU of complete 200 responses to GET on ``paths``.
 
@@ -76,7 +94,8 @@ class ResponseCache:
     number (``max_entries``). Responses on ``fragment_paths`` differ between an HTMX swap
     and a full page; the others do not. Responses on ``query_free_paths`` do not depend on
     the query at all: one entry serves every query, so ``/catalog?x=1``, ``?x=2``... cannot
-    make the process compress its largest page again for each.
+    make the process compress its largest page again for each. A path set's name that
+    ends in "*" stands for every path that starts as it does (``PathSet``).
     """
 
     def __init__(
@@ -89,9 +108,9 @@ class ResponseCache:
         query_free_paths: frozenset[str] = frozenset(),
     ) -> None:
         self.app = app
-        self.paths = paths | query_free_paths
-        self.query_free_paths = query_free_paths
-        self.fragment_paths = fragment_paths
+        self.paths = PathSet(paths | query_free_paths)
+        self.query_free_paths = PathSet(query_free_paths)
+        self.fragment_paths = PathSet(fragment_paths)
         self.max_bytes = max_bytes
         self.max_entries = max_entries
         self.size_bytes = 0

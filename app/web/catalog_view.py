@@ -1,10 +1,11 @@
-"""The catalog page's model: series grouped by family, each family with a compact table
-comparing its sizes and, per series, every field with its provenance."""
+"""The catalog pages' model: series grouped by family, each family with a compact table
+comparing its sizes (/catalog), and one series with every field and its provenance
+(/catalog/{series_id})."""
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
-from app.catalog import Catalog
+from app.catalog import Catalog, Series
 from app.contract.units import catalog_value
 from app.report.present import series_dict
 
@@ -15,16 +16,23 @@ KEY_FIELDS = (
     ("leads", "Leads"),
     ("design_load", "Design load"),
 )
+#: the comparison table's fields by name
+KEY_NAMES = frozenset(name for name, _ in KEY_FIELDS)
 #: name ending of the fields that name a material ('screw_material'), shown in one column.
 MATERIAL_SUFFIX = "_material"
 #: field-name prefix whose suffixes name a series' nut variants ('friction_dynamic_tfe').
 VARIANT_PREFIX = "friction_dynamic_"
 
 
-def field_rows(series: dict[str, Any]) -> list[dict[str, str]]:
-    """Every field of one series: name, display value and unit, provenance kind and source."""
+def field_rows(
+    series: dict[str, Any], keep: Callable[[str], bool] = lambda name: True
+) -> list[dict[str, str]]:
+    """Every field of one series (or those whose name ``keep`` keeps): name, display value
+    and unit, provenance kind and source."""
     rows = []
     for name, field in series["fields"].items():
+        if not keep(name):
+            continue
         text, unit = catalog_value(name, field["value"], field["unit"])
         rows.append({"name": name, "value": text, "unit": unit, **field["provenance"]})
     return rows
@@ -59,18 +67,44 @@ def material_cells(rows: list[dict[str, str]]) -> list[dict[str, str]]:
     ]
 
 
+def in_summary(name: str) -> bool:
+    """Whether field ``name`` shows in the family's comparison table (a key field or a
+    material).
+
+    >>> in_summary("leads"), in_summary("nut_material"), in_summary("friction_static")
+    (True, True, False)
+    """
+    return name in KEY_NAMES or name.endswith(MATERIAL_SUFFIX)
+
+
+def series_summary(series: Series) -> dict[str, Any]:
+    """One series as its family's comparison table shows it: its data (``series_dict``),
+    its cells, nut variants and materials (only these fields are converted for display:
+    converting all of every series took most of the catalog page's rendering)."""
+    data = series_dict(series)
+    rows = field_rows(data, in_summary)
+    return {
+        **data,
+        "cells": key_cells(rows),
+        "variants": variants(data["fields"]),
+        "materials": material_cells(rows),
+    }
+
+
+def series_view(series: Series) -> dict[str, Any]:
+    """One series with every field as a row (its page, /catalog/{series_id})."""
+    data = series_dict(series)
+    return {**data, "rows": field_rows(data)}
+
+
 def family_sections(catalog: Catalog) -> list[dict[str, Any]]:
     """One section per family in catalog order: its id and name, and its series, each
-    with its fields, comparison cells and nut variants."""
+    with its comparison cells, nut variants and materials."""
     families: dict[str, dict[str, Any]] = {}
-    for series in map(series_dict, catalog.series.values()):
-        rows = field_rows(series)
-        entry = {**series, "rows": rows, "cells": key_cells(rows)}
-        entry["variants"] = variants(series["fields"])
-        entry["materials"] = material_cells(rows)
+    for entry in map(series_summary, catalog.series.values()):
         family = families.setdefault(
-            series["family"],
-            {"id": series["family"], "name": series["family_name"], "series": []},
+            entry["family"],
+            {"id": entry["family"], "name": entry["family_name"], "series": []},
         )
         family["series"].append(entry)
     return list(families.values())

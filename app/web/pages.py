@@ -1,4 +1,4 @@
-"""HTML pages: the selector (full page or HTMX fragment), a candidate's detail, exports, catalog."""
+"""HTML pages: the selector (full page or HTMX fragment), a candidate's detail, exports."""
 
 from collections.abc import Mapping
 from typing import Any
@@ -61,7 +61,6 @@ from app.server.headers import is_htmx_fragment
 from app.server.overload import charge, full_form_units, page_units
 from app.server.responses import ModelJSON
 from app.web.advice import check_label, no_pass_advice
-from app.web.catalog_view import KEY_FIELDS, family_sections
 from app.web.compare import compare_rows
 from app.web.export import results_csv
 from app.web.figures import chart_candidates
@@ -435,21 +434,3 @@ async def export_json(request: Request, catalog: CatalogDep) -> Response:
 
 def _export_json(inputs: ApplicationIn, catalog: Catalog) -> Response:
     return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
-
-
-@router.api_route("/catalog", methods=["GET", "HEAD"], response_class=HTMLResponse)
-async def catalog_page(request: Request) -> Response:
-    """Every family, its sizes side by side, and every series' values with provenance:
-    rendered once at start-up (``catalog_html``), as it depends on the catalog alone."""
-    return HTMLResponse(request.app.state.catalog_html)
-
-
-def catalog_html(catalog: Catalog) -> str:
-    """The catalog page of ``catalog`` (about 1.3 MB; 80 ms to render, too long to do per
-    request on the event loop the health check is answered on)."""
-    context = {
-        "version": catalog.version,
-        "families": family_sections(catalog),
-        "key_fields": KEY_FIELDS,
-    }
-    return templates.get_template("catalog.html").render(context)

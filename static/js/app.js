@@ -451,10 +451,12 @@
 
   // a result's <details class="detail"> loads its body when first opened, from the link it
   // holds for a reader without JavaScript (the same /detail URL, answered as a fragment)
-  // (the rejected list likewise, from /rejected)
+  // (the rejected list likewise, from /rejected; a series of the catalog, from /catalog/{id})
+  var LAZY_DETAILS = "details.detail, details.rejected, details.series";
+
   function onToggle(event) {
     var detail = event.target;
-    if (!detail.matches || !detail.matches("details.detail, details.rejected") || !detail.open) {
+    if (!detail.matches || !detail.matches(LAZY_DETAILS) || !detail.open) {
       return;
     }
     var body = detail.querySelector(":scope > .pending");
@@ -468,7 +470,7 @@
 
   function markLoading(event) {
     var detail = event.detail.elt;
-    if (detail.matches("details.detail, details.rejected")) {
+    if (detail.matches(LAZY_DETAILS)) {
       if (event.type === "htmx:beforeRequest") {
         detail.setAttribute("aria-busy", "true");
       } else {

@@ -5,10 +5,10 @@ and fixes. Each figure is worked out here by hand from the reference formulas
 second law on the moving mass), never read back from the app."""
 
 import math
-import re
 from typing import Any
 
 import pytest
+from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
 from tests.api.calls import check, evaluate, names
@@ -307,17 +307,21 @@ def test_a_fix_length_says_at_which_mounting_it_holds(client: TestClient) -> Non
 # --- 7. one pitch diameter -------------------------------------------------------------------
 
 
-def test_an_iso_screw_shows_the_pitch_diameter_it_is_computed_with(client: TestClient) -> None:
+def test_an_iso_screw_shows_the_pitch_diameter_it_is_computed_with(
+    client: TestClient, series_bodies: dict[str, BeautifulSoup]
+) -> None:
     """Tr20x4 (ISO 2904): d2 = d - 0.5 P = 20 - 2 = 18.0 mm, the diameter its lead angle,
     efficiency and flank area use; (OD + RD) / 2 = (20 + 15.5) / 2 = 17.75 mm is the seed's
-    P_o, which the catalog page showed for it. Both the API and the catalog page give 18."""
+    P_o, which the catalog page showed for it. Both the API and the series' catalog page
+    (/catalog/{series_id}) give 18."""
     c = evaluate(client, "Tr20x4-bronze", load_n=100, speed_mm_s=20, length_mm=500)
     assert c["pitch_diameter_mm"] == pytest.approx(20 - 0.5 * 4)
     tan_l = 4 / (math.pi * 18.0)
     assert c["efficiency"] == pytest.approx(eta(tan_l, 0.13, COS_ISO))
-    page = client.get("/catalog").text
-    rows = re.findall(r'<tr data-field="pitch_diameter">(.*?)</tr>', page, re.S)
-    shown = [" ".join(re.sub(r"<[^>]+>", " ", r).split()) for r in rows]
+    rows = [
+        r for body in series_bodies.values() for r in body.select("tr[data-field=pitch_diameter]")
+    ]
+    shown = [" ".join(r.get_text(" ").split()) for r in rows]
     iso = [r for r in shown if "ISO 2904" in r]
     assert iso and all("standard" in r and "d2 = d - 0.5 P" in r for r in iso)
     assert any(r.startswith("pitch_diameter 18 mm") for r in iso)

@@ -5,10 +5,11 @@ its page is resized to 390 px and scanned again once its charts are redrawn.
 Every HTML page the app's router serves is scanned: the routes are read from the app
 itself, so a new page is scanned bare as soon as it exists, and a page that needs a query
 or an interaction to show its content (results, an open detail, the no-pass advice, an
-inline 422 error, Swagger UI with an operation of each kind open and run) has states of its own
-below. axe runs WCAG 2.1 A and AA rules plus its best practices, and the test asserts no
-violation of any impact. Nothing is excluded: /docs is made clean by our own stylesheet
-and configuration (static/css/docs.css, static/js/docs.js), not by skipping its rules.
+inline 422 error, a catalog series opened, Swagger UI with an operation of each kind open
+and run) has states of its own below. axe runs WCAG 2.1 A and AA rules plus its best
+practices, and the test asserts no violation of any impact. Nothing is excluded: /docs is
+made clean by our own stylesheet and configuration (static/css/docs.css,
+static/js/docs.js), not by skipping its rules.
 
 axe-core is vendored under tests/e2e/vendor/ (npm package axe-core, version in the file
 name, MPL-2.0 licence beside it) and injected as an init script, which the page's
@@ -168,6 +169,14 @@ def visit(path: str, ready: str = "main") -> Callable[[Any, str], None]:
     return go
 
 
+def series_opened(page: Any, base: str) -> None:
+    """The catalog with a series opened: its values loaded into the <details> (from
+    /catalog/{series_id}, as a fragment)."""
+    page.goto(f"{base}/catalog")
+    page.click("details#ZBX8000 > summary")
+    page.wait_for_selector("details#ZBX8000 table.series-fields")
+
+
 def parts_loaded(page: Any, base: str) -> None:
     """The results with the parts loaded after the table: the charts, the rejected list."""
     page.goto(f"{base}/?{AXIS}")
@@ -198,6 +207,9 @@ STATES: dict[str, dict[str, Callable[[Any, str], None]]] = {
         "bronze-nut": visit(f"/custom?{BRONZE_NUT}", "table.nut-limits"),
     },
     "/docs": {"opened": docs_opened},
+    "/catalog": {"series-open": series_opened},
+    # a ball screw's, whose id has a space (quoted in its URL)
+    "/catalog/{series_id}": {"page": visit("/catalog/HIWIN-GROUND%20R16", "table.series-fields")},
     "/machine": {"results": visit(f"/machine?{MACHINE}", "table.machine")},
     "/versus": {
         "both": visit(f"/versus?{AXIS}", "table.versus"),

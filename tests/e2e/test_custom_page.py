@@ -73,5 +73,6 @@ def test_catalog_fits_a_phone_without_sideways_scrolling(browser: Any, live_serv
         assert phone.evaluate("() => document.scrollingElement.scrollWidth") <= 390, path
     phone.goto(live_server + "/catalog")
     phone.click("details#ZBX8000 > summary")
+    phone.wait_for_selector("details#ZBX8000 table.series-fields")  # loaded when opened
     assert phone.evaluate("() => document.scrollingElement.scrollWidth") <= 390
     context.close()

@@ -14,10 +14,11 @@ from fastapi.testclient import TestClient
 from app.main import create_app
 from app.server.cache import ResponseCache
 from app.server.settings import Settings
-from app.web import pages
+from app.web import catalog_page
 
 SELECT = "/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&lead_mm=10"
 PAGE = "/?load=100&speed=50&length=500&lead=10"
+HX = {"HX-Request": "true"}
 #: each test builds an app of its own settings, over the one built-in catalog
 pytestmark = pytest.mark.usefixtures("catalog_loaded_once")
 
@@ -198,11 +199,30 @@ def test_pages_that_ignore_the_query_are_one_entry_for_any_query() -> None:
     assert len(cache.entries) == 3
 
 
+def test_a_series_page_is_one_entry_per_kind_for_any_query() -> None:
+    """/catalog/{series_id} depends on its path alone: ?r=1, ?r=2... share one entry, the
+    HTMX fragment (the catalog page's <details> opened) another; an unknown id's 404 is
+    not kept, and a path beside /catalog/ is not cached at all."""
+    client, cache = _cached()
+    page = [client.get(f"/catalog/ZBX8000?r={i}") for i in range(3)]
+    fragment = [client.get(f"/catalog/ZBX8000?r={i}", headers=HX) for i in range(3)]
+    assert {p.content for p in page} == {page[0].content}
+    assert {f.content for f in fragment} == {fragment[0].content}
+    assert page[0].content != fragment[0].content
+    assert b"<html" in page[0].content and b"<html" not in fragment[0].content
+    assert (cache.misses, cache.hits, len(cache.entries)) == (2, 4, 2)
+    assert all(_vary(r.headers["vary"]) >= {"hx-request", "accept-encoding"} for r in page)
+    for _ in range(2):
+        assert client.get("/catalog/NOPE").status_code == 404
+    client.get("/catalogue")
+    assert (cache.misses, len(cache.entries)) == (4, 2)
+
+
 def test_the_catalog_page_is_rendered_once_at_start_up(monkeypatch: pytest.MonkeyPatch) -> None:
     """Rendered when the app is built, never per request: with the cache off and the
     page's builder broken afterwards, it is still served, the same each time."""
     client, _ = _cached(Settings(response_cache_bytes=0))
-    monkeypatch.setattr(pages, "family_sections", _broken)
+    monkeypatch.setattr(catalog_page, "family_sections", _broken)
     first, second = client.get("/catalog"), client.get("/catalog?x=1")
     assert first.status_code == second.status_code == 200
     assert first.content == second.content and "Provenance" in first.text

@@ -22,6 +22,7 @@ GET_PATHS = [
     "/export.json?" + AXIS,
     "/?" + AXIS,
     "/catalog",
+    "/catalog/ZBX8000",
     "/docs",
     "/openapi.json",
     "/static/css/app.css",

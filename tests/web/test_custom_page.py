@@ -224,9 +224,13 @@ def test_catalog_groups_series_by_family_with_a_comparison_table(
     assert iso.select_one("td.variants").text == "bronze, acetal, ptfe"
 
 
-def test_catalog_regions_have_unique_labels(catalog_page: BeautifulSoup) -> None:
+def test_catalog_regions_have_unique_labels(
+    catalog_page: BeautifulSoup, series_bodies: dict[str, BeautifulSoup]
+) -> None:
+    """Unique on the catalog page with every series opened (each body loaded into it)."""
     page = catalog_page
     regions = page.select("[role=region]")
+    regions += [r for body in series_bodies.values() for r in body.select("[role=region]")]
     labels = [r.get("aria-label") or r.get("aria-labelledby") for r in regions]
     assert all(labels) and len(set(labels)) == len(labels)
     captions = [c.text for c in page.select("caption")]

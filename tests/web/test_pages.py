@@ -10,7 +10,7 @@ import math
 import re
 from pathlib import Path
 from typing import Any
-from urllib.parse import parse_qsl
+from urllib.parse import parse_qsl, quote
 
 import pytest
 from bs4 import BeautifulSoup
@@ -163,11 +163,12 @@ def test_share_url_reopens_the_same_results(client: TestClient) -> None:
         "/?load=100&lead=10&speed=50&length=500",
         "/?load=abc&speed=1&length=1",
         "/catalog",
+        "/catalog/ZBX8000",
         "/detail?load=100&lead=10&speed=50&length=500&id=B6000-L10-TFE",
         "/custom?outer_diameter_mm=10&root_diameter_mm=8&lead_mm=2&friction_dynamic=0.15"
         "&friction_static=0.2&load=100&speed=50&length=500",
     ],
-    ids=["empty", "results", "error", "catalog", "detail", "custom"],
+    ids=["empty", "results", "error", "catalog", "catalog-series", "detail", "custom"],
 )
 def test_no_inline_script_style_or_handler(
     client: TestClient, path: str, request: pytest.FixtureRequest
@@ -753,20 +754,25 @@ def test_export_links_carry_the_share_query(client: TestClient) -> None:
 
 
 def test_catalog_page_lists_every_series_with_provenance(
-    catalog_page: BeautifulSoup, catalog: Catalog
+    catalog_page: BeautifulSoup, series_bodies: dict[str, BeautifulSoup], catalog: Catalog
 ) -> None:
+    """Each series is a <details> on the page whose body (loaded when opened, or its link's
+    page) holds every field of the series with its provenance kind and source."""
     page = catalog_page
     sections = page.select("details.series")
     assert [s["id"] for s in sections] == list(catalog.series)
+    assert not page.select("table.series-fields")  # loaded when opened, not before
     for section in sections:
         series = catalog.series[section["id"]]
-        rows = section.select("table.series-fields tbody tr")
+        link = section.select_one(".series-body.pending a.series-link")
+        assert link["href"] == "/catalog/" + quote(series.id)
+        rows = series_bodies[series.id].select("table.series-fields tbody tr")
         assert [r["data-field"] for r in rows] == list(series.fields)
         for row in rows:
             field = series.fields[row["data-field"]]
             assert row.select_one(".kind").text == field.provenance.kind
             assert row.select_one(".source").text == field.provenance.source
-    root = page.select_one("details#ZBX8000 tr[data-field=root_diameter]")
+    root = series_bodies["ZBX8000"].select_one("tr[data-field=root_diameter]")
     value = catalog.series["ZBX8000"].fields["root_diameter"].value
     assert float(root.select("td")[0].text) == pytest.approx(value * 1e3, rel=1e-3)
     assert root.select("td")[1].text == "mm"

@@ -1,0 +1,68 @@
+"""The catalog's pages (app/web/catalog_page.py): /catalog lists the families and their
+series, each series' values load on demand from /catalog/{series_id}, which is also a page
+of its own for a reader without JavaScript."""
+
+from urllib.parse import quote
+
+import pytest
+from bs4 import BeautifulSoup
+from fastapi.testclient import TestClient
+
+from app.catalog import Catalog
+
+HX = {"HX-Request": "true"}
+
+
+def _page(client: TestClient, path: str, **kwargs: object) -> BeautifulSoup:
+    response = client.get(path, **kwargs)  # type: ignore[arg-type]
+    assert response.status_code == 200, response.text[:300]
+    return BeautifulSoup(response.text, "html.parser")
+
+
+@pytest.mark.parametrize(
+    "series_id", ["ZBX8000", "HIWIN-GROUND R16", "Tr26-P5"], ids=["zbx", "ball", "iso"]
+)
+def test_each_series_link_opens_a_page_of_its_own(
+    client: TestClient, catalog_page: BeautifulSoup, catalog: Catalog, series_id: str
+) -> None:
+    """The <details>' link, followed as a browser without JavaScript would: the series'
+    name as title and heading, its family linked back, and the same body as the fragment
+    the <details> loads when opened."""
+    series = catalog.series[series_id]
+    details = next(d for d in catalog_page.select("details.series") if d["id"] == series_id)
+    href = details.select_one("a.series-link")["href"]
+    assert href == f"/catalog/{quote(series_id)}"
+    page = _page(client, href)
+    assert page.title.text == f"{series.name} · Catalog · Leadscrew selector"
+    assert page.select_one("h1")["data-series"] == series_id
+    assert page.select_one("h1").text.startswith(series.name)
+    back = page.select_one(".breadcrumb a[href^='/catalog#']")["href"]
+    assert catalog_page.select_one(back.removeprefix("/catalog"))["data-family"] == series.family
+    fragment = _page(client, href, headers=HX)
+    assert fragment.select_one("html") is None
+    assert str(page.select_one(".series-body")) == str(fragment.select_one(".series-body"))
+    meta = fragment.select_one(".series-meta").text
+    assert series.file in meta and f"{len(series.screws)} candidates" in meta
+
+
+def test_the_catalog_page_holds_the_summary_not_every_value(
+    catalog_page: BeautifulSoup, catalog: Catalog
+) -> None:
+    """Every series in its family's comparison table and as a closed <details> whose body
+    is a link; no series' table of every value (those are on their own pages)."""
+    rows = catalog_page.select("table.family-compare tbody tr")
+    assert [r["data-series"] for r in rows] == list(catalog.series)
+    assert not catalog_page.select("table.series-fields, details[open]")
+
+
+@pytest.mark.parametrize("headers", [{}, HX], ids=["page", "fragment"])
+@pytest.mark.parametrize("series_id", ["NOPE", "zbx8000", "ZBX8000 ", "x" * 300])
+def test_an_unknown_series_is_a_404_page(
+    client: TestClient, series_id: str, headers: dict[str, str]
+) -> None:
+    response = client.get(f"/catalog/{quote(series_id)}", headers=headers)
+    assert response.status_code == 404
+    assert response.headers["content-type"].startswith("text/html")
+    page = BeautifulSoup(response.text, "html.parser")
+    assert f"no series '{series_id[:100]}' in the catalog" in page.text
+    assert "x" * 101 not in page.text  # a long id is cut at 100 characters
