@@ -25,7 +25,6 @@ worker, every run: the coverage phase's 14,000 cases took about 11 s of CPU each
 friction, a boolean given as a number); they are refused with a 4xx now.
 """
 
-import gc
 import re
 from collections.abc import Iterator
 from typing import Any
@@ -87,18 +86,10 @@ SCHEMA = schemathesis.pytest.from_fixture("api_schema")
 
 @pytest.fixture(scope="module")
 def api_schema() -> Iterator[Any]:
-    """The schema, with the app's lifespan started once (as the transport's own client
-    does) and every object alive now (the app, its catalog, the schema) frozen out of the
-    cyclic collector's passes while the fuzz tests run: the passes it makes over the cases
-    each operation generates took about 15 % of the module's time run alone (``-n 0``;
-    under ``-n 2`` the difference was within the noise of a shared machine)."""
-    gc.collect()
-    gc.freeze()
-    try:
-        with CLIENT:
-            yield schema
-    finally:
-        gc.unfreeze()
+    """The schema, with the app's lifespan started once for every request (as the
+    transport's own client does for each)."""
+    with CLIENT:
+        yield schema
 
 
 @pytest.fixture(autouse=True)
