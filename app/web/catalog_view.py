@@ -4,6 +4,7 @@ comparing its sizes (/catalog), and one series with every field and its provenan
 
 from collections.abc import Callable, Iterable
 from typing import Any
+from urllib.parse import quote
 
 from app.catalog import Catalog, Series
 from app.contract.units import catalog_value
@@ -77,6 +78,15 @@ def in_summary(name: str) -> bool:
     return name in KEY_NAMES or name.endswith(MATERIAL_SUFFIX)
 
 
+def series_url(series_id: str) -> str:
+    """The page of every value of series ``series_id`` (``series_page``).
+
+    >>> series_url("HIWIN-GROUND R16")
+    '/catalog/HIWIN-GROUND%20R16'
+    """
+    return "/catalog/" + quote(series_id, safe="")
+
+
 def series_summary(series: Series) -> dict[str, Any]:
     """One series as its family's comparison table shows it: its data (``series_dict``),
     its cells, nut variants and materials (only these fields are converted for display:
@@ -88,6 +98,7 @@ def series_summary(series: Series) -> dict[str, Any]:
         "cells": key_cells(rows),
         "variants": variants(data["fields"]),
         "materials": material_cells(rows),
+        "url": series_url(series.id),
     }
 
 

@@ -61,6 +61,7 @@ from app.server.headers import is_htmx_fragment
 from app.server.overload import charge, full_form_units, page_units
 from app.server.responses import ModelJSON
 from app.web.advice import check_label, no_pass_advice
+from app.web.catalog_view import series_url
 from app.web.compare import compare_rows
 from app.web.export import results_csv
 from app.web.figures import chart_candidates
@@ -348,6 +349,7 @@ def _detail_page(request: Request, catalog: Catalog) -> Response:
         "query": query,
         "report_query": query,
         "try_url": f"/custom?{try_query}&{query}",
+        "series_url": series_url(catalog.by_id[c.id].series_id),
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"
     response = templates.TemplateResponse(request, template, context)

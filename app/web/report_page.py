@@ -24,6 +24,7 @@ from app.contract.reported import REPORTED, show, value_of
 from app.contract.units import Display
 from app.report.service import run_page_result
 from app.server.deps import CatalogDep
+from app.web.catalog_view import series_url
 from app.web.figures import result_figures
 from app.web.pages import link_inputs, page_candidate
 from app.web.templating import templates
@@ -70,6 +71,7 @@ def report_context(
         "report_link": f"{base_url.rstrip('/')}/report?{query}&{urlencode({'id': chosen.id})}",
         "date": datetime.now(UTC).date().isoformat(),
         "catalog_version": catalog.version,
+        "series_url": series_url(catalog.by_id[chosen.id].series_id),
     }
 
 

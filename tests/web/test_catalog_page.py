@@ -66,3 +66,22 @@ def test_an_unknown_series_is_a_404_page(
     page = BeautifulSoup(response.text, "html.parser")
     assert f"no series '{series_id[:100]}' in the catalog" in page.text
     assert "x" * 101 not in page.text  # a long id is cut at 100 characters
+
+
+@pytest.mark.parametrize("path", ["/detail", "/report"])
+def test_a_candidates_detail_links_every_value_of_its_series(
+    client: TestClient, catalog: Catalog, path: str
+) -> None:
+    """A result's detail (and its printed report) leads to the catalog values behind it:
+    the page of its series, with each value's provenance and source."""
+    axis = {"load": "100", "lead": "10", "speed": "50", "length": "500"}
+    for series_id in ("ZBX8000", "HIWIN-GROUND R16"):
+        cid = catalog.series[series_id].screws[0].id
+        headers = HX if path == "/detail" else {}
+        page = _page(client, path, params={**axis, "id": cid}, headers=headers)
+        href = page.select_one("p.series-values a")["href"]
+        assert catalog.by_id[cid].series_id == series_id
+        assert href == f"/catalog/{quote(series_id)}"
+        series = _page(client, href)
+        assert series.select_one("h1")["data-series"] == series_id
+        assert series.select("table.series-fields tr[data-field] td.source")
