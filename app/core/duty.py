@@ -88,7 +88,7 @@ def travel_thrusts(
     c = c or motion.cycle_of(app)
     if c.fastest is None:
         return [], []
-    return [g + h * app.load_n for g, h in c.moving], c.travels
+    return c.moving_n, c.travels
 
 
 def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:

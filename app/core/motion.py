@@ -327,9 +327,18 @@ def moving_forms(app: Application, moves: tuple[Move, ...] = ()) -> list[Form]:
     return [f for move in moves or cycle(app) for f in _move_forms(app, move)]
 
 
+def at_load(forms: list[Form], load_n: float) -> list[float]:
+    """Thrusts linear in the load, ``forms`` (g, h), at the load ``load_n``: g + h F [N].
+
+    >>> at_load([(5.0, 1.0), (-2.0, 0.5)], 10.0)
+    [15.0, 3.0]
+    """
+    return [g + h * load_n for g, h in forms]
+
+
 def nut_forces(app: Application) -> list[float]:
     """``nut_force_forms`` at the application's load [N]."""
-    return [g + h * app.load_n for g, h in nut_force_forms(app)]
+    return at_load(nut_force_forms(app), app.load_n)
 
 
 def largest_load(forms: list[Form], allowed_n: float) -> float | None:
@@ -379,7 +388,7 @@ def wear_thrust(app: Application) -> float:
     """The thrust [N] that wears the nut as the whole cycle does (``wear.cycle_wear_thrust``
     over ``wear_forms``): the load with its direction, the weight and m a on the ramps."""
     forms, travels = wear_forms(app)
-    return wear.cycle_wear_thrust([g + h * app.load_n for g, h in forms], travels)
+    return wear.cycle_wear_thrust(at_load(forms, app.load_n), travels)
 
 
 def lead_move(app: Application) -> Move:
@@ -387,15 +396,15 @@ def lead_move(app: Application) -> Move:
     the motion; the first move out and back over the stroke): the move the torque
     breakdown and break-away describe."""
     moves = cycle(app)
-    return _lead(app, moves, moving_forms(app, moves) if app.moves else [])
+    return _lead(app, moves, at_load(moving_forms(app, moves), app.load_n) if app.moves else [])
 
 
-def _lead(app: Application, moves: tuple[Move, ...], moving: list[Form]) -> Move:
-    """``lead_move`` of ``moves``, whose moving segments' forms are ``moving`` (read for
-    the user's own moves alone)."""
+def _lead(app: Application, moves: tuple[Move, ...], moving_n: list[float]) -> Move:
+    """``lead_move`` of ``moves``, whose moving segments' thrusts are ``moving_n`` [N]
+    (read for the user's own moves alone)."""
     if not app.moves:
         return moves[0]
-    starts = [sense(m) * (g + h * app.load_n) for m, (g, h) in zip(moves, moving[::3], strict=True)]
+    starts = [sense(m) * f for m, f in zip(moves, moving_n[::3], strict=True)]
     return moves[starts.index(max(starts))]
 
 
@@ -420,7 +429,7 @@ def largest_load_for_wear(app: Application, allowed_n: float) -> float | None:
     forms, travels = wear_forms(app)
 
     def thrust(load_n: float) -> float:
-        return wear.cycle_wear_thrust([g + h * load_n for g, h in forms], travels)
+        return wear.cycle_wear_thrust(at_load(forms, load_n), travels)
 
     corners = sorted({0.0, *(-g / h for g, h in forms if h and -g / h > 0.0)})
     if thrust(0.0) > allowed_n:
@@ -442,7 +451,8 @@ class Cycle:
     query (``cycle_of``) and handed to each part of the operating point that reads them.
 
     ``moves``: ``cycle``; ``profiles``: ``profiles``; ``fastest``: ``move_profile``;
-    ``moving``: ``moving_forms``; ``forces``: ``nut_forces`` [N]; ``steady_n``:
+    ``moving_n``: ``moving_forms`` at the load [N]; ``forces``: ``nut_forces`` [N] (the
+    moving segments' first, then the rests'); ``steady_n``:
     ``steady_load`` [N]; ``travels``: each moving segment's travel [m] (``wear_forms``);
     ``wear_n``: ``wear_thrust`` [N]; ``lead``: ``lead_move``; ``reached_m_s``:
     ``reached_speed`` [m/s]; ``cycles_per_day``: ``cycles_per_day``."""
@@ -450,7 +460,7 @@ class Cycle:
     moves: tuple[Move, ...]
     profiles: list[Profile] | None
     fastest: Profile | None
-    moving: list[Form]
+    moving_n: list[float]
     forces: list[float]
     steady_n: float
     travels: list[float]
@@ -466,18 +476,20 @@ def cycle_of(app: Application) -> Cycle:
     moves = cycle(app)
     every = profiles(app, moves)
     moving = moving_forms(app, moves)
+    forces = at_load(_with_rest(app, moving), app.load_n)
+    moving_n = forces[: len(moving)]
     travels = _travels(moves, every)
-    load, top = app.load_n, fastest(every)
+    top = fastest(every)
     return Cycle(
         moves=moves,
         profiles=every,
         fastest=top,
-        moving=moving,
-        forces=[g + h * load for g, h in _with_rest(app, moving)],
+        moving_n=moving_n,
+        forces=forces,
         steady_n=steady_load(app),
         travels=travels,
-        wear_n=wear.cycle_wear_thrust([g + h * load for g, h in moving], travels),
-        lead=_lead(app, moves, moving),
+        wear_n=wear.cycle_wear_thrust(moving_n, travels),
+        lead=_lead(app, moves, moving_n),
         reached_m_s=app.speed_m_s if top is None else top.peak_speed_m_s,
         cycles_per_day=_cycles_per_day(app, top),
     )

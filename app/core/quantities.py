@@ -18,20 +18,20 @@ from app.core.formulas import (
     geometry,
 )
 from app.core.formulas.declare import formula
-from app.core.model import STANDARD_GRAVITY_M_S2, Application
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, Move
 from app.core.table import Array, CandidateTable, filled
 
 V = TypeVar("V")
 
 
 @formula("F = load (+ m g when vertical), the running thrust", "statics")
-def axial_load(app: Application) -> float:
+def axial_load(app: Application, lead: Move | None = None) -> float:
     """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical
     (on the up move, or on the move against a load of fixed direction); in a cycle of the
     user's own moves, the top-speed thrust of the move that starts hardest
-    (``motion.lead_move``)."""
+    (``motion.lead_move``; ``lead``: that move when already worked out)."""
     if app.moves:
-        return motion.running_thrust(app, motion.lead_move(app))
+        return motion.running_thrust(app, motion.lead_move(app) if lead is None else lead)
     if app.orientation == "vertical":
         return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
     return app.load_n
@@ -272,7 +272,7 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
     thrusts and the moving segments' torques) worked out once and handed to every part
     that reads it."""
     forces = c.forces
-    force_n, peak_n = axial_load(app), peak_axial_load(app, forces)
+    force_n, peak_n = axial_load(app, c.lead), peak_axial_load(app, forces)
     wear_n, steady_n = c.wear_n, c.steady_n
     moving = segments.moving_torques(app, t, c)
     torques = drive.torques(app, t, force_n, moving, c.lead)

@@ -72,7 +72,7 @@ def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) 
     c = c or cycle_of(app)
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
-    forces = iter(g + h * app.load_n for g, h in c.moving)
+    forces = iter(c.moving_n)
     out: list[Moving] = []
     for move in c.moves:
         v, word = sense(move), direction_word(app, move)

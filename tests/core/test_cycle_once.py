@@ -53,7 +53,7 @@ def test_each_number_of_the_cycle_is_the_function_it_names(app: Application) -> 
     assert c.moves == motion.cycle(app)
     assert c.profiles == motion.profiles(app)
     assert c.fastest == motion.move_profile(app)
-    assert c.moving == motion.moving_forms(app)
+    assert c.moving_n == motion.at_load(motion.moving_forms(app), app.load_n)
     assert c.forces == motion.nut_forces(app)
     assert c.steady_n == motion.steady_load(app)
     assert c.travels == motion.wear_forms(app)[1]
