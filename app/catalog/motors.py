@@ -284,7 +284,7 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
 def with_model_values(app: Application, motor: Motor) -> Application:
     """``app`` with the library stepper's drive voltage, rated current and holding
     torque, those its curve is drawn from: what the motor-curve check reads the model's
-    validity range from (``stepper.back_emf_half_supply_rpm``); and its winding
+    confirmed range from (``stepper.confirmed_range_rpm``); and its winding
     resistance, for the copper loss of a cycle (``cycle_energy.cycle_energy``)."""
     return replace(
         app,

@@ -194,9 +194,11 @@ def test_3d_printer_z_axis_sized_with_a_library_motor(client: TestClient) -> Non
 
 def test_pick_and_place_axis_sized_with_a_library_motor(client: TestClient) -> None:
     """300 mm/s on an 8 mm lead is 2250 rpm: 120 000 steps/s of 200 000; the 17HS19's
-    microstepping model gives 0.130 N m there (the back-EMF and reactance take the
-    current below its 2 A; the constant-power envelope gave 0.139), 0.087 over the 1.5
-    margin, drawn on or under it, which the accelerating move needs less of. A bronze nut's flanks
+    microstepping model gives 0.0815 N m there: past its confirmed range (the back-EMF
+    reaches 40 % of 24 V at 439.5 rpm, k_e = 0.59 / (sqrt 2 x 2) = 0.2086 V s/rad) it
+    falls as 1 / speed from 0.59 / sqrt 2 = 0.4172 N m, 0.4172 x 439.5 / 2250 = 0.0815
+    (the circuit alone gave 0.130), 0.054 over the 1.5 margin, drawn on or under it,
+    which the accelerating move needs less of. A bronze nut's flanks
     would slide at 37.5 rev/s x sqrt(8^2 + (pi 7)^2) mm = 0.88 m/s, over bronze's
     0.417 m/s, so the PTFE nut of the 8 mm lead comes first, using 0.377 of its wear life
     (worn out at a quarter of the pitch off the thread); at 3.6 times the cycles, 36 000 a
@@ -209,7 +211,7 @@ def test_pick_and_place_axis_sized_with_a_library_motor(client: TestClient) -> N
     assert best["lead_mm"] == 8.0 and best["nut_material"] == "PTFE-filled polymer"
     checks = _checks(best)
     assert checks["step_rate"]["value"] == pytest.approx(120000.0)
-    assert model_nm("17hs19-2004s1", 2250.0) == pytest.approx(0.1301, abs=1e-4)
+    assert model_nm("17hs19-2004s1", 2250.0) == pytest.approx(0.0815, abs=1e-4)
     assert_usable(checks["motor_curve"]["limit"], "17hs19-2004s1", 2250.0)
     assert checks["motor_curve"]["passed"] and checks["wear_life"]["passed"]
     failed = body["counts"]["failed_by_check"]
@@ -268,8 +270,9 @@ def test_a_light_z_axis_sized_with_the_nema_14(client: TestClient) -> None:
     """The printer's Z axis with the 14HS20-1504S: Tr8x8(P2) at 12 mm/s turns 90 rpm,
     where the supply still drives the full current: the microstepping pull-out
     0.40 / sqrt 2 = 0.2828 N m, usable 0.1886 N m over the 1.5 margin. The same axis at
-    100 mm/s turns 750 rpm, where the circuit allows 0.2573 N m (the constant-power
-    envelope gave 0.2779), drawn on or under it; 750 / 60 x 200 x 8 = 20 000 steps/s at
+    100 mm/s turns 750 rpm, past the model's confirmed range (486.2 rpm, the back-EMF
+    40 % of 24 V): 0.2828 x 486.2 / 750 = 0.1833 N m (the circuit alone allowed 0.2573),
+    drawn on or under it; 750 / 60 x 200 x 8 = 20 000 steps/s at
     8 microsteps."""
     params = {**Z_AXIS, "motor": "14hs20-1504s", "detail": "full"}
     slow = client.get("/api/v1/select", params=params).json()
@@ -283,7 +286,7 @@ def test_a_light_z_axis_sized_with_the_nema_14(client: TestClient) -> None:
     best = client.get("/api/v1/select", params=fast).json()["candidates"][0]
     checks = _checks(best)
     assert best["lead_mm"] == 8.0
-    assert model_nm("14hs20-1504s", 750.0) == pytest.approx(0.2573, abs=1e-4)
+    assert model_nm("14hs20-1504s", 750.0) == pytest.approx(0.1833, abs=1e-4)
     assert_usable(checks["motor_curve"]["limit"], "14hs20-1504s", 750.0)
     assert checks["step_rate"]["value"] == pytest.approx(20000.0)
 
@@ -419,19 +422,43 @@ def test_a_bad_current_reading_is_a_field_level_422(client: TestClient, bad: str
 
 def test_a_move_past_the_models_range_is_flagged(client: TestClient) -> None:
     """The 14HS20-1504S (0.40 N m, 1.5 A) on its 24 V: k_e = 0.40 / (sqrt 2 x 1.5) =
-    0.1886 V s/rad, the back-EMF reaches half the supply at 12 / 0.1886 = 63.6 rad/s =
-    608 rpm. The Z axis at 12 mm/s (90 rpm) stays inside the model's range; at 100 mm/s
-    (750 rpm) the check says the move runs past it. A curve typed in is not the model's
-    and is never flagged."""
-    assert stepper.back_emf_half_supply_rpm(24.0, 1.5, 0.40) == pytest.approx(607.7, abs=0.1)
+    0.1886 V s/rad, the back-EMF reaches 40 % of the supply at 9.6 / 0.1886 = 50.9 rad/s
+    = 486 rpm, the top of the range where the model is confirmed. The Z axis at 12 mm/s
+    (90 rpm) stays inside it; at 100 mm/s (750 rpm) the check says the move runs past it.
+    A curve typed in is not the model's and is never flagged."""
+    assert stepper.confirmed_range_rpm(24.0, 1.5, 0.40) == pytest.approx(486.2, abs=0.1)
     params = {**Z_AXIS, "motor": "14hs20-1504s", "detail": "full", "microsteps": 8}
     messages = {}
     for speed in (12.0, 100.0):
         body = client.get("/api/v1/select", params={**params, "speed_mm_s": speed}).json()
         messages[speed] = _checks(body["candidates"][0])["motor_curve"]["message"]
-    assert "validity range" not in messages[12.0]
-    assert "validity range" in messages[100.0] and "608 rpm" in messages[100.0]
+    assert "40 % of the supply" not in messages[12.0]
+    assert "40 % of the supply" in messages[100.0] and "486 rpm" in messages[100.0]
     typed = {**params, "speed_mm_s": 100.0, "motor": None, "motor_curve": "[[0, 0.3], [3000, 0.2]]"}
     typed["step_angle_deg"] = 1.8
     body = client.get("/api/v1/select", params={k: v for k, v in typed.items() if v is not None})
-    assert "validity range" not in _checks(body.json()["candidates"][0])["motor_curve"]["message"]
+    assert (
+        "40 % of the supply" not in _checks(body.json()["candidates"][0])["motor_curve"]["message"]
+    )
+
+
+def test_a_supply_below_four_times_ir_is_flagged(client: TestClient) -> None:
+    """STEPPERONLINE 17HS24-0644S typed in as on its published half-step curve (0.64 A,
+    14.5 ohm, 35 mH, 0.65 N m, 24 V: I R = 9.28 V, the supply 2.6 times it): below the
+    4 times I R the model is valid for (Trinamic QSH4218 manual, Table 6.2), so the
+    motor-curve check says so; at 48 V (5.2 times) it does not."""
+    typed = {
+        **Z_AXIS,
+        "detail": "full",
+        "step_angle_deg": 1.8,
+        "motor_phase_current_a": 0.64,
+        "motor_resistance_ohm": 14.5,
+        "motor_inductance_mh": 35.0,
+        "motor_holding_torque_nm": 0.65,
+    }
+    messages = {}
+    for supply in (24.0, 48.0):
+        body = client.get("/api/v1/select", params={**typed, "motor_supply_v": supply}).json()
+        messages[supply] = _checks(body["candidates"][0])["motor_curve"]["message"]
+    assert "below 4 times the winding's rated voltage I R (9.28 V)" in messages[24.0]
+    assert "below 4 times" not in messages[48.0]

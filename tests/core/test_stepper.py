@@ -203,9 +203,7 @@ def test_the_drawn_curve_never_promises_more_than_the_model(
 #: Makers' pull-out figures published as numbers, with the datasheet values the model
 #: needs: (maker and part, source, supply V, phase current A, resistance ohm,
 #: inductance H, step angle deg, holding torque N m, drive current set as RMS, speed
-#: rpm, published torque N m). Only one was found: the makers searched (Oriental Motor,
-#: Nanotec, Moons'/Applied Motion, Lin, JVL, Schneider, Sanyo Denki, Kollmorgen, LDO,
-#: Songyang/Pololu, Beckhoff, Phidgets) publish their curves as plots.
+#: rpm, published torque N m).
 PUBLISHED_POINTS = [
     (
         "Trinamic QSH4218-47-28-040",
@@ -223,7 +221,102 @@ PUBLISHED_POINTS = [
         0.25,
     ),
 ]
+#: STEPPERONLINE 23HS32-4004S: full datasheet (amps/phase 4.00, 0.65 ohm +-10 %, 3.2 mH
+#: +-20 % at 1 kHz, holding torque 2.40 N m, 1.8 deg) and "Pull out torque curve of
+#: 23HS32-4004S" (driver DM542T, microstep 2000, current PK4.2A), both as kept in the
+#: public repository jmpz63/APM (Projects/Moveo_Bridge/Onboarding/
+#: 04_Hardware_Firmware_Network_Architecture/joint_datasheets/joint2/, commit 411985f).
+#: The curve's plotted points read off the chart, N cm (0.27 N cm a pixel at 216 dpi;
+#: frequency 3, 7, 10, 13, 17, 20 kHz at 2000 steps a turn: 90 ... 600 rpm). The 36 V
+#: point at 90 rpm lies under the 48 V marker and is left out. The drive's peak 4.2 A is
+#: 5 % above the rated 4.0 A the model is given (as the app's inputs are).
+SO_23HS32 = "STEPPERONLINE 23HS32-4004S pull-out curve (DM542T, 2000 microsteps, PK4.2A)"
+SO_23HS32_POINTS = {
+    48.0: [(90, 184.1), (210, 182.0), (300, 177.8), (390, 172.9), (510, 149.8), (600, 132.9)],
+    36.0: [(210, 177.2), (300, 163.9), (390, 139.2), (510, 122.8), (600, 102.7)],
+}
+PUBLISHED_POINTS += [
+    (
+        f"STEPPERONLINE 23HS32-4004S at {supply:g} V",
+        SO_23HS32,
+        supply,
+        4.0,
+        0.65,
+        0.0032,
+        1.8,
+        2.40,
+        False,
+        float(rpm),
+        n_cm / 100.0,
+    )
+    for supply, points in SO_23HS32_POINTS.items()
+    for rpm, n_cm in points
+]
 POINT_IDS = [f"{p[0]} at {p[9]:g} rpm" for p in PUBLISHED_POINTS]
+
+#: Published half-step curves on a supply below 4 times the winding's I R, outside the
+#: model's validity range (same repository and commit, joint_datasheets/joint5 and
+#: joint1): (part, supply V, current A, resistance ohm, inductance H, holding N m,
+#: [(rpm, published N m)]). 14HS17-0504S: datasheet 0.50 A, 15 ohm, 26 mH, 0.23 N m;
+#: curve "0.5A/PHASE 20V CONSTANT CURRENT HALF STEP", points in gf cm at 400 ... 3000
+#: pulses/s (half step: 400 pulses a turn). 17HS24-0644S: datasheet 0.60 A, 14.5 ohm,
+#: 35 mH, 0.65 N m; curve "0.64A/P 24V HALF STEP" (the model given the curve's 0.64 A),
+#: points in g cm. gf cm x 9.80665e-5 = N m.
+GF_CM = 9.80665e-5
+HALF_STEP_LOW_SUPPLY = [
+    (
+        "STEPPERONLINE 14HS17-0504S",
+        20.0,
+        0.5,
+        15.0,
+        0.026,
+        0.23,
+        [
+            (n, t * GF_CM)
+            for n, t in (
+                (60, 1500),
+                (90, 1700),
+                (120, 1800),
+                (150, 1800),
+                (180, 1700),
+                (210, 1600),
+                (240, 1550),
+                (270, 1500),
+                (300, 1300),
+                (330, 1200),
+                (375, 1100),
+                (420, 900),
+                (450, 700),
+            )
+        ],
+    ),
+    (
+        "STEPPERONLINE 17HS24-0644S",
+        24.0,
+        0.64,
+        14.5,
+        0.035,
+        0.65,
+        [
+            (n, t * GF_CM)
+            for n, t in (
+                (60, 5190),
+                (90, 5090),
+                (120, 4400),
+                (150, 3800),
+                (180, 3100),
+                (210, 2510),
+                (240, 1910),
+                (270, 1510),
+                (300, 1110),
+                (330, 910),
+                (360, 720),
+                (390, 560),
+                (420, 320),
+            )
+        ],
+    ),
+]
 
 
 def _model_at(point: tuple, current_is_rms: bool) -> float:
@@ -233,35 +326,61 @@ def _model_at(point: tuple, current_is_rms: bool) -> float:
 
 
 @pytest.mark.parametrize("point", PUBLISHED_POINTS, ids=POINT_IDS)
-def test_inside_its_range_the_model_meets_the_published_figures(point: tuple) -> None:
-    """Within 15 % of every published figure inside the model's validity range (below
-    the speed where the back-EMF reaches half the supply), read as the maker's drive
-    sets the current; a figure past that speed must be flagged by the range. The
-    Trinamic point: k_e = 0.40 / (sqrt 2 x 2.8) = 0.101 V s/rad, half of 24 V at
-    12 / 0.101 = 118.8 rad/s = 1134 rpm, so 1200 rpm lies past it; there the model read
-    as RMS (as Trinamic sets it) gives the full 0.40 N m, 60 % above 0.25."""
-    _, _, supply, current, _, _, _, holding, rms, rpm, published = point
+def test_the_model_meets_every_published_figure(point: tuple) -> None:
+    """Within 15 % of every published figure (none is more than 4 % above it), read as
+    the maker's drive sets the current: inside the confirmed range (back-EMF up to 40 %
+    of the supply) the phase circuit, past it 1 / speed from there. The 23HS32-4004S at
+    36 V, 600 rpm: k_e = 2.4 / (sqrt 2 x 4) = 0.424 V s/rad, n_c = 0.4 x 36 / 0.424 =
+    33.9 rad/s = 324 rpm, 1.697 x 324 / 600 = 0.917 N m against 1.027 (-11 %)."""
+    published, rms = point[10], point[8]
     model = _model_at(point, rms)
-    limit = stepper.back_emf_half_supply_rpm(supply, current, holding)
-    if rpm <= limit:
-        assert 0.85 * published <= model <= 1.15 * published, model / published
-    else:
-        assert model > 1.15 * published  # why the range stops short of it
-        assert limit == pytest.approx(1134.4, abs=0.5)
+    assert 0.85 * published <= model <= 1.15 * published, model / published
 
 
 @pytest.mark.parametrize("point", PUBLISHED_POINTS, ids=POINT_IDS)
-def test_read_as_a_peak_the_model_stays_within_15_percent(point: tuple) -> None:
-    """The app's default reading (the set current is the sine's peak) never gives more
-    than the RMS reading at any speed, and at every published figure lies within 15 %
-    of it: Trinamic 0.40 / sqrt 2 = 0.283 N m against 0.25 (+13 %). The constant-power
-    envelope gives the full 0.40 N m there (+60 %), which this bound refuses."""
-    _, _, supply, current, resistance, inductance, step, holding, _, rpm, published = point
-    peak, rms = _model_at(point, False), _model_at(point, True)
-    assert 0.85 * published <= peak <= 1.15 * published, peak / published
-    assert peak <= rms
-    corner = stepper.corner_speed_rpm(supply, current, resistance, inductance, step)
-    assert stepper.pull_out_torque(rpm, holding, corner) > 1.15 * published
+def test_past_the_confirmed_range_the_circuit_alone_runs_high(point: tuple) -> None:
+    """Why the range stops where it does: wherever the circuit alone is more than 15 %
+    above a published figure, the point lies past the confirmed range (the 23HS32-4004S
+    at 36 V, 390 rpm: back-EMF 48 % of the supply, circuit 1.697 N m against 1.392, +22 %;
+    Trinamic at 1200 rpm read as RMS: the full 0.40 against 0.25, +60 %)."""
+    _, _, supply, current, resistance, inductance, step, holding, rms, rpm, published = point
+    k_e = stepper.back_emf_constant(holding, current)
+    amplitude = current * (math.sqrt(2.0) if rms else 1.0)
+    omega = 2 * math.pi * rpm / 60
+    teeth = 360 / (4 * step)
+    impedance = complex(resistance, teeth * omega * inductance)
+    centre = -k_e * omega / impedance
+    radius = supply / abs(impedance)
+    # the circuit's torque: the largest in-phase current within both limits (the same
+    # geometry as the module's, written out here for the check)
+    in_phase = max(
+        (
+            z.real
+            for z in (
+                amplitude * complex(math.cos(a), math.sin(a)) for a in np.linspace(-1.5, 1.5, 3001)
+            )
+            if abs(z - centre) <= radius
+        ),
+        default=0.0,
+    )
+    circuit = k_e * in_phase
+    limit = stepper.confirmed_range_rpm(supply, current, holding) * (math.sqrt(0.5) if rms else 1.0)
+    if circuit > 1.15 * published:
+        assert rpm > limit
+
+
+@pytest.mark.parametrize("part", HALF_STEP_LOW_SUPPLY, ids=[p[0] for p in HALF_STEP_LOW_SUPPLY])
+def test_a_supply_below_four_times_ir_is_outside_the_range(part: tuple) -> None:
+    """The two half-step curves run on 20 V over 7.5 V and 24 V over 9.3 V (2.7 and 2.6
+    times I R), below the makers' 4 to 22 times (Trinamic QSH4218 manual, Table 6.2) and
+    outside the model's range; their real curves fall far below it (the 17HS24-0644S at
+    420 rpm: 0.031 N m published, 0.140 from the model), which is why the motor-curve
+    check says such a supply is outside it."""
+    _, supply, current, resistance, inductance, holding, points = part
+    assert supply < 4 * current * resistance
+    args = (supply, current, resistance, inductance, 1.8, holding)
+    worst = max(stepper.microstep_pull_out_torque(rpm, *args) / t for rpm, t in points)
+    assert worst > 1.15
 
 
 def test_a_microstepping_drive_gives_the_holding_torque_over_root_two() -> None:
@@ -276,15 +395,29 @@ def test_a_microstepping_drive_gives_the_holding_torque_over_root_two() -> None:
     assert stepper.microstep_pull_out_torque(30.0, *args, True) == pytest.approx(0.59, rel=1e-9)
 
 
-def test_the_range_ends_where_the_back_emf_is_half_the_supply() -> None:
-    """At ``back_emf_half_supply_rpm`` the back-EMF amplitude k_e w is half the supply,
-    and it moves in proportion to the supply: 17HS19-2004S1 (0.59 N m, 2 A) on 24 V,
-    k_e = 0.2086 V s/rad, 12 / 0.2086 = 57.5 rad/s = 549 rpm; on 48 V twice that."""
-    n_24 = stepper.back_emf_half_supply_rpm(24.0, 2.0, 0.59)
+def test_the_confirmed_range_ends_where_the_back_emf_is_40_percent_of_the_supply() -> None:
+    """At ``confirmed_range_rpm`` the back-EMF amplitude k_e w is 40 % of the supply, and
+    it moves in proportion to the supply: 17HS19-2004S1 (0.59 N m, 2 A) on 24 V,
+    k_e = 0.2086 V s/rad, 9.6 / 0.2086 = 46.0 rad/s = 439.5 rpm; on 48 V twice that."""
+    n_24 = stepper.confirmed_range_rpm(24.0, 2.0, 0.59)
     k_e = stepper.back_emf_constant(0.59, 2.0)
-    assert k_e * n_24 * 2 * np.pi / 60 == pytest.approx(12.0)
-    assert n_24 == pytest.approx(549.4, abs=0.1)
-    assert stepper.back_emf_half_supply_rpm(48.0, 2.0, 0.59) == pytest.approx(2 * n_24)
+    assert k_e * n_24 * 2 * np.pi / 60 == pytest.approx(0.4 * 24.0)
+    assert n_24 == pytest.approx(439.5, abs=0.1)
+    assert stepper.confirmed_range_rpm(48.0, 2.0, 0.59) == pytest.approx(2 * n_24)
+
+
+@given(rpm=st.floats(0.0, 6000.0), rms=st.booleans())
+def test_past_the_range_both_readings_fall_along_one_line(rpm: float, rms: bool) -> None:
+    """Past its confirmed range the torque times the speed is constant, and the same for
+    a drive that sets the peak and one that sets the RMS (the supply, not the set
+    current, limits it): the 17HS19-2004S1 on 24 V, range 439.5 rpm peak-set."""
+    args = (24.0, 2.0, 1.4, 0.003, 1.8, 0.59)
+    limit = stepper.confirmed_range_rpm(24.0, 2.0, 0.59)
+    torque = stepper.microstep_pull_out_torque(rpm, *args, rms)
+    if rpm > limit:
+        other = stepper.microstep_pull_out_torque(rpm, *args, not rms)
+        assert torque == pytest.approx(other, rel=1e-9)
+        assert torque * rpm <= stepper.microstep_pull_out_torque(limit, *args) * limit * (1 + 1e-9)
 
 
 @settings(max_examples=200)

@@ -27,25 +27,46 @@ DATASHEET_NOTE = (
     "typed in), the pull-out is the microstepping model's estimate: confirm it on the "
     "maker's curve."
 )
-#: Said where the move runs past the model's validity range.
+#: Said where the move runs past the range where the model is confirmed.
 BEYOND_RANGE_NOTE = (
-    " The move runs to {peak}, past {limit}, where the back-EMF reaches half the supply: "
-    "outside the microstepping model's validity range, where its pull-out is unconfirmed "
-    "(at the one maker's figure found there, Trinamic QSH4218-47-28-040 at 1200 rpm on "
-    "24 V, the model is 60 % above the published 0.25 N m read as the drive sets the "
-    "current, RMS, and 13 % above it read as a peak)."
+    " The move runs to {peak}, past {limit}, where the back-EMF reaches 40 % of the "
+    "supply: beyond it the microstepping model's pull-out falls as 1 / speed, on the safe "
+    "side of the makers' curves held against it (STEPPERONLINE 23HS32-4004S at 36 and "
+    "48 V, Trinamic QSH4218-47-28-040 at 24 V) as far as they reach, 1.85 times that "
+    "speed; confirm it on the maker's curve."
 )
+#: Said where the supply is below the model's range (4 times the winding's I R).
+LOW_SUPPLY_NOTE = (
+    " The supply, {supply}, is below 4 times the winding's rated voltage I R ({ir}): "
+    "outside the microstepping model's validity range, where makers' curves fall far "
+    "faster than the model (STEPPERONLINE 17HS24-0644S at 2.6 times I R: under a quarter "
+    "of the model's figure at 420 rpm); use the maker's curve."
+)
+#: The least supply, in multiples of the winding's rated voltage I R, the model is
+#: valid for (Trinamic QSH4218 manual, Table 6.2: a supply 4 to 22 times I R).
+LEAST_SUPPLY_PER_IR = 4.0
 
 
 def model_range_rpm(app: Application) -> float | None:
-    """The top of the microstepping model's validity range [rpm]
-    (``stepper.back_emf_half_supply_rpm``) for a stepper whose curve the model draws from
-    its datasheet values (None: no such values, as for a curve typed in or a servo)."""
+    """The top of the range [rpm] where the microstepping model is confirmed
+    (``stepper.confirmed_range_rpm``, over sqrt 2 for a drive that sets the RMS) for a
+    stepper whose curve the model draws from its datasheet values (None: no such values,
+    as for a curve typed in or a servo)."""
     values = (app.motor_supply_v, app.motor_phase_current_a, app.motor_holding_torque_nm)
     if app.step_angle_deg is None or any(v is None for v in values):
         return None
     supply, current, holding = (float(v or 0.0) for v in values)
-    return stepper.back_emf_half_supply_rpm(supply, current, holding)
+    rms = math.sqrt(0.5) if app.motor_current_rms else 1.0
+    return stepper.confirmed_range_rpm(supply, current, holding) * rms
+
+
+def supply_too_low(app: Application) -> bool:
+    """The model's stepper runs on a supply below ``LEAST_SUPPLY_PER_IR`` times its
+    winding's rated voltage I R (False where those values are not known)."""
+    supply, current, ohm = app.motor_supply_v, app.motor_phase_current_a, app.motor_resistance_ohm
+    if app.step_angle_deg is None or supply is None or current is None or ohm is None:
+        return False
+    return supply < LEAST_SUPPLY_PER_IR * current * ohm
 
 
 def worst_segment(app: Application, r: Quantities[float]) -> str:
@@ -76,12 +97,13 @@ class MotorCurve(Check):
         "values is the microstepping model: at low speed the holding torque (rated two "
         "phases on) over sqrt 2 for a drive that sets the sine's peak, the whole of it for "
         "one that sets the RMS (the phase-current input says which), then the phase "
-        "circuit with its back-EMF. Valid for a sine drive set to the rated current, a "
-        "supply 4-25 times I R, and speeds below that at which the back-EMF reaches half "
-        "the supply; faster moves are flagged. The one maker's figure found published as a "
-        "number lies just past that speed (Trinamic QSH4218-47-28-040, 0.25 N m at 1200 "
-        "rpm on 24 V, drive set to 2.8 A RMS: the model 60 % above it read as RMS, 13 % "
-        "read as a peak), so confirm the curve on the maker's."
+        "circuit with its back-EMF, confirmed up to the speed where the back-EMF reaches "
+        "40 % of the supply; past it the pull-out falls as 1 / speed. Held against makers' "
+        "published curves (STEPPERONLINE 23HS32-4004S on a DM542T at 36 and 48 V, "
+        "Trinamic QSH4218-47-28-040 at 24 V) it lies within 15 % of every point, none more "
+        "than 4 % above. Valid for a sine drive set to the rated current and a supply 4-25 "
+        "times I R; moves past the confirmed speed, and lower supplies, are flagged. "
+        "Confirm the curve on the maker's."
     )
     quantity = "torque"
     formula = "T_need = SF * T_seg; T_motor = T_curve / M"
@@ -130,6 +152,11 @@ class MotorCurve(Check):
             values["peak"] = Amount(r.peak_rpm, "rpm")
             values["limit"] = Amount(limit, "rpm")
             text += BEYOND_RANGE_NOTE
+        if supply_too_low(app):
+            current, ohm = app.motor_phase_current_a or 0.0, app.motor_resistance_ohm or 0.0
+            values["supply"] = f"{app.motor_supply_v or 0.0:.3g} V"
+            values["ir"] = f"{current * ohm:.3g} V"
+            text += LOW_SUPPLY_NOTE
         return Phrase(text, values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
