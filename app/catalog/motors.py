@@ -4,8 +4,9 @@ provenance, validated with the catalog (file, entry and field named on error) an
 on the ``Catalog`` the app passes around.
 
 A library motor becomes the application's motor at the edge (``with_motor``, called by
-``app.contract.inputs``): a stepper's pull-out curve drawn by the stepper model at the
-drive voltage of the maker's curve, its rotor inertia and step angle; a servo's peak
+``app.contract.inputs``): a stepper's pull-out curve, the maker's published curve where
+the entry carries one (``pull_out_curve``) and otherwise drawn by the stepper model at
+the drive voltage of the maker's curve, its rotor inertia and step angle; a servo's peak
 envelope (the curve), its rated torque (the RMS limit) and its rotor inertia; unless the
 user gives those inputs directly. A stepper's datasheet values typed in are drawn the
 same way.
@@ -13,6 +14,7 @@ same way.
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
+from itertools import pairwise
 from pathlib import Path
 from typing import Any
 
@@ -49,7 +51,10 @@ FIELDS = {
 }
 PLAIN = frozenset({"name", "frame", "kind"})
 #: Values a stepper's entry may leave out where its datasheet does not publish them.
-OPTIONAL = {"stepper": {"detent_torque_nm": "N m"}, "servo": {}}
+OPTIONAL = {"stepper": {"detent_torque_nm": "N m", "pull_out_curve": ""}, "servo": {}}
+#: A published pull-out curve: rows of (speed [rpm], torque [N m]) read at the maker's
+#: plotted points, at the drive and supply its source names.
+CURVE = "pull_out_curve"
 #: Each field's unit as held (SI, or the datasheet's own for angles, currents, voltages
 #: and speeds); the edges show each value in the unit its name carries (``NAMED_UNITS``).
 SI_UNITS = {
@@ -66,6 +71,7 @@ SI_UNITS = {
     "max_rpm": "rpm",
     "top_speed_torque_nm": "N m",
     "detent_torque_nm": "N m",
+    CURVE: "rpm, N m",
 }
 #: Field -> the unit (a key of the unit table) its name carries and its file is written
 #: in: the API shows the value in it (the fields not listed are held in that unit).
@@ -115,10 +121,24 @@ class Motor:
             self.value("step_angle_deg"),
         )
 
+    def published_curve(self) -> tuple[tuple[float, float], ...] | None:
+        """A stepper's pull-out curve as its maker publishes it, (rpm, N m) from the
+        plotted points, with the first point's torque held down to standstill (the
+        charts start at a speed; a stepper's pull-out does not rise towards standstill
+        in them); None where the library draws the curve from the model."""
+        curve = self.values.get(CURVE)
+        if curve is None:
+            return None
+        points: tuple[tuple[float, float], ...] = curve.value
+        return ((0.0, points[0][1]), *points) if points[0][0] > 0.0 else points
+
     def curve(self, current_is_rms: bool = False) -> tuple[tuple[float, float], ...]:
         """The torque the motor gives against speed: a stepper's pull-out curve from the
         stepper model (its drive's current set as RMS where ``current_is_rms``, else as
         the sine's peak), a servo's peak envelope from the servo model."""
+        published = self.published_curve()
+        if published is not None:
+            return published
         if self.kind == "servo":
             return servo.peak_curve(
                 self.value("peak_torque_nm"),
@@ -192,7 +212,9 @@ def _motor(file: str, motor_id: str, data: Any) -> Motor:
         if not isinstance(data.get(name), str) or not data[name].strip():
             raise entry.fail(name, "missing or not text")
     values = {}
-    given = {n: u for n, u in OPTIONAL[kind].items() if n in data}
+    given = {n: u for n, u in OPTIONAL[kind].items() if n in data and n != CURVE}
+    if CURVE in data:
+        values[CURVE] = Sourced(_curve(entry), SI_UNITS[CURVE], entry.prov(CURVE))
     for name, unit in {**FIELDS[kind], **given}.items():
         number = entry.number(name, allow_zero=name in MAY_BE_ZERO)
         value = to_si(number, unit) if unit else number
@@ -203,6 +225,18 @@ def _motor(file: str, motor_id: str, data: Any) -> Motor:
     elif motor.corner_rpm() <= 0.0:
         raise entry.fail("supply_v", "at most the winding's I R: it cannot drive the current")
     return motor
+
+
+def _curve(entry: Entry) -> tuple[tuple[float, float], ...]:
+    """A published pull-out curve: at least two (rpm, N m) points, speeds rising, every
+    torque above zero and none rising with speed."""
+    rows = entry.rows(CURVE, 2)
+    speeds, torques = [r[0] for r in rows], [r[1] for r in rows]
+    if len(rows) < 2 or any(b <= a for a, b in pairwise(speeds)):
+        raise entry.fail(CURVE, "needs two or more points, speeds rising")
+    if min(torques) <= 0.0 or any(b > a for a, b in pairwise(torques)):
+        raise entry.fail(CURVE, "every torque above zero, none rising with speed")
+    return tuple((r[0], r[1]) for r in rows)
 
 
 def load_motors(path: Path, digest: Any = None) -> dict[str, Motor]:
@@ -269,7 +303,7 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
     rms = app.motor_rms_torque_nm
     detent = app.detent_torque_nm
     if not app.motor_curve and motor.kind == "stepper":
-        app = with_model_values(app, motor)
+        app = with_model_values(app, motor, modelled=motor.published_curve() is None)
     return replace(
         energised_holding(app, motor.holding_torque_nm()),
         detent_torque_nm=detent if detent is not None else motor.detent_torque_nm(),
@@ -281,14 +315,16 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
     )
 
 
-def with_model_values(app: Application, motor: Motor) -> Application:
+def with_model_values(app: Application, motor: Motor, modelled: bool = True) -> Application:
     """``app`` with the library stepper's drive voltage, rated current and holding
     torque, those its curve is drawn from: what the motor-curve check reads the model's
     confirmed range from (``stepper.confirmed_range_rpm``); and its winding
-    resistance, for the copper loss of a cycle (``cycle_energy.cycle_energy``)."""
+    resistance, for the copper loss of a cycle (``cycle_energy.cycle_energy``). A
+    stepper whose curve is the maker's (not ``modelled``) carries no drive voltage: no
+    model range applies to it."""
     return replace(
         app,
-        motor_supply_v=motor.value("supply_v"),
+        motor_supply_v=motor.value("supply_v") if modelled else None,
         motor_phase_current_a=motor.value("phase_current_a"),
         motor_resistance_ohm=motor.value("resistance_ohm"),
         motor_holding_torque_nm=motor.holding_torque_nm(),

@@ -50,8 +50,10 @@ class MotorOut(BaseModel):
     values: dict[str, SourcedOut] = Field(
         description="Each datasheet value in the unit its name carries (inductance_mh in "
         "mH, rotor_inertia_g_cm2 in g cm², torques in N m, angles in deg, speeds in rpm) "
-        "with its provenance; a stepper's curve is drawn by the stepper model, a servo's by the "
-        "servo model (GET /api/v1/formulas)"
+        "with its provenance; a stepper's curve is its maker's published one where the "
+        "motor carries it (pull_out_curve: (rpm, N m) points read off the maker's chart), "
+        "otherwise drawn by the stepper model; a servo's by the servo model (GET "
+        "/api/v1/formulas)"
     )
     curve: list[tuple[float, float]] = Field(
         description="The torque-speed curve the checks use: (rpm, N m) points"

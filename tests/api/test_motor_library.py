@@ -307,6 +307,7 @@ supply_v = { value = 24.0, provenance = "assumed", source = "s" }
 
 
 INDUCTANCE = 'inductance_mh = { value = 3.0, provenance = "vendor", source = "s" }\n'
+CURVE = 'pull_out_curve = {{ value = {points}, provenance = "vendor", source = "s" }}'
 HOLDING = 'holding_torque_nm = { value = 0.5, provenance = "vendor", source = "s" }'
 
 
@@ -336,6 +337,27 @@ HOLDING = 'holding_torque_nm = { value = 0.5, provenance = "vendor", source = "s
             id="vendor-value-without-source",
         ),
         pytest.param("schema = 1", "schema = 2", "-", "schema", id="schema"),
+        pytest.param(
+            HOLDING,
+            HOLDING + "\n" + CURVE.format(points="[[300.0, 0.3], [100.0, 0.2]]"),
+            "motors.m1",
+            "pull_out_curve",
+            id="curve-speeds-falling",
+        ),
+        pytest.param(
+            HOLDING,
+            HOLDING + "\n" + CURVE.format(points="[[100.0, 0.2], [300.0, 0.3]]"),
+            "motors.m1",
+            "pull_out_curve",
+            id="curve-torque-rising",
+        ),
+        pytest.param(
+            HOLDING,
+            HOLDING + "\n" + CURVE.format(points="[[100.0, 0.2]]"),
+            "motors.m1",
+            "pull_out_curve",
+            id="curve-one-point",
+        ),
     ],
 )
 def test_a_bad_library_names_file_entry_and_field(
@@ -462,3 +484,42 @@ def test_a_supply_below_four_times_ir_is_flagged(client: TestClient) -> None:
         messages[supply] = _checks(body["candidates"][0])["motor_curve"]["message"]
     assert "below 4 times the winding's rated voltage I R (9.28 V)" in messages[24.0]
     assert "below 4 times" not in messages[48.0]
+
+
+#: STEPPERONLINE's "Pull out torque curve of 23HS32-4004S", 48 V (DM542T, 2000 microsteps,
+#: PK4.2A), its six plotted points read off the chart (catalog/motors.toml gives the
+#: repository, folder and commit it is kept in), N m.
+SO_23HS32_48V = [
+    (90.0, 1.841),
+    (210.0, 1.820),
+    (300.0, 1.778),
+    (390.0, 1.729),
+    (510.0, 1.498),
+    (600.0, 1.329),
+]
+
+
+def test_a_library_motor_with_its_makers_curve_is_driven_by_it(client: TestClient) -> None:
+    """The 23HS32-4004S carries STEPPERONLINE's published 48 V curve: the motor list
+    gives it with its provenance, and the checks read it (its first torque, 1.841 N m,
+    held to standstill; its last speed, 600 rpm, the fastest the motor may run), with no
+    note of the model's range. The Z axis at 12 mm/s turns 90 rpm: usable 1.841 / 1.5 =
+    1.227 N m; at 100 mm/s, 750 rpm, past the curve's 600 rpm: the motor-speed check
+    fails."""
+    listed = {m["id"]: m for m in client.get("/api/v1/motors").json()["motors"]}
+    motor = listed["23hs32-4004s"]
+    curve = motor["values"]["pull_out_curve"]
+    assert [tuple(p) for p in curve["value"]] == SO_23HS32_48V
+    assert curve["provenance"]["kind"] == "vendor"
+    assert "23HS32-4004S" in curve["provenance"]["source"]
+    assert [tuple(p) for p in motor["curve"]] == [(0.0, 1.841), *SO_23HS32_48V]
+    params = {**Z_AXIS, "motor": "23hs32-4004s", "detail": "full"}
+    best = client.get("/api/v1/select", params=params).json()["candidates"][0]
+    checks = _checks(best)
+    assert checks["motor_curve"]["limit"] == pytest.approx(1.841 / MARGIN, rel=1e-6)
+    assert "40 % of the supply" not in checks["motor_curve"]["message"]
+    assert "below 4 times" not in checks["motor_curve"]["message"]
+    fast = {**params, "speed_mm_s": 100.0}
+    body = client.get("/api/v1/select", params=fast).json()
+    speeds = [_checks(c)["motor_speed"] for c in body["candidates"] + body["rejected"]]
+    assert speeds and all(not s["passed"] and s["limit"] == pytest.approx(600.0) for s in speeds)

@@ -7,6 +7,8 @@ import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
+from tests.motor_library import MOTORS
+
 #: A light axis at constant speed (no move given: the top speed is held), every screw.
 AXIS = {"load_n": 20.0, "speed_mm_s": 50.0, "length_mm": 350.0, "limit": 100}
 
@@ -22,7 +24,7 @@ def test_the_pairs_are_the_selections_with_each_motor(client: TestClient) -> Non
     library motor in turn gives: as many passing pairs as the selections pass in all."""
     body = _pairs(client)
     motors = [m["id"] for m in client.get("/api/v1/motors").json()["motors"]]
-    assert body["motors"] == len(motors) == 11
+    assert body["motors"] == len(motors) == len(MOTORS)
     passed = 0
     for motor in motors:
         r = client.get("/api/v1/select", params={**AXIS, "motor": motor, "limit": 1})
@@ -92,7 +94,7 @@ def test_post_and_get_agree_and_a_typed_motor_is_set_aside(client: TestClient) -
     r = client.post("/api/v1/pairs", json={**AXIS, "motor": "pololu-1205"})
     assert r.status_code == 200
     assert r.json()["pairs"] == got["pairs"]
-    assert got["motors"] == 11
+    assert got["motors"] == len(MOTORS)
 
 
 def test_a_bad_rank_is_a_field_level_422(client: TestClient) -> None:

@@ -48,12 +48,15 @@ def test_above_the_corner_the_power_is_constant(rpm: float, corner: float) -> No
 @pytest.mark.parametrize("motor_id", sorted(m.id for m in MOTORS.values() if m.kind == "stepper"))
 def test_every_library_curve_is_a_valid_motor_curve(motor_id: str) -> None:
     """Each library motor draws a curve the motor_curve input accepts: from the
-    microstepping torque T_h / sqrt 2 at standstill to at most the model's last speed,
+    microstepping torque T_h / sqrt 2 at standstill (the maker's first plotted torque
+    where the motor carries its published curve) to at most the model's last speed,
     rpm ascending, torque falling."""
     motor = MOTORS[motor_id]
     curve = motor.curve()
     assert _curve_points(list(curve)) == list(curve)
-    assert curve[0] == (0.0, pytest.approx(motor.value("holding_torque_nm") / 2**0.5))
+    published = motor.published_curve()
+    first = motor.value("holding_torque_nm") / 2**0.5 if published is None else published[1][1]
+    assert curve[0] == (0.0, pytest.approx(first))
     assert curve[-1][0] <= MAX_STEPPER_RPM
     torques = [t for _, t in curve]
     assert torques == sorted(torques, reverse=True)

@@ -23,9 +23,9 @@ from app.core.phrase import Amount, Phrase
 
 #: Said of every stepper: its curve may be the model's, drawn from datasheet values.
 DATASHEET_NOTE = (
-    " Where the curve is drawn from datasheet values (a library stepper, or the values "
-    "typed in), the pull-out is the microstepping model's estimate: confirm it on the "
-    "maker's curve."
+    " Where the curve is drawn from datasheet values (the values typed in, or a library "
+    "stepper without its maker's published curve), the pull-out is the microstepping "
+    "model's estimate: confirm it on the maker's curve."
 )
 #: Said where the move runs past the range where the model is confirmed.
 BEYOND_RANGE_NOTE = (
