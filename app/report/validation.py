@@ -19,6 +19,7 @@ from app.core.formulas import (
     efficiency,
     geometry,
     heat,
+    profile,
     pv,
     servo,
     stepper,
@@ -165,6 +166,54 @@ def weihong_cycle(mass_as_inertia: bool = True) -> Quantities[np.ndarray]:
     return operating_point(weihong_application(mass_as_inertia), table)
 
 
+#: one kgf cm [N m]: FANUC prints its torques in N m and in kgf cm.
+KGF_CM = to_si(1.0, "kgf") * to_si(10.0, "mm")
+FANUC_ALPHA = (
+    "FANUC AC Servo Motor α series Descriptions, B-65142E/04, 4. Selecting a Motor, "
+    "inertia examples, printed p. 31 "
+    "(http://cncmanuals.com/fanuc/319/ac-servo-motor-alpha-series-descriptions/page/47)"
+)
+FANUC_ALPHA_I_TORQUE = (
+    "FANUC AC Servo Motor αiS/αi series Descriptions, B-65262EN/03, 3.2.1 Calculating the "
+    "Load Torque, example for condition 1, printed p. 46 "
+    "(http://cncmanuals.com/fanuc/41/ac-servo-motor-alpha-i-is-series-descriptions/page/64)"
+)
+FANUC_ALPHA_I_RMS = (
+    "FANUC AC Servo Motor αiS/αi series Descriptions, B-65262EN/03, example of calculation "
+    "for condition 5, root-mean-square value of the torques, printed p. 59 "
+    "(http://cncmanuals.com/fanuc/41/ac-servo-motor-alpha-i-is-series-descriptions/page/77)"
+)
+THK_KR = (
+    "THK LM Guide Actuator KR catalog, Evaluating the Rated Life Span of the Ball Screw, "
+    "buckling load, p. 12 (http://pdf.directindustry.com/pdf/thk/lm-guide-actuator-kr/"
+    "328-6416-_13.html)"
+)
+#: FANUC αi's horizontal table: weight W 11760 N (1200 kg), gib force F_g 490 N, sliding
+#: friction 0.05, lead 20 mm, efficiency 0.9 and the nut's and bearings' friction torque
+#: T_f 0.8 N m at the motor (direct drive, Z1/Z2 = 1).
+FANUC_AI_W_N, FANUC_AI_GIB_N, FANUC_AI_MU = 11760.0, 490.0, 0.05
+FANUC_AI_LEAD_M, FANUC_AI_ETA, FANUC_AI_TF_NM = 0.020, 0.9, 0.8
+
+
+def _fanuc_constant_load_torque_kgf_cm() -> float:
+    """FANUC αi's constant load torque T_m = F l / (2 pi eta) + T_f with F = mu (W + F_g):
+    the thread's torque through the core's ``load_torque`` and the nut's and bearings'
+    friction torque added as the core adds a nut's drag (``total_torque``), in kgf cm."""
+    force_n = FANUC_AI_MU * (FANUC_AI_W_N + FANUC_AI_GIB_N)
+    thread_nm = torque.load_torque(force_n, FANUC_AI_LEAD_M, FANUC_AI_ETA)
+    return torque.total_torque(0.0, FANUC_AI_TF_NM, thread_nm) / KGF_CM
+
+
+def _fanuc_rms_torque_nm() -> float:
+    """FANUC αi's RMS torque of the α30/4000iS cycle through the core's ``rms_torque``:
+    acceleration T_a + T_m for t1, running T_m for t2, deceleration T_a - T_m for t1 (the
+    friction helps the motor stop), then the stop at T_o for t3."""
+    accel_nm, running_nm, stopped_nm = 83.2, 3.0, 3.0
+    ramp_s, run_s, stop_s = 0.08, 2.0, 3.0
+    torques = [accel_nm + running_nm, running_nm, accel_nm - running_nm, stopped_nm]
+    return profile.rms_torque(torques, [ramp_s, run_s, ramp_s, stop_s])
+
+
 SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Example 8-1"
 MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
 MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
@@ -296,5 +345,28 @@ EXAMPLES: tuple[Example, ...] = (
             lambda: thk.segment_torque_nm("decelerate"), thk.NOTE),
     Example("RMS torque of a cycle (Trms)", thk.SOURCE, thk.INPUTS, 1.305, "N m",
             lambda: float(thk.cycle().motor_rms_nm[0]), thk.NOTE),
+    Example("Ball screw shaft inertia", FANUC_ALPHA,
+            "steel 7.8 t/m³, 32 mm, 1 m", 0.0008, "kg m²",
+            lambda: torque.screw_inertia(torque.solid_rod_inertia_per_length(7800.0, 0.032),
+                                         1.0)),
+    Example("Table and work inertia", FANUC_ALPHA, "1000 kg, 8 mm per motor turn",
+            0.00162, "kg m²", lambda: torque.reflected_mass_inertia(1000.0, 0.008)),
+    Example("Constant load torque (Tm)", FANUC_ALPHA_I_TORQUE,
+            "μ 0.05, W 11760 N, gib 490 N, lead 20 mm, η 0.9, T_f 0.8 N m", 30.3, "kgf cm",
+            _fanuc_constant_load_torque_kgf_cm,
+            "FANUC prints T_m = 3.0 N m = 30.3 kgf cm; the table compares the kgf cm figure, "
+            "the one with three digits (the app's 2.966 N m is 1.1 % under the rounded "
+            "3.0). T_f, the nut's and bearings' friction torque, is added outside the "
+            "efficiency, as the app adds a nut's drag torque."),
+    Example("RMS torque of a cycle (Trms)", FANUC_ALPHA_I_RMS,
+            "T_a 83.2, T_m = T_o 3.0 N m; t1 0.08, t2 2.0, t3 3.0 s", 15.0, "N m",
+            _fanuc_rms_torque_nm,
+            "The cycle as FANUC's formula takes it: T_a + T_m over the ramp up (t1), T_m "
+            "running (t2), T_a - T_m over the ramp down (t1) and T_o at rest (t3)."),
+    Example("Permissible buckling load", THK_KR,
+            "d1 17.5 mm, 1300 mm, fixed–fixed (n 4), E 206 GPa, factor 0.5", 11000.0, "N",
+            lambda: buckling.allowed_buckling_load(
+                _euler(STEEL_E, 0.0175, 1.3, "fixed-fixed", True), 0.5),
+            "THK prints 11000 N, rounded; the exact Euler load at n = 4 is 11077 N."),
 )
 # fmt: on
