@@ -214,6 +214,63 @@ def _fanuc_rms_torque_nm() -> float:
     return profile.rms_torque(torques, [ramp_s, run_s, ramp_s, stop_s])
 
 
+YASKAWA = (
+    "Yaskawa Σ-V-MD series user manual (listed as E-V-MD), 2.2.2 Selection Calculations, "
+    "p. 2-5 "
+    "(https://manualshive.com/en/manual/yaskawa/e-v-md-series/3588034?page=30)"
+)
+YASKAWA_INPUTS = (
+    "250 kg, μ 0.2, η 0.9; ball screw 20 mm × 1.0 m, lead 10 mm, 7.87 t/m³; gear 1/2; "
+    "gear and coupling 0.40e-4 kg m²"
+)
+YASKAWA_NOTE = (
+    "The core has no gearbox: the motor turns twice per turn of the screw, so the load "
+    "moves 5 mm per motor turn (the lead the core is given), and the screw's own inertia "
+    "is reflected by the maker's 1 / R² with R = 2. The friction force is the maker's "
+    "μ m g = 0.2 × 250 × 9.8 N."
+)
+#: Yaskawa's example: linear mass, friction, efficiency, screw, gear ratio R (the motor
+#: turns R times per screw turn) and the gear's and coupling's inertia at the motor.
+YASKAWA_MASS_KG, YASKAWA_MU, YASKAWA_G, YASKAWA_ETA = 250.0, 0.2, 9.8, 0.9
+YASKAWA_SCREW_D_M, YASKAWA_SCREW_L_M, YASKAWA_LEAD_M = 0.02, 1.0, 0.01
+YASKAWA_RHO, YASKAWA_RATIO, YASKAWA_J_GEAR = 7870.0, 2.0, 0.40e-4
+
+
+def _yaskawa_screw_inertia_at_motor() -> float:
+    """Yaskawa's ball screw inertia at the motor: the core's solid rod, over R²."""
+    per_m = torque.solid_rod_inertia_per_length(YASKAWA_RHO, YASKAWA_SCREW_D_M)
+    return torque.screw_inertia(per_m, YASKAWA_SCREW_L_M) / YASKAWA_RATIO**2
+
+
+def _yaskawa_load_torque_nm() -> float:
+    """Yaskawa's load torque at the motor, mu m g through the thread at its efficiency,
+    the lead being the load's travel per motor turn (lead / R)."""
+    force_n = YASKAWA_MU * YASKAWA_MASS_KG * YASKAWA_G
+    return torque.load_torque(force_n, YASKAWA_LEAD_M / YASKAWA_RATIO, YASKAWA_ETA)
+
+
+def _yaskawa_load_inertia() -> float:
+    """Yaskawa's load inertia at the motor: the mass reflected through 5 mm a motor turn,
+    the screw over R² and the gear and coupling."""
+    mass = torque.reflected_mass_inertia(YASKAWA_MASS_KG, YASKAWA_LEAD_M / YASKAWA_RATIO)
+    return mass + _yaskawa_screw_inertia_at_motor() + YASKAWA_J_GEAR
+
+
+MITSUBISHI = (
+    "Mitsubishi MELDAS MDS-B-SVJ2 series specifications manual, 11-5 Example of servo "
+    "selection, Z axis, p. 11-15 "
+    "(https://www.easymanua.ls/mitsubishi-electric/meldas-mds-b-svj2-series/manual?p=275)"
+)
+#: one kg cm² [kg m²] (the Mitsubishi manual's inertia unit).
+KG_CM2 = to_si(1000.0, "g cm²")
+THK_CHANGE_NUT = (
+    "THK General Catalog, Change Nut, Point of Selection, Efficiency, Thrust and Torque, "
+    "p. B17-9 (https://www.scribd.com/document/652982319/en-b17-009)"
+)
+#: THK's DCMB20T change nut: lead 60 mm, efficiency 0.67 (THK's Table 2 at mu 0.2).
+THK_CHANGE_NUT_LEAD_M, THK_CHANGE_NUT_ETA = 0.060, 0.67
+
+
 SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Example 8-1"
 MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
 MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
@@ -368,5 +425,27 @@ EXAMPLES: tuple[Example, ...] = (
             lambda: buckling.allowed_buckling_load(
                 _euler(STEEL_E, 0.0175, 1.3, "fixed-fixed", True), 0.5),
             "THK prints 11000 N, rounded; the exact Euler load at n = 4 is 11077 N."),
+    Example("Load torque at the motor (TL)", YASKAWA, YASKAWA_INPUTS, 0.43, "N m",
+            _yaskawa_load_torque_nm, YASKAWA_NOTE),
+    Example("Ball screw inertia at the motor (JB)", YASKAWA, YASKAWA_INPUTS, 0.31e-4,
+            "kg m²", _yaskawa_screw_inertia_at_motor, YASKAWA_NOTE),
+    Example("Load inertia at the motor (JL)", YASKAWA, YASKAWA_INPUTS, 2.29e-4, "kg m²",
+            _yaskawa_load_inertia, YASKAWA_NOTE),
+    Example("Ball screw inertia (JB)", MITSUBISHI, "steel 7.80e-3 kg/cm³, 40 mm × 1000 mm",
+            19.6, "kg cm²",
+            lambda: torque.screw_inertia(torque.solid_rod_inertia_per_length(7800.0, 0.040),
+                                         1.0) / KG_CM2),
+    Example("Thrust from a torque", THK_CHANGE_NUT,
+            "DCMB20T, lead 60 mm, η 0.67 (μ 0.2), T 19.6 N m", 1370.0, "N",
+            lambda: 19.6 / torque.load_torque(1.0, THK_CHANGE_NUT_LEAD_M, THK_CHANGE_NUT_ETA),
+            "The torque to move a load is linear in the load, so the thrust a torque gives "
+            "is the torque over the core's torque per newton, lead / (2π η)."),
+    Example("Torque from a thrust (back-driving)", THK_CHANGE_NUT,
+            "DCMB20T, lead 60 mm, η 0.67 (μ 0.2), Fa 980 N", 6.27, "N m",
+            lambda: efficiency.holding_torque(980.0, THK_CHANGE_NUT_LEAD_M,
+                                              THK_CHANGE_NUT_ETA),
+            "THK takes the forward efficiency 0.67 for the torque a thrust makes, as the "
+            "core's holding torque does with the forward efficiency (the seed's form); "
+            "with the back-driving efficiency instead it is a few per cent lower."),
 )
 # fmt: on
