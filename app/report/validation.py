@@ -216,8 +216,7 @@ def _fanuc_rms_torque_nm() -> float:
 
 YASKAWA = (
     "Yaskawa Σ-V-MD series user manual (listed as E-V-MD), 2.2.2 Selection Calculations, "
-    "p. 2-5 "
-    "(https://manualshive.com/en/manual/yaskawa/e-v-md-series/3588034?page=30)"
+    "p. 2-5 (https://manualshive.com/en/manual/yaskawa/e-v-md-series/3588034?page=30)"
 )
 YASKAWA_INPUTS = (
     "250 kg, μ 0.2, η 0.9; ball screw 20 mm × 1.0 m, lead 10 mm, 7.87 t/m³; gear 1/2; "
@@ -425,6 +424,10 @@ EXAMPLES: tuple[Example, ...] = (
             lambda: buckling.allowed_buckling_load(
                 _euler(STEEL_E, 0.0175, 1.3, "fixed-fixed", True), 0.5),
             "THK prints 11000 N, rounded; the exact Euler load at n = 4 is 11077 N."),
+    Example("Motor shaft speed (nM)", YASKAWA, "15 m/min, lead 10 mm, gear 1/2", 3000.0,
+            "rpm", lambda: geometry.screw_speed_rpm(to_si(15.0, "m") / 60.0,
+                                                     YASKAWA_LEAD_M / YASKAWA_RATIO),
+            YASKAWA_NOTE),
     Example("Load torque at the motor (TL)", YASKAWA, YASKAWA_INPUTS, 0.43, "N m",
             _yaskawa_load_torque_nm, YASKAWA_NOTE),
     Example("Ball screw inertia at the motor (JB)", YASKAWA, YASKAWA_INPUTS, 0.31e-4,
