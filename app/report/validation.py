@@ -31,6 +31,7 @@ from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
 from app.report import thk_example as thk
+from app.report import trapezoid_table as tr
 
 #: largest relative difference from a published value the app may show.
 TOLERANCE = 0.01
@@ -270,6 +271,30 @@ THK_CHANGE_NUT = (
 THK_CHANGE_NUT_LEAD_M, THK_CHANGE_NUT_ETA = 0.060, 0.67
 
 
+TR_NOTE = (
+    "The table's efficiencies leave out the 15° flank: they are the square-thread form "
+    "tan λ / tan(λ + atan f) (the core's square_thread_efficiency) on the basic pitch "
+    "diameter d - P/2. The flank form the app's selection uses gives 1 to 3.5 % less over "
+    "the table's sizes, so the app asks for more torque than the table."
+)
+
+
+def _tr(name: str, friction: float) -> Example:
+    """One efficiency of the distributor's trapezoidal table, through the core."""
+    row = tr.BY_NAME[name]
+    published = row.efficiency_f01 if friction == 0.1 else row.efficiency_f02
+    return Example(
+        f"Trapezoidal efficiency, {name}",
+        tr.SOURCE,
+        f"d {row.nominal_m * 1e3:g} mm, P {row.pitch_m * 1e3:g} mm, lead "
+        f"{row.lead_m * 1e3:g} mm, f {friction:g}",
+        published,
+        "",
+        lambda: tr.table_efficiency(row, friction),
+        TR_NOTE,
+    )
+
+
 SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Example 8-1"
 MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
 MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
@@ -450,5 +475,17 @@ EXAMPLES: tuple[Example, ...] = (
             "THK takes the forward efficiency 0.67 for the torque a thrust makes, as the "
             "core's holding torque does with the forward efficiency (the seed's form); "
             "with the back-driving efficiency instead it is a few per cent lower."),
+    Example("Lead angle, Tr 20 x 20 (P5)", tr.SOURCE,
+            "lead 20 mm on d2 = 20 - 5/2 mm; printed 20°00′",
+            20.0, "°", lambda: tr.lead_angle_deg(tr.BY_NAME["Tr 20 x 20 (P5)"])),
+    Example("Lead angle, Tr 14 x 6 (P3)", tr.SOURCE,
+            "lead 6 mm on d2 = 14 - 3/2 mm; printed 8°41′",
+            tr.BY_NAME["Tr 14 x 6 (P3)"].published_angle_deg, "°",
+            lambda: tr.lead_angle_deg(tr.BY_NAME["Tr 14 x 6 (P3)"])),
+    _tr("Tr 20 x 4", 0.1),
+    _tr("Tr 20 x 4", 0.2),
+    _tr("Tr 14 x 6 (P3)", 0.1),
+    _tr("Tr 20 x 20 (P5)", 0.1),
+    _tr("Tr 20 x 20 (P5)", 0.2),
 )
 # fmt: on
