@@ -4,9 +4,9 @@ core's geometry (ISO 2904 pitch diameter, lead angle) and efficiency formulas.
 
 The table's efficiencies are those of the square-thread form, tan l / tan(l + atan f): the
 15 degree flank of the trapezoidal thread, which raises the normal force and so the
-friction by 1 / cos 15 deg, is not in them. The core's square-thread formula gives
-every row within 1 %; the flank form that the app's selection uses gives 1 to 3.5 % less, so the app
-asks the motor for more torque than the table would.
+friction by 1 / cos 15 deg, is not in them. The core's square-thread formula gives every
+row within 1 %; the flank form that the app's selection uses gives 1 to 3.5 % less, so the
+app asks the motor for more torque than the table would.
 """
 
 import math
