@@ -257,7 +257,7 @@ def _yaskawa_load_inertia() -> float:
 
 
 MITSUBISHI = (
-    "Mitsubishi MELDAS MDS-B-SVJ2 series specifications manual, 11-5 Example of servo "
+    "Mitsubishi MELDAS MDS-B-SVJ2 series manual, 11 Selection, 11-5 Example of servo "
     "selection, Z axis, p. 11-15 "
     "(https://www.easymanua.ls/mitsubishi-electric/meldas-mds-b-svj2-series/manual?p=275)"
 )
@@ -473,8 +473,9 @@ EXAMPLES: tuple[Example, ...] = (
             lambda: efficiency.holding_torque(980.0, THK_CHANGE_NUT_LEAD_M,
                                               THK_CHANGE_NUT_ETA),
             "THK takes the forward efficiency 0.67 for the torque a thrust makes, as the "
-            "core's holding torque does with the forward efficiency (the seed's form); "
-            "with the back-driving efficiency instead it is a few per cent lower."),
+            "core's holding torque does when given the forward efficiency (the seed's "
+            "form); the app's own hold check uses the back-driving efficiency, which needs "
+            "the screw's pitch diameter, not on this page."),
     Example("Lead angle, Tr 20 x 20 (P5)", tr.SOURCE,
             "lead 20 mm on d2 = 20 - 5/2 mm; printed 20°00′",
             20.0, "°", lambda: tr.lead_angle_deg(tr.BY_NAME["Tr 20 x 20 (P5)"])),
