@@ -19,6 +19,7 @@ from app.core.formulas import (
     efficiency,
     geometry,
     heat,
+    profile,
     pv,
     servo,
     stepper,
@@ -30,6 +31,7 @@ from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
 from app.report import thk_example as thk
+from app.report import trapezoid_table as tr
 
 #: largest relative difference from a published value the app may show.
 TOLERANCE = 0.01
@@ -165,6 +167,134 @@ def weihong_cycle(mass_as_inertia: bool = True) -> Quantities[np.ndarray]:
     return operating_point(weihong_application(mass_as_inertia), table)
 
 
+#: one kgf cm [N m]: FANUC prints its torques in N m and in kgf cm.
+KGF_CM = to_si(1.0, "kgf") * to_si(10.0, "mm")
+FANUC_ALPHA = (
+    "FANUC AC Servo Motor α series Descriptions, B-65142E/04, 4. Selecting a Motor, "
+    "inertia examples, printed p. 31 "
+    "(http://cncmanuals.com/fanuc/319/ac-servo-motor-alpha-series-descriptions/page/47)"
+)
+FANUC_ALPHA_I_TORQUE = (
+    "FANUC AC Servo Motor αiS/αi series Descriptions, B-65262EN/03, 3.2.1 Calculating the "
+    "Load Torque, example for condition 1, printed p. 46 "
+    "(http://cncmanuals.com/fanuc/41/ac-servo-motor-alpha-i-is-series-descriptions/page/64)"
+)
+FANUC_ALPHA_I_RMS = (
+    "FANUC AC Servo Motor αiS/αi series Descriptions, B-65262EN/03, example of calculation "
+    "for condition 5, root-mean-square value of the torques, printed p. 59 "
+    "(http://cncmanuals.com/fanuc/41/ac-servo-motor-alpha-i-is-series-descriptions/page/77)"
+)
+THK_KR = (
+    "THK LM Guide Actuator KR catalog, Evaluating the Rated Life Span of the Ball Screw, "
+    "buckling load, p. 12 (http://pdf.directindustry.com/pdf/thk/lm-guide-actuator-kr/"
+    "328-6416-_13.html)"
+)
+#: FANUC αi's horizontal table: weight W 11760 N (1200 kg), gib force F_g 490 N, sliding
+#: friction 0.05, lead 20 mm, efficiency 0.9 and the nut's and bearings' friction torque
+#: T_f 0.8 N m at the motor (direct drive, Z1/Z2 = 1).
+FANUC_AI_W_N, FANUC_AI_GIB_N, FANUC_AI_MU = 11760.0, 490.0, 0.05
+FANUC_AI_LEAD_M, FANUC_AI_ETA, FANUC_AI_TF_NM = 0.020, 0.9, 0.8
+
+
+def _fanuc_constant_load_torque_kgf_cm() -> float:
+    """FANUC αi's constant load torque T_m = F l / (2 pi eta) + T_f with F = mu (W + F_g):
+    the thread's torque through the core's ``load_torque`` and the nut's and bearings'
+    friction torque added as the core adds a nut's drag (``total_torque``), in kgf cm."""
+    force_n = FANUC_AI_MU * (FANUC_AI_W_N + FANUC_AI_GIB_N)
+    thread_nm = torque.load_torque(force_n, FANUC_AI_LEAD_M, FANUC_AI_ETA)
+    return torque.total_torque(0.0, FANUC_AI_TF_NM, thread_nm) / KGF_CM
+
+
+def _fanuc_rms_torque_nm() -> float:
+    """FANUC αi's RMS torque of the α30/4000iS cycle through the core's ``rms_torque``:
+    acceleration T_a + T_m for t1, running T_m for t2, deceleration T_a - T_m for t1 (the
+    friction helps the motor stop), then the stop at T_o for t3."""
+    accel_nm, running_nm, stopped_nm = 83.2, 3.0, 3.0
+    ramp_s, run_s, stop_s = 0.08, 2.0, 3.0
+    torques = [accel_nm + running_nm, running_nm, accel_nm - running_nm, stopped_nm]
+    return profile.rms_torque(torques, [ramp_s, run_s, ramp_s, stop_s])
+
+
+YASKAWA = (
+    "Yaskawa Σ-V-MD series user manual (listed as E-V-MD), 2.2.2 Selection Calculations, "
+    "p. 2-5 (https://manualshive.com/en/manual/yaskawa/e-v-md-series/3588034?page=30)"
+)
+YASKAWA_INPUTS = (
+    "250 kg, μ 0.2, η 0.9; ball screw 20 mm × 1.0 m, lead 10 mm, 7.87 t/m³; gear 1/2; "
+    "gear and coupling 0.40e-4 kg m²"
+)
+YASKAWA_NOTE = (
+    "The core has no gearbox: the motor turns twice per turn of the screw, so the load "
+    "moves 5 mm per motor turn (the lead the core is given), and the screw's own inertia "
+    "is reflected by the maker's 1 / R² with R = 2. The friction force is the maker's "
+    "μ m g = 0.2 × 250 × 9.8 N."
+)
+#: Yaskawa's example: linear mass, friction, efficiency, screw, gear ratio R (the motor
+#: turns R times per screw turn) and the gear's and coupling's inertia at the motor.
+YASKAWA_MASS_KG, YASKAWA_MU, YASKAWA_G, YASKAWA_ETA = 250.0, 0.2, 9.8, 0.9
+YASKAWA_SCREW_D_M, YASKAWA_SCREW_L_M, YASKAWA_LEAD_M = 0.02, 1.0, 0.01
+YASKAWA_RHO, YASKAWA_RATIO, YASKAWA_J_GEAR = 7870.0, 2.0, 0.40e-4
+
+
+def _yaskawa_screw_inertia_at_motor() -> float:
+    """Yaskawa's ball screw inertia at the motor: the core's solid rod, over R²."""
+    per_m = torque.solid_rod_inertia_per_length(YASKAWA_RHO, YASKAWA_SCREW_D_M)
+    return torque.screw_inertia(per_m, YASKAWA_SCREW_L_M) / YASKAWA_RATIO**2
+
+
+def _yaskawa_load_torque_nm() -> float:
+    """Yaskawa's load torque at the motor, mu m g through the thread at its efficiency,
+    the lead being the load's travel per motor turn (lead / R)."""
+    force_n = YASKAWA_MU * YASKAWA_MASS_KG * YASKAWA_G
+    return torque.load_torque(force_n, YASKAWA_LEAD_M / YASKAWA_RATIO, YASKAWA_ETA)
+
+
+def _yaskawa_load_inertia() -> float:
+    """Yaskawa's load inertia at the motor: the mass reflected through 5 mm a motor turn,
+    the screw over R² and the gear and coupling."""
+    mass = torque.reflected_mass_inertia(YASKAWA_MASS_KG, YASKAWA_LEAD_M / YASKAWA_RATIO)
+    return mass + _yaskawa_screw_inertia_at_motor() + YASKAWA_J_GEAR
+
+
+MITSUBISHI = (
+    "Mitsubishi MELDAS MDS-B-SVJ2 series manual, 11 Selection, 11-5 Example of servo "
+    "selection, Z axis, p. 11-15 "
+    "(https://www.easymanua.ls/mitsubishi-electric/meldas-mds-b-svj2-series/manual?p=275)"
+)
+#: one kg cm² [kg m²] (the Mitsubishi manual's inertia unit).
+KG_CM2 = to_si(1000.0, "g cm²")
+THK_CHANGE_NUT = (
+    "THK General Catalog, Change Nut, Point of Selection, Efficiency, Thrust and Torque, "
+    "p. B17-9 (https://www.scribd.com/document/652982319/en-b17-009)"
+)
+#: THK's DCMB20T change nut: lead 60 mm, efficiency 0.67 (THK's Table 2 at mu 0.2).
+THK_CHANGE_NUT_LEAD_M, THK_CHANGE_NUT_ETA = 0.060, 0.67
+
+
+TR_NOTE = (
+    "The table's efficiencies leave out the 15° flank: they are the square-thread form "
+    "tan λ / tan(λ + atan f) (the core's square_thread_efficiency) on the basic pitch "
+    "diameter d - P/2. The flank form the app's selection uses gives 1 to 3.5 % less over "
+    "the table's sizes, so the app asks for more torque than the table."
+)
+
+
+def _tr(name: str, friction: float) -> Example:
+    """One efficiency of the distributor's trapezoidal table, through the core."""
+    row = tr.BY_NAME[name]
+    published = row.efficiency_f01 if friction == 0.1 else row.efficiency_f02
+    return Example(
+        f"Trapezoidal efficiency, {name}",
+        tr.SOURCE,
+        f"d {row.nominal_m * 1e3:g} mm, P {row.pitch_m * 1e3:g} mm, lead "
+        f"{row.lead_m * 1e3:g} mm, f {friction:g}",
+        published,
+        "",
+        lambda: tr.table_efficiency(row, friction),
+        TR_NOTE,
+    )
+
+
 SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Example 8-1"
 MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
 MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
@@ -296,5 +426,67 @@ EXAMPLES: tuple[Example, ...] = (
             lambda: thk.segment_torque_nm("decelerate"), thk.NOTE),
     Example("RMS torque of a cycle (Trms)", thk.SOURCE, thk.INPUTS, 1.305, "N m",
             lambda: float(thk.cycle().motor_rms_nm[0]), thk.NOTE),
+    Example("Ball screw shaft inertia", FANUC_ALPHA,
+            "steel 7.8 t/m³, 32 mm, 1 m", 0.0008, "kg m²",
+            lambda: torque.screw_inertia(torque.solid_rod_inertia_per_length(7800.0, 0.032),
+                                         1.0)),
+    Example("Table and work inertia", FANUC_ALPHA, "1000 kg, 8 mm per motor turn",
+            0.00162, "kg m²", lambda: torque.reflected_mass_inertia(1000.0, 0.008)),
+    Example("Constant load torque (Tm)", FANUC_ALPHA_I_TORQUE,
+            "μ 0.05, W 11760 N, gib 490 N, lead 20 mm, η 0.9, T_f 0.8 N m", 30.3, "kgf cm",
+            _fanuc_constant_load_torque_kgf_cm,
+            "FANUC prints T_m = 3.0 N m = 30.3 kgf cm; the table compares the kgf cm figure, "
+            "the one with three digits (the app's 2.966 N m is 1.1 % under the rounded "
+            "3.0). T_f, the nut's and bearings' friction torque, is added outside the "
+            "efficiency, as the app adds a nut's drag torque."),
+    Example("RMS torque of a cycle (Trms)", FANUC_ALPHA_I_RMS,
+            "T_a 83.2, T_m = T_o 3.0 N m; t1 0.08, t2 2.0, t3 3.0 s", 15.0, "N m",
+            _fanuc_rms_torque_nm,
+            "The cycle as FANUC's formula takes it: T_a + T_m over the ramp up (t1), T_m "
+            "running (t2), T_a - T_m over the ramp down (t1) and T_o at rest (t3)."),
+    Example("Permissible buckling load", THK_KR,
+            "d1 17.5 mm, 1300 mm, fixed–fixed (n 4), E 206 GPa, factor 0.5", 11000.0, "N",
+            lambda: buckling.allowed_buckling_load(
+                _euler(STEEL_E, 0.0175, 1.3, "fixed-fixed", True), 0.5),
+            "THK prints 11000 N, rounded; the exact Euler load at n = 4 is 11077 N."),
+    Example("Motor shaft speed (nM)", YASKAWA, "15 m/min, lead 10 mm, gear 1/2", 3000.0,
+            "rpm", lambda: geometry.screw_speed_rpm(to_si(15.0, "m") / 60.0,
+                                                     YASKAWA_LEAD_M / YASKAWA_RATIO),
+            YASKAWA_NOTE),
+    Example("Load torque at the motor (TL)", YASKAWA, YASKAWA_INPUTS, 0.43, "N m",
+            _yaskawa_load_torque_nm, YASKAWA_NOTE),
+    Example("Ball screw inertia at the motor (JB)", YASKAWA, YASKAWA_INPUTS, 0.31e-4,
+            "kg m²", _yaskawa_screw_inertia_at_motor, YASKAWA_NOTE),
+    Example("Load inertia at the motor (JL)", YASKAWA, YASKAWA_INPUTS, 2.29e-4, "kg m²",
+            _yaskawa_load_inertia, YASKAWA_NOTE),
+    Example("Ball screw inertia (JB)", MITSUBISHI, "steel 7.80e-3 kg/cm³, 40 mm × 1000 mm",
+            19.6, "kg cm²",
+            lambda: torque.screw_inertia(torque.solid_rod_inertia_per_length(7800.0, 0.040),
+                                         1.0) / KG_CM2),
+    Example("Thrust from a torque", THK_CHANGE_NUT,
+            "DCMB20T, lead 60 mm, η 0.67 (μ 0.2), T 19.6 N m", 1370.0, "N",
+            lambda: 19.6 / torque.load_torque(1.0, THK_CHANGE_NUT_LEAD_M, THK_CHANGE_NUT_ETA),
+            "The torque to move a load is linear in the load, so the thrust a torque gives "
+            "is the torque over the core's torque per newton, lead / (2π η)."),
+    Example("Torque from a thrust (back-driving)", THK_CHANGE_NUT,
+            "DCMB20T, lead 60 mm, η 0.67 (μ 0.2), Fa 980 N", 6.27, "N m",
+            lambda: efficiency.holding_torque(980.0, THK_CHANGE_NUT_LEAD_M,
+                                              THK_CHANGE_NUT_ETA),
+            "THK takes the forward efficiency 0.67 for the torque a thrust makes, as the "
+            "core's holding torque does when given the forward efficiency (the seed's "
+            "form); the app's own hold check uses the back-driving efficiency, which needs "
+            "the screw's pitch diameter, not on this page."),
+    Example("Lead angle, Tr 20 x 20 (P5)", tr.SOURCE,
+            "lead 20 mm on d2 = 20 - 5/2 mm; printed 20°00′",
+            20.0, "°", lambda: tr.lead_angle_deg(tr.BY_NAME["Tr 20 x 20 (P5)"])),
+    Example("Lead angle, Tr 14 x 6 (P3)", tr.SOURCE,
+            "lead 6 mm on d2 = 14 - 3/2 mm; printed 8°41′",
+            tr.BY_NAME["Tr 14 x 6 (P3)"].published_angle_deg, "°",
+            lambda: tr.lead_angle_deg(tr.BY_NAME["Tr 14 x 6 (P3)"])),
+    _tr("Tr 20 x 4", 0.1),
+    _tr("Tr 20 x 4", 0.2),
+    _tr("Tr 14 x 6 (P3)", 0.1),
+    _tr("Tr 20 x 20 (P5)", 0.1),
+    _tr("Tr 20 x 20 (P5)", 0.2),
 )
 # fmt: on
