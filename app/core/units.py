@@ -101,6 +101,7 @@ UNITS: dict[str, Unit] = {
         _unit("lb", "mass", _LB),
         _unit("kg m²", "inertia", 1),
         _unit("g cm²", "inertia", Fraction(1, 10**7)),
+        _unit("kg cm²", "inertia", Fraction(1, 10**4)),
         _unit("oz in²", "inertia", _LB / 16 * _IN**2),
         _unit("lb in²", "inertia", _LB * _IN**2),
         _unit("kg m²/m", "inertia_per_length", 1),

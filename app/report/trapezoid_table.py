@@ -13,6 +13,7 @@ import math
 from dataclasses import dataclass
 
 from app.core.formulas import efficiency, geometry, trapezoidal
+from app.core.units import to_si
 
 SOURCE = (
     "Transdev, Trapezoidal Screw Specifications, columns lead angle and efficiency at "
@@ -21,7 +22,7 @@ SOURCE = (
 )
 #: the flank half-angle of the ISO metric trapezoidal thread (30 degrees included).
 FLANK_HALF_ANGLE_DEG = 15.0
-MM = 1e-3
+MM = to_si(1.0, "mm")
 
 
 @dataclass(frozen=True, slots=True)

@@ -262,7 +262,7 @@ MITSUBISHI = (
     "(https://www.easymanua.ls/mitsubishi-electric/meldas-mds-b-svj2-series/manual?p=275)"
 )
 #: one kg cm² [kg m²] (the Mitsubishi manual's inertia unit).
-KG_CM2 = to_si(1000.0, "g cm²")
+KG_CM2 = to_si(1.0, "kg cm²")
 THK_CHANGE_NUT = (
     "THK General Catalog, Change Nut, Point of Selection, Efficiency, Thrust and Torque, "
     "p. B17-9 (https://www.scribd.com/document/652982319/en-b17-009)"
@@ -286,8 +286,8 @@ def _tr(name: str, friction: float) -> Example:
     return Example(
         f"Trapezoidal efficiency, {name}",
         tr.SOURCE,
-        f"d {row.nominal_m * 1e3:g} mm, P {row.pitch_m * 1e3:g} mm, lead "
-        f"{row.lead_m * 1e3:g} mm, f {friction:g}",
+        f"d {from_si(row.nominal_m, 'mm'):g} mm, P {from_si(row.pitch_m, 'mm'):g} mm, lead "
+        f"{from_si(row.lead_m, 'mm'):g} mm, f {friction:g}",
         published,
         "",
         lambda: tr.table_efficiency(row, friction),

@@ -228,6 +228,7 @@ ALLOWED = {
     ("app/core/formulas/trapezoidal.py", 1e-3): "ISO 2904: crest clearance 1 mm, in m",
     ("app/core/formulas/support.py", 1e6): "ISO 281: a rating is for 10^6 revolutions",
     ("app/report/thk_example.py", 1e-3): "THK's example: the motor's rotor, 1e-3 kg m^2",
+    ("app/report/validation.py", 1e3): "FANUC's example: a table and work of 1000 kg",
 }
 #: keyword arguments and calls whose numbers are input bounds and defaults, in the API
 #: unit of their field (pydantic's ``ge``/``le``/``gt``/``lt`` are bounds too): values,

@@ -8,8 +8,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.catalog.motors import MAX_STEPPER_RPM
+from app.contract.fields import BY_API
 from app.contract.input_types import _curve_points
 from app.core.formulas import stepper
+from tests.core.pull_out_curves import CURVES, Curve
 from tests.motor_library import MOTORS
 
 
@@ -203,123 +205,41 @@ def test_the_drawn_curve_never_promises_more_than_the_model(
     assert drawn >= model / ((1 + ratio) ** 2 / (4 * ratio)) * (1 - 1e-12)
 
 
-#: Makers' pull-out figures published as numbers, with the datasheet values the model
-#: needs: (maker and part, source, supply V, phase current A, resistance ohm,
+#: The Trinamic QSH4218 manual's figure printed as a number, with the datasheet values the
+#: model needs: (maker and part, source, supply V, phase current A, resistance ohm,
 #: inductance H, step angle deg, holding torque N m, drive current set as RMS, speed
 #: rpm, published torque N m).
+TRINAMIC_POINT = (
+    "Trinamic QSH4218-47-28-040",
+    "Trinamic (ADI) QMOT QSH4218 manual V1.10: section 2, '0.25Nm torque at 1200 RPM "
+    "with a 24V supply', 'optimized for 2.8A RMS coil current'; Table 2.1: 2.8 A, "
+    "0.5 ohm, 0.6 mH, 0.40 N m, 1.8 deg; section 5.4: tested at 2.8 A RMS",
+    24.0,
+    2.8,
+    0.5,
+    0.0006,
+    1.8,
+    0.40,
+    True,
+    1200.0,
+    0.25,
+)
+#: Every point of the published curves on a sine (microstepping) drive, the drive the
+#: model describes (``tests/core/pull_out_curves.py``), in the same form, and the
+#: Trinamic figure.
 PUBLISHED_POINTS = [
-    (
-        "Trinamic QSH4218-47-28-040",
-        "Trinamic (ADI) QMOT QSH4218 manual V1.10: section 2, '0.25Nm torque at 1200 RPM "
-        "with a 24V supply', 'optimized for 2.8A RMS coil current'; Table 2.1: 2.8 A, "
-        "0.5 ohm, 0.6 mH, 0.40 N m, 1.8 deg; section 5.4: tested at 2.8 A RMS",
-        24.0,
-        2.8,
-        0.5,
-        0.0006,
-        1.8,
-        0.40,
-        True,
-        1200.0,
-        0.25,
-    ),
-]
-#: STEPPERONLINE 23HS32-4004S: full datasheet (amps/phase 4.00, 0.65 ohm +-10 %, 3.2 mH
-#: +-20 % at 1 kHz, holding torque 2.40 N m, 1.8 deg) and "Pull out torque curve of
-#: 23HS32-4004S" (driver DM542T, microstep 2000, current PK4.2A), both as kept in the
-#: public repository jmpz63/APM (Projects/Moveo_Bridge/Onboarding/
-#: 04_Hardware_Firmware_Network_Architecture/joint_datasheets/joint2/, commit 411985f).
-#: The curve's plotted points read off the chart, N cm (0.27 N cm a pixel at 216 dpi;
-#: frequency 3, 7, 10, 13, 17, 20 kHz at 2000 steps a turn: 90 ... 600 rpm). The 36 V
-#: point at 90 rpm lies under the 48 V marker and is left out. The drive's peak 4.2 A is
-#: 5 % above the rated 4.0 A the model is given (as the app's inputs are).
-SO_23HS32 = "STEPPERONLINE 23HS32-4004S pull-out curve (DM542T, 2000 microsteps, PK4.2A)"
-SO_23HS32_POINTS = {
-    48.0: [(90, 184.1), (210, 182.0), (300, 177.8), (390, 172.9), (510, 149.8), (600, 132.9)],
-    36.0: [(210, 177.2), (300, 163.9), (390, 139.2), (510, 122.8), (600, 102.7)],
-}
-PUBLISHED_POINTS += [
-    (
-        f"STEPPERONLINE 23HS32-4004S at {supply:g} V",
-        SO_23HS32,
-        supply,
-        4.0,
-        0.65,
-        0.0032,
-        1.8,
-        2.40,
-        False,
-        float(rpm),
-        n_cm / 100.0,
-    )
-    for supply, points in SO_23HS32_POINTS.items()
-    for rpm, n_cm in points
-]
+    (c.part, c.source, *c.model_args, c.rms, rpm, nm)
+    for c in CURVES
+    if c.sine_drive
+    for rpm, nm in c.points
+] + [TRINAMIC_POINT]
 POINT_IDS = [f"{p[0]} at {p[9]:g} rpm" for p in PUBLISHED_POINTS]
-
-#: Published half-step curves on a supply below 4 times the winding's I R, outside the
-#: model's validity range (same repository and commit, joint_datasheets/joint5 and
-#: joint1): (part, supply V, current A, resistance ohm, inductance H, holding N m,
-#: [(rpm, published N m)]). 14HS17-0504S: datasheet 0.50 A, 15 ohm, 26 mH, 0.23 N m;
-#: curve "0.5A/PHASE 20V CONSTANT CURRENT HALF STEP", points in gf cm at 400 ... 3000
-#: pulses/s (half step: 400 pulses a turn). 17HS24-0644S: datasheet 0.60 A, 14.5 ohm,
-#: 35 mH, 0.65 N m; curve "0.64A/P 24V HALF STEP" (the model given the curve's 0.64 A),
-#: points in g cm. gf cm x 9.80665e-5 = N m.
-GF_CM = 9.80665e-5
-HALF_STEP_LOW_SUPPLY = [
-    (
-        "STEPPERONLINE 14HS17-0504S",
-        20.0,
-        0.5,
-        15.0,
-        0.026,
-        0.23,
-        [
-            (n, t * GF_CM)
-            for n, t in (
-                (60, 1500),
-                (90, 1700),
-                (120, 1800),
-                (150, 1800),
-                (180, 1700),
-                (210, 1600),
-                (240, 1550),
-                (270, 1500),
-                (300, 1300),
-                (330, 1200),
-                (375, 1100),
-                (420, 900),
-                (450, 700),
-            )
-        ],
-    ),
-    (
-        "STEPPERONLINE 17HS24-0644S",
-        24.0,
-        0.64,
-        14.5,
-        0.035,
-        0.65,
-        [
-            (n, t * GF_CM)
-            for n, t in (
-                (60, 5190),
-                (90, 5090),
-                (120, 4400),
-                (150, 3800),
-                (180, 3100),
-                (210, 2510),
-                (240, 1910),
-                (270, 1510),
-                (300, 1110),
-                (330, 910),
-                (360, 720),
-                (390, 560),
-                (420, 320),
-            )
-        ],
-    ),
-]
+#: The published curves whose supply is at least 4 times the winding's I R (the model's
+#: range), of every drive, and those below it.
+IN_SUPPLY = [c for c in CURVES if c.supply_v >= 4 * c.current_a * c.resistance_ohm]
+LOW_SUPPLY = [c for c in CURVES if c not in IN_SUPPLY]
+#: The stepper torque margin's default (the field table's), which divides the pull-out.
+DEFAULT_MARGIN = float(BY_API["stepper_torque_margin"].default)
 
 
 def _model_at(point: tuple, current_is_rms: bool) -> float:
@@ -372,18 +292,33 @@ def test_past_the_confirmed_range_the_circuit_alone_runs_high(point: tuple) -> N
         assert rpm > limit
 
 
-@pytest.mark.parametrize("part", HALF_STEP_LOW_SUPPLY, ids=[p[0] for p in HALF_STEP_LOW_SUPPLY])
-def test_a_supply_below_four_times_ir_is_outside_the_range(part: tuple) -> None:
-    """The two half-step curves run on 20 V over 7.5 V and 24 V over 9.3 V (2.7 and 2.6
-    times I R), below the makers' 4 to 22 times (Trinamic QSH4218 manual, Table 6.2) and
-    outside the model's range; their real curves fall far below it (the 17HS24-0644S at
-    420 rpm: 0.031 N m published, 0.140 from the model), which is why the motor-curve
-    check says such a supply is outside it."""
-    _, supply, current, resistance, inductance, holding, points = part
-    assert supply < 4 * current * resistance
-    args = (supply, current, resistance, inductance, 1.8, holding)
-    worst = max(stepper.microstep_pull_out_torque(rpm, *args) / t for rpm, t in points)
+@pytest.mark.parametrize("curve", LOW_SUPPLY, ids=[c.part for c in LOW_SUPPLY])
+def test_a_supply_below_four_times_ir_is_outside_the_range(curve: Curve) -> None:
+    """The two STEPPERONLINE half-step curves run on 20 V over 7.5 V and 24 V over
+    9.3 V (2.7 and 2.6 times I R), below the makers' 4 to 22 times (Trinamic QSH4218
+    manual, Table 6.2) and outside the model's range; their real curves fall far below
+    it (the 17HS24-0644S at 420 rpm: 0.031 N m published, 0.140 from the model), which
+    is why the motor-curve check says such a supply is outside it."""
+    assert curve.supply_v < 4 * curve.current_a * curve.resistance_ohm
+    worst = max(
+        stepper.microstep_pull_out_torque(rpm, *curve.model_args, curve.rms) / nm
+        for rpm, nm in curve.points
+    )
     assert worst > 1.15
+
+
+@pytest.mark.parametrize("curve", IN_SUPPLY, ids=[c.part for c in IN_SUPPLY])
+def test_over_the_default_margin_no_published_point_is_exceeded(curve: Curve) -> None:
+    """Over the stepper torque margin's default (1.5, Parker's 50 %) the usable torque
+    lies below every point of every published curve in the model's supply range, of
+    three makers (STEPPERONLINE, Changzhou Songyang, Trinamic), on a microstepping or a
+    half-step drive: the model alone runs up to 1.38 times a half-step curve (Trinamic
+    QSH4218-35-10-027 at 225 rpm, its 1.0 A read as RMS: 0.27 N m against 0.196; the
+    Songyang SY42STH38-1684A at 600 rpm, 1.30 times), so the usable torque up to 0.92
+    of it. A rating is never above what the maker publishes for the part."""
+    for rpm, nm in curve.points:
+        model = stepper.microstep_pull_out_torque(rpm, *curve.model_args, curve.rms)
+        assert model / DEFAULT_MARGIN <= nm, (rpm, model / nm)
 
 
 def test_a_microstepping_drive_gives_the_holding_torque_over_root_two() -> None:

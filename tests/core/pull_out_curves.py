@@ -1,0 +1,336 @@
+"""Makers' published stepper pull-out curves as numbers, with the datasheet values the
+stepper model needs, for ``tests/core/test_stepper.py``.
+
+Each chart was read at its plotted points (markers, or the vertices of a vector chart)
+from the maker's own document as kept in a public repository (named with its commit);
+the axes calibrated on the chart's gridlines and the reading checked by overlaying the
+points on the chart. Speeds in rpm (half step: 400 pulses a turn; 2000 microsteps: 2000),
+torques in N m (1 gf cm = 9.80665e-5 N m). ``rms``: the chart's drive current read as an
+RMS value (Trinamic: "coil current 2.8A RMS"; its V1.03 manual's "1.0A / Phase" charts
+are taken as RMS too, as its V1.10 manual states for the same figures: the higher
+reading of the model, the safe side of a bound on it).
+"""
+
+from typing import NamedTuple
+
+
+class Curve(NamedTuple):
+    """One published pull-out curve: the part, where the chart is, its drive, supply
+    [V], current [A] (RMS-set or peak-set), winding resistance [ohm] and inductance [H],
+    step angle [deg], holding torque [N m] and the points (rpm, N m)."""
+
+    part: str
+    source: str
+    drive: str
+    supply_v: float
+    current_a: float
+    rms: bool
+    resistance_ohm: float
+    inductance_h: float
+    step_angle_deg: float
+    holding_nm: float
+    points: tuple[tuple[float, float], ...]
+
+    @property
+    def sine_drive(self) -> bool:
+        """Run on a microstepping (sine) drive, the drive the model describes."""
+        return "microstep" in self.drive
+
+    @property
+    def model_args(self) -> tuple[float, float, float, float, float, float]:
+        return (
+            self.supply_v,
+            self.current_a,
+            self.resistance_ohm,
+            self.inductance_h,
+            self.step_angle_deg,
+            self.holding_nm,
+        )
+
+
+APM = (
+    "STEPPERONLINE datasheet and torque-curve PDFs in jmpz63/APM, Projects/Moveo_Bridge/"
+    "Onboarding/04_Hardware_Firmware_Network_Architecture/joint_datasheets/ (commit 411985f)"
+)
+GF_CM = 9.80665e-5
+
+CURVES = (
+    Curve(
+        "STEPPERONLINE 23HS32-4004S at 48 V",
+        APM + ", joint2: 2.40 N m, 4.00 A, 0.65 ohm, 3.2 mH",
+        "Leadshine DM542T, 2000 microsteps, peak 4.2 A",
+        48.0,
+        4.0,
+        False,
+        0.65,
+        0.0032,
+        1.8,
+        2.40,
+        (
+            (90.0, 1.841),
+            (210.0, 1.820),
+            (300.0, 1.778),
+            (390.0, 1.729),
+            (510.0, 1.498),
+            (600.0, 1.329),
+        ),
+    ),
+    Curve(
+        "STEPPERONLINE 23HS32-4004S at 36 V",
+        APM + ", joint2 (the 36 V point at 90 rpm lies under the 48 V marker)",
+        "Leadshine DM542T, 2000 microsteps, peak 4.2 A",
+        36.0,
+        4.0,
+        False,
+        0.65,
+        0.0032,
+        1.8,
+        2.40,
+        ((210.0, 1.772), (300.0, 1.639), (390.0, 1.392), (510.0, 1.228), (600.0, 1.027)),
+    ),
+    Curve(
+        "STEPPERONLINE 14HS17-0504S",
+        APM + ", joint5: 0.23 N m, 0.50 A, 15 ohm, 26 mH; chart '0.5A/PHASE 20V CONSTANT "
+        "CURRENT HALF STEP', gf cm",
+        "half step, constant current 0.5 A",
+        20.0,
+        0.5,
+        False,
+        15.0,
+        0.026,
+        1.8,
+        0.23,
+        tuple(
+            (n, round(t * GF_CM, 4))
+            for n, t in (
+                (60, 1500),
+                (90, 1700),
+                (120, 1800),
+                (150, 1800),
+                (180, 1700),
+                (210, 1600),
+                (240, 1550),
+                (270, 1500),
+                (300, 1300),
+                (330, 1200),
+                (375, 1100),
+                (420, 900),
+                (450, 700),
+            )
+        ),
+    ),
+    Curve(
+        "STEPPERONLINE 17HS24-0644S",
+        APM + ", joint1: 0.65 N m, 14.5 ohm, 35 mH (datasheet 0.60 A, chart '0.64A/P 24V "
+        "HALF STEP'), g cm",
+        "half step, 0.64 A",
+        24.0,
+        0.64,
+        False,
+        14.5,
+        0.035,
+        1.8,
+        0.65,
+        tuple(
+            (n, round(t * GF_CM, 4))
+            for n, t in (
+                (60, 5190),
+                (90, 5090),
+                (120, 4400),
+                (150, 3800),
+                (180, 3100),
+                (210, 2510),
+                (240, 1910),
+                (270, 1510),
+                (300, 1110),
+                (330, 910),
+                (360, 720),
+                (390, 560),
+                (420, 320),
+            )
+        ),
+    ),
+    Curve(
+        "Changzhou Songyang SY35ST36-1004A",
+        "pichim/PM2_PES_Board_Example, docs/datasheets/SY35ST36-1004A.pdf (commit c256c7f); "
+        "chart 'Pull out torque curve: VOLTAGE: 24VDC, CONSTANT CURRENT: 1.0A, HALF STEP'",
+        "half step, 1.0 A",
+        24.0,
+        1.0,
+        False,
+        2.7,
+        0.0043,
+        1.8,
+        0.1373,
+        (
+            (15.0, 0.0976),
+            (45.0, 0.0958),
+            (120.0, 0.0939),
+            (165.0, 0.0921),
+            (240.0, 0.0891),
+            (315.0, 0.0861),
+            (390.0, 0.0824),
+            (450.0, 0.08),
+            (600.0, 0.0781),
+            (750.0, 0.0763),
+        ),
+    ),
+    Curve(
+        "Changzhou Songyang SY42STH38-1684A",
+        "pichim/PM2_PES_Board_Example, docs/datasheets/SY42STH38-1684A.pdf (commit c256c7f); "
+        "chart 'PULL out turque curve : VOLTAGE: 24VDC CONSTANT CURRENT : 1.68A HALF STEP'",
+        "half step, 1.68 A",
+        24.0,
+        1.68,
+        False,
+        1.65,
+        0.0032,
+        1.8,
+        0.36,
+        (
+            (30.0, 0.2606),
+            (75.0, 0.2894),
+            (105.0, 0.3),
+            (135.0, 0.2803),
+            (180.0, 0.2406),
+            (270.0, 0.2406),
+            (360.0, 0.225),
+            (450.0, 0.2219),
+            (600.0, 0.1953),
+            (750.0, 0.1844),
+        ),
+    ),
+    Curve(
+        "Changzhou Songyang SY42STH47-1684B",
+        "rkoeppl/ueberramps, SY42STH47-1684B.pdf (commit bbc956f); chart 'Pull out torque "
+        "curve: VOLTAGE: 24VDC, CONSTANT CURRENT: 1.68A, HALF STEP'",
+        "half step, 1.68 A",
+        24.0,
+        1.68,
+        False,
+        1.65,
+        0.0028,
+        1.8,
+        0.4315,
+        (
+            (30.0, 0.305),
+            (75.0, 0.3),
+            (105.0, 0.3),
+            (135.0, 0.31),
+            (180.0, 0.3),
+            (270.0, 0.28),
+            (360.0, 0.29),
+            (450.0, 0.27),
+            (600.0, 0.25),
+            (750.0, 0.24),
+            (900.0, 0.2),
+            (1050.0, 0.1793),
+        ),
+    ),
+    Curve(
+        "Trinamic (ADI) QSH4218-35-10-027",
+        "SyedSiddiqShakir/powtech_laser_stepper, QSH4218_manual.pdf (commit 681e0c9), "
+        "Figure 4.1, p. 6; "
+        "chart 'Testing conditions: VM: 24V; 1.0A / Phase Driver: M325, half step'",
+        "half step, 1.0 A RMS",
+        24.0,
+        1.0,
+        True,
+        5.3,
+        0.0066,
+        1.8,
+        0.27,
+        (
+            (75.3, 0.22),
+            (150.0, 0.2),
+            (225.0, 0.196),
+            (300.1, 0.2),
+            (374.7, 0.19),
+            (450.0, 0.19),
+            (599.8, 0.1641),
+            (749.9, 0.1441),
+            (900.0, 0.1199),
+        ),
+    ),
+    Curve(
+        "Trinamic (ADI) QSH4218-41-10-035",
+        "SyedSiddiqShakir/powtech_laser_stepper, QSH4218_manual.pdf (commit 681e0c9), "
+        "Figure 4.2, p. 6; "
+        "chart 'Testing conditions: VM: 24V; 1.0A / Phase Driver: M325, half step'",
+        "half step, 1.0 A RMS",
+        24.0,
+        1.0,
+        True,
+        4.5,
+        0.0075,
+        1.8,
+        0.35,
+        (
+            (75.0, 0.281),
+            (150.0, 0.2988),
+            (300.8, 0.2725),
+            (450.0, 0.235),
+            (600.0, 0.1776),
+            (750.0, 0.1299),
+            (900.0, 0.1097),
+            (1050.0, 0.1009),
+            (1200.0, 0.0928),
+            (1349.2, 0.0778),
+            (1499.2, 0.0568),
+        ),
+    ),
+    Curve(
+        "Trinamic (ADI) QSH4218-47-28-040",
+        "thomasarmel/arduino_polytech_2019_2020, datasheets/QSH4218_manual.pdf (commit 1437bba), "
+        "Figure 5.4, p. 8; "
+        "chart 'Testing conditions: driver supply voltage: +24V DC, coil current: 2.8A RMS, "
+        "half step operation'",
+        "half step, 2.8 A RMS",
+        24.0,
+        2.8,
+        True,
+        0.5,
+        0.0006,
+        1.8,
+        0.4,
+        (
+            (149.8, 0.4035),
+            (299.9, 0.4035),
+            (449.8, 0.3894),
+            (599.8, 0.375),
+            (750.1, 0.3438),
+            (900.1, 0.3081),
+            (1050.0, 0.2813),
+            (1200.2, 0.2545),
+            (1350.2, 0.2449),
+            (1500.4, 0.2352),
+        ),
+    ),
+    Curve(
+        "Trinamic (ADI) QSH4218-51-10-049",
+        "SyedSiddiqShakir/powtech_laser_stepper, QSH4218_manual.pdf (commit 681e0c9), "
+        "Figure 4.3, p. 7; "
+        "chart 'Testing conditions: VM: 24V; 1.0A / Phase Driver: M325, half step'",
+        "half step, 1.0 A RMS",
+        24.0,
+        1.0,
+        True,
+        5.0,
+        0.008,
+        1.8,
+        0.49,
+        (
+            (29.2, 0.3963),
+            (149.6, 0.3748),
+            (299.6, 0.3167),
+            (449.3, 0.2348),
+            (599.8, 0.1528),
+            (749.8, 0.13),
+            (900.0, 0.1096),
+            (1050.3, 0.092),
+            (1200.0, 0.0776),
+            (1350.4, 0.0772),
+            (1500.8, 0.0634),
+        ),
+    ),
+)
