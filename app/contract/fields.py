@@ -398,7 +398,7 @@ FIELDS: tuple[InputField, ...] = (
         "against it (a stepper that slips loses its position). 1.5, the 50 % margin "
         "Parker recommends for steppers (Parker Motion knowledge base, Torque Margin); "
         "Trinamic's QSH manuals ask for 30-50 % plus 10 %. The pull-out model runs up to "
-        "1.38 times makers' published half-step curves: below 1.4 a drawn curve may rate "
+        "1.30 times makers' published half-step curves: below 1.3 a drawn curve may rate "
         "the motor above its maker's chart. 1 or more",
         group="Safety factors",
         kind="number", default=1.5, bounds=(1.0, 10.0),

@@ -5,10 +5,13 @@ Each chart was read at its plotted points (markers, or the vertices of a vector 
 from the maker's own document as kept in a public repository (named with its commit);
 the axes calibrated on the chart's gridlines and the reading checked by overlaying the
 points on the chart. Speeds in rpm (half step: 400 pulses a turn; 2000 microsteps: 2000),
-torques in N m (1 gf cm = 9.80665e-5 N m). ``rms``: the chart's drive current read as an
-RMS value (Trinamic: "coil current 2.8A RMS"; its V1.03 manual's "1.0A / Phase" charts
-are taken as RMS too, as its V1.10 manual states for the same figures: the higher
-reading of the model, the safe side of a bound on it).
+torques in N m (1 gf cm = 9.80665e-5 N m). ``rms``: the chart prints its drive current as
+an RMS value (Trinamic QSH4218-47-28-040: "coil current: 2.8A RMS"); every other chart
+prints a plain current ("1.0A / Phase", "CONSTANT CURRENT: 1.68A"), read as the app reads
+a current by default, the sine's peak. For the Trinamic V1.03 charts at "1.0A / Phase"
+the later manual says RMS; their low-speed torque, 80-81 % of the holding torque, sits
+with the peak reading (71 %) rather than the RMS one (100 %, which the 2.8 A RMS motor
+does reach), and read as RMS the model would run up to 1.38 times them.
 """
 
 from typing import NamedTuple
@@ -232,10 +235,10 @@ CURVES = (
         "SyedSiddiqShakir/powtech_laser_stepper, QSH4218_manual.pdf (commit 681e0c9), "
         "Figure 4.1, p. 6; "
         "chart 'Testing conditions: VM: 24V; 1.0A / Phase Driver: M325, half step'",
-        "half step, 1.0 A RMS",
+        "half step, 1.0 A",
         24.0,
         1.0,
-        True,
+        False,
         5.3,
         0.0066,
         1.8,
@@ -257,10 +260,10 @@ CURVES = (
         "SyedSiddiqShakir/powtech_laser_stepper, QSH4218_manual.pdf (commit 681e0c9), "
         "Figure 4.2, p. 6; "
         "chart 'Testing conditions: VM: 24V; 1.0A / Phase Driver: M325, half step'",
-        "half step, 1.0 A RMS",
+        "half step, 1.0 A",
         24.0,
         1.0,
-        True,
+        False,
         4.5,
         0.0075,
         1.8,
@@ -311,10 +314,10 @@ CURVES = (
         "SyedSiddiqShakir/powtech_laser_stepper, QSH4218_manual.pdf (commit 681e0c9), "
         "Figure 4.3, p. 7; "
         "chart 'Testing conditions: VM: 24V; 1.0A / Phase Driver: M325, half step'",
-        "half step, 1.0 A RMS",
+        "half step, 1.0 A",
         24.0,
         1.0,
-        True,
+        False,
         5.0,
         0.008,
         1.8,

@@ -312,10 +312,9 @@ def test_over_the_default_margin_no_published_point_is_exceeded(curve: Curve) ->
     """Over the stepper torque margin's default (1.5, Parker's 50 %) the usable torque
     lies below every point of every published curve in the model's supply range, of
     three makers (STEPPERONLINE, Changzhou Songyang, Trinamic), on a microstepping or a
-    half-step drive: the model alone runs up to 1.38 times a half-step curve (Trinamic
-    QSH4218-35-10-027 at 225 rpm, its 1.0 A read as RMS: 0.27 N m against 0.196; the
-    Songyang SY42STH38-1684A at 600 rpm, 1.30 times), so the usable torque up to 0.92
-    of it. A rating is never above what the maker publishes for the part."""
+    half-step drive: the model alone runs up to 1.30 times a half-step curve (Changzhou
+    Songyang SY42STH38-1684A at 600 rpm: 0.2546 N m against 0.1953), so the usable torque
+    up to 0.87 of it. A rating is never above what the maker publishes for the part."""
     for rpm, nm in curve.points:
         model = stepper.microstep_pull_out_torque(rpm, *curve.model_args, curve.rms)
         assert model / DEFAULT_MARGIN <= nm, (rpm, model / nm)
@@ -388,3 +387,17 @@ def test_the_drawn_microstepping_curve_never_promises_more_than_the_model(
     assert drawn <= stepper.microstep_pull_out_torque(rpm, *args) * (1 + 1e-12)
     assert all(t > 0.0 for t in torques)
     assert list(torques) == sorted(torques, reverse=True)
+
+
+NOT_ABOVE = [c for c in IN_SUPPLY if not c.part.startswith("Changzhou Songyang")]
+
+
+@pytest.mark.parametrize("curve", NOT_ABOVE, ids=[c.part for c in NOT_ABOVE])
+def test_the_model_is_never_15_percent_above_these_makers_curves(curve: Curve) -> None:
+    """STEPPERONLINE's microstepping curves and Trinamic's four QSH4218 half-step curves,
+    each current read as its chart prints it: the model is nowhere more than 15 % above a
+    published point (at most 1.08 times: QSH4218-41-10-035 at 1499 rpm). Changzhou
+    Songyang's curves are the exception the margin covers (up to 1.30 times)."""
+    for rpm, nm in curve.points:
+        model = stepper.microstep_pull_out_torque(rpm, *curve.model_args, curve.rms)
+        assert model <= 1.15 * nm, (rpm, model / nm)

@@ -100,7 +100,7 @@ class MotorCurve(Check):
         "circuit with its back-EMF, confirmed up to the speed where the back-EMF reaches "
         "40 % of the supply; past it the pull-out falls as 1 / speed. Held against makers' "
         "published curves: 0.88-1.04 times every point of STEPPERONLINE's 23HS32-4004S on "
-        "a DM542T microstepping drive at 36 and 48 V; 0.73-1.38 times the half-step curves "
+        "a DM542T microstepping drive at 36 and 48 V; 0.73-1.30 times the half-step curves "
         "of Changzhou Songyang and Trinamic motors, so over the default stepper torque "
         "margin (1.5) the usable torque lies below every published point. Valid for a sine "
         "drive set to the rated current and a supply 4-25 times I R; moves past the "

@@ -22,11 +22,12 @@ headroom, iron loss, mid-band resonance), so past the speed at which the back-EM
 reaches ``CONFIRMED_BACK_EMF_SHARE`` of the supply (``confirmed_range_rpm``) the model
 falls as 1 / speed from its torque there (constant power), never above the circuit:
 0.88 to 1.04 times every point of those curves. The makers' half-step curves scatter more
-about it, 0.73 to 1.38 times their points (1.27 to 1.38 at mid speeds for the Songyang
-SY35ST36-1004A and SY42STH38-1684A and Trinamic's 1.0 A QSH4218 motors read as RMS), so
-the model alone is not within 15 % of every maker's curve; over the stepper torque
-margin's default of 1.5 the usable torque lies below every published point of all of
-them.
+about it, 0.73 to 1.30 times their points: within 15 % of every point of Trinamic's four
+QSH4218 motors but for some low (safe-side) ones, and above it at mid speeds for two of
+Changzhou Songyang's three (SY35ST36-1004A from 390 rpm, up to 1.27 times; SY42STH38-1684A
+at 600 rpm, 1.30 times). So the model alone is not within 15 % of every maker's curve;
+over the stepper torque margin's default of 1.5 the usable torque lies below every
+published point of all of them.
 
 Validity: two-phase hybrid on a sine chopper drive set to the motor's rated current,
 supply 4 to 25 times the winding's rated voltage I R (the makers' range [6]); confirmed
