@@ -15,6 +15,7 @@ from app.contract.fields import BY_API
 from app.contract.reported import REPORTED
 from app.contract.units import sig
 from app.core.checks import REGISTRY
+from app.report.pull_out_curves import CURVES, PULL_OUT_TOLERANCE
 from app.report.validation import EXAMPLES, TOLERANCE
 from app.web.templating import templates
 
@@ -118,8 +119,9 @@ async def validation() -> Response:
 
 @cache
 def validation_html() -> str:
-    """The validation page, computed and rendered once: the examples and the formulas
-    they run through are fixed while the process runs."""
+    """The validation page, computed and rendered once: the examples, the makers'
+    pull-out curves and the formulas they run through are fixed while the process
+    runs."""
     rows = [
         {
             "e": e,
@@ -129,5 +131,20 @@ def validation_html() -> str:
         }
         for e in EXAMPLES
     ]
-    context = {"rows": rows, "tolerance": f"{TOLERANCE:.0%}"}
+    curves = [
+        {
+            "c": c,
+            "low": f"{min(c.ratios()):.2f}",
+            "high": f"{max(c.ratios()):.2f}",
+            "within": c.within(),
+            "range": c.in_supply_range,
+        }
+        for c in CURVES
+    ]
+    context = {
+        "rows": rows,
+        "tolerance": f"{TOLERANCE:.0%}",
+        "curves": curves,
+        "curve_tolerance": f"{PULL_OUT_TOLERANCE:.0%}",
+    }
     return templates.get_template("validation.html").render(context)

@@ -11,7 +11,7 @@ from app.catalog.motors import MAX_STEPPER_RPM
 from app.contract.fields import BY_API
 from app.contract.input_types import _curve_points
 from app.core.formulas import stepper
-from tests.core.pull_out_curves import CURVES, Curve
+from app.report.pull_out_curves import CURVES, Curve
 from tests.motor_library import MOTORS
 
 
@@ -225,7 +225,7 @@ TRINAMIC_POINT = (
     0.25,
 )
 #: Every point of the published curves on a sine (microstepping) drive, the drive the
-#: model describes (``tests/core/pull_out_curves.py``), in the same form, and the
+#: model describes (``app/report/pull_out_curves.py``), in the same form, and the
 #: Trinamic figure.
 PUBLISHED_POINTS = [
     (c.part, c.source, *c.model_args, c.rms, rpm, nm)

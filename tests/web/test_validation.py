@@ -7,6 +7,7 @@ from fastapi.testclient import TestClient
 from app.contract.fields import BY_API
 from app.contract.units import sig
 from app.core.checks import REGISTRY
+from app.report.pull_out_curves import CURVES
 from app.report.validation import EXAMPLES, TOLERANCE, Example
 from app.web.guide import PROVENANCE
 
@@ -58,3 +59,23 @@ def test_the_guide_is_linked_from_the_form_and_the_api_docs(client: TestClient) 
     form = BeautifulSoup(client.get("/").text, "html.parser").select_one("form#selector")
     assert form.select_one("a[href='/guide']")
     assert "[the guide](/guide)" in client.get("/openapi.json").json()["info"]["description"]
+
+
+def test_validation_page_shows_the_makers_pull_out_curves(client: TestClient) -> None:
+    """Every published pull-out curve (app/report/pull_out_curves.py) is a row with the
+    model's ratio to its points, low to high, worked out now: the 23HS32-4004S at 36 V
+    on its DM542T from 0.88 (510 rpm: 1.697 x 324 / 510 = 1.078 N m against 1.228) to
+    1.04 (300 rpm: 1.697 against 1.639), within 15 %."""
+    page = BeautifulSoup(client.get("/validation").text, "html.parser")
+    rows = page.select("table.pull-out tbody tr.curve")
+    assert [r.th.text for r in rows] == [c.part for c in CURVES]
+    for row, curve in zip(rows, CURVES, strict=True):
+        low, high = (float(x) for x in row.select_one(".ratio").text.split(" to "))
+        assert (low, high) == (
+            pytest.approx(min(curve.ratios()), abs=0.005),
+            pytest.approx(max(curve.ratios()), abs=0.005),
+        )
+        assert ("off" not in row["class"]) == curve.within()
+    at_36 = rows[[c.part for c in CURVES].index("STEPPERONLINE 23HS32-4004S at 36 V")]
+    assert at_36.select_one(".ratio").text == "0.88 to 1.04"
+    assert "off" not in at_36["class"]

@@ -42,9 +42,6 @@ LOW_SUPPLY_NOTE = (
     "faster than the model (STEPPERONLINE 17HS24-0644S at 2.6 times I R: under a quarter "
     "of the model's figure at 420 rpm); use the maker's curve."
 )
-#: The least supply, in multiples of the winding's rated voltage I R, the model is
-#: valid for (Trinamic QSH4218 manual, Table 6.2: a supply 4 to 22 times I R).
-LEAST_SUPPLY_PER_IR = 4.0
 
 
 def model_range_rpm(app: Application) -> float | None:
@@ -61,12 +58,12 @@ def model_range_rpm(app: Application) -> float | None:
 
 
 def supply_too_low(app: Application) -> bool:
-    """The model's stepper runs on a supply below ``LEAST_SUPPLY_PER_IR`` times its
+    """The model's stepper runs on a supply below ``stepper.LEAST_SUPPLY_PER_IR`` times its
     winding's rated voltage I R (False where those values are not known)."""
     supply, current, ohm = app.motor_supply_v, app.motor_phase_current_a, app.motor_resistance_ohm
     if app.step_angle_deg is None or supply is None or current is None or ohm is None:
         return False
-    return supply < LEAST_SUPPLY_PER_IR * current * ohm
+    return supply < stepper.LEAST_SUPPLY_PER_IR * current * ohm
 
 
 def worst_segment(app: Application, r: Quantities[float]) -> str:

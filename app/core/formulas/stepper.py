@@ -11,7 +11,7 @@ means decides the sine's amplitude: most drives set the peak (amplitude I: T_h /
 force against the back-EMF and the reactance [3, 4].
 
 Held against makers' published pull-out curves read as numbers
-(``tests/core/pull_out_curves.py``: eleven curves of three makers, STEPPERONLINE,
+(``app/report/pull_out_curves.py``: eleven curves of three makers, STEPPERONLINE,
 Changzhou Songyang and Trinamic). On a microstepping drive (STEPPERONLINE 23HS32-4004S,
 Leadshine DM542T at 36 V and 48 V) the phase circuit alone holds within 15 % while the
 back-EMF amplitude stays below about 40 % of the supply, and then runs high: at 36 V and
@@ -99,6 +99,9 @@ SECONDS_PER_MINUTE = 60.0
 #: 23HS32-4004S at 36 V: 37 % of the supply, 3 % high), and run high above it (48 %,
 #: 22 % high) [7]. Past it the model falls as 1 / speed (``microstep_pull_out_torque``).
 CONFIRMED_BACK_EMF_SHARE = 0.4
+#: The least supply the model is valid for, in multiples of the winding's rated voltage
+#: I R (Trinamic QSH4218 manual, Table 6.2: a supply 4 to 22 times I R) [6].
+LEAST_SUPPLY_PER_IR = 4.0
 
 
 @formula(

@@ -1,5 +1,6 @@
 """Makers' published stepper pull-out curves as numbers, with the datasheet values the
-stepper model needs, for ``tests/core/test_stepper.py``.
+stepper model needs, and the model's figure beside each point: the /validation page's
+second table and ``tests/core/test_stepper.py`` read them.
 
 Each chart was read at its plotted points (markers, or the vertices of a vector chart)
 from the maker's own document as kept in a public repository (named with its commit);
@@ -15,6 +16,11 @@ does reach), and read as RMS the model would run up to 1.38 times them.
 """
 
 from typing import NamedTuple
+
+from app.core.formulas import stepper
+
+#: How far the model may lie from a published point, as the makers' curves scatter.
+PULL_OUT_TOLERANCE = 0.15
 
 
 class Curve(NamedTuple):
@@ -38,6 +44,23 @@ class Curve(NamedTuple):
     def sine_drive(self) -> bool:
         """Run on a microstepping (sine) drive, the drive the model describes."""
         return "microstep" in self.drive
+
+    @property
+    def in_supply_range(self) -> bool:
+        """The supply is at least ``stepper.LEAST_SUPPLY_PER_IR`` times the winding's I R."""
+        return self.supply_v >= stepper.LEAST_SUPPLY_PER_IR * self.current_a * self.resistance_ohm
+
+    def ratios(self) -> tuple[float, ...]:
+        """The model's pull-out over the published torque at each point, the current read
+        as the chart prints it (``stepper.microstep_pull_out_torque``)."""
+        return tuple(
+            stepper.microstep_pull_out_torque(rpm, *self.model_args, self.rms) / torque_nm
+            for rpm, torque_nm in self.points
+        )
+
+    def within(self) -> bool:
+        """Every point within ``PULL_OUT_TOLERANCE`` of the model."""
+        return all(abs(r - 1.0) <= PULL_OUT_TOLERANCE for r in self.ratios())
 
     @property
     def model_args(self) -> tuple[float, float, float, float, float, float]:
