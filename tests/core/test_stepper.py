@@ -287,7 +287,7 @@ def test_past_the_confirmed_range_the_circuit_alone_runs_high(point: tuple) -> N
         default=0.0,
     )
     circuit = k_e * in_phase
-    limit = stepper.confirmed_range_rpm(supply, current, holding) * (math.sqrt(0.5) if rms else 1.0)
+    limit = stepper.confirmed_range_rpm(supply, current, holding, rms)
     if circuit > 1.15 * published:
         assert rpm > limit
 

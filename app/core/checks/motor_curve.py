@@ -30,10 +30,10 @@ DATASHEET_NOTE = (
 #: Said where the move runs past the range where the model is confirmed.
 BEYOND_RANGE_NOTE = (
     " The move runs to {peak}, past {limit}, where the back-EMF reaches 40 % of the "
-    "supply: beyond it the microstepping model's pull-out falls as 1 / speed, on the safe "
-    "side of the makers' curves held against it (STEPPERONLINE 23HS32-4004S at 36 and "
-    "48 V, Trinamic QSH4218-47-28-040 at 24 V) as far as they reach, 1.85 times that "
-    "speed; confirm it on the maker's curve."
+    "supply: beyond it the microstepping model's pull-out falls as 1 / speed, 0.73 to "
+    "1.11 times the makers' published points there (STEPPERONLINE, Changzhou Songyang, "
+    "Trinamic; /validation), as far as they reach, up to 5.7 times that speed; confirm it "
+    "on the maker's curve."
 )
 #: Said where the supply is below the model's range (4 times the winding's I R).
 LOW_SUPPLY_NOTE = (
@@ -53,8 +53,7 @@ def model_range_rpm(app: Application) -> float | None:
     if app.step_angle_deg is None or any(v is None for v in values):
         return None
     supply, current, holding = (float(v or 0.0) for v in values)
-    rms = math.sqrt(0.5) if app.motor_current_rms else 1.0
-    return stepper.confirmed_range_rpm(supply, current, holding) * rms
+    return stepper.confirmed_range_rpm(supply, current, holding, app.motor_current_rms)
 
 
 def supply_too_low(app: Application) -> bool:

@@ -31,11 +31,12 @@ published point of all of them.
 
 Validity: two-phase hybrid on a sine chopper drive set to the motor's rated current,
 supply 4 to 25 times the winding's rated voltage I R (the makers' range [6]); confirmed
-up to ``confirmed_range_rpm`` and the safe side past it, as far as the published points
-reach (1.85 times that speed). Half-step drives, and a supply below 4 times I R, are
-outside it: two such STEPPERONLINE curves (14HS17-0504S at 20 V, 17HS24-0644S at 24 V,
-half step, supply 2.7 and 2.6 times I R) fall far faster, the second to under a quarter
-of the model's figure at 420 rpm. No resonance, iron loss or saturation: the curve is an
+on the microstepping curves up to ``confirmed_range_rpm``, and past it 0.73 to 1.11
+times every maker's published points as far as they reach (up to 5.7 times that speed).
+A half-step drive scatters more about it, as above. A supply below 4 times I R is
+outside it: two such STEPPERONLINE half-step curves (14HS17-0504S at 20 V, 17HS24-0644S
+at 24 V, 2.7 and 2.6 times I R) fall far faster, the second to under a quarter of the
+model's figure at 420 rpm. No resonance, iron loss or saturation: the curve is an
 estimate to be confirmed on the maker's own curve.
 
 The constant-power envelope (``corner_speed_rpm``, ``pull_out_torque``) is kept for the
@@ -340,9 +341,7 @@ def microstep_pull_out_torque(
     amplitude_a = current_a * (math.sqrt(2.0) if current_is_rms else 1.0)
     circuit = (supply_v, amplitude_a, resistance_ohm, inductance_h, step_angle_deg, k_e)
     torque = _circuit_torque(rpm, *circuit)
-    confirmed_rpm = confirmed_range_rpm(supply_v, current_a, holding_torque_nm) * (
-        math.sqrt(0.5) if current_is_rms else 1.0
-    )
+    confirmed_rpm = confirmed_range_rpm(supply_v, current_a, holding_torque_nm, current_is_rms)
     if rpm <= confirmed_rpm:
         return torque
     return min(torque, _circuit_torque(confirmed_rpm, *circuit) * confirmed_rpm / rpm)
@@ -353,12 +352,16 @@ def microstep_pull_out_torque(
     "back-EMF amplitude k_e w (Duet3D); the share 0.4 from STEPPERONLINE's published "
     "23HS32-4004S curves (within 15 % below it, 22 % high above it)",
 )
-def confirmed_range_rpm(supply_v: float, current_a: float, holding_torque_nm: float) -> float:
+def confirmed_range_rpm(
+    supply_v: float, current_a: float, holding_torque_nm: float, current_is_rms: bool = False
+) -> float:
     """The speed [rpm] at which the back-EMF amplitude k_e w reaches
     ``CONFIRMED_BACK_EMF_SHARE`` (0.4) of the supply ``supply_v`` [V], k_e from the
     ``holding_torque_nm`` [N m] at the rated ``current_a`` [A] (``back_emf_constant``):
     the top of the range where the phase circuit is confirmed by the published curves;
-    past it ``microstep_pull_out_torque`` falls as 1 / speed.
+    past it ``microstep_pull_out_torque`` falls as 1 / speed. A drive that sets the RMS
+    (``current_is_rms``) leaves it at 1 / sqrt(2) of that speed (its current and
+    low-speed torque sqrt(2) times higher: the same T n past it).
 
     The 23HS32-4004S (2.4 N m, 4.0 A) on 36 V: k_e = 2.4 / (sqrt 2 x 4.0) =
     0.424 V s/rad, n_c = 60 x 0.4 x 36 / (2 pi x 0.424) = 324 rpm:
@@ -367,7 +370,8 @@ def confirmed_range_rpm(supply_v: float, current_a: float, holding_torque_nm: fl
     324
     """
     k_e = back_emf_constant(holding_torque_nm, current_a)
-    return SECONDS_PER_MINUTE * CONFIRMED_BACK_EMF_SHARE * supply_v / (2.0 * math.pi * k_e)
+    rms = math.sqrt(0.5) if current_is_rms else 1.0
+    return rms * SECONDS_PER_MINUTE * CONFIRMED_BACK_EMF_SHARE * supply_v / (2.0 * math.pi * k_e)
 
 
 def microstep_pull_out_curve(
