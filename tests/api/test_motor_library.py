@@ -346,10 +346,10 @@ HOLDING = 'holding_torque_nm = { value = 0.5, provenance = "vendor", source = "s
         ),
         pytest.param(
             HOLDING,
-            HOLDING + "\n" + CURVE.format(points="[[100.0, 0.2], [300.0, 0.3]]"),
+            HOLDING + "\n" + CURVE.format(points="[[100.0, 0.2], [300.0, 0.0]]"),
             "motors.m1",
             "pull_out_curve",
-            id="curve-torque-rising",
+            id="curve-torque-zero",
         ),
         pytest.param(
             HOLDING,
