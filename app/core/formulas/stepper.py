@@ -83,6 +83,10 @@ References
    datasheets and half-step pull-out curves; as kept in the public repository
    jmpz63/APM (Projects/Moveo_Bridge/Onboarding/04_Hardware_Firmware_Network_Architecture/
    joint_datasheets/, commit 411985f), read at the curves' plotted points.
+8. Changzhou Songyang SY35ST36-1004A, SY42STH38-1684A and SY42STH47-1684B specifications
+   with their half-step pull-out curves at 24 V, and Trinamic QSH4218 manuals V1.03
+   (Figures 4.1-4.3) and V1.06 (Figure 5.4), as kept in the public repositories named in
+   ``app/report/pull_out_curves.py``, read at the curves' plotted points.
 """
 
 import math
@@ -314,7 +318,7 @@ def microstep_pull_out_torque(
     current set.
 
     Validity: as the module states (sine drive, supply 4 to 25 times I R; confirmed up to
-    n_c, the safe side of the published points past it; no resonance or saturation).
+    n_c, 0.73 to 1.11 times the published points past it; no resonance or saturation).
 
     STEPPERONLINE 23HS32-4004S (2.4 N m, 4.0 A, 0.65 ohm, 3.2 mH) on a DM542T at 36 V
     [7]: k_e = 0.424 V s/rad, n_c = 0.4 x 36 / 0.424 = 33.9 rad/s = 324 rpm. At 600 rpm
