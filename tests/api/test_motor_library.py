@@ -16,6 +16,7 @@ from app.contract.inputs import ApplicationIn
 from app.core import segments
 from app.core.evaluate import evaluate
 from app.core.formulas import stepper
+from app.report.pull_out_curves import CURVES
 from tests.motor_library import MOTORS
 
 BASE = {"load_n": 20.0, "speed_mm_s": 12.0, "length_mm": 350.0, "stroke_mm": 200.0}
@@ -487,16 +488,10 @@ def test_a_supply_below_four_times_ir_is_flagged(client: TestClient) -> None:
 
 
 #: STEPPERONLINE's "Pull out torque curve of 23HS32-4004S", 48 V (DM542T, 2000 microsteps,
-#: PK4.2A), its six plotted points read off the chart (catalog/motors.toml gives the
-#: repository, folder and commit it is kept in), N m.
-SO_23HS32_48V = [
-    (90.0, 1.841),
-    (210.0, 1.820),
-    (300.0, 1.778),
-    (390.0, 1.729),
-    (510.0, 1.498),
-    (600.0, 1.329),
-]
+#: PK4.2A): its six plotted points as /validation holds the model against them, N m.
+SO_23HS32_48V = list(
+    next(c for c in CURVES if c.part == "STEPPERONLINE 23HS32-4004S at 48 V").points
+)
 
 
 def test_a_library_motor_with_its_makers_curve_is_driven_by_it(client: TestClient) -> None:
