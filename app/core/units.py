@@ -96,6 +96,7 @@ UNITS: dict[str, Unit] = {
         _unit("g", "accel", _G_N),
         _unit("N m", "torque", 1),
         _unit("oz in", "torque", _LBF / 16 * _IN),
+        _unit("gf cm", "torque", _G_N / 100_000),
         _unit("lb in", "torque", _LBF * _IN),
         _unit("kg", "mass", 1),
         _unit("lb", "mass", _LB),

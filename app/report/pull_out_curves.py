@@ -6,18 +6,20 @@ Each chart was read at its plotted points (markers, or the vertices of a vector 
 from the maker's own document as kept in a public repository (named with its commit);
 the axes calibrated on the chart's gridlines and the reading checked by overlaying the
 points on the chart. Speeds in rpm (half step: 400 pulses a turn; 2000 microsteps: 2000),
-torques in N m (1 gf cm = 9.80665e-5 N m). ``rms``: the chart prints its drive current as
-an RMS value (Trinamic QSH4218-47-28-040: "coil current: 2.8A RMS"); every other chart
-prints a plain current ("1.0A / Phase", "CONSTANT CURRENT: 1.68A"), read as the app reads
-a current by default, the sine's peak. For the Trinamic V1.03 charts at "1.0A / Phase"
-the later manual says RMS; their low-speed torque, 80-81 % of the holding torque, sits
-with the peak reading (71 %) rather than the RMS one (100 %, which the 2.8 A RMS motor
-does reach), and read as RMS the model would run up to 1.38 times them.
+torques in N m (charts in gf cm converted by the unit table). ``rms``: the chart prints
+its drive current as an RMS value (Trinamic QSH4218-47-28-040: "coil current: 2.8A RMS");
+every other chart prints a plain current ("1.0A / Phase", "CONSTANT CURRENT: 1.68A"),
+read as the app reads a current by default, the sine's peak. For the Trinamic V1.03
+charts at "1.0A / Phase" the later manual says RMS; their low-speed torque, 80-81 % of
+the holding torque, sits with the peak reading (71 %) rather than the RMS one (100 %,
+which the 2.8 A RMS motor does reach), and read as RMS the model would run up to 1.38
+times them.
 """
 
 from typing import NamedTuple
 
 from app.core.formulas import stepper
+from app.core.units import to_si
 
 #: How far the model may lie from a published point, as the makers' curves scatter.
 PULL_OUT_TOLERANCE = 0.15
@@ -47,8 +49,8 @@ class Curve(NamedTuple):
 
     @property
     def in_supply_range(self) -> bool:
-        """The supply is at least ``stepper.LEAST_SUPPLY_PER_IR`` times the winding's I R."""
-        return self.supply_v >= stepper.LEAST_SUPPLY_PER_IR * self.current_a * self.resistance_ohm
+        """The supply is in the model's range (``stepper.supply_in_range``)."""
+        return stepper.supply_in_range(self.supply_v, self.current_a, self.resistance_ohm)
 
     def ratios(self) -> tuple[float, ...]:
         """The model's pull-out over the published torque at each point, the current read
@@ -58,9 +60,10 @@ class Curve(NamedTuple):
             for rpm, torque_nm in self.points
         )
 
-    def within(self) -> bool:
-        """Every point within ``PULL_OUT_TOLERANCE`` of the model."""
-        return all(abs(r - 1.0) <= PULL_OUT_TOLERANCE for r in self.ratios())
+    def within(self, ratios: tuple[float, ...] | None = None) -> bool:
+        """Every point within ``PULL_OUT_TOLERANCE`` of the model (``ratios``: this curve's
+        ``ratios()`` where already worked out)."""
+        return all(abs(r - 1.0) <= PULL_OUT_TOLERANCE for r in ratios or self.ratios())
 
     @property
     def model_args(self) -> tuple[float, float, float, float, float, float]:
@@ -78,42 +81,38 @@ APM = (
     "STEPPERONLINE datasheet and torque-curve PDFs in jmpz63/APM, Projects/Moveo_Bridge/"
     "Onboarding/04_Hardware_Firmware_Network_Architecture/joint_datasheets/ (commit 411985f)"
 )
-GF_CM = 9.80665e-5
+
+SO_23HS32_48V = Curve(
+    "STEPPERONLINE 23HS32-4004S at 48 V",
+    APM + ", joint2: 2.40 N m, 4.00 A, 0.65 ohm, 3.2 mH",
+    "Leadshine DM542T, 2000 microsteps, peak 4.2 A",
+    48.0,
+    4.0,
+    False,
+    0.65,
+    0.0032,
+    1.8,
+    2.40,
+    (
+        (90.0, 1.841),
+        (210.0, 1.820),
+        (300.0, 1.778),
+        (390.0, 1.729),
+        (510.0, 1.498),
+        (600.0, 1.329),
+    ),
+)
+#: The same motor and drive at 36 V (the point at 90 rpm lies under the 48 V marker).
+SO_23HS32_36V = SO_23HS32_48V._replace(
+    part="STEPPERONLINE 23HS32-4004S at 36 V",
+    source=SO_23HS32_48V.source + " (the 36 V point at 90 rpm lies under the 48 V marker)",
+    supply_v=36.0,
+    points=((210.0, 1.772), (300.0, 1.639), (390.0, 1.392), (510.0, 1.228), (600.0, 1.027)),
+)
 
 CURVES = (
-    Curve(
-        "STEPPERONLINE 23HS32-4004S at 48 V",
-        APM + ", joint2: 2.40 N m, 4.00 A, 0.65 ohm, 3.2 mH",
-        "Leadshine DM542T, 2000 microsteps, peak 4.2 A",
-        48.0,
-        4.0,
-        False,
-        0.65,
-        0.0032,
-        1.8,
-        2.40,
-        (
-            (90.0, 1.841),
-            (210.0, 1.820),
-            (300.0, 1.778),
-            (390.0, 1.729),
-            (510.0, 1.498),
-            (600.0, 1.329),
-        ),
-    ),
-    Curve(
-        "STEPPERONLINE 23HS32-4004S at 36 V",
-        APM + ", joint2 (the 36 V point at 90 rpm lies under the 48 V marker)",
-        "Leadshine DM542T, 2000 microsteps, peak 4.2 A",
-        36.0,
-        4.0,
-        False,
-        0.65,
-        0.0032,
-        1.8,
-        2.40,
-        ((210.0, 1.772), (300.0, 1.639), (390.0, 1.392), (510.0, 1.228), (600.0, 1.027)),
-    ),
+    SO_23HS32_48V,
+    SO_23HS32_36V,
     Curve(
         "STEPPERONLINE 14HS17-0504S",
         APM + ", joint5: 0.23 N m, 0.50 A, 15 ohm, 26 mH; chart '0.5A/PHASE 20V CONSTANT "
@@ -127,7 +126,7 @@ CURVES = (
         1.8,
         0.23,
         tuple(
-            (n, round(t * GF_CM, 4))
+            (n, round(to_si(t, "gf cm"), 4))
             for n, t in (
                 (60, 1500),
                 (90, 1700),
@@ -158,7 +157,7 @@ CURVES = (
         1.8,
         0.65,
         tuple(
-            (n, round(t * GF_CM, 4))
+            (n, round(to_si(t, "gf cm"), 4))
             for n, t in (
                 (60, 5190),
                 (90, 5090),

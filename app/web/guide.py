@@ -134,12 +134,13 @@ def validation_html() -> str:
     curves = [
         {
             "c": c,
-            "low": f"{min(c.ratios()):.2f}",
-            "high": f"{max(c.ratios()):.2f}",
-            "within": c.within(),
+            "low": f"{min(ratios):.2f}",
+            "high": f"{max(ratios):.2f}",
+            "within": c.within(ratios),
             "range": c.in_supply_range,
         }
         for c in CURVES
+        for ratios in (c.ratios(),)
     ]
     context = {
         "rows": rows,

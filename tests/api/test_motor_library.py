@@ -16,7 +16,7 @@ from app.contract.inputs import ApplicationIn
 from app.core import segments
 from app.core.evaluate import evaluate
 from app.core.formulas import stepper
-from app.report.pull_out_curves import CURVES
+from app.report.pull_out_curves import SO_23HS32_48V as SO_23HS32
 from tests.motor_library import MOTORS
 
 BASE = {"load_n": 20.0, "speed_mm_s": 12.0, "length_mm": 350.0, "stroke_mm": 200.0}
@@ -489,9 +489,7 @@ def test_a_supply_below_four_times_ir_is_flagged(client: TestClient) -> None:
 
 #: STEPPERONLINE's "Pull out torque curve of 23HS32-4004S", 48 V (DM542T, 2000 microsteps,
 #: PK4.2A): its six plotted points as /validation holds the model against them, N m.
-SO_23HS32_48V = list(
-    next(c for c in CURVES if c.part == "STEPPERONLINE 23HS32-4004S at 48 V").points
-)
+SO_23HS32_48V = list(SO_23HS32.points)
 
 
 def test_a_library_motor_with_its_makers_curve_is_driven_by_it(client: TestClient) -> None:

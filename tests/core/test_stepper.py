@@ -11,7 +11,7 @@ from app.catalog.motors import MAX_STEPPER_RPM
 from app.contract.fields import BY_API
 from app.contract.input_types import _curve_points
 from app.core.formulas import stepper
-from app.report.pull_out_curves import CURVES, Curve
+from app.report.pull_out_curves import CURVES, SO_23HS32_48V, Curve
 from tests.motor_library import MOTORS
 
 
@@ -417,7 +417,7 @@ def test_each_library_curve_is_the_one_held_against_the_model() -> None:
     validation holds the model against (app/report/pull_out_curves.py), its holding
     torque, current, resistance and inductance too: one reading of each chart."""
     by_model = {c.part.split()[-1].lower(): c for c in CURVES}
-    by_model["23hs32-4004s"] = next(c for c in CURVES if c.part.endswith("at 48 V"))
+    by_model["23hs32-4004s"] = SO_23HS32_48V
     published = [m for m in MOTORS.values() if m.published_curve() is not None]
     assert len(published) >= 5
     for motor in published:

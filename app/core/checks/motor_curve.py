@@ -57,12 +57,12 @@ def model_range_rpm(app: Application) -> float | None:
 
 
 def supply_too_low(app: Application) -> bool:
-    """The model's stepper runs on a supply below ``stepper.LEAST_SUPPLY_PER_IR`` times its
-    winding's rated voltage I R (False where those values are not known)."""
+    """The model's stepper runs on a supply below its range (``stepper.supply_in_range``:
+    4 times its winding's rated voltage I R); False where those values are not known."""
     supply, current, ohm = app.motor_supply_v, app.motor_phase_current_a, app.motor_resistance_ohm
     if app.step_angle_deg is None or supply is None or current is None or ohm is None:
         return False
-    return supply < stepper.LEAST_SUPPLY_PER_IR * current * ohm
+    return not stepper.supply_in_range(supply, current, ohm)
 
 
 def worst_segment(app: Application, r: Quantities[float]) -> str:

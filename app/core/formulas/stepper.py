@@ -109,6 +109,16 @@ CONFIRMED_BACK_EMF_SHARE = 0.4
 LEAST_SUPPLY_PER_IR = 4.0
 
 
+def supply_in_range(supply_v: float, current_a: float, resistance_ohm: float) -> bool:
+    """The supply [V] is at least ``LEAST_SUPPLY_PER_IR`` times the winding's rated
+    voltage I R (``current_a`` [A], ``resistance_ohm`` [ohm]): the model's range.
+
+    >>> supply_in_range(24.0, 0.64, 14.5), supply_in_range(48.0, 0.64, 14.5)
+    (False, True)
+    """
+    return supply_v >= LEAST_SUPPLY_PER_IR * current_a * resistance_ohm
+
+
 @formula(
     "n_c = 60 (V - I R) / (2 L I x 360 / step_angle)",
     "Farnell, Stepper motor calculator; Jones, Control of Stepping Motors",
