@@ -1,9 +1,10 @@
 """A requests adapter answered by an ASGI app in the calling thread.
 
 Starlette's and schemathesis' test clients run the app on an event loop in another thread
-and cross into it twice per request: about 4 ms of a 6 ms refusal (422) on this machine,
-where the app's own work is about 1 ms. This adapter keeps one asyncio loop of its own
-and runs each request to its end on it, in the thread that sends it. The app is the
+and cross into it twice per request: a refusal (422) of GET /api/v1/evaluate took 6.0 ms
+through schemathesis' client on this machine, and takes 4.5 ms here. This adapter keeps
+one asyncio loop of its own and runs each request to its end on it, in the thread that
+sends it. The app is the
 same: its middleware, routes and error handlers, and a sync route still runs in the
 thread pool as under a server. The app has no lifespan to run (``app.main.create_app``
 loads everything it needs when it is built).
