@@ -87,6 +87,16 @@ def series_url(series_id: str) -> str:
     return "/catalog/" + quote(series_id, safe="")
 
 
+def series_anchor(series_id: str) -> str:
+    """The HTML id of series ``series_id``'s ``<details>`` on /catalog: the id with each run
+    of whitespace as one "_" (an HTML id holds no whitespace).
+
+    >>> series_anchor("HIWIN-GROUND R16")
+    'HIWIN-GROUND_R16'
+    """
+    return "_".join(series_id.split())
+
+
 def series_summary(series: Series) -> dict[str, Any]:
     """One series as its family's comparison table shows it: its data (``series_dict``),
     its cells, nut variants and materials (only these fields are converted for display:
@@ -99,6 +109,7 @@ def series_summary(series: Series) -> dict[str, Any]:
         "variants": variants(data["fields"]),
         "materials": material_cells(rows),
         "url": series_url(series.id),
+        "anchor": series_anchor(series.id),
     }
 
 
