@@ -18,8 +18,10 @@ times them.
 
 from typing import NamedTuple
 
+from app.catalog.motors import CURVE, MOTOR_FILE, load_motors
 from app.core.formulas import stepper
 from app.core.units import to_si
+from app.paths import resource_dir
 
 #: How far the model may lie from a published point, as the makers' curves scatter.
 PULL_OUT_TOLERANCE = 0.15
@@ -77,6 +79,17 @@ class Curve(NamedTuple):
         )
 
 
+#: The built-in motor library: a curve it drives one of its motors by is kept there alone.
+_LIBRARY = load_motors(resource_dir("catalog") / MOTOR_FILE)
+
+
+def library_points(motor_id: str) -> tuple[tuple[float, float], ...]:
+    """The published points (rpm, N m) of the built-in library's motor ``motor_id``, as
+    catalog/motors.toml keeps them with their provenance."""
+    points = _LIBRARY[motor_id].values[CURVE].value
+    return tuple((float(rpm), float(torque_nm)) for rpm, torque_nm in points)
+
+
 APM = (
     "STEPPERONLINE datasheet and torque-curve PDFs in jmpz63/APM, Projects/Moveo_Bridge/"
     "Onboarding/04_Hardware_Firmware_Network_Architecture/joint_datasheets/ (commit 411985f)"
@@ -93,14 +106,7 @@ SO_23HS32_48V = Curve(
     0.0032,
     1.8,
     2.40,
-    (
-        (90.0, 1.841),
-        (210.0, 1.820),
-        (300.0, 1.778),
-        (390.0, 1.729),
-        (510.0, 1.498),
-        (600.0, 1.329),
-    ),
+    library_points("23hs32-4004s"),
 )
 #: The same motor and drive at 36 V (the point at 90 rpm lies under the 48 V marker).
 SO_23HS32_36V = SO_23HS32_48V._replace(
@@ -187,18 +193,7 @@ CURVES = (
         0.0043,
         1.8,
         0.1373,
-        (
-            (15.0, 0.0976),
-            (45.0, 0.0958),
-            (120.0, 0.0939),
-            (165.0, 0.0921),
-            (240.0, 0.0891),
-            (315.0, 0.0861),
-            (390.0, 0.0824),
-            (450.0, 0.08),
-            (600.0, 0.0781),
-            (750.0, 0.0763),
-        ),
+        library_points("sy35st36-1004a"),
     ),
     Curve(
         "Changzhou Songyang SY42STH38-1684A",
@@ -237,20 +232,7 @@ CURVES = (
         0.0028,
         1.8,
         0.4315,
-        (
-            (30.0, 0.305),
-            (75.0, 0.3),
-            (105.0, 0.3),
-            (135.0, 0.31),
-            (180.0, 0.3),
-            (270.0, 0.28),
-            (360.0, 0.29),
-            (450.0, 0.27),
-            (600.0, 0.25),
-            (750.0, 0.24),
-            (900.0, 0.2),
-            (1050.0, 0.1793),
-        ),
+        library_points("sy42sth47-1684b"),
     ),
     Curve(
         "Trinamic (ADI) QSH4218-35-10-027",
@@ -318,18 +300,7 @@ CURVES = (
         0.0006,
         1.8,
         0.4,
-        (
-            (149.8, 0.4035),
-            (299.9, 0.4035),
-            (449.8, 0.3894),
-            (599.8, 0.375),
-            (750.1, 0.3438),
-            (900.1, 0.3081),
-            (1050.0, 0.2813),
-            (1200.2, 0.2545),
-            (1350.2, 0.2449),
-            (1500.4, 0.2352),
-        ),
+        library_points("qsh4218-47-28-040"),
     ),
     Curve(
         "Trinamic (ADI) QSH4218-51-10-049",
@@ -344,18 +315,6 @@ CURVES = (
         0.008,
         1.8,
         0.49,
-        (
-            (29.2, 0.3963),
-            (149.6, 0.3748),
-            (299.6, 0.3167),
-            (449.3, 0.2348),
-            (599.8, 0.1528),
-            (749.8, 0.13),
-            (900.0, 0.1096),
-            (1050.3, 0.092),
-            (1200.0, 0.0776),
-            (1350.4, 0.0772),
-            (1500.8, 0.0634),
-        ),
+        library_points("qsh4218-51-10-049"),
     ),
 )

@@ -413,16 +413,16 @@ def test_the_model_is_never_15_percent_above_these_makers_curves(curve: Curve) -
 
 
 def test_each_library_curve_is_the_one_held_against_the_model() -> None:
-    """A library motor carrying its maker's curve carries exactly the points the
-    validation holds the model against (app/report/pull_out_curves.py), its holding
-    torque, current, resistance and inductance too: one reading of each chart."""
+    """A library motor carrying its maker's curve is one the validation holds the model
+    against (app/report/pull_out_curves.py), with the same holding torque, current,
+    resistance and inductance; the validation reads its points from the library itself
+    (``library_points``): one reading of each chart."""
     by_model = {c.part.split()[-1].lower(): c for c in CURVES}
     by_model["23hs32-4004s"] = SO_23HS32_48V
     published = [m for m in MOTORS.values() if m.published_curve() is not None]
     assert len(published) >= 5
     for motor in published:
         curve = by_model[motor.id]
-        assert motor.values["pull_out_curve"].value == curve.points
         assert motor.value("supply_v") == curve.supply_v
         assert motor.value("holding_torque_nm") == pytest.approx(curve.holding_nm, rel=1e-3)
         assert motor.value("phase_current_a") == curve.current_a
