@@ -24,13 +24,16 @@ def test_every_series_details_has_a_valid_unique_id(
     catalog_page: BeautifulSoup, catalog: Catalog
 ) -> None:
     """Each series' <details> and heading carry an HTML id without whitespace, one per
-    series (a ball screw's id has a space: HIWIN-GROUND R16)."""
+    series (a ball screw's id has a space: HIWIN-GROUND R16), and the series' own id as
+    data-series."""
     ids = [d["id"] for d in catalog_page.select("details.series")]
     headings = [h["id"] for h in catalog_page.select("details.series > summary > h3")]
     assert len(ids) == len(catalog.series) == len(set(ids))
     assert headings == ["h-" + i for i in ids]
     assert not [i for i in ids + headings if re.search(r"\s", i)]
     assert "HIWIN-GROUND_R16" in ids
+    named = [d["data-series"] for d in catalog_page.select("details.series")]
+    assert named == list(catalog.series)
 
 
 @pytest.mark.parametrize(
@@ -43,8 +46,9 @@ def test_each_series_link_opens_a_page_of_its_own(
     name as title and heading, its family linked back, and the same body as the fragment
     the <details> loads when opened."""
     series = catalog.series[series_id]
-    anchor = "_".join(series_id.split())
-    details = next(d for d in catalog_page.select("details.series") if d["id"] == anchor)
+    details = next(
+        d for d in catalog_page.select("details.series") if d["data-series"] == series_id
+    )
     href = details.select_one("a.series-link")["href"]
     assert href == f"/catalog/{quote(series_id)}"
     page = _page(client, href)

@@ -213,7 +213,8 @@ def test_catalog_groups_series_by_family_with_a_comparison_table(
         assert section.select_one("h2").text.startswith(series[0].family_name)
         rows = section.select("table.family-compare tbody tr")
         assert [r["data-series"] for r in rows] == [s.id for s in series]
-        assert [d["id"] for d in section.select("details.series")] == [s.id for s in series]
+        details = section.select("details.series")
+        assert [d["data-series"] for d in details] == [s.id for s in series]
     row = page.select_one("tr[data-series=ZBX8000]")
     assert row.select_one("td[data-field=outer_diameter]").text.startswith("12.7 mm")
     assert row.select_one("td[data-field=design_load] .kind")

@@ -760,10 +760,10 @@ def test_catalog_page_lists_every_series_with_provenance(
     page) holds every field of the series with its provenance kind and source."""
     page = catalog_page
     sections = page.select("details.series")
-    assert [s["id"] for s in sections] == list(catalog.series)
+    assert [s["data-series"] for s in sections] == list(catalog.series)
     assert not page.select("table.series-fields")  # loaded when opened, not before
     for section in sections:
-        series = catalog.series[section["id"]]
+        series = catalog.series[section["data-series"]]
         link = section.select_one(".series-body.pending a.series-link")
         assert link["href"] == "/catalog/" + quote(series.id)
         rows = series_bodies[series.id].select("table.series-fields tbody tr")
