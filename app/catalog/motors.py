@@ -271,6 +271,29 @@ def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
     )
 
 
+#: Where the torque-speed curve the checks read comes from, as the motor chart names it.
+CURVE_ORIGINS = {
+    "entered": "as entered",
+    "published": "maker's published curve",
+    "model": "model, from datasheet values",
+}
+
+
+def curve_origin(entered: Application, app: Application, motors: Mapping[str, Motor]) -> str:
+    """Where ``app``'s motor curve (``with_motor``'s) comes from: "entered" where the
+    inputs ``entered`` (the axis before ``with_motor``) carry a curve of their own,
+    "published" where it is the library motor's published curve (``Motor.published_curve``),
+    "model" where it is drawn from datasheet values (the stepper or servo model), ""
+    without a curve."""
+    if not app.motor_curve:
+        return ""
+    if entered.motor_curve:
+        return "entered"
+    motor = motors.get(app.motor or "")
+    published = None if motor is None else motor.published_curve()
+    return "published" if published == app.motor_curve else "model"
+
+
 def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
     """``app`` with its motor's curve, inertia, continuous torque and step angle filled
     in: a given curve first, then one drawn from the datasheet values, then the library

@@ -9,6 +9,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from app.catalog import Catalog
+from app.catalog.motors import curve_origin
 from app.contract.schemas import ApplicationIn
 from app.core import motion, segments
 from app.core.checks.wear_life import life_band
@@ -45,6 +46,8 @@ class ChartData:
     speed_m_s: float
     torque_limit_nm: float | None
     curve: tuple[tuple[float, float], ...]
+    #: where the curve comes from: a key of ``motors.CURVE_ORIGINS`` ("" without a curve)
+    curve_origin: str
     torque_safety_factor: float
     curve_margin: float
     sweep: list[LeadPoint]
@@ -77,7 +80,8 @@ def chart_data(
     """The charts' numbers for a result whose candidates are ``ids``, best first (at
     least one): the lead sweep of the first one's size and the wear lines of the first
     ``wear_top`` wear-rated ones, given the catalog; the axis alone without it."""
-    app = inputs.to_core(catalog.motors, catalog.supports) if catalog else inputs.axis()
+    entered = inputs.axis()
+    app = inputs.to_core(catalog.motors, catalog.supports) if catalog else entered
     sweep: list[LeadPoint] = []
     wear: list[WearLine] = []
     pressure: list[PressureLimit] = []
@@ -93,6 +97,7 @@ def chart_data(
         speed_m_s=motion.reached_speed(app),
         torque_limit_nm=app.max_torque_nm,
         curve=app.motor_curve,
+        curve_origin=curve_origin(entered, app, catalog.motors if catalog else {}),
         torque_safety_factor=app.torque_safety_factor,
         curve_margin=segments.curve_margin(app),
         sweep=sweep,

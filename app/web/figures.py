@@ -213,7 +213,12 @@ def result_figures(
     if candidates[0].segments:
         if data.curve:
             figures["motor"] = motor_figure(
-                candidates, data.curve, data.torque_safety_factor, d, data.curve_margin
+                candidates,
+                data.curve,
+                data.torque_safety_factor,
+                d,
+                data.curve_margin,
+                data.curve_origin,
             )
         figures["move"] = move_figure(candidates[0], d)
         figures["cycle_torque"] = cycle_torque_figure(candidates[0], d)

@@ -5,6 +5,7 @@ one cycle. Numbers come from the core's segments; nothing is recomputed here."""
 from collections.abc import Sequence
 from typing import Any
 
+from app.catalog.motors import CURVE_ORIGINS
 from app.contract.schemas import CandidateOut
 from app.contract.sections import SegmentOut
 from app.contract.units import Display
@@ -22,13 +23,18 @@ def motor_figure(
     safety_factor: float,
     d: Display,
     margin: float = 1.0,
+    origin: str = "",
 ) -> dict[str, Any]:
     """The motor's torque against speed (its curve) and, for each top candidate, every
     moving segment's top rpm and torque times the safety factor: a point above the line
     is a segment the motor cannot drive. A stepper's curve (its pull-out) is drawn beside
-    the usable torque the checks hold the move against, the pull-out over ``margin``."""
+    the usable torque the checks hold the move against, the pull-out over ``margin``.
+    The curve's legend says where it comes from (``origin``, a key of
+    ``motors.CURVE_ORIGINS``: typed in, the maker's published curve, or the model)."""
     unit = d.label("torque")
     name = "Motor curve" if margin == 1.0 else "Pull-out"
+    if origin:
+        name += f" ({CURVE_ORIGINS[origin]})"
     data: list[dict[str, Any]] = [
         {
             "type": "scatter",

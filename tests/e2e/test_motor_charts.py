@@ -28,7 +28,7 @@ def test_motor_curve_and_move_charts(
     page.wait_for_selector("#chart-motor .main-svg")
     page.wait_for_selector("#chart-move .main-svg")
     legend = page.locator("#chart-motor .legend .traces").all_text_contents()
-    assert legend[0] == "Motor curve" and len(legend) >= 2
+    assert legend[0] == "Motor curve (as entered)" and len(legend) >= 2
     assert "Time [s]" in page.text_content("#chart-move .g-xtitle")
     page.locator(".chart-motor").screenshot(path=str(artifacts / "motor-chart-1280.png"))
     page.locator(".chart-move").screenshot(path=str(artifacts / "move-chart-1280.png"))

@@ -307,6 +307,31 @@ def test_life_chart_falls_as_one_over_thrust(catalog: Catalog) -> None:
     assert life["layout"]["yaxis"]["title"]["text"] == "Wear life [years]"
 
 
+@pytest.mark.parametrize(
+    ("extra", "name"),
+    [
+        ({"motor": "23hs32-4004s"}, "Pull-out (maker's published curve)"),
+        ({"motor": "23hs32-4004s", "motor_curve": [[0, 1.0], [600, 0.5]]}, "Pull-out (as entered)"),
+        ({"motor_curve": [[0, 1.0], [600, 0.5]]}, "Motor curve (as entered)"),
+    ],
+    ids=["library-published", "library-curve-entered", "entered"],
+)
+def test_the_motor_chart_names_where_its_curve_comes_from(
+    catalog: Catalog, extra: dict[str, object], name: str
+) -> None:
+    """The 23HS32-4004S carries STEPPERONLINE's published curve (catalog/motors.toml): the
+    chart names it the maker's, with its first point, 1.841 N m, held to standstill; a curve
+    typed in is named as entered, over a library motor's too."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200,
+         **extra}
+    )  # fmt: skip
+    curve = result_figures(run_selection(inputs, catalog), METRIC, catalog)["motor"]["data"][0]
+    assert curve["name"] == name
+    if "motor_curve" not in extra:
+        assert curve["y"][:2] == pytest.approx([1.841, 1.841])
+
+
 def test_a_library_motor_draws_its_model_curve(catalog: Catalog) -> None:
     """The motor chart draws the library motor's pull-out curve from the microstepping
     model: the 17HS19-2004S1 (0.59 N m) gives 0.59 / sqrt 2 = 0.417 N m from standstill
@@ -323,6 +348,7 @@ def test_a_library_motor_draws_its_model_curve(catalog: Catalog) -> None:
     assert curve["y"][:2] == pytest.approx([0.59 / 2**0.5] * 2)
     assert list(curve["y"]) == sorted(curve["y"], reverse=True)
     usable = figures["motor"]["data"][1]
-    assert curve["name"] == "Pull-out" and usable["name"] == "Usable (pull-out / 1.5)"
+    assert curve["name"] == "Pull-out (model, from datasheet values)"
+    assert usable["name"] == "Usable (pull-out / 1.5)"
     assert usable["x"] == curve["x"]
     assert usable["y"] == pytest.approx([t / 1.5 for t in curve["y"]])
