@@ -1,6 +1,8 @@
 """Makers' published stepper pull-out curves as numbers, with the datasheet values the
 stepper model needs, and the model's figure beside each point: the /validation page's
-second table and ``tests/core/test_stepper.py`` read them.
+second table and ``tests/core/test_stepper.py`` read them. The points of a curve the
+motor library drives one of its motors by are read from the library
+(catalog/motors.toml, ``library_points``), where they are kept with their provenance.
 
 Each chart was read at its plotted points (markers, or the vertices of a vector chart)
 from the maker's own document as kept in a public repository (named with its commit);
