@@ -95,6 +95,25 @@ class UnknownMotor(ValueError):
     """A motor id the loaded library does not hold (a 422 on the ``motor`` field)."""
 
 
+class UndrivableMotor(ValueError):
+    """A drive voltage typed for a library stepper that cannot push its phase current
+    through its winding: a 422 on the drive voltage."""
+
+    #: the API input the message is about
+    field = "motor_supply_v"
+
+
+def undrivable_message(supply_v: float, current_a: float, ohm: float) -> str | None:
+    """Why a drive of ``supply_v`` [V] never reaches ``current_a`` [A] through ``ohm``
+    (the voltage must exceed the winding's I R); None where it does."""
+    if supply_v > current_a * ohm:
+        return None
+    return (
+        f"a {supply_v:g} V drive cannot push {current_a:g} A through {ohm:g} ohm: "
+        "raise the drive voltage or lower the phase current"
+    )
+
+
 @dataclass(frozen=True, slots=True)
 class Motor:
     """One library motor: its name, frame and kind ("stepper" or "servo"), and its values
@@ -321,14 +340,21 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
     """``app`` driven by ``motor``, keeping any motor value the user gave; a stepper
     holding the load energised holds it with its holding torque (``energised_holding``),
     and a stepper drawn from the model carries the values the model's validity range is
-    read from (``with_model_values``)."""
+    read from (``with_model_values``). A stepper given a drive voltage, phase current,
+    winding value or holding torque of the user's (``drive_retyped``) is drawn by the
+    model at those values, its maker's published curve too (raise UndrivableMotor where
+    that voltage never reaches that current)."""
     inertia = app.motor_inertia_kg_m2
     rms = app.motor_rms_torque_nm
     detent = app.detent_torque_nm
     if not app.motor_curve and motor.kind == "stepper":
-        app = with_model_values(app, motor, modelled=motor.published_curve() is None)
+        retyped = drive_retyped(app, motor)
+        app = with_model_values(app, motor, modelled=retyped or motor.published_curve() is None)
+        if retyped:
+            app = replace(app, motor_curve=_retyped_curve(app, motor))
+    holding = app.motor_holding_torque_nm if motor.kind == "stepper" else None
     return replace(
-        energised_holding(app, motor.holding_torque_nm()),
+        energised_holding(app, holding or motor.holding_torque_nm()),
         detent_torque_nm=detent if detent is not None else motor.detent_torque_nm(),
         motor=motor.id,
         motor_curve=app.motor_curve or motor.curve(app.motor_current_rms),
@@ -338,20 +364,66 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
     )
 
 
+#: A library stepper's drive and winding values a value typed in replaces: (the
+#: Application's field, the library's value).
+DRIVE_VALUES = (
+    ("motor_supply_v", "supply_v"),
+    ("motor_phase_current_a", "phase_current_a"),
+    ("motor_resistance_ohm", "resistance_ohm"),
+    ("motor_inductance_h", "inductance_mh"),
+)
+
+
+def drive_retyped(app: Application, motor: Motor) -> bool:
+    """Whether the user typed a drive voltage, phase current, winding value or holding
+    torque for library stepper ``motor`` other than the library's: its curve is then
+    the model's at those values (a maker's published curve holds only at its chart's
+    drive voltage and current)."""
+    typed: list[tuple[float | None, float | None]] = [
+        (getattr(app, field), motor.value(name)) for field, name in DRIVE_VALUES
+    ]
+    typed.append((app.motor_holding_torque_nm, motor.holding_torque_nm()))
+    return any(value is not None and value != library for value, library in typed)
+
+
+def holding_at(motor: Motor, current_a: float) -> float:
+    """A library stepper's holding torque at phase current ``current_a`` [A]: its rated
+    holding torque times the current over its rated current, at most the rated torque
+    (torque proportional to current below the rating, the torque constant; above it the
+    iron saturates, and no more than the rating is claimed) [N m]."""
+    rated_a = motor.value("phase_current_a")
+    return motor.value("holding_torque_nm") * min(1.0, current_a / rated_a)
+
+
 def with_model_values(app: Application, motor: Motor, modelled: bool = True) -> Application:
-    """``app`` with the library stepper's drive voltage, rated current and holding
-    torque, those its curve is drawn from: what the motor-curve check reads the model's
-    confirmed range from (``stepper.confirmed_range_rpm``); and its winding
-    resistance, for the copper loss of a cycle (``cycle_energy.cycle_energy``). A
-    stepper whose curve is the maker's (not ``modelled``) carries no drive voltage: no
-    model range applies to it."""
+    """``app`` with library stepper ``motor``'s drive voltage, phase current, winding and
+    holding torque wherever the user typed none (``DRIVE_VALUES``; the holding torque
+    at the phase current, ``holding_at``), those its curve is drawn from: what the
+    motor-curve check reads the model's confirmed range from
+    (``stepper.confirmed_range_rpm``); and its winding resistance, for the copper loss of
+    a cycle (``cycle_energy.cycle_energy``). A stepper whose curve is the maker's (not
+    ``modelled``) carries no drive voltage: no model range applies to it."""
+    current = app.motor_phase_current_a or motor.value("phase_current_a")
     return replace(
         app,
-        motor_supply_v=motor.value("supply_v") if modelled else None,
-        motor_phase_current_a=motor.value("phase_current_a"),
-        motor_resistance_ohm=motor.value("resistance_ohm"),
-        motor_holding_torque_nm=motor.holding_torque_nm(),
+        motor_supply_v=(app.motor_supply_v or motor.value("supply_v")) if modelled else None,
+        motor_phase_current_a=current,
+        motor_resistance_ohm=app.motor_resistance_ohm or motor.value("resistance_ohm"),
+        motor_inductance_h=app.motor_inductance_h or motor.value("inductance_mh"),
+        motor_holding_torque_nm=app.motor_holding_torque_nm or holding_at(motor, current),
     )
+
+
+def _retyped_curve(app: Application, motor: Motor) -> tuple[tuple[float, float], ...]:
+    """The model's pull-out curve of library stepper ``motor`` at the values typed in
+    (``with_model_values``'s); raise UndrivableMotor where that drive voltage never
+    reaches that phase current."""
+    current, ohm = app.motor_phase_current_a or 0.0, app.motor_resistance_ohm or 0.0
+    message = undrivable_message(app.motor_supply_v or 0.0, current, ohm)
+    if message is not None:
+        raise UndrivableMotor(message)
+    step = app.step_angle_deg or motor.step_angle_deg()
+    return _datasheet_curve(replace(app, step_angle_deg=step))
 
 
 def without_motor(app: Application) -> Application:

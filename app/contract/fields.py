@@ -310,13 +310,16 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="motor_supply_v", page="motor_supply", core="motor_supply_v",
         label="Drive voltage", help="A stepper's drive supply, for its pull-out curve from "
-        "the datasheet values below", group="Motor and move", kind="number",
+        "the datasheet values below, or a library stepper's at this voltage (its maker's "
+        "published curve holds only at its chart's voltage)", group="Motor and move",
+        kind="number",
         bounds=(1.0, 400.0), unit="V",
     ),
     InputField(
         api="motor_phase_current_a", page="motor_phase_current",
         core="motor_phase_current_a", label="Phase current",
-        help="Set on the driver, per phase", group="Motor and move", kind="number",
+        help="Set on the driver, per phase; a library stepper's holding torque scales with "
+        "it, up to its rated current", group="Motor and move", kind="number",
         bounds=(0.01, 50.0), unit="A",
     ),
     InputField(

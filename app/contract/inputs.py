@@ -31,7 +31,13 @@ from pydantic import (
 )
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from app.catalog.motors import Motor, check_motor, with_motor
+from app.catalog.motors import (
+    Motor,
+    UndrivableMotor,
+    check_motor,
+    undrivable_message,
+    with_motor,
+)
 from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.cycle import MAX_MOVES, MoveIn, closing_error_mm, parse_moves_text, span_mm
 from app.contract.fields import BY_API, FIELDS
@@ -56,11 +62,9 @@ def _definitions() -> dict[str, Any]:
 
 def check_drivable(value: float | None, supply_v: float, current_a: float, ohm: float) -> None:
     """The drive voltage must exceed the winding's I R, or the current is never reached."""
-    if value is not None and supply_v <= current_a * ohm:
-        raise ValueError(
-            f"a {supply_v:g} V drive cannot push {current_a:g} A through {ohm:g} ohm: "
-            "raise the drive voltage or lower the phase current"
-        )
+    message = undrivable_message(supply_v, current_a, ohm)
+    if value is not None and message is not None:
+        raise ValueError(message)
 
 
 class ApplicationInputs(BaseModel):
@@ -175,6 +179,28 @@ class ApplicationInputs(BaseModel):
                 "nut cannot travel past the screw's end"
             )
         return value
+
+    @model_validator(mode="after")
+    def _library_stepper_drivable(self, info: ValidationInfo) -> "ApplicationInputs":
+        """A drive voltage, phase current or winding resistance typed for a library
+        stepper (its other values the library's) must reach the current: checked
+        against the library passed as validation context (the page's form), the API's
+        body where the catalog is (``to_core``); refused on the drive voltage."""
+        motors = (info.context or {}).get("motors") if isinstance(info.context, dict) else None
+        motor_id = getattr(self, "motor", None)
+        motor = None if motors is None or motor_id is None else motors.get(motor_id)
+        if motor is None:
+            return self
+        try:
+            with_motor(self.axis(), {motor.id: motor})
+        except UndrivableMotor as exc:
+            error = InitErrorDetails(
+                type=PydanticCustomError(UndrivableMotor.field, str(exc)),
+                loc=(UndrivableMotor.field,),
+                input=getattr(self, UndrivableMotor.field),
+            )
+            raise ValidationError.from_exception_data(type(self).__name__, [error]) from exc
+        return self
 
     @model_validator(mode="after")
     def _moves_fit(self) -> "ApplicationInputs":

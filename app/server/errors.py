@@ -11,7 +11,7 @@ from fastapi.responses import Response
 from fastapi.routing import APIRoute
 from starlette.exceptions import HTTPException
 
-from app.catalog.motors import UnknownMotor
+from app.catalog.motors import UndrivableMotor, UnknownMotor
 from app.catalog.own import UnknownNutMaterial
 from app.catalog.supports import UnknownSupport
 
@@ -67,7 +67,7 @@ class ApiRoute(APIRoute):
                 raise AppError(
                     422, "invalid input", [{"field": "motor", "message": str(exc)}]
                 ) from exc
-            except (UnknownSupport, UnknownNutMaterial) as exc:
+            except (UnknownSupport, UnknownNutMaterial, UndrivableMotor) as exc:
                 raise AppError(
                     422, "invalid input", [{"field": exc.field, "message": str(exc)}]
                 ) from exc

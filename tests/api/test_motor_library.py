@@ -6,11 +6,12 @@ import math
 from pathlib import Path
 from urllib.parse import parse_qsl
 
+import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog, CatalogError
-from app.catalog.motors import load_motors
+from app.catalog.motors import MAX_STEPPER_RPM, load_motors
 from app.contract.form import parse_inputs, parse_units, share_query
 from app.contract.inputs import ApplicationIn
 from app.core import segments
@@ -97,6 +98,86 @@ def test_datasheet_values_draw_the_pull_out_curve() -> None:
     drawn = [x for point in core.motor_curve for x in point]
     listed = [x for point in MOTORS["17hs19-2004s1"].curve() for x in point]
     assert drawn == pytest.approx(listed)
+
+
+#: the 17HS19-2004S1's library values (test_the_17hs19_carries_its_cited_values): 24 V
+#: (assumed), 2 A, 1.4 ohm, 3 mH, 1.8 deg, 0.59 N m
+SO_17HS19 = (24.0, 2.0, 1.4, 3e-3, 1.8, 0.59)
+
+
+def _at(curve: tuple[tuple[float, float], ...], rpm: float) -> float:
+    """A curve's torque at ``rpm``, linear between its points."""
+    return float(np.interp(rpm, [n for n, _ in curve], [t for _, t in curve]))
+
+
+def _model_curve(*args: float) -> list[float]:
+    curve = stepper.microstep_pull_out_curve(args, MAX_STEPPER_RPM)
+    return [x for point in curve for x in point]
+
+
+def test_a_drive_voltage_typed_for_a_library_stepper_draws_its_curve() -> None:
+    """The 17HS19-2004S1 on a 12 V drive: its curve is the model's at 12 V with the
+    library's other values, not the library's 24 V curve (lower past the corner speed),
+    and the motor-curve check reads the model's range at 12 V."""
+    core = ApplicationIn.model_validate(
+        {**BASE, "motor": "17hs19-2004s1", "motor_supply_v": 12.0}
+    ).to_core(MOTORS)
+    drawn = [x for point in core.motor_curve for x in point]
+    assert drawn == pytest.approx(_model_curve(12.0, *SO_17HS19[1:]))
+    assert _at(core.motor_curve, 1500.0) < 0.8 * _at(MOTORS["17hs19-2004s1"].curve(), 1500.0)
+    assert core.motor_supply_v == 12.0
+
+
+def test_a_lower_phase_current_lowers_the_holding_torque_in_proportion() -> None:
+    """The 17HS19-2004S1 (0.59 N m at 2 A) set to 1 A holds 0.59 x 1 / 2 = 0.295 N m,
+    and its curve is the model's at 1 A and 0.295 N m; set above its rated current it
+    is held to its rated torque (no more than the rating is claimed)."""
+    low = ApplicationIn.model_validate(
+        {**BASE, "motor": "17hs19-2004s1", "motor_phase_current_a": 1.0}
+    ).to_core(MOTORS)
+    assert low.motor_holding_torque_nm == pytest.approx(0.295)
+    drawn = [x for point in low.motor_curve for x in point]
+    assert drawn == pytest.approx(_model_curve(24.0, 1.0, 1.4, 3e-3, 1.8, 0.295))
+    high = ApplicationIn.model_validate(
+        {**BASE, "motor": "17hs19-2004s1", "motor_phase_current_a": 3.0}
+    ).to_core(MOTORS)
+    assert high.motor_holding_torque_nm == pytest.approx(0.59)
+
+
+def test_a_published_curve_holds_only_at_its_charts_drive() -> None:
+    """The 23HS32-4004S's published curve is STEPPERONLINE's at 48 V and 4 A: typed at
+    48 V it is still that curve; on a 24 V drive the model draws it at 24 V (the maker's
+    48 V points would overstate it), with no published last speed."""
+    same = ApplicationIn.model_validate(
+        {**BASE, "motor": "23hs32-4004s", "motor_supply_v": 48.0}
+    ).to_core(MOTORS)
+    assert same.motor_curve == MOTORS["23hs32-4004s"].published_curve()
+    assert same.motor_supply_v is None  # no model range applies to a maker's curve
+    half = ApplicationIn.model_validate(
+        {**BASE, "motor": "23hs32-4004s", "motor_supply_v": 24.0}
+    ).to_core(MOTORS)
+    drawn = [x for point in half.motor_curve for x in point]
+    assert drawn == pytest.approx(_model_curve(24.0, 4.0, 0.65, 0.0032, 1.8, 2.40))
+    assert half.motor_curve[-1][0] == MAX_STEPPER_RPM
+    assert _at(half.motor_curve, 600.0) < SO_23HS32.points[-1][1]
+
+
+@pytest.mark.parametrize("motor", ["17hs19-2004s1", "23hs32-4004s"])
+def test_a_drive_voltage_that_cannot_reach_the_current_is_refused(
+    client: TestClient, motor: str
+) -> None:
+    """2.5 V cannot push the 17HS19's 2 A through 1.4 ohm (2.8 V), nor the 23HS32's 4 A
+    through 0.65 ohm (2.6 V): a 422 on the drive voltage in the API, an inline message on
+    the page."""
+    params = {**BASE, "motor": motor, "motor_supply_v": 2.5}
+    answer = client.get("/api/v1/select", params=params)
+    assert answer.status_code == 422
+    (error,) = answer.json()["detail"]
+    assert error["field"] == "motor_supply_v"
+    assert error["message"].startswith("a 2.5 V drive cannot push")
+    page = {"load": 20, "speed": 12, "length": 350, "motor": motor, "motor_supply": 2.5}
+    inputs, errors = parse_inputs({k: str(v) for k, v in page.items()}, parse_units({}), MOTORS)
+    assert inputs is None and errors["motor_supply"].startswith("A 2.5 V drive cannot push")
 
 
 def test_the_motor_round_trips_through_a_share_link() -> None:
