@@ -150,7 +150,9 @@ def test_invalid_input_shows_inline_message_and_keeps_typing(
     assert field.get_attribute("aria-invalid") == "true"
     assert "e-load" in (field.get_attribute("aria-describedby") or "")
     assert page.evaluate("() => document.activeElement.id") == "f-load"
-    assert "load=100" in page.url  # the address keeps the last valid result
+    # the address keeps the last valid result: the first one's, or one typed on the way
+    # ("1", "12") on a machine slow enough that a keystroke was answered before the next
+    assert re.search(r"[?&]load=(100|12|1)(&|$)", page.url), page.url
     field.press("Backspace")
     page.wait_for_selector("#results table.candidates tbody.candidate")
     page.wait_for_function("() => !document.querySelector('#f-load[aria-invalid]')")
