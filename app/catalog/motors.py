@@ -447,10 +447,20 @@ def without_motor(app: Application) -> Application:
 def pair_applications(
     app: Application, motors: Mapping[str, Motor]
 ) -> tuple[Application, dict[str, Application]]:
-    """``app`` without a motor, and driven by each library motor in turn (the library's
-    values, not any motor value typed in): what ``app.core.pairs.rank_pairs`` reads."""
+    """``app`` without a motor, and driven by each library motor in turn: what
+    ``app.core.pairs.rank_pairs`` reads. Each motor with the library's values, but a
+    stepper on the drive voltage typed in, the drive's and the same for every stepper
+    (``with_library_motor``: the model at that voltage); a stepper that voltage cannot
+    push its rated current through is left out (UndrivableMotor)."""
     alone = without_motor(app)
-    return alone, {mid: with_library_motor(alone, motor) for mid, motor in motors.items()}
+    driven: dict[str, Application] = {}
+    for mid, motor in motors.items():
+        drive = app.motor_supply_v if motor.kind == "stepper" else None
+        try:
+            driven[mid] = with_library_motor(replace(alone, motor_supply_v=drive), motor)
+        except UndrivableMotor:
+            continue
+    return alone, driven
 
 
 def unknown_motor_message(value: str, motors: Mapping[str, Motor]) -> str:

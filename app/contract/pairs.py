@@ -95,7 +95,11 @@ class PairsOut(BaseModel):
     screws_passing_alone: int = Field(
         description="Screws passing every check without a motor: only these are paired"
     )
-    motors: int
+    motors: int = Field(
+        description="Library motors paired: every one, but a stepper the drive voltage "
+        "given (motor_supply_v) cannot push its rated current through; each stepper runs "
+        "on that voltage where one is given"
+    )
     pairs_passed: int
     pairs: list[PairOut]
     share_url: str = Field(

@@ -7,6 +7,9 @@ import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
+from app.catalog.motors import MAX_STEPPER_RPM, pair_applications
+from app.contract.inputs import ApplicationIn
+from app.core.formulas import stepper
 from tests.motor_library import MOTORS
 
 #: A light axis at constant speed (no move given: the top speed is held), every screw.
@@ -95,6 +98,25 @@ def test_post_and_get_agree_and_a_typed_motor_is_set_aside(client: TestClient) -
     assert r.status_code == 200
     assert r.json()["pairs"] == got["pairs"]
     assert got["motors"] == len(MOTORS)
+
+
+def test_the_pairs_run_the_steppers_on_the_drive_voltage_typed_in(client: TestClient) -> None:
+    """On a 5 V drive the steppers are paired at 5 V: the 17HS19-2004S1's curve is the
+    model's at 5 V (its library 24 V curve would overstate it), and the two steppers whose
+    rated current 5 V cannot push through their winding are left out: the SS2422-5041
+    (1.0 A x 5.4 ohm = 5.4 V) and the QSH4218-51-10-049 (1.0 A x 5.0 ohm = 5.0 V)."""
+    inputs = ApplicationIn.model_validate({**AXIS, "motor_supply_v": 5.0})
+    alone, driven = pair_applications(inputs.axis(), MOTORS)
+    assert alone.motor_supply_v is None and not alone.motor_curve
+    assert set(MOTORS) - set(driven) == {"ss2422-5041", "qsh4218-51-10-049"}
+    at_5 = driven["17hs19-2004s1"].motor_curve
+    model = stepper.microstep_pull_out_curve((5.0, 2.0, 1.4, 3e-3, 1.8, 0.59), MAX_STEPPER_RPM)
+    assert at_5 == model != MOTORS["17hs19-2004s1"].curve()
+    servos = [mid for mid, m in MOTORS.items() if m.kind == "servo"]
+    assert servos and all(driven[mid].motor_curve == MOTORS[mid].curve() for mid in servos)
+    body = _pairs(client, motor_supply_v=5.0)
+    assert body["motors"] == len(MOTORS) - 2
+    assert {p["motor"] for p in body["pairs"]} <= set(driven)
 
 
 def test_a_bad_rank_is_a_field_level_422(client: TestClient) -> None:
