@@ -12,6 +12,7 @@ user gives those inputs directly. A stepper's datasheet values typed in are draw
 same way.
 """
 
+import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 from itertools import pairwise
@@ -383,7 +384,10 @@ def drive_retyped(app: Application, motor: Motor) -> bool:
         (getattr(app, field), motor.value(name)) for field, name in DRIVE_VALUES
     ]
     typed.append((app.motor_holding_torque_nm, motor.holding_torque_nm()))
-    return any(value is not None and value != library for value, library in typed)
+    # the library's own value typed back (a form's unit conversion may move its last bit)
+    return any(
+        value is not None and not math.isclose(value, library or 0.0) for value, library in typed
+    )
 
 
 def holding_at(motor: Motor, current_a: float) -> float:

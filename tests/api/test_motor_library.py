@@ -128,6 +128,20 @@ def test_a_drive_voltage_typed_for_a_library_stepper_draws_its_curve() -> None:
     assert core.motor_supply_v == 12.0
 
 
+def test_the_library_values_typed_back_keep_the_library_curve() -> None:
+    """The 23HS32-4004S's own drive and winding values typed in (48 V, 4 A, 0.65 ohm,
+    3.2 mH, in the page's and API's units) are not a drive of the user's: its published
+    curve stays."""
+    typed = {
+        "motor_supply_v": 48.0,
+        "motor_phase_current_a": 4.0,
+        "motor_resistance_ohm": 0.65,
+        "motor_inductance_mh": 3.2,
+    }
+    core = ApplicationIn.model_validate({**BASE, "motor": "23hs32-4004s", **typed}).to_core(MOTORS)
+    assert core.motor_curve == MOTORS["23hs32-4004s"].published_curve()
+
+
 def test_a_lower_phase_current_lowers_the_holding_torque_in_proportion() -> None:
     """The 17HS19-2004S1 (0.59 N m at 2 A) set to 1 A holds 0.59 x 1 / 2 = 0.295 N m,
     and its curve is the model's at 1 A and 0.295 N m; set above its rated current it
