@@ -418,12 +418,26 @@ def with_model_values(app: Application, motor: Motor, modelled: bool = True) -> 
     )
 
 
+def drive_problem(app: Application, motor: Motor) -> str | None:
+    """Why ``app``'s drive cannot run library motor ``motor`` (``undrivable_message``
+    at the values ``with_library_motor`` draws its curve from); None where it can, or
+    where the library's own values or a curve of the user's draw it."""
+    if motor.kind != "stepper" or app.motor_curve or not drive_retyped(app, motor):
+        return None
+    return _undrivable(with_model_values(app, motor))
+
+
+def _undrivable(app: Application) -> str | None:
+    """``undrivable_message`` at ``app``'s drive voltage, phase current and winding."""
+    current, ohm = app.motor_phase_current_a or 0.0, app.motor_resistance_ohm or 0.0
+    return undrivable_message(app.motor_supply_v or 0.0, current, ohm)
+
+
 def _retyped_curve(app: Application, motor: Motor) -> tuple[tuple[float, float], ...]:
     """The model's pull-out curve of library stepper ``motor`` at the values typed in
     (``with_model_values``'s); raise UndrivableMotor where that drive voltage never
     reaches that phase current."""
-    current, ohm = app.motor_phase_current_a or 0.0, app.motor_resistance_ohm or 0.0
-    message = undrivable_message(app.motor_supply_v or 0.0, current, ohm)
+    message = _undrivable(app)
     if message is not None:
         raise UndrivableMotor(message)
     step = app.step_angle_deg or motor.step_angle_deg()

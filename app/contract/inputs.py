@@ -35,6 +35,7 @@ from app.catalog.motors import (
     Motor,
     UndrivableMotor,
     check_motor,
+    drive_problem,
     undrivable_message,
     with_motor,
 )
@@ -189,18 +190,15 @@ class ApplicationInputs(BaseModel):
         motors = (info.context or {}).get("motors") if isinstance(info.context, dict) else None
         motor_id = getattr(self, "motor", None)
         motor = None if motors is None or motor_id is None else motors.get(motor_id)
-        if motor is None:
+        problem = None if motor is None else drive_problem(self.axis(), motor)
+        if problem is None:
             return self
-        try:
-            with_motor(self.axis(), {motor.id: motor})
-        except UndrivableMotor as exc:
-            error = InitErrorDetails(
-                type=PydanticCustomError(UndrivableMotor.field, str(exc)),
-                loc=(UndrivableMotor.field,),
-                input=getattr(self, UndrivableMotor.field),
-            )
-            raise ValidationError.from_exception_data(type(self).__name__, [error]) from exc
-        return self
+        error = InitErrorDetails(
+            type=PydanticCustomError(UndrivableMotor.field, problem),
+            loc=(UndrivableMotor.field,),
+            input=getattr(self, UndrivableMotor.field),
+        )
+        raise ValidationError.from_exception_data(type(self).__name__, [error])
 
     @model_validator(mode="after")
     def _moves_fit(self) -> "ApplicationInputs":

@@ -92,6 +92,11 @@ def library_points(motor_id: str) -> tuple[tuple[float, float], ...]:
     return tuple((float(rpm), float(torque_nm)) for rpm, torque_nm in points)
 
 
+def _from_gf_cm(*points: tuple[float, float]) -> tuple[tuple[float, float], ...]:
+    """A chart's points (rpm, gf cm) in N m, to 4 decimals (the unit table's gf cm)."""
+    return tuple((rpm, round(to_si(torque, "gf cm"), 4)) for rpm, torque in points)
+
+
 APM = (
     "STEPPERONLINE datasheet and torque-curve PDFs in jmpz63/APM, Projects/Moveo_Bridge/"
     "Onboarding/04_Hardware_Firmware_Network_Architecture/joint_datasheets/ (commit 411985f)"
@@ -133,23 +138,20 @@ CURVES = (
         0.026,
         1.8,
         0.23,
-        tuple(
-            (n, round(to_si(t, "gf cm"), 4))
-            for n, t in (
-                (60, 1500),
-                (90, 1700),
-                (120, 1800),
-                (150, 1800),
-                (180, 1700),
-                (210, 1600),
-                (240, 1550),
-                (270, 1500),
-                (300, 1300),
-                (330, 1200),
-                (375, 1100),
-                (420, 900),
-                (450, 700),
-            )
+        _from_gf_cm(
+            (60, 1500),
+            (90, 1700),
+            (120, 1800),
+            (150, 1800),
+            (180, 1700),
+            (210, 1600),
+            (240, 1550),
+            (270, 1500),
+            (300, 1300),
+            (330, 1200),
+            (375, 1100),
+            (420, 900),
+            (450, 700),
         ),
     ),
     Curve(
@@ -164,23 +166,20 @@ CURVES = (
         0.035,
         1.8,
         0.65,
-        tuple(
-            (n, round(to_si(t, "gf cm"), 4))
-            for n, t in (
-                (60, 5190),
-                (90, 5090),
-                (120, 4400),
-                (150, 3800),
-                (180, 3100),
-                (210, 2510),
-                (240, 1910),
-                (270, 1510),
-                (300, 1110),
-                (330, 910),
-                (360, 720),
-                (390, 560),
-                (420, 320),
-            )
+        _from_gf_cm(
+            (60, 5190),
+            (90, 5090),
+            (120, 4400),
+            (150, 3800),
+            (180, 3100),
+            (210, 2510),
+            (240, 1910),
+            (270, 1510),
+            (300, 1110),
+            (330, 910),
+            (360, 720),
+            (390, 560),
+            (420, 320),
         ),
     ),
     Curve(

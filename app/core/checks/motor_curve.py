@@ -24,8 +24,8 @@ from app.core.phrase import Amount, Phrase
 #: Said of every stepper: its curve may be the model's, drawn from datasheet values.
 DATASHEET_NOTE = (
     " Where the curve is drawn from datasheet values (the values typed in, or a library "
-    "stepper without its maker's published curve), the pull-out is the microstepping "
-    "model's estimate: confirm it on the maker's curve."
+    "stepper without its maker's published curve or on a drive other than its chart's), "
+    "the pull-out is the microstepping model's estimate: confirm it on the maker's curve."
 )
 #: Said where the move runs past the range where the model is confirmed.
 BEYOND_RANGE_NOTE = (
