@@ -17,7 +17,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 from itertools import pairwise
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
@@ -291,22 +291,26 @@ def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
     )
 
 
-#: Where the torque-speed curve the checks read comes from, as the motor chart names it.
-CURVE_ORIGINS = {
+#: Where the torque-speed curve the checks read comes from.
+CurveOrigin = Literal["entered", "published", "model"]
+#: Each origin as the motor chart's legend and the API's description name it.
+CURVE_ORIGINS: dict[CurveOrigin, str] = {
     "entered": "as entered",
     "published": "maker's published curve",
     "model": "model, from datasheet values",
 }
 
 
-def curve_origin(entered: Application, app: Application, motors: Mapping[str, Motor]) -> str:
+def curve_origin(
+    entered: Application, app: Application, motors: Mapping[str, Motor]
+) -> CurveOrigin | None:
     """Where ``app``'s motor curve (``with_motor``'s) comes from: "entered" where the
     inputs ``entered`` (the axis before ``with_motor``) carry a curve of their own,
     "published" where it is the library motor's published curve (``Motor.published_curve``),
-    "model" where it is drawn from datasheet values (the stepper or servo model), ""
+    "model" where it is drawn from datasheet values (the stepper or servo model), None
     without a curve."""
     if not app.motor_curve:
-        return ""
+        return None
     if entered.motor_curve:
         return "entered"
     motor = motors.get(app.motor or "")

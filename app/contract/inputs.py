@@ -32,9 +32,11 @@ from pydantic import (
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from app.catalog.motors import (
+    CurveOrigin,
     Motor,
     UndrivableMotor,
     check_motor,
+    curve_origin,
     drive_problem,
     undrivable_message,
     with_motor,
@@ -253,7 +255,17 @@ class ApplicationInputs(BaseModel):
         in from ``motors`` (``with_motor``; UnknownMotor for an id it lacks), and the
         library support unit's axial ratings from ``supports`` (``with_support``;
         UnknownSupport for an id it lacks)."""
-        return with_support(with_motor(self.axis(), motors), supports or {})
+        return self.to_core_traced(motors, supports)[0]
+
+    def to_core_traced(
+        self, motors: Mapping[str, Motor], supports: Mapping[str, SupportUnit] | None = None
+    ) -> tuple[Application, CurveOrigin | None]:
+        """``to_core``'s application and where its motor curve comes from
+        (``motors.curve_origin``: "entered", "published" or "model"; None without a
+        curve), for the responses to say beside the curve checks' results."""
+        entered = self.axis()
+        app = with_support(with_motor(entered, motors), supports or {})
+        return app, curve_origin(entered, app, motors)
 
     def axis(self) -> Application:
         """The application in SI as given, without a library motor's values filled in:

@@ -13,6 +13,7 @@ from pydantic import (
     field_validator,
 )
 
+from app.catalog.motors import CurveOrigin
 from app.contract.inputs import ApplicationIn
 from app.contract.schemas import CandidateOut, CandidateSummaryOut, RejectedSummaryOut
 from app.contract.sections import ProvenanceOut
@@ -23,6 +24,19 @@ API_URL = (
     "The API's GET of the same query (the API's names and units): share_url's inputs "
     "as this API reads them."
 )
+
+#: What every response that runs the checks says of its motor curve.
+MOTOR_CURVE_ORIGIN = (
+    "Where the torque-speed curve the motor-curve check reads comes from: entered (the "
+    "curve typed in), published (the library motor's maker's published curve, at the "
+    "drive of its chart), model (drawn from datasheet values by the stepper or servo "
+    "model: an estimate, to confirm on the maker's curve); null: no curve, so no curve "
+    "check runs."
+)
+
+
+def _curve_origin_field() -> Any:
+    return Field(None, description=MOTOR_CURVE_ORIGIN)
 
 
 class CountsOut(BaseModel):
@@ -83,6 +97,7 @@ class SelectionBaseOut(BaseModel):
     counts: CountsOut
     summary: SummaryOut
     catalog_version: str
+    motor_curve_origin: CurveOrigin | None = _curve_origin_field()
     share_url: str = Field(description=SHARE_URL)
     api_url: str = Field(description=API_URL)
 
@@ -188,6 +203,7 @@ SelectSummaryOut = create_model(
     counts=(CountsOut, ...),
     summary=(SummaryOut, ...),
     catalog_version=(str, ...),
+    motor_curve_origin=(CurveOrigin | None, _curve_origin_field()),
     share_url=(str, Field(description=SHARE_URL)),
     api_url=(str, Field(description=API_URL)),
     formulas_url=(
@@ -203,6 +219,7 @@ class CompareOut(BaseModel):
     inputs: ApplicationIn
     candidates: list[CandidateOut]
     catalog_version: str
+    motor_curve_origin: CurveOrigin | None = _curve_origin_field()
     share_url: str = Field(description="The compare page of the same inputs and ids.")
     api_url: str = Field(description=API_URL)
 
@@ -211,6 +228,7 @@ class EvaluateOut(BaseModel):
     inputs: ApplicationIn
     candidate: CandidateOut
     catalog_version: str
+    motor_curve_origin: CurveOrigin | None = _curve_origin_field()
     formulas: dict[str, FormulaOut]
     share_url: str | None = Field(
         description="A catalog screw's report page for the same inputs (none for a custom screw)."

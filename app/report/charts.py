@@ -9,7 +9,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from app.catalog import Catalog
-from app.catalog.motors import curve_origin
+from app.catalog.motors import CurveOrigin, curve_origin
 from app.contract.schemas import ApplicationIn
 from app.core import motion, segments
 from app.core.checks.wear_life import life_band
@@ -46,8 +46,8 @@ class ChartData:
     speed_m_s: float
     torque_limit_nm: float | None
     curve: tuple[tuple[float, float], ...]
-    #: where the curve comes from: a key of ``motors.CURVE_ORIGINS`` ("" without a curve)
-    curve_origin: str
+    #: where the curve comes from (``motors.curve_origin``; None without a curve)
+    curve_origin: CurveOrigin | None
     torque_safety_factor: float
     curve_margin: float
     sweep: list[LeadPoint]
@@ -80,8 +80,11 @@ def chart_data(
     """The charts' numbers for a result whose candidates are ``ids``, best first (at
     least one): the lead sweep of the first one's size and the wear lines of the first
     ``wear_top`` wear-rated ones, given the catalog; the axis alone without it."""
-    entered = inputs.axis()
-    app = inputs.to_core(catalog.motors, catalog.supports) if catalog else entered
+    if catalog is not None:
+        app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
+    else:
+        app = inputs.axis()
+        origin = curve_origin(app, app, {})
     sweep: list[LeadPoint] = []
     wear: list[WearLine] = []
     pressure: list[PressureLimit] = []
@@ -97,7 +100,7 @@ def chart_data(
         speed_m_s=motion.reached_speed(app),
         torque_limit_nm=app.max_torque_nm,
         curve=app.motor_curve,
-        curve_origin=curve_origin(entered, app, catalog.motors if catalog else {}),
+        curve_origin=origin,
         torque_safety_factor=app.torque_safety_factor,
         curve_margin=segments.curve_margin(app),
         sweep=sweep,

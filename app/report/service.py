@@ -7,6 +7,7 @@ from typing import Any
 from urllib.parse import quote, urlencode
 
 from app.catalog import Catalog
+from app.catalog.motors import CurveOrigin
 from app.contract.fields import FIELDS
 from app.contract.form import share_query
 from app.contract.outputs import CompareOut, EvaluateOut, FormulaOut, PageSelectionOut, SelectOut
@@ -60,21 +61,25 @@ def run_selection(
     """Select and rank over the catalog: the API's select response, its sentences in
     ``units`` (the API's own by default), its candidates in ``VIEWS[view]`` (every field
     by default; "csv": the CSV export's)."""
-    selection = select(
-        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
-    )
-    return construct_select_out(inputs, catalog, selection_out(selection, units, view))
+    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
+    selection = select(app, catalog.index, INPUT_RANGES, INPUT_WORDS)
+    return construct_select_out(inputs, catalog, selection_out(selection, units, view), origin)
 
 
 def construct_select_out(
-    inputs: ApplicationIn, catalog: Catalog, selected: dict[str, Any]
+    inputs: ApplicationIn,
+    catalog: Catalog,
+    selected: dict[str, Any],
+    origin: CurveOrigin | None,
 ) -> SelectOut:
-    """The select response around ``selection_out``'s candidates, counts and summary."""
+    """The select response around ``selection_out``'s candidates, counts and summary;
+    ``origin``: where the motor curve comes from (``ApplicationIn.to_core_traced``)."""
     share = share_query(inputs)
     return SelectOut.model_construct(
         inputs=inputs,
         **selected,
         catalog_version=catalog.version,
+        motor_curve_origin=origin,
         share_url="/?" + share,
         api_url=api_url("select", inputs, [("detail", "full")], share),
         formulas=FORMULAS_OUT,
@@ -149,9 +154,8 @@ def _page_query(inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str
 @lru_cache(maxsize=RECENT_PAGE_SELECTIONS)
 def _page_selection(query: _PageQuery) -> _PageSelection:
     inputs, catalog, units = query.inputs, query.catalog, query.units
-    selection = select(
-        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
-    )
+    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
+    selection = select(app, catalog.index, INPUT_RANGES, INPUT_WORDS)
     rejected = selection.rejected if not selection.passed else ()
     share = share_query(inputs)
     out = PageSelectionOut.model_construct(
@@ -160,6 +164,7 @@ def _page_selection(query: _PageQuery) -> _PageSelection:
         rejected=[candidate_view(c, "full", units) for c in rejected],
         **counts_and_summary(selection, units),
         catalog_version=catalog.version,
+        motor_curve_origin=origin,
         share_url="/?" + share,
         api_url=api_url("select", inputs, share=share),
     )
@@ -169,15 +174,15 @@ def _page_selection(query: _PageQuery) -> _PageSelection:
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
     """Select and rank over the catalog: the API's compact select response
     (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
-    selection = select(
-        inputs.to_core(catalog.motors, catalog.supports), catalog.index, INPUT_RANGES, INPUT_WORDS
-    )
+    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
+    selection = select(app, catalog.index, INPUT_RANGES, INPUT_WORDS)
     share = share_query(inputs)
     return {
         "detail": "summary",
         "inputs": inputs.model_dump(mode="json", exclude_defaults=True),
         **selection_summary(selection),
         "catalog_version": catalog.version,
+        "motor_curve_origin": origin,
         "share_url": "/?" + share,
         "api_url": api_url("select", inputs, share=share),
         "formulas_url": FORMULAS_URL,
@@ -194,7 +199,7 @@ def run_evaluation(
     catalog's variant rows; a custom screw's are built here); raise UnknownScrew for a
     bad catalog id."""
     index = catalog.index
-    app = inputs.to_core(catalog.motors, catalog.supports)
+    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
     if isinstance(screw, CatalogScrewIn):
         position = index.positions.get(screw.catalog_id)
         if position is None:
@@ -211,6 +216,7 @@ def run_evaluation(
         inputs=inputs,
         candidate=candidate_view(candidate, "full", units),
         catalog_version=catalog.version,
+        motor_curve_origin=origin,
         formulas=FORMULAS_OUT,
         share_url=share_url,
         api_url=url,
@@ -264,13 +270,12 @@ def run_compare(
 ) -> CompareOut:
     """Catalog screws ``ids`` (checked by ``compare_ids``) evaluated for ``inputs``, each
     in full with its robustness and verdict, side by side."""
+    evaluated = [run_evaluation(inputs, CatalogScrewIn(catalog_id=i), catalog, units) for i in ids]
     return CompareOut.model_construct(
         inputs=inputs,
-        candidates=[
-            run_evaluation(inputs, CatalogScrewIn(catalog_id=i), catalog, units).candidate
-            for i in ids
-        ],
+        candidates=[e.candidate for e in evaluated],
         catalog_version=catalog.version,
+        motor_curve_origin=evaluated[0].motor_curve_origin,
         share_url=compare_url(inputs, ids, units),
         api_url=api_url("compare", inputs, [("ids", ",".join(ids))]),
     )

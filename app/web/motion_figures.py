@@ -5,7 +5,7 @@ one cycle. Numbers come from the core's segments; nothing is recomputed here."""
 from collections.abc import Sequence
 from typing import Any
 
-from app.catalog.motors import CURVE_ORIGINS
+from app.catalog.motors import CURVE_ORIGINS, CurveOrigin
 from app.contract.schemas import CandidateOut
 from app.contract.sections import SegmentOut
 from app.contract.units import Display
@@ -23,7 +23,7 @@ def motor_figure(
     safety_factor: float,
     d: Display,
     margin: float = 1.0,
-    origin: str = "",
+    origin: CurveOrigin | None = None,
 ) -> dict[str, Any]:
     """The motor's torque against speed (its curve) and, for each top candidate, every
     moving segment's top rpm and torque times the safety factor: a point above the line

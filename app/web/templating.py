@@ -5,6 +5,7 @@ from typing import Any
 import pydantic_core
 from fastapi.templating import Jinja2Templates
 
+from app.catalog.motors import CURVE_ORIGINS
 from app.core.phrase import figures
 from app.core.verdict import value_label
 from app.paths import resource_dir
@@ -24,4 +25,6 @@ def _json(value: Any, **_: Any) -> str:
 templates.env.policies["json.dumps_function"] = _json
 templates.env.filters["figures"] = figures
 templates.env.globals["value_label"] = value_label
+#: where a motor curve comes from, in words (the results' and the report's footnotes)
+templates.env.globals["curve_origins"] = CURVE_ORIGINS
 templates.env.filters["value_label"] = value_label

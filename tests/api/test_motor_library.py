@@ -176,6 +176,40 @@ def test_a_published_curve_holds_only_at_its_charts_drive() -> None:
     assert _at(half.motor_curve, 600.0) < SO_23HS32.points[-1][1]
 
 
+@pytest.mark.parametrize(
+    ("motor", "origin"),
+    [
+        ({}, None),
+        ({"motor": "23hs32-4004s"}, "published"),
+        ({"motor": "23hs32-4004s", "motor_supply_v": 24.0}, "model"),
+        ({"motor": "17hs19-2004s1"}, "model"),
+        ({"motor": "23hs32-4004s", "motor_curve": "0:1.2,600:0.8"}, "entered"),
+    ],
+    ids=["no-motor", "published", "published-on-24v", "library-model", "typed-curve"],
+)
+def test_every_response_says_where_its_motor_curve_comes_from(
+    client: TestClient, motor: dict[str, object], origin: str | None
+) -> None:
+    """The select (both forms), evaluate and compare responses say which curve the
+    motor-curve check read: the maker's published one only for the 23HS32-4004S at its
+    chart's 48 V; the footnotes of the results page and the report name it in words."""
+    params = {**BASE, "lead_mm": 8.0, **motor}
+    full = client.get("/api/v1/select", params={**params, "detail": "full"}).json()
+    assert full["motor_curve_origin"] == origin
+    compact = client.get("/api/v1/select", params=params).json()
+    assert compact["motor_curve_origin"] == origin
+    ids = [c["id"] for c in full["candidates"][:2]]
+    one = client.get("/api/v1/evaluate", params={**params, "catalog_id": ids[0]}).json()
+    assert one["motor_curve_origin"] == origin
+    both = client.get("/api/v1/compare", params={**params, "ids": ",".join(ids)}).json()
+    assert both["motor_curve_origin"] == origin
+    words = {"published": "maker's published curve", "model": "model, from datasheet values"}
+    for url in (full["share_url"], "/report" + full["share_url"][1:]):
+        page = client.get(url, headers={"HX-Request": "true"}).text.replace("&#39;", "'")
+        for key, said in {**words, "entered": "as entered"}.items():
+            assert (f"Motor curve: {said}." in page) == (key == origin)
+
+
 @pytest.mark.parametrize("motor", ["17hs19-2004s1", "23hs32-4004s"])
 def test_a_drive_voltage_that_cannot_reach_the_current_is_refused(
     client: TestClient, motor: str

@@ -6,6 +6,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.contract.inputs import ApplicationIn
+from app.contract.outputs import SelectOut
 from app.contract.schemas import VIEWS
 from app.report.formulas import FORMULAS
 from tests.compact_form import RELATIVE, assert_compact_of
@@ -35,7 +36,7 @@ def _select(client: TestClient, **params: Any) -> Any:
 @pytest.mark.parametrize("axis", [AXIS, NOTHING_PASSES], ids=["passing", "nothing-passes"])
 def test_full_form_keeps_every_field(client: TestClient, axis: dict[str, Any]) -> None:
     full = _select(client, **axis, detail="full")
-    assert set(full) == FULL_FIELDS
+    assert set(full) == set(SelectOut.model_fields) >= FULL_FIELDS
     assert full["formulas"].keys() == FORMULAS.keys()
     for candidate in full["candidates"] + full["rejected"]:
         assert {"checks", "provenance", "torque", "buckling", "fix"} <= set(candidate)
@@ -45,7 +46,7 @@ def test_full_form_keeps_every_field(client: TestClient, axis: dict[str, Any]) -
 def test_compact_form_agrees_with_the_full_one(client: TestClient, axis: dict[str, Any]) -> None:
     compact, full = _select(client, **axis), _select(client, **axis, detail="full")
     assert compact["detail"] == "summary"
-    for key in ("counts", "summary", "catalog_version", "share_url"):
+    for key in ("counts", "summary", "catalog_version", "motor_curve_origin", "share_url"):
         assert compact[key] == full[key], key
     assert [c["id"] for c in compact["candidates"]] == [c["id"] for c in full["candidates"]]
     for small, big in zip(compact["candidates"], full["candidates"], strict=True):
