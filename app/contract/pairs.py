@@ -5,9 +5,10 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, Field, ValidationInfo, field_validator
 
+from app.catalog.motors import CurveOrigin
 from app.contract.fields import FIELDS
 from app.contract.inputs import ApplicationIn
-from app.contract.outputs import API_URL, SourcedOut
+from app.contract.outputs import API_URL, MOTOR_CURVE_ORIGIN, SourcedOut
 from app.core.model import RankBy
 
 PairRankIn = Literal["motor_margin", "motor_size", "torque"]
@@ -75,6 +76,7 @@ class PairOut(BaseModel):
     motor_name: str
     motor_kind: Literal["stepper", "servo"]
     frame: str
+    motor_curve_origin: CurveOrigin | None = Field(description=MOTOR_CURVE_ORIGIN)
     motor_use: float = Field(
         description="The largest share of the motor used over its torque, curve, RMS and "
         "speed checks (0-1; 1 - motor_use is the margin)"

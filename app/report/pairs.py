@@ -4,7 +4,7 @@ from typing import Any
 
 from app.catalog import Catalog
 from app.catalog.models import Sourced
-from app.catalog.motors import ANY_MOTOR, NAMED_UNITS, Motor, pair_applications
+from app.catalog.motors import ANY_MOTOR, NAMED_UNITS, Motor, curve_origin, pair_applications
 from app.contract.form import share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.pairs import (
@@ -17,6 +17,7 @@ from app.contract.pairs import (
 )
 from app.contract.params import api_url
 from app.contract.units import UNITS, from_si
+from app.core.model import Application
 from app.core.pairs import Pair, rank_pairs
 
 
@@ -63,7 +64,10 @@ def _ranked(rank: PairRankIn, pair: Pair) -> tuple[float, str]:
     return pair.motor_use, ""
 
 
-def _pair_out(pair: Pair, rank: PairRankIn, catalog: Catalog) -> dict[str, Any]:
+def _pair_out(
+    pair: Pair, rank: PairRankIn, catalog: Catalog, alone: Application, driven: Application
+) -> dict[str, Any]:
+    """One pair as ``PairOut``: ``driven`` is the axis ``alone`` with the pair's motor."""
     motor = catalog.motors[pair.motor]
     value, unit = _ranked(rank, pair)
     return {
@@ -73,6 +77,7 @@ def _pair_out(pair: Pair, rank: PairRankIn, catalog: Catalog) -> dict[str, Any]:
         "motor_name": motor.name,
         "motor_kind": motor.kind,
         "frame": motor.frame,
+        "motor_curve_origin": curve_origin(alone, driven, catalog.motors),
         "motor_use": pair.motor_use,
         "torque_nm": pair.torque_nm,
         "peak_rpm": pair.peak_rpm,
@@ -99,7 +104,7 @@ def run_pairs(inputs: ApplicationIn, catalog: Catalog, asked: PairRankIn | None 
             "screws_passing_alone": found.screws_passing_alone,
             "motors": found.motors,
             "pairs_passed": found.pairs_passed,
-            "pairs": [_pair_out(p, rank, catalog) for p in found.pairs],
+            "pairs": [_pair_out(p, rank, catalog, alone, motors[p.motor]) for p in found.pairs],
             **pairs_urls(inputs, asked),
         }
     )

@@ -119,6 +119,22 @@ def test_the_pairs_run_the_steppers_on_the_drive_voltage_typed_in(client: TestCl
     assert {p["motor"] for p in body["pairs"]} <= set(driven)
 
 
+def test_each_pair_says_where_its_motor_curve_comes_from(client: TestClient) -> None:
+    """A pair of a library stepper with its maker's curve (the 23HS32-4004S's at 48 V,
+    the Songyang and Trinamic ones at 24 V) reads that curve on its chart's drive; on a
+    36 V drive, the chart of none, the model draws every stepper's. A servo's is the
+    servo model's."""
+
+    def origins(**extra: object) -> dict[str, str]:
+        return {p["motor"]: p["motor_curve_origin"] for p in _pairs(client, **extra)["pairs"]}
+
+    published = {mid for mid, m in MOTORS.items() if m.published_curve()}
+    by_motor = origins()
+    assert published & set(by_motor) and set(by_motor) - published
+    assert by_motor == {mid: "published" if mid in published else "model" for mid in by_motor}
+    assert set(origins(motor_supply_v=36.0).values()) == {"model"}
+
+
 def test_a_bad_rank_is_a_field_level_422(client: TestClient) -> None:
     r = client.get("/api/v1/pairs", params={**AXIS, "pair_rank": "cheapest"})
     assert r.status_code == 422
