@@ -1,8 +1,8 @@
 """Makers' published stepper pull-out curves as numbers, with the datasheet values the
 stepper model needs, and the model's figure beside each point: the /validation page's
-second table and ``tests/core/test_stepper.py`` read them. The points of a curve the
-motor library drives one of its motors by are read from the library
-(catalog/motors.toml, ``library_points``), where they are kept with their provenance.
+second table and ``tests/core/test_stepper.py`` read them. A curve the motor library
+drives one of its motors by is read from the library (catalog/motors.toml,
+``library_curve``): its points and datasheet values are kept there, with their provenance.
 
 Each chart was read at its plotted points (markers, or the vertices of a vector chart)
 from the maker's own document as kept in a public repository (named with its commit);
@@ -92,6 +92,26 @@ def library_points(motor_id: str) -> tuple[tuple[float, float], ...]:
     return tuple((float(rpm), float(torque_nm)) for rpm, torque_nm in points)
 
 
+def library_curve(motor_id: str, part: str, source: str, drive: str, rms: bool = False) -> Curve:
+    """The published curve of the built-in library's motor ``motor_id`` with the datasheet
+    values the model needs, all as catalog/motors.toml keeps them with their provenance
+    (``rms``: the chart prints its current as an RMS value)."""
+    value = {name: held.value for name, held in _LIBRARY[motor_id].values.items()}
+    return Curve(
+        part,
+        source,
+        drive,
+        value["supply_v"],
+        value["phase_current_a"],
+        rms,
+        value["resistance_ohm"],
+        value["inductance_mh"],  # held in H, as every library value is in SI
+        value["step_angle_deg"],
+        value["holding_torque_nm"],
+        library_points(motor_id),
+    )
+
+
 def _from_gf_cm(*points: tuple[float, float]) -> tuple[tuple[float, float], ...]:
     """A chart's points (rpm, gf cm) in N m, to 4 decimals (the unit table's gf cm)."""
     return tuple((rpm, round(to_si(torque, "gf cm"), 4)) for rpm, torque in points)
@@ -102,18 +122,11 @@ APM = (
     "Onboarding/04_Hardware_Firmware_Network_Architecture/joint_datasheets/ (commit 411985f)"
 )
 
-SO_23HS32_48V = Curve(
+SO_23HS32_48V = library_curve(
+    "23hs32-4004s",
     "STEPPERONLINE 23HS32-4004S at 48 V",
     APM + ", joint2: 2.40 N m, 4.00 A, 0.65 ohm, 3.2 mH",
     "Leadshine DM542T, 2000 microsteps, peak 4.2 A",
-    48.0,
-    4.0,
-    False,
-    0.65,
-    0.0032,
-    1.8,
-    2.40,
-    library_points("23hs32-4004s"),
 )
 #: The same motor and drive at 36 V (the point at 90 rpm lies under the 48 V marker).
 SO_23HS32_36V = SO_23HS32_48V._replace(
@@ -182,19 +195,12 @@ CURVES = (
             (420, 320),
         ),
     ),
-    Curve(
+    library_curve(
+        "sy35st36-1004a",
         "Changzhou Songyang SY35ST36-1004A",
         "pichim/PM2_PES_Board_Example, docs/datasheets/SY35ST36-1004A.pdf (commit c256c7f); "
         "chart 'Pull out torque curve: VOLTAGE: 24VDC, CONSTANT CURRENT: 1.0A, HALF STEP'",
         "half step, 1.0 A",
-        24.0,
-        1.0,
-        False,
-        2.7,
-        0.0043,
-        1.8,
-        0.1373,
-        library_points("sy35st36-1004a"),
     ),
     Curve(
         "Changzhou Songyang SY42STH38-1684A",
@@ -221,19 +227,12 @@ CURVES = (
             (750.0, 0.1844),
         ),
     ),
-    Curve(
+    library_curve(
+        "sy42sth47-1684b",
         "Changzhou Songyang SY42STH47-1684B",
         "rkoeppl/ueberramps, SY42STH47-1684B.pdf (commit bbc956f); chart 'Pull out torque "
         "curve: VOLTAGE: 24VDC, CONSTANT CURRENT: 1.68A, HALF STEP'",
         "half step, 1.68 A",
-        24.0,
-        1.68,
-        False,
-        1.65,
-        0.0028,
-        1.8,
-        0.4315,
-        library_points("sy42sth47-1684b"),
     ),
     Curve(
         "Trinamic (ADI) QSH4218-35-10-027",
@@ -287,35 +286,22 @@ CURVES = (
             (1499.2, 0.0568),
         ),
     ),
-    Curve(
+    library_curve(
+        "qsh4218-47-28-040",
         "Trinamic (ADI) QSH4218-47-28-040",
         "thomasarmel/arduino_polytech_2019_2020, datasheets/QSH4218_manual.pdf (commit 1437bba), "
         "Figure 5.4, p. 8; "
         "chart 'Testing conditions: driver supply voltage: +24V DC, coil current: 2.8A RMS, "
         "half step operation'",
         "half step, 2.8 A RMS",
-        24.0,
-        2.8,
-        True,
-        0.5,
-        0.0006,
-        1.8,
-        0.4,
-        library_points("qsh4218-47-28-040"),
+        rms=True,
     ),
-    Curve(
+    library_curve(
+        "qsh4218-51-10-049",
         "Trinamic (ADI) QSH4218-51-10-049",
         "SyedSiddiqShakir/powtech_laser_stepper, QSH4218_manual.pdf (commit 681e0c9), "
         "Figure 4.3, p. 7; "
         "chart 'Testing conditions: VM: 24V; 1.0A / Phase Driver: M325, half step'",
         "half step, 1.0 A",
-        24.0,
-        1.0,
-        False,
-        5.0,
-        0.008,
-        1.8,
-        0.49,
-        library_points("qsh4218-51-10-049"),
     ),
 )

@@ -414,17 +414,18 @@ def test_the_model_is_never_15_percent_above_these_makers_curves(curve: Curve) -
 
 def test_each_library_curve_is_the_one_held_against_the_model() -> None:
     """A library motor carrying its maker's curve is one the validation holds the model
-    against (app/report/pull_out_curves.py), with the same holding torque, current,
-    resistance and inductance; the validation reads its points from the library itself
-    (``library_points``): one reading of each chart."""
+    against (app/report/pull_out_curves.py), with the same points, holding torque,
+    supply, current, resistance and inductance: the validation reads them from the
+    library itself (``library_curve``), one reading of each chart."""
     by_model = {c.part.split()[-1].lower(): c for c in CURVES}
     by_model["23hs32-4004s"] = SO_23HS32_48V
     published = [m for m in MOTORS.values() if m.published_curve() is not None]
     assert len(published) >= 5
     for motor in published:
         curve = by_model[motor.id]
+        assert motor.published_curve() == ((0.0, curve.points[0][1]), *curve.points)
         assert motor.value("supply_v") == curve.supply_v
-        assert motor.value("holding_torque_nm") == pytest.approx(curve.holding_nm, rel=1e-3)
+        assert motor.value("holding_torque_nm") == curve.holding_nm
         assert motor.value("phase_current_a") == curve.current_a
         assert motor.value("resistance_ohm") == curve.resistance_ohm
-        assert motor.value("inductance_mh") == pytest.approx(curve.inductance_h)
+        assert motor.value("inductance_mh") == curve.inductance_h
