@@ -15,6 +15,7 @@ same way.
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
+from functools import lru_cache
 from itertools import pairwise
 from pathlib import Path
 from typing import Any, Literal
@@ -174,9 +175,7 @@ class Motor:
             self.value("step_angle_deg"),
             self.value("holding_torque_nm"),
         )
-        return stepper.microstep_pull_out_curve(
-            args, MAX_STEPPER_RPM, current_is_rms=current_is_rms
-        )
+        return model_curve(args, current_is_rms)
 
     def detent_torque_nm(self) -> float | None:
         """A stepper's published detent torque (unpowered); None where not published."""
@@ -286,9 +285,24 @@ def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
     if stepper.corner_speed_rpm(supply, current, resistance, inductance, step) <= 0.0:
         return ()
     args = (supply, current, resistance, inductance, step, app.motor_holding_torque_nm)
-    return stepper.microstep_pull_out_curve(
-        args, MAX_STEPPER_RPM, current_is_rms=app.motor_current_rms
-    )
+    return model_curve(args, app.motor_current_rms)
+
+
+#: How many steppers' model curves are kept (``model_curve``): the library's, each on
+#: its own drive and the RMS reading, and those of recent drives typed in.
+MODEL_CURVES_KEPT = 256
+
+
+@lru_cache(maxsize=MODEL_CURVES_KEPT)
+def model_curve(
+    args: tuple[float, float, float, float, float, float], current_is_rms: bool
+) -> tuple[tuple[float, float], ...]:
+    """``stepper.microstep_pull_out_curve`` up to ``MAX_STEPPER_RPM`` for the datasheet
+    values ``args`` (supply [V], current [A], resistance [ohm], inductance [H], step angle
+    [deg], holding torque [N m]), kept for the last ``MODEL_CURVES_KEPT`` of them: every
+    request with a library stepper reads its curve, and a pairs request every library
+    stepper's (some 0.3 ms each to draw)."""
+    return stepper.microstep_pull_out_curve(args, MAX_STEPPER_RPM, current_is_rms=current_is_rms)
 
 
 #: Where the torque-speed curve the checks read comes from.
