@@ -10,9 +10,8 @@ model, so the documentation is unchanged (``tests/api/test_query_path.py`` compa
 """
 
 from functools import cache
-from typing import Annotated, Any, TypeVar, get_args, get_origin
+from typing import Any, TypeVar, get_args, get_origin
 
-from fastapi import FastAPI, Query
 from fastapi.exceptions import RequestValidationError
 from pydantic import BaseModel, ValidationError
 from starlette.datastructures import QueryParams
@@ -54,14 +53,29 @@ def parse_query(model: type[M], params: QueryParams) -> M:
         raise RequestValidationError(errors) from None
 
 
+#: Where the OpenAPI document keeps the models a parameter's schema refers to.
+REF_TEMPLATE = "#/components/schemas/{model}"
+
+
 @cache
 def query_parameters(model: type[BaseModel]) -> list[dict[str, Any]]:
-    """The OpenAPI parameters FastAPI writes for ``Annotated[model, Query()]``."""
-    probe = FastAPI()
-
-    @probe.get("/")
-    def read(q: Annotated[model, Query()]) -> None:  # type: ignore[valid-type]
-        """Never called: declares the query model for its documentation."""
-
-    parameters: list[dict[str, Any]] = probe.openapi()["paths"]["/"]["get"]["parameters"]
+    """The OpenAPI parameters FastAPI writes for ``Annotated[model, Query()]``: one per
+    field, in the model's order, each with the field's JSON schema (its models referred to
+    under components/schemas, a null default left out) and description. Read from the
+    model's own JSON schema: a FastAPI app built to write them costs some 0.2 s a model at
+    every start (``tests/api/test_query_path.py`` holds both equal)."""
+    schema = model.model_json_schema(ref_template=REF_TEMPLATE, mode="validation")
+    required = set(schema.get("required", ()))
+    parameters = []
+    for name, field in model.model_fields.items():
+        held = schema["properties"][name]
+        parameter = {
+            "name": name,
+            "in": "query",
+            "required": name in required,
+            "schema": {k: v for k, v in held.items() if k != "default" or v is not None},
+        }
+        if field.description:
+            parameter["description"] = field.description
+        parameters.append(parameter)
     return parameters
