@@ -7,7 +7,7 @@ import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
-from app.catalog.motors import MAX_STEPPER_RPM, pair_applications
+from app.catalog.motors import CURVE_ORIGINS, MAX_STEPPER_RPM, pair_applications
 from app.contract.inputs import ApplicationIn
 from app.core.formulas import stepper
 from tests.motor_library import MOTORS
@@ -167,6 +167,10 @@ def test_the_page_ranks_pairs_with_the_motor_any(client: TestClient) -> None:
     assert used == sorted(used)
     (caption,) = page.select("table.pairs caption")
     assert "share of the motor used" in caption.text
+    # each pair names the curve it was judged on, as the API's motor_curve_origin
+    api = _pairs(client, rank_by="motor_margin")["pairs"][:10]
+    words = [tag.text for tag in page.select("table.pairs tr.pair .curve-origin")]
+    assert words == [f"curve: {CURVE_ORIGINS[p['motor_curve_origin']]}" for p in api]
     without = BeautifulSoup(client.get("/", params=params | {"motor": ""}).text, "html.parser")
     assert without.select("table.pairs") == []
 
