@@ -36,6 +36,8 @@ MOTOR_CURVE_ORIGIN = (
 
 
 def _curve_origin_field() -> Any:
+    """The ``motor_curve_origin`` field of a response (``ApplicationIn.to_core_traced``):
+    a field of its own for each model that carries it."""
     return Field(None, description=MOTOR_CURVE_ORIGIN)
 
 
