@@ -335,7 +335,11 @@ def curve_origin(
 def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
     """``app`` with its motor's curve, inertia, continuous torque and step angle filled
     in: a given curve first, then one drawn from the datasheet values, then the library
-    motor's (raise UnknownMotor for an id ``motors`` lacks)."""
+    motor's (raise UnknownMotor for an id ``motors`` lacks). A curve given is the one the
+    checks read, so it carries no drive voltage: no range of the model's applies to it,
+    whatever datasheet values come with it."""
+    if app.motor_curve:
+        app = replace(app, motor_supply_v=None)
     curve = app.motor_curve or _datasheet_curve(app)
     if app.motor is None or app.motor == ANY_MOTOR:
         held = energised_holding(app, app.motor_holding_torque_nm)

@@ -577,7 +577,8 @@ def test_a_move_past_the_models_range_is_flagged(client: TestClient) -> None:
     0.1886 V s/rad, the back-EMF reaches 40 % of the supply at 9.6 / 0.1886 = 50.9 rad/s
     = 486 rpm, the top of the range where the model is confirmed. The Z axis at 12 mm/s
     (90 rpm) stays inside it; at 100 mm/s (750 rpm) the check says the move runs past it.
-    A curve typed in is not the model's and is never flagged."""
+    A curve typed in is not the model's and is never flagged, even with datasheet values
+    that the model alone would be flagged at."""
     assert stepper.confirmed_range_rpm(24.0, 1.5, 0.40) == pytest.approx(486.2, abs=0.1)
     params = {**Z_AXIS, "motor": "14hs20-1504s", "detail": "full", "microsteps": 8}
     messages = {}
@@ -588,10 +589,24 @@ def test_a_move_past_the_models_range_is_flagged(client: TestClient) -> None:
     assert "40 % of the supply" in messages[100.0] and "486 rpm" in messages[100.0]
     typed = {**params, "speed_mm_s": 100.0, "motor": None, "motor_curve": "[[0, 0.3], [3000, 0.2]]"}
     typed["step_angle_deg"] = 1.8
-    body = client.get("/api/v1/select", params={k: v for k, v in typed.items() if v is not None})
-    assert (
-        "40 % of the supply" not in _checks(body.json()["candidates"][0])["motor_curve"]["message"]
-    )
+    # the same curve typed with the 14HS20-1504S's datasheet values (from which alone the
+    # model draws, and flags the move past 486 rpm): the typed curve is read, not flagged
+    datasheet = {
+        "motor_supply_v": 24.0,
+        "motor_phase_current_a": 1.5,
+        "motor_resistance_ohm": 2.8,
+        "motor_inductance_mh": 3.8,
+        "motor_holding_torque_nm": 0.40,
+    }
+    for given in ({}, datasheet):
+        query = {k: v for k, v in {**typed, **given}.items() if v is not None}
+        body = client.get("/api/v1/select", params=query).json()
+        assert body["motor_curve_origin"] == "entered"
+        assert "40 % of the supply" not in _checks(body["candidates"][0])["motor_curve"]["message"]
+    drawn = {k: v for k, v in {**typed, **datasheet, "motor_curve": None}.items() if v is not None}
+    body = client.get("/api/v1/select", params=drawn).json()
+    assert body["motor_curve_origin"] == "model"
+    assert "40 % of the supply" in _checks(body["candidates"][0])["motor_curve"]["message"]
 
 
 def test_a_supply_below_four_times_ir_is_flagged(client: TestClient) -> None:
