@@ -31,16 +31,8 @@ from pydantic import (
 )
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
-from app.catalog.motors import (
-    CurveOrigin,
-    Motor,
-    UndrivableMotor,
-    check_motor,
-    curve_origin,
-    drive_problem,
-    undrivable_message,
-    with_motor,
-)
+from app.catalog.axis_motor import CurveOrigin, curve_origin, drive_problem, with_motor
+from app.catalog.motors import Motor, UndrivableMotor, check_motor, undrivable_message
 from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.cycle import MAX_MOVES, MoveIn, closing_error_mm, parse_moves_text, span_mm
 from app.contract.fields import BY_API, FIELDS
@@ -261,7 +253,7 @@ class ApplicationInputs(BaseModel):
         self, motors: Mapping[str, Motor], supports: Mapping[str, SupportUnit] | None = None
     ) -> tuple[Application, CurveOrigin | None]:
         """``to_core``'s application and where its motor curve comes from
-        (``motors.curve_origin``: "entered", "published" or "model"; None without a
+        (``axis_motor.curve_origin``: "entered", "published" or "model"; None without a
         curve), for the responses to say beside the curve checks' results."""
         entered = self.axis()
         app = with_support(with_motor(entered, motors), supports or {})

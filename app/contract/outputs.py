@@ -13,7 +13,7 @@ from pydantic import (
     field_validator,
 )
 
-from app.catalog.motors import CurveOrigin
+from app.catalog.axis_motor import CurveOrigin
 from app.contract.inputs import ApplicationIn
 from app.contract.schemas import CandidateOut, CandidateSummaryOut, RejectedSummaryOut
 from app.contract.sections import ProvenanceOut

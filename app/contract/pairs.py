@@ -5,7 +5,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, Field, ValidationInfo, field_validator
 
-from app.catalog.motors import CurveOrigin
+from app.catalog.axis_motor import CurveOrigin
 from app.contract.fields import FIELDS
 from app.contract.inputs import ApplicationIn
 from app.contract.outputs import API_URL, MOTOR_CURVE_ORIGIN, SourcedOut

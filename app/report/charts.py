@@ -9,7 +9,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from app.catalog import Catalog
-from app.catalog.motors import CurveOrigin, curve_origin
+from app.catalog.axis_motor import CurveOrigin, curve_origin
 from app.contract.schemas import ApplicationIn
 from app.core import motion, segments
 from app.core.checks.wear_life import life_band
@@ -46,7 +46,7 @@ class ChartData:
     speed_m_s: float
     torque_limit_nm: float | None
     curve: tuple[tuple[float, float], ...]
-    #: where the curve comes from (``motors.curve_origin``; None without a curve)
+    #: where the curve comes from (``axis_motor.curve_origin``; None without a curve)
     curve_origin: CurveOrigin | None
     torque_safety_factor: float
     curve_margin: float

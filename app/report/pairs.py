@@ -3,8 +3,9 @@
 from typing import Any
 
 from app.catalog import Catalog
+from app.catalog.axis_motor import curve_origin, pair_applications
 from app.catalog.models import Sourced
-from app.catalog.motors import ANY_MOTOR, NAMED_UNITS, Motor, curve_origin, pair_applications
+from app.catalog.motors import ANY_MOTOR, NAMED_UNITS, Motor
 from app.contract.form import share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.pairs import (

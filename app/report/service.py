@@ -7,7 +7,7 @@ from typing import Any
 from urllib.parse import quote, urlencode
 
 from app.catalog import Catalog
-from app.catalog.motors import CurveOrigin
+from app.catalog.axis_motor import CurveOrigin
 from app.contract.fields import FIELDS
 from app.contract.form import share_query
 from app.contract.outputs import CompareOut, EvaluateOut, FormulaOut, PageSelectionOut, SelectOut

@@ -5,7 +5,7 @@ one cycle. Numbers come from the core's segments; nothing is recomputed here."""
 from collections.abc import Sequence
 from typing import Any
 
-from app.catalog.motors import CURVE_ORIGINS, CurveOrigin
+from app.catalog.axis_motor import CURVE_ORIGINS, CurveOrigin
 from app.contract.schemas import CandidateOut
 from app.contract.sections import SegmentOut
 from app.contract.units import Display
@@ -30,7 +30,7 @@ def motor_figure(
     is a segment the motor cannot drive. A stepper's curve (its pull-out) is drawn beside
     the usable torque the checks hold the move against, the pull-out over ``margin``.
     The curve's legend says where it comes from (``origin``, a key of
-    ``motors.CURVE_ORIGINS``: typed in, the maker's published curve, or the model)."""
+    ``axis_motor.CURVE_ORIGINS``: typed in, the maker's published curve, or the model)."""
     unit = d.label("torque")
     name = "Motor curve" if margin == 1.0 else "Pull-out"
     if origin:

@@ -5,7 +5,7 @@ from typing import Any
 import pydantic_core
 from fastapi.templating import Jinja2Templates
 
-from app.catalog.motors import CURVE_ORIGINS
+from app.catalog.axis_motor import CURVE_ORIGINS
 from app.core.phrase import figures
 from app.core.verdict import value_label
 from app.paths import resource_dir

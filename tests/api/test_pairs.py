@@ -7,7 +7,8 @@ import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
-from app.catalog.motors import CURVE_ORIGINS, MAX_STEPPER_RPM, pair_applications
+from app.catalog.axis_motor import CURVE_ORIGINS, pair_applications
+from app.catalog.motors import MAX_STEPPER_RPM
 from app.contract.inputs import ApplicationIn
 from app.core.formulas import stepper
 from tests.motor_library import MOTORS

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
-from app.catalog.motors import with_motor
+from app.catalog.axis_motor import with_motor
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import Application
 from app.core.remedy import MARGIN, impossible, part_way, past_limit
