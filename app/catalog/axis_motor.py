@@ -79,19 +79,29 @@ def curve_origin(
 def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:
     """``app`` with its motor's curve, inertia, continuous torque and step angle filled
     in: a given curve first, then one drawn from the datasheet values, then the library
-    motor's (raise UnknownMotor for an id ``motors`` lacks). A curve given is the one the
-    checks read, so it carries no drive voltage: no range of the model's applies to it,
-    whatever datasheet values come with it."""
-    if app.motor_curve:
-        app = replace(app, motor_supply_v=None)
+    motor's (raise UnknownMotor for an id ``motors`` lacks); a drive voltage only where
+    the model draws the curve (``model_drive_only``)."""
     curve = app.motor_curve or _datasheet_curve(app)
     if app.motor is None or app.motor == ANY_MOTOR:
         held = energised_holding(app, app.motor_holding_torque_nm)
-        return replace(held, motor_curve=curve)
+        return model_drive_only(app, replace(held, motor_curve=curve), motors)
     motor = motors.get(app.motor)
     if motor is None:
         raise UnknownMotor(unknown_motor_message(app.motor, motors))
-    return with_library_motor(replace(app, motor_curve=curve), motor)
+    driven = with_library_motor(replace(app, motor_curve=curve), motor)
+    return model_drive_only(app, driven, motors)
+
+
+def model_drive_only(
+    entered: Application, driven: Application, motors: Mapping[str, Motor]
+) -> Application:
+    """``driven`` (``entered`` with its motor) carrying a drive voltage only where the
+    model draws its curve (``curve_origin`` "model"): the motor-curve check reads the
+    model's confirmed range and supply range from it, and neither applies to a maker's
+    published curve or to a curve typed in, whatever datasheet values come with it."""
+    if curve_origin(entered, driven, motors) == "model":
+        return driven
+    return replace(driven, motor_supply_v=None)
 
 
 def energised_holding(app: Application, holding_nm: float | None) -> Application:
@@ -116,7 +126,7 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
     detent = app.detent_torque_nm
     if not app.motor_curve and motor.kind == "stepper":
         retyped = drive_retyped(app, motor)
-        app = with_model_values(app, motor, modelled=retyped or motor.published_curve() is None)
+        app = with_model_values(app, motor)
         if retyped:
             app = replace(app, motor_curve=_retyped_curve(app, motor))
     holding = app.motor_holding_torque_nm if motor.kind == "stepper" else None
@@ -165,18 +175,17 @@ def holding_at(motor: Motor, current_a: float) -> float:
     return motor.value("holding_torque_nm") * min(1.0, current_a / rated_a)
 
 
-def with_model_values(app: Application, motor: Motor, modelled: bool = True) -> Application:
+def with_model_values(app: Application, motor: Motor) -> Application:
     """``app`` with library stepper ``motor``'s drive voltage, phase current, winding and
     holding torque wherever the user typed none (``DRIVE_VALUES``; the holding torque
     at the phase current, ``holding_at``), those its curve is drawn from: what the
     motor-curve check reads the model's confirmed range from
     (``stepper.confirmed_range_rpm``); and its winding resistance, for the copper loss of
-    a cycle (``cycle_energy.cycle_energy``). A stepper whose curve is the maker's (not
-    ``modelled``) carries no drive voltage: no model range applies to it."""
+    a cycle (``cycle_energy.cycle_energy``)."""
     current = app.motor_phase_current_a or motor.value("phase_current_a")
     return replace(
         app,
-        motor_supply_v=(app.motor_supply_v or motor.value("supply_v")) if modelled else None,
+        motor_supply_v=app.motor_supply_v or motor.value("supply_v"),
         motor_phase_current_a=current,
         motor_resistance_ohm=app.motor_resistance_ohm or motor.value("resistance_ohm"),
         motor_inductance_h=app.motor_inductance_h or motor.value("inductance_mh"),
@@ -241,7 +250,8 @@ def pair_applications(
     for mid, motor in motors.items():
         drive = app.motor_supply_v if motor.kind == "stepper" else None
         try:
-            driven[mid] = with_library_motor(replace(alone, motor_supply_v=drive), motor)
+            on_drive = with_library_motor(replace(alone, motor_supply_v=drive), motor)
         except UndrivableMotor:
             continue
+        driven[mid] = model_drive_only(alone, on_drive, motors)
     return alone, driven
