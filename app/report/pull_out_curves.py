@@ -85,18 +85,12 @@ class Curve(NamedTuple):
 _LIBRARY = load_motors(resource_dir("catalog") / MOTOR_FILE)
 
 
-def library_points(motor_id: str) -> tuple[tuple[float, float], ...]:
-    """The published points (rpm, N m) of the built-in library's motor ``motor_id``, as
-    catalog/motors.toml keeps them with their provenance."""
-    points = _LIBRARY[motor_id].values[CURVE].value
-    return tuple((float(rpm), float(torque_nm)) for rpm, torque_nm in points)
-
-
 def library_curve(motor_id: str, part: str, source: str, drive: str, rms: bool = False) -> Curve:
-    """The published curve of the built-in library's motor ``motor_id`` with the datasheet
-    values the model needs, all as catalog/motors.toml keeps them with their provenance
-    (``rms``: the chart prints its current as an RMS value)."""
+    """The published curve of the built-in library's motor ``motor_id``, its points
+    (rpm, N m) and the datasheet values the model needs, all as catalog/motors.toml keeps
+    them with their provenance (``rms``: the chart prints its current as an RMS value)."""
     value = {name: held.value for name, held in _LIBRARY[motor_id].values.items()}
+    points = tuple((float(rpm), float(torque_nm)) for rpm, torque_nm in value[CURVE])
     return Curve(
         part,
         source,
@@ -108,7 +102,7 @@ def library_curve(motor_id: str, part: str, source: str, drive: str, rms: bool =
         value["inductance_mh"],  # held in H, as every library value is in SI
         value["step_angle_deg"],
         value["holding_torque_nm"],
-        library_points(motor_id),
+        points,
     )
 
 

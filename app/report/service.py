@@ -18,7 +18,7 @@ from app.contract.units import DEFAULT_UNITS
 from app.core.evaluate import evaluate
 from app.core.record import Candidate
 from app.core.robustness import build_variants
-from app.core.selection import select, with_robustness
+from app.core.selection import Selection, select, with_robustness
 from app.report.formulas import FORMULAS
 from app.report.present import (
     candidate_view,
@@ -61,9 +61,15 @@ def run_selection(
     """Select and rank over the catalog: the API's select response, its sentences in
     ``units`` (the API's own by default), its candidates in ``VIEWS[view]`` (every field
     by default; "csv": the CSV export's)."""
-    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
-    selection = select(app, catalog.index, INPUT_RANGES, INPUT_WORDS)
+    selection, origin = _select(inputs, catalog)
     return construct_select_out(inputs, catalog, selection_out(selection, units, view), origin)
+
+
+def _select(inputs: ApplicationIn, catalog: Catalog) -> tuple[Selection, CurveOrigin | None]:
+    """The selection over the catalog for ``inputs``, and where its motor curve comes
+    from (``ApplicationIn.to_core_traced``)."""
+    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
+    return select(app, catalog.index, INPUT_RANGES, INPUT_WORDS), origin
 
 
 def construct_select_out(
@@ -154,8 +160,7 @@ def _page_query(inputs: ApplicationIn, catalog: Catalog, units: Mapping[str, str
 @lru_cache(maxsize=RECENT_PAGE_SELECTIONS)
 def _page_selection(query: _PageQuery) -> _PageSelection:
     inputs, catalog, units = query.inputs, query.catalog, query.units
-    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
-    selection = select(app, catalog.index, INPUT_RANGES, INPUT_WORDS)
+    selection, origin = _select(inputs, catalog)
     rejected = selection.rejected if not selection.passed else ()
     share = share_query(inputs)
     out = PageSelectionOut.model_construct(
@@ -174,8 +179,7 @@ def _page_selection(query: _PageQuery) -> _PageSelection:
 def run_selection_summary(inputs: ApplicationIn, catalog: Catalog) -> dict[str, Any]:
     """Select and rank over the catalog: the API's compact select response
     (``SelectSummaryOut``'s fields, as plain JSON values and output models)."""
-    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
-    selection = select(app, catalog.index, INPUT_RANGES, INPUT_WORDS)
+    selection, origin = _select(inputs, catalog)
     share = share_query(inputs)
     return {
         "detail": "summary",
