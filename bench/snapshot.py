@@ -22,7 +22,7 @@ from starlette.datastructures import QueryParams
 from app.api.query import parse_query
 from app.catalog import load_catalog
 from app.contract.outputs import SelectQuery
-from app.core.quantities import NAMES
+from app.core.quantities import NAMES, quantity
 from app.core.screening import screen_table
 from app.main import create_app
 
@@ -96,8 +96,8 @@ def core_arrays() -> dict[str, bytes]:
         app = query.to_core(catalog.motors, catalog.supports)
         s = screen_table(app, catalog.index.table)
         digest = hashlib.sha256()
-        for field in NAMES:
-            digest.update(_bytes(getattr(s.quantities, field)))
+        for field in sorted(NAMES):  # by name: the parts may reorder
+            digest.update(_bytes(quantity(s.quantities, field)))
         for check, use in sorted(s.utilization.items()):
             digest.update(check.encode() + (b"" if use is None else _bytes(use)))
         for check, mask in sorted(s.failed.items()):

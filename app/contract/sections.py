@@ -79,13 +79,13 @@ class TorqueOut(BaseModel):
     safety_factor: Annotated[float, From("safety_factor")]
     required_nm: Annotated[float, From("required_nm", "torque")]
     note: str = TORQUE_NOTE
-    peak_nm: Annotated[float | None, From("/quantities.motor_peak_nm", "torque")] = Field(
+    peak_nm: Annotated[float | None, From("/quantities.motor.motor_peak_nm", "torque")] = Field(
         default=None, description="Largest motor torque of the move's segments; null: no stroke."
     )
-    rms_nm: Annotated[float | None, From("/quantities.motor_rms_nm", "torque")] = Field(
+    rms_nm: Annotated[float | None, From("/quantities.motor.motor_rms_nm", "torque")] = Field(
         default=None, description="RMS motor torque over the cycle; null: no stroke."
     )
-    peak_motor_nm: Annotated[float, From("/quantities.peak_torque_nm", "torque")] = Field(
+    peak_motor_nm: Annotated[float, From("/quantities.torque.peak_torque_nm", "torque")] = Field(
         description="The largest motor torque of any moving segment of either move or of "
         "starting from rest, rotor included, before the torque safety factor: what the "
         "drive must give at its peak (the results table's torque when a move is given).",

@@ -17,7 +17,7 @@ from app.core.checks import BY_NAME, ball_life
 from app.core.checks.base import Check
 from app.core.model import Application, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
-from app.core.quantities import Quantities
+from app.core.quantities import PART_OF, PARTS, Quantities, quantity
 from app.core.screening import Screening
 from app.core.table import Array
 
@@ -49,7 +49,7 @@ class Batch:
         column of the table; taken once, when first read."""
         if name not in self._columns:
             sc = self.screening
-            source = getattr(sc.quantities, name, None)
+            source = quantity(sc.quantities, name) if name in PART_OF else None
             if source is None:
                 source = getattr(sc, name) if name in VERDICTS else getattr(sc.table, name)
             self._columns[name] = source[self.at].tolist()
@@ -175,15 +175,21 @@ def _utilizations(values: Array | None, index: Positions) -> list[float | None]:
 
 
 class Numbers:
-    """One candidate's quantities (``Quantities``' names, SI), each read when first asked
-    for: ``record.quantities.total_nm``."""
+    """One candidate's quantities (as ``Quantities``, SI), each read when first asked
+    for: ``record.quantities.torque.total_nm`` (``part``: the part it reads)."""
 
-    __slots__ = ("_batch", "_k")
+    __slots__ = ("_batch", "_k", "_part")
 
-    def __init__(self, batch: Batch, k: int) -> None:
-        self._batch, self._k = batch, k
+    def __init__(self, batch: Batch, k: int, part: str | None = None) -> None:
+        self._batch, self._k, self._part = batch, k, part
 
-    def __getattr__(self, name: str) -> float:
+    def __getattr__(self, name: str) -> Any:
+        if self._part is None:
+            if name not in PARTS:
+                raise AttributeError(name)
+            return Numbers(self._batch, self._k, name)
+        if PART_OF.get(name) != self._part:
+            raise AttributeError(f"{self._part}.{name}")
         return float(self._batch.column(name)[self._k])
 
 

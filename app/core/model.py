@@ -351,7 +351,7 @@ class Segment(Generic[V]):
     also carry the motor's usable torque at the segment's speed [N m] (its curve over the
     stepper margin, ``segments.curve_torque``; None without a curve) and whether the segment
     governs the motor: the one nearest its curve, or the largest torque without a curve
-    (``Quantities.motor_worst_segment``)."""
+    (``Quantities.motor.motor_worst_segment``)."""
 
     name: SegmentName
     direction: Direction

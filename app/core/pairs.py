@@ -76,7 +76,7 @@ def _motor_pairs(
         np.full(len(ok), motor),
         motor_use(s)[ok],
         s.total_torque_nm[ok],
-        s.quantities.peak_rpm[ok],
+        s.quantities.motor.peak_rpm[ok],
     )
 
 

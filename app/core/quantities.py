@@ -2,16 +2,25 @@
 
 ``operating_point(app, table)`` computes, over the table's columns, the speeds, loads,
 torques, limits and margins that the checks and the reports read. The same arithmetic
-serves one screw (a table of one) or the whole catalog; ``row(i)`` gives one
+serves one screw (a table of one) or the whole catalog; ``at(i)`` gives one
 candidate's numbers as plain floats.
+
+The numbers come in parts, each by what it describes and computed by its own module:
+the axis's thrusts (``q.axis``), the torque breakdown (``q.torque``), the screw as a
+shaft and a column (``q.column``), the nut under load (``q.nut``), its life
+(``q.life``), its heat (``q.heat``), the travel's accuracy (``q.accuracy``), holding
+with the power off (``q.holding``), the move against the motor (``q.motor``), the
+thrust bearing (``q.support``) and the cycle's energy (``q.energy``). Each number's
+name is unique across the parts, so a name alone finds it (``quantity``, ``PART_OF``).
 """
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, fields
-from typing import Any, Generic, TypeVar, cast
+from itertools import repeat
+from operator import attrgetter, getitem, itemgetter
+from typing import Any, Generic, TypeVar, cast, get_origin
 
 import numpy as np
-from numpy.typing import NDArray
 
 from app.core import column, drive, duty, holding, motion, nut, segments
 from app.core.formulas import (
@@ -78,38 +87,75 @@ def compressive_axial_load(app: Application, forces: Sequence[float] = ()) -> fl
     return max(0.0, *(c * f for f in forces or motion.nut_forces(app)))
 
 
-# Not frozen: a frozen dataclass sets each of its hundred fields through
-# object.__setattr__, which cost tens of microseconds per select (built twice: the
-# operating point and the head of a joint screening). Nothing assigns to one.
+# Not frozen: a frozen dataclass sets each of its fields through object.__setattr__,
+# which cost tens of microseconds per select (built twice: the operating point and the
+# head of a joint screening). Nothing assigns to one.
 @dataclass(slots=True)
-class Quantities(Generic[V]):
-    """One axis's numbers, SI; ``V`` is an array (one element per candidate) or a float."""
+class AxisLoad(Generic[V]):
+    """The axis on each screw: the thrusts on the nut [N] and the screw's speed [rpm]."""
 
+    #: the running thrust (``axial_load``) and the peak thrust (``peak_axial_load``)
     force_n: V
     peak_force_n: V
+    #: The largest thrust that compresses the screw (0: only ever pulled) [N]
+    compressive_force_n: V
+    #: the load held at rest (``motion.steady_load``: weight and loads of fixed direction;
+    #: friction holds nothing) [N]
+    holding_force_n: V
+    #: the screw speed at the top speed
     rpm: V
+
+
+@dataclass(slots=True)
+class Torques(Generic[V]):
+    """The drive torque and its parts [N m] (``drive.torques``)."""
+
     angular_accel_rad_s2: V
     inertia_kg_m2: V
     inertia_screw_nm: V
     inertia_mass_nm: V
+    #: the rotor's inertia torque J_motor alpha (inside ``inertia_nm`` and ``total_nm``)
+    inertia_motor_nm: V
     inertia_nm: V
     drag_nm: V
     load_nm: V
     total_nm: V
     breakaway_nm: V
+    #: the largest motor torque of any moving segment of either move, rotor included,
+    #: without the safety factor (what the drive must give at its peak), and where it
+    #: occurs: the index of its segment in ``segments.moving_torques`` (-1: starting from
+    #: rest, the break-away)
+    peak_torque_nm: V
+    peak_torque_segment: V
     required_nm: V
+
+
+@dataclass(slots=True)
+class ColumnLimits(Generic[V]):
+    """The screw as a shaft and a column (``column.column_limits``)."""
+
     critical_rpm: V
     allowed_rpm: V
     critical_load_n: V
     allowed_load_n: V
     slenderness: V
     transition_slenderness: V
+    #: The column that buckles: the span from the thrust bearing to the nut when given,
+    #: else the screw's length [m]
+    column_length_m: V
     #: The root section under the peak thrust and the torque it carries with it
     #: (``column.root_torque``): the von Mises stress of the two, and each alone [Pa]
     root_stress_pa: V
     root_torque_nm: V
     root_axial_stress_pa: V
     root_shear_stress_pa: V
+
+
+@dataclass(slots=True)
+class NutLoad(Generic[V]):
+    """The nut under load: the seed's PV, the engaged flanks and the ratings they give
+    (``nut.pv_limit``, ``nut.seed_pv``, ``nut.flanks``)."""
+
     pv_pa_m_s: V
     pressure_pa: V
     surface_speed_m_s: V
@@ -135,6 +181,15 @@ class Quantities(Generic[V]):
     #: the catalog gives one, else a polymer nut's dynamic flank pressure over the engaged
     #: flank area (NaN: neither).
     rated_load_n: V
+    #: the nut length whose engaged turns carry the load: the user's, else the catalog's
+    #: (NaN without a thread pitch) [m]
+    nut_length_m: V
+
+
+@dataclass(slots=True)
+class Life(Generic[V]):
+    """How long the nut lasts (``nut.wear_life``, ``duty.duty``)."""
+
     #: The seed's rated travel, low end, at most the nut's wear travel at the cycle's wear
     #: thrust where its material has a wear rate (NaN: no rating) [m]; the rated band in
     #: years of the duty, each end so capped (NaN: no rating or no duty).
@@ -148,26 +203,59 @@ class Quantities(Generic[V]):
     wear_force_n: V
     wear_travel_m: V
     wear_life_years: V
-    #: Heat: the cycle's mean speed [m/s] (the top speed without a stroke), the thread's
-    #: friction power at it [W], and the nut's steady rise over the ambient [K] (NaN: no
-    #: heat balance)
+
+
+@dataclass(slots=True)
+class Heat(Generic[V]):
+    """The nut's heat balance (``duty.heat_balance``): the cycle's mean speed [m/s] (the
+    top speed without a stroke), the thread's friction power at it [W], and the nut's
+    steady rise over the ambient [K] (NaN: no heat balance)."""
+
     heat_speed_m_s: V
     friction_power_w: V
     nut_temperature_rise_k: V
+
+
+@dataclass(slots=True)
+class Accuracy(Generic[V]):
+    """The travel's positioning error [m] (``duty.duty``): the lead error accumulated
+    over the stroke and the screw's thermal growth."""
+
     lead_error_m: V
     thermal_growth_m: V
+
+
+@dataclass(slots=True)
+class Holding(Generic[V]):
+    """Holding the load with the power off (``holding.holding``)."""
+
     holding_seed_nm: V
     holding_physics_nm: V
+    #: the physical holding torque at the distrusted static friction f mu_s, the friction
+    #: the self-locking margin trusts (what the brake is sized on, beside the seed's)
+    holding_distrusted_nm: V
     brake_nm: V
     #: the brake torque to fit: ``brake_nm`` times the brake safety factor (``brake_factor``)
     brake_needed_nm: V
     locks_with_margin: V
     max_self_locking_lead_with_margin_m: V
-    #: The move: the peak rpm (the top speed's without a stroke); the largest torque in
-    #: magnitude and the RMS torque over the cycle (NaN without a stroke); the segment
-    #: that uses the most of the motor curve (index in ``segments.segments``, -1 without a
-    #: stroke), its torque magnitude and rpm, the curve's torque there (NaN: no curve).
-    #: The ``_needed`` torques are the motor's to give: times the torque safety factor.
+    #: Where it is required and a load is held (NaN otherwise): the thread's margin, the
+    #: longest lead that self-locks at f mu_s over the lead; and the hold's, the larger of
+    #: it and the unpowered torque (a brake's or the detent) over the torque needed
+    #: (``brake_needed_nm`` as if it did not lock). Each holds at 1 or more.
+    hold_thread_margin: V
+    hold_margin: V
+
+
+@dataclass(slots=True)
+class MotorPoint(Generic[V]):
+    """The move against the motor (``drive.motor_point``, ``drive.controller``)."""
+
+    #: The peak rpm (the top speed's without a stroke); the largest torque in magnitude
+    #: and the RMS torque over the cycle (NaN without a stroke); the segment that uses the
+    #: most of the motor curve (index in ``segments.segments``, -1 without a stroke), its
+    #: torque magnitude and rpm, the curve's torque there (NaN: no curve). The ``_needed``
+    #: torques are the motor's to give: times the torque safety factor.
     peak_rpm: V
     motor_peak_nm: V
     motor_rms_nm: V
@@ -184,43 +272,26 @@ class Quantities(Generic[V]):
     #: of one pulse [m] (NaN without a step angle).
     step_rate_hz: V
     step_resolution_m: V
-    #: The largest thrust that compresses the screw (0: only ever pulled) [N]; the rotor's
-    #: inertia torque J_motor alpha (inside ``inertia_nm`` and ``total_nm``); the largest
-    #: motor torque of any moving segment of either move, rotor included, without the
-    #: safety factor (what the drive must give at its peak).
-    compressive_force_n: V
-    inertia_motor_nm: V
-    peak_torque_nm: V
-    #: where the peak torque occurs: the index of its segment in
-    #: ``segments.moving_torques`` (-1: starting from rest, the break-away)
-    peak_torque_segment: V
-    #: the load held at rest (``motion.steady_load``: weight and loads of fixed direction;
-    #: friction holds nothing) [N]
-    holding_force_n: V
-    #: the physical holding torque at the distrusted static friction f mu_s, the friction
-    #: the self-locking margin trusts (what the brake is sized on, beside the seed's)
-    holding_distrusted_nm: V
-    #: Holding with the power off, where it is required and a load is held (NaN
-    #: otherwise): the thread's margin, the longest lead that self-locks at f mu_s over
-    #: the lead; and the hold's, the larger of it and the unpowered torque (a brake's or
-    #: the detent) over the torque needed (``brake_needed_nm`` as if it did not lock).
-    #: Each holds at 1 or more.
-    hold_thread_margin: V
-    hold_margin: V
-    #: the nut length whose engaged turns carry the load: the user's, else the catalog's
-    #: (NaN without a thread pitch) [m]
-    nut_length_m: V
-    #: The column that buckles: the span from the thrust bearing to the nut when given,
-    #: else the screw's length [m]; the thrust bearing's allowed static thrust C0a / fs, the
-    #: cycle's cube-mean thrust on it and its L10 life in years of the duty (NaN: not given)
-    column_length_m: V
+
+
+@dataclass(slots=True)
+class SupportBearing(Generic[V]):
+    """The thrust bearing (``duty.support_bearing``): its allowed static thrust C0a / fs,
+    the cycle's cube-mean thrust on it [N] and its L10 life in years of the duty (NaN:
+    not given)."""
+
     support_allowed_n: V
     support_mean_load_n: V
     support_life_years: V
-    #: The energy of one cycle [J] (``cycle_energy.cycle_energy``; NaN without a move): the
-    #: motor's work at its shaft where it drives, the energy braking gives back, the work
-    #: done on the load, the thread's friction and the nut's drag losses, and a stepper's
-    #: copper loss (NaN without its phase current and resistance).
+
+
+@dataclass(slots=True)
+class CycleEnergy(Generic[V]):
+    """The energy of one cycle [J] (``cycle_energy.cycle_energy``; NaN without a move): the
+    motor's work at its shaft where it drives, the energy braking gives back, the work
+    done on the load, the thread's friction and the nut's drag losses, and a stepper's
+    copper loss (NaN without its phase current and resistance)."""
+
     cycle_motor_work_j: V
     cycle_regen_j: V
     cycle_load_work_j: V
@@ -228,32 +299,83 @@ class Quantities(Generic[V]):
     cycle_drag_loss_j: V
     cycle_copper_loss_j: V
 
+
+@dataclass(slots=True)
+class Quantities(Generic[V]):
+    """One axis's numbers, SI, by what they describe; ``V`` is an array (one element per
+    candidate) or a float. Each number's name is unique across the parts (``NAMES``,
+    ``quantity``)."""
+
+    axis: AxisLoad[V]
+    torque: Torques[V]
+    column: ColumnLimits[V]
+    nut: NutLoad[V]
+    life: Life[V]
+    heat: Heat[V]
+    accuracy: Accuracy[V]
+    holding: Holding[V]
+    motor: MotorPoint[V]
+    support: SupportBearing[V]
+    energy: CycleEnergy[V]
+
     def at(self, i: int) -> "Quantities[float]":
         """The numbers of the candidate at ``i``, each read as a float when it is read:
         what a check's sentence or fix reads (a handful of its hundred numbers)."""
         return cast("Quantities[float]", _At(self, i))
 
-    def rows(self, index: Sequence[int] | NDArray[np.intp]) -> "list[Quantities[float]]":
-        """The numbers of the candidates at ``index`` as floats (NaN: no such limit)."""
-        at = np.asarray(index, dtype=np.intp)
-        columns = [getattr(self, name)[at].tolist() for name in NAMES]
-        return [Quantities(*values) for values in zip(*columns, strict=True)]
+    def sliced(self, rows: slice) -> "Quantities[V]":
+        """Rows ``rows`` of every number (views of the arrays), each in its part."""
+        return Quantities(
+            *[
+                part(*map(getitem, numbers(getattr(self, name)), repeat(rows)))
+                for name, part, numbers, _ in _PARTS
+            ]
+        )
 
 
 class _At:
-    """One candidate's numbers read from the arrays of ``Quantities`` one at a time."""
+    """One candidate's numbers (or those of one part) read from the arrays of
+    ``Quantities`` one at a time."""
 
     __slots__ = ("_i", "_q")
 
-    def __init__(self, q: Quantities[Array], i: int) -> None:
+    def __init__(self, q: Any, i: int) -> None:
         self._q, self._i = q, i
 
-    def __getattr__(self, name: str) -> float:
-        return float(getattr(self._q, name)[self._i])
+    def __getattr__(self, name: str) -> Any:
+        value = getattr(self._q, name)
+        return _At(value, self._i) if name in PARTS else float(value[self._i])
 
 
-#: The fields of ``Quantities``, in declaration order.
-NAMES = tuple(f.name for f in fields(Quantities))
+#: Each part of ``Quantities`` by its name there: its class and the names of its numbers.
+PARTS: dict[str, tuple[type[Any], tuple[str, ...]]] = {
+    f.name: (cls, tuple(g.name for g in fields(cls)))
+    for f in fields(Quantities)
+    for cls in [cast(type[Any], get_origin(f.type))]
+}
+#: Each part as (its name, its class, the getter of its numbers from the part as one
+#: tuple, the getter of them from a mapping by name), for ``sliced`` and ``from_names``.
+_PARTS = [
+    (name, cls, attrgetter(*names), itemgetter(*names)) for name, (cls, names) in PARTS.items()
+]
+#: Every number's name, part by part in declaration order, and the part that holds it.
+PART_OF = {name: part for part, (_, names) in PARTS.items() for name in names}
+NAMES = tuple(PART_OF)
+
+
+def quantity(q: Quantities[V], name: str) -> V:
+    """The number ``name`` of ``q``, from the part that holds it (``PART_OF``).
+
+    >>> PART_OF["total_nm"], PART_OF["critical_rpm"]
+    ('torque', 'column')
+    """
+    value: V = getattr(getattr(q, PART_OF[name]), name)
+    return value
+
+
+def from_names(values: Mapping[str, V]) -> Quantities[V]:
+    """The ``Quantities`` holding ``values`` (every number, by its name)."""
+    return Quantities(*[cls(*take(values)) for _, cls, _, take in _PARTS])
 
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
@@ -264,7 +386,7 @@ def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
     rpm = geometry.screw_speed_rpm(c.reached_m_s, t.lead_m)
     # no (or vanishing) thrust: an unbounded PV speed, NaN after ``table.finite``
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        return Quantities(**_values(app, t, rpm, c))
+        return from_names(_values(app, t, rpm, c))
 
 
 def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) -> dict[str, Any]:

@@ -15,6 +15,7 @@ import math
 from collections.abc import Sequence
 from functools import cached_property
 from operator import attrgetter
+from typing import cast
 
 from app.core.batch import Batch, CheckResult, Numbers
 from app.core.checks import BY_NAME, REGISTRY
@@ -37,6 +38,7 @@ from app.core.model import (
     holds,
 )
 from app.core.phrase import Phrase
+from app.core.quantities import Quantities
 from app.core.robustness import Robustness
 from app.core.screening import Screening
 from app.core.sections import Column, CriticalSpeed, Life, Torque, number
@@ -124,9 +126,9 @@ class Candidate:
         return self.batch.slots[self.k].screw
 
     @cached_property
-    def quantities(self) -> Numbers:
-        """Every quantity (``Quantities``' names, SI), each read when first asked for."""
-        return Numbers(self.batch, self.k)
+    def quantities(self) -> Quantities[float]:
+        """Every quantity (as ``Quantities``, SI), each read when first asked for."""
+        return cast("Quantities[float]", Numbers(self.batch, self.k))
 
     def with_robustness(self, judged: Robustness) -> "Candidate":
         """The same candidate with its robustness known."""
@@ -218,13 +220,13 @@ class Candidate:
 
     @property
     def self_locking_with_margin(self) -> bool:
-        return bool(self.quantities.locks_with_margin)
+        return bool(self.quantities.holding.locks_with_margin)
 
     @property
     def hold_margin(self) -> float | None:
         """The power-off hold's margin (``efficiency.hold_margin``); None where holding
         with the power off is not required or no load is held."""
-        return number(self.quantities.hold_margin)
+        return number(self.quantities.holding.hold_margin)
 
     @property
     def holds_power_off(self) -> bool | None:
@@ -240,7 +242,7 @@ class Candidate:
         margin = self.hold_margin
         if margin is None:
             return None
-        thread = number(self.quantities.hold_thread_margin)
+        thread = number(self.quantities.holding.hold_thread_margin)
         if thread is not None and holds(thread):
             return "thread"
         return "brake" if self.app.holding_source == "brake" else "detent"
@@ -271,17 +273,17 @@ class Candidate:
     @cached_property
     def buckling(self) -> Buckling:
         q = self.quantities
-        transition = number(q.transition_slenderness)
-        short = transition is not None and q.slenderness < transition
+        transition = number(q.column.transition_slenderness)
+        short = transition is not None and q.column.slenderness < transition
         return Buckling(
-            applies=q.compressive_force_n > 0.0,
-            critical_load_n=q.critical_load_n,
-            allowed_load_n=q.allowed_load_n,
+            applies=q.axis.compressive_force_n > 0.0,
+            critical_load_n=q.column.critical_load_n,
+            allowed_load_n=q.column.allowed_load_n,
             safety_factor=self.app.buckling_safety_factor,
-            slenderness=q.slenderness,
+            slenderness=q.column.slenderness,
             transition_slenderness=transition,
             mode="johnson" if short else "euler",
-            root_stress_pa=q.root_stress_pa,
+            root_stress_pa=q.column.root_stress_pa,
             yield_strength_pa=self.screw.yield_strength_pa,
         )
 
@@ -291,13 +293,13 @@ class Candidate:
         temperature and raised by its lubrication (``formulas.pv_derating``)."""
         q, limit = self.quantities, self.screw.pv_limit_pa_m_s
         return PV(
-            value_pa_m_s=q.pv_pa_m_s,
-            limit_pa_m_s=None if limit is None else q.pv_limit_pa_m_s,
-            pressure_pa=q.pressure_pa,
-            surface_speed_m_s=q.surface_speed_m_s,
-            contact_area_m2=q.contact_area_m2,
-            max_load_n=None if limit is None else q.pv_max_load_n,
-            max_speed_m_s=None if limit is None else q.pv_max_speed_m_s,
+            value_pa_m_s=q.nut.pv_pa_m_s,
+            limit_pa_m_s=None if limit is None else q.nut.pv_limit_pa_m_s,
+            pressure_pa=q.nut.pressure_pa,
+            surface_speed_m_s=q.nut.surface_speed_m_s,
+            contact_area_m2=q.nut.contact_area_m2,
+            max_load_n=None if limit is None else q.nut.pv_max_load_n,
+            max_speed_m_s=None if limit is None else q.nut.pv_max_speed_m_s,
         )
 
     @cached_property
@@ -314,11 +316,11 @@ class Candidate:
     def accuracy(self) -> Accuracy:
         s, q = self.screw, self.quantities
         return Accuracy(
-            lead_error_m=number(q.lead_error_m),
+            lead_error_m=number(q.accuracy.lead_error_m),
             repeatability_m=s.repeatability_m,
             backlash_min_m=s.backlash_min_m,
             backlash_max_m=s.backlash_max_m,
-            thermal_growth_m=q.thermal_growth_m,
+            thermal_growth_m=q.accuracy.thermal_growth_m,
         )
 
     @property

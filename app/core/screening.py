@@ -7,8 +7,6 @@ screw is screened as a table of one. So a check is computed by one piece of code
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from itertools import repeat
-from operator import attrgetter, getitem
 from typing import Any
 
 import numpy as np
@@ -17,11 +15,8 @@ from numpy.typing import NDArray
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
-from app.core.quantities import NAMES, Quantities, operating_point
+from app.core.quantities import Quantities, operating_point
 from app.core.table import Array, CandidateTable, Mask, filled
-
-#: Every array of a ``Quantities``, in declaration order, as one tuple.
-_ALL_QUANTITIES = attrgetter(*NAMES)
 
 
 # Not frozen, as ``Quantities``: a frozen dataclass sets each of its fields through
@@ -50,7 +45,7 @@ class Screening:
 
     @property
     def total_torque_nm(self) -> Array:
-        return self.quantities.total_nm
+        return self.quantities.torque.total_nm
 
     def head(self, n: int, index: NDArray[np.intp], table: CandidateTable) -> "Screening":
         """The screening of the first ``n`` rows alone (views), as rows ``index`` of
@@ -59,7 +54,7 @@ class Screening:
         return Screening(
             index,
             table,
-            Quantities(*map(getitem, _ALL_QUANTITIES(self.quantities), repeat(cut))),
+            self.quantities.sliced(cut),
             {name: m.head(n) for name, m in self.measures.items()},
             {name: None if u is None else u[cut] for name, u in self.utilization.items()},
             {name: mask[cut] for name, mask in self.failed.items()},

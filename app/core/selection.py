@@ -56,13 +56,13 @@ def shown_torque(s: Screening) -> np.ndarray:
     peak motor torque of either move or of starting from rest, rotor included; otherwise
     the drive torque at the top speed while accelerating."""
     q = s.quantities
-    return np.where(np.isnan(q.motor_rms_nm), q.total_nm, q.peak_torque_nm)
+    return np.where(np.isnan(q.motor.motor_rms_nm), q.torque.total_nm, q.torque.peak_torque_nm)
 
 
 def shown_rms(s: Screening) -> np.ndarray:
     """The RMS motor torque over the cycle; the shown torque where there is no move."""
     q = s.quantities
-    return np.where(np.isnan(q.motor_rms_nm), shown_torque(s), q.motor_rms_nm)
+    return np.where(np.isnan(q.motor.motor_rms_nm), shown_torque(s), q.motor.motor_rms_nm)
 
 
 def shown_life_min(s: Screening, pos: np.ndarray) -> np.ndarray:
@@ -72,7 +72,7 @@ def shown_life_min(s: Screening, pos: np.ndarray) -> np.ndarray:
     given."""
     t = s.table
     share = np.array([life_band(t.screws[i])[0] for i in pos], dtype=np.float64)
-    wear = s.quantities.wear_travel_m[pos] * share
+    wear = s.quantities.life.wear_travel_m[pos] * share
     return np.asarray(np.fmin(t.life_min_m[pos], wear), dtype=np.float64)
 
 
@@ -102,7 +102,7 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
         "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
-    thread = s.quantities.hold_thread_margin[pos]
+    thread = s.quantities.holding.hold_thread_margin[pos]
     rests_on_a_device = (np.isfinite(thread) & ~holds(thread)).astype(np.float64)
     keys = (secondary, primary, rests_on_a_device, s.warned[pos].astype(np.float64))
     return pos[np.lexsort(keys)]

@@ -46,8 +46,8 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
     return [
         LeadPoint(
             lead_m=float(sc.table.lead_m[k]),
-            total_nm=float(q.total_nm[k]),
-            speed_share=float(q.rpm[k] / q.allowed_rpm[k]),
+            total_nm=float(q.torque.total_nm[k]),
+            speed_share=float(q.axis.rpm[k] / q.column.allowed_rpm[k]),
             pv_share=None
             if pv_use is None or pv_applies is None or not pv_applies[k]
             else float(pv_use[k]),
@@ -77,7 +77,11 @@ def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> li
     q = operating_point(app, index.table.take(rows))
     points = []
     for k, position in enumerate(rows.tolist()):
-        travel, years, force = q.wear_travel_m[k], q.wear_life_years[k], q.wear_force_n[k]
+        travel, years, force = (
+            q.life.wear_travel_m[k],
+            q.life.wear_life_years[k],
+            q.life.wear_force_n[k],
+        )
         if np.isfinite(travel) and force > 0.0:
             life = float(years) if np.isfinite(years) else None
             screw = index.table.screws[position]
@@ -103,12 +107,12 @@ class PressureLimit:
 def _operating(q: Quantities[Array], k: int) -> tuple[str, float, float] | None:
     """The check judging candidate ``k``'s nut pressure with its sliding speed [m/s] and
     pressure [Pa] as that check takes them; None without such a limit or speed."""
-    flank_speed, pv_speed = float(q.sliding_speed_m_s[k]), float(q.surface_speed_m_s[k])
-    area = float(q.flank_area_m2[k])
-    if np.isfinite(q.nut_allowed_pressure_pa[k]) and flank_speed > 0.0 and area > 0.0:
-        return "bearing_pressure", flank_speed, float(q.peak_force_n[k]) / area
-    if np.isfinite(q.pv_limit_pa_m_s[k]) and q.pv_limit_pa_m_s[k] > 0.0 and pv_speed > 0.0:
-        return "pv", pv_speed, float(q.pressure_pa[k])
+    flank_speed, pv_speed = float(q.nut.sliding_speed_m_s[k]), float(q.nut.surface_speed_m_s[k])
+    area = float(q.nut.flank_area_m2[k])
+    if np.isfinite(q.nut.nut_allowed_pressure_pa[k]) and flank_speed > 0.0 and area > 0.0:
+        return "bearing_pressure", flank_speed, float(q.axis.peak_force_n[k]) / area
+    if np.isfinite(q.nut.pv_limit_pa_m_s[k]) and q.nut.pv_limit_pa_m_s[k] > 0.0 and pv_speed > 0.0:
+        return "pv", pv_speed, float(q.nut.pressure_pa[k])
     return None
 
 
@@ -135,10 +139,10 @@ def pressure_limits(
         position = int(rows[k])
         if check == "bearing_pressure":
             same = index.table.take(np.full(points, position, dtype=np.intp))
-            limit = np.full(points, q.nut_pv_limit_pa_m_s[k])
+            limit = np.full(points, q.nut.nut_pv_limit_pa_m_s[k])
             allowed = nut_allowed_pressures(same, limit, speeds)
         else:
-            pv_limit = float(q.pv_limit_pa_m_s[k])
+            pv_limit = float(q.nut.pv_limit_pa_m_s[k])
             allowed = np.array([bearing.pv_pressure(pv_limit, float(v)) for v in speeds])
         screw = index.table.screws[position]
         out.append(

@@ -23,7 +23,7 @@ def energy_of(r: AxisResult) -> dict[str, float | None] | None:
     a chosen screw."""
     if r.chosen is None:
         return None
-    values = {key: float(getattr(r.chosen.quantities, key)) for key in ENERGY_KEYS}
+    values = {key: float(getattr(r.chosen.quantities.energy, key)) for key in ENERGY_KEYS}
     return {key: v if math.isfinite(v) else None for key, v in values.items()}
 
 

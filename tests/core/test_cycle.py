@@ -2,7 +2,7 @@
 cycle's torques, wear thrust and energy against arithmetic done by hand."""
 
 import math
-from dataclasses import fields, replace
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -10,7 +10,7 @@ import pytest
 from app.core import motion
 from app.core.evaluate import evaluate
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, Move, ScrewSpec
-from app.core.quantities import Quantities, operating_point
+from app.core.quantities import NAMES, Quantities, operating_point, quantity
 from app.core.table import CandidateTable
 from tests.core.conftest import light_app
 
@@ -22,9 +22,9 @@ SCALAR_ONLY = {"motor_fitting_accel_m_s2", "friction_power_w", "nut_temperature_
 
 
 def _same_numbers(a: Quantities[np.ndarray], b: Quantities[np.ndarray]) -> None:
-    for f in fields(Quantities):
-        if f.name not in SCALAR_ONLY:
-            assert np.array_equal(getattr(a, f.name), getattr(b, f.name), equal_nan=True), f.name
+    for name in NAMES:
+        if name not in SCALAR_ONLY:
+            assert np.array_equal(quantity(a, name), quantity(b, name), equal_nan=True), name
 
 
 @pytest.mark.parametrize(
@@ -98,8 +98,8 @@ def test_pick_and_place_wear_thrust_and_life_by_hand(b8000_l10: ScrewSpec) -> No
     app = _pick_and_place(cycles_per_day=10_000.0)
     q = evaluate(app, b8000_l10).quantities
     ramps = (16.25 + 3.75 + 11.25 + 8.75) * 0.0125
-    assert q.wear_force_n == pytest.approx((ramps + 2 * 10.0 * 0.275) / 0.6)
-    assert q.wear_life_years == pytest.approx(q.wear_travel_m / (0.6 * 10_000.0 * 365.0))
+    assert q.life.wear_force_n == pytest.approx((ramps + 2 * 10.0 * 0.275) / 0.6)
+    assert q.life.wear_life_years == pytest.approx(q.life.wear_travel_m / (0.6 * 10_000.0 * 365.0))
 
 
 def test_a_heavier_return_wears_more_than_the_empty_one(b8000_l10: ScrewSpec) -> None:
@@ -115,7 +115,7 @@ def test_a_heavier_return_wears_more_than_the_empty_one(b8000_l10: ScrewSpec) ->
     full = evaluate(full_app, b8000_l10)
     assert full.motion is not None and empty.motion is not None
     assert full.motion.rms_nm > empty.motion.rms_nm
-    assert full.quantities.wear_life_years < empty.quantities.wear_life_years
+    assert full.quantities.life.wear_life_years < empty.quantities.life.wear_life_years
 
 
 def test_energy_balance_and_hand_values(b8000_l10: ScrewSpec) -> None:
@@ -124,10 +124,10 @@ def test_energy_balance_and_hand_values(b8000_l10: ScrewSpec) -> None:
     moves = tuple(replace(m, moving_mass_kg=0.0) for m in _pick_and_place().moves)
     q = evaluate(_pick_and_place(moves=moves), b8000_l10).quantities
     eta = evaluate(_pick_and_place(moves=moves), b8000_l10).efficiency
-    assert q.cycle_load_work_j == pytest.approx(6.0)
-    assert q.cycle_thread_loss_j == pytest.approx(6.0 * (1 / eta - 1))
-    assert q.cycle_motor_work_j == pytest.approx(6.0 / eta)
-    assert q.cycle_regen_j == pytest.approx(0.0)
+    assert q.energy.cycle_load_work_j == pytest.approx(6.0)
+    assert q.energy.cycle_thread_loss_j == pytest.approx(6.0 * (1 / eta - 1))
+    assert q.energy.cycle_motor_work_j == pytest.approx(6.0 / eta)
+    assert q.energy.cycle_regen_j == pytest.approx(0.0)
 
 
 @pytest.mark.parametrize("orientation", ["horizontal", "vertical"])
@@ -138,13 +138,13 @@ def test_energy_balances_over_the_cycle(orientation: str, zbx8000_l10: ScrewSpec
     trip, less than the motor's; the lowering gives energy back."""
     app = _pick_and_place(orientation=orientation, motor_inertia_kg_m2=8.2e-6)
     q = evaluate(app, zbx8000_l10).quantities
-    assert q.cycle_drag_loss_j > 0.0  # the anti-backlash nut drags
-    balance = q.cycle_load_work_j + q.cycle_thread_loss_j + q.cycle_drag_loss_j
-    assert q.cycle_motor_work_j - q.cycle_regen_j == pytest.approx(balance)
+    assert q.energy.cycle_drag_loss_j > 0.0  # the anti-backlash nut drags
+    balance = q.energy.cycle_load_work_j + q.energy.cycle_thread_loss_j + q.energy.cycle_drag_loss_j
+    assert q.energy.cycle_motor_work_j - q.energy.cycle_regen_j == pytest.approx(balance)
     if orientation == "vertical":
         # up with 2.5 kg, down with 0.5 kg: the net work on the weight is (2.5 - 0.5) g 0.3
         weight_work = (2.5 - 0.5) * STANDARD_GRAVITY_M_S2 * 0.3
-        assert q.cycle_load_work_j == pytest.approx(6.0 + weight_work)
+        assert q.energy.cycle_load_work_j == pytest.approx(6.0 + weight_work)
 
 
 def test_lowering_gives_energy_back(b8000_l10: ScrewSpec) -> None:
@@ -156,9 +156,9 @@ def test_lowering_gives_energy_back(b8000_l10: ScrewSpec) -> None:
     ev = evaluate(app, b8000_l10)
     weight = 2.5 * STANDARD_GRAVITY_M_S2
     cruise_back = weight * 0.275 * ev.backdrive_efficiency_running
-    assert ev.quantities.cycle_regen_j > cruise_back
-    assert ev.quantities.cycle_motor_work_j > weight * 0.275 / ev.efficiency
-    assert ev.quantities.cycle_load_work_j == pytest.approx(0.0, abs=1e-9)
+    assert ev.quantities.energy.cycle_regen_j > cruise_back
+    assert ev.quantities.energy.cycle_motor_work_j > weight * 0.275 / ev.efficiency
+    assert ev.quantities.energy.cycle_load_work_j == pytest.approx(0.0, abs=1e-9)
 
 
 def test_stepper_copper_loss_over_the_cycle(b8000_l10: ScrewSpec) -> None:
@@ -167,9 +167,9 @@ def test_stepper_copper_loss_over_the_cycle(b8000_l10: ScrewSpec) -> None:
     stepper = _pick_and_place(
         step_angle_deg=1.8, motor_phase_current_a=2.0, motor_resistance_ohm=1.4
     )
-    assert evaluate(stepper, b8000_l10).quantities.cycle_copper_loss_j == pytest.approx(16.8)
+    assert evaluate(stepper, b8000_l10).quantities.energy.cycle_copper_loss_j == pytest.approx(16.8)
     servo = replace(stepper, step_angle_deg=None)
-    assert math.isnan(evaluate(servo, b8000_l10).quantities.cycle_copper_loss_j)
+    assert math.isnan(evaluate(servo, b8000_l10).quantities.energy.cycle_copper_loss_j)
 
 
 def test_fastest_move_sets_the_step_rate_and_speed_checks(b8000_l10: ScrewSpec) -> None:
@@ -183,8 +183,8 @@ def test_fastest_move_sets_the_step_rate_and_speed_checks(b8000_l10: ScrewSpec) 
     )
     q = evaluate(app, b8000_l10).quantities
     assert motion.reached_speed(app) == pytest.approx(0.5)
-    assert q.peak_rpm == pytest.approx(3000.0)
-    assert q.step_rate_hz == pytest.approx(20_000.0)
+    assert q.motor.peak_rpm == pytest.approx(3000.0)
+    assert q.motor.step_rate_hz == pytest.approx(20_000.0)
 
 
 def test_a_dwell_holds_each_move_s_own_weight(zbx8000_l10: ScrewSpec) -> None:

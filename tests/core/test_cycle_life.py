@@ -58,8 +58,8 @@ def test_the_pick_and_place_axis_wears_its_nut_by_m_a_alone(catalog: Catalog) ->
     c = evaluate(PICK_AND_PLACE, catalog.by_id["B8000-L10-TFE"])
     travel_m = WEAR_VOLUME_M3 / (K_M2_N * 0.3375)
     assert travel_m == pytest.approx(43.37e6, rel=1e-3)
-    assert c.quantities.wear_travel_m == pytest.approx(travel_m, rel=1e-6)
-    assert c.quantities.wear_life_years == pytest.approx(7.426, rel=1e-3)
+    assert c.quantities.life.wear_travel_m == pytest.approx(travel_m, rel=1e-6)
+    assert c.quantities.life.wear_life_years == pytest.approx(7.426, rel=1e-3)
     assert c.life is not None and c.life.model == "wear"
     # the band: the wear rate's high end 3e-6 and low end 3.3e-7
     assert c.life.travel_m == pytest.approx((travel_m / 3.0, travel_m / 0.33), rel=1e-6)
@@ -122,8 +122,8 @@ def test_hours_a_day_give_the_cycles_by_the_cycle_time(catalog: Catalog) -> None
     dwell = replace(hours, dwell_s=0.5)
     assert motion.cycles_per_day(dwell) == pytest.approx(7728.0, rel=1e-4)
     screw = catalog.by_id["B8000-L10-TFE"]
-    by_cycles = evaluate(PICK_AND_PLACE, screw).quantities.wear_life_years
-    by_hours = evaluate(hours, screw).quantities.wear_life_years
+    by_cycles = evaluate(PICK_AND_PLACE, screw).quantities.life.wear_life_years
+    by_hours = evaluate(hours, screw).quantities.life.wear_life_years
     assert by_hours == pytest.approx(by_cycles * 20000.0 / 10562.3, rel=1e-5)
     # without a stroke there is no cycle to time: no duty
     assert motion.cycles_per_day(replace(hours, stroke_m=None)) is None

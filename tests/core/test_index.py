@@ -207,8 +207,8 @@ def test_a_bronze_nut_carries_its_table_pressure_over_the_flank_area(catalog: Ca
         app = Application(load_n=100.0, speed_m_s=speed_m_s, length_m=0.5)
         for table, k in ((catalog.index.table, row), (alone, 0), (joined, 2)):
             q = operating_point(app, table)
-            assert q.sliding_speed_m_s[k] == pytest.approx(sliding_m_s, rel=1e-4)
-            assert q.nut_allowed_pressure_pa[k] == pytest.approx(pressure_pa, rel=1e-3)
-            assert q.nut_allowed_load_n[k] == pytest.approx(load_n, rel=1e-3)
+            assert q.nut.sliding_speed_m_s[k] == pytest.approx(sliding_m_s, rel=1e-4)
+            assert q.nut.nut_allowed_pressure_pa[k] == pytest.approx(pressure_pa, rel=1e-3)
+            assert q.nut.nut_allowed_load_n[k] == pytest.approx(load_n, rel=1e-3)
     assert joined.pressure_tables == alone.pressure_tables
     assert np.array_equal(joined.pressure_table, [-1, -1, 0])

@@ -86,7 +86,7 @@ def test_the_weight_of_the_axes_above_loads_a_vertical_axis(catalog: Catalog) ->
     top = size_machine(axes[:1], catalog.index, {}, {}).axes[0]
     weight = (0.2 + top.total_kg) * STANDARD_GRAVITY_M_S2
     assert lift.chosen is not None
-    assert float(lift.chosen.quantities.holding_force_n) == pytest.approx(weight, rel=1e-12)
+    assert float(lift.chosen.quantities.axis.holding_force_n) == pytest.approx(weight, rel=1e-12)
 
 
 def test_the_axis_with_nothing_passing_governs(catalog: Catalog) -> None:

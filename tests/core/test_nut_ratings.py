@@ -40,8 +40,8 @@ def violations(app: Application, catalog: Catalog) -> list[tuple[str, str]]:
     assert m.demand is not None and m.capacity is not None
     rated = np.flatnonzero(m.applicable)
     passes = m.demand[rated] <= m.capacity[rated]
-    area = s.quantities.flank_area_m2[rated]
-    speed = s.quantities.sliding_speed_m_s[rated]
+    area = s.quantities.nut.flank_area_m2[rated]
+    speed = s.quantities.nut.sliding_speed_m_s[rated]
     material = np.array([s.table.screws[i].variant for i in rated])
     worse = (
         (material[:, None] == material[None, :])
@@ -71,8 +71,8 @@ def test_the_property_compares_real_pairs(catalog: Catalog) -> None:
     s = screen(app, catalog.index)
     m = s.measures["bearing_pressure"]
     rated = np.flatnonzero(m.applicable)
-    area = s.quantities.flank_area_m2[rated]
-    speed = s.quantities.sliding_speed_m_s[rated]
+    area = s.quantities.nut.flank_area_m2[rated]
+    speed = s.quantities.nut.sliding_speed_m_s[rated]
     pairs = (area[None, :] > area[:, None]) & (speed[None, :] < speed[:, None])
     assert pairs.sum() > 100
     assert violations(app, catalog) == []

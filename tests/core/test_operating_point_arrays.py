@@ -9,8 +9,9 @@ import pytest
 
 from app.catalog import Catalog
 from app.core.model import Application, Move
-from app.core.quantities import NAMES, operating_point
+from app.core.quantities import NAMES, PART_OF, PARTS, operating_point, quantity
 from app.core.screening import screen_table
+from app.core.selection import select
 
 PLAIN = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5)
 APPS = {
@@ -59,7 +60,7 @@ def test_every_number_is_a_float_array_of_the_tables_length(catalog: Catalog, na
         field: (type(v).__name__, getattr(v, "dtype", None), getattr(v, "shape", None))
         for field in NAMES
         if not (
-            isinstance(v := getattr(q, field), np.ndarray)
+            isinstance(v := quantity(q, field), np.ndarray)
             and v.dtype == np.float64
             and v.shape == (len(t),)
         )
@@ -77,8 +78,34 @@ def test_the_head_of_a_screening_is_the_whole_screenings_first_rows(
     index = np.arange(n, dtype=np.intp)
     head = whole.head(n, index, t.take(index))
     for field in NAMES:
-        part, full = getattr(head.quantities, field), getattr(whole.quantities, field)
+        part, full = quantity(head.quantities, field), quantity(whole.quantities, field)
         assert np.array_equal(part, full[:n], equal_nan=True), field
     assert np.array_equal(head.passed, whole.passed[:n])
     assert np.array_equal(head.max_utilization, whole.max_utilization[:n], equal_nan=True)
     assert head.failed.keys() == whole.failed.keys()
+
+
+def test_each_number_lives_in_one_part_and_reads_the_same_every_way(catalog: Catalog) -> None:
+    """The parts of ``Quantities`` share no name, so a name alone finds its number
+    (``quantity``); one candidate's numbers read through ``at`` and through a returned
+    record's ``quantities`` are that candidate's entries of the arrays; a number asked of
+    a part that does not hold it is an error, not another part's number."""
+    names = [n for _, names in PARTS.values() for n in names]
+    assert len(names) == len(set(names)) == len(NAMES) > 80
+    assert set(PARTS) == {
+        "axis", "torque", "column", "nut", "life", "heat", "accuracy", "holding", "motor",
+        "support", "energy",
+    }  # fmt: skip
+    app = APPS["vertical-hold"]
+    s = select(app, catalog.index)
+    record = s.candidates[0]
+    q, i = s.screening.quantities, s.ranked[0]
+    for name in NAMES:
+        part = PART_OF[name]
+        expected = float(quantity(q, name)[i])
+        for read in (getattr(q.at(i), part), getattr(record.quantities, part)):
+            assert np.array_equal(getattr(read, name), expected, equal_nan=True), name
+    with pytest.raises(AttributeError):
+        record.quantities.torque.critical_rpm  # type: ignore[attr-defined]  # noqa: B018
+    with pytest.raises(AttributeError):
+        record.quantities.total_nm  # type: ignore[attr-defined]  # noqa: B018

@@ -65,18 +65,22 @@ def test_a_large_trapezoidal_screw_at_its_rating(catalog: Catalog) -> None:
     eq. 8-4 with the sec(alpha) term)."""
     screw = catalog.by_id["Tr50x8-bronze"]
     probe = evaluate(Application(load_n=1000.0, speed_m_s=0.005, length_m=0.5), screw)
-    rated_n = probe.quantities.nut_allowed_load_n
+    rated_n = probe.quantities.nut.nut_allowed_load_n
     ev = evaluate(Application(load_n=rated_n, speed_m_s=0.005, length_m=0.5), screw)
     q = ev.quantities
     tan_l = 0.008 / (math.pi * 0.046)
     mu = 0.16 / math.cos(math.radians(15.0))
     eta = tan_l * (1 - mu * tan_l) / (tan_l + mu)
-    torque_nm = rated_n * 0.008 / (2 * math.pi * eta) + abs(q.inertia_screw_nm)
+    torque_nm = rated_n * 0.008 / (2 * math.pi * eta) + abs(q.torque.inertia_screw_nm)
     by_hand = math.sqrt(1 + 3 * (4 * torque_nm / (rated_n * 0.041)) ** 2)
-    assert q.root_stress_pa / q.root_axial_stress_pa == pytest.approx(by_hand, rel=1e-6)
-    assert 1 - q.root_axial_stress_pa / q.root_stress_pa == pytest.approx(0.25, abs=0.01)
+    assert q.column.root_stress_pa / q.column.root_axial_stress_pa == pytest.approx(
+        by_hand, rel=1e-6
+    )
+    assert 1 - q.column.root_axial_stress_pa / q.column.root_stress_pa == pytest.approx(
+        0.25, abs=0.01
+    )
     c = next(c for c in ev.checks if c.name == "root_stress")
-    assert c.value is not None and c.value == pytest.approx(q.root_stress_pa, rel=1e-9)
+    assert c.value is not None and c.value == pytest.approx(q.column.root_stress_pa, rel=1e-9)
     text = render(c.message)
     assert "von Mises" in text and "MPa axial" in text and "MPa shear" in text
 
@@ -90,9 +94,9 @@ def test_the_check_judges_the_combined_stress(catalog: Catalog) -> None:
     q = ev.quantities
     c = next(c for c in ev.checks if c.name == "root_stress")
     sigma = 8000.0 / (math.pi * screw.root_diameter_m**2 / 4)
-    assert q.root_axial_stress_pa == pytest.approx(sigma, rel=1e-9)
-    tau = 16 * q.root_torque_nm / (math.pi * screw.root_diameter_m**3)
-    assert q.root_shear_stress_pa == pytest.approx(tau, rel=1e-9)
+    assert q.column.root_axial_stress_pa == pytest.approx(sigma, rel=1e-9)
+    tau = 16 * q.column.root_torque_nm / (math.pi * screw.root_diameter_m**3)
+    assert q.column.root_shear_stress_pa == pytest.approx(tau, rel=1e-9)
     assert c.value is not None
     assert c.value == pytest.approx(math.sqrt(sigma**2 + 3 * tau**2), rel=1e-9)
     assert c.value > 1.2 * sigma

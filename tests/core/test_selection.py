@@ -18,7 +18,7 @@ from app.contract.units import render
 from app.core.evaluate import evaluate
 from app.core.index import Eligible, EligibleCache
 from app.core.model import Application
-from app.core.quantities import NAMES
+from app.core.quantities import NAMES, PART_OF, quantity
 from app.core.record import Candidate, records
 from app.core.robustness import build_variants, robustness
 from app.core.screening import eligible_mask, screen_table
@@ -33,7 +33,7 @@ def shown_torque(e: Candidate) -> float:
     """The torque the results show: the peak motor torque under a move, else the drive
     torque while accelerating."""
     q = e.quantities
-    return q.total_nm if math.isnan(q.motor_rms_nm) else q.peak_torque_nm
+    return q.torque.total_nm if math.isnan(q.motor.motor_rms_nm) else q.torque.peak_torque_nm
 
 
 FIXTURE_OK = settings(
@@ -73,7 +73,7 @@ def test_screening_agrees_with_full_evaluation(
 def rests_on_a_device(e: Candidate) -> bool:
     """The power-off hold rests on a brake or detent torque: the thread alone does not
     hold the load with the friction margin."""
-    thread = number(e.quantities.hold_thread_margin)
+    thread = number(e.quantities.holding.hold_thread_margin)
     return thread is not None and thread < 1.0
 
 
@@ -343,11 +343,11 @@ def test_one_candidates_numbers_equal_those_read_for_many(catalog: Catalog) -> N
     the same candidate's entry in the arrays, NaN included."""
     app = Application(load_n=300.0, speed_m_s=0.1, length_m=0.8, lead_m=0.01)
     q = screen(app, catalog.index).quantities
-    picks = [0, 3, len(q.rpm) - 1]
+    picks = [0, 3, len(q.axis.rpm) - 1]
     for i in picks:
-        one = [getattr(q.at(i), name) for name in NAMES]
+        one = [getattr(getattr(q.at(i), PART_OF[name]), name) for name in NAMES]
         assert all(type(v) is float for v in one)
-        expected = [getattr(q, name)[i] for name in NAMES]
+        expected = [quantity(q, name)[i] for name in NAMES]
         assert np.array_equal(np.array(one), np.array(expected), equal_nan=True)
 
 

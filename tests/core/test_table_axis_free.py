@@ -63,8 +63,8 @@ def test_a_nut_length_typed_as_the_catalogs_gives_the_catalogs_flank_area(
     one = table.take(rows[:1])
     app = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5)
     typed = dataclasses.replace(app, nut_length_m=float(one.nut_length_m[0]))
-    catalog_area = operating_point(app, one).flank_area_m2
-    typed_area = operating_point(typed, one).flank_area_m2
+    catalog_area = operating_point(app, one).nut.flank_area_m2
+    typed_area = operating_point(typed, one).nut.flank_area_m2
     assert catalog_area[0] > 0.0
     assert typed_area[0] == catalog_area[0]
 

@@ -63,14 +63,14 @@ def test_the_motor_torques_match_thk() -> None:
     assert tk == pytest.approx(4.73, rel=WITHIN)
     assert tg == pytest.approx(-4.49, rel=WITHIN)
     q = thk.cycle()
-    assert float(q.motor_peak_nm[0]) == pytest.approx(tk)
+    assert float(q.motor.motor_peak_nm[0]) == pytest.approx(tk)
     by_hand = math.sqrt((tk**2 * 0.15 + t1**2 * 0.85 + tg**2 * 0.15) / 3.75)
-    assert float(q.motor_rms_nm[0]) == pytest.approx(by_hand, rel=1e-9)
+    assert float(q.motor.motor_rms_nm[0]) == pytest.approx(by_hand, rel=1e-9)
     assert by_hand == pytest.approx(1.305, rel=WITHIN)
 
 
 def test_the_apps_own_model_carries_the_mass_through_the_thread() -> None:
     """Without THK's simplification the 533 N of m a passes through the 0.9 efficiency:
     the app's peak is above THK's by about (1 / 0.9 - 1) of the load's share."""
-    own = float(thk.cycle(mass_as_inertia=False).motor_peak_nm[0])
+    own = float(thk.cycle(mass_as_inertia=False).motor.motor_peak_nm[0])
     assert own > thk.segment_torque_nm("accelerate") * 1.05

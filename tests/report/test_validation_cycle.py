@@ -61,11 +61,13 @@ def test_rms_and_peak_match_the_maker_through_the_selection_path() -> None:
     (printed 0.067): the same from ``segments.rms`` over the segments and from the
     operating point the selection reports; the peak is T_a."""
     q = v.weihong_cycle()
-    assert float(segments.rms(_parts())[0]) == pytest.approx(float(q.motor_rms_nm[0]), rel=1e-12)
-    assert q.motor_rms_nm[0] == pytest.approx(0.067, rel=WITHIN)
-    assert q.motor_peak_nm[0] == pytest.approx(0.231, rel=WITHIN)
+    assert float(segments.rms(_parts())[0]) == pytest.approx(
+        float(q.motor.motor_rms_nm[0]), rel=1e-12
+    )
+    assert q.motor.motor_rms_nm[0] == pytest.approx(0.067, rel=WITHIN)
+    assert q.motor.motor_peak_nm[0] == pytest.approx(0.231, rel=WITHIN)
     by_hand = math.sqrt((0.2309**2 * 0.1 + 0.03466**2 * 0.8 + 0.1616**2 * 0.1) / 2.0)
-    assert q.motor_rms_nm[0] == pytest.approx(by_hand, rel=1e-3)
+    assert q.motor.motor_rms_nm[0] == pytest.approx(by_hand, rel=1e-3)
 
 
 def test_the_app_own_model_asks_more_than_the_maker() -> None:
@@ -75,8 +77,12 @@ def test_the_app_own_model_asks_more_than_the_maker() -> None:
     the screw, so the RMS rises less (0.0682 against 0.0667)."""
     maker, own = v.weihong_cycle(), v.weihong_cycle(mass_as_inertia=False)
     extra = (1 / 0.9 - 1) * 10.0 * (10.0 / 3.0) * 0.02 / (2 * math.pi)
-    assert own.motor_peak_nm[0] == pytest.approx(maker.motor_peak_nm[0] + extra, rel=1e-9)
-    assert maker.motor_rms_nm[0] < own.motor_rms_nm[0] < 1.03 * maker.motor_rms_nm[0]
+    assert own.motor.motor_peak_nm[0] == pytest.approx(
+        maker.motor.motor_peak_nm[0] + extra, rel=1e-9
+    )
+    assert (
+        maker.motor.motor_rms_nm[0] < own.motor.motor_rms_nm[0] < 1.03 * maker.motor.motor_rms_nm[0]
+    )
 
 
 def test_a_longer_stop_lowers_the_rms_as_the_square_root_of_the_cycle() -> None:

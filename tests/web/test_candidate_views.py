@@ -143,7 +143,7 @@ def test_the_table_shows_the_cores_peak_rms_and_motor_use_in_the_display_unit(
     used = []
     for row in rows:
         record = evaluate(app, catalog.index.row(catalog.index.positions[row["data-id"]]))
-        peak_nm = record.quantities.peak_torque_nm
+        peak_nm = record.quantities.torque.peak_torque_nm
         assert record.motion is not None
         peak = float(row.select_one(".torque-peak").get_text())
         assert peak == pytest.approx(peak_nm / OZ_IN, rel=1e-3)
@@ -209,7 +209,7 @@ def test_the_compact_select_gives_the_peak_torque_and_the_motor_use(
     for candidates, rel in _forms(client, {**MOVE, "max_torque_nm": motor_nm}):
         for c in candidates:
             record = evaluate(app, catalog.index.row(catalog.index.positions[c["id"]]))
-            peak_nm = record.quantities.peak_torque_nm
+            peak_nm = record.quantities.torque.peak_torque_nm
             assert c["torque"]["peak_motor_nm"] == pytest.approx(peak_nm, rel=rel, abs=0.0)
             share = peak_nm * app.torque_safety_factor / motor_nm
             assert c["motor_use"] == pytest.approx(share, rel=max(rel, 1e-12))

@@ -43,7 +43,7 @@ ROWS: tuple[Reported, ...] = (
             csv=True,
             compare=True,
             formula=Formula(function, text, source) if text else Formula(function),
-            source=From("quantities." + key, "energy"),
+            source=From("quantities.energy." + key, "energy"),
         )
         for key, label, help, function, text, source in (
             (

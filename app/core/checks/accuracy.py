@@ -45,7 +45,10 @@ class Accuracy(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         error = accuracy.worst_case_error(
-            q.lead_error_m, q.thermal_growth_m, t.backlash_max_m, t.repeatability_m
+            q.accuracy.lead_error_m,
+            q.accuracy.thermal_growth_m,
+            t.backlash_max_m,
+            t.repeatability_m,
         )
         tolerance = same(t, app.positioning_tolerance_m)
         return Measure(where_given(t.lead_accuracy), np.asarray(error), tolerance)
@@ -67,7 +70,7 @@ class Accuracy(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         repeatability = s.repeatability_m or 0.0
         error = accuracy.worst_case_error(
-            r.lead_error_m, r.thermal_growth_m, s.backlash_max_m, repeatability
+            r.accuracy.lead_error_m, r.accuracy.thermal_growth_m, s.backlash_max_m, repeatability
         )
         verb = "is within" if passed else "exceeds"
         return Phrase(
@@ -77,8 +80,8 @@ class Accuracy(Check):
             "heat is not counted.",
             {
                 "e": Amount(error, "length"),
-                "lead": Amount(r.lead_error_m, "length"),
-                "growth": Amount(abs(r.thermal_growth_m), "length"),
+                "lead": Amount(r.accuracy.lead_error_m, "length"),
+                "growth": Amount(abs(r.accuracy.thermal_growth_m), "length"),
                 "b": Amount(s.backlash_max_m, "length"),
                 "r": Amount(repeatability, "length"),
                 "tol": Amount(app.positioning_tolerance_m or 0.0, "length"),
@@ -91,12 +94,12 @@ class Accuracy(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         thermal = (
             " or hold the screw nearer the {ref} reference (its growth is {growth})"
-            if r.thermal_growth_m
+            if r.accuracy.thermal_growth_m
             else ""
         )
         values = {
             "ref": Amount(REFERENCE_TEMPERATURE_C, "temperature"),
-            "growth": Amount(abs(r.thermal_growth_m), "length"),
+            "growth": Amount(abs(r.accuracy.thermal_growth_m), "length"),
         }
         if s.anti_backlash or not reach.anti_backlash:
             return Phrase(

@@ -50,7 +50,7 @@ class BackDriving(Check):
         return needed and (app.brake_torque_nm is None or unpowered)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), t.lead_m, q.max_self_locking_lead_with_margin_m)
+        return Measure(everywhere(t), t.lead_m, q.holding.max_self_locking_lead_with_margin_m)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -69,7 +69,7 @@ class BackDriving(Check):
                 "A ball screw always back-drives (rolling friction, efficiency near 90 % "
                 "both ways): the load drives the screw down with the power off; holding "
                 "torque {physics}. A brake is needed.",
-                {"physics": Amount(r.holding_distrusted_nm, "torque")},
+                {"physics": Amount(r.holding.holding_distrusted_nm, "torque")},
             )
         rule = rule_note(app, s, passed)
         rule_text = "" if rule is None else " {rule}"
@@ -90,8 +90,8 @@ class BackDriving(Check):
             "(physics at {f} x static friction)." + rule_text,
             {
                 **values,
-                "seed": Amount(r.holding_seed_nm, "torque"),
-                "physics": Amount(r.holding_distrusted_nm, "torque"),
+                "seed": Amount(r.holding.holding_seed_nm, "torque"),
+                "physics": Amount(r.holding.holding_distrusted_nm, "torque"),
             },
         )
 

@@ -39,12 +39,12 @@ class BallSpeed(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         limit = ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m)
-        return Measure(t.ball.copy(), q.peak_rpm, limit)
+        return Measure(t.ball.copy(), q.motor.peak_rpm, limit)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"n_peak": q.peak_rpm, "DN_max": t.dn_limit_mm_rpm, "d_s": t.outer_diameter_m}
+        return {"n_peak": q.motor.peak_rpm, "DN_max": t.dn_limit_mm_rpm, "d_s": t.outer_diameter_m}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         limit = ballscrew.dn_speed_limit(s.dn_limit_mm_rpm or 0.0, s.outer_diameter_m)
@@ -53,7 +53,7 @@ class BallSpeed(Check):
             "Peak speed {n}, " + verb + " the {limit} that the maker's DN limit of {dn} "
             "mm rpm allows this diameter.",
             {
-                "n": Amount(r.peak_rpm, "rpm"),
+                "n": Amount(r.motor.peak_rpm, "rpm"),
                 "limit": Amount(limit, "rpm"),
                 "dn": Amount(s.dn_limit_mm_rpm or 0.0, "factor"),
             },

@@ -55,12 +55,16 @@ class BallStatic(Check):
     capacity_sources = ("static_load",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(t.ball.copy(), q.peak_force_n * STATIC_SAFETY_FACTOR, t.static_load_n)
+        return Measure(t.ball.copy(), q.axis.peak_force_n * STATIC_SAFETY_FACTOR, t.static_load_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"F_peak": q.peak_force_n, "f_s": STATIC_SAFETY_FACTOR, "C0a_nut": t.static_load_n}
+        return {
+            "F_peak": q.axis.peak_force_n,
+            "f_s": STATIC_SAFETY_FACTOR,
+            "C0a_nut": t.static_load_n,
+        }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "within" if passed else "above"
@@ -68,9 +72,9 @@ class BallStatic(Check):
             "Peak thrust {f} times the static safety factor {fs} = {demand}, " + verb + " the "
             "nut's static load rating C0a = {c0a}." + NOT_APPLICABLE_NOTE,
             {
-                "f": Amount(r.peak_force_n, "force"),
+                "f": Amount(r.axis.peak_force_n, "force"),
                 "fs": Amount(STATIC_SAFETY_FACTOR, "factor"),
-                "demand": Amount(r.peak_force_n * STATIC_SAFETY_FACTOR, "force"),
+                "demand": Amount(r.axis.peak_force_n * STATIC_SAFETY_FACTOR, "force"),
                 "c0a": Amount(s.static_load_n or np.nan, "force"),
             },
         )

@@ -44,32 +44,34 @@ class BearingPressure(Check):
     capacity_sources = ("bearing_pressure", "max_pressure", "bearing_pv_limit", "nut_length")
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(q.nut_allowed_load_n), q.peak_force_n, q.nut_allowed_load_n)
+        return Measure(
+            where_given(q.nut.nut_allowed_load_n), q.axis.peak_force_n, q.nut.nut_allowed_load_n
+        )
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_peak": q.peak_force_n,
-            "p_nut_v": q.nut_allowed_pressure_pa,
-            "L_nut": q.nut_length_m,
+            "F_peak": q.axis.peak_force_n,
+            "p_nut_v": q.nut.nut_allowed_pressure_pa,
+            "L_nut": q.nut.nut_length_m,
             "P": t.pitch_m,
             "d_2": t.flank_pitch_diameter_m,
             "H_1": t.flank_height_m,
-            "v": q.sliding_speed_m_s,
+            "v": q.nut.sliding_speed_m_s,
             "p_max": t.max_pressure_pa,
             "PV_nut": t.nut_pv_limit_pa_m_s,
-            "f_T": q.pv_temperature_factor,
-            "f_lub": q.pv_lubrication_factor,
+            "f_T": q.nut.pv_temperature_factor,
+            "f_lub": q.nut.pv_lubrication_factor,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         values: dict[str, Amount | str | Phrase] = {
-            "f": Amount(r.peak_force_n, "force"),
-            "cap": Amount(r.nut_allowed_load_n, "force"),
-            "v": Amount(r.sliding_speed_m_s, "speed"),
-            "p": Amount(r.nut_allowed_pressure_pa, "pressure"),
+            "f": Amount(r.axis.peak_force_n, "force"),
+            "cap": Amount(r.nut.nut_allowed_load_n, "force"),
+            "v": Amount(r.nut.sliding_speed_m_s, "speed"),
+            "p": Amount(r.nut.nut_allowed_pressure_pa, "pressure"),
             "why": _slower(app, s, r),
         }
         return Phrase(
@@ -79,20 +81,20 @@ class BearingPressure(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        if not r.nut_allowed_load_n > 0 and r.pv_temperature_factor == 0.0:
+        if not r.nut.nut_allowed_load_n > 0 and r.nut.pv_temperature_factor == 0.0:
             return no_pv_left(app, r)
         return Phrase(
             "At this speed the load may be at most {cap}; a longer nut, a larger size or a "
             "nut material that allows more pressure carries more." + MARGIN_NOTE,
-            {"cap": Amount(at_most(r.nut_allowed_load_n), "force")},
+            {"cap": Amount(at_most(r.nut.nut_allowed_load_n), "force")},
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        if not r.nut_allowed_load_n > 0:
+        if not r.nut.nut_allowed_load_n > 0:
             return {}
-        return load_input(app, r.nut_allowed_load_n)
+        return load_input(app, r.nut.nut_allowed_load_n)
 
 
 def _slower(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
@@ -102,10 +104,10 @@ def _slower(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
     its PV limit binds. Empty when the slow-sliding pressure holds."""
     table = s.bearing_pressure_table
     slow = [p for p in (table[0][1] if table else None, s.max_pressure_pa) if p is not None]
-    if not slow or r.nut_allowed_pressure_pa >= min(slow):
+    if not slow or r.nut.nut_allowed_pressure_pa >= min(slow):
         return Phrase("")
     values: dict[str, Amount | str | Phrase] = {"p0": Amount(min(slow), "pressure")}
-    if table and r.sliding_speed_m_s > table[0][0]:
+    if table and r.nut.sliding_speed_m_s > table[0][0]:
         values["v0"] = Amount(table[0][0], "speed")
         return Phrase(
             ", less than the {p0} it allows up to {v0}: the allowable pressure falls as the "
@@ -113,7 +115,7 @@ def _slower(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
             "turning, so it may carry less although its flanks are larger",
             values,
         )
-    values["pv"] = Amount(r.nut_pv_limit_pa_m_s, "pv")
+    values["pv"] = Amount(r.nut.nut_pv_limit_pa_m_s, "pv")
     values["derated"] = derating(app, s, r)
     return Phrase(
         ", less than its {p0} at slow sliding: its PV limit {pv} (the rating {derated}) "

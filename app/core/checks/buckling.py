@@ -50,14 +50,14 @@ class ColumnBuckling(Check):
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        pushed = q.compressive_force_n > 0.0
-        return Measure(pushed, q.compressive_force_n, q.allowed_load_n)
+        pushed = q.axis.compressive_force_n > 0.0
+        return Measure(pushed, q.axis.compressive_force_n, q.column.allowed_load_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_c": q.compressive_force_n,
+            "F_c": q.axis.compressive_force_n,
             "SF": app.buckling_safety_factor,
             "E": t.youngs_modulus_pa,
             "A": buckling.root_area(t.root_diameter_m),
@@ -67,7 +67,7 @@ class ColumnBuckling(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
-        short = r.slenderness < r.transition_slenderness
+        short = r.column.slenderness < r.column.transition_slenderness
         model = "Johnson, short column" if short else "Euler"
         span = (
             ""
@@ -83,12 +83,12 @@ class ColumnBuckling(Check):
             + span
             + ").",
             {
-                "f": Amount(r.compressive_force_n, "force"),
-                "allowed": Amount(r.allowed_load_n, "force"),
+                "f": Amount(r.axis.compressive_force_n, "force"),
+                "allowed": Amount(r.column.allowed_load_n, "force"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
-                "f_cr": Amount(r.critical_load_n, "force"),
-                "s": Amount(r.slenderness, "factor"),
-                "col": Amount(r.column_length_m, "length"),
+                "f_cr": Amount(r.column.critical_load_n, "force"),
+                "s": Amount(r.column.slenderness, "factor"),
+                "col": Amount(r.column.column_length_m, "length"),
             },
         )
 
@@ -98,7 +98,7 @@ class ColumnBuckling(Check):
                 s.youngs_modulus_pa, s.root_diameter_m, column_length(app), fixity, _yield(s)
             )
 
-        force_n = at_least(r.compressive_force_n)
+        force_n = at_least(r.axis.compressive_force_n)
         d_min = buckling.min_root_diameter_for_column(
             force_n / app.buckling_safety_factor,
             s.youngs_modulus_pa,
@@ -138,7 +138,7 @@ class ColumnBuckling(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        limits = load_input(app, r.allowed_load_n, compressive=True)
+        limits = load_input(app, r.column.allowed_load_n, compressive=True)
         length = _max_length(app, s, r)
         return {**limits, _column_input(app): length} if length > 0 else limits
 
@@ -166,7 +166,7 @@ def _max_length(
     thrust with its margin: in Johnson's short-column range the critical load hardly grows
     as the column shortens, so a length a margin shorter would not keep the margin."""
     return buckling.max_length_for_column(
-        (r.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
+        (r.axis.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
         s.youngs_modulus_pa,
         s.root_diameter_m,
         app.end_fixity if fixity is None else fixity,

@@ -43,7 +43,7 @@ class CriticalSpeed(Check):
     capacity_sources = ("root_diameter", "youngs_modulus", "density")
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.rpm, q.allowed_rpm)
+        return Measure(everywhere(t), q.axis.rpm, q.column.allowed_rpm)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -64,10 +64,10 @@ class CriticalSpeed(Check):
         return Phrase(
             "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity}).",
             {
-                "n": Amount(r.rpm, "rpm"),
-                "allowed": Amount(r.allowed_rpm, "rpm"),
+                "n": Amount(r.axis.rpm, "rpm"),
+                "allowed": Amount(r.column.allowed_rpm, "rpm"),
                 "sf": Amount(app.critical_speed_safety_factor, "factor"),
-                "n_c": Amount(r.critical_rpm, "rpm"),
+                "n_c": Amount(r.column.critical_rpm, "rpm"),
                 "fixity": app.end_fixity,
             },
         )
@@ -79,8 +79,10 @@ class CriticalSpeed(Check):
             )
             return critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor)
 
-        lead = critical_speed.min_lead_for_speed(motion.reached_speed(app), r.allowed_rpm)
-        d_min = critical_speed.min_root_diameter_for_speed(s.root_diameter_m, r.allowed_rpm, r.rpm)
+        lead = critical_speed.min_lead_for_speed(motion.reached_speed(app), r.column.allowed_rpm)
+        d_min = critical_speed.min_root_diameter_for_speed(
+            s.root_diameter_m, r.column.allowed_rpm, r.axis.rpm
+        )
         options = []
         values: dict[str, Amount | str] = {
             "length": Amount(at_most(_max_length(app, r)), "length"),
@@ -94,14 +96,14 @@ class CriticalSpeed(Check):
             options.append("a root diameter of at least {d}")
             values["d"] = Amount(at_least(d_min), "length")
         # a stiffer mounting is offered only when it keeps the margin at this length
-        stiffer = stiffer_fixity(app, lambda f: at_least(r.rpm) <= allowed(f))
+        stiffer = stiffer_fixity(app, lambda f: at_least(r.axis.rpm) <= allowed(f))
         if stiffer is None:
             options.append(
                 "add an intermediate support (unsupported length at most {length} with the "
                 "ends {fixity})"
             )
         else:
-            length = critical_speed.max_length_for_speed(app.length_m, allowed(stiffer), r.rpm)
+            length = critical_speed.max_length_for_speed(app.length_m, allowed(stiffer), r.axis.rpm)
             values["stiffer"] = stiffer
             values["stiffer_length"] = Amount(at_most(length), "length")
             options.append(
@@ -116,11 +118,11 @@ class CriticalSpeed(Check):
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
         return {
-            "speed_m_s": geometry.linear_speed(r.allowed_rpm, s.lead_m),
+            "speed_m_s": geometry.linear_speed(r.column.allowed_rpm, s.lead_m),
             "length_m": _max_length(app, r),
         }
 
 
 def _max_length(app: Application, r: Quantities[float]) -> float:
     """Longest unsupported length at which this screw's speed is allowed [m]."""
-    return critical_speed.max_length_for_speed(app.length_m, r.allowed_rpm, r.rpm)
+    return critical_speed.max_length_for_speed(app.length_m, r.column.allowed_rpm, r.axis.rpm)

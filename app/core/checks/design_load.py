@@ -42,18 +42,18 @@ class DesignLoad(Check):
     capacity_sources = ("design_load", "dynamic_pressure", "nut_length")
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(q.rated_load_n), q.peak_force_n, q.rated_load_n)
+        return Measure(where_given(q.nut.rated_load_n), q.axis.peak_force_n, q.nut.rated_load_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"F_peak": q.peak_force_n, "F_size": q.rated_load_n}
+        return {"F_peak": q.axis.peak_force_n, "F_size": q.nut.rated_load_n}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         values: dict[str, Amount | str] = {
-            "f": Amount(r.peak_force_n, "force"),
-            "cap": Amount(r.rated_load_n, "force"),
+            "f": Amount(r.axis.peak_force_n, "force"),
+            "cap": Amount(r.nut.rated_load_n, "force"),
         }
         if s.design_load_n is not None or s.dynamic_pressure_pa is None:
             return Phrase("Peak thrust {f} " + verb + " the design load {cap}.", values)
@@ -69,18 +69,20 @@ class DesignLoad(Check):
             return Phrase(
                 "Reduce the peak thrust to at most {cap}, or carry it on a longer nut, a "
                 "larger size or a nut material rated higher in motion." + MARGIN_NOTE,
-                {"cap": Amount(at_most(r.rated_load_n), "force")},
+                {"cap": Amount(at_most(r.nut.rated_load_n), "force")},
             )
-        larger = " or choose a larger size" if reach.max_design_load_n >= r.peak_force_n else ""
+        larger = (
+            " or choose a larger size" if reach.max_design_load_n >= r.axis.peak_force_n else ""
+        )
         return Phrase(
             "Reduce the peak thrust to at most {cap}" + larger + "." + MARGIN_NOTE,
-            {"cap": Amount(at_most(r.rated_load_n), "force")},
+            {"cap": Amount(at_most(r.nut.rated_load_n), "force")},
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return load_input(app, r.rated_load_n)
+        return load_input(app, r.nut.rated_load_n)
 
 
 def _polymer_values(s: ScrewSpec) -> dict[str, Amount | str]:

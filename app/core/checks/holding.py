@@ -34,10 +34,10 @@ def needed_symbols(app: Application, t: CandidateTable, q: Quantities[Array]) ->
     """The names of the torque a held load needs (``T_hold``'s side of the formula),
     shared by the holding checks; each adds the torque it judges it against."""
     return {
-        "locks": q.locks_with_margin.astype(bool),
+        "locks": q.holding.locks_with_margin.astype(bool),
         "SF": brake_factor(app),
-        "T_seed": efficiency.holding_torque(q.holding_force_n, t.lead_m, t.efficiency),
-        "T_physics": q.holding_distrusted_nm,
+        "T_seed": efficiency.holding_torque(q.axis.holding_force_n, t.lead_m, t.efficiency),
+        "T_physics": q.holding.holding_distrusted_nm,
     }
 
 
@@ -52,10 +52,10 @@ def holding_phrase(
         "larger of {seed} (seed method) and {physics} (physics at {f} x static friction)).",
         {
             "available": Amount(available_nm, "torque"),
-            "needed": Amount(r.brake_needed_nm, "torque"),
+            "needed": Amount(r.holding.brake_needed_nm, "torque"),
             "sf": Amount(brake_factor(app), "factor"),
-            "seed": Amount(r.holding_seed_nm, "torque"),
-            "physics": Amount(r.holding_distrusted_nm, "torque"),
+            "seed": Amount(r.holding.holding_seed_nm, "torque"),
+            "physics": Amount(r.holding.holding_distrusted_nm, "torque"),
             "f": Amount(app.self_locking_friction_factor, "factor"),
         },
     )
@@ -85,7 +85,7 @@ class Holding(Check):
         return motion.holds_a_load(app) and app.brake_torque_nm is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.brake_needed_nm, same(t, app.brake_torque_nm))
+        return Measure(everywhere(t), q.holding.brake_needed_nm, same(t, app.brake_torque_nm))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -93,7 +93,7 @@ class Holding(Check):
         return {**needed_symbols(app, t, q), "T_brake": np.float64(app.brake_torque_nm or 0.0)}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        if r.locks_with_margin:
+        if r.holding.locks_with_margin:
             return Phrase("Self-locking with margin: the brake is not needed to hold.")
         return holding_phrase(app, r, app.brake_torque_nm or 0.0, passed, power_state(app))
 
@@ -104,8 +104,8 @@ class Holding(Check):
 def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
     """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
     that self-locks with margin, when it is made in one."""
-    values = {"needed": Amount(at_least(r.brake_needed_nm), "torque")}
-    lead = reach.made_lead(s, r.max_self_locking_lead_with_margin_m, larger=False)
+    values = {"needed": Amount(at_least(r.holding.brake_needed_nm), "torque")}
+    lead = reach.made_lead(s, r.holding.max_self_locking_lead_with_margin_m, larger=False)
     if lead is None:
         return Phrase(start + "." + MARGIN_NOTE, values)
     return Phrase(

@@ -40,7 +40,7 @@ class InertiaRatio(Check):
         return bool(app.motor_inertia_kg_m2)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        ratio = q.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
+        ratio = q.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
         return Measure(everywhere(t), ratio, same(t, MAX_INERTIA_RATIO))
 
     def symbols(
@@ -60,8 +60,8 @@ class InertiaRatio(Check):
             + verb
             + " the guide of {limit}.",
             {
-                "load": Amount(r.inertia_kg_m2, "inertia"),
-                "ratio": f"{r.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan):.3g}",
+                "load": Amount(r.torque.inertia_kg_m2, "inertia"),
+                "ratio": f"{r.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan):.3g}",
                 "rotor": Amount(app.motor_inertia_kg_m2 or 0.0, "inertia"),
                 "limit": f"{MAX_INERTIA_RATIO:g}",
             },

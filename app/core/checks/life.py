@@ -45,12 +45,12 @@ class Life(Check):
         return app.required_life_years is not None and motion.has_duty(app)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        unrated = np.isnan(q.life_years_min)
+        unrated = np.isnan(q.life.life_years_min)
         worn = ~np.isnan(t.wear_rate_m2_n)  # the wear-life check judges these
         required = same(t, app.required_life_years)
         # a ball nut has no rated travel: its L10 life is the ball-life check
         judged = ~(unrated & worn) & ~t.ball
-        return Measure(judged, required, q.life_years_min, flagged=unrated & ~worn & ~t.ball)
+        return Measure(judged, required, q.life.life_years_min, flagged=unrated & ~worn & ~t.ball)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -58,23 +58,23 @@ class Life(Check):
         return {
             "Y_req": app.required_life_years,
             "travel_min": t.life_min_m,
-            "wear_travel": np.where(np.isnan(q.wear_travel_m), np.inf, q.wear_travel_m),
+            "wear_travel": np.where(np.isnan(q.life.wear_travel_m), np.inf, q.life.wear_travel_m),
             "stroke": motion.equivalent_stroke(app),
             "cycles": motion.cycles_per_day(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        if np.isnan(r.life_years_min):
+        if np.isnan(r.life.life_years_min):
             return Phrase("No life rating is published for this series.")
         verb = "At least {years} rated" if passed else "Only {years} rated (low end)"
         values = {
-            "years": Amount(r.life_years_min, "years"),
+            "years": Amount(r.life.life_years_min, "years"),
             "required": Amount(app.required_life_years or 0.0, "years"),
             "seed": Amount(s.life_min_m or 0.0, "travel"),
-            "travel": Amount(r.life_travel_min_m, "travel"),
-            "thrust": Amount(r.wear_force_n, "force"),
+            "travel": Amount(r.life.life_travel_min_m, "travel"),
+            "thrust": Amount(r.life.wear_force_n, "force"),
         }
-        if r.life_travel_min_m < (s.life_min_m or 0.0):
+        if r.life.life_travel_min_m < (s.life_min_m or 0.0):
             return Phrase(
                 verb + ", {required} required: the seed's {seed} of travel, cut to {travel} "
                 "by the nut's wear at the cycle's wear thrust of {thrust} (Archard's law, "
@@ -84,7 +84,7 @@ class Life(Check):
         return Phrase(verb + ", {required} required (the seed's {seed} of travel).", values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        if np.isnan(r.life_years_min):
+        if np.isnan(r.life.life_years_min):
             return Phrase("Choose a series whose life is rated.")
         return Phrase(
             "Choose a variant or series with a longer rated life, or shorten the stroke or "

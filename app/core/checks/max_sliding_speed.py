@@ -34,14 +34,14 @@ class MaxSlidingSpeed(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         capacity = t.max_sliding_speed_m_s
-        speed = q.sliding_speed_m_s
+        speed = q.nut.sliding_speed_m_s
         return Measure(where_given(capacity) & where_given(speed), speed, capacity)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "n": q.rpm,
+            "n": q.axis.rpm,
             "lead": t.lead_m,
             "d_2": t.flank_pitch_diameter_m,
             "v_nut": t.max_sliding_speed_m_s,
@@ -52,7 +52,7 @@ class MaxSlidingSpeed(Check):
         return Phrase(
             "The flank sliding speed {v} " + verb + " the nut material's maximum {cap}.",
             {
-                "v": Amount(r.sliding_speed_m_s, "speed"),
+                "v": Amount(r.nut.sliding_speed_m_s, "speed"),
                 "cap": Amount(s.max_sliding_speed_m_s or 0.0, "speed"),
             },
         )
@@ -61,7 +61,7 @@ class MaxSlidingSpeed(Check):
         """The linear speed at which the sliding speed meets the maximum (proportional to
         the speed reached, the triangle's peak on a short stroke)."""
         speed = motion.reached_speed(app)
-        return speed * (s.max_sliding_speed_m_s or 0.0) / r.sliding_speed_m_s
+        return speed * (s.max_sliding_speed_m_s or 0.0) / r.nut.sliding_speed_m_s
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(

@@ -68,15 +68,15 @@ def supply_too_low(app: Application) -> bool:
 def worst_segment(app: Application, r: Quantities[float]) -> str:
     """The segment that uses the most of the curve, in words ("accelerate up")."""
     p = motion.move_profile(app)
-    if p is None or r.motor_worst_segment < 0:
+    if p is None or r.motor.motor_worst_segment < 0:
         return "move at the top speed"
-    return motion.segment_labels(app)[int(r.motor_worst_segment)]
+    return motion.segment_labels(app)[int(r.motor.motor_worst_segment)]
 
 
 def accel_that_fits(r: Quantities[float]) -> float | None:
     """The acceleration at which the accelerate segment fits the curve, when that segment
-    governs [m/s^2] (``Quantities.motor_fitting_accel_m_s2``; None: none fits)."""
-    accel = r.motor_fitting_accel_m_s2
+    governs [m/s^2] (``Quantities.motor.motor_fitting_accel_m_s2``; None: none fits)."""
+    accel = r.motor.motor_fitting_accel_m_s2
     return None if math.isnan(accel) else accel
 
 
@@ -114,15 +114,15 @@ class MotorCurve(Check):
         return bool(app.motor_curve)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.motor_worst_needed_nm, q.motor_curve_nm)
+        return Measure(everywhere(t), q.motor.motor_worst_needed_nm, q.motor.motor_curve_nm)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
             "SF": app.torque_safety_factor,
-            "T_seg": q.motor_worst_nm,
-            "T_curve": q.motor_curve_nm * segments.curve_margin(app),
+            "T_seg": q.motor.motor_worst_nm,
+            "T_curve": q.motor.motor_curve_nm * segments.curve_margin(app),
             "M": segments.curve_margin(app),
         }
 
@@ -130,23 +130,23 @@ class MotorCurve(Check):
         verb = "is within" if passed else "exceeds"
         values: dict[str, Amount | str] = {
             "segment": worst_segment(app, r),
-            "need": Amount(r.motor_worst_needed_nm, "torque"),
-            "rpm": Amount(r.motor_worst_rpm, "rpm"),
-            "curve": Amount(r.motor_curve_nm, "torque"),
+            "need": Amount(r.motor.motor_worst_needed_nm, "torque"),
+            "rpm": Amount(r.motor.motor_worst_rpm, "rpm"),
+            "curve": Amount(r.motor.motor_curve_nm, "torque"),
         }
         text = "The {segment} segment needs {need} at {rpm}, which " + verb + " the motor's "
         margin = segments.curve_margin(app)
         if app.step_angle_deg is None:
             return Phrase(text + "{curve} there.", values)
-        values["pull_out"] = Amount(r.motor_curve_nm * margin, "torque")
+        values["pull_out"] = Amount(r.motor.motor_curve_nm * margin, "torque")
         values["margin"] = f"{margin:g}"
         text += (
             "usable {curve} there: its pull-out {pull_out} over the stepper torque margin "
             "{margin}." + DATASHEET_NOTE
         )
         limit = model_range_rpm(app)
-        if limit is not None and r.peak_rpm > limit:
-            values["peak"] = Amount(r.peak_rpm, "rpm")
+        if limit is not None and r.motor.peak_rpm > limit:
+            values["peak"] = Amount(r.motor.peak_rpm, "rpm")
             values["limit"] = Amount(limit, "rpm")
             text += BEYOND_RANGE_NOTE
         if supply_too_low(app):
@@ -158,9 +158,9 @@ class MotorCurve(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         values: dict[str, Amount | str] = {
-            "short": Amount(r.motor_worst_needed_nm - r.motor_curve_nm, "torque"),
-            "need": Amount(at_least(r.motor_worst_needed_nm), "torque"),
-            "rpm": Amount(r.motor_worst_rpm, "rpm"),
+            "short": Amount(r.motor.motor_worst_needed_nm - r.motor.motor_curve_nm, "torque"),
+            "need": Amount(at_least(r.motor.motor_worst_needed_nm), "torque"),
+            "rpm": Amount(r.motor.motor_worst_rpm, "rpm"),
             "segment": worst_segment(app, r),
         }
         accel = accel_that_fits(r)

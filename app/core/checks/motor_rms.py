@@ -36,14 +36,14 @@ class MotorRms(Check):
         return app.motor_rms_torque_nm is not None and (app.stroke_m is not None or bool(app.moves))
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.motor_rms_needed_nm, same(t, app.motor_rms_torque_nm))
+        return Measure(everywhere(t), q.motor.motor_rms_needed_nm, same(t, app.motor_rms_torque_nm))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
             "SF": app.torque_safety_factor,
-            "T_rms": q.motor_rms_nm,
+            "T_rms": q.motor.motor_rms_nm,
             "T_continuous": app.motor_rms_torque_nm,
         }
 
@@ -52,7 +52,7 @@ class MotorRms(Check):
         return Phrase(
             "The cycle's RMS torque {need} " + verb + " the motor's continuous {rating}.",
             {
-                "need": Amount(r.motor_rms_needed_nm, "torque"),
+                "need": Amount(r.motor.motor_rms_needed_nm, "torque"),
                 "rating": Amount(app.motor_rms_torque_nm or 0.0, "torque"),
             },
         )
@@ -61,5 +61,5 @@ class MotorRms(Check):
         return Phrase(
             "A motor rated for at least {need} continuous, or a longer dwell, lower "
             "acceleration or load." + MARGIN_NOTE,
-            {"need": Amount(at_least(r.motor_rms_needed_nm), "torque")},
+            {"need": Amount(at_least(r.motor.motor_rms_needed_nm), "torque")},
         )

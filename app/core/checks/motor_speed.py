@@ -43,13 +43,13 @@ class MotorSpeed(Check):
         return bool(app.motor_curve)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.peak_rpm, same(t, top_curve_rpm(app)))
+        return Measure(everywhere(t), q.motor.peak_rpm, same(t, top_curve_rpm(app)))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "v_peak": geometry.linear_speed(q.peak_rpm, t.lead_m),
+            "v_peak": geometry.linear_speed(q.motor.peak_rpm, t.lead_m),
             "lead": t.lead_m,
             "n_curve_max": top_curve_rpm(app),
         }
@@ -58,7 +58,7 @@ class MotorSpeed(Check):
         verb = "is within" if passed else "exceeds"
         return Phrase(
             "The top speed {rpm} " + verb + " the motor curve's last point, {top}.",
-            {"rpm": Amount(r.peak_rpm, "rpm"), "top": Amount(top_curve_rpm(app), "rpm")},
+            {"rpm": Amount(r.motor.peak_rpm, "rpm"), "top": Amount(top_curve_rpm(app), "rpm")},
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
@@ -69,7 +69,9 @@ class MotorSpeed(Check):
                 "speed": Amount(
                     at_most(geometry.linear_speed(top_curve_rpm(app), s.lead_m)), "speed"
                 ),
-                "lead": Amount(at_least(r.peak_rpm * s.lead_m / top_curve_rpm(app)), "length"),
+                "lead": Amount(
+                    at_least(r.motor.peak_rpm * s.lead_m / top_curve_rpm(app)), "length"
+                ),
             },
         )
 

@@ -57,21 +57,21 @@ class NutHeat(Check):
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         room = headroom(app, t)
         # a ball nut rolls: no sliding-friction heat balance
-        applicable = where_given(q.nut_temperature_rise_k) & where_given(room) & ~t.ball
-        return Measure(applicable, q.nut_temperature_rise_k, room)
+        applicable = where_given(q.heat.nut_temperature_rise_k) & where_given(room) & ~t.ball
+        return Measure(applicable, q.heat.nut_temperature_rise_k, room)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F": q.force_n,
-            "v": q.heat_speed_m_s,
+            "F": q.axis.force_n,
+            "v": q.heat.heat_speed_m_s,
             "eta": t.efficiency,
             "h": heat.FREE_CONVECTION_W_M2_K,
             "d_3": t.root_diameter_m,
             "k": t.thermal_conductivity_w_m_k,
             "D_nut": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
-            "L_nut": q.nut_length_m,
+            "L_nut": q.nut.nut_length_m,
             "T_max": t.temperature_max_c,
             "T_ambient": app.ambient_c,
         }
@@ -82,9 +82,9 @@ class NutHeat(Check):
             "Friction turns {power} into heat: the nut runs {rise} above the ambient, at "
             "{nut}, " + verb + " its rated {limit}.",
             {
-                "power": Amount(r.friction_power_w, "power"),
-                "rise": Amount(r.nut_temperature_rise_k, "temperature_rise"),
-                "nut": Amount(app.ambient_c + r.nut_temperature_rise_k, "temperature"),
+                "power": Amount(r.heat.friction_power_w, "power"),
+                "rise": Amount(r.heat.nut_temperature_rise_k, "temperature_rise"),
+                "nut": Amount(app.ambient_c + r.heat.nut_temperature_rise_k, "temperature"),
                 "limit": Amount(s.temperature_max_c or 0.0, "temperature"),
             },
         )

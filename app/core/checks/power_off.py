@@ -47,7 +47,7 @@ class HoldingPowerOff(Check):
         )
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.brake_needed_nm, same(t, app.detent_torque_nm))
+        return Measure(everywhere(t), q.holding.brake_needed_nm, same(t, app.detent_torque_nm))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -55,7 +55,7 @@ class HoldingPowerOff(Check):
         return {**needed_symbols(app, t, q), "T_detent": app.detent_torque_nm}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        if r.locks_with_margin:
+        if r.holding.locks_with_margin:
             return Phrase("Self-locking with margin: the load stays put with the power off.")
         detent = app.detent_torque_nm or 0.0
         return holding_phrase(app, r, detent, passed, "with the power off (detent torque)")

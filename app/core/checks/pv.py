@@ -47,21 +47,21 @@ class NutPV(Check):
     capacity_sources = ("pv_limit",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(t.pv_limit_pa_m_s), q.pv_pa_m_s, q.pv_limit_pa_m_s)
+        return Measure(where_given(t.pv_limit_pa_m_s), q.nut.pv_pa_m_s, q.nut.pv_limit_pa_m_s)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_peak": q.peak_force_n,
+            "F_peak": q.axis.peak_force_n,
             "H_T": t.helix_travel_m,
             "h": t.thread_depth_m,
-            "n": q.rpm,
+            "n": q.axis.rpm,
             "PV_nut": t.pv_limit_pa_m_s,
             "T_ambient": np.full(len(t), app.ambient_c),
             "T_max": t.temperature_max_c,
-            "f_T": q.pv_temperature_factor,
-            "f_lub": q.pv_lubrication_factor,
+            "f_T": q.nut.pv_temperature_factor,
+            "f_lub": q.nut.pv_lubrication_factor,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
@@ -70,31 +70,31 @@ class NutPV(Check):
             "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}: its rating "
             "{rating} {derated}.",
             {
-                "pv": Amount(r.pv_pa_m_s, "pv"),
-                "limit": Amount(r.pv_limit_pa_m_s, "pv"),
+                "pv": Amount(r.nut.pv_pa_m_s, "pv"),
+                "limit": Amount(r.nut.pv_limit_pa_m_s, "pv"),
                 "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
                 "derated": derating(app, s, r),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        if not r.pv_limit_pa_m_s > 0:  # derated to nothing: no load or speed is within it
+        if not r.nut.pv_limit_pa_m_s > 0:  # derated to nothing: no load or speed is within it
             return no_pv_left(app, r)
         return Phrase(
             "At this speed the load may be at most {load}; at this load the speed may be at "
             "most {speed}." + MARGIN_NOTE,
             {
-                "load": Amount(at_most(r.pv_max_load_n), "force"),
-                "speed": Amount(at_most(r.pv_max_speed_m_s), "speed"),
+                "load": Amount(at_most(r.nut.pv_max_load_n), "force"),
+                "speed": Amount(at_most(r.nut.pv_max_speed_m_s), "speed"),
             },
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        if not r.pv_limit_pa_m_s > 0:
+        if not r.nut.pv_limit_pa_m_s > 0:
             return {}
-        return {**load_input(app, r.pv_max_load_n), "speed_m_s": r.pv_max_speed_m_s}
+        return {**load_input(app, r.nut.pv_max_load_n), "speed_m_s": r.nut.pv_max_speed_m_s}
 
 
 def no_pv_left(app: Application, r: Quantities[float]) -> Phrase:
@@ -112,9 +112,9 @@ def derating(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
     it is read from, and the lubrication factor, with its provenance and source."""
     _, kind, source = pv_derating.LUBRICATION_FACTORS[app.lubrication]
     values: dict[str, Amount | str] = {
-        "f_t": f"{r.pv_temperature_factor:.2f}",
+        "f_t": f"{r.nut.pv_temperature_factor:.2f}",
         "temp": Amount(app.ambient_c, "temperature"),
-        "f_lub": f"{r.pv_lubrication_factor:.2f}",
+        "f_lub": f"{r.nut.pv_lubrication_factor:.2f}",
         "lub": f"{app.lubrication}, {kind}: {source}",
     }
     line = ""

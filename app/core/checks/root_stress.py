@@ -45,15 +45,15 @@ class RootStress(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         allowed = app.buckling_safety_factor * t.yield_strength_pa
-        return Measure(where_given(allowed), q.root_stress_pa, allowed)
+        return Measure(where_given(allowed), q.column.root_stress_pa, allowed)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_peak": q.peak_force_n,
+            "F_peak": q.axis.peak_force_n,
             "d_r": t.root_diameter_m,
-            "T_root": q.root_torque_nm,
+            "T_root": q.column.root_torque_nm,
             "SF": app.buckling_safety_factor,
             "S_y": t.yield_strength_pa,
         }
@@ -65,10 +65,10 @@ class RootStress(Check):
             "{tau} shear from the {torque} the screw carries with it) " + verb + " {allowed} "
             "({sf} x yield {s_y}).",
             {
-                "stress": Amount(r.root_stress_pa, "pressure"),
-                "sigma": Amount(r.root_axial_stress_pa, "pressure"),
-                "tau": Amount(r.root_shear_stress_pa, "pressure"),
-                "torque": Amount(r.root_torque_nm, "torque"),
+                "stress": Amount(r.column.root_stress_pa, "pressure"),
+                "sigma": Amount(r.column.root_axial_stress_pa, "pressure"),
+                "tau": Amount(r.column.root_shear_stress_pa, "pressure"),
+                "torque": Amount(r.column.root_torque_nm, "torque"),
                 "allowed": Amount(_allowed(app, s), "pressure"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
                 "s_y": Amount(s.yield_strength_pa or 0.0, "pressure"),
@@ -76,7 +76,7 @@ class RootStress(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        d_min = at_least(s.root_diameter_m * (r.root_stress_pa / _allowed(app, s)) ** 0.5)
+        d_min = at_least(s.root_diameter_m * (r.column.root_stress_pa / _allowed(app, s)) ** 0.5)
         if d_min > reach.max_root_diameter_m:
             return Phrase("Reduce the load or the moving mass's acceleration.")
         return Phrase(
@@ -87,11 +87,11 @@ class RootStress(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        if not r.peak_force_n > 0.0:
+        if not r.axis.peak_force_n > 0.0:
             return {}
         # T_root = a F + b: the thread's torque grows with the thrust, drag and inertia not
-        fixed_nm = r.drag_nm + abs(r.inertia_screw_nm)
-        per_n = (r.root_torque_nm - fixed_nm) / r.peak_force_n
+        fixed_nm = r.torque.drag_nm + abs(r.torque.inertia_screw_nm)
+        per_n = (r.column.root_torque_nm - fixed_nm) / r.axis.peak_force_n
         allowed_n = buckling.largest_root_load(_allowed(app, s), s.root_diameter_m, per_n, fixed_nm)
         return load_input(app, allowed_n)
 

@@ -41,13 +41,13 @@ class StepRate(Check):
         return app.step_angle_deg is not None and app.max_step_rate_hz is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.step_rate_hz, same(t, app.max_step_rate_hz))
+        return Measure(everywhere(t), q.motor.step_rate_hz, same(t, app.max_step_rate_hz))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "n_peak": q.peak_rpm,
+            "n_peak": q.motor.peak_rpm,
             "step_angle": app.step_angle_deg,
             "microsteps": app.microsteps,
             "f_ctrl": app.max_step_rate_hz,
@@ -60,8 +60,8 @@ class StepRate(Check):
             "controller's {limit}.",
             {
                 "steps": f"{steps_per_rev(app):g}",
-                "rpm": Amount(r.peak_rpm, "rpm"),
-                "rate": Amount(r.step_rate_hz, "frequency"),
+                "rpm": Amount(r.motor.peak_rpm, "rpm"),
+                "rate": Amount(r.motor.step_rate_hz, "frequency"),
                 "limit": Amount(app.max_step_rate_hz or 0.0, "frequency"),
             },
         )

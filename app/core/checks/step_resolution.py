@@ -33,7 +33,9 @@ class StepResolution(Check):
         return app.step_angle_deg is not None and app.positioning_tolerance_m is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.step_resolution_m, same(t, app.positioning_tolerance_m))
+        return Measure(
+            everywhere(t), q.motor.step_resolution_m, same(t, app.positioning_tolerance_m)
+        )
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -55,7 +57,7 @@ class StepResolution(Check):
             {
                 "per_rev": f"{per_rev:g}",
                 "lead": Amount(s.lead_m, "length"),
-                "delta": Amount(r.step_resolution_m, "length"),
+                "delta": Amount(r.motor.step_resolution_m, "length"),
                 "tol": Amount(app.positioning_tolerance_m or 0.0, "length"),
             },
         )

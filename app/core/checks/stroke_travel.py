@@ -42,13 +42,13 @@ class StrokeTravel(Check):
         return app.stroke_m is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        total = (app.stroke_m or 0.0) + q.nut_length_m
-        return Measure(where_given(q.nut_length_m), total, same(t, app.length_m))
+        total = (app.stroke_m or 0.0) + q.nut.nut_length_m
+        return Measure(where_given(q.nut.nut_length_m), total, same(t, app.length_m))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"stroke": app.stroke_m, "L_nut": q.nut_length_m, "L_screw": app.length_m}
+        return {"stroke": app.stroke_m, "L_nut": q.nut.nut_length_m, "L_screw": app.length_m}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "fit within" if passed else "exceed"
@@ -56,14 +56,14 @@ class StrokeTravel(Check):
             "The stroke {s} and the nut {nut} " + verb + " the screw length {L}.",
             {
                 "s": Amount(app.stroke_m or 0.0, "length"),
-                "nut": Amount(r.nut_length_m, "length"),
+                "nut": Amount(r.nut.nut_length_m, "length"),
                 "L": Amount(app.length_m, "length"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        longer = {"L": Amount(at_least((app.stroke_m or 0.0) + r.nut_length_m), "length")}
-        room = app.length_m - r.nut_length_m
+        longer = {"L": Amount(at_least((app.stroke_m or 0.0) + r.nut.nut_length_m), "length")}
+        room = app.length_m - r.nut.nut_length_m
         if room <= 0.0:
             return Phrase("Lengthen the screw to at least {L}." + MARGIN_NOTE, longer)
         return Phrase(
@@ -75,4 +75,4 @@ class StrokeTravel(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return {"length_m": (app.stroke_m or 0.0) + r.nut_length_m}
+        return {"length_m": (app.stroke_m or 0.0) + r.nut.nut_length_m}

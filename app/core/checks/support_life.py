@@ -49,7 +49,7 @@ class SupportLife(Check):
         return bool(duty and app.support_dynamic_n is not None)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        life = q.support_life_years
+        life = q.support.support_life_years
         return Measure(where_given(life), same(t, app.required_life_years), life)
 
     def symbols(
@@ -58,7 +58,7 @@ class SupportLife(Check):
         return {
             "Y_req": app.required_life_years,
             "C_a": app.support_dynamic_n,
-            "F_m": q.support_mean_load_n,
+            "F_m": q.support.support_mean_load_n,
             "lead": t.lead_m,
             "stroke": motion.equivalent_stroke(app),
             "cycles": app.cycles_per_day,
@@ -70,17 +70,17 @@ class SupportLife(Check):
             "The thrust bearing's L10 life {years} " + verb + " the {required} required: "
             "dynamic axial rating {ca} ({source}) under the cycle's cube-mean thrust {fm}.",
             {
-                "years": Amount(r.support_life_years, "years"),
+                "years": Amount(r.support.support_life_years, "years"),
                 "required": Amount(app.required_life_years or 0.0, "years"),
                 "ca": Amount(app.support_dynamic_n or 0.0, "force"),
                 "source": rating_source(app),
-                "fm": Amount(r.support_mean_load_n, "force"),
+                "fm": Amount(r.support.support_mean_load_n, "force"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         # L10 grows as Ca^3: the rating that gives the required life
-        ratio = (app.required_life_years or 0.0) / r.support_life_years
+        ratio = (app.required_life_years or 0.0) / r.support.support_life_years
         needed = (app.support_dynamic_n or 0.0) * ratio ** (1.0 / 3.0)
         return Phrase(
             "A thrust bearing with a dynamic axial rating of at least {ca}, a longer lead "

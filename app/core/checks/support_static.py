@@ -51,13 +51,13 @@ class SupportStatic(Check):
         return app.support_static_n is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.peak_force_n, q.support_allowed_n)
+        return Measure(everywhere(t), q.axis.peak_force_n, q.support.support_allowed_n)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_peak": q.peak_force_n,
+            "F_peak": q.axis.peak_force_n,
             "C0a": app.support_static_n,
             "fs": app.support_static_safety_factor,
         }
@@ -68,8 +68,8 @@ class SupportStatic(Check):
             "Peak thrust {f} on the thrust bearing " + verb + " its allowed {allowed}: static "
             "axial rating {c0a} ({source}) / static safety factor {fs}.",
             {
-                "f": Amount(r.peak_force_n, "force"),
-                "allowed": Amount(r.support_allowed_n, "force"),
+                "f": Amount(r.axis.peak_force_n, "force"),
+                "allowed": Amount(r.support.support_allowed_n, "force"),
                 "c0a": Amount(app.support_static_n or 0.0, "force"),
                 "source": rating_source(app),
                 "fs": Amount(app.support_static_safety_factor, "factor"),
@@ -81,12 +81,14 @@ class SupportStatic(Check):
             "A thrust bearing with a static axial rating of at least {c0a}, or a peak thrust "
             "of at most {cap} (a lower load, acceleration or moving mass)." + MARGIN_NOTE,
             {
-                "c0a": Amount(at_least(r.peak_force_n * app.support_static_safety_factor), "force"),
-                "cap": Amount(at_most(r.support_allowed_n), "force"),
+                "c0a": Amount(
+                    at_least(r.axis.peak_force_n * app.support_static_safety_factor), "force"
+                ),
+                "cap": Amount(at_most(r.support.support_allowed_n), "force"),
             },
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return load_input(app, r.support_allowed_n)
+        return load_input(app, r.support.support_allowed_n)

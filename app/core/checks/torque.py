@@ -44,7 +44,7 @@ class DriveTorque(Check):
         return app.max_torque_nm is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.required_nm, same(t, app.max_torque_nm))
+        return Measure(everywhere(t), q.torque.required_nm, same(t, app.max_torque_nm))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -52,7 +52,7 @@ class DriveTorque(Check):
         return {
             "SF": app.torque_safety_factor,
             "T_move": np.max([np.abs(m[3]) for m in segments.moving_torques(app, t)], axis=0),
-            "T_breakaway": q.breakaway_nm,
+            "T_breakaway": q.torque.breakaway_nm,
             "T_drive": app.max_torque_nm,
         }
 
@@ -60,12 +60,15 @@ class DriveTorque(Check):
         verb = "is within" if passed else "exceeds"
         return Phrase(
             "{req} required " + verb + " the {avail} available.",
-            {"req": Amount(r.required_nm, "torque"), "avail": Amount(app.max_torque_nm, "torque")},
+            {
+                "req": Amount(r.torque.required_nm, "torque"),
+                "avail": Amount(app.max_torque_nm, "torque"),
+            },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "A drive of at least {req}, or a shorter lead, lower load or acceleration."
             + MARGIN_NOTE,
-            {"req": Amount(at_least(r.required_nm), "torque")},
+            {"req": Amount(at_least(r.torque.required_nm), "torque")},
         )

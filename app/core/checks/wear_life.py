@@ -68,18 +68,20 @@ class WearLife(Check):
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         required = same(t, app.required_life_years)
         unrated = np.isnan(t.life_min_m)  # the life check judges a rated nut's wear
-        return Measure(where_given(q.wear_life_years) & unrated, required, q.wear_life_years)
+        return Measure(
+            where_given(q.life.wear_life_years) & unrated, required, q.life.wear_life_years
+        )
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        flanks = ~np.isnan(q.flank_area_m2)
+        flanks = ~np.isnan(q.nut.flank_area_m2)
         return {
             "Y_req": app.required_life_years,
             "f_w": t.allowed_wear_fraction,
             "H": np.where(flanks, t.flank_height_m, t.thread_depth_m),
             "k": t.wear_rate_m2_n,
-            "p": q.wear_force_n / np.where(flanks, q.flank_area_m2, q.contact_area_m2),
+            "p": q.life.wear_force_n / np.where(flanks, q.nut.flank_area_m2, q.nut.contact_area_m2),
             "helix": np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m),
             "lead": t.lead_m,
             "stroke": motion.equivalent_stroke(app),
@@ -87,7 +89,7 @@ class WearLife(Check):
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        low_m, high_m = (r.wear_travel_m * share for share in life_band(s))
+        low_m, high_m = (r.life.wear_travel_m * share for share in life_band(s))
         cycle_m = 2.0 * (motion.equivalent_stroke(app) or 0.0)
         verb = "meets" if passed else "falls short of"
         return Phrase(
@@ -96,12 +98,12 @@ class WearLife(Check):
             + verb
             + " the {required} required.",
             {
-                "travel": Amount(r.wear_travel_m, "travel"),
-                "thrust": Amount(r.wear_force_n, "force"),
+                "travel": Amount(r.life.wear_travel_m, "travel"),
+                "thrust": Amount(r.life.wear_force_n, "force"),
                 "low": Amount(low_m, "travel"),
                 "high": Amount(high_m, "travel"),
-                "cycles": figures(r.wear_travel_m / cycle_m, digits_below=15),
-                "years": Amount(r.wear_life_years, "years"),
+                "cycles": figures(r.life.wear_travel_m / cycle_m, digits_below=15),
+                "years": Amount(r.life.wear_life_years, "years"),
                 "required": Amount(app.required_life_years or 0.0, "years"),
             },
         )
@@ -119,7 +121,9 @@ class WearLife(Check):
     ) -> Mapping[str, float] | None:
         # the life is inversely proportional to the cycle's wear thrust
         years = app.required_life_years
-        if not years or not np.isfinite(r.wear_life_years):
+        if not years or not np.isfinite(r.life.wear_life_years):
             return None
-        load_n = motion.largest_load_for_wear(app, r.wear_force_n * r.wear_life_years / years)
+        load_n = motion.largest_load_for_wear(
+            app, r.life.wear_force_n * r.life.wear_life_years / years
+        )
         return None if load_n is None else {"load_n": load_n}
