@@ -1,6 +1,6 @@
 """The production setup run on this machine: app processes as ``leadscrew-selector``
 starts them, nginx from ``nginx.conf.template`` in front of them, and a slow-header flood
-against it. The deploy tests (tests/test_deploy.py) and the hostile-load bench
+against it. The deploy tests (tests/deploy/test_deploy.py) and the hostile-load bench
 (bench/hostile.py) both drive it from here.
 """
 

@@ -198,7 +198,8 @@ def _variants(layer: Layer) -> dict[str, Mapping[str, Any]]:
 
 
 def build_family(layer: Layer) -> Family:
-    """A family from its file's layer merged over its group (``files.resolve_layer``)."""
+    """A family from its file's layer merged over its group's (``groups.Groups.base_of``,
+    ``files.over``)."""
     entry = Entry(layer.file, "family", layer.family)
     entry.check_known(DECLARATIONS)
     family_id = entry.plain_text("id")
