@@ -3,7 +3,8 @@ whose nut is rated by its wear rate, the life in years of the duty (or the trave
 or in miles with inches, without a duty) at wear thrusts (the cycle's,
 ``motion.wear_thrust``) from a quarter to four times the axis's, with the band of the
 wear rate's scatter shaded. Archard's life is inversely proportional to the thrust, so the
-core's one number per candidate gives the whole line."""
+core's one number per candidate gives the whole line. Screws whose lines coincide share
+one line, named for all of them."""
 
 from collections.abc import Sequence
 from typing import Any
@@ -38,13 +39,24 @@ def _traces(
     ]
 
 
-def life_figure(wear: Sequence[WearLine], in_years: bool, d: Display) -> dict[str, Any] | None:
-    """Life against thrust for the wear lines; None when there is none."""
-    data: list[dict[str, Any]] = []
+def distinct_lines(wear: Sequence[WearLine]) -> list[tuple[str, WearLine]]:
+    """Each distinct line of ``wear`` once, in order, with the ids of every screw it
+    stands for joined (the same nut in two series or coatings wears alike: drawn apart,
+    one line would hide the other under it)."""
+    lines: dict[tuple[float, float, tuple[float, float]], tuple[WearLine, list[str]]] = {}
     for line in wear:
+        lines.setdefault((line.life, line.force_n, line.band), (line, []))[1].append(line.id)
+    return [(", ".join(ids), line) for line, ids in lines.values()]
+
+
+def life_figure(wear: Sequence[WearLine], in_years: bool, d: Display) -> dict[str, Any] | None:
+    """Life against thrust for the wear lines, each distinct line once
+    (``distinct_lines``); None when there is none."""
+    data: list[dict[str, Any]] = []
+    for name, line in distinct_lines(wear):
         colour = PALETTE[len(data) // 3 % len(PALETTE)]
         life = line.life if in_years else d.value(line.life, "travel")
-        traces = _traces(line.id, life, line.force_n, line.band, d)
+        traces = _traces(name, life, line.force_n, line.band, d)
         traces[1]["fillcolor"] = colour + "33"
         traces[2]["line"]["color"] = colour
         data += traces

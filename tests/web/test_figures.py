@@ -11,9 +11,11 @@ from app.catalog import Catalog
 from app.contract.outputs import SelectOut
 from app.contract.schemas import ApplicationIn
 from app.core.formulas.critical_speed import critical_speed_rpm
+from app.report.charts import chart_data
 from app.report.service import run_selection
 from app.web.curves import TOP
 from app.web.figures import chart_candidates, result_figures
+from app.web.life_figures import LIFE_TOP
 from tests.leadscrews import leadscrew_families
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
@@ -352,3 +354,21 @@ def test_a_library_motor_draws_its_model_curve(catalog: Catalog) -> None:
     assert usable["name"] == "Usable (pull-out / 1.5)"
     assert usable["x"] == curve["x"]
     assert usable["y"] == pytest.approx([t / 1.5 for t in curve["y"]])
+
+
+def test_screws_whose_wear_lines_coincide_share_one_line(catalog: Catalog) -> None:
+    """At lead 10 mm the top wear-rated nuts include the same nut in several series (one
+    life, one band): each distinct line is drawn once, named for every screw it stands
+    for, so no line hides another and every wear-rated top screw is named."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}
+    )
+    result = run_selection(inputs, catalog)
+    ids = [c.id for c in chart_candidates(result)[0]]
+    wear = {w.id: (w.life, w.band) for w in chart_data(inputs, catalog, ids, LIFE_TOP).wear}
+    data = result_figures(result, METRIC, catalog)["life"]["data"]
+    named = [t["name"].split(", ") for t in data if t.get("showlegend", True)]
+    assert sorted(i for group in named for i in group) == sorted(wear)
+    assert any(len(group) > 1 for group in named)  # this query's top nuts do coincide
+    assert all({wear[i] for i in group} == {wear[group[0]]} for group in named)
+    assert len({wear[group[0]] for group in named}) == len(named)  # none drawn twice
