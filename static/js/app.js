@@ -218,9 +218,10 @@
   // shown count as a submission, as does a page the server answered with errors): the
   // first keystroke in an empty form says nothing under the fields not yet reached. Each
   // error line keeps the server's message in data-error and shows it only then; its space
-  // is reserved (app.css), so no field moves when a message appears or clears.
+  // is reserved (app.css), so no field moves when a message appears or clears. The same
+  // holds for the custom screw's form (one of the two is on a page).
   function selectorForm() {
-    return document.getElementById("selector");
+    return document.getElementById("selector") || document.getElementById("custom");
   }
 
   function isTouched(form, name) {

@@ -115,7 +115,10 @@ def typing(page: Any, base: str) -> None:
 
 
 def custom_error(page: Any, base: str) -> None:
+    """The root diameter retyped above the outer: its inline error, results kept dimmed
+    (typed once the results and their charts have arrived, as on the selector)."""
     page.goto(f"{base}/custom?{SCREW}")
+    settle(page)
     page.fill("#f-root_diameter_mm", "12")
     page.wait_for_function(
         "() => document.querySelector('#e-root_diameter_mm').textContent.trim() !== ''"

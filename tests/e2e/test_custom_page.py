@@ -1,5 +1,6 @@
 """The page of one's own screw and the catalog in real Chromium: typing a screw, its
-results and charts, its share link in a fresh page, inline errors, the phone width."""
+results and charts, its share link in a fresh page, inline errors (shown under the fields
+left, as on the selector), the phone width."""
 
 from typing import Any
 
@@ -76,3 +77,35 @@ def test_catalog_fits_a_phone_without_sideways_scrolling(browser: Any, live_serv
     phone.wait_for_selector("details#ZBX8000 table.series-fields")  # loaded when opened
     assert phone.evaluate("() => document.scrollingElement.scrollWidth") <= 390
     context.close()
+
+
+#: the custom form's error lines showing a message: id -> text
+SHOWN = """() => Object.fromEntries([...document.querySelectorAll('#custom span.error')]
+  .filter(s => s.textContent.trim()).map(s => [s.id, s.textContent]))"""
+
+
+def test_errors_show_under_fields_left_not_under_those_not_reached(
+    page: Any, live_server: str, console_errors: list[str]
+) -> None:
+    """As on the selector's form: the first keystroke says nothing under the fields not
+    yet reached, though the server's answer names them; a required field left empty
+    shows its error, and the others stay quiet until they are left too."""
+    page.goto(live_server + "/custom")
+    with page.expect_response(lambda r: "outer_diameter_mm=1" in r.url):
+        page.locator("#f-outer_diameter_mm").press_sequentially("1")
+    page.wait_for_function("() => !document.querySelector('#busy.htmx-request')")
+    listed = page.eval_on_selector_all(
+        "#field-errors [data-error-for]", "items => items.map(i => i.dataset.errorFor)"
+    )
+    assert {"root_diameter_mm", "lead_mm", "load", "speed", "length"} <= set(listed)
+    assert page.evaluate(SHOWN) == {}
+    assert page.locator("#custom [aria-invalid]").count() == 0
+    page.focus("#f-root_diameter_mm")
+    page.keyboard.press("Tab")
+    page.wait_for_function(
+        "() => document.querySelector('#e-root_diameter_mm').textContent.trim() !== ''"
+    )
+    assert list(page.evaluate(SHOWN)) == ["e-root_diameter_mm"]
+    assert page.get_attribute("#f-root_diameter_mm", "aria-invalid") == "true"
+    assert page.locator("#f-lead_mm[aria-invalid]").count() == 0
+    assert console_errors == []

@@ -118,11 +118,24 @@ def test_bad_text_and_own_material_errors_are_per_field(client: TestClient) -> N
 
 
 def test_htmx_request_gets_results_and_out_of_band_errors(client: TestClient) -> None:
+    """The errors of an answer come as one hidden out-of-band list of the fields in error,
+    as the selector's do (app.js shows each once its field has been left or the form
+    submitted), not as a swap per field."""
     response = client.get(f"/custom?{QUERY}", headers=HX)
     assert response.headers["HX-Push-Url"].startswith("/custom?")
-    assert soup(response.text).select_one("#e-root_diameter_mm[hx-swap-oob]") is not None
-    bad = client.get(f"/custom?{QUERY.replace('lead_mm=2', 'lead_mm=x')}", headers=HX)
+    page = soup(response.text)
+    assert page.select_one("#field-errors[hx-swap-oob][hidden]").select("[data-error-for]") == []
+    assert page.select("span.error[hx-swap-oob]") == []
+    query = QUERY.replace("lead_mm=2", "lead_mm=x").replace(
+        "root_diameter_mm=8", "root_diameter_mm=12"
+    )
+    bad = client.get(f"/custom?{query}", headers=HX)
     assert bad.headers["HX-Push-Url"] == "false"
+    listed = soup(bad.text).select("#field-errors[hx-swap-oob] [data-error-for]")
+    assert {item["data-error-for"]: item.text for item in listed} == {
+        "lead_mm": "Enter a number.",
+        "root_diameter_mm": "Must be smaller than outer diameter.",
+    }
 
 
 def test_the_screw_summary_names_each_value_by_its_label(client: TestClient) -> None:
