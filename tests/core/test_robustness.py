@@ -49,7 +49,7 @@ import pytest
 from app.catalog import Catalog
 from app.core.evaluate import evaluate
 from app.core.model import Application
-from app.core.robustness import build_variants
+from app.core.robustness import at_values, build_variants
 from app.core.selection import select, with_robustness
 from tests.leadscrews import leadscrew_families
 
@@ -103,3 +103,18 @@ def test_a_failing_screw_is_left_unjudged(catalog: Catalog) -> None:
     assert catalog.index.variants is not None
     judged = with_robustness(app, ev, catalog.index.variants, at)
     assert judged is ev and judged.robust is None and judged.hinges_on == ()
+
+
+def test_each_variant_is_its_screw_with_one_end_of_one_range(catalog: Catalog) -> None:
+    """Every variant row ``at_values`` builds for the catalog equals ``dataclasses.replace``
+    of its screw with that end's values, each changed value in place."""
+    count = 0
+    for screw in catalog.screws:
+        for ends in screw.assumption_ends.values():
+            for changes in ends:
+                if changes:
+                    variant = at_values(screw, changes)
+                    assert variant == replace(screw, **changes)
+                    assert all(getattr(variant, k) == v for k, v in changes.items())
+                    count += 1
+    assert count > 1000
