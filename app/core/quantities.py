@@ -187,7 +187,7 @@ class NutLoad(Generic[V]):
 
 
 @dataclass(slots=True)
-class Life(Generic[V]):
+class NutLife(Generic[V]):
     """How long the nut lasts (``nut.wear_life``, ``duty.duty``)."""
 
     #: The seed's rated travel, low end, at most the nut's wear travel at the cycle's wear
@@ -206,7 +206,7 @@ class Life(Generic[V]):
 
 
 @dataclass(slots=True)
-class Heat(Generic[V]):
+class NutHeat(Generic[V]):
     """The nut's heat balance (``duty.heat_balance``): the cycle's mean speed [m/s] (the
     top speed without a stroke), the thread's friction power at it [W], and the nut's
     steady rise over the ambient [K] (NaN: no heat balance)."""
@@ -217,7 +217,7 @@ class Heat(Generic[V]):
 
 
 @dataclass(slots=True)
-class Accuracy(Generic[V]):
+class TravelError(Generic[V]):
     """The travel's positioning error [m] (``duty.duty``): the lead error accumulated
     over the stroke and the screw's thermal growth."""
 
@@ -226,7 +226,7 @@ class Accuracy(Generic[V]):
 
 
 @dataclass(slots=True)
-class Holding(Generic[V]):
+class PowerOffHold(Generic[V]):
     """Holding the load with the power off (``holding.holding``)."""
 
     holding_seed_nm: V
@@ -310,10 +310,10 @@ class Quantities(Generic[V]):
     torque: Torques[V]
     column: ColumnLimits[V]
     nut: NutLoad[V]
-    life: Life[V]
-    heat: Heat[V]
-    accuracy: Accuracy[V]
-    holding: Holding[V]
+    life: NutLife[V]
+    heat: NutHeat[V]
+    accuracy: TravelError[V]
+    holding: PowerOffHold[V]
     motor: MotorPoint[V]
     support: SupportBearing[V]
     energy: CycleEnergy[V]
