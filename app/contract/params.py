@@ -15,10 +15,10 @@ of its inputs beside the share link (``api_query``).
 
 from collections.abc import Collection, Iterable, Mapping, Sequence
 from difflib import get_close_matches
-from urllib.parse import parse_qsl, urlencode
+from urllib.parse import parse_qsl
 
 from app.contract.fields import BY_API, BY_PAGE
-from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX, share_query
+from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX, encode_query, share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.move_table import ADD_MOVE, REMOVE_MOVE, is_cell
 from app.contract.units import DEFAULT_UNITS
@@ -90,7 +90,7 @@ def api_query(inputs: ApplicationIn, share: str | None = None) -> str:
         field = BY_PAGE[name]
         items = value.split(",") if field.kind == "list" else [value]
         pairs += [(field.api, item) for item in items]
-    return urlencode(pairs)
+    return encode_query(pairs)
 
 
 #: Where the API's routes are.
@@ -104,8 +104,8 @@ def api_url(
     share: str | None = None,
 ) -> str:
     """The API's GET of ``route`` for ``inputs`` and the route's own ``extra`` names
-    (``[("ids", "a,b")]``: ``&ids=a%2Cb``); ``share`` as ``api_query`` takes it."""
-    tail = f"&{urlencode(extra)}" if extra else ""
+    (``[("ids", "a,b")]``: ``&ids=a,b``); ``share`` as ``api_query`` takes it."""
+    tail = f"&{encode_query(extra)}" if extra else ""
     return f"{API_PREFIX}/{route}?{api_query(inputs, share)}{tail}"
 
 

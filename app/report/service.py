@@ -4,12 +4,11 @@ from collections.abc import Container, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 from typing import Any
-from urllib.parse import quote, urlencode
 
 from app.catalog import Catalog
 from app.catalog.axis_motor import CurveOrigin
 from app.contract.fields import FIELDS
-from app.contract.form import share_query
+from app.contract.form import encode_query, share_query
 from app.contract.outputs import CompareOut, EvaluateOut, FormulaOut, PageSelectionOut, SelectOut
 from app.contract.params import api_url
 from app.contract.schemas import ApplicationIn, CandidateOut
@@ -234,7 +233,7 @@ def evaluate_urls(
     a custom screw (its geometry has no query form in the API)."""
     if not isinstance(screw, CatalogScrewIn):
         return None, None
-    report = f"/report?{share_query(inputs, units)}&{urlencode([('id', screw.catalog_id)])}"
+    report = f"/report?{share_query(inputs, units)}&{encode_query([('id', screw.catalog_id)])}"
     return report, api_url("evaluate", inputs, [("catalog_id", screw.catalog_id)])
 
 
@@ -263,7 +262,7 @@ def compare_ids(raw: Sequence[str], known: Container[str]) -> list[str]:
 
 def compare_url(inputs: ApplicationIn, ids: Sequence[str], units: Mapping[str, str]) -> str:
     """The compare page's link: the share link's query and the ids, comma-separated."""
-    return f"/compare?{share_query(inputs, units)}&ids={quote(','.join(ids), safe=',')}"
+    return f"/compare?{share_query(inputs, units)}&{encode_query([('ids', ','.join(ids))])}"
 
 
 def run_compare(

@@ -8,14 +8,14 @@ screw for an upper axis and sizing again updates the axes below it.
 
 from collections.abc import Mapping
 from typing import Any
-from urllib.parse import parse_qsl, urlencode
+from urllib.parse import parse_qsl
 
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 from pydantic import ValidationError
 
 from app.catalog import Catalog
-from app.contract.form import parse_inputs
+from app.contract.form import encode_query, parse_inputs
 from app.contract.inputs import ApplicationIn
 from app.contract.machine import MAX_AXES, AxisIn, MachineIn
 from app.contract.params import unknown_parameters
@@ -89,7 +89,7 @@ def machine_query(params: Mapping[str, str], axes: list[Any], machine: Mapping[s
         pairs += [(f"{p}{i}", params.get(f"{p}{i}", "")) for p in AXIS_PARAMS[:-1]]
         c = next(chosen)["chosen"]
         pairs.append((f"choice{i}", "" if c is None else c["id"]))
-    return urlencode([(k, v) for k, v in pairs if v])
+    return encode_query([(k, v) for k, v in pairs if v])
 
 
 def machine_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:

@@ -12,13 +12,12 @@ needs no PDF library; the print stylesheet sizes every chart to the page.
 from collections.abc import Mapping
 from datetime import UTC, datetime
 from typing import Any
-from urllib.parse import urlencode
 
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
-from app.contract.form import share_query, summary_rows
+from app.contract.form import encode_query, share_query, summary_rows
 from app.contract.move_table import COLUMNS, shown_moves
 from app.contract.reported import REPORTED, show, value_of
 from app.contract.units import Display
@@ -68,7 +67,7 @@ def report_context(
         "charting_passed": bool(result.candidates),
         "query": query,
         "share_url": "/?" + query,
-        "report_link": f"{base_url.rstrip('/')}/report?{query}&{urlencode({'id': chosen.id})}",
+        "report_link": f"{base_url.rstrip('/')}/report?{query}&{encode_query({'id': chosen.id})}",
         "date": datetime.now(UTC).date().isoformat(),
         "catalog_version": catalog.version,
         "series_url": series_url(catalog.by_id[chosen.id].series_id),

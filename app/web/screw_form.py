@@ -14,13 +14,12 @@ from collections.abc import Container, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, get_args
-from urllib.parse import urlencode
 
 from pydantic import BaseModel, ValidationError
 from pydantic.fields import FieldInfo
 
 from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
-from app.contract.form import BOUND_MESSAGES, convert_text, unit_key
+from app.contract.form import BOUND_MESSAGES, convert_text, encode_query, unit_key
 from app.contract.screws import CustomScrewIn, MaterialIn
 from app.contract.units import (
     API_UNIT_QUANTITY,
@@ -226,7 +225,7 @@ def screw_values(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS)
 
 def screw_query(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
     """The screw's part of a share link, in the display ``units``."""
-    return urlencode(screw_values(screw, units))
+    return encode_query(screw_values(screw, units))
 
 
 def convert_screw(
@@ -289,7 +288,7 @@ def catalog_screw_query(
         **_nut_values(spec, nuts),
         **_material_values(spec),
     }
-    return urlencode(
+    return encode_query(
         {
             k: v if isinstance(v, str) else _shown(k, v, units)
             for k, v in values.items()

@@ -141,12 +141,13 @@ def test_a_custom_screw_has_no_links(client: TestClient) -> None:
 
 def test_the_api_query_is_the_share_link_s_under_the_api_s_names() -> None:
     """Required fields and non-defaults, numbers exact, a list repeated, the motor's id as
-    the library writes it; the route's own names after them, encoded."""
+    the library writes it; the route's own names after them, encoded but for the
+    separators ':' and ',' (``form.LINK_SAFE``)."""
     inputs = ApplicationIn(load_n=100, speed_mm_s=50, length_mm=500, family="B, TR-C45")
     assert api_query(inputs) == "load_n=100&speed_mm_s=50&length_mm=500&family=B&family=TR-C45"
     inputs = ApplicationIn(load_n=0.1, speed_mm_s=5, length_mm=90, motor=" ANY")
     assert api_url("compare", inputs, [("ids", "a,b")]) == (
-        "/api/v1/compare?load_n=0.1&speed_mm_s=5&length_mm=90&motor=any&ids=a%2Cb"
+        "/api/v1/compare?load_n=0.1&speed_mm_s=5&length_mm=90&motor=any&ids=a,b"
     )
 
 
@@ -156,6 +157,8 @@ def test_the_api_link_of_a_cycle_carries_its_moves(client: TestClient) -> None:
     query = "load_n=0&speed_mm_s=100&length_mm=500&moves=" + moves
     body = client.get("/api/v1/select?" + query).json()
     again = client.get(body["api_url"]).json()
-    assert "moves=" in body["api_url"]
+    # readable as typed: only the ';' between the moves is encoded
+    assert "&moves=" + moves.replace(";", "%3B") in body["api_url"]
+    assert "&moves=" + moves.replace(";", "%3B") in body["share_url"]
     assert [c["id"] for c in again["candidates"]] == [c["id"] for c in body["candidates"]]
     assert again["candidates"][0]["torque"] == body["candidates"][0]["torque"]

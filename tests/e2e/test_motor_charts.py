@@ -24,7 +24,7 @@ def test_motor_curve_and_move_charts(
     page.click("details.group:has(#f-motor_curve) > summary")
     page.fill("#f-motor_curve", "0 0.4\n600 0.3\n1200 0.1")
     page.locator("#f-motor_curve").dispatch_event("input")
-    page.wait_for_url("**motor_curve=0%3A0.4%2C600%3A0.3%2C1200%3A0.1**")
+    page.wait_for_url("**motor_curve=0:0.4,600:0.3,1200:0.1**")
     page.wait_for_selector("#chart-motor .main-svg")
     page.wait_for_selector("#chart-move .main-svg")
     legend = page.locator("#chart-motor .legend .traces").all_text_contents()
