@@ -38,7 +38,8 @@
   // charts wait for the table to be painted, then draw (a keystroke waiting is not held
   // up behind all of them: see inputWaiting). Those in view draw at once, and
   // "charts:drawn" says how many (an answer is finished when they are); the others draw
-  // as they are scrolled into view, or once no field has been edited for QUIET_MS
+  // as they are scrolled into view, or QUIET_MS after those in view are drawn unless a
+  // field is edited meanwhile (then they wait to be seen, or for the next answer's charts)
   var QUIET_MS = 500;
   var chartQueue = [];
   var waiting = [];
