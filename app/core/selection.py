@@ -369,27 +369,41 @@ def summarize(
     found, why = _remedies(
         app, screening, nearest, (worst, label, worst_count == evaluated), ranges
     )
-    if found:  # the first verified change, past its limits by the margin
-        how = describe_change(app, found[0].inputs, words)
-        parts.append(Phrase("Or change the application: {how}.", {"how": how}))
-    elif why is not None:
-        parts.append(why)
-    elif change:  # not verified (no screening given): the values at the limits
-        parts.append(
-            Phrase(
-                "Or change the application: {how}.", {"how": describe_change(app, change, words)}
-            )
-        )
+    offer = _offered_change(app, found, why, change, words)
     return Summary(
         worst,
         worst_count,
         best.screw.id,
         change,
-        join(parts),
+        join([*parts, *offer]),
         feasible_changes(nearest, ranges),
         found,
         why,
     )
+
+
+def _offered_change(
+    app: Application,
+    found: Sequence[Remedy],
+    why: Phrase | None,
+    change: Mapping[str, float],
+    words: Words | None,
+) -> list[Phrase]:
+    """What the no-pass summary offers last: the first verified remedy (past its limits
+    by the margin), else why there is none, else the unverified change (no screening
+    given: the values at the limits)."""
+    if found:
+        how = describe_change(app, found[0].inputs, words)
+        return [Phrase("Or change the application: {how}.", {"how": how})]
+    if why is not None:
+        return [why]
+    if change:
+        return [
+            Phrase(
+                "Or change the application: {how}.", {"how": describe_change(app, change, words)}
+            )
+        ]
+    return []
 
 
 def _remedies(

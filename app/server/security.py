@@ -67,18 +67,12 @@ class SecurityMiddleware:
             await self.app(scope, receive, send)
             return
         query: bytes = scope.get("query_string", b"")
-        if len(query) > self.max_query or query.count(b"&") + 1 > self.max_params:
-            await self._refuse(send, 414, "query string too long or too many parameters")
+        refused = self._refusal(scope, query)
+        if refused is not None:
+            await self._refuse(send, *refused)
             return
-        for name, value in scope.get("headers", []):
-            if name == b"content-length" and value.isdigit() and int(value) > self.max_body:
-                await self._refuse(send, 413, "request body too large")
-                return
         path: str = scope["path"]
-        cache = None
-        if path.startswith("/static/"):
-            versioned = path.startswith("/static/vendor/") or query.startswith(b"v=")
-            cache = IMMUTABLE if versioned else SHORT
+        cache = _cache_header(path, query)
         api = path.startswith("/api/")
         received = 0
         too_large = started = False
@@ -130,6 +124,16 @@ class SecurityMiddleware:
             closing = [(b"x-request-id", request_id.encode()), (b"connection", b"close")]
             await self._refuse(send, 500, reason, json_body=api, extra=closing)
 
+    def _refusal(self, scope: Scope, query: bytes) -> tuple[int, str] | None:
+        """The status and reason to refuse a request with before it is read: a query
+        too long or of too many parameters, a body declared too large."""
+        if len(query) > self.max_query or query.count(b"&") + 1 > self.max_params:
+            return 414, "query string too long or too many parameters"
+        for name, value in scope.get("headers", []):
+            if name == b"content-length" and value.isdigit() and int(value) > self.max_body:
+                return 413, "request body too large"
+        return None
+
     async def _refuse(
         self,
         send: Send,
@@ -163,3 +167,12 @@ class SecurityMiddleware:
 
 class BodyTooLarge(Exception):
     """Raised inside receive when a streamed body passes the limit."""
+
+
+def _cache_header(path: str, query: bytes) -> tuple[bytes, bytes] | None:
+    """The Cache-Control of a static file: for good when its name or query carries its
+    version, briefly otherwise; None (the route's own) for everything else."""
+    if not path.startswith("/static/"):
+        return None
+    versioned = path.startswith("/static/vendor/") or query.startswith(b"v=")
+    return IMMUTABLE if versioned else SHORT
