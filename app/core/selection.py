@@ -392,18 +392,14 @@ def _offered_change(
     """What the no-pass summary offers last: the first verified remedy (past its limits
     by the margin), else why there is none, else the unverified change (no screening
     given: the values at the limits)."""
-    if found:
-        how = describe_change(app, found[0].inputs, words)
-        return [Phrase("Or change the application: {how}.", {"how": how})]
-    if why is not None:
+    if why is not None and not found:
         return [why]
-    if change:
-        return [
-            Phrase(
-                "Or change the application: {how}.", {"how": describe_change(app, change, words)}
-            )
-        ]
-    return []
+    inputs: Mapping[str, float | str] = found[0].inputs if found else change
+    if not inputs:
+        return []
+    return [
+        Phrase("Or change the application: {how}.", {"how": describe_change(app, inputs, words)})
+    ]
 
 
 def _remedies(
