@@ -1,11 +1,13 @@
 """Query parameters nothing reads: named, with the likely intended name, never ignored.
 
 A link with a misspelled input (``moving_mass=3`` for ``moving_mass_kg``) would otherwise
-give the result without it. The names a page reads come from the tables: every input's
-page name (``FIELDS``), the display-unit switches (``DEFAULT_UNITS``), the units the
-form's numbers were typed in (``from_<switch>``) and each field's typed record
-(``typed_<field>``), the cells of the table of moves and its buttons
-(``app.contract.move_table``), plus the route's own (``id``, ``ids``).
+give the result without it, and one with a unit no switch offers (``force_unit=lbs``)
+would read its numbers in the default unit. The names a page reads come from the
+tables: every input's page name (``FIELDS``), the display-unit switches
+(``DEFAULT_UNITS``), the units the form's numbers were typed in (``from_<switch>``) and
+each field's typed record (``typed_<field>``), the cells of the table of moves and its
+buttons (``app.contract.move_table``), plus the route's own (``id``, ``ids``; the custom
+screw's fields, without the catalog's filters).
 
 The API reads the API names alone: given a page's name (a share link's ``load`` for
 its API name, with the unit), its 422 names the API's (``api_hint``); every response
@@ -18,7 +20,14 @@ from difflib import get_close_matches
 from urllib.parse import parse_qsl
 
 from app.contract.fields import BY_API, BY_PAGE
-from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX, encode_query, share_query
+from app.contract.form import (
+    ENTERED_PREFIX,
+    MOVES,
+    TYPED_PREFIX,
+    UNIT_CHOICES,
+    encode_query,
+    share_query,
+)
 from app.contract.inputs import ApplicationIn
 from app.contract.move_table import ADD_MOVE, REMOVE_MOVE, is_cell
 from app.contract.units import DEFAULT_UNITS
@@ -64,15 +73,44 @@ def unknown_message(name: str, known: Iterable[str]) -> str:
     return f"Unknown parameter '{name[:100]}'{hint}: it is not read."
 
 
-def unknown_parameters(params: Mapping[str, str], extra: Collection[str] = ()) -> dict[str, str]:
+#: What a page says of an input it does not have (the custom screw's page of a catalog filter).
+NOT_HERE = "'{name}' is not read on this page: it chooses among the catalog's screws."
+
+
+def unknown_parameters(
+    params: Mapping[str, str], extra: Collection[str] = (), left_out: Collection[str] = ()
+) -> dict[str, str]:
     """Each parameter of ``params`` that no page field or switch reads, nor the route's
-    own names ``extra`` -> its message (empty when every name is read)."""
-    known = PAGE_NAMES | frozenset(extra)
-    return {
-        name: unknown_message(name, known)
+    own names ``extra``, and each page name in ``left_out`` (the fields a page does not
+    have) -> its message; then each unit switch set to a unit it does not offer
+    (``unknown_units``). Empty when every name and unit is read."""
+    known = (PAGE_NAMES - frozenset(left_out)) | frozenset(extra)
+    unknown = {
+        name: NOT_HERE.format(name=name) if name in left_out else unknown_message(name, known)
         for name in params
         if name not in known and not is_cell(name)
     }
+    return unknown | unknown_units(params)
+
+
+def unknown_units(params: Mapping[str, str]) -> dict[str, str]:
+    """Each display-unit switch, or record of the units the numbers were typed in
+    (``from_<switch>``), whose value is none of the switch's units -> its message: the
+    numbers would otherwise be read in the default unit.
+
+    >>> unknown_units({"force_unit": "lbs", "from_length_unit": "in", "load": "5"})
+    {'force_unit': "Unknown force unit 'lbs': choose N, lbf or kgf."}
+    """
+    found = {}
+    for key, choices in UNIT_CHOICES.items():
+        for name in (key, ENTERED_PREFIX + key):
+            value = params.get(name, "")
+            if value and value not in choices:
+                *rest, last = choices
+                words = f"{', '.join(rest)} or {last}" if rest else last
+                noun = key.removesuffix("_unit").replace("accel", "acceleration")
+                found[name] = f"Unknown {noun} unit '{value[:20]}': choose {words}."
+    return found
 
 
 def api_query(inputs: ApplicationIn, share: str | None = None) -> str:

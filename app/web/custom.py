@@ -10,9 +10,10 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
-from app.contract.form import entered_units, share_query
+from app.contract.form import TYPED_PREFIX, entered_units, share_query
 from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
+from app.contract.params import unknown_parameters
 from app.contract.schemas import ApplicationIn
 from app.contract.screws import CustomScrewIn
 from app.contract.units import Display, api_value
@@ -47,6 +48,12 @@ from app.web.templating import templates
 router = APIRouter(include_in_schema=False)
 #: screw fields that must be filled in before an evaluation runs.
 SCREW_REQUIRED = tuple(f.name for f in SCREW_FIELDS if f.required)
+#: the names this page reads besides the application's: the screw's, its material's, its nut.
+OWN_NAMES = (*(f.name for f in (*SCREW_FIELDS, *MATERIAL_FIELDS)), "material", NUT_FIELD)
+#: the application fields this page does not have (they choose among catalog screws).
+LEFT_OUT = tuple(
+    name for page, f in BY_PAGE.items() if f.catalog_only for name in (page, TYPED_PREFIX + page)
+)
 EXPORT_NAME = "leadscrew-custom"
 #: the PV chart of one screw the catalog does not hold: its PV-limited load against
 #: linear speed (``pv_figure``), captioned as such in place of the selector's.
@@ -106,6 +113,10 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     chosen = values.get(NUT_FIELD, "").strip()
     context.update(nut_materials=nuts, nut_label=NUT_LABEL, nut=nuts.get(chosen))
     context["nut_rows"] = nut_rows(nuts[chosen]) if chosen in nuts else []
+    unknown = unknown_parameters(params, OWN_NAMES, LEFT_OUT)
+    if unknown:
+        context["errors"] = {"form": " ".join(unknown.values())}
+        return context
     if not _started(values):
         return context
     rows, units = context["move_rows"], context["units"]

@@ -1,6 +1,8 @@
 """Issue 29, item 7: a page, share or CSV link with a parameter nothing reads says so,
 naming it and the likely intended name, instead of giving the result without it."""
 
+import html
+
 import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
@@ -55,3 +57,68 @@ def test_every_name_the_form_writes_is_read(client: TestClient) -> None:
 )  # fmt: skip
 def test_likely_names(typed: str, meant: str | None) -> None:
     assert likely_name(typed, PAGE_NAMES) == meant
+
+
+@pytest.mark.parametrize(
+    ("name", "value", "message"),
+    [
+        ("force_unit", "lbs", "Unknown force unit 'lbs': choose N, lbf or kgf."),
+        ("length_unit", "inch", "Unknown length unit 'inch': choose mm or in."),
+        ("from_torque_unit", "Nm", "Unknown torque unit 'Nm': choose N_m, oz_in or lb_in."),
+        ("accel_unit", "G", "Unknown acceleration unit 'G': choose mm_s2, m_s2, g or in_s2."),
+    ],
+)
+def test_a_unit_no_switch_offers_is_named_not_read_as_the_default(
+    client: TestClient, name: str, value: str, message: str
+) -> None:
+    """``load=22&force_unit=lbs`` was read as 22 N (the unknown unit fell back to the
+    default): now the page names the unit and shows no result, and a link refuses it."""
+    query = {**AXIS, name: value}
+    page = BeautifulSoup(client.get("/", params=query).text, "html.parser")
+    assert message in page.select_one("#e-form").text
+    assert page.select_one(".count-passed") is None
+    refused = client.get("/export.csv", params=query)
+    assert refused.status_code == 422
+    assert message in html.unescape(refused.text)
+
+
+SCREW = {
+    "outer_diameter_mm": "10", "root_diameter_mm": "8", "lead_mm": "2",
+    "friction_dynamic": "0.15", "friction_static": "0.2", "pv_limit_mpa_m_s": "3",
+}  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        ({"moving_mass": "3"}, MISSPELT),
+        ({"force_unit": "lbs"}, "Unknown force unit 'lbs'"),
+        ({"lead": "5"}, "'lead' is not read on this page: it chooses among the catalog's"),
+        ({"material": "custom", "youngs_modulus_gpa": "200"}, "'youngs_modulus_gpa'"),
+    ],
+)
+def test_the_custom_screw_page_names_what_it_does_not_read(
+    client: TestClient, extra: dict[str, str], message: str
+) -> None:
+    """The custom screw's page and exports read the screw's, its material's and its nut's
+    names besides the application's, and none of the catalog's filters (a lead there is
+    the screw's own ``lead_mm``): anything else is named, never evaluated without."""
+    query = {**SCREW, **AXIS, **extra}
+    page = BeautifulSoup(client.get("/custom", params=query).text, "html.parser")
+    assert message in page.select_one("#e-form").text
+    assert page.select_one(".verdict") is None
+    assert client.get("/custom/export.csv", params=query).status_code == 422
+
+
+def test_every_name_the_custom_page_writes_is_read(client: TestClient) -> None:
+    """A custom result's share link, with a material of its own, reopens the result
+    with no message; so do its exports."""
+    own = {"material": "custom", "youngs_modulus_pa": "1.9e11", "density_kg_m3": "7900"}
+    first = BeautifulSoup(
+        client.get("/custom", params={**SCREW, **AXIS, **own}).text, "html.parser"
+    )
+    assert first.select_one("#e-form") is None
+    share = first.select_one("a.share-link")["href"]
+    again = BeautifulSoup(client.get(share).text, "html.parser")
+    assert again.select_one("#e-form") is None and again.select_one(".verdict") is not None
+    assert client.get(share.replace("/custom?", "/custom/export.csv?")).status_code == 200
