@@ -14,6 +14,7 @@ string is ambiguous. A motor's torque curve is read and written by
 """
 
 import math
+import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 from urllib.parse import urlencode
@@ -60,6 +61,13 @@ BOUND_MESSAGES = {
     "less_than_equal": ("Must be at most {bound}.", "le"),
 }
 TRUE_WORDS = {"1", "true", "on", "yes"}
+#: An input's API name in a pydantic message, to be given its label: a whole word, never
+#: part of a longer name or of a quoted value ('motor_margin' is no 'motor' field).
+API_NAME = re.compile(
+    r"(?<![\w'])(?:"
+    + "|".join(map(re.escape, sorted(BY_API, key=len, reverse=True)))
+    + r")(?![\w'])"
+)
 
 
 def parse_units(params: Mapping[str, str]) -> dict[str, str]:
@@ -259,8 +267,7 @@ def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) ->
     if kind in PLAIN_MESSAGES:
         return PLAIN_MESSAGES[kind]
     message = str(error.get("msg", "")).removeprefix("Value error, ")
-    for other in sorted(FIELDS, key=lambda f: -len(f.api)):
-        message = message.replace(other.api, other.label.lower())
+    message = API_NAME.sub(lambda m: BY_API[m[0]].label.lower(), message)
     return message[:1].upper() + message[1:].rstrip(".") + "."
 
 

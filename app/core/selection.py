@@ -301,8 +301,35 @@ def feasible_changes(
     return tuple(changes)
 
 
+def _unheld(app: Application, table: CandidateTable) -> Phrase | None:
+    """The families or the nut material asked for that no screw of ``table`` has, with
+    those it has; None when the catalog holds every one."""
+    families = sorted({s.family_id for s in table.screws})
+    missing = [f for f in app.families if f not in families]
+    if missing:
+        asked = ", ".join(f"'{f}'" for f in missing)
+        return Phrase(
+            "The catalog has no family {asked}: its families are {held}.",
+            {"asked": asked, "held": ", ".join(families)},
+        )
+    nuts = {s.nut_material.casefold(): s.nut_material for s in table.screws}
+    if app.nut_material is not None and app.nut_material.casefold() not in nuts:
+        return Phrase(
+            "No catalog screw has a nut of {asked}: its nut materials are {held}.",
+            {
+                "asked": f"'{app.nut_material}'",
+                "held": ", ".join(sorted(nuts.values(), key=str.casefold)),
+            },
+        )
+    return None
+
+
 def _no_match(app: Application, table: CandidateTable) -> Summary:
-    """Nothing eligible: name the nearest leads the catalog has, below and above."""
+    """Nothing eligible: name a family or nut material the catalog does not have, else
+    the nearest leads it has, below and above."""
+    unheld = _unheld(app, table)
+    if unheld is not None:
+        return Summary(None, 0, None, {}, unheld)
     if app.lead_m is None:
         return Summary(None, 0, None, {}, Phrase(NO_MATCH.format(lead="")))
     leads = np.unique(table.lead_m)

@@ -190,6 +190,26 @@ def test_a_lead_with_no_screw_names_the_nearest_leads(client: TestClient) -> Non
     assert "Nearest leads: 7 mm and 8 mm" in body["summary"]["message"]
 
 
+@pytest.mark.parametrize(
+    ("asked", "said"),
+    [
+        ({"family": ["NOPE"]}, "The catalog has no family 'NOPE': its families are B, "),
+        ({"nut_material": "unobtainium"}, "No catalog screw has a nut of 'unobtainium': its "),
+    ],
+)
+def test_a_family_or_nut_the_catalog_lacks_is_named_not_blamed_on_the_lead(
+    client: TestClient, catalog: Catalog, asked: dict[str, Any], said: str
+) -> None:
+    """Nothing eligible because a family or nut material is not in the catalog: the
+    summary names it and what the catalog holds (it said to try another lead, with no
+    lead given)."""
+    body = post(client, "select", {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, **asked})
+    message = body["summary"]["message"]
+    assert body["counts"]["evaluated"] == 0 and message.startswith(said)
+    held = {s.family_id for s in catalog.screws} | {s.nut_material for s in catalog.screws}
+    assert all(name in held for name in message.split(" are ")[1].rstrip(".").split(", "))
+
+
 # --- 6. advice versus limits ----------------------------------------------------------------
 
 

@@ -122,3 +122,13 @@ def test_every_name_the_custom_page_writes_is_read(client: TestClient) -> None:
     again = BeautifulSoup(client.get(share).text, "html.parser")
     assert again.select_one("#e-form") is None and again.select_one(".verdict") is not None
     assert client.get(share.replace("/custom?", "/custom/export.csv?")).status_code == 200
+
+
+def test_a_choice_no_field_offers_is_named_with_the_values_as_written(
+    client: TestClient,
+) -> None:
+    """The error lists the choices as a link writes them: an input's API name inside a
+    value ('motor_margin' holds the library motor's 'motor') is no field to relabel."""
+    page = BeautifulSoup(client.get("/", params={**AXIS, "rank_by": "bogus"}).text, "html.parser")
+    message = page.select_one("#e-rank_by").text
+    assert "'motor_margin'" in message and "library motor" not in message
