@@ -303,8 +303,8 @@ def feasible_changes(
 
 def _unheld(app: Application, table: CandidateTable) -> Phrase | None:
     """The families or the nut material asked for that no screw of ``table`` has, with
-    those it has; None when the catalog holds every one."""
-    families = sorted({s.family_id for s in table.screws})
+    those it has; None when the catalog holds every one (or none was asked for)."""
+    families = sorted({s.family_id for s in table.screws}) if app.families else []
     missing = [f for f in app.families if f not in families]
     if missing:
         asked = ", ".join(f"'{f}'" for f in missing)
@@ -312,16 +312,18 @@ def _unheld(app: Application, table: CandidateTable) -> Phrase | None:
             "The catalog has no family {asked}: its families are {held}.",
             {"asked": asked, "held": ", ".join(families)},
         )
+    if app.nut_material is None:
+        return None
     nuts = {s.nut_material.casefold(): s.nut_material for s in table.screws}
-    if app.nut_material is not None and app.nut_material.casefold() not in nuts:
-        return Phrase(
-            "No catalog screw has a nut of {asked}: its nut materials are {held}.",
-            {
-                "asked": f"'{app.nut_material}'",
-                "held": ", ".join(sorted(nuts.values(), key=str.casefold)),
-            },
-        )
-    return None
+    if app.nut_material.casefold() in nuts:
+        return None
+    return Phrase(
+        "No catalog screw has a nut of {asked}: its nut materials are {held}.",
+        {
+            "asked": f"'{app.nut_material}'",
+            "held": ", ".join(sorted(nuts.values(), key=str.casefold)),
+        },
+    )
 
 
 def _no_match(app: Application, table: CandidateTable) -> Summary:
@@ -368,7 +370,8 @@ def summarize(
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
         return _no_match(app, table)
-    note = [n] if (n := motion.speed_note(app)) is not None else []
+    notes = (motion.speed_note(app), _unheld(app, table))  # a family asked for, none held
+    note = [n for n in notes if n is not None]
     if passed:
         message = Phrase(f"{passed} of {evaluated} candidates pass.")
         first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]

@@ -283,3 +283,15 @@ def test_governing_limit_provenance(client: TestClient) -> None:
     t = evaluate(client, "B8000-L10", load_n=100, speed_mm_s=5, length_mm=500,
                  max_torque_nm=0.05)  # fmt: skip
     assert t["governing_check"] == "torque" and t["governing_limit_provenance"] == "user"
+
+
+def test_a_family_the_catalog_lacks_beside_one_it_has_is_named_too(client: TestClient) -> None:
+    """family B and NOPE: B's screws are selected, and the summary says NOPE is none of
+    the catalog's (it was left out without a word)."""
+    body = post(client, "select", {"load_n": 50, "speed_mm_s": 50, "length_mm": 500,
+                                   "family": ["B", "NOPE"]})  # fmt: skip
+    alone = post(client, "select", {"load_n": 50, "speed_mm_s": 50, "length_mm": 500,
+                                    "family": ["B"]})  # fmt: skip
+    assert body["counts"] == alone["counts"] and body["counts"]["evaluated"] > 0
+    assert body["summary"]["message"].startswith("The catalog has no family 'NOPE'")
+    assert "no family" not in alone["summary"]["message"]
