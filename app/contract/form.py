@@ -61,6 +61,7 @@ BOUND_MESSAGES = {
     "less_than_equal": ("Must be at most {bound}.", "le"),
 }
 TRUE_WORDS = {"1", "true", "on", "yes"}
+FALSE_WORDS = {"0", "false", "off", "no"}
 #: An input's API name in a pydantic message, to be given its label: a whole word, never
 #: part of a longer name or of a quoted value ('motor_margin' is no 'motor' field).
 API_NAME = re.compile(
@@ -87,7 +88,9 @@ def _api_value(field: InputField, raw: str, units: dict[str, str]) -> tuple[Any,
     Whole numbers and choices go to the model as text, so its own messages apply.
     """
     if field.kind == "yes-no":
-        return raw.lower() in TRUE_WORDS, ""
+        word = raw.lower()
+        known = word in TRUE_WORDS or word in FALSE_WORDS
+        return word in TRUE_WORDS, "" if known else "Choose yes or no (true or false)."
     if field.kind == "curve":
         return curve_to_api(raw, units), ""
     if field.kind != "number":
@@ -197,7 +200,8 @@ def convert_entered(
 
     Numbers convert from what was typed, not from the last conversion, and switching back
     to the typed unit restores the typed text exactly. Text that is not a number (or
-    'any' lead) is kept as typed.
+    'any' lead) is kept as typed; a yes or no word ('no', '0') is written as the form's
+    control writes it ('false'), so that it shows what is read.
 
     >>> units = {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "N_m"}
     >>> convert_entered({"load": "50", "lead": "any"}, DEFAULT_UNITS, units)
@@ -208,6 +212,8 @@ def convert_entered(
     values, typed = dict(params), {}
     for field in FIELDS:
         raw = params.get(field.page, "").strip()
+        if field.kind == "yes-no" and raw.lower() in TRUE_WORDS | FALSE_WORDS:
+            values[field.page] = "true" if raw.lower() in TRUE_WORDS else "false"
         if field.kind == "curve" and raw and entered["torque_unit"] != units["torque_unit"]:
             values[field.page] = convert_curve(raw, entered, units)
         if field.quantity is None or not raw or read_number(raw)[0] is None:

@@ -132,3 +132,25 @@ def test_a_choice_no_field_offers_is_named_with_the_values_as_written(
     page = BeautifulSoup(client.get("/", params={**AXIS, "rank_by": "bogus"}).text, "html.parser")
     message = page.select_one("#e-rank_by").text
     assert "'motor_margin'" in message and "library motor" not in message
+
+
+@pytest.mark.parametrize(
+    ("value", "held"), [("maybe", None), ("no", False), ("0", False), ("yes", True), ("on", True)]
+)
+def test_a_yes_no_input_reads_yes_or_no_and_names_anything_else(
+    client: TestClient, value: str, held: bool | None
+) -> None:
+    """``hold_power_off=maybe`` was read as no (anything not a yes-word was): now it is
+    an error at the field, and the yes- and no-words are read as such, the field's
+    select showing what is read (with 'no' it showed its first option, yes)."""
+    page = BeautifulSoup(
+        client.get("/", params={**AXIS, "hold_power_off": value}).text, "html.parser"
+    )
+    error = page.select_one("#e-hold_power_off").text
+    if held is None:
+        assert error == "Choose yes or no (true or false)."
+        assert page.select_one(".count-passed") is None
+    else:
+        assert error == "" and page.select_one(".count-passed") is not None
+        chosen = page.select_one("#f-hold_power_off option[selected]")
+        assert chosen["value"] == ("true" if held else "false")
