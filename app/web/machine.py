@@ -18,7 +18,7 @@ from app.catalog import Catalog
 from app.contract.form import encode_query, parse_inputs
 from app.contract.inputs import ApplicationIn
 from app.contract.machine import MAX_AXES, AxisIn, MachineIn
-from app.contract.params import unknown_parameters
+from app.contract.params import unknown_message, unknown_parameters
 from app.report.machine import UnknownChoice, run_machine
 from app.server.compute import computed
 from app.server.deps import CatalogDep
@@ -30,6 +30,8 @@ router = APIRouter(include_in_schema=False)
 #: The query's parameters of axis i (1 to MAX_AXES): its name, results link, frame and
 #: motor mass [kg] and chosen screw.
 AXIS_PARAMS = ("name", "link", "frame", "motor", "choice")
+#: Every parameter the page reads.
+MACHINE_NAMES = frozenset(f"{p}{i}" for p in AXIS_PARAMS for i in range(1, MAX_AXES + 1))
 
 
 def link_query(link: str) -> dict[str, str]:
@@ -95,7 +97,8 @@ def machine_query(params: Mapping[str, str], axes: list[Any], machine: Mapping[s
 def machine_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]:
     """The page's form values, errors by query name, and the machine sized when every
     given axis is valid."""
-    errors: dict[str, str] = {}
+    unknown = [unknown_message(name, MACHINE_NAMES) for name in params if name not in MACHINE_NAMES]
+    errors: dict[str, str] = {"form": " ".join(unknown)} if unknown else {}
     axes = [_axis(i, params, catalog, errors) for i in range(1, MAX_AXES + 1)]
     given = [a for a in axes if a is not None]
     context: dict[str, Any] = {"values": dict(params), "errors": errors, "n": MAX_AXES}

@@ -71,3 +71,31 @@ def test_a_bad_axis_is_said_at_its_field(client: TestClient) -> None:
 def test_a_link_is_read_whole_or_as_its_query() -> None:
     assert link_query("https://example.org/?load=1&speed=2") == {"load": "1", "speed": "2"}
     assert link_query(" load=1 ") == {"load": "1"}
+
+
+def test_an_axis_without_a_move_or_duty_is_sized_with_its_figures_marked_not_worked_out(
+    client: TestClient,
+) -> None:
+    """A selector link with the axis alone (no stroke, acceleration or duty): the compact
+    answer leaves out its RMS torque, life and cycle work, and the page shows "–" for
+    them (it answered 500: the template formatted the absent RMS torque)."""
+    plain = {"name1": "Z", "link1": "/?load=10&speed=10&length=300"}
+    page = client.get("/machine?" + urlencode(plain))
+    assert page.status_code == 200
+    (z,) = rows(page.text)
+    api = client.post(
+        "/api/v1/machine",
+        json={
+            "axes": [{"name": "Z", "inputs": {"load_n": 10, "speed_mm_s": 10, "length_mm": 300}}]
+        },
+    ).json()["axes"][0]
+    assert "rms_nm" not in api["chosen"]["torque"] and "years" not in api["chosen"]["life"]
+    assert z[7] == f"{api['chosen']['torque']['peak_motor_nm']:.4g}"
+    assert z[8:11] == ["–", "–", "–"]
+
+
+def test_a_parameter_the_machine_page_does_not_read_is_named(client: TestClient) -> None:
+    page = client.get("/machine?" + urlencode({**AXES, "frame_mass1": "3"}))
+    assert page.status_code == 422
+    assert "Unknown parameter &#39;frame_mass1&#39;: it is not read." in page.text
+    assert '<table class="machine">' not in page.text
