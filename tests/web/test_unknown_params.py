@@ -154,3 +154,16 @@ def test_a_yes_no_input_reads_yes_or_no_and_names_anything_else(
         assert error == "" and page.select_one(".count-passed") is not None
         chosen = page.select_one("#f-hold_power_off option[selected]")
         assert chosen["value"] == ("true" if held else "false")
+
+
+def test_a_link_error_alone_is_not_called_a_highlighted_field(client: TestClient) -> None:
+    """The notice asks to correct highlighted fields only when some are: an unknown unit
+    is said as it is (it said "Please correct the highlighted field." with none)."""
+    alone = BeautifulSoup(
+        client.get("/", params={**AXIS, "force_unit": "lbs"}).text, "html.parser"
+    ).select_one(".notice.invalid")
+    assert "highlighted" not in alone.text and "Unknown force unit 'lbs'" in alone.text
+    field = BeautifulSoup(client.get("/", params={**AXIS, "speed": "x"}).text, "html.parser")
+    notice = field.select_one(".notice.invalid").text
+    assert "Please correct the highlighted field." in notice
+    assert field.select_one("#e-speed").text == "Enter a number."
