@@ -370,7 +370,7 @@ def summarize(
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
         return _no_match(app, table)
-    notes = (motion.speed_note(app), _unheld(app, table))  # a family asked for, none held
+    notes = (motion.speed_note(app), _unheld(app, table))  # a family or nut it lacks
     note = [n for n in notes if n is not None]
     if passed:
         message = Phrase(f"{passed} of {evaluated} candidates pass.")
