@@ -87,6 +87,18 @@ def is_cell(name: str) -> bool:
     return match is not None and int(match.group(1)) < MAX_MOVES
 
 
+def cell_label(name: str) -> str | None:
+    """A cell's page name in words, as its control is labelled; None for a name of no cell.
+
+    >>> cell_label("m0_dir"), cell_label("load")
+    ('Move 1 load direction', None)
+    """
+    match = CELL.fullmatch(name)
+    if match is None or not is_cell(name):
+        return None
+    return f"Move {int(match.group(1)) + 1} {BY_KEY[match.group(2)].label.lower()}"
+
+
 def _typed_rows(params: Mapping[str, str]) -> list[Row]:
     """The cells of the query as rows, in row order (a gap in the numbers closes up)."""
     rows: dict[int, Row] = {}

@@ -12,6 +12,7 @@ from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
 from app.contract.form import TYPED_PREFIX, entered_units, share_query
 from app.contract.form import summary_rows as input_rows
+from app.contract.move_table import cell_label
 from app.contract.outputs import EvaluateOut
 from app.contract.params import unknown_parameters
 from app.contract.schemas import ApplicationIn
@@ -185,7 +186,7 @@ def _label(name: str) -> str:
         return NUT_LABEL
     if name in BY_NAME:
         return BY_NAME[name].label
-    return BY_PAGE[name].label if name in BY_PAGE else name
+    return BY_PAGE[name].label if name in BY_PAGE else cell_label(name) or name
 
 
 def _attachment(extension: str) -> dict[str, str]:

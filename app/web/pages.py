@@ -33,6 +33,7 @@ from app.contract.move_table import (
     Row,
     cell,
     cell_errors,
+    cell_label,
     converted_rows,
     is_cell,
     moves_of_rows,
@@ -312,8 +313,9 @@ def link_inputs(
 
 
 def _label(page: str) -> str:
-    """The form label of a page field; other keys ('form') as they are."""
-    return BY_PAGE[page].label if page in BY_PAGE else page
+    """The form label of a page field or a cell of the moves; other keys ('form') as
+    they are."""
+    return BY_PAGE[page].label if page in BY_PAGE else cell_label(page) or page
 
 
 def _attachment(extension: str) -> dict[str, str]:

@@ -63,3 +63,20 @@ def test_a_report_without_moves_has_no_moves_table(client: TestClient) -> None:
     link = {k: v for k, v in LINK.items() if k != "moves"}
     html = BeautifulSoup(client.get("/report", params=link).text, "html.parser")
     assert html.select_one("table.report-moves") is None
+
+
+@pytest.mark.parametrize("path", ["/export.csv", "/custom/export.csv"])
+def test_a_bad_move_in_an_export_link_is_named_as_its_control_is(
+    client: TestClient, path: str
+) -> None:
+    """The 422 of an export names a move's value as the table labels it ("Move 2 load
+    direction"), not by its query name (``m1_dir``)."""
+    screw = {"outer_diameter_mm": "10", "root_diameter_mm": "8", "lead_mm": "2",
+             "friction_dynamic": "0.15", "friction_static": "0.2"}  # fmt: skip
+    bad = TEXT.replace("0.5:10:opposes", "0.5:10:sideways")
+    response = client.get(
+        path, params={**screw, **LINK, "moves": bad} if "custom" in path else {**LINK, "moves": bad}
+    )
+    assert response.status_code == 422
+    items = [li.text for li in BeautifulSoup(response.text, "html.parser").select("li")]
+    assert items == ["Move 2 load direction: Input should be 'auto', 'opposes' or 'fixed'."]
