@@ -71,6 +71,17 @@ API_NAME = re.compile(
 )
 
 
+def yes_no(raw: str) -> bool | None:
+    """A yes-no field's text read: True or False for a yes- or a no-word (any case),
+    None for anything else.
+
+    >>> yes_no("Yes"), yes_no("0"), yes_no("maybe")
+    (True, False, None)
+    """
+    word = raw.lower()
+    return True if word in TRUE_WORDS else False if word in FALSE_WORDS else None
+
+
 def parse_units(params: Mapping[str, str]) -> dict[str, str]:
     """Display units from the query, unknown values falling back to metric (the
     acceleration to in/s² on a page in inches, ``accel_choice``)."""
@@ -88,9 +99,8 @@ def _api_value(field: InputField, raw: str, units: dict[str, str]) -> tuple[Any,
     Whole numbers and choices go to the model as text, so its own messages apply.
     """
     if field.kind == "yes-no":
-        word = raw.lower()
-        known = word in TRUE_WORDS or word in FALSE_WORDS
-        return word in TRUE_WORDS, "" if known else "Choose yes or no (true or false)."
+        answer = yes_no(raw)
+        return bool(answer), "" if answer is not None else "Choose yes or no (true or false)."
     if field.kind == "curve":
         return curve_to_api(raw, units), ""
     if field.kind != "number":
@@ -212,8 +222,8 @@ def convert_entered(
     values, typed = dict(params), {}
     for field in FIELDS:
         raw = params.get(field.page, "").strip()
-        if field.kind == "yes-no" and raw.lower() in TRUE_WORDS | FALSE_WORDS:
-            values[field.page] = "true" if raw.lower() in TRUE_WORDS else "false"
+        if field.kind == "yes-no" and (answer := yes_no(raw)) is not None:
+            values[field.page] = "true" if answer else "false"
         if field.kind == "curve" and raw and entered["torque_unit"] != units["torque_unit"]:
             values[field.page] = convert_curve(raw, entered, units)
         if field.quantity is None or not raw or read_number(raw)[0] is None:

@@ -18,7 +18,7 @@ from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.remedy import impossible, remedies
 from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, screen_table
-from app.core.table import CandidateTable
+from app.core.table import CandidateTable, Reach
 
 NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
 #: The nearest rejected candidates whose input changes the remedies start from.
@@ -301,35 +301,31 @@ def feasible_changes(
     return tuple(changes)
 
 
-def _unheld(app: Application, table: CandidateTable) -> Phrase | None:
-    """The families or the nut material asked for that no screw of ``table`` has, with
-    those it has; None when the catalog holds every one (or none was asked for)."""
-    families = sorted({s.family_id for s in table.screws}) if app.families else []
-    missing = [f for f in app.families if f not in families]
-    if missing:
-        asked = ", ".join(f"'{f}'" for f in missing)
+def _unheld(app: Application, reach: Reach) -> Phrase | None:
+    """The families or the nut material asked for that the catalog (``reach``) does not
+    hold, with those it holds; None when it holds every one (or none was asked for)."""
+    held = reach.families
+    missing = [] if held is None else [f for f in app.families if f not in held]
+    if held is not None and missing:
         return Phrase(
             "The catalog has no family {asked}: its families are {held}.",
-            {"asked": asked, "held": ", ".join(families)},
+            {"asked": ", ".join(f"'{f}'" for f in missing), "held": ", ".join(held)},
         )
-    if app.nut_material is None:
+    nuts = reach.nut_materials
+    if app.nut_material is None or nuts is None:
         return None
-    nuts = {s.nut_material.casefold(): s.nut_material for s in table.screws}
-    if app.nut_material.casefold() in nuts:
+    if app.nut_material.casefold() in {n.casefold() for n in nuts}:
         return None
     return Phrase(
         "No catalog screw has a nut of {asked}: its nut materials are {held}.",
-        {
-            "asked": f"'{app.nut_material}'",
-            "held": ", ".join(sorted(nuts.values(), key=str.casefold)),
-        },
+        {"asked": f"'{app.nut_material}'", "held": ", ".join(nuts)},
     )
 
 
 def _no_match(app: Application, table: CandidateTable) -> Summary:
     """Nothing eligible: name a family or nut material the catalog does not have, else
     the nearest leads it has, below and above."""
-    unheld = _unheld(app, table)
+    unheld = _unheld(app, table.reach)
     if unheld is not None:
         return Summary(None, 0, None, {}, unheld)
     if app.lead_m is None:
@@ -370,7 +366,7 @@ def summarize(
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
         return _no_match(app, table)
-    notes = (motion.speed_note(app), _unheld(app, table))  # a family or nut it lacks
+    notes = (motion.speed_note(app), _unheld(app, table.reach))  # a family or nut it lacks
     note = [n for n in notes if n is not None]
     if passed:
         message = Phrase(f"{passed} of {evaluated} candidates pass.")

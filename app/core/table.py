@@ -110,8 +110,8 @@ def size_of(screw: ScrewSpec) -> SizeKey:
 @dataclass(frozen=True, slots=True)
 class Reach:
     """What a catalog offers, so that a fix never names a screw nobody makes (unbounded
-    for a screw of the user's own): the largest values, and the leads each size and nut
-    is made in, ascending."""
+    for a screw of the user's own): the largest values, the leads each size and nut is
+    made in, ascending, and the families and nut materials it holds (None: any)."""
 
     max_lead_m: float = math.inf
     max_root_diameter_m: float = math.inf
@@ -119,6 +119,8 @@ class Reach:
     max_length_m: float = math.inf
     anti_backlash: bool = True
     leads: Mapping[SizeKey, tuple[float, ...]] = field(default_factory=lambda: MappingProxyType({}))
+    families: tuple[str, ...] | None = None
+    nut_materials: tuple[str, ...] | None = None
 
     def made_lead(self, screw: ScrewSpec, bound_m: float, larger: bool) -> float | None:
         """The lead of ``screw``'s size nearest ``bound_m`` on its far side: the smallest
@@ -138,6 +140,12 @@ def _leads(screws: Sequence[ScrewSpec]) -> Mapping[SizeKey, tuple[float, ...]]:
     for screw in screws:
         found.setdefault(size_of(screw), set()).add(screw.lead_m)
     return MappingProxyType({size: tuple(sorted(leads)) for size, leads in found.items()})
+
+
+def _held(names: Sequence[str]) -> tuple[str, ...]:
+    """``names`` once each (whatever their case), in alphabetical order."""
+    once = {name.casefold(): name for name in names}
+    return tuple(sorted(once.values(), key=str.casefold))
 
 
 def _largest(values: Array) -> float:
@@ -345,6 +353,8 @@ class CandidateTable:
             max_length_m=_largest(col("max_length_m")),
             anti_backlash=bool(flag("anti_backlash").any()),
             leads=_leads(screws),
+            families=_held([s.family_id for s in screws]),
+            nut_materials=_held([s.nut_material for s in screws]),
         )
         columns = dict(
             pitch_diameter_m=d_p,

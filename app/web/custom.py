@@ -12,7 +12,6 @@ from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
 from app.contract.form import TYPED_PREFIX, entered_units, share_query
 from app.contract.form import summary_rows as input_rows
-from app.contract.move_table import cell_label
 from app.contract.outputs import EvaluateOut
 from app.contract.params import unknown_parameters
 from app.contract.schemas import ApplicationIn
@@ -27,7 +26,7 @@ from app.server.headers import is_htmx_fragment
 from app.server.responses import ModelJSON
 from app.web.export import candidate_csv
 from app.web.figures import critical_speed_figure, torque_figure
-from app.web.pages import REQUIRED, form_context, parse_page
+from app.web.pages import REQUIRED, field_label, form_context, parse_page
 from app.web.pressure_figures import pv_figure
 from app.web.screw_form import (
     BY_NAME,
@@ -186,7 +185,7 @@ def _label(name: str) -> str:
         return NUT_LABEL
     if name in BY_NAME:
         return BY_NAME[name].label
-    return BY_PAGE[name].label if name in BY_PAGE else cell_label(name) or name
+    return field_label(name)
 
 
 def _attachment(extension: str) -> dict[str, str]:

@@ -307,12 +307,12 @@ def link_inputs(
     units, values, _, _ = form_state(params)
     inputs, errors = parse_page(params, values, move_rows(params, units), units, catalog)
     if inputs is None:
-        detail = [{"field": _label(name), "message": v} for name, v in errors.items()]
+        detail = [{"field": field_label(name), "message": v} for name, v in errors.items()]
         raise AppError(422, "invalid input", detail)
     return inputs, units
 
 
-def _label(page: str) -> str:
+def field_label(page: str) -> str:
     """The form label of a page field or a cell of the moves; other keys ('form') as
     they are."""
     return BY_PAGE[page].label if page in BY_PAGE else cell_label(page) or page
