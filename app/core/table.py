@@ -148,6 +148,27 @@ def _held(names: Sequence[str]) -> tuple[str, ...]:
     return tuple(sorted(once.values(), key=str.casefold))
 
 
+def _reach(
+    screws: Sequence[ScrewSpec],
+    lead: Array,
+    root: Array,
+    design_load: Array,
+    max_length: Array,
+    anti_backlash: Mask,
+) -> Reach:
+    """What ``screws`` offer (``Reach``), from their columns."""
+    return Reach(
+        max_lead_m=_largest(lead),
+        max_root_diameter_m=_largest(root),
+        max_design_load_n=_largest(design_load),
+        max_length_m=_largest(max_length),
+        anti_backlash=bool(anti_backlash.any()),
+        leads=_leads(screws),
+        families=_held([s.family_id for s in screws]),
+        nut_materials=_held([s.nut_material for s in screws]),
+    )
+
+
 def _largest(values: Array) -> float:
     """The largest given value (NaN: not given); unbounded when none is."""
     given = values[~np.isnan(values)]
@@ -346,16 +367,8 @@ class CandidateTable:
         traverse, extrapolated = _bands(screws, lead)
         ball = np.array([s.screw_type == "ball" for s in screws], dtype=bool)
         tables, which = _pressure_tables(screws)
-        reach = Reach(
-            max_lead_m=_largest(lead),
-            max_root_diameter_m=_largest(rd),
-            max_design_load_n=_largest(col("design_load_n")),
-            max_length_m=_largest(col("max_length_m")),
-            anti_backlash=bool(flag("anti_backlash").any()),
-            leads=_leads(screws),
-            families=_held([s.family_id for s in screws]),
-            nut_materials=_held([s.nut_material for s in screws]),
-        )
+        limits = (col("design_load_n"), col("max_length_m"), flag("anti_backlash"))
+        reach = _reach(screws, lead, rd, *limits)
         columns = dict(
             pitch_diameter_m=d_p,
             thread_depth_m=geometry.thread_depth(od, rd),
