@@ -39,14 +39,10 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="load_direction", page="load_direction", core="load_direction",
-        label="Load direction", help="How the axial load acts on the moving mass",
+        label="Load direction", help="Automatic: a weight if vertical, else "
+        "opposing",
         group="Axis", kind="choice", default="auto", options=LoadDirection,
-        texts={
-            "auto": "By orientation: a weight when vertical, against the motion when "
-            "horizontal",
-            "opposes": "Against the motion both ways (friction, cutting)",
-            "fixed": "One way, against the up (out) move (a weight, spring or press)",
-        },
+        texts={"auto": "Automatic", "opposes": "Opposes move", "fixed": "Down (in)"},
     ),
     InputField(
         api="moving_mass_kg", page="moving_mass_kg", core="moving_mass_kg",
@@ -84,15 +80,12 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="compression", page="compression", core="compression", label="Thrust bearing",
-        help="Where the screw's thrust bearing sits, which says whether each stroke pushes "
-        "or pulls the screw; only a pushed screw can buckle, and a load that reverses "
-        "pushes it on one of the two moves",
+        help="Compression up: the thrust bearing at the end the nut leaves going up (out); "
+        "tension up: at the end it approaches. Only a pushed screw can buckle; a reversing "
+        "load pushes it on one move",
         group="Motion and load", kind="yes-no",
         default=True,
-        texts={
-            "true": "Compression on the up (out) move: the bearing at the end the nut leaves",
-            "false": "Tension on the up (out) move: the bearing at the end the nut approaches",
-        },
+        texts={"true": "Compression up", "false": "Tension up"},
     ),
     InputField(
         api="bearing_to_nut_mm", page="bearing_to_nut", core="bearing_to_nut_m",
@@ -233,10 +226,7 @@ FIELDS: tuple[InputField, ...] = (
         "holding torque only while it is energised (then the detent torque, or the "
         "thread, must hold with the power off)",
         group="Duty and requirements", kind="choice", default="brake", options=HoldingSource,
-        texts={
-            "brake": "A brake's (holds with the power off)",
-            "energised": "The motor's energised holding torque (power on only)",
-        },
+        texts={"brake": "A brake's", "energised": "The energised motor's"},
     ),
     InputField(
         api="detent_torque_nm", page="detent_torque", core="detent_torque_nm",
@@ -252,10 +242,7 @@ FIELDS: tuple[InputField, ...] = (
         "(answered yes or no with its margin, the surest holds ranked first); no, the "
         "energised motor holds it and a drop with the power off is accepted",
         group="Duty and requirements", kind="yes-no", default=True,
-        texts={
-            "true": "Yes: the load stays put with the power off",
-            "false": "No: the energised motor holds it",
-        },
+        texts={"true": "Yes", "false": "No: the motor holds it"},
     ),
     InputField(
         api="motor", page="motor", core="motor", label="Library motor",

@@ -125,7 +125,7 @@ TORQUE_LABELS = {c: u["torque"] for c, u in DISPLAY_CHOICES["torque_unit"].items
 UNIT_LABELS = {
     **TORQUE_LABELS,
     **{c: u["accel"] for c, u in DISPLAY_CHOICES["accel_unit"].items()},
-    "g": "g (9.80665 m/s²)",
+    "g": "g (standard)",
 }
 
 

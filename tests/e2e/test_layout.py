@@ -144,3 +144,51 @@ def test_the_results_stay_near_the_top_with_advanced_groups_open(
             assert hint.is_visible()
         page.screenshot(path=str(artifacts / f"advanced-groups-open-{width}.png"), full_page=True)
     context.close()
+
+
+#: every option's text, measured in its select's own font, against the room the closed
+#: select gives it (its width less its padding and Chromium's 20 px arrow): the options
+#: that do not fit, as (page, select, room px, text px, text)
+OVERFLOWING_OPTIONS = """(page) => {
+  const pen = document.createElement('canvas').getContext('2d'); const out = [];
+  for (const select of document.querySelectorAll('select')) {
+    if (!select.offsetParent) continue;
+    const style = getComputedStyle(select); pen.font = style.font;
+    const room = select.clientWidth - parseFloat(style.paddingLeft)
+      - parseFloat(style.paddingRight) - 20;
+    for (const option of select.options) {
+      const width = pen.measureText(option.text).width;
+      if (width > room) {
+        out.push([page, select.name, Math.round(room), Math.round(width), option.text]);
+      }
+    }
+  }
+  return out;
+}"""
+#: the pages with selects: the selector with a cycle of moves (its table's selects) and
+#: the custom screw's
+SELECT_PAGES = (
+    "/?load=50&speed=200&length=500&moves=300:250:2500:2500:0.2:2.5:10:opposes",
+    "/custom",
+)
+
+
+def test_every_choice_reads_whole_in_its_closed_select(browser: Any, live_server: str) -> None:
+    """A closed select shows its chosen option's text alone: each option of every select,
+    every Advanced group open, fits its box at 1280 and 390 px, so a choice is never read
+    cut off ("By orientation: a w" was all the load direction showed at 1280 px). On a
+    phone a select of long choices spans the row."""
+    context = browser.new_context(viewport={"width": 1280, "height": 900})
+    page = context.new_page()
+    cut = []
+    for path in SELECT_PAGES:
+        page.goto(live_server + path)
+        page.wait_for_selector("main")
+        assert page.locator("main select").count(), path
+        page.evaluate("() => document.querySelectorAll('details').forEach(d => { d.open = true; })")
+        for width in (1280, 390):
+            page.set_viewport_size({"width": width, "height": 900})
+            cut += [(width, *row) for row in page.evaluate(OVERFLOWING_OPTIONS, path)]
+        page.set_viewport_size({"width": 1280, "height": 900})
+    context.close()
+    assert cut == []
