@@ -31,6 +31,7 @@ from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
 from app.report import thk_example as thk
+from app.report import thread_examples as threads
 from app.report import trapezoid_table as tr
 
 #: largest relative difference from a published value the app may show.
@@ -39,7 +40,6 @@ TOLERANCE = 0.01
 IN = to_si(1.0, "in")
 LBF = to_si(1.0, "lbf")
 STEEL_E, STEEL_RHO = 206e9, 7850.0
-SQUARE = 1.0
 #: one hour [s] (SKF's lives are in operating hours).
 HOUR_S = 3600.0
 
@@ -66,28 +66,6 @@ class Example:
     def ratio(self) -> float:
         """App value over published value: 1 is exact agreement."""
         return self.value / self.published
-
-
-def _shigley_thread_torque() -> float:
-    """Shigley ex. 8-1 raising torque of the thread alone (the core has no collar)."""
-    d_m = geometry.pitch_diameter(0.032, 0.028)
-    lead = geometry.lead_from_pitch(0.004, 2)
-    eta = efficiency.forward_efficiency(geometry.tan_lead_angle(lead, d_m), 0.08, SQUARE)
-    return torque.load_torque(6400.0, lead, eta)
-
-
-def _shigley_lowering_torque() -> float:
-    """Shigley ex. 8-1 lowering torque of the thread: minus the physical holding torque."""
-    lead = 0.008
-    eta_b = efficiency.backdrive_efficiency(geometry.tan_lead_angle(lead, 0.030), 0.08, SQUARE)
-    return -efficiency.holding_torque(6400.0, lead, eta_b)
-
-
-def _shigley_overall_efficiency() -> float:
-    """Shigley ex. 8-1 overall efficiency: the core's thread torque plus the printed collar
-    torque F f_c d_c / 2, which the core does not model."""
-    collar = 6400.0 * 0.08 * 0.040 / 2
-    return 6400.0 * 0.008 / (2 * math.pi * (_shigley_thread_torque() + collar))
 
 
 def _bnb_pv() -> float:
@@ -127,7 +105,7 @@ def weihong_screw() -> ScrewSpec:
     (``efficiency.friction_for_efficiency``), inertia of a solid 20 mm steel rod at the
     maker's density 7.9 t/m^3 (the maker's W_B D^2 / 8)."""
     tan_l = geometry.tan_lead_angle(WEIHONG_LEAD_M, WEIHONG_SCREW_D_M)
-    mu = efficiency.friction_for_efficiency(tan_l, 0.9, SQUARE)
+    mu = efficiency.friction_for_efficiency(tan_l, 0.9, threads.SQUARE)
     return ScrewSpec(
         id="weihong-ball-screw", series_id="example", series_name="example",
         anti_backlash=False, coated=False, outer_diameter_m=WEIHONG_SCREW_D_M,
@@ -295,7 +273,6 @@ def _tr(name: str, friction: float) -> Example:
     )
 
 
-SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Example 8-1"
 MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
 MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
 NOOK = "Nook Industries, Acme and lead screw assembly application selection example"
@@ -342,17 +319,31 @@ EXAMPLES: tuple[Example, ...] = (
             "root 31.5 mm, 1000 mm, fixed–free, factor 0.25", 6135.0, "N",
             lambda: buckling.allowed_buckling_load(
                 _euler(STEEL_E, 0.0315, 1.0, "fixed-free", True), 0.25)),
-    Example("Raising torque (thread)", SHIGLEY,
+    Example("Raising torque (thread)", threads.SHIGLEY,
             "square, d 32 mm, p 4 mm, double start, f 0.08, F 6.4 kN", 15.94, "N m",
-            _shigley_thread_torque),
-    Example("Lowering torque (thread)", SHIGLEY,
+            threads.shigley_thread_torque),
+    Example("Lowering torque (thread)", threads.SHIGLEY,
             "square, d_m 30 mm, lead 8 mm, f 0.08, F 6.4 kN", -0.466, "N m",
-            _shigley_lowering_torque),
-    Example("Overall efficiency", SHIGLEY,
+            threads.shigley_lowering_torque),
+    Example("Overall efficiency", threads.SHIGLEY,
             "as above, with the printed collar torque 10.24 N m", 0.311, "",
-            _shigley_overall_efficiency),
-    Example("Lead angle", SHIGLEY, "lead 8 mm, d_m 30 mm", 4.852, "°",
+            threads.shigley_overall_efficiency),
+    Example("Lead angle", threads.SHIGLEY, "lead 8 mm, d_m 30 mm", 4.852, "°",
             lambda: math.degrees(geometry.lead_angle(0.008, 0.030))),
+    Example("Raising torque, trapezoidal (thread)", threads.POWER_SCREWS,
+            threads.POWER_SCREWS_INPUTS, 3378.16, "N m", lambda: threads.tr100(300e3)[1]),
+    Example("Lowering torque, self-locking (thread)", threads.POWER_SCREWS,
+            threads.POWER_SCREWS_INPUTS, 1030.69, "N m", lambda: threads.tr100(-300e3)[1],
+            "A self-locking thread must be driven to lower its load: the core's motor torque "
+            "for a thrust behind the move, through the signed back-drive efficiency."),
+    Example("Efficiency, trapezoidal", threads.POWER_SCREWS, threads.POWER_SCREWS_INPUTS,
+            0.339213, "", lambda: threads.tr100(300e3)[0]),
+    Example("Raising torque, Acme (thread)", threads.MOTT,
+            "Acme 1 1/2-4, d_p 1.3429 in, single start, f 0.15, 12,500 lb", 1809.0, "lb in",
+            threads.mott_acme_torque_lb_in, threads.MOTT_NOTE),
+    Example("Raising torque, square thread", threads.ADAPTIVE,
+            "10,000 lb, 2 threads per inch, single start, d_m 2 in, f 0.2", 2840.0, "lb in",
+            threads.adaptive_square_torque_lb_in),
     Example("Torque to move a load", "engineeringprep.com problem 516, Power Screw Torque",
             "20 kN, lead 10 mm, efficiency 70 %", 45.5, "N m",
             lambda: torque.load_torque(20_000.0, 0.01, 0.70)),

@@ -229,6 +229,7 @@ ALLOWED = {
     ("app/core/formulas/support.py", 1e6): "ISO 281: a rating is for 10^6 revolutions",
     ("app/report/thk_example.py", 1e-3): "THK's example: the motor's rotor, 1e-3 kg m^2",
     ("app/report/validation.py", 1e3): "FANUC's example: a table and work of 1000 kg",
+    ("app/report/thread_examples.py", 1e4): "Adaptive Books' example: a load of 10,000 lb",
 }
 #: keyword arguments and calls whose numbers are input bounds and defaults, in the API
 #: unit of their field (pydantic's ``ge``/``le``/``gt``/``lt`` are bounds too): values,
