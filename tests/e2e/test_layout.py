@@ -192,3 +192,21 @@ def test_every_choice_reads_whole_in_its_closed_select(browser: Any, live_server
         page.set_viewport_size({"width": 1280, "height": 900})
     context.close()
     assert cut == []
+
+
+def test_the_form_links_read_on_one_line_each_on_a_phone(browser: Any, live_server: str) -> None:
+    """At 390 px the links beside the Select button wrap below it whole: each reads on one
+    line (they were squeezed into a column of one word a line, six lines tall)."""
+    context = browser.new_context(viewport={"width": 390, "height": 844})
+    page = context.new_page()
+    page.goto(f"{live_server}/")
+    lines = page.evaluate(
+        """() => [...document.querySelectorAll('#selector .actions a')].map(a => {
+             const style = getComputedStyle(a);
+             return [a.textContent, a.getClientRects().length,
+                     a.getBoundingClientRect().height / parseFloat(style.lineHeight)];
+           })"""
+    )
+    context.close()
+    assert len(lines) == 2
+    assert all(rects == 1 and height < 1.5 for _, rects, height in lines), lines
