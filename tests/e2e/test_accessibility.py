@@ -350,9 +350,12 @@ def test_axe_finds_no_violation(
 ) -> None:
     """The state is reached once, at its first width, and scanned at each of its widths in
     turn, the page resized between scans (the violations of every width are reported; a
-    screenshot of a width that has some is kept in test-artifacts)."""
+    screenshot of a width that has some is kept in test-artifacts). At each width the page
+    is also no wider than the window: nothing runs off its side (a wide table scrolls in a
+    region of its own)."""
     page = axe_context.new_page()
     violations: dict[int, list[str]] = {}
+    page_widths: dict[int, int] = {}
     try:
         resize(page, widths_of(name)[0])
         state(page, live_server)
@@ -362,9 +365,11 @@ def test_axe_finds_no_violation(
             assert result["testEngine"]["version"] == "4.14.1"
             assert len(result["passes"]) > 20  # the rules really ran on a page with content
             violations[width] = summary(result["violations"])
+            page_widths[width] = page.evaluate("() => document.documentElement.scrollWidth")
             if violations[width]:
                 slug = re.sub(r"[^a-z0-9]+", "-", name).strip("-")
                 page.screenshot(path=str(artifacts / f"axe-{slug}-{width}.png"))
     finally:
         page.close()
     assert violations == {width: [] for width in widths_of(name)}
+    assert page_widths == {width: width for width in widths_of(name)}
