@@ -276,6 +276,7 @@ def _tr(name: str, friction: float) -> Example:
 MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
 MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
 NOOK = "Nook Industries, Acme and lead screw assembly application selection example"
+ROTON = "Roton, Application Engineering: Speed (https://www.roton.com/resources/application-engineering/speed/)"
 WEIHONG = (
     "Weihong, WISE servo (WSDV) user manual, 3.5.2.1 Example of Motor Selection for Ball "
     "Screw System, pp. 25–27 (https://www.easymanua.ls/weihong/wise-wsdv-6r820psb/manual?p=31, "
@@ -362,6 +363,10 @@ EXAMPLES: tuple[Example, ...] = (
     Example("Peak travel rate", f"{NOOK}, steps 2–3",
             "triangular profile, peak 2 × 3.6 in/s, 1 in lead", 432.0, "in/min",
             lambda: geometry.screw_speed_rpm(2 * 36 * IN / 10.0, 1 * IN)),
+    Example("Screw speed", ROTON, "1 1/2 × .500 Hilead, 100 in/min", 200.0, "rpm",
+            lambda: geometry.screw_speed_rpm(100 * IN / 60.0, 0.5 * IN)),
+    Example("Ball speed limit (DN)", ROTON, "3,000 rpm × in, 3/4 in ball screw", 4000.0, "rpm",
+            lambda: ballscrew.dn_speed_limit(3000 * from_si(IN, "mm"), 0.75 * IN)),
     Example("Stepper corner speed", "Farnell, Stepper motor calculator",
             "24 V, 2 mH, 1.5 A, 200 steps a turn (R neglected)", 1200.0, "rpm",
             lambda: stepper.corner_speed_rpm(24.0, 1.5, 0.0, 0.002, 1.8)),
