@@ -39,8 +39,7 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="load_direction", page="load_direction", core="load_direction",
-        label="Load direction", help="Automatic: a weight if vertical, else "
-        "opposing",
+        label="Load direction", help="Automatic: a weight if vertical, else opposing",
         group="Axis", kind="choice", default="auto", options=LoadDirection,
         texts={"auto": "Automatic", "opposes": "Opposes move", "fixed": "Down (in)"},
     ),
