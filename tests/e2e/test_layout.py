@@ -165,11 +165,18 @@ OVERFLOWING_OPTIONS = """(page) => {
   }
   return out;
 }"""
-#: the pages with selects: the selector with a cycle of moves (its table's selects) and
-#: the custom screw's
+#: the selects not in the page's own font (a control's default is the browser's, smaller)
+FOREIGN_FONTS = """(page) => [...document.querySelectorAll('select')]
+  .filter(s => s.offsetParent && getComputedStyle(s).fontFamily
+                                  !== getComputedStyle(document.body).fontFamily)
+  .map(s => [page, s.name, getComputedStyle(s).fontFamily])"""
+#: the pages with selects: the selector with a cycle of moves (its table's selects), the
+#: custom screw's and a machine's (a screw to choose for each axis)
 SELECT_PAGES = (
     "/?load=50&speed=200&length=500&moves=300:250:2500:2500:0.2:2.5:10:opposes",
     "/custom",
+    "/machine?name1=Z&link1=%2F%3Fload%3D0%26moving_mass_kg%3D0.5%26speed%3D10%26length%3D250"
+    "&name2=X&link2=load%3D0%26moving_mass_kg%3D0.8%26speed%3D100%26length%3D400",
 )
 
 
@@ -177,21 +184,23 @@ def test_every_choice_reads_whole_in_its_closed_select(browser: Any, live_server
     """A closed select shows its chosen option's text alone: each option of every select,
     every Advanced group open, fits its box at 1280 and 390 px, so a choice is never read
     cut off ("By orientation: a w" was all the load direction showed at 1280 px). On a
-    phone a select of long choices spans the row."""
+    phone a select of long choices spans the row. Every select is in the page's font."""
     context = browser.new_context(viewport={"width": 1280, "height": 900})
     page = context.new_page()
-    cut = []
+    cut, fonts = [], []
     for path in SELECT_PAGES:
         page.goto(live_server + path)
         page.wait_for_selector("main")
         assert page.locator("main select").count(), path
         page.evaluate("() => document.querySelectorAll('details').forEach(d => { d.open = true; })")
+        fonts += page.evaluate(FOREIGN_FONTS, path)
         for width in (1280, 390):
             page.set_viewport_size({"width": width, "height": 900})
             cut += [(width, *row) for row in page.evaluate(OVERFLOWING_OPTIONS, path)]
         page.set_viewport_size({"width": 1280, "height": 900})
     context.close()
     assert cut == []
+    assert fonts == []
 
 
 def test_the_form_links_read_on_one_line_each_on_a_phone(browser: Any, live_server: str) -> None:
