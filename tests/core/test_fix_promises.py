@@ -208,6 +208,25 @@ def test_a_pass_message_gives_the_checks_own_demand(catalog: Catalog) -> None:
     assert asked.value == pytest.approx(failed.demand * (1 + FIX_MARGIN), rel=1e-12)
 
 
+def test_a_stepper_fix_names_the_pull_out_it_needs(catalog: Catalog) -> None:
+    """A stepper's curve is its pull-out over the stepper torque margin (1.5 by default):
+    the fix asks for a pull-out of the usable torque needed times that margin, and names
+    the usable torque beside it (it asked for the usable torque alone, a motor 1.5 times
+    too weak)."""
+    screw = catalog.by_id["ZBX8000-L10"]
+    app = light_app(stroke_m=0.2, motor_curve=((0.0, 0.5), (3000.0, 0.3)), step_angle_deg=1.8)
+    demand = next(c for c in evaluate(app, screw).checks if c.name == "motor_curve").demand
+    weak = replace(app, motor_curve=((0.0, 0.2 * demand), (3000.0, 0.1 * demand)))
+    failed = next(c for c in evaluate(weak, screw).checks if c.name == "motor_curve")
+    assert failed.fix is not None and not failed.passed
+    pull_out, usable = failed.fix.values["pull_out"], failed.fix.values["need"]
+    assert isinstance(pull_out, Amount) and isinstance(usable, Amount)
+    assert app.stepper_torque_margin == 1.5
+    assert usable.value == pytest.approx(failed.demand * (1 + FIX_MARGIN), rel=1e-12)
+    assert pull_out.value == pytest.approx(1.5 * usable.value, rel=1e-12)
+    assert "a stepper whose pull-out is {pull_out}" in failed.fix.template
+
+
 @settings(
     max_examples=15, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )

@@ -157,23 +157,33 @@ class MotorCurve(Check):
         return Phrase(text, values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        margin = segments.curve_margin(app)
         values: dict[str, Amount | str] = {
             "short": Amount(r.motor.motor_worst_needed_nm - r.motor.motor_curve_nm, "torque"),
             "need": Amount(at_least(r.motor.motor_worst_needed_nm), "torque"),
+            "pull_out": Amount(at_least(r.motor.motor_worst_needed_nm * margin), "torque"),
+            "margin": f"{margin:g}",
             "rpm": Amount(r.motor.motor_worst_rpm, "rpm"),
             "segment": worst_segment(app, r),
         }
+        # a stepper's pull-out is divided by its margin before the move is held against it
+        motor = (
+            "a motor giving {need} at {rpm}"
+            if app.step_angle_deg is None
+            else "a stepper whose pull-out is {pull_out} at {rpm} ({need} usable over the "
+            "stepper torque margin {margin})"
+        )
         accel = accel_that_fits(r)
         if accel is None:
             return Phrase(
-                "The {segment} segment is {short} short: a motor giving {need} at {rpm}, or "
-                "a lower speed, acceleration or load." + MARGIN_NOTE,
+                "The {segment} segment is {short} short: " + motor + ", or a lower speed, "
+                "acceleration or load." + MARGIN_NOTE,
                 values,
             )
         values["accel"] = Amount(at_most(accel), "accel")
         return Phrase(
             "The {segment} segment is {short} short: an acceleration of at most {accel}, "
-            "or a motor giving {need} at {rpm}." + MARGIN_NOTE,
+            "or " + motor + "." + MARGIN_NOTE,
             values,
         )
 
