@@ -48,11 +48,7 @@ ADAPTIVE = (
     "Adaptive Books, Statics, 5.6.1 Screw threads, problem 2 (https://www.adaptivebooks.org/"
     "statics/friction-the-application-of-statics-to-machine-design/screw-threads)"
 )
-MOTT = (
-    "R. L. Mott, Machine Elements in Mechanical Design, 4th ed., Example Problem 17-1, "
-    "p. 703 (https://fliphtml5.com/eraqv/nlwf/"
-    "Machine_Elements_in_Mechanical_Design_%284th_Edition%29_%28_PDFDrive_%29/719)"
-)
+MOTT = "R. L. Mott, Machine Elements in Mechanical Design, 4th ed., Example Problem 17-1, p. 703"
 MOTT_NOTE = (
     "Mott's own figures (cos 14.5° = 0.968, tan λ = 0.0592) give 1814 lb in by his "
     "equation 17-10, the core's form; the printed 1809 is 0.3 % below it."
