@@ -22,8 +22,20 @@ def _json(value: Any, **_: Any) -> str:
     return pydantic_core.to_json(value, inf_nan_mode="null").decode()
 
 
+def band(ends: Any) -> str:
+    """A (low, high) band to its figures, "low–high"; one figure where the ends agree
+    (a ball nut's L10 life is one value, a plain nut's wear life a band).
+
+    >>> band((3178.53, 3178.53)), band((507.4, 4610.0))
+    ('3,180', '507–4,610')
+    """
+    low, high = figures(ends[0]), figures(ends[1])
+    return low if low == high else f"{low}–{high}"
+
+
 templates.env.policies["json.dumps_function"] = _json
 templates.env.filters["figures"] = figures
+templates.env.filters["band"] = band
 templates.env.globals["value_label"] = value_label
 #: where a motor curve comes from, in words (the results' and the report's footnotes)
 templates.env.globals["curve_origins"] = CURVE_ORIGINS

@@ -874,3 +874,27 @@ def test_the_motor_field_suggests_every_library_motor_and_any(
     options = page.select(f"datalist#{field['list']} option")
     assert [o["value"] for o in options] == [*catalog.motors, "any"]
     assert [o.text for o in options[:-1]] == [m.name for m in catalog.motors.values()]
+
+
+def test_a_ball_screws_detail_shows_no_nut_pv_and_its_l10_life_as_one_value(
+    client: TestClient,
+) -> None:
+    """A ball nut has no plain nut's PV or traverse band: its detail leaves those rows out
+    (it showed a PV beside "not applicable to a ball screw"). Its L10 life is one value,
+    shown once ("3,180 km", not "3,180–3,180 km"), and without a stroke the life says what
+    it needs, not that the nut is not rated."""
+    axis = {"load": "100", "speed": "50", "length": "500", "id": "R08-02.5T2-RSIT"}
+    with_stroke = soup(client.get("/detail", params={**axis, "stroke": "200"}, headers=HX))
+    terms = [dt.text for dt in with_stroke.select("dl.facts dt")]
+    assert "PV" not in terms and "Traverse limit" not in terms and "Critical speed" in terms
+    life = with_stroke.select_one("dl.facts dd.life").text
+    assert life.startswith("3,180 km of travel (318 million cm)"), life
+    assert "–" not in life.split(".")[0]
+    without = soup(client.get("/detail", params=axis, headers=HX))
+    assert without.select_one("dl.facts dd.life").text == (
+        "not worked out: a ball nut's L10 life needs a stroke and a thrust on the nut"
+    )
+    # a plain nut keeps both rows and its life band
+    plain = soup(client.get("/detail", params={**axis, "id": "B6000-L10-TFE"}, headers=HX))
+    plain_terms = [dt.text for dt in plain.select("dl.facts dt")]
+    assert "PV" in plain_terms and "Traverse limit" in plain_terms
