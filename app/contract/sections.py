@@ -183,9 +183,15 @@ class HoldingTorqueOut(BaseModel):
     physics_nm: Annotated[float, From("holding_torque_physics_nm", "torque")] = Field(
         description="F lead eta_b / 2 pi, back-drive eta, static mu."
     )
+    physics_with_margin_nm: Annotated[float, From("holding_torque_with_margin_nm", "torque")] = (
+        Field(
+            description="F lead eta_b / 2 pi, back-drive eta at the static mu times the "
+            "self-locking friction factor: the friction a hold may count on."
+        )
+    )
     brake_nm: Annotated[float, From("brake_nm", "torque")] = Field(
-        description="Holding torque needed: the larger of the two; 0 when self-locking with "
-        "margin (before the torque safety factor)."
+        description="Holding torque needed: the larger of the seed's and the physics with "
+        "margin; 0 when self-locking with margin (before the brake safety factor)."
     )
     available_nm: Annotated[float | None, From("app.brake_torque_nm", "torque")] = Field(
         description="The brake or holding torque given."

@@ -113,6 +113,7 @@ class Candidate:
     max_self_locking_lead_with_margin_m = Column[float]("max_self_locking_lead_with_margin_m")
     holding_torque_seed_nm = Column[float]("holding_seed_nm")
     holding_torque_physics_nm = Column[float]("holding_physics_nm")
+    holding_torque_with_margin_nm = Column[float]("holding_distrusted_nm")
     brake_nm = Column[float]("brake_nm")
     max_utilization = Column[float]("max_utilization")
     passed = Column[bool]("passed")

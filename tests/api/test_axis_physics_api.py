@@ -386,3 +386,20 @@ def test_vacuum_changes_the_answer(client: TestClient) -> None:
     assert any(x["id"].startswith("Tr") for x in plain[:10])
     # over a hundred measured seed screws pass, so none of the unmeasured ones is listed
     assert len(ids) == 100 and not any(x.startswith("Tr") for x in ids)
+
+
+def test_the_holding_torque_a_brake_is_sized_on_is_reported(client: TestClient) -> None:
+    """A 3000 N press on B6000-L2: at the full static friction (0.08) the thread
+    self-locks, so the physics value is 0, but a hold counts on half of it
+    (self_locking_friction_factor 0.5), where it back-drives; the brake is sized on the
+    larger of the catalog's value and that one. The answer names the value it used: it
+    showed 0 beside a brake of 0.428 N m, the larger of 0.308 and 0."""
+    app = {"load_n": 3000, "load_direction": "fixed", "orientation": "vertical",
+           "speed_mm_s": 5, "length_mm": 500}  # fmt: skip
+    hold = evaluate(client, "B6000-L2", **app)["holding_torque"]
+    assert hold["physics_nm"] == 0.0
+    assert hold["brake_nm"] == pytest.approx(
+        max(hold["seed_method_nm"], hold["physics_with_margin_nm"]), rel=1e-9
+    )
+    assert hold["physics_with_margin_nm"] > hold["seed_method_nm"] > 0
+    assert hold["physics_with_margin_nm"] == pytest.approx(0.428, abs=1e-3)

@@ -21,6 +21,16 @@ ROWS: tuple[Reported, ...] = (
         ),
     ),
     Reported(
+        "holding_torque.physics_with_margin_nm",
+        quantity="torque",
+        csv=True,
+        formula=Formula(
+            efficiency.holding_torque,
+            "T_b = F lead eta_b / (2 pi), back-drive eta at f mu_s",
+            SHIGLEY,
+        ),
+    ),
+    Reported(
         "critical_speed.margin",
         "Critical speed margin",
         "Allowed speed (whirling speed × your critical-speed factor) over the operating "
