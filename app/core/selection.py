@@ -2,15 +2,18 @@
 
 import math
 from collections import Counter
-from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping, Sequence, Set
+from dataclasses import dataclass, replace
 from functools import partial
+from typing import Any, cast
 
 import numpy as np
 
 from app.core import kinds, motion
+from app.core.batch import CheckResult
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
+from app.core.evaluate import evaluate
 from app.core.index import CatalogIndex
 from app.core.model import Application, Change, Remedy, ScrewSpec, Summary, holds
 from app.core.phrase import Amount, Phrase, Quantity, join
@@ -228,23 +231,65 @@ def select(
     )
 
 
+#: Rounds in which a change of two or more inputs is judged again with them set: one
+#: input's change can move another's limit (a screw made longer for the stroke lowers the
+#: critical speed the speed was cut to).
+CHANGE_ROUNDS = 3
+
+
 def input_change(best: Candidate) -> dict[str, float]:
     """Inputs that, changed together, clear every failed numeric check of ``best``.
 
     Each failed check offers alternatives (e.g. PV: lower load or lower speed); pick the
-    input that the most failed checks share, and its tightest value. Empty when a failed
-    check has no input remedy (e.g. a yes/no check).
+    input that the most failed checks share, and its tightest value. A change of two or
+    more inputs is judged again with them set, and a check that then fails adds or
+    tightens its input (``CHANGE_ROUNDS``). Empty when a failed check has no input remedy
+    (e.g. a yes/no check).
     """
-    options = [c.input_limits for c in best.failed_checks]
+    change = _shared_change(best.app, best.failed_checks)
+    for _ in range(CHANGE_ROUNDS):
+        if len(change) < 2:
+            break
+        app = replace(best.app, **cast(dict[str, Any], change))
+        more = _shared_change(app, evaluate(app, best.screw).failed_checks, keep=set(change))
+        if not more:
+            break
+        change = {**change, **more}
+    return change
+
+
+def _shared_change(
+    app: Application, failed: Sequence[CheckResult], keep: Set[str] = frozenset()
+) -> dict[str, float]:
+    """The inputs the most of ``failed`` share, each at its tightest value, until every
+    check has one (``input_change``); empty when one of them offers none, or only an input
+    another check moves the other way (a shorter screw for the critical speed, a longer
+    one for the stroke). A limit below the input's value in ``app`` is a most, above it a
+    least. A check that offers an input besides those of ``keep`` (set by an earlier
+    round) changes that one."""
+    options = [c.input_limits for c in failed]
     if not options or any(not o for o in options):
         return {}
+    ways = [{(k, _lowers(app, k, v)): v for k, v in o.items()} for o in options if o]
+    ways = [{kw: v for kw, v in o.items() if kw[0] not in keep} or o for o in ways]
     change: dict[str, float] = {}
-    remaining = [o for o in options if o]
-    while remaining:
-        key = Counter(k for o in remaining for k in o).most_common(1)[0][0]
-        change[key] = min(o[key] for o in remaining if key in o)
-        remaining = [o for o in remaining if key not in o]
+    while ways:
+        key, lower = Counter(kw for o in ways for kw in o).most_common(1)[0][0]
+        picked = [o[key, lower] for o in ways if (key, lower) in o]
+        change[key] = min(picked) if lower else max(picked)
+        ways = [
+            {kw: v for kw, v in o.items() if kw[0] != key} for o in ways if (key, lower) not in o
+        ]
+        if any(not o for o in ways):
+            return {}
     return change
+
+
+def _lowers(app: Application, key: str, limit: float) -> bool:
+    """Whether an input's offered ``limit`` lowers it from its value in ``app`` (a most)
+    rather than raising it (a least); an input not given is set to it."""
+    value = getattr(app, key, None)
+    return not isinstance(value, int | float) or limit <= value
 
 
 def one_input_changes(best: Candidate) -> list[dict[str, float]]:

@@ -222,6 +222,30 @@ def test_the_proposed_input_change_admits_the_nearest_candidate(
     assert still == set(), (best.screw.id, change, still)
 
 
+def test_a_change_of_two_inputs_holds_once_both_are_set(catalog: Catalog) -> None:
+    """Found by the property test above: Tr10x2-bronze at 1 m/s on a 1 m fixed-free screw
+    with a 1 m stroke fails the critical speed (speed at most 8.65 mm/s, or the screw at
+    most 0.11 m), the sliding speed and the stroke (the screw at least 1.02 m). The change
+    offered was the speed for the first two and 1.02 m for the third, and the longer
+    screw then whirled at that speed; now the change is judged again with both set, and
+    the speed tightened until the screw passes. A screw cannot be both at most 0.11 m and
+    at least 1.02 m: the critical speed is never cleared by the length."""
+    app = Application(
+        load_n=1.0, speed_m_s=1.0, length_m=1.0, lead_m=0.002, accel_m_s2=0.5,
+        end_fixity="fixed-free", compression=False, ambient_c=-1.0, stroke_m=1.0,
+        positioning_tolerance_m=1e-5,
+    )  # fmt: skip
+    sel = select(app, catalog.index)
+    best = sel.rejected[0]
+    assert best.screw.id == "Tr10x2-bronze"
+    assert {c.name for c in best.failed_checks} >= {"critical_speed", "stroke_travel"}
+    change = input_change(best)
+    assert change["length_m"] >= 1.02 and change["speed_m_s"] < 0.008648
+    again = evaluate(replace(app, **change), best.screw)
+    failed = {c.name for c in again.checks if (c.utilization or 0.0) > 1 + 1e-9}
+    assert not failed & {c.name for c in best.failed_checks}
+
+
 def test_the_offered_load_limit_passes_when_applied(catalog: Catalog) -> None:
     """Found by the property test above: B14000-L60-TFE, 944.06 N at 208.4 mm/s, fixed-free,
     1.4625 m in tension: PV fails (utilization 2.55); the PV check offers load_n = 369.5 N
