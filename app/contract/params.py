@@ -73,6 +73,16 @@ def unknown_message(name: str, known: Iterable[str]) -> str:
     return f"Unknown parameter '{name[:100]}'{hint}: it is not read."
 
 
+def form_errors(messages: Collection[str]) -> dict[str, str]:
+    """A page's errors that are no one field's (a parameter nothing reads), as the form's
+    notice shows them under the key 'form'; empty when there are none.
+
+    >>> form_errors(["Unknown parameter 'x': it is not read."]), form_errors([])
+    ({'form': "Unknown parameter 'x': it is not read."}, {})
+    """
+    return {"form": " ".join(messages)} if messages else {}
+
+
 #: What a page says of an input it does not have (the custom screw's page of a catalog filter).
 NOT_HERE = "'{name}' is not read on this page: it chooses among the catalog's screws."
 

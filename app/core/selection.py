@@ -332,13 +332,17 @@ def describe_change(
 
 
 def feasible_changes(
-    nearest: Sequence[Candidate], ranges: Ranges, count: int = 5
+    nearest: Sequence[Candidate],
+    ranges: Ranges,
+    count: int = 5,
+    known: Sequence[Mapping[str, float]] = (),
 ) -> tuple[Change, ...]:
     """Input changes within ``ranges`` that admit each of the nearest rejected candidates,
-    one per distinct change: each clears every failed limit of the candidate it names."""
+    one per distinct change: each clears every failed limit of the candidate it names.
+    ``known``: the input changes of the first candidates, already worked out."""
     changes: list[Change] = []
-    for ev in nearest:
-        change = input_change(ev)
+    for k, ev in enumerate(nearest):
+        change = dict(known[k]) if k < len(known) else input_change(ev)
         if change and within(change, ranges) and all(c.inputs != change for c in changes):
             changes.append(Change(change, ev.screw.id))
         if len(changes) == count:
@@ -421,7 +425,9 @@ def summarize(
         after = [] if life is None else [life]
         return Summary(worst, worst_count, None, {}, join([*parts, *note, message, *after]))
     best = nearest[0]
-    change = input_change(best)
+    # each of the nearest candidates' changes, worked out once (each may judge it again)
+    near_changes = [input_change(c) for c in nearest[:REMEDY_FROM]]
+    change = near_changes[0]
     label = BY_NAME[worst].label if worst in BY_NAME else str(worst)
     both = None if screening is None else kinds.neither(screening)
     parts = [
@@ -438,7 +444,7 @@ def summarize(
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
     found, why = _remedies(
-        app, screening, nearest, (worst, label, worst_count == evaluated), ranges
+        app, screening, nearest, near_changes, (worst, label, worst_count == evaluated), ranges
     )
     offer = _offered_change(app, found, why, change, words)
     return Summary(
@@ -447,7 +453,7 @@ def summarize(
         best.screw.id,
         change,
         join([*parts, *offer]),
-        feasible_changes(nearest, ranges),
+        feasible_changes(nearest, ranges, known=near_changes),
         found,
         why,
     )
@@ -477,17 +483,19 @@ def _remedies(
     app: Application,
     sc: Screening | None,
     nearest: Sequence[Candidate],
+    changes: Sequence[Mapping[str, float]],
     most: tuple[str | None, str, bool],
     ranges: Ranges,
 ) -> tuple[tuple[Remedy, ...], Phrase | None]:
-    """The verified remedies from the nearest candidates' input changes, or (none found)
-    why no leadscrew can do it; nothing without the screening to verify against. ``most``:
-    the check excluding the most screws, its label, and whether it excludes them all."""
+    """The verified remedies from the nearest candidates' input changes (``changes``: the
+    first ``REMEDY_FROM`` candidates' ``input_change``), or (none found) why no leadscrew
+    can do it; nothing without the screening to verify against. ``most``: the check
+    excluding the most screws, its label, and whether it excludes them all."""
     if sc is None:
         return (), None
     near = nearest[:REMEDY_FROM]
     targets = [t for c in near for t in one_input_changes(c)]
-    targets += [change for c in near if len(change := input_change(c)) > 1]
+    targets += [dict(change) for change in changes if len(change) > 1]
     failed = {k.name for c in near for k in c.failed_checks}
     found = remedies(app, sc, targets, failed, ranges)
     if found:

@@ -13,7 +13,7 @@ from app.contract.fields import BY_PAGE
 from app.contract.form import TYPED_PREFIX, entered_units, share_query
 from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
-from app.contract.params import unknown_parameters
+from app.contract.params import form_errors, unknown_parameters
 from app.contract.schemas import ApplicationIn
 from app.contract.screws import CustomScrewIn
 from app.contract.units import Display, api_value
@@ -115,7 +115,7 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     context["nut_rows"] = nut_rows(nuts[chosen]) if chosen in nuts else []
     unknown = unknown_parameters(params, OWN_NAMES, LEFT_OUT)
     if unknown:
-        context["errors"] = {"form": " ".join(unknown.values())}
+        context["errors"] = form_errors(unknown.values())
         return context
     if not _started(values):
         return context

@@ -18,7 +18,7 @@ from app.catalog import Catalog
 from app.contract.form import encode_query, parse_inputs
 from app.contract.inputs import ApplicationIn
 from app.contract.machine import MAX_AXES, AxisIn, MachineIn
-from app.contract.params import unknown_message, unknown_parameters
+from app.contract.params import form_errors, unknown_message, unknown_parameters
 from app.report.machine import UnknownChoice, run_machine
 from app.server.compute import computed
 from app.server.deps import CatalogDep
@@ -98,7 +98,7 @@ def machine_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, An
     """The page's form values, errors by query name, and the machine sized when every
     given axis is valid."""
     unknown = [unknown_message(name, MACHINE_NAMES) for name in params if name not in MACHINE_NAMES]
-    errors: dict[str, str] = {"form": " ".join(unknown)} if unknown else {}
+    errors = form_errors(unknown)
     axes = [_axis(i, params, catalog, errors) for i in range(1, MAX_AXES + 1)]
     given = [a for a in axes if a is not None]
     context: dict[str, Any] = {"values": dict(params), "errors": errors, "n": MAX_AXES}

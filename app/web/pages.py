@@ -39,7 +39,7 @@ from app.contract.move_table import (
     moves_of_rows,
     table_rows,
 )
-from app.contract.params import unknown_parameters
+from app.contract.params import form_errors, unknown_parameters
 from app.contract.reported import columns, row_cells, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
@@ -200,7 +200,7 @@ def page_inputs(
     units, values = context["units"], context["values"]
     unknown = unknown_parameters(params)
     if unknown:
-        context["errors"] = {"form": " ".join(unknown.values())}
+        context["errors"] = form_errors(unknown.values())
         return context, None
     if not any(values.get(name, "").strip() for name in REQUIRED):
         return context, None
