@@ -119,7 +119,11 @@ class CandidateFields(BaseModel):
     torque: Annotated[TorqueOut, From("torque")]
     critical_speed: Annotated[CriticalSpeedOut, From("critical_speed")]
     buckling: Annotated[BucklingOut, From("buckling")]
-    pv: Annotated[PVOut, From("pv")]
+    pv: Annotated[PVOut | None, From("pv")] = Field(
+        description="The nut's PV by the seed's method (three threads in contact); null "
+        "for a ball nut and for a standard thread's nut without a seed PV rating, whose "
+        "engaged flanks the nut contact pressure check judges."
+    )
     traverse_speed_limit_mm_s: Annotated[float | None, From("traverse_speed_limit_m_s", "speed")]
     traverse_extrapolated: Annotated[bool, From("traverse_extrapolated")]
     life: Annotated[LifeOut | None, From("life")]

@@ -289,10 +289,17 @@ class Candidate:
         )
 
     @cached_property
-    def pv(self) -> PV:
-        """The nut's PV against its permissible PV: the rating derated to the nut's
-        temperature and raised by its lubrication (``formulas.pv_derating``)."""
-        q, limit = self.quantities, self.screw.pv_limit_pa_m_s
+    def pv(self) -> PV | None:
+        """The nut's PV by the seed's method (three threads in contact) against its
+        permissible PV: the rating derated to the nut's temperature and raised by its
+        lubrication (``formulas.pv_derating``). None for a ball nut (rolling contact) and
+        for a standard thread's nut without a seed PV rating: its engaged flanks are
+        judged instead (the nut contact pressure check), over the nut's own length, where
+        three threads' area would give a second, different pressure."""
+        q, s = self.quantities, self.screw
+        limit = s.pv_limit_pa_m_s
+        if s.screw_type == "ball" or (limit is None and s.pitch_m is not None):
+            return None
         return PV(
             value_pa_m_s=q.nut.pv_pa_m_s,
             limit_pa_m_s=None if limit is None else q.nut.pv_limit_pa_m_s,

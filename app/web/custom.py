@@ -74,7 +74,7 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
     length_mm, _ = api_value(app.length_m, "length")
     speed_mm_per_s, _ = api_value(motion.reached_speed(app), "speed")
     figures = {"critical_speed": critical_speed_figure([c], length_mm, d)}
-    if c.pv.max_load_n is not None:
+    if c.pv is not None and c.pv.max_load_n is not None:
         figures["pv"] = pv_figure([c], speed_mm_per_s, c.axial_load_n, d)
     figures["torque"] = torque_figure([c], app.max_torque_nm, d)
     return figures

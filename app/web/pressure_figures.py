@@ -32,12 +32,12 @@ def pv_figure(
     speeds = span(speed_mm_per_s, PV_SPAN)
     x = [_round(d.value(v, "speed")) for v in speeds]
     data: list[dict[str, Any]] = []
-    for colour, group in zip(
-        PALETTE, by_curve(candidates, lambda c: c.pv.max_load_n), strict=False
-    ):
-        max_load = group[0].pv.max_load_n or 0.0
+    pvs = {c.id: c.pv for c in candidates if c.pv is not None}
+    limited = by_curve([c for c in candidates if c.id in pvs], lambda c: pvs[c.id].max_load_n)
+    for colour, group in zip(PALETTE, limited, strict=False):
+        max_load = pvs[group[0].id].max_load_n or 0.0
         used = ", ".join(
-            f"{c.id} {c.pv.value_mpa_m_s / (c.pv.limit_mpa_m_s or 1):.0%}" for c in group
+            f"{c.id} {pvs[c.id].value_mpa_m_s / (pvs[c.id].limit_mpa_m_s or 1):.0%}" for c in group
         )
         data.append(
             {

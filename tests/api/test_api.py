@@ -100,7 +100,8 @@ CHECK_FIELDS = {
     "message": TEXT,
 }
 # a family without a traverse-speed table (a custom screw) has no traverse limit
-NULLABLE = {"value", "limit", "utilization", "limit_mpa_m_s", "traverse_speed_limit_mm_s"}
+#: a ball nut, and a standard thread's nut judged on its flanks, have no seed PV: "pv" null
+NULLABLE = {"value", "limit", "utilization", "limit_mpa_m_s", "traverse_speed_limit_mm_s", "pv"}
 
 CUSTOM_SCREW: dict[str, Any] = {
     "outer_diameter_mm": 12.7,
@@ -215,6 +216,9 @@ def assert_candidate(candidate: dict[str, Any]) -> None:
         assert field in candidate, f"{name}: no {field}"
         assert_type(candidate[field], kind, f"{name}.{field}", field in NULLABLE)
     for group, fields in CANDIDATE_GROUPS.items():
+        if candidate[group] is None:
+            assert group in NULLABLE, f"{name}.{group} is null"
+            continue
         for field in fields:
             assert field in candidate[group], f"{name}: no {group}.{field}"
             assert_type(

@@ -176,3 +176,36 @@ def test_the_line_reads_in_fahrenheit_with_inches(catalog: Catalog) -> None:
     text = render(check.message, {**DEFAULT_UNITS, "length_unit": "in"})
     assert "at the ambient 104 °F (igus: straight from the 68 °F rating" in text
     assert "none at the material's 199.4 °F" in text
+
+
+@pytest.mark.parametrize(
+    ("screw_id", "seed_pv"),
+    [
+        ("B8000-L10", True),
+        ("Tr12x3-acetal", False),
+        ("Tr10x2-bronze", False),
+        ("R14-10K3-FSC", False),
+    ],
+)
+def test_the_pv_block_is_the_seeds_method_only_where_the_seed_rates_the_nut(
+    client: TestClient, screw_id: str, seed_pv: bool
+) -> None:
+    """The seed's PV assumes three threads in contact. A standard thread's nut is judged
+    over its engaged flanks instead (its own length), where three threads would give a
+    second pressure beside the check's: Tr12x3-acetal's 3-thread pressure is 2.3 times
+    its flank pressure. So its PV block is null, as a ball nut's, and the detail shows no
+    PV row; the seed's polyacetal nut keeps both, with its limit."""
+    body = {"application": AXIS, "screw": {"catalog_id": screw_id}}
+    r = client.post("/api/v1/evaluate", json=body)
+    assert r.status_code == 200, r.text
+    candidate = r.json()["candidate"]
+    names = {c["name"] for c in candidate["checks"]}
+    assert ("pv" in names) == seed_pv
+    if seed_pv:
+        assert candidate["pv"]["limit_mpa_m_s"] == pytest.approx(RATING)
+    else:
+        assert candidate["pv"] is None
+    query = "load=100&speed=50&length=350"
+    page = client.get(f"/detail?{query}&id={screw_id}")
+    assert page.status_code == 200
+    assert ("<dt>PV</dt>" in page.text) == seed_pv
