@@ -178,7 +178,8 @@ class PVOut(BaseModel):
 
 class HoldingTorqueOut(BaseModel):
     seed_method_nm: Annotated[float, From("holding_torque_seed_nm", "torque")] = Field(
-        description="Seed: F lead eta / 2 pi, forward eta."
+        description="Seed: F lead eta / 2 pi, forward eta, where back-driving is likely; "
+        "0 where the thread self-locks with the friction margin."
     )
     physics_nm: Annotated[float, From("holding_torque_physics_nm", "torque")] = Field(
         description="F lead eta_b / 2 pi, back-drive eta, static mu."

@@ -295,12 +295,18 @@ def _lowers(app: Application, key: str, limit: float) -> bool:
 def one_input_changes(best: Candidate) -> list[dict[str, float]]:
     """Each input that alone clears every failed numeric check of ``best`` (one offered
     by all of them), at its tightest value: the alternatives ``input_change`` chooses
-    among (e.g. a shorter screw or a lower speed for the critical speed)."""
+    among (e.g. a shorter screw or a lower speed for the critical speed). An input the
+    checks move different ways (a shorter screw for the critical speed, a longer one for
+    the stroke) clears none of them alone; a most is met at the smallest, a least at the
+    largest (``_lowers``)."""
     options = [c.input_limits for c in best.failed_checks]
     if not options or any(not o for o in options):
         return []
-    shared = set.intersection(*(set(o) for o in options if o))
-    return [{key: min(o[key] for o in options if o)} for key in sorted(shared)]
+    ways = [{(k, _lowers(best.app, k, v)): v for k, v in o.items()} for o in options if o]
+    shared = set.intersection(*(set(o) for o in ways))
+    return [
+        {key: (min if lower else max)(o[key, lower] for o in ways)} for key, lower in sorted(shared)
+    ]
 
 
 def within(change: Mapping[str, float], ranges: Ranges) -> bool:

@@ -23,7 +23,13 @@ from app.core.record import Candidate, records
 from app.core.robustness import build_variants, robustness
 from app.core.screening import eligible_mask, screen_table
 from app.core.sections import number
-from app.core.selection import describe_change, input_change, screen, select
+from app.core.selection import (
+    describe_change,
+    input_change,
+    one_input_changes,
+    screen,
+    select,
+)
 from app.core.table import CandidateTable
 from app.report.service import INPUT_WORDS
 from tests.core.conftest import applications, light_app
@@ -244,6 +250,30 @@ def test_a_change_of_two_inputs_holds_once_both_are_set(catalog: Catalog) -> Non
     again = evaluate(replace(app, **change), best.screw)
     failed = {c.name for c in again.checks if (c.utilization or 0.0) > 1 + 1e-9}
     assert not failed & {c.name for c in best.failed_checks}
+
+
+def test_an_input_two_checks_move_apart_is_no_one_input_change(catalog: Catalog) -> None:
+    """Tr10x2-bronze at 20 mm/s on a 1 m fixed-free screw with a 1 m stroke: the critical
+    speed asks for the speed at most 8.65 mm/s or the screw at most 0.658 m, the stroke
+    for the screw at least 1.02 m. No length clears both, so the length is not a one-input
+    change (the smaller of the two, 0.658 m, was offered); the same two bounds the same
+    way give the tighter one."""
+    app = Application(
+        load_n=1.0, speed_m_s=0.02, length_m=1.0, lead_m=0.002, accel_m_s2=0.5,
+        end_fixity="fixed-free", stroke_m=1.0,
+    )  # fmt: skip
+    best = evaluate(app, catalog.by_id["Tr10x2-bronze"])
+    limits = {c.name: c.input_limits for c in best.failed_checks}
+    assert limits["critical_speed"]["length_m"] == pytest.approx(0.6576, abs=1e-4)
+    assert limits["stroke_travel"] == {"length_m": pytest.approx(1.02)}
+    assert one_input_changes(best) == []
+    # the critical speed alone: each input it offers, at its bound
+    alone = evaluate(replace(app, stroke_m=0.5), catalog.by_id["Tr10x2-bronze"])
+    assert {c.name for c in alone.failed_checks} == {"critical_speed"}
+    assert one_input_changes(alone) == [
+        {"length_m": pytest.approx(0.6576, abs=1e-4)},
+        {"speed_m_s": pytest.approx(0.008648, abs=1e-6)},
+    ]
 
 
 def test_the_offered_load_limit_passes_when_applied(catalog: Catalog) -> None:

@@ -23,12 +23,15 @@ def cumulative_lead_error(lead_accuracy_m_per_m: float, stroke_m: float) -> floa
 
 @formula(
     "dL = alpha stroke (T - 20 C)",
-    "303 stainless 17.3e-6 /K (ASM Handbook); 20 C the reference temperature of lengths (ISO 1)",
+    "alpha the screw material's (catalog, with its provenance; 303 stainless 17.3e-6 /K, "
+    "ASM Handbook); 20 C the reference temperature of lengths (ISO 1)",
 )
 def thermal_growth(expansion_per_k: float, length_m: float, delta_t_k: float) -> float:
-    """Free thermal growth dL = alpha L dT [m].
+    """Free thermal growth dL = alpha L dT [m]; alpha [1/K] the screw material's, L [m],
+    dT [K] from the 20 C reference.
 
-    303 stainless: alpha = 17.3e-6 /K (handbook); polyacetal nut 3.3e-5 /K (seed [1]).
+    For example 303 stainless: alpha = 17.3e-6 /K (handbook); polyacetal nut 3.3e-5 /K
+    (seed [1]).
 
     >>> round(thermal_growth(17.3e-6, 1.0, 10.0) * 1e3, 4)
     0.173
