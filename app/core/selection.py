@@ -424,7 +424,7 @@ def summarize(
     notes = (motion.speed_note(app), _unheld(app, table.reach))  # a family or nut it lacks
     note = [n for n in notes if n is not None]
     if passed:
-        message = Phrase(f"{passed} of {evaluated} candidates pass.")
+        message = Phrase(f"{passed} of {evaluated} candidates pass{'es' if passed == 1 else ''}.")
         first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]
         life = motion.life_note(app)
         parts = [p for p in first if p is not None]

@@ -8,6 +8,7 @@ from dataclasses import replace
 import pytest
 
 from app.catalog import Catalog
+from app.contract.units import render
 from app.core.evaluate import evaluate
 from app.core.formulas import ballscrew
 from app.core.model import Application
@@ -150,6 +151,17 @@ def test_when_no_leadscrew_passes_the_summary_says_so_first_and_names_ball_screw
     # naming the leadscrew families: none passes
     lead = tuple(sorted({s.family_id for s in catalog.screws if s.screw_type == "lead"}))
     assert select(replace(app, families=lead), catalog.index).passed == 0
+
+
+def test_one_passing_ball_screw_is_counted_in_the_singular(catalog: Catalog) -> None:
+    """20 kN at 1.5 m/s over 0.5 m: the design load excludes every leadscrew but ten
+    (which fail other checks) and one ball screw passes; the summary says so in the
+    singular, as does the count."""
+    sel = select(Application(load_n=20_000.0, speed_m_s=1.5, length_m=0.5), catalog.index)
+    assert sel.passed == 1
+    text = render(sel.summary.message)
+    assert "1 ball screw does, first R40-40K2-FSC." in text
+    assert text.endswith(f"1 of {sel.evaluated} candidates passes.")
 
 
 def test_when_neither_kind_can_it_names_the_limit_and_another_drive(catalog: Catalog) -> None:

@@ -138,6 +138,13 @@ def test_htmx_request_gets_fragment_with_push_url_and_oob_errors(client: TestCli
     assert page.select_one("#status[hx-swap-oob]").text.strip().endswith("candidates pass.")
 
 
+def test_the_status_counts_one_passing_candidate_in_the_singular(client: TestClient) -> None:
+    """20 kN at 1.5 m/s over 0.5 m: one ball screw passes."""
+    response = client.get("/", params={"load": 20000, "speed": 1500, "length": 500}, headers=HX)
+    status = soup(response).select_one("#status[hx-swap-oob]").text.strip()
+    assert re.fullmatch(r"1 of \d+ candidates passes\.", status), status
+
+
 def test_history_restore_request_gets_the_full_page(client: TestClient) -> None:
     headers = {**HX, "HX-History-Restore-Request": "true"}
     page = soup(client.get("/", params=AXIS, headers=headers))
