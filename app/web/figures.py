@@ -131,7 +131,8 @@ def critical_speed_figure(
 def torque_figure(
     candidates: Sequence[CandidateOut], limit_nm: float | None, d: Display
 ) -> dict[str, Any]:
-    """Stacked bars of the running torque per candidate: inertia + drag + load.
+    """Stacked bars of the motor torque while accelerating per candidate: inertia + drag
+    + load (``torque.total_nm``, before the torque safety factor).
 
     A dashed line marks the drive's maximum torque when the user gave one.
     """
@@ -165,7 +166,9 @@ def torque_figure(
     return {
         "data": data,
         "layout": _layout(
-            {**_axis("Screw"), "type": "category"}, _axis(f"Running torque [{unit}]"), **extra
+            {**_axis("Screw"), "type": "category"},
+            _axis(f"Torque while accelerating [{unit}]"),
+            **extra,
         ),
     }
 

@@ -372,3 +372,20 @@ def test_screws_whose_wear_lines_coincide_share_one_line(catalog: Catalog) -> No
     assert any(len(group) > 1 for group in named)  # this query's top nuts do coincide
     assert all({wear[i] for i in group} == {wear[group[0]]} for group in named)
     assert len({wear[group[0]] for group in named}) == len(named)  # none drawn twice
+
+
+def test_the_torque_chart_stacks_the_torque_while_accelerating(catalog: Catalog) -> None:
+    """Each candidate's bars (inertia, drag, load) sum to its torque while accelerating
+    (``torque.total_nm``, the table's torque without a move), which the axis names: not
+    a running torque, which has no inertia part."""
+    inputs = ApplicationIn(
+        load_n=50, speed_mm_s=100, length_mm=500, accel_mm_s2=2000, moving_mass_kg=5
+    )
+    result = run_selection(inputs, catalog)
+    figure = result_figures(result, METRIC)["torque"]
+    assert figure["layout"]["yaxis"]["title"]["text"] == "Torque while accelerating [N m]"
+    candidates = plain(result)["candidates"]
+    for i, c in enumerate(candidates):
+        parts = [trace["y"][i] for trace in figure["data"]]
+        assert parts[0] > 0  # the inertia
+        assert sum(parts) == pytest.approx(c["torque"]["total_nm"], rel=1e-3)
