@@ -72,7 +72,7 @@ class CustomScrewIn(BaseModel):
         Annotated[
             float,
             bounded_number(
-                1e-15, 1e3, "Inertia per length [kg m^2/m]; default: solid rod at the root."
+                1e-15, 1e3, "Inertia per length [kg m²/m]; default: solid rod at the root."
             ),
             NotBool,
         ]

@@ -25,7 +25,7 @@ class Accuracy(Check):
     label = "Positioning accuracy"
     description = (
         "Lead error over the stroke, plus the screw's thermal growth over the stroke (its "
-        "material's expansion, the screw taken at the ambient against the 20 C reference; "
+        "material's expansion, the screw taken at the ambient against the 20 °C reference; "
         "its own friction heat is not counted), plus the largest backlash, plus "
         "repeatability, summed as a worst case, against the tolerance."
     )

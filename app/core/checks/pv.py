@@ -32,7 +32,7 @@ class NutPV(Check):
         "A plastic nut heats and wears with pressure times sliding speed; above its PV "
         "limit it fails early. Judged at the peak thrust (an accelerating segment reaches "
         "the top speed still carrying m a) and the top speed. The limit is the nut's "
-        "rating derated in a straight line from the 20 C rating to nothing at the "
+        "rating derated in a straight line from the 20 °C rating to nothing at the "
         "material's highest temperature, at the ambient (its own friction heat is the PV "
         "itself; the nut heat check judges the rise), times a factor for its lubrication."
     )
