@@ -98,7 +98,7 @@ def motor_point(
     p = c.fastest
     peak_rpm = worst_rpm = rpm
     nan = filled(len(t), np.nan)
-    fitting = nan
+    fitting = fitting_speed = nan
     parts: list[Segment[Array]] = []
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
@@ -116,6 +116,8 @@ def motor_point(
         peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = fitting_accel(app, parts, signed, index, worst_rpm)
+        if app.motor_curve and not app.moves:
+            fitting_speed = slower_fit(app, parts, p.peak_speed_m_s)
     curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan
     return {
         "peak_rpm": peak_rpm,
@@ -128,6 +130,7 @@ def motor_point(
         "motor_worst_rpm": worst_rpm,
         "motor_curve_nm": curve,
         "motor_fitting_accel_m_s2": fitting,
+        "motor_fitting_speed_m_s": fitting_speed,
         **cycle_energy.cycle_energy(app, t, parts, c.profiles),
     }
 
@@ -149,3 +152,24 @@ def fitting_accel(
     room = segments.curve_torque(app, rpm) / app.torque_safety_factor - t_run
     fits = accelerating & (slope > 0.0) & (room > 0.0)
     return np.where(fits, room / np.where(fits, slope, 1.0), np.nan)
+
+
+def slower_fit(app: Application, parts: list[Segment[Array]], peak_speed_m_s: float) -> Array:
+    """The top speed [m/s] at which every segment of the move fits the motor curve. A
+    segment's torque does not depend on the speed (the thread's Coulomb friction, the
+    load, the drag, inertia times the acceleration), while its speed scales with the top
+    speed: each segment fits up to the highest rpm at which the usable curve still gives
+    its torque times the safety factor (``segments.curve_speed``), and the top speed
+    ``peak_speed_m_s`` scales by the smallest of those over the segment's rpm. NaN where
+    a segment needs more than the curve gives at its lowest speed (a dwell's hold, or a
+    torque no slower move lowers)."""
+    scale = filled(len(parts[0].rpm), np.inf)
+    for segment in parts:
+        need = np.abs(segment.torque_nm) * app.torque_safety_factor
+        most = segments.curve_speed(app, need)
+        moving = segment.rpm > 0.0
+        ratio = np.divide(
+            most, segment.rpm, out=np.where(np.isnan(most), np.nan, np.inf), where=moving
+        )
+        scale = np.minimum(scale, ratio)
+    return np.asarray(peak_speed_m_s * scale, dtype=np.float64)

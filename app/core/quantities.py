@@ -268,6 +268,9 @@ class MotorPoint(Generic[V]):
     #: the acceleration at which the worst segment fits the curve when that segment is an
     #: acceleration (NaN otherwise, or when no acceleration fits)
     motor_fitting_accel_m_s2: V
+    #: the top speed at which every segment fits the curve (NaN: none, or a cycle of
+    #: moves, whose speeds are the moves')
+    motor_fitting_speed_m_s: V
     #: The stepper's controller: step pulses per second at the peak rpm and the travel
     #: of one pulse [m] (NaN without a step angle).
     step_rate_hz: V

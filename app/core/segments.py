@@ -146,6 +146,30 @@ def curve_margin(app: Application) -> float:
     return app.stepper_torque_margin if app.step_angle_deg is not None else 1.0
 
 
+def curve_speed(app: Application, torque_nm: Array) -> Array:
+    """The highest rpm up to which the motor's usable torque (``curve_torque``) stays at
+    least ``torque_nm`` [N m]: where the curve, linear between its points, first falls
+    below it; the last point's speed where it never does (the motor runs no faster);
+    NaN where it gives less already at its first point.
+
+    >>> app = Application(load_n=0.0, speed_m_s=0.1, length_m=0.5,
+    ...                   motor_curve=((0.0, 0.4), (1000.0, 0.2), (2000.0, 0.1)))
+    >>> np.round(curve_speed(app, np.array([0.3, 0.1, 0.05, 0.5])), 9).tolist()
+    [500.0, 2000.0, 2000.0, nan]
+    """
+    speeds = np.array([point[0] for point in app.motor_curve])
+    usable = np.array([point[1] for point in app.motor_curve]) / curve_margin(app)
+    below = usable[:, None] < torque_nm[None, :]
+    first = np.where(below.any(axis=0), below.argmax(axis=0), len(speeds))
+    before = np.maximum(first - 1, 0)
+    after = np.minimum(first, len(speeds) - 1)
+    drop = usable[before] - usable[after]
+    share = (usable[before] - torque_nm) / np.where(drop > 0.0, drop, 1.0)
+    crossing = speeds[before] + share * (speeds[after] - speeds[before])
+    rpm = np.where(first == len(speeds), speeds[-1], crossing)
+    return np.asarray(np.where(first == 0, np.nan, rpm), dtype=np.float64)
+
+
 def curve_torque(app: Application, rpm: Array) -> Array:
     """The motor's usable torque at ``rpm`` [N m]: its curve, linear between its points,
     divided by ``curve_margin``. Below the first point it is the first point's torque;

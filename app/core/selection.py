@@ -150,6 +150,22 @@ def _nearest_order(s: Screening) -> np.ndarray:
     return failing[np.lexsort((s.max_utilization[failing], s.failed_limits[failing]))]
 
 
+def _fixable_order(s: Screening, skip: Sequence[int]) -> np.ndarray:
+    """Positions of the rejected candidates (nearest first, ``_nearest_order``) whose
+    every failed check can name an input that clears it (``Check.offers_inputs``), those
+    at ``skip`` left out: where the nearest fail on the screw itself (a thread that does
+    not self-lock), these are the screws a change of the application can admit (a slower
+    move for a finer lead)."""
+    order = _nearest_order(s)
+    stuck = np.zeros(len(s.passed), dtype=bool)
+    for name, failed in s.failed_by_check.items():
+        if not BY_NAME[name].offers_inputs:
+            stuck |= failed
+    keep = ~stuck[order] & ~np.isin(order, skip)
+    fixable: np.ndarray = order[keep]
+    return fixable
+
+
 def screen(app: Application, index: CatalogIndex) -> Screening:
     """Screen the candidates of ``index`` eligible for ``app`` (lead, coating, family, nut
     material)."""
@@ -202,6 +218,7 @@ def select(
     found = robust(ranked)
     returned = records(app, s, ranked + nearest, [*found, *[None] * len(nearest)])
     rejected = returned[len(ranked) :]
+    fixable = [] if ranked else _fixable_order(s, nearest[:REMEDY_FROM])[:REMEDY_FROM].tolist()
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(np.count_nonzero(s.passed))
@@ -223,6 +240,7 @@ def select(
             s,
             words,
             [c.screw.id for c in returned[: len(ranked)]],
+            records(app, s, fixable) if fixable else (),
         ),
         screening=s,
         ranked=tuple(ranked),
@@ -243,35 +261,54 @@ def input_change(best: Candidate) -> dict[str, float]:
     Each failed check offers alternatives (e.g. PV: lower load or lower speed); pick the
     input that the most failed checks share, and its tightest value. A change of two or
     more inputs is judged again with them set, and a check that then fails adds or
-    tightens its input (``CHANGE_ROUNDS``). Empty when a failed check has no input remedy
-    (e.g. a yes/no check).
+    tightens its input (``CHANGE_ROUNDS``): each value is a bound, a most or a least, and
+    a round never undoes an earlier one's (a shorter screw for the critical speed after a
+    longer one for the stroke). Empty when a failed check has no input remedy (e.g. a
+    yes/no check), or when the bounds on one input cannot both hold.
     """
-    change = _shared_change(best.app, best.failed_checks)
-    for _ in range(CHANGE_ROUNDS):
-        if len(change) < 2:
+    app, failed = best.app, best.failed_checks
+    least: dict[str, float] = {}
+    most: dict[str, float] = {}
+    change: dict[str, float] = {}
+    for _ in range(CHANGE_ROUNDS + 1):
+        bounded = {(k, True) for k in least} | {(k, False) for k in most}
+        more = _shared_change(app, failed, keep=set(change), banned=bounded)
+        for key, value in more.items():
+            if _lowers(app, key, value):
+                most[key] = min(value, most.get(key, math.inf))
+            else:
+                least[key] = max(value, least.get(key, -math.inf))
+        if any(least[k] > most[k] for k in least.keys() & most.keys()):
+            return {}  # one check needs the input above where another needs it below
+        change = {**change, **{k: most.get(k, least.get(k, 0.0)) for k in more}}
+        if len(change) < 2 or not more:
             break
         app = replace(best.app, **cast(dict[str, Any], change))
-        more = _shared_change(app, evaluate(app, best.screw).failed_checks, keep=set(change))
-        if not more:
-            break
-        change = {**change, **more}
+        failed = evaluate(app, best.screw).failed_checks
     return change
 
 
 def _shared_change(
-    app: Application, failed: Sequence[CheckResult], keep: Set[str] = frozenset()
+    app: Application,
+    failed: Sequence[CheckResult],
+    keep: Set[str] = frozenset(),
+    banned: Set[tuple[str, bool]] = frozenset(),
 ) -> dict[str, float]:
     """The inputs the most of ``failed`` share, each at its tightest value, until every
     check has one (``input_change``); empty when one of them offers none, or only an input
     another check moves the other way (a shorter screw for the critical speed, a longer
     one for the stroke). A limit below the input's value in ``app`` is a most, above it a
     least. A check that offers an input besides those of ``keep`` (set by an earlier
-    round) changes that one."""
+    round) changes that one; none moves an input a way ``banned`` (name, lowers: an
+    earlier round's bound the other way)."""
     options = [c.input_limits for c in failed]
     if not options or any(not o for o in options):
         return {}
-    ways = [{(k, _lowers(app, k, v)): v for k, v in o.items()} for o in options if o]
-    ways = [{kw: v for kw, v in o.items() if kw[0] not in keep} or o for o in ways]
+    ways = [{(k, d): v for k, v in o.items() if (k, d := _lowers(app, k, v)) not in banned}
+            for o in options if o]  # fmt: skip
+    if any(not o for o in ways):
+        return {}
+    ways = _forced([{kw: v for kw, v in o.items() if kw[0] not in keep} or o for o in ways])
     change: dict[str, float] = {}
     while ways:
         key, lower = Counter(kw for o in ways for kw in o).most_common(1)[0][0]
@@ -283,6 +320,27 @@ def _shared_change(
         if any(not o for o in ways):
             return {}
     return change
+
+
+Ways = list[dict[tuple[str, bool], float]]
+
+
+def _forced(ways: Ways) -> Ways:
+    """``ways`` (each failed check's inputs, by name and whether the check lowers it)
+    without an input's direction that a check offering only the other forbids: where the
+    stroke asks only for a longer screw, the critical speed's shorter one is no way out
+    (its lower speed is).
+
+    >>> _forced([{("x", True): 1.0, ("v", True): 2.0}, {("x", False): 3.0}])
+    [{('v', True): 2.0}, {('x', False): 3.0}]
+    """
+    while True:
+        forced = {next(iter(o)) for o in ways if len(o) == 1}
+        banned = {(key, not lower) for key, lower in forced}
+        pruned = [{kw: v for kw, v in o.items() if kw not in banned} for o in ways]
+        if pruned == ways:
+            return ways
+        ways = pruned
 
 
 def _lowers(app: Application, key: str, limit: float) -> bool:
@@ -412,11 +470,14 @@ def summarize(
     screening: Screening | None = None,
     words: Words | None = None,
     passing_ids: Sequence[str] = (),
+    fixable: Sequence[Candidate] = (),
 ) -> Summary:
     """Say what limits the selection; when nothing passes, the nearest fix and the
     feasible changes of the application (within ``ranges``; when the nearest screw's
     change lies outside them, the summary says so and offers none), the inputs named by
-    ``words``."""
+    ``words``. ``fixable``: the nearest rejected candidates besides ``nearest`` whose
+    every failed check names an input that clears it (``_fixable_order``): where no
+    remedy admits one of ``nearest``, the remedies and the feasible changes are theirs."""
     top = by_check.most_common(1)
     worst, worst_count = top[0] if top else (None, 0)
     if evaluated == 0:
@@ -449,9 +510,14 @@ def summarize(
         labels = " and ".join(input_words(k, words or {})[0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
-    found, why = _remedies(
-        app, screening, nearest, near_changes, (worst, label, worst_count == evaluated), ranges
-    )
+    most = (worst, label, worst_count == evaluated)
+    found, why = _remedies(app, screening, nearest, near_changes, most, ranges)
+    pool, known = nearest, near_changes
+    if not found and fixable:  # the nearest fail on the screw: try the screws behind them
+        fixes = [input_change(c) for c in fixable]
+        behind = _remedies(app, screening, fixable, fixes, most, ranges)[0]
+        if behind:
+            found, why, pool, known = behind, None, fixable, fixes
     offer = _offered_change(app, found, why, change, words)
     return Summary(
         worst,
@@ -459,7 +525,7 @@ def summarize(
         best.screw.id,
         change,
         join([*parts, *offer]),
-        feasible_changes(nearest, ranges, known=near_changes),
+        feasible_changes(pool, ranges, known=known),
         found,
         why,
     )

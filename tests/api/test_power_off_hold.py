@@ -121,3 +121,36 @@ def test_the_results_row_answers_and_says_which_governs(client: TestClient) -> N
     assert notes and all("friction calculation governs" in n for n in notes)
     off = client.get("/", params={**page, "hold_power_off": "false"}).text
     assert BeautifulSoup(off, "html.parser").select("td.backdrive .hold-answer") == []
+
+
+def test_a_slower_move_is_offered_where_the_nearest_screws_cannot_hold(
+    client: TestClient,
+) -> None:
+    """8 kg lifted at 100 mm/s (1 m/s^2, 300 mm stroke) by a NEMA 17 stepper
+    (17HS19-2004S1), held with the power off: no screw passes. The nearest fail on the
+    screw itself (a lead too coarse to self-lock, or a torque the curve does not give at
+    any speed); the fine leads that self-lock are further off, failing the motor curve at
+    their high rpm, and a slower move admits them. The summary offers that speed,
+    verified: at it, screws pass."""
+    body = {"load_n": 0, "moving_mass_kg": 8, "orientation": "vertical", "speed_mm_s": 100,
+            "length_mm": 400, "stroke_mm": 300, "accel_mm_s2": 1000,
+            "motor": "17hs19-2004s1", "hold_power_off": True}  # fmt: skip
+    r = client.post("/api/v1/select", json=body)
+    assert r.status_code == 200, r.text
+    summary = r.json()["summary"]
+    assert r.json()["counts"]["passed"] == 0
+    remedy = summary["remedies"][0]
+    assert set(remedy["inputs"]) == {"speed_mm_s"} and remedy["passing"] > 0
+    assert "reduce the linear speed to" in summary["message"]
+    slower = client.post(
+        "/api/v1/select", json={**body, **remedy["inputs"]}, params={"detail": "full"}
+    ).json()
+    assert slower["counts"]["passed"] == remedy["passing"]
+    assert all(c["holds_power_off"] for c in slower["candidates"])
+    for change in summary["changes"]:
+        again = {**body, **change["inputs"]}
+        admitted = client.post(
+            "/api/v1/evaluate",
+            json={"application": again, "screw": {"catalog_id": change["admits"]}},
+        ).json()
+        assert admitted["candidate"]["passed"], change

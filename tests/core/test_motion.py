@@ -106,3 +106,35 @@ def test_a_curve_that_passes_and_one_that_fails_at_the_acceleration_only(
     assert limits is not None
     fitted = replace(_curve_app(2 * between - 1.0), accel_m_s2=limits["accel_m_s2"])
     assert {c.name: c.passed for c in evaluate(fitted, b8000_l10).checks}["motor_curve"]
+
+
+def test_the_motor_curve_names_the_top_speed_at_which_every_segment_fits(
+    b8000_l10: ScrewSpec,
+) -> None:
+    """A curve falling in a straight line from 1 N m at rest to nothing at 1200 rpm gives
+    T(n) = 1 - n / 1200. The segments' torques do not change with the speed, so the move
+    fits up to n* = 1200 (1 - SF T_max) rpm, T_max the largest segment torque: the check
+    offers that top speed (an acceleration fits no more: the constant segment fails too)
+    and the move passes just below it, not just above."""
+    app = _curve_app(0.0)
+    app = replace(app, motor_curve=((0.0, 1.0), (1200.0, 0.0)), speed_m_s=0.2)
+    ev = evaluate(app, b8000_l10)
+    assert ev.motion is not None
+    need = max(abs(s.torque_nm) for s in ev.motion.segments) * app.torque_safety_factor
+    top_rpm = 1200.0 * (1.0 - need)
+    expected = top_rpm * b8000_l10.lead_m / 60.0
+    check = next(c for c in ev.checks if c.name == "motor_curve")
+    assert not check.passed and check.input_limits is not None
+    assert check.input_limits["speed_m_s"] == pytest.approx(expected, rel=1e-9)
+    assert expected < app.speed_m_s
+    for share, passes in ((0.999, True), (1.01, False)):
+        slower = evaluate(replace(app, speed_m_s=expected * share), b8000_l10)
+        assert {c.name: c.passed for c in slower.checks}["motor_curve"] is passes
+
+
+def test_no_top_speed_is_offered_where_the_curve_is_short_at_rest(b8000_l10: ScrewSpec) -> None:
+    """A curve below the segments' torque at every speed: no slower move fits it."""
+    app = replace(_curve_app(0.0), motor_curve=((0.0, 0.01), (1200.0, 0.0)))
+    check = next(c for c in evaluate(app, b8000_l10).checks if c.name == "motor_curve")
+    assert not check.passed
+    assert "speed_m_s" not in (check.input_limits or {})

@@ -252,6 +252,30 @@ def test_a_change_of_two_inputs_holds_once_both_are_set(catalog: Catalog) -> Non
     assert not failed & {c.name for c in best.failed_checks}
 
 
+def test_a_check_that_needs_a_longer_screw_turns_the_others_to_other_inputs(
+    catalog: Catalog,
+) -> None:
+    """Found by the property test: Tr10x2-bronze, 30 N at 10 mm/s on a 2.01 m fixed-free
+    screw with a 2 m stroke, fails the critical speed (speed at most 2.14 mm/s, or the
+    screw at most 0.93 m), buckling (load at most 9.82 N, or the screw at most 1.15 m) and
+    the stroke (the screw at least 2.02 m). Both shorter screws were taken for the first
+    two, which the stroke forbids, and no change was offered; a later round also undid the
+    longer screw. Now the stroke's longer screw stands, and the speed and the load clear
+    the others, with every check passing."""
+    app = Application(
+        load_n=30.0, speed_m_s=0.01, length_m=2.01, lead_m=0.002, accel_m_s2=0.0625,
+        end_fixity="fixed-free", compression=False, ambient_c=-1.0, stroke_m=2.0,
+        positioning_tolerance_m=1e-5, hold_power_off=True,
+    )  # fmt: skip
+    best = select(app, catalog.index).rejected[0]
+    assert best.screw.id == "Tr10x2-bronze"
+    assert {c.name for c in best.failed_checks} == {"critical_speed", "buckling", "stroke_travel"}
+    change = input_change(best)
+    assert change["length_m"] == pytest.approx(2.02)
+    assert change["load_n"] <= 9.8176 and change["speed_m_s"] <= 0.0021407
+    assert evaluate(replace(app, **change), best.screw).passed
+
+
 def test_an_input_two_checks_move_apart_is_no_one_input_change(catalog: Catalog) -> None:
     """Tr10x2-bronze at 20 mm/s on a 1 m fixed-free screw with a 1 m stroke: the critical
     speed asks for the speed at most 8.65 mm/s or the screw at most 0.658 m, the stroke

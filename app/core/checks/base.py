@@ -142,6 +142,13 @@ class Check:
         """Application inputs (core names, SI), any one of which would clear the check."""
         return None
 
+    @property
+    def offers_inputs(self) -> bool:
+        """Whether the check can name an input that clears it (it has ``input_limits`` of
+        its own): a check that cannot (self-locking, a temperature) is cleared by another
+        screw, nut or motor only."""
+        return type(self).input_limits is not Check.input_limits
+
 
 def everywhere(t: CandidateTable) -> Mask:
     return np.ones(len(t), dtype=bool)

@@ -190,5 +190,8 @@ class MotorCurve(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float] | None:
-        accel = accel_that_fits(r)
-        return None if accel is None else {"accel_m_s2": accel}
+        accel, speed = accel_that_fits(r), r.motor.motor_fitting_speed_m_s
+        limits = {} if accel is None else {"accel_m_s2": accel}
+        if math.isfinite(speed) and 0.0 < speed < app.speed_m_s:
+            limits["speed_m_s"] = speed
+        return limits or None
