@@ -14,12 +14,13 @@ moving mass of the axes below; their rotary inertia matters only to their own mo
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
+from app.core.changes import Ranges, Words
 from app.core.evaluate import evaluate
 from app.core.formulas import geometry
 from app.core.index import CatalogIndex
 from app.core.model import Application
 from app.core.record import Candidate
-from app.core.selection import Ranges, Selection, Words, select
+from app.core.selection import Selection, select
 
 
 @dataclass(frozen=True, slots=True)

@@ -1,22 +1,28 @@
 """Selection: screen every candidate, rank the passing ones, explain the rejected."""
 
-import math
 from collections import Counter
-from collections.abc import Callable, Mapping, Sequence, Set
-from dataclasses import dataclass, replace
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
 from functools import partial
-from typing import Any, cast
 
 import numpy as np
 
 from app.core import kinds, motion
-from app.core.batch import CheckResult
+from app.core.changes import (
+    Ranges,
+    Words,
+    describe_change,
+    feasible_changes,
+    input_change,
+    input_words,
+    one_input_changes,
+    within,
+)
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
-from app.core.evaluate import evaluate
 from app.core.index import CatalogIndex
-from app.core.model import Application, Change, Remedy, ScrewSpec, Summary, holds
-from app.core.phrase import Amount, Phrase, Quantity, join
+from app.core.model import Application, Remedy, ScrewSpec, Summary, holds
+from app.core.phrase import Amount, Phrase, join
 from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.remedy import impossible, remedies
 from app.core.robustness import Robustness, Variants, robustness
@@ -26,23 +32,6 @@ from app.core.table import CandidateTable, Reach
 NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
 #: The nearest rejected candidates whose input changes the remedies start from.
 REMEDY_FROM = 8
-#: Each input's accepted range in SI, (low, high) by core name: a change outside it is
-#: never offered (the edge passes its field table's bounds; none: any value).
-Ranges = Mapping[str, tuple[float, float]]
-#: Each input a summary may name, by core name: its label in the reader's words and the
-#: quantity it measures. The edge passes its field table's (the labels live there); an
-#: input it does not name is written as its core name, its value as a bare SI number.
-Words = Mapping[str, tuple[str, Quantity]]
-
-
-def input_words(key: str, words: Words) -> tuple[str, Quantity]:
-    """Input ``key``'s label and quantity from ``words``; its core name and no unit when
-    ``words`` does not name it.
-
-    >>> input_words("load_n", {"load_n": ("axial load", "force")}), input_words("x_m", {})
-    (('axial load', 'force'), ('x_m', 'factor'))
-    """
-    return words.get(key, (key, "factor"))
 
 
 def motor_use(s: Screening) -> np.ndarray:
@@ -247,171 +236,6 @@ def select(
         nearest=tuple(nearest),
         robustness=tuple(found),
     )
-
-
-#: Rounds in which a change of two or more inputs is judged again with them set: one
-#: input's change can move another's limit (a screw made longer for the stroke lowers the
-#: critical speed the speed was cut to).
-CHANGE_ROUNDS = 3
-
-
-def input_change(best: Candidate) -> dict[str, float]:
-    """Inputs that, changed together, clear every failed numeric check of ``best``.
-
-    Each failed check offers alternatives (e.g. PV: lower load or lower speed); pick the
-    input that the most failed checks share, and its tightest value. A change of two or
-    more inputs is judged again with them set, and a check that then fails adds or
-    tightens its input (``CHANGE_ROUNDS``): each value is a bound, a most or a least, and
-    a round never undoes an earlier one's (a shorter screw for the critical speed after a
-    longer one for the stroke). Empty when a failed check has no input remedy (e.g. a
-    yes/no check), or when the bounds on one input cannot both hold.
-    """
-    app, failed = best.app, best.failed_checks
-    least: dict[str, float] = {}
-    most: dict[str, float] = {}
-    change: dict[str, float] = {}
-    for _ in range(CHANGE_ROUNDS + 1):
-        bounded = {(k, True) for k in least} | {(k, False) for k in most}
-        more = _shared_change(app, failed, keep=set(change), banned=bounded)
-        for key, value in more.items():
-            if _lowers(app, key, value):
-                most[key] = min(value, most.get(key, math.inf))
-            else:
-                least[key] = max(value, least.get(key, -math.inf))
-        if any(least[k] > most[k] for k in least.keys() & most.keys()):
-            return {}  # one check needs the input above where another needs it below
-        change = {**change, **{k: most.get(k, least.get(k, 0.0)) for k in more}}
-        if len(change) < 2 or not more:
-            break
-        app = replace(best.app, **cast(dict[str, Any], change))
-        failed = evaluate(app, best.screw).failed_checks
-    return change
-
-
-def _shared_change(
-    app: Application,
-    failed: Sequence[CheckResult],
-    keep: Set[str] = frozenset(),
-    banned: Set[tuple[str, bool]] = frozenset(),
-) -> dict[str, float]:
-    """The inputs the most of ``failed`` share, each at its tightest value, until every
-    check has one (``input_change``); empty when one of them offers none, or only an input
-    another check moves the other way (a shorter screw for the critical speed, a longer
-    one for the stroke). A limit below the input's value in ``app`` is a most, above it a
-    least. A check that offers an input besides those of ``keep`` (set by an earlier
-    round) changes that one; none moves an input a way ``banned`` (name, lowers: an
-    earlier round's bound the other way)."""
-    options = [c.input_limits for c in failed]
-    if not options or any(not o for o in options):
-        return {}
-    ways = [{(k, d): v for k, v in o.items() if (k, d := _lowers(app, k, v)) not in banned}
-            for o in options if o]  # fmt: skip
-    if any(not o for o in ways):
-        return {}
-    ways = _forced([{kw: v for kw, v in o.items() if kw[0] not in keep} or o for o in ways])
-    change: dict[str, float] = {}
-    while ways:
-        key, lower = Counter(kw for o in ways for kw in o).most_common(1)[0][0]
-        picked = [o[key, lower] for o in ways if (key, lower) in o]
-        change[key] = min(picked) if lower else max(picked)
-        ways = [
-            {kw: v for kw, v in o.items() if kw[0] != key} for o in ways if (key, lower) not in o
-        ]
-        if any(not o for o in ways):
-            return {}
-    return change
-
-
-Ways = list[dict[tuple[str, bool], float]]
-
-
-def _forced(ways: Ways) -> Ways:
-    """``ways`` (each failed check's inputs, by name and whether the check lowers it)
-    without an input's direction that a check offering only the other forbids: where the
-    stroke asks only for a longer screw, the critical speed's shorter one is no way out
-    (its lower speed is).
-
-    >>> _forced([{("x", True): 1.0, ("v", True): 2.0}, {("x", False): 3.0}])
-    [{('v', True): 2.0}, {('x', False): 3.0}]
-    """
-    while True:
-        forced = {next(iter(o)) for o in ways if len(o) == 1}
-        banned = {(key, not lower) for key, lower in forced}
-        pruned = [{kw: v for kw, v in o.items() if kw not in banned} for o in ways]
-        if pruned == ways:
-            return ways
-        ways = pruned
-
-
-def _lowers(app: Application, key: str, limit: float) -> bool:
-    """Whether an input's offered ``limit`` lowers it from its value in ``app`` (a most)
-    rather than raising it (a least); an input not given is set to it."""
-    value = getattr(app, key, None)
-    return not isinstance(value, int | float) or limit <= value
-
-
-def one_input_changes(best: Candidate) -> list[dict[str, float]]:
-    """Each input that alone clears every failed numeric check of ``best`` (one offered
-    by all of them), at its tightest value: the alternatives ``input_change`` chooses
-    among (e.g. a shorter screw or a lower speed for the critical speed). An input the
-    checks move different ways (a shorter screw for the critical speed, a longer one for
-    the stroke) clears none of them alone; a most is met at the smallest, a least at the
-    largest (``_lowers``)."""
-    options = [c.input_limits for c in best.failed_checks]
-    if not options or any(not o for o in options):
-        return []
-    ways = [{(k, _lowers(best.app, k, v)): v for k, v in o.items()} for o in options if o]
-    shared = set.intersection(*(set(o) for o in ways))
-    return [
-        {key: (min if lower else max)(o[key, lower] for o in ways)} for key, lower in sorted(shared)
-    ]
-
-
-def within(change: Mapping[str, float], ranges: Ranges) -> bool:
-    """Every value of ``change`` lies within its input's range (inclusive).
-
-    >>> within({"load_n": -5.0}, {"load_n": (0.0, 1e6)}), within({"load_n": 5.0}, {})
-    (False, True)
-    """
-    unbounded = (-math.inf, math.inf)
-    return all(
-        ranges.get(k, unbounded)[0] <= v <= ranges.get(k, unbounded)[1] for k, v in change.items()
-    )
-
-
-def describe_change(
-    app: Application, change: Mapping[str, float | str], words: Words | None = None
-) -> Phrase:
-    """The change in words: "reduce the axial load to {value}" per input, each named by
-    ``words`` ("mount the ends fixed-fixed" for the end fixity)."""
-    parts = []
-    for key, value in change.items():
-        if isinstance(value, str):
-            parts.append(Phrase("mount the ends {v}", {"v": value}))
-            continue
-        label, quantity = input_words(key, words or {})
-        verb = "reduce" if value < getattr(app, key) else "set"
-        parts.append(Phrase(f"{verb} the {label} to {{v}}", {"v": Amount(value, quantity)}))
-    return join(parts, " and ")
-
-
-def feasible_changes(
-    nearest: Sequence[Candidate],
-    ranges: Ranges,
-    count: int = 5,
-    known: Sequence[Mapping[str, float]] = (),
-) -> tuple[Change, ...]:
-    """Input changes within ``ranges`` that admit each of the nearest rejected candidates,
-    one per distinct change: each clears every failed limit of the candidate it names.
-    ``known``: the input changes of the first candidates, already worked out."""
-    changes: list[Change] = []
-    for k, ev in enumerate(nearest):
-        change = dict(known[k]) if k < len(known) else input_change(ev)
-        if change and within(change, ranges) and all(c.inputs != change for c in changes):
-            changes.append(Change(change, ev.screw.id))
-        if len(changes) == count:
-            break
-    return tuple(changes)
 
 
 def _unheld(app: Application, reach: Reach) -> Phrase | None:

@@ -15,6 +15,7 @@ from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.contract.units import render
+from app.core.changes import describe_change, input_change, one_input_changes
 from app.core.evaluate import evaluate
 from app.core.index import Eligible, EligibleCache
 from app.core.model import Application
@@ -23,13 +24,7 @@ from app.core.record import Candidate, records
 from app.core.robustness import build_variants, robustness
 from app.core.screening import eligible_mask, screen_table
 from app.core.sections import number
-from app.core.selection import (
-    describe_change,
-    input_change,
-    one_input_changes,
-    screen,
-    select,
-)
+from app.core.selection import screen, select
 from app.core.table import CandidateTable
 from app.report.service import INPUT_WORDS
 from tests.core.conftest import applications, light_app
