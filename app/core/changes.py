@@ -151,6 +151,14 @@ def one_input_changes(best: Candidate) -> list[dict[str, float]]:
     ]
 
 
+def stroke_fits(app: Application) -> bool:
+    """The nut's stroke stays on the screw: at most its length less the nut length given
+    (the input table's rule, ``ApplicationInputs._stroke_fits``). A change that breaks it
+    (a screw shortened below a seed nut's stroke, which no stroke-travel check judges
+    without the nut's length) is no application the inputs accept."""
+    return app.stroke_m is None or app.stroke_m <= app.length_m - (app.nut_length_m or 0.0)
+
+
 def within(change: Mapping[str, float], ranges: Ranges) -> bool:
     """Every value of ``change`` lies within its input's range (inclusive).
 
@@ -191,7 +199,9 @@ def feasible_changes(
     changes: list[Change] = []
     for k, ev in enumerate(nearest):
         change = dict(known[k]) if k < len(known) else input_change(ev)
-        if change and within(change, ranges) and all(c.inputs != change for c in changes):
+        if not change or not stroke_fits(replace(ev.app, **cast(dict[str, Any], change))):
+            continue
+        if within(change, ranges) and all(c.inputs != change for c in changes):
             changes.append(Change(change, ev.screw.id))
         if len(changes) == count:
             break

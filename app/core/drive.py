@@ -163,7 +163,7 @@ def slower_fit(app: Application, parts: list[Segment[Array]], peak_speed_m_s: fl
     ``peak_speed_m_s`` scales by the smallest of those over the segment's rpm. NaN where
     a segment needs more than the curve gives at its lowest speed (a dwell's hold, or a
     torque no slower move lowers)."""
-    scale = filled(len(parts[0].rpm), np.inf)
+    scale: Array = np.full(np.shape(parts[0].torque_nm), np.inf)
     for segment in parts:
         need = np.abs(segment.torque_nm) * app.torque_safety_factor
         most = segments.curve_speed(app, need)

@@ -18,6 +18,7 @@ from itertools import combinations
 
 import numpy as np
 
+from app.core.changes import stroke_fits
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import FIXITY_ORDER, Application, Remedy
 from app.core.phrase import Phrase
@@ -71,6 +72,8 @@ def verify(app: Application, sc: Screening, change: Inputs) -> Remedy | None:
     """Screen the candidates of ``sc`` again with ``change`` made: a remedy when one
     passes at a governing utilisation of at most 1 / (1 + MARGIN)."""
     changed = replace(app, **dict(change))  # type: ignore[arg-type]
+    if not stroke_fits(changed):
+        return None
     again = screen_table(changed, sc.table, sc.index, sc.reach)
     worst = again.max_utilization[again.passed]
     bound = 1.0 / (1.0 + MARGIN)

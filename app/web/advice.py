@@ -14,6 +14,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from pydantic import ValidationError
+
 from app.contract.exact import page_value
 from app.contract.fields import BY_API
 from app.contract.form import share_query
@@ -127,10 +129,14 @@ def remedy_links(result: SelectOut | PageSelectionOut, units: dict[str, str]) ->
     for remedy in result.summary.remedies:
         made = [remedy_change(result.inputs, api, v, units) for api, v in remedy.inputs.items()]
         values = [value for _, value in made]
+        try:
+            href = _link(result.inputs, dict(zip(remedy.inputs, values, strict=True)), units)
+        except ValidationError:  # rounded for the page, it no longer fits the other inputs
+            continue
         links.append(
             RemedyLink(
                 changes=tuple(change for change, _ in made),
-                href=_link(result.inputs, dict(zip(remedy.inputs, values, strict=True)), units),
+                href=href,
                 passing=remedy.passing,
                 utilization=percent(remedy.utilization),
             )

@@ -631,6 +631,30 @@ def test_every_apply_link_is_accepted(
         assert not soup(after).select(".error:not(:empty)"), link["href"]
 
 
+def test_no_proposed_change_shortens_the_screw_below_its_stroke(client: TestClient) -> None:
+    """22.48 lbf at 50 in/s on a 500 in screw with a 200 in stroke, the seed's families and
+    the ISO ones: nothing passes, and the screws an input change can admit have seed nuts,
+    whose length the catalog does not give (no stroke-travel check judges them). A
+    shorter screw and a lower load admit them, but a 52.7 in screw is shorter than the
+    200 in stroke, which the form refuses: no such change is offered, and the page
+    answers (it answered 500 when its Apply link could not be built)."""
+    params = {"load": "22.48", "speed": "50", "length": "500", "stroke": "200",
+              "cycles_per_day": "1000", "force_unit": "lbf", "length_unit": "in",
+              "family": "B,KHD,TR-304,TR-C45,VHD,ZBX"}  # fmt: skip
+    response = client.get("/", params=params)
+    assert response.status_code == 200
+    api = client.get("/api/v1/select", params={
+        "load_n": 100, "speed_mm_s": 1270, "length_mm": 12700, "stroke_mm": 5080,
+        "cycles_per_day": 1000, "family": params["family"].split(",")}).json()  # fmt: skip
+    assert api["counts"]["passed"] == 0
+    offered = [r["inputs"] for r in api["summary"]["remedies"]]
+    offered += [c["inputs"] for c in api["summary"]["changes"]]
+    for inputs in offered:
+        assert inputs.get("length_mm", 12700) >= inputs.get("stroke_mm", 5080), inputs
+    for link in soup(response).select("a.apply, a.apply-all"):
+        assert client.get(link["href"]).status_code == 200, link["href"]
+
+
 def test_a_proposal_rounded_past_its_bound_is_held_at_the_bound() -> None:
     """A target just above the slowest accepted speed (0.001 mm/s), shown in in/s and
     rounded down to 3 figures, would fall below it: the proposal stops at the bound, which
