@@ -335,13 +335,9 @@ def summarize(
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
     most = (worst, label, worst_count == evaluated)
-    found, why = _remedies(app, screening, nearest, near_changes, most, ranges)
-    pool, known = nearest, near_changes
-    if not found and fixable:  # the nearest fail on the screw: try the screws behind them
-        fixes = [input_change(c) for c in fixable]
-        behind = _remedies(app, screening, fixable, fixes, most, ranges)[0]
-        if behind:
-            found, why, pool, known = behind, None, fixable, fixes
+    found, why, pool, known = _verified(
+        app, screening, (nearest, near_changes), fixable, most, ranges
+    )
     offer = _offered_change(app, found, why, change, words)
     return Summary(
         worst,
@@ -353,6 +349,29 @@ def summarize(
         found,
         why,
     )
+
+
+def _verified(
+    app: Application,
+    sc: Screening | None,
+    near: tuple[Sequence[Candidate], Sequence[Mapping[str, float]]],
+    fixable: Sequence[Candidate],
+    most: tuple[str | None, str, bool],
+    ranges: Ranges,
+) -> tuple[tuple[Remedy, ...], Phrase | None, Sequence[Candidate], Sequence[Mapping[str, float]]]:
+    """The remedies (``_remedies``) from the nearest candidates and their input changes
+    (``near``), else, where none is verified and the nearest fail on the screw itself,
+    from those of ``fixable``; with the candidates and changes the feasible changes are
+    read from."""
+    nearest, changes = near
+    found, why = _remedies(app, sc, nearest, changes, most, ranges)
+    if found or not fixable:
+        return found, why, nearest, changes
+    fixes = [input_change(c) for c in fixable]
+    behind = _remedies(app, sc, fixable, fixes, most, ranges)[0]
+    if not behind:
+        return found, why, nearest, changes
+    return behind, None, fixable, fixes
 
 
 def _offered_change(
