@@ -6,6 +6,7 @@ from dataclasses import replace
 
 import pytest
 
+from app.contract.units import render
 from app.core import motion
 from app.core.evaluate import evaluate
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, ScrewSpec
@@ -127,6 +128,9 @@ def test_the_motor_curve_names_the_top_speed_at_which_every_segment_fits(
     assert not check.passed and check.input_limits is not None
     assert check.input_limits["speed_m_s"] == pytest.approx(expected, rel=1e-9)
     assert expected < app.speed_m_s
+    # the fix names it with the fixes' margin: 5 % below
+    assert check.fix is not None and "a top speed of at most {speed}" in check.fix.template
+    assert check.fix.values["speed"].value == pytest.approx(expected * 0.95, rel=1e-9)
     for share, passes in ((0.999, True), (1.01, False)):
         slower = evaluate(replace(app, speed_m_s=expected * share), b8000_l10)
         assert {c.name: c.passed for c in slower.checks}["motor_curve"] is passes
@@ -138,3 +142,4 @@ def test_no_top_speed_is_offered_where_the_curve_is_short_at_rest(b8000_l10: Scr
     check = next(c for c in evaluate(app, b8000_l10).checks if c.name == "motor_curve")
     assert not check.passed
     assert "speed_m_s" not in (check.input_limits or {})
+    assert check.fix is not None and "speed" not in render(check.fix)

@@ -80,6 +80,14 @@ def accel_that_fits(r: Quantities[float]) -> float | None:
     return None if math.isnan(accel) else accel
 
 
+def speed_that_fits(app: Application, r: Quantities[float]) -> float | None:
+    """The top speed at which every segment fits the curve, below the speed asked for
+    [m/s] (``Quantities.motor.motor_fitting_speed_m_s``; None: no slower move fits, or a
+    cycle of moves, whose speeds are the moves' own)."""
+    speed = r.motor.motor_fitting_speed_m_s
+    return speed if math.isfinite(speed) and 0.0 < speed < app.speed_m_s else None
+
+
 class MotorCurve(Check):
     name = "motor_curve"
     why_none = "the motor's curve is too low for every screw: a larger motor or a gearbox"
@@ -173,25 +181,40 @@ class MotorCurve(Check):
             else "a stepper whose pull-out is {pull_out} at {rpm} ({need} usable over the "
             "stepper torque margin {margin})"
         )
-        accel = accel_that_fits(r)
-        if accel is None:
+        accel, speed = accel_that_fits(r), speed_that_fits(app, r)
+        if accel is None and speed is None:
+            lower = "speed, acceleration" if app.moves else "acceleration"
             return Phrase(
-                "The {segment} segment is {short} short: " + motor + ", or a lower speed, "
-                "acceleration or load." + MARGIN_NOTE,
+                "The {segment} segment is {short} short: "
+                + motor
+                + ", or a lower "
+                + lower
+                + " or load."
+                + MARGIN_NOTE,
                 values,
             )
-        values["accel"] = Amount(at_most(accel), "accel")
+        options = []
+        if accel is not None:
+            values["accel"] = Amount(at_most(accel), "accel")
+            options.append("an acceleration of at most {accel}")
+        if speed is not None:
+            values["speed"] = Amount(at_most(speed), "speed")
+            options.append("a top speed of at most {speed}")
         return Phrase(
-            "The {segment} segment is {short} short: an acceleration of at most {accel}, "
-            "or " + motor + "." + MARGIN_NOTE,
+            "The {segment} segment is {short} short: "
+            + ", ".join(options)
+            + ", or "
+            + motor
+            + "."
+            + MARGIN_NOTE,
             values,
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float] | None:
-        accel, speed = accel_that_fits(r), r.motor.motor_fitting_speed_m_s
+        accel, speed = accel_that_fits(r), speed_that_fits(app, r)
         limits = {} if accel is None else {"accel_m_s2": accel}
-        if math.isfinite(speed) and 0.0 < speed < app.speed_m_s:
+        if speed is not None:
             limits["speed_m_s"] = speed
         return limits or None
