@@ -48,15 +48,15 @@ def input_change(best: Candidate) -> dict[str, float]:
     tightens its input (``CHANGE_ROUNDS``): each value is a bound, a most or a least, and
     a round never undoes an earlier one's (a shorter screw for the critical speed after a
     longer one for the stroke). Empty when a failed check has no input remedy (e.g. a
-    yes/no check), or when the bounds on one input cannot both hold.
+    yes/no check), or when the bounds on one input cannot both hold. The inputs' own
+    rules bound it too (``_input_rules``: no screw shorter than its stroke).
     """
     app, failed = best.app, best.failed_checks
-    least: dict[str, float] = {}
+    least = _input_rules(app)
     most: dict[str, float] = {}
     change: dict[str, float] = {}
     for _ in range(CHANGE_ROUNDS + 1):
-        bounded = {(k, True) for k in least} | {(k, False) for k in most}
-        more = _shared_change(app, failed, keep=set(change), banned=bounded)
+        more = _shared_change(app, failed, keep=set(change), bounds=(least, most))
         for key, value in more.items():
             if _lowers(app, key, value):
                 most[key] = min(value, most.get(key, math.inf))
@@ -72,24 +72,43 @@ def input_change(best: Candidate) -> dict[str, float]:
     return change
 
 
+def _input_rules(app: Application) -> dict[str, float]:
+    """The least value of each input that the other inputs' rules set (``stroke_fits``):
+    the screw's length, at least the stroke and the nut length given."""
+    if app.stroke_m is None:
+        return {}
+    return {"length_m": app.stroke_m + (app.nut_length_m or 0.0)}
+
+
+Bounds = tuple[Mapping[str, float], Mapping[str, float]]
+
+
 def _shared_change(
     app: Application,
     failed: Sequence[CheckResult],
     keep: Set[str] = frozenset(),
-    banned: Set[tuple[str, bool]] = frozenset(),
+    bounds: Bounds = ({}, {}),
 ) -> dict[str, float]:
     """The inputs the most of ``failed`` share, each at its tightest value, until every
     check has one (``input_change``); empty when one of them offers none, or only an input
     another check moves the other way (a shorter screw for the critical speed, a longer
     one for the stroke). A limit below the input's value in ``app`` is a most, above it a
     least. A check that offers an input besides those of ``keep`` (set by an earlier
-    round) changes that one; none moves an input a way ``banned`` (name, lowers: an
-    earlier round's bound the other way)."""
+    round) changes that one; none takes an input past ``bounds`` (each input's least and
+    most: an earlier round's, or the inputs' own rules)."""
     options = [c.input_limits for c in failed]
     if not options or any(not o for o in options):
         return {}
-    ways = [{(k, d): v for k, v in o.items() if (k, d := _lowers(app, k, v)) not in banned}
-            for o in options if o]  # fmt: skip
+    least, most = bounds
+    ways = [
+        {
+            (k, _lowers(app, k, v)): v
+            for k, v in o.items()
+            if least.get(k, -math.inf) <= v <= most.get(k, math.inf)
+        }
+        for o in options
+        if o
+    ]
     if any(not o for o in ways):
         return {}
     ways = _forced([{kw: v for kw, v in o.items() if kw[0] not in keep} or o for o in ways])

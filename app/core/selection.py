@@ -2,8 +2,9 @@
 
 from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
+from typing import Any, cast
 
 import numpy as np
 
@@ -16,6 +17,7 @@ from app.core.changes import (
     input_change,
     input_words,
     one_input_changes,
+    stroke_fits,
     within,
 )
 from app.core.checks import BY_NAME
@@ -330,7 +332,8 @@ def summarize(
         ),
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
-    if change and not within(change, ranges):
+    accepted = stroke_fits(replace(app, **cast(dict[str, Any], change)))
+    if change and not (within(change, ranges) and accepted):
         labels = " and ".join(input_words(k, words or {})[0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}

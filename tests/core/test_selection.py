@@ -271,6 +271,29 @@ def test_a_check_that_needs_a_longer_screw_turns_the_others_to_other_inputs(
     assert evaluate(replace(app, **change), best.screw).passed
 
 
+def test_the_change_keeps_the_screw_at_least_as_long_as_its_stroke(catalog: Catalog) -> None:
+    """KHD6000-L30-TFE, 50 N at 200 mm/s on a 1 m fixed-free screw with a 0.97 m stroke:
+    the critical speed offers the speed at most 122.5 mm/s or the screw at most 0.783 m,
+    buckling the load at most 35.6 N or the screw at most 0.844 m. Both shorter screws
+    were taken (the seed's nut has no length, so no stroke-travel check objects), and the
+    summary said no length within the accepted inputs admits it; the screw cannot be
+    shorter than its stroke, so the speed and the load are the change."""
+    app = Application(
+        load_n=50.0, speed_m_s=0.2, length_m=1.0, stroke_m=0.97, families=("KHD",),
+        end_fixity="fixed-free",
+    )  # fmt: skip
+    sel = select(app, catalog.index)
+    best = sel.rejected[0]
+    assert best.screw.id == "KHD6000-L30-TFE"
+    assert {c.name for c in best.failed_checks} == {"critical_speed", "buckling"}
+    assert sel.summary.input_change == {
+        "speed_m_s": pytest.approx(0.12252, abs=1e-5),
+        "load_n": pytest.approx(35.610, abs=1e-3),
+    }
+    assert "No length_m" not in render(sel.summary.message)
+    assert evaluate(replace(app, **sel.summary.input_change), best.screw).passed
+
+
 def test_an_input_two_checks_move_apart_is_no_one_input_change(catalog: Catalog) -> None:
     """Tr10x2-bronze at 20 mm/s on a 1 m fixed-free screw with a 1 m stroke: the critical
     speed asks for the speed at most 8.65 mm/s or the screw at most 0.658 m, the stroke
