@@ -178,15 +178,20 @@ def stroke_fits(app: Application) -> bool:
     return app.stroke_m is None or app.stroke_m <= app.length_m - (app.nut_length_m or 0.0)
 
 
-def within(change: Mapping[str, float], ranges: Ranges) -> bool:
-    """Every value of ``change`` lies within its input's range (inclusive).
+def within(change: Mapping[str, float | str], ranges: Ranges) -> bool:
+    """Every numeric value of ``change`` lies within its input's range (inclusive); a
+    choice (an end fixity) is one of its input's own.
 
     >>> within({"load_n": -5.0}, {"load_n": (0.0, 1e6)}), within({"load_n": 5.0}, {})
     (False, True)
+    >>> within({"end_fixity": "fixed-fixed", "load_n": 5.0}, {"load_n": (0.0, 1e6)})
+    True
     """
     unbounded = (-math.inf, math.inf)
     return all(
-        ranges.get(k, unbounded)[0] <= v <= ranges.get(k, unbounded)[1] for k, v in change.items()
+        ranges.get(k, unbounded)[0] <= v <= ranges.get(k, unbounded)[1]
+        for k, v in change.items()
+        if not isinstance(v, str)
     )
 
 

@@ -18,7 +18,7 @@ from itertools import combinations
 
 import numpy as np
 
-from app.core.changes import stroke_fits
+from app.core.changes import stroke_fits, within
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import FIXITY_ORDER, Application, Remedy
 from app.core.phrase import Phrase
@@ -57,15 +57,6 @@ def part_way(current: float, target: float, share: float) -> float:
     if current <= 0.0 or target <= 0.0:
         return current + share * (target - current)
     return float(current * (target / current) ** share)
-
-
-def within(change: Inputs, ranges: Mapping[str, tuple[float, float]]) -> bool:
-    """Every numeric value of ``change`` within its input's accepted range."""
-    for key, value in change.items():
-        low, high = ranges.get(key, (-math.inf, math.inf))
-        if isinstance(value, float) and not low <= value <= high:
-            return False
-    return True
 
 
 def verify(app: Application, sc: Screening, change: Inputs) -> Remedy | None:
