@@ -73,8 +73,9 @@ def input_change(best: Candidate) -> dict[str, float]:
 
 
 def _input_rules(app: Application) -> dict[str, float]:
-    """The least value of each input that the other inputs' rules set (``stroke_fits``):
-    the screw's length, at least the stroke and the nut length given."""
+    """The least value of each input that the other inputs' rules set: the screw's
+    length, at least the stroke and the nut length given (the input table's rule,
+    ``ApplicationInputs._stroke_fits``; ``stroke_fits``)."""
     if app.stroke_m is None:
         return {}
     return {"length_m": app.stroke_m + (app.nut_length_m or 0.0)}
@@ -174,8 +175,9 @@ def stroke_fits(app: Application) -> bool:
     """The nut's stroke stays on the screw: at most its length less the nut length given
     (the input table's rule, ``ApplicationInputs._stroke_fits``). A change that breaks it
     (a screw shortened below a seed nut's stroke, which no stroke-travel check judges
-    without the nut's length) is no application the inputs accept."""
-    return app.stroke_m is None or app.stroke_m <= app.length_m - (app.nut_length_m or 0.0)
+    without the nut's length) is no application the inputs accept. The rule is
+    ``_input_rules``, which every ``input_change`` keeps already."""
+    return all(getattr(app, key) >= least for key, least in _input_rules(app).items())
 
 
 def within(change: Mapping[str, float | str], ranges: Ranges) -> bool:
@@ -223,9 +225,7 @@ def feasible_changes(
     changes: list[Change] = []
     for k, ev in enumerate(nearest):
         change = dict(known[k]) if k < len(known) else input_change(ev)
-        if not change or not stroke_fits(replace(ev.app, **cast(dict[str, Any], change))):
-            continue
-        if within(change, ranges) and all(c.inputs != change for c in changes):
+        if change and within(change, ranges) and all(c.inputs != change for c in changes):
             changes.append(Change(change, ev.screw.id))
         if len(changes) == count:
             break

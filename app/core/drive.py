@@ -117,7 +117,7 @@ def motor_point(
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = fitting_accel(app, parts, signed, index, worst_rpm)
         if app.motor_curve and not app.moves:
-            fitting_speed = slower_fit(app, parts, p.peak_speed_m_s)
+            fitting_speed = slower_fit(app, magnitude, speeds, p.peak_speed_m_s)
     curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan
     return {
         "peak_rpm": peak_rpm,
@@ -154,22 +154,16 @@ def fitting_accel(
     return np.where(fits, room / np.where(fits, slope, 1.0), np.nan)
 
 
-def slower_fit(app: Application, parts: list[Segment[Array]], peak_speed_m_s: float) -> Array:
-    """The top speed [m/s] at which every segment of the move fits the motor curve. A
-    segment's torque does not depend on the speed (the thread's Coulomb friction, the
-    load, the drag, inertia times the acceleration), while its speed scales with the top
-    speed: each segment fits up to the highest rpm at which the usable curve still gives
-    its torque times the safety factor (``segments.curve_speed``), and the top speed
-    ``peak_speed_m_s`` scales by the smallest of those over the segment's rpm. NaN where
-    a segment needs more than the curve gives at its lowest speed (a dwell's hold, or a
-    torque no slower move lowers)."""
-    scale: Array = np.full(np.shape(parts[0].torque_nm), np.inf)
-    for segment in parts:
-        need = np.abs(segment.torque_nm) * app.torque_safety_factor
-        most = segments.curve_speed(app, need)
-        moving = segment.rpm > 0.0
-        ratio = np.divide(
-            most, segment.rpm, out=np.where(np.isnan(most), np.nan, np.inf), where=moving
-        )
-        scale = np.minimum(scale, ratio)
-    return np.asarray(peak_speed_m_s * scale, dtype=np.float64)
+def slower_fit(app: Application, torque_nm: Array, rpm: Array, peak_speed_m_s: float) -> Array:
+    """The top speed [m/s] at which every segment of the move fits the motor curve, from
+    each segment's torque magnitude ``torque_nm`` and speed ``rpm`` (a row per segment, a
+    column per candidate). A segment's torque does not depend on the speed (the thread's
+    Coulomb friction, the load, the drag, inertia times the acceleration), while its
+    speed scales with the top speed: each segment fits up to the highest rpm at which the
+    usable curve still gives its torque times the safety factor (``segments.curve_speed``),
+    and the top speed ``peak_speed_m_s`` scales by the smallest of those over the
+    segment's rpm. NaN where a segment needs more than the curve gives at its lowest
+    speed (a dwell's hold, or a torque no slower move lowers)."""
+    most = segments.curve_speed(app, torque_nm * app.torque_safety_factor)
+    ratio = np.divide(most, rpm, out=np.where(np.isnan(most), np.nan, np.inf), where=rpm > 0.0)
+    return np.asarray(peak_speed_m_s * ratio.min(axis=0), dtype=np.float64)

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from app.core.checks import BY_NAME
-from app.core.phrase import Phrase
+from app.core.phrase import Phrase, plural
 from app.core.screening import Screening
 from app.core.table import Mask
 
@@ -39,9 +39,10 @@ def no_leadscrew(sc: Screening, passing_ids: Sequence[str]) -> Phrase | None:
         return None
     name, count = _most_excluding(sc, lead)
     balls = [i for i in passing_ids if sc.table.screws[_position(sc, i)].screw_type == "ball"]
+    passing = int(np.count_nonzero(sc.passed & ball))
     return Phrase(
         f"No leadscrew passes: {_label(name)} excludes {count} of {int(lead.sum())} "
-        f"leadscrews. {_count(int(np.count_nonzero(sc.passed & ball)), 'ball screw')}"
+        f"leadscrews. {passing} {plural(passing, 'ball screw does', 'ball screws do')}"
         + (f", first {', '.join(balls[:NAMED])}." if balls else ".")
     )
 
@@ -71,9 +72,8 @@ def neither(sc: Screening) -> Phrase | None:
         what = check.why_none
     elif name == "back_driving" and (only := _only_back_driving(sc, ball)):
         what = (
-            f"{only} of them pass{'es' if only == 1 else ''} every other check: a ball "
-            "screw with a brake can (each "
-            "one's fix gives the brake's holding torque)"
+            f"{only} of them {plural(only, 'passes', 'pass')} every other check: a ball "
+            "screw with a brake can (each one's fix gives the brake's holding torque)"
         )
     elif name in SHAFT_CHECKS:
         what = (
@@ -87,12 +87,3 @@ def neither(sc: Screening) -> Phrase | None:
         f"Neither a leadscrew nor a ball screw in the catalog can do this: {_label(name)} "
         f"excludes {count} of {total} ball screws too; {what}."
     )
-
-
-def _count(n: int, noun: str) -> str:
-    """``n`` of ``noun`` with its verb: "1 ball screw does", "3 ball screws do".
-
-    >>> _count(1, "ball screw"), _count(3, "ball screw")
-    ('1 ball screw does', '3 ball screws do')
-    """
-    return f"{n} {noun} does" if n == 1 else f"{n} {noun}s do"

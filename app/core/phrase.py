@@ -74,6 +74,15 @@ def join(parts: "list[Phrase]", separator: str = " ") -> Phrase:
     )
 
 
+def plural(count: int, one: str, many: str) -> str:
+    """``one`` for a count of 1, ``many`` for any other: the words that agree with it.
+
+    >>> f"1 of 5 candidates {plural(1, 'passes', 'pass')}", plural(3, "screw does", "screws do")
+    ('1 of 5 candidates passes', 'screws do')
+    """
+    return one if count == 1 else many
+
+
 def figures(value: float, digits_below: int = 7) -> str:
     """A count or life to three significant figures as an engineer writes it: without an
     exponent from 0.001 to below 10^``digits_below``, thousands grouped.

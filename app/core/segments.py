@@ -157,17 +157,19 @@ def curve_speed(app: Application, torque_nm: Array) -> Array:
     >>> np.round(curve_speed(app, np.array([0.3, 0.1, 0.05, 0.5])), 9).tolist()
     [500.0, 2000.0, 2000.0, nan]
     """
-    speeds = np.array([point[0] for point in app.motor_curve])
-    usable = np.array([point[1] for point in app.motor_curve]) / curve_margin(app)
-    below = usable[:, None] < torque_nm[None, :]
+    speeds, torques = _curve_points(app)
+    usable = torques / curve_margin(app)
+    need = np.ravel(torque_nm)
+    below = usable[:, None] < need[None, :]
     first = np.where(below.any(axis=0), below.argmax(axis=0), len(speeds))
     before = np.maximum(first - 1, 0)
     after = np.minimum(first, len(speeds) - 1)
     drop = usable[before] - usable[after]
-    share = (usable[before] - torque_nm) / np.where(drop > 0.0, drop, 1.0)
+    share = (usable[before] - need) / np.where(drop > 0.0, drop, 1.0)
     crossing = speeds[before] + share * (speeds[after] - speeds[before])
     rpm = np.where(first == len(speeds), speeds[-1], crossing)
-    return np.asarray(np.where(first == 0, np.nan, rpm), dtype=np.float64)
+    rpm = np.where(first == 0, np.nan, rpm)
+    return np.asarray(rpm.reshape(np.shape(torque_nm)), dtype=np.float64)
 
 
 def curve_torque(app: Application, rpm: Array) -> Array:
@@ -175,6 +177,14 @@ def curve_torque(app: Application, rpm: Array) -> Array:
     divided by ``curve_margin``. Below the first point it is the first point's torque;
     past the last point the motor cannot run (the speed check rejects it), and the
     torque is read at the last point."""
-    speeds = [point[0] for point in app.motor_curve]
-    torques = [point[1] for point in app.motor_curve]
-    return np.interp(np.minimum(rpm, speeds[-1]), speeds, torques) / curve_margin(app)
+    speeds, torques = _curve_points(app)
+    usable: Array = np.interp(np.minimum(rpm, speeds[-1]), speeds, torques) / curve_margin(app)
+    return usable
+
+
+def _curve_points(app: Application) -> tuple[Array, Array]:
+    """The motor curve's speeds [rpm] and torques [N m], as arrays."""
+    curve: Array = np.array(app.motor_curve, dtype=np.float64).reshape(-1, 2)
+    speeds: Array = curve[:, 0]
+    torques: Array = curve[:, 1]
+    return speeds, torques

@@ -2,9 +2,8 @@
 
 from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import partial
-from typing import Any, cast
 
 import numpy as np
 
@@ -17,14 +16,13 @@ from app.core.changes import (
     input_change,
     input_words,
     one_input_changes,
-    stroke_fits,
     within,
 )
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
 from app.core.model import Application, Remedy, ScrewSpec, Summary, holds
-from app.core.phrase import Amount, Phrase, join
+from app.core.phrase import Amount, Phrase, join, plural
 from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.remedy import impossible, remedies
 from app.core.robustness import Robustness, Variants, robustness
@@ -141,13 +139,12 @@ def _nearest_order(s: Screening) -> np.ndarray:
     return failing[np.lexsort((s.max_utilization[failing], s.failed_limits[failing]))]
 
 
-def _fixable_order(s: Screening, skip: Sequence[int]) -> np.ndarray:
-    """Positions of the rejected candidates (nearest first, ``_nearest_order``) whose
-    every failed check can name an input that clears it (``Check.offers_inputs``), those
-    at ``skip`` left out: where the nearest fail on the screw itself (a thread that does
-    not self-lock), these are the screws a change of the application can admit (a slower
-    move for a finer lead)."""
-    order = _nearest_order(s)
+def _fixable_order(s: Screening, order: np.ndarray, skip: Sequence[int]) -> np.ndarray:
+    """The positions of ``order`` (the rejected candidates, nearest first:
+    ``_nearest_order``) whose every failed check can name an input that clears it
+    (``Check.offers_inputs``), those at ``skip`` left out: where the nearest fail on the
+    screw itself (a thread that does not self-lock), these are the screws a change of
+    the application can admit (a slower move for a finer lead)."""
     stuck = np.zeros(len(s.passed), dtype=bool)
     for name, failed in s.failed_by_check.items():
         if not BY_NAME[name].offers_inputs:
@@ -205,11 +202,13 @@ def select(
     )
     s, robust = _screen(app, index)
     ranked = _rank_order(app, s)[: app.limit].tolist()
-    nearest = _nearest_order(s)[: app.limit].tolist()
+    order = _nearest_order(s)
+    nearest = order[: app.limit].tolist()
     found = robust(ranked)
     returned = records(app, s, ranked + nearest, [*found, *[None] * len(nearest)])
     rejected = returned[len(ranked) :]
-    fixable = [] if ranked else _fixable_order(s, nearest[:REMEDY_FROM])[:REMEDY_FROM].tolist()
+    skip = nearest[:REMEDY_FROM]
+    fixable = [] if ranked else _fixable_order(s, order, skip)[:REMEDY_FROM].tolist()
     by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
     by_check = Counter({k: v for k, v in by_check.items() if v})
     n_passed = int(np.count_nonzero(s.passed))
@@ -311,7 +310,7 @@ def summarize(
     notes = (motion.speed_note(app), _unheld(app, table.reach))  # a family or nut it lacks
     note = [n for n in notes if n is not None]
     if passed:
-        message = Phrase(f"{passed} of {evaluated} candidates pass{'es' if passed == 1 else ''}.")
+        message = Phrase(f"{passed} of {evaluated} candidates {plural(passed, 'passes', 'pass')}.")
         first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]
         life = motion.life_note(app)
         parts = [p for p in first if p is not None]
@@ -332,8 +331,7 @@ def summarize(
         ),
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
-    accepted = stroke_fits(replace(app, **cast(dict[str, Any], change)))
-    if change and not (within(change, ranges) and accepted):
+    if change and not within(change, ranges):
         labels = " and ".join(input_words(k, words or {})[0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
