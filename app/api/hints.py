@@ -20,12 +20,13 @@ from app.server.errors import ApiRoute
 
 
 def hinted(error: dict[str, Any]) -> dict[str, Any]:
-    """A validation error with the hint of its refused name, where there is one."""
+    """A validation error of a refused name, saying which name: with the hint of it
+    where there is one."""
     loc = error.get("loc") or ()
     if error.get("type") != "extra_forbidden" or not loc or not isinstance(loc[-1], str):
         return error
     hint = api_hint(loc[-1])
-    return error if hint is None else {**error, "msg": f"Not an API name: {hint}"}
+    return {**error, "msg": hint or f"'{loc[-1][:100]}' is not an input this route reads"}
 
 
 class HintedRoute(ApiRoute):

@@ -118,8 +118,9 @@ def test_a_page_name_in_a_body_is_refused_with_the_api_name(client: TestClient) 
     [
         ("force_unit", "a page's setting"),
         ("speed_mm", "did you mean 'speed_mm_s'"),
+        ("screw_type", "'screw_type' is not an input this route reads"),
     ],
-    ids=["unit-switch", "misspelled"],
+    ids=["unit-switch", "misspelled", "unknown"],
 )
 def test_other_unread_names_say_what_the_api_reads(
     client: TestClient, name: str, words: str
@@ -129,6 +130,7 @@ def test_other_unread_names_say_what_the_api_reads(
     assert r.status_code == 422
     (message,) = [d["message"] for d in r.json()["detail"] if d["field"] == name]
     assert words in message
+    assert message.count("API name") <= 1  # said once
 
 
 def test_a_custom_screw_has_no_links(client: TestClient) -> None:
