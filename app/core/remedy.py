@@ -138,12 +138,17 @@ def remedies(
 
 
 def impossible(
-    most_excluding: str | None, label: str, excludes_all: bool, nearest_fails: Sequence[str]
+    most_excluding: str | None,
+    label: str,
+    excludes_all: bool,
+    nearest_fails: Sequence[str],
+    kind: str = "leadscrew",
 ) -> Phrase:
     """Why no change tried lets a screw pass. When the check that excludes the most
-    excludes every screw, no leadscrew of the catalog can do it: say so and what kind of
-    drive could; otherwise name what the nearest screws fail on (``nearest_fails``, check
-    labels), whose fixes name the change that would clear them."""
+    excludes every screw, no screw of the ``kind`` screened ("leadscrew", "ball screw" or
+    "screw" for both) can do it: say so and what kind of drive could; otherwise name what
+    the nearest screws fail on (``nearest_fails``, check labels), whose fixes name the
+    change that would clear them."""
     tried = (
         f"no change of load, speed, length, acceleration or mounting tried lets one pass "
         f"with a {MARGIN * 100:.0f} % margin"
@@ -159,6 +164,6 @@ def impossible(
     why = (check and check.why_none) or f"{label} excludes every screw"
     drive = " with this motor" if most_excluding in MOTOR_BOUND else ""
     return Phrase(
-        f"No leadscrew in the catalog can do this{drive} within the accepted inputs: {tried}. "
+        f"No {kind} in the catalog can do this{drive} within the accepted inputs: {tried}. "
         f"{why[0].upper()}{why[1:]}."
     )

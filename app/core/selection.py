@@ -404,8 +404,8 @@ def _remedies(
     ranges: Ranges,
 ) -> tuple[tuple[Remedy, ...], Phrase | None]:
     """The verified remedies from the nearest candidates' input changes (``changes``: the
-    first ``REMEDY_FROM`` candidates' ``input_change``), or (none found) why no leadscrew
-    can do it; nothing without the screening to verify against. ``most``: the check
+    first ``REMEDY_FROM`` candidates' ``input_change``), or (none found) why no screw
+    of the kind screened can do it; nothing without the screening to verify against. ``most``: the check
     excluding the most screws, its label, and whether it excludes them all."""
     if sc is None:
         return (), None
@@ -418,4 +418,10 @@ def _remedies(
         return found, None
     worst, label, excludes_all = most
     fails = list(dict.fromkeys(k.label for c in near for k in c.failed_checks))
-    return found, impossible(worst, label, excludes_all, fails)
+    return found, impossible(worst, label, excludes_all, fails, _kind_screened(sc))
+
+
+def _kind_screened(sc: Screening) -> str:
+    """The kind of screw screened: "leadscrew", "ball screw", or "screw" for both."""
+    ball = sc.table.ball
+    return "ball screw" if ball.all() else "screw" if ball.any() else "leadscrew"

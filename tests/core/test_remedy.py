@@ -104,6 +104,26 @@ def test_when_no_change_helps_it_says_no_leadscrew_can_and_why(catalog: Catalog)
     assert "temperature" in text and "5 % margin" in text
 
 
+def test_when_only_ball_screws_were_screened_it_names_ball_screws(catalog: Catalog) -> None:
+    """A 30 kg vertical axis on the HIWIN rolled ball screws alone, no brake: every ball
+    screw back-drives, and the sentence names the kind screened, not leadscrews."""
+    app = Application(
+        load_n=0.0,
+        speed_m_s=0.1,
+        length_m=0.8,
+        stroke_m=0.6,
+        accel_m_s2=2.0,
+        moving_mass_kg=30.0,
+        orientation="vertical",
+        families=("HIWIN-ROLLED",),
+    )
+    summary = select(app, catalog.index, INPUT_RANGES).summary
+    assert summary.impossible is not None
+    text = summary.impossible.template
+    assert text.startswith("No ball screw in the catalog can do this"), text
+    assert "leadscrew" not in text
+
+
 def test_when_some_screws_are_excluded_otherwise_it_does_not_say_no_leadscrew_can(
     catalog: Catalog,
 ) -> None:
