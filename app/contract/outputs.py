@@ -82,7 +82,7 @@ class SummaryOut(BaseModel):
     )
     impossible: str | None = Field(
         default=None,
-        description="When nothing passes and no remedy is found: why no leadscrew can do it.",
+        description="When nothing passes and no remedy is found: why no screw can do it.",
     )
 
 

@@ -396,7 +396,7 @@ class Remedy:
 @dataclass(frozen=True, slots=True)
 class Summary:
     """Why nothing (or little) passes, and the input changes that would admit the nearest;
-    when nothing passes, the verified remedies, or why no leadscrew can do it."""
+    when nothing passes, the verified remedies, or why no screw can do it."""
 
     most_excluding_check: str | None
     most_excluding_count: int

@@ -1,5 +1,5 @@
 """When nothing passes: changes of the application that make a screw pass with a margin,
-each verified by screening again with it made, or why no leadscrew can do it.
+each verified by screening again with it made, or why no screw can do it.
 
 A rejected candidate's failed checks say which input value would clear each one
 (``Check.input_limits``: the value at the limit itself). A remedy moves each input

@@ -405,8 +405,9 @@ def _remedies(
 ) -> tuple[tuple[Remedy, ...], Phrase | None]:
     """The verified remedies from the nearest candidates' input changes (``changes``: the
     first ``REMEDY_FROM`` candidates' ``input_change``), or (none found) why no screw
-    of the kind screened can do it; nothing without the screening to verify against. ``most``: the check
-    excluding the most screws, its label, and whether it excludes them all."""
+    of the kind screened can do it; nothing without the screening to verify against.
+    ``most``: the check excluding the most screws, its label, and whether it excludes
+    them all."""
     if sc is None:
         return (), None
     near = nearest[:REMEDY_FROM]

@@ -107,7 +107,7 @@ def test_impossible_axis_advice(
     page.goto(f"{live_server}/?{HOT}")
     why = page.locator(".no-pass .impossible")
     why.wait_for()
-    assert why.inner_text().startswith("No leadscrew in the catalog can do this")
+    assert why.inner_text().startswith("No screw in the catalog can do this")
     assert page.locator(".no-pass a.apply").count() == 0
     page.evaluate(to_notice)
     page.screenshot(path=str(artifacts / "impossible-no-leadscrew-phone-390.png"))

@@ -67,7 +67,7 @@ def test_an_impossible_axis_through_the_api_and_the_page(client: TestClient) -> 
     assert api["counts"]["passed"] == 0
     assert api["summary"]["remedies"] == []
     why = api["summary"]["impossible"]
-    assert why.startswith("No leadscrew in the catalog can do this within the accepted inputs")
+    assert why.startswith("No screw in the catalog can do this within the accepted inputs")
     assert "rated for this temperature" in why
     page = BeautifulSoup(
         client.get("/?load=100&speed=50&length=300&ambient_c=400").text, "html.parser"

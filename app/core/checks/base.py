@@ -106,7 +106,7 @@ class Check:
     sources: ClassVar[tuple[str, ...]] = ()
     #: catalog fields the capacity rests on; empty: the capacity is the user's input
     capacity_sources: ClassVar[tuple[str, ...]] = ()
-    #: when this check excludes every screw of the catalog: why no leadscrew can do it
+    #: when this check excludes every screw of the catalog: why no screw can do it
     #: and what kind of drive could (lower case, no full stop); empty: the remedy says
     #: only that the check excludes every screw
     why_none: ClassVar[str] = ""
