@@ -14,6 +14,10 @@ from app.core.model import Application, Profile, Segment
 from app.core.motion import segment_travels
 from app.core.table import Array, CandidateTable, filled
 
+#: A net work within this share of the sum of its terms' sizes is rounding, not work: a
+#: weight raised and lowered again does none (double precision keeps some 16 digits).
+ROUNDING = 1e-12
+
 #: The energy of one cycle, per candidate [J] (``cycle_energy``).
 ENERGY = (
     "cycle_motor_work_j",
@@ -53,12 +57,13 @@ def cycle_energy(
         return dict.fromkeys(ENERGY, nan)
     travels = [x for p in every for x in (*segment_travels(p), 0.0)]
     zero = np.zeros(len(t))
-    motor, regen, load, thread = zero, zero, zero, zero
+    motor, regen, load, thread, size = zero, zero, zero, zero, zero
     for s, x in zip(parts, travels, strict=True):
         shaft = energy.shaft_energy(s.torque_nm, x, t.lead_m)
         motor = motor + np.maximum(shaft, 0.0)
         regen = regen + np.maximum(-shaft, 0.0)
         load = load + s.thrust_n * x
+        size = size + np.abs(s.thrust_n * x)
         thread = thread + energy.thread_loss(
             s.thrust_n, x, t.efficiency, t.backdrive_efficiency_signed
         )
@@ -72,7 +77,7 @@ def cycle_energy(
     return {
         "cycle_motor_work_j": motor,
         "cycle_regen_j": regen,
-        "cycle_load_work_j": load,
+        "cycle_load_work_j": np.where(np.abs(load) <= ROUNDING * size, 0.0, load),
         "cycle_thread_loss_j": thread,
         "cycle_drag_loss_j": np.asarray(
             energy.shaft_energy(t.drag_max_nm, sum(travels), t.lead_m), dtype=np.float64
