@@ -882,9 +882,37 @@ def test_results_columns_say_what_they_mean_in_plain_words(client: TestClient) -
     for body, c in zip(page.select("tbody.candidate"), api["candidates"], strict=True):
         cell = body.select_one("td.backdrive").text
         assert ("Self-locking" in cell) == c["self_locking"]
-        if not c["self_locking"]:  # a brake only where there is a load to hold
+        assert ("only at full friction" in cell) == (
+            c["self_locking"] and not c["self_locking_with_margin"]
+        )
+        if not c["self_locking_with_margin"]:  # a brake only where there is a load to hold
             held = c["holding_torque"]["brake_nm"] > 0
             assert ("brake ≥" in cell) == held and ("no load to hold" in cell) != held
+
+
+def test_a_screw_self_locking_only_at_full_friction_shows_its_brake(client: TestClient) -> None:
+    """Tr14x6(P3) with a bronze nut lifting 50 lbf and 10 lb: its lead angle (8.7 deg) is
+    below the static friction angle (9.4 deg at mu_s 0.16) but above the angle at half of
+    it, the friction a hold may count on. Its holding cell says so and gives the brake,
+    as its verdict does ("back-drives: a brake of ... holds it power-off"), and does not
+    say plainly that it self-locks."""
+    params = {"load": "222.4", "moving_mass_kg": "4.536", "orientation": "vertical"}
+    params |= {"speed": "50.8", "length": "609.6", "family": "TR-C45", "lead": "6"}
+    params |= {"hold_power_off": "false"}  # the motor holds it: the screw still passes
+    api = client.get("/api/v1/select", params={
+        "load_n": "222.4", "moving_mass_kg": "4.536", "orientation": "vertical",
+        "speed_mm_s": "50.8", "length_mm": "609.6", "family": "TR-C45", "lead_mm": "6",
+        "hold_power_off": "false", "detail": "full",
+    }).json()  # fmt: skip
+    bronze = next(c for c in api["candidates"] if c["id"] == "Tr14x6(P3)-bronze")
+    assert bronze["self_locking"] and not bronze["self_locking_with_margin"]
+    assert bronze["holding_torque"]["brake_nm"] > 0
+    page = soup(client.get("/", params=params))
+    body = next(b for b in page.select("tbody.candidate") if "Tr14x6(P3)-bronze" in b.text)
+    cell = body.select_one("td.backdrive").text
+    assert "Self-locking only at full friction" in cell and "brake ≥" in cell, cell
+    detail = soup(client.get("/detail", params={**params, "id": "Tr14x6(P3)-bronze"})).text
+    assert "It self-locks only at its full static friction" in detail
 
 
 def test_moving_mass_follows_the_force_unit(client: TestClient) -> None:

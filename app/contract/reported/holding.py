@@ -23,6 +23,7 @@ ROWS: tuple[Reported, ...] = (
         "self_locking_with_margin",
         type=bool,
         formula=Formula(efficiency.self_locking_limit_friction),
+        views=("row",),
     ),
     Reported("seed_rule_no_backdrive", type=bool, formula=Formula(efficiency.seed_backdrive_rule)),
     Reported(
@@ -47,7 +48,9 @@ ROWS: tuple[Reported, ...] = (
         "holding_torque.brake_nm",
         "Holds the load?",
         "Whether the load alone can turn the screw with the motor off. “Self-locking” "
-        "holds it; “back-drives” needs a brake of at least the torque shown.",
+        "holds it, at the friction a hold may count on (the self-locking friction "
+        "factor times the static friction); “back-drives”, or self-locking only at the "
+        "full static friction, needs a brake of at least the torque shown.",
         quantity="torque",
         better="lower",
         cell="holding",
