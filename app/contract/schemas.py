@@ -81,7 +81,8 @@ class CandidateFields(BaseModel):
         description="The load driving the screw while it runs: dynamic friction."
     )
     self_locking: Annotated[bool, From("self_locking")] = Field(
-        description="mu_static >= cos(a_n) tan(lambda)."
+        description="mu_static >= cos(a_n) tan(lambda): self-locking at the full static "
+        "friction (a hold counts on self_locking_with_margin)."
     )
     self_locking_with_margin: Annotated[bool, From("self_locking_with_margin")] = Field(
         description="Self-locking with static friction reduced by the self-locking factor."
