@@ -64,6 +64,12 @@ NUT_VALUES = {
 }
 
 
+#: A ranged catalog value's ScrewSpec fields at its low and at its high end.
+Ends = tuple[Mapping[str, float], Mapping[str, float]]
+#: The catalog's name of the ranged nut length over the screw's diameter.
+NUT_LENGTH_RANGE = "nut_length_to_d"
+
+
 @dataclass(frozen=True, slots=True)
 class NutMaterial:
     """One catalog nut material: its key (the variant, "bronze"), its name, the family it
@@ -71,7 +77,9 @@ class NutMaterial:
     range [C], whether oil suits it, its maker's dynamic thrust table (rows d [m], P [m],
     thrust [N]; None: not rated so), the running and static friction the catalog gives
     it (a suggestion: the user gives the screw's own), the nut's length over the screw's
-    diameter the family takes (None: none), and each value's provenance."""
+    diameter the family takes (None: none) and that ratio's range, the ends of its
+    limits given with a range (the wear rate's scatter: ``ScrewSpec.assumption_ends``),
+    and each value's provenance."""
 
     key: str
     name: str
@@ -84,6 +92,8 @@ class NutMaterial:
     friction_static: float
     nut_length_to_d: float | None = None
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
+    ends: Mapping[str, Ends] = field(default_factory=dict)
+    nut_length_to_d_ends: tuple[float, float] | None = None
 
     def rates_by_pressure(self) -> bool:
         """Whether a limit reads the engaged flank area (pitch and nut length needed)."""
@@ -119,6 +129,8 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
     length = series.fields.get("nut_length")
     if length is not None:
         prov["nut_length"] = length.provenance
+    limits = set(NUT_VALUES.values())
+    ranged = screw.assumption_ends.get(NUT_LENGTH_RANGE)
     return NutMaterial(
         key=screw.variant,
         name=screw.nut_material,
@@ -131,6 +143,17 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
         friction_static=screw.friction_static,
         nut_length_to_d=None if length is None else length.value / screw.outer_diameter_m,
         provenance=prov,
+        ends={
+            name: ends
+            for name, ends in screw.assumption_ends.items()
+            if all(set(end) <= limits for end in ends)
+        },
+        nut_length_to_d_ends=None
+        if ranged is None
+        else (
+            ranged[0]["nut_length_m"] / screw.outer_diameter_m,
+            ranged[1]["nut_length_m"] / screw.outer_diameter_m,
+        ),
     )
 
 
@@ -226,6 +249,7 @@ def own_screw(
         inertia_source = DERIVED_INERTIA
     strength = material.yield_strength_pa
     thread_provenance = _thread_provenance(geometry, nut)
+    ends = _nut_ends(geometry, nut)
     geometry = _with_nut_length(geometry, nut)
     nut_values = _nut(geometry, nut)
     dynamic = nut_values.pop("_dynamic_pressure_provenance", None)
@@ -267,9 +291,36 @@ def own_screw(
         yield_strength_pa=None if strength is None else strength.value,
         thermal_conductivity_w_m_k=_conductivity(material),
         provenance=provenance,
+        assumption_ends=ends,
         **_thread(geometry),  # type: ignore[arg-type]
         **nut_values,  # type: ignore[arg-type]
     )
+
+
+def _nut_ends(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, Ends]:
+    """The ends of the nut material's ranged values, as a catalog screw of this size with
+    that nut has them: its limits' (the wear rate's scatter), and the nut length's range
+    over d where the user gives no nut length (the flank pressure in motion recomputed
+    at each end). The user's own values (friction, a nut length given) have none."""
+    if nut is None:
+        return {}
+    ends: dict[str, Ends] = dict(nut.ends)
+    ratios = nut.nut_length_to_d_ends
+    if geometry.nut_length_m is None and ratios is not None:
+        low, high = (_nut_length_end(geometry, nut, r) for r in ratios)
+        ends[NUT_LENGTH_RANGE] = (low, high)
+    return ends
+
+
+def _nut_length_end(geometry: OwnGeometry, nut: NutMaterial, ratio: float) -> dict[str, float]:
+    """The nut length at ``ratio`` x d, and the flank pressure in motion it gives."""
+    length = ratio * geometry.outer_diameter_m
+    values = _nut(replace(geometry, nut_length_m=length), nut)
+    end = {"nut_length_m": length}
+    pressure = values.get("dynamic_pressure_pa")
+    if isinstance(pressure, float):
+        end["dynamic_pressure_pa"] = pressure
+    return end
 
 
 def _conductivity(material: Material) -> float | None:

@@ -10,6 +10,7 @@ import pytest
 from app.catalog import Catalog
 from app.catalog.own import OwnGeometry, own_screw, user_material
 from app.contract.screws import CustomScrewIn, MaterialIn
+from app.core.checks.wear_life import life_band
 from app.report.present import custom_screw
 
 #: a 10 mm screw with a 2 mm lead (mm, as the API takes it)
@@ -50,3 +51,34 @@ def test_the_inertia_is_a_solid_rod_at_the_root_unless_given(catalog: Catalog) -
     given = own_screw(replace(GEOMETRY, inertia_kg_m2_per_m=1e-5), steel, "steel")
     assert given.inertia_kg_m2_per_m == 1e-5
     assert given.provenance["inertia_per_length"].kind == "user"
+
+
+def test_a_catalog_nut_brings_its_ranged_values_to_the_users_screw(catalog: Catalog) -> None:
+    """Tr16x4 in C45 with the catalog's bronze nut, given as the user's own screw: the nut's
+    ranged values come with it as a catalog screw of that size has them (the wear rate's
+    3:1 scatter either way, the allowed wear depth, the nut length 1.5-2.5 d when none is
+    given), so its wear life is the same band as the catalog's Tr16x4-bronze, not the
+    nominal value alone (life_band); the user's friction has no range."""
+    data = CustomScrewIn(
+        outer_diameter_mm=16.0,
+        root_diameter_mm=11.5,
+        lead_mm=4.0,
+        pitch_mm=4.0,
+        friction_dynamic=0.13,
+        friction_static=0.16,
+        material="c45-steel",
+        nut_material="bronze",
+    )
+    own = custom_screw(data, catalog.materials, catalog.nut_materials)
+    listed = catalog.by_id["Tr16x4-bronze"]
+    assert set(own.assumption_ends) == set(listed.assumption_ends) - {
+        "friction_dynamic",
+        "friction_static",
+    }
+    for name, ends in own.assumption_ends.items():
+        for mine, theirs in zip(ends, listed.assumption_ends[name], strict=True):
+            assert mine == pytest.approx(theirs, rel=1e-12), name
+    assert life_band(own) == pytest.approx(life_band(listed))
+    assert life_band(own) == pytest.approx((1 / 3, 1 / 0.33))  # 1e-17 over 3e-17, 3.3e-18
+    bare = custom_screw(data.model_copy(update={"nut_material": None}), catalog.materials)
+    assert bare.assumption_ends == {}  # no nut material: nothing assumed with a range
