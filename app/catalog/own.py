@@ -79,7 +79,8 @@ class NutMaterial:
     it (a suggestion: the user gives the screw's own), the nut's length over the screw's
     diameter the family takes (None: none) and that ratio's range, the ends of its
     limits given with a range (the wear rate's scatter: ``ScrewSpec.assumption_ends``),
-    and each value's provenance."""
+    the axial play [m] of its thread fit (low, high; None: not given), and each value's
+    provenance."""
 
     key: str
     name: str
@@ -94,6 +95,7 @@ class NutMaterial:
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
     ends: Mapping[str, Ends] = field(default_factory=dict)
     nut_length_to_d_ends: tuple[float, float] | None = None
+    backlash_m: tuple[float, float] | None = None
 
     def rates_by_pressure(self) -> bool:
         """Whether a limit reads the engaged flank area (pitch and nut length needed)."""
@@ -131,6 +133,9 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
         prov["nut_length"] = length.provenance
     limits = set(NUT_VALUES.values())
     ranged = screw.assumption_ends.get(NUT_LENGTH_RANGE)
+    play = series.fields.get("backlash")
+    if play is not None:
+        prov["backlash"] = play.provenance
     return NutMaterial(
         key=screw.variant,
         name=screw.nut_material,
@@ -154,6 +159,7 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
             ranged[0]["nut_length_m"] / screw.outer_diameter_m,
             ranged[1]["nut_length_m"] / screw.outer_diameter_m,
         ),
+        backlash_m=None if play is None else (screw.backlash_min_m, screw.backlash_max_m),
     )
 
 
@@ -226,6 +232,8 @@ def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
         return {}
     values: dict[str, object] = {**nut.limits, "nut_material": nut.name}
     values["oil_compatible"] = nut.oil_compatible
+    if nut.backlash_m is not None:
+        values["backlash_min_m"], values["backlash_max_m"] = nut.backlash_m
     if nut.temperature_c is not None:
         values["temperature_min_c"], values["temperature_max_c"] = nut.temperature_c
     length, pitch = geometry.nut_length_m, geometry.pitch_m

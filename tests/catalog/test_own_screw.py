@@ -11,6 +11,9 @@ from app.catalog import Catalog
 from app.catalog.own import OwnGeometry, own_screw, user_material
 from app.contract.screws import CustomScrewIn, MaterialIn
 from app.core.checks.wear_life import life_band
+from app.core.evaluate import evaluate
+from app.core.model import Application
+from app.core.quantities import NAMES, quantity
 from app.report.present import custom_screw
 
 #: a 10 mm screw with a 2 mm lead (mm, as the API takes it)
@@ -82,3 +85,64 @@ def test_a_catalog_nut_brings_its_ranged_values_to_the_users_screw(catalog: Cata
     assert life_band(own) == pytest.approx((1 / 3, 1 / 0.33))  # 1e-17 over 3e-17, 3.3e-18
     bare = custom_screw(data.model_copy(update={"nut_material": None}), catalog.materials)
     assert bare.assumption_ends == {}  # no nut material: nothing assumed with a range
+
+
+#: Two axes that reach every nut check: a slow long-life horizontal one, and a vertical
+#: one with a move, a mass and a warm ambient.
+AXES = (
+    Application(
+        load_n=300.0,
+        speed_m_s=0.02,
+        length_m=0.8,
+        stroke_m=0.6,
+        cycles_per_day=200.0,
+        required_life_years=5.0,
+    ),
+    Application(
+        load_n=50.0,
+        speed_m_s=0.1,
+        length_m=0.5,
+        stroke_m=0.3,
+        accel_m_s2=1.0,
+        moving_mass_kg=5.0,
+        orientation="vertical",
+        ambient_c=60.0,
+    ),
+)
+
+
+def test_a_catalog_iso_screw_given_as_ones_own_is_rated_as_the_catalog_rates_it(
+    catalog: Catalog,
+) -> None:
+    """Every eighth ISO trapezoidal screw of the catalog, typed in as the user's own (its
+    geometry, friction, material, inertia and nut material): every number of the
+    operating point and every check's verdict equal the catalog screw's, on both axes,
+    and so do its values but the friction's range (the user's own friction has none)."""
+    iso = [s for s in catalog.screws if s.family_id.startswith("TR-")][::8]
+    assert len(iso) >= 20
+    for listed in iso:
+        data = CustomScrewIn(
+            outer_diameter_mm=listed.outer_diameter_m * 1e3,
+            root_diameter_mm=listed.root_diameter_m * 1e3,
+            lead_mm=listed.lead_m * 1e3,
+            pitch_mm=(listed.pitch_m or 0.0) * 1e3,
+            thread_half_angle_deg=math.degrees(listed.thread_half_angle_rad),
+            friction_dynamic=listed.friction_dynamic,
+            friction_static=listed.friction_static,
+            material=listed.material_name,
+            nut_material=listed.variant,
+            inertia_kg_m2_per_m=listed.inertia_kg_m2_per_m,
+        )
+        own = custom_screw(data, catalog.materials, catalog.nut_materials)
+        assert (own.backlash_min_m, own.backlash_max_m) == pytest.approx(
+            (listed.backlash_min_m, listed.backlash_max_m)
+        )
+        ranged = set(listed.assumption_ends) - {"friction_dynamic", "friction_static"}
+        assert set(own.assumption_ends) == ranged, listed.id
+        for app in AXES:
+            mine, theirs = evaluate(app, own), evaluate(app, listed)
+            for name in NAMES:
+                a, b = quantity(mine.quantities, name), quantity(theirs.quantities, name)
+                assert a == pytest.approx(b, rel=1e-9, nan_ok=True), (listed.id, name)
+            verdicts = {c.name: c.passed for c in mine.checks}
+            assert verdicts == {c.name: c.passed for c in theirs.checks}, listed.id
