@@ -14,7 +14,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 
 from app.catalog.models import Material, Series, Sourced
-from app.catalog.nut_ratings import thrust_pressure
+from app.catalog.nut_ratings import Ends, thrust_pressure
 from app.catalog.series import NOT_GIVEN
 from app.core.formulas import torque, trapezoidal
 from app.core.model import Provenance, ScrewSpec
@@ -64,8 +64,6 @@ NUT_VALUES = {
 }
 
 
-#: A ranged catalog value's ScrewSpec fields at its low and at its high end.
-Ends = tuple[Mapping[str, float], Mapping[str, float]]
 #: The catalog's name of the ranged nut length over the screw's diameter.
 NUT_LENGTH_RANGE = "nut_length_to_d"
 
@@ -93,7 +91,7 @@ class NutMaterial:
     friction_static: float
     nut_length_to_d: float | None = None
     provenance: Mapping[str, Provenance] = field(default_factory=dict)
-    ends: Mapping[str, Ends] = field(default_factory=dict)
+    ends: Ends = field(default_factory=dict)
     nut_length_to_d_ends: tuple[float, float] | None = None
     backlash_m: tuple[float, float] | None = None
 
@@ -305,19 +303,18 @@ def own_screw(
     )
 
 
-def _nut_ends(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, Ends]:
+def _nut_ends(geometry: OwnGeometry, nut: NutMaterial | None) -> Ends:
     """The ends of the nut material's ranged values, as a catalog screw of this size with
     that nut has them: its limits' (the wear rate's scatter), and the nut length's range
     over d where the user gives no nut length (the flank pressure in motion recomputed
     at each end). The user's own values (friction, a nut length given) have none."""
     if nut is None:
         return {}
-    ends: dict[str, Ends] = dict(nut.ends)
     ratios = nut.nut_length_to_d_ends
     if geometry.nut_length_m is None and ratios is not None:
         low, high = (_nut_length_end(geometry, nut, r) for r in ratios)
-        ends[NUT_LENGTH_RANGE] = (low, high)
-    return ends
+        return {**nut.ends, NUT_LENGTH_RANGE: (low, high)}
+    return dict(nut.ends)
 
 
 def _nut_length_end(geometry: OwnGeometry, nut: NutMaterial, ratio: float) -> dict[str, float]:
