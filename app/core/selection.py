@@ -30,6 +30,11 @@ from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable, Reach
 
 NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
+#: Nothing eligible at any lead: the other filters exclude every screw together.
+NO_MATCH_ANY_LEAD = (
+    "No catalog screw matches the filters together (families, nut material, "
+    "anti-backlash, coating): widen one of them."
+)
 #: The nearest rejected candidates whose input changes the remedies start from.
 REMEDY_FROM = 8
 
@@ -267,7 +272,7 @@ def _no_match(app: Application, table: CandidateTable) -> Summary:
     if unheld is not None:
         return Summary(None, 0, None, {}, unheld)
     if app.lead_m is None:
-        return Summary(None, 0, None, {}, Phrase(NO_MATCH.format(lead="")))
+        return Summary(None, 0, None, {}, Phrase(NO_MATCH_ANY_LEAD))
     leads = np.unique(table.lead_m)
     below, above = leads[leads < app.lead_m], leads[leads > app.lead_m]
     values: dict[str, Amount | str] = {"lead": Amount(app.lead_m, "length")}

@@ -23,6 +23,7 @@ from app.contract.reported import REPORTED, show, value_of
 from app.contract.units import Display
 from app.report.service import run_page_result
 from app.server.deps import CatalogDep
+from app.server.errors import AppError
 from app.web.catalog_view import series_url
 from app.web.figures import result_figures
 from app.web.pages import link_inputs, page_candidate
@@ -39,12 +40,15 @@ def report_context(
     """The report of candidate ``id`` (else the top-ranked) for the link's inputs, its
     link absolute under ``base_url`` (the address the report was served from, ending in
     '/'); when nothing passes and no id is given, the nearest rejected candidate; a 422
-    page for bad inputs, a 404 page for an unknown id."""
+    page for bad inputs, a 404 page for an unknown id or when no screw is eligible."""
     inputs, units = link_inputs(params, catalog, ("id",))
     result, _ = run_page_result(inputs, catalog, units)
     # without an id: the top-ranked screw, or, when none passes, the nearest rejected one
     nearest = result.summary.best_rejected_id or ""
     top = result.candidates[0].id if result.candidates else nearest
+    if not (params.get("id") or top):  # no screw is eligible: say why, as the page does
+        detail = [{"field": "form", "message": result.summary.message}]
+        raise AppError(404, "no screw to report", detail)
     chosen = page_candidate(inputs, params.get("id", "") or top, catalog, units)
     ranks = {c.id: rank for rank, c in enumerate(result.candidates, start=1)}
     query = share_query(inputs, units)

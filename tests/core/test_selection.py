@@ -144,6 +144,16 @@ def test_no_matching_lead_says_so(catalog: Catalog) -> None:
     assert "7.1 mm lead" in render(sel.summary.message)
 
 
+def test_filters_that_exclude_every_screw_at_any_lead_say_so(catalog: Catalog) -> None:
+    """The rolled ball screws with a bronze nut, any lead: the summary names the filters,
+    not another lead (the lead is 'any' already)."""
+    app = light_app(families=("HIWIN-ROLLED",), nut_material="bronze")
+    sel = select(app, catalog.index)
+    assert sel.evaluated == 0
+    text = render(sel.summary.message)
+    assert "matches the filters together" in text and "another lead" not in text
+
+
 @pytest.mark.parametrize(
     ("coating", "coated"),
     [pytest.param("tfe", {True}, id="tfe-only"), pytest.param("none", {False}, id="none-only")],

@@ -81,6 +81,16 @@ def test_report_refuses_an_unknown_screw_and_bad_input(client: TestClient) -> No
     assert "Axial load" in response.text
 
 
+def test_a_report_with_no_eligible_screw_says_why(client: TestClient) -> None:
+    """The rolled ball screws with a bronze nut: no screw is eligible, so there is none to
+    report; the 404 says what the page says, not that no id was given."""
+    params = {**AXIS, "family": "HIWIN-ROLLED", "nut_material": "bronze"}
+    response = client.get("/report", params=params)
+    assert response.status_code == 404
+    assert "No catalog screw matches the filters together" in response.text
+    assert "no candidate id given" not in response.text
+
+
 def test_results_and_detail_link_to_the_report(client: TestClient) -> None:
     page = BeautifulSoup(client.get("/", params=AXIS).text, "html.parser")
     assert page.select_one("a.report-link")["href"] == "/report?load=100&speed=50&length=500"
