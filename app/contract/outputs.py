@@ -49,7 +49,10 @@ class CountsOut(BaseModel):
 
 
 class ChangeOut(BaseModel):
-    inputs: dict[str, float] = Field(description="API input -> value that admits the screw.")
+    inputs: dict[str, float] = Field(
+        description="API input -> the value at which the screw's failed limits are reached "
+        "exactly: it admits the screw with no margin (the remedies keep 5 %)."
+    )
     admits: str = Field(description="The candidate the change admits.")
 
 
@@ -72,7 +75,8 @@ class SummaryOut(BaseModel):
         "their limits exactly; remedies apply a margin."
     )
     changes: list[ChangeOut] = Field(
-        description="Feasible input changes, each admitting a near candidate (one click)."
+        description="Feasible input changes, each admitting a near candidate at its limits "
+        "exactly (no margin: the remedies keep one)."
     )
     remedies: list[RemedyOut] = Field(
         default_factory=list,

@@ -166,3 +166,22 @@ def test_the_compact_select_of_the_default_request_stays_small(client: TestClien
     assert response.status_code == 200
     assert response.json()["candidates"] and response.json()["rejected"]
     assert len(response.content) <= 12_000
+
+
+def test_a_change_admits_its_screw_at_the_limit_and_a_remedy_past_it(
+    client: TestClient,
+) -> None:
+    """400 N at 50 mm/s on the seed's B family, lead 10 mm: nothing passes. Each of the
+    summary's ``changes`` admits the screw it names with its governing check at its limit
+    exactly (utilisation 1, as the description says: no margin), while the first remedy
+    keeps its 5 % margin (at most 1 / 1.05)."""
+    axis = {**AXIS, "load_n": 400, "family": "B", "limit": 100}
+    summary = client.get("/api/v1/select", params=axis).json()["summary"]
+    assert summary["changes"] and summary["remedies"]
+    for change in summary["changes"]:
+        changed = {**axis, **{k: repr(v) for k, v in change["inputs"].items()}}
+        passing = client.get("/api/v1/select", params=changed).json()["candidates"]
+        (admitted,) = [c for c in passing if c["id"] == change["admits"]]
+        assert admitted["utilization"][admitted["governing_check"]] == pytest.approx(1.0)
+    remedy = summary["remedies"][0]
+    assert remedy["utilization"] <= 1 / 1.05 + 1e-9
