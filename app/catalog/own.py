@@ -234,12 +234,20 @@ def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
         values["backlash_min_m"], values["backlash_max_m"] = nut.backlash_m
     if nut.temperature_c is not None:
         values["temperature_min_c"], values["temperature_max_c"] = nut.temperature_c
-    length, pitch = geometry.nut_length_m, geometry.pitch_m
-    if nut.thrust_table is not None and length is not None and pitch is not None:
-        pressure, prov = thrust_pressure(nut.thrust_table, geometry.outer_diameter_m, pitch, length)
-        values["dynamic_pressure_pa"] = pressure
-        values["_dynamic_pressure_provenance"] = prov
+    rated = _dynamic_pressure(geometry, nut)
+    if rated is not None:
+        values["dynamic_pressure_pa"] = rated[0]
     return values
+
+
+def _dynamic_pressure(geometry: OwnGeometry, nut: NutMaterial) -> tuple[float, Provenance] | None:
+    """The nut's flank pressure in motion [Pa] from its maker's thrust table for this size
+    and nut length (``nut_ratings.thrust_pressure``), with its provenance; None without a
+    table, a pitch or a nut length."""
+    length, pitch = geometry.nut_length_m, geometry.pitch_m
+    if nut.thrust_table is None or length is None or pitch is None:
+        return None
+    return thrust_pressure(nut.thrust_table, geometry.outer_diameter_m, pitch, length)
 
 
 def own_screw(
@@ -257,8 +265,7 @@ def own_screw(
     thread_provenance = _thread_provenance(geometry, nut)
     ends = _nut_ends(geometry, nut)
     geometry = _with_nut_length(geometry, nut)
-    nut_values = _nut(geometry, nut)
-    dynamic = nut_values.pop("_dynamic_pressure_provenance", None)
+    rated = None if nut is None else _dynamic_pressure(geometry, nut)
     provenance: dict[str, Provenance] = {
         **({} if strength is None else {"yield_strength": strength.provenance}),
         **dict.fromkeys(GEOMETRY_SOURCES, USER),
@@ -268,7 +275,7 @@ def own_screw(
         "density": material.density_kg_m3.provenance,
         **({} if nut is None else _nut_provenance(nut)),
         **thread_provenance,
-        **({} if not isinstance(dynamic, Provenance) else {"dynamic_pressure": dynamic}),
+        **({} if rated is None else {"dynamic_pressure": rated[1]}),
     }
     if geometry.pv_limit_pa_m_s is None:
         provenance["pv_limit"] = NOT_GIVEN["pv_limit"]
@@ -299,7 +306,7 @@ def own_screw(
         provenance=provenance,
         assumption_ends=ends,
         **_thread(geometry),  # type: ignore[arg-type]
-        **nut_values,  # type: ignore[arg-type]
+        **_nut(geometry, nut),  # type: ignore[arg-type]
     )
 
 
@@ -320,11 +327,10 @@ def _nut_ends(geometry: OwnGeometry, nut: NutMaterial | None) -> Ends:
 def _nut_length_end(geometry: OwnGeometry, nut: NutMaterial, ratio: float) -> dict[str, float]:
     """The nut length at ``ratio`` x d, and the flank pressure in motion it gives."""
     length = ratio * geometry.outer_diameter_m
-    values = _nut(replace(geometry, nut_length_m=length), nut)
+    rated = _dynamic_pressure(replace(geometry, nut_length_m=length), nut)
     end = {"nut_length_m": length}
-    pressure = values.get("dynamic_pressure_pa")
-    if isinstance(pressure, float):
-        end["dynamic_pressure_pa"] = pressure
+    if rated is not None:
+        end["dynamic_pressure_pa"] = rated[0]
     return end
 
 

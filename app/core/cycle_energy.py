@@ -62,8 +62,9 @@ def cycle_energy(
         shaft = energy.shaft_energy(s.torque_nm, x, t.lead_m)
         motor = motor + np.maximum(shaft, 0.0)
         regen = regen + np.maximum(-shaft, 0.0)
-        load = load + s.thrust_n * x
-        size = size + np.abs(s.thrust_n * x)
+        work = s.thrust_n * x
+        load = load + work
+        size = size + np.abs(work)
         thread = thread + energy.thread_loss(
             s.thrust_n, x, t.efficiency, t.backdrive_efficiency_signed
         )

@@ -47,6 +47,12 @@ def no_leadscrew(sc: Screening, passing_ids: Sequence[str]) -> Phrase | None:
     )
 
 
+def screened(sc: Screening) -> str:
+    """The kind of screw screened: "leadscrew", "ball screw", or "screw" for both."""
+    ball = sc.table.ball
+    return "ball screw" if ball.all() else "screw" if ball.any() else "leadscrew"
+
+
 def _position(sc: Screening, screw_id: str) -> int:
     return next(i for i, s in enumerate(sc.table.screws) if s.id == screw_id)
 

@@ -29,7 +29,7 @@ from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, screen_table
 from app.core.table import CandidateTable, Reach
 
-NO_MATCH = "No catalog screw{lead} matches the filters; try another lead or 'any'."
+NO_MATCH = "No catalog screw with a {lead} lead matches the filters; try another lead or 'any'."
 #: Nothing eligible at any lead: the other filters exclude every screw together.
 NO_MATCH_ANY_LEAD = (
     "No catalog screw matches the filters together (families, nut material, "
@@ -284,9 +284,7 @@ def _no_match(app: Application, table: CandidateTable) -> Summary:
         values["above"] = Amount(float(above.min()), "length")
         nearest.append("{above}")
     near = (" Nearest leads: " + " and ".join(nearest) + ".") if nearest else ""
-    return Summary(
-        None, 0, None, {}, Phrase(NO_MATCH.format(lead=" with a {lead} lead") + near, values)
-    )
+    return Summary(None, 0, None, {}, Phrase(NO_MATCH + near, values))
 
 
 def summarize(
@@ -424,10 +422,4 @@ def _remedies(
         return found, None
     worst, label, excludes_all = most
     fails = list(dict.fromkeys(k.label for c in near for k in c.failed_checks))
-    return found, impossible(worst, label, excludes_all, fails, _kind_screened(sc))
-
-
-def _kind_screened(sc: Screening) -> str:
-    """The kind of screw screened: "leadscrew", "ball screw", or "screw" for both."""
-    ball = sc.table.ball
-    return "ball screw" if ball.all() else "screw" if ball.any() else "leadscrew"
+    return found, impossible(worst, label, excludes_all, fails, kinds.screened(sc))

@@ -46,10 +46,11 @@ def report_context(
     # without an id: the top-ranked screw, or, when none passes, the nearest rejected one
     nearest = result.summary.best_rejected_id or ""
     top = result.candidates[0].id if result.candidates else nearest
-    if not (params.get("id") or top):  # no screw is eligible: say why, as the page does
+    cid = params.get("id", "") or top
+    if not cid:  # no screw is eligible: say why, as the page does
         detail = [{"field": "form", "message": result.summary.message}]
         raise AppError(404, "no screw to report", detail)
-    chosen = page_candidate(inputs, params.get("id", "") or top, catalog, units)
+    chosen = page_candidate(inputs, cid, catalog, units)
     ranks = {c.id: rank for rank, c in enumerate(result.candidates, start=1)}
     query = share_query(inputs, units)
     return {
