@@ -174,6 +174,7 @@ def _spec(
         inertia_kg_m2_per_m=_inertia_per_m(material, od),
         drag_torque_min_nm=drag_min,
         drag_torque_max_nm=drag_max,
+        backlash_min_m=0.0,
         backlash_max_m=play,
         lead_accuracy_m_per_m=lead_accuracy,
         yield_strength_pa=None

@@ -198,7 +198,11 @@ CONFIRMABLE: tuple[tuple[str, str, Callable[[ScrewSpec], str | None]], ...] = (
     (
         "backlash",
         "the axial play",
-        lambda s: f"{_mm(s.backlash_min_m)}-{_mm(s.backlash_max_m)} mm",
+        lambda s: (
+            None
+            if s.backlash_min_m is None or s.backlash_max_m is None
+            else f"{_mm(s.backlash_min_m)}-{_mm(s.backlash_max_m)} mm"
+        ),
     ),
     (
         "wear_rate",

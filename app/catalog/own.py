@@ -134,6 +134,7 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
     play = series.fields.get("backlash")
     if play is not None:
         prov["backlash"] = play.provenance
+    least, most = screw.backlash_min_m, screw.backlash_max_m
     return NutMaterial(
         key=screw.variant,
         name=screw.nut_material,
@@ -157,7 +158,7 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
             ranged[0]["nut_length_m"] / screw.outer_diameter_m,
             ranged[1]["nut_length_m"] / screw.outer_diameter_m,
         ),
-        backlash_m=None if play is None else (screw.backlash_min_m, screw.backlash_max_m),
+        backlash_m=None if least is None or most is None else (least, most),
     )
 
 

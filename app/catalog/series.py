@@ -80,6 +80,7 @@ NOT_GIVEN = {
         ("thermal_conductivity", "screw thermal conductivity"),
         ("wear_rate", "specific wear rate"),
         ("allowed_wear", "allowed wear depth"),
+        ("backlash", "axial play"),
     )
 }
 

@@ -229,7 +229,11 @@ class LifeOut(BaseModel):
 class AccuracyOut(BaseModel):
     lead_error_mm: Annotated[float | None, From("lead_error_m", "length")]
     repeatability_mm: Annotated[float | None, From("repeatability_m", "length")]
-    backlash_mm: Annotated[list[float], From(("backlash_min_m", "backlash_max_m"), "length")]
+    backlash_mm: Annotated[
+        list[float] | None,
+        From(("backlash_min_m", "backlash_max_m"), "length"),
+        Field(description="The nut's axial play, least and most (null: not given)"),
+    ]
     thermal_growth_mm: Annotated[float | None, From("thermal_growth_m", "length")]
 
 

@@ -181,7 +181,9 @@ class ScrewSpec:
     """One screw-and-nut candidate (series x size x lead x coating), SI units.
 
     Optional limits (None, or an empty table) are not checked: a custom screw may have no
-    design load. A family's own rules arrive as data: ``traverse_bands`` is its table of
+    design load. The nut's axial play (``backlash_min_m``, ``backlash_max_m``) is None
+    where nothing gives it (a screw of one's own without a catalog nut), never 0. A
+    family's own rules arrive as data: ``traverse_bands`` is its table of
     recommended linear speed by lead, (lead from [m], lead to [m], speed [m/s]), and
     ``max_length_m``, ``oil_compatible`` and the temperature range are per variant.
     ``variant`` names the nut or coating option of the family (e.g. "tfe", "bronze").
@@ -208,8 +210,8 @@ class ScrewSpec:
     pv_limit_pa_m_s: float | None = None
     design_load_n: float | None = None
     max_length_m: float | None = None
-    backlash_min_m: float = 0.0
-    backlash_max_m: float = 0.0
+    backlash_min_m: float | None = None
+    backlash_max_m: float | None = None
     life_min_m: float | None = None
     life_max_m: float | None = None
     lead_accuracy_m_per_m: float | None = None
@@ -318,8 +320,8 @@ class PV:
 class Accuracy:
     lead_error_m: float | None
     repeatability_m: float | None
-    backlash_min_m: float
-    backlash_max_m: float
+    backlash_min_m: float | None
+    backlash_max_m: float | None
     thermal_growth_m: float | None
 
 

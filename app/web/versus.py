@@ -35,7 +35,7 @@ def _life(c: CandidateOut) -> str:
     return f"{'–'.join(figures(v) for v in c.life.travel_km)} km travelled ({c.life.model})"
 
 
-def _low(band: list[float]) -> float | None:
+def _low(band: list[float] | None) -> float | None:
     return band[0] if band else None
 
 

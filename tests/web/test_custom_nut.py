@@ -3,6 +3,7 @@ the catalog's ISO trapezoidal families use, with their provenance; the catalog r
 "Try this screw with other values" link giving the same checks and the same answer on
 /custom; and the summary that names the checks a screw's missing values stopped."""
 
+from typing import Any
 from urllib.parse import parse_qsl
 
 import pytest
@@ -183,3 +184,30 @@ def test_the_api_lists_the_nut_materials_with_their_provenance(
     assert pressure["value"].startswith("0.05 m/s: 11 MPa")  # Shigley Table 8-4
     assert pressure["provenance"]["kind"] == "handbook"
     assert bronze["Maximum sliding speed"]["provenance"]["kind"] == "vendor"
+
+
+def test_a_screw_without_a_nut_has_no_play_given_not_zero(client: TestClient) -> None:
+    """A screw of one's own without a catalog nut has no axial play given: the API says
+    null (it said 0-0 mm, a perfect nut), and the anti-backlash check says the play is
+    not given. The catalog's bronze nut brings its play, 0.05-0.3 mm (assumed for the ISO
+    fit 7H/7e)."""
+    screw = {
+        "outer_diameter_mm": 12,
+        "root_diameter_mm": 8.5,
+        "lead_mm": 3,
+        "friction_dynamic": 0.13,
+        "friction_static": 0.16,
+    }
+    app = {"load_n": 100, "speed_mm_s": 20, "length_mm": 400, "require_anti_backlash": True}
+
+    def candidate(**extra: str) -> dict[str, Any]:
+        body = {"application": app, "screw": {**screw, **extra}}
+        response = client.post("/api/v1/evaluate", json=body)
+        assert response.status_code == 200, response.text
+        return dict(response.json()["candidate"])
+
+    bare, bronze = candidate(), candidate(nut_material="bronze")
+    assert bare["accuracy"]["backlash_mm"] is None
+    assert bronze["accuracy"]["backlash_mm"] == pytest.approx([0.05, 0.3])
+    messages = {c["name"]: c["message"] for c in bare["checks"]}
+    assert messages["anti_backlash"] == "Free-wheeling nut; its axial play is not given."

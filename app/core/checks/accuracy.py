@@ -51,7 +51,10 @@ class Accuracy(Check):
             t.repeatability_m,
         )
         tolerance = same(t, app.positioning_tolerance_m)
-        return Measure(where_given(t.lead_accuracy), np.asarray(error), tolerance)
+        # judged where the lead accuracy and the nut's play are given (a screw of one's
+        # own has neither)
+        given = where_given(t.lead_accuracy) & where_given(t.backlash_max_m)
+        return Measure(given, np.asarray(error), tolerance)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -69,8 +72,9 @@ class Accuracy(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         repeatability = s.repeatability_m or 0.0
+        backlash = s.backlash_max_m or 0.0  # judged only where given (``measure``)
         error = accuracy.worst_case_error(
-            r.accuracy.lead_error_m, r.accuracy.thermal_growth_m, s.backlash_max_m, repeatability
+            r.accuracy.lead_error_m, r.accuracy.thermal_growth_m, backlash, repeatability
         )
         verb = "is within" if passed else "exceeds"
         return Phrase(
@@ -82,7 +86,7 @@ class Accuracy(Check):
                 "e": Amount(error, "length"),
                 "lead": Amount(r.accuracy.lead_error_m, "length"),
                 "growth": Amount(abs(r.accuracy.thermal_growth_m), "length"),
-                "b": Amount(s.backlash_max_m, "length"),
+                "b": Amount(backlash, "length"),
                 "r": Amount(repeatability, "length"),
                 "tol": Amount(app.positioning_tolerance_m or 0.0, "length"),
                 "ambient": Amount(app.ambient_c, "temperature"),

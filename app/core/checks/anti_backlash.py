@@ -39,6 +39,8 @@ class AntiBacklash(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if passed:
             return Phrase("Anti-backlash nut.")
+        if s.backlash_max_m is None:
+            return Phrase("Free-wheeling nut; its axial play is not given.")
         return Phrase(
             "Free-wheeling nut with up to {backlash} backlash.",
             {"backlash": Amount(s.backlash_max_m, "length")},
