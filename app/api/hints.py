@@ -4,8 +4,9 @@ name to use.
 
 The input models refuse unknown names (``extra="forbid"``): pydantic's message, "Extra
 inputs are not permitted", says nothing of the name meant. The field table knows both
-names of every input (``app.contract.params.api_hint``); this route puts its hint in the
-422 of the refused name, in the body as in the query.
+names of every input (``app.contract.params.api_hint``), and the screw's model its own
+(``app.contract.screws.screw_hint``); this route puts its hint in the 422 of the refused
+name, in the body as in the query.
 """
 
 from collections.abc import Callable, Coroutine
@@ -16,6 +17,7 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import Response
 
 from app.contract.params import api_hint
+from app.contract.screws import screw_hint
 from app.server.errors import ApiRoute
 
 
@@ -25,7 +27,7 @@ def hinted(error: dict[str, Any]) -> dict[str, Any]:
     loc = error.get("loc") or ()
     if error.get("type") != "extra_forbidden" or not loc or not isinstance(loc[-1], str):
         return error
-    hint = api_hint(loc[-1])
+    hint = screw_hint(loc[-1]) if "screw" in loc[:-1] else api_hint(loc[-1])
     return {**error, "msg": hint or f"'{loc[-1][:100]}' is not an input this route reads"}
 
 

@@ -170,14 +170,25 @@ def api_hint(name: str, known: Iterable[str] = BY_API) -> str | None:
     field = BY_PAGE.get(name)
     if field is not None and field.api != name:
         unit = f", in {field.unit}" if field.unit else ""
-        return (
-            f"'{name}' is the page's name (share links): the API's is '{field.api}' "
-            f"({field.label}{unit})"
-        )
+        return page_name_hint(name, field.api, field.label + unit)
     if name in DEFAULT_UNITS or name.startswith((ENTERED_PREFIX, TYPED_PREFIX)):
         return (
             f"'{name[:100]}' is a page's setting: the API reads every number in the unit "
             "its name carries (the api_url of a response is the API's query)"
         )
+    return close_hint(name, known)
+
+
+def page_name_hint(name: str, api: str, label: str) -> str:
+    """The hint for a page's name ``name`` of the input the API calls ``api``."""
+    return f"'{name}' is the page's name (share links): the API's is '{api}' ({label})"
+
+
+def close_hint(name: str, known: Iterable[str]) -> str | None:
+    """The API name of ``known`` that ``name`` is close to, as a hint; None for none.
+
+    >>> close_hint("outer_diameter", ["outer_diameter_mm", "lead_mm"])
+    "'outer_diameter' is not an API name: did you mean 'outer_diameter_mm'?"
+    """
     close = get_close_matches(name, list(known), n=1, cutoff=0.75)
     return f"'{name[:100]}' is not an API name: did you mean '{close[0]}'?" if close else None

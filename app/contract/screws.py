@@ -17,7 +17,14 @@ from pydantic import (
 
 from app.contract.input_types import NotBool, bounded_number
 from app.contract.inputs import ApplicationIn
+from app.contract.params import close_hint, page_name_hint
 from app.contract.sections import ProvenanceOut
+
+#: the nut material of a screw of one's own: the custom page's name (share links;
+#: ``nut_material`` is the selector's catalog filter there), the API's, and its label
+NUT_FIELD = "nut"
+NUT_API = "nut_material"
+NUT_LABEL = "Nut material"
 
 
 class MaterialIn(BaseModel):
@@ -173,3 +180,19 @@ class NutMaterialsOut(BaseModel):
 
     catalog_version: str
     nut_materials: list[NutMaterialOut]
+
+
+def screw_hint(name: str) -> str | None:
+    """What the API says of a name it does not read in a screw: the custom page's name
+    of the nut material and the API's, or the screw's (or its material's) name ``name``
+    is close to; None for any other.
+
+    >>> screw_hint("nut")
+    "'nut' is the page's name (share links): the API's is 'nut_material' (Nut material)"
+    >>> screw_hint("root_diameter")
+    "'root_diameter' is not an API name: did you mean 'root_diameter_mm'?"
+    """
+    if name == NUT_FIELD:
+        return page_name_hint(NUT_FIELD, NUT_API, NUT_LABEL)
+    models = (CustomScrewIn, CatalogScrewIn, MaterialIn)
+    return close_hint(name, [n for model in models for n in model.model_fields])

@@ -15,7 +15,7 @@ from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
 from app.contract.params import form_errors, unknown_parameters
 from app.contract.schemas import ApplicationIn
-from app.contract.screws import CustomScrewIn
+from app.contract.screws import NUT_FIELD, NUT_LABEL, CustomScrewIn
 from app.contract.units import Display, api_value
 from app.core import motion
 from app.report.present import nut_rows
@@ -34,8 +34,6 @@ from app.web.screw_form import (
     MATERIAL_FIELDS,
     MATERIAL_LABEL,
     MATERIALS,
-    NUT_FIELD,
-    NUT_LABEL,
     OWN_MATERIAL,
     SCREW_FIELDS,
     convert_screw,

@@ -20,7 +20,7 @@ from pydantic.fields import FieldInfo
 
 from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
 from app.contract.form import BOUND_MESSAGES, convert_text, encode_query, unit_key
-from app.contract.screws import CustomScrewIn, MaterialIn
+from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
 from app.contract.units import (
     API_UNIT_QUANTITY,
     DEFAULT_UNITS,
@@ -36,11 +36,6 @@ from app.core.model import ScrewSpec
 OWN_MATERIAL = "custom"
 #: the form's label of the material choice.
 MATERIAL_LABEL = "Screw material"
-#: the nut material choice: one of the catalog's nut materials, or none (the page's
-#: name; ``nut_material`` is the selector's catalog filter, the API's is NUT_API).
-NUT_FIELD = "nut"
-NUT_API = "nut_material"
-NUT_LABEL = "Nut material"
 
 
 @dataclass(frozen=True, slots=True)

@@ -133,6 +133,28 @@ def test_other_unread_names_say_what_the_api_reads(
     assert message.count("API name") <= 1  # said once
 
 
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [
+        ("nut", "the API's is 'nut_material' (Nut material)"),
+        ("outer_diameter", "did you mean 'outer_diameter_mm'"),
+        ("load_n", "'load_n' is not an input this route reads"),
+    ],
+    ids=["page-name", "misspelled", "an-application-name"],
+)
+def test_an_unread_name_in_a_screw_says_what_the_screw_reads(
+    client: TestClient, name: str, words: str
+) -> None:
+    """The screw's names are its model's, not the application's: the custom page's
+    ``nut`` is the API's ``nut_material``, and ``load_n`` belongs in the application."""
+    screw = {"outer_diameter_mm": 12, "root_diameter_mm": 8.5, "lead_mm": 3}
+    screw |= {"friction_dynamic": 0.13, "friction_static": 0.16, name: 1}
+    r = client.post("/api/v1/evaluate", json={"application": AXIS, "screw": screw})
+    assert r.status_code == 422
+    (message,) = [d["message"] for d in r.json()["detail"] if d["field"] == f"screw.{name}"]
+    assert words in message
+
+
 def test_a_custom_screw_has_no_links(client: TestClient) -> None:
     """A custom geometry has no query form in the API nor a page of its own: no links."""
     screw = {"outer_diameter_mm": 12.7, "root_diameter_mm": 9.906, "lead_mm": 10.0}

@@ -4,7 +4,8 @@ one field with the same text cannot be told apart by the engineer or by a screen
 from collections import Counter
 
 from app.contract.fields import FIELDS
-from app.web.screw_form import MATERIAL_FIELDS, MATERIAL_LABEL, NUT_LABEL, SCREW_FIELDS
+from app.contract.screws import NUT_LABEL
+from app.web.screw_form import MATERIAL_FIELDS, MATERIAL_LABEL, SCREW_FIELDS
 
 
 def _repeated(labels: list[str]) -> list[str]:
