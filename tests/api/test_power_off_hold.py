@@ -71,6 +71,27 @@ def test_nothing_held_nothing_to_answer(client: TestClient) -> None:
     assert c["holds_power_off"] is None and c["holds_by"] is None
 
 
+def test_a_load_of_fixed_direction_on_a_horizontal_axis_is_held_back_not_down(
+    client: TestClient,
+) -> None:
+    """A spring or a press on a horizontal axis (``load_direction`` fixed) is held at rest
+    like a weight: the same check, named for a load held at rest (it said "vertical
+    axis"), which drives the screw back, not down. Tr16x4-ptfe self-locks with its
+    margin (lead_max 4.553 mm); Tr16x8(P4) (two-start) does not."""
+    held = {"load_n": 200.0, "load_direction": "fixed", "speed_mm_s": 50.0, "length_mm": 500.0}
+    locks, slips = (
+        evaluate(client, "Tr16x4-ptfe", **held),
+        evaluate(client, "Tr16x8(P4)-ptfe", **held),
+    )
+    assert locks["holds_by"] == "thread" and slips["holds_power_off"] is False
+    for c in (locks, slips):
+        found = check(c, "back_driving")
+        assert found["label"] == "Self-locking (load held at rest, no brake)"
+        assert "drive the screw back" in found["message"] and "down" not in found["message"]
+    vertical = check(evaluate(client, "Tr16x8(P4)-ptfe", **VERTICAL), "back_driving")
+    assert "drive the screw down" in vertical["message"]
+
+
 def test_the_rule_of_thumb_says_which_governs(client: TestClient) -> None:
     """Tr16x4: lead 4 mm is not under OD / 8 = 2 mm, so the catalog's rule says it
     back-drives, while friction at 0.5 x 0.20 holds it: the row says the friction

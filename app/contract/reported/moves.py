@@ -40,8 +40,10 @@ ROWS: tuple[Reported, ...] = (
         formula=Formula(
             segments.segments,
             "F = s F_steady + m a, a = +a, 0, -d along the motion; F_steady = load (+ m g "
-            "when vertical), s = +1 out, back and up, -1 down; in a dwell F_steady when "
-            "vertical",
+            "when vertical), s = +1 where it resists the motion (a load that opposes it; a "
+            "weight or a load of fixed direction going up or out), -1 where it helps (down "
+            "or back); in a dwell F_steady where a load is held at rest (vertical, or a load "
+            "of fixed direction)",
             "statics and Newton's second law",
         ),
     ),
@@ -50,7 +52,8 @@ ROWS: tuple[Reported, ...] = (
         formula=Formula(
             profile.thread_torque,
             "T = F lead / (2 pi eta) if F >= 0 else F lead eta_b / (2 pi), + T_drag "
-            "+ (J_screw + J_rotor) alpha; in a dwell the holding torque when vertical, else 0",
+            "+ (J_screw + J_rotor) alpha; in a dwell the holding torque where a load is held "
+            "at rest, else 0",
         ),
     ),
 )

@@ -1,4 +1,5 @@
-"""Vertical axis without a brake: the thread must self-lock, with a margin on friction."""
+"""A load held at rest (a vertical axis's weight, or a load of fixed direction) without a
+brake: the thread must self-lock, with a margin on friction."""
 
 import numpy as np
 
@@ -26,9 +27,10 @@ class BackDriving(Check):
         "every screw back-drives under this load: add a brake (its torque as an input) or a "
         "self-locking worm stage"
     )
-    label = "Self-locking (vertical axis, no brake)"
+    label = "Self-locking (load held at rest, no brake)"
     description = (
-        "On a vertical axis with no brake the load pushes the nut down. The thread holds it "
+        "Where the axis holds a load at rest (a vertical axis's weight, or a load of fixed "
+        "direction) and no brake is given, the load pushes the nut. The thread holds it "
         "only while its lead angle stays below the static friction angle; since friction "
         "drops with vibration and lubrication, the screw counts as self-locking only with "
         "static friction reduced by the self-locking friction factor. Give a brake's "
@@ -67,9 +69,9 @@ class BackDriving(Check):
         if s.screw_type == "ball" and not passed:
             return Phrase(
                 "A ball screw always back-drives (rolling friction, efficiency near 90 % "
-                "both ways): the load drives the screw down with the power off; holding "
+                "both ways): the load drives the screw {way} with the power off; holding "
                 "torque {physics}. A brake is needed.",
-                {"physics": Amount(r.holding.holding_distrusted_nm, "torque")},
+                {"physics": Amount(r.holding.holding_distrusted_nm, "torque"), "way": way(app)},
             )
         rule = rule_note(app, s, passed)
         rule_text = "" if rule is None else " {rule}"
@@ -81,15 +83,16 @@ class BackDriving(Check):
         if passed:
             return Phrase(
                 "Self-locking even with static friction at {f} x its value: the load cannot "
-                "drive the screw down." + rule_text,
-                values,
+                "drive the screw {way}." + rule_text,
+                {**values, "way": way(app)},
             )
         return Phrase(
             "Not reliably self-locking (static friction at {f} x its value): the load can "
-            "drive the screw down; holding torque {seed} (seed method), {physics} "
+            "drive the screw {way}; holding torque {seed} (seed method), {physics} "
             "(physics at {f} x static friction)." + rule_text,
             {
                 **values,
+                "way": way(app),
                 "seed": Amount(r.holding.holding_seed_nm, "torque"),
                 "physics": Amount(r.holding.holding_distrusted_nm, "torque"),
             },
@@ -99,6 +102,11 @@ class BackDriving(Check):
         return brake_or_lead(
             "Give a brake (it holds with the power off) of at least {needed}", s, r, reach
         )
+
+
+def way(app: Application) -> str:
+    """Which way a held load drives the nut: down a vertical axis, back on another."""
+    return "down" if app.orientation == "vertical" else "back"
 
 
 def rule_note(app: Application, s: ScrewSpec, locks_with_margin: bool) -> Phrase | None:

@@ -64,7 +64,7 @@ def holding_phrase(
 class Holding(Check):
     name = "holding"
     why_none = "no brake torque given holds this load on any screw: a larger brake"
-    label = "Holding torque (vertical axis)"
+    label = "Holding torque (load held at rest)"
     description = (
         "Where the axis holds a load at rest (vertical, or a load of fixed direction) the "
         "brake, or the motor's energised holding torque, must hold it wherever the thread "
