@@ -19,6 +19,8 @@ from app.contract.input_types import NotBool, bounded_number
 from app.contract.inputs import ApplicationIn
 from app.contract.params import close_hint, page_name_hint
 from app.contract.sections import ProvenanceOut
+from app.core.formulas import trapezoidal
+from app.core.units import from_si, to_si
 
 #: the nut material of a screw of one's own: the custom page's name (share links;
 #: ``nut_material`` is the selector's catalog filter there), the API's, and its label
@@ -115,13 +117,32 @@ class CustomScrewIn(BaseModel):
 
     @field_validator("pitch_mm")
     @classmethod
-    def _pitch_divides_lead(cls, value: float | None, info: ValidationInfo) -> float | None:
+    def _pitch_fits(cls, value: float | None, info: ValidationInfo) -> float | None:
+        """The lead is a whole number of pitches, and the thread's basic profile (d2 =
+        d - 0.5 P, ``trapezoidal.pitch_diameter``), whose flanks the torque and the nut's
+        pressure read, has its pitch line above the root and can be driven at its
+        friction."""
         lead = info.data.get("lead_mm")
         if value is None or lead is None:
             return value
         starts = round(lead / value)
         if starts < 1 or not math.isclose(lead, starts * value):
             raise ValueError(f"the lead {lead:g} mm must be a whole number of pitches")
+        outer, root = info.data.get("outer_diameter_mm"), info.data.get("root_diameter_mm")
+        if outer is None or root is None:
+            return value  # an earlier field is invalid and already reported
+        flank = from_si(trapezoidal.pitch_diameter(to_si(outer, "mm"), to_si(value, "mm")), "mm")
+        if flank <= root:
+            raise ValueError(
+                f"too coarse for this screw: its flanks' pitch diameter d - P/2 = {flank:.4g} "
+                f"mm is not above the root diameter {root:g} mm"
+            )
+        half_angle = info.data.get("thread_half_angle_deg", 14.5)
+        for name in ("friction_dynamic", "friction_static"):
+            friction = info.data.get(name)
+            problem = None if friction is None else _undrivable(lead, flank, half_angle, friction)
+            if problem:
+                raise ValueError(f"at its pitch diameter d - P/2 = {flank:.4g} mm, {problem}")
         return value
 
     @field_validator("friction_dynamic", "friction_static")
@@ -132,14 +153,23 @@ class CustomScrewIn(BaseModel):
         if any(info.data.get(name) is None for name in names):
             return value  # an earlier field is invalid and already reported
         outer, root, lead, half_angle = (float(info.data[name]) for name in names)
-        tan_lead = lead / (math.pi * (outer + root) / 2)
-        limit = 0.99 * math.cos(math.radians(half_angle)) / tan_lead
-        if value >= limit:
-            raise ValueError(
-                f"with this lead ({math.degrees(math.atan(tan_lead)):.1f} deg lead angle) the "
-                f"thread cannot be driven at friction {value:g}: it must be below {limit:.3g}"
-            )
+        problem = _undrivable(lead, (outer + root) / 2, half_angle, value)
+        if problem:
+            raise ValueError(problem)
         return value
+
+
+def _undrivable(lead: float, pitch_diameter: float, half_angle_deg: float, friction: float) -> str:
+    """Why a sliding thread of ``lead`` on ``pitch_diameter`` (one unit) cannot be driven
+    at ``friction`` (mu tan(lambda) >= 0.99 cos(a_n), Shigley); empty when it can."""
+    tan_lead = lead / (math.pi * pitch_diameter)
+    limit = 0.99 * math.cos(math.radians(half_angle_deg)) / tan_lead
+    if friction < limit:
+        return ""
+    return (
+        f"with this lead ({math.degrees(math.atan(tan_lead)):.1f} deg lead angle) the "
+        f"thread cannot be driven at friction {friction:g}: it must be below {limit:.3g}"
+    )
 
 
 def _screw_kind(data: Any) -> str:

@@ -147,6 +147,35 @@ def test_the_api_refuses_an_unknown_nut_and_a_pitch_that_does_not_divide_the_lea
     assert page.select_one("#e-nut").text.strip()
 
 
+@pytest.mark.parametrize(
+    ("screw", "words"),
+    [
+        # d2 = 0.5 - 1 / 2 = 0 mm: the lead angle was 90 deg and the root stress NaN
+        ({"outer_diameter_mm": 0.5, "root_diameter_mm": 0.475, "lead_mm": 1, "pitch_mm": 1},
+         "d - P/2 = 0 mm is not above the root diameter 0.475 mm"),
+        # ten starts of P 4 on d 10: at d2 = 8 mm, tan(lambda) = 40 / (8 pi) = 1.592 and the
+        # thread drives only below 0.99 cos(14.5 deg) / 1.592 = 0.602; the mean of the
+        # diameters (8.75 mm) allows 0.659
+        ({"outer_diameter_mm": 10, "root_diameter_mm": 7.5, "lead_mm": 40, "pitch_mm": 4},
+         "d - P/2 = 8 mm, with this lead (57.9 deg lead angle) the thread cannot be driven "
+         "at friction 0.63: it must be below 0.602"),
+    ],
+    ids=["pitch-line-below-the-root", "undrivable-at-d2"],
+)  # fmt: skip
+def test_a_pitch_whose_flanks_do_not_fit_the_screw_is_refused(
+    client: TestClient, screw: dict[str, float], words: str
+) -> None:
+    """With a pitch, the torque and the nut's pressure read the basic profile's pitch
+    diameter d2 = d - P/2 (ISO 2904): a pitch that puts it at or below the root, or a lead
+    too steep to drive there, is refused on the pitch."""
+    body = {"load_n": 100, "speed_mm_s": 20, "length_mm": 400}
+    full = {**screw, "friction_dynamic": 0.63, "friction_static": 0.2}
+    response = client.post("/api/v1/evaluate", json={"application": body, "screw": full})
+    assert response.status_code == 422, response.text
+    (error,) = response.json()["detail"]
+    assert error["field"] == "screw.pitch_mm" and words in error["message"]
+
+
 def test_the_applications_nut_length_sets_the_custom_nuts(client: TestClient) -> None:
     """The nut length is the family's 2 x d (24 mm for Tr12) unless the application's
     nut length sets another: the contact pressure falls as 1 / L (engaged turns L / P)."""
