@@ -184,6 +184,23 @@ def test_every_check_applies_under_some_application(catalog: Catalog) -> None:
         assert counts and max(counts) > 0, check.name
 
 
+def test_a_numeric_check_judges_numbers_wherever_it_applies(catalog: Catalog) -> None:
+    """Where a numeric check applies, its demand and its limit are numbers: a NaN demand
+    against a limit compares false with it, and the check would pass unjudged (a screw
+    of one's own with an impossible pitch once passed its root stress on "nan MPa")."""
+    table = catalog.index.table
+    unjudged = []
+    for app_id, app in APPS.items():
+        q = operating_point(app, table)
+        for check in (c for c in REGISTRY if c.applies(app)):
+            m = check.measure(app, table, q)
+            if m.demand is None or m.capacity is None:
+                continue
+            missing = m.applicable & (np.isnan(m.demand) | np.isnan(m.capacity))
+            unjudged += [(app_id, check.name, table.screws[i].id) for i in np.flatnonzero(missing)]
+    assert unjudged == []
+
+
 @pytest.mark.parametrize(
     ("name", "wrong"),
     [
