@@ -59,6 +59,13 @@ MachineAxisOut = create_model(
     __doc__="One axis sized, with the axes above it in its moving mass.",
     name=(str, ...),
     carried_kg=(float, Field(description="Mass of the axes above, added to its own [kg].")),
+    uncounted=(
+        list[str],
+        Field(
+            description="The axes above whose screw the carried mass leaves out: none "
+            "passes there and none is chosen, so its mass is not known (choose one)."
+        ),
+    ),
     sized_mass_kg=(
         float,
         Field(description="The moving mass it was sized with: its own and the carried [kg]."),

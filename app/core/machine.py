@@ -41,7 +41,9 @@ class Axis:
 class AxisResult:
     """One axis sized: the application it was sized with (the axes above in its moving
     mass), the mass those axes add [kg], its selection, the screw chosen (None: none
-    passes and none was named), and the mass it brings to the axis below [kg]."""
+    passes and none was named), the mass it brings to the axis below [kg], and the
+    axes above whose screw that mass leaves out (none chosen there: its mass is not
+    known until one is)."""
 
     axis: Axis
     app: Application
@@ -50,6 +52,7 @@ class AxisResult:
     chosen: Candidate | None
     screw_kg: float
     total_kg: float
+    uncounted: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -94,15 +97,21 @@ def carrying(app: Application, carried_kg: float) -> Application:
 
 
 def size_axis(
-    axis: Axis, carried_kg: float, index: CatalogIndex, ranges: Ranges, words: Words
+    axis: Axis,
+    carried_kg: float,
+    index: CatalogIndex,
+    ranges: Ranges,
+    words: Words,
+    uncounted: tuple[str, ...] = (),
 ) -> AxisResult:
-    """One axis with ``carried_kg`` of upper axes added to its moving mass."""
+    """One axis with ``carried_kg`` of upper axes added to its moving mass, which leaves
+    out the screws of the axes ``uncounted`` (none chosen there)."""
     app = carrying(axis.app, carried_kg)
     sel = select(app, index, ranges, words)
     chosen = _chosen(app, index, sel, axis.choice)
     screw_kg = 0.0 if chosen is None else screw_mass(app, chosen)
     total = app.moving_mass_kg + axis.frame_kg + axis.motor_kg + screw_kg
-    return AxisResult(axis, app, carried_kg, sel, chosen, screw_kg, total)
+    return AxisResult(axis, app, carried_kg, sel, chosen, screw_kg, total, uncounted)
 
 
 def size_machine(
@@ -111,10 +120,13 @@ def size_machine(
     """Size ``axes`` (top first): each with the total mass of the axis above it."""
     results: list[AxisResult] = []
     carried = 0.0
+    uncounted: tuple[str, ...] = ()
     for axis in axes:
-        result = size_axis(axis, carried, index, ranges, words)
+        result = size_axis(axis, carried, index, ranges, words, uncounted)
         results.append(result)
         carried = result.total_kg
+        if result.chosen is None:
+            uncounted = (*uncounted, axis.name)
     return Machine(tuple(results), _governing(results), results[-1].app.moving_mass_kg)
 
 

@@ -52,6 +52,7 @@ def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
     return {
         "name": r.axis.name,
         "carried_kg": r.carried_kg,
+        "uncounted": list(r.uncounted),
         "sized_mass_kg": getattr(inputs, mass),
         "screw_kg": None if r.chosen is None else r.screw_kg,
         "total_kg": r.total_kg,

@@ -98,6 +98,19 @@ def test_the_axis_with_nothing_passing_governs(catalog: Catalog) -> None:
     assert fine.governing == worst.axis.name
 
 
+def test_the_axes_below_an_axis_with_no_screw_say_they_leave_its_screw_out(
+    catalog: Catalog,
+) -> None:
+    """Z with nothing passing brings its moving mass, frame and motor but no screw (its
+    mass is not known): X and Y name Z as left out, and X carries 0.5 + 0.3 + 0.4 kg."""
+    impossible = replace(Z, load_n=1.0e6)
+    m = size_machine([Axis("Z", impossible, 0.3, 0.4), *stack()[1:]], catalog.index, {}, {})
+    assert m.axes[0].chosen is None and m.axes[0].uncounted == ()
+    assert [r.uncounted for r in m.axes[1:]] == [("Z",), ("Z",)]
+    assert m.axes[1].carried_kg == pytest.approx(0.5 + 0.3 + 0.4, rel=1e-12)
+    assert all(r.uncounted == () for r in size_machine(stack(), catalog.index, {}, {}).axes)
+
+
 def test_screw_mass_of_a_tr16x4_by_hand() -> None:
     """Tr16x4: d2 = 16 - 0.5 x 4 = 14 mm (ISO 2904); steel 7850 kg/m^3, 1 m long."""
     assert geometry.screw_mass(7850.0, 0.014, 1.0) == pytest.approx(

@@ -99,3 +99,25 @@ def test_a_parameter_the_machine_page_does_not_read_is_named(client: TestClient)
     assert page.status_code == 422
     assert "Unknown parameter &#39;frame_mass1&#39;: it is not read." in page.text
     assert '<table class="machine">' not in page.text
+
+
+def test_an_axis_below_one_with_no_screw_says_its_mass_leaves_that_screw_out(
+    client: TestClient,
+) -> None:
+    """Z with nothing passing (3,000 N at 500 mm/s on a 3 m B-series screw): X is sized
+    with Z's moving mass, frame and motor, and says that Z's screw is not in it."""
+    z = "/?load=3000&speed=500&length=3000&family=B"
+    page = client.get("/machine?" + urlencode({**AXES, "link1": z}))
+    assert page.status_code == 200
+    _, x = rows(page.text)
+    assert x[3].endswith("without the screw of Z (none passes there)")
+    assert "Sized without the screw of Z, whose mass is not known" in x[-1]
+    impossible = {"load_n": 3000, "speed_mm_s": 500, "length_mm": 3000}
+    body = {
+        "axes": [
+            {"name": "Z", "inputs": {**impossible, "family": "B"}},
+            {"name": "X", "inputs": machine_axes.X},
+        ]
+    }
+    api = client.post("/api/v1/machine", json=body).json()["axes"]
+    assert api[0]["chosen"] is None and [a["uncounted"] for a in api] == [[], ["Z"]]
