@@ -37,13 +37,11 @@ from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.cycle import MAX_MOVES, MoveIn, closing_error_mm, parse_moves_text, span_mm
 from app.contract.fields import BY_API, FIELDS
 from app.contract.input_types import api_type
-from app.core import motion
+from app.core import duty, motion
 from app.core.model import Application
 
 #: The API name of each core attribute.
 API_OF = {field.core: field.api for field in FIELDS}
-#: Seconds in a day, the most the cycles of a day can take [s].
-SECONDS_PER_DAY = 86400.0
 #: The screw's length, which bounds the span from the thrust bearing to the nut.
 LENGTH = next(field for field in FIELDS if field.core == "length_m")
 #: The support unit of the library that rates the thrust bearing.
@@ -223,14 +221,13 @@ class ApplicationInputs(BaseModel):
         cycles = getattr(self, name, None)
         if cycles is None:
             return self
-        p = motion.move_profile(self.axis())
-        # a day exactly filled passes (its product may round a hair above 86,400 s)
-        if p is None or cycles * p.cycle_time_s <= SECONDS_PER_DAY * (1.0 + 1e-12):
+        axis = self.axis()
+        p = motion.move_profile(axis)
+        if p is None or duty.cycles_fit_a_day(axis):
             return self
-        most = SECONDS_PER_DAY / p.cycle_time_s
         message = (
-            f"must be at most {most:.6g}: one cycle (out and back, with the dwells) takes "
-            f"{p.cycle_time_s:.6g} s, and a day has 86400 s"
+            f"must be at most {duty.most_cycles_per_day(axis):.6g}: one cycle (out and back, "
+            f"with the dwells) takes {p.cycle_time_s:.6g} s, and a day has 86400 s"
         )
         error = InitErrorDetails(
             type=PydanticCustomError("cycles_per_day", message),

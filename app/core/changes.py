@@ -8,6 +8,7 @@ from collections.abc import Mapping, Sequence, Set
 from dataclasses import replace
 from typing import Any, cast
 
+from app.core import duty
 from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.model import Application, Change
@@ -75,7 +76,7 @@ def input_change(best: Candidate) -> dict[str, float]:
 def _input_rules(app: Application) -> dict[str, float]:
     """The least value of each input that the other inputs' rules set: the screw's
     length, at least the stroke and the nut length given (the input table's rule,
-    ``ApplicationInputs._stroke_fits``; ``stroke_fits``)."""
+    ``ApplicationInputs._stroke_fits``; ``inputs_hold``)."""
     if app.stroke_m is None:
         return {}
     return {"length_m": app.stroke_m + (app.nut_length_m or 0.0)}
@@ -171,13 +172,16 @@ def one_input_changes(best: Candidate) -> list[dict[str, float]]:
     ]
 
 
-def stroke_fits(app: Application) -> bool:
-    """The nut's stroke stays on the screw: at most its length less the nut length given
-    (the input table's rule, ``ApplicationInputs._stroke_fits``). A change that breaks it
-    (a screw shortened below a seed nut's stroke, which no stroke-travel check judges
-    without the nut's length) is no application the inputs accept. The rule is
-    ``_input_rules``, which every ``input_change`` keeps already."""
-    return all(getattr(app, key) >= least for key, least in _input_rules(app).items())
+def inputs_hold(app: Application) -> bool:
+    """The inputs' own rules hold: the nut's stroke stays on the screw, at most its
+    length less the nut length given (``ApplicationInputs._stroke_fits``, the rule
+    ``_input_rules`` gives and every ``input_change`` keeps), and the cycles per day fit
+    in a day (``ApplicationInputs._cycles_fit_a_day``, ``duty.cycles_fit_a_day``). A
+    change that breaks one (a screw shortened below a seed nut's stroke, which no
+    stroke-travel check judges without the nut's length; a move slowed until 5,000
+    cycles take more than a day) is no application the inputs accept."""
+    stroke_fits = all(getattr(app, key) >= least for key, least in _input_rules(app).items())
+    return stroke_fits and duty.cycles_fit_a_day(app)
 
 
 def within(change: Mapping[str, float | str], ranges: Ranges) -> bool:
@@ -220,12 +224,15 @@ def feasible_changes(
     known: Sequence[Mapping[str, float]] = (),
 ) -> tuple[Change, ...]:
     """Input changes within ``ranges`` that admit each of the nearest rejected candidates,
-    one per distinct change: each clears every failed limit of the candidate it names.
-    ``known``: the input changes of the first candidates, already worked out."""
+    one per distinct change: each clears every failed limit of the candidate it names
+    and keeps the inputs' own rules (``inputs_hold``). ``known``: the input changes of
+    the first candidates, already worked out."""
     changes: list[Change] = []
     for k, ev in enumerate(nearest):
         change = dict(known[k]) if k < len(known) else input_change(ev)
-        if change and within(change, ranges) and all(c.inputs != change for c in changes):
+        if not change or not within(change, ranges) or any(c.inputs == change for c in changes):
+            continue
+        if inputs_hold(replace(ev.app, **cast(dict[str, Any], change))):
             changes.append(Change(change, ev.screw.id))
         if len(changes) == count:
             break

@@ -18,7 +18,7 @@ from itertools import combinations
 
 import numpy as np
 
-from app.core.changes import stroke_fits, within
+from app.core.changes import inputs_hold, within
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import FIXITY_ORDER, Application, Remedy
 from app.core.phrase import Phrase
@@ -63,7 +63,7 @@ def verify(app: Application, sc: Screening, change: Inputs) -> Remedy | None:
     """Screen the candidates of ``sc`` again with ``change`` made: a remedy when one
     passes at a governing utilisation of at most 1 / (1 + MARGIN)."""
     changed = replace(app, **dict(change))  # type: ignore[arg-type]
-    if not stroke_fits(changed):
+    if not inputs_hold(changed):
         return None
     again = screen_table(changed, sc.table, sc.index, sc.reach)
     worst = again.max_utilization[again.passed]

@@ -185,3 +185,21 @@ def test_a_change_admits_its_screw_at_the_limit_and_a_remedy_past_it(
         assert admitted["utilization"][admitted["governing_check"]] == pytest.approx(1.0)
     remedy = summary["remedies"][0]
     assert remedy["utilization"] <= 1 / 1.05 + 1e-9
+
+
+def test_no_change_or_remedy_breaks_the_cycles_a_day_take(client: TestClient) -> None:
+    """20 kN on a 2.5 m vertical screw, a 150 mm stroke 5,000 times a day: nothing passes.
+    A slower move admits the seed's fine leads, but at 15.9 mm/s one cycle takes 18.9 s
+    and 5,000 of them more than a day: the inputs refuse it (422 on cycles_per_day), so
+    no change or remedy may offer it. Each one offered is an application the API accepts,
+    and a remedy's passes as it says."""
+    axis = {"load_n": 20000, "speed_mm_s": 1500, "length_mm": 2500, "orientation": "vertical"}
+    axis |= {"stroke_mm": 150, "cycles_per_day": 5000}
+    summary = client.get("/api/v1/select", params=axis).json()["summary"]
+    assert summary["changes"] and summary["remedies"]
+    for offered in summary["changes"] + summary["remedies"]:
+        changed = {**axis, **{k: repr(v) for k, v in offered["inputs"].items()}}
+        response = client.get("/api/v1/select", params={**changed, "limit": 100})
+        assert response.status_code == 200, (offered, response.text)
+        if "passing" in offered:
+            assert response.json()["counts"]["passed"] == offered["passing"]

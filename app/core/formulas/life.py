@@ -4,6 +4,8 @@ from app.core.formulas.declare import SEED, formula
 
 DAYS_PER_YEAR = 365.0
 SECONDS_PER_HOUR = 3600.0
+#: The hours of a day: the most an axis can run in one.
+HOURS_PER_DAY = 24.0
 
 
 @formula("cycles/day = hours/day x 3600 / t_cycle", "duty: running time over the cycle time")
