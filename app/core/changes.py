@@ -76,10 +76,12 @@ def input_change(best: Candidate) -> dict[str, float]:
 def _input_rules(app: Application) -> dict[str, float]:
     """The least value of each input that the other inputs' rules set: the screw's
     length, at least the stroke and the nut length given (the input table's rule,
-    ``ApplicationInputs._stroke_fits``; ``inputs_hold``)."""
-    if app.stroke_m is None:
-        return {}
-    return {"length_m": app.stroke_m + (app.nut_length_m or 0.0)}
+    ``ApplicationInputs._stroke_fits``) and the span from the thrust bearing to the nut
+    given (``ApplicationInputs._within_length``); ``inputs_hold``."""
+    least = [app.stroke_m + (app.nut_length_m or 0.0)] if app.stroke_m is not None else []
+    if app.bearing_to_nut_m is not None:
+        least.append(app.bearing_to_nut_m)
+    return {"length_m": max(least)} if least else {}
 
 
 Bounds = tuple[Mapping[str, float], Mapping[str, float]]

@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.catalog.axis_motor import with_motor
+from app.core.changes import inputs_hold
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import Application
 from app.core.remedy import MARGIN, impossible, part_way, past_limit
@@ -167,3 +168,25 @@ def test_a_check_without_its_own_text_is_named() -> None:
     assert checks, "every check has a text: this test has nothing to try"
     text = impossible(checks[0].name, checks[0].label, True, ()).template
     assert f"{checks[0].label[1:]} excludes every screw" in text
+
+
+@pytest.mark.parametrize(
+    ("change", "holds"),
+    [
+        ({"length_m": 0.8}, True),
+        ({"length_m": 0.35}, False),  # the stroke 0.3 m and the nut 0.06 m need 0.36 m
+        ({"length_m": 0.5}, False),  # shorter than the 0.6 m from the bearing to the nut
+        ({"speed_m_s": 0.05}, True),  # 0.3 m at 0.05 m/s: a cycle of 12.1 s, 7,140 a day
+        ({"speed_m_s": 0.02}, False),  # 30.04 s: 2,876 a day, fewer than the 5,000 asked
+    ],
+    ids=["longer", "below-the-stroke", "below-the-bearing-span", "slower", "too-slow"],
+)
+def test_a_change_keeps_the_inputs_own_rules(change: dict[str, float], holds: bool) -> None:
+    """The rules the input model refuses an application by (the stroke and the nut on
+    the screw, the span from the thrust bearing within it, the cycles within a day) are
+    the ones a change or a remedy must keep (``changes.inputs_hold``)."""
+    app = Application(
+        load_n=100.0, speed_m_s=0.2, length_m=1.0, stroke_m=0.3, nut_length_m=0.06,
+        bearing_to_nut_m=0.6, accel_m_s2=1.0, cycles_per_day=5000.0,
+    )  # fmt: skip
+    assert inputs_hold(replace(app, **change)) is holds
