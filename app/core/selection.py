@@ -2,8 +2,9 @@
 
 from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
+from typing import Any, cast
 
 import numpy as np
 
@@ -15,6 +16,7 @@ from app.core.changes import (
     feasible_changes,
     input_change,
     input_words,
+    inputs_hold,
     one_input_changes,
     within,
 )
@@ -334,7 +336,7 @@ def summarize(
         ),
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
-    if change and not within(change, ranges):
+    if change and not _accepted(app, change, ranges):
         labels = " and ".join(input_words(k, words or {})[0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
@@ -353,6 +355,13 @@ def summarize(
         found,
         why,
     )
+
+
+def _accepted(app: Application, change: Mapping[str, float], ranges: Ranges) -> bool:
+    """Whether the inputs accept ``app`` with ``change`` made: each value within its
+    range, and the inputs' own rules kept (``changes.inputs_hold``)."""
+    changed = replace(app, **cast(dict[str, Any], change))
+    return within(change, ranges) and inputs_hold(changed)
 
 
 def _verified(

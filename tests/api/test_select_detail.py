@@ -203,3 +203,20 @@ def test_no_change_or_remedy_breaks_the_cycles_a_day_take(client: TestClient) ->
         assert response.status_code == 200, (offered, response.text)
         if "passing" in offered:
             assert response.json()["counts"]["passed"] == offered["passing"]
+
+
+def test_the_nearest_screws_change_is_offered_only_where_the_inputs_accept_it(
+    client: TestClient,
+) -> None:
+    """TR-C45 at 200 N and 300 mm/s, a 300 mm stroke 30,000 times a day (a 2.6 s cycle:
+    at most 33,231): the nearest nut slides too fast at any speed that still fits 30,000
+    cycles in a day. Its change (55.3 mm/s, an 11.0 s cycle) is not offered: the summary
+    says no speed within the accepted inputs admits it."""
+    axis = {"load_n": 200, "speed_mm_s": 300, "length_mm": 500, "stroke_mm": 300}
+    axis |= {"accel_mm_s2": 1000, "cycles_per_day": 30000, "family": "TR-C45"}
+    summary = client.get("/api/v1/select", params=axis).json()["summary"]
+    assert summary["input_change"] == {}
+    assert "No linear speed within the accepted inputs admits it." in summary["message"]
+    refused = client.get("/api/v1/select", params={**axis, "speed_mm_s": 55.27})
+    assert refused.status_code == 422
+    assert refused.json()["detail"][0]["field"] == "cycles_per_day"
