@@ -129,7 +129,8 @@ class CustomScrewIn(BaseModel):
         if starts < 1 or not math.isclose(lead, starts * value):
             raise ValueError(f"the lead {lead:g} mm must be a whole number of pitches")
         outer, root = info.data.get("outer_diameter_mm"), info.data.get("root_diameter_mm")
-        if outer is None or root is None:
+        half_angle = info.data.get("thread_half_angle_deg")
+        if outer is None or root is None or half_angle is None:
             return value  # an earlier field is invalid and already reported
         flank = from_si(trapezoidal.pitch_diameter(to_si(outer, "mm"), to_si(value, "mm")), "mm")
         if flank <= root:
@@ -137,7 +138,6 @@ class CustomScrewIn(BaseModel):
                 f"too coarse for this screw: its flanks' pitch diameter d - P/2 = {flank:.4g} "
                 f"mm is not above the root diameter {root:g} mm"
             )
-        half_angle = info.data.get("thread_half_angle_deg", 14.5)
         for name in ("friction_dynamic", "friction_static"):
             friction = info.data.get(name)
             problem = None if friction is None else _undrivable(lead, flank, half_angle, friction)

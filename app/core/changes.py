@@ -175,15 +175,15 @@ def one_input_changes(best: Candidate) -> list[dict[str, float]]:
 
 
 def inputs_hold(app: Application) -> bool:
-    """The inputs' own rules hold: the nut's stroke stays on the screw, at most its
-    length less the nut length given (``ApplicationInputs._stroke_fits``, the rule
+    """The inputs' own rules hold: the screw is at least as long as the stroke and the
+    nut length given and the span from the thrust bearing to the nut (the rules
     ``_input_rules`` gives and every ``input_change`` keeps), and the cycles per day fit
     in a day (``ApplicationInputs._cycles_fit_a_day``, ``duty.cycles_fit_a_day``). A
     change that breaks one (a screw shortened below a seed nut's stroke, which no
     stroke-travel check judges without the nut's length; a move slowed until 5,000
     cycles take more than a day) is no application the inputs accept."""
-    stroke_fits = all(getattr(app, key) >= least for key, least in _input_rules(app).items())
-    return stroke_fits and duty.cycles_fit_a_day(app)
+    lengths_fit = all(getattr(app, key) >= least for key, least in _input_rules(app).items())
+    return lengths_fit and duty.cycles_fit_a_day(app)
 
 
 def within(change: Mapping[str, float | str], ranges: Ranges) -> bool:
