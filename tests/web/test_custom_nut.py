@@ -24,6 +24,15 @@ TR12X3 = (
     "outer_diameter_mm=12&root_diameter_mm=8.5&lead_mm=3&thread_half_angle_deg=15"
     "&friction_dynamic=0.13&friction_static=0.16&material=c45-steel"
 )
+#: Tr12x3's thread as the API's custom screw takes it (mm; its default flank angle and
+#: material)
+TR12X3_API = {
+    "outer_diameter_mm": 12,
+    "root_diameter_mm": 8.5,
+    "lead_mm": 3,
+    "friction_dynamic": 0.13,
+    "friction_static": 0.16,
+}
 
 
 def soup(text: str) -> BeautifulSoup:
@@ -124,13 +133,7 @@ def test_skipped_checks_are_named_with_the_missing_values(client: TestClient) ->
 def test_the_api_refuses_an_unknown_nut_and_a_pitch_that_does_not_divide_the_lead(
     client: TestClient,
 ) -> None:
-    screw = {
-        "outer_diameter_mm": 12,
-        "root_diameter_mm": 8.5,
-        "lead_mm": 3,
-        "friction_dynamic": 0.13,
-        "friction_static": 0.16,
-    }
+    screw = dict(TR12X3_API)
     app = {"load_n": 100, "speed_mm_s": 20, "length_mm": 400}
     unknown = client.post(
         "/api/v1/evaluate",
@@ -179,16 +182,7 @@ def test_a_pitch_whose_flanks_do_not_fit_the_screw_is_refused(
 def test_the_applications_nut_length_sets_the_custom_nuts(client: TestClient) -> None:
     """The nut length is the family's 2 x d (24 mm for Tr12) unless the application's
     nut length sets another: the contact pressure falls as 1 / L (engaged turns L / P)."""
-    screw = {
-        "outer_diameter_mm": 12,
-        "root_diameter_mm": 8.5,
-        "lead_mm": 3,
-        "pitch_mm": 3,
-        "thread_half_angle_deg": 15,
-        "friction_dynamic": 0.13,
-        "friction_static": 0.16,
-        "nut_material": "bronze",
-    }
+    screw = {**TR12X3_API, "pitch_mm": 3, "thread_half_angle_deg": 15, "nut_material": "bronze"}
     app = {"load_n": 500, "speed_mm_s": 20, "length_mm": 400}
 
     def used(**extra: float) -> float:
@@ -220,13 +214,7 @@ def test_a_screw_without_a_nut_has_no_play_given_not_zero(client: TestClient) ->
     null (it said 0-0 mm, a perfect nut), and the anti-backlash check says the play is
     not given. The catalog's bronze nut brings its play, 0.05-0.3 mm (assumed for the ISO
     fit 7H/7e)."""
-    screw = {
-        "outer_diameter_mm": 12,
-        "root_diameter_mm": 8.5,
-        "lead_mm": 3,
-        "friction_dynamic": 0.13,
-        "friction_static": 0.16,
-    }
+    screw = dict(TR12X3_API)
     app = {"load_n": 100, "speed_mm_s": 20, "length_mm": 400, "require_anti_backlash": True}
 
     def candidate(**extra: str) -> dict[str, Any]:
