@@ -221,12 +221,11 @@ class ApplicationInputs(BaseModel):
         cycles = getattr(self, name, None)
         if cycles is None:
             return self
-        axis = self.axis()
-        p = motion.move_profile(axis)
-        if p is None or duty.cycles_fit_a_day(axis):
+        p = motion.move_profile(self.axis())
+        if p is None or duty.cycles_fit_a_day(cycles, p):
             return self
         message = (
-            f"must be at most {duty.most_cycles_per_day(axis):.6g}: one cycle (out and back, "
+            f"must be at most {duty.most_cycles_per_day(p):.6g}: one cycle (out and back, "
             f"with the dwells) takes {p.cycle_time_s:.6g} s, and a day has 86400 s"
         )
         error = InitErrorDetails(

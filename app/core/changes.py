@@ -8,7 +8,7 @@ from collections.abc import Mapping, Sequence, Set
 from dataclasses import replace
 from typing import Any, cast
 
-from app.core import duty
+from app.core import duty, motion
 from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.model import Application, Change
@@ -182,8 +182,18 @@ def inputs_hold(app: Application) -> bool:
     change that breaks one (a screw shortened below a seed nut's stroke, which no
     stroke-travel check judges without the nut's length; a move slowed until 5,000
     cycles take more than a day) is no application the inputs accept."""
-    lengths_fit = all(getattr(app, key) >= least for key, least in _input_rules(app).items())
-    return lengths_fit and duty.cycles_fit_a_day(app)
+    if any(getattr(app, key) < least for key, least in _input_rules(app).items()):
+        return False
+    return app.cycles_per_day is None or duty.cycles_fit_a_day(
+        app.cycles_per_day, motion.move_profile(app)
+    )
+
+
+def accepted(app: Application, change: Mapping[str, float], ranges: Ranges) -> bool:
+    """Whether the inputs accept ``app`` with ``change`` made: each value within its
+    range (``within``), and the inputs' own rules kept (``inputs_hold``)."""
+    changed = replace(app, **cast(dict[str, Any], change))
+    return within(change, ranges) and inputs_hold(changed)
 
 
 def within(change: Mapping[str, float | str], ranges: Ranges) -> bool:
@@ -232,9 +242,9 @@ def feasible_changes(
     changes: list[Change] = []
     for k, ev in enumerate(nearest):
         change = dict(known[k]) if k < len(known) else input_change(ev)
-        if not change or not within(change, ranges) or any(c.inputs == change for c in changes):
+        if not change or any(c.inputs == change for c in changes):
             continue
-        if inputs_hold(replace(ev.app, **cast(dict[str, Any], change))):
+        if accepted(ev.app, change, ranges):
             changes.append(Change(change, ev.screw.id))
         if len(changes) == count:
             break

@@ -22,26 +22,24 @@ from app.core.table import Array, CandidateTable, filled, finite
 REFERENCE_TEMPERATURE_C = 20.0
 
 
-def most_cycles_per_day(app: Application) -> float | None:
-    """The most cycles a day holds [1/day]: its 24 hours over the cycle's time (every
-    move and dwell, ``motion.move_profile``); None without a move. 0.2 m at 0.1 m/s with
-    1 m/s^2 ramps takes 2.1 s, with its 0.4 s dwell 2.5 s each way: 86,400 s / 5 s.
+def most_cycles_per_day(p: Profile | None) -> float | None:
+    """The most cycles a day holds [1/day]: its 24 hours over the time of the cycle
+    ``p`` (every move and dwell, ``motion.move_profile``); None without a move. 0.2 m at
+    0.1 m/s with 1 m/s^2 ramps takes 2.1 s, with its 0.4 s dwell 2.5 s each way:
+    86,400 s / 5 s.
 
-    >>> most_cycles_per_day(Application(load_n=0.0, speed_m_s=0.1, length_m=0.5,
-    ...     stroke_m=0.2, accel_m_s2=1.0, dwell_s=0.4))
+    >>> most_cycles_per_day(motion.move_profile(Application(load_n=0.0, speed_m_s=0.1,
+    ...     length_m=0.5, stroke_m=0.2, accel_m_s2=1.0, dwell_s=0.4)))
     17280.0
     """
-    p = motion.move_profile(app)
     return None if p is None else life.cycles_per_day(life.HOURS_PER_DAY, p.cycle_time_s)
 
 
-def cycles_fit_a_day(app: Application) -> bool:
-    """The cycles per day given fit in a day (``most_cycles_per_day``; a day exactly
-    filled fits, its product rounded a hair above)."""
-    if app.cycles_per_day is None:
-        return True
-    most = most_cycles_per_day(app)
-    return most is None or app.cycles_per_day <= most * (1.0 + 1e-12)
+def cycles_fit_a_day(cycles_per_day: float | None, p: Profile | None) -> bool:
+    """The cycles per day given fit in a day of the cycle ``p`` (``most_cycles_per_day``;
+    a day exactly filled fits, its product rounded a hair above)."""
+    most = most_cycles_per_day(p)
+    return cycles_per_day is None or most is None or cycles_per_day <= most * (1.0 + 1e-12)
 
 
 def heat_balance(

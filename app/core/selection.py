@@ -2,9 +2,8 @@
 
 from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import partial
-from typing import Any, cast
 
 import numpy as np
 
@@ -12,13 +11,12 @@ from app.core import kinds, motion
 from app.core.changes import (
     Ranges,
     Words,
+    accepted,
     describe_change,
     feasible_changes,
     input_change,
     input_words,
-    inputs_hold,
     one_input_changes,
-    within,
 )
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
@@ -336,7 +334,7 @@ def summarize(
         ),
     ]
     parts += [fix for c in best.failed_checks if (fix := c.fix) is not None]
-    if change and not _accepted(app, change, ranges):
+    if change and not accepted(app, change, ranges):
         labels = " and ".join(input_words(k, words or {})[0] for k in change)
         parts.append(Phrase(f"No {labels} within the accepted inputs admits it."))
         change = {}
@@ -355,13 +353,6 @@ def summarize(
         found,
         why,
     )
-
-
-def _accepted(app: Application, change: Mapping[str, float], ranges: Ranges) -> bool:
-    """Whether the inputs accept ``app`` with ``change`` made: each value within its
-    range, and the inputs' own rules kept (``changes.inputs_hold``)."""
-    changed = replace(app, **cast(dict[str, Any], change))
-    return within(change, ranges) and inputs_hold(changed)
 
 
 def _verified(
