@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 from app.core import motion, segments
 from app.core.checks import BY_NAME, ball_life
 from app.core.checks.base import Check
+from app.core.input_rules import refused
 from app.core.model import Application, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
 from app.core.quantities import PART_OF, PARTS, Quantities, quantity
@@ -280,8 +281,14 @@ class Slot:
         return self._row
 
     def fix_of(self, check: Check) -> Phrase | None:
-        """What would make ``check`` pass, within what the catalog offers."""
+        """What would make ``check`` pass, within what the catalog offers, and where
+        a value it names is one the inputs' own rules refuse, why
+        (``input_rules.refused``: a move too slow for the cycles a day)."""
         if check.name not in self._fixes:
-            reach = self.screening.reach
-            self._fixes[check.name] = check.fix(self.app, self.screw, self.row, reach)
+            app, screw, row = self.app, self.screw, self.row
+            fix = check.fix(app, screw, row, self.screening.reach)
+            note = None if fix is None else refused(app, check.input_limits(app, screw, row))
+            if fix is not None and note is not None:  # the fix's own fields kept as named
+                fix = Phrase(fix.template + " {refused}", {**fix.values, "refused": note})
+            self._fixes[check.name] = fix
         return self._fixes[check.name]

@@ -8,9 +8,9 @@ from collections.abc import Mapping, Sequence, Set
 from dataclasses import replace
 from typing import Any, cast
 
-from app.core import duty, motion
 from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
+from app.core.input_rules import inputs_hold, least_inputs, lowers
 from app.core.model import Application, Change
 from app.core.phrase import Amount, Phrase, Quantity, join
 from app.core.record import Candidate
@@ -50,16 +50,16 @@ def input_change(best: Candidate) -> dict[str, float]:
     a round never undoes an earlier one's (a shorter screw for the critical speed after a
     longer one for the stroke). Empty when a failed check has no input remedy (e.g. a
     yes/no check), or when the bounds on one input cannot both hold. The inputs' own
-    rules bound it too (``_input_rules``: no screw shorter than its stroke).
+    rules bound it too (``least_inputs``: no screw shorter than its stroke).
     """
     app, failed = best.app, best.failed_checks
-    least = _input_rules(app)
+    least = least_inputs(app)
     most: dict[str, float] = {}
     change: dict[str, float] = {}
     for _ in range(CHANGE_ROUNDS + 1):
         more = _shared_change(app, failed, keep=set(change), bounds=(least, most))
         for key, value in more.items():
-            if _lowers(app, key, value):
+            if lowers(app, key, value):
                 most[key] = min(value, most.get(key, math.inf))
             else:
                 least[key] = max(value, least.get(key, -math.inf))
@@ -71,17 +71,6 @@ def input_change(best: Candidate) -> dict[str, float]:
         app = replace(best.app, **cast(dict[str, Any], change))
         failed = evaluate(app, best.screw).failed_checks
     return change
-
-
-def _input_rules(app: Application) -> dict[str, float]:
-    """The least value of each input that the other inputs' rules set: the screw's
-    length, at least the stroke and the nut length given (the input table's rule,
-    ``ApplicationInputs._stroke_fits``) and the span from the thrust bearing to the nut
-    given (``ApplicationInputs._within_length``); ``inputs_hold``."""
-    least = [app.stroke_m + (app.nut_length_m or 0.0)] if app.stroke_m is not None else []
-    if app.bearing_to_nut_m is not None:
-        least.append(app.bearing_to_nut_m)
-    return {"length_m": max(least)} if least else {}
 
 
 Bounds = tuple[Mapping[str, float], Mapping[str, float]]
@@ -106,7 +95,7 @@ def _shared_change(
     least, most = bounds
     ways = [
         {
-            (k, _lowers(app, k, v)): v
+            (k, lowers(app, k, v)): v
             for k, v in o.items()
             if least.get(k, -math.inf) <= v <= most.get(k, math.inf)
         }
@@ -150,43 +139,21 @@ def _forced(ways: Ways) -> Ways:
         ways = pruned
 
 
-def _lowers(app: Application, key: str, limit: float) -> bool:
-    """Whether an input's offered ``limit`` lowers it from its value in ``app`` (a most)
-    rather than raising it (a least); an input not given is set to it."""
-    value = getattr(app, key, None)
-    return not isinstance(value, int | float) or limit <= value
-
-
 def one_input_changes(best: Candidate) -> list[dict[str, float]]:
     """Each input that alone clears every failed numeric check of ``best`` (one offered
     by all of them), at its tightest value: the alternatives ``input_change`` chooses
     among (e.g. a shorter screw or a lower speed for the critical speed). An input the
     checks move different ways (a shorter screw for the critical speed, a longer one for
     the stroke) clears none of them alone; a most is met at the smallest, a least at the
-    largest (``_lowers``)."""
+    largest (``lowers``)."""
     options = [c.input_limits for c in best.failed_checks]
     if not options or any(not o for o in options):
         return []
-    ways = [{(k, _lowers(best.app, k, v)): v for k, v in o.items()} for o in options if o]
+    ways = [{(k, lowers(best.app, k, v)): v for k, v in o.items()} for o in options if o]
     shared = set.intersection(*(set(o) for o in ways))
     return [
         {key: (min if lower else max)(o[key, lower] for o in ways)} for key, lower in sorted(shared)
     ]
-
-
-def inputs_hold(app: Application) -> bool:
-    """The inputs' own rules hold: the screw is at least as long as the stroke and the
-    nut length given and the span from the thrust bearing to the nut (the rules
-    ``_input_rules`` gives and every ``input_change`` keeps), and the cycles per day fit
-    in a day (``ApplicationInputs._cycles_fit_a_day``, ``duty.cycles_fit_a_day``). A
-    change that breaks one (a screw shortened below a seed nut's stroke, which no
-    stroke-travel check judges without the nut's length; a move slowed until 5,000
-    cycles take more than a day) is no application the inputs accept."""
-    if any(getattr(app, key) < least for key, least in _input_rules(app).items()):
-        return False
-    return app.cycles_per_day is None or duty.cycles_fit_a_day(
-        app.cycles_per_day, motion.move_profile(app)
-    )
 
 
 def accepted(app: Application, change: Mapping[str, float], ranges: Ranges) -> bool:

@@ -18,8 +18,9 @@ from itertools import combinations
 
 import numpy as np
 
-from app.core.changes import inputs_hold, within
+from app.core.changes import within
 from app.core.checks import BY_NAME, REGISTRY
+from app.core.input_rules import inputs_hold
 from app.core.model import FIXITY_ORDER, Application, Remedy
 from app.core.phrase import Phrase
 from app.core.screening import Screening, screen_table

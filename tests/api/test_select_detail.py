@@ -1,5 +1,6 @@
 """The select response's two forms: compact by default, everything with ``detail=full``."""
 
+import re
 from typing import Any
 
 import pytest
@@ -220,3 +221,37 @@ def test_the_nearest_screws_change_is_offered_only_where_the_inputs_accept_it(
     refused = client.get("/api/v1/select", params={**axis, "speed_mm_s": 55.27})
     assert refused.status_code == 422
     assert refused.json()["detail"][0]["field"] == "cycles_per_day"
+
+
+#: A speed a fix names as a most (the nut's sliding speed, PV, the traverse table).
+FIX_SPEED = re.compile(r"(?:Move|Run|speed may be) at most ([\d.,]+) mm/s")
+
+
+@pytest.mark.parametrize("speed_mm_s", [270, 300])
+def test_a_fix_says_where_the_speed_it_names_is_one_the_inputs_refuse(
+    client: TestClient, speed_mm_s: int
+) -> None:
+    """80 N (270 mm/s: the B and ZBX leadscrews) or 200 N (300 mm/s: TR-C45) over a 300 mm
+    stroke 30,000 times a day: a cycle may take at most 2.88 s. The nearest screws' fixes
+    name slower speeds (PV's 235.2 mm/s for B12000-L30, a 3.02 s cycle); a fix that names
+    one the API then refuses says so, and one that does not say so names a speed the API
+    accepts."""
+    axis: dict[str, Any] = {"speed_mm_s": speed_mm_s, "length_mm": 500, "stroke_mm": 300}
+    axis |= {"cycles_per_day": 30000, "limit": 10}
+    if speed_mm_s == 270:
+        axis |= {"load_n": 80, "family": ["B", "ZBX"]}
+    else:
+        axis |= {"load_n": 200, "accel_mm_s2": 1000, "family": "TR-C45"}
+    rejected = client.get("/api/v1/select", params=axis).json()["rejected"]
+    seen = {True: 0, False: 0}
+    for failed in (f for r in rejected for f in r["failed"]):
+        for named in FIX_SPEED.findall(failed["fix"]):
+            said = "The inputs refuse a move that slow" in failed["fix"]
+            answer = client.get("/api/v1/select", params={**axis, "speed_mm_s": named})
+            assert answer.status_code == (422 if said else 200), failed["fix"]
+            seen[said] += 1
+    assert seen[True] > 0
+    if speed_mm_s == 270:
+        assert "a cycle would take 3.022 s, and 30,000 cycles a day leave 2.88 s for each" in next(
+            f["fix"] for r in rejected if r["id"] == "B12000-L30" for f in r["failed"]
+        )

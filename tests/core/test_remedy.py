@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.catalog.axis_motor import with_motor
-from app.core.changes import inputs_hold
+from app.core.input_rules import inputs_hold
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.model import Application
 from app.core.remedy import MARGIN, impossible, part_way, past_limit
@@ -184,7 +184,7 @@ def test_a_check_without_its_own_text_is_named() -> None:
 def test_a_change_keeps_the_inputs_own_rules(change: dict[str, float], holds: bool) -> None:
     """The rules the input model refuses an application by (the stroke and the nut on
     the screw, the span from the thrust bearing within it, the cycles within a day) are
-    the ones a change or a remedy must keep (``changes.inputs_hold``)."""
+    the ones a change or a remedy must keep (``input_rules.inputs_hold``)."""
     app = Application(
         load_n=100.0, speed_m_s=0.2, length_m=1.0, stroke_m=0.3, nut_length_m=0.06,
         bearing_to_nut_m=0.6, accel_m_s2=1.0, cycles_per_day=5000.0,

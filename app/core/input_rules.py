@@ -1,0 +1,82 @@
+"""The inputs' own rules, which hold between inputs whatever the screw: the screw at least
+as long as the stroke, the nut and the span to the thrust bearing given, and the cycles a
+day within a day. The input model refuses an application that breaks one
+(``ApplicationInputs``); a change the app offers keeps them (``changes``, ``remedy``), and
+a check's fix says where the move it names breaks one (``refused``)."""
+
+import math
+from collections.abc import Mapping
+from dataclasses import replace
+from typing import Any, cast
+
+from app.core import duty, motion
+from app.core.checks.base import at_least, at_most
+from app.core.formulas import life
+from app.core.model import Application
+from app.core.phrase import Amount, Phrase
+
+#: The inputs a check's fix may name that set how long a cycle takes.
+MOVE_INPUTS = ("speed_m_s", "accel_m_s2")
+
+
+def least_inputs(app: Application) -> dict[str, float]:
+    """The least value of each input that the other inputs' rules set: the screw's
+    length, at least the stroke and the nut length given (the input table's rule,
+    ``ApplicationInputs._stroke_fits``) and the span from the thrust bearing to the nut
+    given (``ApplicationInputs._within_length``); ``inputs_hold``."""
+    least = [app.stroke_m + (app.nut_length_m or 0.0)] if app.stroke_m is not None else []
+    if app.bearing_to_nut_m is not None:
+        least.append(app.bearing_to_nut_m)
+    return {"length_m": max(least)} if least else {}
+
+
+def inputs_hold(app: Application) -> bool:
+    """The inputs' own rules hold: the screw is at least as long as the stroke and the
+    nut length given and the span from the thrust bearing to the nut (the rules
+    ``least_inputs`` gives and every ``input_change`` keeps), and the cycles per day fit
+    in a day (``ApplicationInputs._cycles_fit_a_day``, ``duty.cycles_fit_a_day``). A
+    change that breaks one (a screw shortened below a seed nut's stroke, which no
+    stroke-travel check judges without the nut's length; a move slowed until 5,000
+    cycles take more than a day) is no application the inputs accept."""
+    if any(getattr(app, key) < least for key, least in least_inputs(app).items()):
+        return False
+    return app.cycles_per_day is None or duty.cycles_fit_a_day(
+        app.cycles_per_day, motion.move_profile(app)
+    )
+
+
+def lowers(app: Application, key: str, limit: float) -> bool:
+    """Whether an input's offered ``limit`` lowers it from its value in ``app`` (a most)
+    rather than raising it (a least); an input not given is set to it."""
+    value = getattr(app, key, None)
+    return not isinstance(value, int | float) or limit <= value
+
+
+def refused(app: Application, limits: Mapping[str, float] | None) -> Phrase | None:
+    """Why the inputs refuse a move the values of a check's fix name (its
+    ``input_limits``, each ``FIX_MARGIN`` inside its limit, as the fix writes it): a
+    speed or an acceleration so low that the cycles a day no longer fit in a day; None
+    where none does. The fix names what the screw needs; this says that the application
+    cannot give it that way (the load, or another input the fix names, may still do).
+    A length a fix names needs no such word: the checks that name one say how to keep
+    the stroke (an intermediate support, a shorter span to the thrust bearing)."""
+    if app.cycles_per_day is None:
+        return None
+    for key, limit in (limits or {}).items():
+        if key not in MOVE_INPUTS or not math.isfinite(limit) or limit <= 0.0:
+            continue
+        value = at_most(limit) if lowers(app, key, limit) else at_least(limit)
+        p = motion.move_profile(replace(app, **cast(dict[str, Any], {key: value})))
+        if p is not None and not duty.cycles_fit_a_day(app.cycles_per_day, p):
+            return Phrase(
+                "The inputs refuse a move that slow: a cycle would take {cycle}, and "
+                "{cycles} cycles a day leave {each} for each.",
+                {
+                    "cycle": Amount(p.cycle_time_s, "time"),
+                    "cycles": f"{app.cycles_per_day:,.0f}",
+                    "each": Amount(
+                        life.HOURS_PER_DAY * life.SECONDS_PER_HOUR / app.cycles_per_day, "time"
+                    ),
+                },
+            )
+    return None
