@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.catalog.axis_motor import with_motor
-from app.core.input_rules import inputs_hold
 from app.core.checks import BY_NAME, REGISTRY
+from app.core.input_rules import inputs_hold
 from app.core.model import Application
 from app.core.remedy import MARGIN, impossible, part_way, past_limit
 from app.core.selection import screen, select
