@@ -143,7 +143,7 @@ def impossible(
     label: str,
     excludes_all: bool,
     nearest_fails: Sequence[str],
-    kind: str = "leadscrew",
+    kind: str,
 ) -> Phrase:
     """Why no change tried lets a screw pass. When the check that excludes the most
     excludes every screw, no screw of the ``kind`` screened ("leadscrew", "ball screw" or

@@ -155,10 +155,10 @@ def test_when_some_screws_are_excluded_otherwise_it_does_not_say_no_leadscrew_ca
 def test_why_none_is_the_excluding_checks_own_text() -> None:
     """The sentence for a check that excludes every screw is the one its module gives
     (``Check.why_none``), and only a motor check adds 'with this motor'."""
-    speed = impossible("critical_speed", "Critical speed", True, ())
+    speed = impossible("critical_speed", "Critical speed", True, (), "leadscrew")
     assert BY_NAME["critical_speed"].why_none[1:] in speed.template
     assert "with this motor" not in speed.template
-    rms = impossible("motor_rms", "Motor RMS torque", True, ())
+    rms = impossible("motor_rms", "Motor RMS torque", True, (), "leadscrew")
     assert "with this motor" in rms.template
     assert BY_NAME["motor_rms"].why_none[1:] in rms.template
 
@@ -166,7 +166,7 @@ def test_why_none_is_the_excluding_checks_own_text() -> None:
 def test_a_check_without_its_own_text_is_named() -> None:
     checks = [c for c in REGISTRY if not c.why_none]
     assert checks, "every check has a text: this test has nothing to try"
-    text = impossible(checks[0].name, checks[0].label, True, ()).template
+    text = impossible(checks[0].name, checks[0].label, True, (), "screw").template
     assert f"{checks[0].label[1:]} excludes every screw" in text
 
 
