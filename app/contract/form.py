@@ -375,12 +375,17 @@ def encode_query(pairs: Sequence[tuple[str, str]] | Mapping[str, str]) -> str:
     return urlencode(pairs, safe=LINK_SAFE)
 
 
-def share_query(inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
+def share_query(
+    inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS, catalog: bool = True
+) -> str:
     """Query string of the page link for these inputs: required fields and non-defaults,
-    each number reproducing the input exactly."""
+    each number reproducing the input exactly; without the fields that choose among the
+    catalog's screws (``catalog_only``: the lead, the families, the limit) for a page that
+    judges one screw of its own (``catalog`` False)."""
     pairs = [
         (f.page, link_text(f, _exact_curve(inputs, f) or v, units))
         for f, v in shown_inputs(inputs.model_dump())
+        if catalog or not f.catalog_only
     ]
     if inputs.moves:
         pairs.append((MOVES, moves_text(inputs.moves)))

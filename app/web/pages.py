@@ -344,13 +344,18 @@ def _detail_page(request: Request, catalog: Catalog) -> Response:
     inputs, units = link_inputs(request.query_params, catalog, ("id",))
     c = page_candidate(inputs, request.query_params.get("id", ""), catalog, units)
     query = share_query(inputs, units)
-    try_query = catalog_screw_query(catalog.by_id[c.id], units, catalog.nut_materials)
+    spec = catalog.by_id[c.id]
+    # the page of one's own screw judges a sliding nut: a ball nut is not one it offers
+    try_url = None
+    if spec.screw_type == "lead":
+        try_query = catalog_screw_query(spec, units, catalog.nut_materials)
+        try_url = f"/custom?{try_query}&{share_query(inputs, units, catalog=False)}"
     context = {
         "c": c,
         "d": Display(units),
         "query": query,
         "report_query": query,
-        "try_url": f"/custom?{try_query}&{query}",
+        "try_url": try_url,
         "series_url": series_url(catalog.by_id[c.id].series_id),
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"

@@ -188,6 +188,38 @@ def test_selector_links_to_the_custom_page_and_each_detail_tries_its_screw(
     assert tried.select_one("#f-friction_static")["value"] == values["friction_static"]
 
 
+def test_a_detail_reached_through_the_selectors_filters_tries_its_screw_alone(
+    client: TestClient,
+) -> None:
+    """The selector's own choices (a result limit, a lead, a family, a ranking) choose
+    among the catalog's screws: the page of one's own screw refuses them ('limit' is not
+    read on this page) and would show no verdict. The link leaves them out and gives the
+    verdict of the same screw: Tr16x4-ptfe, 10 kg and 100 N lifted 300 mm 500 times a day
+    for 5 years, passes on both pages."""
+    axis = "load=100&orientation=vertical&moving_mass_kg=10&speed=50&length=400&stroke=300"
+    axis += "&cycles_per_day=500&required_life_years=5"
+    chosen = "&limit=5&lead=4&family=TR-304&rank_by=size"
+    detail = soup(client.get(f"/detail?{axis}{chosen}&id=Tr16x4-ptfe").text)
+    link = detail.select_one(".try-custom a")["href"]
+    names = {name for name, _ in parse_qsl(link.split("?", 1)[1])}
+    assert not names & {"limit", "lead", "family", "rank_by"}
+    tried = client.get(link).text
+    assert "not read on this page" not in tried
+    assert soup(tried).select_one(".custom-verdict").text.strip().startswith("Passes")
+
+
+def test_a_ball_screw_is_not_offered_to_the_page_of_ones_own_sliding_screw(
+    client: TestClient,
+) -> None:
+    """The page of one's own screw judges a sliding nut: a ball screw tried there lost
+    its ball nut and was judged as a leadscrew (R12-04B1-RSIT: a PV of 20,769 psi ft/min
+    and a failed life). Its detail offers no such link; a leadscrew's does."""
+    axis = "load=50&speed=200&length=500&stroke=300&accel=2000&moving_mass_kg=5"
+    ball = soup(client.get(f"/detail?{axis}&id=R10-02.5T2-RSIT").text)
+    assert ball.select_one("dl.facts") and not ball.select_one(".try-custom")
+    assert soup(client.get(f"/detail?{axis}&id=Tr8x8(P2)-ptfe").text).select_one(".try-custom")
+
+
 # the selector's marks
 
 
