@@ -7,7 +7,7 @@ from fastapi.templating import Jinja2Templates
 
 from app.catalog.axis_motor import CURVE_ORIGINS
 from app.core.phrase import figures
-from app.core.verdict import value_label
+from app.core.verdict import percent, value_label
 from app.paths import resource_dir
 
 templates = Jinja2Templates(directory=str(resource_dir("templates")))
@@ -36,6 +36,7 @@ def band(ends: Any) -> str:
 templates.env.policies["json.dumps_function"] = _json
 templates.env.filters["figures"] = figures
 templates.env.filters["band"] = band
+templates.env.filters["percent"] = percent
 templates.env.globals["value_label"] = value_label
 #: where a motor curve comes from, in words (the results' and the report's footnotes)
 templates.env.globals["curve_origins"] = CURVE_ORIGINS

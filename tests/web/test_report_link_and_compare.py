@@ -66,3 +66,28 @@ def test_compare_has_size_lead_nut_and_speed_rows_and_life_ranges(client: TestCl
         assert low == float(f"{c['life']['years'][0]:.3g}")
         assert high == float(f"{c['life']['years'][1]:.3g}")
         assert low < high
+
+
+#: Tr8x8(P2)-ptfe passes this axis at 99.76 % of its nut's allowed pressure.
+CLOSE_PASS = "load=50&speed=200&length=500&stroke=300&accel=2000&moving_mass_kg=5"
+#: Tr24x10(P5)-ptfe fails this axis at 100.05 % of the stepper's torque-speed curve.
+CLOSE_FAIL = (
+    "load=30&speed=100&length=300&stroke=200&accel=2000&moving_mass_kg=2&motor=17hs19-2004s1"
+)
+
+
+def test_a_utilization_near_its_limit_reads_on_its_side_of_100_percent(
+    client: TestClient,
+) -> None:
+    """A pass at 99.76 % read "100 %" on the detail, the compare page and the report, and
+    a fail at 100.05 % read "100 %" too: every page now writes them as the verdict does
+    (``verdict.percent``), 99.8 % and 100.05 %."""
+    detail = BeautifulSoup(
+        client.get(f"/detail?{CLOSE_PASS}&id=Tr8x8(P2)-ptfe").text, "html.parser"
+    )
+    used = [dd.text for dd in detail.select("li.check:has(.tag) dl dd") if "%" in dd.text]
+    assert used == ["99.8 %"]
+    compare = client.get(f"/compare?{CLOSE_PASS}&ids=Tr8x8(P2)-ptfe,R10-02.5T2-RSIT").text
+    assert "99.8 %" in compare and ">100 %" not in compare
+    report = client.get(f"/report?{CLOSE_FAIL}&id=Tr24x10(P5)-ptfe").text
+    assert "at 100.05 % of its limit" in report

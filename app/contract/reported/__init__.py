@@ -41,6 +41,7 @@ from app.contract.reported.row import (
 )
 from app.contract.units import Display, sig
 from app.core.phrase import figures
+from app.core.verdict import percent
 
 __all__ = [
     "BY_KEY",
@@ -112,7 +113,7 @@ def show(row: Reported, value: Any, d: Display) -> str:
     if row.cell == "whole":
         return f"{value:.0f}"
     if row.cell == "percent":
-        return f"{value * 100:.0f} %"
+        return percent(value)
     if row.cell == "times":
         return f"{value:.{row.digits}f}×"
     if isinstance(value, float):
