@@ -6,6 +6,7 @@ limit does not exist for that candidate (e.g. no PV limit published): the check 
 apply to it. A yes/no check has no demand or capacity, only ``flagged`` failures.
 """
 
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import ClassVar, Literal
@@ -32,6 +33,7 @@ __all__ = [
     "Quantities",
     "Reach",
     "ScrewSpec",
+    "allowed_load",
     "at_least",
     "at_most",
     "same",
@@ -176,6 +178,28 @@ def load_input(app: Application, allowed_n: float, compressive: bool = False) ->
         bounds = [*forms, *((-g, -h) for g, h in forms)]
     load = motion.largest_load(bounds, allowed_n)
     return {} if load is None else {"load_n": load}
+
+
+def allowed_load(app: Application, cap_n: float, name: str = "cap") -> Phrase:
+    """ "the load may be at most {cap}" for a limit ``cap_n`` on the peak thrust [N], kept
+    ``FIX_MARGIN`` inside it: where the thrust is more than the axial load alone (a weight
+    held, m a on the ramps), the thrust's cap and the axial load that keeps it
+    (``load_input``), or that the moving mass alone exceeds it. The value is ``name``."""
+    cap = at_most(cap_n)
+    load = load_input(app, cap).get("load_n")
+    values: dict[str, Amount | str | Phrase] = {name: Amount(cap, "force")}
+    if load is not None and math.isclose(load, cap):
+        return Phrase("the load may be at most {" + name + "}", values)
+    if load is None or load < 0.0:
+        return Phrase(
+            "the peak thrust may be at most {" + name + "}, which the moving mass alone exceeds",
+            values,
+        )
+    values["load"] = Amount(load, "force")
+    return Phrase(
+        "the peak thrust may be at most {" + name + "} (an axial load of at most {load})",
+        values,
+    )
 
 
 def sentence(template: str, values: dict[str, "Amount | str"]) -> Phrase:

@@ -12,7 +12,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
+    allowed_load,
     load_input,
     where_given,
 )
@@ -83,10 +83,11 @@ class BearingPressure(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         if not r.nut.nut_allowed_load_n > 0 and r.nut.pv_temperature_factor == 0.0:
             return no_pv_left(app, r)
+        load = allowed_load(app, r.nut.nut_allowed_load_n)
         return Phrase(
-            "At this speed the load may be at most {cap}; a longer nut, a larger size or a "
-            "nut material that allows more pressure carries more." + MARGIN_NOTE,
-            {"cap": Amount(at_most(r.nut.nut_allowed_load_n), "force")},
+            "At this speed " + load.template + "; a longer nut, a larger size or a nut "
+            "material that allows more pressure carries more." + MARGIN_NOTE,
+            dict(load.values),
         )
 
     def input_limits(

@@ -13,6 +13,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    allowed_load,
     at_most,
     load_input,
     where_given,
@@ -80,13 +81,11 @@ class NutPV(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         if not r.nut.pv_limit_pa_m_s > 0:  # derated to nothing: no load or speed is within it
             return no_pv_left(app, r)
+        load = allowed_load(app, r.nut.pv_max_load_n, "thrust")
         return Phrase(
-            "At this speed the load may be at most {load}; at this load the speed may be at "
-            "most {speed}." + MARGIN_NOTE,
-            {
-                "load": Amount(at_most(r.nut.pv_max_load_n), "force"),
-                "speed": Amount(at_most(r.nut.pv_max_speed_m_s), "speed"),
-            },
+            "At this speed " + load.template + "; at this load the speed may be at most "
+            "{speed}." + MARGIN_NOTE,
+            {**load.values, "speed": Amount(at_most(r.nut.pv_max_speed_m_s), "speed")},
         )
 
     def input_limits(
