@@ -216,7 +216,12 @@ class LifeOut(BaseModel):
     travel_km: Annotated[list[float], From(("travel_min_m", "travel_max_m"), via=km)]
     years: Annotated[list[float] | None, From(("years_min", "years_max"))]
     hours: Annotated[
-        list[float], From("hours"), Field(description="Hours of running at the top speed")
+        list[float],
+        From("hours"),
+        Field(
+            description="Hours of operation: the cycles times the cycle's time (moves, "
+            "ramps and dwells) with a stroke; the travel at the top speed without one"
+        ),
     ]
     cycles: Annotated[
         list[float] | None,

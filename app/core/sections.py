@@ -144,9 +144,9 @@ class Life(Section):
     """The nut's life as a band [m of travel] and, with a stroke and a duty, in years,
     with the model it comes from: the seed's rated travel ("rated") or, for a nut the
     seed gives none, the nut's wear by Archard's law over the wear rate's published
-    scatter ("wear"; ``app.core.checks.wear_life``). Also in hours of running at the
-    top speed and, with a stroke, in cycles (out and back). Its band of travel is worked
-    out once: the years, hours and cycles all read it."""
+    scatter ("wear"; ``app.core.checks.wear_life``). Also in hours of operation and,
+    with a stroke, in cycles (out and back). Its band of travel is worked out once: the
+    years, hours and cycles all read it."""
 
     @property
     def model(self) -> Literal["rated", "wear", "l10"]:
@@ -211,10 +211,18 @@ class Life(Section):
 
     @property
     def hours(self) -> tuple[float, float]:
-        """Hours of running at the top speed reached until the travel is done."""
+        """Hours of operation until the travel is done: the cycles times the time of one
+        (every move, ramp and dwell: ``motion.move_profile``) where the move is given, as
+        the years count them; otherwise the travel at the top speed reached."""
         low, high = self.travel_m
-        speed = self.batch.reached_speed_m_s
-        return low / speed / 3600.0, high / speed / 3600.0
+        p, cycles = motion.move_profile(self.app), self.cycles
+        if p is None or cycles is None:
+            speed = self.batch.reached_speed_m_s
+            return low / speed / life.SECONDS_PER_HOUR, high / speed / life.SECONDS_PER_HOUR
+        return (
+            cycles[0] * p.cycle_time_s / life.SECONDS_PER_HOUR,
+            cycles[1] * p.cycle_time_s / life.SECONDS_PER_HOUR,
+        )
 
     @property
     def cycles(self) -> tuple[float, float] | None:

@@ -42,7 +42,8 @@ def test_an_iso_bronze_nut_shows_its_wear_life_band(client: TestClient) -> None:
     for km, hours, cycles, years in zip(
         life["travel_km"], life["hours"], life["cycles"], life["years"], strict=True
     ):
-        assert hours == pytest.approx(km * 1000.0 / 0.02 / 3600.0)
+        # 200 mm each way at 20 mm/s, 0.02 s ramps at 1 m/s² (0.2 mm each): 10.02 s a move
+        assert hours == pytest.approx(cycles * 2 * (0.02 + 0.1996 / 0.02 + 0.02) / 3600.0)
         assert cycles == pytest.approx(km * 1000.0 / (2 * 0.2))
         assert years == pytest.approx(cycles / (1000.0 * 365.0), rel=1e-3)
     assert life["travel_million_cm"] == pytest.approx([km / 10.0 for km in life["travel_km"]])
@@ -87,7 +88,11 @@ def test_the_page_names_the_life_model(client: TestClient) -> None:
     r = client.get("/detail", params={**params, "id": "Tr12x3-bronze"})
     detail = BeautifulSoup(r.text, "html.parser").select_one("dd.life")
     assert detail is not None and "Wear life (assumed wear rates)" in detail.text
-    assert "hours at the top speed" in detail.text and "cycles" in detail.text
+    assert "hours of operation" in detail.text and "cycles" in detail.text
+    assert "km (" in detail.text
+    inches = client.get("/detail", params={**params, "id": "Tr12x3-bronze", "length_unit": "in"})
+    # the travel in the page's unit: miles on an inch page, where it was in km
+    assert " mi (" in BeautifulSoup(inches.text, "html.parser").select_one("dd.life").text
 
 
 def test_a_ball_nut_life_is_named_l10_not_wear(client: TestClient) -> None:
@@ -104,3 +109,33 @@ def test_a_ball_nut_life_is_named_l10_not_wear(client: TestClient) -> None:
     detail = BeautifulSoup(r.text, "html.parser").select_one("dd.life")
     assert detail is not None and "L10 fatigue life (ISO 3408-5)" in detail.text
     assert "assumed wear" not in detail.text
+
+
+#: 150 N and 15 kg over 1.6 m strokes at 150 mm/s, 0.5 m/s² ramps, on B14000-L20-TFE.
+LONG_STROKE = {
+    "load_n": 150.0,
+    "speed_mm_s": 150.0,
+    "length_mm": 1800.0,
+    "stroke_mm": 1600.0,
+    "accel_mm_s2": 500.0,
+    "moving_mass_kg": 15.0,
+}
+
+
+def test_the_hours_are_the_cycles_times_the_time_of_one(client: TestClient) -> None:
+    """The hours were the travel at the top speed: 368.9 h, the ramps and the dwells left
+    out, where the years count whole cycles (8 h a day with a 5 s dwell: 552 h in the
+    years, 369 h in the hours). One move: 0.3 s up to 150 mm/s over 22.5 mm, 1,555 mm at
+    150 mm/s (10.367 s), 0.3 s down: 10.967 s, so 21.933 s a cycle out and back."""
+
+    def life(**duty: float) -> dict:  # type: ignore[type-arg]
+        body = {"application": {**LONG_STROKE, **duty}, "screw": {"catalog_id": "B14000-L20-TFE"}}
+        return client.post("/api/v1/evaluate", json=body).json()["candidate"]["life"]  # type: ignore[no-any-return]
+
+    cycle_s = 2 * (0.3 + 1.555 / 0.15 + 0.3)
+    plain = life(cycles_per_day=1000.0)
+    assert plain["hours"] == pytest.approx([c * cycle_s / 3600 for c in plain["cycles"]])
+    assert plain["hours"][0] == pytest.approx(379.31, abs=0.01)
+    shift = life(hours_per_day=8.0, dwell_s=5.0)
+    assert shift["hours"] == pytest.approx([y * 365 * 8 for y in shift["years"]])
+    assert shift["hours"] == pytest.approx([c * (cycle_s + 10) / 3600 for c in shift["cycles"]])
