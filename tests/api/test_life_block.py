@@ -89,10 +89,10 @@ def test_the_page_names_the_life_model(client: TestClient) -> None:
     detail = BeautifulSoup(r.text, "html.parser").select_one("dd.life")
     assert detail is not None and "Wear life (assumed wear rates)" in detail.text
     assert "hours of operation" in detail.text and "cycles" in detail.text
-    assert "km (" in detail.text
+    assert "km of travel (" in detail.text
     inches = client.get("/detail", params={**params, "id": "Tr12x3-bronze", "length_unit": "in"})
     # the travel in the page's unit: miles on an inch page, where it was in km
-    assert " mi (" in BeautifulSoup(inches.text, "html.parser").select_one("dd.life").text
+    assert " mi of travel (" in BeautifulSoup(inches.text, "html.parser").select_one("dd.life").text
 
 
 def test_a_ball_nut_life_is_named_l10_not_wear(client: TestClient) -> None:

@@ -48,7 +48,8 @@ def test_the_life_band_of_an_acetal_nut_by_hand(client: TestClient) -> None:
     slid; / 13.13 = 151.7 km of travel; a cycle is 2 x 0.2 m, 365 000 cycles a year:
     151.7e3 / 0.4 / 365 000 = 1.039 years, which meets the year asked. The band: the
     rate's high end, 3e-6, gives 50.6 km (0.346 years); its low end, 3.3e-7, 459.7 km
-    (3.149 years). Hours at the 10 mm/s: 50.6e3 / 0.01 / 3600 = 1405 h to 12 770 h."""
+    (3.149 years). Hours of operation: each 0.2 m move at 10 mm/s with 0.01 s ramps at
+    1 m/s^2 takes 20.01 s, a cycle 40.02 s: 126 400 cycles x 40.02 s = 1405 h to 12 776 h."""
     c = _evaluate(client)
     check = next(k for k in c["checks"] if k["name"] == "wear_life")
     nominal_m = _travel_m(200.0, RATES_M2_N["nominal"])
@@ -63,7 +64,7 @@ def test_the_life_band_of_an_acetal_nut_by_hand(client: TestClient) -> None:
     assert life["travel_km"] == pytest.approx([m / 1e3 for m in ends_m], rel=1e-6)
     assert life["travel_km"] == pytest.approx([50.57, 459.7], rel=1e-3)
     assert life["years"] == pytest.approx([0.3464, 3.149], rel=1e-3)
-    assert life["hours"] == pytest.approx([m / 0.01 / 3600.0 for m in ends_m], rel=1e-6)
+    assert life["hours"] == pytest.approx([m / 0.4 * 40.02 / 3600.0 for m in ends_m], rel=1e-6)
     assert life["cycles"] == pytest.approx([m / 0.4 for m in ends_m], rel=1e-6)
 
 
