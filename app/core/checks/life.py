@@ -66,7 +66,6 @@ class Life(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if np.isnan(r.life.life_years_min):
             return Phrase("No life rating is published for this series.")
-        verb = "At least {years} rated" if passed else "Only {years} rated (low end)"
         values = {
             "years": Amount(r.life.life_years_min, "years"),
             "required": Amount(app.required_life_years or 0.0, "years"),
@@ -75,12 +74,16 @@ class Life(Check):
             "thrust": Amount(r.life.wear_force_n, "force"),
         }
         if r.life.life_travel_min_m < (s.life_min_m or 0.0):
+            # the wear at the rate's central value: its range moves it (the life band)
             return Phrase(
-                verb + ", {required} required: the seed's {seed} of travel, cut to {travel} "
-                "by the nut's wear at the cycle's wear thrust of {thrust} (Archard's law, "
-                "assumed wear rate; the seed gives no load for its rating).",
+                ("{years}" if passed else "Only {years}")
+                + ", {required} required: the seed's {seed} of travel, cut to {travel} by "
+                "the nut's wear at the cycle's wear thrust of {thrust} (Archard's law at "
+                "the assumed wear rate's central value, whose range the life band spans; "
+                "the seed gives no load for its rating).",
                 values,
             )
+        verb = "At least {years} rated" if passed else "Only {years} rated (low end)"
         return Phrase(verb + ", {required} required (the seed's {seed} of travel).", values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
