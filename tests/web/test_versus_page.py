@@ -131,3 +131,14 @@ def test_a_vertical_axis_says_which_kind_holds_with_the_power_off(client: TestCl
     assert ball["candidate"]["holds_power_off"] is False
     assert _rows(page)["holds_power_off"] == ["yes: the thread self-locks", "no: a brake is needed"]
     assert "brake" in page.select(".versus-status li")[1].text
+
+
+def test_a_kind_no_filter_admits_is_blamed_on_the_filters_not_the_families(
+    client: TestClient,
+) -> None:
+    """A bronze nut asked for, no family given: no ball screw is eligible. The page said
+    "the catalog offers none for these families", naming a filter that was not set."""
+    page = client.get("/versus?load=3000&speed=300&length=1500&nut_material=bronze").text
+    ball = BeautifulSoup(page, "html.parser").select_one("li[data-kind=ball]").text
+    assert "for these families" not in ball
+    assert "the filters (families, nut material, coating, lead)" in ball
