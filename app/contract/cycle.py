@@ -73,7 +73,7 @@ class MoveIn(BaseModel):
         default=None,
         ge=ACCEL[0],
         le=ACCEL[1],
-        description="Deceleration [mm/s²]; empty: the acceleration.",
+        description="Deceleration [mm/s²]; left out: the acceleration.",
     )
     dwell_s: float = Field(
         default=0.0, ge=DWELL[0], le=DWELL[1], description="Rest after the move [s]."

@@ -57,6 +57,7 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="lead_mm", page="lead", core="lead_m", label="Lead",
         help="Travel per turn; empty or “any” for every lead", group="Axis", kind="number",
+        api_help="Travel per turn; left out (or null in a body) for every lead",
         bounds=(0.01, 1000.0), dimension="length",
         none_word="any",
         catalog_only=True,
@@ -141,6 +142,8 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="family", page="family", core="families", label="Families",
         help="Catalog family ids, comma-separated; empty for every family",
+        api_help="Catalog family ids: the parameter repeated (family=B&family=ZBX), or a "
+        "list in a body; left out for every family",
         group="Nut and environment", kind="list",
         catalog_only=True,
     ),
@@ -262,6 +265,9 @@ FIELDS: tuple[InputField, ...] = (
         help="Torque the motor gives against speed: one point “rpm torque” per line, rpm "
         "ascending, torque in the torque unit chosen; linear between points, nothing past "
         "the last",
+        api_help="Torque the motor gives against speed: points [rpm, N m] in a body, "
+        "rpm:torque,rpm:torque in a query, rpm ascending; linear between points, nothing "
+        "past the last",
         group="Motor and move", kind="curve", unit="rpm : N m",
     ),
     InputField(

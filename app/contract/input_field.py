@@ -54,7 +54,8 @@ class InputField:
     the page. A ``catalog_only`` field filters or ranks catalog screws and means nothing for a
     screw of the user's own (the /custom page leaves it out). ``retired`` maps a choice's
     value that is no longer offered to the one it now reads as, so that links and calls
-    already sent keep working.
+    already sent keep working. ``api_help`` replaces ``help`` in the API's description
+    where the page's words do not hold there (an empty box, text on lines, a comma list).
     """
 
     api: str
@@ -76,6 +77,7 @@ class InputField:
     drawn: bool = False
     catalog_only: bool = False
     retired: Mapping[str, str] = field(default_factory=dict)
+    api_help: str = ""
     si_factor: float = field(init=False, default=1.0)
     quantity: Quantity | None = field(init=False, default=None)
 

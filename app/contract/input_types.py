@@ -81,16 +81,21 @@ def bounded_number(ge: float, le: float, description: str) -> Any:
 
 
 def describe(field: InputField) -> str:
-    """The field's API description from the table: label, API unit, help, and for a yes-no
-    field shown as a choice what true and false mean.
+    """The field's API description from the table: label, API unit, help (its
+    ``api_help`` where it has one), and for a yes-no field shown as a choice what true and
+    false mean. A box the page leaves empty is a field the API leaves out: the help's
+    "empty" reads "left out".
 
     >>> from app.contract.fields import BY_API
     >>> describe(BY_API["ambient_c"])
     'Ambient temperature [°C]. Around the screw.'
+    >>> describe(BY_API["positioning_tolerance_mm"])
+    'Positioning tolerance [mm]. Allowed positioning error; left out for no check.'
     """
     unit = f" [{field.unit}]" if field.unit else ""
     meanings = "".join(f" {c.value}: {c.text}." for c in field.choices if field.kind == "yes-no")
-    return f"{field.label}{unit}. {field.help}.{meanings}"
+    words = field.api_help or re.sub(r"\bempty\b", "left out", field.help)
+    return f"{field.label}{unit}. {words}.{meanings}"
 
 
 #: Text inputs (ids, material names): letters, digits and a few separators, 1-60 long.

@@ -108,3 +108,23 @@ def test_a_pair_rank_by_default_is_the_page_s(app: FastAPI, client: TestClient, 
     assert body["ranked_by"] in caption.text
     asked = client.post(f"/api/v1/pairs?pair_rank={body['rank']}", json=example["value"])
     assert asked.json()["pairs"] == body["pairs"]
+
+
+def test_each_select_parameter_describes_what_the_api_reads(client: TestClient) -> None:
+    """The descriptions came from the page's help: "empty or “any” for every lead" and
+    "comma-separated" families, both answered with a 422 by the API. Now a description
+    names no empty box and no comma list, and each word it quotes for "no value" (“any”,
+    “none”) is one the API accepts."""
+    schema = client.get("/openapi.json").json()
+    axis = {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "limit": 1}
+    quoted = 0
+    for param in schema["paths"]["/api/v1/select"]["get"]["parameters"]:
+        text = param.get("description", "")
+        assert "empty" not in text and "comma-separated" not in text, (param["name"], text)
+        for word in re.findall(r"“(\w+)”", text):
+            answer = client.get("/api/v1/select", params={**axis, param["name"]: word})
+            assert answer.status_code == 200, (param["name"], word, answer.text)
+            quoted += 1
+    assert quoted >= 2
+    repeated = client.get("/api/v1/select", params={**axis, "family": ["B", "ZBX"]})
+    assert repeated.status_code == 200
