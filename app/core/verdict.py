@@ -220,12 +220,15 @@ def skips(checks: Sequence[Check], screw: ScrewSpec) -> tuple[Skip, ...]:
     """Each check in ``checks`` that could not run for ``screw`` for want of a value,
     with the values it lacks (a check with nothing to judge on this screw, such as oil on
     a nut that suits oil, is not a skip, nor a check that does not apply to its kind of
-    screw: ``not_applicable``)."""
+    screw: ``not_applicable``), nor a check whose limit another that ran judges for
+    this screw (``Check.judged_instead_by``: an ISO nut's PV, in its flank pressure)."""
     inapplicable = set(not_applicable(checks, screw))
+    idle = {c.name for c in checks}
     found = (
         Skip(c.name, c.label, missing_values(c, screw))
         for c in checks
         if c.label not in inapplicable
+        and not (c.judged_instead_by and c.judged_instead_by not in idle)
     )
     return tuple(skip for skip in found if skip.missing)
 

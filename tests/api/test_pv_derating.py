@@ -251,3 +251,29 @@ def test_a_pv_fix_says_when_the_moving_mass_alone_exceeds_the_thrust_it_allows(
     assert (
         "the peak thrust may be at most 41.81 N, which the moving mass alone exceeds" in pv["fix"]
     )
+
+
+@pytest.mark.parametrize(
+    ("screw", "judged", "instead"),
+    [("Tr16x4-ptfe", "bearing_pressure", "pv"), ("B4000-L2", "pv", "bearing_pressure")],
+)
+def test_a_nut_judged_by_the_other_pv_check_does_not_list_the_one_it_lacks(
+    client: TestClient, screw: str, judged: str, instead: str
+) -> None:
+    """An ISO nut's PV is judged in its flank pressure against its material's PV limit;
+    a seed nut's by the seed's PV method. Each lacks the other check's values, and its
+    verdict said "Not checked: PV (nut material) (no PV limit)" beside a pressure check
+    bound by that very PV limit (or "Nut contact pressure (no nut PV limit)" beside a PV
+    that governs). The one that runs judges the limit: the other is no gap."""
+    duty = {"load_n": 20, "speed_mm_s": 20, "length_mm": 300, "stroke_mm": 200}
+    body = {"application": duty, "screw": {"catalog_id": screw}}
+    candidate = client.post("/api/v1/evaluate", json=body).json()["candidate"]
+    assert judged in {c["name"] for c in candidate["checks"]}
+    assert instead not in {s["check"] for s in candidate["verdict"]["skipped"]}
+    custom = {"outer_diameter_mm": 10, "root_diameter_mm": 8, "lead_mm": 2}
+    custom |= {"friction_dynamic": 0.15, "friction_static": 0.2}
+    own = client.post("/api/v1/evaluate", json={"application": duty, "screw": custom}).json()
+    # a screw of one's own with neither rating: both are gaps, each said
+    assert {"pv", "bearing_pressure"} <= {
+        s["check"] for s in own["candidate"]["verdict"]["skipped"]
+    }

@@ -115,6 +115,10 @@ class Check:
     #: whether the check judges the motor rather than the screw (another motor may
     #: still drive the screws it rejects)
     judges_motor: ClassVar[bool] = False
+    #: the check that judges the same limit of a nut this one has no value for (the
+    #: seed's PV and an ISO nut's flank pressure against its material's PV): where that
+    #: one runs, this one not running is no gap in the verdict
+    judged_instead_by: ClassVar[str] = ""
 
     def applies(self, app: Application) -> bool:
         """Whether the check runs at all for this application (default: always)."""

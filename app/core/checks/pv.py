@@ -24,6 +24,7 @@ from app.core.phrase import Amount, Phrase
 
 class NutPV(Check):
     name = "pv"
+    judged_instead_by = "bearing_pressure"
     why_none = (
         "no nut carries this load at this speed (PV): consider a ball screw, whose rolling "
         "contact has no PV limit"
