@@ -6,6 +6,7 @@ import math
 import pytest
 
 from app.catalog import Catalog
+from app.contract.units import render
 from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.formulas import heat
@@ -52,6 +53,10 @@ def test_the_200_kg_lifting_table_nut_is_judged(catalog: Catalog) -> None:
     duty = Application(load_n=1962.0, speed_m_s=0.012, length_m=0.6, stroke_m=0.3, dwell_s=120.0)
     resting = _nut_heat(catalog, duty, "Tr14x3-bronze")
     assert resting.passed and resting.value == pytest.approx(72.1, abs=0.2)
+    # the result rests on the two assumed values of the model: the message says so
+    said = render(resting.message)
+    assert "Assumed: free convection of 10 W/(m² K)" in said
+    assert "a round nut 2 times the thread's diameter" in said
 
 
 def test_stainless_conducts_less_and_runs_hotter(catalog: Catalog) -> None:

@@ -80,12 +80,16 @@ class NutHeat(Check):
         verb = "within" if passed else "above"
         return Phrase(
             "Friction turns {power} into heat: the nut runs {rise} above the ambient, at "
-            "{nut}, " + verb + " its rated {limit}.",
+            "{nut}, " + verb + " its rated {limit}. Assumed: free convection of {h} "
+            "W/(m² K) (still air gives 2-25: less runs the nut hotter) and a round nut "
+            "{nut_d} times the thread's diameter.",
             {
                 "power": Amount(r.heat.friction_power_w, "power"),
                 "rise": Amount(r.heat.nut_temperature_rise_k, "temperature_rise"),
                 "nut": Amount(app.ambient_c + r.heat.nut_temperature_rise_k, "temperature"),
                 "limit": Amount(s.temperature_max_c or 0.0, "temperature"),
+                "h": f"{heat.FREE_CONVECTION_W_M2_K:g}",
+                "nut_d": f"{heat.NUT_OUTER_TO_D:g}",
             },
         )
 
