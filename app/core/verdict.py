@@ -18,7 +18,7 @@ from app.core import motion
 from app.core.batch import CheckResult
 from app.core.checks.base import Check
 from app.core.model import Application, Provenance, ScrewSpec
-from app.core.phrase import Amount, Phrase, join
+from app.core.phrase import Amount, Phrase, join, plural
 from app.core.sections import Life
 
 #: Catalog values by their base name (no nut variant, no unit), in the reader's words.
@@ -244,7 +244,8 @@ def summary(
     that the leadscrew nut's checks do not apply (they are not counted as not checked).
 
     A pass with nothing skipped is "Passes every check."; with skipped checks it is
-    "Passes the N checks that ran; not checked: ...".
+    "Passes the N limits that ran; not checked: ..." (advice, which never rejects, counted
+    apart: the detail lists every check that ran).
     """
     limits = [c for c in checks if c.kind == "limit"]
     if not passed:
@@ -253,7 +254,11 @@ def summary(
     elif not skipped:
         head = "Passes every check."
     else:
-        head = f"Passes the {len(limits)} checks that ran."
+        advice = len(checks) - len(limits)
+        besides = (
+            f", besides {advice} {plural(advice, 'piece', 'pieces')} of advice" if advice else ""
+        )
+        head = f"Passes the {len(limits)} limits that ran{besides}."
     parts = [head]
     if skipped:
         parts.append(f"Not checked: {'; '.join(s.phrase() for s in skipped)}.")

@@ -119,7 +119,9 @@ def test_a_pass_with_skipped_checks_never_says_every_check(catalog: Catalog) -> 
         text = render(c.verdict.summary, DEFAULT_UNITS)
         limits = [k for k in c.checks if k.kind == "limit"]
         assert "every check" not in text
-        assert text.startswith(f"Passes the {len(limits)} checks that ran.")
+        advice = len(c.checks) - len(limits)
+        besides = f", besides {advice} piece{'s' if advice > 1 else ''} of advice" if advice else ""
+        assert text.startswith(f"Passes the {len(limits)} limits that ran{besides}.")
         for skip in c.verdict.skipped:
             assert skip.missing and f"{skip.label} (no " in text
             assert skip.check not in {k.name for k in c.checks}
