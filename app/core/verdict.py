@@ -17,7 +17,7 @@ from typing import Protocol
 from app.core import motion
 from app.core.batch import CheckResult
 from app.core.checks.base import Check
-from app.core.model import Application, Provenance, ScrewSpec
+from app.core.model import PASS_UTILIZATION, Application, Provenance, ScrewSpec
 from app.core.phrase import Amount, Phrase, join, plural
 from app.core.sections import Life
 
@@ -130,8 +130,8 @@ def percent(utilization: float) -> str:
     ('52 %', '99.6 %', '100.04 %', '99.996 %', '100 %')
     """
     value = utilization * 100.0
-    # at the limit within rounding (a check passes up to 1 + 1e-9): 100 %
-    if not 99.5 <= value <= 100.5 or abs(value - 100.0) < 1e-4:
+    # at the limit within the rounding a check passes by (``PASS_UTILIZATION``): 100 %
+    if not 99.5 <= value <= 100.5 or abs(utilization - 1.0) <= PASS_UTILIZATION - 1.0:
         return f"{value:.0f} %"
     digits = 1 if value < 100.0 else 2
     while float(f"{value:.{digits}f}") == 100.0:

@@ -185,10 +185,11 @@ def load_input(app: Application, allowed_n: float, compressive: bool = False) ->
 
 
 def allowed_load(app: Application, cap_n: float, name: str = "cap") -> Phrase:
-    """ "the load may be at most {cap}" for a limit ``cap_n`` on the peak thrust [N], kept
-    ``FIX_MARGIN`` inside it: where the thrust is more than the axial load alone (a weight
-    held, m a on the ramps), the thrust's cap and the axial load that keeps it
-    (``load_input``), or that the moving mass alone exceeds it. The value is ``name``."""
+    """The words that cap the load for a limit ``cap_n`` on the peak thrust [N], kept
+    ``FIX_MARGIN`` inside it: "the load may be at most {cap}" where the thrust is the load
+    alone; where it is more (a weight held, m a on the ramps), the thrust's cap and the
+    axial load that keeps it (``load_input``), or that the moving mass alone exceeds it.
+    The cap's field is ``name``."""
     cap = at_most(cap_n)
     load = load_input(app, cap).get("load_n")
     values: dict[str, Amount | str | Phrase] = {name: Amount(cap, "force")}
