@@ -38,6 +38,7 @@ from app.contract.cycle import MAX_MOVES, MoveIn, closing_error_mm, parse_moves_
 from app.contract.fields import BY_API, FIELDS
 from app.contract.input_types import api_type
 from app.core import duty, motion
+from app.core.formulas import life
 from app.core.model import Application
 
 #: The API name of each core attribute.
@@ -226,7 +227,8 @@ class ApplicationInputs(BaseModel):
             return self
         message = (
             f"must be at most {duty.most_cycles_per_day(p):.6g}: one cycle (out and back, "
-            f"with the dwells) takes {p.cycle_time_s:.6g} s, and a day has 86400 s"
+            f"with the dwells) takes {p.cycle_time_s:.6g} s, and a day has "
+            f"{life.SECONDS_PER_DAY:.0f} s"
         )
         error = InitErrorDetails(
             type=PydanticCustomError("cycles_per_day", message),

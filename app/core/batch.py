@@ -287,7 +287,10 @@ class Slot:
         if check.name not in self._fixes:
             app, screw, row = self.app, self.screw, self.row
             fix = check.fix(app, screw, row, self.screening.reach)
-            note = None if fix is None else refused(app, check.input_limits(app, screw, row))
+            # only the cycles a day refuse a move: without them no check's limits are read
+            note = None
+            if fix is not None and app.cycles_per_day is not None:
+                note = refused(app, check.input_limits(app, screw, row))
             if fix is not None and note is not None:  # the fix's own fields kept as named
                 fix = Phrase(fix.template + " {refused}", {**fix.values, "refused": note})
             self._fixes[check.name] = fix

@@ -61,7 +61,7 @@ def refused(app: Application, limits: Mapping[str, float] | None) -> Phrase | No
     A length a fix names needs no such word: the checks that name one say how to keep
     the stroke (an intermediate support, a shorter span to the thrust bearing)."""
     if app.cycles_per_day is None:
-        return None
+        return None  # no cycles a day to fit
     for key, limit in (limits or {}).items():
         if key not in MOVE_INPUTS or not math.isfinite(limit) or limit <= 0.0:
             continue
@@ -74,9 +74,7 @@ def refused(app: Application, limits: Mapping[str, float] | None) -> Phrase | No
                 {
                     "cycle": Amount(p.cycle_time_s, "time"),
                     "cycles": f"{app.cycles_per_day:,.0f}",
-                    "each": Amount(
-                        life.HOURS_PER_DAY * life.SECONDS_PER_HOUR / app.cycles_per_day, "time"
-                    ),
+                    "each": Amount(life.SECONDS_PER_DAY / app.cycles_per_day, "time"),
                 },
             )
     return None

@@ -220,8 +220,8 @@ class Life(Section):
             speed = self.batch.reached_speed_m_s
             return low / speed / life.SECONDS_PER_HOUR, high / speed / life.SECONDS_PER_HOUR
         return (
-            cycles[0] * p.cycle_time_s / life.SECONDS_PER_HOUR,
-            cycles[1] * p.cycle_time_s / life.SECONDS_PER_HOUR,
+            life.operating_hours(cycles[0], p.cycle_time_s),
+            life.operating_hours(cycles[1], p.cycle_time_s),
         )
 
     @property

@@ -356,7 +356,7 @@ def _detail_page(request: Request, catalog: Catalog) -> Response:
         "query": query,
         "report_query": query,
         "try_url": try_url,
-        "series_url": series_url(catalog.by_id[c.id].series_id),
+        "series_url": series_url(spec.series_id),
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"
     response = templates.TemplateResponse(request, template, context)

@@ -25,6 +25,13 @@ ROWS: tuple[Reported, ...] = (
         views=("summary",),
     ),
     Reported(
+        "life.hours",
+        "Life in hours",
+        "Hours of operation until the nut's life is done: its cycles times the cycle's time.",
+        unit="h",
+        formula=Formula(life.operating_hours),
+    ),
+    Reported(
         "life.travel_million_cm",
         "Rated travel",
         "The nut's life as travel: the seed's rating, else its wear life by Archard's law.",

@@ -6,6 +6,7 @@ DAYS_PER_YEAR = 365.0
 SECONDS_PER_HOUR = 3600.0
 #: The hours of a day: the most an axis can run in one.
 HOURS_PER_DAY = 24.0
+SECONDS_PER_DAY = HOURS_PER_DAY * SECONDS_PER_HOUR
 
 
 @formula("cycles/day = hours/day x 3600 / t_cycle", "duty: running time over the cycle time")
@@ -19,6 +20,21 @@ def cycles_per_day(hours_per_day: float, cycle_time_s: float) -> float:
     11520.0
     """
     return hours_per_day * SECONDS_PER_HOUR / cycle_time_s
+
+
+@formula(
+    "hours = cycles x t_cycle / 3600",
+    "duty: every cycle of the life, each its moves, ramps and dwells",
+)
+def operating_hours(cycles: float, cycle_time_s: float) -> float:
+    """Hours of operation [h] of ``cycles`` cycles of ``cycle_time_s`` [s] each.
+
+    11,520 cycles of 2.5 s: one 8-hour day.
+
+    >>> operating_hours(11520.0, 2.5)
+    8.0
+    """
+    return cycles * cycle_time_s / SECONDS_PER_HOUR
 
 
 def travel_per_year(stroke_m: float, cycles_per_day: float) -> float:
