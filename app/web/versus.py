@@ -22,7 +22,7 @@ def _holds(c: CandidateOut) -> str:
     return "no: a brake is needed"
 
 
-def _life(c: CandidateOut) -> str:
+def _life(c: CandidateOut, d: Display) -> str:
     """The life in years of the duty: a leadscrew's wear band, a ball nut's L10 (its
     check's capacity, given a required life); the travel when no duty gives years."""
     l10 = next((k.limit for k in c.checks if k.name == "ball_life"), None)
@@ -32,7 +32,8 @@ def _life(c: CandidateOut) -> str:
         return "—"
     if c.life.years:
         return f"{'–'.join(figures(v) for v in c.life.years)} years ({c.life.model})"
-    return f"{'–'.join(figures(v) for v in c.life.travel_km)} km travelled ({c.life.model})"
+    travel = "–".join(figures(d.value(v, "travel")) for v in c.life.travel_km)
+    return f"{travel} {d.label('travel')} travelled ({c.life.model})"
 
 
 def _low(band: list[float] | None) -> float | None:
@@ -48,7 +49,7 @@ def kind_rows(cs: Sequence[CandidateOut], d: Display) -> list[Row]:
     length = d.label("length")
     return [
         Row("holds_power_off", "Holds with the power off", "", holds, frozenset(), None),
-        Row("life", "Life (wear or L10)", "", tuple(_life(c) for c in cs), frozenset(), None),
+        Row("life", "Life (wear or L10)", "", tuple(_life(c, d) for c in cs), frozenset(), None),
         Row(
             "accuracy.lead_error_mm",
             "Lead error over the stroke",

@@ -139,3 +139,35 @@ def test_the_hours_are_the_cycles_times_the_time_of_one(client: TestClient) -> N
     shift = life(hours_per_day=8.0, dwell_s=5.0)
     assert shift["hours"] == pytest.approx([y * 365 * 8 for y in shift["years"]])
     assert shift["hours"] == pytest.approx([c * (cycle_s + 10) / 3600 for c in shift["cycles"]])
+
+
+def test_the_tables_travel_is_in_the_pages_unit(client: TestClient) -> None:
+    """Without a duty the life column gives the travel: km on a metric page, miles on an
+    inch page (1 mi = 1.609344 km), the band the API gives in km."""
+    metric = {"load": "200", "speed": "20", "length": "350", "family": "TR-C45"}
+    inches = {"load": "45", "speed": "0.8", "length": "14", "family": "TR-C45", "length_unit": "in"}
+    for params, unit in ((metric, "km"), (inches, "mi")):
+        page = BeautifulSoup(client.get("/", params=params).text, "html.parser")
+        cells = [td.contents[0].strip() for td in page.select("td.life")]
+        assert cells and all(c.endswith(f" {unit}") for c in cells), cells
+    # the inch axis in the API's units: 0.8 in/s = 20.32 mm/s, 14 in = 355.6 mm
+    api = client.get(
+        "/api/v1/select",
+        params={"load_n": "45", "speed_mm_s": "20.32", "length_mm": "355.6", "family": "TR-C45"},
+    )
+    first_api = api.json()["candidates"][0]["id"]
+    page = BeautifulSoup(client.get("/", params=inches).text, "html.parser")
+    row = page.select("table.candidates tbody tr")[0]
+    assert row.select_one(".cid").text == first_api
+    cell = row.select_one("td.life").contents[0].strip()
+    low, high = (float(v.replace(",", "")) for v in cell.removesuffix(" mi").split("–"))
+    detail = client.post(
+        "/api/v1/evaluate",
+        json={
+            "application": {"load_n": 45, "speed_mm_s": 20.32, "length_mm": 355.6},
+            "screw": {"catalog_id": first_api},
+        },
+    ).json()["candidate"]["life"]["travel_km"]
+    km_per_mi = 1.609344
+    assert low == pytest.approx(detail[0] / km_per_mi, rel=0.005)
+    assert high == pytest.approx(detail[1] / km_per_mi, rel=0.005)

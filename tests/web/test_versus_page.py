@@ -142,3 +142,12 @@ def test_a_kind_no_filter_admits_is_blamed_on_the_filters_not_the_families(
     ball = BeautifulSoup(page, "html.parser").select_one("li[data-kind=ball]").text
     assert "for these families" not in ball
     assert "the filters (families, nut material, coating, lead)" in ball
+
+
+def test_the_travel_is_in_the_pages_unit(client: TestClient) -> None:
+    """Without a duty the life row gives the travel in the page's unit: miles on an
+    inch page."""
+    query = {"load": "20", "speed": "2", "length": "20", "length_unit": "in"}
+    life = _rows(_page(client, query))["life"]
+    assert all(" mi travelled" in cell or cell.endswith("(L10)") or cell == "—" for cell in life)
+    assert any(" mi travelled" in cell for cell in life), life

@@ -10,7 +10,7 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "life.years",
         "Life",
-        "Expected wear life: years at your stroke and cycles per day, else million cm of travel.",
+        "Expected wear life: years at your stroke and cycles per day, else the travel.",
         unit="years",
         better="higher",
         cell="life",
