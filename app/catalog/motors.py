@@ -46,6 +46,19 @@ FIELDS = {
 PLAIN = frozenset({"name", "frame", "kind"})
 #: Values a stepper's entry may leave out where its datasheet does not publish them.
 OPTIONAL = {"stepper": {"detent_torque_nm": "N m", "pull_out_curve": ""}, "servo": {}}
+#: The values each kind's model draws its curve from, in the order its model takes them
+#: (``stepper.microstep_pull_out_curve`` through ``model_curve``; ``servo.peak_curve``).
+MODEL_VALUES = {
+    "stepper": (
+        "supply_v",
+        "phase_current_a",
+        "resistance_ohm",
+        "inductance_mh",
+        "step_angle_deg",
+        "holding_torque_nm",
+    ),
+    "servo": ("peak_torque_nm", "rated_rpm", "max_rpm", "top_speed_torque_nm"),
+}
 #: A published pull-out curve: rows of (speed [rpm], torque [N m]) read at the maker's
 #: plotted points, at the drive and supply its source names.
 CURVE = "pull_out_curve"
@@ -152,22 +165,10 @@ class Motor:
         published = self.published_curve()
         if published is not None:
             return published
+        values = tuple(self.value(name) for name in MODEL_VALUES[self.kind])
         if self.kind == "servo":
-            return servo.peak_curve(
-                self.value("peak_torque_nm"),
-                self.value("rated_rpm"),
-                self.value("max_rpm"),
-                self.value("top_speed_torque_nm"),
-            )
-        args = (
-            self.value("supply_v"),
-            self.value("phase_current_a"),
-            self.value("resistance_ohm"),
-            self.value("inductance_mh"),
-            self.value("step_angle_deg"),
-            self.value("holding_torque_nm"),
-        )
-        return model_curve(args, current_is_rms)
+            return servo.peak_curve(*values)
+        return model_curve(values, current_is_rms)
 
     def detent_torque_nm(self) -> float | None:
         """A stepper's published detent torque (unpowered); None where not published."""

@@ -16,7 +16,7 @@ Each field's type (number text, bounds, texts and lists, torque curves) is made 
 """
 
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any, NamedTuple
 
 from pydantic import (
     BaseModel,
@@ -32,6 +32,7 @@ from pydantic import (
 from pydantic_core import InitErrorDetails, PydanticCustomError
 
 from app.catalog.axis_motor import CurveOrigin, curve_origin, drive_problem, with_motor
+from app.catalog.axis_provenance import axis_provenance
 from app.catalog.motors import Motor, UndrivableMotor, check_motor, undrivable_message
 from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.cycle import MAX_MOVES, MoveIn, closing_error_mm, parse_moves_text, span_mm
@@ -39,7 +40,7 @@ from app.contract.fields import BY_API, FIELDS
 from app.contract.input_types import api_type
 from app.core import duty, motion
 from app.core.formulas import life
-from app.core.model import Application
+from app.core.model import Application, AxisProvenance
 
 #: The API name of each core attribute.
 API_OF = {field.core: field.api for field in FIELDS}
@@ -59,6 +60,15 @@ def check_drivable(value: float | None, supply_v: float, current_a: float, ohm: 
     message = undrivable_message(supply_v, current_a, ohm)
     if value is not None and message is not None:
         raise ValueError(message)
+
+
+class Traced(NamedTuple):
+    """An application in SI for the core, where its motor curve comes from, and the
+    provenance of its values that the checks' capacities are (``to_core_traced``)."""
+
+    app: Application
+    origin: CurveOrigin | None
+    provenance: AxisProvenance
 
 
 class ApplicationInputs(BaseModel):
@@ -245,17 +255,19 @@ class ApplicationInputs(BaseModel):
         in from ``motors`` (``with_motor``; UnknownMotor for an id it lacks), and the
         library support unit's axial ratings from ``supports`` (``with_support``;
         UnknownSupport for an id it lacks)."""
-        return self.to_core_traced(motors, supports)[0]
+        return self.to_core_traced(motors, supports).app
 
     def to_core_traced(
         self, motors: Mapping[str, Motor], supports: Mapping[str, SupportUnit] | None = None
-    ) -> tuple[Application, CurveOrigin | None]:
-        """``to_core``'s application and where its motor curve comes from
+    ) -> "Traced":
+        """``to_core``'s application, where its motor curve comes from
         (``axis_motor.curve_origin``: "entered", "published" or "model"; None without a
-        curve), for the responses to say beside the curve checks' results."""
+        curve), for the responses to say beside the curve checks' results, and the
+        provenance of the values the checks' capacities are (``axis_provenance``)."""
         entered = self.axis()
         app = with_support(with_motor(entered, motors), supports or {})
-        return app, curve_origin(entered, app, motors)
+        provenance = axis_provenance(entered, app, motors, supports or {})
+        return Traced(app, curve_origin(entered, app, motors), provenance)
 
     def axis(self) -> Application:
         """The application in SI as given, without a library motor's values filled in:

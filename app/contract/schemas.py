@@ -148,7 +148,10 @@ class CandidateFields(BaseModel):
         ProvenanceKind | None, From("governing_limit_provenance")
     ] = Field(
         description="How certain the governing check's limit is: the least certain "
-        "provenance of the values it rests on ('user' for the user's own limit)."
+        "provenance of the values it rests on ('user' for a limit typed in; a library "
+        "motor's curve or rating and a library support unit's rating carry the entry's "
+        "provenance, a curve the motor model draws 'derived' or, from an assumed value, "
+        "'assumed')."
     )
     motor_use: Annotated[float | None, From("motor_use")] = Field(
         default=None,
@@ -178,7 +181,9 @@ class CandidateFields(BaseModel):
         description="For a rejected candidate, what would make it pass."
     )
     provenance: Annotated[dict[str, ProvenanceOut], From("provenance")] = Field(
-        description="Catalog field -> provenance, for the fields this candidate's numbers use."
+        description="Catalog field -> provenance, for the fields this candidate's numbers "
+        "use; then the axis's values a check's limit is: the motor's torque-speed curve "
+        "and rated torque, the support unit's ratings (typed in: 'user')."
     )
     verdict: Annotated[VerdictOut, From("verdict")] = Field(
         description="Why this screw, in short: governs, margin, rests on, watch."

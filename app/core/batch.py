@@ -16,7 +16,7 @@ from app.core import motion, segments
 from app.core.checks import BY_NAME, ball_life
 from app.core.checks.base import Check
 from app.core.input_rules import refused
-from app.core.model import Application, Motion, ScrewSpec, Segment
+from app.core.model import Application, AxisProvenance, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
 from app.core.quantities import PART_OF, PARTS, Quantities, quantity
 from app.core.screening import Screening
@@ -36,10 +36,17 @@ def positions_array(positions: Sequence[int]) -> Positions:
 
 class Batch:
     """The screening's arrays at the positions of some candidates: each column taken for
-    all of them at once, when first read (``column``)."""
+    all of them at once, when first read (``column``); ``axis`` is the provenance of the
+    axis's values the checks' capacities are (``Check.capacity_given``)."""
 
-    def __init__(self, app: Application, sc: Screening, positions: Sequence[int]) -> None:
-        self.app, self.screening = app, sc
+    def __init__(
+        self,
+        app: Application,
+        sc: Screening,
+        positions: Sequence[int],
+        axis: AxisProvenance | None = None,
+    ) -> None:
+        self.app, self.screening, self.axis = app, sc, axis or {}
         self.positions = [int(i) for i in positions]
         self.at = positions_array(self.positions)
         self._columns: dict[str, list[Any]] = {}
@@ -223,7 +230,9 @@ class CheckResult(NamedTuple):
 
     @property
     def sources(self) -> tuple[str, ...]:
-        return self.check.sources
+        """The catalog values the check reads, then the axis's value its capacity is."""
+        given = self.check.capacity_given
+        return (*self.check.sources, given) if given else self.check.sources
 
     @property
     def numeric(self) -> bool:

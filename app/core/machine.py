@@ -18,7 +18,7 @@ from app.core.changes import Ranges, Words
 from app.core.evaluate import evaluate
 from app.core.formulas import geometry
 from app.core.index import CatalogIndex
-from app.core.model import Application
+from app.core.model import Application, AxisProvenance
 from app.core.record import Candidate
 from app.core.selection import Selection, select
 
@@ -27,14 +27,16 @@ from app.core.selection import Selection, select
 class Axis:
     """One axis of the stack: its application (its own moving mass: carriage and payload),
     the mass of its frame that moves with it when it rides on another axis (rails, base,
-    bearings, brackets) [kg], its motor's mass [kg] (0 when counted in the frame), and
-    the screw chosen for it (None: the first-ranked)."""
+    bearings, brackets) [kg], its motor's mass [kg] (0 when counted in the frame), the
+    screw chosen for it (None: the first-ranked), and the provenance of its values the
+    checks' capacities are (``AxisProvenance``; None: typed in)."""
 
     name: str
     app: Application
     frame_kg: float = 0.0
     motor_kg: float = 0.0
     choice: str | None = None
+    provenance: AxisProvenance | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,12 +75,11 @@ def screw_mass(app: Application, chosen: Candidate) -> float:
     return geometry.screw_mass(s.density_kg_m3, float(chosen.pitch_diameter_m), app.length_m)
 
 
-def _chosen(
-    app: Application, index: CatalogIndex, sel: Selection, choice: str | None
-) -> Candidate | None:
+def _chosen(app: Application, index: CatalogIndex, sel: Selection, axis: Axis) -> Candidate | None:
     """The chosen screw's candidate: the named one (evaluated alone when it is not among
     those returned), else the first-ranked; None when none passes. LookupError for a
     name the catalog lacks."""
+    choice = axis.choice
     if choice is None:
         return sel.candidates[0] if sel.candidates else None
     for c in (*sel.candidates, *sel.rejected):
@@ -86,7 +87,7 @@ def _chosen(
             return c
     if choice not in index.positions:
         raise LookupError(choice)
-    return evaluate(app, index.row(index.positions[choice]), index.table.reach)
+    return evaluate(app, index.row(index.positions[choice]), index.table.reach, axis.provenance)
 
 
 def carrying(app: Application, carried_kg: float) -> Application:
@@ -107,8 +108,8 @@ def size_axis(
     """One axis with ``carried_kg`` of upper axes added to its moving mass, which leaves
     out the screws of the axes ``uncounted`` (none chosen there)."""
     app = carrying(axis.app, carried_kg)
-    sel = select(app, index, ranges, words)
-    chosen = _chosen(app, index, sel, axis.choice)
+    sel = select(app, index, ranges, words, axis.provenance)
+    chosen = _chosen(app, index, sel, axis)
     screw_kg = 0.0 if chosen is None else screw_mass(app, chosen)
     total = app.moving_mass_kg + axis.frame_kg + axis.motor_kg + screw_kg
     return AxisResult(axis, app, carried_kg, sel, chosen, screw_kg, total, uncounted)

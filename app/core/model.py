@@ -55,6 +55,13 @@ class Provenance:
     source: str
 
 
+#: The provenance of the axis's values that a check's capacity is (``Check.capacity_given``:
+#: "motor_curve", "motor_rms_torque", "support_static", "support_dynamic"): the user's
+#: where typed in, else the library motor's or support unit's; a value missing is the
+#: user's.
+AxisProvenance = Mapping[str, Provenance]
+
+
 @dataclass(frozen=True, slots=True)
 class Move:
     """One move of a cycle, in SI: the signed distance [m] (above 0 up or out, below 0

@@ -12,7 +12,7 @@ same record, so they cannot disagree.
 """
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from functools import cached_property
 from operator import attrgetter
 from typing import cast
@@ -25,6 +25,7 @@ from app.core.model import (
     PV,
     Accuracy,
     Application,
+    AxisProvenance,
     Buckling,
     J,
     Judged,
@@ -82,15 +83,22 @@ def governing(app: Application, checks: Sequence[J]) -> J | None:
     return top
 
 
-def limit_provenance(check: Judged | None, s: ScrewSpec) -> ProvenanceKind | None:
+#: The provenance of an axis's value the user typed (``AxisProvenance``'s default).
+TYPED = Provenance("user", "the value typed in")
+
+
+def limit_provenance(
+    check: Judged | None, provenance: Mapping[str, Provenance]
+) -> ProvenanceKind | None:
     """How certain the governing check's limit is: the least certain provenance of the
-    catalog values its capacity rests on ("user" when the capacity is the user's input)."""
+    catalog values its capacity rests on, else that of the axis's value it is
+    (``Check.capacity_given``: "user" when typed in), in ``provenance`` (a record's)."""
     if check is None:
         return None
-    fields = BY_NAME[check.name].capacity_sources
-    if not fields:
-        return "user"
-    kinds = [s.provenance[f].kind for f in fields if f in s.provenance]
+    c = BY_NAME[check.name]
+    if not c.capacity_sources:
+        return provenance.get(c.capacity_given, TYPED).kind
+    kinds = [provenance[f].kind for f in c.capacity_sources if f in provenance]
     return min(kinds, key=CERTAINTY.index) if kinds else None
 
 
@@ -163,7 +171,7 @@ class Candidate:
 
     @property
     def governing_limit_provenance(self) -> ProvenanceKind | None:
-        return limit_provenance(self.governing, self.screw)
+        return limit_provenance(self.governing, {**self.screw.provenance, **self.batch.axis})
 
     @cached_property
     def verdict(self) -> Verdict:
@@ -210,9 +218,14 @@ class Candidate:
 
     @property
     def provenance(self) -> dict[str, Provenance]:
-        """Catalog field -> provenance, for the fields this candidate's numbers use."""
+        """Catalog field -> provenance, for the fields this candidate's numbers use; then
+        the axis's values the checks' capacities are (a motor's curve: typed in, or the
+        library's)."""
         used = {src for c in self.checks for src in c.sources} | set(GEOMETRY_SOURCES)
-        return {k: p for k, p in self.screw.provenance.items() if k in used}
+        found = {k: p for k, p in self.screw.provenance.items() if k in used}
+        axis = self.batch.axis
+        given = (c.check.capacity_given for c in self.checks if c.check.capacity_given)
+        return found | {key: axis.get(key, TYPED) for key in given}
 
     @property
     def outgassing(self) -> tuple[tuple[float, float], ...] | None:
@@ -352,9 +365,11 @@ def records(
     sc: Screening,
     positions: Sequence[int],
     judged: Sequence[Robustness | None] | None = None,
+    axis: AxisProvenance | None = None,
 ) -> list[Candidate]:
     """The candidates at ``positions`` of a screening (in ``sc.table``), one batch;
-    ``judged`` gives each one's robustness when it is known."""
-    batch = Batch(app, sc, positions)
+    ``judged`` gives each one's robustness when it is known; ``axis`` the provenance of
+    the axis's values the checks' capacities are (typed in where not given)."""
+    batch = Batch(app, sc, positions, axis)
     found = judged if judged is not None else [None] * len(batch.positions)
     return [Candidate(batch, k, r) for k, r in enumerate(found)]

@@ -21,7 +21,7 @@ from app.core.changes import (
 from app.core.checks import BY_NAME
 from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
-from app.core.model import Application, Remedy, ScrewSpec, Summary, holds
+from app.core.model import Application, AxisProvenance, Remedy, ScrewSpec, Summary, holds
 from app.core.phrase import Amount, Phrase, join, plural
 from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.remedy import impossible, remedies
@@ -189,13 +189,16 @@ def select(
     candidates: CatalogIndex | Sequence[ScrewSpec],
     ranges: Ranges | None = None,
     words: Words | None = None,
+    axis: AxisProvenance | None = None,
 ) -> Selection:
     """Screen every eligible candidate and rank the passing ones by ``app.rank_by``.
 
     Passing candidates are ranked and cut to ``app.limit``; rejected ones are sorted
     nearest-to-passing first (lowest worst utilisation) and cut to the same limit; the
     counts cover everything screened; the summary offers input changes within ``ranges``
-    only and names the inputs by ``words``. The passing ones' robustness is screened now;
+    only and names the inputs by ``words``; ``axis`` is the provenance of the axis's values
+    the checks' capacities are (a library motor's curve; typed in where not given). The
+    passing ones' robustness is screened now;
     the returned candidates' numbers and sections are read when first asked for. A
     sequence of screws is indexed here, without variant rows: those of the passing ones
     returned are built when they are judged.
@@ -210,7 +213,7 @@ def select(
     order = _nearest_order(s)
     nearest = order[: app.limit].tolist()
     found = robust(ranked)
-    returned = records(app, s, ranked + nearest, [*found, *[None] * len(nearest)])
+    returned = records(app, s, ranked + nearest, [*found, *[None] * len(nearest)], axis)
     rejected = returned[len(ranked) :]
     skip = nearest[:REMEDY_FROM]
     fixable = [] if ranked else _fixable_order(s, order, skip)[:REMEDY_FROM].tolist()
@@ -235,7 +238,7 @@ def select(
             s,
             words,
             [c.screw.id for c in returned[: len(ranked)]],
-            records(app, s, fixable) if fixable else (),
+            records(app, s, fixable, axis=axis) if fixable else (),
         ),
         screening=s,
         ranked=tuple(ranked),

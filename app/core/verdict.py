@@ -45,6 +45,8 @@ VALUE_LABELS: Mapping[str, str] = {
     "max_length": "maximum length",
     "max_pressure": "maximum contact pressure",
     "max_sliding_speed": "maximum sliding speed",
+    "motor_curve": "motor torque-speed curve",
+    "motor_rms_torque": "motor rated torque",
     "nut_length": "nut length",
     "nut_length_to_d": "nut length",
     "oil_compatible": "oil compatibility",
@@ -57,6 +59,8 @@ VALUE_LABELS: Mapping[str, str] = {
     "root_diameter_ratio": "root diameter",
     "specific_wear_rate": "specific wear rate",
     "static_load": "static load rating",
+    "support_dynamic": "support unit's dynamic load rating",
+    "support_static": "support unit's static load rating",
     "temperature_range": "temperature range",
     "thermal_conductivity": "nut thermal conductivity",
     "thread_half_angle": "flank angle",
@@ -316,6 +320,8 @@ class Record(Protocol):
     @property
     def screw(self) -> ScrewSpec: ...
     @property
+    def provenance(self) -> Mapping[str, Provenance]: ...
+    @property
     def passed(self) -> bool: ...
     @property
     def checks(self) -> tuple[CheckResult, ...]: ...
@@ -338,10 +344,10 @@ class Record(Protocol):
 def rests_on(
     governing: CheckResult | None, provenance: Mapping[str, Provenance], hinges: Sequence[str]
 ) -> tuple[Rest, ...]:
-    """The assumed catalog values the governing check reads, then the ranged values the
-    pass hinges on (robustness), each once."""
+    """The assumed values the governing check reads (the catalog's, and the axis's value
+    its capacity is), then the ranged values the pass hinges on (robustness), each once."""
     found: dict[str, Rest] = {}
-    for key in () if governing is None else governing.check.sources:
+    for key in () if governing is None else governing.sources:
         p = provenance.get(key)
         if p is not None and p.kind in UNCERTAIN:
             label = value_label(key)
@@ -427,7 +433,7 @@ def verdict(c: Record) -> Verdict:
         governs_label="" if g is None else g.label,
         utilization=u,
         margin=None if u is None else 1.0 - u,
-        rests_on=rests_on(g, c.screw.provenance, c.hinges_on),
+        rests_on=rests_on(g, c.provenance, c.hinges_on),
         watch=watch_list(c),
         passed=bool(c.passed),
         governing=g,

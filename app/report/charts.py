@@ -81,7 +81,7 @@ def chart_data(
     least one): the lead sweep of the first one's size and the wear lines of the first
     ``wear_top`` wear-rated ones, given the catalog; the axis alone without it."""
     if catalog is not None:
-        app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
+        app, origin, _ = inputs.to_core_traced(catalog.motors, catalog.supports)
     else:
         app = inputs.axis()
         origin = curve_origin(app, app, {})

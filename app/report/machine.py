@@ -33,16 +33,11 @@ class UnknownChoice(LookupError):
 
 def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
     """The core's axes from the API's, each application in SI with its library motor."""
-    return [
-        Axis(
-            name=a.name,
-            app=a.inputs.to_core(catalog.motors, catalog.supports),
-            frame_kg=a.frame_kg,
-            motor_kg=a.motor_kg,
-            choice=a.choice,
-        )
-        for a in body.axes
-    ]
+    axes = []
+    for a in body.axes:
+        app, _, provenance = a.inputs.to_core_traced(catalog.motors, catalog.supports)
+        axes.append(Axis(a.name, app, a.frame_kg, a.motor_kg, a.choice, provenance))
+    return axes
 
 
 def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:

@@ -67,8 +67,8 @@ def run_selection(
 def _select(inputs: ApplicationIn, catalog: Catalog) -> tuple[Selection, CurveOrigin | None]:
     """The selection over the catalog for ``inputs``, and where its motor curve comes
     from (``ApplicationIn.to_core_traced``)."""
-    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
-    return select(app, catalog.index, INPUT_RANGES, INPUT_WORDS), origin
+    app, origin, provenance = inputs.to_core_traced(catalog.motors, catalog.supports)
+    return select(app, catalog.index, INPUT_RANGES, INPUT_WORDS, provenance), origin
 
 
 def construct_select_out(
@@ -202,16 +202,17 @@ def run_evaluation(
     catalog's variant rows; a custom screw's are built here); raise UnknownScrew for a
     bad catalog id."""
     index = catalog.index
-    app, origin = inputs.to_core_traced(catalog.motors, catalog.supports)
+    app, origin, provenance = inputs.to_core_traced(catalog.motors, catalog.supports)
     if isinstance(screw, CatalogScrewIn):
         position = index.positions.get(screw.catalog_id)
         if position is None:
             raise UnknownScrew(screw.catalog_id)
-        candidate = evaluate(app, index.row(position), index.table.reach)
+        candidate = evaluate(app, index.row(position), index.table.reach, provenance)
         variants, (at,) = index.variants_at([position])
     else:
         spec = custom_screw(screw, catalog.materials, catalog.nut_materials)
-        candidate = evaluate(app, spec)  # a screw of the user's own: any size can be made
+        # a screw of the user's own: any size can be made
+        candidate = evaluate(app, spec, axis=provenance)
         variants, at = build_variants([spec]), 0
     candidate = with_robustness(app, candidate, variants, at)
     share_url, url = evaluate_urls(inputs, screw, units)

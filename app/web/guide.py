@@ -30,7 +30,11 @@ PROVENANCE = (
     ("handbook", "From an engineering handbook or textbook, such as a material's modulus."),
     ("standard", "From a published standard, such as a thread form's dimensions."),
     ("vendor", "From another maker's catalog or data sheet."),
-    ("derived", "Computed from other catalog values by the rule its source states."),
+    (
+        "derived",
+        "Computed from other catalog values by the rule its source states, as a "
+        "motor's torque-speed curve drawn by the motor model from its datasheet values.",
+    ),
     ("assumed", "Not published: an engineering assumption to confirm with the maker."),
     ("user", "From a catalog file supplied at start-up, or from your own input."),
 )

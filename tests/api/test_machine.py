@@ -88,3 +88,12 @@ def test_each_axis_gives_its_energy_per_cycle_from_the_output_table(client: Test
     losses = e["cycle_load_work_j"] + e["cycle_thread_loss_j"] + e["cycle_drag_loss_j"]
     assert drive == pytest.approx(losses, rel=1e-9)
     assert z["verdict"].startswith(("Governed", "Passes", "Fails"))
+
+
+def test_an_axiss_library_motor_brings_its_curves_provenance(client: TestClient) -> None:
+    """X's 17HS19-2004S1 curve is drawn at the library's assumed 24 V drive: where it
+    governs an axis's candidate, the limit is assumed, as on the selector."""
+    axis = {**X, "moving_mass_kg": 6, "speed_mm_s": 200, "accel_mm_s2": 3000, "lead_mm": 8}
+    r = client.post("/api/v1/machine", json={"axes": [{"name": "X", "inputs": axis}]})
+    found = [c for c in r.json()["axes"][0]["candidates"] if c["governing_check"] == "motor_curve"]
+    assert found and all(c["governing_limit_provenance"] == "assumed" for c in found)

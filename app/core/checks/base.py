@@ -106,8 +106,12 @@ class Check:
     formula: ClassVar[str]
     source: ClassVar[str]
     sources: ClassVar[tuple[str, ...]] = ()
-    #: catalog fields the capacity rests on; empty: the capacity is the user's input
+    #: catalog fields the capacity rests on; empty: the capacity is the axis's (below)
     capacity_sources: ClassVar[tuple[str, ...]] = ()
+    #: the axis's value the capacity is, where no catalog field gives it: its provenance
+    #: comes with the axis (``AxisProvenance``: typed in, or a library motor's or support
+    #: unit's); empty, or not in that mapping: the user's input
+    capacity_given: ClassVar[str] = ""
     #: when this check excludes every screw of the catalog: why no screw can do it
     #: and what kind of drive could (lower case, no full stop); empty: the remedy says
     #: only that the check excludes every screw

@@ -111,6 +111,7 @@ class MotorCurve(Check):
         "confirmed speed, and lower supplies, are flagged. Confirm the curve on the maker's."
     )
     quantity = "torque"
+    capacity_given = "motor_curve"
     formula = "T_need = SF * T_seg; T_motor = T_curve / M"
     source = (
         "Shigley sec. 8-2 (thread torque by the flow of power); motor torque-speed curve; "

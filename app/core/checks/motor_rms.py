@@ -28,6 +28,7 @@ class MotorRms(Check):
         "times the torque safety factor, against the motor's continuous torque rating."
     )
     quantity = "torque"
+    capacity_given = "motor_rms_torque"
     formula = "T_need = SF * T_rms; T_motor = T_continuous"
     source = "RMS torque sqrt(sum T_i^2 t_i / sum t_i), e.g. Oriental Motor, Motor Sizing"
     sources = ("inertia_per_length", "drag_torque", "friction_dynamic")

@@ -35,6 +35,7 @@ class MotorSpeed(Check):
         "within the motor curve's last point: past it the motor cannot go."
     )
     quantity = "rpm"
+    capacity_given = "motor_curve"
     formula = "n = 60 * v_peak / lead; n_motor = n_curve_max"
     source = "screw kinematics n = 60 v / lead; motor torque-speed curve"
     sources = ()

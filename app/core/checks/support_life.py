@@ -35,6 +35,7 @@ class SupportLife(Check):
         "of the stroke and cycles per day through the lead, against the life required."
     )
     quantity = "years"
+    capacity_given = "support_dynamic"
     formula = (
         "life_required = Y_req; life = (C_a / F_m)^3 * 1e6 * lead / (2 * stroke * cycles * 365)"
     )

@@ -41,6 +41,7 @@ class SupportStatic(Check):
         "static safety factor (THK: at least 2 without vibration or impact, 5 with)."
     )
     quantity = "force"
+    capacity_given = "support_static"
     formula = "F = F_peak; F_allowed = C0a / fs"
     source = (
         "THK, bearing unit static safety factor fs = C0a / Fmax (LM Guide Actuator "

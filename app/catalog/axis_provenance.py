@@ -1,0 +1,83 @@
+"""Where the axis's values that a check's capacity is come from (``AxisProvenance``,
+keyed by ``Check.capacity_given``): the motor's torque-speed curve and its rated torque,
+the support unit's ratings. Each is the user's where typed in, else the library motor's
+or support unit's value, with that entry's provenance. A curve a model draws is derived,
+and no more certain than the least certain value the model reads (a drive voltage the
+library assumes makes the curve assumed).
+"""
+
+from collections.abc import Mapping
+
+from app.catalog.axis_motor import CurveOrigin, curve_origin
+from app.catalog.motors import CURVE, MODEL_VALUES, Motor
+from app.catalog.supports import SupportUnit
+from app.core.model import Application, Provenance
+from app.core.record import CERTAINTY
+
+#: The application's field for each value a library stepper's model reads: one typed
+#: there replaces the library's in the curve.
+STEPPER_FIELDS = {
+    "supply_v": "motor_supply_v",
+    "phase_current_a": "motor_phase_current_a",
+    "resistance_ohm": "motor_resistance_ohm",
+    "inductance_mh": "motor_inductance_h",
+    "step_angle_deg": "step_angle_deg",
+    "holding_torque_nm": "motor_holding_torque_nm",
+}
+#: Each support rating's key (``Check.capacity_given``) and the library's field.
+SUPPORT_RATINGS = {"support_static": "static_axial_n", "support_dynamic": "dynamic_axial_n"}
+
+
+def _model_curve(entered: Application, motor: Motor | None) -> Provenance:
+    """A curve the stepper or servo model draws: derived from the values it reads, as
+    certain as the least certain of the library's values the user did not type."""
+    if motor is None:
+        return Provenance("derived", "the microstepping model, from the datasheet values typed in")
+    names = [
+        n
+        for n in MODEL_VALUES[motor.kind]
+        if getattr(entered, STEPPER_FIELDS.get(n, ""), None) is None
+    ]
+    kinds = ["derived", *(motor.values[n].provenance.kind for n in names)]
+    least = min(kinds, key=CERTAINTY.index)
+    assumed = [n for n in names if motor.values[n].provenance.kind == "assumed"]
+    model = "microstepping" if motor.kind == "stepper" else "servo"
+    source = f"the {model} model, from the datasheet values of {motor.name}"
+    for name in assumed:
+        source += f"; assumed {name}: {motor.values[name].provenance.source}"
+    return Provenance(least, source)
+
+
+def _curve(origin: CurveOrigin, entered: Application, motor: Motor | None) -> Provenance:
+    if origin == "entered":
+        return Provenance("user", "the torque-speed curve typed in")
+    if origin == "published" and motor is not None:
+        return motor.values[CURVE].provenance
+    return _model_curve(entered, motor)
+
+
+def axis_provenance(
+    entered: Application,
+    app: Application,
+    motors: Mapping[str, Motor],
+    supports: Mapping[str, SupportUnit],
+) -> dict[str, Provenance]:
+    """The provenance of ``app``'s values that the checks' capacities are, where not typed
+    in: ``entered`` is the axis before its library motor and support unit were filled in
+    (``with_motor``, ``with_support``)."""
+    found: dict[str, Provenance] = {}
+    motor = motors.get(app.motor or "")
+    origin = curve_origin(entered, app, motors)
+    if origin is not None:
+        found["motor_curve"] = _curve(origin, entered, motor)
+    if motor is not None and motor.kind == "servo" and entered.motor_rms_torque_nm is None:
+        found["motor_rms_torque"] = motor.values["rated_torque_nm"].provenance
+    unit = supports.get(app.support_unit or "")
+    typed = {
+        "support_static": entered.support_static_n,
+        "support_dynamic": entered.support_dynamic_n,
+    }
+    for key, name in SUPPORT_RATINGS.items():
+        if unit is not None and typed[key] is None:
+            found[key] = unit.values[name].provenance
+    return found
