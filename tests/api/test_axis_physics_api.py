@@ -403,3 +403,29 @@ def test_the_holding_torque_a_brake_is_sized_on_is_reported(client: TestClient) 
     )
     assert hold["physics_with_margin_nm"] > hold["seed_method_nm"] > 0
     assert hold["physics_with_margin_nm"] == pytest.approx(0.428, abs=1e-3)
+
+
+def test_a_leadscrew_passing_above_the_makers_fixity_table_says_so(client: TestClient) -> None:
+    """Tr16x4 bronze, 1.5 m, fixed-simple: the beam allows 0.8 x 969 = 775 rpm. Thomson's
+    and Roton's factor 1.47 (the beam's 1.562) allows 730 rpm. At 49.3 mm/s (740 rpm)
+    the check passes on the beam's figure, and its message says the makers' tables put
+    the speed above theirs; at 40 mm/s (600 rpm) below. A ball screw's makers (THK,
+    MISUMI) rate with the beam's factors: no such sentence."""
+    axis = {"load_n": 50, "length_mm": 1500, "end_fixity": "fixed-simple"}
+    fast = check(evaluate(client, "Tr16x4-bronze", **axis, speed_mm_s=49.3), "critical_speed")
+    assert fast["passed"] and fast["limit"] == pytest.approx(775.0, abs=1.0)
+    assert (
+        "1.47 times simple-simple: 730 rpm allowed by them, which the speed is above"
+        in (fast["message"])
+    )
+    slow = check(evaluate(client, "Tr16x4-bronze", **axis, speed_mm_s=40), "critical_speed")
+    assert "730 rpm allowed by them, which the speed is below" in slow["message"]
+    simple = {**axis, "end_fixity": "simple-simple"}
+    assert (
+        "Leadscrew makers"
+        not in check(evaluate(client, "Tr16x4-bronze", **simple, speed_mm_s=20), "critical_speed")[
+            "message"
+        ]
+    )
+    ball = check(evaluate(client, "R16-10K3-FSCDIN", **axis, speed_mm_s=100), "critical_speed")
+    assert ball["passed"] and "Leadscrew makers" not in ball["message"]

@@ -61,16 +61,28 @@ class CriticalSpeed(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is below" if passed else "exceeds"
-        return Phrase(
-            "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity}).",
-            {
-                "n": Amount(r.axis.rpm, "rpm"),
-                "allowed": Amount(r.column.allowed_rpm, "rpm"),
-                "sf": Amount(app.critical_speed_safety_factor, "factor"),
-                "n_c": Amount(r.column.critical_rpm, "rpm"),
-                "fixity": app.end_fixity,
-            },
+        values: dict[str, Amount | str] = {
+            "n": Amount(r.axis.rpm, "rpm"),
+            "allowed": Amount(r.column.allowed_rpm, "rpm"),
+            "sf": Amount(app.critical_speed_safety_factor, "factor"),
+            "n_c": Amount(r.column.critical_rpm, "rpm"),
+            "fixity": app.end_fixity,
+        }
+        text = "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity})."
+        ratio = critical_speed.makers_table_ratio(app.end_fixity)
+        if not passed or s.screw_type == "ball" or ratio >= 1.0:
+            return Phrase(text, values)
+        # a leadscrew maker's table rates these ends below the beam: say where a pass stands
+        table = r.column.allowed_rpm * ratio
+        values["table"] = Amount(table, "rpm")
+        values["cs"] = f"{critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]:g}"
+        values["lower"] = f"{(1.0 - ratio) * 100.0:.0f} %"
+        side = "below" if r.axis.rpm <= table else "above"
+        text += (
+            " Leadscrew makers' tables (Thomson, Roton) rate these ends {lower} lower, "
+            "{cs} times simple-simple: {table} allowed by them, which the speed is " + side + "."
         )
+        return Phrase(text, values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         def allowed(fixity: EndFixity) -> float:

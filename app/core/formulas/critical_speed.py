@@ -65,6 +65,34 @@ def shaft_terms(
     return (youngs_modulus_pa / density_kg_m3) ** 0.5, root_diameter_m / 4.0
 
 
+#: Leadscrew makers' end-fixity factors C_s, times simple-simple (Thomson, "Screw critical
+#: speed" training page; fxsolver "Critical speed for a leadscrew"; Roton, Screw
+#: University, end fixity table 40): below the beam's (beta / pi)^2 for fixed-simple
+#: (1.562) and fixed-fixed (2.267), a fixed end being less than rigid.
+LEADSCREW_FIXITY_FACTOR: dict[str, float] = {
+    "fixed-free": 0.36,
+    "simple-simple": 1.0,
+    "fixed-simple": 1.47,
+    "fixed-fixed": 2.23,
+}
+
+
+@formula(
+    "ratio = C_s / (beta / pi)^2 where below 1",
+    "Thomson and Roton end fixity factors against the beam's eigenvalues",
+)
+def makers_table_ratio(end_fixity: str) -> float:
+    """The leadscrew makers' critical speed over the beam's for an end fixity [-]: their
+    factor C_s over (beta / pi)^2 where it is below 1 (fixed-simple 0.941, fixed-fixed
+    0.984), else 1 (the beam's fixed-free 0.356 is already below their 0.36).
+
+    >>> round(makers_table_ratio("fixed-simple"), 3), makers_table_ratio("fixed-free")
+    (0.941, 1.0)
+    """
+    beam = (END_FIXITY_BETA[end_fixity] / math.pi) ** 2
+    return min(1.0, LEADSCREW_FIXITY_FACTOR[end_fixity] / beam)
+
+
 @formula("n = SF x n_c", "Thomson (80 % of critical)")
 def allowed_speed_rpm(critical_rpm: float, safety_factor: float) -> float:
     """Allowed screw speed n_allowed = safety factor x n_c [rpm] (default factor 0.8).
