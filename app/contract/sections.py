@@ -210,6 +210,14 @@ class LifeOut(BaseModel):
             "cycle's cubic mean load, one value"
         ),
     ]
+    capped_by_wear: Annotated[
+        bool,
+        From("capped_by_wear"),
+        Field(
+            description="rated: whether the nut's wear life (Archard's law at the assumed "
+            "wear rate) cuts the seed's rated travel at either end of the band"
+        ),
+    ]
     travel_million_cm: Annotated[
         list[float], From(("travel_min_m", "travel_max_m"), via=million_cm)
     ]

@@ -187,6 +187,16 @@ class Life(Section):
         return low, high
 
     @property
+    def capped_by_wear(self) -> bool:
+        """Whether the nut's wear life cuts the seed's rated travel at either end of the
+        band (``travel_m``): the numbers are then the wear's, at its assumed rate."""
+        if self.model != "rated":
+            return False
+        seed = cast(float, self.screw.life_min_m), cast(float, self.screw.life_max_m)
+        low, high = self.travel_m
+        return low < seed[0] or high < seed[1]
+
+    @property
     def travel_min_m(self) -> float:
         return self.travel_m[0]
 

@@ -6,6 +6,7 @@ read from the candidates' output models (the API's numbers), shown in the displa
 from collections.abc import Sequence
 
 from app.contract.schemas import CandidateOut
+from app.contract.sections import LifeOut
 from app.contract.units import Display
 from app.core.phrase import figures
 from app.web.compare import Row, best_columns, compare_rows
@@ -31,9 +32,14 @@ def _life(c: CandidateOut, d: Display) -> str:
     if c.life is None:
         return "—"
     if c.life.years:
-        return f"{'–'.join(figures(v) for v in c.life.years)} years ({c.life.model})"
+        return f"{'–'.join(figures(v) for v in c.life.years)} years ({_basis(c.life)})"
     travel = "–".join(figures(d.value(v, "travel")) for v in c.life.travel_km)
-    return f"{travel} {d.label('travel')} travelled ({c.life.model})"
+    return f"{travel} {d.label('travel')} travelled ({_basis(c.life)})"
+
+
+def _basis(life: LifeOut) -> str:
+    """The life's model, and where the nut's wear cuts the seed's rating, that."""
+    return "rated, cut by wear" if life.capped_by_wear else life.model
 
 
 def _low(band: list[float] | None) -> float | None:

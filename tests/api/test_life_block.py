@@ -171,3 +171,24 @@ def test_the_tables_travel_is_in_the_pages_unit(client: TestClient) -> None:
     km_per_mi = 1.609344
     assert low == pytest.approx(detail[0] / km_per_mi, rel=0.005)
     assert high == pytest.approx(detail[1] / km_per_mi, rel=0.005)
+
+
+def test_a_rating_the_wear_cuts_says_so(client: TestClient) -> None:
+    """ZBX4000-L8-TFE: the seed rates 380-500 million cm. At 30 N the nut's wear life
+    (3.25-29.6 million cm at the assumed rate) cuts both ends: the API says so and the
+    table's mark no longer reads as the catalog's rating. With no thrust to wear the nut
+    the seed's band stands."""
+    axis = {"speed_mm_s": 50, "length_mm": 300, "stroke_mm": 200, "cycles_per_day": 2000}
+    body = {"application": {**axis, "load_n": 30}, "screw": {"catalog_id": "ZBX4000-L8-TFE"}}
+    life = client.post("/api/v1/evaluate", json=body).json()["candidate"]["life"]
+    assert life["model"] == "rated" and life["capped_by_wear"]
+    assert life["travel_million_cm"][1] < 380.0
+    idle = {"application": {**axis, "load_n": 0}, "screw": {"catalog_id": "ZBX4000-L8-TFE"}}
+    life = client.post("/api/v1/evaluate", json=idle).json()["candidate"]["life"]
+    assert not life["capped_by_wear"]
+    assert life["travel_million_cm"] == pytest.approx([380.0, 500.0])
+    page = {"load": "30", "speed": "50", "length": "300", "stroke": "200",
+            "cycles_per_day": "2000", "family": "ZBX", "lead": "8"}  # fmt: skip
+    soup = BeautifulSoup(client.get("/", params=page).text, "html.parser")
+    marks = {tag.text for tag in soup.select("td.life .life-model")}
+    assert marks == {"rated, cut by wear (assumed rate)"}
