@@ -436,10 +436,13 @@ def _export_csv(inputs: ApplicationIn, units: dict[str, str], catalog: Catalog) 
 
 @router.get("/export.json")
 async def export_json(request: Request, catalog: CatalogDep) -> Response:
-    """The API's select response (API units) for the link's inputs."""
-    inputs, _ = _export_inputs(request, catalog)
-    return await computed(_export_json, inputs, catalog)
+    """The API's select response (API units) for the link's inputs; its share link opens
+    the page in the link's units."""
+    inputs, units = _export_inputs(request, catalog)
+    return await computed(_export_json, inputs, units, catalog)
 
 
-def _export_json(inputs: ApplicationIn, catalog: Catalog) -> Response:
-    return ModelJSON(run_selection(inputs, catalog), headers=_attachment("json"))
+def _export_json(inputs: ApplicationIn, units: dict[str, str], catalog: Catalog) -> Response:
+    out = run_selection(inputs, catalog)
+    out = out.model_copy(update={"share_url": "/?" + share_query(inputs, units)})
+    return ModelJSON(out, headers=_attachment("json"))

@@ -10,7 +10,7 @@ import csv
 import io
 import math
 from typing import Any
-from urllib.parse import parse_qs
+from urllib.parse import parse_qs, parse_qsl
 
 import pytest
 from bs4 import BeautifulSoup
@@ -207,3 +207,12 @@ def test_nut_heat_check_in_fahrenheit_differences(client: TestClient) -> None:
     assert unit == limit_unit == "Δ°F"
     assert float(value) == pytest.approx(api["value"] * 1.8, rel=1e-3)
     assert float(limit) == pytest.approx(130 * 1.8, rel=1e-3) and api["limit"] == 130.0
+
+
+def test_the_json_exports_share_link_opens_the_page_in_its_units(client: TestClient) -> None:
+    """The export is in the API's units, but its share link is the page's: opened, it
+    shows the axis in the inches and pounds it was typed in, the same inputs."""
+    share = client.get("/export.json", params=AXIS).json()["share_url"]
+    assert "length_unit=in" in share
+    query = dict(parse_qsl(share.removeprefix("/?")))
+    assert api_inputs(client, query) == api_inputs(client, AXIS)
