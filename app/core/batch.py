@@ -76,10 +76,13 @@ class Batch:
         return motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
 
     @cached_property
-    def mean_load_n(self) -> float:
-        """The cycle's cubic mean axial load [N] a ball nut's L10 life is rated at
-        (``ball_life.mean_load``), the same for every candidate: worked out once per batch."""
-        return ball_life.mean_load(self.app)
+    def mean_load_n(self) -> list[float]:
+        """Each candidate's cubic mean load over the cycle [N] its ball nut's L10 life is
+        rated at, its preload counted (``ball_life.operating_mean_load``; 0 without a
+        stroke): worked out for the whole batch at once."""
+        preload = self.screening.table.preload_n[self.at]
+        mean: list[float] = ball_life.operating_mean_load(self.app, preload).tolist()
+        return mean
 
     @cached_property
     def slots(self) -> list["Slot"]:

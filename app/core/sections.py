@@ -135,8 +135,9 @@ LIFE_NOTES = {
     "Lubrication, heat and dirt move it further.",
     "l10": "L10 rated fatigue life of the ball nut (ISO 3408-5): (Ca / (f_w F_m))^3 x 10^6 "
     "revolutions at the cycle's cubic mean load F_m (each moving segment weighted by its "
-    "revolutions), f_w = 1.2 (HIWIN: 1.1 to 1.2 without impact); 90 % of nuts reach it. "
-    "Lubrication, preload and contamination move it (HIWIN sec. 3.7.2).",
+    "revolutions; a preloaded nut's load raised by its preload below 2^(3/2) times it, "
+    "HIWIN F 3.7), f_w = 1.2 (HIWIN: 1.1 to 1.2 without impact); 90 % of nuts reach it. "
+    "Lubrication and contamination move it (HIWIN sec. 3.7.2).",
 }
 
 
@@ -156,8 +157,8 @@ class Life(Section):
 
     def _l10_travel_m(self) -> float:
         """A ball nut's L10 life as travel [m]: its rated revolutions times the lead
-        (infinite without a thrust to tire it)."""
-        load_n, s = self.batch.mean_load_n, self.screw
+        (infinite without a stroke or a load on its balls)."""
+        load_n, s = self.batch.mean_load_n[self.k], self.screw
         if not (load_n > 0.0 and s.dynamic_load_n):
             return math.inf
         return ballscrew.rated_life_revolutions(s.dynamic_load_n, LOAD_FACTOR, load_n) * s.lead_m

@@ -196,6 +196,7 @@ COPIED = {
     "dynamic_load_n": "dynamic_load_n",
     "static_load_n": "static_load_n",
     "dn_limit_mm_rpm": "dn_limit_mm_rpm",
+    "preload_n": "preload_n",
 }
 
 
@@ -308,11 +309,13 @@ class CandidateTable:
     wear_rate_m2_n: Array
     allowed_wear_fraction: Array
     flank_helix_travel_m: Array
-    #: ball screws: the flag, Ca and C0a [N] and the DN limit [mm rpm] (NaN: none)
+    #: ball screws: the flag, Ca and C0a [N], the DN limit [mm rpm] and the nut's preload
+    #: [N] (0: a nut with play; NaN: none)
     ball: Mask
     dynamic_load_n: Array
     static_load_n: Array
     dn_limit_mm_rpm: Array
+    preload_n: Array
     #: Axis-free numbers of the operating point (``_axis_free``): tan of ``lead_angle_rad``,
     #: the static friction at which the thread self-locks, the seed's contact area of
     #: three threads [m^2], the transition slenderness, the engaged flank area at the

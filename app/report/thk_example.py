@@ -117,13 +117,13 @@ def axial_load(k: int) -> float:
 def mean_load_one_direction() -> float:
     """THK's F_m1: the cubic mean over the whole cycle of the outward loads alone."""
     loads = phases()
-    return ballscrew.cubic_mean_load([max(f, 0.0) for f, _ in loads], [d for _, d in loads])
+    return float(ballscrew.cubic_mean_load([max(f, 0.0) for f, _ in loads], [d for _, d in loads]))
 
 
 def mean_load_both_flanks() -> float:
     """The app's own cubic mean load: every phase's load on the one flank."""
     loads = phases()
-    return ballscrew.cubic_mean_load([f for f, _ in loads], [d for _, d in loads])
+    return float(ballscrew.cubic_mean_load([f for f, _ in loads], [d for _, d in loads]))
 
 
 def life_revolutions() -> float:

@@ -192,3 +192,32 @@ def test_a_rating_the_wear_cuts_says_so(client: TestClient) -> None:
     soup = BeautifulSoup(client.get("/", params=page).text, "html.parser")
     marks = {tag.text for tag in soup.select("td.life .life-model")}
     assert marks == {"rated, cut by wear (assumed rate)"}
+
+
+def test_a_preloaded_ball_nuts_life_counts_its_preload(client: TestClient) -> None:
+    """R15-10K3-FSC (ground, Ca 9,600 N) is taken at the 5 % preload HIWIN allows a single
+    nut (480 N). 50 N pushed 250 mm at 300 mm/s, 8 kg at 2 m/s², 6,000 cycles a day: the
+    axis's cubic mean thrust is 50.91 N, but the ball track carries 506.8 N (HIWIN F 3.7,
+    each segment (1 + F / (2^1.5 x 480))^1.5 x 480). By hand: L10 = (9600 / (1.2 x 506.8))^3
+    x 10^6 rev; 2 x 0.25 m / 0.01 m = 50 rev a cycle, 300,000 a day: 35.9 years (it read
+    35,446 years on the axis's thrust alone)."""
+    app = {"load_n": 50, "load_direction": "fixed", "speed_mm_s": 300, "length_mm": 500,
+           "accel_mm_s2": 2000, "stroke_mm": 250, "cycles_per_day": 6000,
+           "moving_mass_kg": 8, "required_life_years": 5}  # fmt: skip
+    c = _candidate_of(client, app, "R15-10K3-FSC")
+    ball = next(k for k in c["checks"] if k["name"] == "ball_life")
+    by_hand = (9600 / (1.2 * 506.8)) ** 3 * 1e6 / (50 * 6000 * 365)
+    assert ball["limit"] == pytest.approx(by_hand, rel=0.002)
+    assert ball["limit"] == pytest.approx(35.9, abs=0.05)
+    assert "preload 480 N (the axis's thrust alone: 50.91 N)" in ball["message"]
+    assert c["life"]["years"][0] == pytest.approx(ball["limit"], rel=1e-9)
+    # a nut with play (rolled, no preload) is rated on the axis's thrust
+    rolled = _candidate_of(client, app, "R16-10K3-FSCDIN")
+    assert "preload" not in next(k for k in rolled["checks"] if k["name"] == "ball_life")["message"]
+
+
+def _candidate_of(client: TestClient, app: dict[str, object], screw: str) -> dict:  # type: ignore[type-arg]
+    body = {"application": app, "screw": {"catalog_id": screw}}
+    response = client.post("/api/v1/evaluate", json=body)
+    assert response.status_code == 200, response.text
+    return response.json()["candidate"]  # type: ignore[no-any-return]

@@ -219,3 +219,19 @@ def test_a_ball_nuts_life_is_its_l10_in_travel_and_years(catalog: Catalog) -> No
     assert check.limit == pytest.approx(life.years_min, rel=1e-12)  # the life it offers
     assert evaluate(replace(app, stroke_m=None, cycles_per_day=None, required_life_years=None),
                     catalog.by_id["R20-10K3-FSCDIN"]).life is None  # fmt: skip
+
+
+def test_a_preloaded_nut_carries_its_preload_below_the_disengagement_force() -> None:
+    """HIWIN BS-08-2-EN-1704-K sec. 3.7.2 F 3.7: F_lim = 2^(3/2) F_pr; below it
+    F_b = (1 + F / F_lim)^(3/2) F_pr (F_pr at no load), at or above it F_b = F. Worked by
+    hand: 480 N of preload, 50.9 N external: (1 + 50.9 / 1357.6)^1.5 x 480 = 507.2 N."""
+    limit = 2.0**1.5 * 480.0
+    assert float(ballscrew.preloaded_operating_load(0.0, 480.0)) == pytest.approx(480.0)
+    assert float(ballscrew.preloaded_operating_load(50.9, 480.0)) == pytest.approx(507.2, abs=0.05)
+    assert float(ballscrew.preloaded_operating_load(-50.9, 480.0)) == pytest.approx(507.2, abs=0.05)
+    # continuous at the disengagement force: (1 + 1)^1.5 F_pr = 2^1.5 F_pr = F_lim
+    assert float(ballscrew.preloaded_operating_load(limit * 0.999999, 480.0)) == pytest.approx(
+        limit, rel=1e-5
+    )
+    assert float(ballscrew.preloaded_operating_load(2000.0, 480.0)) == 2000.0
+    assert float(ballscrew.preloaded_operating_load(50.9, 0.0)) == 50.9

@@ -29,14 +29,26 @@ LOAD_FACTOR = 1.2
 def mean_load(app: Application) -> float:
     """The cycle's cubic mean axial load [N], each moving segment weighted by its travel
     (its revolutions); 0 without a stroke."""
-    return ballscrew.cubic_mean_load(*travel_thrusts(app))
+    return float(ballscrew.cubic_mean_load(*travel_thrusts(app)))
 
 
-def life_years(app: Application, dynamic_load_n: Array, lead_m: Array) -> Array:
-    """The L10 life in years of the duty [year] for each nut of rating Ca [N] and lead [m]."""
+def operating_mean_load(app: Application, preload_n: Array) -> Array:
+    """The cubic mean of the load each nut's ball track carries over the cycle [N]: each
+    segment's thrust raised by the nut's preload F_pr [N] (0 or NaN: a nut with play)
+    below its disengagement force (``ballscrew.preloaded_operating_load``)."""
     forces, travels = travel_thrusts(app)
+    preload = np.nan_to_num(np.asarray(preload_n, dtype=np.float64))
+    carried = ballscrew.preloaded_operating_load(np.array(forces)[None, :], preload[:, None])
+    mean = np.asarray(ballscrew.cubic_mean_load(carried, travels), dtype=np.float64)
+    return np.broadcast_to(mean, preload.shape).copy()  # 0 for every nut when nothing moves
+
+
+def life_years(app: Application, dynamic_load_n: Array, lead_m: Array, preload_n: Array) -> Array:
+    """The L10 life in years of the duty [year] for each nut of rating Ca [N], lead [m]
+    and preload [N], at its operating mean load (``operating_mean_load``)."""
+    travels = travel_thrusts(app)[1]
     cycles = motion.cycles_per_day(app) or 0.0
-    mean_n = ballscrew.cubic_mean_load(forces, travels)
+    mean_n = operating_mean_load(app, preload_n)
     revolutions = ballscrew.rated_life_revolutions(dynamic_load_n, LOAD_FACTOR, mean_n)
     revolutions_per_day = sum(travels) / lead_m * cycles
     return np.asarray(revolutions / (revolutions_per_day * life.DAYS_PER_YEAR), dtype=np.float64)
@@ -51,10 +63,11 @@ class BallLife(Check):
     label = "L10 life (ball screw)"
     description = (
         "A ball nut's rated fatigue life L10 = (Ca / (f_w F_m))^3 x 10^6 revolutions "
-        "(ISO 3408-5), with F_m the cycle's cubic mean axial load (each moving segment's "
-        "thrust weighted by its revolutions) and f_w = 1.2 (HIWIN: 1.1 to 1.2 without "
-        "impact), in years of the given stroke and cycles (or hours) per day, against the "
-        "life required. Applies to ball screws only."
+        "(ISO 3408-5), with F_m the cycle's cubic mean of the load the ball track carries "
+        "(each moving segment's thrust weighted by its revolutions; in a preloaded nut "
+        "raised by the preload F_pr below 2^(3/2) F_pr, HIWIN F 3.7) and f_w = 1.2 (HIWIN: "
+        "1.1 to 1.2 without impact), in years of the given stroke and cycles (or hours) per "
+        "day, against the life required. Applies to ball screws only."
     )
     quantity = "years"
     formula = (
@@ -62,10 +75,10 @@ class BallLife(Check):
     )
     source = (
         "ISO 3408-5 rated life; HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, "
-        "sec. 3.7.2 F 3.8 to F 3.10 (cubic mean load, operating factor)"
+        "sec. 3.7.2 F 3.7 to F 3.10 (preload, cubic mean load, operating factor)"
     )
-    sources = ("dynamic_load",)
-    capacity_sources = ("dynamic_load",)
+    sources = ("dynamic_load", "preload")
+    capacity_sources = ("dynamic_load", "preload")
 
     def applies(self, app: Application) -> bool:
         # the cheap conditions first: the mean load works out the whole cycle
@@ -78,38 +91,45 @@ class BallLife(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         with np.errstate(invalid="ignore", divide="ignore"):
-            years = life_years(app, t.dynamic_load_n, t.lead_m)
+            years = life_years(app, t.dynamic_load_n, t.lead_m, t.preload_n)
         return Measure(t.ball.copy(), same(t, app.required_life_years), years)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        forces, travels = travel_thrusts(app)
+        travels = travel_thrusts(app)[1]
         return {
             "Y_req": app.required_life_years,
             "Ca": t.dynamic_load_n,
             "f_w": LOAD_FACTOR,
-            "F_m": ballscrew.cubic_mean_load(forces, travels),
+            "F_m": operating_mean_load(app, t.preload_n),
             "travel": sum(travels),
             "lead": t.lead_m,
             "cycles": motion.cycles_per_day(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        ca = s.dynamic_load_n or 0.0
-        years = float(life_years(app, np.array([ca]), np.array([s.lead_m]))[0])
+        ca, preload = s.dynamic_load_n or 0.0, np.array([s.preload_n or 0.0])
+        years = float(life_years(app, np.array([ca]), np.array([s.lead_m]), preload)[0])
         verb = "{years} rated (L10)" if passed else "Only {years} rated (L10)"
-        return Phrase(
+        values = {
+            "years": Amount(years, "years"),
+            "required": Amount(app.required_life_years or 0.0, "years"),
+            "ca": Amount(ca, "force"),
+            "fm": Amount(float(operating_mean_load(app, preload)[0]), "force"),
+            "fw": Amount(LOAD_FACTOR, "factor"),
+        }
+        text = (
             verb + ", {required} required: Ca = {ca} against the cycle's cubic mean load "
-            "{fm} times the load factor {fw}.",
-            {
-                "years": Amount(years, "years"),
-                "required": Amount(app.required_life_years or 0.0, "years"),
-                "ca": Amount(ca, "force"),
-                "fm": Amount(mean_load(app), "force"),
-                "fw": Amount(LOAD_FACTOR, "factor"),
-            },
+            "{fm} times the load factor {fw}."
         )
+        if s.preload_n:
+            values["preload"] = Amount(s.preload_n, "force")
+            values["axis"] = Amount(mean_load(app), "force")
+            text += (
+                " The mean counts the nut's preload {preload} (the axis's thrust alone: {axis})."
+            )
+        return Phrase(text, values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
