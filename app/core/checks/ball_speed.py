@@ -1,5 +1,6 @@
-"""Ball screw: the peak screw speed against the maker's DN limit (nominal diameter [mm]
-times speed [rpm]), which bounds the ball recirculation's noise, heat and life."""
+"""Ball screw: the peak screw speed against the maker's DN limit (the shaft diameter d_s
+[mm], HIWIN's table's outer diameter, times speed [rpm]: HIWIN sec. 3.7.6), which bounds
+the ball recirculation's noise, heat and life."""
 
 from app.core.checks.base import (
     MARGIN_NOTE,
@@ -26,8 +27,10 @@ class BallSpeed(Check):
     )
     label = "DN speed limit (ball screw)"
     description = (
-        "A ball screw's peak speed against the maker's DN limit: outer diameter [mm] times "
-        "speed [rpm] at most 70,000 for rolled and 90,000 for ground ball screws (HIWIN), "
+        "A ball screw's peak speed against the maker's DN limit: the shaft's outer diameter "
+        "d_s [mm], as HIWIN tables it, times speed [rpm] at most 70,000 for rolled and "
+        "90,000 for ground ball screws (HIWIN sec. 3.7.6; makers who take the ball-centre "
+        "diameter allow less speed for the same DN), "
         "beyond which the ball recirculation runs noisy and hot and its life drops. The "
         "critical speed of the shaft is checked separately. Applies to ball screws only."
     )
