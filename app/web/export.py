@@ -64,7 +64,7 @@ def cell(value: Any) -> Any:
 #: the display unit in brackets instead.
 API_SUFFIXES = (
     *("_mpa_m_s", "_m_s", "_mm_s2", "_mm_s", "_mm", "_m", "_nm", "_n", "_mpa"),
-    *("_rpm", "_kg_m2", "_kg", "_w", "_k", "_c", "_s", "_hz", "_deg"),
+    *("_rpm", "_kg_m2", "_kg", "_w", "_k", "_c", "_s", "_hz", "_deg", "_km"),
 )
 
 

@@ -216,3 +216,19 @@ def test_the_json_exports_share_link_opens_the_page_in_its_units(client: TestCli
     assert "length_unit=in" in share
     query = dict(parse_qsl(share.removeprefix("/?")))
     assert api_inputs(client, query) == api_inputs(client, AXIS)
+
+
+def test_the_life_as_travel_is_in_miles_in_the_csv_and_compare(client: TestClient) -> None:
+    """Without a duty the life is a travel: the CSV's columns and the compare row give it
+    in the page's miles (1 mi = 1.609344 km), the API's km converted."""
+    axis = {**AXIS, "lead": "0.315"}
+    rows = list(csv.DictReader(io.StringIO(client.get("/export.csv", params=axis).text)))
+    api = client.get("/export.json", params=axis).json()["candidates"]
+    assert rows and rows[0]["id"] == api[0]["id"]
+    km = api[0]["life"]["travel_km"]
+    assert float(rows[0]["life.travel_min [mi]"]) == pytest.approx(km[0] / 1.609344, rel=1e-6)
+    assert float(rows[0]["life.travel_max [mi]"]) == pytest.approx(km[1] / 1.609344, rel=1e-6)
+    ids = ",".join(c["id"] for c in api[:2])
+    page = BeautifulSoup(client.get("/compare", params={**axis, "ids": ids}).text, "html.parser")
+    row = next(tr for tr in page.select("tr") if "Life as travel" in tr.text)
+    assert "mi" in row.text and "million cm" not in page.text

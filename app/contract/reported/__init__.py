@@ -101,15 +101,16 @@ def show(row: Reported, value: Any, d: Display) -> str:
     ('10', '46 %')
     >>> show(BY_KEY["critical_speed.margin"], 3.14159, d), show(BY_KEY["life.years"], None, d)
     ('3.14×', '—')
-    >>> show(BY_KEY["life.travel_million_cm"], [1.5, 4.5], d)
-    '1.5–4.5'
+    >>> show(BY_KEY["life.travel_km"], [15.0, 45.0], d)
+    '15–45'
     >>> show(BY_KEY["life.years"], [21.8, 21.8], d)  # one value (a ball nut's L10)
     '21.8'
     """
     if value is None or (isinstance(value, float) and not math.isfinite(value)):
         return "—"
     if isinstance(value, list):
-        return "–".join(dict.fromkeys(figures(v) for v in value))
+        ends = [d.value(v, row.quantity) if row.quantity else v for v in value]
+        return "–".join(dict.fromkeys(figures(v) for v in ends))
     if row.cell == "whole":
         return f"{value:.0f}"
     if row.cell == "percent":

@@ -32,12 +32,14 @@ ROWS: tuple[Reported, ...] = (
         formula=Formula(life.operating_hours),
     ),
     Reported(
-        "life.travel_million_cm",
-        "Rated travel",
-        "The nut's life as travel: the seed's rating, else its wear life by Archard's law.",
-        unit="million cm",
+        "life.travel_km",
+        "Life as travel",
+        "The nut's life as travel: the seed's rating (cut to the nut's wear life where it "
+        "wears sooner), else its wear life by Archard's law, or a ball nut's L10.",
+        quantity="travel",
         better="higher",
         cell="band",
+        csv=True,
         compare=True,
     ),
     *(
