@@ -356,6 +356,8 @@ def _detail_page(request: Request, catalog: Catalog) -> Response:
         "query": query,
         "report_query": query,
         "try_url": try_url,
+        # a seed nut (not one of the page's nut materials) leaves its ratings behind
+        "try_keeps_nut": spec.variant in catalog.nut_materials,
         "series_url": series_url(spec.series_id),
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"

@@ -220,6 +220,24 @@ def test_a_ball_screw_is_not_offered_to_the_page_of_ones_own_sliding_screw(
     assert soup(client.get(f"/detail?{axis}&id=Tr8x8(P2)-ptfe").text).select_one(".try-custom")
 
 
+def test_a_seed_nuts_try_link_says_its_ratings_stay_behind(client: TestClient) -> None:
+    """B4000-L12-TFE passes with a 3-year life on its seed nut's wear rating. The page of
+    one's own screw takes its geometry, friction and PV limit, not the nut's design load
+    or wear: the link says so, and there the life's fix names what to give, not a series
+    to choose. An ISO nut (Tr16x4-ptfe) is one of that page's nut materials: its link
+    takes the nut along."""
+    axis = "load=10&moving_mass_kg=0.5&speed=150&length=350&accel=3000&stroke=300"
+    axis += "&cycles_per_day=500&required_life_years=3"
+    detail = soup(client.get(f"/detail?{axis}&id=B4000-L12-TFE").text)
+    note = detail.select_one(".try-custom .unit").text
+    assert "does not judge its design load or life" in note
+    tried = soup(client.get(detail.select_one(".try-custom a")["href"]).text)
+    fix = tried.select_one("li.check[data-check='life'] .fix").text
+    assert "Give the nut a material whose wear is rated" in fix and "series" not in fix
+    iso = soup(client.get(f"/detail?{axis}&id=Tr16x4-ptfe").text)
+    assert "friction and nut on the page" in iso.select_one(".try-custom .unit").text
+
+
 # the selector's marks
 
 

@@ -65,7 +65,7 @@ class Life(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         if np.isnan(r.life.life_years_min):
-            return Phrase("No life rating is published for this series.")
+            return Phrase("No life rating or nut wear rate is given for this screw's nut.")
         values = {
             "years": Amount(r.life.life_years_min, "years"),
             "required": Amount(app.required_life_years or 0.0, "years"),
@@ -87,6 +87,11 @@ class Life(Check):
         return Phrase(verb + ", {required} required (the seed's {seed} of travel).", values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        if np.isnan(r.life.life_years_min) and reach.families is None:  # a screw of one's own
+            return Phrase(
+                "Give the nut a material whose wear is rated (a catalog nut material, with "
+                "the thread pitch), or leave the required life out."
+            )
         if np.isnan(r.life.life_years_min):
             return Phrase("Choose a series whose life is rated.")
         return Phrase(
