@@ -202,11 +202,40 @@ def typed_origin(raw: str, record: str, quantity: Quantity, entered_unit: str) -
     return raw, entered_unit
 
 
+def typed_exactly(values: Mapping[str, str], units: Mapping[str, str]) -> dict[str, str]:
+    """The form's ``values`` (``convert_entered``'s) to read, each number still shown as
+    the conversion of one typed in another unit (its ``typed_*`` record) replaced by the
+    typed number itself in the shown unit, exactly (``link_number``): the rounded
+    conversion shown ('3.15' in/s for 80 mm/s, 80.01 mm/s) never moves the axis judged.
+
+    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
+    >>> typed_exactly({"speed": "3.15", "typed_speed": "80|mm"}, inch)["speed"]
+    '3.1496062992125984'
+    >>> typed_exactly({"speed": "3.2", "typed_speed": "80|mm"}, inch)["speed"]  # edited
+    '3.2'
+    """
+    data = dict(values)
+    for field in FIELDS:
+        record = values.get(TYPED_PREFIX + field.page, "")
+        raw = values.get(field.page, "").strip()
+        if field.quantity is None or not record or read_number(raw)[0] is None:
+            continue
+        key = unit_key(field.quantity)
+        text, unit = typed_origin(raw, record, field.quantity, units[key])
+        # a number no float holds in the shown unit is shown as typed, and read so
+        if unit != units[key] and raw != text:
+            api = page_value(field, text, {**DEFAULT_UNITS, **units, key: unit})
+            data[field.page] = link_number(field, api, units)
+    return data
+
+
 def convert_entered(
     params: Mapping[str, str], entered: dict[str, str], units: dict[str, str]
 ) -> tuple[dict[str, str], dict[str, str]]:
-    """The page fields with every number re-expressed from ``entered`` into ``units``, and
-    the typed record ('text|unit') of each field now shown in another unit than typed.
+    """The page fields with every number re-expressed from ``entered`` into ``units`` (a
+    new typed record among them, as its hidden field names it), and the typed record
+    ('text|unit') of each field shown in another unit than typed, while it shows the
+    conversion (``typed_exactly`` reads the number typed).
 
     Numbers convert from what was typed, not from the last conversion, and switching back
     to the typed unit restores the typed text exactly. Text that is not a number (or
@@ -215,7 +244,7 @@ def convert_entered(
 
     >>> units = {"force_unit": "lbf", "length_unit": "mm", "torque_unit": "N_m"}
     >>> convert_entered({"load": "50", "lead": "any"}, DEFAULT_UNITS, units)
-    ({'load': '11.24', 'lead': 'any'}, {'load': '50|N'})
+    ({'load': '11.24', 'lead': 'any', 'typed_load': '50|N'}, {'load': '50|N'})
     >>> convert_entered({"load": "11.24", "typed_load": "50|N"}, units, DEFAULT_UNITS)[0]
     {'load': '50', 'typed_load': '50|N'}
     """
@@ -229,15 +258,17 @@ def convert_entered(
         if field.quantity is None or not raw or read_number(raw)[0] is None:
             continue
         key = unit_key(field.quantity)
-        if entered[key] == units[key]:
-            continue
         record = params.get(TYPED_PREFIX + field.page, "")
         text, unit = typed_origin(raw, record, field.quantity, entered[key])
+        if entered[key] == units[key]:
+            if unit != units[key]:  # still shown as its conversion: the record is kept
+                typed[field.page] = record
+            continue
         if unit == units[key]:
             values[field.page] = text
         else:
             values[field.page] = convert_text(text, field.quantity, unit, units[key])
-            typed[field.page] = f"{text}|{unit}"
+            typed[field.page] = values[TYPED_PREFIX + field.page] = f"{text}|{unit}"
     return values, typed
 
 

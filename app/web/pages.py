@@ -23,6 +23,7 @@ from app.contract.form import (
     parse_units,
     share_query,
     summary_rows,
+    typed_exactly,
 )
 from app.contract.input_field import GROUPS
 from app.contract.inputs import SUPPORT
@@ -118,7 +119,7 @@ def parse_page(
     """The form's inputs with the table's rows as its ``moves`` (a link's ``moves`` text
     as it is when it is no table: the model names its fault), errors at their cells."""
     text, bad, index = moves_of_rows(rows, units)
-    data = dict(values)
+    data = typed_exactly(values, units)
     if rows or any(is_cell(name) for name in params):
         data[MOVES] = text
     inputs, errors = parse_inputs(data, units, catalog.motors, catalog.supports)

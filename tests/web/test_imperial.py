@@ -232,3 +232,43 @@ def test_the_life_as_travel_is_in_miles_in_the_csv_and_compare(client: TestClien
     page = BeautifulSoup(client.get("/compare", params={**axis, "ids": ids}).text, "html.parser")
     row = next(tr for tr in page.select("tr") if "Life as travel" in tr.text)
     assert "mi" in row.text and "million cm" not in page.text
+
+
+def test_switching_units_judges_the_numbers_typed_not_their_rounding(client: TestClient) -> None:
+    """80 mm/s shows as 3.15 in/s after the switch to inches (80.01 mm/s). R10-04T2-RSIT
+    and R12-04B1-RSIT run 80 mm/s at exactly the top speed of the curve typed (1200 rpm
+    at a 4 mm lead): judged at the rounded 80.01 mm/s they were rejected, so the switch
+    alone changed the answer. The typed numbers are judged; the link keeps them exactly,
+    and editing the shown number again judges what is then typed."""
+    axis = {"load": "100", "moving_mass_kg": "3", "speed": "80", "length": "600",
+            "motor_curve": "0:0.5,600:0.4,1200:0.2", "motor_inertia": "5e-05",
+            "ambient_c": "40", "brake_torque": "0.2", "orientation": "vertical",
+            "stroke": "500", "cycles_per_day": "50"}  # fmt: skip
+    switch = {"from_length_unit": "mm", "from_force_unit": "N", "from_torque_unit": "N_m",
+              "from_accel_unit": "mm_s2", "length_unit": "in", "force_unit": "lbf",
+              "torque_unit": "oz_in"}  # fmt: skip
+
+    def ids(params: dict[str, str]) -> list[str]:
+        page = BeautifulSoup(client.get("/", params=params).text, "html.parser")
+        return [cid.text for cid in page.select("table.candidates .cid")]
+
+    metric = ids(axis)
+    assert "R10-04T2-RSIT" in metric
+    switched = client.get("/", params={**axis, **switch})
+    page = BeautifulSoup(switched.text, "html.parser")
+    assert page.select_one("#f-speed")["value"] == "3.15"
+    assert [c.text for c in page.select("table.candidates .cid")] == metric
+    share = next(a["href"] for a in page.select("a") if a["href"].startswith("/?load="))
+    assert ids(dict(parse_qsl(share.removeprefix("/?")))) == metric
+    # the form sent again (its hidden records kept) judges the same; a number typed anew
+    # is judged as typed
+    form = page.select_one("form#selector")
+    typed = form.select("input[type=text][value], input[type=hidden][value]")
+    sent = {i["name"]: i["value"] for i in typed if i["value"]}
+    sent |= {t["name"]: t.text.strip() for t in form.select("textarea[name]") if t.text.strip()}
+    chosen = [(s["name"], s.select_one("option[selected]")) for s in form.select("select")]
+    sent |= {name: option["value"] for name, option in chosen if option is not None}
+    sent |= {k: v for k, v in switch.items() if not k.startswith("from_")}
+    assert sent["speed"] == "3.15" and sent["typed_speed"] == "80|mm"
+    assert ids(sent) == metric
+    assert "R10-04T2-RSIT" not in ids({**sent, "speed": "3.16"})
