@@ -259,10 +259,10 @@ def test_warnings_are_listed_beside_the_candidate(client: TestClient) -> None:
     assert cell.select_one(".mark.warned").text == "Traverse speed"
     detail = soup(client.get(f"/detail?{axis}&id=B4000-L10").text)
     assert [li["data-check"] for li in detail.select("ul.warnings li")] == ["traverse_speed"]
-    # the passing screw's failed advice is badged as advice, never as a fail
+    # failed advice is badged as advice; a failed limit (its PV here) as a fail
     badge = detail.select_one("li.check[data-check=traverse_speed] .badge")
     assert badge.text == "advice" and "warn" in badge["class"]
-    assert not detail.select(".check-name .badge.fail")
+    assert detail.select_one("li.check[data-check=pv] .badge").text == "fail"
 
 
 # the catalog
