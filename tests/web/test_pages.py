@@ -957,3 +957,15 @@ def test_a_ball_screws_detail_shows_no_nut_pv_and_its_l10_life_as_one_value(
     plain = soup(client.get("/detail", params={**axis, "id": "B6000-L10-TFE"}, headers=HX))
     plain_terms = [dt.text for dt in plain.select("dl.facts dt")]
     assert "PV" in plain_terms and "Traverse limit" in plain_terms
+
+
+def test_a_traverse_limit_not_given_shows_no_unit(client: TestClient) -> None:
+    """Tr30x6-ptfe's series gives no traverse speed: its detail says so, where it showed
+    '— in/s', a unit beside a missing value."""
+    axis = {"load": "180", "speed": "1", "length": "32", "length_unit": "in", "id": "Tr30x6-ptfe"}
+    page = soup(client.get("/detail", params=axis, headers=HX))
+    row = next(div for div in page.select("dl.facts div") if div.dt.text == "Traverse limit")
+    assert row.dd.text == "not given"
+    given = soup(client.get("/detail", params={**axis, "id": "B4000-L8-TFE"}, headers=HX))
+    row = next(div for div in given.select("dl.facts div") if div.dt.text == "Traverse limit")
+    assert row.dd.text.endswith(" in/s")
