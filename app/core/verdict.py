@@ -211,7 +211,8 @@ def missing_values(check: Check, screw: ScrewSpec) -> tuple[str, ...]:
     """The values ``check`` needs that ``screw`` lacks, in words, each once: its
     capacity's values (the limit it is held to) and the thread values its rating is read
     over; when one of its ratings is there, only the thread values it lacks."""
-    ratings = [k for k in check.capacity_sources if k not in THREAD_VALUES] or [
+    declared = check.needs or check.capacity_sources
+    ratings = [k for k in declared if k not in THREAD_VALUES] or [
         k for k in check.sources if k not in THREAD_VALUES and k in SPEC_VALUES
     ]
     thread = [k for k in THREAD_VALUES if k in check.sources or k in check.capacity_sources]

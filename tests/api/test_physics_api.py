@@ -299,3 +299,13 @@ def test_a_family_the_catalog_lacks_beside_one_it_has_is_named_too(client: TestC
     assert body["counts"] == alone["counts"] and body["counts"]["evaluated"] > 0
     assert body["summary"]["message"].startswith("The catalog has no family 'NOPE'")
     assert "no family" not in alone["summary"]["message"]
+
+
+def test_a_check_that_could_not_run_names_only_what_stops_it(client: TestClient) -> None:
+    """The accuracy check needs the lead accuracy and the nut's play; a missing
+    repeatability counts as none. An ISO Tr screw has its play but no lead accuracy: the
+    skip names the lead accuracy alone (it named the repeatability too)."""
+    c = evaluate(client, "Tr12x3-bronze", load_n=50, speed_mm_s=20, length_mm=300,
+                 stroke_mm=200, positioning_tolerance_mm=0.03)  # fmt: skip
+    skipped = {s["check"]: s["missing"] for s in c["verdict"]["skipped"]}
+    assert skipped["accuracy"] == ["lead accuracy"]

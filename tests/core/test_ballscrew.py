@@ -81,7 +81,7 @@ def test_static_safety_on_the_peak_load(catalog: Catalog, load_n: float, passes:
     c = _check(light_app(load_n=load_n), "R16-05T3-FSIDIN", "ball_static", catalog)
     assert c.passed is passes
     assert c.utilization == pytest.approx(2 * load_n / 11_700.0)
-    assert "Not applicable to a ball screw" in c.message.template
+    assert "which a rolling ball nut does not have" in c.message.template
 
 
 @pytest.mark.parametrize(("speed_m_s", "passes"), [(0.3, True), (0.5, False)])

@@ -39,6 +39,7 @@ class Accuracy(Check):
         "(thermal displacement a cause of error beside the lead accuracy and the clearance)"
     )
     sources = ("lead_accuracy", "backlash", "repeatability", "screw_expansion")
+    needs = ("lead_accuracy", "backlash")  # a missing repeatability counts as none
 
     def applies(self, app: Application) -> bool:
         return app.positioning_tolerance_m is not None

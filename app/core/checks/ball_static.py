@@ -25,8 +25,9 @@ STATIC_SAFETY_FACTOR = 2.0
 #: The leadscrew checks a ball nut has no rating for, named where a ball screw's result
 #: is read (their checks do not run for it).
 NOT_APPLICABLE_NOTE = (
-    " Not applicable to a ball screw (its nut rolls): the nut PV, flank bearing "
-    "pressure, sliding speed, nut heat, nut wear life and design load checks."
+    " This static rating stands in for the sliding nut's checks, which a rolling ball "
+    "nut does not have: the nut PV, flank bearing pressure, sliding speed, nut heat, nut "
+    "wear life and design load."
 )
 
 

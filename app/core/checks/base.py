@@ -112,6 +112,9 @@ class Check:
     #: comes with the axis (``AxisProvenance``: typed in, or a library motor's or support
     #: unit's); empty, or not in that mapping: the user's input
     capacity_given: ClassVar[str] = ""
+    #: the catalog values whose lack stops the check, where not its capacity's (empty:
+    #: those, else every catalog value it reads): named when it could not run
+    needs: ClassVar[tuple[str, ...]] = ()
     #: when this check excludes every screw of the catalog: why no screw can do it
     #: and what kind of drive could (lower case, no full stop); empty: the remedy says
     #: only that the check excludes every screw
