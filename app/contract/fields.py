@@ -379,6 +379,14 @@ FIELDS: tuple[InputField, ...] = (
         group="Safety factors", kind="number", default=2.0, bounds=(1.0, 20.0),
     ),
     InputField(
+        api="ball_load_factor", page="ball_load_factor",
+        core="ball_load_factor", label="Ball nut load factor",
+        help="Operating factor f_w on a ball nut's mean load for its L10 life, which falls "
+        "as its cube: HIWIN 1.1 to 1.2 without impact, 1.3 to 1.8 in normal operation, 2 "
+        "to 3 with impact and vibration",
+        group="Safety factors", kind="number", default=1.2, bounds=(1.0, 5.0),
+    ),
+    InputField(
         api="torque_safety_factor", page="torque_safety_factor",
         core="torque_safety_factor", label="Torque safety factor",
         help="Multiplier on the computed drive torque before it is compared with the "

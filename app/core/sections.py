@@ -10,7 +10,6 @@ import numpy as np
 
 from app.core import motion, segments
 from app.core.batch import Batch
-from app.core.checks.ball_life import LOAD_FACTOR
 from app.core.checks.wear_life import life_band
 from app.core.formulas import ballscrew, critical_speed, life
 
@@ -136,7 +135,8 @@ LIFE_NOTES = {
     "l10": "L10 rated fatigue life of the ball nut (ISO 3408-5): (Ca / (f_w F_m))^3 x 10^6 "
     "revolutions at the cycle's cubic mean load F_m (each moving segment weighted by its "
     "revolutions; a preloaded nut's load raised by its preload below 2^(3/2) times it, "
-    "HIWIN F 3.7), f_w = 1.2 (HIWIN: 1.1 to 1.2 without impact); 90 % of nuts reach it. "
+    "HIWIN F 3.7), times the load factor f_w (1.2 by default: HIWIN's 1.1 to 1.2 without "
+    "impact, 1.3 to 1.8 in normal operation); 90 % of nuts reach it. "
     "Lubrication and contamination move it (HIWIN sec. 3.7.2).",
 }
 
@@ -161,7 +161,8 @@ class Life(Section):
         load_n, s = self.batch.mean_load_n[self.k], self.screw
         if not (load_n > 0.0 and s.dynamic_load_n):
             return math.inf
-        return ballscrew.rated_life_revolutions(s.dynamic_load_n, LOAD_FACTOR, load_n) * s.lead_m
+        factor = self.app.ball_load_factor
+        return ballscrew.rated_life_revolutions(s.dynamic_load_n, factor, load_n) * s.lead_m
 
     @property
     def note(self) -> str:

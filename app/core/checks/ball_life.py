@@ -20,11 +20,6 @@ from app.core.duty import travel_thrusts
 from app.core.formulas import ballscrew, life
 from app.core.phrase import Amount, Phrase
 
-#: The load factor f_w on the cubic mean load: the top of HIWIN's 1.1 to 1.2 for
-#: operation without impact (1.3 to 1.8 in normal operation, sec. 3.7.2); MISUMI's
-#: "impactless run" 1.0 to 1.2 and "normal run" 1.2 to 1.5 (Selection of Ball Screws 3).
-LOAD_FACTOR = 1.2
-
 
 def mean_load(app: Application) -> float:
     """The cycle's cubic mean axial load [N], each moving segment weighted by its travel
@@ -49,7 +44,7 @@ def life_years(app: Application, dynamic_load_n: Array, lead_m: Array, preload_n
     travels = travel_thrusts(app)[1]
     cycles = motion.cycles_per_day(app) or 0.0
     mean_n = operating_mean_load(app, preload_n)
-    revolutions = ballscrew.rated_life_revolutions(dynamic_load_n, LOAD_FACTOR, mean_n)
+    revolutions = ballscrew.rated_life_revolutions(dynamic_load_n, app.ball_load_factor, mean_n)
     revolutions_per_day = sum(travels) / lead_m * cycles
     return np.asarray(revolutions / (revolutions_per_day * life.DAYS_PER_YEAR), dtype=np.float64)
 
@@ -65,8 +60,9 @@ class BallLife(Check):
         "A ball nut's rated fatigue life L10 = (Ca / (f_w F_m))^3 x 10^6 revolutions "
         "(ISO 3408-5), with F_m the cycle's cubic mean of the load the ball track carries "
         "(each moving segment's thrust weighted by its revolutions; in a preloaded nut "
-        "raised by the preload F_pr below 2^(3/2) F_pr, HIWIN F 3.7) and f_w = 1.2 (HIWIN: "
-        "1.1 to 1.2 without impact), in years of the given stroke and cycles (or hours) per "
+        "raised by the preload F_pr below 2^(3/2) F_pr, HIWIN F 3.7) and the load factor "
+        "f_w (1.2 by default, the top of HIWIN's 1.1 to 1.2 without impact; 1.3 to 1.8 in "
+        "normal operation), in years of the given stroke and cycles (or hours) per "
         "day, against the life required. Applies to ball screws only."
     )
     quantity = "years"
@@ -101,7 +97,7 @@ class BallLife(Check):
         return {
             "Y_req": app.required_life_years,
             "Ca": t.dynamic_load_n,
-            "f_w": LOAD_FACTOR,
+            "f_w": app.ball_load_factor,
             "F_m": operating_mean_load(app, t.preload_n),
             "travel": sum(travels),
             "lead": t.lead_m,
@@ -117,7 +113,7 @@ class BallLife(Check):
             "required": Amount(app.required_life_years or 0.0, "years"),
             "ca": Amount(ca, "force"),
             "fm": Amount(float(operating_mean_load(app, preload)[0]), "force"),
-            "fw": Amount(LOAD_FACTOR, "factor"),
+            "fw": Amount(app.ball_load_factor, "factor"),
         }
         text = (
             verb + ", {required} required: Ca = {ca} against the cycle's cubic mean load "
