@@ -21,7 +21,7 @@ import numpy as np
 from app.core.changes import within
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.input_rules import inputs_hold
-from app.core.model import FIXITY_ORDER, Application, Remedy
+from app.core.model import FIXITY_ORDER, PASS_UTILIZATION, Application, Remedy
 from app.core.phrase import Phrase
 from app.core.screening import Screening, screen_table
 
@@ -62,13 +62,15 @@ def part_way(current: float, target: float, share: float) -> float:
 
 def verify(app: Application, sc: Screening, change: Inputs) -> Remedy | None:
     """Screen the candidates of ``sc`` again with ``change`` made: a remedy when one
-    passes at a governing utilisation of at most 1 / (1 + MARGIN)."""
+    passes at a governing utilisation of at most 1 / (1 + MARGIN), within the rounding a
+    check passes by (``PASS_UTILIZATION``): a change that lands exactly MARGIN past a
+    limit gives 1 / 1.05 to the last bit, either side."""
     changed = replace(app, **dict(change))  # type: ignore[arg-type]
     if not inputs_hold(changed):
         return None
     again = screen_table(changed, sc.table, sc.index, sc.reach)
     worst = again.max_utilization[again.passed]
-    bound = 1.0 / (1.0 + MARGIN)
+    bound = PASS_UTILIZATION / (1.0 + MARGIN)
     clear = worst[worst <= bound]
     if not clear.size:
         return None

@@ -22,6 +22,7 @@ from app.contract.fields import BY_API, BY_PAGE, FIELDS
 from app.contract.inputs import ApplicationIn
 from app.contract.outputs import SelectOut
 from app.contract.units import DEFAULT_UNITS
+from app.core.model import PASS_UTILIZATION
 from app.web.advice import proposal
 from app.web.export import results_csv, safe_cell
 from tests.leadscrews import leadscrew_families
@@ -543,7 +544,8 @@ def test_no_passing_candidate_lists_verified_remedies_with_apply_links(
     for li, remedy in zip(remedies, api["summary"]["remedies"], strict=True):
         fields = [BY_API[k] for k in remedy["inputs"]]
         assert li["data-fields"].split() == [f.page for f in fields]
-        assert remedy["utilization"] <= 1 / 1.05 and remedy["passing"] >= 1
+        # 1 / 1.05 within the rounding a check passes by (a change exactly 5 % past)
+        assert remedy["utilization"] <= PASS_UTILIZATION / 1.05 and remedy["passing"] >= 1
         query = dict(parse_qsl(li.select_one("a.apply")["href"].split("?", 1)[1]))
         for field in fields:
             value, current = remedy["inputs"][field.api], float(params[field.page])
