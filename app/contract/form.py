@@ -15,7 +15,7 @@ string is ambiguous. A motor's torque curve is read and written by
 
 import math
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from typing import Any
 from urllib.parse import urlencode
 
@@ -202,6 +202,46 @@ def typed_origin(raw: str, record: str, quantity: Quantity, entered_unit: str) -
     return raw, entered_unit
 
 
+def one_value_each(params: Mapping[str, str]) -> dict[str, str]:
+    """The page's parameters, one value each: a list field given more than once
+    (family=B&family=ZBX, as the API takes it) joined with commas; any other name given
+    more than once keeps its last (``repeated`` names it as an error).
+
+    >>> from starlette.datastructures import QueryParams
+    >>> one_value_each(QueryParams("family=B&family=ZBX&load=5"))
+    {'family': 'B,ZBX', 'load': '5'}
+    """
+    values = dict(params)
+    for field in FIELDS:
+        if field.kind == "list" and len(many := _all_of(params, field.page)) > 1:
+            values[field.page] = ",".join(many)
+    return values
+
+
+def repeated(params: Mapping[str, str], own: Collection[str] = ()) -> dict[str, str]:
+    """Each name given more than once -> its message, but a list field's and a route's
+    ``own`` names (a compare link's ``ids``: the route reads each).
+
+    >>> from starlette.datastructures import QueryParams
+    >>> repeated(QueryParams("load=5&load=6&family=B&family=ZBX"))
+    {'load': "'load' is given 2 times: give it once."}
+    """
+    lists = {f.page for f in FIELDS if f.kind == "list"}
+    return {
+        name: f"'{name}' is given {n} times: give it once."
+        for name in dict.fromkeys(params)
+        if name not in lists and name not in own and (n := len(_all_of(params, name))) > 1
+    }
+
+
+def _all_of(params: Mapping[str, str], name: str) -> list[str]:
+    """Every value of ``name`` in a query's parameters (a plain mapping holds one)."""
+    getlist = getattr(params, "getlist", None)
+    if getlist is None:
+        return [params[name]] if name in params else []
+    return list(getlist(name))
+
+
 def typed_exactly(values: Mapping[str, str], units: Mapping[str, str]) -> dict[str, str]:
     """The form's ``values`` (``convert_entered``'s) to read, each number still shown as
     the conversion of one typed in another unit (its ``typed_*`` record) replaced by the
@@ -248,7 +288,7 @@ def convert_entered(
     >>> convert_entered({"load": "11.24", "typed_load": "50|N"}, units, DEFAULT_UNITS)[0]
     {'load': '50', 'typed_load': '50|N'}
     """
-    values, typed = dict(params), {}
+    values, typed = one_value_each(params), {}
     for field in FIELDS:
         raw = params.get(field.page, "").strip()
         if field.kind == "yes-no" and (answer := yes_no(raw)) is not None:

@@ -26,6 +26,7 @@ from app.contract.form import (
     TYPED_PREFIX,
     UNIT_CHOICES,
     encode_query,
+    repeated,
     share_query,
 )
 from app.contract.inputs import ApplicationIn
@@ -93,14 +94,15 @@ def unknown_parameters(
     """Each parameter of ``params`` that no page field or switch reads, nor the route's
     own names ``extra``, and each page name in ``left_out`` (the fields a page does not
     have) -> its message; then each unit switch set to a unit it does not offer
-    (``unknown_units``). Empty when every name and unit is read."""
+    (``unknown_units``), and each name given more than once where it takes one value
+    (``repeated``). Empty when every name and unit is read."""
     known = (PAGE_NAMES - frozenset(left_out)) | frozenset(extra)
     unknown = {
         name: NOT_HERE.format(name=name) if name in left_out else unknown_message(name, known)
         for name in params
         if name not in known and not is_cell(name)
     }
-    return unknown | unknown_units(params)
+    return repeated(params, extra) | unknown | unknown_units(params)
 
 
 def unknown_units(params: Mapping[str, str]) -> dict[str, str]:

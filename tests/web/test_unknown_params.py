@@ -167,3 +167,20 @@ def test_a_link_error_alone_is_not_called_a_highlighted_field(client: TestClient
     notice = field.select_one(".notice.invalid").text
     assert "Please correct the highlighted field." in notice
     assert field.select_one("#e-speed").text == "Enter a number."
+
+
+def test_a_family_repeated_is_read_as_the_api_reads_it_and_another_name_refused(
+    client: TestClient,
+) -> None:
+    """family=HIWIN-ROLLED&family=HIWIN-GROUND (the API's form) kept only the last family
+    on the page: both are read, as 'HIWIN-ROLLED,HIWIN-GROUND'. A number given twice is
+    named, not silently taken at its last."""
+    both = "load=100&speed=50&length=500&family=HIWIN-ROLLED&family=HIWIN-GROUND"
+    joined = "load=100&speed=50&length=500&family=HIWIN-ROLLED,HIWIN-GROUND"
+    count = "section.results"
+    assert client.get(f"/?{both}").status_code == 200
+    one = BeautifulSoup(client.get(f"/?{both}").text, "html.parser").select_one(count).text
+    two = BeautifulSoup(client.get(f"/?{joined}").text, "html.parser").select_one(count).text
+    assert one == two and "Evaluated 53" in " ".join(one.split())
+    twice = client.get("/export.csv?load=100&load=200&speed=50&length=500")
+    assert twice.status_code == 422 and "'load' is given 2 times" in html.unescape(twice.text)
