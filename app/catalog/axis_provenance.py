@@ -8,7 +8,7 @@ library assumes makes the curve assumed).
 
 from collections.abc import Mapping
 
-from app.catalog.axis_motor import CurveOrigin, curve_origin
+from app.catalog.axis_motor import DRIVE_VALUES, CurveOrigin, curve_origin
 from app.catalog.motors import CURVE, MODEL_VALUES, Motor
 from app.catalog.supports import SupportUnit
 from app.core.model import Application, Provenance
@@ -17,15 +17,16 @@ from app.core.record import CERTAINTY
 #: The application's field for each value a library stepper's model reads: one typed
 #: there replaces the library's in the curve.
 STEPPER_FIELDS = {
-    "supply_v": "motor_supply_v",
-    "phase_current_a": "motor_phase_current_a",
-    "resistance_ohm": "motor_resistance_ohm",
-    "inductance_mh": "motor_inductance_h",
+    **{name: field for field, name in DRIVE_VALUES},
     "step_angle_deg": "step_angle_deg",
     "holding_torque_nm": "motor_holding_torque_nm",
 }
-#: Each support rating's key (``Check.capacity_given``) and the library's field.
-SUPPORT_RATINGS = {"support_static": "static_axial_n", "support_dynamic": "dynamic_axial_n"}
+#: Each support rating's key (``Check.capacity_given``): the application's field that
+#: types it, and the library's.
+SUPPORT_RATINGS = {
+    "support_static": ("support_static_n", "static_axial_n"),
+    "support_dynamic": ("support_dynamic_n", "dynamic_axial_n"),
+}
 
 
 def _model_curve(entered: Application, motor: Motor | None) -> Provenance:
@@ -73,11 +74,7 @@ def axis_provenance(
     if motor is not None and motor.kind == "servo" and entered.motor_rms_torque_nm is None:
         found["motor_rms_torque"] = motor.values["rated_torque_nm"].provenance
     unit = supports.get(app.support_unit or "")
-    typed = {
-        "support_static": entered.support_static_n,
-        "support_dynamic": entered.support_dynamic_n,
-    }
-    for key, name in SUPPORT_RATINGS.items():
-        if unit is not None and typed[key] is None:
+    for key, (field, name) in SUPPORT_RATINGS.items():
+        if unit is not None and getattr(entered, field) is None:
             found[key] = unit.values[name].provenance
     return found
