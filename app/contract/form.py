@@ -447,17 +447,29 @@ def encode_query(pairs: Sequence[tuple[str, str]] | Mapping[str, str]) -> str:
 
 
 def share_query(
-    inputs: ApplicationIn, units: Mapping[str, str] = DEFAULT_UNITS, catalog: bool = True
+    inputs: ApplicationIn,
+    units: Mapping[str, str] = DEFAULT_UNITS,
+    catalog: bool = True,
+    typed: Mapping[str, str] | None = None,
 ) -> str:
     """Query string of the page link for these inputs: required fields and non-defaults,
     each number reproducing the input exactly; without the fields that choose among the
     catalog's screws (``catalog_only``: the lead, the families, the limit) for a page that
-    judges one screw of its own (``catalog`` False)."""
-    pairs = [
-        (f.page, link_text(f, _exact_curve(inputs, f) or v, units))
-        for f, v in shown_inputs(inputs.model_dump())
-        if catalog or not f.catalog_only
-    ]
+    judges one screw of its own (``catalog`` False). A field ``typed`` in another unit
+    (its record 'text|unit', ``convert_entered``) is written as the form shows it, with
+    its record, which the page reads back exactly (``typed_exactly``)."""
+    pairs: list[tuple[str, str]] = []
+    for f, v in shown_inputs(inputs.model_dump()):
+        if not catalog and f.catalog_only:
+            continue
+        record, quantity = (typed or {}).get(f.page, ""), f.quantity
+        origin = read_typed(record, quantity) if record and quantity else None
+        if origin is None or quantity is None:
+            pairs.append((f.page, link_text(f, _exact_curve(inputs, f) or v, units)))
+            continue
+        text, unit = origin
+        shown = convert_text(text, quantity, unit, units[unit_key(quantity)])
+        pairs += [(f.page, shown), (TYPED_PREFIX + f.page, record)]
     if inputs.moves:
         pairs.append((MOVES, moves_text(inputs.moves)))
     pairs += [(k, v) for k, v in units.items() if v != _unit_default(k, units)]

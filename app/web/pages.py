@@ -214,7 +214,7 @@ def page_results(context: dict[str, Any], inputs: ApplicationIn, catalog: Catalo
     units = context["units"]
     result, context["rejected_count"] = run_page_result(inputs, catalog, units)
     context["result"] = result
-    context["query"] = share_query(inputs, units)
+    context["query"] = share_query(inputs, units, typed=context["typed"])
     context["share_url"] = "/?" + context["query"]
     context["compare_fields"] = parse_qsl(context["query"])
     offered = kinds_offered(inputs, catalog)

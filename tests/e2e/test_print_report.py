@@ -4,6 +4,7 @@ holding the inputs, the candidate, the provenance labels and the catalog version
 
 import io
 import re
+import unicodedata
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -60,7 +61,10 @@ def assert_whole(charts: list[dict[str, Any]], expected: int) -> None:
 
 
 def pdf_text(pdf: bytes) -> str:
-    return "\n".join(page.extract_text() for page in PdfReader(io.BytesIO(pdf)).pages)
+    """The PDF's text, its typographic ligatures spelled out (Chromium sets "ff" in a
+    catalog hash such as 7ca5ffdf as one glyph, U+FB00)."""
+    pages = PdfReader(io.BytesIO(pdf)).pages
+    return unicodedata.normalize("NFKC", "\n".join(page.extract_text() for page in pages))
 
 
 def test_results_print_every_chart_whole(
