@@ -6,6 +6,7 @@ import pydantic_core
 from fastapi.templating import Jinja2Templates
 
 from app.catalog.axis_motor import CURVE_ORIGINS
+from app.contract.units import sig
 from app.core.phrase import figures
 from app.core.verdict import percent, value_label
 from app.paths import resource_dir
@@ -35,6 +36,7 @@ def band(ends: Any) -> str:
 
 templates.env.policies["json.dumps_function"] = _json
 templates.env.filters["figures"] = figures
+templates.env.filters["sig"] = sig
 templates.env.filters["band"] = band
 templates.env.filters["percent"] = percent
 templates.env.globals["value_label"] = value_label

@@ -272,3 +272,19 @@ def test_switching_units_judges_the_numbers_typed_not_their_rounding(client: Tes
     assert sent["speed"] == "3.15" and sent["typed_speed"] == "80|mm"
     assert ids(sent) == metric
     assert "R10-04T2-RSIT" not in ids({**sent, "speed": "3.16"})
+
+
+def test_the_custom_screws_summary_shows_its_values_to_four_figures(client: TestClient) -> None:
+    """A catalog screw tried on the page of one's own screw in inches carries its values
+    exactly (12 mm is 0.472440944882 in); its summary shows them as the inputs' summary
+    does, to 4 figures: 0.4724 in, 4996 psi ft/min."""
+    params = {
+        **AXIS, "outer_diameter_mm": "0.25", "root_diameter_mm": "0.195",
+        "lead_mm": "0.472440944882", "thread_half_angle_deg": "14.5",
+        "friction_dynamic": "0.09", "friction_static": "0.08",
+        "pv_limit_mpa_m_s": "4996.37876039", "material": "stainless-303",
+    }  # fmt: skip
+    page = BeautifulSoup(client.get("/custom", params=params).text, "html.parser")
+    shown = {div.dt.text: div.dd.text for div in page.select("dl.screw-inputs div")}
+    assert shown["Lead"] == "0.4724 in" and shown["Nut PV limit"] == "4996 psi ft/min"
+    assert shown["Screw material"] == "stainless-303"
