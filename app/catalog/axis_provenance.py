@@ -8,7 +8,7 @@ library assumes makes the curve assumed).
 
 from collections.abc import Mapping
 
-from app.catalog.axis_motor import DRIVE_VALUES, CurveOrigin, curve_origin
+from app.catalog.axis_motor import DRIVE_VALUES, CurveOrigin
 from app.catalog.motors import CURVE, MODEL_VALUES, Motor
 from app.catalog.supports import SupportUnit
 from app.core.model import Application, Provenance
@@ -60,15 +60,16 @@ def _curve(origin: CurveOrigin, entered: Application, motor: Motor | None) -> Pr
 def axis_provenance(
     entered: Application,
     app: Application,
+    origin: CurveOrigin | None,
     motors: Mapping[str, Motor],
     supports: Mapping[str, SupportUnit],
 ) -> dict[str, Provenance]:
     """The provenance of ``app``'s values that the checks' capacities are, where not typed
     in: ``entered`` is the axis before its library motor and support unit were filled in
-    (``with_motor``, ``with_support``)."""
+    (``with_motor``, ``with_support``), ``origin`` where its motor curve comes from
+    (``curve_origin``)."""
     found: dict[str, Provenance] = {}
     motor = motors.get(app.motor or "")
-    origin = curve_origin(entered, app, motors)
     if origin is not None:
         found["motor_curve"] = _curve(origin, entered, motor)
     if motor is not None and motor.kind == "servo" and entered.motor_rms_torque_nm is None:

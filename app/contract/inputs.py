@@ -266,8 +266,8 @@ class ApplicationInputs(BaseModel):
         provenance of the values the checks' capacities are (``axis_provenance``)."""
         entered = self.axis()
         app = with_support(with_motor(entered, motors), supports or {})
-        provenance = axis_provenance(entered, app, motors, supports or {})
-        return Traced(app, curve_origin(entered, app, motors), provenance)
+        origin = curve_origin(entered, app, motors)
+        return Traced(app, origin, axis_provenance(entered, app, origin, motors, supports or {}))
 
     def axis(self) -> Application:
         """The application in SI as given, without a library motor's values filled in:

@@ -169,9 +169,15 @@ class Candidate:
     def governing_check(self) -> str | None:
         return None if self.governing is None else self.governing.name
 
+    @cached_property
+    def value_provenance(self) -> dict[str, Provenance]:
+        """The provenance of every value a check may read: the screw's catalog values and
+        the axis's values that the checks' capacities are (``Batch.axis``)."""
+        return {**self.screw.provenance, **self.batch.axis}
+
     @property
     def governing_limit_provenance(self) -> ProvenanceKind | None:
-        return limit_provenance(self.governing, {**self.screw.provenance, **self.batch.axis})
+        return limit_provenance(self.governing, self.value_provenance)
 
     @cached_property
     def verdict(self) -> Verdict:

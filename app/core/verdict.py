@@ -321,7 +321,7 @@ class Record(Protocol):
     @property
     def screw(self) -> ScrewSpec: ...
     @property
-    def provenance(self) -> Mapping[str, Provenance]: ...
+    def value_provenance(self) -> Mapping[str, Provenance]: ...
     @property
     def passed(self) -> bool: ...
     @property
@@ -434,7 +434,7 @@ def verdict(c: Record) -> Verdict:
         governs_label="" if g is None else g.label,
         utilization=u,
         margin=None if u is None else 1.0 - u,
-        rests_on=rests_on(g, c.provenance, c.hinges_on),
+        rests_on=rests_on(g, c.value_provenance, c.hinges_on),
         watch=watch_list(c),
         passed=bool(c.passed),
         governing=g,

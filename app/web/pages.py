@@ -67,7 +67,7 @@ from app.web.catalog_view import series_url
 from app.web.compare import compare_rows
 from app.web.export import results_csv
 from app.web.figures import chart_candidates
-from app.web.screw_form import catalog_screw_query
+from app.web.screw_form import catalog_screw_query, nut_carries_over
 from app.web.templating import templates
 from app.web.versus import versus_rows
 
@@ -357,8 +357,7 @@ def _detail_page(request: Request, catalog: Catalog) -> Response:
         "query": query,
         "report_query": query,
         "try_url": try_url,
-        # a seed nut (not one of the page's nut materials) leaves its ratings behind
-        "try_keeps_nut": spec.variant in catalog.nut_materials,
+        "try_keeps_nut": nut_carries_over(spec, catalog.nut_materials),
         "series_url": series_url(spec.series_id),
     }
     template = "partials/detail.html" if _is_fragment(request) else "detail.html"

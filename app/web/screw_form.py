@@ -251,11 +251,17 @@ def _material_values(spec: ScrewSpec) -> dict[str, float | str | None]:
     }
 
 
+def nut_carries_over(spec: ScrewSpec, nuts: Container[str]) -> bool:
+    """Whether a catalog screw's nut is one of the custom form's nut materials (``nuts``):
+    a seed nut's ratings (design load, wear, length) are not, and stay behind."""
+    return spec.variant in nuts
+
+
 def _nut_values(spec: ScrewSpec, nuts: Container[str]) -> dict[str, float | str | None]:
     """A catalog screw's nut as the custom form's: its nut material when it is one of the
     catalog's (``nuts``), with the thread pitch it is rated over (the nut length is the
     nut material's family's, as the catalog's)."""
-    if spec.variant not in nuts:
+    if not nut_carries_over(spec, nuts):
         return {}
     return {
         NUT_FIELD: spec.variant,

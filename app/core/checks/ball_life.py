@@ -27,25 +27,35 @@ def mean_load(app: Application) -> float:
     return float(ballscrew.cubic_mean_load(*travel_thrusts(app)))
 
 
-def operating_mean_load(app: Application, preload_n: Array) -> Array:
+def operating_mean_load(
+    app: Application, preload_n: Array, thrusts: tuple[list[float], list[float]] | None = None
+) -> Array:
     """The cubic mean of the load each nut's ball track carries over the cycle [N]: each
     segment's thrust raised by the nut's preload F_pr [N] (0 or NaN: a nut with play)
-    below its disengagement force (``ballscrew.preloaded_operating_load``)."""
-    forces, travels = travel_thrusts(app)
+    below its disengagement force (``ballscrew.preloaded_operating_load``). ``thrusts``:
+    the cycle's ``travel_thrusts`` when already worked out."""
+    forces, travels = thrusts or travel_thrusts(app)
     preload = np.nan_to_num(np.asarray(preload_n, dtype=np.float64))
     carried = ballscrew.preloaded_operating_load(np.array(forces)[None, :], preload[:, None])
     mean = np.asarray(ballscrew.cubic_mean_load(carried, travels), dtype=np.float64)
     return np.broadcast_to(mean, preload.shape).copy()  # 0 for every nut when nothing moves
 
 
-def life_years(app: Application, dynamic_load_n: Array, lead_m: Array, preload_n: Array) -> Array:
+def life_years(
+    app: Application,
+    dynamic_load_n: Array,
+    lead_m: Array,
+    preload_n: Array,
+    thrusts: tuple[list[float], list[float]] | None = None,
+) -> Array:
     """The L10 life in years of the duty [year] for each nut of rating Ca [N], lead [m]
-    and preload [N], at its operating mean load (``operating_mean_load``)."""
-    travels = travel_thrusts(app)[1]
+    and preload [N], at its operating mean load (``operating_mean_load``); ``thrusts``
+    as there."""
+    thrusts = thrusts or travel_thrusts(app)
     cycles = motion.cycles_per_day(app) or 0.0
-    mean_n = operating_mean_load(app, preload_n)
+    mean_n = operating_mean_load(app, preload_n, thrusts)
     revolutions = ballscrew.rated_life_revolutions(dynamic_load_n, app.ball_load_factor, mean_n)
-    revolutions_per_day = sum(travels) / lead_m * cycles
+    revolutions_per_day = sum(thrusts[1]) / lead_m * cycles
     return np.asarray(revolutions / (revolutions_per_day * life.DAYS_PER_YEAR), dtype=np.float64)
 
 
@@ -93,26 +103,27 @@ class BallLife(Check):
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        travels = travel_thrusts(app)[1]
+        thrusts = travel_thrusts(app)
         return {
             "Y_req": app.required_life_years,
             "Ca": t.dynamic_load_n,
             "f_w": app.ball_load_factor,
-            "F_m": operating_mean_load(app, t.preload_n),
-            "travel": sum(travels),
+            "F_m": operating_mean_load(app, t.preload_n, thrusts),
+            "travel": sum(thrusts[1]),
             "lead": t.lead_m,
             "cycles": motion.cycles_per_day(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         ca, preload = s.dynamic_load_n or 0.0, np.array([s.preload_n or 0.0])
-        years = float(life_years(app, np.array([ca]), np.array([s.lead_m]), preload)[0])
+        thrusts = travel_thrusts(app)
+        years = life_years(app, np.array([ca]), np.array([s.lead_m]), preload, thrusts)
         verb = "{years} rated (L10)" if passed else "Only {years} rated (L10)"
         values = {
-            "years": Amount(years, "years"),
+            "years": Amount(float(years[0]), "years"),
             "required": Amount(app.required_life_years or 0.0, "years"),
             "ca": Amount(ca, "force"),
-            "fm": Amount(float(operating_mean_load(app, preload)[0]), "force"),
+            "fm": Amount(float(operating_mean_load(app, preload, thrusts)[0]), "force"),
             "fw": Amount(app.ball_load_factor, "factor"),
         }
         text = (
@@ -121,7 +132,7 @@ class BallLife(Check):
         )
         if s.preload_n:
             values["preload"] = Amount(s.preload_n, "force")
-            values["axis"] = Amount(mean_load(app), "force")
+            values["axis"] = Amount(float(ballscrew.cubic_mean_load(*thrusts)), "force")
             text += (
                 " The mean counts the nut's preload {preload} (the axis's thrust alone: {axis})."
             )
