@@ -31,12 +31,20 @@ ENERGY = (
 
 def copper_current_rms(app: Application) -> float | None:
     """A stepper's RMS phase current [A] where its step angle, current and winding
-    resistance are given (the current as typed, or the sine's peak over sqrt 2); None
-    otherwise (a servo's copper loss needs its torque constant, which is not an input)."""
+    resistance are given; None otherwise (a servo's copper loss needs its torque
+    constant, which is not an input).
+
+    The current's amplitude is the current typed, or sqrt 2 times it where it is set as
+    RMS (``motor_current_rms``). Microstepping (``microsteps`` above 1) drives the phases
+    with a sine and a cosine of that amplitude: I_rms = I_amplitude / sqrt 2, so the two
+    windings lose I_amplitude^2 R together at every step position. Full steps
+    (``microsteps`` 1) drive both phases at the full amplitude all the time (a square
+    wave, two phases on): I_rms = I_amplitude, twice the microstepping drive's heat."""
     current = app.motor_phase_current_a
     if app.step_angle_deg is None or current is None or app.motor_resistance_ohm is None:
         return None
-    return current if app.motor_current_rms else current / math.sqrt(2.0)
+    amplitude = current * math.sqrt(2.0) if app.motor_current_rms else current
+    return amplitude if app.microsteps == 1 else amplitude / math.sqrt(2.0)
 
 
 def cycle_energy(

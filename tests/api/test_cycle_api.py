@@ -40,9 +40,15 @@ def test_moves_as_json_and_as_text_give_the_same_candidate(client: TestClient) -
 
 def test_a_library_stepper_reports_its_copper_loss(client: TestClient) -> None:
     """STEPPERONLINE 17HS19-2004S1 (2.0 A, 1.4 ohm, the library's values) over the 3 s
-    cycle: (2.0 / sqrt 2)^2 x 2 x 1.4 x 3 = 16.8 J; a cycle with no motor has none."""
-    stepper = evaluate(client, "B8000-L10", **AXIS, moves=MOVES, motor="17hs19-2004s1")
+    cycle, microstepped: (2.0 / sqrt 2)^2 x 2 x 1.4 x 3 = 16.8 J; at full steps (the
+    default) both windings carry 2.0 A all the time, 33.6 J; a cycle with no motor has
+    none."""
+    stepper = evaluate(
+        client, "B8000-L10", **AXIS, moves=MOVES, motor="17hs19-2004s1", microsteps=16
+    )
     assert stepper["cycle_copper_loss_j"] == pytest.approx(16.8)
+    full = evaluate(client, "B8000-L10", **AXIS, moves=MOVES, motor="17hs19-2004s1")
+    assert full["cycle_copper_loss_j"] == pytest.approx(33.6)
     assert evaluate(client, "B8000-L10", **AXIS, moves=MOVES)["cycle_copper_loss_j"] is None
 
 

@@ -169,12 +169,17 @@ def test_lowering_gives_energy_back(b8000_l10: ScrewSpec) -> None:
 
 
 def test_stepper_copper_loss_over_the_cycle(b8000_l10: ScrewSpec) -> None:
-    """A stepper at 2 A peak (sine), 1.4 ohm: I_p^2 R = 5.6 W over the 3 s cycle, 16.8 J;
-    a servo (no step angle) has no copper loss to report."""
+    """A stepper at 2 A, 1.4 ohm over the 3 s cycle. Microstepping, the 2 A the sine's peak:
+    the two windings lose I_p^2 R = 5.6 W together, 16.8 J. At full steps both windings
+    carry the full 2 A all the time: 2 x 2^2 x 1.4 = 11.2 W, 33.6 J. The same 2 A set as
+    RMS and microstepped: 2 I_rms^2 R, 33.6 J too. A servo (no step angle) has no copper
+    loss to report."""
     stepper = _pick_and_place(
-        step_angle_deg=1.8, motor_phase_current_a=2.0, motor_resistance_ohm=1.4
+        step_angle_deg=1.8, motor_phase_current_a=2.0, motor_resistance_ohm=1.4, microsteps=16
     )
     assert evaluate(stepper, b8000_l10).quantities.energy.cycle_copper_loss_j == pytest.approx(16.8)
+    for app in (replace(stepper, microsteps=1), replace(stepper, motor_current_rms=True)):
+        assert evaluate(app, b8000_l10).quantities.energy.cycle_copper_loss_j == pytest.approx(33.6)
     servo = replace(stepper, step_angle_deg=None)
     assert math.isnan(evaluate(servo, b8000_l10).quantities.energy.cycle_copper_loss_j)
 

@@ -109,8 +109,9 @@ ROWS: tuple[Reported, ...] = (
                 "Copper loss per cycle",
                 "Given a move and a stepper's phase current and winding resistance: the heat "
                 "of its two windings over the whole cycle, 2 I_rms² R t, the drive holding "
-                "the current at rest too (empty for a servo, whose torque constant is not an "
-                "input).",
+                "the current at rest too: I_rms is the current's amplitude over √2 when "
+                "microstepping (a sine), the amplitude itself at full steps (both phases on, "
+                "twice the heat). Empty for a servo, whose torque constant is not an input.",
                 energy.stepper_copper_loss,
                 "",
                 "",
