@@ -197,13 +197,14 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="hours_per_day", page="hours_per_day", core="hours_per_day",
         label="Hours per day", help="Running hours a day instead of cycles per day (not "
-        "both): the cycles follow from the cycle's time, both moves and dwells; needs a stroke",
+        "both): the cycles follow from the cycle's time, both moves and dwells; needs a "
+        "stroke or moves",
         group="Duty and requirements", kind="number", bounds=(1e-3, 24.0), unit="h/day",
         needs=("stroke_mm",),
     ),
     InputField(
         api="required_life_years", page="required_life_years", core="required_life_years",
-        label="Required life", help="Needs stroke and cycles or hours per day",
+        label="Required life", help="Needs a stroke or moves, and cycles or hours per day",
         group="Duty and requirements", kind="number", bounds=(1e-3, 1000.0), dimension="years",
         needs=("stroke_mm",),
     ),
@@ -273,7 +274,7 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="motor_rms_torque_nm", page="motor_rms_torque", core="motor_rms_torque_nm",
         label="Continuous torque", help="The motor's rating for the RMS torque of the "
-        "cycle (needs a stroke); empty for no check",
+        "cycle (needs a stroke or moves); empty for no check",
         group="Motor and move", kind="number", bounds=(1e-6, 1e5), dimension="torque",
         needs=("stroke_mm",),
     ),

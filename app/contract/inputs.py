@@ -93,13 +93,18 @@ class ApplicationInputs(BaseModel):
     @field_validator("*")
     @classmethod
     def _needs(cls, value: Any, info: ValidationInfo) -> Any:
-        """A field with ``needs`` (the required life) is refused without those fields.
+        """A field with ``needs`` (the required life) is refused without those fields. A
+        cycle of moves gives the stroke (the span the nut covers: ``axis``).
 
-        Fields validate in table order, so the needed ones are already in ``info.data``.
+        Fields validate in table order, after ``moves``, so the needed ones are already
+        in ``info.data``.
         """
         field = BY_API.get(str(info.field_name))
         needs = () if field is None else field.needs
-        if value is not None and any(info.data.get(name) is None for name in needs):
+        given = {name for name in needs if info.data.get(name) is not None}
+        if info.data.get("moves"):
+            given.add(API_OF["stroke_m"])
+        if value is not None and not given.issuperset(needs):
             raise ValueError("needs " + " and ".join(needs))
         return value
 

@@ -87,3 +87,17 @@ def test_the_share_link_carries_the_moves(client: TestClient) -> None:
     got = client.get(f"{API}/select?{query}")
     assert got.status_code == 200, got.text
     assert got.json()["candidates"] == posted.json()["candidates"]
+
+
+def test_a_cycle_of_moves_gives_the_stroke_the_duty_and_ratings_need(client: TestClient) -> None:
+    """The moves give the stroke (the span the nut covers), so the inputs that need one
+    are read with them: hours a day, a required life and the motor's continuous torque.
+    The cycle of MOVES takes 2 x (0.1 + 1.1 + 0.1 + 0.2) = 3 s, so 8 h a day is 9,600
+    cycles a day, and the life in years is the one at 9,600 cycles a day."""
+    duty = {"required_life_years": 1, "motor_rms_torque_nm": 0.5}
+    by_hours = evaluate(client, "B8000-L10", **AXIS, moves=MOVES, hours_per_day=8, **duty)
+    by_cycles = evaluate(client, "B8000-L10", **AXIS, moves=MOVES, cycles_per_day=9600, **duty)
+    assert by_hours["life"]["years"] == pytest.approx(by_cycles["life"]["years"])
+    assert by_hours["life"]["years"][0] > 0.0
+    names = {c["name"] for c in by_hours["checks"]}
+    assert "motor_rms" in names and names & {"life", "wear_life"}, names
