@@ -68,7 +68,10 @@ MachineAxisOut = create_model(
     ),
     sized_mass_kg=(
         float,
-        Field(description="The moving mass it was sized with: its own and the carried [kg]."),
+        Field(
+            description="The moving mass it was sized with: its own and the carried, of "
+            "its heaviest move in a cycle of moves [kg]."
+        ),
     ),
     screw_kg=(
         float | None,

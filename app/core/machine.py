@@ -14,6 +14,7 @@ moving mass of the axes below; their rotary inertia matters only to their own mo
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
+from app.core import motion
 from app.core.changes import Ranges, Words
 from app.core.evaluate import evaluate
 from app.core.formulas import geometry
@@ -25,7 +26,8 @@ from app.core.selection import Selection, select
 
 @dataclass(frozen=True, slots=True)
 class Axis:
-    """One axis of the stack: its application (its own moving mass: carriage and payload),
+    """One axis of the stack: its application (its own moving mass: carriage and payload,
+    the heaviest move's in a cycle of moves: ``motion.heaviest_mass``),
     the mass of its frame that moves with it when it rides on another axis (rails, base,
     bearings, brackets) [kg], its motor's mass [kg] (0 when counted in the frame), the
     screw chosen for it (None: the first-ranked), and the provenance of its values the
@@ -111,7 +113,7 @@ def size_axis(
     sel = select(app, index, ranges, words, axis.provenance)
     chosen = _chosen(app, index, sel, axis)
     screw_kg = 0.0 if chosen is None else screw_mass(app, chosen)
-    total = app.moving_mass_kg + axis.frame_kg + axis.motor_kg + screw_kg
+    total = motion.heaviest_mass(app) + axis.frame_kg + axis.motor_kg + screw_kg
     return AxisResult(axis, app, carried_kg, sel, chosen, screw_kg, total, uncounted)
 
 
@@ -128,7 +130,7 @@ def size_machine(
         carried = result.total_kg
         if result.chosen is None:
             uncounted = (*uncounted, axis.name)
-    return Machine(tuple(results), _governing(results), results[-1].app.moving_mass_kg)
+    return Machine(tuple(results), _governing(results), motion.heaviest_mass(results[-1].app))
 
 
 def _governing(results: Sequence[AxisResult]) -> str | None:

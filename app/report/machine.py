@@ -10,6 +10,7 @@ from app.contract.machine import MachineIn
 from app.contract.reported import REPORTED
 from app.contract.source import Writer
 from app.contract.units import DEFAULT_UNITS
+from app.core import motion
 from app.core.machine import Axis, AxisResult, size_machine
 from app.report.present import candidate_json
 from app.report.service import INPUT_RANGES, INPUT_WORDS
@@ -48,7 +49,7 @@ def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
         "name": r.axis.name,
         "carried_kg": r.carried_kg,
         "uncounted": list(r.uncounted),
-        "sized_mass_kg": getattr(inputs, mass),
+        "sized_mass_kg": motion.heaviest_mass(r.app),
         "screw_kg": None if r.chosen is None else r.screw_kg,
         "total_kg": r.total_kg,
         "evaluated": r.selection.evaluated,

@@ -72,6 +72,23 @@ def test_an_axis_share_link_carries_its_moves_with_the_mass_above(client: TestCl
     assert f"{1 + z['total_kg']!r}"[:8] in x["share_url"]
 
 
+def test_an_upper_axis_of_moves_hands_down_its_heaviest_moves_mass(client: TestClient) -> None:
+    """Z given as moves, down empty-handed with 2 kg and up with a 3 kg part (its scalar
+    moving mass left at 0): Z is sized with 3 kg and X carries those 3 kg with Z's frame,
+    motor and screw; the bottom axis moves its own 0.8 kg and all that."""
+    moves = "-150:10:200:200:0.5:2:0:auto;150:10:200:200:0.5:3:0:auto"
+    body = printer()
+    body["axes"][0]["inputs"] = {**Z, "moving_mass_kg": 0, "moves": moves}
+    body["axes"] = body["axes"][:2]
+    r = client.post("/api/v1/machine", json=body)
+    assert r.status_code == 200, r.text
+    z, x = r.json()["axes"]
+    assert z["sized_mass_kg"] == pytest.approx(3.0, rel=1e-12)
+    assert z["total_kg"] == pytest.approx(3.0 + 0.3 + 0.4 + z["screw_kg"], rel=1e-12)
+    assert x["carried_kg"] == pytest.approx(z["total_kg"], rel=1e-12)
+    assert r.json()["moved_kg"] == pytest.approx(0.8 + z["total_kg"], rel=1e-12)
+
+
 def test_each_axis_gives_its_energy_per_cycle_from_the_output_table(client: TestClient) -> None:
     """The machine's energy figures are the chosen screw's own, as the select call gives
     them (the output table's energy rows), and balance: motor work - braking = work on
