@@ -30,8 +30,10 @@ def torques(
     thread is at static friction while the load and m a already act. The required torque
     is the larger of break-away and the peak of the moving segments of both moves
     (``moving``, the rows of ``segments.moving_torques``: decelerating a descending load
-    may need more). The breakdown and break-away are those of the move that starts hardest
-    (``move``, ``motion.lead_move``: out and back, the scalar inputs)."""
+    may need more). The breakdown is that of the move that starts hardest (``move``,
+    ``motion.lead_move``: out and back, the scalar inputs); break-away the largest of
+    every move's start (``breakaway``): a move with less thrust may need more torque to
+    start, its acceleration higher."""
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
     j_mass = torque.reflected_mass_inertia(move.moving_mass_kg, t.lead_m)
@@ -42,11 +44,15 @@ def torques(
     t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
     t_inertia = t_screw + t_motor + t_mass
     t_total = torque.total_torque(t_inertia, t.drag_max_nm, t_load)
-    t_start = (
-        torque.load_torque(force_n + inertial_force_n, t.lead_m, t.efficiency_static)
-        + t_screw
-        + t_motor
-        + t.drag_max_nm
+    t_start = np.maximum.reduce(
+        [
+            breakaway(app, t, force_n, move, j_screw),
+            *(
+                breakaway(app, t, motion.running_thrust(app, other), other, j_screw)
+                for other in app.moves
+                if other is not move
+            ),
+        ]
     )
     magnitude = np.abs(np.array([m[3] for m in moving]))
     largest = np.maximum.reduce(magnitude, axis=0)
@@ -68,6 +74,23 @@ def torques(
         "peak_torque_segment": segment,
         "required_nm": peak * app.torque_safety_factor,
     }
+
+
+def breakaway(
+    app: Application, t: CandidateTable, running_n: float, move: Move, j_screw: Array
+) -> Array:
+    """The torque that starts ``move`` from rest [N m]: its running thrust ``running_n``
+    and the force m a that accelerates its mass pass the thread at static friction, plus
+    the screw's (``j_screw``) and the rotor's inertia times the angular acceleration and
+    the nut's drag."""
+    alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
+    thrust_n = running_n + move.moving_mass_kg * move.accel_m_s2
+    return (
+        torque.load_torque(thrust_n, t.lead_m, t.efficiency_static)
+        + torque.inertia_torque(j_screw, alpha)
+        + torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
+        + t.drag_max_nm
+    )
 
 
 def controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str, Any]:

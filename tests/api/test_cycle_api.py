@@ -101,3 +101,25 @@ def test_a_cycle_of_moves_gives_the_stroke_the_duty_and_ratings_need(client: Tes
     assert by_hours["life"]["years"][0] > 0.0
     names = {c["name"] for c in by_hours["checks"]}
     assert "motor_rms" in names and names & {"life", "wear_life"}, names
+
+
+def test_break_away_is_the_hardest_start_of_any_move(client: TestClient) -> None:
+    """Tr12x3 in bronze (lead 3 mm, d2 10.5 mm, 30 deg, mu_s 0.16) with a 1e-4 kg m^2
+    rotor, 1 kg each way. Out: 30 N against the motion at 0.1 m/s^2, the most thrust to
+    start (30.1 N). Back: 27 N at 1 m/s^2, 28 N to start but ten times the acceleration.
+    By hand, the back move's start: tan(lead angle) = 3 / (pi 10.5) = 0.090946, eta_s =
+    (cos 15 - 0.16 x 0.090946) / (cos 15 + 0.16 / 0.090946) = 0.349100; the thread 28 x
+    0.003 / (2 pi 0.349100) = 0.038300 N m; the screw (9.3079e-6 kg m^2/m x 0.3 m) and
+    rotor 1.02792e-4 kg m^2 at 2 pi x 1 / 0.003 rad/s^2, 0.215284 N m: 0.253583 N m, above
+    the out move's start and every moving segment."""
+    moves = [
+        {"distance_mm": 100, "speed_mm_s": 20, "accel_mm_s2": 100, "dwell_s": 0.5,
+         "moving_mass_kg": 1, "load_n": 30, "load_direction": "opposes"},
+        {"distance_mm": -100, "speed_mm_s": 30, "accel_mm_s2": 1000, "dwell_s": 0.5,
+         "moving_mass_kg": 1, "load_n": 27, "load_direction": "opposes"},
+    ]  # fmt: skip
+    axis = {"load_n": 0, "speed_mm_s": 30, "length_mm": 300, "motor_inertia_kg_m2": 1e-4}
+    torque = evaluate(client, "Tr12x3-bronze", **axis, moves=moves)["torque"]
+    assert torque["breakaway_nm"] == pytest.approx(0.253583, rel=1e-5)
+    assert torque["peak_motor_nm"] == torque["breakaway_nm"] > torque["peak_nm"]
+    assert torque["peak_segment"] == "starting from rest"
