@@ -188,18 +188,25 @@ def chart_order(keys: Iterable[str], first_check: str | None) -> list[str]:
 
 
 def result_figures(
-    result: SelectOut | PageSelectionOut, units: dict[str, str], catalog: Catalog | None = None
+    result: SelectOut | PageSelectionOut,
+    units: dict[str, str],
+    catalog: Catalog | None = None,
+    focus: CandidateOut | None = None,
 ) -> dict[str, dict[str, Any]]:
     """The charts of a result, keyed 'critical_speed', 'pv', 'torque' and, given the
     catalog, 'lead_sweep' and 'life' (wear-rated nuts). Given the catalog, 'pv' is the
     top nuts' allowed pressure against sliding speed (none when no nut has such a
     limit); without it, the PV-limited load against linear speed. When nothing passes, the chart of
-    the check that excludes the most screws comes first."""
+    the check that excludes the most screws comes first. The charts of one screw (the
+    lead sweep, the move and its torque over the cycle) are those of ``focus`` (a
+    report's screw), else of the first candidate charted."""
     candidates, passing = chart_candidates(result)
     if not candidates:
         return {}
+    top = focus or candidates[0]
     d = Display(units)
-    data = chart_data(result.inputs, catalog, [c.id for c in candidates], LIFE_TOP)
+    others = [c.id for c in candidates if c.id != top.id]
+    data = chart_data(result.inputs, catalog, [top.id, *others], LIFE_TOP)
     length_mm, _ = api_value(data.length_m, "length")
     speed_mm_per_s, _ = api_value(data.speed_m_s, "speed")
     figures = {"critical_speed": critical_speed_figure(candidates, length_mm, d)}
@@ -209,11 +216,11 @@ def result_figures(
         figures["pv"] = pv_figure(candidates, speed_mm_per_s, candidates[0].axial_load_n, d)
     figures["torque"] = torque_figure(candidates, data.torque_limit_nm, d)
     if len(data.sweep) > 1:
-        figures["lead_sweep"] = lead_sweep_figure(data.sweep, candidates[0], d)
+        figures["lead_sweep"] = lead_sweep_figure(data.sweep, top, d)
     life = life_figure(data.wear, data.wear_in_years, d)
     if life is not None:
         figures["life"] = life
-    if candidates[0].segments:
+    if top.segments:
         if data.curve:
             figures["motor"] = motor_figure(
                 candidates,
@@ -223,7 +230,7 @@ def result_figures(
                 data.curve_margin,
                 data.curve_origin,
             )
-        figures["move"] = move_figure(candidates[0], d)
-        figures["cycle_torque"] = cycle_torque_figure(candidates[0], d)
+        figures["move"] = move_figure(top, d)
+        figures["cycle_torque"] = cycle_torque_figure(top, d)
     first = None if passing else result.summary.most_excluding_check
     return {key: figures[key] for key in chart_order(figures, first)}

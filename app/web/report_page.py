@@ -68,7 +68,8 @@ def report_context(
             for row in REPORTED
             if row.quantity == "energy"
         ],
-        "figures": result_figures(result, units, catalog),
+        "figures": result_figures(result, units, catalog, chosen),
+        "chart_subject": f"{chosen.id}'s",
         "charting_passed": bool(result.candidates),
         "query": query,
         "share_url": "/?" + query,

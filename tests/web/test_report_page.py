@@ -1,6 +1,9 @@
 """The filed report's page (/report): the inputs, the chosen screw and the runners-up, its
 checks with formulas and provenance, the charts, the date and the catalog version."""
 
+import json
+from typing import Any
+
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
@@ -108,3 +111,34 @@ def test_the_report_names_the_governing_checks_by_their_labels(client: TestClien
     governing = [tr.select("td")[3].text for tr in page.select("table.runners-up tbody tr")]
     assert governing == [BY_NAME[c["governing_check"]].label for c in api[1:5]]
     assert f"Governing check: {BY_NAME[api[0]['governing_check']].label}" in page.text
+
+
+def test_a_runner_ups_report_charts_and_tabulates_its_own_cycle(client: TestClient) -> None:
+    """The report of the second-ranked screw draws its own motor torque over the cycle
+    (not the top screw's, which differs), names it in the chart's caption, and lists each
+    segment and the cycle's RMS torque in its text, as the API gives them for that screw."""
+    moves = "400:200:2000:1000:0.5:8:20:opposes;-400:300:3000:3000:1:5:10:opposes"
+    axis = {"load": "0", "lead": "10", "speed": "200", "length": "600", "moves": moves}
+    api_axis = {"load_n": 0, "lead_mm": 10, "speed_mm_s": 200, "length_mm": 600, "moves": moves}
+    top, second = (c["id"] for c in client.get("/api/v1/select", params=api_axis).json()[
+        "candidates"][:2])  # fmt: skip
+
+    def segments(cid: str) -> list[dict[str, Any]]:
+        body = {"application": api_axis, "screw": {"catalog_id": cid}}
+        found: list[dict[str, Any]] = client.post("/api/v1/evaluate", json=body).json()[
+            "candidate"]["segments"]  # fmt: skip
+        return found
+
+    def torques(cid: str) -> set[float]:
+        return {round(s["torque_nm"], 6) for s in segments(cid)}
+
+    page = soup(client, {**axis, "id": second})
+    figure = json.loads(page.select_one("#fig-cycle_torque").text)
+    drawn = {round(y, 6) for y in figure["data"][0]["y"] if y is not None}
+    assert drawn == torques(second) != torques(top)
+    assert second in page.select_one("#cap-cycle_torque").text
+    rows = page.select("table.segments tbody tr")
+    assert [r.select("td")[3].text for r in rows] == [
+        f"{s['torque_nm']:.4g}" for s in segments(second)
+    ]
+    assert page.select_one(".facts .rms") is not None
