@@ -95,7 +95,9 @@ class PairsOut(BaseModel):
     catalog_version: str
     screws_eligible: int
     screws_passing_alone: int = Field(
-        description="Screws passing every check without a motor: only these are paired"
+        description="Screws passing every check without a motor. These are paired, and "
+        "those that fail only a check a motor's own holding or detent torque may clear "
+        "(holding the load)"
     )
     motors: int = Field(
         description="Library motors paired: every one, but a stepper the drive voltage "

@@ -1,8 +1,10 @@
 """Screw + motor pairs: every catalog screw with every motor of a library, ranked.
 
-The screws are screened once without a motor. A motor only adds demands (its rotor's
+The screws are screened once without a motor. A motor adds demands (its rotor's
 inertia torque, its curve, RMS, speed and controller limits), so a screw that fails
-without one fails with every motor: only the screws that pass go on. For each motor
+without one fails with every motor, but where only a check a motor's own values may
+clear fails (``Check.motor_may_clear``: a stepper's energised holding torque or its
+detent torque holds the load): the other screws go on. For each motor
 those are screened again together, as arrays, with the motor's curve, inertia and
 ratings in the application; the passing rows are the pairs, each with the share of the
 motor it uses (``motor_use``: the largest of the torque, curve, RMS and speed
@@ -16,12 +18,13 @@ from typing import Literal, NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
+from app.core.checks import BY_NAME
 from app.core.checks.base import Reach
 from app.core.index import CatalogIndex
 from app.core.model import Application, ScrewSpec
-from app.core.screening import screen_table
+from app.core.screening import Screening, screen_table
 from app.core.selection import motor_use, screen
-from app.core.table import Array, CandidateTable
+from app.core.table import Array, CandidateTable, Mask
 
 #: How pairs rank: the smallest share of the motor used; the smallest motor (its torque
 #: at standstill, a cost proxy), then the share used; the lowest drive torque.
@@ -80,6 +83,16 @@ def _motor_pairs(
     )
 
 
+def _may_pass(alone: Screening) -> Mask:
+    """The screws that pass without a motor, or fail only checks a motor's own values
+    may clear (``Check.motor_may_clear``)."""
+    stuck = np.zeros(len(alone.passed), dtype=bool)
+    for name, failed in alone.failed_by_check.items():
+        if not BY_NAME[name].motor_may_clear:
+            stuck |= failed
+    return ~stuck
+
+
 def _order(rank: PairRank, found: _Found, size: Array) -> NDArray[np.intp]:
     """Positions of the pairs in rank order (``np.lexsort``: the last key first)."""
     keys = {
@@ -100,8 +113,8 @@ def rank_pairs(
     id and ``app`` driven by it; ``app`` itself has no motor. The passing pairs ranked by
     ``rank``, the first ``app.limit`` kept."""
     alone = screen(app, index)
-    passing = np.flatnonzero(alone.passed)
-    table, rows = alone.table.take(passing), alone.index[passing]
+    candidates = np.flatnonzero(_may_pass(alone))
+    table, rows = alone.table.take(candidates), alone.index[candidates]
     ids = list(motors)
     size = np.array([m.motor_curve[0][1] if m.motor_curve else np.nan for m in motors.values()])
     parts = [
@@ -123,7 +136,7 @@ def rank_pairs(
             for i in top.tolist()
         ],
         screws_eligible=len(alone.passed),
-        screws_passing_alone=len(passing),
+        screws_passing_alone=int(np.count_nonzero(alone.passed)),
         motors=len(motors),
         pairs_passed=len(found.row),
     )

@@ -36,6 +36,30 @@ def test_the_pairs_are_the_selections_with_each_motor(client: TestClient) -> Non
     assert body["pairs_passed"] == passed
 
 
+def test_a_motor_that_holds_the_load_pairs_with_screws_that_cannot_alone(
+    client: TestClient,
+) -> None:
+    """A 1 kg vertical axis held by the energised motor, and with the power off: without
+    a motor only the self-locking screws hold, but a stepper's detent torque holds a
+    back-driving screw too (B4000-L8-TFE needs 0.0111 N m, SY42STH47-1684B's detent gives
+    more). The pairs are still every selection with each motor."""
+    held = {
+        "load_n": 0, "moving_mass_kg": 1.0, "orientation": "vertical", "speed_mm_s": 12,
+        "accel_mm_s2": 200, "length_mm": 350, "stroke_mm": 200, "lead_mm": 8,
+        "hold_power_off": "true", "holding_source": "energised", "limit": 100,
+    }  # fmt: skip
+    body = client.get("/api/v1/pairs", params=held).json()
+    passed = 0
+    for motor in (m["id"] for m in client.get("/api/v1/motors").json()["motors"]):
+        r = client.get("/api/v1/select", params={**held, "motor": motor, "limit": 1})
+        passed += r.json()["counts"]["passed"]
+    assert body["pairs_passed"] == passed > 0
+    assert ("B4000-L8-TFE", "sy42sth47-1684b") in {
+        (p["screw_id"], p["motor"]) for p in body["pairs"]
+    }
+    assert body["screws_passing_alone"] < len({p["screw_id"] for p in body["pairs"]})
+
+
 def test_a_pair_shows_the_selection_s_motor_use(client: TestClient) -> None:
     """The first pair's motor use is the select endpoint's for that screw and motor."""
     first = _pairs(client)["pairs"][0]

@@ -23,6 +23,7 @@ from app.core.phrase import Amount, Phrase
 
 class BackDriving(Check):
     name = "back_driving"
+    motor_may_clear = True
     why_none = (
         "every screw back-drives under this load: add a brake (its torque as an input) or a "
         "self-locking worm stage"

@@ -122,6 +122,10 @@ class Check:
     #: whether the check judges the motor rather than the screw (another motor may
     #: still drive the screws it rejects)
     judges_motor: ClassVar[bool] = False
+    #: whether a motor's own values can clear the check where it fails without one (a
+    #: stepper's energised holding torque or its detent torque holds the load): the
+    #: screw + motor pairs screen such a screw with every motor
+    motor_may_clear: ClassVar[bool] = False
     #: the check that judges the same limit of a nut this one has no value for (the
     #: seed's PV and an ISO nut's flank pressure against its material's PV): where that
     #: one runs, this one not running is no gap in the verdict
