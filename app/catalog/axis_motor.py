@@ -15,10 +15,13 @@ turn (``pair_applications``).
 import math
 from collections.abc import Mapping
 from dataclasses import replace
-from typing import Literal
+from typing import Literal, cast
+
+import numpy as np
 
 from app.catalog.motors import (
     ANY_MOTOR,
+    MODEL_VALUES,
     Motor,
     UndrivableMotor,
     UnknownMotor,
@@ -28,6 +31,11 @@ from app.catalog.motors import (
 )
 from app.core.formulas import stepper
 from app.core.model import Application
+
+#: A torque-speed curve: (speed [rpm], torque [N m]) points, speeds rising.
+Curve = tuple[tuple[float, float], ...]
+#: The stepper model's datasheet values (``motors.model_curve``).
+ModelArgs = tuple[float, float, float, float, float, float]
 
 
 def _datasheet_curve(app: Application) -> tuple[tuple[float, float], ...]:
@@ -119,8 +127,9 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
     and a stepper drawn from the model carries the values the model's validity range is
     read from (``with_model_values``). A stepper given a drive voltage, phase current,
     winding value or holding torque of the user's (``drive_retyped``) is drawn by the
-    model at those values, its maker's published curve too (raise UndrivableMotor where
-    that voltage never reaches that current)."""
+    model at those values, and a maker's published curve lowered where the model says
+    they give less, never raised (``_retyped_curve``; raise UndrivableMotor where that
+    voltage never reaches that current)."""
     inertia = app.motor_inertia_kg_m2
     rms = app.motor_rms_torque_nm
     detent = app.detent_torque_nm
@@ -209,14 +218,54 @@ def _undrivable(app: Application) -> str | None:
 
 
 def _retyped_curve(app: Application, motor: Motor) -> tuple[tuple[float, float], ...]:
-    """The model's pull-out curve of library stepper ``motor`` at the values typed in
-    (``with_model_values``'s); raise UndrivableMotor where that drive voltage never
-    reaches that phase current."""
+    """The pull-out curve of library stepper ``motor`` at the values typed in
+    (``with_model_values``'s): the model's, or for a motor whose maker publishes its
+    curve, that curve lowered as the model says the typed drive lowers it
+    (``under_published``); raise UndrivableMotor where that drive voltage never reaches
+    that phase current."""
     message = _undrivable(app)
     if message is not None:
         raise UndrivableMotor(message)
     step = app.step_angle_deg or motor.step_angle_deg()
-    return _datasheet_curve(replace(app, step_angle_deg=step))
+    typed = _datasheet_curve(replace(app, step_angle_deg=step))
+    published = motor.published_curve()
+    if published is None:
+        return typed
+    values = tuple(motor.value(name) for name in MODEL_VALUES["stepper"])
+    library = model_curve(cast(ModelArgs, values), app.motor_current_rms)
+    return under_published(published, typed, library)
+
+
+def under_published(
+    published: Curve, typed: Curve, library: Curve
+) -> tuple[tuple[float, float], ...]:
+    """A maker's published pull-out curve at another drive: at each of its points, the
+    least of its torque, that torque times the model's at the typed drive (``typed``)
+    over the model's at the drive of the maker's chart (``library``), and the model's
+    at the typed drive. The chart is the only data: a drive the model says gives less
+    lowers it, none raises it above the maker's published torque (the model runs up to
+    1.3 times above some makers' charts) or above the model's own figure, nor runs the
+    motor past the chart's last speed.
+
+    >>> under_published(((0.0, 0.4), (600.0, 0.3)), ((0.0, 0.5), (600.0, 0.2)),
+    ...                 ((0.0, 0.5), (600.0, 0.4)))
+    ((0.0, 0.4), (600.0, 0.15))
+    >>> under_published(((0.0, 0.4), (600.0, 0.3)), ((0.0, 0.2), (600.0, 0.1)),
+    ...                 ((0.0, 0.2), (600.0, 0.2)))
+    ((0.0, 0.2), (600.0, 0.1))
+    """
+    scaled = []
+    for rpm, nm in published:
+        given, chart = _torque_at(typed, rpm), _torque_at(library, rpm)
+        share = min(1.0, given / chart) if chart > 0.0 else float(given > 0.0)
+        scaled.append((rpm, min(nm * share, given)))
+    return tuple(scaled)
+
+
+def _torque_at(curve: Curve, rpm: float) -> float:
+    """``curve``'s torque at ``rpm``, linear between its points [N m] (0 past its last)."""
+    speeds, torques = zip(*curve, strict=True)
+    return 0.0 if rpm > speeds[-1] else float(np.interp(rpm, speeds, torques))
 
 
 def without_motor(app: Application) -> Application:

@@ -304,7 +304,8 @@ FIELDS: tuple[InputField, ...] = (
         api="motor_supply_v", page="motor_supply", core="motor_supply_v",
         label="Drive voltage", help="A stepper's drive supply, for its pull-out curve from "
         "the datasheet values below, or a library stepper's at this voltage (its maker's "
-        "published curve holds only at its chart's voltage)", group="Motor and move",
+        "published curve lowered where the model says this voltage gives less, never "
+        "raised)", group="Motor and move",
         kind="number",
         bounds=(1.0, 400.0), unit="V",
     ),

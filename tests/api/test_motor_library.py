@@ -160,20 +160,43 @@ def test_a_lower_phase_current_lowers_the_holding_torque_in_proportion() -> None
 
 def test_a_published_curve_holds_only_at_its_charts_drive() -> None:
     """The 23HS32-4004S's published curve is STEPPERONLINE's at 48 V and 4 A: typed at
-    48 V it is still that curve; on a 24 V drive the model draws it at 24 V (the maker's
-    48 V points would overstate it), with no published last speed."""
+    48 V it is still that curve. On a 24 V drive the maker's 48 V points would overstate
+    it: each is lowered as the model says 24 V lowers it, and never above the model's own
+    figure at 24 V, up to the chart's last speed (the model's 3000 rpm is not claimed)."""
+    published = MOTORS["23hs32-4004s"].published_curve()
+    assert published is not None
     same = ApplicationIn.model_validate(
         {**BASE, "motor": "23hs32-4004s", "motor_supply_v": 48.0}
     ).to_core(MOTORS)
-    assert same.motor_curve == MOTORS["23hs32-4004s"].published_curve()
+    assert same.motor_curve == published
     assert same.motor_supply_v is None  # no model range applies to a maker's curve
     half = ApplicationIn.model_validate(
         {**BASE, "motor": "23hs32-4004s", "motor_supply_v": 24.0}
     ).to_core(MOTORS)
-    drawn = [x for point in half.motor_curve for x in point]
-    assert drawn == pytest.approx(_model_curve(24.0, 4.0, 0.65, 0.0032, 1.8, 2.40))
-    assert half.motor_curve[-1][0] == MAX_STEPPER_RPM
+    model = stepper.microstep_pull_out_curve((24.0, 4.0, 0.65, 0.0032, 1.8, 2.40), 3000.0)
+    assert [rpm for rpm, _ in half.motor_curve] == [rpm for rpm, _ in published]
+    for (rpm, nm), (_, maker) in zip(half.motor_curve, published, strict=True):
+        assert nm <= min(maker, _at(model, rpm)) * (1 + 1e-12)
     assert _at(half.motor_curve, 600.0) < SO_23HS32.points[-1][1]
+
+
+def test_a_higher_drive_never_rates_a_motor_above_its_makers_curve() -> None:
+    """The SY35ST36-1004A's published curve is Changzhou Songyang's at 24 V: 0.0800 N m
+    at 450 rpm, 0.0763 N m at 750 rpm, its last point. The model from its datasheet
+    values gives 0.0971 N m flat to 750 rpm, 1.21 to 1.27 times the maker's. Typed at
+    25 V or 48 V, the curve is the maker's where it lies below the model's (0.0763 N m at
+    750 rpm), the model's below 0.0971 N m: a higher drive claims no torque, nor speed,
+    the chart does not show."""
+    published = MOTORS["sy35st36-1004a"].published_curve()
+    assert published is not None and published[-1] == pytest.approx((750.0, 0.0763))
+    for volts in (25.0, 48.0):
+        core = ApplicationIn.model_validate(
+            {**BASE, "motor": "sy35st36-1004a", "motor_supply_v": volts}
+        ).to_core(MOTORS)
+        assert [rpm for rpm, _ in core.motor_curve] == [rpm for rpm, _ in published]
+        for (_, nm), (_, maker) in zip(core.motor_curve, published, strict=True):
+            assert min(maker, 0.0971) * 0.999 <= nm <= maker
+        assert core.motor_curve[-1] == published[-1]
 
 
 @pytest.mark.parametrize(
