@@ -22,6 +22,7 @@ import numpy as np
 from app.catalog.motors import (
     ANY_MOTOR,
     MODEL_VALUES,
+    Curve,
     Motor,
     UndrivableMotor,
     UnknownMotor,
@@ -32,8 +33,6 @@ from app.catalog.motors import (
 from app.core.formulas import stepper
 from app.core.model import Application
 
-#: A torque-speed curve: (speed [rpm], torque [N m]) points, speeds rising.
-Curve = tuple[tuple[float, float], ...]
 #: The stepper model's datasheet values (``motors.model_curve``).
 ModelArgs = tuple[float, float, float, float, float, float]
 
@@ -230,7 +229,7 @@ def _retyped_curve(app: Application, motor: Motor) -> tuple[tuple[float, float],
     typed = _datasheet_curve(replace(app, step_angle_deg=step))
     published = motor.published_curve()
     if published is None:
-        return typed
+        return motor.within_top_speed(typed)
     values = tuple(motor.value(name) for name in MODEL_VALUES["stepper"])
     library = model_curve(cast(ModelArgs, values), app.motor_current_rms)
     return under_published(published, typed, library)

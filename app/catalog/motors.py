@@ -13,6 +13,8 @@ from itertools import pairwise
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.files import library_entries, merge_libraries
@@ -22,6 +24,8 @@ from app.core.units import to_si
 
 #: The library's file name; family loading skips it in every catalog directory.
 MOTOR_FILE = "motors.toml"
+#: A torque-speed curve: (speed [rpm], torque [N m]) points, speeds rising.
+Curve = tuple[tuple[float, float], ...]
 SCHEMA = 1
 #: Field -> the unit its value is written in, by motor kind.
 FIELDS = {
@@ -45,7 +49,10 @@ FIELDS = {
 }
 PLAIN = frozenset({"name", "frame", "kind"})
 #: Values a stepper's entry may leave out where its datasheet does not publish them.
-OPTIONAL = {"stepper": {"detent_torque_nm": "N m", "pull_out_curve": ""}, "servo": {}}
+OPTIONAL = {
+    "stepper": {"detent_torque_nm": "N m", "pull_out_curve": "", "max_rpm": ""},
+    "servo": {},
+}
 #: The values each kind's model draws its curve from, in the order its model takes them
 #: (``stepper.microstep_pull_out_curve`` through ``model_curve``; ``servo.peak_curve``).
 MODEL_VALUES = {
@@ -168,7 +175,15 @@ class Motor:
         values = tuple(self.value(name) for name in MODEL_VALUES[self.kind])
         if self.kind == "servo":
             return servo.peak_curve(*values)
-        return model_curve(values, current_is_rms)
+        return self.within_top_speed(model_curve(values, current_is_rms))
+
+    def within_top_speed(self, curve: Curve) -> Curve:
+        """A stepper model's ``curve`` up to the top speed its maker publishes (its
+        maximum slewing rate, ``max_rpm``): the model draws every stepper to
+        ``MAX_STEPPER_RPM``, past what some makers allow. The curve as it is without one."""
+        if "max_rpm" not in self.values:
+            return curve
+        return up_to(curve, self.value("max_rpm"))
 
     def detent_torque_nm(self) -> float | None:
         """A stepper's published detent torque (unpowered); None where not published."""
@@ -187,6 +202,20 @@ class Motor:
         """A stepper's energised holding torque (at its rated current); None for a servo,
         whose torque at standstill its datasheet does not give as a holding figure."""
         return self.value("holding_torque_nm") if self.kind == "stepper" else None
+
+
+def up_to(curve: Curve, top_rpm: float) -> Curve:
+    """``curve``'s points below ``top_rpm`` and its torque there, linear between points
+    (the curve as it is where it ends below).
+
+    >>> up_to(((0.0, 1.0), (1000.0, 0.6), (3000.0, 0.2)), 1500.0)
+    ((0.0, 1.0), (1000.0, 0.6), (1500.0, 0.5))
+    """
+    if curve[-1][0] <= top_rpm:
+        return curve
+    speeds, torques = zip(*curve, strict=True)
+    below = tuple(p for p in curve if p[0] < top_rpm)
+    return (*below, (top_rpm, float(np.interp(top_rpm, speeds, torques))))
 
 
 def _check_servo(entry: Entry, motor: Motor) -> None:

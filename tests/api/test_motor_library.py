@@ -683,3 +683,21 @@ def test_a_library_motor_with_its_makers_curve_is_driven_by_it(client: TestClien
     body = client.get("/api/v1/select", params=fast).json()
     speeds = [_checks(c)["motor_speed"] for c in body["candidates"] + body["rejected"]]
     assert speeds and all(not s["passed"] and s["limit"] == pytest.approx(600.0) for s in speeds)
+
+
+def test_a_steppers_published_top_speed_ends_its_model_curve(client: TestClient) -> None:
+    """The NEMA 23 175 oz in table gives a maximum slewing rate of 5000 full steps a
+    second: 25 rev/s, 1500 rpm. Its model curve ends there, not at the model's 3000 rpm,
+    so a 15 kg carriage at 300 mm/s on a 10 mm lead (1800 rpm) is past it."""
+    curve = MOTORS["nema23-175ozin"].curve()
+    assert curve[-1][0] == 1500.0 < MAX_STEPPER_RPM
+    body = {
+        "application": {
+            "load_n": 0, "moving_mass_kg": 15.0, "speed_mm_s": 300, "accel_mm_s2": 2000,
+            "length_mm": 700, "stroke_mm": 500, "motor": "nema23-175ozin",
+        },
+        "screw": {"catalog_id": "R12-10K3-FSCDIN"},
+    }  # fmt: skip
+    checks = client.post("/api/v1/evaluate", json=body).json()["candidate"]["checks"]
+    speed = next(c for c in checks if c["name"] == "motor_speed")
+    assert not speed["passed"] and speed["utilization"] == pytest.approx(1800 / 1500)
