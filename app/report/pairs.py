@@ -5,7 +5,13 @@ from typing import Any
 from app.catalog import Catalog
 from app.catalog.axis_motor import curve_origin, pair_applications
 from app.catalog.models import Sourced
-from app.catalog.motors import ANY_MOTOR, NAMED_UNITS, Motor
+from app.catalog.motors import (
+    ANY_MOTOR,
+    NAMED_UNITS,
+    Motor,
+    UnknownMotor,
+    unknown_motor_message,
+)
 from app.contract.form import share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.pairs import (
@@ -93,7 +99,10 @@ def run_pairs(inputs: ApplicationIn, catalog: Catalog, asked: PairRankIn | None 
     (any motor given there is set aside), the passing pairs ranked as ``asked``, else
     as the application's own ranking means (``pair_rank_of``: the page's ranking)."""
     rank = pair_rank_of(inputs, asked)
-    alone, motors = pair_applications(inputs.axis(), catalog.motors)
+    axis = inputs.axis()
+    if axis.motor not in (None, ANY_MOTOR, *catalog.motors):  # set aside, but named right
+        raise UnknownMotor(unknown_motor_message(axis.motor or "", catalog.motors))
+    alone, motors = pair_applications(axis, catalog.motors)
     found = rank_pairs(alone, motors, catalog.index, rank)
     return PairsOut.model_validate(
         {

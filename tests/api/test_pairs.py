@@ -220,3 +220,13 @@ def test_a_controller_step_rate_limits_the_stepper_pairs_alone(client: TestClien
     stepper = {**AXIS, "motor": "17hs19-2004s1", **limit}
     kept = client.get("/api/v1/select", params=stepper).json()["candidates"]
     assert kept and all(c["lead_mm"] >= 32.0 for c in kept)
+
+
+def test_an_unknown_motor_is_refused_as_a_selection_refuses_it(client: TestClient) -> None:
+    """Pairs set a motor given aside, but an id the library lacks is a typing slip that
+    select and the page refuse: so do the pairs, on the same field."""
+    for route in ("pairs", "select"):
+        r = client.get(f"/api/v1/{route}", params={**AXIS, "motor": "foo"})
+        assert r.status_code == 422, r.text
+        assert r.json()["detail"][0]["field"] == "motor"
+        assert "unknown motor 'foo'" in r.json()["detail"][0]["message"]
