@@ -8,7 +8,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.contract.cycle import MoveIn, moves_text, parse_moves_text
-from tests.api.calls import API, evaluate
+from tests.api.calls import API, check, evaluate
 
 #: A pick-and-place: 2.5 kg out, 0.5 kg back, 300 mm at 250 mm/s, 0.2 s dwells.
 MOVES = [
@@ -123,3 +123,23 @@ def test_break_away_is_the_hardest_start_of_any_move(client: TestClient) -> None
     assert torque["breakaway_nm"] == pytest.approx(0.253583, rel=1e-5)
     assert torque["peak_motor_nm"] == torque["breakaway_nm"] > torque["peak_nm"]
     assert torque["peak_segment"] == "starting from rest"
+
+
+def test_a_thrust_fix_in_a_cycle_of_moves_blames_the_moves_not_the_mass(
+    client: TestClient,
+) -> None:
+    """ZBX8000-L10 fails its PV on a cycle out with 4 kg and 15 N, back with 1.5 kg and
+    5 N. Each move carries its own load, so the load input lowers no thrust: the fix says
+    the moves' masses and loads exceed the thrust it allows, not the moving mass alone
+    (whose m a is 6 N of the 21 N)."""
+    moves = [
+        {"distance_mm": 300, "speed_mm_s": 150, "accel_mm_s2": 1500, "decel_mm_s2": 1500,
+         "dwell_s": 0.3, "moving_mass_kg": 4, "load_n": 15, "load_direction": "opposes"},
+        {"distance_mm": -300, "speed_mm_s": 250, "accel_mm_s2": 2500, "decel_mm_s2": 2000,
+         "dwell_s": 0.7, "moving_mass_kg": 1.5, "load_n": 5, "load_direction": "opposes"},
+    ]  # fmt: skip
+    axis = {"load_n": 0, "speed_mm_s": 250, "length_mm": 500, "motor_inertia_kg_m2": 1e-5}
+    pv = check(evaluate(client, "ZBX8000-L10", **axis, moves=moves), "pv")
+    assert not pv["passed"]
+    assert "the moves' own masses and loads exceed" in pv["fix"]
+    assert "moving mass alone" not in pv["fix"]

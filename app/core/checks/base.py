@@ -199,13 +199,20 @@ def allowed_load(app: Application, cap_n: float, name: str = "cap") -> Phrase:
     """The words that cap the load for a limit ``cap_n`` on the peak thrust [N], kept
     ``FIX_MARGIN`` inside it: "the load may be at most {cap}" where the thrust is the load
     alone; where it is more (a weight held, m a on the ramps), the thrust's cap and the
-    axial load that keeps it (``load_input``), or that the moving mass alone exceeds it.
-    The cap's field is ``name``."""
+    axial load that keeps it (``load_input``), or that the moving mass alone exceeds it;
+    in a cycle of moves, each carrying its own load, that the moves' masses and loads
+    exceed it. The cap's field is ``name``."""
     cap = at_most(cap_n)
     load = load_input(app, cap).get("load_n")
     values: dict[str, Amount | str | Phrase] = {name: Amount(cap, "force")}
     if load is not None and math.isclose(load, cap):
         return Phrase("the load may be at most {" + name + "}", values)
+    if app.moves:  # each move carries its own load: the load input moves no thrust
+        return Phrase(
+            "the peak thrust may be at most {" + name + "}, which the moves' own masses "
+            "and loads exceed",
+            values,
+        )
     if load is None or load < 0.0:
         return Phrase(
             "the peak thrust may be at most {" + name + "}, which the moving mass alone exceeds",
