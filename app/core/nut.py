@@ -41,8 +41,9 @@ def seed_pv(
     app: Application, t: CandidateTable, force_n: float, rpm: Array, limit: Array
 ) -> dict[str, Any]:
     """PV of the nut (seed, three threads in contact) and its limits inverted at the
-    permissible PV ``limit``, at the peak thrust ``force_n``: an accelerating segment ends
-    at the top speed still carrying m a."""
+    permissible PV ``limit``, at the thrust ``force_n`` and screw speed ``rpm`` of
+    ``quantities.pv_point``: the peak thrust at the top speed (an accelerating segment
+    ends at the top speed still carrying m a)."""
     area = t.contact_area_m2
     return {
         "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m, area),

@@ -64,6 +64,29 @@ def peak_axial_load(app: Application, forces: Sequence[float] = ()) -> float:
     return max(abs(f) for f in forces or motion.nut_forces(app))
 
 
+def pv_point(app: Application, c: motion.Cycle, peak_n: float) -> tuple[float, float]:
+    """The thrust [N] and speed [m/s] the nut's PV is judged at: the peak thrust
+    ``peak_n`` at the top speed (an accelerating segment reaches the top speed still
+    carrying m a); in a cycle of the user's own moves, which differ in thrust and speed,
+    each move's largest thrust at its own top speed, of the move where their product
+    (to which a nut's PV is proportional) is largest.
+
+    >>> from app.core.model import Move
+    >>> moves = (Move(0.3, 0.15, 1.5, 1.5, 0.3, 4.0, 15.0, "opposes"),
+    ...          Move(-0.3, 0.25, 2.5, 2.0, 0.7, 1.5, 5.0, "opposes"))
+    >>> app = Application(load_n=0.0, speed_m_s=0.25, length_m=0.5, moves=moves)
+    >>> pv_point(app, motion.cycle_of(app), 21.0)
+    (21.0, 0.15)
+    """
+    if not app.moves or c.profiles is None:
+        return peak_n, c.reached_m_s
+    points = [
+        (max(abs(f) for f in c.moving_n[3 * k : 3 * k + 3]), p.peak_speed_m_s)
+        for k, p in enumerate(c.profiles)
+    ]
+    return max(points, key=lambda point: point[0] * point[1])
+
+
 def compression_sign(app: Application) -> float:
     """+1 when a nut force up (out) pushes the screw onto its thrust bearing (compression),
     -1 when it pulls the screw away from it (tension)."""
@@ -156,6 +179,9 @@ class NutLoad(Generic[V]):
     """The nut under load: the seed's PV, the engaged flanks and the ratings they give
     (``nut.pv_limit``, ``nut.seed_pv``, ``nut.flanks``)."""
 
+    #: The thrust [N] and screw speed [rpm] the PV is judged at (``pv_point``)
+    pv_force_n: V
+    pv_rpm: V
     pv_pa_m_s: V
     pressure_pa: V
     surface_speed_m_s: V
@@ -406,6 +432,8 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
     worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n, c.cycles_per_day)
     held = holding.holding(app, t, steady_n)
     motor = drive.motor_point(app, t, rpm, held["brake_nm"], torques, moving, c)
+    pv_n, pv_m_s = pv_point(app, c, peak_n)
+    pv_rpm = rpm if pv_m_s == c.reached_m_s else geometry.screw_speed_rpm(pv_m_s, t.lead_m)
     return {
         "force_n": filled(len(t), force_n),
         "peak_force_n": filled(len(t), peak_n),
@@ -416,7 +444,9 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
         **column.column_limits(app, t, peak_n, torques),
         **duty.heat_balance(app, t, force_n, wear_n, c.fastest),
         **limits,
-        **nut.seed_pv(app, t, peak_n, rpm, limits["pv_limit_pa_m_s"]),
+        "pv_force_n": filled(len(t), pv_n),
+        "pv_rpm": pv_rpm,
+        **nut.seed_pv(app, t, pv_n, pv_rpm, limits["pv_limit_pa_m_s"]),
         **flank,
         **worn,
         **duty.duty(app, t, worn["wear_travel_m"], c.cycles_per_day),

@@ -128,13 +128,13 @@ def test_break_away_is_the_hardest_start_of_any_move(client: TestClient) -> None
 def test_a_thrust_fix_in_a_cycle_of_moves_blames_the_moves_not_the_mass(
     client: TestClient,
 ) -> None:
-    """ZBX8000-L10 fails its PV on a cycle out with 4 kg and 15 N, back with 1.5 kg and
+    """ZBX8000-L10 fails its PV on a cycle out with 4 kg and 40 N, back with 1.5 kg and
     5 N. Each move carries its own load, so the load input lowers no thrust: the fix says
     the moves' masses and loads exceed the thrust it allows, not the moving mass alone
-    (whose m a is 6 N of the 21 N)."""
+    (whose m a is 6 N of the 46 N)."""
     moves = [
         {"distance_mm": 300, "speed_mm_s": 150, "accel_mm_s2": 1500, "decel_mm_s2": 1500,
-         "dwell_s": 0.3, "moving_mass_kg": 4, "load_n": 15, "load_direction": "opposes"},
+         "dwell_s": 0.3, "moving_mass_kg": 4, "load_n": 40, "load_direction": "opposes"},
         {"distance_mm": -300, "speed_mm_s": 250, "accel_mm_s2": 2500, "decel_mm_s2": 2000,
          "dwell_s": 0.7, "moving_mass_kg": 1.5, "load_n": 5, "load_direction": "opposes"},
     ]  # fmt: skip
@@ -143,3 +143,23 @@ def test_a_thrust_fix_in_a_cycle_of_moves_blames_the_moves_not_the_mass(
     assert not pv["passed"]
     assert "the moves' own masses and loads exceed" in pv["fix"]
     assert "moving mass alone" not in pv["fix"]
+
+
+def test_the_pv_of_a_cycle_is_each_moves_thrust_at_its_own_speed(client: TestClient) -> None:
+    """ZBX8000-L10 (thread depth 1.397 mm, PV limit 0.105 MPa m/s): out with 4 kg and 15 N
+    at 150 mm/s (900 rpm), 21 N accelerating; back with 1.5 kg and 5 N at 250 mm/s
+    (1500 rpm), 8.75 N accelerating. The seed's PV = F n / (180 h): out 21 x 900 /
+    (180 x 1.397 mm) = 0.07516 MPa m/s, back 0.0522. The out move's thrust at the back
+    move's speed, 0.1253, is no segment of the cycle: the nut passes at 72 %."""
+    moves = [
+        {"distance_mm": 300, "speed_mm_s": 150, "accel_mm_s2": 1500, "decel_mm_s2": 1500,
+         "dwell_s": 0.3, "moving_mass_kg": 4, "load_n": 15, "load_direction": "opposes"},
+        {"distance_mm": -300, "speed_mm_s": 250, "accel_mm_s2": 2500, "decel_mm_s2": 2000,
+         "dwell_s": 0.7, "moving_mass_kg": 1.5, "load_n": 5, "load_direction": "opposes"},
+    ]  # fmt: skip
+    axis = {"load_n": 0, "speed_mm_s": 250, "length_mm": 500}
+    candidate = evaluate(client, "ZBX8000-L10", **axis, moves=moves)
+    assert candidate["pv"]["value_mpa_m_s"] == pytest.approx(21 * 900 / (180 * 1.397e-3) / 1e6)
+    pv = check(candidate, "pv")
+    assert pv["passed"] and pv["utilization"] == pytest.approx(0.07516 / 0.105, rel=1e-3)
+    assert "21 N at 900 rpm" in pv["message"]

@@ -33,7 +33,8 @@ class NutPV(Check):
     description = (
         "A plastic nut heats and wears with pressure times sliding speed; above its PV "
         "limit it fails early. Judged at the peak thrust (an accelerating segment reaches "
-        "the top speed still carrying m a) and the top speed. The limit is the nut's "
+        "the top speed still carrying m a) and the top speed; in a cycle of moves, at each "
+        "move's own, the move whose thrust times speed is largest. The limit is the nut's "
         "rating derated in a straight line from the 20 °C rating to nothing at the "
         "material's highest temperature, at the ambient (its own friction heat is the PV "
         "itself; the nut heat check judges the rise), times a factor for its lubrication."
@@ -55,10 +56,10 @@ class NutPV(Check):
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_peak": q.axis.peak_force_n,
+            "F_peak": q.nut.pv_force_n,
             "H_T": t.helix_travel_m,
             "h": t.thread_depth_m,
-            "n": q.axis.rpm,
+            "n": q.nut.pv_rpm,
             "PV_nut": t.pv_limit_pa_m_s,
             "T_ambient": np.full(len(t), app.ambient_c),
             "T_max": t.temperature_max_c,
@@ -68,10 +69,15 @@ class NutPV(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        at: dict[str, Amount | str | Phrase] = {}
+        if app.moves:  # each move at its own thrust and speed
+            at = {"thrust": Amount(r.nut.pv_force_n, "force"), "n": Amount(r.nut.pv_rpm, "rpm")}
+        where = "the peak thrust" if not at else "the move that loads it most, {thrust} at {n}"
         return Phrase(
-            "PV at the peak thrust, {pv}, " + verb + " the nut limit {limit}: its rating "
+            "PV at " + where + ", {pv}, " + verb + " the nut limit {limit}: its rating "
             "{rating} {derated}.",
             {
+                **at,
                 "pv": Amount(r.nut.pv_pa_m_s, "pv"),
                 "limit": Amount(r.nut.pv_limit_pa_m_s, "pv"),
                 "rating": Amount(s.pv_limit_pa_m_s or 0.0, "pv"),
