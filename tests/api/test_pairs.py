@@ -109,7 +109,7 @@ def test_the_pairs_rank_by_the_number_they_show(client: TestClient, rank: str, f
 
 
 def test_the_smallest_motor_ranks_first_by_size(client: TestClient) -> None:
-    """The SS2421-5041 holds 0.083 N m, the least of the library (the NEMA 11 0.095):
+    """The SS2421-5041 holds 0.083 N m, the least of the library (the NEMA 11 0.0932):
     ranked by motor size (its curve at standstill, the microstepping pull-out
     0.083 / sqrt 2 = 0.0587 N m), its pairs come first."""
     first = _pairs(client, pair_rank="motor_size")["pairs"][0]
