@@ -38,7 +38,7 @@ from app.contract.pairs import MotorsOut, PairRankIn, PairsOut, PairsQuery
 from app.contract.schemas import ApplicationIn
 from app.contract.screws import CatalogScrewIn, CustomScrewIn, EvaluateIn, NutMaterialsOut
 from app.report.formulas import CHECKS_OUT
-from app.report.machine import UnknownChoice, run_machine
+from app.report.machine import AxisInputError, UnknownChoice, run_machine
 from app.report.pairs import motors_out, run_pairs
 from app.report.present import nut_materials_out, series_dict
 from app.report.service import (
@@ -354,6 +354,9 @@ async def machine_post(request: Request, body: MachineIn, catalog: CatalogDep) -
 def _machine(body: MachineIn, catalog: CatalogDep) -> Response:
     try:
         return ModelJSON(run_machine(body, catalog))
+    except AxisInputError as exc:
+        field, message = exc.args
+        raise AppError(422, "invalid input", [{"field": field, "message": message}]) from exc
     except UnknownChoice as exc:
         i, choice = exc.args
         raise AppError(

@@ -4,7 +4,7 @@
 from types import GenericAlias
 from typing import Any, Optional, cast
 
-from pydantic import BaseModel, ConfigDict, Field, create_model
+from pydantic import BaseModel, ConfigDict, Field, create_model, field_validator
 
 from app.contract.inputs import ApplicationIn
 from app.contract.schemas import CandidateSummaryOut
@@ -16,7 +16,7 @@ MAX_AXES = 3
 class AxisIn(BaseModel):
     """One axis of the stack, in the API's units."""
 
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
     name: str = Field(
         min_length=1, max_length=40, description="The axis's name, e.g. Z.", examples=["Z"]
@@ -52,6 +52,16 @@ class MachineIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     axes: list[AxisIn] = Field(min_length=1, max_length=MAX_AXES)
+
+    @field_validator("axes")
+    @classmethod
+    def _named_once(cls, axes: list[AxisIn]) -> list[AxisIn]:
+        """Each axis by a name of its own: the answer names the governing axis by it."""
+        names = [a.name.strip().casefold() for a in axes]
+        twice = sorted({a.name for a, n in zip(axes, names, strict=True) if names.count(n) > 1})
+        if twice:
+            raise ValueError(f"each axis needs a name of its own: {', '.join(twice)} repeats")
+        return axes
 
 
 MachineAxisOut = create_model(

@@ -4,6 +4,8 @@ import math
 from typing import Any
 
 from app.catalog import Catalog
+from app.catalog.motors import UndrivableMotor, UnknownMotor
+from app.catalog.supports import UnknownSupport
 from app.contract.fields import MOVING_MASS
 from app.contract.form import share_query
 from app.contract.machine import MachineIn
@@ -32,11 +34,21 @@ class UnknownChoice(LookupError):
     """An axis's chosen screw that the catalog does not hold: (axis index, id)."""
 
 
+class AxisInputError(ValueError):
+    """An axis's input the libraries refuse (an unknown motor or support unit, a drive
+    that cannot reach its current): (the input's path in the body, the message)."""
+
+
 def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
-    """The core's axes from the API's, each application in SI with its library motor."""
+    """The core's axes from the API's, each application in SI with its library motor;
+    ``AxisInputError`` naming the axis whose input a library refuses."""
     axes = []
-    for a in body.axes:
-        app, _, provenance = a.inputs.to_core_traced(catalog.motors, catalog.supports)
+    for i, a in enumerate(body.axes):
+        try:
+            app, _, provenance = a.inputs.to_core_traced(catalog.motors, catalog.supports)
+        except (UnknownMotor, UnknownSupport, UndrivableMotor) as exc:
+            field = getattr(exc, "field", "motor")
+            raise AxisInputError(f"axes.{i}.inputs.{field}", str(exc)) from exc
         axes.append(Axis(a.name, app, a.frame_kg, a.motor_kg, a.choice, provenance))
     return axes
 

@@ -104,7 +104,14 @@ def machine_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, An
     context: dict[str, Any] = {"values": dict(params), "errors": errors, "n": MAX_AXES}
     if given and not errors:
         try:
-            machine = run_machine(MachineIn(axes=given), catalog)
+            body = MachineIn(axes=given)
+        except ValidationError as exc:  # two axes of one name
+            errors["form"] = "; ".join(
+                str(e["msg"]).removeprefix("Value error, ") for e in exc.errors()
+            )
+            return context
+        try:
+            machine = run_machine(body, catalog)
             context.update(machine=machine, query=machine_query(params, axes, machine))
         except UnknownChoice as exc:
             at, choice = exc.args

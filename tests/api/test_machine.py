@@ -1,11 +1,14 @@
 """POST /api/v1/machine: stacked axes sized together, the top axis first."""
 
+import json
 from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
 
 from tests.machine_axes import X, Z
+
+JSON = {"content-type": "application/json"}
 
 
 def printer(**z: Any) -> dict[str, Any]:
@@ -114,3 +117,25 @@ def test_an_axiss_library_motor_brings_its_curves_provenance(client: TestClient)
     r = client.post("/api/v1/machine", json={"axes": [{"name": "X", "inputs": axis}]})
     found = [c for c in r.json()["axes"][0]["candidates"] if c["governing_check"] == "motor_curve"]
     assert found and all(c["governing_limit_provenance"] == "assumed" for c in found)
+
+
+def test_a_machines_own_bad_values_are_named_by_axis(client: TestClient) -> None:
+    """A frame mass of NaN is not a finite number (not "at most 10000"); an unknown motor
+    on an axis is refused on that axis's input; two axes of one name are refused (the
+    answer names the governing axis by its name)."""
+    nan = printer()
+    nan["axes"][1]["frame_kg"] = float("nan")
+    r = client.post("/api/v1/machine", content=json.dumps(nan), headers=JSON)
+    assert r.status_code == 422
+    (detail,) = r.json()["detail"]
+    assert detail["field"] == "axes.1.frame_kg" and "finite" in detail["message"]
+    motor = printer()
+    motor["axes"][1]["inputs"] = {**X, "motor": "nope"}
+    r = client.post("/api/v1/machine", json=motor)
+    assert r.status_code == 422
+    assert r.json()["detail"][0]["field"] == "axes.1.inputs.motor"
+    twice = printer()
+    twice["axes"][1]["name"] = "z"
+    r = client.post("/api/v1/machine", json=twice)
+    assert r.status_code == 422 and r.json()["detail"][0]["field"] == "axes"
+    assert "Z, z repeats" in r.json()["detail"][0]["message"]

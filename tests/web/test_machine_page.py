@@ -121,3 +121,13 @@ def test_an_axis_below_one_with_no_screw_says_its_mass_leaves_that_screw_out(
     }
     api = client.post("/api/v1/machine", json=body).json()["axes"]
     assert api[0]["chosen"] is None and [a["uncounted"] for a in api] == [[], ["Z"]]
+
+
+def test_two_axes_of_one_name_are_said_on_the_form(client: TestClient) -> None:
+    """The machine names its governing axis by its name: two axes called Z are refused
+    with the form's error, not sized (nor a server error)."""
+    page = client.get("/machine?" + urlencode({**AXES, "name2": "Z"}))
+    assert page.status_code == 422
+    assert 'id="e-form"' in page.text and "each axis needs a name of its own" in page.text
+    nan = client.get("/machine?" + urlencode({**AXES, "frame1": "nan"}))
+    assert nan.status_code == 422 and 'id="e-frame1"' in nan.text
