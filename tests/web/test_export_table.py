@@ -60,3 +60,18 @@ def test_the_governing_check_is_named_by_its_label_beside_its_id(client: TestCli
     assert passed
     for row in passed:
         assert row["verdict.governs_label"] == labels[row["governing_check"]]
+
+
+def test_a_move_gives_each_row_its_peak_and_rms_torque(client: TestClient) -> None:
+    """With a move, the CSV carries the peak and the RMS motor torque the results table
+    shows, each the API's for that screw."""
+    move = {"stroke": "300", "accel": "1000", "moving_mass_kg": "5"}
+    rows = _table(client.get("/export.csv", params={**AXIS, **move}).text)
+    api_move = {"stroke_mm": "300", "accel_mm_s2": "1000", "moving_mass_kg": "5"}
+    api = client.get("/api/v1/select", params={**API_AXIS, **api_move, "detail": "full"}).json()
+    passed = [r for r in rows if r["status"] == "passed"]
+    assert passed and len(passed) == len(api["candidates"])
+    for row, candidate in zip(passed, api["candidates"], strict=True):
+        for key in ("rms_nm", "peak_motor_nm"):
+            cell = float(row[f"torque.{key.removesuffix('_nm')} [N m]"])
+            assert abs(cell - candidate["torque"][key]) <= 1e-9 * candidate["torque"][key]

@@ -90,6 +90,7 @@ ROWS: tuple[Reported, ...] = (
         shown="move",
         css="torque-rms",
         ranks=("rms",),
+        csv=True,
         compare=True,
         formula=Formula(profile.rms_torque),
         views=("summary",),
