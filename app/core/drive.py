@@ -13,7 +13,7 @@ from app.core.formulas import (
     stepping,
     torque,
 )
-from app.core.model import Application, Move, Segment
+from app.core.model import FIX_MARGIN, Application, Move, Segment
 from app.core.table import Array, CandidateTable, filled
 
 
@@ -121,7 +121,7 @@ def motor_point(
     p = c.fastest
     peak_rpm = worst_rpm = rpm
     nan = filled(len(t), np.nan)
-    fitting = fitting_speed = nan
+    fitting = fitting_speed = fix_accel = fix_speed = nan
     parts: list[Segment[Array]] = []
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
@@ -139,8 +139,10 @@ def motor_point(
         peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = fitting_accel(app, parts, signed, index, worst_rpm)
+            fix_accel = fitting_accel(app, parts, signed, index, worst_rpm, 1.0 + FIX_MARGIN)
         if app.motor_curve and not app.moves:
             fitting_speed = slower_fit(app, magnitude, speeds, p.peak_speed_m_s)
+            fix_speed = slower_fit(app, magnitude, speeds, p.peak_speed_m_s, 1.0 + FIX_MARGIN)
     curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan
     return {
         "peak_rpm": peak_rpm,
@@ -154,17 +156,25 @@ def motor_point(
         "motor_curve_nm": curve,
         "motor_fitting_accel_m_s2": fitting,
         "motor_fitting_speed_m_s": fitting_speed,
+        "motor_fix_accel_m_s2": fix_accel,
+        "motor_fix_speed_m_s": fix_speed,
         **cycle_energy.cycle_energy(app, t, parts, c.profiles),
     }
 
 
 def fitting_accel(
-    app: Application, parts: list[Segment[Array]], torque_nm: Array, worst: Array, rpm: Array
+    app: Application,
+    parts: list[Segment[Array]],
+    torque_nm: Array,
+    worst: Array,
+    rpm: Array,
+    margin: float = 1.0,
 ) -> Array:
     """The acceleration [m/s^2] at which each candidate's worst segment fits the motor
     curve, where that segment accelerates: its torque is affine in the acceleration,
     T(a) = T_run + k a with T_run the constant-speed segment's that follows, so
-    a = (T_curve / SF - T_run) / k, the curve read at the segment's speed ``rpm``. NaN
+    a = (T_curve / (SF margin) - T_run) / k, the curve read at the segment's speed
+    ``rpm``; ``margin`` above 1 leaves the torque that much below the curve (a fix's). NaN
     where another segment is the worst, or where no acceleration fits (k <= 0, or T_run
     alone over the curve)."""
     columns = np.arange(torque_nm.shape[1])
@@ -172,12 +182,14 @@ def fitting_accel(
     after = np.minimum(worst + 1, len(parts) - 1)
     t_acc, t_run = torque_nm[worst, columns], torque_nm[after, columns]
     slope = (t_acc - t_run) / app.accel_m_s2
-    room = segments.curve_torque(app, rpm) / app.torque_safety_factor - t_run
+    room = segments.curve_torque(app, rpm) / (app.torque_safety_factor * margin) - t_run
     fits = accelerating & (slope > 0.0) & (room > 0.0)
     return np.where(fits, room / np.where(fits, slope, 1.0), np.nan)
 
 
-def slower_fit(app: Application, torque_nm: Array, rpm: Array, peak_speed_m_s: float) -> Array:
+def slower_fit(
+    app: Application, torque_nm: Array, rpm: Array, peak_speed_m_s: float, margin: float = 1.0
+) -> Array:
     """The top speed [m/s] at which every segment of the move fits the motor curve, from
     each segment's torque magnitude ``torque_nm`` and speed ``rpm`` (a row per segment, a
     column per candidate). A segment's torque does not depend on the speed (the thread's
@@ -186,7 +198,8 @@ def slower_fit(app: Application, torque_nm: Array, rpm: Array, peak_speed_m_s: f
     usable curve still gives its torque times the safety factor (``segments.curve_speed``),
     and the top speed ``peak_speed_m_s`` scales by the smallest of those over the
     segment's rpm. NaN where a segment needs more than the curve gives at its lowest
-    speed (a dwell's hold, or a torque no slower move lowers)."""
-    most = segments.curve_speed(app, torque_nm * app.torque_safety_factor)
+    speed (a dwell's hold, or a torque no slower move lowers). ``margin`` above 1 leaves
+    each torque that much below the curve (a fix's)."""
+    most = segments.curve_speed(app, torque_nm * app.torque_safety_factor * margin)
     ratio = np.divide(most, rpm, out=np.where(np.isnan(most), np.nan, np.inf), where=rpm > 0.0)
     return np.asarray(peak_speed_m_s * ratio.min(axis=0), dtype=np.float64)

@@ -35,6 +35,11 @@ STANDARD_GRAVITY_M_S2 = 9.80665
 #: A check passes up to this utilisation: 1 plus rounding, so that an offered remedy
 #: (e.g. "reduce the axial load to 369.5 N") passes when applied exactly.
 PASS_UTILIZATION = 1.0 + 1e-9
+#: A fix proposes values this far inside the limit they are worked out from (a shorter
+#: length, a larger size, a lower speed, a stronger motor), so that the fixed design does
+#: not sit on the limit: a figure rounded for display would otherwise land at a
+#: utilisation just above 1. ``checks.base.MARGIN_NOTE`` says so in the fix.
+FIX_MARGIN = 0.05
 
 
 def holds(margin: Any) -> Any:

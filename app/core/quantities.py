@@ -297,6 +297,10 @@ class MotorPoint(Generic[V]):
     #: the top speed at which every segment fits the curve (NaN: none, or a cycle of
     #: moves, whose speeds are the moves')
     motor_fitting_speed_m_s: V
+    #: the same two with the torque ``FIX_MARGIN`` inside the curve: the figures a fix
+    #: proposes, which keep the check's margin when applied
+    motor_fix_accel_m_s2: V
+    motor_fix_speed_m_s: V
     #: The stepper's controller: step pulses per second at the peak rpm and the travel
     #: of one pulse [m] (NaN without a step angle).
     step_rate_hz: V

@@ -22,6 +22,8 @@ from tests.core.conftest import light_app
 SCALAR_ONLY = {
     "motor_fitting_accel_m_s2",
     "motor_fitting_speed_m_s",
+    "motor_fix_accel_m_s2",
+    "motor_fix_speed_m_s",
     "friction_power_w",
     "nut_temperature_rise_k",
 }

@@ -107,6 +107,10 @@ def test_a_curve_that_passes_and_one_that_fails_at_the_acceleration_only(
     assert limits is not None
     fitted = replace(_curve_app(2 * between - 1.0), accel_m_s2=limits["accel_m_s2"])
     assert {c.name: c.passed for c in evaluate(fitted, b8000_l10).checks}["motor_curve"]
+    # the fix's own figure keeps the torque 5 % inside the curve, as its note promises
+    fixed = replace(fitted, accel_m_s2=check.fix.values["accel"].value)
+    applied = next(c for c in evaluate(fixed, b8000_l10).checks if c.name == "motor_curve")
+    assert applied.utilization is not None and applied.utilization <= 1.0 / 1.05 + 1e-9
 
 
 def test_the_motor_curve_names_the_top_speed_at_which_every_segment_fits(
@@ -128,9 +132,14 @@ def test_the_motor_curve_names_the_top_speed_at_which_every_segment_fits(
     assert not check.passed and check.input_limits is not None
     assert check.input_limits["speed_m_s"] == pytest.approx(expected, rel=1e-9)
     assert expected < app.speed_m_s
-    # the fix names it with the fixes' margin: 5 % below
+    # the fix names the speed where the torque is 5 % inside the curve, 1200 (1 - 1.05 SF
+    # T_max) rpm: applied, the check passes with that margin
     assert check.fix is not None and "a top speed of at most {speed}" in check.fix.template
-    assert check.fix.values["speed"].value == pytest.approx(expected * 0.95, rel=1e-9)
+    fix_speed = check.fix.values["speed"].value
+    assert fix_speed == pytest.approx(1200.0 * (1.0 - 1.05 * need) * b8000_l10.lead_m / 60.0)
+    fixed = evaluate(replace(app, speed_m_s=fix_speed), b8000_l10)
+    utilization = {c.name: c.utilization for c in fixed.checks}["motor_curve"]
+    assert utilization is not None and utilization <= 1.0 / 1.05 + 1e-9
     for share, passes in ((0.999, True), (1.01, False)):
         slower = evaluate(replace(app, speed_m_s=expected * share), b8000_l10)
         assert {c.name: c.passed for c in slower.checks}["motor_curve"] is passes

@@ -14,7 +14,7 @@ from typing import ClassVar, Literal
 import numpy as np
 
 from app.core import motion
-from app.core.model import FIXITY_ORDER, Application, EndFixity, ScrewSpec
+from app.core.model import FIX_MARGIN, FIXITY_ORDER, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities, compression_sign
 from app.core.table import Array, CandidateTable, Mask, Reach, filled
@@ -43,11 +43,6 @@ __all__ = [
 
 #: A limit rejects a candidate; advice is reported beside it.
 Kind = Literal["limit", "advice"]
-#: A fix proposes values this far inside the limit they are worked out from (a shorter
-#: length, a larger size, a lower speed, a stronger motor), so that the fixed design does
-#: not sit on the limit: a figure rounded for display would otherwise land at a
-#: utilisation just above 1. ``MARGIN_NOTE`` says so in the fix.
-FIX_MARGIN = 0.05
 MARGIN_NOTE = " Each figure keeps a 5 % margin to its limit."
 
 

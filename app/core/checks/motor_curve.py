@@ -15,7 +15,6 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     at_least,
-    at_most,
     everywhere,
 )
 from app.core.formulas import stepper
@@ -194,13 +193,19 @@ class MotorCurve(Check):
                 + MARGIN_NOTE,
                 values,
             )
+        # the figures that leave the torque FIX_MARGIN inside the curve, as promised
         options = []
-        if accel is not None:
-            values["accel"] = Amount(at_most(accel), "accel")
+        fix_accel, fix_speed = r.motor.motor_fix_accel_m_s2, r.motor.motor_fix_speed_m_s
+        if accel is not None and fix_accel > 0.0:
+            values["accel"] = Amount(fix_accel, "accel")
             options.append("an acceleration of at most {accel}")
-        if speed is not None:
-            values["speed"] = Amount(at_most(speed), "speed")
+        if speed is not None and 0.0 < fix_speed < app.speed_m_s:
+            values["speed"] = Amount(fix_speed, "speed")
             options.append("a top speed of at most {speed}")
+        if not options:
+            return Phrase(
+                "The {segment} segment is {short} short: " + motor + "." + MARGIN_NOTE, values
+            )
         return Phrase(
             "The {segment} segment is {short} short: "
             + ", ".join(options)
