@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 from app.core import motion, segments
 from app.core.checks import BY_NAME, ball_life
 from app.core.checks.base import Check
-from app.core.input_rules import refused
+from app.core.input_rules import read_inputs, refused
 from app.core.model import Application, AxisProvenance, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
 from app.core.quantities import PART_OF, PARTS, Quantities, quantity
@@ -267,8 +267,8 @@ class CheckResult(NamedTuple):
         if self.passed:
             return None
         at = self.slot
-        limits = self.check.input_limits(at.app, at.screw, at.row)
-        return dict(limits) if limits else None
+        limits = read_inputs(at.app, self.check.input_limits(at.app, at.screw, at.row))
+        return limits or None
 
 
 class Slot:
@@ -302,7 +302,7 @@ class Slot:
             # only the cycles a day refuse a move: without them no check's limits are read
             note = None
             if fix is not None and app.cycles_per_day is not None:
-                note = refused(app, check.input_limits(app, screw, row))
+                note = refused(app, read_inputs(app, check.input_limits(app, screw, row)))
             if fix is not None and note is not None:  # the fix's own fields kept as named
                 fix = Phrase(fix.template + " {refused}", {**fix.values, "refused": note})
             self._fixes[check.name] = fix

@@ -17,6 +17,21 @@ from app.core.phrase import Amount, Phrase
 
 #: The inputs a check's fix may name that set how long a cycle takes.
 MOVE_INPUTS = ("speed_m_s", "accel_m_s2")
+#: The scalar inputs of the move that a cycle of the user's own moves replaces (each of
+#: its moves gives its own): a change of one moves nothing there.
+REPLACED_BY_MOVES = frozenset(
+    {"speed_m_s", "accel_m_s2", "decel_m_s2", "dwell_s", "moving_mass_kg", "load_n"}
+)
+
+
+def read_inputs(app: Application, limits: Mapping[str, float] | None) -> dict[str, float]:
+    """The inputs of a check's ``input_limits`` that ``app`` reads: all of them, but in a
+    cycle of the user's own moves none the moves replace (``REPLACED_BY_MOVES``)."""
+    return {
+        key: value
+        for key, value in (limits or {}).items()
+        if not (app.moves and key in REPLACED_BY_MOVES)
+    }
 
 
 def least_inputs(app: Application) -> dict[str, float]:

@@ -158,3 +158,22 @@ def test_the_pv_of_a_cycle_is_each_moves_thrust_at_its_own_speed(client: TestCli
     pv = check(candidate, "pv")
     assert pv["passed"] and pv["utilization"] == pytest.approx(0.07516 / 0.105, rel=1e-3)
     assert "21 N at 900 rpm" in pv["message"]
+
+
+def test_a_cycle_of_moves_is_offered_no_change_of_an_input_its_moves_replace(
+    client: TestClient,
+) -> None:
+    """A 20 kg lift as two moves at 150 and 300 mm/s on the TR-304 family: the nuts slide
+    too fast. The speed input is not the moves' speed, so no change of it is offered (it
+    would change nothing); each fix caps every move's speed instead."""
+    moves = "500:150:1000:1000:1:20:0:auto;-500:300:1000:1000:1:20:0:auto"
+    query = {"orientation": "vertical", "load_n": 0, "speed_mm_s": 150, "length_mm": 700,
+             "moves": moves, "family": "TR-304"}  # fmt: skip
+    body = client.get(f"{API}/select", params=query).json()
+    assert body["counts"]["passed"] == 0
+    changed = {key for change in body["summary"]["changes"] for key in change["inputs"]}
+    assert not changed & {"speed_mm_s", "accel_mm_s2", "moving_mass_kg", "load_n"}
+    nearest = body["rejected"][0]["id"]
+    fixes = [c["fix"] for c in evaluate(client, nearest, **query)["checks"] if not c["passed"]]
+    sliding = next(f for f in fixes if "larger lead" in f)
+    assert sliding.startswith("Run every move at most")

@@ -36,6 +36,7 @@ __all__ = [
     "allowed_load",
     "at_least",
     "at_most",
+    "run_at_most",
     "same",
     "sentence",
     "stiffer_fixity",
@@ -174,6 +175,16 @@ def same(t: CandidateTable, value: float | None) -> Array:
 def where_given(capacity: Array) -> Mask:
     """Candidates that have this limit (not NaN)."""
     return ~np.isnan(capacity)
+
+
+def run_at_most(app: Application) -> str:
+    """The words that cap the speed: of the move, or of every move of a cycle of the
+    user's own (whose speeds the speed input does not set).
+
+    >>> run_at_most(Application(load_n=1.0, speed_m_s=0.1, length_m=0.5))
+    'Run at most'
+    """
+    return "Run every move at most" if app.moves else "Run at most"
 
 
 def load_input(app: Application, allowed_n: float, compressive: bool = False) -> dict[str, float]:

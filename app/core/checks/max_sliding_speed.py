@@ -13,6 +13,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     at_most,
+    run_at_most,
     where_given,
 )
 from app.core.phrase import Amount, Phrase
@@ -65,8 +66,8 @@ class MaxSlidingSpeed(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
-            "Move at most {speed}, or choose a larger lead (fewer turns for the same travel)."
-            + MARGIN_NOTE,
+            run_at_most(app) + " {speed}, or choose a larger lead (fewer turns for the same "
+            "travel)." + MARGIN_NOTE,
             {"speed": Amount(at_most(self._max_linear_speed(app, s, r)), "speed")},
         )
 

@@ -13,6 +13,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     at_most,
+    run_at_most,
     same,
     where_given,
 )
@@ -68,10 +69,11 @@ class TraverseSpeed(Check):
         lead = reach.made_lead(s, faster[0][0], larger=True) if faster else None
         if lead is None:
             return Phrase(
-                "Run at most {limit}." + MARGIN_NOTE, {"limit": Amount(at_most(_limit(s)), "speed")}
+                run_at_most(app) + " {limit}." + MARGIN_NOTE,
+                {"limit": Amount(at_most(_limit(s)), "speed")},
             )
         return Phrase(
-            "Run at most {limit}, or a lead of at least {lead}." + MARGIN_NOTE,
+            run_at_most(app) + " {limit}, or a lead of at least {lead}." + MARGIN_NOTE,
             {"limit": Amount(at_most(_limit(s)), "speed"), "lead": Amount(lead, "length")},
         )
 
