@@ -69,6 +69,9 @@ def promises(app: Application, screw: ScrewSpec, name: str, fix: Phrase) -> dict
     lead = amount(fix, "lead")
     if lead is not None:
         out["lead"] = utilization(app, replace(screw, lead_m=lead), name)
+    speed = amount(fix, "speed")
+    if speed is not None:
+        out["speed"] = utilization(replace(app, speed_m_s=speed), screw, name)
     return out
 
 
@@ -137,7 +140,7 @@ def test_every_option_is_offered_and_kept(catalog: Catalog) -> None:
         f"{name}: {option}"
         for name in MOUNTING_FIXES
         for option in ("stiffer mounting", "stiffer mounting's length", "length", "root diameter")
-    } | {"critical_speed: lead"}
+    } | {"critical_speed: lead", "critical_speed: speed"}
     assert expected <= set(seen), sorted(expected - set(seen))
     for option, found in seen.items():
         assert all(u <= PROMISED for u in found), (option, found)

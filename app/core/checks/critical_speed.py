@@ -16,6 +16,7 @@ from app.core.checks.base import (
     at_least,
     at_most,
     everywhere,
+    run_at_most,
     sentence,
     stiffer_fixity,
 )
@@ -123,6 +124,9 @@ class CriticalSpeed(Check):
                 "the ends {stiffer})"
             )
             options.append("an unsupported length of at most {length} with the ends {fixity}")
+        speed = geometry.linear_speed(r.column.allowed_rpm, s.lead_m)
+        values["speed"] = Amount(at_most(speed), "speed")
+        options.append(run_at_most(app).lower() + " {speed}")
         use = "Use " if options[0].startswith("a ") else ""
         return sentence(use + ", or ".join(options) + "." + MARGIN_NOTE, values)
 
