@@ -177,3 +177,12 @@ def test_a_cycle_of_moves_is_offered_no_change_of_an_input_its_moves_replace(
     fixes = [c["fix"] for c in evaluate(client, nearest, **query)["checks"] if not c["passed"]]
     sliding = next(f for f in fixes if "larger lead" in f)
     assert sliding.startswith("Run every move at most")
+
+
+def test_a_torque_fix_names_only_what_the_axis_has_to_lower(client: TestClient) -> None:
+    """A pure-inertia axis (no load, 5 kg) on too small a drive: the torque fix offers a
+    lower moving mass or acceleration, not a lower load, which is already 0."""
+    axis = {"load_n": 0, "moving_mass_kg": 5, "speed_mm_s": 200, "length_mm": 500,
+            "stroke_mm": 300, "accel_mm_s2": 5000, "max_torque_nm": 0.01}  # fmt: skip
+    fix = check(evaluate(client, "B8000-L10", **axis), "torque")["fix"]
+    assert "lower moving mass or acceleration" in fix and "load" not in fix

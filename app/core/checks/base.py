@@ -36,6 +36,7 @@ __all__ = [
     "allowed_load",
     "at_least",
     "at_most",
+    "lighter",
     "run_at_most",
     "same",
     "sentence",
@@ -175,6 +176,20 @@ def same(t: CandidateTable, value: float | None) -> Array:
 def where_given(capacity: Array) -> Mask:
     """Candidates that have this limit (not NaN)."""
     return ~np.isnan(capacity)
+
+
+def lighter(app: Application) -> str:
+    """The words for what lowers a torque besides the acceleration and the lead: the
+    load where the axis has one, the moving mass where it has one (its m a, and its
+    weight on a vertical axis); empty for neither.
+
+    >>> lighter(Application(load_n=0.0, speed_m_s=0.1, length_m=0.5, moving_mass_kg=2.0))
+    'moving mass'
+    """
+    moves = app.moves
+    loaded = app.load_n > 0.0 if not moves else any(m.load_n > 0.0 for m in moves)
+    heavy = app.moving_mass_kg > 0.0 if not moves else any(m.moving_mass_kg > 0.0 for m in moves)
+    return " or ".join(word for word, has in (("load", loaded), ("moving mass", heavy)) if has)
 
 
 def run_at_most(app: Application) -> str:

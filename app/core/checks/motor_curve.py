@@ -16,6 +16,7 @@ from app.core.checks.base import (
     ScrewSpec,
     at_least,
     everywhere,
+    lighter,
 )
 from app.core.formulas import stepper
 from app.core.phrase import Amount, Phrase
@@ -184,12 +185,14 @@ class MotorCurve(Check):
         accel, speed = accel_that_fits(r), speed_that_fits(app, r)
         if accel is None and speed is None:
             lower = "speed, acceleration" if app.moves else "acceleration"
+            less = lighter(app)
             return Phrase(
                 "The {segment} segment is {short} short: "
                 + motor
                 + ", or a lower "
                 + lower
-                + " or load."
+                + (" or " + less if less else "")
+                + "."
                 + MARGIN_NOTE,
                 values,
             )

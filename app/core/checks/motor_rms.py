@@ -13,6 +13,7 @@ from app.core.checks.base import (
     ScrewSpec,
     at_least,
     everywhere,
+    lighter,
     same,
 )
 from app.core.phrase import Amount, Phrase
@@ -59,8 +60,9 @@ class MotorRms(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        less = lighter(app)
         return Phrase(
             "A motor rated for at least {need} continuous, or a longer dwell, lower "
-            "acceleration or load." + MARGIN_NOTE,
+            "acceleration" + (" or " + less if less else "") + "." + MARGIN_NOTE,
             {"need": Amount(at_least(r.motor.motor_rms_needed_nm), "torque")},
         )

@@ -16,6 +16,7 @@ from app.core.checks.base import (
     ScrewSpec,
     at_least,
     everywhere,
+    lighter,
     same,
 )
 from app.core.phrase import Amount, Phrase
@@ -67,8 +68,11 @@ class DriveTorque(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        less = lighter(app)
         return Phrase(
-            "A drive of at least {req}, or a shorter lead, lower load or acceleration."
+            "A drive of at least {req}, or a shorter lead, lower "
+            + (less + " or " if less else "")
+            + "acceleration."
             + MARGIN_NOTE,
             {"req": Amount(at_least(r.torque.required_nm), "torque")},
         )
