@@ -240,8 +240,9 @@ class ApplicationInputs(BaseModel):
         p = motion.move_profile(self.axis())
         if p is None or duty.cycles_fit_a_day(cycles, p):
             return self
+        cycle = "its moves" if self.moves else "out and back"
         message = (
-            f"must be at most {duty.most_cycles_per_day(p):.6g}: one cycle (out and back, "
+            f"must be at most {duty.most_cycles_per_day(p):.6g}: one cycle ({cycle}, "
             f"with the dwells) takes {p.cycle_time_s:.6g} s, and a day has "
             f"{life.SECONDS_PER_DAY:.0f} s"
         )

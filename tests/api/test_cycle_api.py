@@ -186,3 +186,15 @@ def test_a_torque_fix_names_only_what_the_axis_has_to_lower(client: TestClient) 
             "stroke_mm": 300, "accel_mm_s2": 5000, "max_torque_nm": 0.01}  # fmt: skip
     fix = check(evaluate(client, "B8000-L10", **axis), "torque")["fix"]
     assert "lower moving mass or acceleration" in fix and "load" not in fix
+
+
+def test_too_many_cycles_a_day_name_the_moves_they_are_made_of(client: TestClient) -> None:
+    """The cycle of MOVES takes 3 s: 30,000 cycles a day would take 90,000 s. The refusal
+    speaks of its moves, not of out and back."""
+    body = {"application": {**AXIS, "moves": MOVES, "cycles_per_day": 30_000},
+            "screw": {"catalog_id": "B8000-L10"}}  # fmt: skip
+    response = client.post(f"{API}/evaluate", json=body)
+    assert response.status_code == 422
+    (detail,) = response.json()["detail"]
+    assert detail["field"].endswith("cycles_per_day")
+    assert "must be at most 28800: one cycle (its moves, with the dwells)" in detail["message"]

@@ -25,7 +25,8 @@ class MotorRms(Check):
     judges_motor = True
     label = "Motor RMS torque"
     description = (
-        "The root-mean-square motor torque over the cycle (out and back, with the dwells), "
+        "The root-mean-square motor torque over the cycle (out and back, or the moves given, "
+        "with the dwells), "
         "times the torque safety factor, against the motor's continuous torque rating."
     )
     quantity = "torque"
