@@ -216,7 +216,7 @@ def _undrivable(app: Application) -> str | None:
     return undrivable_message(app.motor_supply_v or 0.0, current, ohm)
 
 
-def _retyped_curve(app: Application, motor: Motor) -> tuple[tuple[float, float], ...]:
+def _retyped_curve(app: Application, motor: Motor) -> Curve:
     """The pull-out curve of library stepper ``motor`` at the values typed in
     (``with_model_values``'s): the model's, or for a motor whose maker publishes its
     curve, that curve lowered as the model says the typed drive lowers it
@@ -235,9 +235,7 @@ def _retyped_curve(app: Application, motor: Motor) -> tuple[tuple[float, float],
     return under_published(published, typed, library)
 
 
-def under_published(
-    published: Curve, typed: Curve, library: Curve
-) -> tuple[tuple[float, float], ...]:
+def under_published(published: Curve, typed: Curve, library: Curve) -> Curve:
     """A maker's published pull-out curve at another drive: at each of its points, the
     least of its torque, that torque times the model's at the typed drive (``typed``)
     over the model's at the drive of the maker's chart (``library``), and the model's
