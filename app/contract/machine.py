@@ -41,9 +41,15 @@ class AxisIn(BaseModel):
     choice: str | None = Field(
         default=None,
         max_length=100,
-        description="The catalog screw chosen for this axis (null: its first-ranked). It "
-        "decides the mass the axes below carry.",
+        description="The catalog screw chosen for this axis (null or empty: its "
+        "first-ranked). It decides the mass the axes below carry.",
     )
+
+    @field_validator("choice", mode="before")
+    @classmethod
+    def _empty_is_first_ranked(cls, value: object) -> object:
+        """An empty choice is no choice, as on the page: the first-ranked screw."""
+        return None if isinstance(value, str) and not value.strip() else value
 
 
 class MachineIn(BaseModel):

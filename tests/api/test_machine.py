@@ -139,3 +139,11 @@ def test_a_machines_own_bad_values_are_named_by_axis(client: TestClient) -> None
     r = client.post("/api/v1/machine", json=twice)
     assert r.status_code == 422 and r.json()["detail"][0]["field"] == "axes"
     assert "Z, z repeats" in r.json()["detail"][0]["message"]
+
+
+def test_an_empty_choice_is_the_first_ranked_as_on_the_page(client: TestClient) -> None:
+    """The page sends an empty choice for an axis left to its first-ranked screw: so may
+    the API, with the same answer as no choice."""
+    given = client.post("/api/v1/machine", json=printer(choice="")).json()
+    plain = client.post("/api/v1/machine", json=printer()).json()
+    assert given["axes"][0]["chosen"]["id"] == plain["axes"][0]["chosen"]["id"]
