@@ -16,7 +16,7 @@ import pytest
 
 from app.catalog import Catalog
 from app.contract.units import render
-from app.core import motion
+from app.core import load_caps, motion
 from app.core.evaluate import evaluate
 from app.core.model import STANDARD_GRAVITY_M_S2, Application
 from app.core.record import Candidate
@@ -188,11 +188,11 @@ def test_the_largest_load_for_a_wear_thrust_inverts_it() -> None:
     0.3375 + 0.9775 F; a wear thrust of 0.5 N allows F = 0.1625 / 0.9775 = 0.1662 N. Past
     15 N the ramps grow with F too (a corner): F_w = (4 F x 4.5 + 2 F x 391) / 800 = F, so
     20 N allows F = 20 N. Below the 0.3375 N that m a alone gives, no load does."""
-    assert motion.largest_load_for_wear(PICK_AND_PLACE, 0.5) == pytest.approx(0.1625 / 0.9775)
-    assert motion.largest_load_for_wear(PICK_AND_PLACE, 20.0) == pytest.approx(20.0)
-    assert motion.largest_load_for_wear(PICK_AND_PLACE, 0.3) is None
+    assert load_caps.largest_load_for_wear(PICK_AND_PLACE, 0.5) == pytest.approx(0.1625 / 0.9775)
+    assert load_caps.largest_load_for_wear(PICK_AND_PLACE, 20.0) == pytest.approx(20.0)
+    assert load_caps.largest_load_for_wear(PICK_AND_PLACE, 0.3) is None
     for allowed_n in (0.5, 5.0, 14.9, 20.0, 100.0):
-        load_n = motion.largest_load_for_wear(PICK_AND_PLACE, allowed_n)
+        load_n = load_caps.largest_load_for_wear(PICK_AND_PLACE, allowed_n)
         assert load_n is not None
         at = replace(PICK_AND_PLACE, load_n=load_n)
         assert motion.wear_thrust(at) == pytest.approx(allowed_n, rel=1e-12)

@@ -13,7 +13,7 @@ from typing import ClassVar, Literal
 
 import numpy as np
 
-from app.core import motion
+from app.core import load_caps, motion
 from app.core.model import FIX_MARGIN, FIXITY_ORDER, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities, compression_sign
@@ -212,7 +212,7 @@ def load_input(app: Application, allowed_n: float, compressive: bool = False) ->
         bounds = [(c * g, c * h) for g, h in forms]
     else:
         bounds = [*forms, *((-g, -h) for g, h in forms)]
-    load = motion.largest_load(bounds, allowed_n)
+    load = load_caps.largest_load(bounds, allowed_n)
     return {} if load is None else {"load_n": load}
 
 

@@ -3,7 +3,7 @@ life required; shown as a band over the published scatter of the wear rate."""
 
 import numpy as np
 
-from app.core import motion
+from app.core import load_caps, motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -123,7 +123,7 @@ class WearLife(Check):
         years = app.required_life_years
         if not years or not np.isfinite(r.life.wear_life_years):
             return None
-        load_n = motion.largest_load_for_wear(
+        load_n = load_caps.largest_load_for_wear(
             app, r.life.wear_force_n * r.life.wear_life_years / years
         )
         return None if load_n is None else {"load_n": load_n}
