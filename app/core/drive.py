@@ -44,16 +44,13 @@ def torques(
     t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
     t_inertia = t_screw + t_motor + t_mass
     t_total = torque.total_torque(t_inertia, t.drag_max_nm, t_load)
-    t_start = np.maximum.reduce(
-        [
-            breakaway(app, t, force_n, move, j_screw),
-            *(
-                breakaway(app, t, motion.running_thrust(app, other), other, j_screw)
-                for other in app.moves
-                if other is not move
-            ),
-        ]
-    )
+    # each move's start; the lead move's inertia torques are those of the breakdown
+    starts = [breakaway(t, force_n + inertial_force_n, t_screw + t_motor)]
+    for other in app.moves:
+        if other is not move:
+            start_n = motion.running_thrust(app, other) + other.moving_mass_kg * other.accel_m_s2
+            starts.append(breakaway(t, start_n, spin_torque(app, t, other, j_screw)))
+    t_start = np.maximum.reduce(starts)
     magnitude = np.abs(np.array([m[3] for m in moving]))
     largest = np.maximum.reduce(magnitude, axis=0)
     peak = np.maximum(largest, t_start)
@@ -76,21 +73,20 @@ def torques(
     }
 
 
-def breakaway(
-    app: Application, t: CandidateTable, running_n: float, move: Move, j_screw: Array
-) -> Array:
-    """The torque that starts ``move`` from rest [N m]: its running thrust ``running_n``
-    and the force m a that accelerates its mass pass the thread at static friction, plus
-    the screw's (``j_screw``) and the rotor's inertia times the angular acceleration and
-    the nut's drag."""
+def breakaway(t: CandidateTable, start_n: float, spin_nm: Array) -> Array:
+    """The torque that starts a move from rest [N m]: its thrust ``start_n`` (the running
+    thrust and the force m a that accelerates its mass) through the thread at static
+    friction, the screw's and the rotor's inertia torque ``spin_nm`` and the nut's drag."""
+    thread: Array = torque.load_torque(start_n, t.lead_m, t.efficiency_static)
+    return thread + spin_nm + t.drag_max_nm
+
+
+def spin_torque(app: Application, t: CandidateTable, move: Move, j_screw: Array) -> Array:
+    """The screw's (``j_screw``) and the rotor's inertia times the angular acceleration
+    of ``move`` [N m]."""
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
-    thrust_n = running_n + move.moving_mass_kg * move.accel_m_s2
-    return (
-        torque.load_torque(thrust_n, t.lead_m, t.efficiency_static)
-        + torque.inertia_torque(j_screw, alpha)
-        + torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
-        + t.drag_max_nm
-    )
+    screw: Array = torque.inertia_torque(j_screw, alpha)
+    return screw + torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
 
 
 def controller(app: Application, t: CandidateTable, peak_rpm: Array) -> dict[str, Any]:

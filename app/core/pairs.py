@@ -18,13 +18,12 @@ from typing import Literal, NamedTuple
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.checks import BY_NAME
 from app.core.checks.base import Reach
 from app.core.index import CatalogIndex
 from app.core.model import Application, ScrewSpec
-from app.core.screening import Screening, screen_table
+from app.core.screening import failing_beyond, screen_table
 from app.core.selection import motor_use, screen
-from app.core.table import Array, CandidateTable, Mask
+from app.core.table import Array, CandidateTable
 
 #: How pairs rank: the smallest share of the motor used; the smallest motor (its torque
 #: at standstill, a cost proxy), then the share used; the lowest drive torque.
@@ -83,16 +82,6 @@ def _motor_pairs(
     )
 
 
-def _may_pass(alone: Screening) -> Mask:
-    """The screws that pass without a motor, or fail only checks a motor's own values
-    may clear (``Check.motor_may_clear``)."""
-    stuck = np.zeros(len(alone.passed), dtype=bool)
-    for name, failed in alone.failed_by_check.items():
-        if not BY_NAME[name].motor_may_clear:
-            stuck |= failed
-    return ~stuck
-
-
 def _order(rank: PairRank, found: _Found, size: Array) -> NDArray[np.intp]:
     """Positions of the pairs in rank order (``np.lexsort``: the last key first)."""
     keys = {
@@ -113,7 +102,8 @@ def rank_pairs(
     id and ``app`` driven by it; ``app`` itself has no motor. The passing pairs ranked by
     ``rank``, the first ``app.limit`` kept."""
     alone = screen(app, index)
-    candidates = np.flatnonzero(_may_pass(alone))
+    # those that pass alone, or fail only checks a motor's own values may clear
+    candidates = np.flatnonzero(~failing_beyond(alone, lambda check: check.motor_may_clear))
     table, rows = alone.table.take(candidates), alone.index[candidates]
     ids = list(motors)
     size = np.array([m.motor_curve[0][1] if m.motor_curve else np.nan for m in motors.values()])

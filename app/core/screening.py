@@ -5,7 +5,7 @@
 screw is screened as a table of one. So a check is computed by one piece of code.
 """
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from app.core.checks import BY_NAME, REGISTRY
-from app.core.checks.base import Measure, Reach
+from app.core.checks.base import Check, Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import Quantities, operating_point
 from app.core.table import Array, CandidateTable, Mask, filled
@@ -65,6 +65,17 @@ class Screening:
             self.warned[cut],
             self.reach,
         )
+
+
+def failing_beyond(s: Screening, cleared: Callable[[Check], bool]) -> Mask:
+    """Where each candidate of ``s`` fails a rejecting check for which ``cleared`` does
+    not hold: a check no input change clears (``Check.offers_inputs``), or one a motor's
+    own values cannot clear (``Check.motor_may_clear``)."""
+    stuck = np.zeros(len(s.passed), dtype=bool)
+    for name, failed in s.failed_by_check.items():
+        if not cleared(BY_NAME[name]):
+            stuck |= failed
+    return stuck
 
 
 #: What picks the eligible candidates of a table: (lead [m], coating, families, nut material).

@@ -26,7 +26,7 @@ from app.core.phrase import Amount, Phrase, join, plural
 from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.remedy import impossible, remedies
 from app.core.robustness import Robustness, Variants, robustness
-from app.core.screening import Screening, screen_table
+from app.core.screening import Screening, failing_beyond, screen_table
 from app.core.table import CandidateTable, Reach
 
 NO_MATCH = "No catalog screw with a {lead} lead matches the filters; try another lead or 'any'."
@@ -150,10 +150,7 @@ def _fixable_order(s: Screening, order: np.ndarray, skip: Sequence[int]) -> np.n
     (``Check.offers_inputs``), those at ``skip`` left out: where the nearest fail on the
     screw itself (a thread that does not self-lock), these are the screws a change of
     the application can admit (a slower move for a finer lead)."""
-    stuck = np.zeros(len(s.passed), dtype=bool)
-    for name, failed in s.failed_by_check.items():
-        if not BY_NAME[name].offers_inputs:
-            stuck |= failed
+    stuck = failing_beyond(s, lambda check: check.offers_inputs)
     keep = ~stuck[order] & ~np.isin(order, skip)
     fixable: np.ndarray = order[keep]
     return fixable
