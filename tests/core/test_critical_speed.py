@@ -175,3 +175,24 @@ def test_min_lead_remedy_brings_utilization_to_one(speed: float, n_allowed: floa
     """Seed: "use a longer lead": at the returned lead n = 60 v / lead is the allowed speed."""
     lead = cs.min_lead_for_speed(speed, n_allowed)
     assert geometry.screw_speed_rpm(speed, lead) / n_allowed == pytest.approx(1.0, rel=1e-9)
+
+
+#: HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, F 3.27: n_k = 2.71e8 f_n d_k /
+#: l_s^2 [rpm, mm], f_n 1.0 fixed-fixed, 0.692 fixed-simple, 0.446 simple-simple, 0.147
+#: fixed-free.
+HIWIN_FN = {"fixed-fixed": 1.0, "fixed-simple": 0.692, "simple-simple": 0.446, "fixed-free": 0.147}
+
+
+@pytest.mark.parametrize("fixity", list(HIWIN_FN))
+def test_a_ball_screws_critical_speed_is_at_most_hiwins(fixity: str) -> None:
+    """The beam times ``ball_screw_ratio`` for a steel root of 17.32 mm over 1000 mm is
+    HIWIN's F 3.27 within 1 %, and never more than 0.5 % above it (the beam's E / rho
+    against HIWIN's constant); the beam alone is 8.1 % above it fixed-free."""
+    d_mm, l_mm = 17.32, 1000.0
+    hiwin = 2.71e8 * HIWIN_FN[fixity] * d_mm / l_mm**2
+    beam = cs.critical_speed_rpm(d_mm / 1e3, l_mm / 1e3, STEEL_E, STEEL_RHO, fixity)
+    ours = beam * cs.ball_screw_ratio(fixity)
+    assert ours == pytest.approx(hiwin, rel=0.01)
+    assert ours <= hiwin * 1.005
+    if fixity == "fixed-free":
+        assert beam / hiwin == pytest.approx(1.081, abs=0.005)

@@ -1,5 +1,7 @@
 """Screw speed against the allowed fraction of its first whirling speed."""
 
+import numpy as np
+
 from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
@@ -37,9 +39,13 @@ class CriticalSpeed(Check):
     )
     quantity = "rpm"
     formula = (
-        "n = 60 * v / lead; n_allowed = SF * 60 / (2 * pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4"
+        "n = 60 * v / lead; "
+        "n_allowed = SF * k * 60 / (2 * pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4"
     )
-    source = "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; Thomson"
+    source = (
+        "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; Thomson; a ball "
+        "screw at most HIWIN BS-08-2-EN-1704-K F 3.27"
+    )
     sources = ("root_diameter", "youngs_modulus", "density")
     capacity_sources = ("root_diameter", "youngs_modulus", "density")
 
@@ -58,6 +64,8 @@ class CriticalSpeed(Check):
             "E": t.youngs_modulus_pa,
             "rho": t.density_kg_m3,
             "d_r": t.root_diameter_m,
+            # a ball screw's at most HIWIN's (``ball_screw_ratio``); a leadscrew's the beam's
+            "k": np.where(t.ball, critical_speed.ball_screw_ratio(app.end_fixity), 1.0),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
@@ -70,8 +78,14 @@ class CriticalSpeed(Check):
             "fixity": app.end_fixity,
         }
         text = "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity})."
+        if s.screw_type == "ball":
+            ball = critical_speed.ball_screw_ratio(app.end_fixity)
+            if ball < 1.0:
+                values["lower"] = f"{(1.0 - ball) * 100.0:.1f} %"
+                text += " HIWIN's mounting factor for these ends puts it {lower} below the beam's."
+            return Phrase(text, values)
         ratio = critical_speed.makers_table_ratio(app.end_fixity)
-        if not passed or s.screw_type == "ball" or ratio >= 1.0:
+        if not passed or ratio >= 1.0:
             return Phrase(text, values)
         # a leadscrew maker's table rates these ends below the beam: say where a pass stands
         table = r.column.allowed_rpm * ratio
@@ -90,6 +104,8 @@ class CriticalSpeed(Check):
             n_c = critical_speed.critical_speed_rpm(
                 s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity
             )
+            if s.screw_type == "ball":
+                n_c *= critical_speed.ball_screw_ratio(fixity)
             return critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor)
 
         lead = critical_speed.min_lead_for_speed(motion.reached_speed(app), r.column.allowed_rpm)

@@ -93,6 +93,37 @@ def makers_table_ratio(end_fixity: str) -> float:
     return min(1.0, LEADSCREW_FIXITY_FACTOR[end_fixity] / beam)
 
 
+#: HIWIN's mounting factors f_n for its ball screws' critical speed, n_k = 2.71e8 f_n d_k
+#: / l_s^2 [rpm, mm] (HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, F 3.27):
+#: 1.0 fixed-fixed, 0.692 fixed-simple, 0.446 simple-simple, 0.147 fixed-free.
+BALL_SCREW_FIXITY_FACTOR: dict[str, float] = {
+    "fixed-free": 0.147,
+    "simple-simple": 0.446,
+    "fixed-simple": 0.692,
+    "fixed-fixed": 1.0,
+}
+
+
+@formula(
+    "ratio = (f_n / f_n,simple) / (beta / pi)^2 where below 1",
+    "HIWIN BS-08-2-EN-1704-K F 3.27 mounting factors against the beam's eigenvalues",
+)
+def ball_screw_ratio(end_fixity: str) -> float:
+    """HIWIN's critical speed of a ball screw over the beam's for an end fixity [-]: its
+    mounting factor over simple-simple's, over the beam's (beta / pi)^2, where below 1.
+    HIWIN rates a fixed-free screw 7.5 % below the beam (its fixed end is not rigid), the
+    other mountings within 1.1 %.
+
+    >>> [round(ball_screw_ratio(f), 4) for f in ("fixed-free", "fixed-simple", "fixed-fixed")]
+    [0.9252, 0.9932, 0.9891]
+    >>> ball_screw_ratio("simple-simple")
+    1.0
+    """
+    factor = BALL_SCREW_FIXITY_FACTOR[end_fixity] / BALL_SCREW_FIXITY_FACTOR["simple-simple"]
+    beam = (END_FIXITY_BETA[end_fixity] / math.pi) ** 2
+    return min(1.0, factor / beam)
+
+
 @formula("n = SF x n_c", "Thomson (80 % of critical)")
 def allowed_speed_rpm(critical_rpm: float, safety_factor: float) -> float:
     """Allowed screw speed n_allowed = safety factor x n_c [rpm] (default factor 0.8).
