@@ -145,6 +145,8 @@ def with_library_motor(app: Application, motor: Motor) -> Application:
         motor_curve=app.motor_curve or motor.curve(app.motor_current_rms),
         motor_inertia_kg_m2=inertia if inertia is not None else motor.value("rotor_inertia_g_cm2"),
         motor_rms_torque_nm=rms if rms is not None else motor.continuous_torque_nm(),
+        # a continuous torque typed in holds at every speed, unless a zone is typed too
+        motor_rms_curve=app.motor_rms_curve or (motor.continuous_curve() if rms is None else ()),
         step_angle_deg=app.step_angle_deg or motor.step_angle_deg(),
     )
 
@@ -274,6 +276,7 @@ def without_motor(app: Application) -> Application:
         motor_curve=(),
         motor_inertia_kg_m2=None,
         motor_rms_torque_nm=None,
+        motor_rms_curve=(),
         motor_supply_v=None,
         motor_phase_current_a=None,
         motor_resistance_ohm=None,

@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from app.catalog.axis_motor import DRIVE_VALUES, CurveOrigin
 from app.catalog.motors import CURVE, MODEL_VALUES, Motor
 from app.catalog.supports import SupportUnit
-from app.core.model import Application, Provenance
+from app.core.model import RMS_ZONE, Application, Provenance
 from app.core.record import CERTAINTY
 
 #: The application's field for each value a library stepper's model reads: one typed
@@ -57,6 +57,17 @@ def _curve(origin: CurveOrigin, entered: Application, motor: Motor | None) -> Pr
     return _model_curve(entered, motor)
 
 
+def _continuous(motor: Motor) -> Provenance:
+    """A library servo's continuous rating where its continuous duty zone narrows it above
+    the rated speed: the less certain of the rated torque's and the zone's top torque's
+    provenance (``RMS_ZONE``)."""
+    rated = motor.values["rated_torque_nm"].provenance
+    top = motor.values["top_speed_continuous_nm"].provenance
+    if CERTAINTY.index(top.kind) >= CERTAINTY.index(rated.kind):
+        return rated
+    return Provenance(top.kind, f"{rated.source}; continuous duty zone: {top.source}")
+
+
 def axis_provenance(
     entered: Application,
     app: Application,
@@ -74,6 +85,8 @@ def axis_provenance(
         found["motor_curve"] = _curve(origin, entered, motor)
     if motor is not None and motor.kind == "servo" and entered.motor_rms_torque_nm is None:
         found["motor_rms_torque"] = motor.values["rated_torque_nm"].provenance
+        if app.motor_rms_curve and not entered.motor_rms_curve:
+            found[RMS_ZONE] = _continuous(motor)
     unit = supports.get(app.support_unit or "")
     for key, (field, name) in SUPPORT_RATINGS.items():
         if unit is not None and getattr(entered, field) is None:

@@ -51,7 +51,7 @@ PLAIN = frozenset({"name", "frame", "kind"})
 #: Values a stepper's entry may leave out where its datasheet does not publish them.
 OPTIONAL = {
     "stepper": {"detent_torque_nm": "N m", "pull_out_curve": "", "max_rpm": ""},
-    "servo": {},
+    "servo": {"top_speed_continuous_nm": "N m"},
 }
 #: The values each kind's model draws its curve from, in the order its model takes them
 #: (``stepper.microstep_pull_out_curve`` through ``model_curve``; ``servo.peak_curve``).
@@ -84,6 +84,7 @@ SI_UNITS = {
     "rated_rpm": "rpm",
     "max_rpm": "rpm",
     "top_speed_torque_nm": "N m",
+    "top_speed_continuous_nm": "N m",
     "detent_torque_nm": "N m",
     CURVE: "rpm, N m",
 }
@@ -195,6 +196,20 @@ class Motor:
         stepper (its holding torque is already the curve's ceiling)."""
         return self.value("rated_torque_nm") if self.kind == "servo" else None
 
+    def continuous_curve(self) -> Curve:
+        """A servo's continuous duty zone as (rpm, N m) points: its rated torque up to its
+        rated speed, then straight to the continuous torque it allows at its top speed
+        (``top_speed_continuous_nm``); empty where the library gives none (the rated
+        torque holds at every speed) and for a stepper."""
+        if self.kind != "servo" or "top_speed_continuous_nm" not in self.values:
+            return ()
+        return servo.peak_curve(
+            self.value("rated_torque_nm"),
+            self.value("rated_rpm"),
+            self.value("max_rpm"),
+            self.value("top_speed_continuous_nm"),
+        )
+
     def step_angle_deg(self) -> float | None:
         return self.value("step_angle_deg") if self.kind == "stepper" else None
 
@@ -226,6 +241,12 @@ def _check_servo(entry: Entry, motor: Motor) -> None:
         raise entry.fail("top_speed_torque_nm", "above the peak torque")
     if motor.value("rated_rpm") >= motor.value("max_rpm"):
         raise entry.fail("rated_rpm", "must be below max_rpm")
+    if "top_speed_continuous_nm" in motor.values:
+        top = motor.value("top_speed_continuous_nm")
+        if top > motor.value("rated_torque_nm"):
+            raise entry.fail("top_speed_continuous_nm", "above the rated torque")
+        if top > motor.value("top_speed_torque_nm"):
+            raise entry.fail("top_speed_continuous_nm", "above top_speed_torque_nm")
 
 
 def motor_key(text: str) -> str:

@@ -279,6 +279,19 @@ FIELDS: tuple[InputField, ...] = (
         needs=("stroke_mm",),
     ),
     InputField(
+        api="motor_rms_curve", page="motor_rms_curve", core="motor_rms_curve",
+        label="Continuous torque curve",
+        help="The motor's continuous duty zone against speed, as its maker's chart draws "
+        "it: one point “rpm torque” per line, rpm ascending, torque in the torque unit "
+        "chosen. The cycle's RMS torque is held to it segment by segment; empty: the "
+        "continuous torque at every speed (a library servo brings its own)",
+        api_help="The motor's continuous duty zone against speed: points [rpm, N m] in a "
+        "body, rpm:torque,rpm:torque in a query, rpm ascending. The cycle's RMS torque is "
+        "held to it segment by segment; none given: the continuous torque at every speed "
+        "(a library servo brings its own)",
+        group="Motor and move", kind="curve", unit="rpm : N m",
+    ),
+    InputField(
         api="motor_inertia_kg_m2", page="motor_inertia", core="motor_inertia_kg_m2",
         label="Rotor inertia", help="The motor's own, at the screw; empty for none",
         group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",

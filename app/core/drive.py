@@ -122,6 +122,7 @@ def motor_point(
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
         index, peak, rms = filled(len(t), -1.0), nan, nan
+        referred = nan
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = segments.segments(app, t, hold_nm, moving, c)
@@ -133,6 +134,7 @@ def motor_point(
         columns = np.arange(len(t))
         worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
         peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
+        referred = segments.referred_rms(app, parts) if app.motor_rms_curve else rms
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = fitting_accel(app, parts, signed, index, worst_rpm)
             fix_accel = fitting_accel(app, parts, signed, index, worst_rpm, 1.0 + FIX_MARGIN)
@@ -144,7 +146,8 @@ def motor_point(
         "peak_rpm": peak_rpm,
         "motor_peak_nm": peak,
         "motor_rms_nm": rms,
-        "motor_rms_needed_nm": rms * app.torque_safety_factor,
+        "motor_rms_zone_nm": referred,
+        "motor_rms_needed_nm": referred * app.torque_safety_factor,
         "motor_worst_segment": np.asarray(index, dtype=np.float64),
         "motor_worst_nm": worst_nm,
         "motor_worst_needed_nm": worst_nm * app.torque_safety_factor,

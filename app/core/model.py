@@ -65,6 +65,10 @@ class Provenance:
 #: where typed in, else the library motor's or support unit's; a value missing is the
 #: user's.
 AxisProvenance = Mapping[str, Provenance]
+#: The key of a library motor's continuous rating where its continuous duty zone narrows
+#: it above its rated speed: a candidate whose cycle runs there reads it for
+#: "motor_rms_torque" (``Candidate.provenance``).
+RMS_ZONE = "motor_rms_zone"
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,10 +133,12 @@ class Application:
     decel_m_s2: float | None = None
     dwell_s: float = 0.0
     #: The motor: rotor inertia, torque-speed curve as (rpm, N m) points with rpm
-    #: ascending (empty: none), and continuous (RMS) torque rating.
+    #: ascending (empty: none), continuous (RMS) torque rating, and its continuous duty
+    #: zone as (rpm, N m) points (empty: the rating at every speed).
     motor_inertia_kg_m2: float | None = None
     motor_curve: tuple[tuple[float, float], ...] = ()
     motor_rms_torque_nm: float | None = None
+    motor_rms_curve: tuple[tuple[float, float], ...] = ()
     #: The stepper's controller: full step angle [deg] (None: no controller checks),
     #: microsteps per full step, and the controller's highest step rate [1/s].
     step_angle_deg: float | None = None

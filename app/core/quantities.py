@@ -280,11 +280,14 @@ class MotorPoint(Generic[V]):
     #: The peak rpm (the top speed's without a stroke); the largest torque in magnitude
     #: and the RMS torque over the cycle (NaN without a stroke); the segment that uses the
     #: most of the motor curve (index in ``segments.segments``, -1 without a stroke), its
-    #: torque magnitude and rpm, the curve's torque there (NaN: no curve). The ``_needed``
+    #: torque magnitude and rpm, the curve's torque there (NaN: no curve). The RMS torque
+    #: held to the continuous duty zone (``segments.referred_rms``: the RMS torque where
+    #: the motor has no zone). The ``_needed``
     #: torques are the motor's to give: times the torque safety factor.
     peak_rpm: V
     motor_peak_nm: V
     motor_rms_nm: V
+    motor_rms_zone_nm: V
     motor_rms_needed_nm: V
     motor_worst_segment: V
     motor_worst_nm: V

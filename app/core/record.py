@@ -23,6 +23,7 @@ from app.core.checks.back_driving import rule_note
 from app.core.checks.base import Check
 from app.core.model import (
     PV,
+    RMS_ZONE,
     Accuracy,
     Application,
     AxisProvenance,
@@ -173,7 +174,19 @@ class Candidate:
     def value_provenance(self) -> dict[str, Provenance]:
         """The provenance of every value a check may read: the screw's catalog values and
         the axis's values that the checks' capacities are (``Batch.axis``)."""
-        return {**self.screw.provenance, **self.batch.axis}
+        return {**self.screw.provenance, **self.axis_provenance}
+
+    @property
+    def axis_provenance(self) -> dict[str, Provenance]:
+        """The provenance of the axis's values the checks' capacities are (``Batch.axis``),
+        a library motor's continuous rating as this candidate's cycle reads it: that of its
+        continuous duty zone (``RMS_ZONE``) where the cycle runs where the zone narrows."""
+        axis = dict(self.batch.axis)
+        zone = axis.pop(RMS_ZONE, None)
+        motor = self.quantities.motor
+        if zone is not None and motor.motor_rms_zone_nm > motor.motor_rms_nm:
+            axis["motor_rms_torque"] = zone
+        return axis
 
     @property
     def governing_limit_provenance(self) -> ProvenanceKind | None:
@@ -229,7 +242,7 @@ class Candidate:
         library's)."""
         used = {src for c in self.checks for src in c.sources} | set(GEOMETRY_SOURCES)
         found = {k: p for k, p in self.screw.provenance.items() if k in used}
-        axis = self.batch.axis
+        axis = self.axis_provenance
         given = (c.check.capacity_given for c in self.checks if c.check.capacity_given)
         return found | {key: axis.get(key, TYPED) for key in given}
 

@@ -139,6 +139,43 @@ def rms(parts: list[Segment[Array]]) -> Array:
     return np.asarray(value, dtype=np.float64)
 
 
+def continuous_rating(app: Application) -> float | None:
+    """The motor's continuous torque rating [N m] the cycle's RMS torque is held to: the
+    one given, else the first point of its continuous duty zone; None without either."""
+    if app.motor_rms_torque_nm is not None:
+        return app.motor_rms_torque_nm
+    return app.motor_rms_curve[0][1] if app.motor_rms_curve else None
+
+
+def continuous_torque(app: Application, rpm: Array) -> Array:
+    """The continuous torque the motor allows at ``rpm`` [N m]: its continuous duty zone
+    (``motor_rms_curve``), linear between its points and never above the rating
+    (``continuous_rating``); the rating at every speed without a zone. Past the zone's
+    last point it is read at that point (the motor runs no faster: the speed check)."""
+    rated = continuous_rating(app)
+    if rated is None:
+        return np.full(np.shape(rpm), np.nan)
+    if not app.motor_rms_curve:
+        return np.full(np.shape(rpm), rated)
+    zone: Array = np.array(app.motor_rms_curve, dtype=np.float64).reshape(-1, 2)
+    at: Array = np.interp(np.minimum(rpm, zone[-1, 0]), zone[:, 0], zone[:, 1])
+    return np.minimum(at, rated)
+
+
+def referred_rms(app: Application, parts: list[Segment[Array]]) -> Array:
+    """The cycle's RMS torque referred to the continuous rating, each segment's torque
+    held to the continuous duty zone at its speed (``profile.referred_rms_torque``) [N m];
+    the plain RMS torque (``rms``) where the motor has no zone (its rating holds at every
+    speed)."""
+    rated = continuous_rating(app)
+    if rated is None or not app.motor_rms_curve:
+        return rms(parts)
+    torques: list[Any] = [s.torque_nm for s in parts]
+    allowed: list[Any] = [continuous_torque(app, s.rpm) for s in parts]
+    value = profile.referred_rms_torque(torques, [s.duration_s for s in parts], allowed, rated)
+    return np.asarray(value, dtype=np.float64)
+
+
 def curve_margin(app: Application) -> float:
     """What the motor's curve is divided by before a move is held against it: a
     stepper's (one with a step angle) torque margin on its pull-out torque, 1 for a

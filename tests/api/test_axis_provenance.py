@@ -58,12 +58,19 @@ def test_a_pass_governed_by_an_assumed_curve_says_it_rests_on_it(client: TestCli
     assert c["governing_limit_provenance"] == "assumed"
     assert "Rests on assumed motor torque-speed curve" in c["verdict"]["text"]
     assert "assumed top_speed_torque_nm" in _curve(c)["source"]
-    # over a 300 mm stroke back and forth the RMS torque governs: its limit, the
-    # servo's rated torque, is the maker's
+    # over a 300 mm stroke back and forth the RMS torque governs: its limit is the
+    # servo's rated torque, the maker's, but at 3600 rpm, above the rated 3000, held to the
+    # continuous duty zone the library assumes above it
     moving = evaluate(client, "R16-10K3-FSCDIN", **axis, stroke_mm=300, motor="yaskawa-sgm7j-01a")
     assert moving["governing_check"] == "motor_rms"
-    assert moving["governing_limit_provenance"] == "vendor"
-    assert "rated torque 0.318 N m" in moving["provenance"]["motor_rms_torque"]["source"]
+    assert moving["governing_limit_provenance"] == "assumed"
+    source = moving["provenance"]["motor_rms_torque"]["source"]
+    assert "rated torque 0.318 N m" in source and "continuous duty zone" in source
+    # below the rated speed the zone is flat: the limit is the maker's alone
+    slow = {**axis, "speed_mm_s": 400}
+    slower = evaluate(client, "R16-10K3-FSCDIN", **slow, stroke_mm=300, motor="yaskawa-sgm7j-01a")
+    assert slower["governing_check"] == "motor_rms"
+    assert slower["governing_limit_provenance"] == "vendor"
 
 
 def test_a_published_curve_is_the_makers_and_a_typed_one_the_users(client: TestClient) -> None:

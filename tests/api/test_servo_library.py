@@ -96,7 +96,8 @@ def test_the_100_w_ac_servo_carries_its_cited_ratings() -> None:
     assert motor.value("rotor_inertia_g_cm2") == pytest.approx(0.0659e-4)
     assert motor.curve() == ((0.0, 1.11), (3000.0, 1.11), (6000.0, 0.318))
     kinds = {name: value.provenance.kind for name, value in motor.values.items()}
-    assert kinds == {**dict.fromkeys(kinds, "vendor"), "top_speed_torque_nm": "assumed"}
+    assumed = dict.fromkeys(("top_speed_torque_nm", "top_speed_continuous_nm"), "assumed")
+    assert kinds == {**dict.fromkeys(kinds, "vendor"), **assumed}
     assert motor.continuous_torque_nm() == 0.318 and motor.step_angle_deg() is None
 
 
@@ -183,8 +184,23 @@ def test_the_built_in_app_does_not_know_another_directory_s_motor(client: TestCl
             'provenance = "assumed"',
             "top_speed_torque_nm",
         ),
+        (
+            'top_speed_torque_nm = { value = 0.32, provenance = "assumed", source = "the rated '
+            'torque" }',
+            'top_speed_torque_nm = { value = 0.32, provenance = "assumed", source = "the rated '
+            'torque" }\ntop_speed_continuous_nm = { value = 0.33, provenance = "vendor", '
+            'source = "s" }',
+            "top_speed_continuous_nm",
+        ),
     ],
-    ids=["peak-below-rated", "rated-above-max", "unknown-kind", "top-above-peak", "no-source"],
+    ids=[
+        "peak-below-rated",
+        "rated-above-max",
+        "unknown-kind",
+        "top-above-peak",
+        "no-source",
+        "continuous-above-rated",
+    ],
 )
 def test_a_bad_servo_stops_the_load_naming_the_field(
     tmp_path: Path, old: str, new: str, field: str
@@ -216,3 +232,62 @@ def test_every_library_value_carries_provenance_with_a_source(catalog: Catalog) 
         for name, value in motor.values.items():
             assert value.provenance.kind in {"vendor", "derived", "assumed"}, (motor.id, name)
             assert value.provenance.source, (motor.id, name)
+
+
+#: The axis run above the 100 W servo's rated speed: 800 mm/s on a 10 mm lead is 4800 rpm.
+FAST = {
+    "load_n": 20.0,
+    "moving_mass_kg": 5.0,
+    "lead_mm": 10.0,
+    "speed_mm_s": 800.0,
+    "length_mm": 600.0,
+    "accel_mm_s2": 5000.0,
+    "stroke_mm": 500.0,
+    "motor": "yaskawa-sgm7j-01a",
+    "detail": "full",
+}
+
+
+def _first(client: TestClient, params: dict[str, object]) -> dict:  # type: ignore[type-arg]
+    """The first candidate of the selection, passing or not."""
+    r = client.get("/api/v1/select", params=params)
+    assert r.status_code == 200, r.text
+    body = r.json()
+    first: dict = (body["candidates"] or body["rejected"])[0]  # type: ignore[type-arg]
+    return first
+
+
+def test_above_its_rated_speed_a_servo_allows_less_continuous_torque(client: TestClient) -> None:
+    """Yaskawa's rule: the effective torque within the continuous duty zone (Sigma-II
+    manual sec. 3.2.3), which narrows above the rated speed. The library takes the
+    SGM7J-01A's zone straight from 0.318 N m at 3000 rpm to an assumed 0.159 N m at
+    6000 rpm: at 4800 rpm 0.318 - 0.159 x 1800 / 3000 = 0.2226 N m. Every moving segment
+    runs at 4800 rpm and the dwells carry nothing, so the RMS torque held to the zone is
+    the plain RMS times 0.318 / 0.2226 (it was the plain RMS, as if the rated torque held
+    at every speed), against 0.318 N m; the limit rests on the assumed zone."""
+    candidate = _first(client, {**FAST, "limit": 1})
+    check = next(c for c in candidate["checks"] if c["name"] == "motor_rms")
+    zone_nm = 0.318 - (0.318 - 0.159) * (4800.0 - 3000.0) / (6000.0 - 3000.0)
+    assert zone_nm == pytest.approx(0.2226)
+    assert candidate["rpm"] == pytest.approx(4800.0)
+    assert check["limit"] == 0.318
+    assert check["value"] == pytest.approx(candidate["torque"]["rms_nm"] * 0.318 / zone_nm)
+    assert "narrows with speed (to 0.159 N m at 6000 rpm)" in check["message"]
+    assert candidate["provenance"]["motor_rms_torque"]["kind"] == "assumed"
+
+
+def test_a_continuous_torque_typed_in_holds_at_every_speed_unless_a_zone_is_typed(
+    client: TestClient,
+) -> None:
+    """A continuous torque typed for the library servo replaces its rating and zone (the
+    RMS held to it is the plain RMS); a zone typed with it narrows it again: 0.3 N m to
+    3000 rpm, 0.15 N m at 6000 rpm gives 0.3 - 0.15 x 1800 / 3000 = 0.21 N m at 4800 rpm."""
+    params = {**FAST, "limit": 1, "motor_rms_torque_nm": 0.3}
+    flat = _first(client, params)
+    check = next(c for c in flat["checks"] if c["name"] == "motor_rms")
+    assert check["limit"] == 0.3
+    assert check["value"] == pytest.approx(flat["torque"]["rms_nm"])
+    params["motor_rms_curve"] = "0:0.3,3000:0.3,6000:0.15"
+    zoned = _first(client, params)
+    check = next(c for c in zoned["checks"] if c["name"] == "motor_rms")
+    assert check["value"] == pytest.approx(zoned["torque"]["rms_nm"] * 0.3 / 0.21)

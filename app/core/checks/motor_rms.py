@@ -17,6 +17,7 @@ from app.core.checks.base import (
     same,
 )
 from app.core.phrase import Amount, Phrase
+from app.core.segments import continuous_rating
 
 
 class MotorRms(Check):
@@ -27,37 +28,55 @@ class MotorRms(Check):
     description = (
         "The root-mean-square motor torque over the cycle (out and back, or the moves given, "
         "with the dwells), "
-        "times the torque safety factor, against the motor's continuous torque rating."
+        "times the torque safety factor, against the motor's continuous torque rating; "
+        "where the motor's continuous duty zone narrows with speed, each segment's torque "
+        "is first scaled by the rating over the continuous torque at its speed."
     )
     quantity = "torque"
     capacity_given = "motor_rms_torque"
-    formula = "T_need = SF * T_rms; T_motor = T_continuous"
-    source = "RMS torque sqrt(sum T_i^2 t_i / sum t_i), e.g. Oriental Motor, Motor Sizing"
+    formula = "T_need = SF * T_rms_zone; T_motor = T_c0"
+    source = (
+        "RMS torque sqrt(sum T_i^2 t_i / sum t_i), e.g. Oriental Motor, Motor Sizing; held "
+        "within the continuous duty zone, Yaskawa Sigma-II manual sec. 3.2.3"
+    )
     sources = ("inertia_per_length", "drag_torque", "friction_dynamic")
 
     def applies(self, app: Application) -> bool:
-        return app.motor_rms_torque_nm is not None and (app.stroke_m is not None or bool(app.moves))
+        rated = continuous_rating(app) is not None
+        return rated and (app.stroke_m is not None or bool(app.moves))
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(everywhere(t), q.motor.motor_rms_needed_nm, same(t, app.motor_rms_torque_nm))
+        return Measure(everywhere(t), q.motor.motor_rms_needed_nm, same(t, continuous_rating(app)))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
             "SF": app.torque_safety_factor,
-            "T_rms": q.motor.motor_rms_nm,
-            "T_continuous": app.motor_rms_torque_nm,
+            # T_c0 sqrt(sum (T_i / T_c(n_i))^2 t_i / sum t_i), T_c the continuous duty zone
+            # at each segment's speed: the plain RMS torque where the zone is flat
+            "T_rms_zone": q.motor.motor_rms_zone_nm,
+            "T_c0": continuous_rating(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        zone = ""
+        values: dict[str, Amount | str] = {
+            "need": Amount(r.motor.motor_rms_needed_nm, "torque"),
+            "rating": Amount(continuous_rating(app) or 0.0, "torque"),
+        }
+        if app.motor_rms_curve:
+            top_rpm, top_nm = app.motor_rms_curve[-1]
+            zone = (
+                ", each segment's torque scaled up where the continuous zone narrows with "
+                "speed (to {top_nm} at {top_rpm} rpm)"
+            )
+            values |= {"top_nm": Amount(top_nm, "torque"), "top_rpm": f"{top_rpm:g}"}
         return Phrase(
-            "The cycle's RMS torque {need} " + verb + " the motor's continuous {rating}.",
-            {
-                "need": Amount(r.motor.motor_rms_needed_nm, "torque"),
-                "rating": Amount(app.motor_rms_torque_nm or 0.0, "torque"),
-            },
+            "The cycle's RMS torque {need}" + zone + ", " + verb + " the motor's continuous "
+            "{rating}.",
+            values,
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:

@@ -149,3 +149,35 @@ def rms_torque(torques_nm: list[float], durations_s: list[float]) -> float:
     mean: float = heat / sum(durations_s)
     root: float = mean**0.5
     return root
+
+
+@formula(
+    "T_eq = T_c0 sqrt(sum (T_i / T_c(n_i))^2 t_i / sum t_i)",
+    "RMS torque held to the continuous duty zone at each segment's speed (Yaskawa)",
+)
+def referred_rms_torque(
+    torques_nm: list[float],
+    durations_s: list[float],
+    continuous_nm: list[float],
+    rated_nm: float,
+) -> float:
+    """The cycle's RMS torque referred to the continuous rating ``rated_nm`` [N m]:
+    each segment's torque ``T_i`` [N m] scaled by ``rated_nm`` over the continuous torque
+    the motor allows at that segment's speed, ``continuous_nm`` [N m] (its continuous
+    duty zone), T_eq = T_c0 sqrt(sum (T_i / T_c(n_i))^2 t_i / sum t_i). Held against
+    ``rated_nm``, it asks what Yaskawa's rule asks: the effective torque within the
+    continuous duty zone of the torque-speed chart, where that zone narrows above the
+    rated speed. Equal to ``rms_torque`` where the zone is flat (every ``T_c`` equal to
+    ``rated_nm``). Floats or arrays; every ``T_c`` above zero.
+
+    Source: Yaskawa, Sigma-II Series servomotor manual, sec. 3.2.3 (select "a servomotor
+    with effective torque within the continuous duty zone"); Sigma-7 rotary servomotor
+    manual, torque-motor speed characteristics (A: continuous duty zone).
+
+    >>> round(referred_rms_torque([2.0, 1.0, 0.0], [1.0, 2.0, 1.0], [2.0] * 3, 2.0), 6)
+    1.224745
+    >>> round(referred_rms_torque([1.0, 1.0], [1.0, 1.0], [2.0, 1.0], 2.0), 6)
+    1.581139
+    """
+    scaled = [t * rated_nm / c for t, c in zip(torques_nm, continuous_nm, strict=True)]
+    return rms_torque(scaled, durations_s)
