@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from app.core.formulas import (
+    ballscrew,
     bearing,
     buckling,
     critical_speed,
@@ -200,12 +201,20 @@ COPIED = {
 }
 
 
-def _thread_efficiencies(tan_l: Array, mu_s: Array, mu_d: Array, cos_a: Array) -> dict[str, Any]:
+def _thread_efficiencies(
+    tan_l: Array, mu_s: Array, mu_d: Array, cos_a: Array, ball: Mask
+) -> dict[str, Any]:
     """The thread's efficiencies driving and back-driven, running and from rest, and
-    whether it self-locks (``formulas.efficiency``, ``formulas.profile``)."""
+    whether it self-locks (``formulas.efficiency``, ``formulas.profile``); a ball screw
+    drives at most at its maker's efficiency (``ballscrew.forward_efficiency``)."""
+
+    def driving(mu: Array) -> Array:
+        eta = efficiency.forward_efficiency(tan_l, mu, cos_a)
+        return np.where(ball, ballscrew.forward_efficiency(eta), eta)
+
     return {
-        "efficiency": efficiency.forward_efficiency(tan_l, mu_d, cos_a),
-        "efficiency_static": efficiency.forward_efficiency(tan_l, mu_s, cos_a),
+        "efficiency": driving(mu_d),
+        "efficiency_static": driving(mu_s),
         "efficiency_square_thread": efficiency.square_thread_efficiency(tan_l, mu_d),
         "backdrive_efficiency": efficiency.backdrive_efficiency(tan_l, mu_s, cos_a),
         "self_locking": mu_s >= efficiency.self_locking_limit_friction(tan_l, cos_a),
@@ -380,7 +389,7 @@ class CandidateTable:
             friction_static=mu_s,
             cos_half_angle=cos_a,
             **{name: col(attr) for name, attr in COPIED.items()},
-            **_thread_efficiencies(tan_l, mu_s, mu_d, cos_a),
+            **_thread_efficiencies(tan_l, mu_s, mu_d, cos_a, ball),
             **_nut_columns(screws, lead),
         )
         columns["root_diameter_m"], columns["outer_diameter_m"] = rd, od

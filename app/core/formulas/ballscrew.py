@@ -19,6 +19,23 @@ from app.core.units import from_si
 HIWIN = "HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K"
 #: The rated life's revolutions, 10^6 (ISO 3408-5).
 REVOLUTIONS_RATED = 10.0**6
+#: The highest forward (driving) efficiency HIWIN gives a ball screw in normal operation,
+#: eta_1 = 0.85 to 0.95 (BS-08-2-EN-1704-K, F 3.15).
+MAX_FORWARD_EFFICIENCY = 0.95
+
+
+@formula("eta_1 = min(eta, 0.95)", HIWIN + ", F 3.15 (eta_1 = 0.85 to 0.95)")
+def forward_efficiency(efficiency: ArrayLike) -> Any:
+    """A ball screw's driving efficiency [-]: the thread's (tan lambda / tan(lambda + phi)
+    at the ball track's equivalent friction), at most HIWIN's 0.95. At the lead angles of
+    its fast leads, 12 to 26 degrees, the friction of HIWIN's Fig. 2.1 gives up to 0.975,
+    past the curves it draws (to 10 degrees) and past the range F 3.15 states for the
+    drive torque. Floats or arrays.
+
+    >>> float(forward_efficiency(0.968)), float(forward_efficiency(0.84))
+    (0.95, 0.84)
+    """
+    return np.minimum(efficiency, MAX_FORWARD_EFFICIENCY)
 
 
 @formula(
