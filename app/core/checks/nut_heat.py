@@ -32,7 +32,9 @@ class NutHeat(Check):
     label = "Nut heat"
     description = (
         "With a stroke (the duty: moves and dwells), the thread's friction power at the "
-        "cycle's mean speed, F v (1 / eta - 1), heats "
+        "cycle's mean speed, F v (1 / eta - 1) with F the thrust the thread carries over "
+        "the cycle (the load, the weight on a vertical axis and m a on the ramps, weighted "
+        "by each segment's travel), heats "
         "the nut until the screw (conducting both ways, a fin of its root diameter and "
         "material) and the nut's surface (free convection, 10 W/(m^2 K)) carry it away: "
         "the nut's rise over the ambient against the room to its rated maximum "
@@ -64,7 +66,7 @@ class NutHeat(Check):
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F": q.axis.force_n,
+            "F": q.life.wear_force_n,
             "v": q.heat.heat_speed_m_s,
             "eta": t.efficiency,
             "h": heat.FREE_CONVECTION_W_M2_K,
