@@ -43,24 +43,26 @@ def cycles_fit_a_day(cycles_per_day: float | None, p: Profile | None) -> bool:
 
 
 def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:
-    """The power the nut's thread friction turns into heat, averaged over the cycle ``c``
-    (``motion.cycle_of``), and the nut's steady temperature rise: the screw conducts the
-    heat away both ways as a fin, the nut's surface convects it.
+    """The power the nut's thread friction and drag turn into heat, averaged over the
+    cycle ``c`` (``motion.cycle_of``), and the nut's steady temperature rise: the screw
+    conducts the heat away both ways as a fin, the nut's surface convects it.
 
     The thread heats at the travel-weighted mean of the thrust it carries in every moving
     segment of every move (``c.wear_n``, ``motion.wear_thrust``: the load with its
     direction, the weight on a vertical axis, m a on the ramps), the same cycle whether
     given as the scalar inputs or as moves, at the cycle's mean speed (its travel over
     its time, dwells included), every segment through the forward efficiency (a segment
-    the load drives loses less: the safe side). Without a stroke: the constant-speed run
-    at the top speed."""
+    the load drives loses less: the safe side). The nut's drag (``heat.drag_power``, the
+    top of its range, as the torque breakdown and the cycle's energy take it) heats at
+    the same mean speed. Without a stroke: the constant-speed run at the top speed."""
     stroke = motion.equivalent_stroke(app) or 0.0
     p = c.fastest
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
     friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency))
+    drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m)
     # the fin conductance and nut diameter in still air follow from the catalog alone
     rise = heat.temperature_rise(
-        friction,
+        friction + drag,
         t.fin_conductance_w_k,
         nut_length(app, t),
         t.nut_outer_diameter_m,
@@ -69,6 +71,7 @@ def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[s
     return {
         "heat_speed_m_s": filled(len(t), mean_speed),
         "friction_power_w": friction,
+        "drag_power_w": drag,
         "nut_temperature_rise_k": rise,
     }
 

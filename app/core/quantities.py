@@ -235,11 +235,12 @@ class NutLife(Generic[V]):
 class NutHeat(Generic[V]):
     """The nut's heat balance (``duty.heat_balance``): the cycle's mean speed [m/s] (the
     top speed without a stroke), the thread's friction power at it, at the cycle's wear
-    thrust (``NutLife.wear_force_n``) [W], and the nut's steady rise over the ambient
-    [K] (NaN: no heat balance)."""
+    thrust (``NutLife.wear_force_n``) [W], the nut's drag power at it [W], and the nut's
+    steady rise over the ambient from both [K] (NaN: no heat balance)."""
 
     heat_speed_m_s: V
     friction_power_w: V
+    drag_power_w: V
     nut_temperature_rise_k: V
 
 

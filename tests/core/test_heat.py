@@ -1,6 +1,6 @@
 """Friction heat of a sliding nut and its temperature rise (app.core.formulas.heat, the
 nut_heat check): the thread's friction at the thrust of every moving segment, however the
-cycle is given."""
+cycle is given, and an anti-backlash nut's drag."""
 
 import math
 from dataclasses import replace
@@ -124,3 +124,37 @@ def test_the_ramps_thrust_heats_the_nut_however_the_cycle_is_given(
     assert checked.message.values["power"].value == pytest.approx(power_w, rel=1e-9)
     assert checked.value == pytest.approx(rise_k, rel=1e-9)
     assert (round(power_w, 2), round(rise_k, 2)) == (13.31, 71.29)
+
+
+def test_an_anti_backlash_nuts_drag_heats_the_nut(catalog: Catalog) -> None:
+    """The Tr10x4(P2) acetal nut (d_2 9 mm, d_3 7.5 mm, mu 0.25, 20 mm long, rated to
+    100 C) preloaded as an anti-backlash nut with a drag of 0.01-0.03 N m, 20 N against
+    the motion, 400 mm out and back at 0.1 m/s (1 m/s^2 ramps): the cycle takes
+    2 (0.1 + 3.9 + 0.1) = 8.2 s over 0.8 m, a mean 0.09756 m/s. The thread turns
+    20 x 0.09756 (1 / eta - 1) = 3.78 W into heat (Shigley sec. 8-2), the drag at the top
+    of its range T_drag 2 pi v / lead = 0.03 x 2 pi x 0.09756 / 0.004 = 4.597 W (the
+    power of a torque at the screw's angular speed), which is the cycle's drag loss over
+    its time: the nut rises 143.2 K, above the 80 K to its rating. Without the drag it
+    rose 64.6 K and passed."""
+    app = Application(
+        load_n=20.0, speed_m_s=0.1, length_m=0.6, stroke_m=0.4, cycles_per_day=5000.0,
+        nut_length_m=0.02,
+    )  # fmt: skip
+    plain = catalog.by_id["Tr10x4(P2)-acetal"]
+    preloaded = replace(plain, anti_backlash=True, drag_torque_min_nm=0.01, drag_torque_max_nm=0.03)
+    mean_m_s = 0.8 / 8.2
+    eta = _shigley_efficiency(0.004, 0.009, plain.friction_dynamic)
+    thread_w = 20.0 * mean_m_s * (1.0 / eta - 1.0)
+    drag_w = 0.03 * 2.0 * math.pi * mean_m_s / 0.004
+    conductance = _conductance(0.0075, plain.thermal_conductivity_w_m_k, 0.010, 0.020)
+    ev = evaluate(app, preloaded)
+    checked = next(c for c in ev.checks if c.name == "nut_heat")
+    assert checked.value == pytest.approx((thread_w + drag_w) / conductance, rel=1e-9)
+    assert round(checked.value, 1) == 143.2 and not checked.passed
+    assert checked.message.values["power"].value == pytest.approx(thread_w, rel=1e-9)
+    assert checked.message.values["drag"].value == pytest.approx(drag_w, rel=1e-9)
+    assert drag_w == pytest.approx(ev.quantities.energy.cycle_drag_loss_j / 8.2, rel=1e-9)
+    without = _nut_heat(catalog, app, "Tr10x4(P2)-acetal")
+    assert without.value == pytest.approx(thread_w / conductance, rel=1e-9) and without.passed
+    assert round(without.value, 1) == 64.6
+    assert "drag" not in without.message.values
