@@ -42,23 +42,27 @@ def cycles_fit_a_day(cycles_per_day: float | None, p: Profile | None) -> bool:
     return cycles_per_day is None or most is None or cycles_per_day <= most * (1.0 + 1e-12)
 
 
-def heat_balance(
-    app: Application, t: CandidateTable, force_n: float, wear_n: float, p: Profile | None
-) -> dict[str, Any]:
-    """Friction power at the cycle's mean speed and the nut's steady temperature rise:
-    the screw conducts the heat away both ways as a fin, the nut's surface convects it.
-    A cycle of the user's own moves heats at its mean friction power: its travel-weighted
-    mean thrust (``wear_n``, ``motion.wear_thrust``) at its mean speed, every segment
-    through the forward efficiency (a segment the load drives loses less: the safe
-    side). ``p``: the move's profile (``motion.move_profile``)."""
+def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:
+    """The power the nut's thread friction and drag turn into heat, averaged over the
+    cycle ``c`` (``motion.cycle_of``), and the nut's steady temperature rise: the screw
+    conducts the heat away both ways as a fin, the nut's surface convects it.
+
+    The thread heats at the travel-weighted mean of the thrust it carries in every moving
+    segment of every move (``c.wear_n``, ``motion.wear_thrust``: the load with its
+    direction, the weight on a vertical axis, m a on the ramps), the same cycle whether
+    given as the scalar inputs or as moves, at the cycle's mean speed (its travel over
+    its time, dwells included), every segment through the forward efficiency (a segment
+    the load drives loses less: the safe side). The nut's drag (``heat.drag_power``, the
+    top of its range, as the torque breakdown and the cycle's energy take it) heats at
+    the same mean speed. Without a stroke: the constant-speed run at the top speed."""
     stroke = motion.equivalent_stroke(app) or 0.0
+    p = c.fastest
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
-    if app.moves:
-        force_n = wear_n
-    power = finite(heat.friction_power(force_n, mean_speed, t.efficiency))
+    friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency))
+    drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m)
     # the fin conductance and nut diameter in still air follow from the catalog alone
     rise = heat.temperature_rise(
-        power,
+        friction + drag,
         t.fin_conductance_w_k,
         nut_length(app, t),
         t.nut_outer_diameter_m,
@@ -66,7 +70,8 @@ def heat_balance(
     )
     return {
         "heat_speed_m_s": filled(len(t), mean_speed),
-        "friction_power_w": power,
+        "friction_power_w": friction,
+        "drag_power_w": drag,
         "nut_temperature_rise_k": rise,
     }
 

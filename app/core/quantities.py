@@ -234,11 +234,13 @@ class NutLife(Generic[V]):
 @dataclass(slots=True)
 class NutHeat(Generic[V]):
     """The nut's heat balance (``duty.heat_balance``): the cycle's mean speed [m/s] (the
-    top speed without a stroke), the thread's friction power at it [W], and the nut's
-    steady rise over the ambient [K] (NaN: no heat balance)."""
+    top speed without a stroke), the thread's friction power at it, at the cycle's wear
+    thrust (``NutLife.wear_force_n``) [W], the nut's drag power at it [W], and the nut's
+    steady rise over the ambient from both [K] (NaN: no heat balance)."""
 
     heat_speed_m_s: V
     friction_power_w: V
+    drag_power_w: V
     nut_temperature_rise_k: V
 
 
@@ -449,7 +451,7 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
         "rpm": rpm,
         **torques,
         **column.column_limits(app, t, peak_n, torques),
-        **duty.heat_balance(app, t, force_n, wear_n, c.fastest),
+        **duty.heat_balance(app, t, c),
         **limits,
         "pv_force_n": filled(len(t), pv_n),
         "pv_rpm": pv_rpm,

@@ -16,16 +16,12 @@ from tests.core.conftest import light_app
 
 #: Numbers that differ by design between the scalar inputs and the same cycle as moves:
 #: the acceleration and the top speed that would fit the curve are remedies of the scalar
-#: acceleration and speed, and the scalar inputs keep their heat at the running thrust over
-#: the whole travel where a cycle of moves takes its mean friction power (segment by
-#: segment).
+#: acceleration and speed.
 SCALAR_ONLY = {
     "motor_fitting_accel_m_s2",
     "motor_fitting_speed_m_s",
     "motor_fix_accel_m_s2",
     "motor_fix_speed_m_s",
-    "friction_power_w",
-    "nut_temperature_rise_k",
 }
 
 

@@ -1,12 +1,15 @@
 """Friction heat of a sliding nut and its temperature rise (app.core.formulas.heat, the
-nut_heat check)."""
+nut_heat check): the thread's friction at the thrust of every moving segment, however the
+cycle is given, and an anti-backlash nut's drag."""
 
 import math
+from dataclasses import replace
 
 import pytest
 
 from app.catalog import Catalog
 from app.contract.units import render
+from app.core import motion
 from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.formulas import heat
@@ -77,3 +80,81 @@ def test_no_heat_check_without_a_nut_length_or_a_duty(catalog: Catalog) -> None:
     assert "nut_heat" not in {
         c.name for c in evaluate(no_duty, catalog.by_id["Tr14x3-bronze"]).checks
     }
+
+
+def _shigley_efficiency(lead_m: float, pitch_diameter_m: float, mu: float) -> float:
+    """Shigley sec. 8-2, eq. 8-4 for a trapezoidal (30 deg) thread: the forward efficiency
+    (cos a - mu tan l) / (cos a + mu / tan l), tan l = lead / (pi d_2)."""
+    cos_a, tan_l = math.cos(math.radians(15.0)), lead_m / (math.pi * pitch_diameter_m)
+    return (cos_a - mu * tan_l) / (cos_a + mu / tan_l)
+
+
+def _conductance(root_m: float, k: float, outer_m: float, nut_length_m: float) -> float:
+    """The nut's heat path [W/K] (Incropera sec. 3.6): the screw as an infinite fin both
+    ways, 2 sqrt(h pi d_3 k pi d_3^2 / 4), plus the nut surface h pi (2 d) L, h = 10."""
+    fin = math.sqrt(10.0 * math.pi * root_m * k * math.pi * root_m**2 / 4.0)
+    return 2.0 * fin + 10.0 * math.pi * 2.0 * outer_m * nut_length_m
+
+
+#: A horizontal 50 kg carriage, no load, 50 mm out and back at 200 mm/s with 5 m/s^2
+#: ramps and no dwell: the thread carries nothing but m a on the ramps.
+RAMPS_ONLY = Application(
+    load_n=0.0, moving_mass_kg=50.0, speed_m_s=0.2, accel_m_s2=5.0, stroke_m=0.05,
+    length_m=0.4, cycles_per_day=10000.0,
+)  # fmt: skip
+
+
+@pytest.mark.parametrize("as_moves", [False, True], ids=["scalar-inputs", "moves"])
+def test_the_ramps_thrust_heats_the_nut_however_the_cycle_is_given(
+    catalog: Catalog, as_moves: bool
+) -> None:
+    """Tr20x4 (d_2 18 mm, d_3 15.5 mm, C45 k = 50.7 W/(m K)) with a bronze nut (mu 0.13,
+    40 mm long): each ramp takes 0.2 / 5 = 0.04 s over 0.2 x 0.04 / 2 = 4 mm at
+    |m a| = 250 N, the cruise 42 mm at 0 N; the cycle 2 (0.04 + 0.21 + 0.04) = 0.58 s.
+    The thread turns sum |F_i| x_i (1 / eta - 1) = 4 x 250 x 0.004 (1 / 0.3412 - 1) =
+    7.72 J per cycle into heat (Shigley sec. 8-2): 13.31 W, 71.29 K over the 0.1868 W/K
+    of the screw and the nut. The scalar inputs once heated the nut at the running thrust
+    alone: 0 W and 0 K."""
+    app = replace(RAMPS_ONLY, moves=motion.cycle(RAMPS_ONLY)) if as_moves else RAMPS_ONLY
+    screw = catalog.by_id["Tr20x4-bronze"]  # mu 0.13 (catalog, bronze on steel)
+    eta = _shigley_efficiency(0.004, 0.018, screw.friction_dynamic)
+    power_w = 4 * 250.0 * 0.004 * (1.0 / eta - 1.0) / 0.58
+    rise_k = power_w / _conductance(0.0155, 50.7, 0.020, 0.040)
+    checked = _nut_heat(catalog, app, "Tr20x4-bronze")
+    assert checked.message.values["power"].value == pytest.approx(power_w, rel=1e-9)
+    assert checked.value == pytest.approx(rise_k, rel=1e-9)
+    assert (round(power_w, 2), round(rise_k, 2)) == (13.31, 71.29)
+
+
+def test_an_anti_backlash_nuts_drag_heats_the_nut(catalog: Catalog) -> None:
+    """The Tr10x4(P2) acetal nut (d_2 9 mm, d_3 7.5 mm, mu 0.25, 20 mm long, rated to
+    100 C) preloaded as an anti-backlash nut with a drag of 0.01-0.03 N m, 20 N against
+    the motion, 400 mm out and back at 0.1 m/s (1 m/s^2 ramps): the cycle takes
+    2 (0.1 + 3.9 + 0.1) = 8.2 s over 0.8 m, a mean 0.09756 m/s. The thread turns
+    20 x 0.09756 (1 / eta - 1) = 3.78 W into heat (Shigley sec. 8-2), the drag at the top
+    of its range T_drag 2 pi v / lead = 0.03 x 2 pi x 0.09756 / 0.004 = 4.597 W (the
+    power of a torque at the screw's angular speed), which is the cycle's drag loss over
+    its time: the nut rises 143.2 K, above the 80 K to its rating. Without the drag it
+    rose 64.6 K and passed."""
+    app = Application(
+        load_n=20.0, speed_m_s=0.1, length_m=0.6, stroke_m=0.4, cycles_per_day=5000.0,
+        nut_length_m=0.02,
+    )  # fmt: skip
+    plain = catalog.by_id["Tr10x4(P2)-acetal"]
+    preloaded = replace(plain, anti_backlash=True, drag_torque_min_nm=0.01, drag_torque_max_nm=0.03)
+    mean_m_s = 0.8 / 8.2
+    eta = _shigley_efficiency(0.004, 0.009, plain.friction_dynamic)
+    thread_w = 20.0 * mean_m_s * (1.0 / eta - 1.0)
+    drag_w = 0.03 * 2.0 * math.pi * mean_m_s / 0.004
+    conductance = _conductance(0.0075, plain.thermal_conductivity_w_m_k, 0.010, 0.020)
+    ev = evaluate(app, preloaded)
+    checked = next(c for c in ev.checks if c.name == "nut_heat")
+    assert checked.value == pytest.approx((thread_w + drag_w) / conductance, rel=1e-9)
+    assert round(checked.value, 1) == 143.2 and not checked.passed
+    assert checked.message.values["power"].value == pytest.approx(thread_w, rel=1e-9)
+    assert checked.message.values["drag"].value == pytest.approx(drag_w, rel=1e-9)
+    assert drag_w == pytest.approx(ev.quantities.energy.cycle_drag_loss_j / 8.2, rel=1e-9)
+    without = _nut_heat(catalog, app, "Tr10x4(P2)-acetal")
+    assert without.value == pytest.approx(thread_w / conductance, rel=1e-9) and without.passed
+    assert round(without.value, 1) == 64.6
+    assert "drag" not in without.message.values

@@ -1,5 +1,6 @@
 """The nut's temperature from its friction heat against the nut's rated maximum: a heat
-balance of the friction power with the screw (a fin both ways) and the nut's surface."""
+balance of the thread's friction power and the nut's drag power with the screw (a fin
+both ways) and the nut's surface."""
 
 import numpy as np
 
@@ -32,7 +33,10 @@ class NutHeat(Check):
     label = "Nut heat"
     description = (
         "With a stroke (the duty: moves and dwells), the thread's friction power at the "
-        "cycle's mean speed, F v (1 / eta - 1), heats "
+        "cycle's mean speed, F v (1 / eta - 1) with F the thrust the thread carries over "
+        "the cycle (the load, the weight on a vertical axis and m a on the ramps, weighted "
+        "by each segment's travel), and the drag power of a preloaded (anti-backlash) "
+        "nut, T_drag 2 pi v / lead, heat "
         "the nut until the screw (conducting both ways, a fin of its root diameter and "
         "material) and the nut's surface (free convection, 10 W/(m^2 K)) carry it away: "
         "the nut's rise over the ambient against the room to its rated maximum "
@@ -40,14 +44,21 @@ class NutHeat(Check):
     )
     quantity = "temperature_rise"
     formula = (
-        "dT = F * v * (1 / eta - 1) / (2 * sqrt(h * pi * d_3 * k * pi * d_3^2 / 4) + h * pi * "
-        "D_nut * L_nut); dT_allowed = T_max - T_ambient"
+        "dT = (F * v * (1 / eta - 1) + T_drag * 2 * pi * v / lead) / "
+        "(2 * sqrt(h * pi * d_3 * k * pi * d_3^2 / 4) + h * pi * D_nut * L_nut); "
+        "dT_allowed = T_max - T_ambient"
     )
     source = (
         "Incropera, Fundamentals of Heat and Mass Transfer, sec. 3.6 (infinite fin) and "
         "Table 1.1 (free convection); Shigley sec. 8-2 (thread efficiency)"
     )
-    sources = ("thermal_conductivity", "friction_dynamic", "nut_length", "temperature_range")
+    sources = (
+        "thermal_conductivity",
+        "friction_dynamic",
+        "drag_torque",
+        "nut_length",
+        "temperature_range",
+    )
     capacity_sources = ("temperature_range",)
 
     def applies(self, app: Application) -> bool:
@@ -64,9 +75,11 @@ class NutHeat(Check):
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F": q.axis.force_n,
+            "F": q.life.wear_force_n,
             "v": q.heat.heat_speed_m_s,
             "eta": t.efficiency,
+            "T_drag": t.drag_max_nm,
+            "lead": t.lead_m,
             "h": heat.FREE_CONVECTION_W_M2_K,
             "d_3": t.root_diameter_m,
             "k": t.thermal_conductivity_w_m_k,
@@ -78,13 +91,22 @@ class NutHeat(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "within" if passed else "above"
+        # a nut without preload has no drag: its sentence names the thread's friction alone
+        dragged = r.heat.drag_power_w > 0.0
+        drag: dict[str, Amount | str] = (
+            {"drag": Amount(r.heat.drag_power_w, "power")} if dragged else {}
+        )
         return Phrase(
-            "Friction turns {power} into heat: the nut runs {rise} above the ambient, at "
-            "{nut}, " + verb + " its rated {limit}. Assumed: free convection of {h} "
+            "Friction turns {power} into heat"
+            + (" and the nut's drag {drag} more" if dragged else "")
+            + ": the nut runs {rise} above the ambient, at {nut}, "
+            + verb
+            + " its rated {limit}. Assumed: free convection of {h} "
             "W/(m² K) (still air gives 2-25: less runs the nut hotter) and a round nut "
             "{nut_d} times the thread's diameter.",
             {
                 "power": Amount(r.heat.friction_power_w, "power"),
+                **drag,
                 "rise": Amount(r.heat.nut_temperature_rise_k, "temperature_rise"),
                 "nut": Amount(app.ambient_c + r.heat.nut_temperature_rise_k, "temperature"),
                 "limit": Amount(s.temperature_max_c or 0.0, "temperature"),
@@ -94,8 +116,9 @@ class NutHeat(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        drag = ", a nut of less drag (less preload)" if r.heat.drag_power_w > 0.0 else ""
         return Phrase(
             "Less heat or more cooling: longer dwells or a lower speed, a steeper lead "
-            "(higher efficiency), a lubricated or lower-friction nut, a larger screw or a "
-            "nut rated hotter."
+            "(higher efficiency), a lubricated or lower-friction nut" + drag + ", a larger "
+            "screw or a nut rated hotter."
         )
