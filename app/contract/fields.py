@@ -402,6 +402,14 @@ FIELDS: tuple[InputField, ...] = (
         group="Safety factors", kind="number", default=1.2, bounds=(1.0, 5.0),
     ),
     InputField(
+        api="ball_static_safety_factor", page="ball_static_safety_factor",
+        core="ball_static_safety_factor", label="Ball nut static safety factor",
+        help="Static safety factor f_s on a ball nut's peak thrust against its static load "
+        "rating C0a: 2, THK's lower limit without vibration or impact; with them (fast "
+        "starts and sudden stops count) THK asks up to 5",
+        group="Safety factors", kind="number", default=2.0, bounds=(1.0, 10.0),
+    ),
+    InputField(
         api="torque_safety_factor", page="torque_safety_factor",
         core="torque_safety_factor", label="Torque safety factor",
         help="Multiplier on the computed drive torque before it is compared with the "

@@ -171,8 +171,10 @@ class Application:
     support_dynamic_n: float | None = None
     support_static_n: float | None = None
     support_static_safety_factor: float = 2.0
-    #: The operating factor f_w on a ball nut's mean load for its L10 life [-]
+    #: The operating factor f_w on a ball nut's mean load for its L10 life [-], and the
+    #: static safety factor f_s on its peak thrust against C0a [-].
     ball_load_factor: float = 1.2
+    ball_static_safety_factor: float = 2.0
     #: The longest span from the thrust bearing to the nut [m]: the column that buckles
     #: (None: the screw's length).
     bearing_to_nut_m: float | None = None

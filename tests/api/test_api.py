@@ -248,7 +248,9 @@ def assert_candidate(candidate: dict[str, Any]) -> None:
 
 
 def max_utilization(candidate: dict[str, Any]) -> float:
-    return max(c["utilization"] for c in candidate["checks"] if c["utilization"] is not None)
+    """The worst utilisation of the limits (advice rejects nothing by default)."""
+    used = [c["utilization"] for c in candidate["checks"] if c["kind"] == "limit"]
+    return max(u for u in used if u is not None)
 
 
 def shown_life(candidate: dict[str, Any]) -> float:

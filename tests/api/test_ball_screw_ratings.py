@@ -48,3 +48,69 @@ def test_a_fast_lead_ball_screw_drives_at_most_at_hiwins_efficiency(client: Test
     screw = r.json()["candidate"]
     assert screw["efficiency"] == 0.95
     assert screw["torque"]["load_nm"] == pytest.approx(500 * 0.025 / (2 * math.pi * 0.95), rel=1e-6)
+
+
+def test_a_ball_nut_run_past_its_dynamic_rating_is_flagged_without_a_duty(
+    client: TestClient,
+) -> None:
+    """55 kN on R40-10K4-FSCDIN (HIWIN Table 4.4: Ca 45 kN, C0a 123 kN), with no life
+    asked: the static check passes (2 x 55 kN < 123 kN), but the nut runs at 1.22 Ca,
+    where its L10 is (45 / 55)^3 x 10^6 revolutions x 10 mm = 5.477 km of travel. HIWIN
+    Table 3.1 recommends a mean load of at most Ca / 5 = 9 kN: the advice fails and says
+    so; nothing compared the load with Ca before."""
+    check = _check(
+        client,
+        "ball_load",
+        catalog_id="R40-10K4-FSCDIN",
+        load_n=55000,
+        speed_mm_s=20,
+        length_mm=600,
+        end_fixity="fixed-fixed",
+    )
+    assert (check["value"], check["limit"]) == (55000.0, 45000.0 / 5)
+    assert not check["passed"] and check["kind"] == "advice"
+    km = (45.0 / 55.0) ** 3 * 1e6 * 0.010 / 1e3
+    assert f"{km:.4g} km of travel" in check["message"]
+    assert "Mean load (ball screw)" in check["screw"]["verdict"]["text"]
+
+
+def test_a_preloaded_nut_carries_its_preload_in_the_mean_load(client: TestClient) -> None:
+    """R20-20K2-FSC (Ca 7.6 kN, preload 5 % of Ca, 380 N) over 500 mm strokes: the mean
+    load is the cubic mean of each segment's thrust raised by the preload (HIWIN F 3.7),
+    the L10 check's 497.9 N, against 7.6 kN / 5 = 1.52 kN: within."""
+    params = {
+        "catalog_id": "R20-20K2-FSC",
+        "load_n": 200,
+        "moving_mass_kg": 30,
+        "speed_mm_s": 1000,
+        "accel_mm_s2": 5000,
+        "length_mm": 700,
+        "stroke_mm": 500,
+        "cycles_per_day": 2000,
+        "required_life_years": 5,
+    }
+    check = _check(client, "ball_load", **params)
+    assert check["value"] == pytest.approx(497.92, abs=0.01)
+    assert check["limit"] == pytest.approx(1520.0) and check["passed"]
+
+
+def test_the_ball_nuts_static_safety_factor_is_an_input(client: TestClient) -> None:
+    """55 kN on R40-10K4-FSCDIN (C0a 123 kN): at THK's f_s = 2 without vibration or impact
+    the nut holds 2 x 55 = 110 kN; an axis with shocks asks more, and at 2.5 it needs
+    137.5 kN, above C0a: a failure that the fixed factor could not show."""
+    axis = {"catalog_id": "R40-10K4-FSCDIN", "load_n": 55000, "speed_mm_s": 20}
+    axis |= {"length_mm": 600, "end_fixity": "fixed-fixed"}
+    default = _check(client, "ball_static", **axis)
+    assert default["value"] == 110_000.0 and default["passed"]
+    shocks = _check(client, "ball_static", **axis, ball_static_safety_factor=2.5)
+    assert (shocks["value"], shocks["limit"]) == (137_500.0, 123_000.0)
+    assert not shocks["passed"]
+    assert "at most 46,740 N" in shocks["fix"]  # 123 kN / 2.5, less the 5 % margin
+
+
+def test_a_vanishing_load_gives_the_mean_load_advice_without_a_life(client: TestClient) -> None:
+    """6.5e-211 N (a schema-fuzz request): the life (Ca / F)^3 overflows a float; the
+    advice passes and names no life, and nothing fails with a 500."""
+    axis = {"catalog_id": "R16-05T3-FSIDIN", "load_n": 6.462e-211, "speed_mm_s": 50}
+    check = _check(client, "ball_load", **axis, length_mm=400)
+    assert check["passed"] and "rated life" not in check["message"]

@@ -9,6 +9,7 @@ from app.core.checks.accuracy import Accuracy
 from app.core.checks.anti_backlash import AntiBacklash
 from app.core.checks.back_driving import BackDriving
 from app.core.checks.ball_life import BallLife
+from app.core.checks.ball_load import BallLoad
 from app.core.checks.ball_speed import BallSpeed
 from app.core.checks.ball_static import BallStatic
 from app.core.checks.base import Check
@@ -71,6 +72,7 @@ REGISTRY: tuple[Check, ...] = (
     AntiBacklash(),
     Life(),
     BallLife(),
+    BallLoad(),
     SupportLife(),
     WearLife(),
     Accuracy(),

@@ -19,9 +19,6 @@ from app.core.checks.base import (
 )
 from app.core.phrase import Amount, Phrase
 
-#: The static safety factor f_s on the peak axial load: THK's lower limit without
-#: vibration or impact (with them: 5).
-STATIC_SAFETY_FACTOR = 2.0
 #: The leadscrew checks a ball nut has no rating for, named where a ball screw's result
 #: is read (their checks do not run for it).
 NOT_APPLICABLE_NOTE = (
@@ -40,9 +37,9 @@ class BallStatic(Check):
     label = "Static load (ball screw)"
     description = (
         "A ball screw's peak axial load (running load plus the force that accelerates or "
-        "brakes the moving mass) times the static safety factor f_s = 2 (THK's lower "
-        "limit without vibration or impact; 5 with them) against the nut's basic static "
-        "load rating C0a, the load that dents the ball track by 0.0001 of the ball "
+        "brakes the moving mass) times the static safety factor f_s (2 by default, THK's "
+        "lower limit without vibration or impact; up to 5 with them) against the nut's "
+        "basic static load rating C0a, the load that dents the ball track by 0.0001 of the ball "
         "diameter. Applies to ball screws only."
     )
     quantity = "force"
@@ -56,14 +53,16 @@ class BallStatic(Check):
     capacity_sources = ("static_load",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(t.ball.copy(), q.axis.peak_force_n * STATIC_SAFETY_FACTOR, t.static_load_n)
+        return Measure(
+            t.ball.copy(), q.axis.peak_force_n * app.ball_static_safety_factor, t.static_load_n
+        )
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
             "F_peak": q.axis.peak_force_n,
-            "f_s": STATIC_SAFETY_FACTOR,
+            "f_s": app.ball_static_safety_factor,
             "C0a_nut": t.static_load_n,
         }
 
@@ -74,8 +73,8 @@ class BallStatic(Check):
             "nut's static load rating C0a = {c0a}." + NOT_APPLICABLE_NOTE,
             {
                 "f": Amount(r.axis.peak_force_n, "force"),
-                "fs": Amount(STATIC_SAFETY_FACTOR, "factor"),
-                "demand": Amount(r.axis.peak_force_n * STATIC_SAFETY_FACTOR, "force"),
+                "fs": Amount(app.ball_static_safety_factor, "factor"),
+                "demand": Amount(r.axis.peak_force_n * app.ball_static_safety_factor, "force"),
                 "c0a": Amount(s.static_load_n or np.nan, "force"),
             },
         )
@@ -84,10 +83,14 @@ class BallStatic(Check):
         return Phrase(
             "Reduce the peak thrust to at most {cap}, or choose a ball nut with a higher "
             "static load rating." + MARGIN_NOTE,
-            {"cap": Amount(at_most((s.static_load_n or 0.0) / STATIC_SAFETY_FACTOR), "force")},
+            {
+                "cap": Amount(
+                    at_most((s.static_load_n or 0.0) / app.ball_static_safety_factor), "force"
+                )
+            },
         )
 
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return load_input(app, (s.static_load_n or 0.0) / STATIC_SAFETY_FACTOR)
+        return load_input(app, (s.static_load_n or 0.0) / app.ball_static_safety_factor)

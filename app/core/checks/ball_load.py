@@ -1,0 +1,88 @@
+"""Ball screw: the load the ball track carries against a fifth of the dynamic load
+rating Ca, HIWIN's recommended upper limit of the mean load (advice). It holds whether
+or not a duty is given: without one the life is not worked out, and a nut run near Ca
+lasts a few kilometres."""
+
+import numpy as np
+
+from app.core.checks.ball_life import mean_load, operating_mean_load
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+    at_least,
+)
+from app.core.formulas import ballscrew
+from app.core.phrase import Amount, Phrase
+
+
+def carried_load(app: Application, preload_n: Array, force_n: Array | float) -> Array:
+    """The load the ball track of each nut of preload ``preload_n`` [N] (0 or NaN: with
+    play) carries [N]: the cycle's cubic mean of it (each segment raised by the preload,
+    ``ball_life.operating_mean_load``) where the axis moves over a stroke, else the
+    running thrust ``force_n`` [N] raised by the preload."""
+    if mean_load(app) > 0.0:
+        return operating_mean_load(app, preload_n)
+    preload = np.nan_to_num(np.asarray(preload_n, dtype=np.float64))
+    return np.asarray(ballscrew.preloaded_operating_load(force_n, preload), dtype=np.float64)
+
+
+class BallLoad(Check):
+    name = "ball_load"
+    label = "Mean load (ball screw)"
+    kind = "advice"
+    description = (
+        "The load a ball nut's ball track carries (the cycle's cubic mean where a stroke "
+        "is given, else the running thrust; in a preloaded nut raised by its preload) "
+        "against a fifth of its dynamic load rating Ca, the mean load HIWIN recommends at "
+        "most: nearer Ca the rated life is short (at Ca, 10^6 revolutions), whether or "
+        "not a duty is given to work it out. Applies to ball screws only."
+    )
+    quantity = "force"
+    formula = "F_m = F_carried; F_max = Ca / 5"
+    source = (
+        "HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, Table 3.1 (recommended "
+        "mean axial load at most Ca / 5); ISO 3408-5 rated life"
+    )
+    sources = ("dynamic_load", "preload")
+    capacity_sources = ("dynamic_load",)
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        load = carried_load(app, t.preload_n, q.axis.force_n)
+        return Measure(t.ball.copy(), load, t.dynamic_load_n / 5.0)
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {"F_carried": carried_load(app, t.preload_n, q.axis.force_n), "Ca": t.dynamic_load_n}
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        ca, load = s.dynamic_load_n or np.nan, _carried(app, s, r)
+        verb = "within" if passed else "above"
+        values = {"load": Amount(load, "force"), "ca": Amount(ca, "force")}
+        text = "The ball track carries {load}, " + verb + " a fifth of Ca = {ca} (HIWIN's "
+        if not load > ca / 1e3:  # a life past 10^15 revolutions (or no load): no fatigue
+            return Phrase(text + "recommended most).", values)
+        revolutions = ballscrew.rated_life_revolutions(ca, 1.0, load)
+        values["km"] = Amount(revolutions * s.lead_m, "travel")
+        text += "recommended most); its rated life there is {km} of travel (L10, load factor 1)."
+        return Phrase(text, values)
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        load = _carried(app, s, r)
+        return Phrase(
+            "A ball nut with Ca of at least {ca} (a larger size, more ball circuits), or a "
+            "lighter load or acceleration.",
+            {"ca": Amount(at_least(5.0 * load), "force")},
+        )
+
+
+def _carried(app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
+    """``carried_load`` of the one screw ``s`` at its numbers ``r``."""
+    return float(carried_load(app, np.array([s.preload_n or 0.0]), r.axis.force_n)[0])
