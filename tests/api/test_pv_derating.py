@@ -144,7 +144,9 @@ def test_an_iso_polymer_nut_is_derated_as_well(
         _, kind, source = pv_derating.LUBRICATION_FACTORS[lubrication]
         assert f"({lubrication}, {kind}: {source})" in pressure["message"]
     else:
+        # derated to nothing, the lubrication factor multiplies nothing: it is not offered
         assert "no PV left" in pressure["fix"]
+        assert "lubricate" not in pressure["fix"] and "cool the nut's" in pressure["fix"]
 
 
 def test_a_bad_lubrication_is_a_field_level_422(client: TestClient) -> None:

@@ -108,7 +108,8 @@ def no_pv_left(app: Application, r: Quantities[float]) -> Phrase:
     is then within it."""
     return Phrase(
         "At {temp} around it the nut has no PV left (its material's highest "
-        "temperature): choose a nut material rated hotter, or cool or lubricate the nut.",
+        "temperature), and lubrication cannot add to nothing: choose a nut material rated "
+        "hotter, or cool the nut's surroundings.",
         {"temp": Amount(app.ambient_c, "temperature")},
     )
 
