@@ -92,4 +92,8 @@ def test_an_anti_backlash_nuts_drag_heats_the_nut(client: TestClient) -> None:
         f"Friction turns {thread_w:.3g} W into heat and the nut's drag {drag_w:.4g} W more: "
     )
     assert "a nut of less drag" in heat["fix"]
+    # the rise is linear in the cycle's mean speed: 80 K of room at 0.09756 x 80 / 143.2
+    # m/s, less the 5 % margin
+    mean_mm_s = 0.95 * mean_m_s * 80.0 / rise_k * 1e3
+    assert f"dwells included) of at most {mean_mm_s:.4g} mm/s" in heat["fix"]
     assert "drag_torque" in heat["sources"]

@@ -5,6 +5,7 @@ both ways) and the nut's surface."""
 import numpy as np
 
 from app.core.checks.base import (
+    MARGIN_NOTE,
     Application,
     Array,
     CandidateTable,
@@ -14,6 +15,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     where_given,
 )
 from app.core.formulas import heat
@@ -117,8 +119,15 @@ class NutHeat(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         drag = ", a nut of less drag (less preload)" if r.heat.drag_power_w > 0.0 else ""
+        # the heat is linear in the cycle's mean speed: the rise falls with it to the room
+        room = (s.temperature_max_c or np.nan) - app.ambient_c
+        mean = r.heat.heat_speed_m_s * room / r.heat.nut_temperature_rise_k
         return Phrase(
-            "Less heat or more cooling: longer dwells or a lower speed, a steeper lead "
-            "(higher efficiency), a lubricated or lower-friction nut" + drag + ", a larger "
-            "screw or a nut rated hotter."
+            "Less heat or more cooling: longer dwells or a lower speed, for a mean speed "
+            "over the cycle (its travel over its time, dwells included) of at most {mean}; "
+            "a steeper lead (higher efficiency), a lubricated or lower-friction nut"
+            + drag
+            + ", a larger screw or a nut rated hotter."
+            + MARGIN_NOTE,
+            {"mean": Amount(at_most(mean), "speed")},
         )
