@@ -281,10 +281,8 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="motor_rms_curve", page="motor_rms_curve", core="motor_rms_curve",
         label="Continuous torque curve",
-        help="The motor's continuous duty zone against speed, as its maker's chart draws "
-        "it: one point “rpm torque” per line, rpm ascending, torque in the torque unit "
-        "chosen. The cycle's RMS torque is held to it segment by segment; empty: the "
-        "continuous torque at every speed (a library servo brings its own)",
+        help="The continuous duty zone of the maker's chart, “rpm torque” per line, for "
+        "the RMS torque; empty: the continuous torque at every speed",
         api_help="The motor's continuous duty zone against speed: points [rpm, N m] in a "
         "body, rpm:torque,rpm:torque in a query, rpm ascending. The cycle's RMS torque is "
         "held to it segment by segment; none given: the continuous torque at every speed "
