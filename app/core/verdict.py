@@ -65,6 +65,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "thermal_conductivity": "nut thermal conductivity",
     "thread_half_angle": "flank angle",
     "traverse_speed": "traverse speed limit",
+    "travel_deviation": "travel deviation by useful travel",
     "type": "nut type",
     "wear_rate": "specific wear rate",
     "yield_strength": "yield strength",

@@ -24,20 +24,24 @@ class Accuracy(Check):
     name = "accuracy"
     label = "Positioning accuracy"
     description = (
-        "Lead error over the stroke, plus the screw's thermal growth over the stroke (its "
-        "material's expansion, the screw taken at the ambient against the 20 °C reference; "
-        "its own friction heat is not counted), plus the largest backlash, plus "
-        "repeatability, summed as a worst case, against the tolerance."
+        "Lead error over the stroke (a leadscrew's lead accuracy times the stroke; a ball "
+        "screw's limit deviation e_p of its ISO 3408-3 tolerance class over the stroke), "
+        "plus the screw's thermal growth over the stroke (its material's expansion, the "
+        "screw taken at the ambient against the 20 °C reference; its own friction heat is "
+        "not counted), plus the largest backlash, plus repeatability, summed as a worst "
+        "case, against the tolerance."
     )
     quantity = "length"
-    formula = (
-        "e = a_lead * stroke + alpha * stroke * abs(T_ambient - T_ref) + b_max + r; e_allowed = tol"
-    )
+    formula = "e = e_lead + alpha * stroke * abs(T_ambient - T_ref) + b_max + r; e_allowed = tol"
     source = (
-        "seed catalog, Screw Accuracy; thermal growth dL = alpha L dT (ASM Handbook "
-        "expansion); THK Ball Screw, Point of Selection: Studying the Positioning Accuracy "
-        "(thermal displacement a cause of error beside the lead accuracy and the clearance)"
+        "seed catalog, Screw Accuracy; ISO 3408-3 and HIWIN BS-08-2-EN-1704-K sec. 3.5.3 "
+        "(a ball screw's e_p by useful travel); thermal growth dL = alpha L dT (ASM "
+        "Handbook expansion); THK Ball Screw, Point of Selection: Studying the Positioning "
+        "Accuracy (thermal displacement a cause of error beside the lead accuracy and the "
+        "clearance)"
     )
+    # a ball screw's lead accuracy is its class's v300p, with its maker's e_p table
+    # (``travel_deviation``) where it is a positioning class
     sources = ("lead_accuracy", "backlash", "repeatability", "screw_expansion")
     needs = ("lead_accuracy", "backlash")  # a missing repeatability counts as none
 
@@ -52,16 +56,16 @@ class Accuracy(Check):
             t.repeatability_m,
         )
         tolerance = same(t, app.positioning_tolerance_m)
-        # judged where the lead accuracy and the nut's play are given (a screw of one's
-        # own has neither)
-        given = where_given(t.lead_accuracy) & where_given(t.backlash_max_m)
+        # judged where the lead error and the nut's play are given (a screw of one's own
+        # has neither)
+        given = where_given(q.accuracy.lead_error_m) & where_given(t.backlash_max_m)
         return Measure(given, np.asarray(error), tolerance)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "a_lead": t.lead_accuracy,
+            "e_lead": q.accuracy.lead_error_m,
             "stroke": app.stroke_m if app.stroke_m is not None else app.length_m,
             "alpha": t.screw_expansion_per_k,
             "T_ambient": app.ambient_c,
