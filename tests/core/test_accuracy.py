@@ -1,14 +1,17 @@
 """Positioning accuracy (app.core.formulas.accuracy, app.core.checks.accuracy): lead error,
-thermal growth, and a ball screw's ISO 3408-3 class over the stroke."""
+thermal growth, a ball screw's ISO 3408-3 class over the stroke, and the terms a catalog
+does not give."""
 
 import math
 
 import pytest
 
 from app.catalog import Catalog
+from app.contract.units import render
 from app.core.batch import CheckResult
 from app.core.evaluate import evaluate
 from app.core.formulas import accuracy
+from app.core.phrase import Phrase
 from tests.core.conftest import light_app
 
 
@@ -134,3 +137,41 @@ def test_a_ball_screws_accuracy_takes_its_class_over_the_stroke(
     )
     assert c.value == pytest.approx(error_mm / 1e3, rel=1e-9)
     assert c.passed is passed
+
+
+def test_a_trapezoidal_screws_known_terms_alone_fail_a_tight_tolerance(catalog: Catalog) -> None:
+    """Tr22x10(P5)-acetal over a 1500 mm stroke at 60 C, 0.1 mm tolerance: no lead
+    accuracy is given for an ISO trapezoidal screw, but its C45 screw grows
+    11.7e-6 x 1500 x 40 = 0.702 mm (ASM Metals Handbook) and its nut's play is up to
+    0.3 mm (catalog, assumed): 1.002 mm of known error, ten times the tolerance. The
+    check ran before only where a lead accuracy is given, so this screw passed."""
+    c = _accuracy(
+        catalog,
+        "Tr22x10(P5)-acetal",
+        length_m=1.8,
+        stroke_m=1.5,
+        ambient_c=60.0,
+        positioning_tolerance_m=0.1e-3,
+    )
+    assert c.value == pytest.approx((11.7e-6 * 1500 * 40 + 0.3) * 1e-3, rel=1e-9)
+    assert not c.passed
+    text = render(c.message)
+    assert "of the known terms" in text and "even without the lead error" in text
+    assert "precision lead grade" not in render(c.fix or Phrase(""))
+
+
+def test_a_trapezoidal_screws_pass_says_it_leaves_the_lead_error_out(catalog: Catalog) -> None:
+    """The same screw against a 2 mm tolerance passes on its known 1.002 mm; its message
+    and its verdict's summary say the lead error is left out, and the summary never says
+    it passes every check."""
+    ev = evaluate(
+        light_app(length_m=1.8, stroke_m=1.5, ambient_c=60.0, positioning_tolerance_m=2e-3),
+        catalog.by_id["Tr22x10(P5)-acetal"],
+    )
+    c = next(c for c in ev.checks if c.name == "accuracy")
+    assert c.passed and c.value == pytest.approx(1.002e-3, rel=1e-9)
+    assert "leaving out the lead error" in render(c.message)
+    summary = render(ev.verdict.summary)
+    assert "Positioning accuracy (no lead accuracy)" in summary
+    assert "Passes every check" not in summary
+    assert [(p.check, p.missing) for p in ev.verdict.partial] == [("accuracy", ("lead accuracy",))]
