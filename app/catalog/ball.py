@@ -9,6 +9,7 @@ from one table of the maker's catalog, cited once per column.
 
 import math
 from collections.abc import Mapping
+from itertools import pairwise
 from typing import Any
 
 from app.catalog.entry import Entry
@@ -31,6 +32,7 @@ FAMILY_FIELDS = frozenset(
         "anti_backlash",
         "accuracy_grade",
         "lead_accuracy_mm_per_300mm",
+        "travel_deviation_mm_by_useful_travel_mm",
         "dn_limit_mm_rpm",
         "friction_dynamic",
         "friction_static",
@@ -121,6 +123,23 @@ def _drag_torques(family: Entry, ca_n: float, lead_m: float) -> tuple[float, flo
     )
 
 
+def _deviation_bands(family: Entry) -> tuple[tuple[float, float], ...]:
+    """A positioning class's limit deviation e_p by useful travel (the maker's table),
+    rows of (useful travel up to [m], e_p [m]); empty for a transport class (its e_p
+    follows ISO 3408-3's rule, ``accuracy.ball_travel_deviation``)."""
+    name = "travel_deviation_mm_by_useful_travel_mm"
+    if not family.has(name):
+        return ()
+    rows = family.rows(name, 2)
+    travels, deviations = [r[0] for r in rows], [r[1] for r in rows]
+    rising = all(a < b for a, b in pairwise(travels))
+    if not rows or not rising or min(travels) <= 0 or min(deviations) <= 0:
+        raise family.fail(name, "rows of [useful travel up to mm, e_p mm], both > 0, travel rising")
+    if any(b < a for a, b in pairwise(deviations)):
+        raise family.fail(name, "e_p must not fall as the useful travel grows")
+    return tuple((to_si(lu, "mm"), to_si(ep, "mm")) for lu, ep in rows)
+
+
 def _temperature_range(family: Entry) -> tuple[float | None, float | None]:
     """The family's operating temperature range [deg C], (None, None) when it gives none
     (the temperature check then says it could not run)."""
@@ -153,8 +172,6 @@ def _spec(
         raise row.fail("root_diameter_mm", "must be below the outer diameter")
     play = _row_value(row, "axial_play_mm") or 0.0
     drag_min, drag_max = _drag_torques(family, ca, lead)
-    per_300mm = to_si(family.number("lead_accuracy_mm_per_300mm"), "mm")
-    lead_accuracy = per_300mm / to_si(300.0, "mm")
     t_min, t_max = _temperature_range(family)
     return ScrewSpec(
         id=row.entry,
@@ -176,7 +193,6 @@ def _spec(
         drag_torque_max_nm=drag_max,
         backlash_min_m=0.0,
         backlash_max_m=play,
-        lead_accuracy_m_per_m=lead_accuracy,
         yield_strength_pa=None
         if material.yield_strength_pa is None
         else material.yield_strength_pa.value,
@@ -195,6 +211,8 @@ def _spec(
         temperature_min_c=t_min,
         temperature_max_c=t_max,
         preload_n=family.number("preload_fraction", allow_zero=True) * ca,
+        travel_variation_300mm_m=to_si(family.number("lead_accuracy_mm_per_300mm"), "mm"),
+        travel_deviation_bands=_deviation_bands(family),
     )
 
 
@@ -203,6 +221,7 @@ FAMILY_PROVENANCE = {
     "friction_static": "friction_static",
     "friction_dynamic": "friction_dynamic",
     "lead_accuracy": "lead_accuracy_mm_per_300mm",
+    "travel_deviation": "travel_deviation_mm_by_useful_travel_mm",
     "dn_limit": "dn_limit_mm_rpm",
     "accuracy_grade": "accuracy_grade",
     "drag_torque": "preload_friction_factor",
@@ -266,12 +285,13 @@ def _display(specs: list[ScrewSpec], prov: Mapping[str, Provenance]) -> dict[str
         "leads": (sorted(s.lead_m for s in specs), "m"),
         "dn_limit": (first.dn_limit_mm_rpm, "mm rpm"),
         "accuracy_grade": (first.accuracy_grade, ""),
-        "lead_accuracy": (first.lead_accuracy_m_per_m, "m/m"),
+        "lead_accuracy_per_300mm": (first.travel_variation_300mm_m, "m"),
+        "travel_deviation": (first.travel_deviation_bands or None, "m"),
         "friction_dynamic": (first.friction_dynamic, ""),
         "friction_static": (first.friction_static, ""),
     }
     family_prov = Provenance("vendor", "ball screw family")
-    named = {**prov, "leads": prov["lead"]}
+    named = {**prov, "leads": prov["lead"], "lead_accuracy_per_300mm": prov["lead_accuracy"]}
     return {
         k: Sourced(v, unit, named.get(k, family_prov))
         for k, (v, unit) in values.items()

@@ -395,7 +395,7 @@ def _ball_line(spec: ScrewSpec, length_m: float) -> str:
     """A ball screw: the maker's order code (HIWIN's, module docstring) with the lengths
     to state, then the part in words: ISO 3408, nominal diameter x lead, rolled or ground,
     tolerance class and lead deviation, nut and preload, lengths and end machining."""
-    e300 = spec.lead_accuracy_m_per_m * 0.3 if spec.lead_accuracy_m_per_m else None
+    e300 = spec.travel_variation_300mm_m
     code = ""
     if spec.family_id.startswith("HIWIN"):
         deviation = None if e300 is None else from_si(e300, "mm")

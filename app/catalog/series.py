@@ -82,6 +82,16 @@ NOT_GIVEN = {
         ("allowed_wear", "allowed wear depth"),
         ("backlash", "axial play"),
     )
+} | {
+    # the accuracy check runs without these, on the terms the screw has
+    "lead_accuracy": Provenance(
+        "derived",
+        "no lead accuracy in the catalog for this screw: the accuracy check leaves its "
+        "lead error out and says so",
+    ),
+    "repeatability": Provenance(
+        "derived", "no repeatability in the catalog for this screw: the accuracy check counts none"
+    ),
 }
 
 

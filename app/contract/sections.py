@@ -301,6 +301,11 @@ class VerdictOut(BaseModel):
         description="Checks that run for this application but could not for this screw, "
         "each with the values it lacks."
     )
+    partial: Annotated[list[SkipOut], From("partial")] = Field(
+        description="Checks that ran without a value this screw lacks: judged on the "
+        "terms they have, each with the values whose terms it left out (a positioning "
+        "accuracy without the lead error of a screw with no lead accuracy)."
+    )
     not_applicable: Annotated[list[str], From("not_applicable")] = Field(
         description="Checks that do not apply to this kind of screw (a leadscrew nut's "
         "PV, pressure, speed, design-load, wear and heat checks on a ball screw): not "
@@ -308,5 +313,5 @@ class VerdictOut(BaseModel):
     )
     summary: Annotated[str, From("summary", via=phrase_text)] = Field(
         description="Passes or fails in one line; never 'passes every check' when a check "
-        "could not run, and then which did not and why."
+        "could not run or ran without a value the screw lacks, and then which and why."
     )

@@ -263,6 +263,12 @@ class CheckResult(NamedTuple):
         return None if self.passed else self.slot.fix_of(self.check)
 
     @property
+    def left_out(self) -> tuple[str, ...]:
+        """The catalog values the check ran without (``Check.left_out``)."""
+        at = self.slot
+        return self.check.left_out(at.app, at.screw, at.row)
+
+    @property
     def input_limits(self) -> Mapping[str, float] | None:
         if self.passed:
             return None

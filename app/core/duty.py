@@ -96,11 +96,30 @@ def duty(
         "life_travel_min_m": low_m,
         "life_years_min": life.life_years(low_m, stroke, cycles) if rated else nan,
         "life_years_max": life.life_years(high_m, stroke, cycles) if rated else nan,
-        "lead_error_m": accuracy.cumulative_lead_error(t.lead_accuracy, travel),
+        "lead_error_m": lead_error(t, travel),
         "thermal_growth_m": accuracy.thermal_growth(
             t.screw_expansion_per_k, travel, app.ambient_c - REFERENCE_TEMPERATURE_C
         ),
     }
+
+
+def lead_error(t: CandidateTable, travel_m: float) -> Array:
+    """Each candidate's lead error over the travel [m]: a leadscrew's lead accuracy times
+    the travel (``accuracy.cumulative_lead_error``), a ball screw's limit deviation e_p of
+    its ISO 3408-3 class over it, by its maker's table or the transport rule
+    (``accuracy.ball_travel_deviation``); NaN where the catalog gives neither (a screw
+    without a lead accuracy, a travel beyond its class's table).
+
+    An ISO trapezoidal screw has none; a rolled T7 ball screw over 100 mm has 52 um, its
+    v300p (not 100 / 300 of it).
+    """
+    error = np.asarray(accuracy.cumulative_lead_error(t.lead_accuracy, travel_m), np.float64)
+    ball = ~np.isnan(t.travel_variation_300mm_m)
+    error[ball] = accuracy.ball_travel_deviation(travel_m, t.travel_variation_300mm_m[ball])
+    for position, bands in enumerate(t.deviation_tables):
+        rows = t.deviation_table == position
+        error[rows] = accuracy.ball_travel_deviation(travel_m, math.nan, bands)
+    return error
 
 
 def travel_thrusts(

@@ -236,6 +236,7 @@ class ScrewSpec:
     backlash_max_m: float | None = None
     life_min_m: float | None = None
     life_max_m: float | None = None
+    #: a leadscrew's cumulative lead error per length of travel (the seed's lead accuracy)
     lead_accuracy_m_per_m: float | None = None
     repeatability_m: float | None = None
     temperature_min_c: float | None = None
@@ -289,6 +290,14 @@ class ScrewSpec:
     accuracy_grade: str = ""
     #: a ball nut's axial preload [N] (0: a nut with play; None: not a ball screw)
     preload_n: float | None = None
+    #: A ball screw's ISO 3408-3 tolerance class: the travel variation it allows within
+    #: any 300 mm, v300p [m], and for a positioning class its maker's table of the limit
+    #: deviation e_p by useful travel, rows of (useful travel up to [m], e_p [m]); without
+    #: a table the transport rule applies (``accuracy.ball_travel_deviation``). A ball
+    #: screw has no lead accuracy per length (``lead_accuracy_m_per_m`` None): v300p is
+    #: not a rate.
+    travel_variation_300mm_m: float | None = None
+    travel_deviation_bands: tuple[tuple[float, float], ...] = ()
 
 
 class Judged(Protocol):

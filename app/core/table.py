@@ -81,21 +81,31 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
     return out
 
 
-#: A nut material's allowable pressure by sliding speed: (speed [m/s], pressure [Pa]) rows.
-PressureTable = tuple[tuple[float, float], ...]
+#: A table of rows of two numbers: a nut material's allowable pressure by sliding speed
+#: (speed [m/s], pressure [Pa]), a ball screw's limit deviation by useful travel (l_u up
+#: to [m], e_p [m]).
+Rows = tuple[tuple[float, float], ...]
 
 
-def _pressure_tables(
-    screws: Sequence[ScrewSpec],
-) -> tuple[tuple[PressureTable, ...], NDArray[np.intp]]:
-    """The distinct nut pressure-speed tables, in first use, and each screw's position in
-    them (-1: none)."""
-    tables: dict[PressureTable, int] = {}
+def _distinct(screws: Sequence[ScrewSpec], name: str) -> tuple[tuple[Rows, ...], NDArray[np.intp]]:
+    """The distinct tables of ScrewSpec field ``name`` (nut pressure-speed tables, ball
+    screws' travel deviation tables), in first use, and each screw's position in them
+    (-1: none)."""
+    tables: dict[Rows, int] = {}
     which = [
-        tables.setdefault(s.bearing_pressure_table, len(tables)) if s.bearing_pressure_table else -1
-        for s in screws
+        tables.setdefault(table, len(tables)) if (table := getattr(s, name)) else -1 for s in screws
     ]
     return tuple(tables), np.array(which, dtype=np.intp)
+
+
+def _renumbered(
+    tables: tuple[Rows, ...], others: tuple[Rows, ...], which: NDArray[np.intp]
+) -> tuple[tuple[Rows, ...], NDArray[np.intp]]:
+    """``tables`` with those of ``others`` it lacks appended, and positions ``which`` in
+    ``others`` as positions in the merged tables (-1, no table, stays -1)."""
+    merged = tables + tuple(t for t in others if t not in tables)
+    renumber = np.array([*map(merged.index, others), -1], dtype=np.intp)
+    return merged, renumber[which]
 
 
 #: One size and nut of a series, every lead: (series id, nut material, coated,
@@ -198,6 +208,7 @@ COPIED = {
     "static_load_n": "static_load_n",
     "dn_limit_mm_rpm": "dn_limit_mm_rpm",
     "preload_n": "preload_n",
+    "travel_variation_300mm_m": "travel_variation_300mm_m",
 }
 
 
@@ -325,6 +336,8 @@ class CandidateTable:
     static_load_n: Array
     dn_limit_mm_rpm: Array
     preload_n: Array
+    #: a ball screw's ISO 3408-3 travel variation within 300 mm, v300p [m] (NaN: none)
+    travel_variation_300mm_m: Array
     #: Axis-free numbers of the operating point (``_axis_free``): tan of ``lead_angle_rad``,
     #: the static friction at which the thread self-locks, the seed's contact area of
     #: three threads [m^2], the transition slenderness, the engaged flank area at the
@@ -351,11 +364,16 @@ class CandidateTable:
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together
     pressure_table: NDArray[np.intp]
+    #: each ball screw's table of limit deviation by useful travel, as a position in
+    #: ``deviation_tables`` (-1: none, a transport class or a leadscrew)
+    deviation_table: NDArray[np.intp]
 
     #: what the whole catalog offers; a subset (``take``) keeps its catalog's
     reach: Reach
     #: the distinct nut pressure-speed tables, (sliding speed [m/s], pressure [Pa]) rows
-    pressure_tables: tuple[PressureTable, ...]
+    pressure_tables: tuple[Rows, ...]
+    #: the distinct tables of limit deviation by useful travel, (l_u up to [m], e_p [m])
+    deviation_tables: tuple[Rows, ...]
 
     @classmethod
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
@@ -378,7 +396,8 @@ class CandidateTable:
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")
         traverse, extrapolated = _bands(screws, lead)
         ball = np.array([s.screw_type == "ball" for s in screws], dtype=bool)
-        tables, which = _pressure_tables(screws)
+        tables, which = _distinct(screws, "bearing_pressure_table")
+        deviation_tables, deviation_table = _distinct(screws, "travel_deviation_bands")
         limits = (col("design_load_n"), col("max_length_m"), flag("anti_backlash"))
         reach = _reach(screws, lead, rd, *limits)
         columns = dict(
@@ -397,6 +416,8 @@ class CandidateTable:
             reach=reach,
             pressure_tables=tables,
             pressure_table=which,
+            deviation_tables=deviation_tables,
+            deviation_table=deviation_table,
             screws=screws,
             lead_m=lead,
             repeatability_m=np.nan_to_num(col("repeatability_m")),
@@ -423,6 +444,7 @@ class CandidateTable:
             screws=tuple([screws[i] for i in index.tolist()]),
             reach=self.reach,
             pressure_tables=self.pressure_tables,
+            deviation_tables=self.deviation_tables,
             **picked,
         )
 
@@ -431,15 +453,18 @@ class CandidateTable:
         joined = {
             name: np.concatenate((getattr(self, name), getattr(other, name))) for name in COLUMNS
         }
-        tables = self.pressure_tables
-        tables += tuple(t for t in other.pressure_tables if t not in tables)
-        # position -1 (no table) reads the appended -1
-        renumber = np.array([*map(tables.index, other.pressure_tables), -1], dtype=np.intp)
-        joined["pressure_table"][len(self) :] = renumber[other.pressure_table]
+        n = len(self)
+        tables, joined["pressure_table"][n:] = _renumbered(
+            self.pressure_tables, other.pressure_tables, other.pressure_table
+        )
+        deviations, joined["deviation_table"][n:] = _renumbered(
+            self.deviation_tables, other.deviation_tables, other.deviation_table
+        )
         return CandidateTable(
             screws=self.screws + other.screws,
             reach=self.reach,
             pressure_tables=tables,
+            deviation_tables=deviations,
             **joined,
         )
 
@@ -449,5 +474,7 @@ class CandidateTable:
 
 #: The array fields of a table, in declaration order.
 COLUMNS = tuple(
-    f.name for f in fields(CandidateTable) if f.name not in ("screws", "reach", "pressure_tables")
+    f.name
+    for f in fields(CandidateTable)
+    if f.name not in ("screws", "reach", "pressure_tables", "deviation_tables")
 )

@@ -65,6 +65,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "thermal_conductivity": "nut thermal conductivity",
     "thread_half_angle": "flank angle",
     "traverse_speed": "traverse speed limit",
+    "travel_deviation": "travel deviation by useful travel",
     "type": "nut type",
     "wear_rate": "specific wear rate",
     "yield_strength": "yield strength",
@@ -238,15 +239,30 @@ def skips(checks: Sequence[Check], screw: ScrewSpec) -> tuple[Skip, ...]:
     return tuple(skip for skip in found if skip.missing)
 
 
+def partial(checks: Sequence[CheckResult]) -> tuple[Skip, ...]:
+    """The checks that ran without a catalog value the screw lacks, each with the values
+    whose terms they left out, in words (``Check.left_out``: a positioning accuracy
+    judged on the known terms, without the lead error of a screw with no lead accuracy)."""
+    found = ((c, c.left_out) for c in checks)
+    return tuple(
+        Skip(c.name, c.label, tuple(dict.fromkeys(map(value_label, gaps))))
+        for c, gaps in found
+        if gaps
+    )
+
+
 def summary(
     passed: bool,
     checks: Sequence[CheckResult],
     skipped: Sequence[Skip],
     inapplicable: Sequence[str] = (),
+    judged_in_part: Sequence[Skip] = (),
 ) -> Phrase:
     """The one-line summary every page shows: never "passes every check" when a check
-    could not run; then the checks that did not run and why, and once, for a ball screw,
-    that the leadscrew nut's checks do not apply (they are not counted as not checked).
+    could not run or ran without a value the screw lacks; then the checks that did not run
+    and why, those that judged the known terms alone and what they left out, and once, for
+    a ball screw, that the leadscrew nut's checks do not apply (they are not counted as
+    not checked).
 
     A pass with nothing skipped is "Passes every check."; with skipped checks it is
     "Passes the N limits that ran; not checked: ..." (advice, which never rejects, counted
@@ -256,7 +272,7 @@ def summary(
     if not passed:
         failed = [c.label for c in checks if not c.passed and c.kind == "limit"]
         head = f"Fails {', '.join(failed)}." if failed else "Fails."
-    elif not skipped:
+    elif not skipped and not judged_in_part:
         head = "Passes every check."
     else:
         advice = len(checks) - len(limits)
@@ -267,6 +283,9 @@ def summary(
     parts = [head]
     if skipped:
         parts.append(f"Not checked: {'; '.join(s.phrase() for s in skipped)}.")
+    if judged_in_part:
+        known = "; ".join(s.phrase() for s in judged_in_part)
+        parts.append(f"Judged without a value the screw lacks, its term left out: {known}.")
     if inapplicable:
         parts.append(NOT_APPLICABLE_TEXT)
     return Phrase(" ".join(parts))
@@ -304,13 +323,19 @@ class Verdict:
         return skips(self.runnable, self.screw)
 
     @cached_property
+    def partial(self) -> tuple[Skip, ...]:
+        """The checks that ran without a value this screw lacks, each with what it left
+        out (``partial``)."""
+        return partial(self.checks)
+
+    @cached_property
     def not_applicable(self) -> tuple[str, ...]:
         """The labels of the checks that do not apply to this kind of screw."""
         return not_applicable(self.runnable, self.screw)
 
     @cached_property
     def summary(self) -> Phrase:
-        return summary(self.passed, self.checks, self.skipped, self.not_applicable)
+        return summary(self.passed, self.checks, self.skipped, self.not_applicable, self.partial)
 
 
 class Record(Protocol):

@@ -10,7 +10,8 @@ from app.contract.form import parse_inputs, parse_units, share_query
 from app.contract.inputs import ApplicationIn
 from tests.motor_library import MOTORS
 
-#: A printer's Z axis (Tr8x8(P2), 12 mm/s) with a stepper on a 4 kHz controller.
+#: A printer's Z axis (Tr8x8(P2), 12 mm/s) with a stepper on a 4 kHz controller, 0.5 mm
+#: tolerance (the acetal nut's play, up to 0.3 mm, counts in full).
 Z_AXIS = {
     "load_n": 20.0,
     "speed_mm_s": 12.0,
@@ -21,7 +22,7 @@ Z_AXIS = {
     "step_angle_deg": 1.8,
     "microsteps": 16,
     "max_step_rate_hz": 4000.0,
-    "positioning_tolerance_mm": 0.01,
+    "positioning_tolerance_mm": 0.5,
 }
 
 

@@ -103,12 +103,14 @@ def test_the_100_w_ac_servo_carries_its_cited_ratings() -> None:
 
 def test_a_pick_and_place_axis_sized_with_the_100_w_servo(client: TestClient) -> None:
     """A 1.5 kg head at 300 mm/s and 3 m/s2 on 300 mm strokes (the stepper's pick-and-place
-    axis without the step controller): on an 8 mm lead the screw turns 300 / 8 x 60 =
+    axis without the step controller, on trapezoidal screws at a 0.5 mm tolerance: their
+    nuts' play, up to 0.3 mm, counts in full): on an 8 mm lead the screw turns 300 / 8 x 60 =
     2250 rpm, below the 3000 min-1 rated speed, so the peak envelope gives the whole
     1.11 N m there (on the published part of the envelope, not the assumed top). The
     motor's share is the largest of the segment torque over 1.11 N m, the RMS torque over
     0.318 N m and 2250 / 6000 = 0.375: the speed governs."""
     params = {
+        "family": ["TR-C45", "TR-304"],
         "load_n": 5.0,
         "moving_mass_kg": 1.5,
         "speed_mm_s": 300.0,
@@ -118,7 +120,7 @@ def test_a_pick_and_place_axis_sized_with_the_100_w_servo(client: TestClient) ->
         "dwell_s": 0.1,
         "cycles_per_day": 10000.0,
         "required_life_years": 2.0,
-        "positioning_tolerance_mm": 0.05,
+        "positioning_tolerance_mm": 0.5,
         "rank_by": "motor_margin",
         "motor": "yaskawa-sgm7j-01a",
     }

@@ -76,13 +76,23 @@ def test_at_least_twenty_sizes_and_leads_from_12x4_to_40x10(catalog: Catalog) ->
 
 def test_dn_limits_grades_and_play_are_the_makers(catalog: Catalog) -> None:
     """Sec. 3.7.6: DN 70,000 rolled, 90,000 ground; Table 4.1 T7 v300p 0.052 mm; Table 6.1
-    T3 e300 12 um; Table 4.4 max. axial play 0.04 mm of R16-05T3 (rolled nuts come with
-    play, sec. 3.6: no preload, no drag)."""
+    T3 e300 12 um, and Table 3.4's T3 limit deviation e_p by useful path (12 um up to
+    315 mm ... 76 um at 4,000-5,000 mm); Table 4.4 max. axial play 0.04 mm of R16-05T3
+    (rolled nuts come with play, sec. 3.6: no preload, no drag). v300p is the variation
+    within any 300 mm, not a rate per length: no lead accuracy per metre."""
     rolled, ground = catalog.by_id["R16-05T3-FSIDIN"], catalog.by_id["R32-10K5-FSC"]
     assert (rolled.dn_limit_mm_rpm, ground.dn_limit_mm_rpm) == (70_000.0, 90_000.0)
     assert (rolled.accuracy_grade, ground.accuracy_grade) == ("T7", "T3")
-    assert rolled.lead_accuracy_m_per_m == pytest.approx(52e-6 / 0.3)
-    assert ground.lead_accuracy_m_per_m == pytest.approx(12e-6 / 0.3)
+    assert rolled.travel_variation_300mm_m == pytest.approx(52e-6)
+    assert ground.travel_variation_300mm_m == pytest.approx(12e-6)
+    assert rolled.lead_accuracy_m_per_m is None and ground.lead_accuracy_m_per_m is None
+    assert rolled.travel_deviation_bands == ()  # a transport class: ISO 3408-3's rule
+    table_3_4_t3_um = (12, 13, 15, 16, 18, 21, 24, 29, 35, 41, 50, 62, 76)
+    upper_mm = (315, 400, 500, 630, 800, 1000, 1250, 1600, 2000, 2500, 3150, 4000, 5000)
+    bands = ground.travel_deviation_bands
+    assert [lu for lu, _ in bands] == pytest.approx([lu / 1e3 for lu in upper_mm])
+    assert [ep for _, ep in bands] == pytest.approx([ep / 1e6 for ep in table_3_4_t3_um])
+    assert "Table 3.4" in ground.provenance["travel_deviation"].source
     assert (rolled.backlash_max_m, rolled.drag_torque_max_nm) == (pytest.approx(4e-5), 0.0)
     assert not rolled.anti_backlash and ground.anti_backlash
 
@@ -124,8 +134,9 @@ def test_the_leads_of_one_size_share_a_series(catalog: Catalog) -> None:
     assert series.fields["leads"].value == pytest.approx([0.005, 0.01, 0.016, 0.02])
 
 
-def _family_text(root_mm: float = 12.9, with_ca_source: bool = True) -> str:
-    """A one-nut ball-screw family of a user's own, in the built-in file's form."""
+def _family_text(root_mm: float = 12.9, with_ca_source: bool = True, deviation: str = "") -> str:
+    """A one-nut ball-screw family of a user's own, in the built-in file's form;
+    ``deviation`` the rows of its table of e_p by useful travel, when it has one."""
     src = '{ provenance = "user", source = "test table" }'
     columns = [
         f"outer_diameter_mm = {src}",
@@ -145,6 +156,11 @@ def _family_text(root_mm: float = 12.9, with_ca_source: bool = True) -> str:
             "anti_backlash = false",
             f'accuracy_grade = {{ value = "T7", {value} }}',
             f"lead_accuracy_mm_per_300mm = {{ value = 0.052, {value} }}",
+            *(
+                [f"travel_deviation_mm_by_useful_travel_mm = {{ value = {deviation}, {value} }}"]
+                if deviation
+                else []
+            ),
             f"dn_limit_mm_rpm = {{ value = 70000.0, {value} }}",
             f"friction_dynamic = {{ value = 0.01, {value} }}",
             f"friction_static = {{ value = 0.003, {value} }}",
@@ -172,11 +188,32 @@ def test_a_users_ball_screw_family_loads(tmp_path: Path) -> None:
     assert screw.provenance["dynamic_load"].kind == "user"
 
 
+def test_a_users_ball_screw_family_gives_its_own_deviation_table(tmp_path: Path) -> None:
+    """A maker's table of e_p by useful travel (Steinmeyer's rolled T7: 52 um up to
+    315 mm, 69 um to 400 mm) is read in SI with the family's provenance."""
+    text = _family_text(deviation="[[315, 0.052], [400, 0.069]]")
+    (tmp_path / "ballscrew-mine.toml").write_text(text)
+    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    travels, deviations = zip(*screw.travel_deviation_bands, strict=True)
+    assert travels == pytest.approx((0.315, 0.4)) and deviations == pytest.approx((52e-6, 69e-6))
+    assert screw.provenance["travel_deviation"].kind == "user"
+
+
 @pytest.mark.parametrize(
     ("text", "field"),
     [
         pytest.param(_family_text(root_mm=16.0), "root_diameter_mm", id="root-above-od"),
         pytest.param(_family_text(with_ca_source=False), "columns", id="no-source-for-ca"),
+        pytest.param(
+            _family_text(deviation="[[315, 0.012], [400, 0.010]]"),
+            "travel_deviation_mm_by_useful_travel_mm",
+            id="deviation-falling-with-travel",
+        ),
+        pytest.param(
+            _family_text(deviation="[[400, 0.012], [315, 0.013]]"),
+            "travel_deviation_mm_by_useful_travel_mm",
+            id="deviation-travel-not-rising",
+        ),
     ],
 )
 def test_a_bad_ball_screw_family_is_refused_naming_the_field(

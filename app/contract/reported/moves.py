@@ -2,11 +2,22 @@
 profile and each segment's time, speed, thrust and torque."""
 
 from app.contract.reported.row import Formula, Reported
-from app.core import motion, segments
+from app.core import duty, motion, segments
 from app.core.formulas import accuracy, geometry, profile
+from app.core.formulas.declare import formula_of
 
 ROWS: tuple[Reported, ...] = (
-    Reported("accuracy.lead_error_mm", formula=Formula(accuracy.cumulative_lead_error)),
+    Reported(
+        "accuracy.lead_error_mm",
+        formula=Formula(
+            duty.lead_error,
+            "e = lead accuracy x stroke (a leadscrew); e = e_p of the ISO 3408-3 class over "
+            "the stroke: its table's band, or v300p max(1, 2 stroke / 300 mm) (a ball screw)",
+            formula_of(accuracy.cumulative_lead_error).source
+            + "; "
+            + formula_of(accuracy.ball_travel_deviation).source,
+        ),
+    ),
     Reported("accuracy.thermal_growth_mm", formula=Formula(accuracy.thermal_growth)),
     Reported("profile.peak_speed_mm_s", formula=Formula(profile.peak_speed)),
     Reported("profile.accel_time_s", formula=Formula(profile.ramp_time)),

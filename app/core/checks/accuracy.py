@@ -1,5 +1,7 @@
 """Worst-case positioning error over the stroke against the user's tolerance."""
 
+import math
+
 import numpy as np
 
 from app.core.checks.base import (
@@ -12,82 +14,120 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    everywhere,
     same,
-    where_given,
 )
 from app.core.duty import REFERENCE_TEMPERATURE_C
 from app.core.formulas import accuracy
 from app.core.phrase import Amount, Phrase
 
 
+def _known(value: float | None) -> bool:
+    """A value the catalog gives: neither None nor NaN."""
+    return value is not None and not math.isnan(value)
+
+
 class Accuracy(Check):
     name = "accuracy"
     label = "Positioning accuracy"
     description = (
-        "Lead error over the stroke, plus the screw's thermal growth over the stroke (its "
-        "material's expansion, the screw taken at the ambient against the 20 °C reference; "
-        "its own friction heat is not counted), plus the largest backlash, plus "
-        "repeatability, summed as a worst case, against the tolerance."
+        "Lead error over the stroke (a leadscrew's lead accuracy times the stroke; a ball "
+        "screw's limit deviation e_p of its ISO 3408-3 tolerance class over the stroke), "
+        "plus the screw's thermal growth over the stroke (its material's expansion, the "
+        "screw taken at the ambient against the 20 °C reference; its own friction heat is "
+        "not counted), plus the largest backlash, plus repeatability, summed as a worst "
+        "case, against the tolerance. A term the catalog does not give for the screw (no "
+        "lead accuracy, no backlash) is left out and the result says so: the known terms "
+        "alone over the tolerance fail it."
     )
     quantity = "length"
-    formula = (
-        "e = a_lead * stroke + alpha * stroke * abs(T_ambient - T_ref) + b_max + r; e_allowed = tol"
-    )
+    formula = "e = e_lead + alpha * stroke * abs(T_ambient - T_ref) + b_max + r; e_allowed = tol"
     source = (
-        "seed catalog, Screw Accuracy; thermal growth dL = alpha L dT (ASM Handbook "
-        "expansion); THK Ball Screw, Point of Selection: Studying the Positioning Accuracy "
-        "(thermal displacement a cause of error beside the lead accuracy and the clearance)"
+        "seed catalog, Screw Accuracy; ISO 3408-3 and HIWIN BS-08-2-EN-1704-K sec. 3.5.3 "
+        "(a ball screw's e_p by useful travel); thermal growth dL = alpha L dT (ASM "
+        "Handbook expansion); THK Ball Screw, Point of Selection: Studying the Positioning "
+        "Accuracy (thermal displacement a cause of error beside the lead accuracy and the "
+        "clearance)"
     )
+    # a ball screw's lead accuracy is its class's v300p, with its maker's e_p table
+    # (``travel_deviation``) where it is a positioning class
     sources = ("lead_accuracy", "backlash", "repeatability", "screw_expansion")
-    needs = ("lead_accuracy", "backlash")  # a missing repeatability counts as none
 
     def applies(self, app: Application) -> bool:
         return app.positioning_tolerance_m is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        # every screw is judged on the terms it has: a lead error or a backlash the
+        # catalog does not give counts as none, and the result says it is left out
         error = accuracy.worst_case_error(
-            q.accuracy.lead_error_m,
+            np.nan_to_num(q.accuracy.lead_error_m),
             q.accuracy.thermal_growth_m,
-            t.backlash_max_m,
+            np.nan_to_num(t.backlash_max_m),
             t.repeatability_m,
         )
-        tolerance = same(t, app.positioning_tolerance_m)
-        # judged where the lead accuracy and the nut's play are given (a screw of one's
-        # own has neither)
-        given = where_given(t.lead_accuracy) & where_given(t.backlash_max_m)
-        return Measure(given, np.asarray(error), tolerance)
+        return Measure(everywhere(t), np.asarray(error), same(t, app.positioning_tolerance_m))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "a_lead": t.lead_accuracy,
+            "e_lead": np.nan_to_num(q.accuracy.lead_error_m),
             "stroke": app.stroke_m if app.stroke_m is not None else app.length_m,
             "alpha": t.screw_expansion_per_k,
             "T_ambient": app.ambient_c,
             "T_ref": REFERENCE_TEMPERATURE_C,
-            "b_max": t.backlash_max_m,
+            "b_max": np.nan_to_num(t.backlash_max_m),
             "r": t.repeatability_m,
             "tol": app.positioning_tolerance_m,
         }
 
+    def left_out(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> tuple[str, ...]:
+        """The lead accuracy where the screw's lead error over the stroke is not given,
+        the backlash where its nut's is not."""
+        gaps = {
+            "lead_accuracy": _known(r.accuracy.lead_error_m),
+            "backlash": s.backlash_max_m is not None,
+        }
+        return tuple(name for name, given in gaps.items() if not given)
+
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         repeatability = s.repeatability_m or 0.0
-        backlash = s.backlash_max_m or 0.0  # judged only where given (``measure``)
+        lead, backlash = r.accuracy.lead_error_m, s.backlash_max_m
+        has_lead, has_play = _known(lead), backlash is not None
+        terms = (
+            ("lead error {lead}", has_lead),
+            ("thermal growth {growth}", True),
+            ("backlash {b}", has_play),
+            ("repeatability {r}", True),
+        )
+        known = " + ".join(text for text, given in terms if given)
+        gaps = (("lead error", has_lead), ("backlash", has_play))
+        missing = " and ".join(words for words, given in gaps if not given)
         error = accuracy.worst_case_error(
-            r.accuracy.lead_error_m, r.accuracy.thermal_growth_m, backlash, repeatability
+            lead if has_lead else 0.0, r.accuracy.thermal_growth_m, backlash or 0.0, repeatability
         )
         verb = "is within" if passed else "exceeds"
+        head = "Worst-case error {e} (" + known + ") " + verb + " the {tol} tolerance"
+        if missing:
+            without = ", leaving out the " if passed else " even without the "
+            head = (
+                "Worst-case error {e} of the known terms ("
+                + known
+                + ") "
+                + verb
+                + " the {tol} tolerance"
+                + without
+                + missing
+                + ", which the catalog does not give for this screw"
+            )
         return Phrase(
-            "Worst-case error {e} (lead error {lead} + thermal growth {growth} + backlash "
-            "{b} + repeatability {r}) " + verb + " the {tol} tolerance. The growth takes the "
-            "screw at the {ambient} ambient, {dt} from the {ref} reference; its own friction "
-            "heat is not counted.",
+            head + ". The growth takes the screw at the {ambient} ambient, {dt} from the {ref} "
+            "reference; its own friction heat is not counted.",
             {
                 "e": Amount(error, "length"),
-                "lead": Amount(r.accuracy.lead_error_m, "length"),
+                "lead": Amount(lead if has_lead else 0.0, "length"),
                 "growth": Amount(abs(r.accuracy.thermal_growth_m), "length"),
-                "b": Amount(backlash, "length"),
+                "b": Amount(backlash or 0.0, "length"),
                 "r": Amount(repeatability, "length"),
                 "tol": Amount(app.positioning_tolerance_m or 0.0, "length"),
                 "ambient": Amount(app.ambient_c, "temperature"),
@@ -106,13 +146,12 @@ class Accuracy(Check):
             "ref": Amount(REFERENCE_TEMPERATURE_C, "temperature"),
             "growth": Amount(abs(r.accuracy.thermal_growth_m), "length"),
         }
+        # a finer lead grade cannot help where the lead error is not counted at all
+        grade = "a precision lead grade" if _known(r.accuracy.lead_error_m) else ""
         if s.anti_backlash or not reach.anti_backlash:
-            return Phrase(
-                "Choose a precision lead grade" + thermal + ", or widen the tolerance.", values
-            )
-        return Phrase(
-            "Choose an anti-backlash series (no backlash) or a precision lead grade"
-            + thermal
-            + ".",
-            values,
-        )
+            if not grade:
+                return Phrase("Widen the tolerance" + thermal + ".", values)
+            return Phrase("Choose " + grade + thermal + ", or widen the tolerance.", values)
+        series = "an anti-backlash series (no backlash)"
+        choices = " or ".join(c for c in (series, grade) if c)
+        return Phrase("Choose " + choices + thermal + ".", values)

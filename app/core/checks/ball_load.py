@@ -67,10 +67,11 @@ class BallLoad(Check):
         verb = "within" if passed else "above"
         values = {"load": Amount(load, "force"), "ca": Amount(ca, "force")}
         text = "The ball track carries {load}, " + verb + " a fifth of Ca = {ca} (HIWIN's "
-        if not load > ca / 1e3:  # a life past 10^15 revolutions (or no load): no fatigue
+        with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+            revolutions = ballscrew.rated_life_revolutions(np.float64(ca), 1.0, np.float64(load))
+        if not np.isfinite(revolutions):  # no load, or one so small the life overflows
             return Phrase(text + "recommended most).", values)
-        revolutions = ballscrew.rated_life_revolutions(ca, 1.0, load)
-        values["km"] = Amount(revolutions * s.lead_m, "travel")
+        values["km"] = Amount(float(revolutions) * s.lead_m, "travel")
         text += "recommended most); its rated life there is {km} of travel (L10, load factor 1)."
         return Phrase(text, values)
 

@@ -144,6 +144,11 @@ class Check:
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         raise NotImplementedError
 
+    def left_out(self, app: Application, s: ScrewSpec, r: Quantities[float]) -> tuple[str, ...]:
+        """The catalog values ``s`` lacks that the check ran without, their terms left
+        out of its judgement (catalog keys); empty where it judged every term."""
+        return ()
+
     def fix(
         self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach
     ) -> Phrase | None:
