@@ -13,8 +13,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from app.core import motion, segments
-from app.core.checks import BY_NAME, ball_life
+from app.core.checks import BY_NAME
 from app.core.checks.base import Check
+from app.core.duty import operating_mean_load
 from app.core.input_rules import read_inputs, refused
 from app.core.model import Application, AxisProvenance, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
@@ -78,10 +79,10 @@ class Batch:
     @cached_property
     def mean_load_n(self) -> list[float]:
         """Each candidate's cubic mean load over the cycle [N] its ball nut's L10 life is
-        rated at, its preload counted (``ball_life.operating_mean_load``; 0 without a
+        rated at, its preload counted (``duty.operating_mean_load``; 0 without a
         stroke): worked out for the whole batch at once."""
         preload = self.screening.table.preload_n[self.at]
-        mean: list[float] = ball_life.operating_mean_load(self.app, preload).tolist()
+        mean: list[float] = operating_mean_load(self.app, preload).tolist()
         return mean
 
     @cached_property

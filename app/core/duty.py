@@ -10,6 +10,7 @@ import numpy as np
 from app.core import motion
 from app.core.formulas import (
     accuracy,
+    ballscrew,
     heat,
     life,
     support,
@@ -133,6 +134,32 @@ def travel_thrusts(
     if c.fastest is None:
         return [], []
     return c.moving_n, c.travels
+
+
+def operating_mean_load(
+    app: Application, preload_n: Array, thrusts: tuple[list[float], list[float]] | None = None
+) -> Array:
+    """The cubic mean of the load each nut's ball track carries over the cycle [N]: each
+    segment's thrust raised by the nut's preload F_pr [N] (0 or NaN: a nut with play)
+    below its disengagement force (``ballscrew.preloaded_operating_load``). ``thrusts``:
+    the cycle's ``travel_thrusts`` when already worked out."""
+    forces, travels = thrusts or travel_thrusts(app)
+    preload = np.nan_to_num(np.asarray(preload_n, dtype=np.float64))
+    carried = ballscrew.preloaded_operating_load(np.array(forces)[None, :], preload[:, None])
+    mean = np.asarray(ballscrew.cubic_mean_load(carried, travels), dtype=np.float64)
+    return np.broadcast_to(mean, preload.shape).copy()  # 0 for every nut when nothing moves
+
+
+def ball_track_load(app: Application, t: CandidateTable, c: motion.Cycle, force_n: float) -> Array:
+    """The load each nut's ball track carries [N]: the cycle's cubic mean of it, each
+    segment raised by the nut's preload (``operating_mean_load``), where the axis moves
+    over a stroke; else the running thrust ``force_n`` [N] raised by the preload. The
+    cycle ``c``: ``motion.cycle_of``. A sliding nut (no preload) carries the thrust."""
+    thrusts = travel_thrusts(app, c)
+    if ballscrew.cubic_mean_load(*thrusts) > 0.0:
+        return operating_mean_load(app, t.preload_n, thrusts)
+    preload = np.nan_to_num(t.preload_n)
+    return np.asarray(ballscrew.preloaded_operating_load(force_n, preload), dtype=np.float64)
 
 
 def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:

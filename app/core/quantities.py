@@ -229,6 +229,9 @@ class NutLife(Generic[V]):
     wear_force_n: V
     wear_travel_m: V
     wear_life_years: V
+    #: The load a ball nut's ball track carries (``duty.ball_track_load``: the cycle's
+    #: cubic mean with the preload, else the running thrust with it) [N]
+    ball_load_n: V
 
 
 @dataclass(slots=True)
@@ -458,6 +461,7 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
         **nut.seed_pv(app, t, pv_n, pv_rpm, limits["pv_limit_pa_m_s"]),
         **flank,
         **worn,
+        "ball_load_n": duty.ball_track_load(app, t, c, force_n),
         **duty.duty(app, t, worn["wear_travel_m"], c.cycles_per_day),
         **duty.support_bearing(app, t, c),
         **held,

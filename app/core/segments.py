@@ -149,29 +149,20 @@ def continuous_rating(app: Application) -> float | None:
 
 def continuous_torque(app: Application, rpm: Array) -> Array:
     """The continuous torque the motor allows at ``rpm`` [N m]: its continuous duty zone
-    (``motor_rms_curve``), linear between its points and never above the rating
-    (``continuous_rating``); the rating at every speed without a zone. Past the zone's
-    last point it is read at that point (the motor runs no faster: the speed check)."""
-    rated = continuous_rating(app)
-    if rated is None:
-        return np.full(np.shape(rpm), np.nan)
-    if not app.motor_rms_curve:
-        return np.full(np.shape(rpm), rated)
-    zone: Array = np.array(app.motor_rms_curve, dtype=np.float64).reshape(-1, 2)
-    at: Array = np.interp(np.minimum(rpm, zone[-1, 0]), zone[:, 0], zone[:, 1])
-    return np.minimum(at, rated)
+    (``motor_rms_curve``, given), read as its torque-speed curve is (``read_curve``) and
+    never above the rating (``continuous_rating``)."""
+    zone: Array = read_curve(app.motor_rms_curve, rpm)
+    return np.minimum(zone, continuous_rating(app) or np.inf)
 
 
 def referred_rms(app: Application, parts: list[Segment[Array]]) -> Array:
     """The cycle's RMS torque referred to the continuous rating, each segment's torque
-    held to the continuous duty zone at its speed (``profile.referred_rms_torque``) [N m];
-    the plain RMS torque (``rms``) where the motor has no zone (its rating holds at every
-    speed)."""
-    rated = continuous_rating(app)
-    if rated is None or not app.motor_rms_curve:
-        return rms(parts)
+    held to the continuous duty zone (``motor_rms_curve``, given) at its speed
+    (``profile.referred_rms_torque``) [N m]. Without a zone the rating holds at every
+    speed and the plain RMS torque (``rms``) is the one held to it."""
     torques: list[Any] = [s.torque_nm for s in parts]
     allowed: list[Any] = [continuous_torque(app, s.rpm) for s in parts]
+    rated = continuous_rating(app) or np.nan
     value = profile.referred_rms_torque(torques, [s.duration_s for s in parts], allowed, rated)
     return np.asarray(value, dtype=np.float64)
 
@@ -194,7 +185,7 @@ def curve_speed(app: Application, torque_nm: Array) -> Array:
     >>> np.round(curve_speed(app, np.array([0.3, 0.1, 0.05, 0.5])), 9).tolist()
     [500.0, 2000.0, 2000.0, nan]
     """
-    speeds, torques = _curve_points(app)
+    speeds, torques = _curve_points(app.motor_curve)
     usable = torques / curve_margin(app)
     need = np.ravel(torque_nm)
     below = usable[:, None] < need[None, :]
@@ -210,18 +201,28 @@ def curve_speed(app: Application, torque_nm: Array) -> Array:
 
 
 def curve_torque(app: Application, rpm: Array) -> Array:
-    """The motor's usable torque at ``rpm`` [N m]: its curve, linear between its points,
-    divided by ``curve_margin``. Below the first point it is the first point's torque;
-    past the last point the motor cannot run (the speed check rejects it), and the
-    torque is read at the last point."""
-    speeds, torques = _curve_points(app)
-    usable: Array = np.interp(np.minimum(rpm, speeds[-1]), speeds, torques) / curve_margin(app)
+    """The motor's usable torque at ``rpm`` [N m]: its curve (``read_curve``) divided by
+    ``curve_margin``."""
+    usable: Array = read_curve(app.motor_curve, rpm) / curve_margin(app)
     return usable
 
 
-def _curve_points(app: Application) -> tuple[Array, Array]:
-    """The motor curve's speeds [rpm] and torques [N m], as arrays."""
-    curve: Array = np.array(app.motor_curve, dtype=np.float64).reshape(-1, 2)
-    speeds: Array = curve[:, 0]
-    torques: Array = curve[:, 1]
+def read_curve(curve: tuple[tuple[float, float], ...], rpm: Array) -> Array:
+    """A motor's (rpm, N m) curve read at ``rpm`` [N m]: linear between its points, the
+    first point's torque below it; past the last point the motor cannot run (the speed
+    check rejects it), and the torque is read at the last point.
+
+    >>> read_curve(((0.0, 0.4), (1000.0, 0.2)), np.array([500.0, 2000.0])).tolist()
+    [0.30000000000000004, 0.2]
+    """
+    speeds, torques = _curve_points(curve)
+    at: Array = np.interp(np.minimum(rpm, speeds[-1]), speeds, torques)
+    return at
+
+
+def _curve_points(curve: tuple[tuple[float, float], ...]) -> tuple[Array, Array]:
+    """A motor curve's speeds [rpm] and torques [N m], as arrays."""
+    points: Array = np.array(curve, dtype=np.float64).reshape(-1, 2)
+    speeds: Array = points[:, 0]
+    torques: Array = points[:, 1]
     return speeds, torques

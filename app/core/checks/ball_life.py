@@ -16,7 +16,7 @@ from app.core.checks.base import (
     ScrewSpec,
     same,
 )
-from app.core.duty import travel_thrusts
+from app.core.duty import operating_mean_load, travel_thrusts
 from app.core.formulas import ballscrew, life
 from app.core.phrase import Amount, Phrase
 
@@ -25,20 +25,6 @@ def mean_load(app: Application) -> float:
     """The cycle's cubic mean axial load [N], each moving segment weighted by its travel
     (its revolutions); 0 without a stroke."""
     return float(ballscrew.cubic_mean_load(*travel_thrusts(app)))
-
-
-def operating_mean_load(
-    app: Application, preload_n: Array, thrusts: tuple[list[float], list[float]] | None = None
-) -> Array:
-    """The cubic mean of the load each nut's ball track carries over the cycle [N]: each
-    segment's thrust raised by the nut's preload F_pr [N] (0 or NaN: a nut with play)
-    below its disengagement force (``ballscrew.preloaded_operating_load``). ``thrusts``:
-    the cycle's ``travel_thrusts`` when already worked out."""
-    forces, travels = thrusts or travel_thrusts(app)
-    preload = np.nan_to_num(np.asarray(preload_n, dtype=np.float64))
-    carried = ballscrew.preloaded_operating_load(np.array(forces)[None, :], preload[:, None])
-    mean = np.asarray(ballscrew.cubic_mean_load(carried, travels), dtype=np.float64)
-    return np.broadcast_to(mean, preload.shape).copy()  # 0 for every nut when nothing moves
 
 
 def life_years(

@@ -5,7 +5,6 @@ lasts a few kilometres."""
 
 import numpy as np
 
-from app.core.checks.ball_life import mean_load, operating_mean_load
 from app.core.checks.base import (
     Application,
     Array,
@@ -20,17 +19,6 @@ from app.core.checks.base import (
 )
 from app.core.formulas import ballscrew
 from app.core.phrase import Amount, Phrase
-
-
-def carried_load(app: Application, preload_n: Array, force_n: Array | float) -> Array:
-    """The load the ball track of each nut of preload ``preload_n`` [N] (0 or NaN: with
-    play) carries [N]: the cycle's cubic mean of it (each segment raised by the preload,
-    ``ball_life.operating_mean_load``) where the axis moves over a stroke, else the
-    running thrust ``force_n`` [N] raised by the preload."""
-    if mean_load(app) > 0.0:
-        return operating_mean_load(app, preload_n)
-    preload = np.nan_to_num(np.asarray(preload_n, dtype=np.float64))
-    return np.asarray(ballscrew.preloaded_operating_load(force_n, preload), dtype=np.float64)
 
 
 class BallLoad(Check):
@@ -54,16 +42,15 @@ class BallLoad(Check):
     capacity_sources = ("dynamic_load",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        load = carried_load(app, t.preload_n, q.axis.force_n)
-        return Measure(t.ball.copy(), load, t.dynamic_load_n / 5.0)
+        return Measure(t.ball.copy(), q.life.ball_load_n, t.dynamic_load_n / 5.0)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"F_carried": carried_load(app, t.preload_n, q.axis.force_n), "Ca": t.dynamic_load_n}
+        return {"F_carried": q.life.ball_load_n, "Ca": t.dynamic_load_n}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
-        ca, load = s.dynamic_load_n or np.nan, _carried(app, s, r)
+        ca, load = s.dynamic_load_n or np.nan, r.life.ball_load_n
         verb = "within" if passed else "above"
         values = {"load": Amount(load, "force"), "ca": Amount(ca, "force")}
         text = "The ball track carries {load}, " + verb + " a fifth of Ca = {ca} (HIWIN's "
@@ -76,14 +63,8 @@ class BallLoad(Check):
         return Phrase(text, values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        load = _carried(app, s, r)
         return Phrase(
             "A ball nut with Ca of at least {ca} (a larger size, more ball circuits), or a "
             "lighter load or acceleration.",
-            {"ca": Amount(at_least(5.0 * load), "force")},
+            {"ca": Amount(at_least(5.0 * r.life.ball_load_n), "force")},
         )
-
-
-def _carried(app: Application, s: ScrewSpec, r: Quantities[float]) -> float:
-    """``carried_load`` of the one screw ``s`` at its numbers ``r``."""
-    return float(carried_load(app, np.array([s.preload_n or 0.0]), r.axis.force_n)[0])
