@@ -141,10 +141,11 @@ def operating_mean_load(
 ) -> Array:
     """The cubic mean of the load each nut's ball track carries over the cycle [N]: each
     segment's thrust raised by the nut's preload F_pr [N] (0 or NaN: a nut with play)
-    below its disengagement force (``ballscrew.preloaded_operating_load``). ``thrusts``:
+    below its disengagement force (``ballscrew.preloaded_operating_load``; a NaN preload
+    counts as none). ``thrusts``:
     the cycle's ``travel_thrusts`` when already worked out."""
     forces, travels = thrusts or travel_thrusts(app)
-    preload = np.nan_to_num(np.asarray(preload_n, dtype=np.float64))
+    preload = np.asarray(preload_n, dtype=np.float64)
     carried = ballscrew.preloaded_operating_load(np.array(forces)[None, :], preload[:, None])
     mean = np.asarray(ballscrew.cubic_mean_load(carried, travels), dtype=np.float64)
     return np.broadcast_to(mean, preload.shape).copy()  # 0 for every nut when nothing moves
@@ -158,8 +159,7 @@ def ball_track_load(app: Application, t: CandidateTable, c: motion.Cycle, force_
     thrusts = travel_thrusts(app, c)
     if ballscrew.cubic_mean_load(*thrusts) > 0.0:
         return operating_mean_load(app, t.preload_n, thrusts)
-    preload = np.nan_to_num(t.preload_n)
-    return np.asarray(ballscrew.preloaded_operating_load(force_n, preload), dtype=np.float64)
+    return np.asarray(ballscrew.preloaded_operating_load(force_n, t.preload_n), dtype=np.float64)
 
 
 def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:

@@ -71,7 +71,7 @@ def preloaded_operating_load(force_n: ArrayLike, preload_n: ArrayLike) -> Any:
     """The load a preloaded ball nut's loaded ball track carries under an axial load
     ``force_n`` [N] (its size: the sign does not matter) and the preload F_pr [N]: below
     the disengagement force 2^(3/2) F_pr the preload raises it; at or above it, or with
-    no preload (a nut with play), it is the axial load. Numbers or arrays alike.
+    no preload (a nut with play: 0 or NaN), it is the axial load. Numbers or arrays alike.
 
     A 5 % preload of Ca 9,600 N (480 N) under 50.9 N carries 507 N; past 1,358 N the
     preload no longer counts:
@@ -80,6 +80,8 @@ def preloaded_operating_load(force_n: ArrayLike, preload_n: ArrayLike) -> Any:
     507.2
     >>> float(preloaded_operating_load(2000.0, 480.0)), float(preloaded_operating_load(50.9, 0.0))
     (2000.0, 50.9)
+    >>> float(preloaded_operating_load(50.9, float("nan")))
+    50.9
     """
     force = np.abs(np.asarray(force_n, dtype=np.float64))
     preload = np.asarray(preload_n, dtype=np.float64)
