@@ -83,8 +83,8 @@ def bounded_number(ge: float, le: float, description: str) -> Any:
 def describe(field: InputField) -> str:
     """The field's API description from the table: label, API unit, help (its
     ``api_help`` where it has one), and for a yes-no field shown as a choice what true and
-    false mean. A box the page leaves empty is a field the API leaves out: the help's
-    "empty" reads "left out".
+    false mean (a field without help: its label and unit alone). A box the page leaves
+    empty is a field the API leaves out: the help's "empty" reads "left out".
 
     >>> from app.contract.fields import BY_API
     >>> describe(BY_API["ambient_c"])
@@ -95,7 +95,7 @@ def describe(field: InputField) -> str:
     unit = f" [{field.unit}]" if field.unit else ""
     meanings = "".join(f" {c.value}: {c.text}." for c in field.choices if field.kind == "yes-no")
     words = field.api_help or re.sub(r"\bempty\b", "left out", field.help)
-    return f"{field.label}{unit}. {words}.{meanings}"
+    return f"{field.label}{unit}." + (f" {words}." if words else "") + meanings
 
 
 #: Text inputs (ids, material names): letters, digits and a few separators, 1-60 long.

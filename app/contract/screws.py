@@ -3,7 +3,7 @@ the user's own with its geometry and material (pydantic v2); the evaluate reques
 """
 
 import math
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import (
     BaseModel,
@@ -12,12 +12,15 @@ from pydantic import (
     Field,
     Tag,
     ValidationInfo,
+    create_model,
     field_validator,
 )
 
-from app.contract.input_types import NotBool, bounded_number
+from app.contract.input_field import InputField
+from app.contract.input_types import api_type
 from app.contract.inputs import ApplicationIn
 from app.contract.params import close_hint, page_name_hint
+from app.contract.screw_fields import MATERIAL_FIELDS, SCREW_FIELDS
 from app.contract.sections import ProvenanceOut
 from app.core.formulas import trapezoidal
 from app.core.units import from_si, to_si
@@ -29,19 +32,27 @@ NUT_API = "nut_material"
 NUT_LABEL = "Nut material"
 
 
-class MaterialIn(BaseModel):
+def _definitions(rows: tuple[InputField, ...]) -> dict[str, Any]:
+    """``create_model`` field definitions of ``rows``: API name -> (type, default or ``...``)."""
+    return {f.api: (api_type(f), ... if f.required else f.default) for f in rows}
+
+
+class MaterialInputs(BaseModel):
+    """The user's own screw material; its numbers are the rows of ``MATERIAL_FIELDS``."""
+
     model_config = ConfigDict(extra="forbid")
 
-    youngs_modulus_pa: Annotated[float, bounded_number(1e6, 1e13, "Young's modulus [Pa]."), NotBool]
-    density_kg_m3: Annotated[float, bounded_number(1.0, 1e5, "Density [kg/m^3]."), NotBool]
-    yield_strength_pa: (
-        Annotated[
-            float,
-            bounded_number(1e6, 1e10, "Yield strength [Pa]; without it, Euler buckling only."),
-            NotBool,
-        ]
-        | None
-    ) = None
+
+if TYPE_CHECKING:
+    MaterialIn = MaterialInputs
+else:
+    MaterialIn = create_model(
+        "MaterialIn",
+        __base__=MaterialInputs,
+        __module__=__name__,
+        __doc__=MaterialInputs.__doc__,
+        **_definitions(MATERIAL_FIELDS),
+    )
 
 
 class CatalogScrewIn(BaseModel):
@@ -50,54 +61,14 @@ class CatalogScrewIn(BaseModel):
     catalog_id: str = Field(max_length=100, description="A screw id from /api/v1/select.")
 
 
-class CustomScrewIn(BaseModel):
-    """A screw that is not in the catalog. Diameters and lead in mm."""
+class CustomScrewInputs(BaseModel):
+    """A screw that is not in the catalog. Diameters and lead in mm; its numbers are the
+    rows of ``SCREW_FIELDS`` (``CustomScrewIn``), its material and nut material its own.
+    The checks between numbers read the fields before them (``SCREW_FIELDS`` order)."""
 
     model_config = ConfigDict(extra="forbid")
 
-    outer_diameter_mm: Annotated[
-        float, bounded_number(0.1, 1000.0, "Outer diameter [mm]."), NotBool
-    ]
-    root_diameter_mm: Annotated[
-        float, bounded_number(0.05, 1000.0, "Root (minor) diameter [mm], below the outer."), NotBool
-    ]
-    lead_mm: Annotated[float, bounded_number(0.01, 1000.0, "Lead [mm]."), NotBool]
-    thread_half_angle_deg: Annotated[
-        float,
-        bounded_number(0.0, 30.0, "Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal."),
-        NotBool,
-    ] = 14.5
-    friction_dynamic: Annotated[
-        float, bounded_number(1e-3, 1.0, "Running friction coefficient."), NotBool
-    ]
-    friction_static: Annotated[
-        float, bounded_number(1e-3, 1.0, "Static friction coefficient."), NotBool
-    ]
     material: Literal["steel", "stainless-303", "c45-steel", "stainless-304"] | MaterialIn = "steel"
-    drag_torque_nm: Annotated[
-        float, bounded_number(0.0, 1e4, "Nut drag torque [N m]."), NotBool
-    ] = 0.0
-    inertia_kg_m2_per_m: (
-        Annotated[
-            float,
-            bounded_number(
-                1e-15, 1e3, "Inertia per length [kg m²/m]; default: solid rod at the root."
-            ),
-            NotBool,
-        ]
-        | None
-    ) = None
-    pv_limit_mpa_m_s: (
-        Annotated[float, bounded_number(1e-6, 1e3, "Nut PV limit [MPa m/s]."), NotBool] | None
-    ) = None
-    pitch_mm: (
-        Annotated[
-            float,
-            bounded_number(0.01, 1000.0, "Thread pitch [mm]: the lead over the starts."),
-            NotBool,
-        ]
-        | None
-    ) = None
     nut_material: str | None = Field(
         default=None,
         max_length=40,
@@ -107,7 +78,7 @@ class CustomScrewIn(BaseModel):
         "contact pressure needs pitch_mm.",
     )
 
-    @field_validator("root_diameter_mm")
+    @field_validator("root_diameter_mm", check_fields=False)
     @classmethod
     def _root_below_outer(cls, value: float, info: ValidationInfo) -> float:
         outer = info.data.get("outer_diameter_mm")
@@ -115,7 +86,7 @@ class CustomScrewIn(BaseModel):
             raise ValueError("must be smaller than outer_diameter_mm")
         return value
 
-    @field_validator("pitch_mm")
+    @field_validator("pitch_mm", check_fields=False)
     @classmethod
     def _pitch_fits(cls, value: float | None, info: ValidationInfo) -> float | None:
         """The lead is a whole number of pitches, and the thread's basic profile (d2 =
@@ -145,7 +116,7 @@ class CustomScrewIn(BaseModel):
                 raise ValueError(f"at its pitch diameter d - P/2 = {flank:.4g} mm, {problem}")
         return value
 
-    @field_validator("friction_dynamic", "friction_static")
+    @field_validator("friction_dynamic", "friction_static", check_fields=False)
     @classmethod
     def _thread_drivable(cls, value: float, info: ValidationInfo) -> float:
         """A sliding thread can be driven only while mu tan(lambda) < cos(a_n) (Shigley)."""
@@ -157,6 +128,18 @@ class CustomScrewIn(BaseModel):
         if problem:
             raise ValueError(problem)
         return value
+
+
+if TYPE_CHECKING:
+    CustomScrewIn = CustomScrewInputs
+else:
+    CustomScrewIn = create_model(
+        "CustomScrewIn",
+        __base__=CustomScrewInputs,
+        __module__=__name__,
+        __doc__=CustomScrewInputs.__doc__,
+        **_definitions(SCREW_FIELDS),
+    )
 
 
 def _undrivable(lead: float, pitch_diameter: float, half_angle_deg: float, friction: float) -> str:

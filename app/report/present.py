@@ -23,18 +23,18 @@ from app.catalog.own import (
 from app.contract.fields import FIELDS
 from app.contract.outputs import ChangeOut, CountsOut, RemedyOut, SummaryOut
 from app.contract.schemas import CandidateOut
+from app.contract.screw_fields import HALF_ANGLE, SCREW_FIELDS
 from app.contract.screws import (
+    NUT_API,
     CustomScrewIn,
-    MaterialIn,
     NutMaterialOut,
     NutMaterialsOut,
     NutValueOut,
 )
 from app.contract.sections import ProvenanceOut
 from app.contract.source import Writer
-from app.contract.units import DEFAULT_UNITS, api_to_si, from_si, render, sig
+from app.contract.units import DEFAULT_UNITS, from_si, render, sig
 from app.core.model import Provenance, ScrewSpec
-from app.core.phrase import Quantity
 from app.core.record import Candidate
 from app.core.selection import Selection
 from app.report.reader import reader
@@ -163,37 +163,32 @@ def custom_screw(
     """A ScrewSpec from a validated ``CustomScrewIn`` (``app.catalog.own``): named screw
     materials from the catalog, the user's own with the thermal expansion of steel, and
     the catalog's nut material by name (``nuts``; UnknownNutMaterial for a name it lacks)."""
-    if isinstance(data.material, MaterialIn):
-        own = data.material
+    values = data.model_dump()
+    own = values.pop("material")
+    if isinstance(own, dict):
         material = user_material(
-            own.youngs_modulus_pa, own.density_kg_m3, own.yield_strength_pa, materials["steel"]
-        )
+            own["youngs_modulus_pa"], own["density_kg_m3"], own["yield_strength_pa"],
+            materials["steel"],
+        )  # fmt: skip
         material_name = "custom"
     else:
-        material, material_name = materials[data.material], data.material
+        material, material_name = materials[own], own
     nut = None
-    if data.nut_material is not None:
-        nut = (nuts or {}).get(data.nut_material)
+    name = values.pop(NUT_API)
+    if name is not None:
+        nut = (nuts or {}).get(name)
         if nut is None:
             known = ", ".join(nuts or {}) or "none"
-            raise UnknownNutMaterial(f"unknown nut material '{data.nut_material}' (known: {known})")
-    geometry = OwnGeometry(
-        outer_diameter_m=api_to_si(data.outer_diameter_mm, "length"),
-        root_diameter_m=api_to_si(data.root_diameter_mm, "length"),
-        lead_m=api_to_si(data.lead_mm, "length"),
-        thread_half_angle_rad=math.radians(data.thread_half_angle_deg),
-        friction_static=data.friction_static,
-        friction_dynamic=data.friction_dynamic,
-        drag_torque_nm=data.drag_torque_nm,
-        pv_limit_pa_m_s=_si_or_none(data.pv_limit_mpa_m_s, "pv"),
-        inertia_kg_m2_per_m=data.inertia_kg_m2_per_m,
-        pitch_m=_si_or_none(data.pitch_mm, "length"),
-    )
-    return own_screw(geometry, material, material_name, nut)
+            raise UnknownNutMaterial(f"unknown nut material '{name}' (known: {known})")
+    return own_screw(own_geometry(values), material, material_name, nut)
 
 
-def _si_or_none(value: float | None, quantity: Quantity) -> float | None:
-    return None if value is None else api_to_si(value, quantity)
+def own_geometry(values: Mapping[str, float | None]) -> OwnGeometry:
+    """The screw of ``SCREW_FIELDS``' ``values`` (API units, by API name) in SI: each
+    number times its row's factor, the flank half-angle from degrees to radians."""
+    si = {f.core: f.to_si(values[f.api]) for f in SCREW_FIELDS}
+    si[HALF_ANGLE.core] = math.radians(values[HALF_ANGLE.api] or 0.0)
+    return OwnGeometry(**si)
 
 
 #: A nut material's values as the page lists them: (key of its provenance, label).

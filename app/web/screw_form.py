@@ -1,8 +1,8 @@
 """The custom screw's form and query string, declared once from the API's own models.
 
-Each geometry, friction, drag and nut field of ``CustomScrewIn`` and each field of
-``MaterialIn`` becomes one page field under its API name (``outer_diameter_mm``), with
-its label, unit and hint read from the model's description ('Outer diameter [mm].').
+Each row of the screw's field table (``app.contract.screw_fields``: its geometry,
+friction, drag, inertia, PV limit and pitch, and the user's own material) becomes one page
+field under its API name (``outer_diameter_mm``), with the row's label, unit and hint.
 A field in the API's unit of a dimension a page switch sets (mm, N m, MPa m/s) is typed,
 shown and linked in the chosen unit (inches, oz in, psi ft/min), converted exactly by the
 unit table; the others (deg, Pa, kg/m³) in the API's. The material is a choice of the
@@ -16,13 +16,13 @@ from fractions import Fraction
 from typing import Any, get_args
 
 from pydantic import BaseModel, ValidationError
-from pydantic.fields import FieldInfo
 
+from app.contract import screw_fields
 from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
 from app.contract.form import BOUND_MESSAGES, convert_text, encode_query, unit_key
+from app.contract.input_field import InputField
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
 from app.contract.units import (
-    API_UNIT_QUANTITY,
     DEFAULT_UNITS,
     Quantity,
     display_system,
@@ -62,46 +62,14 @@ class ScrewField:
         return Fraction(repr(display_system({**DEFAULT_UNITS, **units})[self.quantity][1]))
 
 
-def _description(info: FieldInfo) -> str:
-    """The field's description, also when it sits inside an optional annotation."""
-    if info.description:
-        return info.description
-    for arg in get_args(info.annotation):
-        for meta in getattr(arg, "__metadata__", ()):
-            if isinstance(meta, FieldInfo) and meta.description:
-                return meta.description
-    return ""
+def _page_field(row: InputField) -> ScrewField:
+    """One row of the screw's field table as the page shows it (its default as text)."""
+    default = "" if row.default is None else f"{row.default:g}"
+    return ScrewField(row.page, row.label, row.unit, row.help, row.required, default, row.quantity)
 
 
-def split_description(text: str) -> tuple[str, str, str]:
-    """(label, unit, hint) of a model description.
-
-    >>> split_description("Flank half-angle [deg]: 14.5 Acme, 15 trapezoidal.")
-    ('Flank half-angle', 'deg', '14.5 Acme, 15 trapezoidal')
-    >>> split_description("Running friction coefficient.")
-    ('Running friction coefficient', '', '')
-    """
-    label, bracket, rest = text.rstrip(".").partition(" [")
-    unit, _, hint = rest.partition("]")
-    hint = hint.lstrip(",;: ")
-    return label, unit if bracket else "", hint[:1].upper() + hint[1:]
-
-
-def _number_fields(model: type[BaseModel]) -> tuple[ScrewField, ...]:
-    """The number fields of ``model`` (all but the material) in declaration order."""
-    fields = []
-    for name, info in model.model_fields.items():
-        if name in ("material", NUT_API):
-            continue
-        default = "" if info.is_required() or info.default is None else f"{info.default:g}"
-        label, unit, hint = split_description(_description(info))
-        quantity = API_UNIT_QUANTITY.get(unit)
-        fields.append(ScrewField(name, label, unit, hint, info.is_required(), default, quantity))
-    return tuple(fields)
-
-
-SCREW_FIELDS = _number_fields(CustomScrewIn)
-MATERIAL_FIELDS = _number_fields(MaterialIn)
+SCREW_FIELDS = tuple(map(_page_field, screw_fields.SCREW_FIELDS))
+MATERIAL_FIELDS = tuple(map(_page_field, screw_fields.MATERIAL_FIELDS))
 BY_NAME = {f.name: f for f in SCREW_FIELDS + MATERIAL_FIELDS}
 #: the named materials the API knows, then the user's own.
 MATERIALS = (
