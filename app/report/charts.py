@@ -8,6 +8,8 @@ against the sliding speed (``app.core.sweep.pressure_limits``). The pages draw t
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 from app.catalog import Catalog
 from app.catalog.axis_motor import CurveOrigin, curve_origin
 from app.contract.schemas import ApplicationIn
@@ -48,6 +50,9 @@ class ChartData:
     curve: tuple[tuple[float, float], ...]
     #: where the curve comes from (``axis_motor.curve_origin``; None without a curve)
     curve_origin: CurveOrigin | None
+    #: the continuous torque the cycle's RMS torque is held to, as (rpm, N m) points over
+    #: the curve's speeds (``continuous_line``; empty without a continuous rating)
+    continuous: tuple[tuple[float, float], ...]
     torque_safety_factor: float
     curve_margin: float
     sweep: list[LeadPoint]
@@ -66,6 +71,27 @@ def _wear_lines(
             life = from_si(point.travel_m, "km")
         lines.append(WearLine(point.id, point.force_n, life, life_band(catalog.by_id[point.id])))
     return lines, bool(app.stroke_m and motion.cycles_per_day(app))
+
+
+def continuous_line(app: Application) -> tuple[tuple[float, float], ...]:
+    """The motor's continuous torque [N m] against speed [rpm] as the RMS check holds the
+    cycle to it (``segments.continuous_torque``): its continuous duty zone's points where
+    it has one, else its continuous rating flat, each from standstill to the top of its
+    curve (or of the zone); empty without a continuous rating or a curve to draw it on.
+
+    >>> app = Application(load_n=0.0, speed_m_s=0.1, length_m=0.5, motor_rms_torque_nm=0.3,
+    ...                   motor_curve=((0.0, 0.9), (3000.0, 0.6)))
+    >>> continuous_line(app)
+    ((0.0, 0.3), (3000.0, 0.3))
+    """
+    rating = segments.continuous_rating(app)
+    if rating is None or not app.motor_curve:
+        return ()
+    if not app.motor_rms_curve:
+        return ((app.motor_curve[0][0], rating), (app.motor_curve[-1][0], rating))
+    rpm = sorted({x for x, _ in app.motor_curve} | {x for x, _ in app.motor_rms_curve})
+    torque = segments.continuous_torque(app, np.array(rpm, dtype=np.float64)).tolist()
+    return tuple(zip(rpm, torque, strict=True))
 
 
 #: the pressure-limit curves span the operating sliding speed divided and multiplied by
@@ -101,6 +127,7 @@ def chart_data(
         torque_limit_nm=app.max_torque_nm,
         curve=app.motor_curve,
         curve_origin=origin,
+        continuous=continuous_line(app),
         torque_safety_factor=app.torque_safety_factor,
         curve_margin=segments.curve_margin(app),
         sweep=sweep,

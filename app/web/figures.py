@@ -229,6 +229,7 @@ def result_figures(
                 d,
                 data.curve_margin,
                 data.curve_origin,
+                data.continuous,
             )
         figures["move"] = move_figure(top, d)
         figures["cycle_torque"] = cycle_torque_figure(top, d)

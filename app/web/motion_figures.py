@@ -24,13 +24,17 @@ def motor_figure(
     d: Display,
     margin: float = 1.0,
     origin: CurveOrigin | None = None,
+    continuous: tuple[tuple[float, float], ...] = (),
 ) -> dict[str, Any]:
     """The motor's torque against speed (its curve) and, for each top candidate, every
     moving segment's top rpm and torque times the safety factor: a point above the line
     is a segment the motor cannot drive. A stepper's curve (its pull-out) is drawn beside
     the usable torque the checks hold the move against, the pull-out over ``margin``.
     The curve's legend says where it comes from (``origin``, a key of
-    ``axis_motor.CURVE_ORIGINS``: typed in, the maker's published curve, or the model)."""
+    ``axis_motor.CURVE_ORIGINS``: typed in, the maker's published curve, or the model).
+    A motor with a continuous rating has it drawn too, dotted (``continuous``, the
+    torque-speed points of ``charts.continuous_line``): the line the cycle's RMS torque
+    times the safety factor is held to, not the segments' points."""
     unit = d.label("torque")
     name = "Motor curve" if margin == 1.0 else "Pull-out"
     if origin:
@@ -56,6 +60,18 @@ def motor_figure(
                 "y": [d.value(torque / margin, "torque") for _, torque in curve],
                 "line": {"color": "#000000", "width": 2, "dash": "dash"},
                 "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>usable</extra>",
+            }
+        )
+    if continuous:
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "lines",
+                "name": "Continuous rating (for the cycle's RMS torque)",
+                "x": [rpm for rpm, _ in continuous],
+                "y": [d.value(torque, "torque") for _, torque in continuous],
+                "line": {"color": "#000000", "width": 2, "dash": "dot"},
+                "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>continuous</extra>",
             }
         )
     for colour, c in zip(PALETTE, candidates[:TOP], strict=False):

@@ -396,3 +396,29 @@ def test_the_torque_chart_stacks_the_torque_while_accelerating(catalog: Catalog)
         parts = [trace["y"][i] for trace in figure["data"]]
         assert parts[0] > 0  # the inertia
         assert sum(parts) == pytest.approx(c["torque"]["total_nm"], rel=1e-3)
+
+
+def test_a_servos_continuous_zone_is_drawn_beside_its_peak_envelope(catalog: Catalog) -> None:
+    """The Yaskawa SGM7J-01A (catalog/motors.toml): peak 1.11 N m to its rated 3000 rpm,
+    down to 0.318 N m at 6000 rpm; its continuous zone the rated 0.318 N m to 3000 rpm,
+    then straight to 0.159 N m at 6000 rpm (the assumed end the RMS check holds the cycle
+    to, ``segments.continuous_torque``). A motor with a continuous rating and no zone has
+    the rating drawn flat over its curve; one with neither has no such line."""
+    axis = {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200}
+    runs = {
+        "servo": {"motor": "yaskawa-sgm7j-01a"},
+        "rated": {"motor_curve": [[0, 0.9], [3000, 0.6]], "motor_rms_torque_nm": 0.3},
+        "curve alone": {"motor_curve": [[0, 0.9], [3000, 0.6]]},
+    }
+    lines = {}
+    for name, extra in runs.items():
+        inputs = ApplicationIn.model_validate({**axis, **extra})
+        data = result_figures(run_selection(inputs, catalog), METRIC, catalog)["motor"]["data"]
+        lines[name] = [t for t in data if t["name"].startswith("Continuous")]
+    (servo,) = lines["servo"]
+    assert servo["x"] == [0.0, 3000.0, 6000.0]
+    assert servo["y"] == pytest.approx([0.318, 0.318, 0.159], rel=1e-12)
+    assert servo["line"]["dash"] == "dot"
+    (rated,) = lines["rated"]
+    assert (rated["x"], rated["y"]) == ([0.0, 3000.0], pytest.approx([0.3, 0.3]))
+    assert lines["curve alone"] == []
