@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 from app.core import motion, segments
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
-from app.core.duty import operating_mean_load
+from app.core.duty import ball_life_revolutions
 from app.core.input_rules import read_inputs, refused
 from app.core.model import Application, AxisProvenance, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
@@ -77,13 +77,14 @@ class Batch:
         return motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
 
     @cached_property
-    def mean_load_n(self) -> list[float]:
-        """Each candidate's cubic mean load over the cycle [N] its ball nut's L10 life is
-        rated at, its preload counted (``duty.operating_mean_load``; 0 without a
-        stroke): worked out for the whole batch at once."""
-        preload = self.screening.table.preload_n[self.at]
-        mean: list[float] = operating_mean_load(self.app, preload).tolist()
-        return mean
+    def l10_revolutions(self) -> list[float]:
+        """Each candidate's ball nut L10 life over the cycle [revolutions]
+        (``duty.ball_life_revolutions``: both sides of a preloaded nut; infinite without a
+        stroke, NaN without a rating): worked out for the whole batch at once."""
+        table = self.screening.table
+        rating, preload = table.dynamic_load_n[self.at], table.preload_n[self.at]
+        revolutions: list[float] = ball_life_revolutions(self.app, rating, preload).tolist()
+        return revolutions
 
     @cached_property
     def slots(self) -> list["Slot"]:

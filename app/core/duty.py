@@ -151,6 +151,41 @@ def operating_mean_load(
     return np.broadcast_to(mean, preload.shape).copy()  # 0 for every nut when nothing moves
 
 
+def side_mean_loads(
+    app: Application, preload_n: Array, thrusts: tuple[list[float], list[float]] | None = None
+) -> tuple[Array, Array]:
+    """The cubic means over the cycle of the loads each nut's two sides carry [N]
+    (``ballscrew.side_loads``: side 1 pressed by a thrust out or up, side 2 by one back
+    or down), each segment weighted by its travel; 0 when nothing moves. ``thrusts``: the
+    cycle's ``travel_thrusts`` when already worked out."""
+    forces, travels = thrusts or travel_thrusts(app)
+    preload = np.asarray(preload_n, dtype=np.float64)
+    sides = ballscrew.side_loads(np.array(forces)[None, :], preload[:, None])
+    means = [np.asarray(ballscrew.cubic_mean_load(s, travels), dtype=np.float64) for s in sides]
+    return np.broadcast_to(means[0], preload.shape).copy(), np.broadcast_to(
+        means[1], preload.shape
+    ).copy()
+
+
+def ball_life_revolutions(
+    app: Application,
+    dynamic_load_n: Array,
+    preload_n: Array,
+    thrusts: tuple[list[float], list[float]] | None = None,
+) -> Array:
+    """Each ball nut's L10 life [revolutions] over the cycle (``ballscrew.nut_life_revolutions``)
+    for its rating Ca [N] and preload F_pr [N]: both sides' lives combined for a preloaded
+    nut, the one-sided life for one without preload; infinite where nothing loads it.
+    ``thrusts``: the cycle's ``travel_thrusts`` when already worked out."""
+    thrusts = thrusts or travel_thrusts(app)
+    mean = operating_mean_load(app, preload_n, thrusts)
+    sides = side_mean_loads(app, preload_n, thrusts)
+    revolutions = ballscrew.nut_life_revolutions(
+        dynamic_load_n, app.ball_load_factor, mean, sides, preload_n
+    )
+    return np.asarray(revolutions, dtype=np.float64)
+
+
 def ball_track_load(app: Application, t: CandidateTable, c: motion.Cycle, force_n: float) -> Array:
     """The load each nut's ball track carries [N]: the cycle's cubic mean of it, each
     segment raised by the nut's preload (``operating_mean_load``), where the axis moves

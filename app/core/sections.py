@@ -11,7 +11,7 @@ import numpy as np
 from app.core import motion, segments
 from app.core.batch import Batch
 from app.core.checks.wear_life import life_band
-from app.core.formulas import ballscrew, critical_speed, life
+from app.core.formulas import critical_speed, life
 
 T = TypeVar("T")
 
@@ -156,13 +156,13 @@ class Life(Section):
         return "rated" if self.screw.life_min_m is not None else "wear"
 
     def _l10_travel_m(self) -> float:
-        """A ball nut's L10 life as travel [m]: its rated revolutions times the lead
-        (infinite without a stroke or a load on its balls)."""
-        load_n, s = self.batch.mean_load_n[self.k], self.screw
-        if not (load_n > 0.0 and s.dynamic_load_n):
+        """A ball nut's L10 life as travel [m]: its rated revolutions (``Batch.l10_revolutions``,
+        both sides of a preloaded nut) times the lead (infinite without a stroke or a load
+        on its balls)."""
+        revolutions, s = self.batch.l10_revolutions[self.k], self.screw
+        if not (s.dynamic_load_n and revolutions < math.inf):
             return math.inf
-        factor = self.app.ball_load_factor
-        return ballscrew.rated_life_revolutions(s.dynamic_load_n, factor, load_n) * s.lead_m
+        return revolutions * s.lead_m
 
     @property
     def note(self) -> str:

@@ -196,20 +196,29 @@ def test_a_rating_the_wear_cuts_says_so(client: TestClient) -> None:
 
 def test_a_preloaded_ball_nuts_life_counts_its_preload(client: TestClient) -> None:
     """R15-10K3-FSC (ground, Ca 9,600 N) is taken at the 5 % preload HIWIN allows a single
-    nut (480 N). 50 N pushed 250 mm at 300 mm/s, 8 kg at 2 m/s², 6,000 cycles a day: the
-    axis's cubic mean thrust is 50.91 N, but the ball track carries 506.8 N (HIWIN F 3.7,
-    each segment (1 + F / (2^1.5 x 480))^1.5 x 480). By hand: L10 = (9600 / (1.2 x 506.8))^3
-    x 10^6 rev; 2 x 0.25 m / 0.01 m = 50 rev a cycle, 300,000 a day: 35.9 years (it read
-    35,446 years on the axis's thrust alone)."""
+    nut (480 N, F_lim = 2^1.5 x 480 = 1,357.6 N). 50 N pushed 250 mm at 300 mm/s, 8 kg at
+    2 m/s², 6,000 cycles a day: every segment presses side 1, at 66 N (45 mm a cycle), 50 N
+    (410 mm) and 34 N (45 mm); the axis's cubic mean thrust is 50.91 N. Side 1 carries
+    (1 + F / 1357.6)^1.5 x 480 = 515.4, 506.8 and 498.1 N (HIWIN F 3.7), a cubic mean of
+    506.8 N; side 2 what is left of its preload, 449.4, 456.8 and 464.1 N, a mean of
+    456.8 N. L1 = (9600 / (1.2 x 506.8))^3 x 10^6 = 3933e6 rev, L2 = (9600 / (1.2 x
+    456.8))^3 x 10^6 = 5371e6, L = (L1^(-10/9) + L2^(-10/9))^(-9/10) = 0.6179 L1 = 2430e6
+    (HIWIN sec. 3.7.2 d)); 2 x 0.25 m / 0.01 m = 50 rev a cycle, 300,000 a day: 22.2
+    years. One-sided (L1 alone) it read 35.9 years, and 35,446 on the axis's thrust
+    alone."""
     app = {"load_n": 50, "load_direction": "fixed", "speed_mm_s": 300, "length_mm": 500,
            "accel_mm_s2": 2000, "stroke_mm": 250, "cycles_per_day": 6000,
            "moving_mass_kg": 8, "required_life_years": 5}  # fmt: skip
     c = _candidate_of(client, app, "R15-10K3-FSC")
     ball = next(k for k in c["checks"] if k["name"] == "ball_life")
-    by_hand = (9600 / (1.2 * 506.8)) ** 3 * 1e6 / (50 * 6000 * 365)
+    l1, l2 = (9600 / (1.2 * 506.8)) ** 3 * 1e6, (9600 / (1.2 * 456.8)) ** 3 * 1e6
+    by_hand = (l1 ** (-10 / 9) + l2 ** (-10 / 9)) ** (-9 / 10) / (50 * 6000 * 365)
     assert ball["limit"] == pytest.approx(by_hand, rel=0.002)
-    assert ball["limit"] == pytest.approx(35.9, abs=0.05)
-    assert "preload 480 N (the axis's thrust alone: 50.91 N)" in ball["message"]
+    assert ball["limit"] == pytest.approx(22.2, abs=0.05)
+    assert (
+        "preload 480 N loads both its sides (the axis's thrust alone: 50.91 N)" in (ball["message"])
+    )
+    assert "cubic mean loads 506.8 N and 456.8 N" in ball["message"]
     assert c["life"]["years"][0] == pytest.approx(ball["limit"], rel=1e-9)
     # a nut with play (rolled, no preload) is rated on the axis's thrust
     rolled = _candidate_of(client, app, "R16-10K3-FSCDIN")

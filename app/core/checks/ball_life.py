@@ -16,7 +16,12 @@ from app.core.checks.base import (
     ScrewSpec,
     same,
 )
-from app.core.duty import operating_mean_load, travel_thrusts
+from app.core.duty import (
+    ball_life_revolutions,
+    operating_mean_load,
+    side_mean_loads,
+    travel_thrusts,
+)
 from app.core.formulas import ballscrew, life
 from app.core.phrase import Amount, Phrase
 
@@ -35,12 +40,11 @@ def life_years(
     thrusts: tuple[list[float], list[float]] | None = None,
 ) -> Array:
     """The L10 life in years of the duty [year] for each nut of rating Ca [N], lead [m]
-    and preload [N], at its operating mean load (``operating_mean_load``); ``thrusts``
-    as there."""
+    and preload [N] (``duty.ball_life_revolutions``: both sides of a preloaded nut);
+    ``thrusts`` as there."""
     thrusts = thrusts or travel_thrusts(app)
     cycles = motion.cycles_per_day(app) or 0.0
-    mean_n = operating_mean_load(app, preload_n, thrusts)
-    revolutions = ballscrew.rated_life_revolutions(dynamic_load_n, app.ball_load_factor, mean_n)
+    revolutions = ball_life_revolutions(app, dynamic_load_n, preload_n, thrusts)
     revolutions_per_day = sum(thrusts[1]) / lead_m * cycles
     return np.asarray(revolutions / (revolutions_per_day * life.DAYS_PER_YEAR), dtype=np.float64)
 
@@ -53,21 +57,30 @@ class BallLife(Check):
     )
     label = "L10 life (ball screw)"
     description = (
-        "A ball nut's rated fatigue life L10 = (Ca / (f_w F_m))^3 x 10^6 revolutions "
-        "(ISO 3408-5), with F_m the cycle's cubic mean of the load the ball track carries "
-        "(each moving segment's thrust weighted by its revolutions; in a preloaded nut "
-        "raised by the preload F_pr below 2^(3/2) F_pr, HIWIN F 3.7) and the load factor "
-        "f_w (1.2 by default, the top of HIWIN's 1.1 to 1.2 without impact; 1.3 to 1.8 in "
-        "normal operation), in years of the given stroke and cycles (or hours) per "
-        "day, against the life required. Applies to ball screws only."
+        "A ball nut's rated fatigue life L10 (ISO 3408-5) in years of the given stroke and "
+        "cycles (or hours) per day, against the life required, with the load factor f_w "
+        "(1.2 by default, the top of HIWIN's 1.1 to 1.2 without impact; 1.3 to 1.8 in "
+        "normal operation). A nut with play: L10 = (Ca / (f_w F_m))^3 x 10^6 revolutions, "
+        "F_m the cycle's cubic mean thrust, each moving segment weighted by its "
+        "revolutions. A preloaded nut rolls on both sides: in each segment the side the "
+        "thrust presses carries F_b = (1 + F / 2^(3/2) F_pr)^(3/2) F_pr and the other "
+        "F_b - F (0 from the disengagement force 2^(3/2) F_pr on; HIWIN F 3.7), each "
+        "side's cubic mean F_bm1, F_bm2 gives a life L1, L2, and the nut lives "
+        "L = (L1^(-10/9) + L2^(-10/9))^(-9/10) (HIWIN sec. 3.7.2 d)), or the one-sided "
+        "(Ca / (f_w F_m))^3 x 10^6 with every segment at F_b where that is shorter. "
+        "Applies to ball screws only."
     )
     quantity = "years"
     formula = (
-        "life_required = Y_req; life = (Ca / (f_w * F_m))**3 * 1e6 / (travel / lead * cycles * 365)"
+        "life_required = Y_req; life = (min(((f_w * F_bm1 / Ca)^(10/3) + (f_w * F_bm2 / Ca)"
+        "^(10/3))^(-9/10), (Ca / (f_w * F_m))^3) if F_pr > 0 else (Ca / (f_w * F_m))^3) "
+        "* 1e6 / (travel / lead * cycles * 365)"
     )
     source = (
         "ISO 3408-5 rated life; HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, "
-        "sec. 3.7.2 F 3.7 to F 3.10 (preload, cubic mean load, operating factor)"
+        "sec. 3.7.2 F 3.6 to F 3.10 (preload, cubic mean load, operating factor) and "
+        "d) 'Axial loading on both sides' with its flow chart for calculating service "
+        "life (L1, L2 and L = (L1^(-10/9) + L2^(-10/9))^(-9/10))"
     )
     sources = ("dynamic_load", "preload")
     capacity_sources = ("dynamic_load", "preload")
@@ -90,11 +103,15 @@ class BallLife(Check):
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         thrusts = travel_thrusts(app)
+        side1, side2 = side_mean_loads(app, t.preload_n, thrusts)
         return {
             "Y_req": app.required_life_years,
             "Ca": t.dynamic_load_n,
             "f_w": app.ball_load_factor,
             "F_m": operating_mean_load(app, t.preload_n, thrusts),
+            "F_bm1": side1,
+            "F_bm2": side2,
+            "F_pr": t.preload_n,
             "travel": sum(thrusts[1]),
             "lead": t.lead_m,
             "cycles": motion.cycles_per_day(app),
@@ -112,20 +129,46 @@ class BallLife(Check):
             "fm": Amount(float(operating_mean_load(app, preload, thrusts)[0]), "force"),
             "fw": Amount(app.ball_load_factor, "factor"),
         }
-        text = (
-            verb + ", {required} required: Ca = {ca} against the cycle's cubic mean load "
-            "{fm} times the load factor {fw}."
-        )
-        if s.preload_n:
-            values["preload"] = Amount(s.preload_n, "force")
-            values["axis"] = Amount(float(ballscrew.cubic_mean_load(*thrusts)), "force")
-            text += (
-                " The mean counts the nut's preload {preload} (the axis's thrust alone: {axis})."
+        if not (s.preload_n and s.preload_n > 0.0):
+            text = (
+                verb + ", {required} required: Ca = {ca} against the cycle's cubic mean load "
+                "{fm} times the load factor {fw}."
             )
-        return Phrase(text, values)
+            return Phrase(text, values)
+        return _preloaded(app, verb, values, preload, thrusts)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "Choose a ball nut with a higher dynamic load rating Ca (a larger size, more "
             "ball circuits), or lighten the load, the acceleration or the duty."
         )
+
+
+def _preloaded(
+    app: Application,
+    verb: str,
+    values: dict[str, Amount],
+    preload: Array,
+    thrusts: tuple[list[float], list[float]],
+) -> Phrase:
+    """``BallLife.explain`` for a preloaded nut: its two sides' mean loads and lives
+    combined, or the one-sided mean where that rates shorter
+    (``ballscrew.nut_life_revolutions``)."""
+    side1, side2 = side_mean_loads(app, preload, thrusts)
+    ca, factor = values["ca"].value, app.ball_load_factor
+    both = ballscrew.two_sided_life_revolutions(ca, factor, side1[0], side2[0])
+    one = ballscrew.rated_life_revolutions(ca, factor, values["fm"].value)
+    values |= {
+        "preload": Amount(float(preload[0]), "force"),
+        "axis": Amount(float(ballscrew.cubic_mean_load(*thrusts)), "force"),
+        "side1": Amount(float(side1[0]), "force"),
+        "side2": Amount(float(side2[0]), "force"),
+    }
+    text = (
+        verb + ", {required} required: Ca = {ca}, load factor {fw}. The nut's preload "
+        "{preload} loads both its sides (the axis's thrust alone: {axis}): cubic mean "
+        "loads {side1} and {side2}, their lives combined as (L1^(-10/9) + L2^(-10/9))^(-9/10)."
+    )
+    if one < both:
+        text += " One side under the cycle's mean load {fm} rates shorter, and is taken."
+    return Phrase(text, values)

@@ -110,6 +110,114 @@ def rated_life_revolutions(dynamic_load_n: float, load_factor: float, mean_load_
 
 
 @formula(
+    "F_b1 = F_b, F_b2 = F_b - |F| for a thrust F pressing side 1 below F_lim = 2^(3/2) F_pr "
+    "(F_b1 = |F|, F_b2 = 0 at or above it); the sides swap for a thrust the other way",
+    HIWIN + ", sec. 3.7.2 F 3.6, F 3.7 and the flow chart for calculating service life "
+    "(F_bn1,2 = F_b1,2 - F_n1,2; past F_lim the other side carries 0)",
+)
+def side_loads(force_n: ArrayLike, preload_n: ArrayLike) -> tuple[Any, Any]:
+    """The loads [N] the two sides of a ball nut carry under an axial thrust ``force_n``
+    [N], signed along the axis (side 1: the balls a positive thrust presses, one half of a
+    double nut or one flank of a preloaded single nut; side 2: the other), with the
+    preload F_pr [N]. The pressed side carries F_b (``preloaded_operating_load``), the
+    other what is left of its preload, F_b - |F|, which falls to 0 at the disengagement
+    force 2^(3/2) F_pr and stays 0 beyond it. Without preload (0 or NaN) the pressed side
+    carries the thrust and the other nothing. Numbers or arrays alike (broadcast).
+
+    480 N of preload (F_lim = 1,357.6 N) under 500 N one way and the other:
+    (1 + 500 / 1357.6)^1.5 x 480 = 768.3 N pressed, 768.3 - 500 = 268.3 N on the other:
+
+    >>> [round(float(x), 1) for x in side_loads(500.0, 480.0)]
+    [768.3, 268.3]
+    >>> [round(float(x), 1) for x in side_loads(-500.0, 480.0)]
+    [268.3, 768.3]
+    >>> [float(x) for x in side_loads(2000.0, 480.0)], [float(x) for x in side_loads(-50.0, 0.0)]
+    ([2000.0, 0.0], [0.0, 50.0])
+    """
+    force = np.asarray(force_n, dtype=np.float64)
+    pressed = preloaded_operating_load(force, preload_n)
+    other = pressed - np.abs(force)
+    return np.where(force >= 0.0, pressed, other), np.where(force >= 0.0, other, pressed)
+
+
+@formula(
+    "L = (L_1^(-10/9) + L_2^(-10/9))^(-9/10), L_1,2 = (Ca / (f_w F_bm1,2))^3 x 10^6 rev",
+    HIWIN + ", sec. 3.7.2 d) 'Axial loading on both sides' (L1, L2 and their combined "
+    "life) and the flow chart for calculating service life (L_res)",
+)
+def two_sided_life_revolutions(
+    dynamic_load_n: ArrayLike, load_factor: float, side1_mean_n: ArrayLike, side2_mean_n: ArrayLike
+) -> Any:
+    """The L10 life [revolutions] of a ball nut whose two sides carry the cubic mean loads
+    F_bm1 and F_bm2 [N] over the cycle (``side_loads`` per segment, ``cubic_mean_load``):
+    each side's life L_1,2 = (Ca / (f_w F_bm1,2))^3 x 10^6 for the rating Ca [N] and load
+    factor f_w [-] (``rated_life_revolutions``), combined as both sides must survive. A
+    side without load lives forever and leaves the other's life. Worked as 10^6 (sum
+    (f_w F_bm / Ca)^(10/3))^(-9/10), the same sum without dividing by a zero load. Valid
+    as ``rated_life_revolutions`` (F_bm well below Ca). Numbers or arrays alike.
+
+    Both sides at 500 N, Ca 6,500 N, f_w 1.2: L_1 = L_2 = 1271.4e6, L = 2^(-9/10) L_1 =
+    0.5359 x 1271.4e6 = 681.3e6; one side unloaded leaves L_1:
+
+    >>> round(float(two_sided_life_revolutions(6500.0, 1.2, 500.0, 500.0)) / 1e6, 1)
+    681.3
+    >>> round(float(two_sided_life_revolutions(6500.0, 1.2, 500.0, 0.0)) / 1e6, 1)
+    1271.4
+    """
+    rating = np.asarray(dynamic_load_n, dtype=np.float64)
+    sides = [(load_factor * np.asarray(f, dtype=np.float64) / rating) ** (10.0 / 3.0)
+             for f in (side1_mean_n, side2_mean_n)]  # fmt: skip
+    with np.errstate(divide="ignore"):
+        return (sides[0] + sides[1]) ** -0.9 * REVOLUTIONS_RATED
+
+
+@formula(
+    "L_nut = min(L, (Ca / (f_w F_m))^3 x 10^6) with a preload F_pr > 0, else "
+    "(Ca / (f_w F_m))^3 x 10^6 rev",
+    HIWIN + ", sec. 3.7.2 F 3.7 to F 3.10 (one side, F_m) and d) (both sides, L)",
+)
+def nut_life_revolutions(
+    dynamic_load_n: ArrayLike,
+    load_factor: float,
+    mean_load_n: ArrayLike,
+    side_means_n: tuple[ArrayLike, ArrayLike],
+    preload_n: ArrayLike,
+) -> Any:
+    """A ball nut's L10 life [revolutions]: rating Ca [N], load factor f_w [-], the
+    cycle's cubic mean F_m [N] of the load its loaded ball track carries (each segment's
+    ``preloaded_operating_load``), the two sides' cubic means F_bm1, F_bm2 [N]
+    (``side_loads``) and the preload F_pr [N]. A preloaded nut's two sides both roll under
+    load and both must survive: its life is HIWIN's two-sided L
+    (``two_sided_life_revolutions``), or the one-sided (Ca / (f_w F_m))^3 x 10^6 where that
+    is shorter (thrust both ways near the disengagement force, where the two-sided L runs
+    up to 2^(1/10) = 1.07 times longer), so the life is never above either. A nut without
+    preload (0 or NaN) has the one-sided life. Infinite where nothing loads the nut.
+
+    Ca 6,500 N, f_w 1.2, 300 N of preload (F_lim = 848.5 N). Moving without thrust,
+    both sides carry 300 N: L = 2^(-9/10) (6500 / 360)^3 x 10^6 = 0.5359 x 5886.2e6 =
+    3154.3e6, below the one-sided 5886.2e6. 500 N out and 500 N back over equal travel:
+    F_b = (1 + 500 / 848.5)^1.5 x 300 = 601.05 N pressed, 101.05 N on the other side, so
+    F_bm1 = F_bm2 = ((601.05^3 + 101.05^3) / 2)^(1/3) = 477.81 N and L = 0.5359 x
+    (6500 / 573.37)^3 x 10^6 = 780.7e6; one side under 601.05 N all the way rates
+    (6500 / 721.26)^3 x 10^6 = 731.9e6, the shorter, and is taken. Without preload,
+    one-sided:
+
+    >>> round(float(nut_life_revolutions(6500.0, 1.2, 300.0, (300.0, 300.0), 300.0)) / 1e6, 1)
+    3154.3
+    >>> round(float(nut_life_revolutions(6500.0, 1.2, 601.05, (477.81, 477.81), 300.0)) / 1e6, 1)
+    731.9
+    >>> round(float(nut_life_revolutions(6500.0, 1.2, 500.0, (500.0, 0.0), 0.0)) / 1e6, 1)
+    1271.4
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mean = np.asarray(mean_load_n, dtype=np.float64)
+        one_sided = (np.asarray(dynamic_load_n) / (load_factor * mean)) ** 3 * REVOLUTIONS_RATED
+        both = two_sided_life_revolutions(dynamic_load_n, load_factor, *side_means_n)
+        preloaded = np.asarray(preload_n, dtype=np.float64) > 0.0
+    return np.where(preloaded, np.minimum(both, one_sided), one_sided)
+
+
+@formula(
     "Ca_req = f_w F_m (L / 10^6)^(1/3)",
     "ISO 3408-5 rated life, solved for the dynamic load rating",
 )
