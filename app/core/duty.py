@@ -172,16 +172,37 @@ def ball_life_revolutions(
     dynamic_load_n: Array,
     preload_n: Array,
     thrusts: tuple[list[float], list[float]] | None = None,
+    load_factor: float | None = None,
 ) -> Array:
     """Each ball nut's L10 life [revolutions] over the cycle (``ballscrew.nut_life_revolutions``)
     for its rating Ca [N] and preload F_pr [N]: both sides' lives combined for a preloaded
     nut, the one-sided life for one without preload; infinite where nothing loads it.
-    ``thrusts``: the cycle's ``travel_thrusts`` when already worked out."""
+    ``thrusts``: the cycle's ``travel_thrusts`` when already worked out; ``load_factor``:
+    f_w, the application's ``ball_load_factor`` unless given."""
     thrusts = thrusts or travel_thrusts(app)
     mean = operating_mean_load(app, preload_n, thrusts)
     sides = side_mean_loads(app, preload_n, thrusts)
+    factor = app.ball_load_factor if load_factor is None else load_factor
+    revolutions = ballscrew.nut_life_revolutions(dynamic_load_n, factor, mean, sides, preload_n)
+    return np.asarray(revolutions, dtype=np.float64)
+
+
+def track_life_revolutions(
+    app: Application, dynamic_load_n: Array, preload_n: Array, force_n: float, load_factor: float
+) -> Array:
+    """Each ball nut's L10 life [revolutions] at the load its ball track carries, as
+    ``ball_track_load`` takes it: over the cycle where the axis moves over a stroke
+    (``ball_life_revolutions``), else under the running thrust ``force_n`` [N] throughout
+    (both sides of a preloaded nut counted, ``ballscrew.side_loads``), at the load factor
+    f_w ``load_factor``."""
+    thrusts = travel_thrusts(app)
+    if ballscrew.cubic_mean_load(*thrusts) > 0.0:
+        return ball_life_revolutions(app, dynamic_load_n, preload_n, thrusts, load_factor)
+    preload = np.asarray(preload_n, dtype=np.float64)
+    carried = ballscrew.preloaded_operating_load(force_n, preload)
+    sides = ballscrew.side_loads(force_n, preload)
     revolutions = ballscrew.nut_life_revolutions(
-        dynamic_load_n, app.ball_load_factor, mean, sides, preload_n
+        dynamic_load_n, load_factor, carried, sides, preload
     )
     return np.asarray(revolutions, dtype=np.float64)
 

@@ -94,6 +94,28 @@ def test_a_preloaded_nut_carries_its_preload_in_the_mean_load(client: TestClient
     assert check["limit"] == pytest.approx(1520.0) and check["passed"]
 
 
+def test_the_mean_load_advice_names_a_preloaded_nuts_two_sided_life(client: TestClient) -> None:
+    """R20-20K2-FSC (Ca 7,600 N, preload 380 N: F_lim = 2^1.5 x 380 = 1,074.8 N) under a
+    running 200 N, no stroke: the pressed side carries (1 + 200 / 1074.8)^1.5 x 380 =
+    490.86 N (HIWIN F 3.7), the other 490.86 - 200 = 290.86 N. Both sides roll under load
+    (HIWIN sec. 3.7.2 d): L = ((490.86 / 7600)^(10/3) + (290.86 / 7600)^(10/3))^(-0.9) x
+    10^6 revolutions, at load factor 1, times the 20 mm lead; the pressed side alone
+    rated (7600 / 490.86)^3 x 10^6, 1.16 times longer (74,230 km against 64,220 km),
+    which the advice named before."""
+    check = _check(
+        client, "ball_load", catalog_id="R20-20K2-FSC", load_n=200, speed_mm_s=50, length_mm=700
+    )
+    limit = 2**1.5 * 380.0
+    pressed = (1 + 200.0 / limit) ** 1.5 * 380.0
+    other = pressed - 200.0
+    both = ((pressed / 7600) ** (10 / 3) + (other / 7600) ** (10 / 3)) ** -0.9 * 1e6
+    one_sided = (7600 / pressed) ** 3 * 1e6
+    assert check["value"] == pytest.approx(pressed, rel=1e-4)
+    km = float(f"{both * 0.020 / 1e3:.4g}")  # the message's four figures
+    assert f"{km:,.0f} km of travel" in check["message"] and km == 64_220
+    assert one_sided / both == pytest.approx(1.156, abs=0.001)
+
+
 def test_the_ball_nuts_static_safety_factor_is_an_input(client: TestClient) -> None:
     """55 kN on R40-10K4-FSCDIN (C0a 123 kN): at THK's f_s = 2 without vibration or impact
     the nut holds 2 x 55 = 110 kN; an axis with shocks asks more, and at 2.5 it needs

@@ -17,7 +17,7 @@ from app.core.checks.base import (
     ScrewSpec,
     at_least,
 )
-from app.core.formulas import ballscrew
+from app.core.duty import track_life_revolutions
 from app.core.phrase import Amount, Phrase
 
 
@@ -55,7 +55,9 @@ class BallLoad(Check):
         values = {"load": Amount(load, "force"), "ca": Amount(ca, "force")}
         text = "The ball track carries {load}, " + verb + " a fifth of Ca = {ca} (HIWIN's "
         with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
-            revolutions = ballscrew.rated_life_revolutions(np.float64(ca), 1.0, np.float64(load))
+            (revolutions,) = track_life_revolutions(
+                app, np.array([ca]), np.array([s.preload_n or 0.0]), r.axis.force_n, 1.0
+            )
         if not np.isfinite(revolutions):  # no load, or one so small the life overflows
             return Phrase(text + "recommended most).", values)
         values["km"] = Amount(float(revolutions) * s.lead_m, "travel")

@@ -210,8 +210,10 @@ def nut_life_revolutions(
     1271.4
     """
     with np.errstate(divide="ignore", invalid="ignore"):
-        mean = np.asarray(mean_load_n, dtype=np.float64)
-        one_sided = (np.asarray(dynamic_load_n) / (load_factor * mean)) ** 3 * REVOLUTIONS_RATED
+        # each a number or an array: ``rated_life_revolutions`` is plain arithmetic
+        rating: Any = np.asarray(dynamic_load_n, dtype=np.float64)
+        mean: Any = np.asarray(mean_load_n, dtype=np.float64)
+        one_sided = rated_life_revolutions(rating, load_factor, mean)
         both = two_sided_life_revolutions(dynamic_load_n, load_factor, *side_means_n)
         preloaded = np.asarray(preload_n, dtype=np.float64) > 0.0
     return np.where(preloaded, np.minimum(both, one_sided), one_sided)
