@@ -23,6 +23,7 @@ from app.core.checks.base import (
     stiffer_fixity,
 )
 from app.core.formulas import critical_speed, geometry
+from app.core.input_rules import least_inputs
 from app.core.phrase import Amount, Phrase
 
 
@@ -139,7 +140,16 @@ class CriticalSpeed(Check):
                 "mount the ends {stiffer} (unsupported length at most {stiffer_length} with "
                 "the ends {stiffer})"
             )
-            options.append("an unsupported length of at most {length} with the ends {fixity}")
+            # a length shorter than the stroke (or the span to the thrust bearing) is no
+            # screw the inputs accept: then the stroke keeps its length over a support
+            least = least_inputs(app).get("length_m")
+            if least is not None and at_most(_max_length(app, r)) < least:
+                options.append(
+                    "add an intermediate support (unsupported length at most {length} with "
+                    "the ends {fixity})"
+                )
+            else:
+                options.append("an unsupported length of at most {length} with the ends {fixity}")
         speed = geometry.linear_speed(r.column.allowed_rpm, s.lead_m)
         values["speed"] = Amount(at_most(speed), "speed")
         options.append(run_at_most(app).lower() + " {speed}")
