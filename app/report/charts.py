@@ -78,11 +78,7 @@ def continuous_line(app: Application) -> tuple[tuple[float, float], ...]:
     cycle to it (``segments.continuous_torque``): its continuous duty zone's points where
     it has one, else its continuous rating flat, each from standstill to the top of its
     curve (or of the zone); empty without a continuous rating or a curve to draw it on.
-
-    >>> app = Application(load_n=0.0, speed_m_s=0.1, length_m=0.5, motor_rms_torque_nm=0.3,
-    ...                   motor_curve=((0.0, 0.9), (3000.0, 0.6)))
-    >>> continuous_line(app)
-    ((0.0, 0.3), (3000.0, 0.3))
+    A rating of 0.3 N m on a curve from 0 to 3000 rpm: ((0, 0.3), (3000, 0.3)).
     """
     rating = segments.continuous_rating(app)
     if rating is None or not app.motor_curve:

@@ -11,7 +11,6 @@ from hypothesis import strategies as st
 from app.catalog import Catalog
 from app.catalog.axis_motor import with_motor
 from app.core.checks import BY_NAME, REGISTRY
-from app.core.formulas.critical_speed import ball_screw_ratio
 from app.core.input_rules import inputs_hold
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.remedy import MARGIN, impossible, part_way, past_limit
@@ -71,14 +70,14 @@ def test_a_change_landing_exactly_five_percent_past_its_limit_is_offered(
     catalog: Catalog,
 ) -> None:
     """50 kN at 2 m/s over 3.048 m: R63-20K5-FSC's critical speed allows 315.19 mm/s by
-    the beam, times HIWIN's fixed-simple factor over the beam's (``ball_screw_ratio``),
-    so the change is that over 1.05, where its utilisation is 1 / 1.05 to the last bit
-    (0.9523809523809524 against 0.9523809523809523). It was refused for that bit, and the
-    next speed offered, 232.8 mm/s, left the screw at 74 %."""
+    the beam, 311.72 mm/s by HIWIN's F 3.27 (0.8 x 2.71e8 x 0.692 x 57.91 / 3048^2 rpm
+    x 20 mm), the lower, so the change is that over 1.05, where its utilisation is 1 / 1.05
+    to the last bit (0.9523809523809524 against 0.9523809523809523). It was refused for
+    that bit, and the next speed offered, 232.8 mm/s, left the screw at 74 %."""
     app = Application(load_n=50_000.0, speed_m_s=2.0, length_m=3.048)
     summary = select(app, catalog.index, INPUT_RANGES).summary
     first = summary.remedies[0]
-    allowed_m_s = 0.31519183 * ball_screw_ratio("fixed-simple")
+    allowed_m_s = 0.8 * 2.71e8 * 0.692 * 57.91 / 3048.0**2 * 0.020 / 60.0
     assert first.inputs == {"speed_m_s": pytest.approx(allowed_m_s / 1.05, rel=1e-6)}
     assert first.utilization == pytest.approx(1.0 / 1.05, rel=1e-12)
 

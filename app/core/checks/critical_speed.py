@@ -41,11 +41,11 @@ class CriticalSpeed(Check):
     quantity = "rpm"
     formula = (
         "n = 60 * v / lead; "
-        "n_allowed = SF * k * 60 / (2 * pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4"
+        "n_allowed = SF * min(60 / (2 * pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4, n_H)"
     )
     source = (
         "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; Thomson; a ball "
-        "screw at most HIWIN BS-08-2-EN-1704-K F 3.27"
+        "screw at most HIWIN BS-08-2-EN-1704-K F 3.27 (n_H)"
     )
     sources = ("root_diameter", "youngs_modulus", "density")
     capacity_sources = ("root_diameter", "youngs_modulus", "density")
@@ -65,8 +65,14 @@ class CriticalSpeed(Check):
             "E": t.youngs_modulus_pa,
             "rho": t.density_kg_m3,
             "d_r": t.root_diameter_m,
-            # a ball screw's at most HIWIN's (``ball_screw_ratio``); a leadscrew's the beam's
-            "k": np.where(t.ball, critical_speed.ball_screw_ratio(app.end_fixity), 1.0),
+            # a ball screw's at most HIWIN's F 3.27; a leadscrew's the beam's
+            "n_H": np.where(
+                t.ball,
+                critical_speed.ball_screw_critical_speed_rpm(
+                    t.root_diameter_m, app.length_m, app.end_fixity
+                ),
+                np.inf,
+            ),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
@@ -80,10 +86,16 @@ class CriticalSpeed(Check):
         }
         text = "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity})."
         if s.screw_type == "ball":
-            ball = critical_speed.ball_screw_ratio(app.end_fixity)
-            if ball < 1.0:
-                values["lower"] = f"{(1.0 - ball) * 100.0:.1f} %"
-                text += " HIWIN's mounting factor for these ends puts it {lower} below the beam's."
+            beam = critical_speed.critical_speed_rpm(
+                s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3,
+                app.end_fixity,
+            )  # fmt: skip
+            if r.column.critical_rpm < beam:
+                values["lower"] = f"{(1.0 - r.column.critical_rpm / beam) * 100.0:.1f} %"
+                text += (
+                    " HIWIN rates it (F 3.27, its mounting factor for these ends) {lower} "
+                    "below the beam's."
+                )
             return Phrase(text, values)
         ratio = critical_speed.makers_table_ratio(app.end_fixity)
         if not passed or ratio >= 1.0:
@@ -106,7 +118,10 @@ class CriticalSpeed(Check):
                 s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity
             )
             if s.screw_type == "ball":
-                n_c *= critical_speed.ball_screw_ratio(fixity)
+                hiwin = critical_speed.ball_screw_critical_speed_rpm(
+                    s.root_diameter_m, app.length_m, fixity
+                )
+                n_c = min(n_c, hiwin)
             return critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor)
 
         lead = critical_speed.min_lead_for_speed(motion.reached_speed(app), r.column.allowed_rpm)
