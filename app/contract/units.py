@@ -21,13 +21,14 @@ References
    t/°C = (t/°F - 32)/1.8, and a difference of 1 °F is 5/9 K.
 """
 
+import math
 from collections.abc import Mapping
 from fractions import Fraction
 from functools import cached_property
 from itertools import product
 from typing import get_args
 
-from app.core.phrase import Amount, Phrase
+from app.core.phrase import Amount, Phrase, Rounding
 from app.core.phrase import Quantity as Quantity
 from app.core.units import SI_UNITS as SI_UNITS
 from app.core.units import UNITS as UNITS
@@ -270,6 +271,8 @@ def _in_display(
 
 
 #: dimension -> number format in sentences (a speed in rpm needs no decimals).
+#: the significant figures the format "g" writes (Python's default precision).
+SHORTEST_G_FIGURES = 6
 TEXT_FORMATS: dict[Quantity, str] = {
     **dict.fromkeys(get_args(Quantity), ".4g"),
     "torque": ".3g",
@@ -306,7 +309,46 @@ def amount_text(amount: Amount, units: Mapping[str, str] = DEFAULT_UNITS) -> str
     key = _key(units)  # the display system looked up once (``from_api``'s arithmetic)
     unit, scale = DISPLAY_SYSTEMS[key][amount.quantity]
     shown = (value - DISPLAY_OFFSETS[key].get(amount.quantity, 0.0)) / scale
-    return f"{plain(shown, TEXT_FORMATS[amount.quantity])} {unit}".strip()
+    return f"{bound_text(shown, TEXT_FORMATS[amount.quantity], amount.rounded)} {unit}".strip()
+
+
+def bound_text(value: float, spec: str, rounded: Rounding = None) -> str:
+    """``value`` written in the format ``spec`` (``plain``), rounded to the nearest, or
+    where that would cross it the way ``rounded`` forbids, one figure further down or up:
+    a fix's "at most 118.2 mm/s" for 118.26 mm/s, never 118.3.
+
+    >>> [bound_text(0.4872, ".3g", way) for way in ("up", None, "down")]
+    ['0.488', '0.487', '0.487']
+    >>> bound_text(118.26, ".4g", "down"), bound_text(97.6, ".0f", "down")
+    ('118.2', '97')
+    """
+    text = plain(value, spec)
+    if rounded is None or value <= 0.0:
+        return text
+    lower = rounded == "down"
+    written = float(text.replace(",", ""))
+    if written == value or (written < value) == lower:
+        return text
+    if spec.endswith("f"):  # fixed decimals: a step of the last one
+        step = 10.0 ** -int(spec.rsplit(".", 1)[1][:-1])
+        steps = math.floor(value / step) if lower else math.ceil(value / step)
+        return plain(steps * step, spec)
+    digits = int(spec.rsplit(".", 1)[1][:-1]) if "." in spec else SHORTEST_G_FIGURES
+    return plain(round_towards(value, lower, digits), spec)
+
+
+def round_towards(value: float, lower: bool, digits: int) -> float:
+    """``value`` to ``digits`` significant figures, rounded down (``lower``) or up, so
+    that a bound written with them still clears what it bounds.
+
+    >>> [round_towards(v, lower, 3) for v, lower in ((1677.74, True), (25.61, False))]
+    [1670.0, 25.7]
+    """
+    if value <= 0:
+        return value
+    scale = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
+    steps = math.floor(value / scale) if lower else math.ceil(value / scale)
+    return float(f"{steps * scale:.{digits}g}")
 
 
 def plain(value: float, spec: str) -> str:

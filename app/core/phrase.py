@@ -42,12 +42,19 @@ Quantity = Literal[
 ]
 
 
+#: How the edge rounds an amount it writes: to the nearest (None), or down or up, so that
+#: a fix's bound written to its figures stays on the safe side of its margin.
+Rounding = Literal["down", "up"] | None
+
+
 @dataclass(frozen=True, slots=True)
 class Amount:
-    """An SI value of a quantity, for the edge to show in the reader's units."""
+    """An SI value of a quantity, for the edge to show in the reader's units, rounded
+    there as ``rounded`` says (a fix's upper bound down, its lower bound up)."""
 
     value: float
     quantity: Quantity
+    rounded: Rounding = None
 
 
 @dataclass(frozen=True, slots=True)

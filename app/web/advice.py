@@ -21,7 +21,7 @@ from app.contract.fields import BY_API
 from app.contract.form import share_query
 from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import ApplicationIn, CandidateOut
-from app.contract.units import sig
+from app.contract.units import round_towards, sig
 from app.core.checks import BY_NAME
 from app.core.remedy import MARGIN
 from app.core.verdict import percent
@@ -75,20 +75,6 @@ def check_label(name: str | None) -> str:
     return check.label if check is not None else name.replace("_", " ")
 
 
-def round_towards(value: float, lower: bool, digits: int = PROPOSAL_DIGITS) -> float:
-    """``value`` to ``digits`` significant figures, rounded down when the change must lower
-    the input and up when it must raise it, so the rounded value still clears the check.
-
-    >>> round_towards(1677.74, True), round_towards(154.019, True), round_towards(25.61, False)
-    (1670.0, 154.0, 25.7)
-    """
-    if value <= 0:
-        return value
-    scale = 10.0 ** (math.floor(math.log10(value)) - digits + 1)
-    steps = math.floor(value / scale) if lower else math.ceil(value / scale)
-    return float(f"{steps * scale:.{digits}g}")
-
-
 def _link(inputs: ApplicationIn, changes: Mapping[str, float | str], units: dict[str, str]) -> str:
     """The page link of ``inputs`` with ``changes`` (API names, API units) made."""
     changed = ApplicationIn.model_validate({**inputs.model_dump(), **changes})
@@ -101,7 +87,7 @@ def proposal(inputs: ApplicationIn, api: str, target: float, units: dict[str, st
     field = BY_API[api]
     current = float(getattr(inputs, api))
     shown = field.display_value(target, units)
-    rounded = round_towards(float(shown), target < current)
+    rounded = round_towards(float(shown), target < current, PROPOSAL_DIGITS)
     value = page_value(field, repr(rounded), units)  # as the page reads the rounded text
     low, high = field.bounds or (-math.inf, math.inf)
     return min(max(value, low), high)

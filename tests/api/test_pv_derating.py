@@ -230,11 +230,12 @@ def test_a_pv_fix_gives_the_axial_load_that_keeps_its_margin_not_the_thrust(
     """The PV fix said "the load may be at most 147.5 N": the peak thrust's cap, which
     carries the 7.5 N of m a on the ramps. Typed as the load, 147.5 N gave a PV of 99.8 %
     of the limit, not the 95 % promised. It now gives the thrust and the axial load,
-    140 N (147.5 - 15 kg x 0.5 m/s²), which lands at 95 %."""
+    139.9 N (147.46 - 15 kg x 0.5 m/s², 139.96 N, written down to four figures so that
+    the load typed in keeps the margin), which lands within 95 %."""
     params = {**HEAVY_RAMP, "catalog_id": "B10000-L25.4-TFE"}
     (pv,) = [c for c in client.get("/api/v1/evaluate", params=params).json()["candidate"]["failed"]]
     assert pv["name"] == "pv"
-    assert "the peak thrust may be at most 147.5 N (an axial load of at most 140 N)" in pv["fix"]
+    assert "the peak thrust may be at most 147.4 N (an axial load of at most 139.9 N)" in pv["fix"]
     fixed = client.get("/api/v1/evaluate", params={**params, "load_n": 140}).json()["candidate"]
     assert fixed["utilization"]["pv"] == pytest.approx(0.95, abs=1e-3)
 
@@ -242,17 +243,16 @@ def test_a_pv_fix_gives_the_axial_load_that_keeps_its_margin_not_the_thrust(
 def test_a_pv_fix_says_when_the_moving_mass_alone_exceeds_the_thrust_it_allows(
     client: TestClient,
 ) -> None:
-    """5 kg lifted on ZBX4000-L10 with no load: PV allows 41.81 N of thrust at 50 mm/s,
-    less than the 49 N weight. The fix said "the load may be at most 41.81 N" of a load
-    that is 0; it now says that the moving mass alone exceeds it."""
+    """5 kg lifted on ZBX4000-L10 with no load: PV allows 41.81 N of thrust at 50 mm/s
+    (41.80 N with the margin, written down), less than the 49 N weight. The fix said "the
+    load may be at most 41.81 N" of a load that is 0; it now says that the moving mass
+    alone exceeds it."""
     params = {"load_n": 0, "speed_mm_s": 50, "length_mm": 500, "stroke_mm": 400}
     params |= {"accel_mm_s2": 500, "moving_mass_kg": 5, "orientation": "vertical"}
     params |= {"brake_torque_nm": 0.5, "catalog_id": "ZBX4000-L10"}
     candidate = client.get("/api/v1/evaluate", params=params).json()["candidate"]
     (pv,) = [c for c in candidate["failed"] if c["name"] == "pv"]
-    assert (
-        "the peak thrust may be at most 41.81 N, which the moving mass alone exceeds" in pv["fix"]
-    )
+    assert "the peak thrust may be at most 41.8 N, which the moving mass alone exceeds" in pv["fix"]
 
 
 @pytest.mark.parametrize(

@@ -15,7 +15,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
+    least,
 )
 from app.core.duty import track_life_revolutions
 from app.core.phrase import Amount, Phrase
@@ -68,5 +68,5 @@ class BallLoad(Check):
         return Phrase(
             "A ball nut with Ca of at least {ca} (a larger size, more ball circuits), or a "
             "lighter load or acceleration.",
-            {"ca": Amount(at_least(5.0 * r.life.ball_load_n), "force")},
+            {"ca": least(5.0 * r.life.ball_load_n, "force")},
         )

@@ -14,6 +14,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     at_most,
+    most,
 )
 from app.core.formulas import ballscrew
 from app.core.phrase import Amount, Phrase
@@ -67,7 +68,7 @@ class BallSpeed(Check):
         return Phrase(
             "Keep the screw at or below {n}: a longer lead for the same linear speed, a "
             "ground screw (higher DN limit) or a lower speed." + MARGIN_NOTE,
-            {"n": Amount(at_most(limit), "rpm")},
+            {"n": most(limit, "rpm")},
         )
 
     def input_limits(

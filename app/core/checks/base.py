@@ -36,7 +36,9 @@ __all__ = [
     "allowed_load",
     "at_least",
     "at_most",
+    "least",
     "lighter",
+    "most",
     "run_at_most",
     "same",
     "sentence",
@@ -56,6 +58,17 @@ def at_most(limit: float) -> float:
 def at_least(limit: float) -> float:
     """A proposed lower value, ``FIX_MARGIN`` above the ``limit`` it must reach."""
     return limit * (1.0 + FIX_MARGIN)
+
+
+def most(limit: float, quantity: Quantity) -> Amount:
+    """A fix's upper figure, ``at_most`` the ``limit``, written rounded down: the figure
+    the reader takes keeps the margin the fix promises."""
+    return Amount(at_most(limit), quantity, "down")
+
+
+def least(limit: float, quantity: Quantity) -> Amount:
+    """A fix's lower figure, ``at_least`` the ``limit``, written rounded up."""
+    return Amount(at_least(limit), quantity, "up")
 
 
 # Not frozen: a frozen dataclass sets each field through object.__setattr__, and a
@@ -230,7 +243,7 @@ def allowed_load(app: Application, cap_n: float, name: str = "cap") -> Phrase:
     exceed it. The cap's field is ``name``."""
     cap = at_most(cap_n)
     load = load_input(app, cap).get("load_n")
-    values: dict[str, Amount | str | Phrase] = {name: Amount(cap, "force")}
+    values: dict[str, Amount | str | Phrase] = {name: Amount(cap, "force", "down")}
     if load is not None and math.isclose(load, cap):
         return Phrase("the load may be at most {" + name + "}", values)
     if app.moves:  # each move carries its own load: the load input moves no thrust
@@ -244,7 +257,7 @@ def allowed_load(app: Application, cap_n: float, name: str = "cap") -> Phrase:
             "the peak thrust may be at most {" + name + "}, which the moving mass alone exceeds",
             values,
         )
-    values["load"] = Amount(load, "force")
+    values["load"] = Amount(load, "force", "down")
     return Phrase(
         "the peak thrust may be at most {" + name + "} (an axial load of at most {load})",
         values,

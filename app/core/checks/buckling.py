@@ -108,12 +108,12 @@ class ColumnBuckling(Check):
         )
         length_m = _max_length(app, s, r, force_n)
         values: dict[str, Amount | str] = {
-            "length": Amount(length_m, "length"),
+            "length": Amount(length_m, "length", "down"),
             "fixity": app.end_fixity,
         }
         options = []
         if d_min <= reach.max_root_diameter_m:
-            values["d"] = Amount(d_min, "length")
+            values["d"] = Amount(d_min, "length", "up")
             options.append("use a root diameter of at least {d}")
         spanned = app.bearing_to_nut_m is not None
         what = "span from the thrust bearing to the nut" if spanned else "column"
@@ -121,7 +121,8 @@ class ColumnBuckling(Check):
         stiffer = stiffer_fixity(app, lambda f: force_n <= app.buckling_safety_factor * critical(f))
         if stiffer is not None:
             values["stiffer"] = stiffer
-            values["stiffer_length"] = Amount(_max_length(app, s, r, force_n, stiffer), "length")
+            stiffer_m = _max_length(app, s, r, force_n, stiffer)
+            values["stiffer_length"] = Amount(stiffer_m, "length", "down")
             options.append(
                 f"mount the ends {{stiffer}} ({what} at most {{stiffer_length}} with the ends "
                 "{stiffer})"

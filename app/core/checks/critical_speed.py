@@ -18,6 +18,8 @@ from app.core.checks.base import (
     at_least,
     at_most,
     everywhere,
+    least,
+    most,
     run_at_most,
     sentence,
     stiffer_fixity,
@@ -130,7 +132,7 @@ class CriticalSpeed(Check):
         )
         options = []
         values: dict[str, Amount | str] = {
-            "length": Amount(at_most(_max_length(app, r)), "length"),
+            "length": most(_max_length(app, r), "length"),
             "fixity": app.end_fixity,
         }
         made = reach.made_lead(s, at_least(lead), larger=True)
@@ -139,7 +141,7 @@ class CriticalSpeed(Check):
             values["lead"] = Amount(made, "length")
         if at_least(d_min) <= reach.max_root_diameter_m:
             options.append("a root diameter of at least {d}")
-            values["d"] = Amount(at_least(d_min), "length")
+            values["d"] = least(d_min, "length")
         # a stiffer mounting is offered only when it keeps the margin at this length
         stiffer = stiffer_fixity(app, lambda f: at_least(r.axis.rpm) <= allowed(f))
         if stiffer is None:
@@ -150,15 +152,15 @@ class CriticalSpeed(Check):
         else:
             length = critical_speed.max_length_for_speed(app.length_m, allowed(stiffer), r.axis.rpm)
             values["stiffer"] = stiffer
-            values["stiffer_length"] = Amount(at_most(length), "length")
+            values["stiffer_length"] = most(length, "length")
             options.append(
                 "mount the ends {stiffer} (unsupported length at most {stiffer_length} with "
                 "the ends {stiffer})"
             )
             # a length shorter than the stroke (or the span to the thrust bearing) is no
             # screw the inputs accept: then the stroke keeps its length over a support
-            least = least_inputs(app).get("length_m")
-            if least is not None and at_most(_max_length(app, r)) < least:
+            shortest = least_inputs(app).get("length_m")
+            if shortest is not None and at_most(_max_length(app, r)) < shortest:
                 options.append(
                     "add an intermediate support (unsupported length at most {length} with "
                     "the ends {fixity})"
@@ -166,7 +168,7 @@ class CriticalSpeed(Check):
             else:
                 options.append("an unsupported length of at most {length} with the ends {fixity}")
         speed = geometry.linear_speed(r.column.allowed_rpm, s.lead_m)
-        values["speed"] = Amount(at_most(speed), "speed")
+        values["speed"] = most(speed, "speed")
         options.append(run_at_most(app).lower() + " {speed}")
         use = "Use " if options[0].startswith("a ") else ""
         return sentence(use + ", or ".join(options) + "." + MARGIN_NOTE, values)

@@ -13,8 +13,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
     load_input,
+    most,
     where_given,
 )
 from app.core.phrase import Amount, Phrase
@@ -69,14 +69,14 @@ class DesignLoad(Check):
             return Phrase(
                 "Reduce the peak thrust to at most {cap}, or carry it on a longer nut, a "
                 "larger size or a nut material rated higher in motion." + MARGIN_NOTE,
-                {"cap": Amount(at_most(r.nut.rated_load_n), "force")},
+                {"cap": most(r.nut.rated_load_n, "force")},
             )
         larger = (
             " or choose a larger size" if reach.max_design_load_n >= r.axis.peak_force_n else ""
         )
         return Phrase(
             "Reduce the peak thrust to at most {cap}" + larger + "." + MARGIN_NOTE,
-            {"cap": Amount(at_most(r.nut.rated_load_n), "force")},
+            {"cap": most(r.nut.rated_load_n, "force")},
         )
 
     def input_limits(

@@ -14,8 +14,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
     everywhere,
+    least,
     same,
 )
 from app.core.formulas import efficiency
@@ -105,11 +105,11 @@ class Holding(Check):
 def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
     """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
     that self-locks with margin, when it is made in one."""
-    values = {"needed": Amount(at_least(r.holding.brake_needed_nm), "torque")}
+    values = {"needed": least(r.holding.brake_needed_nm, "torque")}
     lead = reach.made_lead(s, r.holding.max_self_locking_lead_with_margin_m, larger=False)
     if lead is None:
         return Phrase(start + "." + MARGIN_NOTE, values)
     return Phrase(
         start + ", or use a lead of {lead} (self-locking with margin)." + MARGIN_NOTE,
-        {**values, "lead": Amount(lead, "length")},
+        {**values, "lead": Amount(lead, "length", "down")},
     )

@@ -11,7 +11,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
+    most,
     same,
     where_given,
 )
@@ -56,7 +56,7 @@ class Length(Check):
         )
         return Phrase(
             "Shorten the screw to at most {cap}" + longer + "." + MARGIN_NOTE,
-            {"cap": Amount(at_most(s.max_length_m or 0.0), "length")},
+            {"cap": most(s.max_length_m or 0.0, "length")},
         )
 
     def input_limits(

@@ -12,7 +12,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
+    most,
     run_at_most,
     where_given,
 )
@@ -68,7 +68,7 @@ class MaxSlidingSpeed(Check):
         return Phrase(
             run_at_most(app) + " {speed}, or choose a larger lead (fewer turns for the same "
             "travel)." + MARGIN_NOTE,
-            {"speed": Amount(at_most(self._max_linear_speed(app, s, r)), "speed")},
+            {"speed": most(self._max_linear_speed(app, s, r), "speed")},
         )
 
     def input_limits(

@@ -14,8 +14,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
     everywhere,
+    least,
     lighter,
 )
 from app.core.formulas import stepper
@@ -169,8 +169,8 @@ class MotorCurve(Check):
         margin = segments.curve_margin(app)
         values: dict[str, Amount | str] = {
             "short": Amount(r.motor.motor_worst_needed_nm - r.motor.motor_curve_nm, "torque"),
-            "need": Amount(at_least(r.motor.motor_worst_needed_nm), "torque"),
-            "pull_out": Amount(at_least(r.motor.motor_worst_needed_nm * margin), "torque"),
+            "need": least(r.motor.motor_worst_needed_nm, "torque"),
+            "pull_out": least(r.motor.motor_worst_needed_nm * margin, "torque"),
             "margin": f"{margin:g}",
             "rpm": Amount(r.motor.motor_worst_rpm, "rpm"),
             "segment": worst_segment(app, r),
@@ -200,10 +200,10 @@ class MotorCurve(Check):
         options = []
         fix_accel, fix_speed = r.motor.motor_fix_accel_m_s2, r.motor.motor_fix_speed_m_s
         if accel is not None and fix_accel > 0.0:
-            values["accel"] = Amount(fix_accel, "accel")
+            values["accel"] = Amount(fix_accel, "accel", "down")
             options.append("an acceleration of at most {accel}")
         if speed is not None and 0.0 < fix_speed < app.speed_m_s:
-            values["speed"] = Amount(fix_speed, "speed")
+            values["speed"] = Amount(fix_speed, "speed", "down")
             options.append("a top speed of at most {speed}")
         if not options:
             return Phrase(

@@ -11,8 +11,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
     everywhere,
+    least,
     lighter,
     same,
 )
@@ -84,5 +84,5 @@ class MotorRms(Check):
         return Phrase(
             "A motor rated for at least {need} continuous, or a longer dwell, lower "
             "acceleration" + (" or " + less if less else "") + "." + MARGIN_NOTE,
-            {"need": Amount(at_least(r.motor.motor_rms_needed_nm), "torque")},
+            {"need": least(r.motor.motor_rms_needed_nm, "torque")},
         )

@@ -15,7 +15,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
+    most,
     where_given,
 )
 from app.core.formulas import heat
@@ -129,5 +129,5 @@ class NutHeat(Check):
             + drag
             + ", a larger screw or a nut rated hotter."
             + MARGIN_NOTE,
-            {"mean": Amount(at_most(mean), "speed")},
+            {"mean": most(mean, "speed")},
         )

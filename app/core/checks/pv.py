@@ -14,8 +14,8 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     allowed_load,
-    at_most,
     load_input,
+    most,
     where_given,
 )
 from app.core.formulas import pv_derating
@@ -92,7 +92,7 @@ class NutPV(Check):
         return Phrase(
             "At this speed " + load.template + "; at this load the speed may be at most "
             "{speed}." + MARGIN_NOTE,
-            {**load.values, "speed": Amount(at_most(r.nut.pv_max_speed_m_s), "speed")},
+            {**load.values, "speed": most(r.nut.pv_max_speed_m_s, "speed")},
         )
 
     def input_limits(

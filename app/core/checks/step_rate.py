@@ -11,8 +11,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
     everywhere,
+    most,
     same,
 )
 from app.core.formulas import geometry, stepping
@@ -74,7 +74,7 @@ class StepRate(Check):
             "fewer microsteps, a longer lead or a lower speed." + MARGIN_NOTE,
             {
                 "limit": Amount(limit, "frequency"),
-                "rpm": Amount(at_most(rpm), "rpm"),
-                "speed": Amount(at_most(geometry.linear_speed(rpm, s.lead_m)), "speed"),
+                "rpm": most(rpm, "rpm"),
+                "speed": most(geometry.linear_speed(rpm, s.lead_m), "speed"),
             },
         )

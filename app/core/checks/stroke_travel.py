@@ -16,8 +16,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
-    at_most,
+    least,
+    most,
     same,
     where_given,
 )
@@ -62,14 +62,14 @@ class StrokeTravel(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        longer = {"L": Amount(at_least((app.stroke_m or 0.0) + r.nut.nut_length_m), "length")}
+        longer = {"L": least((app.stroke_m or 0.0) + r.nut.nut_length_m, "length")}
         room = app.length_m - r.nut.nut_length_m
         if room <= 0.0:
             return Phrase("Lengthen the screw to at least {L}." + MARGIN_NOTE, longer)
         return Phrase(
             "Shorten the stroke to at most {s}, or lengthen the screw to at least {L}."
             + MARGIN_NOTE,
-            {**longer, "s": Amount(at_most(room), "length")},
+            {**longer, "s": most(room, "length")},
         )
 
     def input_limits(

@@ -13,7 +13,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
+    least,
     same,
     where_given,
 )
@@ -86,5 +86,5 @@ class SupportLife(Check):
         return Phrase(
             "A thrust bearing with a dynamic axial rating of at least {ca}, a longer lead "
             "(fewer turns for the travel), or a lower load or duty." + MARGIN_NOTE,
-            {"ca": Amount(at_least(needed), "force")},
+            {"ca": least(needed, "force")},
         )

@@ -13,9 +13,9 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     at_least,
-    at_most,
     everywhere,
     load_input,
+    most,
 )
 from app.core.phrase import Amount, Phrase
 
@@ -85,7 +85,7 @@ class SupportStatic(Check):
                 "c0a": Amount(
                     at_least(r.axis.peak_force_n * app.support_static_safety_factor), "force"
                 ),
-                "cap": Amount(at_most(r.support.support_allowed_n), "force"),
+                "cap": most(r.support.support_allowed_n, "force"),
             },
         )
 

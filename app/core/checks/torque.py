@@ -14,8 +14,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
     everywhere,
+    least,
     lighter,
     same,
 )
@@ -74,5 +74,5 @@ class DriveTorque(Check):
             + (less + " or " if less else "")
             + "acceleration."
             + MARGIN_NOTE,
-            {"req": Amount(at_least(r.torque.required_nm), "torque")},
+            {"req": least(r.torque.required_nm, "torque")},
         )

@@ -12,7 +12,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
+    most,
     run_at_most,
     same,
     where_given,
@@ -70,11 +70,11 @@ class TraverseSpeed(Check):
         if lead is None:
             return Phrase(
                 run_at_most(app) + " {limit}." + MARGIN_NOTE,
-                {"limit": Amount(at_most(_limit(s)), "speed")},
+                {"limit": most(_limit(s), "speed")},
             )
         return Phrase(
             run_at_most(app) + " {limit}, or a lead of at least {lead}." + MARGIN_NOTE,
-            {"limit": Amount(at_most(_limit(s)), "speed"), "lead": Amount(lead, "length")},
+            {"limit": most(_limit(s), "speed"), "lead": Amount(lead, "length")},
         )
 
     def input_limits(

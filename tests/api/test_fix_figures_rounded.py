@@ -1,0 +1,50 @@
+"""A fix's figures are written rounded to the safe side of the margin it promises ("Each
+figure keeps a 5 % margin to its limit"): an upper bound down, a lower bound up, so the
+figure the engineer types in keeps the margin (``app.contract.units.bound_text``)."""
+
+import re
+
+import pytest
+from fastapi.testclient import TestClient
+
+#: a vertical axis held by a brake with the power off (15 kg, 200 mm/s, 1000 mm/s²)
+VERTICAL = {
+    "load_n": 0,
+    "moving_mass_kg": 15,
+    "orientation": "vertical",
+    "speed_mm_s": 200,
+    "accel_mm_s2": 1000,
+    "stroke_mm": 300,
+    "length_mm": 600,
+    "end_fixity": "fixed-simple",
+    "motor": "23hs32-4004s",
+    "hold_power_off": True,
+    "brake_torque_nm": 0.3,
+    "cycles_per_day": 2000,
+    "catalog_id": "R40-20K3-FSCDIN",
+}
+
+
+def _check(client: TestClient, name: str, **params: object) -> dict:  # type: ignore[type-arg]
+    r = client.get("/api/v1/evaluate", params=params)
+    assert r.status_code == 200, r.text
+    return next(c for c in r.json()["candidate"]["checks"] if c["name"] == name)
+
+
+def test_a_brake_figure_is_written_up_and_the_brake_it_names_keeps_the_margin(
+    client: TestClient,
+) -> None:
+    """R40-20K3-FSCDIN back-drives the 15 kg: the brake must hold 0.3 x 1.547 = 0.4640 N m,
+    0.4872 N m with the 5 % margin. To three figures that is 0.487 N m, which holds at
+    0.4640 / 0.487 = 0.9528 of it, past the 1 / 1.05 = 0.95238 promised; the fix now
+    says 0.488 N m, and a 0.488 N m brake holds at 0.9508."""
+    holding = _check(client, "holding", **VERTICAL)
+    assert not holding["passed"]
+    (figure,) = re.findall(r"a brake of at least ([0-9.]+) N m", holding["fix"])
+    assert figure == "0.488"
+    needed = holding["utilization"] * VERTICAL["brake_torque_nm"]
+    assert needed / 0.487 > 1 / 1.05  # the nearest figure would not keep the margin
+    fitted = _check(client, "holding", **{**VERTICAL, "brake_torque_nm": float(figure)})
+    assert fitted["passed"]
+    assert fitted["utilization"] == pytest.approx(needed / 0.488, rel=1e-9)
+    assert fitted["utilization"] <= 1 / 1.05
