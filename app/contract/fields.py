@@ -438,8 +438,9 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="brake_safety_factor", page="brake_safety_factor", core="brake_safety_factor",
         label="Holding safety factor", help="Multiplier on the torque needed to hold the "
-        "load (brake, holding or detent torque); empty for the torque safety factor. "
-        "1 or more; larger is safer",
+        "load (brake, holding or detent torque); empty for the torque safety factor, for "
+        "a brake at least 1.5 (the service factor Machine Design gives a brake holding a "
+        "ball or lead screw, for its wear). 1 or more; larger is safer",
         group="Safety factors", kind="number", bounds=(1.0, 10.0),
     ),
     InputField(

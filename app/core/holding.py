@@ -73,8 +73,18 @@ def hold_margins(
     }
 
 
+#: The service factor on the torque a brake holds where no holding factor is given: a
+#: brake holds by friction, and wears; "the end result should be multiplied by a service
+#: factor, usually 1.5" for a brake holding a ball or lead screw (Machine Design,
+#: "Mechatronics Q & A: Hold It Steady", 21 Nov 2007; 1.5 to 3 for brakes in general).
+BRAKE_SERVICE_FACTOR = 1.5
+
+
 def brake_factor(app: Application) -> float:
-    """The safety factor on the holding torque: the brake's, else the torque factor."""
-    if app.brake_safety_factor is None:
-        return app.torque_safety_factor
-    return app.brake_safety_factor
+    """The safety factor on the holding torque: the one given, else the torque factor,
+    and for a brake at least its service factor (``BRAKE_SERVICE_FACTOR``)."""
+    if app.brake_safety_factor is not None:
+        return app.brake_safety_factor
+    if app.holding_source == "brake":
+        return max(app.torque_safety_factor, BRAKE_SERVICE_FACTOR)
+    return app.torque_safety_factor

@@ -157,7 +157,8 @@ class Application:
     motor_holding_torque_nm: float | None = None
     load_direction: LoadDirection = "auto"
     #: What ``brake_torque_nm`` is; the motor's detent torque, which holds with the power
-    #: off (None: not given); the factor on the holding torque (None: the torque factor).
+    #: off (None: not given); the factor on the holding torque (None: the torque factor,
+    #: for a brake at least its service factor, ``holding.BRAKE_SERVICE_FACTOR``).
     holding_source: HoldingSource = "brake"
     detent_torque_nm: float | None = None
     brake_safety_factor: float | None = None

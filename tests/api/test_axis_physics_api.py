@@ -178,8 +178,9 @@ def test_the_brake_is_sized_at_the_distrusted_friction(client: TestClient) -> No
     """ZBX8000-L10 holding 10 kg (98.07 N): at static friction 0.08 the physical holding
     torque is 98.07 x 0.01 x eta_b(0.08) / 2 pi = 0.1078 N m, and a 0.11 N m brake looked
     enough; the self-locking margin trusts only 0.5 x 0.08 = 0.04, where eta_b = 0.8435 and
-    the load needs 0.1317 N m (the seed's 0.0963 N m is lower): 0.11 N m is short. With a
-    brake safety factor of 1.5 a brake of 1.5 x 0.1317 = 0.1975 N m is needed."""
+    the load needs 0.1317 N m (the seed's 0.0963 N m is lower): 0.11 N m is short. A brake's
+    service factor of 1.5 (Machine Design), the default for a brake, or typed as the holding
+    safety factor, asks 1.5 x 0.1317 = 0.1975 N m; typed as 1, 0.1317 N m."""
     axis = {"load_n": 0, "speed_mm_s": 20, "length_mm": 300, "orientation": "vertical",
             "moving_mass_kg": 10}  # fmt: skip
     force = 10 * G
@@ -190,7 +191,9 @@ def test_the_brake_is_sized_at_the_distrusted_friction(client: TestClient) -> No
     assert (at_full, distrusted_eta, needed) == pytest.approx((0.1078, 0.8435, 0.1317), abs=1e-4)
     assert seed == pytest.approx(0.0963, abs=1e-4)
     short = check(evaluate(client, "ZBX8000-L10", **axis, brake_torque_nm=0.11), "holding")
-    assert short["value"] == pytest.approx(needed) and not short["passed"]
+    assert short["value"] == pytest.approx(1.5 * needed) and not short["passed"]
+    one = evaluate(client, "ZBX8000-L10", **axis, brake_torque_nm=0.11, brake_safety_factor=1)
+    assert check(one, "holding")["value"] == pytest.approx(needed)
     assert "with the power off (a brake)" in short["message"]
     factored = evaluate(
         client, "ZBX8000-L10", **axis, brake_torque_nm=0.14, brake_safety_factor=1.5

@@ -20,6 +20,7 @@ VERTICAL = {
     "motor": "23hs32-4004s",
     "hold_power_off": True,
     "brake_torque_nm": 0.3,
+    "brake_safety_factor": 1,  # typed: the brake's needed torque itself
     "cycles_per_day": 2000,
     "catalog_id": "R40-20K3-FSCDIN",
 }

@@ -44,14 +44,14 @@ def test_a_thin_margin_is_a_no_and_a_fail(client: TestClient) -> None:
 def test_a_brake_answers_with_its_own_margin(client: TestClient) -> None:
     """f = 0.4 and a 0.3 N m brake: the thread's 0.911 is not enough, the brake's margin is
     0.3 N m over the torque needed (the larger of the seed's and the friction's at f mu_s,
-    times the holding factor 1)."""
+    times a brake's service factor 1.5 where no holding factor is given)."""
     c = evaluate(
         client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4, brake_torque_nm=0.3
     )
     needed = c["holding_torque"]["brake_nm"]
     assert needed > 0.0
     assert c["holds_by"] == "brake" and c["holds_power_off"] is True
-    assert c["hold_margin"] == pytest.approx(0.3 / needed, rel=1e-9)
+    assert c["hold_margin"] == pytest.approx(0.3 / (1.5 * needed), rel=1e-9)
 
 
 def test_no_requirement_no_answer_and_no_check(client: TestClient) -> None:
