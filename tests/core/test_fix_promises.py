@@ -269,3 +269,26 @@ def test_a_length_shorter_than_the_stroke_is_offered_as_a_support(catalog: Catal
     assert "add an intermediate support (unsupported length at most" in text, text
     assert "an unsupported length of at most" not in text, text
     assert "mount the ends fixed-fixed" in text, text
+
+
+def test_a_column_shorter_than_the_stroke_is_offered_as_a_support(catalog: Catalog) -> None:
+    """R25-10K4-FSCDIN (21.8 mm root), 8 kN compressing it over 2000 mm fixed-free, on an
+    1800 mm stroke: Euler 1416 N, half of it allowed. A column keeping the 5 % margin
+    needs Euler's 2 x 1.05 x 8000 = 16,800 N: 2000 x sqrt(1416 / 16800) = 580.6 mm, far
+    below the stroke, so no screw that short carries it: the fix offers that column
+    between intermediate supports (with the stiffer fixed-fixed mounting still on offer),
+    never a screw of at most 580.5 mm, which the inputs refuse."""
+    screw = catalog.by_id["R25-10K4-FSCDIN"]
+    app = light_app(
+        load_n=8000.0, speed_m_s=0.02, length_m=2.0, stroke_m=1.8, end_fixity="fixed-free"
+    )
+    result = next(c for c in evaluate(app, screw).checks if c.name == "buckling")
+    assert result.fix is not None
+    length = result.fix.values["length"]
+    assert isinstance(length, Amount)
+    euler = result.capacity / 0.5
+    assert length.value == pytest.approx(2.0 * (euler / 16_800.0) ** 0.5, rel=1e-9)
+    text = render(result.fix)
+    assert "add an intermediate support (column at most 580.5 mm" in text, text
+    assert "a column of at most" not in text, text
+    assert "mount the ends fixed-fixed" in text, text

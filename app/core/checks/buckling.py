@@ -20,6 +20,7 @@ from app.core.checks.base import (
 )
 from app.core.column import column_length
 from app.core.formulas import buckling
+from app.core.input_rules import least_inputs
 from app.core.phrase import Amount, Phrase
 
 
@@ -129,7 +130,9 @@ class ColumnBuckling(Check):
             )
         # no column of this screw carries the thrust when its root yields first
         shorter = f"{what} at most {{length}} with the ends {{fixity}}" if length_m > 0 else ""
-        if stiffer is None and not spanned:
+        # a screw shorter than the stroke is no screw the inputs accept: a support then
+        too_short = length_m < least_inputs(app).get("length_m", 0.0)
+        if (stiffer is None or too_short) and not spanned:
             options.append("add an intermediate support" + (f" ({shorter})" if shorter else ""))
         elif shorter:
             options.append(f"a {shorter.replace(' at most', ' of at most', 1)}")
