@@ -82,6 +82,25 @@ MachineAxisOut = create_model(
             "passes there and none is chosen, so its mass is not known (choose one)."
         ),
     ),
+    parallel=(
+        list[str],
+        Field(
+            description="The vertical axes above this one when it is vertical too: "
+            "parallel to it, so their own thrust reaches its nut (parallel_thrust_n). "
+            "Every other pair of axes is taken at right angles: the upper one's thrust "
+            "goes into the guides below, not the screw."
+        ),
+    ),
+    parallel_thrust_n=(
+        float,
+        Field(
+            description="The thrust beyond their weight (their m a and load) that the "
+            "parallel axes above pass to this axis's nut when they move while it moves, "
+            "the largest of each summed [N] (stacking.parallel_reaction). Not in its "
+            "sizing, which moves them one at a time: when they move together, add it to "
+            "this axis's load. 0 without a parallel axis above."
+        ),
+    ),
     sized_mass_kg=(
         float,
         Field(

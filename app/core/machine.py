@@ -9,6 +9,12 @@ the mass the axes below carry, so choosing another screw there changes their ans
 
 The rotors and screws of the upper axes translate with them: their masses count as
 moving mass of the axes below; their rotary inertia matters only to their own motors.
+
+Each axis is taken to move at right angles to the axes it carries: their own thrust (their
+m a and their load) goes into its guides, not its screw. Only two vertical axes are known
+to be parallel: the thrust a vertical axis above exerts beyond its weight reaches the nut
+of a vertical axis below it whenever the two move together (``parallel_thrust``); the
+answer gives it, and the sizing leaves it out (the axes moved one at a time).
 """
 
 from collections.abc import Sequence
@@ -17,9 +23,9 @@ from dataclasses import dataclass, replace
 from app.core import motion
 from app.core.changes import Ranges, Words
 from app.core.evaluate import evaluate
-from app.core.formulas import geometry
+from app.core.formulas import geometry, stacking
 from app.core.index import CatalogIndex
-from app.core.model import Application, AxisProvenance
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, AxisProvenance
 from app.core.record import Candidate
 from app.core.selection import Selection, select
 
@@ -45,9 +51,11 @@ class Axis:
 class AxisResult:
     """One axis sized: the application it was sized with (the axes above in its moving
     mass), the mass those axes add [kg], its selection, the screw chosen (None: none
-    passes and none was named), the mass it brings to the axis below [kg], and the
+    passes and none was named), the mass it brings to the axis below [kg], the
     axes above whose screw that mass leaves out (none chosen there: its mass is not
-    known until one is)."""
+    known until one is), the vertical axes above a vertical one (parallel to it), and
+    the thrust beyond their weight they pass to its nut when they move with it [N]
+    (``parallel_thrust``; not in its sizing)."""
 
     axis: Axis
     app: Application
@@ -57,6 +65,8 @@ class AxisResult:
     screw_kg: float
     total_kg: float
     uncounted: tuple[str, ...] = ()
+    parallel: tuple[str, ...] = ()
+    parallel_thrust_n: float = 0.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -117,15 +127,40 @@ def size_axis(
     return AxisResult(axis, app, carried_kg, sel, chosen, screw_kg, total, uncounted)
 
 
+def own_thrust(app: Application) -> float:
+    """The thrust [N] a vertical axis's nut exerts beyond the weight of the mass it moves,
+    the largest over its cycle's moving segments (``stacking.parallel_reaction`` of
+    ``motion.moving_forms`` at its load): what it passes to a vertical axis carrying it."""
+    moves = motion.cycle(app)
+    thrusts = motion.at_load(motion.moving_forms(app, moves), app.load_n)
+    weights = [m.moving_mass_kg * STANDARD_GRAVITY_M_S2 for m in moves for _ in motion.RAMPS]
+    return stacking.parallel_reaction(thrusts, weights)
+
+
+def parallel_thrust(
+    results: Sequence[AxisResult], app: Application
+) -> tuple[tuple[str, ...], float]:
+    """The vertical axes among ``results`` (the axes above) when ``app`` is vertical too,
+    and the sum of their ``own_thrust`` [N]: each one's thrust beyond its weight reaches
+    the nut below when they move together (none: ``((), 0.0)``)."""
+    if app.orientation != "vertical":
+        return (), 0.0
+    above = [r for r in results if r.app.orientation == "vertical"]
+    return tuple(r.axis.name for r in above), sum(own_thrust(r.app) for r in above)
+
+
 def size_machine(
     axes: Sequence[Axis], index: CatalogIndex, ranges: Ranges, words: Words
 ) -> Machine:
-    """Size ``axes`` (top first): each with the total mass of the axis above it."""
+    """Size ``axes`` (top first): each with the total mass of the axis above it, and the
+    thrust the parallel axes above pass to it (``parallel_thrust``)."""
     results: list[AxisResult] = []
     carried = 0.0
     uncounted: tuple[str, ...] = ()
     for axis in axes:
         result = size_axis(axis, carried, index, ranges, words, uncounted)
+        parallel, thrust = parallel_thrust(results, result.app)
+        result = replace(result, parallel=parallel, parallel_thrust_n=thrust)
         results.append(result)
         carried = result.total_kg
         if result.chosen is None:

@@ -61,6 +61,8 @@ def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
         "name": r.axis.name,
         "carried_kg": r.carried_kg,
         "uncounted": list(r.uncounted),
+        "parallel": list(r.parallel),
+        "parallel_thrust_n": r.parallel_thrust_n,
         "sized_mass_kg": motion.heaviest_mass(r.app),
         "screw_kg": None if r.chosen is None else r.screw_kg,
         "total_kg": r.total_kg,

@@ -147,3 +147,18 @@ def test_an_empty_choice_is_the_first_ranked_as_on_the_page(client: TestClient) 
     given = client.post("/api/v1/machine", json=printer(choice="")).json()
     plain = client.post("/api/v1/machine", json=printer()).json()
     assert given["axes"][0]["chosen"]["id"] == plain["axes"][0]["chosen"]["id"]
+
+
+def test_a_vertical_axis_under_a_vertical_one_is_told_the_thrust_it_leaves_out(
+    client: TestClient,
+) -> None:
+    """Z (0.5 kg, 200 mm/s^2, no load) on a vertical lift: Z's thrust beyond its weight,
+    0.5 kg x 0.2 m/s^2 = 0.1 N, reaches the lift's nut when both move; X, horizontal
+    under Z, takes it in its guides (0 N)."""
+    lift = {**Z, "moving_mass_kg": 0.2, "lead_mm": None}
+    body = {"axes": [{"name": "Z", "inputs": Z}, {"name": "L", "inputs": lift}]}
+    z, low = client.post("/api/v1/machine", json=body).json()["axes"]
+    assert (z["parallel"], z["parallel_thrust_n"]) == ([], 0.0)
+    assert low["parallel"] == ["Z"] and low["parallel_thrust_n"] == pytest.approx(0.1, rel=1e-12)
+    x = client.post("/api/v1/machine", json=printer()).json()["axes"][1]
+    assert (x["parallel"], x["parallel_thrust_n"]) == ([], 0.0)

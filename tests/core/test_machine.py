@@ -128,3 +128,39 @@ def test_each_move_of_a_lower_cycle_carries_the_axes_above(catalog: Catalog) -> 
         pytest.approx(1.0 + z.total_kg, rel=1e-12),
         pytest.approx(0.5 + z.total_kg, rel=1e-12),
     ]
+
+
+def test_a_vertical_axis_above_a_vertical_one_passes_its_thrust_beyond_its_weight(
+    catalog: Catalog,
+) -> None:
+    """Z (vertical, 0.5 kg, 0.2 m/s^2, a 5 N load down) rides on X (horizontal), which
+    rides on V (vertical): Z's thrust reaches V's nut through X's guides and frame, as
+    parallel to V. Z's nut force accelerating up 0.5 (9.80665 + 0.2) + 5 = 10.00333 N,
+    its weight 0.5 x 9.80665 = 4.90333 N, so E = 0.5 x 0.2 + 5 = 5.1 N (decelerating
+    up: 0.5 (9.80665 - 0.2) + 5 - 4.90333 = 4.9 N, less). X, horizontal, takes Z's
+    thrust in its guides: nothing parallel, 0 N. V is sized with Z's and X's mass only."""
+    axes = [
+        Axis("Z", replace(Z, load_n=5.0), frame_kg=0.3, motor_kg=0.4),
+        Axis("X", X, frame_kg=0.5, motor_kg=0.4),
+        Axis("V", replace(Z, moving_mass_kg=0.2, lead_m=None, brake_torque_nm=None)),
+    ]
+    z, x, v = size_machine(axes, catalog.index, {}, {}).axes
+    assert (z.parallel, z.parallel_thrust_n) == ((), 0.0)
+    assert (x.parallel, x.parallel_thrust_n) == ((), 0.0)
+    assert v.parallel == ("Z",)
+    assert v.parallel_thrust_n == pytest.approx(5.1, rel=1e-12)
+    assert v.app.load_n == 0.0 and v.app.moving_mass_kg == pytest.approx(0.2 + x.total_kg)
+
+
+def test_two_vertical_axes_above_sum_their_thrust(catalog: Catalog) -> None:
+    """Z (0.5 kg at 0.2 m/s^2, no load) on W (vertical, 0.5 kg of its own and Z's total
+    carried, at 0.2 m/s^2) on V: V's nut takes Z's 0.5 x 0.2 = 0.1 N and W's
+    (0.5 + carried) x 0.2 N, W's moving mass being Z's axis and its own."""
+    w = replace(Z, lead_m=None)
+    v = replace(Z, moving_mass_kg=0.2, lead_m=None, brake_torque_nm=None)
+    axes = [Axis("Z", Z, 0.3, 0.4), Axis("W", w, 0.3, 0.4), Axis("V", v)]
+    _, mid, low = size_machine(axes, catalog.index, {}, {}).axes
+    assert mid.parallel == ("Z",) and mid.parallel_thrust_n == pytest.approx(0.1, rel=1e-12)
+    assert low.parallel == ("Z", "W")
+    by_hand = 0.5 * 0.2 + (0.5 + mid.carried_kg) * 0.2
+    assert low.parallel_thrust_n == pytest.approx(by_hand, rel=1e-12)
