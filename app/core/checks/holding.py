@@ -71,14 +71,17 @@ class Holding(Check):
         "brake, or the motor's energised holding torque, must hold it wherever the thread "
         "is not reliably self-locking: the larger of the seed's holding torque and the "
         "physical one at the distrusted static friction (f mu_s, the friction the "
-        "self-locking margin trusts), times the brake safety factor. A brake holds with "
-        "the power off; a stepper's holding torque only while it is energised."
+        "self-locking margin trusts), times the holding safety factor (for a brake, when "
+        "none is typed, at least its service factor 1.5: it holds by friction, and wears). "
+        "A brake holds with the power off; a stepper's holding torque only while it is "
+        "energised."
     )
     quantity = "torque"
     formula = "T_hold = 0 if locks else SF * max(T_seed, T_physics); T_available = T_brake"
     source = (
         "seed catalog, Back Driving (T_b = F lead eta / 2 pi); Shigley sec. 8-2 "
-        "(lowering torque at the distrusted friction)"
+        "(lowering torque at the distrusted friction); a brake's service factor: Machine "
+        "Design, 'Mechatronics Q & A: Hold It Steady' (2007)"
     )
     sources = ("friction_static", "friction_dynamic", "thread_half_angle")
 
