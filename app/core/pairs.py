@@ -22,7 +22,7 @@ from app.core.checks.base import Reach
 from app.core.index import CatalogIndex
 from app.core.model import Application, ScrewSpec
 from app.core.screening import failing_beyond, screen_table
-from app.core.selection import motor_use, screen
+from app.core.selection import motor_use, screen, shown_torque
 from app.core.table import Array, CandidateTable
 
 #: How pairs rank: the smallest share of the motor used; the smallest motor (its torque
@@ -33,8 +33,9 @@ PairRank = Literal["motor_margin", "motor_size", "torque"]
 @dataclass(frozen=True, slots=True)
 class Pair:
     """One passing screw + motor pair: the share of the motor it uses (0-1), the peak
-    drive torque [N m] with the motor's rotor, the screw's top speed [rpm] and the
-    motor's standstill torque [N m] (its size)."""
+    drive torque [N m] with the motor's rotor (the results table's, ``shown_torque``:
+    under a move the largest of any segment and of starting from rest), the screw's top
+    speed [rpm] and the motor's standstill torque [N m] (its size)."""
 
     screw: ScrewSpec
     motor: str
@@ -77,7 +78,7 @@ def _motor_pairs(
         ok,
         np.full(len(ok), motor),
         motor_use(s)[ok],
-        s.total_torque_nm[ok],
+        shown_torque(s)[ok],
         s.quantities.motor.peak_rpm[ok],
     )
 

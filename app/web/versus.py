@@ -13,9 +13,13 @@ from app.web.compare import Row, best_columns, compare_rows
 
 
 def _holds(c: CandidateOut) -> str:
-    """Whether the load stays put with the power off, and by what."""
+    """Whether the load stays put with the power off, and by what; when the axis does not
+    ask for it (``holds_power_off`` None), what the thread alone does, as the results
+    table's holding cell says it."""
     if c.holds_power_off is None:
-        return "nothing to hold"
+        if c.self_locking_with_margin:
+            return "yes: the thread self-locks"
+        return "nothing to hold" if c.holding_torque.brake_nm == 0.0 else "no: a brake is needed"
     if c.holds_by == "thread":
         return "yes: the thread self-locks"
     if c.holds_power_off:
@@ -32,13 +36,21 @@ def _life(c: CandidateOut, d: Display) -> str:
     if c.life is None:
         return "—"
     if c.life.years:
-        return f"{'–'.join(figures(v) for v in c.life.years)} years ({_basis(c.life)})"
-    travel = "–".join(figures(d.value(v, "travel")) for v in c.life.travel_km)
+        return f"{_band(c.life.years)} years ({_basis(c.life)})"
+    travel = _band([d.value(v, "travel") for v in c.life.travel_km])
     return f"{travel} {d.label('travel')} travelled ({_basis(c.life)})"
+
+
+def _band(ends: list[float]) -> str:
+    """A band's ends as the results table writes them: one figure when they are equal
+    (a ball nut's L10)."""
+    return "–".join(dict.fromkeys(figures(v) for v in ends))
 
 
 def _basis(life: LifeOut) -> str:
     """The life's model, and where the nut's wear cuts the seed's rating, that."""
+    if life.model == "l10":
+        return "L10"
     return "rated, cut by wear" if life.capped_by_wear else life.model
 
 

@@ -151,3 +151,32 @@ def test_the_travel_is_in_the_pages_unit(client: TestClient) -> None:
     life = _rows(_page(client, query))["life"]
     assert all(" mi travelled" in cell or cell.endswith("(L10)") or cell == "—" for cell in life)
     assert any(" mi travelled" in cell for cell in life), life
+
+
+def test_a_back_driving_screw_not_asked_to_hold_still_has_a_load_to_hold(
+    client: TestClient,
+) -> None:
+    """A 1 kg vertical Z axis that does not ask to hold with the power off: B4000-L8-TFE
+    back-drives and needs a 0.0111 N m brake, as its own holding row says; the power-off
+    row said "nothing to hold"."""
+    query = {
+        "load": "0", "moving_mass_kg": "1", "orientation": "vertical", "lead": "8",
+        "speed": "12", "length": "350", "accel": "200", "stroke": "200",
+        "hold_power_off": "false",
+    }  # fmt: skip
+    rows = _rows(_page(client, query))
+    assert rows["holding_torque.brake_nm"][0].startswith("brake ≥ 0.0111")
+    assert rows["holds_power_off"][0] == "no: a brake is needed"
+
+
+def test_a_ball_nut_s_l10_is_one_figure_named_as_the_table_names_it(client: TestClient) -> None:
+    """Without a required life a ball nut's life is its L10 band of one value: the row
+    read '3,670,000–3,670,000 years (l10)' where the results table reads one figure, L10."""
+    query = {
+        "load": "0", "moving_mass_kg": "1.5", "speed": "300", "length": "500",
+        "accel": "10000", "stroke": "400", "cycles_per_day": "20000",
+        "motor": "17hs19-2004s1",
+    }  # fmt: skip
+    ball = _rows(_page(client, query))["life"][1]
+    assert ball.endswith(" years (L10)")
+    assert "–" not in ball
