@@ -148,14 +148,17 @@ def screen_table(
     q = operating_point(app, table)
     measures = {c.name: c.measure(app, table, q) for c in REGISTRY if c.applies(app)}
     names = list(measures)
-    numeric, applicable, ratio, failed = _judge(list(measures.values()), len(table))
-    utilization = {name: ratio[i] if numeric[i] else None for i, name in enumerate(names)}
-    rows = [i for i, name in enumerate(names) if _rejects(app, name)]
-    others = [i for i in range(len(names)) if i not in rows]
-    n_failed = np.add.reduce(failed[rows], axis=0, dtype=np.float64)
-    warned = np.logical_or.reduce(failed[others], axis=0)
+    rejecting = [name for name in names if _rejects(app, name)]
+    # judged with the rejecting checks first, so each group is a slice of the rows
+    order = rejecting + [name for name in names if not _rejects(app, name)]
+    numeric, applicable, ratio, failed = _judge([measures[name] for name in order], len(table))
+    row = {name: i for i, name in enumerate(order)}
+    utilization = {name: ratio[row[name]] if numeric[row[name]] else None for name in names}
+    k = len(rejecting)
+    n_failed = np.add.reduce(failed[:k], axis=0, dtype=np.float64)
+    warned = np.logical_or.reduce(failed[k:], axis=0)
     # a check that does not apply, or a yes/no check (NaN), leaves the worst as it is
-    worst = np.fmax.reduce(np.where(applicable[rows], ratio[rows], np.nan), axis=0, initial=0.0)
+    worst = np.fmax.reduce(np.where(applicable[:k], ratio[:k], np.nan), axis=0, initial=0.0)
     worst = np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)
     return Screening(
         index,
@@ -163,8 +166,8 @@ def screen_table(
         q,
         measures,
         utilization,
-        {name: failed[i] for i, name in enumerate(names)},
-        {names[i]: failed[i] for i in rows},
+        {name: failed[row[name]] for name in names},
+        {name: failed[row[name]] for name in rejecting},
         n_failed == 0,
         worst,
         n_failed,
