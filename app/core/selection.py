@@ -234,7 +234,7 @@ def select(
             ranges or {},
             s,
             words,
-            [c.screw.id for c in returned[: len(ranked)]],
+            [s.table.screws[i].id for i in ranked],
             records(app, s, fixable, axis=axis) if fixable else (),
         ),
         screening=s,
