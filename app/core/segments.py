@@ -82,9 +82,11 @@ def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) 
             thread = profile.thread_torque(
                 thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
             )
-            alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
-            spin = torque.inertia_torque(inertia, alpha)
-            out.append((name, word, thrust, thread + t.drag_max_nm + spin))
+            torque_nm = thread + t.drag_max_nm
+            if rates[name]:  # at no acceleration (the constant segment) the spin is 0
+                alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
+                torque_nm = torque_nm + torque.inertia_torque(inertia, alpha)
+            out.append((name, word, thrust, torque_nm))
     return out
 
 
