@@ -79,8 +79,8 @@ def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) 
         rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
         for name, sign in RAMPS:
             thrust = v * next(forces)
-            thread = profile.thread_torque(
-                thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
+            thread = profile.passed_torque(
+                thrust, t.torque_per_newton_m, t.driven_torque_per_newton_m
             )
             torque_nm = thread + t.drag_max_nm
             if rates[name]:  # at no acceleration (the constant segment) the spin is 0

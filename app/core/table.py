@@ -26,6 +26,7 @@ from app.core.formulas import (
     limits,
     profile,
     pv,
+    torque,
 )
 from app.core.model import ScrewSpec
 
@@ -241,14 +242,19 @@ def _axis_free(c: dict[str, Array]) -> dict[str, Any]:
     three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
     area at the catalog's nut length (``bearing``), the screw's fin conductance in still
     air and the nut's outside diameter (``heat``), the lower of the running and the
-    static efficiency (the root section's torque), and the root section's and the
-    shaft's own terms of the column, stress and whirl formulas (``buckling``,
-    ``critical_speed``)."""
-    tan_l = np.tan(c["lead_angle_rad"])
+    static efficiency (the root section's torque), the root section's and the shaft's
+    own terms of the column, stress and whirl formulas (``buckling``,
+    ``critical_speed``), and the thread's torque per newton of thrust (``torque``,
+    ``efficiency``; unbounded where a thread cannot drive, a lead ``evaluate`` refuses)."""
+    tan_l, lead = np.tan(c["lead_angle_rad"]), c["lead_m"]
     d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
+    held = efficiency.holding_torque_per_newton
     with np.errstate(invalid="ignore", divide="ignore"):
         transition = buckling.transition_slenderness(e, c["yield_strength_pa"])
         wave, gyration = critical_speed.shaft_terms(d_r, e, c["density_kg_m3"])
+        driving = [
+            torque.torque_per_newton(lead, c[k]) for k in ("efficiency", "efficiency_static")
+        ]
     flanks = bearing.engaged_flank_area(
         c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
     )
@@ -268,6 +274,10 @@ def _axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),
         "wave_speed_m_s": wave,
         "root_gyration_m": gyration,
+        "torque_per_newton_m": driving[0],
+        "start_torque_per_newton_m": driving[1],
+        "driven_torque_per_newton_m": held(lead, c["backdrive_efficiency_signed"]),
+        "hold_per_newton_m": held(lead, c["backdrive_efficiency"]),
     }
 
 
@@ -360,6 +370,13 @@ class CandidateTable:
     root_pi_d_cubed_m3: Array
     wave_speed_m_s: Array
     root_gyration_m: Array
+    #: The thread's torque per newton of thrust [N m/N]: driving, at the running and the
+    #: static efficiency; driven, at the signed running, and held, at the static
+    #: back-drive efficiency.
+    torque_per_newton_m: Array
+    start_torque_per_newton_m: Array
+    driven_torque_per_newton_m: Array
+    hold_per_newton_m: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together
@@ -401,6 +418,7 @@ class CandidateTable:
         limits = (col("design_load_n"), col("max_length_m"), flag("anti_backlash"))
         reach = _reach(screws, lead, rd, *limits)
         columns = dict(
+            lead_m=lead,
             pitch_diameter_m=d_p,
             thread_depth_m=geometry.thread_depth(od, rd),
             helix_travel_m=geometry.helix_travel(lead, d_p),
@@ -419,7 +437,6 @@ class CandidateTable:
             deviation_tables=deviation_tables,
             deviation_table=deviation_table,
             screws=screws,
-            lead_m=lead,
             repeatability_m=np.nan_to_num(col("repeatability_m")),
             coated=flag("coated"),
             anti_backlash=flag("anti_backlash"),

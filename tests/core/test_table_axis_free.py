@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from app.catalog import Catalog
-from app.core.formulas import bearing, buckling, critical_speed, efficiency, heat, pv
+from app.core.formulas import bearing, buckling, critical_speed, efficiency, heat, pv, torque
 from app.core.model import Application
 from app.core.quantities import operating_point
 from app.core.table import CandidateTable
@@ -47,6 +47,12 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(t.root_diameter_m),
         "wave_speed_m_s": (t.youngs_modulus_pa / t.density_kg_m3) ** 0.5,
         "root_gyration_m": t.root_diameter_m / 4.0,
+        "torque_per_newton_m": torque.torque_per_newton(t.lead_m, t.efficiency),
+        "start_torque_per_newton_m": torque.torque_per_newton(t.lead_m, t.efficiency_static),
+        "driven_torque_per_newton_m": efficiency.holding_torque_per_newton(
+            t.lead_m, t.backdrive_efficiency_signed
+        ),
+        "hold_per_newton_m": efficiency.holding_torque_per_newton(t.lead_m, t.backdrive_efficiency),
     }
     assert {
         name: _same(getattr(t, name), value) for name, value in expected.items()

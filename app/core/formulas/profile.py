@@ -17,6 +17,8 @@ drive the load down.
 
 import math
 
+from app.core.formulas import efficiency as efficiency_of
+from app.core.formulas import torque
 from app.core.formulas.declare import SEED, SHIGLEY, formula
 
 #: Accelerations above 0 count as at least this [m/s^2], so that every time stays finite.
@@ -106,12 +108,25 @@ def thread_torque(
     >>> round(thread_torque(-100.0, 0.002 * math.pi, 0.5, 0.4), 6)
     -0.04
     """
+    driving_m = torque.torque_per_newton(lead_m, efficiency)
+    driven_m = efficiency_of.holding_torque_per_newton(lead_m, backdrive_efficiency)
+    return passed_torque(thrust_n, driving_m, driven_m)
+
+
+@formula("T = F k if F >= 0 else F k_b", SEED + " (Torque To Move Load, Back Driving)")
+def passed_torque(thrust_n: float, driving_m: float, driven_m: float) -> float:
+    """``thread_torque`` from the thread's torque per newton [N m/N] driving, k = lead /
+    (2 pi eta) (``torque.torque_per_newton``), and driven, k_b = lead eta_b / (2 pi)
+    (``efficiency.holding_torque_per_newton``): T = F k when F >= 0, F k_b when F < 0.
+    The candidate table holds both (``table.CandidateTable``).
+
+    >>> passed_torque(100.0, 0.002, 0.001), passed_torque(-100.0, 0.002, 0.001)
+    (0.2, -0.1)
+    """
     if isinstance(thrust_n, float | int):  # one thrust for every candidate: one branch
-        if thrust_n >= 0.0:
-            return thrust_n * lead_m / (2.0 * math.pi * efficiency)
-        return thrust_n * lead_m * backdrive_efficiency / (2.0 * math.pi)
-    driving = thrust_n * lead_m / (2.0 * math.pi * efficiency)
-    driven = thrust_n * lead_m * backdrive_efficiency / (2.0 * math.pi)
+        return torque.thrust_torque(thrust_n, driving_m if thrust_n >= 0.0 else driven_m)
+    driving = torque.thrust_torque(thrust_n, driving_m)
+    driven = torque.thrust_torque(thrust_n, driven_m)
     return driving * (thrust_n >= 0.0) + driven * (thrust_n < 0.0)
 
 

@@ -74,7 +74,31 @@ def load_torque(load_n: float, lead_m: float, efficiency: float) -> float:
     >>> round(load_torque(100.0, 0.002, 0.5), 6)
     0.063662
     """
-    return load_n * lead_m / (2.0 * math.pi * efficiency)
+    return thrust_torque(load_n, torque_per_newton(lead_m, efficiency))
+
+
+@formula("k = lead / (2 pi eta)", SEED + " (Torque To Move Load, per newton of load)")
+def torque_per_newton(lead_m: float, efficiency: float) -> float:
+    """The torque the thread takes per newton of load it moves, k = lead / (2 pi eta)
+    [N m/N]: ``load_torque`` is F k. The screw's alone, so the candidate table holds it
+    (``table.CandidateTable``) for the running and the static efficiency.
+
+    >>> round(torque_per_newton(0.002, 0.5), 9)
+    0.00063662
+    """
+    return lead_m / (2.0 * math.pi * efficiency)
+
+
+@formula("T = F k", SEED + " (Torque To Move Load)")
+def thrust_torque(load_n: float, per_newton_m: float) -> float:
+    """The torque [N m] that passes the thrust ``load_n`` [N] through the thread at its
+    torque per newton k [N m/N] (``torque_per_newton``, or
+    ``efficiency.holding_torque_per_newton``): T = F k.
+
+    >>> thrust_torque(100.0, 0.0005)
+    0.05
+    """
+    return load_n * per_newton_m
 
 
 @formula(
