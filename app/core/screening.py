@@ -5,9 +5,8 @@
 screw is screened as a table of one. So a check is computed by one piece of code.
 """
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -16,7 +15,7 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Check, Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import Quantities, operating_point
-from app.core.table import Array, CandidateTable, Mask, filled
+from app.core.table import Array, CandidateTable, Mask
 
 
 # Not frozen, as ``Quantities``: a frozen dataclass sets each of its fields through
@@ -103,31 +102,27 @@ def eligible_mask(app: Application, table: CandidateTable) -> Mask:
     return mask
 
 
-def _rows(values: Sequence[NDArray[Any] | None], missing: NDArray[Any]) -> NDArray[Any]:
-    """``values`` as the rows of one array, ``missing`` where a value is None; at least
-    one row (``missing``) when there are none."""
-    return np.array([missing if v is None else v for v in values] or [missing])[: len(values)]
-
-
 def _judge(
     measures: list[Measure], n: int
 ) -> tuple[list[bool], NDArray[np.bool_], NDArray[np.float64], NDArray[np.bool_]]:
     """Every check's measure over ``n`` candidates as rows of one array each, judged
-    with one division and one comparison for all checks: whether each check is numeric,
-    where it applies, its utilisation demand / capacity (NaN where the limit does not
-    exist, and for a yes/no check) and where it fails (applies, and over its limit or
-    flagged)."""
+    with one comparison for all checks: whether each check is numeric, where it applies,
+    its utilisation demand / capacity (NaN where the limit does not exist, and for a
+    yes/no check) and where it fails (applies, and over its limit or flagged)."""
     numeric = [m.demand is not None and m.capacity is not None for m in measures]
-    nan, no = filled(n, np.nan), np.zeros(n, dtype=bool)
-    demand = _rows([m.demand if ok else None for m, ok in zip(measures, numeric, strict=True)], nan)
-    capacity = _rows(
-        [m.capacity if ok else None for m, ok in zip(measures, numeric, strict=True)], nan
-    )
-    applicable = _rows([m.applicable for m in measures], no)
-    flagged = _rows([m.flagged for m in measures], no)
+    ratio = np.empty((len(measures), n))
     with np.errstate(invalid="ignore", divide="ignore"):
-        ratio = demand / capacity
-    failed = applicable & ((ratio > PASS_UTILIZATION) | flagged)
+        for row, m, ok in zip(ratio, measures, numeric, strict=True):
+            if ok:
+                np.divide(m.demand, m.capacity, out=row)
+            else:
+                row.fill(np.nan)
+    applicable = np.array([m.applicable for m in measures]).reshape(len(measures), n)
+    failed = ratio > PASS_UTILIZATION
+    for over, m in zip(failed, measures, strict=True):
+        if m.flagged is not None:
+            over |= m.flagged
+    failed &= applicable
     return numeric, applicable, ratio, failed
 
 
