@@ -50,7 +50,7 @@ def torques(
         if other is not move:
             start_n = motion.running_thrust(app, other) + other.moving_mass_kg * other.accel_m_s2
             starts.append(breakaway(t, start_n, spin_torque(app, t, other, j_screw)))
-    t_start = np.maximum.reduce(starts)
+    t_start = starts[0] if len(starts) == 1 else np.maximum.reduce(starts)
     magnitude = np.abs(np.array([m[3] for m in moving]))
     largest = np.maximum.reduce(magnitude, axis=0)
     peak = np.maximum(largest, t_start)

@@ -137,10 +137,11 @@ def wear_life(
     area = np.where(flanks, flank_area_m2, t.contact_area_m2)
     height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
     helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
-    with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
-        sliding = wear.wear_life_sliding(
-            t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
-        )
+    # a vanishing thrust: an unbounded life (``operating_point`` silences the overflow),
+    # NaN below
+    sliding = wear.wear_life_sliding(
+        t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
+    )
     travel = finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
     stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
