@@ -50,14 +50,15 @@ class Screening:
         """The screening of the first ``n`` rows alone (views), as rows ``index`` of
         ``table``: for a table screened together with rows that follow them."""
         cut = slice(0, n)
+        failed = {name: mask[cut] for name, mask in self.failed.items()}
         return Screening(
             index,
             table,
             self.quantities.sliced(cut),
             {name: m.head(n) for name, m in self.measures.items()},
             {name: None if u is None else u[cut] for name, u in self.utilization.items()},
-            {name: mask[cut] for name, mask in self.failed.items()},
-            {name: mask[cut] for name, mask in self.failed_by_check.items()},
+            failed,
+            {name: failed[name] for name in self.failed_by_check},
             self.passed[cut],
             self.max_utilization[cut],
             self.failed_limits[cut],
