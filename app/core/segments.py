@@ -65,29 +65,43 @@ def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]
 
 def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) -> list[Moving]:
     """Each moving segment of every move, for every candidate: its name and direction,
-    the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
-    through the thread, the nut's drag, and the screw's and the rotor's inertia times the
-    angular acceleration (whether the segment has a stroke to last or not). ``c``: the
-    cycle when already worked out (``motion.cycle_of``)."""
+    the thrust against the motion v F_nut [N] and the motor torque [N m]
+    (``segment_torque``), whether the segment has a stroke to last or not. Segments of
+    the same thrust and acceleration (the out and the back move of a horizontal axis)
+    share one torque array, worked out once. ``c``: the cycle when already worked out
+    (``motion.cycle_of``)."""
     c = c or cycle_of(app)
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
-    inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
+    if app.motor_inertia_kg_m2:
+        inertia = inertia + app.motor_inertia_kg_m2
     forces = iter(c.moving_n)
     out: list[Moving] = []
+    worked: dict[tuple[float, float], Array] = {}
     for move in c.moves:
         v, word = sense(move), direction_word(app, move)
         rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
         for name, sign in RAMPS:
-            thrust = v * next(forces)
-            thread = profile.passed_torque(
-                thrust, t.torque_per_newton_m, t.driven_torque_per_newton_m
-            )
-            torque_nm = thread + t.drag_max_nm
-            if rates[name]:  # at no acceleration (the constant segment) the spin is 0
-                alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
-                torque_nm = torque_nm + torque.inertia_torque(inertia, alpha)
-            out.append((name, word, thrust, torque_nm))
+            thrust, accel = v * next(forces), sign * rates[name]
+            if (thrust, accel) not in worked:
+                worked[thrust, accel] = segment_torque(t, thrust, accel, inertia)
+            out.append((name, word, thrust, worked[thrust, accel]))
     return out
+
+
+def segment_torque(
+    t: CandidateTable, thrust_n: float, accel_m_s2: float, inertia_kg_m2: Array
+) -> Array:
+    """The motor torque of a moving segment for every candidate [N m]: the thrust
+    ``thrust_n`` through the thread, the nut's drag, and the screw's and the rotor's
+    inertia ``inertia_kg_m2`` times the angular acceleration of ``accel_m_s2`` (none at
+    no acceleration: the constant segment)."""
+    thread = profile.passed_torque(thrust_n, t.torque_per_newton_m, t.driven_torque_per_newton_m)
+    torque_nm: Array = thread + t.drag_max_nm
+    if not accel_m_s2:
+        return torque_nm
+    alpha = torque.angular_acceleration(accel_m_s2, t.lead_m)
+    spun: Array = torque_nm + torque.inertia_torque(inertia_kg_m2, alpha)
+    return spun
 
 
 def _dwell(
