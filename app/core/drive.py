@@ -36,7 +36,9 @@ def torques(
     start, its acceleration higher."""
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
-    j_mass = torque.reflected_mass_inertia(move.moving_mass_kg, t.lead_m)
+    j_mass = torque.reflected_mass_inertia(
+        move.moving_mass_kg, t.lead_m, t.reflected_inertia_per_kg_m2
+    )
     inertial_force_n = move.moving_mass_kg * move.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
     t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)

@@ -59,8 +59,8 @@ def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[s
     stroke = motion.equivalent_stroke(app) or 0.0
     p = c.fastest
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
-    friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency))
-    drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m)
+    friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency, t.friction_loss))
+    drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m, t.drag_work_per_turn_j)
     # the fin conductance and nut diameter in still air follow from the catalog alone
     rise = heat.temperature_rise(
         friction + drag,

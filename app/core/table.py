@@ -15,18 +15,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from app.core.axis_free import axis_free, screw_terms
 from app.core.formulas import (
     ballscrew,
-    bearing,
-    buckling,
-    critical_speed,
     efficiency,
     geometry,
-    heat,
     limits,
     profile,
-    pv,
-    torque,
 )
 from app.core.model import ScrewSpec
 
@@ -235,52 +230,6 @@ def _thread_efficiencies(
     }
 
 
-def _axis_free(c: dict[str, Array]) -> dict[str, Any]:
-    """Numbers the operating point reads that follow from the catalog alone, each the
-    same formula call it would make per query: tan of the lead angle and the static
-    friction at which the thread self-locks (``efficiency``), the seed's contact area of
-    three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
-    area at the catalog's nut length (``bearing``), the screw's fin conductance in still
-    air and the nut's outside diameter (``heat``), the lower of the running and the
-    static efficiency (the root section's torque), the root section's and the shaft's
-    own terms of the column, stress and whirl formulas (``buckling``,
-    ``critical_speed``), and the thread's torque per newton of thrust (``torque``,
-    ``efficiency``; unbounded where a thread cannot drive, a lead ``evaluate`` refuses)."""
-    tan_l, lead = np.tan(c["lead_angle_rad"]), c["lead_m"]
-    d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
-    held = efficiency.holding_torque_per_newton
-    with np.errstate(invalid="ignore", divide="ignore"):
-        transition = buckling.transition_slenderness(e, c["yield_strength_pa"])
-        wave, gyration = critical_speed.shaft_terms(d_r, e, c["density_kg_m3"])
-        driving = [
-            torque.torque_per_newton(lead, c[k]) for k in ("efficiency", "efficiency_static")
-        ]
-    flanks = bearing.engaged_flank_area(
-        c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
-    )
-    return {
-        "tan_lead_angle": tan_l,
-        "self_locking_friction": efficiency.self_locking_limit_friction(tan_l, c["cos_half_angle"]),
-        "contact_area_m2": pv.contact_area(c["helix_travel_m"], c["thread_depth_m"]),
-        "transition_slenderness": transition,
-        "catalog_flank_area_m2": np.asarray(flanks, dtype=np.float64),
-        "fin_conductance_w_k": heat.fin_conductance(
-            c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
-        ),
-        "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * c["outer_diameter_m"],
-        "root_efficiency": np.minimum(c["efficiency"], c["efficiency_static"]),
-        "root_area_m2": buckling.root_area(d_r),
-        "root_second_moment_m4": buckling.second_moment_round(d_r),
-        "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),
-        "wave_speed_m_s": wave,
-        "root_gyration_m": gyration,
-        "torque_per_newton_m": driving[0],
-        "start_torque_per_newton_m": driving[1],
-        "driven_torque_per_newton_m": held(lead, c["backdrive_efficiency_signed"]),
-        "hold_per_newton_m": held(lead, c["backdrive_efficiency"]),
-    }
-
-
 @dataclass(frozen=True, slots=True)
 class CandidateTable:
     """One element per candidate: catalog values (SI) and axis-independent derived ones."""
@@ -377,6 +326,20 @@ class CandidateTable:
     start_torque_per_newton_m: Array
     driven_torque_per_newton_m: Array
     hold_per_newton_m: Array
+    #: The screw's own terms of the query's formulas (``axis_free.screw_terms``): the
+    #: reflected inertia per kg of moving mass [m^2], the drag's work per turn [J], the
+    #: thread's friction loss 1 / eta - 1 [-] and a ball screw's DN speed limit [rpm];
+    #: and whether the catalog gives the PV, length, traverse, temperature and sliding
+    #: speed limits.
+    reflected_inertia_per_kg_m2: Array
+    drag_work_per_turn_j: Array
+    friction_loss: Array
+    dn_speed_limit_rpm: Array
+    pv_limit_given: Mask
+    max_length_given: Mask
+    traverse_limit_given: Mask
+    temperature_given: Mask
+    max_sliding_speed_given: Mask
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together
@@ -419,6 +382,7 @@ class CandidateTable:
         reach = _reach(screws, lead, rd, *limits)
         columns = dict(
             lead_m=lead,
+            traverse_limit_m_s=traverse,
             pitch_diameter_m=d_p,
             thread_depth_m=geometry.thread_depth(od, rd),
             helix_travel_m=geometry.helix_travel(lead, d_p),
@@ -444,11 +408,11 @@ class CandidateTable:
             # the seed's rule of thumb is a sliding thread's: a ball screw always back-drives
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
-            traverse_limit_m_s=traverse,
             traverse_extrapolated=extrapolated,
             ball=ball,
             **columns,
-            **_axis_free(columns),
+            **axis_free(columns),
+            **screw_terms(columns),
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":

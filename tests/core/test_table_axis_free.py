@@ -7,7 +7,16 @@ import numpy as np
 import pytest
 
 from app.catalog import Catalog
-from app.core.formulas import bearing, buckling, critical_speed, efficiency, heat, pv, torque
+from app.core.formulas import (
+    ballscrew,
+    bearing,
+    buckling,
+    critical_speed,
+    efficiency,
+    heat,
+    pv,
+    torque,
+)
 from app.core.model import Application
 from app.core.quantities import operating_point
 from app.core.table import CandidateTable
@@ -53,6 +62,15 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
             t.lead_m, t.backdrive_efficiency_signed
         ),
         "hold_per_newton_m": efficiency.holding_torque_per_newton(t.lead_m, t.backdrive_efficiency),
+        "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, t.lead_m),
+        "drag_work_per_turn_j": heat.drag_work_per_turn(t.drag_max_nm),
+        "friction_loss": 1.0 / t.efficiency - 1.0,
+        "dn_speed_limit_rpm": ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m),
+        "pv_limit_given": ~np.isnan(t.pv_limit_pa_m_s),
+        "max_length_given": ~np.isnan(t.max_length_m),
+        "traverse_limit_given": ~np.isnan(t.traverse_limit_m_s),
+        "temperature_given": ~np.isnan(t.temperature_min_c),
+        "max_sliding_speed_given": ~np.isnan(t.max_sliding_speed_m_s),
     }
     assert {
         name: _same(getattr(t, name), value) for name, value in expected.items()

@@ -24,23 +24,39 @@ NUT_OUTER_TO_D = 2.0
 
 
 @formula("P_f = F v (1 / eta - 1)", "the flow of power through the thread (Shigley sec. 8-2)")
-def friction_power(force_n: float, speed_m_s: float, efficiency: float) -> float:
+def friction_power(
+    force_n: float, speed_m_s: float, efficiency: float, loss: float | None = None
+) -> float:
     """Power the thread's friction turns into heat [W]: the input F v / eta [W] less the
-    useful F v, force [N], mean linear speed [m/s], forward efficiency [-].
+    useful F v, force [N], mean linear speed [m/s], forward efficiency [-]; ``loss``:
+    1 / eta - 1 when already worked out (``friction_loss``: the candidate table's
+    column), the same number.
 
     A 200 kg lift (1962 N) at 12 mm/s on Tr14x3 with an oiled bronze nut (eta = 0.358):
 
     >>> round(friction_power(1962.0, 0.012, 0.358), 1)
     42.2
     """
-    return force_n * speed_m_s * (1.0 / efficiency - 1.0)
+    return force_n * speed_m_s * (friction_loss(efficiency) if loss is None else loss)
+
+
+def friction_loss(efficiency: float) -> float:
+    """The power the thread's friction loses per watt of useful power, 1 / eta - 1 [-]
+    (``friction_power``).
+
+    >>> friction_loss(0.5)
+    1.0
+    """
+    return 1.0 / efficiency - 1.0
 
 
 @formula(
     "P_drag = T_drag 2 pi v / lead",
     "power of a torque at the screw's angular speed omega = 2 pi v / lead",
 )
-def drag_power(drag_torque_nm: float, speed_m_s: float, lead_m: float) -> float:
+def drag_power(
+    drag_torque_nm: float, speed_m_s: float, lead_m: float, per_turn_j: float | None = None
+) -> float:
     """Power a nut's drag (the preload of an anti-backlash nut) turns into heat [W]: its
     drag torque T_drag [N m] at the screw's angular speed 2 pi v / lead, v the nut's mean
     linear speed [m/s], lead [m]. The drag is friction of the nut's own flanks against the
@@ -48,7 +64,8 @@ def drag_power(drag_torque_nm: float, speed_m_s: float, lead_m: float) -> float:
     speed (every move's travel over the cycle's time, dwells included) it is the drag's
     work over one cycle (``energy.shaft_energy`` of the drag) over the cycle's time.
     Valid for a drag torque that does not vary with the speed (the catalog gives one).
-    Floats or arrays.
+    Floats or arrays. ``per_turn_j``: the drag's work per turn T_drag 2 pi when already
+    worked out (``drag_work_per_turn``: the candidate table's column), the same number.
 
     0.03 N m on a 4 mm lead, 0.8 m of travel in an 8.2 s cycle (about 1,257 turns of
     37.7 J), 4.6 W:
@@ -56,7 +73,17 @@ def drag_power(drag_torque_nm: float, speed_m_s: float, lead_m: float) -> float:
     >>> round(drag_power(0.03, 0.8 / 8.2, 0.004), 3)
     4.597
     """
-    return drag_torque_nm * 2.0 * math.pi * speed_m_s / lead_m
+    work_j = drag_work_per_turn(drag_torque_nm) if per_turn_j is None else per_turn_j
+    return work_j * speed_m_s / lead_m
+
+
+def drag_work_per_turn(drag_torque_nm: float) -> float:
+    """The work of a drag torque [N m] over one turn of the screw, T_drag 2 pi [J].
+
+    >>> round(drag_work_per_turn(0.03), 4)
+    0.1885
+    """
+    return drag_torque_nm * 2.0 * math.pi
 
 
 @formula("G_fin = sqrt(h pi d k pi d^2 / 4)", "Incropera, sec. 3.6 (infinitely long fin)")

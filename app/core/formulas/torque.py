@@ -40,8 +40,10 @@ def solid_rod_inertia_per_length(density_kg_m3: float, diameter_m: float) -> flo
     return density_kg_m3 * math.pi * diameter_m**4 / 32.0
 
 
-def reflected_mass_inertia(mass_kg: float, lead_m: float) -> float:
-    """Moving mass reflected to the screw, J = m (lead / 2 pi)^2 [kg m^2].
+def reflected_mass_inertia(mass_kg: float, lead_m: float, per_kg_m2: float | None = None) -> float:
+    """Moving mass reflected to the screw, J = m (lead / 2 pi)^2 [kg m^2]; ``per_kg_m2``:
+    (lead / 2 pi)^2 when already worked out (the candidate table's column, this function
+    at 1 kg), the same number.
 
     Source: standard kinematic equivalence, e.g. Shigley [2] ch. 8 / any motion-control
     sizing guide (the mass moves lead / 2 pi metres per radian).
@@ -49,7 +51,7 @@ def reflected_mass_inertia(mass_kg: float, lead_m: float) -> float:
     >>> round(reflected_mass_inertia(10.0, 2 * math.pi * 0.001), 9)
     1e-05
     """
-    return mass_kg * (lead_m / (2.0 * math.pi)) ** 2
+    return mass_kg * ((lead_m / (2.0 * math.pi)) ** 2 if per_kg_m2 is None else per_kg_m2)
 
 
 @formula("T = (J/L x L) x 2 pi a / lead", SEED + " (Inertia Torque T = I alpha)")

@@ -1,0 +1,92 @@
+"""The candidate table's axis-free columns: numbers the operating point and the checks
+read that follow from the catalog alone, each worked out once per catalog by the same
+formula call the query would otherwise make (``table.CandidateTable``; ``c``: the table's
+columns by name).
+"""
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from app.core.formulas import (
+    ballscrew,
+    bearing,
+    buckling,
+    critical_speed,
+    efficiency,
+    heat,
+    pv,
+    torque,
+)
+
+Array = NDArray[np.float64]
+
+
+def axis_free(c: dict[str, Array]) -> dict[str, Any]:
+    """Numbers the operating point reads that follow from the catalog alone, each the
+    same formula call it would make per query: tan of the lead angle and the static
+    friction at which the thread self-locks (``efficiency``), the seed's contact area of
+    three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
+    area at the catalog's nut length (``bearing``), the screw's fin conductance in still
+    air and the nut's outside diameter (``heat``), the lower of the running and the
+    static efficiency (the root section's torque), the root section's and the shaft's
+    own terms of the column, stress and whirl formulas (``buckling``,
+    ``critical_speed``), and the thread's torque per newton of thrust (``torque``,
+    ``efficiency``; unbounded where a thread cannot drive, a lead ``evaluate`` refuses)."""
+    tan_l, lead = np.tan(c["lead_angle_rad"]), c["lead_m"]
+    d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
+    held = efficiency.holding_torque_per_newton
+    with np.errstate(invalid="ignore", divide="ignore"):
+        transition = buckling.transition_slenderness(e, c["yield_strength_pa"])
+        wave, gyration = critical_speed.shaft_terms(d_r, e, c["density_kg_m3"])
+        driving = [
+            torque.torque_per_newton(lead, c[k]) for k in ("efficiency", "efficiency_static")
+        ]
+    flanks = bearing.engaged_flank_area(
+        c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
+    )
+    return {
+        "tan_lead_angle": tan_l,
+        "self_locking_friction": efficiency.self_locking_limit_friction(tan_l, c["cos_half_angle"]),
+        "contact_area_m2": pv.contact_area(c["helix_travel_m"], c["thread_depth_m"]),
+        "transition_slenderness": transition,
+        "catalog_flank_area_m2": np.asarray(flanks, dtype=np.float64),
+        "fin_conductance_w_k": heat.fin_conductance(
+            c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
+        ),
+        "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * c["outer_diameter_m"],
+        "root_efficiency": np.minimum(c["efficiency"], c["efficiency_static"]),
+        "root_area_m2": buckling.root_area(d_r),
+        "root_second_moment_m4": buckling.second_moment_round(d_r),
+        "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),
+        "wave_speed_m_s": wave,
+        "root_gyration_m": gyration,
+        "torque_per_newton_m": driving[0],
+        "start_torque_per_newton_m": driving[1],
+        "driven_torque_per_newton_m": held(lead, c["backdrive_efficiency_signed"]),
+        "hold_per_newton_m": held(lead, c["backdrive_efficiency"]),
+    }
+
+
+def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
+    """The screw's own terms of formulas the query works per candidate: the moving mass's
+    reflected inertia per kilogram (``torque.reflected_mass_inertia`` at 1 kg), the
+    nut's drag work per turn (``heat.drag_work_per_turn``), the thread's friction loss
+    per watt moved (``heat.friction_loss``) and a ball screw's DN speed limit
+    (``ballscrew.dn_speed_limit``); and where the catalog gives a limit (not NaN): the
+    seed's PV, the length, the traverse speed, the temperature range and the sliding
+    speed."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        loss = heat.friction_loss(c["efficiency"])
+    return {
+        "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, c["lead_m"]),
+        "drag_work_per_turn_j": heat.drag_work_per_turn(c["drag_max_nm"]),
+        "friction_loss": loss,
+        "dn_speed_limit_rpm": ballscrew.dn_speed_limit(c["dn_limit_mm_rpm"], c["outer_diameter_m"]),
+        "pv_limit_given": ~np.isnan(c["pv_limit_pa_m_s"]),
+        "max_length_given": ~np.isnan(c["max_length_m"]),
+        "traverse_limit_given": ~np.isnan(c["traverse_limit_m_s"]),
+        "temperature_given": ~np.isnan(c["temperature_min_c"]),
+        "max_sliding_speed_given": ~np.isnan(c["max_sliding_speed_m_s"]),
+    }
