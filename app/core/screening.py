@@ -144,9 +144,12 @@ def screen_table(
     q = operating_point(app, table)
     measures = {c.name: c.measure(app, table, q) for c in REGISTRY if c.applies(app)}
     names = list(measures)
-    rejecting = [name for name in names if _rejects(app, name)]
+    rejecting: list[str] = []
+    others: list[str] = []
+    for name in names:
+        (rejecting if _rejects(app, name) else others).append(name)
     # judged with the rejecting checks first, so each group is a slice of the rows
-    order = rejecting + [name for name in names if not _rejects(app, name)]
+    order = rejecting + others
     numeric, applicable, ratio, failed = _judge([measures[name] for name in order], len(table))
     row = {name: i for i, name in enumerate(order)}
     utilization = {name: ratio[row[name]] if numeric[row[name]] else None for name in names}

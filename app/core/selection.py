@@ -214,8 +214,8 @@ def select(
     rejected = returned[len(ranked) :]
     skip = nearest[:REMEDY_FROM]
     fixable = [] if ranked else _fixable_order(s, order, skip)[:REMEDY_FROM].tolist()
-    by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
-    by_check = Counter({k: v for k, v in by_check.items() if v})
+    counts = {n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()}
+    by_check = Counter({n: count for n, count in counts.items() if count})
     n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
