@@ -69,14 +69,29 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
     }
 
 
+#: The catalog values whose presence (not NaN) the query reads, by their mask's column: a
+#: limit a check judges where given, a rating or a life that replaces or caps another.
+GIVEN = {
+    "pv_limit_given": "pv_limit_pa_m_s",
+    "max_length_given": "max_length_m",
+    "traverse_limit_given": "traverse_limit_m_s",
+    "temperature_given": "temperature_min_c",
+    "max_sliding_speed_given": "max_sliding_speed_m_s",
+    "design_load_given": "design_load_n",
+    "life_min_given": "life_min_m",
+    "life_max_given": "life_max_m",
+    "pitch_given": "pitch_m",
+    "travel_variation_given": "travel_variation_300mm_m",
+}
+
+
 def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
     """The screw's own terms of formulas the query works per candidate: the moving mass's
     reflected inertia per kilogram (``torque.reflected_mass_inertia`` at 1 kg), the
     nut's drag work per turn (``heat.drag_work_per_turn``), the thread's friction loss
     per watt moved (``heat.friction_loss``) and a ball screw's DN speed limit
-    (``ballscrew.dn_speed_limit``); and where the catalog gives a limit (not NaN): the
-    seed's PV, the length, the traverse speed, the temperature range and the sliding
-    speed."""
+    (``ballscrew.dn_speed_limit``); and where the catalog gives each value of ``GIVEN``
+    (not NaN)."""
     with np.errstate(invalid="ignore", divide="ignore"):
         loss = heat.friction_loss(c["efficiency"])
     return {
@@ -84,9 +99,5 @@ def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
         "drag_work_per_turn_j": heat.drag_work_per_turn(c["drag_max_nm"]),
         "friction_loss": loss,
         "dn_speed_limit_rpm": ballscrew.dn_speed_limit(c["dn_limit_mm_rpm"], c["outer_diameter_m"]),
-        "pv_limit_given": ~np.isnan(c["pv_limit_pa_m_s"]),
-        "max_length_given": ~np.isnan(c["max_length_m"]),
-        "traverse_limit_given": ~np.isnan(c["traverse_limit_m_s"]),
-        "temperature_given": ~np.isnan(c["temperature_min_c"]),
-        "max_sliding_speed_given": ~np.isnan(c["max_sliding_speed_m_s"]),
+        **{mask: ~np.isnan(c[name]) for mask, name in GIVEN.items()},
     }

@@ -91,8 +91,8 @@ def duty(
     stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
     travel = app.stroke_m if app.stroke_m is not None else app.length_m
-    low_m = np.where(np.isnan(t.life_min_m), np.nan, np.fmin(t.life_min_m, wear_travel_m))
-    high_m = np.where(np.isnan(t.life_max_m), np.nan, np.fmin(t.life_max_m, wear_travel_m))
+    low_m = np.where(t.life_min_given, np.fmin(t.life_min_m, wear_travel_m), np.nan)
+    high_m = np.where(t.life_max_given, np.fmin(t.life_max_m, wear_travel_m), np.nan)
     return {
         "life_travel_min_m": low_m,
         "life_years_min": life.life_years(low_m, stroke, cycles) if rated else nan,
@@ -115,7 +115,7 @@ def lead_error(t: CandidateTable, travel_m: float) -> Array:
     v300p (not 100 / 300 of it).
     """
     error = np.asarray(accuracy.cumulative_lead_error(t.lead_accuracy, travel_m), np.float64)
-    ball = ~np.isnan(t.travel_variation_300mm_m)
+    ball = t.travel_variation_given
     error[ball] = accuracy.ball_travel_deviation(travel_m, t.travel_variation_300mm_m[ball])
     for position, bands in enumerate(t.deviation_tables):
         rows = t.deviation_table == position

@@ -114,11 +114,11 @@ def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> di
         "nut_allowed_pressure_pa": allowed,
         "nut_allowed_load_n": allowed * area,
         "rated_load_n": np.where(
-            np.isnan(t.design_load_n),
-            bearing.dynamic_load(t.dynamic_pressure_pa, area),
+            t.design_load_given,
             t.design_load_n,
+            bearing.dynamic_load(t.dynamic_pressure_pa, area),
         ),
-        "nut_length_m": np.where(np.isnan(t.pitch_m), np.nan, nut_length(app, t)),
+        "nut_length_m": np.where(t.pitch_given, nut_length(app, t), np.nan),
     }
 
 

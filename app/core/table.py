@@ -329,8 +329,7 @@ class CandidateTable:
     #: The screw's own terms of the query's formulas (``axis_free.screw_terms``): the
     #: reflected inertia per kg of moving mass [m^2], the drag's work per turn [J], the
     #: thread's friction loss 1 / eta - 1 [-] and a ball screw's DN speed limit [rpm];
-    #: and whether the catalog gives the PV, length, traverse, temperature and sliding
-    #: speed limits.
+    #: and whether the catalog gives each value of ``axis_free.GIVEN``.
     reflected_inertia_per_kg_m2: Array
     drag_work_per_turn_j: Array
     friction_loss: Array
@@ -340,6 +339,11 @@ class CandidateTable:
     traverse_limit_given: Mask
     temperature_given: Mask
     max_sliding_speed_given: Mask
+    design_load_given: Mask
+    life_min_given: Mask
+    life_max_given: Mask
+    pitch_given: Mask
+    travel_variation_given: Mask
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together

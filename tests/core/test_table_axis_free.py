@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from app.catalog import Catalog
+from app.core.axis_free import GIVEN
 from app.core.formulas import (
     ballscrew,
     bearing,
@@ -66,11 +67,7 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         "drag_work_per_turn_j": heat.drag_work_per_turn(t.drag_max_nm),
         "friction_loss": 1.0 / t.efficiency - 1.0,
         "dn_speed_limit_rpm": ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m),
-        "pv_limit_given": ~np.isnan(t.pv_limit_pa_m_s),
-        "max_length_given": ~np.isnan(t.max_length_m),
-        "traverse_limit_given": ~np.isnan(t.traverse_limit_m_s),
-        "temperature_given": ~np.isnan(t.temperature_min_c),
-        "max_sliding_speed_given": ~np.isnan(t.max_sliding_speed_m_s),
+        **{mask: ~np.isnan(getattr(t, name)) for mask, name in GIVEN.items()},
     }
     assert {
         name: _same(getattr(t, name), value) for name, value in expected.items()
