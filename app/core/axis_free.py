@@ -4,6 +4,7 @@ formula call the query would otherwise make (``table.CandidateTable``; ``c``: th
 columns by name).
 """
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -18,6 +19,7 @@ from app.core.formulas import (
     heat,
     pv,
     torque,
+    wear,
 )
 
 Array = NDArray[np.float64]
@@ -29,7 +31,8 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
     friction at which the thread self-locks (``efficiency``), the seed's contact area of
     three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
     area at the catalog's nut length (``bearing``), the screw's fin conductance in still
-    air and the nut's outside diameter (``heat``), the lower of the running and the
+    air, the nut's outside diameter and its conductance to the ambient at the catalog's
+    nut length (``heat``), the lower of the running and the
     static efficiency (the root section's torque), the root section's and the shaft's
     own terms of the column, stress and whirl formulas (``buckling``,
     ``critical_speed``), and the thread's torque per newton of thrust (``torque``,
@@ -43,6 +46,10 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         driving = [
             torque.torque_per_newton(lead, c[k]) for k in ("efficiency", "efficiency_static")
         ]
+    fin = heat.fin_conductance(
+        c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
+    )
+    nut_d = heat.NUT_OUTER_TO_D * c["outer_diameter_m"]
     flanks = bearing.engaged_flank_area(
         c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
     )
@@ -52,10 +59,11 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "contact_area_m2": pv.contact_area(c["helix_travel_m"], c["thread_depth_m"]),
         "transition_slenderness": transition,
         "catalog_flank_area_m2": np.asarray(flanks, dtype=np.float64),
-        "fin_conductance_w_k": heat.fin_conductance(
-            c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
+        "fin_conductance_w_k": fin,
+        "nut_outer_diameter_m": nut_d,
+        "nut_conductance_w_k": heat.nut_conductance(
+            fin, c["nut_length_m"], nut_d, heat.FREE_CONVECTION_W_M2_K
         ),
-        "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * c["outer_diameter_m"],
         "root_efficiency": np.minimum(c["efficiency"], c["efficiency_static"]),
         "root_area_m2": buckling.root_area(d_r),
         "root_second_moment_m4": buckling.second_moment_round(d_r),
@@ -67,6 +75,24 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "driven_torque_per_newton_m": held(lead, c["backdrive_efficiency_signed"]),
         "hold_per_newton_m": held(lead, c["backdrive_efficiency"]),
     }
+
+
+def wear_geometry(
+    flank_area_m2: Array, column: Callable[[str], Array]
+) -> tuple[Array, Array, Array]:
+    """What the nut's wear (``nut.wear_life``, Archard) runs over: the engaged flanks of a
+    standard thread (area ``flank_area_m2``, not NaN; flank height; the helix at d2),
+    else the seed's three threads (contact area, thread depth, the helix at the pitch
+    diameter): the area that carries the thrust [m^2], the allowed wear depth [m] and
+    the sliding per travel [-] (``wear.sliding_per_travel``); ``column``: the table's
+    columns by name."""
+    flanks = ~np.isnan(flank_area_m2)
+    area = np.where(flanks, flank_area_m2, column("contact_area_m2"))
+    height = np.where(flanks, column("flank_height_m"), column("thread_depth_m"))
+    helix = np.where(flanks, column("flank_helix_travel_m"), column("helix_travel_m"))
+    depth = column("allowed_wear_fraction") * height
+    per_travel: Array = wear.sliding_per_travel(helix, column("lead_m"))
+    return area, depth, per_travel
 
 
 #: The catalog values whose presence (not NaN) the query reads, by their mask's column: a
@@ -85,13 +111,17 @@ GIVEN = {
 }
 
 
+#: The wear geometry at the catalog's nut length (``wear_geometry``), by its columns.
+WEAR = ("wear_area_m2", "wear_depth_m", "wear_sliding_per_travel")
+
+
 def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
     """The screw's own terms of formulas the query works per candidate: the moving mass's
     reflected inertia per kilogram (``torque.reflected_mass_inertia`` at 1 kg), the
     nut's drag work per turn (``heat.drag_work_per_turn``), the thread's friction loss
     per watt moved (``heat.friction_loss``) and a ball screw's DN speed limit
-    (``ballscrew.dn_speed_limit``); and where the catalog gives each value of ``GIVEN``
-    (not NaN)."""
+    (``ballscrew.dn_speed_limit``); where the catalog gives each value of ``GIVEN`` (not
+    NaN); and the nut's wear geometry at the catalog's nut length (``WEAR``)."""
     with np.errstate(invalid="ignore", divide="ignore"):
         loss = heat.friction_loss(c["efficiency"])
     return {
@@ -100,4 +130,5 @@ def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
         "friction_loss": loss,
         "dn_speed_limit_rpm": ballscrew.dn_speed_limit(c["dn_limit_mm_rpm"], c["outer_diameter_m"]),
         **{mask: ~np.isnan(c[name]) for mask, name in GIVEN.items()},
+        **dict(zip(WEAR, wear_geometry(c["catalog_flank_area_m2"], c.__getitem__), strict=True)),
     }

@@ -61,13 +61,16 @@ def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[s
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
     friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency, t.friction_loss))
     drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m, t.drag_work_per_turn_j)
-    # the fin conductance and nut diameter in still air follow from the catalog alone
+    # the fin conductance and nut diameter in still air follow from the catalog alone, and
+    # with them the nut's conductance at the catalog's nut length
+    catalog_nut = app.nut_length_m is None
     rise = heat.temperature_rise(
         friction + drag,
         t.fin_conductance_w_k,
         nut_length(app, t),
         t.nut_outer_diameter_m,
         heat.FREE_CONVECTION_W_M2_K,
+        t.nut_conductance_w_k if catalog_nut else None,
     )
     return {
         "heat_speed_m_s": filled(len(t), mean_speed),

@@ -2,11 +2,13 @@
 the pressure and load they allow, and its wear life (Archard).
 """
 
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from app.core import motion
+from app.core.axis_free import wear_geometry
 from app.core.formulas import (
     bearing,
     geometry,
@@ -133,16 +135,14 @@ def wear_life(
     cycle's wear thrust ``force_n``, ``motion.wear_thrust``): over the engaged flanks and
     flank height of a standard thread, else over the seed's three threads and thread
     depth; in years at ``cycles`` a day (``motion.cycles_per_day``)."""
-    flanks = ~np.isnan(flank_area_m2)
-    area = np.where(flanks, flank_area_m2, t.contact_area_m2)
-    height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
-    helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
+    if app.nut_length_m is None:  # the catalog's flanks, whose geometry the table holds
+        area, depth, per_travel = t.wear_area_m2, t.wear_depth_m, t.wear_sliding_per_travel
+    else:
+        area, depth, per_travel = wear_geometry(flank_area_m2, partial(getattr, t))
     # a vanishing thrust: an unbounded life (``operating_point`` silences the overflow),
     # NaN below
-    sliding = wear.wear_life_sliding(
-        t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
-    )
-    travel = finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
+    sliding = wear.wear_life_sliding(depth, t.wear_rate_m2_n, pv.contact_pressure(force_n, area))
+    travel = finite(wear.wear_life_travel(sliding, per_travel))
     stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
     years = life.life_years(travel, stroke, cycles) if rated else travel * np.nan

@@ -310,6 +310,9 @@ class CandidateTable:
     catalog_flank_area_m2: Array
     fin_conductance_w_k: Array
     nut_outer_diameter_m: Array
+    #: the nut's conductance to the ambient at the catalog's nut length [W/K]
+    #: (``heat.nut_conductance``: the fins both ways and the nut's surface; NaN: no length)
+    nut_conductance_w_k: Array
     root_efficiency: Array
     #: The root section's area [m^2], second moment [m^4] and pi d_r^3 [m^3]
     #: (``buckling``), sqrt(E / rho) [m/s] and the radius of gyration d_r / 4 [m]
@@ -329,7 +332,9 @@ class CandidateTable:
     #: The screw's own terms of the query's formulas (``axis_free.screw_terms``): the
     #: reflected inertia per kg of moving mass [m^2], the drag's work per turn [J], the
     #: thread's friction loss 1 / eta - 1 [-] and a ball screw's DN speed limit [rpm];
-    #: and whether the catalog gives each value of ``axis_free.GIVEN``.
+    #: whether the catalog gives each value of ``axis_free.GIVEN``; and the wear geometry
+    #: at the catalog's nut length (``axis_free.wear_geometry``: area [m^2], allowed depth
+    #: [m], sliding per travel [-]).
     reflected_inertia_per_kg_m2: Array
     drag_work_per_turn_j: Array
     friction_loss: Array
@@ -344,6 +349,9 @@ class CandidateTable:
     life_max_given: Mask
     pitch_given: Mask
     travel_variation_given: Mask
+    wear_area_m2: Array
+    wear_depth_m: Array
+    wear_sliding_per_travel: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together
@@ -398,6 +406,7 @@ class CandidateTable:
             **_nut_columns(screws, lead),
         )
         columns["root_diameter_m"], columns["outer_diameter_m"] = rd, od
+        columns |= axis_free(columns)
         return cls(
             reach=reach,
             pressure_tables=tables,
@@ -415,7 +424,6 @@ class CandidateTable:
             traverse_extrapolated=extrapolated,
             ball=ball,
             **columns,
-            **axis_free(columns),
             **screw_terms(columns),
         )
 

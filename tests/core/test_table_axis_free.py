@@ -2,12 +2,13 @@
 would make per query, worked out once at load, to the bit."""
 
 import dataclasses
+from functools import partial
 
 import numpy as np
 import pytest
 
 from app.catalog import Catalog
-from app.core.axis_free import GIVEN
+from app.core.axis_free import GIVEN, WEAR, wear_geometry
 from app.core.formulas import (
     ballscrew,
     bearing,
@@ -68,6 +69,10 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         "friction_loss": 1.0 / t.efficiency - 1.0,
         "dn_speed_limit_rpm": ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m),
         **{mask: ~np.isnan(getattr(t, name)) for mask, name in GIVEN.items()},
+        "nut_conductance_w_k": heat.nut_conductance(
+            t.fin_conductance_w_k, t.nut_length_m, t.nut_outer_diameter_m, h
+        ),
+        **dict(zip(WEAR, wear_geometry(t.catalog_flank_area_m2, partial(getattr, t)), strict=True)),
     }
     assert {
         name: _same(getattr(t, name), value) for name, value in expected.items()

@@ -108,15 +108,36 @@ def fin_conductance(diameter_m: float, conductivity_w_m_k: float, h_w_m2_k: floa
     "Incropera, sec. 3.6 and Newton's law of cooling",
 )
 def temperature_rise(
-    power_w: float, fin_w_k: float, nut_length_m: float, nut_diameter_m: float, h_w_m2_k: float
+    power_w: float,
+    fin_w_k: float,
+    nut_length_m: float,
+    nut_diameter_m: float,
+    h_w_m2_k: float,
+    conductance_w_k: float | None = None,
 ) -> float:
     """Steady temperature rise of the nut over the ambient [K]: the heat power [W] (the
     thread's friction and the nut's drag, ``friction_power`` + ``drag_power``) over the
     screw's conductance both ways (two fins, [W/K]) plus the nut surface's convection
-    h pi D L (nut length and outside diameter [m], h [W/(m^2 K)]).
+    h pi D L (nut length and outside diameter [m], h [W/(m^2 K)]): ``nut_conductance``,
+    or ``conductance_w_k`` when already worked out (the candidate table's column at the
+    catalog's nut length), the same number.
 
     >>> round(temperature_rise(10.0, 0.04, 0.028, 0.028, 10.0), 1)
     95.6
     """
+    if conductance_w_k is None:
+        conductance_w_k = nut_conductance(fin_w_k, nut_length_m, nut_diameter_m, h_w_m2_k)
+    return power_w / conductance_w_k
+
+
+def nut_conductance(
+    fin_w_k: float, nut_length_m: float, nut_diameter_m: float, h_w_m2_k: float
+) -> float:
+    """The nut's conductance to the ambient [W/K] (``temperature_rise``): the screw's
+    both ways (two fins, [W/K]) plus the nut surface's convection h pi D L.
+
+    >>> round(nut_conductance(0.04, 0.028, 0.028, 10.0), 4)
+    0.1046
+    """
     surface_w_k = h_w_m2_k * math.pi * nut_diameter_m * nut_length_m
-    return power_w / (2.0 * fin_w_k + surface_w_k)
+    return 2.0 * fin_w_k + surface_w_k
