@@ -74,6 +74,7 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "start_torque_per_newton_m": driving[1],
         "driven_torque_per_newton_m": held(lead, c["backdrive_efficiency_signed"]),
         "hold_per_newton_m": held(lead, c["backdrive_efficiency"]),
+        "seed_hold_per_newton_m": held(lead, c["efficiency"]),
     }
 
 

@@ -25,7 +25,7 @@ def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, An
     safety factor (the torque safety factor when none is given)."""
     mu_margin = t.friction_static * app.self_locking_friction_factor
     locks = mu_margin >= t.self_locking_friction
-    seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
+    seed = torque.thrust_torque(force_n, t.seed_hold_per_newton_m)
     physics = torque.thrust_torque(force_n, t.hold_per_newton_m)
     distrusted = efficiency.holding_torque(
         force_n,

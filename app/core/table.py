@@ -329,6 +329,8 @@ class CandidateTable:
     start_torque_per_newton_m: Array
     driven_torque_per_newton_m: Array
     hold_per_newton_m: Array
+    #: the seed's holding torque per newton, at the forward efficiency [N m/N]
+    seed_hold_per_newton_m: Array
     #: The screw's own terms of the query's formulas (``axis_free.screw_terms``): the
     #: reflected inertia per kg of moving mass [m^2], the drag's work per turn [J], the
     #: thread's friction loss 1 / eta - 1 [-] and a ball screw's DN speed limit [rpm];

@@ -64,6 +64,7 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
             t.lead_m, t.backdrive_efficiency_signed
         ),
         "hold_per_newton_m": efficiency.holding_torque_per_newton(t.lead_m, t.backdrive_efficiency),
+        "seed_hold_per_newton_m": efficiency.holding_torque_per_newton(t.lead_m, t.efficiency),
         "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, t.lead_m),
         "drag_work_per_turn_j": heat.drag_work_per_turn(t.drag_max_nm),
         "friction_loss": 1.0 / t.efficiency - 1.0,
