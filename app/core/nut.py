@@ -46,11 +46,13 @@ def seed_pv(
     permissible PV ``limit``, at the thrust ``force_n`` and screw speed ``rpm`` of
     ``quantities.pv_point``: the peak thrust at the top speed (an accelerating segment
     ends at the top speed still carrying m a)."""
-    area = t.contact_area_m2
+    area, helix = t.contact_area_m2, t.helix_travel_m
+    pressure = np.asarray(pv.contact_pressure(force_n, area), dtype=np.float64)
+    speed = pv.surface_speed(rpm, helix)
     return {
-        "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m, area),
-        "pressure_pa": np.asarray(pv.contact_pressure(force_n, area), dtype=np.float64),
-        "surface_speed_m_s": pv.surface_speed(rpm, t.helix_travel_m),
+        "pv_pa_m_s": pv.pv_value(force_n, rpm, helix, t.thread_depth_m, area, (pressure, speed)),
+        "pressure_pa": pressure,
+        "surface_speed_m_s": speed,
         "contact_area_m2": area,
         "pv_max_load_n": pv.max_load_for_pv(limit, rpm, t.thread_depth_m),
         "pv_max_speed_m_s": finite(
