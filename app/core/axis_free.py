@@ -112,6 +112,21 @@ GIVEN = {
 }
 
 
+def nut_rating(
+    flank_area_m2: Array, nut_length_m: Array, column: Callable[[str], Array]
+) -> tuple[Array, Array]:
+    """The axial load a nut is rated to carry in motion [N]: its size's design load where
+    the catalog gives one, else its dynamic flank pressure over the engaged flank area
+    ``flank_area_m2`` (``bearing.dynamic_load``; NaN: neither); and the nut length whose
+    turns carry the load [m] (``nut_length_m``; NaN without a thread pitch). ``column``:
+    the table's columns by name."""
+    dynamic = bearing.dynamic_load(column("dynamic_pressure_pa"), flank_area_m2)
+    rated = np.where(column("design_load_given"), column("design_load_n"), dynamic)
+    return rated, np.where(column("pitch_given"), nut_length_m, np.nan)
+
+
+#: The nut's rating at the catalog's nut length (``nut_rating``), by its columns.
+RATING = ("catalog_rated_load_n", "catalog_engaged_length_m")
 #: The wear geometry at the catalog's nut length (``wear_geometry``), by its columns.
 WEAR = ("wear_area_m2", "wear_depth_m", "wear_sliding_per_travel")
 
@@ -122,14 +137,18 @@ def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
     nut's drag work per turn (``heat.drag_work_per_turn``), the thread's friction loss
     per watt moved (``heat.friction_loss``) and a ball screw's DN speed limit
     (``ballscrew.dn_speed_limit``); where the catalog gives each value of ``GIVEN`` (not
-    NaN); and the nut's wear geometry at the catalog's nut length (``WEAR``)."""
+    NaN); and the nut's wear geometry and rating at the catalog's nut length (``WEAR``,
+    ``RATING``)."""
     with np.errstate(invalid="ignore", divide="ignore"):
         loss = heat.friction_loss(c["efficiency"])
+    given = {mask: ~np.isnan(c[name]) for mask, name in GIVEN.items()}
+    rating = nut_rating(c["catalog_flank_area_m2"], c["nut_length_m"], (c | given).__getitem__)
     return {
         "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, c["lead_m"]),
         "drag_work_per_turn_j": heat.drag_work_per_turn(c["drag_max_nm"]),
         "friction_loss": loss,
         "dn_speed_limit_rpm": ballscrew.dn_speed_limit(c["dn_limit_mm_rpm"], c["outer_diameter_m"]),
-        **{mask: ~np.isnan(c[name]) for mask, name in GIVEN.items()},
+        **given,
         **dict(zip(WEAR, wear_geometry(c["catalog_flank_area_m2"], c.__getitem__), strict=True)),
+        **dict(zip(RATING, rating, strict=True)),
     }

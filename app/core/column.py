@@ -61,7 +61,7 @@ def column_limits(
     if ball < 1.0:  # HIWIN rates its ball screws at these ends below the beam
         n_c = np.where(t.ball, n_c * ball, n_c)
     column_m = column_length(app)
-    s = buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity)
+    s = buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity, t.root_gyration_m)
     f_cr = buckling.column_critical_load(
         t.youngs_modulus_pa,
         t.root_diameter_m,

@@ -160,7 +160,7 @@ def ball_track_load(app: Application, t: CandidateTable, c: motion.Cycle, force_
     over a stroke; else the running thrust ``force_n`` [N] raised by the preload. The
     cycle ``c``: ``motion.cycle_of``. A sliding nut (no preload) carries the thrust."""
     thrusts = travel_thrusts(app, c)
-    if ballscrew.cubic_mean_load(*thrusts) > 0.0:
+    if thrusts[1] and ballscrew.cubic_mean_load(*thrusts) > 0.0:  # none: no stroke
         return operating_mean_load(app, t.preload_n, thrusts)
     return np.asarray(ballscrew.preloaded_operating_load(force_n, t.preload_n), dtype=np.float64)
 

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from app.core import motion
-from app.core.axis_free import wear_geometry
+from app.core.axis_free import nut_rating, wear_geometry
 from app.core.formulas import (
     bearing,
     geometry,
@@ -117,13 +117,17 @@ def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> di
         "sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
         "nut_allowed_load_n": allowed * area,
-        "rated_load_n": np.where(
-            t.design_load_given,
-            t.design_load_n,
-            bearing.dynamic_load(t.dynamic_pressure_pa, area),
-        ),
-        "nut_length_m": np.where(t.pitch_given, nut_length(app, t), np.nan),
+        **dict(zip(("rated_load_n", "nut_length_m"), rating(app, t, area), strict=True)),
     }
+
+
+def rating(app: Application, t: CandidateTable, area_m2: Array) -> tuple[Array, Array]:
+    """The nut's rated load in motion and its engaged length (``axis_free.nut_rating``):
+    the table's at the catalog's nut length, else worked out at the user's (flank area
+    ``area_m2``)."""
+    if app.nut_length_m is None:
+        return t.catalog_rated_load_n, t.catalog_engaged_length_m
+    return nut_rating(area_m2, nut_length(app, t), partial(getattr, t))
 
 
 def wear_life(

@@ -354,6 +354,10 @@ class CandidateTable:
     wear_area_m2: Array
     wear_depth_m: Array
     wear_sliding_per_travel: Array
+    #: the nut's rated load in motion [N] and engaged length [m] at the catalog's nut
+    #: length (``axis_free.nut_rating``)
+    catalog_rated_load_n: Array
+    catalog_engaged_length_m: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from app.catalog import Catalog
-from app.core.axis_free import GIVEN, WEAR, wear_geometry
+from app.core.axis_free import GIVEN, RATING, WEAR, nut_rating, wear_geometry
 from app.core.formulas import (
     ballscrew,
     bearing,
@@ -74,6 +74,13 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
             t.fin_conductance_w_k, t.nut_length_m, t.nut_outer_diameter_m, h
         ),
         **dict(zip(WEAR, wear_geometry(t.catalog_flank_area_m2, partial(getattr, t)), strict=True)),
+        **dict(
+            zip(
+                RATING,
+                nut_rating(t.catalog_flank_area_m2, t.nut_length_m, partial(getattr, t)),
+                strict=True,
+            )
+        ),
     }
     assert {
         name: _same(getattr(t, name), value) for name, value in expected.items()
