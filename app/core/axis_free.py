@@ -35,17 +35,13 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
     nut length (``heat``), the lower of the running and the
     static efficiency (the root section's torque), the root section's and the shaft's
     own terms of the column, stress and whirl formulas (``buckling``,
-    ``critical_speed``), and the thread's torque per newton of thrust (``torque``,
-    ``efficiency``; unbounded where a thread cannot drive, a lead ``evaluate`` refuses)."""
-    tan_l, lead = np.tan(c["lead_angle_rad"]), c["lead_m"]
+    ``critical_speed``), and 2 pi eta at the running and the static efficiency, the
+    divisor of the torque that drives a load (``torque.efficient_turn``)."""
+    tan_l = np.tan(c["lead_angle_rad"])
     d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
-    held = efficiency.holding_torque_per_newton
     with np.errstate(invalid="ignore", divide="ignore"):
         transition = buckling.transition_slenderness(e, c["yield_strength_pa"])
         wave, gyration = critical_speed.shaft_terms(d_r, e, c["density_kg_m3"])
-        driving = [
-            torque.torque_per_newton(lead, c[k]) for k in ("efficiency", "efficiency_static")
-        ]
     fin = heat.fin_conductance(
         c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
     )
@@ -70,11 +66,8 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),
         "wave_speed_m_s": wave,
         "root_gyration_m": gyration,
-        "torque_per_newton_m": driving[0],
-        "start_torque_per_newton_m": driving[1],
-        "driven_torque_per_newton_m": held(lead, c["backdrive_efficiency_signed"]),
-        "hold_per_newton_m": held(lead, c["backdrive_efficiency"]),
-        "seed_hold_per_newton_m": held(lead, c["efficiency"]),
+        "efficient_turn_rad": torque.efficient_turn(c["efficiency"]),
+        "start_efficient_turn_rad": torque.efficient_turn(c["efficiency_static"]),
     }
 
 

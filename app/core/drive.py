@@ -42,8 +42,8 @@ def torques(
     inertial_force_n = move.moving_mass_kg * move.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
     t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
-    t_mass = torque.thrust_torque(inertial_force_n, t.torque_per_newton_m)
-    t_load = torque.thrust_torque(force_n, t.torque_per_newton_m)
+    t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency, t.efficient_turn_rad)
+    t_load = torque.load_torque(force_n, t.lead_m, t.efficiency, t.efficient_turn_rad)
     t_inertia = t_screw + t_motor + t_mass
     t_total = torque.total_torque(t_inertia, t.drag_max_nm, t_load)
     # each move's start; the lead move's inertia torques are those of the breakdown
@@ -79,7 +79,9 @@ def breakaway(t: CandidateTable, start_n: float, spin_nm: Array) -> Array:
     """The torque that starts a move from rest [N m]: its thrust ``start_n`` (the running
     thrust and the force m a that accelerates its mass) through the thread at static
     friction, the screw's and the rotor's inertia torque ``spin_nm`` and the nut's drag."""
-    thread: Array = torque.thrust_torque(start_n, t.start_torque_per_newton_m)
+    thread: Array = torque.load_torque(
+        start_n, t.lead_m, t.efficiency_static, t.start_efficient_turn_rad
+    )
     return thread + spin_nm + t.drag_max_nm
 
 

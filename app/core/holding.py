@@ -10,7 +10,6 @@ import numpy as np
 from app.core import motion
 from app.core.formulas import (
     efficiency,
-    torque,
 )
 from app.core.model import Application
 from app.core.table import Array, CandidateTable, filled
@@ -25,8 +24,8 @@ def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, An
     safety factor (the torque safety factor when none is given)."""
     mu_margin = t.friction_static * app.self_locking_friction_factor
     locks = mu_margin >= t.self_locking_friction
-    seed = torque.thrust_torque(force_n, t.seed_hold_per_newton_m)
-    physics = torque.thrust_torque(force_n, t.hold_per_newton_m)
+    seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
+    physics = efficiency.holding_torque(force_n, t.lead_m, t.backdrive_efficiency)
     distrusted = efficiency.holding_torque(
         force_n,
         t.lead_m,

@@ -95,7 +95,9 @@ def segment_torque(
     ``thrust_n`` through the thread, the nut's drag, and the screw's and the rotor's
     inertia ``inertia_kg_m2`` times the angular acceleration of ``accel_m_s2`` (none at
     no acceleration: the constant segment)."""
-    thread = profile.passed_torque(thrust_n, t.torque_per_newton_m, t.driven_torque_per_newton_m)
+    thread = profile.thread_torque(
+        thrust_n, t.lead_m, t.efficiency, t.backdrive_efficiency_signed, t.efficient_turn_rad
+    )
     torque_nm: Array = thread + t.drag_max_nm
     if not accel_m_s2:
         return torque_nm

@@ -322,15 +322,10 @@ class CandidateTable:
     root_pi_d_cubed_m3: Array
     wave_speed_m_s: Array
     root_gyration_m: Array
-    #: The thread's torque per newton of thrust [N m/N]: driving, at the running and the
-    #: static efficiency; driven, at the signed running, and held, at the static
-    #: back-drive efficiency.
-    torque_per_newton_m: Array
-    start_torque_per_newton_m: Array
-    driven_torque_per_newton_m: Array
-    hold_per_newton_m: Array
-    #: the seed's holding torque per newton, at the forward efficiency [N m/N]
-    seed_hold_per_newton_m: Array
+    #: 2 pi eta at the running and the static efficiency [rad] (``torque.efficient_turn``:
+    #: what divides F lead in the torque that drives a load)
+    efficient_turn_rad: Array
+    start_efficient_turn_rad: Array
     #: The screw's own terms of the query's formulas (``axis_free.screw_terms``): the
     #: reflected inertia per kg of moving mass [m^2], the drag's work per turn [J], the
     #: thread's friction loss 1 / eta - 1 [-] and a ball screw's DN speed limit [rpm];

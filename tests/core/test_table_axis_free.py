@@ -58,13 +58,8 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(t.root_diameter_m),
         "wave_speed_m_s": (t.youngs_modulus_pa / t.density_kg_m3) ** 0.5,
         "root_gyration_m": t.root_diameter_m / 4.0,
-        "torque_per_newton_m": torque.torque_per_newton(t.lead_m, t.efficiency),
-        "start_torque_per_newton_m": torque.torque_per_newton(t.lead_m, t.efficiency_static),
-        "driven_torque_per_newton_m": efficiency.holding_torque_per_newton(
-            t.lead_m, t.backdrive_efficiency_signed
-        ),
-        "hold_per_newton_m": efficiency.holding_torque_per_newton(t.lead_m, t.backdrive_efficiency),
-        "seed_hold_per_newton_m": efficiency.holding_torque_per_newton(t.lead_m, t.efficiency),
+        "efficient_turn_rad": torque.efficient_turn(t.efficiency),
+        "start_efficient_turn_rad": torque.efficient_turn(t.efficiency_static),
         "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, t.lead_m),
         "drag_work_per_turn_j": heat.drag_work_per_turn(t.drag_max_nm),
         "friction_loss": 1.0 / t.efficiency - 1.0,

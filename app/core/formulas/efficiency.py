@@ -180,16 +180,4 @@ def holding_torque(load_n: float, lead_m: float, efficiency: float) -> float:
     >>> round(holding_torque(100.0, 0.01, 0.5), 5)
     0.07958
     """
-    return load_n * holding_torque_per_newton(lead_m, efficiency)
-
-
-@formula("k_b = lead eta / (2 pi)", SEED + " (Back Driving, per newton of load)")
-def holding_torque_per_newton(lead_m: float, efficiency: float) -> float:
-    """The torque per newton of a load that drives the thread, k_b = lead eta / (2 pi)
-    [N m/N]: ``holding_torque`` is F k_b. The screw's alone where ``efficiency`` is (the
-    candidate table holds it at the back-drive efficiencies, ``table.CandidateTable``).
-
-    >>> round(holding_torque_per_newton(0.01, 0.5), 7)
-    0.0007958
-    """
-    return lead_m * efficiency / (2.0 * math.pi)
+    return load_n * lead_m * efficiency / (2.0 * math.pi)

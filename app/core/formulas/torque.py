@@ -67,40 +67,31 @@ def inertia_torque(inertia_kg_m2: float, angular_accel_rad_s2: float) -> float:
 
 
 @formula("T = F lead / (2 pi eta)", SEED + " (Torque To Move Load)")
-def load_torque(load_n: float, lead_m: float, efficiency: float) -> float:
+def load_torque(
+    load_n: float, lead_m: float, efficiency: float, turn_rad: float | None = None
+) -> float:
     """Torque to move the load, T = F lead / (2 pi eta) [N m].
 
-    load_n: axial force [N]; lead_m [m]; efficiency [-] in (0, 1].
+    load_n: axial force [N]; lead_m [m]; efficiency [-] in (0, 1]; turn_rad: 2 pi eta
+    when already worked out (``efficient_turn``: the candidate table's column), the same
+    number.
     Source: seed [1], "Torque To Move Load: TORQUE = Load x Lead / (2 pi x Efficiency)".
 
     >>> round(load_torque(100.0, 0.002, 0.5), 6)
     0.063662
     """
-    return thrust_torque(load_n, torque_per_newton(lead_m, efficiency))
+    return load_n * lead_m / (efficient_turn(efficiency) if turn_rad is None else turn_rad)
 
 
-@formula("k = lead / (2 pi eta)", SEED + " (Torque To Move Load, per newton of load)")
-def torque_per_newton(lead_m: float, efficiency: float) -> float:
-    """The torque the thread takes per newton of load it moves, k = lead / (2 pi eta)
-    [N m/N]: ``load_torque`` is F k. The screw's alone, so the candidate table holds it
-    (``table.CandidateTable``) for the running and the static efficiency.
+def efficient_turn(efficiency: float) -> float:
+    """One turn of the screw [rad] times the thread's efficiency, 2 pi eta: what divides
+    F lead in the torque that drives a load (``load_torque``,
+    ``profile.thread_torque``).
 
-    >>> round(torque_per_newton(0.002, 0.5), 9)
-    0.00063662
+    >>> round(efficient_turn(0.5), 6)
+    3.141593
     """
-    return lead_m / (2.0 * math.pi * efficiency)
-
-
-@formula("T = F k", SEED + " (Torque To Move Load)")
-def thrust_torque(load_n: float, per_newton_m: float) -> float:
-    """The torque [N m] that passes the thrust ``load_n`` [N] through the thread at its
-    torque per newton k [N m/N] (``torque_per_newton``, or
-    ``efficiency.holding_torque_per_newton``): T = F k.
-
-    >>> thrust_torque(100.0, 0.0005)
-    0.05
-    """
-    return load_n * per_newton_m
+    return 2.0 * math.pi * efficiency
 
 
 @formula(
