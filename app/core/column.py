@@ -63,7 +63,7 @@ def column_limits(
         )
         n_c = np.where(t.ball, np.minimum(n_c, hiwin), n_c)
     column_m = column_length(app)
-    s = buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity)
+    s = buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity, t.root_gyration_m)
     f_cr = buckling.column_critical_load(
         t.youngs_modulus_pa,
         t.root_diameter_m,

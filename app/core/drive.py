@@ -36,12 +36,14 @@ def torques(
     start, its acceleration higher."""
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
-    j_mass = torque.reflected_mass_inertia(move.moving_mass_kg, t.lead_m)
+    j_mass = torque.reflected_mass_inertia(
+        move.moving_mass_kg, t.lead_m, t.reflected_inertia_per_kg_m2
+    )
     inertial_force_n = move.moving_mass_kg * move.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
     t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
-    t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency)
-    t_load = torque.load_torque(force_n, t.lead_m, t.efficiency)
+    t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency, t.efficient_turn_rad)
+    t_load = torque.load_torque(force_n, t.lead_m, t.efficiency, t.efficient_turn_rad)
     t_inertia = t_screw + t_motor + t_mass
     t_total = torque.total_torque(t_inertia, t.drag_max_nm, t_load)
     # each move's start; the lead move's inertia torques are those of the breakdown
@@ -50,7 +52,7 @@ def torques(
         if other is not move:
             start_n = motion.running_thrust(app, other) + other.moving_mass_kg * other.accel_m_s2
             starts.append(breakaway(t, start_n, spin_torque(app, t, other, j_screw)))
-    t_start = np.maximum.reduce(starts)
+    t_start = starts[0] if len(starts) == 1 else np.maximum.reduce(starts)
     magnitude = np.abs(np.array([m[3] for m in moving]))
     largest = np.maximum.reduce(magnitude, axis=0)
     peak = np.maximum(largest, t_start)
@@ -77,7 +79,9 @@ def breakaway(t: CandidateTable, start_n: float, spin_nm: Array) -> Array:
     """The torque that starts a move from rest [N m]: its thrust ``start_n`` (the running
     thrust and the force m a that accelerates its mass) through the thread at static
     friction, the screw's and the rotor's inertia torque ``spin_nm`` and the nut's drag."""
-    thread: Array = torque.load_torque(start_n, t.lead_m, t.efficiency_static)
+    thread: Array = torque.load_torque(
+        start_n, t.lead_m, t.efficiency_static, t.start_efficient_turn_rad
+    )
     return thread + spin_nm + t.drag_max_nm
 
 

@@ -59,15 +59,18 @@ def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[s
     stroke = motion.equivalent_stroke(app) or 0.0
     p = c.fastest
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
-    friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency))
-    drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m)
-    # the fin conductance and nut diameter in still air follow from the catalog alone
+    friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency, t.friction_loss))
+    drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m, t.drag_work_per_turn_j)
+    # the fin conductance and nut diameter in still air follow from the catalog alone, and
+    # with them the nut's conductance at the catalog's nut length
+    catalog_nut = app.nut_length_m is None
     rise = heat.temperature_rise(
         friction + drag,
         t.fin_conductance_w_k,
         nut_length(app, t),
         t.nut_outer_diameter_m,
         heat.FREE_CONVECTION_W_M2_K,
+        t.nut_conductance_w_k if catalog_nut else None,
     )
     return {
         "heat_speed_m_s": filled(len(t), mean_speed),
@@ -91,8 +94,8 @@ def duty(
     stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
     travel = app.stroke_m if app.stroke_m is not None else app.length_m
-    low_m = np.where(np.isnan(t.life_min_m), np.nan, np.fmin(t.life_min_m, wear_travel_m))
-    high_m = np.where(np.isnan(t.life_max_m), np.nan, np.fmin(t.life_max_m, wear_travel_m))
+    low_m = np.where(t.life_min_given, np.fmin(t.life_min_m, wear_travel_m), np.nan)
+    high_m = np.where(t.life_max_given, np.fmin(t.life_max_m, wear_travel_m), np.nan)
     return {
         "life_travel_min_m": low_m,
         "life_years_min": life.life_years(low_m, stroke, cycles) if rated else nan,
@@ -115,7 +118,7 @@ def lead_error(t: CandidateTable, travel_m: float) -> Array:
     v300p (not 100 / 300 of it).
     """
     error = np.asarray(accuracy.cumulative_lead_error(t.lead_accuracy, travel_m), np.float64)
-    ball = ~np.isnan(t.travel_variation_300mm_m)
+    ball = t.travel_variation_given
     error[ball] = accuracy.ball_travel_deviation(travel_m, t.travel_variation_300mm_m[ball])
     for position, bands in enumerate(t.deviation_tables):
         rows = t.deviation_table == position
@@ -213,7 +216,7 @@ def ball_track_load(app: Application, t: CandidateTable, c: motion.Cycle, force_
     over a stroke; else the running thrust ``force_n`` [N] raised by the preload. The
     cycle ``c``: ``motion.cycle_of``. A sliding nut (no preload) carries the thrust."""
     thrusts = travel_thrusts(app, c)
-    if ballscrew.cubic_mean_load(*thrusts) > 0.0:
+    if thrusts[1] and ballscrew.cubic_mean_load(*thrusts) > 0.0:  # none: no stroke
         return operating_mean_load(app, t.preload_n, thrusts)
     return np.asarray(ballscrew.preloaded_operating_load(force_n, t.preload_n), dtype=np.float64)
 

@@ -2,11 +2,13 @@
 the pressure and load they allow, and its wear life (Archard).
 """
 
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from app.core import motion
+from app.core.axis_free import nut_rating, wear_geometry
 from app.core.formulas import (
     bearing,
     geometry,
@@ -44,11 +46,13 @@ def seed_pv(
     permissible PV ``limit``, at the thrust ``force_n`` and screw speed ``rpm`` of
     ``quantities.pv_point``: the peak thrust at the top speed (an accelerating segment
     ends at the top speed still carrying m a)."""
-    area = t.contact_area_m2
+    area, helix = t.contact_area_m2, t.helix_travel_m
+    pressure = np.asarray(pv.contact_pressure(force_n, area), dtype=np.float64)
+    speed = pv.surface_speed(rpm, helix)
     return {
-        "pv_pa_m_s": pv.pv_value(force_n, rpm, t.helix_travel_m, t.thread_depth_m, area),
-        "pressure_pa": np.asarray(pv.contact_pressure(force_n, area), dtype=np.float64),
-        "surface_speed_m_s": pv.surface_speed(rpm, t.helix_travel_m),
+        "pv_pa_m_s": pv.pv_value(force_n, rpm, helix, t.thread_depth_m, area, (pressure, speed)),
+        "pressure_pa": pressure,
+        "surface_speed_m_s": speed,
         "contact_area_m2": area,
         "pv_max_load_n": pv.max_load_for_pv(limit, rpm, t.thread_depth_m),
         "pv_max_speed_m_s": finite(
@@ -113,13 +117,17 @@ def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> di
         "sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
         "nut_allowed_load_n": allowed * area,
-        "rated_load_n": np.where(
-            np.isnan(t.design_load_n),
-            bearing.dynamic_load(t.dynamic_pressure_pa, area),
-            t.design_load_n,
-        ),
-        "nut_length_m": np.where(np.isnan(t.pitch_m), np.nan, nut_length(app, t)),
+        **dict(zip(("rated_load_n", "nut_length_m"), rating(app, t, area), strict=True)),
     }
+
+
+def rating(app: Application, t: CandidateTable, area_m2: Array) -> tuple[Array, Array]:
+    """The nut's rated load in motion and its engaged length (``axis_free.nut_rating``):
+    the table's at the catalog's nut length, else worked out at the user's (flank area
+    ``area_m2``)."""
+    if app.nut_length_m is None:
+        return t.catalog_rated_load_n, t.catalog_engaged_length_m
+    return nut_rating(area_m2, nut_length(app, t), partial(getattr, t))
 
 
 def wear_life(
@@ -133,15 +141,14 @@ def wear_life(
     cycle's wear thrust ``force_n``, ``motion.wear_thrust``): over the engaged flanks and
     flank height of a standard thread, else over the seed's three threads and thread
     depth; in years at ``cycles`` a day (``motion.cycles_per_day``)."""
-    flanks = ~np.isnan(flank_area_m2)
-    area = np.where(flanks, flank_area_m2, t.contact_area_m2)
-    height = np.where(flanks, t.flank_height_m, t.thread_depth_m)
-    helix = np.where(flanks, t.flank_helix_travel_m, t.helix_travel_m)
-    with np.errstate(over="ignore"):  # a vanishing thrust: an unbounded life, NaN below
-        sliding = wear.wear_life_sliding(
-            t.allowed_wear_fraction * height, t.wear_rate_m2_n, pv.contact_pressure(force_n, area)
-        )
-    travel = finite(wear.wear_life_travel(sliding, wear.sliding_per_travel(helix, t.lead_m)))
+    if app.nut_length_m is None:  # the catalog's flanks, whose geometry the table holds
+        area, depth, per_travel = t.wear_area_m2, t.wear_depth_m, t.wear_sliding_per_travel
+    else:
+        area, depth, per_travel = wear_geometry(flank_area_m2, partial(getattr, t))
+    # a vanishing thrust: an unbounded life (``operating_point`` silences the overflow),
+    # NaN below
+    sliding = wear.wear_life_sliding(depth, t.wear_rate_m2_n, pv.contact_pressure(force_n, area))
+    travel = finite(wear.wear_life_travel(sliding, per_travel))
     stroke = motion.equivalent_stroke(app)
     rated = bool(stroke and cycles)
     years = life.life_years(travel, stroke, cycles) if rated else travel * np.nan

@@ -35,6 +35,10 @@ class Robustness:
     hinges_on: tuple[str, ...]
 
 
+#: A screw none of whose rows fails (frozen, so one serves every such screw).
+ROBUST = Robustness(True, ())
+
+
 @dataclass(frozen=True, slots=True)
 class Variants:
     """Screws at the low and the high end of each of their ranged values, one at a time:
@@ -106,6 +110,9 @@ def robustness(
     start, names = variants.start.tolist(), variants.names
     for p in positions:
         low, high = bisect_left(failing, start[p]), bisect_left(failing, start[p + 1])
+        if low == high:
+            found.append(ROBUST)
+            continue
         hinges = tuple(dict.fromkeys(map(names.__getitem__, failing[low:high])))
-        found.append(Robustness(not hinges, hinges))
+        found.append(Robustness(False, hinges))
     return found

@@ -5,9 +5,8 @@
 screw is screened as a table of one. So a check is computed by one piece of code.
 """
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -16,7 +15,7 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Check, Measure, Reach
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import Quantities, operating_point
-from app.core.table import Array, CandidateTable, Mask, filled
+from app.core.table import Array, CandidateTable, Mask
 
 
 # Not frozen, as ``Quantities``: a frozen dataclass sets each of its fields through
@@ -51,14 +50,15 @@ class Screening:
         """The screening of the first ``n`` rows alone (views), as rows ``index`` of
         ``table``: for a table screened together with rows that follow them."""
         cut = slice(0, n)
+        failed = {name: mask[cut] for name, mask in self.failed.items()}
         return Screening(
             index,
             table,
             self.quantities.sliced(cut),
             {name: m.head(n) for name, m in self.measures.items()},
             {name: None if u is None else u[cut] for name, u in self.utilization.items()},
-            {name: mask[cut] for name, mask in self.failed.items()},
-            {name: mask[cut] for name, mask in self.failed_by_check.items()},
+            failed,
+            {name: failed[name] for name in self.failed_by_check},
             self.passed[cut],
             self.max_utilization[cut],
             self.failed_limits[cut],
@@ -103,31 +103,27 @@ def eligible_mask(app: Application, table: CandidateTable) -> Mask:
     return mask
 
 
-def _rows(values: Sequence[NDArray[Any] | None], missing: NDArray[Any]) -> NDArray[Any]:
-    """``values`` as the rows of one array, ``missing`` where a value is None; at least
-    one row (``missing``) when there are none."""
-    return np.array([missing if v is None else v for v in values] or [missing])[: len(values)]
-
-
 def _judge(
     measures: list[Measure], n: int
 ) -> tuple[list[bool], NDArray[np.bool_], NDArray[np.float64], NDArray[np.bool_]]:
     """Every check's measure over ``n`` candidates as rows of one array each, judged
-    with one division and one comparison for all checks: whether each check is numeric,
-    where it applies, its utilisation demand / capacity (NaN where the limit does not
-    exist, and for a yes/no check) and where it fails (applies, and over its limit or
-    flagged)."""
+    with one comparison for all checks: whether each check is numeric, where it applies,
+    its utilisation demand / capacity (NaN where the limit does not exist, and for a
+    yes/no check) and where it fails (applies, and over its limit or flagged)."""
     numeric = [m.demand is not None and m.capacity is not None for m in measures]
-    nan, no = filled(n, np.nan), np.zeros(n, dtype=bool)
-    demand = _rows([m.demand if ok else None for m, ok in zip(measures, numeric, strict=True)], nan)
-    capacity = _rows(
-        [m.capacity if ok else None for m, ok in zip(measures, numeric, strict=True)], nan
-    )
-    applicable = _rows([m.applicable for m in measures], no)
-    flagged = _rows([m.flagged for m in measures], no)
+    ratio = np.empty((len(measures), n))
     with np.errstate(invalid="ignore", divide="ignore"):
-        ratio = demand / capacity
-    failed = applicable & ((ratio > PASS_UTILIZATION) | flagged)
+        for row, m, ok in zip(ratio, measures, numeric, strict=True):
+            if ok:
+                np.divide(m.demand, m.capacity, out=row)
+            else:
+                row.fill(np.nan)
+    applicable = np.array([m.applicable for m in measures]).reshape(len(measures), n)
+    failed = ratio > PASS_UTILIZATION
+    for over, m in zip(failed, measures, strict=True):
+        if m.flagged is not None:
+            over |= m.flagged
+    failed &= applicable
     return numeric, applicable, ratio, failed
 
 
@@ -148,14 +144,20 @@ def screen_table(
     q = operating_point(app, table)
     measures = {c.name: c.measure(app, table, q) for c in REGISTRY if c.applies(app)}
     names = list(measures)
-    numeric, applicable, ratio, failed = _judge(list(measures.values()), len(table))
-    utilization = {name: ratio[i] if numeric[i] else None for i, name in enumerate(names)}
-    rows = [i for i, name in enumerate(names) if _rejects(app, name)]
-    others = [i for i in range(len(names)) if i not in rows]
-    n_failed = np.add.reduce(failed[rows], axis=0, dtype=np.float64)
-    warned = np.logical_or.reduce(failed[others], axis=0)
+    rejecting: list[str] = []
+    others: list[str] = []
+    for name in names:
+        (rejecting if _rejects(app, name) else others).append(name)
+    # judged with the rejecting checks first, so each group is a slice of the rows
+    order = rejecting + others
+    numeric, applicable, ratio, failed = _judge([measures[name] for name in order], len(table))
+    row = {name: i for i, name in enumerate(order)}
+    utilization = {name: ratio[row[name]] if numeric[row[name]] else None for name in names}
+    k = len(rejecting)
+    n_failed = np.add.reduce(failed[:k], axis=0, dtype=np.float64)
+    warned = np.logical_or.reduce(failed[k:], axis=0)
     # a check that does not apply, or a yes/no check (NaN), leaves the worst as it is
-    worst = np.fmax.reduce(np.where(applicable[rows], ratio[rows], np.nan), axis=0, initial=0.0)
+    worst = np.fmax.reduce(np.where(applicable[:k], ratio[:k], np.nan), axis=0, initial=0.0)
     worst = np.where((n_failed > 0) & (worst <= PASS_UTILIZATION), 1.0 + n_failed, worst)
     return Screening(
         index,
@@ -163,8 +165,8 @@ def screen_table(
         q,
         measures,
         utilization,
-        {name: failed[i] for i, name in enumerate(names)},
-        {names[i]: failed[i] for i in rows},
+        {name: failed[row[name]] for name in names},
+        {name: failed[row[name]] for name in rejecting},
         n_failed == 0,
         worst,
         n_failed,

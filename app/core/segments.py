@@ -66,26 +66,53 @@ def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]
 def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) -> list[Moving]:
     """Each moving segment of every move, for every candidate: its name and direction,
     the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
-    through the thread, the nut's drag, and the screw's and the rotor's inertia times the
-    angular acceleration (whether the segment has a stroke to last or not). ``c``: the
-    cycle when already worked out (``motion.cycle_of``)."""
+    through the thread and the nut's drag (``running_torque``, worked out once per
+    thrust), and the spin (``plus_spin``), whether the segment has a stroke to last or not.
+    Segments of the same thrust and acceleration (the out and the back move of a
+    horizontal axis) share one torque array. ``c``: the cycle when already worked out
+    (``motion.cycle_of``)."""
     c = c or cycle_of(app)
     inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
-    inertia = inertia + (app.motor_inertia_kg_m2 or 0.0)
+    if app.motor_inertia_kg_m2:
+        inertia = inertia + app.motor_inertia_kg_m2
     forces = iter(c.moving_n)
     out: list[Moving] = []
+    running: dict[float, Array] = {}
+    worked: dict[tuple[float, float], Array] = {}
     for move in c.moves:
         v, word = sense(move), direction_word(app, move)
         rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
         for name, sign in RAMPS:
-            thrust = v * next(forces)
-            thread = profile.thread_torque(
-                thrust, t.lead_m, t.efficiency, t.backdrive_efficiency_signed
-            )
-            alpha = torque.angular_acceleration(sign * rates[name], t.lead_m)
-            spin = torque.inertia_torque(inertia, alpha)
-            out.append((name, word, thrust, thread + t.drag_max_nm + spin))
+            thrust, accel = v * next(forces), sign * rates[name]
+            if thrust not in running:
+                running[thrust] = running_torque(t, thrust)
+            if (thrust, accel) not in worked:
+                worked[thrust, accel] = plus_spin(t, running[thrust], accel, inertia)
+            out.append((name, word, thrust, worked[thrust, accel]))
     return out
+
+
+def running_torque(t: CandidateTable, thrust_n: float) -> Array:
+    """The motor torque that passes the thrust ``thrust_n`` through the thread
+    (``profile.thread_torque``) against the nut's drag, for every candidate [N m]."""
+    thread = profile.thread_torque(
+        thrust_n, t.lead_m, t.efficiency, t.backdrive_efficiency_signed, t.efficient_turn_rad
+    )
+    torque_nm: Array = thread + t.drag_max_nm
+    return torque_nm
+
+
+def plus_spin(
+    t: CandidateTable, torque_nm: Array, accel_m_s2: float, inertia_kg_m2: Array
+) -> Array:
+    """``torque_nm`` [N m] with the screw's and the rotor's inertia ``inertia_kg_m2`` times
+    the angular acceleration of ``accel_m_s2``: a moving segment's motor torque (none
+    added at no acceleration, the constant segment)."""
+    if not accel_m_s2:
+        return torque_nm
+    alpha = torque.angular_acceleration(accel_m_s2, t.lead_m)
+    with_spin: Array = torque_nm + torque.inertia_torque(inertia_kg_m2, alpha)
+    return with_spin
 
 
 def _dwell(

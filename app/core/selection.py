@@ -214,8 +214,8 @@ def select(
     rejected = returned[len(ranked) :]
     skip = nearest[:REMEDY_FROM]
     fixable = [] if ranked else _fixable_order(s, order, skip)[:REMEDY_FROM].tolist()
-    by_check = Counter({n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()})
-    by_check = Counter({k: v for k, v in by_check.items() if v})
+    counts = {n: int(np.count_nonzero(m)) for n, m in s.failed_by_check.items()}
+    by_check = Counter({n: count for n, count in counts.items() if count})
     n_passed = int(np.count_nonzero(s.passed))
     return Selection(
         application=app,
@@ -234,7 +234,7 @@ def select(
             ranges or {},
             s,
             words,
-            [c.screw.id for c in returned[: len(ranked)]],
+            [s.table.screws[i].id for i in ranked],
             records(app, s, fixable, axis=axis) if fixable else (),
         ),
         screening=s,

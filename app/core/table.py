@@ -15,17 +15,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from app.core.axis_free import axis_free, screw_terms
 from app.core.formulas import (
     ballscrew,
-    bearing,
-    buckling,
-    critical_speed,
     efficiency,
     geometry,
-    heat,
     limits,
     profile,
-    pv,
 )
 from app.core.model import ScrewSpec
 
@@ -234,43 +230,6 @@ def _thread_efficiencies(
     }
 
 
-def _axis_free(c: dict[str, Array]) -> dict[str, Any]:
-    """Numbers the operating point reads that follow from the catalog alone, each the
-    same formula call it would make per query: tan of the lead angle and the static
-    friction at which the thread self-locks (``efficiency``), the seed's contact area of
-    three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
-    area at the catalog's nut length (``bearing``), the screw's fin conductance in still
-    air and the nut's outside diameter (``heat``), the lower of the running and the
-    static efficiency (the root section's torque), and the root section's and the
-    shaft's own terms of the column, stress and whirl formulas (``buckling``,
-    ``critical_speed``)."""
-    tan_l = np.tan(c["lead_angle_rad"])
-    d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        transition = buckling.transition_slenderness(e, c["yield_strength_pa"])
-        wave, gyration = critical_speed.shaft_terms(d_r, e, c["density_kg_m3"])
-    flanks = bearing.engaged_flank_area(
-        c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
-    )
-    return {
-        "tan_lead_angle": tan_l,
-        "self_locking_friction": efficiency.self_locking_limit_friction(tan_l, c["cos_half_angle"]),
-        "contact_area_m2": pv.contact_area(c["helix_travel_m"], c["thread_depth_m"]),
-        "transition_slenderness": transition,
-        "catalog_flank_area_m2": np.asarray(flanks, dtype=np.float64),
-        "fin_conductance_w_k": heat.fin_conductance(
-            c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
-        ),
-        "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * c["outer_diameter_m"],
-        "root_efficiency": np.minimum(c["efficiency"], c["efficiency_static"]),
-        "root_area_m2": buckling.root_area(d_r),
-        "root_second_moment_m4": buckling.second_moment_round(d_r),
-        "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),
-        "wave_speed_m_s": wave,
-        "root_gyration_m": gyration,
-    }
-
-
 @dataclass(frozen=True, slots=True)
 class CandidateTable:
     """One element per candidate: catalog values (SI) and axis-independent derived ones."""
@@ -351,6 +310,9 @@ class CandidateTable:
     catalog_flank_area_m2: Array
     fin_conductance_w_k: Array
     nut_outer_diameter_m: Array
+    #: the nut's conductance to the ambient at the catalog's nut length [W/K]
+    #: (``heat.nut_conductance``: the fins both ways and the nut's surface; NaN: no length)
+    nut_conductance_w_k: Array
     root_efficiency: Array
     #: The root section's area [m^2], second moment [m^4] and pi d_r^3 [m^3]
     #: (``buckling``), sqrt(E / rho) [m/s] and the radius of gyration d_r / 4 [m]
@@ -360,6 +322,37 @@ class CandidateTable:
     root_pi_d_cubed_m3: Array
     wave_speed_m_s: Array
     root_gyration_m: Array
+    #: 2 pi eta at the running and the static efficiency [rad] (``torque.efficient_turn``:
+    #: what divides F lead in the torque that drives a load)
+    efficient_turn_rad: Array
+    start_efficient_turn_rad: Array
+    #: The screw's own terms of the query's formulas (``axis_free.screw_terms``): the
+    #: reflected inertia per kg of moving mass [m^2], the drag's work per turn [J], the
+    #: thread's friction loss 1 / eta - 1 [-] and a ball screw's DN speed limit [rpm];
+    #: whether the catalog gives each value of ``axis_free.GIVEN``; and the wear geometry
+    #: at the catalog's nut length (``axis_free.wear_geometry``: area [m^2], allowed depth
+    #: [m], sliding per travel [-]).
+    reflected_inertia_per_kg_m2: Array
+    drag_work_per_turn_j: Array
+    friction_loss: Array
+    dn_speed_limit_rpm: Array
+    pv_limit_given: Mask
+    max_length_given: Mask
+    traverse_limit_given: Mask
+    temperature_given: Mask
+    max_sliding_speed_given: Mask
+    design_load_given: Mask
+    life_min_given: Mask
+    life_max_given: Mask
+    pitch_given: Mask
+    travel_variation_given: Mask
+    wear_area_m2: Array
+    wear_depth_m: Array
+    wear_sliding_per_travel: Array
+    #: the nut's rated load in motion [N] and engaged length [m] at the catalog's nut
+    #: length (``axis_free.nut_rating``)
+    catalog_rated_load_n: Array
+    catalog_engaged_length_m: Array
 
     #: each candidate's nut pressure-speed table, as a position in ``pressure_tables``
     #: (-1: none), so that candidates sharing a table are interpolated together
@@ -401,6 +394,8 @@ class CandidateTable:
         limits = (col("design_load_n"), col("max_length_m"), flag("anti_backlash"))
         reach = _reach(screws, lead, rd, *limits)
         columns = dict(
+            lead_m=lead,
+            traverse_limit_m_s=traverse,
             pitch_diameter_m=d_p,
             thread_depth_m=geometry.thread_depth(od, rd),
             helix_travel_m=geometry.helix_travel(lead, d_p),
@@ -412,6 +407,7 @@ class CandidateTable:
             **_nut_columns(screws, lead),
         )
         columns["root_diameter_m"], columns["outer_diameter_m"] = rd, od
+        columns |= axis_free(columns)
         return cls(
             reach=reach,
             pressure_tables=tables,
@@ -419,7 +415,6 @@ class CandidateTable:
             deviation_tables=deviation_tables,
             deviation_table=deviation_table,
             screws=screws,
-            lead_m=lead,
             repeatability_m=np.nan_to_num(col("repeatability_m")),
             coated=flag("coated"),
             anti_backlash=flag("anti_backlash"),
@@ -427,11 +422,10 @@ class CandidateTable:
             # the seed's rule of thumb is a sliding thread's: a ball screw always back-drives
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
-            traverse_limit_m_s=traverse,
             traverse_extrapolated=extrapolated,
             ball=ball,
             **columns,
-            **_axis_free(columns),
+            **screw_terms(columns),
         )
 
     def take(self, index: NDArray[np.intp]) -> "CandidateTable":

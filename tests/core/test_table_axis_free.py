@@ -2,12 +2,23 @@
 would make per query, worked out once at load, to the bit."""
 
 import dataclasses
+from functools import partial
 
 import numpy as np
 import pytest
 
 from app.catalog import Catalog
-from app.core.formulas import bearing, buckling, critical_speed, efficiency, heat, pv
+from app.core.axis_free import GIVEN, RATING, WEAR, nut_rating, wear_geometry
+from app.core.formulas import (
+    ballscrew,
+    bearing,
+    buckling,
+    critical_speed,
+    efficiency,
+    heat,
+    pv,
+    torque,
+)
 from app.core.model import Application
 from app.core.quantities import operating_point
 from app.core.table import CandidateTable
@@ -47,6 +58,24 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(t.root_diameter_m),
         "wave_speed_m_s": (t.youngs_modulus_pa / t.density_kg_m3) ** 0.5,
         "root_gyration_m": t.root_diameter_m / 4.0,
+        "efficient_turn_rad": torque.efficient_turn(t.efficiency),
+        "start_efficient_turn_rad": torque.efficient_turn(t.efficiency_static),
+        "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, t.lead_m),
+        "drag_work_per_turn_j": heat.drag_work_per_turn(t.drag_max_nm),
+        "friction_loss": 1.0 / t.efficiency - 1.0,
+        "dn_speed_limit_rpm": ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m),
+        **{mask: ~np.isnan(getattr(t, name)) for mask, name in GIVEN.items()},
+        "nut_conductance_w_k": heat.nut_conductance(
+            t.fin_conductance_w_k, t.nut_length_m, t.nut_outer_diameter_m, h
+        ),
+        **dict(zip(WEAR, wear_geometry(t.catalog_flank_area_m2, partial(getattr, t)), strict=True)),
+        **dict(
+            zip(
+                RATING,
+                nut_rating(t.catalog_flank_area_m2, t.nut_length_m, partial(getattr, t)),
+                strict=True,
+            )
+        ),
     }
     assert {
         name: _same(getattr(t, name), value) for name, value in expected.items()

@@ -42,7 +42,7 @@ class BallSpeed(Check):
     capacity_sources = ("dn_limit",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        limit = ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m)
+        limit = t.dn_speed_limit_rpm  # ballscrew.dn_speed_limit, worked out with the table
         return Measure(t.ball.copy(), q.motor.peak_rpm, limit)
 
     def symbols(

@@ -13,7 +13,6 @@ from app.core.checks.base import (
     ScrewSpec,
     most,
     same,
-    where_given,
 )
 from app.core.phrase import Amount, Phrase
 
@@ -30,7 +29,7 @@ class Length(Check):
     capacity_sources = ("max_length",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(t.max_length_m), same(t, app.length_m), t.max_length_m)
+        return Measure(t.max_length_given, same(t, app.length_m), t.max_length_m)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

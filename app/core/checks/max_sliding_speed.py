@@ -36,7 +36,7 @@ class MaxSlidingSpeed(Check):
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         capacity = t.max_sliding_speed_m_s
         speed = q.nut.sliding_speed_m_s
-        return Measure(where_given(capacity) & where_given(speed), speed, capacity)
+        return Measure(t.max_sliding_speed_given & where_given(speed), speed, capacity)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

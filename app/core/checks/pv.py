@@ -16,7 +16,6 @@ from app.core.checks.base import (
     allowed_load,
     load_input,
     most,
-    where_given,
 )
 from app.core.formulas import pv_derating
 from app.core.phrase import Amount, Phrase
@@ -50,7 +49,7 @@ class NutPV(Check):
     capacity_sources = ("pv_limit",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(where_given(t.pv_limit_pa_m_s), q.nut.pv_pa_m_s, q.nut.pv_limit_pa_m_s)
+        return Measure(t.pv_limit_given, q.nut.pv_pa_m_s, q.nut.pv_limit_pa_m_s)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

@@ -12,7 +12,6 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    where_given,
 )
 from app.core.formulas import limits
 from app.core.phrase import Amount, Phrase
@@ -34,7 +33,7 @@ class Temperature(Check):
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         t_min, t_max = t.temperature_min_c, t.temperature_max_c
         inside = limits.temperature_ok(app.ambient_c, t_min, t_max)
-        given = where_given(t_min)
+        given = t.temperature_given
         return Measure(given, flagged=given & ~inside)
 
     def symbols(

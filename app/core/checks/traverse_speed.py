@@ -15,7 +15,6 @@ from app.core.checks.base import (
     most,
     run_at_most,
     same,
-    where_given,
 )
 from app.core.formulas.limits import band_speed_m_s
 from app.core.phrase import Amount, Phrase
@@ -38,7 +37,7 @@ class TraverseSpeed(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         limit = t.traverse_limit_m_s
-        return Measure(where_given(limit), same(t, motion.reached_speed(app)), limit)
+        return Measure(t.traverse_limit_given, same(t, motion.reached_speed(app)), limit)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

@@ -86,9 +86,13 @@ def preloaded_operating_load(force_n: ArrayLike, preload_n: ArrayLike) -> Any:
     force = np.abs(np.asarray(force_n, dtype=np.float64))
     preload = np.asarray(preload_n, dtype=np.float64)
     limit = 2.0**1.5 * preload
+    engaged = force < limit
+    # raised to the 3/2 power only where the preload counts (NaN, a nut without one, is
+    # slow to raise), the rest left 0 and not read
+    zeros = np.zeros(engaged.shape)
     with np.errstate(divide="ignore", invalid="ignore"):
-        raised = (1.0 + force / limit) ** 1.5 * preload
-    return np.where(force < limit, raised, force)
+        raised = np.power(1.0 + force / limit, 1.5, out=zeros, where=engaged) * preload
+    return np.where(engaged, raised, force)
 
 
 @formula(

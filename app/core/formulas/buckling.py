@@ -76,18 +76,22 @@ def root_area(root_diameter_m: float) -> float:
 
 
 @formula("s = (L / sqrt(k)) / (d_r / 4)", "Shigley sec. 4-11")
-def slenderness(root_diameter_m: float, length_m: float, end_fixity: str) -> float:
+def slenderness(
+    root_diameter_m: float, length_m: float, end_fixity: str, gyration_m: float | None = None
+) -> float:
     """Slenderness ratio of the screw as a column, s = (L / sqrt(k)) / (d_r / 4) [-].
 
     The effective length L / sqrt(k) turns each end fixity into the pinned-pinned column
     (Euler F_cr = k pi^2 E I / L^2 = pi^2 E I / (L / sqrt k)^2); r = d_r / 4 is the radius
-    of gyration of a round section. Source: Shigley [2], sec. 4-11 (C = k).
+    of gyration of a round section (``gyration_m`` when already worked out: the candidate
+    table's column, ``critical_speed.shaft_terms``, the same number). Source: Shigley [2],
+    sec. 4-11 (C = k).
 
     >>> slenderness(0.02, 1.0, "simple-simple")
     200.0
     """
     effective_length: float = length_m / END_FIXITY_K[end_fixity] ** 0.5
-    return effective_length / (root_diameter_m / 4.0)
+    return effective_length / (root_diameter_m / 4.0 if gyration_m is None else gyration_m)
 
 
 @formula("s_1 = sqrt(2 pi^2 E / S_y)", "Shigley sec. 4-12")

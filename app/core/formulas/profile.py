@@ -17,6 +17,7 @@ drive the load down.
 
 import math
 
+from app.core.formulas import torque
 from app.core.formulas.declare import SEED, SHIGLEY, formula
 
 #: Accelerations above 0 count as at least this [m/s^2], so that every time stays finite.
@@ -91,13 +92,19 @@ def constant_time(
     SHIGLEY + " (raising and lowering torque); " + SEED + " (Back Driving)",
 )
 def thread_torque(
-    thrust_n: float, lead_m: float, efficiency: float, backdrive_efficiency: float
+    thrust_n: float,
+    lead_m: float,
+    efficiency: float,
+    backdrive_efficiency: float,
+    turn_rad: float | None = None,
 ) -> float:
     """Motor torque to pass a thrust through the thread, by where the power flows [N m].
 
     T = F lead / (2 pi eta) when F >= 0 (the motor drives), and T = F lead eta_b / (2 pi)
     when F < 0 (the load drives; eta_b the signed back-drive efficiency at running
     friction, negative when the thread self-locks). Works on floats and arrays.
+    ``turn_rad``: 2 pi eta when already worked out (``torque.efficient_turn``: the
+    candidate table's column), the same number.
     Source: Shigley [2] sec. 8-2, raising and lowering torques T_R, T_L; seed [1]
     "Torque To Move Load" and "Back Driving".
 
@@ -106,11 +113,12 @@ def thread_torque(
     >>> round(thread_torque(-100.0, 0.002 * math.pi, 0.5, 0.4), 6)
     -0.04
     """
+    turn = torque.efficient_turn(efficiency) if turn_rad is None else turn_rad
     if isinstance(thrust_n, float | int):  # one thrust for every candidate: one branch
         if thrust_n >= 0.0:
-            return thrust_n * lead_m / (2.0 * math.pi * efficiency)
+            return thrust_n * lead_m / turn
         return thrust_n * lead_m * backdrive_efficiency / (2.0 * math.pi)
-    driving = thrust_n * lead_m / (2.0 * math.pi * efficiency)
+    driving = thrust_n * lead_m / turn
     driven = thrust_n * lead_m * backdrive_efficiency / (2.0 * math.pi)
     return driving * (thrust_n >= 0.0) + driven * (thrust_n < 0.0)
 

@@ -49,18 +49,23 @@ def pv_value(
     helix_travel_m: float,
     thread_depth_m: float,
     contact_area_m2: float | None = None,
+    pressure_speed: tuple[float, float] | None = None,
 ) -> float:
     """PV of the nut [Pa m/s] by the seed's three-thread method.
 
     PV = (F / (3 H.T. h)) x (n H.T.) ; F [N], n [rpm], H.T. [m], h [m]; contact_area_m2:
     3 H.T. h [m^2] when already worked out (``contact_area``: the candidate table's
-    column), the same number.
+    column), the same number; ``pressure_speed``: P [Pa] and V [m/s] when already worked
+    out (``contact_pressure``, ``surface_speed``), the same numbers.
     Source: seed [1], PV calculation. bnb-industries bushing example (5/8 in, 35 lb,
     120 rpm, PV 1066 psi ft/min) checks the same P x V arithmetic.
 
     >>> round(pv_value(100.0, 600.0, 0.02, 0.001), 1)
     333333.3
     """
+    if pressure_speed is not None:
+        pressure_pa, speed_m_s = pressure_speed
+        return pressure_pa * speed_m_s
     area = (
         contact_area(helix_travel_m, thread_depth_m) if contact_area_m2 is None else contact_area_m2
     )

@@ -40,8 +40,10 @@ def solid_rod_inertia_per_length(density_kg_m3: float, diameter_m: float) -> flo
     return density_kg_m3 * math.pi * diameter_m**4 / 32.0
 
 
-def reflected_mass_inertia(mass_kg: float, lead_m: float) -> float:
-    """Moving mass reflected to the screw, J = m (lead / 2 pi)^2 [kg m^2].
+def reflected_mass_inertia(mass_kg: float, lead_m: float, per_kg_m2: float | None = None) -> float:
+    """Moving mass reflected to the screw, J = m (lead / 2 pi)^2 [kg m^2]; ``per_kg_m2``:
+    (lead / 2 pi)^2 when already worked out (the candidate table's column, this function
+    at 1 kg), the same number.
 
     Source: standard kinematic equivalence, e.g. Shigley [2] ch. 8 / any motion-control
     sizing guide (the mass moves lead / 2 pi metres per radian).
@@ -49,7 +51,7 @@ def reflected_mass_inertia(mass_kg: float, lead_m: float) -> float:
     >>> round(reflected_mass_inertia(10.0, 2 * math.pi * 0.001), 9)
     1e-05
     """
-    return mass_kg * (lead_m / (2.0 * math.pi)) ** 2
+    return mass_kg * ((lead_m / (2.0 * math.pi)) ** 2 if per_kg_m2 is None else per_kg_m2)
 
 
 @formula("T = (J/L x L) x 2 pi a / lead", SEED + " (Inertia Torque T = I alpha)")
@@ -65,16 +67,31 @@ def inertia_torque(inertia_kg_m2: float, angular_accel_rad_s2: float) -> float:
 
 
 @formula("T = F lead / (2 pi eta)", SEED + " (Torque To Move Load)")
-def load_torque(load_n: float, lead_m: float, efficiency: float) -> float:
+def load_torque(
+    load_n: float, lead_m: float, efficiency: float, turn_rad: float | None = None
+) -> float:
     """Torque to move the load, T = F lead / (2 pi eta) [N m].
 
-    load_n: axial force [N]; lead_m [m]; efficiency [-] in (0, 1].
+    load_n: axial force [N]; lead_m [m]; efficiency [-] in (0, 1]; turn_rad: 2 pi eta
+    when already worked out (``efficient_turn``: the candidate table's column), the same
+    number.
     Source: seed [1], "Torque To Move Load: TORQUE = Load x Lead / (2 pi x Efficiency)".
 
     >>> round(load_torque(100.0, 0.002, 0.5), 6)
     0.063662
     """
-    return load_n * lead_m / (2.0 * math.pi * efficiency)
+    return load_n * lead_m / (efficient_turn(efficiency) if turn_rad is None else turn_rad)
+
+
+def efficient_turn(efficiency: float) -> float:
+    """One turn of the screw [rad] times the thread's efficiency, 2 pi eta: what divides
+    F lead in the torque that drives a load (``load_torque``,
+    ``profile.thread_torque``).
+
+    >>> round(efficient_turn(0.5), 6)
+    3.141593
+    """
+    return 2.0 * math.pi * efficiency
 
 
 @formula(
