@@ -31,6 +31,7 @@ from app.catalog.motors import (
     unknown_motor_message,
 )
 from app.core.formulas import stepper
+from app.core.machine import LibraryMotorMass
 from app.core.model import Application
 
 #: The stepper model's datasheet values (``motors.model_curve``).
@@ -159,6 +160,18 @@ DRIVE_VALUES = (
     ("motor_resistance_ohm", "resistance_ohm"),
     ("motor_inductance_h", "inductance_mh"),
 )
+
+
+def library_motor_mass(app: Application, motors: Mapping[str, Motor]) -> LibraryMotorMass | None:
+    """The published mass of the library motor ``app`` names (``with_motor``'s
+    application: its ``motor`` is the library's id), with its provenance, for the machine
+    to count on the axis below; None without a library motor (none, or "any") or where
+    the library gives no mass."""
+    motor = motors.get(app.motor) if app.motor is not None else None
+    mass = None if motor is None else motor.mass()
+    if motor is None or mass is None:
+        return None
+    return LibraryMotorMass(motor.id, float(mass.value), mass.provenance)
 
 
 def drive_retyped(app: Application, motor: Motor) -> bool:

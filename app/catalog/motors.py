@@ -48,10 +48,12 @@ FIELDS = {
     },
 }
 PLAIN = frozenset({"name", "frame", "kind"})
-#: Values a stepper's entry may leave out where its datasheet does not publish them.
+#: Values an entry may leave out where its datasheet does not publish them; the motor's
+#: mass (``mass_kg``, what it adds to the moving mass of the axis that carries it) is
+#: optional for a user's library, and the built-in library gives it for every motor.
 OPTIONAL = {
-    "stepper": {"detent_torque_nm": "N m", "pull_out_curve": "", "max_rpm": ""},
-    "servo": {"top_speed_continuous_nm": "N m"},
+    "stepper": {"detent_torque_nm": "N m", "pull_out_curve": "", "max_rpm": "", "mass_kg": ""},
+    "servo": {"top_speed_continuous_nm": "N m", "mass_kg": ""},
 }
 #: The values each kind's model draws its curve from, in the order its model takes them
 #: (``stepper.microstep_pull_out_curve`` through ``model_curve``; ``servo.peak_curve``).
@@ -86,6 +88,7 @@ SI_UNITS = {
     "top_speed_torque_nm": "N m",
     "top_speed_continuous_nm": "N m",
     "detent_torque_nm": "N m",
+    "mass_kg": "kg",
     CURVE: "rpm, N m",
 }
 #: Field -> the unit (a key of the unit table) its name carries and its file is written
@@ -190,6 +193,11 @@ class Motor:
         """A stepper's published detent torque (unpowered); None where not published."""
         detent = self.values.get("detent_torque_nm")
         return None if detent is None else float(detent.value)
+
+    def mass(self) -> Sourced | None:
+        """The motor's published mass [kg] with its provenance; None where the library
+        gives none."""
+        return self.values.get("mass_kg")
 
     def continuous_torque_nm(self) -> float | None:
         """A servo's rated (S1) torque, the limit of the cycle's RMS torque; None for a

@@ -8,6 +8,8 @@ from pydantic import BaseModel, ConfigDict, Field, create_model, field_validator
 
 from app.contract.inputs import ApplicationIn
 from app.contract.schemas import CandidateSummaryOut
+from app.contract.sections import ProvenanceOut
+from app.core.machine import MotorMassOrigin
 
 #: The most axes a stack may have (Z on X on Y).
 MAX_AXES = 3
@@ -32,11 +34,13 @@ class AxisIn(BaseModel):
         description="Mass that moves with this axis when it rides on the one below, "
         "besides its moving mass, screw and motor: rails, base plate, bearings [kg].",
     )
-    motor_kg: float = Field(
-        default=0.0,
+    motor_kg: float | None = Field(
+        default=None,
         ge=0.0,
         le=1_000.0,
-        description="Its motor's mass [kg] (0: counted in frame_kg).",
+        description="Its motor's mass [kg] (0: counted in frame_kg). Typed, it wins; left "
+        "out (null), the published mass of the library motor the axis names (inputs.motor, "
+        "GET /api/v1/motors: mass_kg) counts, else 0.",
     )
     choice: str | None = Field(
         default=None,
@@ -113,6 +117,34 @@ MachineAxisOut = create_model(
         Field(
             description="The chosen screw's mass over the axis's length [kg] "
             "(geometry.screw_mass); null when no screw is chosen."
+        ),
+    ),
+    motor_kg=(
+        float,
+        Field(
+            description="Its motor's mass in total_kg [kg]: motor_kg as typed, else the "
+            "published mass of the library motor it names (motor_mass_origin), else 0."
+        ),
+    ),
+    motor_mass_origin=(
+        cast(Any, MotorMassOrigin),
+        Field(
+            description="Where motor_kg comes from: typed (the axis's motor_kg), library "
+            "(the library motor's published mass: motor_mass_provenance), none (0 kg: "
+            "neither typed nor a library motor with a mass named)."
+        ),
+    ),
+    motor_mass_motor=(
+        str | None,
+        Field(
+            description="The library motor whose mass counts; null unless the origin is library."
+        ),
+    ),
+    motor_mass_provenance=(
+        Optional[ProvenanceOut],  # noqa: UP045 (a run-time type)
+        Field(
+            description="The library mass's provenance (kind and source, as GET "
+            "/api/v1/motors gives it); null unless the origin is library."
         ),
     ),
     total_kg=(

@@ -19,15 +19,30 @@ answer gives it, and the sizing leaves it out (the axes moved one at a time).
 
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
+from typing import Literal
 
 from app.core import motion
 from app.core.changes import Ranges, Words
 from app.core.evaluate import evaluate
 from app.core.formulas import geometry, stacking
 from app.core.index import CatalogIndex
-from app.core.model import STANDARD_GRAVITY_M_S2, Application, AxisProvenance
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, AxisProvenance, Provenance
 from app.core.record import Candidate
 from app.core.selection import Selection, select
+
+#: Where an axis's motor mass comes from: typed in (``Axis.motor_kg``), the library
+#: motor's published mass (``Axis.library_motor``), or neither (0 kg).
+MotorMassOrigin = Literal["typed", "library", "none"]
+
+
+@dataclass(frozen=True, slots=True)
+class LibraryMotorMass:
+    """The published mass of the library motor an axis names: the motor's id, its mass
+    [kg] and where that value comes from."""
+
+    motor: str
+    mass_kg: float
+    provenance: Provenance
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,27 +50,42 @@ class Axis:
     """One axis of the stack: its application (its own moving mass: carriage and payload,
     the heaviest move's in a cycle of moves: ``motion.heaviest_mass``),
     the mass of its frame that moves with it when it rides on another axis (rails, base,
-    bearings, brackets) [kg], its motor's mass [kg] (0 when counted in the frame), the
-    screw chosen for it (None: the first-ranked), and the provenance of its values the
-    checks' capacities are (``AxisProvenance``; None: typed in)."""
+    bearings, brackets) [kg], its motor's mass as typed [kg] (None: not typed; 0 when
+    counted in the frame), the screw chosen for it (None: the first-ranked), the
+    provenance of its values the checks' capacities are (``AxisProvenance``; None: typed
+    in), and the published mass of the library motor it names (None: none named, or the
+    library gives none), which counts where no motor mass is typed (``motor_mass``)."""
 
     name: str
     app: Application
     frame_kg: float = 0.0
-    motor_kg: float = 0.0
+    motor_kg: float | None = None
     choice: str | None = None
     provenance: AxisProvenance | None = None
+    library_motor: LibraryMotorMass | None = None
+
+
+def motor_mass(axis: Axis) -> tuple[float, MotorMassOrigin]:
+    """The motor mass [kg] ``axis`` brings to the axis below and where it comes from: the
+    typed one wins, else the library motor's published mass, else 0 kg."""
+    if axis.motor_kg is not None:
+        return axis.motor_kg, "typed"
+    if axis.library_motor is not None:
+        return axis.library_motor.mass_kg, "library"
+    return 0.0, "none"
 
 
 @dataclass(frozen=True, slots=True)
 class AxisResult:
     """One axis sized: the application it was sized with (the axes above in its moving
     mass), the mass those axes add [kg], its selection, the screw chosen (None: none
-    passes and none was named), the mass it brings to the axis below [kg], the
+    passes and none was named), the chosen screw's mass [kg], the mass it brings to the
+    axis below [kg] (its moving mass, frame, motor and screw), the
     axes above whose screw that mass leaves out (none chosen there: its mass is not
     known until one is), the vertical axes above a vertical one (parallel to it), and
     the thrust beyond their weight they pass to its nut when they move with it [N]
-    (``parallel_thrust``; not in its sizing)."""
+    (``parallel_thrust``; not in its sizing), and its motor's mass in that total [kg]
+    with where it comes from (``motor_mass``)."""
 
     axis: Axis
     app: Application
@@ -67,6 +97,8 @@ class AxisResult:
     uncounted: tuple[str, ...] = ()
     parallel: tuple[str, ...] = ()
     parallel_thrust_n: float = 0.0
+    motor_kg: float = 0.0
+    motor_origin: MotorMassOrigin = "none"
 
 
 @dataclass(frozen=True, slots=True)
@@ -123,8 +155,20 @@ def size_axis(
     sel = select(app, index, ranges, words, axis.provenance)
     chosen = _chosen(app, index, sel, axis)
     screw_kg = 0.0 if chosen is None else screw_mass(app, chosen)
-    total = motion.heaviest_mass(app) + axis.frame_kg + axis.motor_kg + screw_kg
-    return AxisResult(axis, app, carried_kg, sel, chosen, screw_kg, total, uncounted)
+    motor_kg, origin = motor_mass(axis)
+    total = motion.heaviest_mass(app) + axis.frame_kg + motor_kg + screw_kg
+    return AxisResult(
+        axis,
+        app,
+        carried_kg,
+        sel,
+        chosen,
+        screw_kg,
+        total,
+        uncounted,
+        motor_kg=motor_kg,
+        motor_origin=origin,
+    )
 
 
 def own_thrust(app: Application) -> float:

@@ -4,6 +4,7 @@ import math
 from typing import Any
 
 from app.catalog import Catalog
+from app.catalog.axis_motor import library_motor_mass
 from app.catalog.motors import UndrivableMotor, UnknownMotor
 from app.catalog.supports import UnknownSupport
 from app.contract.fields import MOVING_MASS
@@ -30,6 +31,20 @@ def energy_of(r: AxisResult) -> dict[str, float | None] | None:
     return {key: v if math.isfinite(v) else None for key, v in values.items()}
 
 
+def motor_mass_json(r: AxisResult) -> dict[str, Any]:
+    """The axis's motor mass in its total, where it comes from, and for a library motor's
+    published mass that motor and the value's provenance."""
+    library = r.axis.library_motor if r.motor_origin == "library" else None
+    return {
+        "motor_kg": r.motor_kg,
+        "motor_mass_origin": r.motor_origin,
+        "motor_mass_motor": None if library is None else library.motor,
+        "motor_mass_provenance": None
+        if library is None
+        else {"kind": library.provenance.kind, "source": library.provenance.source},
+    }
+
+
 class UnknownChoice(LookupError):
     """An axis's chosen screw that the catalog does not hold: (axis index, id)."""
 
@@ -49,7 +64,8 @@ def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
         except (UnknownMotor, UnknownSupport, UndrivableMotor) as exc:
             field = getattr(exc, "field", "motor")
             raise AxisInputError(f"axes.{i}.inputs.{field}", str(exc)) from exc
-        axes.append(Axis(a.name, app, a.frame_kg, a.motor_kg, a.choice, provenance))
+        library = library_motor_mass(app, catalog.motors)
+        axes.append(Axis(a.name, app, a.frame_kg, a.motor_kg, a.choice, provenance, library))
     return axes
 
 
@@ -65,6 +81,7 @@ def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
         "parallel_thrust_n": r.parallel_thrust_n,
         "sized_mass_kg": motion.heaviest_mass(r.app),
         "screw_kg": None if r.chosen is None else r.screw_kg,
+        **motor_mass_json(r),
         "total_kg": r.total_kg,
         "evaluated": r.selection.evaluated,
         "passed": r.selection.passed,

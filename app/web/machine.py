@@ -70,7 +70,7 @@ def _axis(i: int, params: Mapping[str, str], catalog: Catalog, errors: dict[str,
             name=get["name"] or f"Axis {i}",
             inputs=inputs,
             frame_kg=get["frame"] or 0.0,
-            motor_kg=get["motor"] or 0.0,
+            motor_kg=get["motor"] or None,
             choice=get["choice"] or None,
         )
     except ValidationError as exc:

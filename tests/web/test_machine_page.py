@@ -90,8 +90,8 @@ def test_an_axis_without_a_move_or_duty_is_sized_with_its_figures_marked_not_wor
         },
     ).json()["axes"][0]
     assert "rms_nm" not in api["chosen"]["torque"] and "years" not in api["chosen"]["life"]
-    assert z[7] == f"{api['chosen']['torque']['peak_motor_nm']:.4g}"
-    assert z[8:11] == ["–", "–", "–"]
+    assert z[8] == f"{api['chosen']['torque']['peak_motor_nm']:.4g}"
+    assert z[9:12] == ["–", "–", "–"]
 
 
 def test_a_parameter_the_machine_page_does_not_read_is_named(client: TestClient) -> None:
