@@ -4,6 +4,7 @@ checks with formulas and provenance, the charts, the date and the catalog versio
 import json
 from typing import Any
 
+import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
@@ -142,3 +143,31 @@ def test_a_runner_ups_report_charts_and_tabulates_its_own_cycle(client: TestClie
         f"{s['torque_nm']:.4g}" for s in segments(second)
     ]
     assert page.select_one(".facts .rms") is not None
+
+
+def test_the_report_says_a_marginal_pass_and_tabulates_the_peak_torque(client: TestClient) -> None:
+    """A 5 kg vertical axis held with the power off: Tr8x1.5-ptfe passes but fails at one
+    end of its static friction's range (the results table and the detail say "Marginal");
+    the report says it too, in the verdict's own words. Its runners-up show the peak torque
+    the results table ranks by (under a move, starting from rest), not the torque while
+    accelerating."""
+    axis = {"load": "0", "moving_mass_kg": "5", "orientation": "vertical", "speed": "10",
+            "length": "300", "hold_power_off": "true", "id": "Tr8x1.5-ptfe"}  # fmt: skip
+    api = {"load_n": 0, "moving_mass_kg": 5, "orientation": "vertical", "speed_mm_s": 10,
+           "length_mm": 300, "hold_power_off": True}  # fmt: skip
+    verdict = client.get("/api/v1/evaluate", params={**api, "catalog_id": "Tr8x1.5-ptfe"})
+    text = verdict.json()["candidate"]["verdict"]["text"]
+    assert "Marginal: fails at one end of the range of static friction" in text
+    page = BeautifulSoup(client.get("/report", params=axis).text, "html.parser")
+    assert page.select_one("p.verdict-line").text == text
+    moving = {"load": "20", "speed": "100", "length": "500", "stroke": "300",
+              "accel": "2000", "moving_mass_kg": "5"}  # fmt: skip
+    query = {"load_n": 20, "speed_mm_s": 100, "length_mm": 500, "stroke_mm": 300,
+             "accel_mm_s2": 2000, "moving_mass_kg": 5, "detail": "full"}  # fmt: skip
+    selected = client.get("/api/v1/select", params=query).json()["candidates"]
+    report = BeautifulSoup(client.get("/report", params=moving).text, "html.parser")
+    shown = [float(tr.select("td")[2].text) for tr in report.select("table.runners-up tbody tr")]
+    peaks = [c["torque"]["peak_motor_nm"] for c in selected[1 : 1 + len(shown)]]
+    assert shown and shown == pytest.approx(peaks, rel=5e-3)
+    totals = [c["torque"]["total_nm"] for c in selected[1 : 1 + len(shown)]]
+    assert any(abs(p - t) / p > 5e-3 for p, t in zip(peaks, totals, strict=True))
