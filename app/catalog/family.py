@@ -24,6 +24,7 @@ VARIANT_FIELDS = frozenset(
         "field_suffix",
         "coated",
         "oil_compatible",
+        "lubricated_rating",
         "friction_dynamic",
         "pv_limit_mpa_m_s",
         "max_length_mm",

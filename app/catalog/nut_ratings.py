@@ -114,6 +114,9 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
         "friction_dynamic": sourced(v, "friction_dynamic", ""),
         "oil_compatible": Sourced(v.flag("oil_compatible"), "", v.prov("oil_compatible")),
     }
+    if v.has("lubricated_rating"):
+        flag = v.flag("lubricated_rating")
+        fields["lubricated_rating"] = Sourced(flag, "", v.prov("lubricated_rating"))
     if v.has("pv_limit_mpa_m_s"):
         fields["pv_limit"] = sourced(v, "pv_limit_mpa_m_s", "MPa m/s")
     if v.has("max_length_mm"):

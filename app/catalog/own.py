@@ -94,6 +94,8 @@ class NutMaterial:
     ends: Ends = field(default_factory=dict)
     nut_length_to_d_ends: tuple[float, float] | None = None
     backlash_m: tuple[float, float] | None = None
+    #: its ratings are a lubricated nut's (``ScrewSpec.lubricated_rating``)
+    lubricated_rating: bool = False
 
     def rates_by_pressure(self) -> bool:
         """Whether a limit reads the engaged flank area (pitch and nut length needed)."""
@@ -121,6 +123,7 @@ def _rated(screw: ScrewSpec) -> bool:
 def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
     """The nut material of one catalog candidate, with its provenance."""
     keys = (*NUT_VALUES, "temperature_range", "oil_compatible", "friction_dynamic")
+    keys += ("lubricated_rating",)
     prov = {k: screw.provenance[k] for k in (*keys, "friction_static") if k in screw.provenance}
     low, high = screw.temperature_min_c, screw.temperature_max_c
     thrust = series.fields.get(f"dynamic_thrust_{screw.variant}")
@@ -142,6 +145,7 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
         limits={name: getattr(screw, name) for name in NUT_VALUES.values()},
         temperature_c=None if low is None or high is None else (low, high),
         oil_compatible=screw.oil_compatible,
+        lubricated_rating=screw.lubricated_rating,
         thrust_table=thrust,
         friction_dynamic=screw.friction_dynamic,
         friction_static=screw.friction_static,
@@ -231,6 +235,7 @@ def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
         return {}
     values: dict[str, object] = {**nut.limits, "nut_material": nut.name}
     values["oil_compatible"] = nut.oil_compatible
+    values["lubricated_rating"] = nut.lubricated_rating
     if nut.backlash_m is not None:
         values["backlash_min_m"], values["backlash_max_m"] = nut.backlash_m
     if nut.temperature_c is not None:

@@ -106,6 +106,11 @@ def _value_or_none(fields: Mapping[str, Sourced], name: str) -> Any:
     return fields[name].value if name in fields else None
 
 
+def _flag_or_false(fields: Mapping[str, Sourced], name: str) -> bool:
+    """A variant's yes/no value, false where the family does not give it."""
+    return bool(fields[name].value) if name in fields else False
+
+
 #: Series fields that become ScrewSpec numbers, to compare at the ends of a range.
 SPEC_OF_FIELD = {
     "root_diameter": "root_diameter_m",
@@ -219,6 +224,7 @@ def _screw(
         temperature_min_c=t_min,
         temperature_max_c=t_max,
         oil_compatible=variant.fields["oil_compatible"].value,
+        lubricated_rating=_flag_or_false(variant.fields, "lubricated_rating"),
         yield_strength_pa=_value_or_none(fields, "yield_strength"),
         thermal_conductivity_w_m_k=_value_or_none(fields, "thermal_conductivity"),
         outgassing=_value_or_none(fields, "outgassing") or (),

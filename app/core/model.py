@@ -243,6 +243,9 @@ class ScrewSpec:
     temperature_min_c: float | None = None
     temperature_max_c: float | None = None
     oil_compatible: bool = True
+    #: the nut's friction, pressure and wear ratings are a lubricated nut's (a bronze
+    #: nut): run dry it is not rated by them
+    lubricated_rating: bool = False
     outgassing: tuple[tuple[float, float], ...] = ()
     material_name: str = ""
     nut_material: str = ""

@@ -260,6 +260,7 @@ class CandidateTable:
     coated: Mask
     anti_backlash: Mask
     oil_compatible: Mask
+    lubricated_rating: Mask
     efficiency: Array
     efficiency_static: Array
     efficiency_square_thread: Array
@@ -419,6 +420,7 @@ class CandidateTable:
             coated=flag("coated"),
             anti_backlash=flag("anti_backlash"),
             oil_compatible=flag("oil_compatible"),
+            lubricated_rating=flag("lubricated_rating"),
             # the seed's rule of thumb is a sliding thread's: a ball screw always back-drives
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),

@@ -50,6 +50,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "nut_length": "nut length",
     "nut_length_to_d": "nut length",
     "oil_compatible": "oil compatibility",
+    "lubricated_rating": "lubricated rating",
     "outer_diameter": "outer diameter",
     "outgassing": "outgassing",
     "pitch": "pitch",

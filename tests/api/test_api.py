@@ -590,7 +590,13 @@ def test_rank_by_orders_as_documented(api: Api, rank_by: str, lead: float | None
     body = select(api, **BASE, lead_mm=lead, rank_by=rank_by, limit=100)
     values = [key(c) for c in body["candidates"]]
     assert len(set(values)) > 1, "ordering is only tested when the key varies"
-    assert values == sorted(values, reverse=descending)
+    # those with a warning (failed advice: a bronze nut run dry) come after the others,
+    # each group in the policy's order
+    warned = [bool(c["warned"]) for c in body["candidates"]]
+    assert warned == sorted(warned)
+    for group in (False, True):
+        part = [v for v, w in zip(values, warned, strict=True) if w == group]
+        assert part == sorted(part, reverse=descending)
     if body["counts"]["passed"] <= 100:
         # every passing candidate is listed, so the ranking is over all of them
         assert len(values) == body["counts"]["passed"]

@@ -34,7 +34,11 @@ capped by the wear life of the same polyacetal nut at the cycle's wear thrust: a
 ZBX, KHD and VHD TFE nuts wear through in under the 3 years asked (ZBX8000-L10: 14,640 km N
 / 60 N = 244 km, 244e3 / (0.4 x 2000 x 365) = 0.84 years), so ISO nuts fill the list.
 "any-lead-vertical" was recorded again when holding with the power off became a
-requirement whose surest holds rank first: the screws whose thread alone holds. Every path
+requirement whose surest holds rank first: the screws whose thread alone holds. Seven were
+recorded again when a bronze nut run dry (every query here leaves the nut unlubricated)
+became a warning: its ratings are a lubricated nut's; the bronze nuts keep their verdicts
+and their order among themselves, after the screws without a warning (or past the list's
+limit; rejected where the advice rejects). Every path
 must still give them: select, a catalog screw evaluated alone, and a screw outside the
 catalog with the same values (its variant rows built on the fly).
 """

@@ -183,9 +183,14 @@ def test_a_size_with_one_lead_of_its_nut_has_no_sweep(catalog: Catalog) -> None:
     """Tr8x1.5 is made in one lead, with a bronze, an acetal or a PTFE nut: the top
     (bronze) screw's size and nut has nothing to sweep, so the chart is left out rather
     than drawn as three nuts stacked on one lead. At 20 mm/s (800 rpm) its bronze nut
-    slides at 800 / 60 x pi x 7.25 mm = 0.30 m/s, within bronze's 0.42 m/s."""
+    slides at 800 / 60 x pi x 7.25 mm = 0.30 m/s, within bronze's 0.42 m/s (greased, as
+    its ratings are a lubricated nut's)."""
     inputs = ApplicationIn(
-        load_n=100, speed_mm_s=20, length_mm=500, family=list(leadscrew_families(catalog))
+        load_n=100,
+        speed_mm_s=20,
+        length_mm=500,
+        family=list(leadscrew_families(catalog)),
+        lubrication="greased",
     )
     result = run_selection(inputs, catalog)
     assert result.candidates[0].id == "Tr8x1.5-bronze"

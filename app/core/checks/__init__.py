@@ -21,6 +21,7 @@ from app.core.checks.holding import Holding
 from app.core.checks.inertia_ratio import InertiaRatio
 from app.core.checks.length import Length
 from app.core.checks.life import Life
+from app.core.checks.lubrication import Lubrication
 from app.core.checks.max_sliding_speed import MaxSlidingSpeed
 from app.core.checks.motor_curve import MotorCurve
 from app.core.checks.motor_rms import MotorRms
@@ -64,6 +65,7 @@ REGISTRY: tuple[Check, ...] = (
     Length(),
     StrokeTravel(),
     OilCompatibility(),
+    Lubrication(),
     Temperature(),
     NutHeat(),
     BackDriving(),

@@ -1,0 +1,56 @@
+"""A nut rated as a lubricated nut (a bronze nut) against an axis that runs it dry."""
+
+from app.core.checks.base import (
+    Application,
+    Array,
+    CandidateTable,
+    Check,
+    Mapping,
+    Measure,
+    Quantities,
+    Reach,
+    ScrewSpec,
+)
+from app.core.phrase import Phrase
+
+
+class Lubrication(Check):
+    name = "lubrication"
+    kind = "advice"
+    why_none = "every nut here is rated lubricated: grease or oil the nut"
+    label = "Lubrication (bronze nut)"
+    description = (
+        "A bronze nut's friction, flank pressures and wear rate are a lubricated nut's "
+        "(steel on bronze with machine oil); run dry, steel on bronze rubs at 0.15 to 0.23 "
+        "and none of them holds: its torque would be a quarter to a third higher than "
+        "shown, and its pressure and wear limits have no dry basis. Where the axis runs "
+        "the nut dry (the nut lubrication input), it is flagged: grease or oil it."
+    )
+    formula = "passes when not (lubricated_rating and dry)"
+    source = (
+        "Shigley's Mechanical Engineering Design, Table 8-5 (after Rothbart): steel on "
+        "bronze, dry 0.15-0.23, machine oil 0.10-0.16; Table 8-4 (bearing pressures of "
+        "lubricated screws)"
+    )
+    sources = ("lubricated_rating",)
+    capacity_sources = ("lubricated_rating",)
+
+    def applies(self, app: Application) -> bool:
+        return not app.lubricated
+
+    def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
+        return Measure(t.lubricated_rating.copy(), flagged=t.lubricated_rating.copy())
+
+    def symbols(
+        self, app: Application, t: CandidateTable, q: Quantities[Array]
+    ) -> Mapping[str, object]:
+        return {"lubricated_rating": t.lubricated_rating, "dry": not app.lubricated}
+
+    def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        return Phrase(
+            "Its friction, pressure and wear ratings are a lubricated nut's, and the nut is "
+            "to run dry: steel on bronze dry rubs at 0.15 to 0.23 (oiled 0.10 to 0.16)."
+        )
+
+    def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        return Phrase("Grease or oil the nut (the nut lubrication input), or use a polymer nut.")
