@@ -19,12 +19,13 @@ from pydantic import BaseModel, ValidationError
 
 from app.contract import screw_fields
 from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
-from app.contract.form import BOUND_MESSAGES, convert_text, encode_query, unit_key
+from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, convert_text, encode_query, unit_key
 from app.contract.input_field import InputField
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
 from app.contract.units import (
     DEFAULT_UNITS,
     Quantity,
+    bound_sig,
     display_system,
     label,
     si_to_api,
@@ -89,7 +90,8 @@ def _message(error: Mapping[str, Any], units: Mapping[str, str]) -> str:
         if field is None:
             return template.format(bound=sig(bound))
         unit = field.display_unit(units)
-        shown = sig(bound / float(field.factor(units))) + (f" {unit}" if unit else "")
+        figure = bound_sig(bound / float(field.factor(units)), key in LOWER_BOUNDS)
+        shown = figure + (f" {unit}" if unit else "")
         return template.format(bound=shown)
     if kind in PLAIN_MESSAGES:
         return PLAIN_MESSAGES[kind]
