@@ -1,5 +1,6 @@
 """Units at the page's edges: a field's bound is stated as a number the field accepts,
-in the unit it is typed in.
+in the unit it is typed in, and the custom screw's numbers survive a unit switch and back
+as typed, judging the same screw.
 
 Factors from NIST SP 811 (2008) appendix B: 1 in = 25.4 mm, 1 lbf = 4.4482216152605 N,
 g_n = 9.80665 m/s², t/°F = 1.8 t/°C + 32.
@@ -67,3 +68,45 @@ def test_a_custom_screw_bound_is_a_number_the_field_accepts(client: TestClient) 
     message = _error(client, "/custom", params, "lead_mm")
     assert message == "Must be at least 0.0003938 in."
     assert _error(client, "/custom", {**params, "lead_mm": "0.0003938"}, "lead_mm") == ""
+
+
+def _custom(client: TestClient, params: dict[str, str]) -> BeautifulSoup:
+    return BeautifulSoup(client.get("/custom", params=params).text, "html.parser")
+
+
+def _sent(page: BeautifulSoup) -> dict[str, str]:
+    """The custom form's fields as the browser sends them back (the hidden records too)."""
+    form = page.select_one("form")
+    assert form is not None
+    fields = form.select("input[type=text][value], input[type=hidden][value]")
+    sent = {i["name"]: i["value"] for i in fields if i["value"]}
+    chosen = [(s["name"], s.select_one("option[selected]")) for s in form.select("select")]
+    sent |= {name: option["value"] for name, option in chosen if option is not None}
+    return {k: v for k, v in sent.items() if not k.startswith("from_")}
+
+
+def test_a_custom_screw_switched_to_inches_and_back_is_the_screw_typed(
+    client: TestClient,
+) -> None:
+    """A 12 mm x 3 mm screw switched to inches showed 0.4724 in and 0.1181 in (11.999 mm,
+    2.9997 mm), judged as such, and 11.999 mm and 2.9997 mm after switching back. Each
+    number now converts exactly: the screw judged is the one typed, and switching back
+    restores the numbers typed."""
+    metric = {**SCREW, **MM_AXIS}
+    switch = {"length_unit": "in", "force_unit": "lbf", "torque_unit": "oz_in"}
+    typed_in = {"from_length_unit": "mm", "from_force_unit": "N", "from_torque_unit": "N_m"}
+    inches = _custom(client, {**metric, **switch, **typed_in})
+    shown = {name: inches.select_one(f"#f-{name}")["value"] for name in SCREW}
+    assert float(shown["outer_diameter_mm"]) * 25.4 == 12.0
+    assert float(shown["lead_mm"]) * 25.4 == 3.0
+
+    def torque(page: BeautifulSoup) -> str:
+        link = next(a["href"] for a in page.select("a") if "/custom/export.json" in a["href"])
+        return str(client.get(link).json()["candidate"]["torque"])
+
+    assert torque(inches) == torque(_custom(client, metric))
+    back = {**_sent(inches), "from_length_unit": "in", "from_force_unit": "lbf",
+            "from_torque_unit": "oz_in", "length_unit": "mm", "force_unit": "N",
+            "torque_unit": "N_m"}  # fmt: skip
+    again = _custom(client, back)
+    assert {name: again.select_one(f"#f-{name}")["value"] for name in SCREW} == SCREW
