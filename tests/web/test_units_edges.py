@@ -6,6 +6,7 @@ Factors from NIST SP 811 (2008) appendix B: 1 in = 25.4 mm, 1 lbf = 4.4482216152
 g_n = 9.80665 m/s², t/°F = 1.8 t/°C + 32.
 """
 
+import json
 import re
 
 import pytest
@@ -110,3 +111,17 @@ def test_a_custom_screw_switched_to_inches_and_back_is_the_screw_typed(
             "torque_unit": "N_m"}  # fmt: skip
     again = _custom(client, back)
     assert {name: again.select_one(f"#f-{name}")["value"] for name in SCREW} == SCREW
+
+
+def test_the_governing_segments_hover_names_the_torque_unit(client: TestClient) -> None:
+    """The cycle's torque chart marks the segment that governs the motor at its torque,
+    in the torque unit chosen, as every other torque of the chart: '12.4 oz in', not a
+    bare '12.4'."""
+    axis = {"load": "11.24", "moving_mass_kg": "11", "speed": "2", "length": "20",
+            "stroke": "12", "cycles_per_day": "1000", "motor": "23hs32-4004s", "limit": "3",
+            **INCH}  # fmt: skip
+    page = BeautifulSoup(client.get("/charts", params=axis).text, "html.parser")
+    figure = json.loads(page.select_one("#fig-cycle_torque").text)
+    governs = [t for t in figure["data"] if t["name"].startswith("Governs")]
+    assert governs
+    assert [t["hovertemplate"] for t in governs] == ["%{y:.4g} oz in<extra>governs</extra>"]
