@@ -36,6 +36,7 @@ from app.contract.units import (
     UNIT_QUANTITIES,
     Quantity,
     accel_choice,
+    bound_sig,
     from_api,
     sig,
     to_api,
@@ -60,6 +61,8 @@ BOUND_MESSAGES = {
     "less_than": ("Must be less than {bound}.", "lt"),
     "less_than_equal": ("Must be at most {bound}.", "le"),
 }
+#: the context keys of a lower bound (its message's figure is rounded up, ``bound_sig``).
+LOWER_BOUNDS = frozenset({"gt", "ge"})
 TRUE_WORDS = {"1", "true", "on", "yes"}
 FALSE_WORDS = {"0", "false", "off", "no"}
 #: An input's API name in a pydantic message, to be given its label: a whole word, never
@@ -348,8 +351,8 @@ def _page_message(error: Mapping[str, Any], page: str, units: dict[str, str]) ->
         template, key = BOUND_MESSAGES[kind]
         bound = float(error.get("ctx", {}).get(key, 0.0))
         if field is not None and field.quantity is not None:
-            shown = f"{sig(field.display_value(bound, units))} {field.display_unit(units)}"
-            return template.format(bound=shown)
+            figure = bound_sig(field.display_value(bound, units), key in LOWER_BOUNDS)
+            return template.format(bound=f"{figure} {field.display_unit(units)}")
         return template.format(bound=sig(bound))
     if kind in PLAIN_MESSAGES:
         return PLAIN_MESSAGES[kind]

@@ -411,6 +411,36 @@ def sig(value: float, digits: int = 4) -> str:
     return f"{value:.{digits}g}"
 
 
+#: the most significant figures a bound's message writes to state it exactly (-459.67 °F).
+EXACT_BOUND_FIGURES = 7
+
+
+def bound_sig(value: float, lower: bool, digits: int = 4) -> str:
+    """A field's bound in its display unit as ``sig`` writes it, never a number the bound
+    refuses: exactly where at most ``EXACT_BOUND_FIGURES`` figures write it, else to
+    ``digits`` figures rounded inside the allowed range, up for a ``lower`` bound and down
+    for an upper one. 1 mm is at least 0.03938 in, not 0.03937 (0.0393700787 in); 1e6
+    mm/s² at most 101.9 g, not 102.
+
+    >>> bound_sig(0.0393700787, True), bound_sig(101.97162, False), bound_sig(-459.67, True)
+    ('0.03938', '101.9', '-459.67')
+    >>> bound_sig(224808.943, False), bound_sig(0.0, True), bound_sig(1000.0, False)
+    ('224808', '0', '1000')
+    """
+    for figures in range(digits, EXACT_BOUND_FIGURES + 1):
+        text = sig(value, figures)
+        if math.isclose(float(text), value, rel_tol=1e-12, abs_tol=1e-300):
+            return text
+    text = sig(value, digits)
+    if (float(text) >= value) == lower:
+        return text
+    if abs(value) >= 10**digits:
+        return f"{math.ceil(value) if lower else math.floor(value):d}"
+    scale = 10.0 ** (math.floor(math.log10(abs(value))) - digits + 1)
+    steps = math.ceil(value / scale) if lower else math.floor(value / scale)
+    return sig(steps * scale, digits)
+
+
 def _catalog_text(value: object, scale: float) -> str:
     if isinstance(value, tuple | list):
         return "(" + ", ".join(_catalog_text(v, scale) for v in value) + ")"

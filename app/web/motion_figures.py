@@ -178,7 +178,7 @@ def _governing(segments: list[SegmentOut], d: Display) -> dict[str, Any] | None:
                 "x": [t + s.duration_s / 2],
                 "y": [d.value(s.torque_nm, "torque")],
                 "marker": {"symbol": "diamond", "size": 12, "color": "#CC79A7"},
-                "hovertemplate": "%{y:.4g}<extra>governs</extra>",
+                "hovertemplate": f"%{{y:.4g}} {d.label('torque')}<extra>governs</extra>",
             }
         t += s.duration_s
     return None

@@ -19,12 +19,13 @@ from pydantic import BaseModel, ValidationError
 
 from app.contract import screw_fields
 from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
-from app.contract.form import BOUND_MESSAGES, convert_text, encode_query, unit_key
+from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, encode_query, unit_key
 from app.contract.input_field import InputField
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
 from app.contract.units import (
     DEFAULT_UNITS,
     Quantity,
+    bound_sig,
     display_system,
     label,
     si_to_api,
@@ -89,7 +90,8 @@ def _message(error: Mapping[str, Any], units: Mapping[str, str]) -> str:
         if field is None:
             return template.format(bound=sig(bound))
         unit = field.display_unit(units)
-        shown = sig(bound / float(field.factor(units))) + (f" {unit}" if unit else "")
+        figure = bound_sig(bound / float(field.factor(units)), key in LOWER_BOUNDS)
+        shown = figure + (f" {unit}" if unit else "")
         return template.format(bound=shown)
     if kind in PLAIN_MESSAGES:
         return PLAIN_MESSAGES[kind]
@@ -195,15 +197,30 @@ def convert_screw(
     values: Mapping[str, str], entered: Mapping[str, str], units: Mapping[str, str]
 ) -> dict[str, str]:
     """The screw's typed numbers re-expressed from the ``entered`` units into ``units``
-    (a unit switch), those that change only; text that is no number as typed."""
+    (a unit switch), those that change only, each the shortest text that reads back to the
+    same API value (as a move's cell and a curve's torque are), so that the screw judged
+    is the one typed and switching back restores the typed number; text that is no
+    number as typed.
+
+    >>> inch = {**DEFAULT_UNITS, "length_unit": "in"}
+    >>> convert_screw({"outer_diameter_mm": "12.7", "lead_mm": "3"}, DEFAULT_UNITS, inch)
+    {'outer_diameter_mm': '0.5', 'lead_mm': '0.11811023622047244'}
+    >>> convert_screw({"lead_mm": "0.11811023622047244"}, inch, DEFAULT_UNITS)
+    {'lead_mm': '3'}
+    """
     converted = {}
     for field in SCREW_FIELDS + MATERIAL_FIELDS:
         raw = values.get(field.name, "").strip()
         if field.quantity is None or not raw:
             continue
         key = unit_key(field.quantity)
-        if entered[key] != units[key]:
-            converted[field.name] = convert_text(raw, field.quantity, entered[key], units[key])
+        number, _ = read_exact(raw)
+        if entered[key] != units[key] and number is not None:
+            typed = {**DEFAULT_UNITS, **entered}
+            factor = field.factor(typed)
+            exact = isinstance(number, Fraction)
+            value = float(number * factor) if exact else float(number) * float(factor)
+            converted[field.name] = decimal_text(value, field.factor({**DEFAULT_UNITS, **units}))
     return converted
 
 

@@ -59,7 +59,7 @@ def test_ambient_in_fahrenheit(client: TestClient) -> None:
     assert api_inputs(client, {**AXIS, "ambient_c": "68"})["ambient_c"] == 20.0
     page = BeautifulSoup(client.get("/", params={**AXIS, "ambient_c": "-500"}).text, "html.parser")
     # the bound -273.15 °C is -459.67 °F
-    assert page.select_one("#e-ambient_c").text == "Must be at least -459.7 °F."
+    assert page.select_one("#e-ambient_c").text == "Must be at least -459.67 °F."
 
 
 @pytest.mark.parametrize(
