@@ -174,7 +174,8 @@ FIELDS: tuple[InputField, ...] = (
         api="lubrication", page="lubrication", core="lubrication", label="Nut lubrication",
         help="Raises a polymer nut's permissible PV: dry x1 (the rating's own), greased "
         "x1.3 (igus, greased at assembly), oiled x2 (a maker's “as much as 100 %”); a "
-        "dry-film coated screw must then not be used",
+        "dry-film coated screw must then not be used; a bronze nut is rated lubricated: "
+        "run dry, it is flagged",
         group="Nut and environment", kind="choice", default="dry", options=Lubrication,
         texts={"dry": "Dry", "greased": "Greased", "oiled": "Oiled"},
     ),
