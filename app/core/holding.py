@@ -74,9 +74,9 @@ def hold_margins(
 
 
 #: The service factor on the torque a brake holds where no holding factor is given: a
-#: brake holds by friction, and wears; "the end result should be multiplied by a service
-#: factor, usually 1.5" for a brake holding a ball or lead screw (Machine Design,
-#: "Mechatronics Q & A: Hold It Steady", 21 Nov 2007; 1.5 to 3 for brakes in general).
+#: brake holds by friction, and wears. Machine Design ("Mechatronics Q & A: Hold It
+#: Steady", 21 Nov 2007) gives 1.5 as the usual factor for a brake holding a ball or lead
+#: screw, and 1.5 to 3 for brakes in general.
 BRAKE_SERVICE_FACTOR = 1.5
 
 
