@@ -24,6 +24,7 @@ from pydantic import ValidationError
 from app.contract.cycle import moves_text
 from app.contract.exact import PLAIN_MESSAGES, link_number, page_value, read_number, sig_figures
 from app.contract.fields import BY_API, BY_PAGE, FIELDS
+from app.contract.figures import bound_sig, sig
 from app.contract.input_field import InputField
 from app.contract.inputs import ApplicationIn
 from app.contract.torque_curve import convert_curve, curve_text, curve_to_api
@@ -36,9 +37,7 @@ from app.contract.units import (
     UNIT_QUANTITIES,
     Quantity,
     accel_choice,
-    bound_sig,
     from_api,
-    sig,
     to_api,
 )
 

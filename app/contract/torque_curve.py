@@ -11,8 +11,9 @@ from pydantic import TypeAdapter, ValidationError
 
 from app.contract.exact import decimal_text, read_exact
 from app.contract.fields import FIELDS
+from app.contract.figures import sig
 from app.contract.input_types import ASCII_NUMBER, curve_type, exact_text
-from app.contract.units import DEFAULT_UNITS, display_system, sig
+from app.contract.units import DEFAULT_UNITS, display_system
 
 #: a curve's points (rpm, N m) as the model reads and checks them.
 CURVE: TypeAdapter[list[tuple[float, float]]] = TypeAdapter(

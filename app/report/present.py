@@ -21,6 +21,7 @@ from app.catalog.own import (
     user_material,
 )
 from app.contract.fields import FIELDS
+from app.contract.figures import sig
 from app.contract.outputs import ChangeOut, CountsOut, RemedyOut, SummaryOut
 from app.contract.schemas import CandidateOut
 from app.contract.screw_fields import HALF_ANGLE, SCREW_FIELDS
@@ -33,7 +34,7 @@ from app.contract.screws import (
 )
 from app.contract.sections import ProvenanceOut
 from app.contract.source import Writer
-from app.contract.units import DEFAULT_UNITS, from_si, render, sig
+from app.contract.units import DEFAULT_UNITS, from_si, render
 from app.core.model import Provenance, ScrewSpec
 from app.core.record import Candidate
 from app.core.selection import Selection

@@ -12,8 +12,8 @@ from fastapi import APIRouter
 from fastapi.responses import HTMLResponse, Response
 
 from app.contract.fields import BY_API
+from app.contract.figures import sig
 from app.contract.reported import REPORTED
-from app.contract.units import sig
 from app.core.checks import REGISTRY
 from app.report.pull_out_curves import CURVES, PULL_OUT_TOLERANCE
 from app.report.validation import EXAMPLES, TOLERANCE

@@ -19,18 +19,11 @@ from pydantic import BaseModel, ValidationError
 
 from app.contract import screw_fields
 from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
+from app.contract.figures import bound_sig, sig
 from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, encode_query, unit_key
 from app.contract.input_field import InputField
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
-from app.contract.units import (
-    DEFAULT_UNITS,
-    Quantity,
-    bound_sig,
-    display_system,
-    label,
-    si_to_api,
-    sig,
-)
+from app.contract.units import DEFAULT_UNITS, Quantity, display_system, label, si_to_api
 from app.core.model import ScrewSpec
 
 #: the material choice that takes the user's own modulus, density and yield strength.

@@ -3,8 +3,9 @@ catalog offers, its drive torque and its speed and PV as shares of their limits.
 
 from typing import Any
 
+from app.contract.figures import sig
 from app.contract.schemas import CandidateOut
-from app.contract.units import Display, si_to_api, sig
+from app.contract.units import Display, si_to_api
 from app.report.charts import LeadPoint
 from app.web.chart_style import axis as _axis
 from app.web.chart_style import layout as _layout

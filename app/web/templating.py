@@ -6,7 +6,7 @@ import pydantic_core
 from fastapi.templating import Jinja2Templates
 
 from app.catalog.axis_motor import CURVE_ORIGINS
-from app.contract.units import sig
+from app.contract.figures import sig
 from app.core.phrase import figures
 from app.core.verdict import percent, value_label
 from app.paths import resource_dir

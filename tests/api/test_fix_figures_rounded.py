@@ -1,6 +1,6 @@
 """A fix's figures are written rounded to the safe side of the margin it promises ("Each
 figure keeps a 5 % margin to its limit"): an upper bound down, a lower bound up, so the
-figure the engineer types in keeps the margin (``app.contract.units.bound_text``)."""
+figure the engineer types in keeps the margin (``app.contract.figures.bound_text``)."""
 
 import re
 

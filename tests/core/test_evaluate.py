@@ -12,7 +12,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
-from app.contract.units import bound_text, render
+from app.contract.figures import bound_text
+from app.contract.units import render
 from app.core.checks.base import at_least
 from app.core.evaluate import axial_load, evaluate
 from app.core.formulas import critical_speed, efficiency, geometry

@@ -5,7 +5,7 @@ from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
 from app.contract.fields import BY_API
-from app.contract.units import sig
+from app.contract.figures import sig
 from app.core.checks import REGISTRY
 from app.report.pull_out_curves import CURVES
 from app.report.validation import EXAMPLES, TOLERANCE, Example

@@ -29,6 +29,7 @@ from typing import Annotated, Any, Optional
 
 from pydantic import Field
 
+from app.contract.figures import sig
 from app.contract.reported import capacity, drive, duty, holding, moves, order, screw, verdict
 from app.contract.reported.row import (
     COMPOSITE,
@@ -39,7 +40,7 @@ from app.contract.reported.row import (
     Shown,
     ViewName,
 )
-from app.contract.units import Display, sig
+from app.contract.units import Display
 from app.core.phrase import figures
 from app.core.verdict import percent
 
