@@ -45,23 +45,19 @@ def column_limits(
     app: Application, t: CandidateTable, peak_n: float, torques: dict[str, Any]
 ) -> dict[str, Any]:
     """Critical speed over the screw's length (a ball screw's at most its maker's,
-    ``critical_speed.ball_screw_critical_speed_rpm``), and the screw as a column (its span from
+    ``critical_speed.rated_critical_speed_rpm``), and the screw as a column (its span from
     the thrust bearing to the nut) under the peak thrust: Euler when slender, Johnson's
     parabola when short, and the stress at the root under the peak thrust and the torque
     the screw carries with it (von Mises)."""
-    n_c = critical_speed.critical_speed_rpm(
+    n_c = critical_speed.rated_critical_speed_rpm(
         t.root_diameter_m,
         app.length_m,
         t.youngs_modulus_pa,
         t.density_kg_m3,
         app.end_fixity,
+        t.ball,
         (t.wave_speed_m_s, t.root_gyration_m),
     )
-    if t.ball.any():  # a ball screw's at most its maker's
-        hiwin = critical_speed.ball_screw_critical_speed_rpm(
-            t.root_diameter_m, app.length_m, app.end_fixity
-        )
-        n_c = np.where(t.ball, np.minimum(n_c, hiwin), n_c)
     column_m = column_length(app)
     s = buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity, t.root_gyration_m)
     f_cr = buckling.column_critical_load(

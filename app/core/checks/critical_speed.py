@@ -116,15 +116,11 @@ class CriticalSpeed(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         def allowed(fixity: EndFixity) -> float:
-            n_c = critical_speed.critical_speed_rpm(
-                s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity
-            )
-            if s.screw_type == "ball":
-                hiwin = critical_speed.ball_screw_critical_speed_rpm(
-                    s.root_diameter_m, app.length_m, fixity
-                )
-                n_c = min(n_c, hiwin)
-            return critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor)
+            n_c = critical_speed.rated_critical_speed_rpm(
+                s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity,
+                s.screw_type == "ball",
+            )  # fmt: skip
+            return critical_speed.allowed_speed_rpm(float(n_c), app.critical_speed_safety_factor)
 
         lead = critical_speed.min_lead_for_speed(motion.reached_speed(app), r.column.allowed_rpm)
         d_min = critical_speed.min_root_diameter_for_speed(

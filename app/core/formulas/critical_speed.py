@@ -9,6 +9,8 @@ formula accepts floats or NumPy arrays.
 import math
 from typing import Any
 
+import numpy as np
+
 from app.core.formulas.declare import formula
 from app.core.units import from_si
 
@@ -131,6 +133,36 @@ def ball_screw_critical_speed_rpm(root_diameter_m: Any, length_m: float, end_fix
     root_mm, length_mm = from_si(1.0, "mm") * root_diameter_m, from_si(length_m, "mm")
     factor = BALL_SCREW_FIXITY_FACTOR[end_fixity]
     return HIWIN_CRITICAL_SPEED_RPM_MM * factor * root_mm / length_mm**2
+
+
+@formula(
+    "n_c = n_beam, a ball screw's min(n_beam, n_k)",
+    "the beam (Blevins table 8-1); a ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27",
+)
+def rated_critical_speed_rpm(
+    root_diameter_m: Any,
+    length_m: float,
+    youngs_modulus_pa: Any,
+    density_kg_m3: Any,
+    end_fixity: str,
+    ball: Any,
+    shaft: tuple[Any, Any] | None = None,
+) -> Any:
+    """The critical speed a screw is rated at [rpm]: the beam's (``critical_speed_rpm``,
+    ``shaft`` its terms when already worked out), and where ``ball`` (a ball screw) the
+    lower of that and its maker's (``ball_screw_critical_speed_rpm``), so never above
+    HIWIN's. Numbers or arrays alike.
+
+    >>> round(float(rated_critical_speed_rpm(0.01732, 1.0, 207e9, 7800.0, "fixed-free", True)), 1)
+    690.0
+    """
+    beam = critical_speed_rpm(
+        root_diameter_m, length_m, youngs_modulus_pa, density_kg_m3, end_fixity, shaft
+    )
+    if not np.any(ball):
+        return beam
+    hiwin = ball_screw_critical_speed_rpm(root_diameter_m, length_m, end_fixity)
+    return np.where(ball, np.minimum(beam, hiwin), beam)
 
 
 @formula("n = SF x n_c", "Thomson (80 % of critical)")
