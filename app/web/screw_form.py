@@ -12,18 +12,17 @@ named materials or 'custom', which takes the ``MaterialIn`` fields.
 import math
 from collections.abc import Container, Mapping
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any, get_args
 
 from pydantic import BaseModel, ValidationError
 
 from app.contract import screw_fields
-from app.contract.exact import PLAIN_MESSAGES, decimal_text, read_exact
+from app.contract.exact import PLAIN_MESSAGES, link_number, page_value
 from app.contract.figures import bound_sig, sig
 from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, encode_query, unit_key
 from app.contract.input_field import InputField
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
-from app.contract.units import DEFAULT_UNITS, Quantity, display_system, label, si_to_api
+from app.contract.units import DEFAULT_UNITS, Quantity, label, si_to_api
 from app.core.model import ScrewSpec
 
 #: the material choice that takes the user's own modulus, density and yield strength.
@@ -49,11 +48,10 @@ class ScrewField:
         """The unit the field is typed and shown in: 'in' for a length in inches."""
         return self.unit if self.quantity is None else label(self.quantity, dict(units))
 
-    def factor(self, units: Mapping[str, str]) -> Fraction:
-        """The exact factor from the display unit to the API unit (25.4 for inches)."""
-        if self.quantity is None:
-            return Fraction(1)
-        return Fraction(repr(display_system({**DEFAULT_UNITS, **units})[self.quantity][1]))
+    @property
+    def row(self) -> InputField:
+        """The field table's row of this number (``app.contract.screw_fields``)."""
+        return screw_fields.BY_NAME[self.name]
 
 
 def _page_field(row: InputField) -> ScrewField:
@@ -83,7 +81,7 @@ def _message(error: Mapping[str, Any], units: Mapping[str, str]) -> str:
         if field is None:
             return template.format(bound=sig(bound))
         unit = field.display_unit(units)
-        figure = bound_sig(bound / float(field.factor(units)), key in LOWER_BOUNDS)
+        figure = bound_sig(field.row.display_value(bound, units), key in LOWER_BOUNDS)
         shown = figure + (f" {unit}" if unit else "")
         return template.format(bound=shown)
     if kind in PLAIN_MESSAGES:
@@ -105,13 +103,10 @@ def _numbers(
         raw = params.get(field.name, "").strip()
         if not raw:
             continue
-        number, error = read_exact(raw)
-        if number is None:
-            errors[field.name] = error
-        elif isinstance(number, float):
-            data[field.name] = number * float(field.factor(units))
-        else:
-            data[field.name] = float(number * field.factor(units))
+        try:  # the exact number times the unit's factor, rounded once
+            data[field.name] = page_value(field.row, raw, units)
+        except ValueError as error:
+            errors[field.name] = str(error)
     return data, errors
 
 
@@ -160,7 +155,7 @@ def _value_text(field: ScrewField | None, value: float, units: Mapping[str, str]
     fewest figures that read back to it), else to 6 figures in the API's unit."""
     if field is None or field.quantity is None:
         return f"{value:.6g}"
-    return decimal_text(value, field.factor(units))
+    return link_number(field.row, value, units)
 
 
 def screw_values(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS) -> dict[str, str]:
@@ -207,13 +202,13 @@ def convert_screw(
         if field.quantity is None or not raw:
             continue
         key = unit_key(field.quantity)
-        number, _ = read_exact(raw)
-        if entered[key] != units[key] and number is not None:
-            typed = {**DEFAULT_UNITS, **entered}
-            factor = field.factor(typed)
-            exact = isinstance(number, Fraction)
-            value = float(number * factor) if exact else float(number) * float(factor)
-            converted[field.name] = decimal_text(value, field.factor({**DEFAULT_UNITS, **units}))
+        if entered[key] == units[key]:
+            continue
+        try:
+            value = page_value(field.row, raw, entered)
+        except ValueError:  # no number: kept as typed, for its field's message
+            continue
+        converted[field.name] = link_number(field.row, value, units)
     return converted
 
 
@@ -279,5 +274,5 @@ def catalog_screw_query(
 def _shown(name: str, value: float, units: Mapping[str, str]) -> str:
     """A catalog screw's API value in the field's display unit, to 6 figures."""
     field = BY_NAME.get(name)
-    factor = 1.0 if field is None else float(field.factor(units))
-    return f"{value / factor:.12g}"
+    shown = value if field is None else field.row.display_value(value, units)
+    return f"{shown:.12g}"
