@@ -79,6 +79,14 @@ FIELDS: tuple[InputField, ...] = (
         kind="number", default=1000.0, bounds=(0.0, 1e6), dimension="accel",
     ),
     InputField(
+        api="guide_friction", page="guide_friction", core="guide_friction",
+        label="Guide friction", help="Friction coefficient of the guides that carry the "
+        "moving mass on a horizontal axis: the nut also pushes μ m g while moving. Ball "
+        "profile rail carriages 0.002–0.003, roller 0.001–0.002 (Thomson), seals' drag "
+        "besides; plain sliding guides far more. 0 counts none (or give it in the load)",
+        group="Motion and load", kind="number", default=0.0, bounds=(0.0, 1.0),
+    ),
+    InputField(
         api="compression", page="compression", core="compression", label="Thrust bearing",
         help="Compression up: the thrust bearing at the end the nut leaves going up (out); "
         "tension up: at the end it approaches. Only a pushed screw can buckle; a reversing "

@@ -102,6 +102,9 @@ class Application:
     moving_mass_kg: float = 0.0
     end_fixity: EndFixity = "fixed-simple"
     orientation: Orientation = "horizontal"
+    #: The friction coefficient of the guides that carry the moving mass's weight on a
+    #: horizontal axis [-] (``motion.guide_friction_n``; 0: none counted).
+    guide_friction: float = 0.0
     #: True: a nut force up (out) pushes the screw onto its thrust bearing (the bearing at
     #: the end the nut leaves on the up or out move); False: it pulls the screw.
     compression: bool = True

@@ -287,6 +287,30 @@ def steady_load(app: Application) -> float:
 Form = tuple[float, float]
 
 
+@formula(
+    "F_guide = mu_g m g on a horizontal axis, 0 on a vertical one",
+    "Coulomb friction of the guides; Thomson, profile rail carriages: mu 0.002-0.003 (ball)",
+)
+def guide_friction_n(app: Application, mass_kg: float) -> float:
+    """The friction of the guides on a moving mass of ``mass_kg`` [N]: mu_g m g, with mu_g
+    the guides' friction coefficient (``Application.guide_friction``), on a horizontal
+    axis, whose guides carry the weight; 0 on a vertical one, whose guides carry none of
+    it. It opposes the motion: the nut pushes it along with the load. Thomson gives
+    0.002-0.003 for ball profile rail carriages and 0.001-0.002 for roller ones, their
+    seals' drag besides (thomsonlinear.com, "What is the coefficient of friction for
+    profile rail carriages?").
+
+    80 kg on ball carriages at 0.003: 0.003 x 80 x 9.80665 = 2.354 N.
+
+    >>> round(guide_friction_n(Application(load_n=0.0, speed_m_s=0.1, length_m=1.0,
+    ...     guide_friction=0.003), 80.0), 3)
+    2.354
+    """
+    if app.orientation == "vertical":
+        return 0.0
+    return app.guide_friction * mass_kg * STANDARD_GRAVITY_M_S2
+
+
 def _move_forms(app: Application, move: Move) -> list[Form]:
     """The nut force of the accelerate, constant and decelerate segments of ``move`` as
     forms in the load (``nut_force_forms``); a move of the user's own carries its own
@@ -294,25 +318,27 @@ def _move_forms(app: Application, move: Move) -> list[Form]:
     weight = move.moving_mass_kg * STANDARD_GRAVITY_M_S2 if app.orientation == "vertical" else 0.0
     fixed, opposing = load_sense(app, move)
     v = sense(move)
+    guides = v * guide_friction_n(app, move.moving_mass_kg)
     forms: list[Form] = []
     for _, sign in RAMPS:
         rate = move.accel_m_s2 if sign > 0 else move.decel_m_s2
-        g = move.moving_mass_kg * v * sign * rate + weight
+        g = move.moving_mass_kg * v * sign * rate + weight + guides
         h = fixed + v * opposing
         forms.append((g + h * move.load_n, 0.0) if app.moves else (g, h))
     return forms
 
 
 @formula(
-    "F_nut = m x'' + W + F (s_fixed + v o_opposing)",
+    "F_nut = m x'' + W + v F_guide + F (s_fixed + v o_opposing)",
     "Newton's second law on the moving mass; the load's direction",
 )
 def nut_force_forms(app: Application) -> list[Form]:
     """The force the nut exerts on the moving mass along the axis (up or out positive) in
     each moving segment of every move of the cycle (``cycle``), and at rest, as a linear
-    form in the load F: F_nut = m x'' + W + F (s + v o), with x'' the segment's
-    acceleration along the axis (+a, 0, -d moving up or out; -a, 0, +d moving down or
-    back), W = m g on a vertical axis, v = +1 up or out and -1 down or back, and
+    form in the load F: F_nut = m x'' + W + v F_guide + F (s + v o), with x'' the
+    segment's acceleration along the axis (+a, 0, -d moving up or out; -a, 0, +d moving
+    down or back), W = m g on a vertical axis, F_guide the guides' friction on a
+    horizontal one (``guide_friction_n``), v = +1 up or out and -1 down or back, and
     (s, o) = (1, 0) for a load of fixed direction (a weight, spring or press: against the
     up or out move) or (0, 1) for one that opposes the motion both ways (friction,
     cutting) (``load_sense``). At rest F_nut = W + F s: once for out and back, after each

@@ -33,17 +33,20 @@ from app.core.table import Array, CandidateTable, filled
 V = TypeVar("V")
 
 
-@formula("F = load (+ m g when vertical), the running thrust", "statics")
+@formula(
+    "F = load (+ m g when vertical, + mu_g m g when horizontal), the running thrust", "statics"
+)
 def axial_load(app: Application, lead: Move | None = None) -> float:
     """Running thrust on the nut at constant speed [N]: the load, plus m g when vertical
-    (on the up move, or on the move against a load of fixed direction); in a cycle of the
-    user's own moves, the top-speed thrust of the move that starts hardest
+    (on the up move, or on the move against a load of fixed direction) or the guides'
+    friction when horizontal (``motion.guide_friction_n``, on the out move); in a cycle
+    of the user's own moves, the top-speed thrust of the move that starts hardest
     (``motion.lead_move``; ``lead``: that move when already worked out)."""
     if app.moves:
         return motion.running_thrust(app, motion.lead_move(app) if lead is None else lead)
     if app.orientation == "vertical":
         return app.load_n + app.moving_mass_kg * STANDARD_GRAVITY_M_S2
-    return app.load_n
+    return app.load_n + motion.guide_friction_n(app, app.moving_mass_kg)
 
 
 @formula("F_peak = max |F_nut| over the segments of both moves and at rest", "Newton's second law")
