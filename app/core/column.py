@@ -44,7 +44,8 @@ def column_length(app: Application) -> float:
 def column_limits(
     app: Application, t: CandidateTable, peak_n: float, torques: dict[str, Any]
 ) -> dict[str, Any]:
-    """Critical speed over the screw's length (a ball screw's at most its maker's,
+    """Critical speed over the screw's length (never above its makers' rating, a
+    leadscrew's Thomson's and Roton's, a ball screw's HIWIN's:
     ``critical_speed.rated_critical_speed_rpm``), and the screw as a column (its span from
     the thrust bearing to the nut) under the peak thrust: Euler when slender, Johnson's
     parabola when short, and the stress at the root under the peak thrust and the torque

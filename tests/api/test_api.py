@@ -650,16 +650,18 @@ MATERIALS: dict[str, tuple[Any, float, float, str]] = {
 def test_evaluate_custom_screw_per_material(api: Api, material: str) -> None:
     """Critical speed and Euler load follow the material's E and rho.
 
-    n_c = 60 / (2 pi) (beta / L)^2 sqrt(E / rho) d_r / 4, beta = 3.92660 fixed-simple
-    (Blevins, Formulas for natural frequency and mode shape, table 8-1);
-    F_cr = k pi^2 E (pi d_r^4 / 64) / L^2, k = 2 fixed-simple (Timoshenko & Gere).
+    A leadscrew fixed-simple is rated as its makers rate it (Thomson, Roton): n_c = C_s
+    n_ss, C_s = 1.47, with the simple-simple beam n_ss = 60 / (2 pi) (pi / L)^2 sqrt(E /
+    rho) d_r / 4 (Blevins, Formulas for natural frequency and mode shape, table 8-1,
+    beta = pi); F_cr = k pi^2 E (pi d_r^4 / 64) / L^2, k = 2 fixed-simple (Timoshenko &
+    Gere).
     """
     value, e, rho, kind = MATERIALS[material]
     candidate = evaluate(api, {**CUSTOM_SCREW, "material": value})["candidate"]
     assert_candidate(candidate)
     assert candidate["id"] == "custom"
     d_r, length = 9.906e-3, 0.5
-    n_c = 60 / (2 * math.pi) * (3.92660 / length) ** 2 * math.sqrt(e / rho) * d_r / 4
+    n_c = 1.47 * 60 / (2 * math.pi) * (math.pi / length) ** 2 * math.sqrt(e / rho) * d_r / 4
     f_cr = 2 * math.pi**2 * e * (math.pi * d_r**4 / 64) / length**2
     assert math.isclose(candidate["critical_speed"]["theoretical_rpm"], n_c, rel_tol=1e-9)
     assert math.isclose(candidate["buckling"]["critical_load_n"], f_cr, rel_tol=1e-9)

@@ -408,27 +408,39 @@ def test_the_holding_torque_a_brake_is_sized_on_is_reported(client: TestClient) 
     assert hold["physics_with_margin_nm"] == pytest.approx(0.428, abs=1e-3)
 
 
-def test_a_leadscrew_passing_above_the_makers_fixity_table_says_so(client: TestClient) -> None:
-    """Tr16x4 bronze, 1.5 m, fixed-simple: the beam allows 0.8 x 969 = 775 rpm. Thomson's
-    and Roton's factor 1.47 (the beam's 1.562) allows 730 rpm. At 49.3 mm/s (740 rpm)
-    the check passes on the beam's figure, and its message says the makers' tables put
-    the speed above theirs; at 40 mm/s (600 rpm) below. A ball screw's makers (THK,
-    MISUMI) rate with the beam's factors: no such sentence."""
+def test_a_leadscrew_between_its_makers_and_the_beams_speed_fails(client: TestClient) -> None:
+    """Tr16x4 bronze, 1.5 m, fixed-simple: its makers (Thomson, Roton) rate these ends
+    C_s = 1.47 times simple-simple, 1.47 x 620.4 = 912.0 rpm, allowed 0.8 x 912.0 = 729.6
+    rpm; the beam's (3.92660 / pi)^2 = 1.562 would allow 0.8 x 969.2 = 775.4 rpm. At 49.3
+    mm/s (60 x 49.3 / 4 = 739.5 rpm, between the two) the check fails, its message naming
+    the makers' factor; at 40 mm/s (600 rpm) it passes. Fixed-fixed: C_s 2.23 allows 0.8
+    x 2.23 x 620.4 = 1106.8 rpm (the beam's 2.267, 1125.0): 74.3 mm/s (1114.5 rpm) fails.
+    Simple-simple the makers' factor is the beam's (1.0), and a ball screw is rated at
+    most at HIWIN's: no leadscrew makers' sentence."""
+    # Tr16x4: ISO 2904 root d3 = 16 - 4 - 2 x 0.25 = 11.5 mm, carbon steel E 207 GPa,
+    # rho 7800 kg/m^3, over 1.5 m simple-simple (Blevins table 8-1, beta = pi)
+    n_ss = 60 / (2 * math.pi) * (math.pi / 1.5) ** 2 * math.sqrt(207e9 / 7800) * 0.0115 / 4
+    assert n_ss == pytest.approx(620.4, abs=0.05)
     axis = {"load_n": 50, "length_mm": 1500, "end_fixity": "fixed-simple"}
     fast = check(evaluate(client, "Tr16x4-bronze", **axis, speed_mm_s=49.3), "critical_speed")
-    assert fast["passed"] and fast["limit"] == pytest.approx(775.0, abs=1.0)
-    assert (
-        "1.47 times simple-simple: 730 rpm allowed by them, which the speed is above"
-        in (fast["message"])
-    )
+    allowed = 0.8 * 1.47 * n_ss
+    assert allowed == pytest.approx(729.6, abs=0.05)
+    assert allowed < 60 * 49.3 / 4 < 0.8 * (3.92660 / math.pi) ** 2 * n_ss
+    assert not fast["passed"]
+    assert fast["limit"] == pytest.approx(allowed, rel=1e-6)
+    assert "C_s 1.47 times simple-simple, 5.9 % below the beam's" in fast["message"]
     slow = check(evaluate(client, "Tr16x4-bronze", **axis, speed_mm_s=40), "critical_speed")
-    assert "730 rpm allowed by them, which the speed is below" in slow["message"]
+    assert slow["passed"] and slow["limit"] == pytest.approx(allowed, rel=1e-6)
+    assert "C_s 1.47 times simple-simple" in slow["message"]
+    fixed = {**axis, "end_fixity": "fixed-fixed"}
+    both = check(evaluate(client, "Tr16x4-bronze", **fixed, speed_mm_s=74.3), "critical_speed")
+    allowed_ff = 0.8 * 2.23 * n_ss
+    assert allowed_ff < 60 * 74.3 / 4 < 0.8 * (4.73004 / math.pi) ** 2 * n_ss
+    assert not both["passed"] and both["limit"] == pytest.approx(allowed_ff, rel=1e-6)
+    assert "C_s 2.23 times simple-simple, 1.6 % below the beam's" in both["message"]
     simple = {**axis, "end_fixity": "simple-simple"}
-    assert (
-        "Leadscrew makers"
-        not in check(evaluate(client, "Tr16x4-bronze", **simple, speed_mm_s=20), "critical_speed")[
-            "message"
-        ]
-    )
+    plain = check(evaluate(client, "Tr16x4-bronze", **simple, speed_mm_s=20), "critical_speed")
+    assert plain["limit"] == pytest.approx(0.8 * n_ss, rel=1e-6)
+    assert "leadscrew makers" not in plain["message"]
     ball = check(evaluate(client, "R16-10K3-FSCDIN", **axis, speed_mm_s=100), "critical_speed")
-    assert ball["passed"] and "Leadscrew makers" not in ball["message"]
+    assert ball["passed"] and "leadscrew makers" not in ball["message"]

@@ -53,15 +53,40 @@ def test_end_fixity_factor_is_beta_over_pi_squared(fixity: str, beta_over_pi_sq:
 )
 def test_thomson_end_fixity_factors(fixity: str, thomson_cs: float, rel: float) -> None:
     """Thomson training page "Screw critical speed" end fixity factors C_s 0.36 / 1.00 /
-    1.47 / 2.23 (also fxsolver "Critical speed for a leadscrew"). The core uses the beam
-    eigenvalues, (beta/pi)^2 = 0.356 / 1 / 1.562 / 2.267: Thomson's fixed-simple factor is
-    6 % and its fixed-fixed factor 2 % below theory, so the core is that much less
-    conservative there (engineering.md section 4 lists both columns). Tolerance per row is
-    the measured gap; the core must never fall below Thomson by more than rounding."""
+    1.47 / 2.23 (also fxsolver "Critical speed for a leadscrew"). The beam's eigenvalues
+    give (beta/pi)^2 = 0.356 / 1 / 1.562 / 2.267: Thomson's fixed-simple factor is 6 % and
+    its fixed-fixed factor 2 % below the beam's, which is that much less conservative
+    there (engineering.md section 4 lists both columns; a leadscrew is rated at the lower,
+    ``test_a_leadscrews_rating_is_thomsons``). Tolerance per row is the measured gap; the
+    beam must never fall below Thomson by more than rounding."""
     n_fix = cs.critical_speed_rpm(1 * IN, 100 * IN, STEEL_E, STEEL_RHO, fixity)
     thomson = thomson_cs * 4.76e6 * 1.0 / 100.0**2
     assert n_fix == pytest.approx(thomson, rel=rel)
     assert n_fix >= thomson * 0.985
+
+
+@pytest.mark.parametrize(
+    ("fixity", "thomson_cs"),
+    [
+        pytest.param("fixed-free", 0.36, id="fixed-free-0.36"),
+        pytest.param("simple-simple", 1.00, id="simple-simple-1.00"),
+        pytest.param("fixed-simple", 1.47, id="fixed-simple-1.47"),
+        pytest.param("fixed-fixed", 2.23, id="fixed-fixed-2.23"),
+    ],
+)
+def test_a_leadscrews_rating_is_thomsons(fixity: str, thomson_cs: float) -> None:
+    """A leadscrew (not a ball screw) is rated at the lower of the beam's and Thomson's
+    C_s x 4.76e6 d_r / L^2 [rpm, in]: 1 in root, 100 in, C_s x 476 rpm, within 1 % (the
+    steel's E / rho against Thomson's constant) and never above it (fixed-free: the beam's
+    0.356 is below Thomson's 0.36). Fixed-simple: the simple-simple beam's 475.2 rpm x
+    1.47 = 698.5 rpm against Thomson's 1.47 x 476 = 699.7 rpm."""
+    rated = cs.rated_critical_speed_rpm(1 * IN, 100 * IN, STEEL_E, STEEL_RHO, fixity, False)
+    thomson = thomson_cs * 4.76e6 * 1.0 / 100.0**2
+    assert rated == pytest.approx(thomson, rel=0.015 if fixity == "fixed-free" else 0.01)
+    assert rated <= thomson
+    simple = cs.critical_speed_rpm(1 * IN, 100 * IN, STEEL_E, STEEL_RHO, "simple-simple")
+    beam = cs.critical_speed_rpm(1 * IN, 100 * IN, STEEL_E, STEEL_RHO, fixity)
+    assert rated == pytest.approx(min(beam, thomson_cs * simple), rel=1e-12)
 
 
 def test_misumi_allowable_rotational_speed_example() -> None:
@@ -171,6 +196,34 @@ def test_min_root_diameter_remedy_brings_utilization_to_one(
     d_min = cs.min_root_diameter_for_speed(d, n_allowed, rpm)
     at_min = cs.allowed_speed_rpm(cs.critical_speed_rpm(d_min, length, 193e9, 8e3, fixity), sf)
     assert rpm / at_min == pytest.approx(1.0, rel=1e-9)
+
+
+@given(
+    d=diameters,
+    length=lengths,
+    fixity=fixities,
+    rpm=operating,
+    ball=st.booleans(),
+    scale=st.floats(0.3, 3.0),
+)
+def test_the_rated_speed_keeps_the_remedies_scaling(
+    d: float, length: float, fixity: str, rpm: float, ball: bool, scale: float
+) -> None:
+    """The rating's makers' factor is constant for an end fixity (a leadscrew's C_s, a
+    ball screw's HIWIN f_n, each against the beam's d_r / L^2), so the rated speed keeps
+    n_c ~ d_r / L^2: the shortest-length and the least-root remedies bring the rated
+    utilisation to one."""
+
+    def rated(d_r: float, span: float) -> float:
+        n_c = cs.rated_critical_speed_rpm(d_r, span, 207e9, 7800.0, fixity, ball)
+        return cs.allowed_speed_rpm(float(n_c), 0.8)
+
+    n_allowed = rated(d, length)
+    l_max = cs.max_length_for_speed(length, n_allowed, rpm)
+    assert rpm / rated(d, l_max) == pytest.approx(1.0, rel=1e-9)
+    d_min = cs.min_root_diameter_for_speed(d, n_allowed, rpm)
+    assert rpm / rated(d_min, length) == pytest.approx(1.0, rel=1e-9)
+    assert rated(d, scale * length) == pytest.approx(n_allowed / scale**2, rel=1e-9)
 
 
 @given(speed=st.floats(1e-3, 1.0), n_allowed=allowed)

@@ -147,21 +147,23 @@ def test_every_option_is_offered_and_kept(catalog: Catalog) -> None:
 
 
 def test_a_mounting_short_of_the_margin_is_not_proposed(catalog: Catalog) -> None:
-    """The issue's case: a 600 mm fixed-simple screw whirling at 1.4356 of its allowed
-    speed. Fixed-fixed raises the critical speed by (beta_ff / beta_fs)^2 = (4.730 /
-    3.927)^2 = 1.4508 (Blevins table 8-1), leaving 1.4356 / 1.4508 = 0.9895: above 1 / 1.05
-    = 0.9524, so the fix must not propose it, and the length it brackets is the
-    fixed-simple one, 0.95 x 600 / sqrt(1.4356) = 475.7 mm."""
+    """The issue's case: a 600 mm fixed-simple leadscrew whirling at 1.46 of its allowed
+    speed. Its makers (Thomson, Roton) rate fixed-simple at C_s 1.47 and fixed-fixed at
+    2.23 times simple-simple, so fixed-fixed raises the critical speed by 2.23 / 1.47 =
+    1.5170, leaving 1.46 / 1.5170 = 0.9624: above 1 / 1.05 = 0.9524, so the fix must not
+    propose it, and the length it brackets is the fixed-simple one, 0.95 x 600 /
+    sqrt(1.46) = 471.7 mm."""
     screw = catalog.by_id["ZBX8000-L10"]
     base = light_app(length_m=0.6, end_fixity="fixed-simple")
-    n_c = critical_speed.critical_speed_rpm(
-        screw.root_diameter_m, 0.6, screw.youngs_modulus_pa, screw.density_kg_m3, "fixed-simple"
+    simple = critical_speed.critical_speed_rpm(
+        screw.root_diameter_m, 0.6, screw.youngs_modulus_pa, screw.density_kg_m3, "simple-simple"
     )
-    rpm = 1.4356 * 0.8 * n_c
+    rpm = 1.46 * 0.8 * 1.47 * simple
     app = replace(base, speed_m_s=rpm / 60.0 * screw.lead_m)
-    assert utilization(app, screw, "critical_speed") == pytest.approx(1.4356, rel=1e-6)
+    assert utilization(app, screw, "critical_speed") == pytest.approx(1.46, rel=1e-6)
     fixed_fixed = utilization(replace(app, end_fixity="fixed-fixed"), screw, "critical_speed")
-    assert fixed_fixed == pytest.approx(0.9895, abs=5e-4)
+    assert fixed_fixed == pytest.approx(1.46 * 1.47 / 2.23, rel=1e-6)
+    assert fixed_fixed == pytest.approx(0.9624, abs=5e-4)
     result = next(c for c in evaluate(app, screw).checks if c.name == "critical_speed")
     assert result.fix is not None
     text = render(result.fix)
@@ -169,26 +171,29 @@ def test_a_mounting_short_of_the_margin_is_not_proposed(catalog: Catalog) -> Non
     assert "add an intermediate support" in text
     length = result.fix.values["length"]
     assert isinstance(length, Amount)
-    assert length.value == pytest.approx(0.4757, abs=5e-5)
+    assert length.value == pytest.approx(0.95 * 0.6 / 1.46**0.5, abs=5e-5)
+    assert length.value == pytest.approx(0.4717, abs=5e-5)
     assert "with the ends fixed-simple" in text
 
 
 def test_a_mounting_that_keeps_the_margin_brackets_its_own_length(catalog: Catalog) -> None:
-    """At 1.30 x the allowed speed fixed-fixed leaves 1.30 / 1.4508 = 0.896, within the
-    margin: it is proposed, with its own longest length, 0.95 x 600 x sqrt(1.4508 / 1.30)
-    = 602.2 mm, and the fixed-simple length 0.95 x 600 / sqrt(1.30) = 499.9 mm beside it."""
+    """At 1.30 x the allowed speed of a fixed-simple leadscrew (its makers' C_s 1.47 times
+    simple-simple), fixed-fixed (their 2.23) leaves 1.30 x 1.47 / 2.23 = 0.857, within the
+    margin: it is proposed, with its own longest length, 0.95 x 600 x sqrt(2.23 / 1.47 /
+    1.30) = 615.7 mm, and the fixed-simple length 0.95 x 600 / sqrt(1.30) = 499.9 mm
+    beside it."""
     screw = catalog.by_id["ZBX8000-L10"]
-    n_c = critical_speed.critical_speed_rpm(
-        screw.root_diameter_m, 0.6, screw.youngs_modulus_pa, screw.density_kg_m3, "fixed-simple"
+    simple = critical_speed.critical_speed_rpm(
+        screw.root_diameter_m, 0.6, screw.youngs_modulus_pa, screw.density_kg_m3, "simple-simple"
     )
-    app = light_app(length_m=0.6, speed_m_s=1.30 * 0.8 * n_c / 60.0 * screw.lead_m)
+    app = light_app(length_m=0.6, speed_m_s=1.30 * 0.8 * 1.47 * simple / 60.0 * screw.lead_m)
     result = next(c for c in evaluate(app, screw).checks if c.name == "critical_speed")
     assert result.fix is not None
     assert result.fix.values["stiffer"] == "fixed-fixed"
     stiffer_length, length = result.fix.values["stiffer_length"], result.fix.values["length"]
     assert isinstance(stiffer_length, Amount) and isinstance(length, Amount)
-    ratio = (critical_speed.END_FIXITY_BETA["fixed-fixed"] / 3.9266) ** 2
-    assert ratio == pytest.approx(1.4508, rel=1e-3)
+    ratio = 2.23 / 1.47
+    assert ratio == pytest.approx(1.5170, rel=1e-4)
     assert stiffer_length.value == pytest.approx(0.95 * 0.6 * (ratio / 1.30) ** 0.5, rel=1e-4)
     assert length.value == pytest.approx(0.95 * 0.6 / 1.30**0.5, rel=1e-4)
     assert brackets_agree(render(result.fix))

@@ -50,7 +50,9 @@ J_SCREW = 3.67e-7 / 0.0254 * L
 T_MASS = 2.0 * 1.0 * LEAD / (2 * math.pi * ETA)  # m a through the thread
 TOTAL = J_SCREW * ALPHA + T_MASS + 0.04 + F * LEAD / (2 * math.pi * ETA)
 BREAK = PEAK * LEAD / (2 * math.pi * ETA_S) + J_SCREW * ALPHA + 0.04  # from rest
-N_C = (3.9266 / L) ** 2 * math.sqrt(E / RHO) * RD / 4 * 60 / (2 * math.pi)
+# a leadscrew's critical speed as its makers rate it (Thomson, Roton): C_s 1.47 times the
+# simple-simple beam's (beta = pi) fixed-simple, below the beam's (3.9266 / pi)^2 = 1.562
+N_C = 1.47 * (math.pi / L) ** 2 * math.sqrt(E / RHO) * RD / 4 * 60 / (2 * math.pi)
 S_Y = 240e6  # 303 annealed
 SLENDER = (L / math.sqrt(2)) / (RD / 4)  # 171, above sqrt(2 pi^2 E / S_y) = 126: Euler
 F_CR = 2 * math.pi**2 * E * (math.pi * RD**4 / 64) / L**2

@@ -23,6 +23,10 @@ IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
 LBF, INCH, OZ_IN = 4.4482216152605, 25.4, 0.0070615518142260435  # N, mm, N m (NIST SP 811)
 
 
+#: Thomson's and Roton's end fixity factors C_s, times simple-simple, for a leadscrew.
+THOMSON_CS = {"fixed-free": 0.36, "simple-simple": 1.0, "fixed-simple": 1.47, "fixed-fixed": 2.23}
+
+
 def plain(result: SelectOut) -> dict[str, Any]:
     """The result as the API serves it (plain JSON values) for assertions."""
     data: dict[str, Any] = json.loads(result.model_dump_json())
@@ -89,12 +93,22 @@ def test_critical_speed_draws_one_line_per_distinct_curve(
                 screw.density_kg_m3,
                 fixity,
             )
-            # a ball screw's at most its maker's (HIWIN F 3.27)
+            # a ball screw's at most its maker's (HIWIN F 3.27), a leadscrew's at most its
+            # makers' (Thomson, Roton: C_s times simple-simple)
             if screw.screw_type == "ball":
                 hiwin = ball_screw_critical_speed_rpm(
                     screw.root_diameter_m, length_mm / 1e3, fixity
                 )
                 beam = min(beam, hiwin)
+            else:
+                simple = critical_speed_rpm(
+                    screw.root_diameter_m,
+                    length_mm / 1e3,
+                    screw.youngs_modulus_pa,
+                    screw.density_kg_m3,
+                    "simple-simple",
+                )
+                beam = min(beam, THOMSON_CS[fixity] * simple)
             expected = factor * beam
             assert rpm == pytest.approx(expected, rel=1e-3)
 

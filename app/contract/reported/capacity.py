@@ -49,7 +49,9 @@ ROWS: tuple[Reported, ...] = (
         csv=True,
         formula=Formula(critical_speed.allowed_speed_rpm),
     ),
-    Reported("critical_speed.theoretical_rpm", formula=Formula(critical_speed.critical_speed_rpm)),
+    Reported(
+        "critical_speed.theoretical_rpm", formula=Formula(critical_speed.rated_critical_speed_rpm)
+    ),
     Reported(
         "utilization.pv",
         "PV used",

@@ -43,11 +43,13 @@ class CriticalSpeed(Check):
     quantity = "rpm"
     formula = (
         "n = 60 * v / lead; "
-        "n_allowed = SF * min(60 / (2 * pi) * (beta / L)^2 * sqrt(E / rho) * d_r / 4, n_H)"
+        "n_allowed = SF * min(60 / (2 * pi) * min(beta^2, C_s * pi^2) / L^2 * sqrt(E / rho) "
+        "* d_r / 4, n_H)"
     )
     source = (
-        "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; Thomson; a ball "
-        "screw at most HIWIN BS-08-2-EN-1704-K F 3.27 (n_H)"
+        "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; a leadscrew at "
+        "most Thomson's and Roton's end fixity factor C_s times simple-simple; a ball screw "
+        "at most HIWIN BS-08-2-EN-1704-K F 3.27 (n_H)"
     )
     sources = ("root_diameter", "youngs_modulus", "density")
     capacity_sources = ("root_diameter", "youngs_modulus", "density")
@@ -67,7 +69,9 @@ class CriticalSpeed(Check):
             "E": t.youngs_modulus_pa,
             "rho": t.density_kg_m3,
             "d_r": t.root_diameter_m,
-            # a ball screw's at most HIWIN's F 3.27; a leadscrew's the beam's
+            # a leadscrew's at most its makers' C_s times simple-simple (pi^2), a ball
+            # screw's at most HIWIN's F 3.27
+            "C_s": np.where(t.ball, np.inf, critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]),
             "n_H": np.where(
                 t.ball,
                 critical_speed.ball_screw_critical_speed_rpm(
@@ -100,17 +104,14 @@ class CriticalSpeed(Check):
                 )
             return Phrase(text, values)
         ratio = critical_speed.makers_table_ratio(app.end_fixity)
-        if not passed or ratio >= 1.0:
+        if ratio >= 1.0:
             return Phrase(text, values)
-        # a leadscrew maker's table rates these ends below the beam: say where a pass stands
-        table = r.column.allowed_rpm * ratio
-        values["table"] = Amount(table, "rpm")
+        # leadscrew makers' tables rate these ends below the beam: the rating is theirs
         values["cs"] = f"{critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]:g}"
-        values["lower"] = f"{(1.0 - ratio) * 100.0:.0f} %"
-        side = "below" if r.axis.rpm <= table else "above"
+        values["lower"] = f"{(1.0 - ratio) * 100.0:.1f} %"
         text += (
-            " Leadscrew makers' tables (Thomson, Roton) rate these ends {lower} lower, "
-            "{cs} times simple-simple: {table} allowed by them, which the speed is " + side + "."
+            " Its critical speed is the leadscrew makers' (Thomson, Roton) for these ends: "
+            "C_s {cs} times simple-simple, {lower} below the beam's."
         )
         return Phrase(text, values)
 

@@ -2,8 +2,10 @@
 
 omega_c = (beta / L)^2 sqrt(E I / (rho A)) with I / A = d_r^2 / 16 for a round shaft of
 root diameter d_r (Euler-Bernoulli beam, Blevins [5] table 8-1). Reduces to Thomson's
-n_c = 4.76e6 d_r / L^2 [rpm, in] for steel, simple-simple [3]. Arithmetic only: each
-formula accepts floats or NumPy arrays.
+n_c = 4.76e6 d_r / L^2 [rpm, in] for steel, simple-simple [3]. A screw is rated at no more
+than its makers allow (``rated_critical_speed_rpm``): a leadscrew at Thomson's and Roton's
+end fixity factors where they are below the beam's, a ball screw at HIWIN's. Arithmetic
+only: each formula accepts floats or NumPy arrays.
 """
 
 import math
@@ -136,8 +138,9 @@ def ball_screw_critical_speed_rpm(root_diameter_m: Any, length_m: float, end_fix
 
 
 @formula(
-    "n_c = n_beam, a ball screw's min(n_beam, n_k)",
-    "the beam (Blevins table 8-1); a ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27",
+    "n_c = min(n_beam, C_s n_ss), a ball screw's min(n_beam, n_k)",
+    "the beam (Blevins table 8-1); a leadscrew at most Thomson's and Roton's end fixity "
+    "factors C_s; a ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27",
 )
 def rated_critical_speed_rpm(
     root_diameter_m: Any,
@@ -148,21 +151,31 @@ def rated_critical_speed_rpm(
     ball: Any,
     shaft: tuple[Any, Any] | None = None,
 ) -> Any:
-    """The critical speed a screw is rated at [rpm]: the beam's (``critical_speed_rpm``,
-    ``shaft`` its terms when already worked out), and where ``ball`` (a ball screw) the
-    lower of that and its maker's (``ball_screw_critical_speed_rpm``), so never above
-    HIWIN's. Numbers or arrays alike.
+    """The critical speed a screw is rated at [rpm], never above its makers': the beam's
+    (``critical_speed_rpm``, ``shaft`` its terms when already worked out) times
+    ``makers_table_ratio`` for a leadscrew (the lower of the beam's and the leadscrew
+    makers' C_s times simple-simple), and where ``ball`` (a ball screw) the lower of the
+    beam's and its maker's (``ball_screw_critical_speed_rpm``). The factor is constant
+    for an end fixity, so the rating keeps the beam's d_r / L^2. Numbers or arrays alike.
 
+    A leadscrew with a 1 in steel root (206 GPa, 7850 kg/m^3) over 100 in, fixed-simple:
+    simple-simple 475.2 rpm (``critical_speed_rpm``) x C_s 1.47 = 698.5 rpm, where the
+    beam's (beta / pi)^2 = 1.562 would give 742.4 rpm:
+
+    >>> n_c = rated_critical_speed_rpm(0.0254, 2.54, 206e9, 7850.0, "fixed-simple", False)
+    >>> round(float(n_c), 1)
+    698.5
     >>> round(float(rated_critical_speed_rpm(0.01732, 1.0, 207e9, 7800.0, "fixed-free", True)), 1)
     690.0
     """
     beam = critical_speed_rpm(
         root_diameter_m, length_m, youngs_modulus_pa, density_kg_m3, end_fixity, shaft
     )
+    leadscrew = beam * makers_table_ratio(end_fixity)
     if not np.any(ball):
-        return beam
+        return leadscrew
     hiwin = ball_screw_critical_speed_rpm(root_diameter_m, length_m, end_fixity)
-    return np.where(ball, np.minimum(beam, hiwin), beam)
+    return np.where(ball, np.minimum(beam, hiwin), leadscrew)
 
 
 @formula("n = SF x n_c", "Thomson (80 % of critical)")
