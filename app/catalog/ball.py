@@ -52,6 +52,7 @@ COLUMNS: Mapping[str, tuple[str, bool]] = {
     "static_load_n": ("N", True),
     "axial_play_mm": ("mm", False),
     "ball_diameter_mm": ("mm", False),
+    "nominal_diameter_mm": ("mm", False),
 }
 NUT_KEYS = frozenset({"id", "name", *COLUMNS})
 #: The leadscrew's nut ratings, which a ball nut does not have (it rolls): their checks
@@ -206,6 +207,7 @@ def _spec(
         dynamic_load_n=ca,
         static_load_n=_row_value(row, "static_load_n"),
         ball_diameter_m=_row_value(row, "ball_diameter_mm"),
+        pitch_circle_diameter_m=_row_value(row, "nominal_diameter_mm"),
         dn_limit_mm_rpm=family.number("dn_limit_mm_rpm"),
         accuracy_grade=family.text("accuracy_grade"),
         temperature_min_c=t_min,
@@ -237,6 +239,7 @@ COLUMN_PROVENANCE = {
     "static_load": "static_load_n",
     "backlash": "axial_play_mm",
     "ball_diameter": "ball_diameter_mm",
+    "pitch_diameter": "nominal_diameter_mm",
 }
 
 

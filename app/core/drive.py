@@ -116,8 +116,11 @@ def motor_point(
 ) -> dict[str, Any]:
     """The motor's view of the move of the cycle ``c`` (``motion.cycle_of``): every
     segment's torque against the curve (the moving ones' ``moving``, from
-    ``segments.moving_torques``). Without a stroke there is no profile: the one point is
-    today's torque at the top speed, ``rpm``."""
+    ``segments.moving_torques``), and the break-away that starts each move from rest
+    (``torques["breakaway_nm"]``: the thread at static friction) against the curve at
+    standstill; the worst of them is index -1 when the break-away governs. Without a
+    stroke there is no profile: the one point is today's torque at the top speed,
+    ``rpm``, the larger of the running torque and the break-away."""
     p = c.fastest
     peak_rpm = worst_rpm = rpm
     nan = filled(len(t), np.nan)
@@ -133,18 +136,23 @@ def motor_point(
         signed = np.array([s.torque_nm for s in parts])
         magnitude = np.abs(signed)
         speeds = np.array([s.rpm for s in parts])
-        load = magnitude / segments.curve_torque(app, speeds) if app.motor_curve else magnitude
+        # the break-away at standstill as one more row: it is read off the curve at 0 rpm
+        start_nm = np.broadcast_to(np.abs(torques["breakaway_nm"]), speeds[0].shape)
+        starting = np.vstack([magnitude, start_nm])
+        at_rest = np.vstack([speeds, np.zeros_like(speeds[0])])
+        load = starting / segments.curve_torque(app, at_rest) if app.motor_curve else starting
         index = load.argmax(axis=0)
         columns = np.arange(len(t))
-        worst_nm, worst_rpm = magnitude[index, columns], speeds[index, columns]
+        worst_nm, worst_rpm = starting[index, columns], at_rest[index, columns]
+        index = np.where(index == len(parts), -1, index)
         peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
         referred = segments.referred_rms(app, parts) if app.motor_rms_curve else rms
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
             fitting = fitting_accel(app, parts, signed, index, worst_rpm)
             fix_accel = fitting_accel(app, parts, signed, index, worst_rpm, 1.0 + FIX_MARGIN)
         if app.motor_curve and not app.moves:
-            fitting_speed = slower_fit(app, magnitude, speeds, p.peak_speed_m_s)
-            fix_speed = slower_fit(app, magnitude, speeds, p.peak_speed_m_s, 1.0 + FIX_MARGIN)
+            fitting_speed = slower_fit(app, starting, at_rest, p.peak_speed_m_s)
+            fix_speed = slower_fit(app, starting, at_rest, p.peak_speed_m_s, 1.0 + FIX_MARGIN)
     curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan
     return {
         "peak_rpm": peak_rpm,

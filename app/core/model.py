@@ -293,6 +293,10 @@ class ScrewSpec:
     dynamic_load_n: float | None = None
     static_load_n: float | None = None
     ball_diameter_m: float | None = None
+    #: A ball screw's pitch circle (ball-centre) diameter d0 [m], its nominal diameter
+    #: (ISO 3408-1), on which its lead angle is taken (None: not given; the lead angle is
+    #: then taken on (OD + RD) / 2).
+    pitch_circle_diameter_m: float | None = None
     dn_limit_mm_rpm: float | None = None
     accuracy_grade: str = ""
     #: a ball nut's axial preload [N] (0: a nut with play; None: not a ball screw)

@@ -381,10 +381,14 @@ class CandidateTable:
             return np.array(list(map(attrgetter(name), screws)), dtype=bool)
 
         od, rd, lead = col("outer_diameter_m"), col("root_diameter_m"), col("lead_m")
-        # a standard thread states its pitch diameter (ISO 2904 d2 = d - 0.5 P); otherwise
-        # the seed's (OD + RD) / 2
+        # a standard thread states its pitch diameter (ISO 2904 d2 = d - 0.5 P), a ball
+        # screw its pitch circle diameter d0 (its nominal diameter, ISO 3408-1; the balls'
+        # centres run above the shaft's outer diameter); otherwise the seed's (OD + RD) / 2
         d2 = col("flank_pitch_diameter_m")
-        d_p = np.where(np.isnan(d2), geometry.pitch_diameter(od, rd), d2)
+        d0 = col("pitch_circle_diameter_m")
+        d_p = np.where(
+            np.isnan(d2), np.where(np.isnan(d0), geometry.pitch_diameter(od, rd), d0), d2
+        )
         tan_l = geometry.tan_lead_angle(lead, d_p)
         cos_a = np.cos(col("thread_half_angle_rad"))
         mu_s, mu_d = col("friction_static"), col("friction_dynamic")

@@ -7,10 +7,10 @@ import re
 import pytest
 from fastapi.testclient import TestClient
 
-#: a vertical axis held by a brake with the power off (15 kg, 200 mm/s, 1000 mm/s²)
+#: a vertical axis held by a brake with the power off (15.01 kg, 200 mm/s, 1000 mm/s²)
 VERTICAL = {
     "load_n": 0,
-    "moving_mass_kg": 15,
+    "moving_mass_kg": 15.01,
     "orientation": "vertical",
     "speed_mm_s": 200,
     "accel_mm_s2": 1000,
@@ -35,7 +35,7 @@ def _check(client: TestClient, name: str, **params: object) -> dict:  # type: ig
 def test_a_brake_figure_is_written_up_and_the_brake_it_names_keeps_the_margin(
     client: TestClient,
 ) -> None:
-    """R40-20K3-FSCDIN back-drives the 15 kg: the brake must hold 0.3 x 1.547 = 0.4640 N m,
+    """R40-20K3-FSCDIN back-drives the 15.01 kg: the brake must hold 0.3 x 1.5467 = 0.4640 N m,
     0.4872 N m with the 5 % margin. To three figures that is 0.487 N m, which holds at
     0.4640 / 0.487 = 0.9528 of it, past the 1 / 1.05 = 0.95238 promised; the fix now
     says 0.488 N m, and a 0.488 N m brake holds at 0.9508."""

@@ -48,7 +48,8 @@ def test_5_kn_at_1_m_s_over_2_m_is_beyond_every_screw_as_mounted(client: TestCli
     """/?load=5000&speed=1000&length=2000. The largest rolled ball screw of the catalog,
     R50-40K3-FSCDIN (HIWIN Table 4.4: root 45 mm, lead 40 mm, C0a 123 kN): 1000 / 40 =
     25 rev/s = 1500 rpm; T = 5000 x 0.04 / (2 pi eta) = 33.5 N m at eta 0.95 (the thread's
-    0.961 at the ball track's friction, at most HIWIN F 3.15's 0.95); n_c =
+    0.960 on the 50 mm pitch circle at the ball track's friction, at most HIWIN F 3.15's
+    0.95); n_c =
     9.549 x (3.927 / 2)^2 x 5123 x 0.045 / 4 = 2122 rpm, 0.8 of it 1697 > 1500: it does
     not whirl, but its DN 50 x 1500 = 75,000 passes HIWIN's 70,000 for rolled screws
     (utilization 75 / 70 = 1.071). Every leadscrew and every other ball screw whirls or

@@ -59,13 +59,14 @@ def test_the_cubic_mean_load_weighs_each_segment_by_its_travel() -> None:
 
 def test_a_ball_screws_efficiency_is_in_hiwins_range(catalog: Catalog) -> None:
     """The thread-efficiency formula with a 0 flank angle and mu = 0.01 (HIWIN Fig. 2.1's
-    highest curve) gives 0.85 to 0.95 forward (HIWIN F 3.15: eta_1 0.85 to 0.95):
-    R16-05T3, d_p = (15.5 + 12.9) / 2 = 14.2 mm, tan(lambda) = 5 / (pi 14.2) = 0.11208,
-    eta = 0.11208 (1 - 0.01 x 0.11208) / (0.11208 + 0.01) = 0.9171."""
+    highest curve) gives 0.85 to 0.95 forward (HIWIN F 3.15: eta_1 0.85 to 0.95), the lead
+    angle on the pitch circle d0, the nominal diameter (ISO 3408-1): R16-05T3, d0 = 16 mm,
+    tan(lambda) = 5 / (pi 16) = 0.099472,
+    eta = 0.099472 (1 - 0.01 x 0.099472) / (0.099472 + 0.01) = 0.9077."""
     t = CandidateTable.build([catalog.by_id["R16-05T3-FSIDIN"], catalog.by_id["R40-10K4-FSCDIN"]])
-    tan_l = 5.0 / (math.pi * 14.2)
+    tan_l = 5.0 / (math.pi * 16.0)
     assert t.efficiency[0] == pytest.approx(tan_l * (1 - 0.01 * tan_l) / (tan_l + 0.01))
-    assert t.efficiency[0] == pytest.approx(0.9171, abs=1e-4)
+    assert t.efficiency[0] == pytest.approx(0.9077, abs=1e-4)
     assert all(0.85 <= e <= 0.95 for e in t.efficiency)
     assert not t.self_locking.any() and not t.seed_rule_no_backdrive.any()
 

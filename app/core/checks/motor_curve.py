@@ -66,10 +66,13 @@ def supply_too_low(app: Application) -> bool:
 
 
 def worst_segment(app: Application, r: Quantities[float]) -> str:
-    """The segment that uses the most of the curve, in words ("accelerate up")."""
+    """The segment that uses the most of the curve, in words ("accelerate up"; "start
+    from rest" where the break-away governs)."""
     p = motion.move_profile(app)
-    if p is None or r.motor.motor_worst_segment < 0:
+    if p is None:
         return "move at the top speed"
+    if r.motor.motor_worst_segment < 0:
+        return "start from rest"
     return motion.segment_labels(app)[int(r.motor.motor_worst_segment)]
 
 
@@ -96,8 +99,10 @@ class MotorCurve(Check):
     description = (
         "Each segment of the move (accelerate, constant, decelerate, dwell; both ways) "
         "needs, times the torque safety factor, at most the torque the motor's curve gives "
-        "at that segment's top speed, a stepper's pull-out divided by its torque margin; "
-        "the segment nearest its curve is shown. A stepper's curve from its datasheet "
+        "at that segment's top speed, a stepper's pull-out divided by its torque margin, "
+        "and the break-away that starts each move from rest (the thread at static "
+        "friction) at most the curve's torque at standstill; the segment nearest its "
+        "curve is shown. A stepper's curve from its datasheet "
         "values is the microstepping model: at low speed the holding torque (rated two "
         "phases on) over sqrt 2 for a drive that sets the sine's peak, the whole of it for "
         "one that sets the RMS (the phase-current input says which), then the phase "
