@@ -140,7 +140,10 @@ def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
         "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, c["lead_m"]),
         "drag_work_per_turn_j": heat.drag_work_per_turn(c["drag_max_nm"]),
         "friction_loss": loss,
-        "dn_speed_limit_rpm": ballscrew.dn_speed_limit(c["dn_limit_mm_rpm"], c["outer_diameter_m"]),
+        "dn_speed_limit_rpm": ballscrew.dn_speed_limit(
+            c["dn_limit_mm_rpm"],
+            ballscrew.dn_diameter(c["outer_diameter_m"], c["pitch_diameter_m"]),
+        ),
         **given,
         **dict(zip(WEAR, wear_geometry(c["catalog_flank_area_m2"], c.__getitem__), strict=True)),
         **dict(zip(RATING, rating, strict=True)),

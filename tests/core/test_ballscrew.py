@@ -87,11 +87,12 @@ def test_static_safety_on_the_peak_load(catalog: Catalog, load_n: float, passes:
 
 @pytest.mark.parametrize(("speed_m_s", "passes"), [(0.3, True), (0.5, False)])
 def test_dn_speed_limit(catalog: Catalog, speed_m_s: float, passes: bool) -> None:
-    """R16-05T3-FSIDIN, rolled: DN 70,000 / 15.5 mm = 4516 rpm (HIWIN sec. 3.7.6); lead 5 mm:
-    0.3 m/s is 3600 rpm, 0.5 m/s 6000 rpm."""
+    """R16-05T3-FSIDIN, rolled: DN 70,000 (HIWIN sec. 3.7.6) on its nominal (ball-centre)
+    diameter 16 mm, as Roton and THK take it, rather than its 15.5 mm outer diameter:
+    4375 rpm, not 4516; lead 5 mm: 0.3 m/s is 3600 rpm, 0.5 m/s 6000 rpm."""
     c = _check(light_app(speed_m_s=speed_m_s), "R16-05T3-FSIDIN", "ball_speed", catalog)
     assert c.passed is passes
-    assert c.capacity == pytest.approx(70_000.0 / 15.5)
+    assert c.capacity == pytest.approx(70_000.0 / 16.0)
     assert c.demand == pytest.approx(speed_m_s / 0.005 * 60.0)
 
 

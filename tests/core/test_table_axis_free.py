@@ -63,7 +63,10 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, t.lead_m),
         "drag_work_per_turn_j": heat.drag_work_per_turn(t.drag_max_nm),
         "friction_loss": 1.0 / t.efficiency - 1.0,
-        "dn_speed_limit_rpm": ballscrew.dn_speed_limit(t.dn_limit_mm_rpm, t.outer_diameter_m),
+        # the larger of the outer and the pitch circle diameter (a ball screw's nominal)
+        "dn_speed_limit_rpm": ballscrew.dn_speed_limit(
+            t.dn_limit_mm_rpm, np.maximum(t.outer_diameter_m, t.pitch_diameter_m)
+        ),
         **{mask: ~np.isnan(getattr(t, name)) for mask, name in GIVEN.items()},
         "nut_conductance_w_k": heat.nut_conductance(
             t.fin_conductance_w_k, t.nut_length_m, t.nut_outer_diameter_m, h

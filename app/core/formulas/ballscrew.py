@@ -252,7 +252,26 @@ def dn_value(diameter_m: float, rpm: float) -> float:
     return from_si(diameter_m, "mm") * rpm
 
 
-@formula("n_DN = DN_max / d_s [mm]", HIWIN + ", sec. 3.7.6 (DN value)")
+@formula(
+    "d_DN = max(d_s, d_0)",
+    "Roton and THK take the nominal (ball-centre) diameter d_0; HIWIN sec. 3.7.6 tables d_s",
+)
+def dn_diameter(outer_diameter_m: Any, pitch_circle_diameter_m: Any) -> Any:
+    """The diameter a ball screw's DN value is taken on [m]: the larger of the shaft's
+    outer diameter d_s (HIWIN sec. 3.7.6 writes DN = d_s x n_max) and its pitch circle
+    (ball-centre, nominal) diameter d_0, on which Roton ("Ball Screws", 3,000 in rpm on a
+    3/4 in screw: 4,000 rpm) and THK take it: the lower speed limit of the two readings.
+    A missing d_0 (NaN) leaves d_s. Numbers or arrays alike.
+
+    HIWIN's R16: d_s 15.5 mm, d_0 16 mm:
+
+    >>> dn_diameter(0.0155, 0.016), float(dn_diameter(0.0155, float("nan")))
+    (0.016, 0.0155)
+    """
+    return np.fmax(outer_diameter_m, pitch_circle_diameter_m)
+
+
+@formula("n_DN = DN_max / d_DN [mm]", HIWIN + ", sec. 3.7.6 (DN value)")
 def dn_speed_limit(dn_limit_mm_rpm: float, diameter_m: float) -> float:
     """The highest screw speed [rpm] the DN limit [mm rpm] allows a screw of
     ``diameter_m`` [m].
