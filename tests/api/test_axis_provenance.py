@@ -49,9 +49,9 @@ def test_a_curve_drawn_at_an_assumed_drive_voltage_is_assumed(client: TestClient
 
 def test_a_pass_governed_by_an_assumed_curve_says_it_rests_on_it(client: TestClient) -> None:
     """The Yaskawa servo's envelope falls to a torque at top speed the library assumes:
-    where that curve governs a pass (32 kg at 600 mm/s, 10 m/s² on a 10 mm lead ball
+    where that curve governs a pass (35 kg at 600 mm/s, 10 m/s² on a 10 mm lead ball
     screw), the verdict says the pass rests on it."""
-    axis = {"load_n": 50, "speed_mm_s": 600, "length_mm": 400, "moving_mass_kg": 32,
+    axis = {"load_n": 50, "speed_mm_s": 600, "length_mm": 400, "moving_mass_kg": 35,
             "accel_mm_s2": 10000}  # fmt: skip
     c = evaluate(client, "R16-10K3-FSCDIN", **axis, motor="yaskawa-sgm7j-01a")
     assert c["passed"] and c["governing_check"] == "motor_curve"

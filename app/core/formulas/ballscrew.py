@@ -265,7 +265,7 @@ def dn_diameter(outer_diameter_m: Any, pitch_circle_diameter_m: Any) -> Any:
 
     HIWIN's R16: d_s 15.5 mm, d_0 16 mm:
 
-    >>> dn_diameter(0.0155, 0.016), float(dn_diameter(0.0155, float("nan")))
+    >>> float(dn_diameter(0.0155, 0.016)), float(dn_diameter(0.0155, float("nan")))
     (0.016, 0.0155)
     """
     return np.fmax(outer_diameter_m, pitch_circle_diameter_m)
