@@ -30,6 +30,8 @@ VARIANT_FIELDS = frozenset(
         "max_length_mm",
         "life_million_cm",
         "friction_static",
+        "dry_friction_dynamic",
+        "dry_friction_static",
         "nut_material",
         "bearing_pressure_mpa_by_speed_m_s",
         "max_pressure_mpa",

@@ -20,6 +20,8 @@ from app.core.units import from_si, to_si
 RANGED_VARIANT = {
     "friction_dynamic": ("friction_dynamic", ""),
     "friction_static": ("friction_static", ""),
+    "dry_friction_dynamic": ("dry_friction_dynamic", ""),
+    "dry_friction_static": ("dry_friction_static", ""),
     "pv_limit_mpa_m_s": ("pv_limit_pa_m_s", "MPa m/s"),
     "max_pressure_mpa": ("max_pressure_pa", "MPa"),
     "dynamic_pressure_mpa": ("dynamic_pressure_pa", "MPa"),
@@ -37,6 +39,13 @@ BEARING_VALUES = {
     "dynamic_pressure": ("dynamic_pressure_mpa", "MPa"),
     "bearing_pv_limit": ("bearing_pv_limit_mpa_m_s", "MPa m/s"),
     "max_sliding_speed": ("max_sliding_speed_m_s", "m/s"),
+}
+
+
+#: A nut rated lubricated (``lubricated_rating``) run dry: its running and static friction.
+DRY_FRICTION = {
+    "dry_friction_dynamic": ("dry_friction_dynamic", ""),
+    "dry_friction_static": ("dry_friction_static", ""),
 }
 
 
@@ -117,6 +126,7 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
     if v.has("lubricated_rating"):
         flag = v.flag("lubricated_rating")
         fields["lubricated_rating"] = Sourced(flag, "", v.prov("lubricated_rating"))
+    fields.update(_dry_friction(v, fields))
     if v.has("pv_limit_mpa_m_s"):
         fields["pv_limit"] = sourced(v, "pv_limit_mpa_m_s", "MPa m/s")
     if v.has("max_length_mm"):
@@ -144,6 +154,19 @@ def _variant_fields(v: Entry) -> dict[str, Sourced]:
     if fields.get("allowed_wear") and not 0.0 < fields["allowed_wear"].value <= 1.0:
         raise v.fail("allowed_wear_to_flank_height", "must be a fraction, above 0 and at most 1")
     return fields
+
+
+def _dry_friction(v: Entry, fields: Mapping[str, Sourced]) -> dict[str, Sourced]:
+    """A nut rated lubricated gives its friction run dry, running and static; no other
+    nut has one (an axis that runs it dry takes it, ``table.as_run``)."""
+    dry = optional(v, DRY_FRICTION)
+    lubricated = "lubricated_rating" in fields and fields["lubricated_rating"].value
+    missing = [name for name in DRY_FRICTION if name not in dry]
+    if lubricated and missing:
+        raise v.fail(missing[0], "a nut rated lubricated needs its friction run dry")
+    if dry and not lubricated:
+        raise v.fail(next(iter(dry)), "only a nut rated lubricated has a friction run dry")
+    return dry
 
 
 def _variant_ends(v: Entry) -> dict[str, tuple[dict[str, float], dict[str, float]]]:

@@ -64,6 +64,10 @@ NUT_VALUES = {
 }
 
 
+#: The ScrewSpec values of a nut rated lubricated run dry (``NutMaterial``), ranged.
+DRY_FRICTION = ("dry_friction_dynamic", "dry_friction_static")
+
+
 #: The catalog's name of the ranged nut length over the screw's diameter.
 NUT_LENGTH_RANGE = "nut_length_to_d"
 
@@ -94,8 +98,12 @@ class NutMaterial:
     ends: Ends = field(default_factory=dict)
     nut_length_to_d_ends: tuple[float, float] | None = None
     backlash_m: tuple[float, float] | None = None
-    #: its ratings are a lubricated nut's (``ScrewSpec.lubricated_rating``)
+    #: its ratings are a lubricated nut's (``ScrewSpec.lubricated_rating``), and its
+    #: running and static friction run dry, which replace the user's friction on an axis
+    #: that runs it dry as on a catalog screw (None: none given)
     lubricated_rating: bool = False
+    dry_friction_dynamic: float | None = None
+    dry_friction_static: float | None = None
 
     def rates_by_pressure(self) -> bool:
         """Whether a limit reads the engaged flank area (pitch and nut length needed)."""
@@ -123,7 +131,7 @@ def _rated(screw: ScrewSpec) -> bool:
 def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
     """The nut material of one catalog candidate, with its provenance."""
     keys = (*NUT_VALUES, "temperature_range", "oil_compatible", "friction_dynamic")
-    keys += ("lubricated_rating",)
+    keys += ("lubricated_rating", *DRY_FRICTION)
     prov = {k: screw.provenance[k] for k in (*keys, "friction_static") if k in screw.provenance}
     low, high = screw.temperature_min_c, screw.temperature_max_c
     thrust = series.fields.get(f"dynamic_thrust_{screw.variant}")
@@ -132,7 +140,7 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
     length = series.fields.get("nut_length")
     if length is not None:
         prov["nut_length"] = length.provenance
-    limits = set(NUT_VALUES.values())
+    limits = {*NUT_VALUES.values(), *DRY_FRICTION}
     ranged = screw.assumption_ends.get(NUT_LENGTH_RANGE)
     play = series.fields.get("backlash")
     if play is not None:
@@ -146,6 +154,8 @@ def _nut_material(series: Series, screw: ScrewSpec) -> NutMaterial:
         temperature_c=None if low is None or high is None else (low, high),
         oil_compatible=screw.oil_compatible,
         lubricated_rating=screw.lubricated_rating,
+        dry_friction_dynamic=screw.dry_friction_dynamic,
+        dry_friction_static=screw.dry_friction_static,
         thrust_table=thrust,
         friction_dynamic=screw.friction_dynamic,
         friction_static=screw.friction_static,
@@ -236,6 +246,8 @@ def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
     values: dict[str, object] = {**nut.limits, "nut_material": nut.name}
     values["oil_compatible"] = nut.oil_compatible
     values["lubricated_rating"] = nut.lubricated_rating
+    values["dry_friction_dynamic"] = nut.dry_friction_dynamic
+    values["dry_friction_static"] = nut.dry_friction_static
     if nut.backlash_m is not None:
         values["backlash_min_m"], values["backlash_max_m"] = nut.backlash_m
     if nut.temperature_c is not None:

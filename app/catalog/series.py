@@ -225,6 +225,8 @@ def _screw(
         temperature_max_c=t_max,
         oil_compatible=variant.fields["oil_compatible"].value,
         lubricated_rating=_flag_or_false(variant.fields, "lubricated_rating"),
+        dry_friction_dynamic=_value_or_none(variant.fields, "dry_friction_dynamic"),
+        dry_friction_static=_value_or_none(variant.fields, "dry_friction_static"),
         yield_strength_pa=_value_or_none(fields, "yield_strength"),
         thermal_conductivity_w_m_k=_value_or_none(fields, "thermal_conductivity"),
         outgassing=_value_or_none(fields, "outgassing") or (),

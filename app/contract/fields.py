@@ -183,7 +183,7 @@ FIELDS: tuple[InputField, ...] = (
         help="Raises a polymer nut's permissible PV: dry x1 (the rating's own), greased "
         "x1.3 (igus, greased at assembly), oiled x2 (a maker's “as much as 100 %”); a "
         "dry-film coated screw must then not be used; a bronze nut is rated lubricated: "
-        "run dry, it is flagged",
+        "run dry, its numbers are at its dry friction and it is flagged",
         group="Nut and environment", kind="choice", default="dry", options=Lubrication,
         texts={"dry": "Dry", "greased": "Greased", "oiled": "Oiled"},
     ),

@@ -17,12 +17,65 @@ from app.core.formulas import (
     critical_speed,
     efficiency,
     heat,
+    profile,
     pv,
     torque,
     wear,
 )
 
 Array = NDArray[np.float64]
+Mask = NDArray[np.bool_]
+
+
+def friction_columns(
+    tan_l: Array,
+    cos_a: Array,
+    d_p: Array,
+    mu_s: Array,
+    mu_d: Array,
+    ball: Mask,
+    mu_hold: Array | None = None,
+) -> dict[str, Any]:
+    """Every column that follows from the thread's friction, static ``mu_s`` and running
+    ``mu_d``, with the screw's geometry (tan of the lead angle ``tan_l``, cos of the
+    flank half-angle ``cos_a``, the pitch diameter ``d_p`` [m]; ``ball``: a ball screw):
+    the frictions themselves, the efficiencies driving
+    and back-driven, running and from rest, and whether the thread self-locks
+    (``formulas.efficiency``, ``formulas.profile``; a ball screw drives at most at its
+    maker's efficiency, ``ballscrew.forward_efficiency``), the longest self-locking
+    lead, the lower of the two driving efficiencies (the root section's torque), 2 pi
+    eta at each (``torque.efficient_turn``, the divisor of the torque that drives a
+    load) and the friction loss per watt moved (``heat.friction_loss``). What holds the
+    load at rest (the static friction the holding reads, the back-driven efficiency at
+    rest, self-locking and the longest self-locking lead) is at ``mu_hold`` where it is
+    given (a nut run dry holds at no more than its oiled static friction: it may be
+    oiled later), else at ``mu_s``. Formed once per catalog, and again for the
+    candidates an axis runs at another friction (``dry_run.as_run``)."""
+    hold = mu_s if mu_hold is None else mu_hold
+
+    def driving(mu: Array) -> Array:
+        eta = efficiency.forward_efficiency(tan_l, mu, cos_a)
+        return np.where(ball, ballscrew.forward_efficiency(eta), eta)
+
+    eta, eta_s = driving(mu_d), driving(mu_s)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        loss = heat.friction_loss(eta)
+    return {
+        "friction_static": hold,
+        "friction_dynamic": mu_d,
+        "efficiency": eta,
+        "efficiency_static": eta_s,
+        "efficiency_square_thread": efficiency.square_thread_efficiency(tan_l, mu_d),
+        "backdrive_efficiency": efficiency.backdrive_efficiency(tan_l, hold, cos_a),
+        "self_locking": hold >= efficiency.self_locking_limit_friction(tan_l, cos_a),
+        "backdrive_efficiency_running": efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
+        "backdrive_efficiency_signed": profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
+        "max_self_locking_lead_m": efficiency.max_self_locking_lead(d_p, hold, cos_a),
+        "root_efficiency": np.minimum(eta, eta_s),
+        "efficient_turn_rad": torque.efficient_turn(eta),
+        "start_efficient_turn_rad": torque.efficient_turn(eta_s),
+        "friction_loss": loss,
+    }
 
 
 def axis_free(c: dict[str, Array]) -> dict[str, Any]:
@@ -32,11 +85,9 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
     three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
     area at the catalog's nut length (``bearing``), the screw's fin conductance in still
     air, the nut's outside diameter and its conductance to the ambient at the catalog's
-    nut length (``heat``), the lower of the running and the
-    static efficiency (the root section's torque), the root section's and the shaft's
-    own terms of the column, stress and whirl formulas (``buckling``,
-    ``critical_speed``), and 2 pi eta at the running and the static efficiency, the
-    divisor of the torque that drives a load (``torque.efficient_turn``)."""
+    nut length (``heat``), and the root section's and the shaft's own terms of the
+    column, stress and whirl formulas (``buckling``, ``critical_speed``). What follows
+    from the friction is ``friction_columns``'s."""
     tan_l = np.tan(c["lead_angle_rad"])
     d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -60,14 +111,11 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "nut_conductance_w_k": heat.nut_conductance(
             fin, c["nut_length_m"], nut_d, heat.FREE_CONVECTION_W_M2_K
         ),
-        "root_efficiency": np.minimum(c["efficiency"], c["efficiency_static"]),
         "root_area_m2": buckling.root_area(d_r),
         "root_second_moment_m4": buckling.second_moment_round(d_r),
         "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),
         "wave_speed_m_s": wave,
         "root_gyration_m": gyration,
-        "efficient_turn_rad": torque.efficient_turn(c["efficiency"]),
-        "start_efficient_turn_rad": torque.efficient_turn(c["efficiency_static"]),
     }
 
 
@@ -127,19 +175,15 @@ WEAR = ("wear_area_m2", "wear_depth_m", "wear_sliding_per_travel")
 def screw_terms(c: dict[str, Array]) -> dict[str, Any]:
     """The screw's own terms of formulas the query works per candidate: the moving mass's
     reflected inertia per kilogram (``torque.reflected_mass_inertia`` at 1 kg), the
-    nut's drag work per turn (``heat.drag_work_per_turn``), the thread's friction loss
-    per watt moved (``heat.friction_loss``) and a ball screw's DN speed limit
+    nut's drag work per turn (``heat.drag_work_per_turn``) and a ball screw's DN speed limit
     (``ballscrew.dn_speed_limit``); where the catalog gives each value of ``GIVEN`` (not
     NaN); and the nut's wear geometry and rating at the catalog's nut length (``WEAR``,
     ``RATING``)."""
-    with np.errstate(invalid="ignore", divide="ignore"):
-        loss = heat.friction_loss(c["efficiency"])
     given = {mask: ~np.isnan(c[name]) for mask, name in GIVEN.items()}
     rating = nut_rating(c["catalog_flank_area_m2"], c["nut_length_m"], (c | given).__getitem__)
     return {
         "reflected_inertia_per_kg_m2": torque.reflected_mass_inertia(1.0, c["lead_m"]),
         "drag_work_per_turn_j": heat.drag_work_per_turn(c["drag_max_nm"]),
-        "friction_loss": loss,
         "dn_speed_limit_rpm": ballscrew.dn_speed_limit(
             c["dn_limit_mm_rpm"],
             ballscrew.dn_diameter(c["outer_diameter_m"], c["pitch_diameter_m"]),

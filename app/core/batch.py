@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 from app.core import motion, segments
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
+from app.core.dry_run import screw_as_run
 from app.core.duty import ball_life_revolutions
 from app.core.input_rules import read_inputs, refused
 from app.core.model import Application, AxisProvenance, Motion, ScrewSpec, Segment
@@ -289,7 +290,7 @@ class Slot:
 
     def __init__(self, app: Application, sc: Screening, position: int) -> None:
         self.app, self.screening, self.position = app, sc, position
-        self.screw: ScrewSpec = sc.table.screws[position]
+        self.screw: ScrewSpec = screw_as_run(sc.table, position)
         self._row: Quantities[float] | None = None
         self._fixes: dict[str, Phrase | None] = {}
 

@@ -13,6 +13,7 @@ from numpy.typing import NDArray
 
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Check, Measure, Reach
+from app.core.dry_run import as_run
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.quantities import Quantities, operating_point
 from app.core.table import Array, CandidateTable, Mask
@@ -139,8 +140,11 @@ def screen_table(
     reach: Reach | None = None,
 ) -> Screening:
     """Every check that applies to ``app`` for every candidate of ``table``; ``reach`` is
-    what the whole catalog offers (unbounded for a screw of the user's own)."""
+    what the whole catalog offers (unbounded for a screw of the user's own). The table is
+    screened at the friction ``app`` runs each nut at (``dry_run.as_run``): the screening's
+    table is that one."""
     index = np.arange(len(table)) if index is None else index
+    table = as_run(app, table)
     q = operating_point(app, table)
     measures = {c.name: c.measure(app, table, q) for c in REGISTRY if c.applies(app)}
     names = list(measures)

@@ -10,18 +10,15 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from operator import attrgetter
 from types import MappingProxyType
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from app.core.axis_free import axis_free, screw_terms
+from app.core.axis_free import axis_free, friction_columns, screw_terms
 from app.core.formulas import (
-    ballscrew,
     efficiency,
     geometry,
     limits,
-    profile,
 )
 from app.core.model import ScrewSpec
 
@@ -205,29 +202,9 @@ COPIED = {
     "dn_limit_mm_rpm": "dn_limit_mm_rpm",
     "preload_n": "preload_n",
     "travel_variation_300mm_m": "travel_variation_300mm_m",
+    "dry_friction_dynamic": "dry_friction_dynamic",
+    "dry_friction_static": "dry_friction_static",
 }
-
-
-def _thread_efficiencies(
-    tan_l: Array, mu_s: Array, mu_d: Array, cos_a: Array, ball: Mask
-) -> dict[str, Any]:
-    """The thread's efficiencies driving and back-driven, running and from rest, and
-    whether it self-locks (``formulas.efficiency``, ``formulas.profile``); a ball screw
-    drives at most at its maker's efficiency (``ballscrew.forward_efficiency``)."""
-
-    def driving(mu: Array) -> Array:
-        eta = efficiency.forward_efficiency(tan_l, mu, cos_a)
-        return np.where(ball, ballscrew.forward_efficiency(eta), eta)
-
-    return {
-        "efficiency": driving(mu_d),
-        "efficiency_static": driving(mu_s),
-        "efficiency_square_thread": efficiency.square_thread_efficiency(tan_l, mu_d),
-        "backdrive_efficiency": efficiency.backdrive_efficiency(tan_l, mu_s, cos_a),
-        "self_locking": mu_s >= efficiency.self_locking_limit_friction(tan_l, cos_a),
-        "backdrive_efficiency_running": efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
-        "backdrive_efficiency_signed": profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
-    }
 
 
 @dataclass(frozen=True, slots=True)
@@ -270,7 +247,15 @@ class CandidateTable:
     max_self_locking_lead_m: Array
     traverse_limit_m_s: Array
     traverse_extrapolated: Mask
+    #: the thread's static and running friction, as the catalog gives them or as an axis
+    #: runs the nut (``dry_run.as_run``), each column that follows from them formed by
+    #: ``axis_free.friction_columns``; a nut rated lubricated's friction run dry (NaN:
+    #: none), and whether the row is at it (``dry_run.as_run``; False as catalogued)
     friction_static: Array
+    friction_dynamic: Array
+    dry_friction_static: Array
+    dry_friction_dynamic: Array
+    runs_dry: Mask
     cos_half_angle: Array
     backdrive_efficiency_running: Array
     #: running back-drive efficiency without the clip at 0 (negative: self-locking), for
@@ -391,7 +376,6 @@ class CandidateTable:
         )
         tan_l = geometry.tan_lead_angle(lead, d_p)
         cos_a = np.cos(col("thread_half_angle_rad"))
-        mu_s, mu_d = col("friction_static"), col("friction_dynamic")
         traverse, extrapolated = _bands(screws, lead)
         ball = np.array([s.screw_type == "ball" for s in screws], dtype=bool)
         tables, which = _distinct(screws, "bearing_pressure_table")
@@ -405,12 +389,12 @@ class CandidateTable:
             thread_depth_m=geometry.thread_depth(od, rd),
             helix_travel_m=geometry.helix_travel(lead, d_p),
             lead_angle_rad=np.arctan(tan_l),
-            friction_static=mu_s,
             cos_half_angle=cos_a,
             **{name: col(attr) for name, attr in COPIED.items()},
-            **_thread_efficiencies(tan_l, mu_s, mu_d, cos_a, ball),
             **_nut_columns(screws, lead),
         )
+        mu = (col("friction_static"), col("friction_dynamic"))
+        columns |= friction_columns(tan_l, cos_a, d_p, *mu, ball)
         columns["root_diameter_m"], columns["outer_diameter_m"] = rd, od
         columns |= axis_free(columns)
         return cls(
@@ -425,9 +409,9 @@ class CandidateTable:
             anti_backlash=flag("anti_backlash"),
             oil_compatible=flag("oil_compatible"),
             lubricated_rating=flag("lubricated_rating"),
+            runs_dry=np.zeros(len(screws), dtype=bool),
             # the seed's rule of thumb is a sliding thread's: a ball screw always back-drives
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
-            max_self_locking_lead_m=efficiency.max_self_locking_lead(d_p, mu_s, cos_a),
             traverse_extrapolated=extrapolated,
             ball=ball,
             **columns,

@@ -34,6 +34,8 @@ VALUE_LABELS: Mapping[str, str] = {
     "design_load_factor": "design load factor",
     "drag_torque": "nut drag torque",
     "dn_limit": "DN speed limit",
+    "dry_friction_dynamic": "running friction run dry",
+    "dry_friction_static": "static friction run dry",
     "dynamic_pressure": "flank pressure rating in motion",
     "dynamic_load": "dynamic load rating",
     "friction_dynamic": "running friction",

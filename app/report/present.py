@@ -203,7 +203,7 @@ NUT_ROWS = (
     ("allowed_wear", "Allowed wear depth, share of the flank height"),
     ("temperature_range", "Temperature range"),
     ("oil_compatible", "Oil and lubricants"),
-    ("friction_dynamic", "Running friction the catalog takes (yours is used)"),
+    ("friction_dynamic", "Running friction the catalog takes (yours is used, except run dry)"),
 )
 
 

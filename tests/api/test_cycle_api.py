@@ -112,7 +112,7 @@ def test_a_cycle_of_moves_gives_the_stroke_the_duty_and_ratings_need(client: Tes
 
 
 def test_break_away_is_the_hardest_start_of_any_move(client: TestClient) -> None:
-    """Tr12x3 in bronze (lead 3 mm, d2 10.5 mm, 30 deg, mu_s 0.16) with a 1e-4 kg m^2
+    """Tr12x3 in bronze, oiled (lead 3 mm, d2 10.5 mm, 30 deg, mu_s 0.16) with a 1e-4 kg m^2
     rotor, 1 kg each way. Out: 30 N against the motion at 0.1 m/s^2, the most thrust to
     start (30.1 N). Back: 27 N at 1 m/s^2, 28 N to start but ten times the acceleration.
     By hand, the back move's start: tan(lead angle) = 3 / (pi 10.5) = 0.090946, eta_s =
@@ -127,6 +127,7 @@ def test_break_away_is_the_hardest_start_of_any_move(client: TestClient) -> None
          "moving_mass_kg": 1, "load_n": 27, "load_direction": "opposes"},
     ]  # fmt: skip
     axis = {"load_n": 0, "speed_mm_s": 30, "length_mm": 300, "motor_inertia_kg_m2": 1e-4}
+    axis["lubrication"] = "oiled"
     torque = evaluate(client, "Tr12x3-bronze", **axis, moves=moves)["torque"]
     assert torque["breakaway_nm"] == pytest.approx(0.253583, rel=1e-5)
     assert torque["peak_motor_nm"] == torque["breakaway_nm"] > torque["peak_nm"]

@@ -1,5 +1,9 @@
-"""A bronze nut's ratings are a lubricated nut's: run dry, it is flagged (advice)."""
+"""A bronze nut's ratings are a lubricated nut's: run dry, it is flagged (advice), and its
+numbers are worked at its dry friction."""
 
+import math
+
+import pytest
 from fastapi.testclient import TestClient
 
 AXIS = {"load_n": 500, "speed_mm_s": 20, "length_mm": 500}
@@ -13,10 +17,9 @@ def _evaluate(client: TestClient, **params: object) -> dict:  # type: ignore[typ
 
 def test_a_bronze_nut_run_dry_is_flagged_and_greased_it_is_not(client: TestClient) -> None:
     """Tr20x4 bronze: its friction 0.13 is Shigley Table 8-5's steel on bronze with
-    machine oil (0.10-0.16); dry the table gives 0.15-0.23, a torque a quarter to a third
-    higher than the one shown, and its pressures (Table 8-4) are lubricated screws'. With
-    the nut left dry (the default) the advice fails with a warning; greased or oiled, it
-    does not run."""
+    machine oil (0.10-0.16); dry the table gives 0.15-0.23, and its pressures (Table 8-4)
+    are lubricated screws'. With the nut left dry (the default) its numbers are at the dry
+    friction and the advice fails with a warning; greased or oiled, it does not run."""
     dry = _evaluate(client, catalog_id="Tr20x4-bronze")
     (check,) = [c for c in dry["checks"] if c["name"] == "lubrication"]
     assert not check["passed"] and check["kind"] == "advice"
@@ -45,3 +48,50 @@ def test_a_screw_of_ones_own_with_a_bronze_nut_is_flagged_dry_too(client: TestCl
     r = client.post("/api/v1/evaluate", json=body)
     assert r.status_code == 200, r.text
     assert r.json()["candidate"]["warned"] == ["lubrication"]
+
+
+def _raise_torque(force_n: float, mu: float) -> float:
+    """Shigley eq. 8-1 with the flank angle (eq. 8-5 style) on Tr20x4: lead 4 mm, pitch
+    diameter d2 18 mm, 15 deg half-angle: T = F d2 / 2 (l + pi mu d2 sec a) /
+    (pi d2 - mu l sec a) [N m]."""
+    lead, d2, sec = 0.004, 0.018, 1.0 / math.cos(math.radians(15.0))
+    return force_n * d2 / 2 * (lead + math.pi * mu * d2 * sec) / (math.pi * d2 - mu * lead * sec)
+
+
+def test_the_torque_of_a_dry_bronze_nut_is_at_its_dry_friction(client: TestClient) -> None:
+    """Tr20x4 bronze at 1000 N: 2.4409 N m dry (mu 0.19), 1.8657 N m oiled (mu 0.13), as
+    the page and the API show it; the friction's provenance says which."""
+    params = {**AXIS, "load_n": 1000, "catalog_id": "Tr20x4-bronze"}
+    dry = _evaluate(client, **params)
+    oiled = _evaluate(client, **params, lubrication="oiled")
+    assert dry["torque"]["load_nm"] == _approx(_raise_torque(1000.0, 0.19))
+    assert oiled["torque"]["load_nm"] == _approx(_raise_torque(1000.0, 0.13))
+    assert round(dry["torque"]["load_nm"], 4) == 2.4409
+    assert round(oiled["torque"]["load_nm"], 4) == 1.8657
+    assert "run dry" in dry["provenance"]["friction_dynamic"]["source"]
+    assert "machine oil" in oiled["provenance"]["friction_dynamic"]["source"]
+    (check,) = [c for c in dry["checks"] if c["name"] == "lubrication"]
+    assert "dry friction, running 0.19 and static 0.24" in check["message"]
+    assert "pressure and wear ratings are still a lubricated nut's" in check["message"]
+
+
+def test_a_screw_of_ones_own_with_a_bronze_nut_runs_dry_as_the_catalog_s(
+    client: TestClient,
+) -> None:
+    screw = {
+        "outer_diameter_mm": 20, "root_diameter_mm": 15.5, "lead_mm": 4, "pitch_mm": 4,
+        "thread_half_angle_deg": 15, "friction_dynamic": 0.13, "friction_static": 0.16,
+        "nut_material": "bronze",
+    }  # fmt: skip
+    torques = {}
+    for lubrication in ("dry", "oiled"):
+        body = {"application": {**AXIS, "load_n": 1000, "lubrication": lubrication}}
+        r = client.post("/api/v1/evaluate", json={**body, "screw": screw})
+        assert r.status_code == 200, r.text
+        torques[lubrication] = r.json()["candidate"]["torque"]["load_nm"]
+    assert torques["dry"] == _approx(_raise_torque(1000.0, 0.19))
+    assert torques["oiled"] == _approx(_raise_torque(1000.0, 0.13))
+
+
+def _approx(value: float) -> object:
+    return pytest.approx(value, rel=1e-9)

@@ -45,11 +45,11 @@ MOVES = {
 def test_the_ramps_heat_a_bronze_nut_however_the_cycle_is_typed(
     client: TestClient, axis: dict[str, object]
 ) -> None:
-    """Tr20x4-bronze (d_2 18 mm, d_3 15.5 mm, mu 0.13, a 40 mm nut, rated to 150 C): each
+    """Tr20x4-bronze oiled (d_2 18 mm, d_3 15.5 mm, mu 0.13, a 40 mm nut, rated to 150 C): each
     of the cycle's four ramps takes 0.04 s over 4 mm at |m a| = 250 N, the cycle 0.58 s;
     the thread turns 4 x 250 x 0.004 (1 / eta - 1) / 0.58 = 13.31 W into heat, and the
     nut rises 71.29 K. The scalar inputs once reported 0 W and 0 K."""
-    candidate = evaluate(client, "Tr20x4-bronze", **axis)
+    candidate = evaluate(client, "Tr20x4-bronze", **axis, lubrication="oiled")
     eta = _efficiency(0.004, 0.018, 0.13)
     power_w = 4 * 250.0 * 0.004 * (1.0 / eta - 1.0) / 0.58
     rise_k = power_w / _conductance(0.0155, 0.020, 0.040)

@@ -71,11 +71,12 @@ def test_a_pair_shows_the_selection_s_motor_use(client: TestClient) -> None:
 def test_a_pair_s_torque_is_the_evaluated_peak_torque(client: TestClient) -> None:
     """Each pair's torque is the peak torque the results table and /evaluate give that
     screw with that motor named: on a 2 kg vertical axis with a 200 mm stroke the
-    self-locking Tr8x1.5-bronze starts from rest at 0.02332 N m with the Pololu #1205,
+    self-locking Tr8x1.5-bronze, oiled, starts from rest at 0.02332 N m with the Pololu #1205,
     above its 0.02041 N m while accelerating, which the pairs showed and ranked by."""
     axis = {
         "load_n": 5, "moving_mass_kg": 2, "orientation": "vertical", "speed_mm_s": 20,
         "accel_mm_s2": 300, "length_mm": 300, "stroke_mm": 200, "cycles_per_day": 500,
+        "lubrication": "oiled",
     }  # fmt: skip
     r = client.get("/api/v1/pairs", params={**axis, "limit": 20})
     assert r.status_code == 200, r.text

@@ -37,7 +37,7 @@ def _nut_heat(catalog: Catalog, app: Application, screw: str) -> CheckResult:
 
 
 #: lifting 0.3 m up and down without a pause: the nut slides all the time
-LIFT = Application(load_n=1962.0, speed_m_s=0.012, length_m=0.6, stroke_m=0.3)
+LIFT = Application(load_n=1962.0, speed_m_s=0.012, length_m=0.6, stroke_m=0.3, lubrication="oiled")
 
 
 def test_the_200_kg_lifting_table_nut_is_judged(catalog: Catalog) -> None:
@@ -53,7 +53,7 @@ def test_the_200_kg_lifting_table_nut_is_judged(catalog: Catalog) -> None:
     surface = 10.0 * math.pi * 0.028 * 0.028
     assert running.value == pytest.approx(42.15 / (2 * fin + surface), rel=2e-3)
     assert running.value == pytest.approx(418.4, abs=0.5) and not running.passed
-    duty = Application(load_n=1962.0, speed_m_s=0.012, length_m=0.6, stroke_m=0.3, dwell_s=120.0)
+    duty = replace(LIFT, dwell_s=120.0)
     resting = _nut_heat(catalog, duty, "Tr14x3-bronze")
     assert resting.passed and resting.value == pytest.approx(72.1, abs=0.2)
     # the result rests on the two assumed values of the model: the message says so
@@ -115,8 +115,9 @@ def test_the_ramps_thrust_heats_the_nut_however_the_cycle_is_given(
     7.72 J per cycle into heat (Shigley sec. 8-2): 13.31 W, 71.29 K over the 0.1868 W/K
     of the screw and the nut. The scalar inputs once heated the nut at the running thrust
     alone: 0 W and 0 K."""
-    app = replace(RAMPS_ONLY, moves=motion.cycle(RAMPS_ONLY)) if as_moves else RAMPS_ONLY
-    screw = catalog.by_id["Tr20x4-bronze"]  # mu 0.13 (catalog, bronze on steel)
+    oiled = replace(RAMPS_ONLY, lubrication="oiled")  # mu 0.13 (catalog: bronze on steel, oiled)
+    app = replace(oiled, moves=motion.cycle(oiled)) if as_moves else oiled
+    screw = catalog.by_id["Tr20x4-bronze"]
     eta = _shigley_efficiency(0.004, 0.018, screw.friction_dynamic)
     power_w = 4 * 250.0 * 0.004 * (1.0 / eta - 1.0) / 0.58
     rise_k = power_w / _conductance(0.0155, 50.7, 0.020, 0.040)

@@ -38,7 +38,12 @@ requirement whose surest holds rank first: the screws whose thread alone holds. 
 recorded again when a bronze nut run dry (every query here leaves the nut unlubricated)
 became a warning: its ratings are a lubricated nut's; the bronze nuts keep their verdicts
 and their order among themselves, after the screws without a warning (or past the list's
-limit; rejected where the advice rejects). Every path
+limit; rejected where the advice rejects). "nut-bronze" was recorded again when a bronze
+nut run dry came to be worked at its dry friction (0.19, Shigley Table 8-5, for 0.13
+oiled): ranked by torque, the steeper leads of similar sizes move ahead (Tr12x6(P3)
+before Tr16x4, Tr14x6(P3) before Tr18x4, Tr16x8(P4) before Tr22x5, Tr18x8(P4) before
+Tr24x5); the same 30 nuts, every one still robust, and no other query moved (checked by
+script against the recorded rankings). Every path
 must still give them: select, a catalog screw evaluated alone, and a screw outside the
 catalog with the same values (its variant rows built on the fly).
 """

@@ -2,6 +2,7 @@
 root stresses, app.core.formulas.torque.root_torque, the root_stress check)."""
 
 import math
+from dataclasses import replace
 
 import pytest
 
@@ -64,9 +65,10 @@ def test_a_large_trapezoidal_screw_at_its_rating(catalog: Catalog) -> None:
     thread's at the starting friction 0.16 (flank angle 30 deg, d2 = 46 mm, Shigley
     eq. 8-4 with the sec(alpha) term)."""
     screw = catalog.by_id["Tr50x8-bronze"]
-    probe = evaluate(Application(load_n=1000.0, speed_m_s=0.005, length_m=0.5), screw)
+    oiled = Application(load_n=1000.0, speed_m_s=0.005, length_m=0.5, lubrication="oiled")
+    probe = evaluate(oiled, screw)
     rated_n = probe.quantities.nut.nut_allowed_load_n
-    ev = evaluate(Application(load_n=rated_n, speed_m_s=0.005, length_m=0.5), screw)
+    ev = evaluate(replace(oiled, load_n=rated_n), screw)
     q = ev.quantities
     tan_l = 0.008 / (math.pi * 0.046)
     mu = 0.16 / math.cos(math.radians(15.0))

@@ -390,7 +390,10 @@ def test_eligible_rows_are_kept_per_filters_and_match_a_fresh_take(catalog: Cata
     first = Application(load_n=50.0, speed_m_s=0.05, length_m=0.5, lead_m=0.01)
     second = replace(first, load_n=80.0)
     a, b = screen(first, catalog.index), screen(second, catalog.index)
-    assert a.index is b.index and a.table is b.table
+    # the screening's table is the kept rows as the axis runs their nuts (``dry_run.as_run``:
+    # a bronze nut run dry at its dry friction): every column but friction's is kept
+    assert a.index is b.index and a.table.screws is b.table.screws
+    assert a.table.lead_m is b.table.lead_m and a.table.root_area_m2 is b.table.root_area_m2
     index = np.flatnonzero(eligible_mask(second, catalog.index.table))
     fresh = screen_table(second, catalog.index.table.take(index), index)
     assert np.array_equal(b.passed, fresh.passed)

@@ -11,7 +11,7 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
 )
-from app.core.phrase import Phrase
+from app.core.phrase import Amount, Phrase
 
 
 class Lubrication(Check):
@@ -20,11 +20,14 @@ class Lubrication(Check):
     why_none = "every nut here is rated lubricated: grease or oil the nut"
     label = "Lubrication (bronze nut)"
     description = (
-        "A bronze nut's friction, flank pressures and wear rate are a lubricated nut's "
-        "(steel on bronze with machine oil); run dry, steel on bronze rubs at 0.15 to 0.23 "
-        "and none of them holds: its torque would be a quarter to a third higher than "
-        "shown, and its pressure and wear limits have no dry basis. Where the axis runs "
-        "the nut dry (the nut lubrication input), it is flagged: grease or oil it."
+        "A bronze nut's flank pressures and wear rate are a lubricated nut's (steel on "
+        "bronze with oil or grease). Where the axis runs the nut dry (the nut lubrication "
+        "input), its numbers (torque, efficiency, heat, the start) are worked at its dry "
+        "friction, steel on bronze dry 0.15 to 0.23 (0.19 taken; its range reaches down to "
+        "the oiled 0.10), its holding at no more than its oiled static friction, as the nut "
+        "may be oiled later, but its pressure and "
+        "wear limits stay a lubricated nut's, with no dry basis: it is flagged, grease or "
+        "oil it."
     )
     formula = "passes when not (lubricated_rating and dry)"
     source = (
@@ -32,7 +35,7 @@ class Lubrication(Check):
         "bronze, dry 0.15-0.23, machine oil 0.10-0.16; Table 8-4 (bearing pressures of "
         "lubricated screws)"
     )
-    sources = ("lubricated_rating",)
+    sources = ("lubricated_rating", "dry_friction_dynamic", "dry_friction_static")
     capacity_sources = ("lubricated_rating",)
 
     def applies(self, app: Application) -> bool:
@@ -48,8 +51,14 @@ class Lubrication(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         return Phrase(
-            "Its friction, pressure and wear ratings are a lubricated nut's, and the nut is "
-            "to run dry: steel on bronze dry rubs at 0.15 to 0.23 (oiled 0.10 to 0.16)."
+            "The nut is to run dry: its numbers here are at its dry friction, running "
+            "{mu_d} and static {mu_s} (steel on bronze dry rubs at 0.15 to 0.23, oiled 0.10 "
+            "to 0.16), its holding at no more than its oiled static friction (it may be "
+            "oiled later), but its pressure and wear ratings are still a lubricated nut's.",
+            {
+                "mu_d": Amount(s.friction_dynamic, "factor"),
+                "mu_s": Amount(s.friction_static, "factor"),
+            },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
