@@ -17,6 +17,7 @@ from types import MappingProxyType
 import numpy as np
 from numpy.typing import NDArray
 
+from app.core.dry_run import as_run
 from app.core.model import Application, ScrewSpec
 from app.core.robustness import Variants, build_variants
 from app.core.screening import Filters, eligible_mask, filters
@@ -117,15 +118,19 @@ class CatalogIndex:
         return self.eligible_rows.get(filters(app), lambda: self._eligible(app))
 
     def _eligible(self, app: Application) -> Eligible:
-        """The eligible rows, read-only: every query with these filters reads them."""
+        """The eligible rows at the friction ``app`` runs each nut at (``dry_run.as_run``),
+        read-only: every query with these filters reads them."""
         index = np.flatnonzero(eligible_mask(app, self.table))
         index.setflags(write=False)
-        rows = _read_only(self.table.take(index))
-        return Eligible(index, rows, self._joint(index, rows))
+        rows = _read_only(as_run(app, self.table.take(index)))
+        return Eligible(index, rows, self._joint(app, index, rows))
 
-    def _joint(self, index: NDArray[np.intp], rows: CandidateTable) -> Joint | None:
-        """``rows`` (at ``index`` of ``table``) followed by their variant rows, when the
-        index has variant rows and these are at most ``JOINT_MAX_VARIANTS``."""
+    def _joint(
+        self, app: Application, index: NDArray[np.intp], rows: CandidateTable
+    ) -> Joint | None:
+        """``rows`` (at ``index`` of ``table``) followed by their variant rows, as ``app``
+        runs them, when the index has variant rows and these are at most
+        ``JOINT_MAX_VARIANTS``."""
         if self.variants is None:
             return None
         counts = np.diff(self.variants.start)[index]
@@ -135,7 +140,7 @@ class CatalogIndex:
         start = np.concatenate(([0], np.cumsum(counts))).astype(np.intp)
         names = tuple(self.variants.names[r] for r in picked.tolist())
         own = Variants(_read_only(self.variants.table.take(picked)), names, start)
-        return Joint(_read_only(rows.join(own.table)), len(index), own)
+        return Joint(_read_only(as_run(app, rows.join(own.table))), len(index), own)
 
     def row(self, position: int) -> CandidateTable:
         """The candidate at ``position`` of ``table`` as a table of one."""

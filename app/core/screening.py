@@ -80,12 +80,13 @@ def failing_beyond(s: Screening, cleared: Callable[[Check], bool]) -> Mask:
 
 
 #: What picks the eligible candidates of a table: (lead [m], coating, families, nut material).
-Filters = tuple[float | None, str, tuple[str, ...], str | None]
+Filters = tuple[float | None, str, tuple[str, ...], str | None, bool]
 
 
 def filters(app: Application) -> Filters:
-    """The values of ``app`` that ``eligible_mask`` reads."""
-    return (app.lead_m, app.coating, app.families, app.nut_material)
+    """The values of ``app`` its eligible rows depend on: those ``eligible_mask`` reads,
+    and whether the nut is lubricated (the friction the rows run at, ``dry_run.as_run``)."""
+    return (app.lead_m, app.coating, app.families, app.nut_material, app.lubricated)
 
 
 def eligible_mask(app: Application, table: CandidateTable) -> Mask:
