@@ -14,6 +14,7 @@ from hypothesis import settings
 from app import main as app_main
 from app.catalog import Catalog, load_catalog
 from app.main import create_app
+from tests.builtin_catalog import builtin_catalog
 from tests.readme_install import install_into
 
 # No time limit per example: hypothesis' default of 200 ms made a property test fail on a
@@ -48,7 +49,7 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 
 @pytest.fixture(scope="session")
 def catalog() -> Catalog:
-    return load_catalog()
+    return builtin_catalog()
 
 
 @pytest.fixture(scope="session")
