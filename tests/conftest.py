@@ -14,6 +14,8 @@ from hypothesis import settings
 from app import main as app_main
 from app.catalog import Catalog, load_catalog
 from app.main import create_app
+from tests.builtin_catalog import builtin_catalog
+from tests.readme_install import install_into
 
 # No time limit per example: hypothesis' default of 200 ms made a property test fail on a
 # first call slowed by a busy machine (and pass when replayed) - tests assert results,
@@ -47,7 +49,14 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 
 @pytest.fixture(scope="session")
 def catalog() -> Catalog:
-    return load_catalog()
+    return builtin_catalog()
+
+
+@pytest.fixture(scope="session")
+def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """README's install step into a temporary target, made once for the tests marked
+    ``ON_INSTALL`` (tests/readme_install.py), which one xdist worker runs."""
+    return install_into(tmp_path_factory.mktemp("site"))
 
 
 @pytest.fixture(scope="session")

@@ -1,12 +1,15 @@
 """Repository rules: lint, format, types, and the core's independence from the web."""
 
 import ast
+import csv
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from tests.readme_install import ON_INSTALL
 
 ROOT = Path(__file__).resolve().parents[1]
 WEB_PACKAGES = {"fastapi", "starlette", "jinja2", "pydantic", "pydantic_settings", "plotly"}
@@ -159,17 +162,13 @@ def test_ci_runs_the_readme_test_command() -> None:
 
 
 @pytest.mark.skipif(shutil.which("git") is None, reason="needs git")
-def test_wheel_carries_templates_static_and_catalog(tmp_path: Path) -> None:
-    result = _run(
-        "pip", "wheel", "--no-deps", "--no-build-isolation", "-w", str(tmp_path), str(ROOT)
-    )
-    if result.returncode != 0 and "hatchling" in (result.stdout + result.stderr):
-        result = _run("pip", "wheel", "--no-deps", "-w", str(tmp_path), str(ROOT))
-    assert result.returncode == 0, result.stdout + result.stderr
-    import zipfile
-
-    wheel = next(tmp_path.glob("*.whl"))
-    names = set(zipfile.ZipFile(wheel).namelist())
+@ON_INSTALL
+def test_wheel_carries_templates_static_and_catalog(installed: Path) -> None:
+    """The wheel pip builds from the checkout: the one README's install step built and
+    installed (the ``installed`` fixture, shared with the run command's tests), whose
+    RECORD lists every file of the wheel."""
+    record = next(installed.glob("*.dist-info")) / "RECORD"
+    names = {row[0] for row in csv.reader(record.read_text().splitlines()) if row}
     for required in (
         "app/templates/index.html",
         "app/static/css/app.css",

@@ -17,12 +17,13 @@ from fastapi import FastAPI
 from fastapi.testclient import TestClient
 from pydantic import BaseModel
 
-from app.catalog import Catalog, load_catalog
+from app.catalog import Catalog
 from app.contract.fields import BY_API, FIELDS
 from app.contract.input_types import describe
 from app.contract.inputs import ApplicationIn
 from app.contract.outputs import EvaluateOut, SelectOut, SeriesListOut, SeriesOut
 from app.core.model import ProvenanceKind
+from tests.builtin_catalog import builtin_catalog
 from tests.leadscrews import leadscrew_families
 
 API = "/api/v1"
@@ -30,7 +31,7 @@ API = "/api/v1"
 FULL = {"detail": "full"}
 BASE = {"load_n": 100.0, "speed_mm_s": 50.0, "length_mm": 500.0}
 CATALOG_SCREW = "ZBX8000-L10"
-SERIES_IDS = sorted(load_catalog().series)
+SERIES_IDS = sorted(builtin_catalog().series)
 PROVENANCE_KINDS = set(get_args(ProvenanceKind))
 
 #: Defaults of the optional application fields, as the issue states them.
@@ -536,7 +537,7 @@ def test_rejected_carry_failed_checks_and_a_fix(api: Api, name: str) -> None:
 
 def test_nothing_passes_still_answers_with_rejected(api: Api) -> None:
     # the leadscrews by name: a ball screw carries this axis
-    lead = ",".join(leadscrew_families(load_catalog()))
+    lead = ",".join(leadscrew_families(builtin_catalog()))
     body = select(api, **SELECT_INPUTS["nothing-passes"], family=lead)
     assert body["candidates"] == [] and body["counts"]["passed"] == 0
     assert body["rejected"] and body["summary"]["best_rejected_id"] == body["rejected"][0]["id"]

@@ -21,6 +21,7 @@ import html
 import re
 import urllib.parse
 from collections.abc import Callable, Iterator
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -65,8 +66,10 @@ def _routes(routes: list[Any], prefix: str = "") -> Iterator[tuple[str, Any]]:
             yield prefix + getattr(route, "path", ""), route
 
 
+@cache
 def html_pages() -> list[str]:
-    """Every GET route of the app that answers with an HTML page."""
+    """Every GET route of the app that answers with an HTML page (read once: the app is
+    built for it, and the scans are listed while collecting)."""
     return sorted(
         path
         for path, route in _routes(create_app().routes)

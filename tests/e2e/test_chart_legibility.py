@@ -10,7 +10,7 @@ from typing import Any
 
 import pytest
 
-from app.catalog.loader import load_catalog
+from tests.builtin_catalog import builtin_catalog
 from tests.leadscrews import leadscrew_families
 
 #: a duty (the wear-life chart) with a move and a motor curve (motor and move charts).
@@ -18,7 +18,7 @@ DUTY = "load=100&speed=50&length=500&stroke=200&cycles_per_day=1000"
 IMPERIAL = DUTY.replace("load=100", "load=22.48") + "&force_unit=lbf&length_unit=in"
 #: the same duties over the leadscrew families only: ball screws rank beside leadscrews by
 #: default and have no PV chart, so the tests of the PV chart name the leadscrews.
-LEADSCREWS = "&family=" + ",".join(leadscrew_families(load_catalog()))
+LEADSCREWS = "&family=" + ",".join(leadscrew_families(builtin_catalog()))
 
 #: each chart's tick labels (text, box, turned or not) per axis:
 #: {chart id: {"x": [...], "y": [...], "y2": [...]}}.

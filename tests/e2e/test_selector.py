@@ -10,14 +10,14 @@ import urllib.request
 from pathlib import Path
 from typing import Any
 
-from app.catalog.loader import load_catalog
+from tests.builtin_catalog import builtin_catalog
 from tests.leadscrews import leadscrew_families
 
 AXIS = "load=100&lead=10&speed=50&length=500"
 OZ_IN = 0.0070615518142260435  # N m: 4.4482216152605 N x 0.0254 m / 16 (NIST SP 811)
 #: the leadscrew families, for tests of the PV chart: ball screws rank beside leadscrews by
 #: default and have no PV chart.
-LEADSCREWS = leadscrew_families(load_catalog())
+LEADSCREWS = leadscrew_families(builtin_catalog())
 LEAD_AXIS = AXIS + "&family=" + ",".join(LEADSCREWS)
 PNG_BUTTON = ".modebar-btn[data-title='Download plot as a PNG']"
 

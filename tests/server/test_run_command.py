@@ -7,7 +7,6 @@ the packaged templates, static files and catalog are what gets tested, not the c
 
 import os
 import re
-import shlex
 import signal
 import subprocess
 import sys
@@ -21,17 +20,9 @@ import pytest
 from app import cli
 from app.server.protocol import BoundedHttpToolsProtocol
 from deploy.local import START_CEILING_S, free_port
+from tests.readme_install import ON_INSTALL, readme_run_command
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def readme_run_command() -> tuple[list[str], list[str]]:
-    """(install, serve) argument lists from the ``## Run`` block of README.md."""
-    readme = (ROOT / "README.md").read_text()
-    block = re.search(r"^## Run\s*\n+```(?:sh|bash|console)?\n(.+?)\n```", readme, re.M | re.S)
-    assert block, "README.md has no ## Run code block"
-    install, serve = (shlex.split(part) for part in block[1].strip().split("&&"))
-    return install, serve
 
 
 def test_the_readme_run_command_is_install_then_serve() -> None:
@@ -53,28 +44,6 @@ def test_the_constraints_pin_every_dependency_exactly() -> None:
     for requirement in named:
         name = re.split(r"[\[<>=!~ ]", requirement, maxsplit=1)[0]
         assert re.sub(r"[-_.]+", "-", name).lower() in pinned, requirement
-
-
-#: the tests of the install run on one xdist worker (``--dist loadgroup``): it is made once
-ON_INSTALL = pytest.mark.xdist_group("run-command-install")
-
-
-@pytest.fixture(scope="module")
-def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The README's install step, into a temporary target, run from outside the checkout."""
-    install, _ = readme_run_command()
-    target = tmp_path_factory.mktemp("site")
-    install = [str(ROOT / arg) if arg.endswith(".txt") else arg for arg in install]
-    args = [sys.executable, *install[1:-1], "--no-deps", "--target", str(target), str(ROOT)]
-    done = subprocess.run(
-        args, cwd=target, capture_output=True, text=True, timeout=600, check=False
-    )
-    if done.returncode != 0:
-        reason = f"pip install failed:\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
-        if os.environ.get("CI") == "true" or "hatchling" not in done.stderr:
-            pytest.fail(reason)
-        pytest.skip("cannot fetch the build backend (offline?): " + reason[-300:])
-    return target
 
 
 @pytest.mark.parametrize(
