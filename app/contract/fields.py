@@ -80,10 +80,9 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="guide_friction", page="guide_friction", core="guide_friction",
-        label="Guide friction", help="Friction coefficient of the guides that carry the "
-        "moving mass on a horizontal axis: the nut also pushes μ m g while moving. Ball "
-        "profile rail carriages 0.002–0.003, roller 0.001–0.002 (Thomson), seals' drag "
-        "besides; plain sliding guides far more. 0 counts none (or give it in the load)",
+        label="Guide friction", help="Friction coefficient of the guides carrying the "
+        "moving mass on a horizontal axis (μ m g more on the nut). Ball carriages "
+        "0.002–0.003, roller 0.001–0.002 (Thomson); 0: none",
         group="Motion and load", kind="number", default=0.0, bounds=(0.0, 1.0),
     ),
     InputField(
