@@ -125,8 +125,9 @@ class SegmentOut(BaseModel):
     )
     curve_nm: Annotated[float | None, From("curve_nm", "torque")] = Field(
         default=None,
-        description="The motor's usable torque at the segment's top speed (its curve over "
-        "the stepper margin), which the torque-speed curve check holds the torque times the "
+        description="The motor's usable torque (its curve over the stepper margin) at the "
+        "segment's top speed, for a ramp (accelerate, decelerate) the lowest from standstill "
+        "to its top speed, which the torque-speed curve check holds the torque times the "
         "safety factor against; null without a curve.",
     )
     governs: Annotated[bool, From("governs")] = Field(

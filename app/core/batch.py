@@ -144,7 +144,7 @@ class Batch:
         hold = np.array(self.column("brake_nm"))
         parts = segments.segments(self.app, self.screening.table.take(self.at), hold)
         columns = [
-            (s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist(), self._curve(s.rpm))
+            (s, s.rpm.tolist(), s.thrust_n.tolist(), s.torque_nm.tolist(), self._curve(s))
             for s in parts
         ]
         peak, rms = self.column("motor_peak_nm"), self.column("motor_rms_nm")
@@ -171,12 +171,13 @@ class Batch:
             for k in range(len(self.at))
         ]
 
-    def _curve(self, rpm: Array) -> list[float] | None:
-        """The motor's usable torque at each candidate's ``rpm`` [N m], as the curve check
-        check holds a segment against it (None without a curve)."""
+    def _curve(self, s: Segment[Array]) -> list[float] | None:
+        """The motor's usable torque each candidate's segment ``s`` is held against [N m],
+        as the curve check holds it (``segments.segment_curve``: a ramp's lowest from
+        standstill to its top speed); None without a curve."""
         if not self.app.motor_curve:
             return None
-        curve: list[float] = segments.curve_torque(self.app, rpm).tolist()
+        curve: list[float] = segments.segment_curve(self.app, s.name, s.rpm)[0].tolist()
         return curve
 
 

@@ -140,10 +140,19 @@ def motor_point(
         start_nm = np.broadcast_to(np.abs(torques["breakaway_nm"]), speeds[0].shape)
         starting = np.vstack([magnitude, start_nm])
         at_rest = np.vstack([speeds, np.zeros_like(speeds[0])])
-        load = starting / segments.curve_torque(app, at_rest) if app.motor_curve else starting
+        read_rpm = at_rest
+        if app.motor_curve:
+            # each segment against the curve over the speeds it runs through (a ramp:
+            # the lowest from standstill to its top speed), the break-away at standstill
+            read = [segments.segment_curve(app, s.name, s.rpm) for s in parts]
+            usable = np.vstack([*(u for u, _ in read), segments.curve_torque(app, at_rest[-1])])
+            read_rpm = np.vstack([*(r for _, r in read), at_rest[-1]])
+            load = starting / usable
+        else:
+            load = starting
         index = load.argmax(axis=0)
         columns = np.arange(len(t))
-        worst_nm, worst_rpm = starting[index, columns], at_rest[index, columns]
+        worst_nm, worst_rpm = starting[index, columns], read_rpm[index, columns]
         index = np.where(index == len(parts), -1, index)
         peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
         referred = segments.referred_rms(app, parts) if app.motor_rms_curve else rms

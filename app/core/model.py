@@ -413,8 +413,9 @@ class Segment(Generic[V]):
     """One segment of the cycle: its duration [s], the screw's top speed in it [rpm], the
     thrust against the motion [N] and the motor torque [N m] (negative: the motor brakes).
     ``V`` is an array (one element per candidate) or a float. A candidate's own segments
-    also carry the motor's usable torque at the segment's speed [N m] (its curve over the
-    stepper margin, ``segments.curve_torque``; None without a curve) and whether the segment
+    also carry the motor's usable torque the segment is held against [N m] (its curve over
+    the stepper margin at the segment's speed, a ramp's lowest from standstill to its top
+    speed: ``segments.segment_curve``; None without a curve) and whether the segment
     governs the motor: the one nearest its curve, or the largest torque without a curve
     (``Quantities.motor.motor_worst_segment``)."""
 

@@ -234,6 +234,48 @@ def curve_torque(app: Application, rpm: Array) -> Array:
     return usable
 
 
+#: The segments that run through every speed from standstill to their top speed.
+RAMP_NAMES = frozenset(("accelerate", "decelerate"))
+
+
+def segment_curve(app: Application, name: SegmentName, rpm: Array) -> tuple[Array, Array]:
+    """The motor's usable torque a segment named ``name`` at the top speed ``rpm`` is
+    held against [N m], and the speed it is read at [rpm]: a ramp (accelerate,
+    decelerate) passes through every speed from standstill to ``rpm`` with the same
+    torque, so the lowest usable torque over that range (``swept_curve_torque``); the
+    constant and dwell segments the usable torque at ``rpm`` (``curve_torque``)."""
+    if name in RAMP_NAMES:
+        return swept_curve_torque(app, rpm)
+    return curve_torque(app, rpm), np.asarray(rpm, dtype=np.float64)
+
+
+def swept_curve_torque(app: Application, rpm: Array) -> tuple[Array, Array]:
+    """The lowest usable torque (``curve_torque``) over the speeds from standstill to
+    ``rpm`` [N m], and the speed where it is lowest [rpm] (``rpm`` itself where none is
+    lower, as on a curve that only falls). The curve is linear between its points, so
+    the lowest value is at ``rpm`` or at one of its points below it: a published curve
+    that dips at a resonance (SY42STH47-1684B: 0.28 N m at 270 rpm, 0.29 N m at 360 rpm)
+    limits a move that accelerates through the dip.
+
+    >>> app = Application(load_n=0.0, speed_m_s=0.1, length_m=0.5,
+    ...                   motor_curve=((0.0, 0.4), (300.0, 0.2), (600.0, 0.3)))
+    >>> [np.round(v, 9).tolist() for v in swept_curve_torque(app, np.array([150.0, 600.0]))]
+    [[0.3, 0.2], [150.0, 300.0]]
+    """
+    top = np.asarray(rpm, dtype=np.float64)
+    at_top = np.ravel(curve_torque(app, top))
+    speeds, torques = _curve_points(app.motor_curve)
+    usable = torques / curve_margin(app)
+    below = speeds[:, None] < np.ravel(top)[None, :]
+    masked = np.where(below, usable[:, None], np.inf)
+    k = masked.argmin(axis=0)
+    lowest = masked[k, np.arange(masked.shape[1])]
+    dips = lowest < at_top
+    torque = np.where(dips, lowest, at_top).reshape(top.shape)
+    where = np.where(dips, speeds[k], np.ravel(top)).reshape(top.shape)
+    return np.asarray(torque, dtype=np.float64), np.asarray(where, dtype=np.float64)
+
+
 def read_curve(curve: tuple[tuple[float, float], ...], rpm: Array) -> Array:
     """A motor's (rpm, N m) curve read at ``rpm`` [N m]: linear between its points, the
     first point's torque below it; past the last point the motor cannot run (the speed

@@ -99,7 +99,9 @@ class MotorCurve(Check):
     description = (
         "Each segment of the move (accelerate, constant, decelerate, dwell; both ways) "
         "needs, times the torque safety factor, at most the torque the motor's curve gives "
-        "at that segment's top speed, a stepper's pull-out divided by its torque margin, "
+        "over the speeds it runs through (at its top speed; a ramp, accelerating or "
+        "decelerating, the lowest from standstill to its top speed, so a curve's dip at a "
+        "resonance counts), a stepper's pull-out divided by its torque margin, "
         "and the break-away that starts each move from rest (the thread at static "
         "friction) at most the curve's torque at standstill; the segment nearest its "
         "curve is shown. A stepper's curve from its datasheet "
