@@ -81,6 +81,10 @@ class PairOut(BaseModel):
         description="The largest share of the motor used over its torque, curve, RMS and "
         "speed checks (0-1; 1 - motor_use is the margin)"
     )
+    motor_limit: str = Field(
+        description="The motor check motor_use is, the one nearest its limit (a check "
+        "name of GET /api/v1/checks: motor_curve, motor_rms, motor_speed, torque, ...)"
+    )
     torque_nm: float = Field(description="Peak drive torque with the motor's rotor [N m]")
     peak_rpm: float = Field(description="The screw's top speed in the move [rpm]")
     motor_size_nm: float = Field(description="The motor's standstill torque [N m]")

@@ -21,8 +21,9 @@ from numpy.typing import NDArray
 from app.core.checks.base import Reach
 from app.core.index import CatalogIndex
 from app.core.model import Application, ScrewSpec
+from app.core.record import MOTOR_CHECKS
 from app.core.screening import failing_beyond, screen_table
-from app.core.selection import motor_use, screen, shown_torque
+from app.core.selection import motor_limit, motor_use, screen, shown_torque
 from app.core.table import Array, CandidateTable
 
 #: How pairs rank: the smallest share of the motor used; the smallest motor (its torque
@@ -43,6 +44,8 @@ class Pair:
     torque_nm: float
     peak_rpm: float
     motor_size_nm: float
+    #: the motor check ``motor_use`` is (``record.MOTOR_CHECKS``; "" when none ran)
+    motor_limit: str = ""
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,13 +61,15 @@ class Pairs:
 
 class _Found(NamedTuple):
     """The passing pairs of every motor as arrays: the row (in the screws that pass
-    alone), the motor's position, its share used, the drive torque, the top speed."""
+    alone), the motor's position, its share used, the drive torque, the top speed, and
+    which motor check the share is (``selection.motor_limit``)."""
 
     row: NDArray[np.intp]
     motor: NDArray[np.intp]
     use: Array
     torque: Array
     rpm: Array
+    limit: NDArray[np.intp]
 
 
 def _motor_pairs(
@@ -80,6 +85,7 @@ def _motor_pairs(
         motor_use(s)[ok],
         shown_torque(s)[ok],
         s.quantities.motor.peak_rpm[ok],
+        motor_limit(s)[ok],
     )
 
 
@@ -111,7 +117,9 @@ def rank_pairs(
     parts = [
         _motor_pairs(k, motors[mid], table, rows, index.table.reach) for k, mid in enumerate(ids)
     ]
-    empty = _Found(np.empty(0, np.intp), np.empty(0, np.intp), *(np.empty(0),) * 3)
+    empty = _Found(
+        np.empty(0, np.intp), np.empty(0, np.intp), *(np.empty(0),) * 3, np.empty(0, np.intp)
+    )
     found = _Found(*(np.concatenate(column) for column in zip(empty, *parts, strict=True)))
     top = _order(rank, found, size)[: app.limit]
     return Pairs(
@@ -123,6 +131,7 @@ def rank_pairs(
                 float(found.torque[i]),
                 float(found.rpm[i]),
                 float(size[found.motor[i]]),
+                MOTOR_CHECKS[found.limit[i]] if found.limit[i] >= 0 else "",
             )
             for i in top.tolist()
         ],

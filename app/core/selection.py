@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from functools import partial
 
 import numpy as np
+from numpy.typing import NDArray
 
 from app.core import kinds, motion
 from app.core.changes import (
@@ -46,6 +47,20 @@ def motor_use(s: Screening) -> np.ndarray:
     if not shares:
         return s.total_torque_nm
     return np.asarray(np.nanmax(np.array(shares), axis=0), dtype=np.float64)
+
+
+def motor_limit(s: Screening) -> NDArray[np.intp]:
+    """Per candidate, which motor check its ``motor_use`` is: a position in
+    ``MOTOR_CHECKS`` (the one of the largest share), -1 where none ran."""
+    shares = np.array(
+        [
+            np.full(len(s.passed), -np.inf) if (use := s.utilization.get(name)) is None else use
+            for name in MOTOR_CHECKS
+        ]
+    )
+    shares = np.where(np.isnan(shares), -np.inf, shares)
+    top = shares.argmax(axis=0)
+    return np.where(np.isfinite(shares.max(axis=0)), top, -1)
 
 
 def shown_torque(s: Screening) -> np.ndarray:

@@ -86,6 +86,7 @@ def _pair_out(
         "frame": motor.frame,
         "motor_curve_origin": curve_origin(alone, driven, catalog.motors),
         "motor_use": pair.motor_use,
+        "motor_limit": pair.motor_limit,
         "torque_nm": pair.torque_nm,
         "peak_rpm": pair.peak_rpm,
         "motor_size_nm": pair.motor_size_nm,

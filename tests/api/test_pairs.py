@@ -251,3 +251,21 @@ def test_an_unknown_motor_is_refused_as_a_selection_refuses_it(client: TestClien
         assert r.status_code == 422, r.text
         assert r.json()["detail"][0]["field"] == "motor"
         assert "unknown motor 'foo'" in r.json()["detail"][0]["message"]
+
+
+def test_each_pair_names_the_motor_limit_its_share_is(client: TestClient) -> None:
+    """A 2.5 kg vertical axis at 25 mm/s on R08-02.5T2-RSIT (lead 2.5 mm): the screw turns
+    25 / 2.5 x 60 = 600 rpm. With SY35ST36-1004A, whose library curve ends at 750 rpm,
+    the speed uses 600 / 750 = 80 % of the motor, more than its torque uses: the pair's
+    share is its speed limit, and it says so; every pair names the check its share is."""
+    body = _pairs(
+        client, load_n=0.0, speed_mm_s=25.0, length_mm=300.0, moving_mass_kg=2.5,
+        orientation="vertical", accel_mm_s2=500.0, stroke_mm=200.0, dwell_s=0.5,
+        holding_source="energised", limit=100,
+    )  # fmt: skip
+    pairs = {(p["screw_id"], p["motor"]): p for p in body["pairs"]}
+    pair = pairs[("R08-02.5T2-RSIT", "sy35st36-1004a")]
+    assert pair["motor_use"] == pytest.approx(600.0 / 750.0, rel=1e-9)
+    assert pair["motor_limit"] == "motor_speed"
+    checks = {c["name"] for c in client.get("/api/v1/checks").json()["checks"]}
+    assert all(p["motor_limit"] in checks for p in body["pairs"])
