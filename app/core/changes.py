@@ -44,13 +44,14 @@ def input_change(best: Candidate) -> dict[str, float]:
     """Inputs that, changed together, clear every failed numeric check of ``best``.
 
     Each failed check offers alternatives (e.g. PV: lower load or lower speed); pick the
-    input that the most failed checks share, and its tightest value. A change of two or
-    more inputs is judged again with them set, and a check that then fails adds or
+    input that the most failed checks share, and its tightest value. The change is
+    judged again with it made, and a check that then fails adds or
     tightens its input (``CHANGE_ROUNDS``): each value is a bound, a most or a least, and
     a round never undoes an earlier one's (a shorter screw for the critical speed after a
     longer one for the stroke). Empty when a failed check has no input remedy (e.g. a
     yes/no check), or when the bounds on one input cannot both hold. The inputs' own
-    rules bound it too (``least_inputs``: no screw shorter than its stroke).
+    rules bound it too (``least_inputs``: no screw shorter than its stroke). Empty too
+    when a check still fails after the last round: a change admits the screw it names.
     """
     app, failed = best.app, best.failed_checks
     least = least_inputs(app)
@@ -66,11 +67,14 @@ def input_change(best: Candidate) -> dict[str, float]:
         if any(least[k] > most[k] for k in least.keys() & most.keys()):
             return {}  # one check needs the input above where another needs it below
         change = {**change, **{k: most.get(k, least.get(k, 0.0)) for k in more}}
-        if len(change) < 2 or not more:
+        if not more:
             break
+        # judged again, one input too: a longer screw for the stroke turns a heavier screw
         app = replace(best.app, **cast(dict[str, Any], change))
         failed = evaluate(app, best.screw).failed_checks
-    return change
+        if not failed:
+            break
+    return {} if failed else change
 
 
 Bounds = tuple[Mapping[str, float], Mapping[str, float]]

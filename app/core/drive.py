@@ -157,8 +157,14 @@ def motor_point(
         peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
         referred = segments.referred_rms(app, parts) if app.motor_rms_curve else rms
         if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
-            fitting = fitting_accel(app, parts, signed, index, worst_rpm)
-            fix_accel = fitting_accel(app, parts, signed, index, worst_rpm, 1.0 + FIX_MARGIN)
+            fitting = np.minimum(
+                fitting_accel(app, parts, signed, index, worst_rpm),
+                starting_accel(app, t, torques),
+            )
+            fix_accel = np.minimum(
+                fitting_accel(app, parts, signed, index, worst_rpm, 1.0 + FIX_MARGIN),
+                starting_accel(app, t, torques, 1.0 + FIX_MARGIN),
+            )
         if app.motor_curve and not app.moves:
             fitting_speed = slower_fit(app, starting, at_rest, p.peak_speed_m_s)
             fix_speed = slower_fit(app, starting, at_rest, p.peak_speed_m_s, 1.0 + FIX_MARGIN)
@@ -205,6 +211,33 @@ def fitting_accel(
     room = segments.curve_torque(app, rpm) / (app.torque_safety_factor * margin) - t_run
     fits = accelerating & (slope > 0.0) & (room > 0.0)
     return np.where(fits, room / np.where(fits, slope, 1.0), np.nan)
+
+
+def starting_accel(
+    app: Application, t: CandidateTable, torques: dict[str, Any], margin: float = 1.0
+) -> Array:
+    """The highest acceleration [m/s^2] at which the break-away that starts the move
+    (``torques["breakaway_nm"]``) still fits the curve at standstill, a bound on
+    ``fitting_accel``'s where the accelerate segment governs (a slower ramp that fits it
+    may leave the start over the curve, read at 0 rpm). The break-away is affine in the
+    acceleration, its part in it the force m a through the thread at static friction and
+    the screw's and the rotor's inertia torques: B(a) = B_0 + (B - B_0) a / a_now.
+    Infinite where it fits at any acceleration, NaN where it fits at none (B_0 alone
+    over the curve)."""
+    accel = app.accel_m_s2
+    part = (
+        torque.load_torque(
+            app.moving_mass_kg * accel, t.lead_m, t.efficiency_static, t.start_efficient_turn_rad
+        )
+        + torques["inertia_screw_nm"]
+        + torques["inertia_motor_nm"]
+    )
+    rest = torques["breakaway_nm"] - part
+    room = segments.curve_torque(app, np.zeros(len(t))) / (app.torque_safety_factor * margin)
+    room = room - np.abs(rest)
+    grows = part > 0.0
+    fits = np.divide(room * accel, part, out=np.full(len(t), np.inf), where=grows)
+    return np.where(room > 0.0, fits, np.nan)
 
 
 def slower_fit(

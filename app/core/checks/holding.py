@@ -14,6 +14,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     everywhere,
     least,
     same,
@@ -109,7 +110,9 @@ def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) 
     """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
     that self-locks with margin, when it is made in one."""
     values = {"needed": least(r.holding.brake_needed_nm, "torque")}
-    lead = reach.made_lead(s, r.holding.max_self_locking_lead_with_margin_m, larger=False)
+    # the lead FIX_MARGIN inside the self-locking limit, as the fix promises
+    limit = at_most(r.holding.max_self_locking_lead_with_margin_m)
+    lead = reach.made_lead(s, limit, larger=False)
     if lead is None:
         return Phrase(start + "." + MARGIN_NOTE, values)
     return Phrase(

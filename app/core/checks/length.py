@@ -14,6 +14,7 @@ from app.core.checks.base import (
     most,
     same,
 )
+from app.core.input_rules import least_inputs
 from app.core.phrase import Amount, Phrase
 
 
@@ -53,9 +54,19 @@ class Length(Check):
             if reach.max_length_m > (s.max_length_m or 0.0)
             else ""
         )
+        cap = most(s.max_length_m or 0.0, "length")
+        # a screw shorter than the stroke (and the nut, or the span to the thrust bearing)
+        # is no screw the inputs accept: then the stroke must shorten with it
+        shortest = least_inputs(app).get("length_m")
+        if shortest is not None and cap.value < shortest:
+            variant = "Choose a variant made longer, or shorten" if longer else "Shorten"
+            return Phrase(
+                variant + " the stroke: a screw of at most {cap} is shorter than the stroke "
+                "needs ({need})." + MARGIN_NOTE,
+                {"cap": cap, "need": Amount(shortest, "length")},
+            )
         return Phrase(
-            "Shorten the screw to at most {cap}" + longer + "." + MARGIN_NOTE,
-            {"cap": most(s.max_length_m or 0.0, "length")},
+            "Shorten the screw to at most {cap}" + longer + "." + MARGIN_NOTE, {"cap": cap}
         )
 
     def input_limits(

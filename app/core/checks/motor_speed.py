@@ -12,8 +12,8 @@ from app.core.checks.base import (
     Reach,
     ScrewSpec,
     at_least,
-    at_most,
     everywhere,
+    most,
     same,
 )
 from app.core.formulas import geometry
@@ -63,17 +63,16 @@ class MotorSpeed(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        values = {"speed": most(geometry.linear_speed(top_curve_rpm(app), s.lead_m), "speed")}
+        # the lead the size is made in that turns the screw slowly enough, when made
+        needed = at_least(r.motor.peak_rpm * s.lead_m / top_curve_rpm(app))
+        lead = reach.made_lead(s, needed, larger=True)
+        if lead is None or lead > reach.max_lead_m:
+            return Phrase("A speed of at most {speed}, or a faster motor." + MARGIN_NOTE, values)
         return Phrase(
             "A speed of at most {speed}, a lead of at least {lead}, or a faster motor."
             + MARGIN_NOTE,
-            {
-                "speed": Amount(
-                    at_most(geometry.linear_speed(top_curve_rpm(app), s.lead_m)), "speed"
-                ),
-                "lead": Amount(
-                    at_least(r.motor.peak_rpm * s.lead_m / top_curve_rpm(app)), "length"
-                ),
-            },
+            {**values, "lead": Amount(lead, "length")},
         )
 
     def input_limits(

@@ -68,7 +68,7 @@ class StepRate(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         limit = app.max_step_rate_hz or 0.0
-        rpm = limit / steps_per_rev(app) * stepping.SECONDS_PER_MINUTE
+        rpm = _limit_rpm(app)
         return Phrase(
             "At a step rate of {limit} the screw may turn {rpm} ({speed} on this lead): "
             "fewer microsteps, a longer lead or a lower speed." + MARGIN_NOTE,
@@ -78,3 +78,15 @@ class StepRate(Check):
                 "speed": most(geometry.linear_speed(rpm, s.lead_m), "speed"),
             },
         )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float]:
+        """The top speed at the controller's step rate: the speed the fix offers, which a
+        cycle a day may refuse (``input_rules.refused`` says so beside the fix)."""
+        return {"speed_m_s": geometry.linear_speed(_limit_rpm(app), s.lead_m)}
+
+
+def _limit_rpm(app: Application) -> float:
+    """The screw speed at the controller's highest step rate [rpm]."""
+    return (app.max_step_rate_hz or 0.0) / steps_per_rev(app) * stepping.SECONDS_PER_MINUTE

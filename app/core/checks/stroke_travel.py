@@ -16,8 +16,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_most,
     least,
-    most,
     same,
     where_given,
 )
@@ -63,13 +63,14 @@ class StrokeTravel(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         longer = {"L": least((app.stroke_m or 0.0) + r.nut.nut_length_m, "length")}
-        room = app.length_m - r.nut.nut_length_m
+        # the stroke plus the nut kept FIX_MARGIN inside the screw length, as promised
+        room = at_most(app.length_m) - r.nut.nut_length_m
         if room <= 0.0:
             return Phrase("Lengthen the screw to at least {L}." + MARGIN_NOTE, longer)
         return Phrase(
             "Shorten the stroke to at most {s}, or lengthen the screw to at least {L}."
             + MARGIN_NOTE,
-            {**longer, "s": most(room, "length")},
+            {**longer, "s": Amount(room, "length", "down")},
         )
 
     def input_limits(

@@ -12,8 +12,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_least,
     everywhere,
+    least,
     load_input,
     most,
 )
@@ -82,9 +82,7 @@ class SupportStatic(Check):
             "A thrust bearing with a static axial rating of at least {c0a}, or a peak thrust "
             "of at most {cap} (a lower load, acceleration or moving mass)." + MARGIN_NOTE,
             {
-                "c0a": Amount(
-                    at_least(r.axis.peak_force_n * app.support_static_safety_factor), "force"
-                ),
+                "c0a": least(r.axis.peak_force_n * app.support_static_safety_factor, "force"),
                 "cap": most(r.support.support_allowed_n, "force"),
             },
         )
