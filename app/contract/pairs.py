@@ -82,8 +82,9 @@ class PairOut(BaseModel):
         "speed checks (0-1; 1 - motor_use is the margin)"
     )
     motor_limit: str = Field(
-        description="The motor check motor_use is, the one nearest its limit (a check "
-        "name of GET /api/v1/checks: motor_curve, motor_rms, motor_speed, torque, ...)"
+        description="The motor check motor_use is, the one nearest its limit: the name of "
+        "a check of GET /api/v1/checks that judges the motor (its curve, RMS torque, speed "
+        "or torque)"
     )
     torque_nm: float = Field(description="Peak drive torque with the motor's rotor [N m]")
     peak_rpm: float = Field(description="The screw's top speed in the move [rpm]")
