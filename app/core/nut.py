@@ -124,10 +124,13 @@ def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> di
 def rating(app: Application, t: CandidateTable, area_m2: Array) -> tuple[Array, Array]:
     """The nut's rated load in motion and its engaged length (``axis_free.nut_rating``):
     the table's at the catalog's nut length, else worked out at the user's (flank area
-    ``area_m2``)."""
+    ``area_m2``), at most the catalog nut's: a maker rates the nut it sells, and a longer
+    nut's turns do not share the thrust evenly, so a nut longer than the catalog's is held
+    to its rating (a shorter one carries less, in proportion to its turns)."""
     if app.nut_length_m is None:
         return t.catalog_rated_load_n, t.catalog_engaged_length_m
-    return nut_rating(area_m2, nut_length(app, t), partial(getattr, t))
+    rated, length = nut_rating(area_m2, nut_length(app, t), partial(getattr, t))
+    return np.fmin(rated, t.catalog_rated_load_n), length
 
 
 def wear_life(

@@ -174,7 +174,14 @@ class Candidate:
     def value_provenance(self) -> dict[str, Provenance]:
         """The provenance of every value a check may read: the screw's catalog values and
         the axis's values that the checks' capacities are (``Batch.axis``)."""
-        return {**self.screw.provenance, **self.axis_provenance}
+        return {**self.screw.provenance, **self._typed_nut_length, **self.axis_provenance}
+
+    @property
+    def _typed_nut_length(self) -> dict[str, Provenance]:
+        """The nut length's provenance where the axis gives one (the catalog's replaced):
+        the user's, as typed in."""
+        given = self.app.nut_length_m is not None and "nut_length" in self.screw.provenance
+        return {"nut_length": TYPED} if given else {}
 
     @property
     def axis_provenance(self) -> dict[str, Provenance]:
@@ -241,7 +248,8 @@ class Candidate:
         the axis's values the checks' capacities are (a motor's curve: typed in, or the
         library's)."""
         used = {src for c in self.checks for src in c.sources} | set(GEOMETRY_SOURCES)
-        found = {k: p for k, p in self.screw.provenance.items() if k in used}
+        screw = {**self.screw.provenance, **self._typed_nut_length}
+        found = {k: p for k, p in screw.items() if k in used}
         axis = self.axis_provenance
         given = (c.check.capacity_given for c in self.checks if c.check.capacity_given)
         return found | {key: axis.get(key, TYPED) for key in given}

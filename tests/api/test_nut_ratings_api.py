@@ -80,7 +80,8 @@ def test_an_unlisted_size_takes_the_lowest_listed_pressure(client: TestClient) -
     2050 N over its 64 mm nut (10.667 turns x pi x 29 x 3 mm^2 = 2915 mm^2) = 0.7032 MPa
     (Tr20x4's is 980 / 1131 = 0.8665, Tr10x2's 255 / 282.7 = 0.902), over Tr24x5's 48 mm nut
     (9.6 turns x pi x 21.5 x 2.5 mm^2 = 1621 mm^2): 1140 N. A 60 mm Tr20x4 nut (15 turns)
-    carries 1.5 x 980 = 1470 N."""
+    is held to MISUMI's 980 N for its 40 mm nut (it was 1.5 x 980 = 1470 N, above the
+    maker's rating); a 30 mm nut (7.5 turns) carries 0.75 x 980 = 735 N."""
     tr24 = evaluate(client, "Tr24x5-acetal", **SLOW)
     rated = check(tr24, "design_load")
     area = 9.6 * math.pi * 21.5e-3 * 2.5e-3
@@ -90,7 +91,10 @@ def test_an_unlisted_size_takes_the_lowest_listed_pressure(client: TestClient) -
     assert tr24["provenance"]["dynamic_pressure"]["kind"] == "derived"
     assert "not in the maker's table" in rated["message"]
     longer = check(evaluate(client, "Tr20x4-acetal", **SLOW, nut_length_mm=60), "design_load")
-    assert longer["limit"] == pytest.approx(1.5 * MISUMI_POM_TR20X4_N)
+    assert longer["limit"] == pytest.approx(MISUMI_POM_TR20X4_N)
+    assert "The 60 mm nut is held to the rating of the 40 mm nut" in longer["message"]
+    shorter = check(evaluate(client, "Tr20x4-acetal", **SLOW, nut_length_mm=30), "design_load")
+    assert shorter["limit"] == pytest.approx(0.75 * MISUMI_POM_TR20X4_N)
 
 
 def test_a_bronze_nut_is_held_to_misumis_9_81_kn(client: TestClient) -> None:
