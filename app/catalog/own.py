@@ -191,12 +191,21 @@ def user_material(
     youngs_modulus_pa: float, density_kg_m3: float, yield_strength_pa: float | None, like: Material
 ) -> Material:
     """The user's constants as a material, each of provenance "user"; the thermal
-    expansion, which the user is not asked for, is ``like``'s (with its provenance)."""
+    expansion, which the user is not asked for, is ``like``'s value, "assumed" (an
+    aluminium screw expands about twice as much as steel); no thermal conductivity (the
+    nut heat check says it could not run)."""
     yield_strength = None if yield_strength_pa is None else Sourced(yield_strength_pa, "Pa", USER)
+    expansion = like.expansion_per_k
+    assumed = Provenance(
+        "assumed",
+        f"not given with the screw's own material: steel's {expansion.value:.3g} 1/K taken "
+        f"({expansion.provenance.kind}: {expansion.provenance.source}); a screw of another "
+        "metal expands by its own (aluminium about 23e-6 1/K, twice steel's)",
+    )
     return Material(
         youngs_modulus_pa=Sourced(youngs_modulus_pa, "Pa", USER),
         density_kg_m3=Sourced(density_kg_m3, "kg/m3", USER),
-        expansion_per_k=like.expansion_per_k,
+        expansion_per_k=Sourced(expansion.value, expansion.unit, assumed),
         yield_strength_pa=yield_strength,
     )
 
@@ -291,6 +300,8 @@ def own_screw(
         "inertia_per_length": inertia_source,
         "youngs_modulus": material.youngs_modulus_pa.provenance,
         "density": material.density_kg_m3.provenance,
+        "screw_expansion": material.expansion_per_k.provenance,
+        **_conductivity_provenance(material),
         **({} if nut is None else _nut_provenance(nut)),
         **thread_provenance,
         **({} if rated is None else {"dynamic_pressure": rated[1]}),
@@ -350,6 +361,13 @@ def _nut_length_end(geometry: OwnGeometry, nut: NutMaterial, ratio: float) -> di
     if rated is not None:
         end["dynamic_pressure_pa"] = rated[0]
     return end
+
+
+def _conductivity_provenance(material: Material) -> dict[str, Provenance]:
+    """The screw material's thermal conductivity's provenance, where it gives one (else
+    the catalog's "not checked")."""
+    k = material.thermal_conductivity_w_m_k
+    return {} if k is None else {"thermal_conductivity": k.provenance}
 
 
 def _conductivity(material: Material) -> float | None:

@@ -59,6 +59,33 @@ def test_a_longer_nut_of_ones_own_is_held_to_misumis_thrust(client: TestClient) 
     assert "nut_length" not in [r["field"] for r in c["verdict"]["rests_on"]]
 
 
+def test_a_named_materials_conductivity_keeps_its_provenance(client: TestClient) -> None:
+    """The nut heat of the Tr20x4 runs on C45's 50.7 W/(m K) (Incropera, handbook), which
+    the answer called "not checked". By hand: the mean speed over a 600 mm move with
+    0.1 s ramps at 0.3 m/s^2 is 600 / 20.1 = 29.85 mm/s; eta = (cos 15 - 0.13 x 0.070736)
+    / (cos 15 + 0.13 / 0.070736) = 0.34124; Q = 3000 x 0.02985 x (1 / 0.34124 - 1) =
+    172.9 W; the screw's two fins 2 sqrt(10 x pi 0.0155 x 50.7 x pi 0.0155^2 / 4) =
+    0.13651 W/K and the nut's surface 10 x pi x 0.04 x 0.06 = 0.07540 W/K: 816 K."""
+    c = _custom(client, TR20X4_BRONZE, **LONG_NUT_AXIS)
+    heat = check(c, "nut_heat")
+    q = 3000 * (0.6 / 20.1) * (1 / 0.34124 - 1)
+    fins = 2 * math.sqrt(10 * math.pi * 0.0155 * 50.7 * math.pi * 0.0155**2 / 4)
+    assert heat["value"] == pytest.approx(q / (fins + 10 * math.pi * 0.04 * 0.06), rel=1e-3)
+    assert c["provenance"]["thermal_conductivity"]["kind"] == "handbook"
+    assert "50.7" in c["provenance"]["thermal_conductivity"]["source"]
+
+
+def test_an_own_materials_expansion_is_said_to_be_steels(client: TestClient) -> None:
+    """The thermal growth of the aluminium screw takes steel's 11.7e-6 1/K, not asked of
+    the user: 11.7e-6 x 30 K x 0.8 m = 0.2808 mm (aluminium's 23e-6 would give 0.552 mm).
+    Its provenance says so, "assumed" (there was none; the candidate listed no
+    screw_expansion)."""
+    c = _custom(client, ALUMINIUM_2_START, **FAST_AXIS, ambient_c=50, positioning_tolerance_mm=0.5)
+    assert c["accuracy"]["thermal_growth_mm"] == pytest.approx(11.7e-6 * 30 * 800)
+    expansion = c["provenance"]["screw_expansion"]
+    assert expansion["kind"] == "assumed" and "steel's" in expansion["source"]
+
+
 def test_the_aluminium_screw_by_hand(client: TestClient) -> None:
     """d2 = 20 - 6 / 2 = 17 mm; tan(lambda) = 12 / (pi 17) = 0.224689 (12.663 deg);
     eta = (cos 15 - 0.15 x 0.224689) / (cos 15 + 0.15 / 0.224689) = 0.57068; back-driving
