@@ -65,7 +65,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "support_dynamic": "support unit's dynamic load rating",
     "support_static": "support unit's static load rating",
     "temperature_range": "temperature range",
-    "thermal_conductivity": "nut thermal conductivity",
+    "thermal_conductivity": "screw thermal conductivity",
     "thread_half_angle": "flank angle",
     "traverse_speed": "traverse speed limit",
     "travel_deviation": "travel deviation by useful travel",
@@ -214,12 +214,16 @@ def _lacks(screw: ScrewSpec, key: str) -> bool:
 def missing_values(check: Check, screw: ScrewSpec) -> tuple[str, ...]:
     """The values ``check`` needs that ``screw`` lacks, in words, each once: its
     capacity's values (the limit it is held to) and the thread values its rating is read
-    over; when one of its ratings is there, only the thread values it lacks."""
-    declared = check.needs or check.capacity_sources
+    over; when one of its ratings is there, only the thread values it lacks. A check that
+    declares what it ``needs`` needs each of them: every one it lacks is named."""
+    thread = [k for k in THREAD_VALUES if k in check.sources or k in check.capacity_sources]
+    if check.needs:
+        needed = [*check.needs, *thread]
+        return tuple(dict.fromkeys(value_label(k) for k in needed if _lacks(screw, k)))
+    declared = check.capacity_sources
     ratings = [k for k in declared if k not in THREAD_VALUES] or [
         k for k in check.sources if k not in THREAD_VALUES and k in SPEC_VALUES
     ]
-    thread = [k for k in THREAD_VALUES if k in check.sources or k in check.capacity_sources]
     rated = any(not _lacks(screw, k) for k in ratings if k in SPEC_VALUES)
     needed = thread if rated else [*ratings, *thread]
     return tuple(dict.fromkeys(value_label(k) for k in needed if _lacks(screw, k)))

@@ -75,6 +75,15 @@ def test_a_named_materials_conductivity_keeps_its_provenance(client: TestClient)
     assert "50.7" in c["provenance"]["thermal_conductivity"]["source"]
 
 
+def test_nut_heat_without_a_conductivity_is_named_not_checked(client: TestClient) -> None:
+    """The user's own material gives no thermal conductivity: the nut heat check cannot
+    run on the 800 mm stroke, and the summary says so (it listed only the traverse speed
+    and the length)."""
+    c = _custom(client, ALUMINIUM_2_START, **FAST_AXIS)
+    assert "nut_heat" not in [x["name"] for x in c["checks"]]
+    assert "Nut heat (no screw thermal conductivity)" in c["verdict"]["summary"]
+
+
 def test_an_own_materials_expansion_is_said_to_be_steels(client: TestClient) -> None:
     """The thermal growth of the aluminium screw takes steel's 11.7e-6 1/K, not asked of
     the user: 11.7e-6 x 30 K x 0.8 m = 0.2808 mm (aluminium's 23e-6 would give 0.552 mm).

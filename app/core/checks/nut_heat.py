@@ -62,6 +62,9 @@ class NutHeat(Check):
         "temperature_range",
     )
     capacity_sources = ("temperature_range",)
+    #: the heat balance needs the screw's conductivity (its fin) as well as the nut's
+    #: rated temperature: a screw without either is named as not checked
+    needs = ("thermal_conductivity", "temperature_range")
 
     def applies(self, app: Application) -> bool:
         # the heat depends on the duty: without a stroke (and its dwells) there is none
