@@ -151,9 +151,10 @@ def parse_screw(
 
 
 def _value_text(field: ScrewField | None, value: float, units: Mapping[str, str]) -> str:
-    """A screw value as its page field writes it: in the display unit, exactly (the
-    fewest figures that read back to it), else to 6 figures in the API's unit."""
-    if field is None or field.quantity is None:
+    """A screw value as its page field writes it: in the display unit (the API's for a
+    number no switch sets: degrees, Pa, friction), exactly (the fewest figures that read
+    back to it); a value of no field to 6 figures."""
+    if field is None:
         return f"{value:.6g}"
     return link_number(field.row, value, units)
 

@@ -314,3 +314,24 @@ def test_custom_page_leaves_out_the_catalog_filters(client: TestClient) -> None:
         named = f'[name="{field.page}"]'  # radio buttons share the name, not an id
         assert selector.select_one(named) is not None, field.page
         assert (custom.select_one(named) is not None) == (not field.catalog_only), field.page
+
+
+def test_share_link_writes_each_typed_number_exactly(client: TestClient) -> None:
+    """The numbers no unit switch sets (the flank half-angle in degrees, the friction, the
+    own material's modulus in Pa and its density) went into the link to 6 figures: typed
+    14.0362435 deg, 0.1234567, 70123456789 Pa and 2700.123 kg/m^3 came back as 14.0362,
+    0.123457, 7.01235e+10 and 2700.12, another screw. Each is written as typed."""
+    typed = {
+        "thread_half_angle_deg": "14.0362435",
+        "friction_dynamic": "0.1234567",
+        "youngs_modulus_pa": "70123456789",
+        "density_kg_m3": "2700.123",
+    }
+    query = (
+        "outer_diameter_mm=20&root_diameter_mm=13&lead_mm=12&friction_static=0.2&material=custom&"
+        + "&".join(f"{name}={text}" for name, text in typed.items())
+        + f"&{AXIS}"
+    )
+    link = soup(client.get(f"/custom?{query}").text).select_one("a.share-link")["href"]
+    shared = dict(parse_qsl(link.split("?", 1)[1]))
+    assert {name: shared[name] for name in typed} == typed
