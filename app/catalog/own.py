@@ -188,13 +188,29 @@ def nut_materials(series: Iterable[Series]) -> dict[str, NutMaterial]:
 
 
 def user_material(
-    youngs_modulus_pa: float, density_kg_m3: float, yield_strength_pa: float | None, like: Material
+    youngs_modulus_pa: float,
+    density_kg_m3: float,
+    yield_strength_pa: float | None,
+    like: Material,
+    expansion_per_k: float | None = None,
 ) -> Material:
     """The user's constants as a material, each of provenance "user"; the thermal
-    expansion, which the user is not asked for, is ``like``'s value, "assumed" (an
+    expansion [1/K] the user's where given, else ``like``'s value, "assumed" (an
     aluminium screw expands about twice as much as steel); no thermal conductivity (the
     nut heat check says it could not run)."""
     yield_strength = None if yield_strength_pa is None else Sourced(yield_strength_pa, "Pa", USER)
+    return Material(
+        youngs_modulus_pa=Sourced(youngs_modulus_pa, "Pa", USER),
+        density_kg_m3=Sourced(density_kg_m3, "kg/m3", USER),
+        expansion_per_k=_expansion(expansion_per_k, like),
+        yield_strength_pa=yield_strength,
+    )
+
+
+def _expansion(expansion_per_k: float | None, like: Material) -> Sourced:
+    """The user's thermal expansion [1/K], else ``like``'s, "assumed"."""
+    if expansion_per_k is not None:
+        return Sourced(expansion_per_k, "1/K", USER)
     expansion = like.expansion_per_k
     assumed = Provenance(
         "assumed",
@@ -202,12 +218,7 @@ def user_material(
         f"({expansion.provenance.kind}: {expansion.provenance.source}); a screw of another "
         "metal expands by its own (aluminium about 23e-6 1/K, twice steel's)",
     )
-    return Material(
-        youngs_modulus_pa=Sourced(youngs_modulus_pa, "Pa", USER),
-        density_kg_m3=Sourced(density_kg_m3, "kg/m3", USER),
-        expansion_per_k=Sourced(expansion.value, expansion.unit, assumed),
-        yield_strength_pa=yield_strength,
-    )
+    return Sourced(expansion.value, expansion.unit, assumed)
 
 
 def _thread(geometry: OwnGeometry) -> dict[str, object]:

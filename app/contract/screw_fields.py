@@ -150,6 +150,15 @@ MATERIAL_FIELDS = (
         unit="Pa",
         group=MATERIAL_GROUP,
     ),
+    _number(
+        "expansion_per_k",
+        "expansion_per_k",
+        "Thermal expansion",
+        bounds=(1e-7, 1e-3),
+        help="Per kelvin (aluminium about 23e-6); without it steel's, assumed",
+        unit="1/K",
+        group=MATERIAL_GROUP,
+    ),
 )
 #: every row by its API (and page) name.
 BY_NAME = {f.api: f for f in (*SCREW_FIELDS, *MATERIAL_FIELDS)}

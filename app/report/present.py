@@ -169,7 +169,7 @@ def custom_screw(
     if isinstance(own, dict):
         material = user_material(
             own["youngs_modulus_pa"], own["density_kg_m3"], own["yield_strength_pa"],
-            materials["steel"],
+            materials["steel"], own["expansion_per_k"],
         )  # fmt: skip
         material_name = "custom"
     else:
