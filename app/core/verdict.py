@@ -48,6 +48,8 @@ VALUE_LABELS: Mapping[str, str] = {
     "max_pressure": "maximum contact pressure",
     "max_sliding_speed": "maximum sliding speed",
     "motor_curve": "motor torque-speed curve",
+    "motor_detent": "motor detent torque",
+    "motor_holding": "motor holding torque",
     "motor_rms_torque": "motor rated torque",
     "nut_length": "nut length",
     "nut_length_to_d": "nut length",
