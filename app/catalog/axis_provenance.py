@@ -1,9 +1,9 @@
 """Where the axis's values that a check's capacity is come from (``AxisProvenance``,
 keyed by ``Check.capacity_given``): the motor's torque-speed curve and its rated torque,
-the support unit's ratings. Each is the user's where typed in, else the library motor's
-or support unit's value, with that entry's provenance. A curve a model draws is derived,
-and no more certain than the least certain value the model reads (a drive voltage the
-library assumes makes the curve assumed).
+a stepper's holding and detent torques, the support unit's ratings. Each is the user's
+where typed in, else the library motor's or support unit's value, with that entry's
+provenance. A curve a model draws is derived, and no more certain than the least certain
+value the model reads (a drive voltage the library assumes makes the curve assumed).
 """
 
 from collections.abc import Mapping
@@ -68,6 +68,19 @@ def _continuous(motor: Motor) -> Provenance:
     return Provenance(top.kind, f"{rated.source}; continuous duty zone: {top.source}")
 
 
+def _holding(entered: Application, motor: Motor) -> dict[str, Provenance]:
+    """A library stepper's torques that hold the load where the user typed none: its
+    holding torque, energised (``energised_holding``: the brake torque the holding check
+    reads), and its detent torque with the power off."""
+    found = {}
+    energised = entered.holding_source == "energised" and entered.brake_torque_nm is None
+    if energised and entered.motor_holding_torque_nm is None and motor.kind == "stepper":
+        found["motor_holding"] = motor.values["holding_torque_nm"].provenance
+    if entered.detent_torque_nm is None and "detent_torque_nm" in motor.values:
+        found["motor_detent"] = motor.values["detent_torque_nm"].provenance
+    return found
+
+
 def axis_provenance(
     entered: Application,
     app: Application,
@@ -87,6 +100,8 @@ def axis_provenance(
         found["motor_rms_torque"] = motor.values["rated_torque_nm"].provenance
         if app.motor_rms_curve and not entered.motor_rms_curve:
             found[RMS_ZONE] = _continuous(motor)
+    if motor is not None:
+        found.update(_holding(entered, motor))
     unit = supports.get(app.support_unit or "")
     for key, (field, name) in SUPPORT_RATINGS.items():
         if unit is not None and getattr(entered, field) is None:

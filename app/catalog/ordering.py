@@ -26,9 +26,9 @@ Rules, each cited where it is used:
   the code up to the nut type; the lengths are the buyer's drawing's. The part is a ball
   screw per ISO 3408 (formerly DIN 69051), its tolerance class (T7 rolled, T3 ground)
   the family's.
-- A value the catalog only assumes (provenance kind ``assumed``), or a rating derived
-  from an assumed input (its catalog range is an assumption's, ``assumption_ends``), is
-  named after "Confirm with the maker:" with the value taken.
+- A value the catalog only assumes (provenance kind ``assumed``, which a rating worked
+  from an assumed input has too) is named after "Confirm with the maker:" with the value
+  taken.
 
 Lengths are written in mm, the unit of the standard's designation and of the seed's
 catalog, whatever the page's display units.
@@ -49,8 +49,6 @@ NUT_CLASS = "7H"
 ISO_HALF_ANGLE_DEG = 15.0
 #: The seed's families: one maker's series (catalog/common.toml, group ``seed``).
 SEED_FAMILIES = frozenset({"B", "ZBX", "KHD", "VHD"})
-#: The catalog's derived design load of the seed's nuts rests on this assumed pressure.
-DESIGN_PRESSURE = "design_contact_pressure_mpa"
 
 #: Screw materials in a buyer's words (catalog material names; others as named).
 MATERIALS = {
@@ -217,14 +215,11 @@ CONFIRMABLE: tuple[tuple[str, str, Callable[[ScrewSpec], str | None]], ...] = (
 
 
 def _assumed(spec: ScrewSpec, key: str) -> bool:
-    """Whether the catalog only assumes value ``key``: its provenance kind is ``assumed``,
-    or (the design load) it is derived from the assumed design contact pressure."""
+    """Whether the catalog only assumes value ``key``: its provenance kind is ``assumed``
+    (a value worked from an assumed one, as the seed's design load from its assumed
+    contact pressure, is assumed too)."""
     provenance = spec.provenance.get(key)
-    if provenance is None:
-        return False
-    if provenance.kind == "assumed":
-        return True
-    return key == "design_load" and DESIGN_PRESSURE in spec.assumption_ends
+    return provenance is not None and provenance.kind == "assumed"
 
 
 def to_confirm(spec: ScrewSpec) -> list[str]:

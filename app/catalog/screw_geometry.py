@@ -60,9 +60,11 @@ def _diameters(entry: Entry) -> tuple[Sourced, Sourced]:
     return Sourced(od_m, "m", entry.prov("outer_diameter_mm")), root
 
 
-def _design_load(entry: Entry, d_p: float, h: float) -> Sourced | None:
+def _design_load(entry: Entry, d_p: float, h: float, root: Provenance) -> Sourced | None:
     """Given, or derived from contact pressure over the seed's three-thread area (rule 4);
-    None when the family rates its nuts otherwise (neither is given)."""
+    None when the family rates its nuts otherwise (neither is given). A derived load is
+    no more certain than the least certain value it is worked from (the pressure, the
+    factor and the root diameter): from an assumed one, it is assumed."""
     if entry.has("design_load_n"):
         return Sourced(entry.number("design_load_n"), "N", entry.prov("design_load_n"))
     if not entry.has("design_contact_pressure_mpa"):
@@ -70,11 +72,21 @@ def _design_load(entry: Entry, d_p: float, h: float) -> Sourced | None:
     pressure_mpa = entry.number("design_contact_pressure_mpa")
     factor = entry.number("design_load_factor")
     load = factor * to_si(pressure_mpa, "MPa") * pv.contact_area(math.pi * d_p, h)
-    rule = (
-        f"{factor:g} x {pressure_mpa:g} MPa x 3 pi d_p h (seed three-thread area; "
-        f"pressure and factor assumed)"
-    )
-    return Sourced(load, "N", Provenance("derived", rule))
+    read = {
+        "pressure": entry.prov("design_contact_pressure_mpa"),
+        "factor": entry.prov("design_load_factor"),
+        "root diameter": root,
+    }
+    assumed = [name for name, p in read.items() if p.kind == "assumed"]
+    rule = f"{factor:g} x {pressure_mpa:g} MPa x 3 pi d_p h (seed three-thread area"
+    if assumed:
+        rule += f"; {_and(assumed)} assumed"
+    return Sourced(load, "N", Provenance("assumed" if assumed else "derived", rule + ")"))
+
+
+def _and(names: list[str]) -> str:
+    """'a', 'a and b', 'a, b and c'."""
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
 def _listed_leads_mm(entry: Entry) -> list[float]:
@@ -161,7 +173,7 @@ def geometry_fields(entry: Entry, family: Family, material: Material) -> dict[st
         raise entry.fail("pitch_mm", "the pitch diameter d2 must lie between root and outer")
     inertia = _inertia(entry, thread.get("flank_pitch_diameter"), material)
     low, high = entry.range("backlash_mm")
-    load = _design_load(entry, d_p, geometry.thread_depth(od.value, rd.value))
+    load = _design_load(entry, d_p, geometry.thread_depth(od.value, rd.value), rd.provenance)
     return {
         "type": Sourced(entry.text("type", family.anti_backlash_by_type), "", entry.prov("type")),
         "outer_diameter": od,

@@ -62,7 +62,8 @@ class Provenance:
 
 
 #: The provenance of the axis's values that a check's capacity is (``Check.capacity_given``:
-#: "motor_curve", "motor_rms_torque", "support_static", "support_dynamic"): the user's
+#: "motor_curve", "motor_rms_torque", "motor_holding", "motor_detent", "support_static",
+#: "support_dynamic"): the user's
 #: where typed in, else the library motor's or support unit's; a value missing is the
 #: user's.
 AxisProvenance = Mapping[str, Provenance]

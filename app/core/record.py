@@ -244,10 +244,13 @@ class Candidate:
 
     @property
     def provenance(self) -> dict[str, Provenance]:
-        """Catalog field -> provenance, for the fields this candidate's numbers use; then
+        """Catalog field -> provenance, for the fields this candidate's numbers use (its
+        checks', its geometry's, its accuracy's and its life's); then
         the axis's values the checks' capacities are (a motor's curve: typed in, or the
         library's)."""
         used = {src for c in self.checks for src in c.sources} | set(GEOMETRY_SOURCES)
+        used |= set(BY_NAME["accuracy"].sources)  # the accuracy every candidate shows
+        used |= set(() if self.life is None else self.life.sources)  # and its life
         screw = {**self.screw.provenance, **self._typed_nut_length}
         found = {k: p for k, p in screw.items() if k in used}
         axis = self.axis_provenance

@@ -10,7 +10,9 @@ import numpy as np
 
 from app.core import motion, segments
 from app.core.batch import Batch
-from app.core.checks.wear_life import life_band
+from app.core.checks.ball_life import BallLife
+from app.core.checks.life import Life as RatedLife
+from app.core.checks.wear_life import WearLife, life_band
 from app.core.formulas import critical_speed, life
 
 T = TypeVar("T")
@@ -168,6 +170,17 @@ class Life(Section):
     def note(self) -> str:
         """Which model the numbers come from, and how far to trust them."""
         return LIFE_NOTES[self.model]
+
+    @property
+    def sources(self) -> tuple[str, ...]:
+        """The catalog values the numbers are worked from, those of the check that judges
+        a life of its model: the seed's rated travel (and the nut's wear where it cuts
+        that), the nut's wear, or a ball nut's ratings."""
+        if self.model == "l10":
+            return BallLife.sources
+        if self.model == "wear":
+            return WearLife.sources
+        return RatedLife.sources if self.capped_by_wear else ("life",)
 
     def _band(self, name: str) -> tuple[float, float]:
         """A wear quantity at the high and the low end of the wear rate's range."""

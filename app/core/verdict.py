@@ -48,6 +48,8 @@ VALUE_LABELS: Mapping[str, str] = {
     "max_pressure": "maximum contact pressure",
     "max_sliding_speed": "maximum sliding speed",
     "motor_curve": "motor torque-speed curve",
+    "motor_detent": "motor detent torque",
+    "motor_holding": "motor holding torque",
     "motor_rms_torque": "motor rated torque",
     "nut_length": "nut length",
     "nut_length_to_d": "nut length",
@@ -422,13 +424,23 @@ def watch_list(c: Record) -> tuple[Phrase, ...]:
     return tuple(found)
 
 
+def life_rests_on(life: Life, provenance: Mapping[str, Provenance]) -> tuple[str, ...]:
+    """The assumed values, in words, that ``life`` is worked from (``Life.sources``)."""
+    found = (k for k in life.sources if (p := provenance.get(k)) and p.kind in UNCERTAIN)
+    return tuple(dict.fromkeys(map(value_label, found)))
+
+
 def _unchecked_life(c: Record) -> Phrase | None:
     """With a duty but no required life (no life check runs): the life at the duty, the
-    low end of its band, so that a short-lived screw is seen where its verdict is read."""
+    low end of its band, so that a short-lived screw is seen where its verdict is read,
+    and the assumed values it is worked from (a wear life at an assumed wear rate)."""
     if not motion.life_unchecked(c.app) or c.life is None or c.life.years_min is None:
         return None
     years = Amount(c.life.years_min, "years")
-    return Phrase("life {y} at this duty, not checked (no required life given)", {"y": years})
+    assumed = life_rests_on(c.life, c.value_provenance)
+    basis = f" (from assumed {', '.join(assumed)})" if assumed else ""
+    text = f"life {{y}} at this duty{basis}, not checked (no required life given)"
+    return Phrase(text, {"y": years})
 
 
 def sentence(

@@ -94,3 +94,25 @@ def test_a_library_support_units_rating_is_the_makers(client: TestClient) -> Non
     typed = evaluate(client, "Tr20x4-bronze", **axis, support_static_n=1760)
     assert typed["governing_check"] == "support_static"
     assert typed["governing_limit_provenance"] == "user"
+
+
+def test_a_library_steppers_holding_and_detent_torques_are_the_libraries(
+    client: TestClient,
+) -> None:
+    """A vertical axis held by SY42STH47-1684B energised, and by its detent torque with the
+    power off, on a ball screw that back-drives: the limits the holding checks hold it to
+    are the library's (vendor), not values the user typed; typed in, they are the user's."""
+    axis = {"load_n": 10, "speed_mm_s": 20, "length_mm": 300, "orientation": "vertical",
+            "holding_source": "energised"}  # fmt: skip
+    c = evaluate(client, "R16-10K3-FSCDIN", **axis, motor="sy42sth47-1684b")
+    assert c["passed"] and c["governing_check"] == "holding_power_off"
+    assert c["governing_limit_provenance"] == "vendor"
+    assert "detent torque" in c["provenance"]["motor_detent"]["source"]
+    assert c["provenance"]["motor_holding"]["kind"] == "vendor"
+    assert "motor_detent" in check(c, "holding_power_off")["sources"]
+    typed = evaluate(
+        client, "R16-10K3-FSCDIN", **axis, motor="sy42sth47-1684b", detent_torque_nm=0.02,
+        brake_torque_nm=0.5,
+    )  # fmt: skip
+    assert typed["governing_limit_provenance"] == "user"
+    assert typed["provenance"]["motor_holding"]["kind"] == "user"

@@ -250,10 +250,12 @@ def test_inertia_lies_between_half_and_all_of_a_solid_303_rod(
 def test_design_load(catalog: Catalog, series_id: str, kg: float, rel: float) -> None:
     """catalog-notes.md "Design load": 3 MPa x the seed's three-thread area: about 11 kg
     (25 lb) for 1/4 in, about 45 kg (100 lb) for 1/2 in; catalog/README.md rule 4 prints
-    11.4 and 45.5 kg, and 1.5 x for the heavy-duty VHD nuts."""
+    11.4 and 45.5 kg, and 1.5 x for the heavy-duty VHD nuts; worked from the assumed
+    pressure, the load is assumed, and its rule says what it assumes."""
     design = catalog.series[series_id].fields["design_load"]
     assert design.value / G == pytest.approx(kg, rel=rel)
-    assert design.provenance.kind == "derived"
+    assert design.provenance.kind == "assumed"
+    assert "pressure" in design.provenance.source.split("; ")[-1]
 
 
 def test_design_load_rule_by_hand(catalog: Catalog) -> None:

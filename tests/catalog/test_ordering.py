@@ -105,7 +105,8 @@ def test_seed_series_get_a_specification_not_a_code(
 
 def test_seed_lines_name_the_assumed_lead_root_and_nut_rating(catalog: Catalog) -> None:
     """ZBX6000-L10: the lead list, the root diameter (0.78 x OD) and the PV limit are
-    assumed in catalog/common.toml; the design load is derived from the assumed 3 MPa."""
+    assumed in catalog/common.toml; the design load, worked from the assumed 3 MPa, is
+    assumed too."""
     spec = catalog.by_id["ZBX6000-L10"]
     line = ordering_line(spec, 0.5)
     _, _, confirm = line.partition(" Confirm with the maker: ")
@@ -123,10 +124,7 @@ def test_confirmation_appears_exactly_where_the_provenance_says_assumed(
         confirm = " ".join(to_confirm(spec))
         for key, what, _ in CONFIRMABLE:
             kind = spec.provenance[key].kind if key in spec.provenance else None
-            derived_from_assumed = key == "design_load" and (
-                "design_contact_pressure_mpa" in spec.assumption_ends
-            )
-            if kind == "assumed" or (derived_from_assumed and spec.design_load_n is not None):
+            if kind == "assumed":
                 assert what in confirm, (spec.id, key)
             elif key not in ("pv_limit", "bearing_pv_limit"):  # two keys, one phrase
                 assert what not in confirm, (spec.id, key)

@@ -65,6 +65,7 @@ def holding_phrase(
 class Holding(Check):
     name = "holding"
     motor_may_clear = True
+    capacity_given = "motor_holding"
     why_none = "no brake torque given holds this load on any screw: a larger brake"
     label = "Holding torque (load held at rest)"
     description = (

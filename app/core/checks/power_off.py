@@ -22,6 +22,7 @@ from app.core.phrase import Phrase
 class HoldingPowerOff(Check):
     name = "holding_power_off"
     motor_may_clear = True
+    capacity_given = "motor_detent"
     why_none = "the motor's detent torque holds this load on no screw: add a brake"
     label = "Holding with the power off (detent torque)"
     description = (
