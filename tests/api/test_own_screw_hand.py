@@ -139,3 +139,15 @@ def test_an_own_material_gives_its_thermal_expansion(client: TestClient) -> None
     assert grown == pytest.approx(23e-6 * 800.0 * 30.0, rel=1e-9)
     steel = evaluate(client, {**screw, "material": material}, **axis, ambient_c=50.0)
     assert steel["accuracy"]["thermal_growth_mm"] == pytest.approx(11.7e-6 * 800.0 * 30.0)
+
+
+def test_the_named_steel_carries_a_conductivity_so_its_nut_heat_runs(client: TestClient) -> None:
+    """The catalog's "steel" (the C45 class, as its yield strength) now gives Incropera's
+    AISI 1042 50.7 W/(m K): the Tr20x4 of "steel" is checked for nut heat as the same
+    screw of "c45-steel" is, with the same figure (both 50.7 W/(m K)); it was left
+    unchecked."""
+    steel = _custom(client, {**TR20X4_BRONZE, "material": "steel"}, **LONG_NUT_AXIS)
+    c45 = _custom(client, TR20X4_BRONZE, **LONG_NUT_AXIS)
+    assert check(steel, "nut_heat")["value"] == pytest.approx(check(c45, "nut_heat")["value"])
+    conductivity = steel["provenance"]["thermal_conductivity"]
+    assert conductivity["kind"] == "handbook" and "50.7" in conductivity["source"]
