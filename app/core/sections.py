@@ -86,12 +86,14 @@ class Torque(Section):
     @property
     def peak_segment(self) -> str:
         """Where the peak motor torque occurs, in words: "starting from rest" (the
-        break-away) or the moving segment's ("decelerating down")."""
+        break-away) or the moving segment's ("decelerating down"; "decelerating down,
+        move 3" in a cycle of the user's own moves)."""
         index = int(self.batch.column("peak_torque_segment")[self.k])
         if index < 0:
             return "starting from rest"
         name, direction = segments.moving_segment_names(self.app)[index]
-        return f"{SEGMENT_WORDS[name]} {direction}"
+        where = f", move {index // 3 + 1}" if self.app.moves else ""
+        return f"{SEGMENT_WORDS[name]} {direction}{where}"
 
 
 #: A moving segment's name as the sub-line of the peak torque says it.

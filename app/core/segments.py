@@ -20,9 +20,9 @@ from app.core.model import Application, Direction, Move, Profile, Segment, Segme
 from app.core.motion import (
     RAMPS,
     Cycle,
+    cycle,
     cycle_of,
     direction_word,
-    directions,
     load_sense,
     rest_loads,
     sense,
@@ -58,9 +58,10 @@ def _move(
 
 
 def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]]:
-    """The moving segments of both moves, name and direction, in the order of
+    """The moving segments of every move of the cycle (``motion.cycle``: out and back, or
+    the user's own moves in their order), name and direction, in the order of
     ``moving_torques``."""
-    return [(name, direction) for direction, _ in directions(app) for name, _ in RAMPS]
+    return [(name, direction_word(app, move)) for move in cycle(app) for name, _ in RAMPS]
 
 
 def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) -> list[Moving]:

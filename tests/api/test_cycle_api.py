@@ -199,3 +199,57 @@ def test_too_many_cycles_a_day_name_the_moves_they_are_made_of(client: TestClien
     (detail,) = response.json()["detail"]
     assert detail["field"].endswith("cycles_per_day")
     assert "must be at most 28800: one cycle (its moves, with the dwells)" in detail["message"]
+
+
+#: A vertical pick-and-place of four moves on B7000-L8 (lead 8 mm, d_p 9.890125 mm,
+#: 29 deg Acme, uncoated: mu 0.15 running), the gripper 2 kg down, 5 kg back up, a 20 N
+#: pull-out (a weight-like load, fixed) on the slow first 20 mm up.
+PICK_AND_PLACE = [
+    {"distance_mm": -80, "speed_mm_s": 60, "accel_mm_s2": 600, "dwell_s": 0,
+     "moving_mass_kg": 2, "load_n": 0, "load_direction": "fixed"},
+    {"distance_mm": -20, "speed_mm_s": 15, "accel_mm_s2": 300, "dwell_s": 0.5,
+     "moving_mass_kg": 2, "load_n": 0, "load_direction": "fixed"},
+    {"distance_mm": 20, "speed_mm_s": 15, "accel_mm_s2": 300, "dwell_s": 0,
+     "moving_mass_kg": 5, "load_n": 20, "load_direction": "fixed"},
+    {"distance_mm": 80, "speed_mm_s": 60, "accel_mm_s2": 600, "dwell_s": 1,
+     "moving_mass_kg": 5, "load_n": 0, "load_direction": "fixed"},
+]  # fmt: skip
+
+
+def test_the_peak_of_a_cycle_of_more_than_two_moves_is_named_by_its_own_move(
+    client: TestClient,
+) -> None:
+    """The peak of four moves lies in the third one's ramp up, and is named so (the
+    names of out and back alone, six segments for twelve, failed on the ninth).
+
+    By hand: move 3 accelerates 5 kg at 0.3 m/s^2 against its 5 x 9.80665 = 49.03325 N
+    weight and the 20 N: 70.53325 N. tan(lead angle) = 8 / (pi 9.890125) = 0.257479,
+    eta = (cos 14.5 - 0.15 x 0.257479) / (cos 14.5 + 0.15 / 0.257479) = 0.599414; the
+    thread 70.53325 x 0.008 / (2 pi 0.599414) = 0.149822 N m; the screw (2.47e-7 kg m^2
+    per inch x 400 / 25.4) and the rotor's 68 g cm^2, 1.068976e-5 kg m^2, at 2 pi 0.3 /
+    0.008 = 235.619 rad/s^2: 0.002519 N m; 0.152341 N m. The fast move up (4) needs
+    (52.03325 x 0.0021241 + 1.068976e-5 x 471.239 =) 0.115563 N m, each move down less."""
+    axis = {"orientation": "vertical", "load_n": 0, "speed_mm_s": 60, "length_mm": 400,
+            "motor": "sy42sth47-1684b"}  # fmt: skip
+    torque = evaluate(client, "B7000-L8", **axis, moves=PICK_AND_PLACE)["torque"]
+    assert torque["peak_nm"] == pytest.approx(0.152341, rel=1e-5)
+    assert torque["peak_segment"] == "accelerating up, move 3"
+
+
+def test_the_peak_of_a_cycle_names_the_direction_its_move_runs(client: TestClient) -> None:
+    """Two moves out, one back (horizontal, 10 kg on guides of friction 0.003, B7000-L8):
+    the peak is the second move's ramp up, 10 x 1 + 0.003 x 10 x 9.80665 + 50 = 60.294 N
+    out (the thread at running friction, above the break-away at static friction), not a
+    move back (the out-and-back names put the fourth moving segment on the way back)."""
+    moves = [
+        {"distance_mm": 300, "speed_mm_s": 400, "accel_mm_s2": 2000, "decel_mm_s2": 3000,
+         "dwell_s": 0.2, "moving_mass_kg": 10, "load_n": 15, "load_direction": "opposes"},
+        {"distance_mm": 100, "speed_mm_s": 100, "accel_mm_s2": 1000, "dwell_s": 5,
+         "moving_mass_kg": 10, "load_n": 50, "load_direction": "opposes"},
+        {"distance_mm": -400, "speed_mm_s": 500, "accel_mm_s2": 2500, "dwell_s": 10,
+         "moving_mass_kg": 10, "load_n": 0, "load_direction": "opposes"},
+    ]  # fmt: skip
+    axis = {"load_n": 0, "speed_mm_s": 500, "length_mm": 600, "guide_friction": 0.003}
+    candidate = evaluate(client, "B7000-L8", **axis, moves=moves)
+    assert candidate["peak_axial_load_n"] == pytest.approx(60.2941995)
+    assert candidate["torque"]["peak_segment"] == "accelerating out, move 2"
