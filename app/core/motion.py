@@ -268,9 +268,24 @@ def _rest_load(app: Application, move: Move) -> float:
 
 
 def rest_loads(app: Application, moves: tuple[Move, ...] = ()) -> list[float]:
-    """The load held in the dwell after each move [N] (``_rest_load``), of ``moves`` when
-    the cycle's moves are already worked out."""
-    return [_rest_load(app, m) for m in moves or cycle(app)]
+    """The load held in the dwell after each move [N], of ``moves`` when the cycle's moves
+    are already worked out: the larger of what the move leaves at rest and what the next
+    move (the first after the last) starts with (``_rest_load``), since a part picked or
+    placed in the dwell may weigh on the nut for all of it.
+
+    Down empty with 2 kg, then up with 5 kg, on a vertical axis: the dwell at the bottom
+    holds the 5 kg (49.03 N), not 2 kg; the one at the top, after the 5 kg move, too.
+
+    >>> from app.core.model import Move
+    >>> down = Move(-0.1, 0.05, 1.0, 1.0, 0.5, 2.0)
+    >>> up = Move(0.1, 0.05, 1.0, 1.0, 0.5, 5.0)
+    >>> app = Application(load_n=0.0, speed_m_s=0.05, length_m=0.3,
+    ...                   orientation="vertical", moves=(down, up))
+    >>> [round(f, 3) for f in rest_loads(app)]
+    [49.033, 49.033]
+    """
+    held = [_rest_load(app, m) for m in moves or cycle(app)]
+    return [max(here, held[(k + 1) % len(held)]) for k, here in enumerate(held)]
 
 
 def steady_load(app: Application) -> float:
