@@ -82,3 +82,21 @@ def test_no_longer_dwell_is_offered_when_the_dwell_alone_is_over_the_rating(
     still = next(k for k in longer["candidate"]["checks"] if k["name"] == "motor_rms")
     # towards the dwell's torque, never below it, nor within the fix's 5 % margin
     assert still["value"] > 0.309 and still["utilization"] > 1 / 1.05
+
+
+def test_the_detail_names_johnson_where_the_short_column_governs(client: TestClient) -> None:
+    """The 17.32 mm root over 600 mm, fixed-simple (k = 2, effective length 600 / sqrt 2 =
+    424.26 mm): slenderness 424.26 / (17.32 / 4) = 97.98, below the transition
+    sqrt(2 pi^2 x 207 GPa / 310 MPa) = 114.81, so Johnson's parabola governs:
+    A (S_y - (S_y s / 2 pi)^2 / E) = 235.60 mm² x (310 - 113.46) MPa = 46,438 N, below
+    Euler's 2 pi^2 E (pi 17.32^4 / 64) / 600^2 = 50,137 N. The detail said '0.5 x Euler
+    46438 N', naming the formula it did not use."""
+    c = client.get("/api/v1/evaluate", params=QUERY).json()["candidate"]
+    assert c["buckling"]["mode"] == "johnson"
+    assert c["buckling"]["critical_load_n"] == pytest.approx(46438, rel=1e-4)
+    page = client.get("/detail", params={
+        "load": "0", "moving_mass_kg": "20", "orientation": "vertical", "lead": "10",
+        "speed": "250", "length": "600", "id": "R20-10K3-FSC",
+    }).text  # fmt: skip
+    assert "0.5 × Johnson, short column 46438 N" in page
+    assert "× Euler 46438" not in page
