@@ -124,6 +124,7 @@ class Candidate:
     holding_torque_physics_nm = Column[float]("holding_physics_nm")
     holding_torque_with_margin_nm = Column[float]("holding_distrusted_nm")
     brake_nm = Column[float]("brake_nm")
+    brake_needed_nm = Column[float]("brake_needed_nm")
     max_utilization = Column[float]("max_utilization")
     passed = Column[bool]("passed")
 

@@ -371,7 +371,7 @@ class Record(Protocol):
     @property
     def self_locking_with_margin(self) -> bool: ...
     @property
-    def brake_nm(self) -> float: ...
+    def brake_needed_nm(self) -> float: ...
     @property
     def life(self) -> Life | None: ...
 
@@ -416,8 +416,12 @@ def watch_list(c: Record) -> tuple[Phrase, ...]:
                 Phrase(f"power off: held by the detent torque at {percent(detent.utilization)}")
             )
         else:
-            brake = Amount(c.brake_nm, "torque")
-            found.append(Phrase("back-drives: a brake of {t} holds it power-off", {"t": brake}))
+            # the brake to fit: the torque to hold times the brake's safety factor, as the
+            # holding check sizes it (``holding.holding``)
+            brake = Amount(c.brake_needed_nm, "torque")
+            found.append(
+                Phrase("back-drives: a brake of at least {t} holds it power-off", {"t": brake})
+            )
     short = _unchecked_life(c)
     if short is not None:
         found.append(short)

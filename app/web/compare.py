@@ -67,7 +67,7 @@ def _holding(c: CandidateOut, d: Display) -> str:
         return "self-locking"
     if c.holding_torque.brake_nm == 0.0:
         return "no load to hold"
-    return f"brake ≥ {d.text(c.holding_torque.brake_nm, 'torque', 3)} {d.label('torque')}"
+    return f"brake ≥ {d.text(c.holding_torque.brake_to_fit_nm, 'torque', 3)} {d.label('torque')}"
 
 
 def _ranked(value: object) -> float | None:

@@ -90,7 +90,8 @@ def test_the_verdict_rests_on_the_assumed_values_of_its_governing_check(
 
 def test_a_back_driving_vertical_screw_says_what_holds_it_power_off(catalog: Catalog) -> None:
     """Vertical, 10 kg on the nut: a screw that does not self-lock with margin names the
-    brake it needs (its brake torque) in its watch list. (The surest power-off holds rank
+    brake it needs (the torque to hold times the brake's safety factor, as the holding
+    check asks) in its watch list. (The surest power-off holds rank
     first, the self-locking ones among them: the list goes to 100 to reach the others.)"""
     app = Application(
         load_n=0.0, speed_m_s=0.05, length_m=0.3, moving_mass_kg=10.0,
@@ -103,7 +104,8 @@ def test_a_back_driving_vertical_screw_says_what_holds_it_power_off(catalog: Cat
         watch = verdict(c).watch
         assert any("brake" in w.template for w in watch)
         brake = next(w for w in watch if "brake" in w.template).values["t"]
-        assert brake.value == pytest.approx(c.brake_nm)  # type: ignore[union-attr]
+        assert brake.value == pytest.approx(c.brake_needed_nm)  # type: ignore[union-attr]
+        assert brake.value == pytest.approx(1.5 * c.brake_nm)  # type: ignore[union-attr]
 
 
 def test_a_pass_with_skipped_checks_never_says_every_check(catalog: Catalog) -> None:

@@ -45,7 +45,7 @@ ROWS: tuple[Reported, ...] = (
     ),
     Reported("holds_by", csv=True, type=str),
     Reported(
-        "holding_torque.brake_nm",
+        "holding_torque.brake_to_fit_nm",
         "Holds the load?",
         "Whether the load alone can turn the screw with the motor off. “Self-locking” "
         "holds it, at the friction a hold may count on (the self-locking friction "

@@ -1,5 +1,6 @@
 """The RMS torque of the cycle against the motor's continuous rating (its heating)."""
 
+from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -11,6 +12,7 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
+    at_least,
     everywhere,
     least,
     lighter,
@@ -81,8 +83,26 @@ class MotorRms(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         less = lighter(app)
+        options = ["a longer dwell"] if dwell_helps(app, r) else []
+        options += ["lower acceleration" + (" or " + less if less else "")]
         return Phrase(
-            "A motor rated for at least {need} continuous, or a longer dwell, lower "
-            "acceleration" + (" or " + less if less else "") + "." + MARGIN_NOTE,
+            "A motor rated for at least {need} continuous, or "
+            + ", ".join(options)
+            + "."
+            + MARGIN_NOTE,
             {"need": least(r.motor.motor_rms_needed_nm, "torque")},
         )
+
+
+def dwell_helps(app: Application, r: Quantities[float]) -> bool:
+    """Whether a longer dwell can bring the RMS torque within the rating with the fix's
+    margin. A longer dwell draws the RMS towards the torque held in it, never below: the
+    holding torque where the axis holds a load and does not self-lock (``segments``: a
+    dwell holds its move's load at rest, at most the steady load's ``brake_nm``), else
+    none. Held at standstill, where the continuous zone is the rating T_c0, it helps only
+    when SF * T_dwell * (1 + margin) < T_c0. In a cycle of moves a dwell may hold a
+    lighter load than the steady one, so a dwell stays offered there."""
+    rating = continuous_rating(app)
+    if rating is None or app.moves or not motion.holds_a_load(app):
+        return True
+    return at_least(app.torque_safety_factor * r.holding.brake_nm) < rating
