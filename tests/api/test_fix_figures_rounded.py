@@ -49,3 +49,28 @@ def test_a_brake_figure_is_written_up_and_the_brake_it_names_keeps_the_margin(
     assert fitted["passed"]
     assert fitted["utilization"] == pytest.approx(needed / 0.488, rel=1e-9)
     assert fitted["utilization"] <= 1 / 1.05
+
+
+def test_a_ball_nuts_static_cap_is_written_rounded_down(client: TestClient) -> None:
+    """R16-05T3-FSIDIN: C0a 11,700 N over f_s 2 is 5850 N, and the 5 % margin leaves
+    0.95 x 5850 = 5557.5 N; written to the nearest (round half to even) that read 5558 N,
+    past the figure that keeps the margin; rounded down it reads 5557 N."""
+    c = _check(client, "ball_static", catalog_id="R16-05T3-FSIDIN", load_n=6000,
+               speed_mm_s=50, length_mm=500)  # fmt: skip
+    assert 0.95 * 11_700 / 2 == pytest.approx(5557.5)
+    (figure,) = re.findall(r"at most ([\d,.]+) N", c["fix"])
+    assert float(figure.replace(",", "")) == 5557.0
+
+
+def test_a_root_diameter_to_reach_is_written_rounded_up(client: TestClient) -> None:
+    """The smallest root diameter the root stress allows is a lower bound: written rounded
+    up, the figure read is never below the one that keeps the margin. Tr8x1.5 bronze
+    under 23 kN needs 16.9423 mm: to the nearest that read 16.94 mm, short of it; now
+    16.95 mm."""
+    c = _check(client, "root_stress", catalog_id="Tr8x1.5-bronze", load_n=23000,
+               speed_mm_s=1, length_mm=100, lubrication="oiled")  # fmt: skip
+    (figure,) = re.findall(r"at least ([\d.]+) mm", c["fix"])
+    # d_min = 1.05 d_r sqrt(sigma / sigma_allowed), from the check's own figures
+    d_r_mm = 6.2  # Tr8x1.5: d3 = 8 - (1.5 + 2 x 0.15) = 6.2 mm (ISO 2904)
+    d_min = 1.05 * d_r_mm * (c["value"] / c["limit"]) ** 0.5
+    assert float(figure) >= d_min

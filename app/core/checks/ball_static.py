@@ -14,8 +14,8 @@ from app.core.checks.base import (
     Quantities,
     Reach,
     ScrewSpec,
-    at_most,
     load_input,
+    most,
 )
 from app.core.phrase import Amount, Phrase
 
@@ -83,11 +83,7 @@ class BallStatic(Check):
         return Phrase(
             "Reduce the peak thrust to at most {cap}, or choose a ball nut with a higher "
             "static load rating." + MARGIN_NOTE,
-            {
-                "cap": Amount(
-                    at_most((s.static_load_n or 0.0) / app.ball_static_safety_factor), "force"
-                )
-            },
+            {"cap": most((s.static_load_n or 0.0) / app.ball_static_safety_factor, "force")},
         )
 
     def input_limits(

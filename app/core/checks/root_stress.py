@@ -81,7 +81,7 @@ class RootStress(Check):
             return Phrase("Reduce the load or the moving mass's acceleration.")
         return Phrase(
             "Use a root diameter of at least {d}, or reduce the load." + MARGIN_NOTE,
-            {"d": Amount(d_min, "length")},
+            {"d": Amount(d_min, "length", "up")},
         )
 
     def input_limits(
