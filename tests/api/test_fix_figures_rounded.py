@@ -57,9 +57,10 @@ def test_a_ball_nuts_static_cap_is_written_rounded_down(client: TestClient) -> N
     past the figure that keeps the margin; rounded down it reads 5557 N."""
     c = _check(client, "ball_static", catalog_id="R16-05T3-FSIDIN", load_n=6000,
                speed_mm_s=50, length_mm=500)  # fmt: skip
-    assert 0.95 * 11_700 / 2 == pytest.approx(5557.5)
+    cap = 0.95 * 11_700 / 2
+    assert cap == pytest.approx(5557.5)
     (figure,) = re.findall(r"at most ([\d,.]+) N", c["fix"])
-    assert float(figure.replace(",", "")) == 5557.0
+    assert float(figure.replace(",", "")) == 5557.0 <= cap
 
 
 def test_a_root_diameter_to_reach_is_written_rounded_up(client: TestClient) -> None:
