@@ -118,13 +118,14 @@ def motor_point(
     segment's torque against the curve (the moving ones' ``moving``, from
     ``segments.moving_torques``), and the break-away that starts each move from rest
     (``torques["breakaway_nm"]``: the thread at static friction) against the curve at
-    standstill; the worst of them is index -1 when the break-away governs. Without a
-    stroke there is no profile: the one point is today's torque at the top speed,
-    ``rpm``, the larger of the running torque and the break-away."""
+    standstill (``worst_point``); the acceleration and top speed that would fit the
+    curve (``curve_fits``). Without a stroke there is no profile: the one point is
+    today's torque at the top speed, ``rpm``, the larger of the running torque and the
+    break-away."""
     p = c.fastest
     peak_rpm = worst_rpm = rpm
     nan = filled(len(t), np.nan)
-    fitting = fitting_speed = fix_accel = fix_speed = nan
+    fits = (nan,) * 4
     parts: list[Segment[Array]] = []
     if p is None:
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
@@ -133,41 +134,14 @@ def motor_point(
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = segments.segments(app, t, hold_nm, moving, c)
-        signed = np.array([s.torque_nm for s in parts])
-        magnitude = np.abs(signed)
-        speeds = np.array([s.rpm for s in parts])
-        # the break-away at standstill as one more row: it is read off the curve at 0 rpm
-        start_nm = np.broadcast_to(np.abs(torques["breakaway_nm"]), speeds[0].shape)
-        starting = np.vstack([magnitude, start_nm])
-        at_rest = np.vstack([speeds, np.zeros_like(speeds[0])])
-        read_rpm = at_rest
-        if app.motor_curve:
-            # each segment against the curve over the speeds it runs through (a ramp:
-            # the lowest from standstill to its top speed), the break-away at standstill
-            read = [segments.segment_curve(app, s.name, s.rpm) for s in parts]
-            usable = np.vstack([*(u for u, _ in read), segments.curve_torque(app, at_rest[-1])])
-            read_rpm = np.vstack([*(r for _, r in read), at_rest[-1]])
-            load = starting / usable
-        else:
-            load = starting
-        index = load.argmax(axis=0)
-        columns = np.arange(len(t))
-        worst_nm, worst_rpm = starting[index, columns], read_rpm[index, columns]
-        index = np.where(index == len(parts), -1, index)
-        peak, rms = np.maximum.reduce(magnitude, axis=0), segments.rms(parts)
+        index, worst_nm, worst_rpm, starting, at_rest = worst_point(app, t, parts, torques)
+        peak = np.maximum.reduce(np.abs(np.array([s.torque_nm for s in parts])), axis=0)
+        rms = segments.rms(parts)
         referred = segments.referred_rms(app, parts) if app.motor_rms_curve else rms
-        if app.motor_curve and app.accel_m_s2 > 0.0 and not app.moves:
-            fitting = np.minimum(
-                fitting_accel(app, parts, signed, index, worst_rpm),
-                starting_accel(app, t, torques),
-            )
-            fix_accel = np.minimum(
-                fitting_accel(app, parts, signed, index, worst_rpm, 1.0 + FIX_MARGIN),
-                starting_accel(app, t, torques, 1.0 + FIX_MARGIN),
-            )
         if app.motor_curve and not app.moves:
-            fitting_speed = slower_fit(app, starting, at_rest, p.peak_speed_m_s)
-            fix_speed = slower_fit(app, starting, at_rest, p.peak_speed_m_s, 1.0 + FIX_MARGIN)
+            worst = (index, worst_rpm, starting, at_rest)
+            fits = curve_fits(app, t, parts, torques, worst, p.peak_speed_m_s)
+    fitting, fitting_speed, fix_accel, fix_speed = fits
     curve = segments.curve_torque(app, worst_rpm) if app.motor_curve else nan
     return {
         "peak_rpm": peak_rpm,
@@ -186,6 +160,64 @@ def motor_point(
         "motor_fix_speed_m_s": fix_speed,
         **cycle_energy.cycle_energy(app, t, parts, c.profiles),
     }
+
+
+def worst_point(
+    app: Application, t: CandidateTable, parts: list[Segment[Array]], torques: dict[str, Any]
+) -> tuple[Array, Array, Array, Array, Array]:
+    """Each candidate's point nearest the motor's curve (the largest torque without a
+    curve): the segments of ``parts``, each against the curve over the speeds it runs
+    through (``segments.segment_curve``: a ramp, the lowest from standstill to its top
+    speed), and the break-away (``torques["breakaway_nm"]``) at standstill, one more row.
+    Returns the worst row's index (-1: the break-away), its torque [N m] and the speed
+    the curve is read at [rpm], and the rows' torques [N m] and top speeds [rpm]."""
+    magnitude = np.abs(np.array([s.torque_nm for s in parts]))
+    speeds = np.array([s.rpm for s in parts])
+    start_nm = np.broadcast_to(np.abs(torques["breakaway_nm"]), speeds[0].shape)
+    starting = np.vstack([magnitude, start_nm])
+    at_rest = np.vstack([speeds, np.zeros_like(speeds[0])])
+    read_rpm = at_rest
+    load = starting
+    if app.motor_curve:
+        read = [segments.segment_curve(app, s.name, s.rpm) for s in parts]
+        usable = np.vstack([*(u for u, _ in read), segments.curve_torque(app, at_rest[-1])])
+        read_rpm = np.vstack([*(r for _, r in read), at_rest[-1]])
+        load = starting / usable
+    index = load.argmax(axis=0)
+    columns = np.arange(len(t))
+    worst_nm, worst_rpm = starting[index, columns], read_rpm[index, columns]
+    return np.where(index == len(parts), -1, index), worst_nm, worst_rpm, starting, at_rest
+
+
+def curve_fits(
+    app: Application,
+    t: CandidateTable,
+    parts: list[Segment[Array]],
+    torques: dict[str, Any],
+    worst: tuple[Array, Array, Array, Array],
+    peak_speed: float,
+) -> tuple[Array, Array, Array, Array]:
+    """The acceleration [m/s^2] and top speed [m/s] at which each candidate fits its
+    motor's curve, bare and with the fix's margin (``FIX_MARGIN``): (fitting accel,
+    fitting speed, fix accel, fix speed). ``worst``: ``worst_point``'s index, speed,
+    torques and speeds; ``peak_speed`` the move's top speed [m/s]. The acceleration is
+    also bounded by the start from rest (``starting_accel``); NaN without one."""
+    index, worst_rpm, starting, at_rest = worst
+    nan = filled(len(t), np.nan)
+    fitting = fix_accel = nan
+    if app.accel_m_s2 > 0.0:
+        signed = np.array([s.torque_nm for s in parts])
+        margin = 1.0 + FIX_MARGIN
+        fitting = np.minimum(
+            fitting_accel(app, parts, signed, index, worst_rpm), starting_accel(app, t, torques)
+        )
+        fix_accel = np.minimum(
+            fitting_accel(app, parts, signed, index, worst_rpm, margin),
+            starting_accel(app, t, torques, margin),
+        )
+    fitting_speed = slower_fit(app, starting, at_rest, peak_speed)
+    fix_speed = slower_fit(app, starting, at_rest, peak_speed, 1.0 + FIX_MARGIN)
+    return fitting, fitting_speed, fix_accel, fix_speed
 
 
 def fitting_accel(
