@@ -10,6 +10,7 @@ from app.catalog.family import Family
 from app.catalog.models import Material, Sourced
 from app.core.formulas import geometry, pv, trapezoidal
 from app.core.model import Provenance
+from app.core.phrase import in_words
 from app.core.units import from_si, to_si
 
 #: Thread starts at most: a lead of thousands of pitches is a typing error, and its
@@ -80,13 +81,8 @@ def _design_load(entry: Entry, d_p: float, h: float, root: Provenance) -> Source
     assumed = [name for name, p in read.items() if p.kind == "assumed"]
     rule = f"{factor:g} x {pressure_mpa:g} MPa x 3 pi d_p h (seed three-thread area"
     if assumed:
-        rule += f"; {_and(assumed)} assumed"
+        rule += f"; {in_words(assumed)} assumed"
     return Sourced(load, "N", Provenance("assumed" if assumed else "derived", rule + ")"))
-
-
-def _and(names: list[str]) -> str:
-    """'a', 'a and b', 'a, b and c'."""
-    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
 
 
 def _listed_leads_mm(entry: Entry) -> list[float]:

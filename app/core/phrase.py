@@ -81,6 +81,15 @@ def join(parts: "list[Phrase]", separator: str = " ") -> Phrase:
     )
 
 
+def in_words(names: "list[str] | tuple[str, ...]", last: str = "and") -> str:
+    """Names as a list in words, ``last`` before the last one.
+
+    >>> in_words(["a"]), in_words(["a", "b", "c"]), in_words(("x", "y"), "or")
+    ('a', 'a, b and c', 'x or y')
+    """
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + f" {last} " + names[-1]
+
+
 def plural(count: int, one: str, many: str) -> str:
     """``one`` for a count of 1, ``many`` for any other: the words that agree with it.
 

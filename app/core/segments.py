@@ -213,8 +213,7 @@ def curve_speed(app: Application, torque_nm: Array) -> Array:
     >>> np.round(curve_speed(app, np.array([0.3, 0.1, 0.05, 0.5])), 9).tolist()
     [500.0, 2000.0, 2000.0, nan]
     """
-    speeds, torques = _curve_points(app.motor_curve)
-    usable = torques / curve_margin(app)
+    speeds, usable = _usable_points(app)
     need = np.ravel(torque_nm)
     below = usable[:, None] < need[None, :]
     first = np.where(below.any(axis=0), below.argmax(axis=0), len(speeds))
@@ -265,8 +264,7 @@ def swept_curve_torque(app: Application, rpm: Array) -> tuple[Array, Array]:
     """
     top = np.asarray(rpm, dtype=np.float64)
     at_top = np.ravel(curve_torque(app, top))
-    speeds, torques = _curve_points(app.motor_curve)
-    usable = torques / curve_margin(app)
+    speeds, usable = _usable_points(app)
     below = speeds[:, None] < np.ravel(top)[None, :]
     masked = np.where(below, usable[:, None], np.inf)
     k = masked.argmin(axis=0)
@@ -288,6 +286,13 @@ def read_curve(curve: tuple[tuple[float, float], ...], rpm: Array) -> Array:
     speeds, torques = _curve_points(curve)
     at: Array = np.interp(np.minimum(rpm, speeds[-1]), speeds, torques)
     return at
+
+
+def _usable_points(app: Application) -> tuple[Array, Array]:
+    """The motor curve's points as the usable torque (``curve_torque``) has them: speeds
+    [rpm] and torques over ``curve_margin`` [N m]."""
+    speeds, torques = _curve_points(app.motor_curve)
+    return speeds, torques / curve_margin(app)
 
 
 def _curve_points(curve: tuple[tuple[float, float], ...]) -> tuple[Array, Array]:

@@ -18,7 +18,7 @@ from app.core import motion
 from app.core.batch import CheckResult
 from app.core.checks.base import Check
 from app.core.model import PASS_UTILIZATION, Application, Provenance, ScrewSpec
-from app.core.phrase import Amount, Phrase, join, plural
+from app.core.phrase import Amount, Phrase, in_words, join, plural
 from app.core.sections import Life
 
 #: Catalog values by their base name (no nut variant, no unit), in the reader's words.
@@ -171,9 +171,7 @@ class Skip:
 
     def phrase(self) -> str:
         """'Nut contact pressure (no nut length or pitch)'."""
-        names = list(self.missing)
-        listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
-        return f"{self.label} (no {listed})"
+        return f"{self.label} (no {in_words(self.missing, 'or')})"
 
 
 #: The checks of a sliding nut's ratings (PV, flank pressure, sliding and traverse speed,
