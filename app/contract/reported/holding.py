@@ -2,7 +2,7 @@
 efficiencies, self-locking and its margin, the brake torque."""
 
 from app.contract.reported.row import Formula, Reported
-from app.core import quantities
+from app.core import holding
 from app.core.formulas import efficiency
 
 ROWS: tuple[Reported, ...] = (
@@ -60,9 +60,12 @@ ROWS: tuple[Reported, ...] = (
         css="backdrive",
         compare=True,
         formula=Formula(
-            quantities.operating_point,
-            "T = max(seed method, physics); 0 when self-locking with the friction margin",
-            "safe side of both",
+            holding.holding,
+            "T = SF_hold x max(seed method, physics at f mu_s); 0 when self-locking with "
+            "the friction margin; SF_hold the holding safety factor (none given: the torque "
+            "safety factor, for a brake at least its service factor 1.5)",
+            "safe side of both; the brake's service factor: Machine Design, \"Mechatronics "
+            'Q & A: Hold It Steady" (2007)',
         ),
     ),
 )
