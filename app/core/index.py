@@ -21,7 +21,7 @@ from app.core.dry_run import as_run
 from app.core.model import Application, ScrewSpec
 from app.core.robustness import Variants, build_variants
 from app.core.screening import Filters, eligible_mask, filters
-from app.core.table import COLUMNS, CandidateTable, SizeKey, size_of
+from app.core.table import COLUMNS, CandidateTable, SizeKey, size_of, size_rows
 
 __all__ = ["CatalogIndex", "SizeKey", "size_of"]
 
@@ -163,16 +163,5 @@ def _read_only(table: CandidateTable) -> CandidateTable:
 
 
 def _sizes(table: CandidateTable) -> Mapping[SizeKey, NDArray[np.intp]]:
-    """The rows of each size and nut of ``table``, shortest lead first (one stable sort
-    by size, then lead)."""
-    codes: dict[SizeKey, int] = {}
-    code = np.array(
-        [codes.setdefault(size_of(s), len(codes)) for s in table.screws],
-        dtype=np.intp,
-    )
-    if not codes:
-        return MappingProxyType({})
-    order = np.lexsort((table.lead_m, code))
-    order.setflags(write=False)  # the groups below are views of it
-    groups = np.split(order, np.flatnonzero(np.diff(code[order])) + 1)
-    return MappingProxyType(dict(zip(codes, groups, strict=True)))
+    """The rows of each size and nut of ``table``, shortest lead first (``size_rows``)."""
+    return MappingProxyType(size_rows(table.screws, table.lead_m))

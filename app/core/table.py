@@ -6,10 +6,11 @@ the whole catalog.
 """
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Hashable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from operator import attrgetter
 from types import MappingProxyType
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -52,12 +53,10 @@ def _bands(screws: Sequence[ScrewSpec], lead_m: Array) -> tuple[Array, Mask]:
     """Each screw's family traverse limit [m/s] (NaN without a table) and off-table flag;
     screws sharing a table are looked up together."""
     speeds, off = np.full(len(screws), np.nan), np.zeros(len(screws), dtype=bool)
-    groups: dict[limits.Bands, list[int]] = {}
-    for i, s in enumerate(screws):
-        if s.traverse_bands:
-            groups.setdefault(s.traverse_bands, []).append(i)
-    for bands, index in groups.items():
-        speeds[index], off[index] = limits.band_limit(lead_m[index], bands)
+    bands, which = _distinct(screws, "traverse_bands")
+    for j, table in enumerate(bands):
+        index = np.flatnonzero(which == j)
+        speeds[index], off[index] = limits.band_limit(lead_m[index], table)
     return speeds, off
 
 
@@ -80,15 +79,31 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]
 Rows = tuple[tuple[float, float], ...]
 
 
+def _first_use(values: Sequence[Hashable]) -> tuple[list[Any], NDArray[np.intp]]:
+    """The distinct ``values`` in order of first use, and each value's position among them.
+    Equal values are mostly one object (a family's table, a series' id), so the values
+    are told apart by identity first, in NumPy, and the distinct objects alone compared.
+
+    >>> _first_use(["b", "a", "b", None])
+    (['b', 'a', None], array([0, 1, 0, 2]))
+    """
+    ids = np.fromiter(map(id, values), dtype=np.uintp, count=len(values))
+    _, first, objects = np.unique(ids, return_index=True, return_inverse=True)
+    in_use = np.argsort(first)
+    seen: dict[Hashable, int] = {}
+    position = np.empty(len(first), dtype=np.intp)
+    position[in_use] = [seen.setdefault(values[i], len(seen)) for i in first[in_use].tolist()]
+    return list(seen), position[objects.reshape(-1)]
+
+
 def _distinct(screws: Sequence[ScrewSpec], name: str) -> tuple[tuple[Rows, ...], NDArray[np.intp]]:
     """The distinct tables of ScrewSpec field ``name`` (nut pressure-speed tables, ball
-    screws' travel deviation tables), in first use, and each screw's position in them
-    (-1: none)."""
-    tables: dict[Rows, int] = {}
-    which = [
-        tables.setdefault(table, len(tables)) if (table := getattr(s, name)) else -1 for s in screws
-    ]
-    return tuple(tables), np.array(which, dtype=np.intp)
+    screws' travel deviation tables, traverse bands), in first use, and each screw's
+    position in them (-1: none)."""
+    values, which = _first_use(list(map(attrgetter(name), screws)))
+    tables = tuple(t for t in values if t)
+    renumber = np.array([tables.index(t) if t else -1 for t in values], dtype=np.intp)
+    return tables, renumber[which]
 
 
 def _renumbered(
@@ -104,11 +119,26 @@ def _renumbered(
 #: One size and nut of a series, every lead: (series id, nut material, coated,
 #: anti-backlash).
 SizeKey = tuple[str, str, bool, bool]
+_SIZE = attrgetter("series_id", "nut_material", "coated", "anti_backlash")
 
 
 def size_of(screw: ScrewSpec) -> SizeKey:
     """The size and nut ``screw`` is one lead of."""
-    return (screw.series_id, screw.nut_material, screw.coated, screw.anti_backlash)
+    size: SizeKey = _SIZE(screw)
+    return size
+
+
+def size_rows(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[SizeKey, NDArray[np.intp]]:
+    """The rows of each size and nut of ``screws`` (``size_of``), shortest lead first (one
+    stable sort by size, then lead); each read-only."""
+    codes: dict[SizeKey, int] = {}
+    code = np.array([codes.setdefault(size, len(codes)) for size in map(_SIZE, screws)])
+    if not codes:
+        return {}
+    order = np.lexsort((lead_m, code))
+    order.setflags(write=False)  # the groups below are views of it
+    groups = np.split(order, np.flatnonzero(np.diff(code[order])) + 1)
+    return dict(zip(codes, groups, strict=True))
 
 
 @dataclass(frozen=True, slots=True)
@@ -138,15 +168,15 @@ class Reach:
         return next((lead for lead in reversed(leads) if lead <= bound_m), None)
 
 
-def _leads(screws: Sequence[ScrewSpec]) -> Mapping[SizeKey, tuple[float, ...]]:
+def _leads(screws: Sequence[ScrewSpec], lead_m: Array) -> Mapping[SizeKey, tuple[float, ...]]:
     """The leads each size and nut of ``screws`` is made in, ascending."""
-    found: dict[SizeKey, set[float]] = {}
-    for screw in screws:
-        found.setdefault(size_of(screw), set()).add(screw.lead_m)
-    return MappingProxyType({size: tuple(sorted(leads)) for size, leads in found.items()})
+    rows = size_rows(screws, lead_m)
+    return MappingProxyType(
+        {size: tuple(np.unique(lead_m[at]).tolist()) for size, at in rows.items()}
+    )
 
 
-def _held(names: Sequence[str]) -> tuple[str, ...]:
+def _held(names: Iterable[str]) -> tuple[str, ...]:
     """``names`` once each (whatever their case), in alphabetical order."""
     once = {name.casefold(): name for name in names}
     return tuple(sorted(once.values(), key=str.casefold))
@@ -167,9 +197,9 @@ def _reach(
         max_design_load_n=_largest(design_load),
         max_length_m=_largest(max_length),
         anti_backlash=bool(anti_backlash.any()),
-        leads=_leads(screws),
-        families=_held([s.family_id for s in screws]),
-        nut_materials=_held([s.nut_material for s in screws]),
+        leads=_leads(screws, lead),
+        families=_held(dict.fromkeys(map(attrgetter("family_id"), screws))),
+        nut_materials=_held(dict.fromkeys(map(attrgetter("nut_material"), screws))),
     )
 
 
@@ -363,7 +393,7 @@ class CandidateTable:
             return column(list(map(attrgetter(name), screws)))
 
         def flag(name: str) -> Mask:
-            return np.array(list(map(attrgetter(name), screws)), dtype=bool)
+            return np.fromiter(map(attrgetter(name), screws), dtype=bool, count=len(screws))
 
         od, rd, lead = col("outer_diameter_m"), col("root_diameter_m"), col("lead_m")
         # a standard thread states its pitch diameter (ISO 2904 d2 = d - 0.5 P), a ball
