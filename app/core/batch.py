@@ -16,7 +16,7 @@ from app.core import motion, segments
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
 from app.core.dry_run import screw_as_run
-from app.core.duty import ball_life_revolutions
+from app.core.duty import ball_life_revolutions, travel_thrusts
 from app.core.input_rules import read_inputs, refused
 from app.core.model import Application, AxisProvenance, Motion, ScrewSpec, Segment
 from app.core.phrase import Phrase, Quantity
@@ -80,8 +80,11 @@ class Batch:
     @cached_property
     def l10_revolutions(self) -> list[float]:
         """Each candidate's ball nut L10 life over the cycle [revolutions]
-        (``duty.ball_life_revolutions``: both sides of a preloaded nut; infinite without a
-        stroke, NaN without a rating): worked out for the whole batch at once."""
+        (``duty.ball_life_revolutions``: both sides of a preloaded nut; NaN without a
+        rating): worked out for the whole batch at once; infinite for every nut without a
+        stroke (nothing moves over one)."""
+        if not travel_thrusts(self.app)[0]:
+            return [math.inf] * len(self.positions)
         table = self.screening.table
         rating, preload = table.dynamic_load_n[self.at], table.preload_n[self.at]
         revolutions: list[float] = ball_life_revolutions(self.app, rating, preload).tolist()
