@@ -33,11 +33,13 @@ def torques(
     may need more). The breakdown is that of the move that starts hardest (``move``,
     ``motion.lead_move``: out and back, the scalar inputs); break-away the largest of
     every move's start (``breakaway``): a move with less thrust may need more torque to
-    start, its acceleration higher."""
+    start, its acceleration higher. The load's inertia at the motor is the screw's and
+    the heaviest mass any move carries (``heaviest_mass_kg``), reflected: a lighter lead
+    move does not lighten the heaviest."""
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
     j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
-    j_mass = torque.reflected_mass_inertia(
-        move.moving_mass_kg, t.lead_m, t.reflected_inertia_per_kg_m2
+    j_heaviest = torque.reflected_mass_inertia(
+        heaviest_mass_kg(app), t.lead_m, t.reflected_inertia_per_kg_m2
     )
     inertial_force_n = move.moving_mass_kg * move.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
@@ -60,7 +62,7 @@ def torques(
     segment = np.where(largest > t_start, magnitude.argmax(axis=0), -1.0)
     return {
         "angular_accel_rad_s2": alpha,
-        "inertia_kg_m2": j_screw + j_mass,
+        "inertia_kg_m2": j_screw + j_heaviest,
         "inertia_screw_nm": t_screw,
         "inertia_mass_nm": t_mass,
         "inertia_motor_nm": t_motor,
@@ -73,6 +75,19 @@ def torques(
         "peak_torque_segment": segment,
         "required_nm": peak * app.torque_safety_factor,
     }
+
+
+def heaviest_mass_kg(app: Application) -> float:
+    """The heaviest mass any move of the cycle carries [kg] (``motion.cycle``: out and
+    back carry the one moving mass; a pick-and-place cycle carries the part one way
+    only): the mass whose reflected inertia the motor must control at its worst.
+
+    >>> from app.core.model import Move
+    >>> heaviest_mass_kg(Application(load_n=0.0, speed_m_s=0.3, length_m=0.8, moves=(
+    ...     Move(0.3, 0.3, 10.0, 10.0, 0.0, 2.0), Move(-0.3, 0.1, 0.25, 0.25, 0.0, 40.0))))
+    40.0
+    """
+    return max(move.moving_mass_kg for move in motion.cycle(app))
 
 
 def breakaway(t: CandidateTable, start_n: float, spin_nm: Array) -> Array:

@@ -208,3 +208,28 @@ def test_a_dwell_holds_the_heavier_of_the_moves_beside_it(zbx8000_l10: ScrewSpec
     dwells = [s for s in ev.motion.segments if s.name == "dwell"]
     assert [d.thrust_n for d in dwells] == pytest.approx([2.5 * STANDARD_GRAVITY_M_S2] * 2)
     assert dwells[1].torque_nm == pytest.approx(dwells[0].torque_nm)
+
+
+def test_the_inertia_ratio_takes_the_heaviest_move(b8000_l10: ScrewSpec) -> None:
+    """Out empty and fast (0.5 kg at 10 m/s^2: 10 + 5 = 15 N to start, the move that
+    starts hardest), back with a 6 kg part and slowly (0.5 m/s^2: 10 + 3 = 13 N): the
+    motor controls the 6 kg on the way back, so the load's inertia at the motor is
+    J_screw + 6 (lead / 2 pi)^2 (Oriental Motor, Motor Sizing Calculations: the load
+    inertia of the moving mass). It took the lead move's 0.5 kg, a ratio of 4.2 that
+    passed the guide of 10 where the 6 kg gives 11.2."""
+    out, back = _pick_and_place().moves
+    moves = (
+        replace(out, moving_mass_kg=0.5, accel_m_s2=10.0, decel_m_s2=10.0),
+        replace(back, moving_mass_kg=6.0, accel_m_s2=0.5, decel_m_s2=0.5),
+    )
+    rotor = 2e-6
+    app = _pick_and_place(moves=moves, motor_inertia_kg_m2=rotor)
+    ev = evaluate(app, b8000_l10)
+    assert motion.lead_move(app) is moves[0]
+    j_screw = b8000_l10.inertia_kg_m2_per_m * app.length_m
+    load = j_screw + 6.0 * (b8000_l10.lead_m / (2.0 * math.pi)) ** 2
+    assert ev.quantities.torque.inertia_kg_m2 == pytest.approx(load, rel=1e-12)
+    ratio = next(c for c in ev.checks if c.name == "inertia_ratio")
+    assert ratio.value == pytest.approx(load / rotor, rel=1e-12)
+    assert ratio.value == pytest.approx(11.2, abs=0.05)
+    assert not ratio.passed

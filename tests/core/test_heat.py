@@ -159,3 +159,28 @@ def test_an_anti_backlash_nuts_drag_heats_the_nut(catalog: Catalog) -> None:
     assert without.value == pytest.approx(thread_w / conductance, rel=1e-9) and without.passed
     assert round(without.value, 1) == 64.6
     assert "drag" not in without.message.values
+
+
+@pytest.mark.parametrize("ambient_c", [99.9, 100.0], ids=["just-below", "at-the-rating"])
+def test_a_nut_at_its_rated_ambient_has_no_room_for_heat(
+    catalog: Catalog, ambient_c: float
+) -> None:
+    """Tr16x4 with an acetal nut rated to 100 C (Neale, Tribology Handbook A5:
+    thermoplastic maximum 100 C), 20 N over 300 mm at 10 mm/s: the thread's friction
+    heats the nut 4.9 K above the ambient. At 99.9 C that fails the 0.1 K of room; at
+    100 C, which the operating-temperature check passes (its range includes the rating),
+    the heat check vanished, so a nut that runs at 104.9 C passed both. It is judged and
+    fails, with no infinite utilisation."""
+    app = Application(
+        load_n=20.0, speed_m_s=0.01, length_m=0.6, stroke_m=0.3, cycles_per_day=1000.0,
+        ambient_c=ambient_c,
+    )  # fmt: skip
+    ev = evaluate(app, catalog.by_id["Tr16x4-acetal"])
+    by_name = {c.name: c for c in ev.checks}
+    assert by_name["temperature"].passed
+    heated = by_name["nut_heat"]
+    assert not heated.passed
+    assert ev.quantities.heat.nut_temperature_rise_k == pytest.approx(4.92, abs=0.01)
+    assert heated.capacity == pytest.approx(100.0 - ambient_c, abs=1e-9)
+    assert heated.utilization is None or math.isfinite(heated.utilization)
+    assert "nut_heat" in {c.name for c in ev.failed}

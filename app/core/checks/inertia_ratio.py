@@ -3,6 +3,7 @@ servo stays stable, only while the ratio is moderate (advice)."""
 
 import numpy as np
 
+from app.core import drive
 from app.core.checks.base import (
     Application,
     Array,
@@ -27,9 +28,9 @@ class InertiaRatio(Check):
     label = "Load-to-rotor inertia ratio"
     kind = "advice"
     description = (
-        "The screw's inertia and the moving mass reflected to the screw, over the motor's "
-        "rotor inertia, against 10: above it a stepper loses steps in fast starts and "
-        "stops and a servo needs careful tuning."
+        "The screw's inertia and the heaviest moving mass of the cycle's moves reflected "
+        "to the screw, over the motor's rotor inertia, against 10: above it a stepper "
+        "loses steps in fast starts and stops and a servo needs careful tuning."
     )
     quantity = "factor"
     formula = "r = (J_screw + m * (lead / (2 * pi))^2) / J_rotor; r_max = 10"
@@ -48,7 +49,7 @@ class InertiaRatio(Check):
     ) -> Mapping[str, object]:
         return {
             "J_screw": t.inertia_kg_m2_per_m * app.length_m,
-            "m": app.moving_mass_kg,
+            "m": drive.heaviest_mass_kg(app),
             "lead": t.lead_m,
             "J_rotor": app.motor_inertia_kg_m2,
         }

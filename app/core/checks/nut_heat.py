@@ -23,10 +23,11 @@ from app.core.phrase import Amount, Phrase
 
 
 def headroom(app: Application, t: CandidateTable) -> Array:
-    """The nut's rated maximum less the ambient [K]; NaN where there is none (no rating,
-    or the ambient already at or above it: the temperature check says so)."""
+    """The nut's rated maximum less the ambient [K]: 0 at the ambient of the rating
+    itself (which the temperature check passes), NaN where there is none (no rating, or
+    the ambient above it: the temperature check fails it)."""
     room = t.temperature_max_c - app.ambient_c
-    return np.where(room > 0.0, room, np.nan)
+    return np.where(room >= 0.0, room, np.nan)
 
 
 class NutHeat(Check):
@@ -72,9 +73,10 @@ class NutHeat(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         room = headroom(app, t)
+        rise = q.heat.nut_temperature_rise_k
         # a ball nut rolls: no sliding-friction heat balance
-        applicable = where_given(q.heat.nut_temperature_rise_k) & where_given(room) & ~t.ball
-        return Measure(applicable, q.heat.nut_temperature_rise_k, room)
+        applicable = where_given(rise) & where_given(room) & ~t.ball
+        return Measure(applicable, rise, room)
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
@@ -124,6 +126,12 @@ class NutHeat(Check):
         drag = ", a nut of less drag (less preload)" if r.heat.drag_power_w > 0.0 else ""
         # the heat is linear in the cycle's mean speed: the rise falls with it to the room
         room = (s.temperature_max_c or np.nan) - app.ambient_c
+        if room <= 0.0:
+            return Phrase(
+                "The ambient {t} is the nut's rated maximum: any motion heats it above. A "
+                "nut rated hotter or a cooler ambient.",
+                {"t": Amount(app.ambient_c, "temperature")},
+            )
         mean = r.heat.heat_speed_m_s * room / r.heat.nut_temperature_rise_k
         return Phrase(
             "Less heat or more cooling: longer dwells or a lower speed, for a mean speed "
