@@ -19,7 +19,7 @@ from app.core.changes import (
     input_words,
     one_input_changes,
 )
-from app.core.checks import BY_NAME
+from app.core.checks import BY_NAME, nut_heat
 from app.core.checks.wear_life import life_band
 from app.core.index import CatalogIndex
 from app.core.model import Application, AxisProvenance, Remedy, ScrewSpec, Summary, holds
@@ -330,9 +330,10 @@ def summarize(
     if passed:
         message = Phrase(f"{passed} of {evaluated} candidates {plural(passed, 'passes', 'pass')}.")
         first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]
-        life = motion.life_note(app)
+        sliding = screening is None or bool((screening.passed & ~screening.table.ball).any())
+        later = (motion.life_note(app), nut_heat.unchecked_note(app, sliding))
         parts = [p for p in first if p is not None]
-        after = [] if life is None else [life]
+        after = [n for n in later if n is not None]
         return Summary(worst, worst_count, None, {}, join([*parts, *note, message, *after]))
     best = nearest[0]
     # each of the nearest candidates' changes, worked out once (each may judge it again)

@@ -97,3 +97,26 @@ def test_an_anti_backlash_nuts_drag_heats_the_nut(client: TestClient) -> None:
     mean_mm_s = 0.95 * mean_m_s * 80.0 / rise_k * 1e3
     assert f"dwells included) of at most {mean_mm_s:.4g} mm/s" in heat["fix"]
     assert "drag_torque" in heat["sources"]
+
+
+@pytest.mark.parametrize(
+    ("query", "said"),
+    [
+        # no stroke: the sliding nuts that pass were never judged for heat
+        ({"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10}, True),
+        # a stroke: the heat check ran
+        (
+            {"load_n": 100, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 300},
+            False,
+        ),
+        # only a ball screw passes (20 kN at 1.5 m/s): no sliding nut to heat
+        ({"load_n": 20000, "speed_mm_s": 1500, "length_mm": 500}, False),
+    ],
+)
+def test_the_summary_says_when_nut_heat_was_not_checked(
+    client: TestClient, query: dict[str, float], said: bool
+) -> None:
+    message = client.get("/api/v1/select", params=query).json()["summary"]["message"]
+    assert ("Nut heat is not checked" in message) is said
+    if said:
+        assert message.index("candidates pass.") < message.index("Nut heat is not checked")

@@ -30,6 +30,15 @@ def headroom(app: Application, t: CandidateTable) -> Array:
     return np.where(room >= 0.0, room, np.nan)
 
 
+def unchecked_note(app: Application, sliding_passes: bool) -> Phrase | None:
+    """Without a stroke, where a sliding nut passes: that its heat is not checked (the
+    heat depends on the duty, the moves and their dwells, which are not given) and what
+    to give to check it (None otherwise)."""
+    if NutHeat().applies(app) or not sliding_passes:
+        return None
+    return Phrase("Nut heat is not checked without a stroke: give one to judge it.")
+
+
 class NutHeat(Check):
     name = "nut_heat"
     why_none = "every nut runs too hot at this duty: a ball screw, or a lower duty"
