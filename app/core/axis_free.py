@@ -83,11 +83,10 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
     same formula call it would make per query: tan of the lead angle and the static
     friction at which the thread self-locks (``efficiency``), the seed's contact area of
     three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
-    area at the catalog's nut length (``bearing``), the screw's fin conductance in still
-    air, the nut's outside diameter and its conductance to the ambient at the catalog's
-    nut length (``heat``), and the root section's and the shaft's own terms of the
-    column, stress and whirl formulas (``buckling``, ``critical_speed``). What follows
-    from the friction is ``friction_columns``'s."""
+    area at the catalog's nut length (``bearing``), the screw's endless fin conductance in
+    still air and the nut's outside diameter (``heat``), and the root section's and the
+    shaft's own terms of the column, stress and whirl formulas (``buckling``,
+    ``critical_speed``). What follows from the friction is ``friction_columns``'s."""
     tan_l = np.tan(c["lead_angle_rad"])
     d_r, e = c["root_diameter_m"], c["youngs_modulus_pa"]
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -108,9 +107,6 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "catalog_flank_area_m2": np.asarray(flanks, dtype=np.float64),
         "fin_conductance_w_k": fin,
         "nut_outer_diameter_m": nut_d,
-        "nut_conductance_w_k": heat.nut_conductance(
-            fin, c["nut_length_m"], nut_d, heat.FREE_CONVECTION_W_M2_K
-        ),
         "root_area_m2": buckling.root_area(d_r),
         "root_second_moment_m4": buckling.second_moment_round(d_r),
         "root_pi_d_cubed_m3": buckling.root_pi_d_cubed(d_r),

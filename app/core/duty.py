@@ -43,6 +43,19 @@ def cycles_fit_a_day(cycles_per_day: float | None, p: Profile | None) -> bool:
     return cycles_per_day is None or most is None or cycles_per_day <= most * (1.0 + 1e-12)
 
 
+def screw_fins(app: Application, t: CandidateTable, nut_m: Array) -> Array:
+    """The screw's conductance both ways from the nut [W/K]: two fins of its root (the
+    endless fin's conductance in still air, a catalog column, ``heat.fin_conductance``),
+    each as long as the screw each side of the nut at the end of its stroke, centred on
+    the screw (``heat.nut_sides_m``; the stroke, else the cycle's equivalent stroke), its
+    far end taken as insulated (``heat.fin_share``)."""
+    span = app.stroke_m if app.stroke_m is not None else motion.equivalent_stroke(app) or 0.0
+    sides = heat.nut_sides_m(app.length_m, span, nut_m)
+    d_r, k, h = t.root_diameter_m, t.thermal_conductivity_w_m_k, heat.FREE_CONVECTION_W_M2_K
+    shares = heat.fin_share(sides[0], d_r, k, h) + heat.fin_share(sides[1], d_r, k, h)
+    return np.asarray(t.fin_conductance_w_k * shares, dtype=np.float64)
+
+
 def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:
     """The power the nut's thread friction and drag turn into heat, averaged over the
     cycle ``c`` (``motion.cycle_of``), and the nut's steady temperature rise: the screw
@@ -61,16 +74,13 @@ def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[s
     mean_speed = app.speed_m_s if p is None else 2.0 * stroke / p.cycle_time_s
     friction = finite(heat.friction_power(c.wear_n, mean_speed, t.efficiency, t.friction_loss))
     drag = heat.drag_power(t.drag_max_nm, mean_speed, t.lead_m, t.drag_work_per_turn_j)
-    # the fin conductance and nut diameter in still air follow from the catalog alone, and
-    # with them the nut's conductance at the catalog's nut length
-    catalog_nut = app.nut_length_m is None
+    nut_m = nut_length(app, t)
     rise = heat.temperature_rise(
         friction + drag,
-        t.fin_conductance_w_k,
-        nut_length(app, t),
+        screw_fins(app, t, nut_m),
+        nut_m,
         t.nut_outer_diameter_m,
         heat.FREE_CONVECTION_W_M2_K,
-        t.nut_conductance_w_k if catalog_nut else None,
     )
     return {
         "heat_speed_m_s": filled(len(t), mean_speed),

@@ -326,9 +326,6 @@ class CandidateTable:
     catalog_flank_area_m2: Array
     fin_conductance_w_k: Array
     nut_outer_diameter_m: Array
-    #: the nut's conductance to the ambient at the catalog's nut length [W/K]
-    #: (``heat.nut_conductance``: the fins both ways and the nut's surface; NaN: no length)
-    nut_conductance_w_k: Array
     root_efficiency: Array
     #: The root section's area [m^2], second moment [m^4] and pi d_r^3 [m^3]
     #: (``buckling``), sqrt(E / rho) [m/s] and the radius of gyration d_r / 4 [m]

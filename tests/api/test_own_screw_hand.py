@@ -64,13 +64,20 @@ def test_a_named_materials_conductivity_keeps_its_provenance(client: TestClient)
     the answer called "not checked". By hand: the mean speed over a 600 mm move with
     0.1 s ramps at 0.3 m/s^2 is 600 / 20.1 = 29.85 mm/s; eta = (cos 15 - 0.13 x 0.070736)
     / (cos 15 + 0.13 / 0.070736) = 0.34124; Q = 3000 x 0.02985 x (1 / 0.34124 - 1) =
-    172.9 W; the screw's two fins 2 sqrt(10 x pi 0.0155 x 50.7 x pi 0.0155^2 / 4) =
-    0.13651 W/K and the nut's surface 10 x pi x 0.04 x 0.06 = 0.07540 W/K: 816 K."""
+    172.9 W; the screw's two fins, each sqrt(10 x pi 0.0155 x 50.7 x pi 0.0155^2 / 4) =
+    0.068253 W/K were it endless, here 70 and 670 mm long each side of the nut at the end
+    of the 600 mm stroke centred on the 800 mm screw, insulated at their ends (Incropera
+    Table 3.4, case B: times tanh(m L), m = sqrt(4 x 10 / (50.7 x 0.0155)) = 7.1344 /m):
+    0.068253 (0.46165 + 0.99986) = 0.09975 W/K, and the nut's surface
+    10 x pi x 0.04 x 0.06 = 0.07540 W/K: 987 K."""
     c = _custom(client, TR20X4_BRONZE, **LONG_NUT_AXIS)
     heat = check(c, "nut_heat")
     q = 3000 * (0.6 / 20.1) * (1 / 0.34124 - 1)
-    fins = 2 * math.sqrt(10 * math.pi * 0.0155 * 50.7 * math.pi * 0.0155**2 / 4)
+    endless = math.sqrt(10 * math.pi * 0.0155 * 50.7 * math.pi * 0.0155**2 / 4)
+    m = math.sqrt(4 * 10 / (50.7 * 0.0155))
+    fins = endless * (math.tanh(m * 0.07) + math.tanh(m * 0.67))
     assert heat["value"] == pytest.approx(q / (fins + 10 * math.pi * 0.04 * 0.06), rel=1e-3)
+    assert heat["value"] == pytest.approx(987.0, abs=1.0)
     assert c["provenance"]["thermal_conductivity"]["kind"] == "handbook"
     assert "50.7" in c["provenance"]["thermal_conductivity"]["source"]
 

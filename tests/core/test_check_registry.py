@@ -88,6 +88,7 @@ FUNCTIONS: dict[str, Any] = {
     "pi": math.pi,
     "sqrt": math.sqrt,
     "cos": math.cos,
+    "tanh": math.tanh,
     "max": max,
     "abs": abs,
     "min": min,

@@ -43,7 +43,11 @@ nut run dry came to be worked at its dry friction (0.19, Shigley Table 8-5, for 
 oiled): ranked by torque, the steeper leads of similar sizes move ahead (Tr12x6(P3)
 before Tr16x4, Tr14x6(P3) before Tr18x4, Tr16x8(P4) before Tr22x5, Tr18x8(P4) before
 Tr24x5); the same 30 nuts, every one still robust, and no other query moved (checked by
-script against the recorded rankings). Every path
+script against the recorded rankings). "motion-motor" and "life-advice-reject" were
+recorded again when the screw's fins each side of a sliding nut came to be taken as long
+as the screw there (Incropera Table 3.4, case B), not endless: one non-robust nut in each
+now hinges on its friction too (its nut heat nearer the limit); the order and every other
+verdict stayed. Every path
 must still give them: select, a catalog screw evaluated alone, and a screw outside the
 catalog with the same values (its variant rows built on the fly).
 """

@@ -68,9 +68,6 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
             t.dn_limit_mm_rpm, np.maximum(t.outer_diameter_m, t.pitch_diameter_m)
         ),
         **{mask: ~np.isnan(getattr(t, name)) for mask, name in GIVEN.items()},
-        "nut_conductance_w_k": heat.nut_conductance(
-            t.fin_conductance_w_k, t.nut_length_m, t.nut_outer_diameter_m, h
-        ),
         **dict(zip(WEAR, wear_geometry(t.catalog_flank_area_m2, partial(getattr, t)), strict=True)),
         **dict(
             zip(

@@ -4,6 +4,7 @@ both ways) and the nut's surface."""
 
 import numpy as np
 
+from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -50,18 +51,23 @@ class NutHeat(Check):
         "by each segment's travel), and the drag power of a preloaded (anti-backlash) "
         "nut, T_drag 2 pi v / lead, heat "
         "the nut until the screw (conducting both ways, a fin of its root diameter and "
-        "material) and the nut's surface (free convection, 10 W/(m^2 K)) carry it away: "
-        "the nut's rise over the ambient against the room to its rated maximum "
-        "temperature."
+        "material each side of the nut, its far end taken as insulated, the nut at the "
+        "end of a stroke centred on the screw, where its fins conduct least) and the "
+        "nut's surface (free convection, 10 W/(m^2 K)) carry it away: the nut's rise over "
+        "the ambient against the room to its rated maximum temperature."
     )
     quantity = "temperature_rise"
     formula = (
         "dT = (F * v * (1 / eta - 1) + T_drag * 2 * pi * v / lead) / "
-        "(2 * sqrt(h * pi * d_3 * k * pi * d_3^2 / 4) + h * pi * D_nut * L_nut); "
+        "(sqrt(h * pi * d_3 * k * pi * d_3^2 / 4) * "
+        "(tanh(sqrt(4 * h / (k * d_3)) * max(0, (L - s - L_nut) / 2)) + "
+        "tanh(sqrt(4 * h / (k * d_3)) * max(0, L - L_nut - max(0, (L - s - L_nut) / 2)))) "
+        "+ h * pi * D_nut * L_nut); "
         "dT_allowed = T_max - T_ambient"
     )
     source = (
-        "Incropera, Fundamentals of Heat and Mass Transfer, sec. 3.6 (infinite fin) and "
+        "Incropera, Fundamentals of Heat and Mass Transfer, sec. 3.6 (Table 3.4, a fin "
+        "with an adiabatic tip) and "
         "Table 1.1 (free convection); Shigley sec. 8-2 (thread efficiency)"
     )
     sources = (
@@ -101,6 +107,8 @@ class NutHeat(Check):
             "k": t.thermal_conductivity_w_m_k,
             "D_nut": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
             "L_nut": q.nut.nut_length_m,
+            "L": app.length_m,
+            "s": app.stroke_m if app.stroke_m is not None else motion.equivalent_stroke(app),
             "T_max": t.temperature_max_c,
             "T_ambient": app.ambient_c,
         }

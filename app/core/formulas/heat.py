@@ -6,12 +6,16 @@ References
 ----------
 1. F. P. Incropera, D. P. DeWitt et al., Fundamentals of Heat and Mass Transfer, 6th ed.:
    sec. 3.6 (extended surfaces; the infinitely long fin conducts sqrt(h P k A_c) per
-   kelvin at its base), Example 3.9 (5 mm rods of copper, 2024 aluminium and AISI 316
-   stainless, h = 100 W/(m^2 K), base 100 C in 25 C air: 8.3, 5.6 and 1.6 W), Table 1.1
-   (free convection of gases: h = 2-25 W/(m^2 K)).
+   kelvin at its base, one of length L with an adiabatic tip that times tanh(m L),
+   m = sqrt(h P / (k A_c)): Table 3.4, case B), Example 3.9 (5 mm rods of copper, 2024
+   aluminium and AISI 316 stainless, h = 100 W/(m^2 K), base 100 C in 25 C air: 8.3,
+   5.6 and 1.6 W), Table 1.1 (free convection of gases: h = 2-25 W/(m^2 K)).
 """
 
 import math
+from typing import Any
+
+import numpy as np
 
 from app.core.formulas.declare import formula
 
@@ -104,40 +108,71 @@ def fin_conductance(diameter_m: float, conductivity_w_m_k: float, h_w_m2_k: floa
 
 
 @formula(
-    "dT = P / (2 G_fin(d_3) + h pi D_nut L_nut)",
+    "G_fin(L) = G_fin tanh(m L), m = sqrt(4 h / (k d))",
+    "Incropera, sec. 3.6, Table 3.4 case B (a fin with an adiabatic tip)",
+)
+def fin_share(length_m: Any, diameter_m: Any, conductivity_w_m_k: Any, h_w_m2_k: float) -> Any:
+    """The part of an infinitely long round rod's conductance (``fin_conductance``) a rod
+    of length L [m] conducts with its far end insulated: tanh(m L), m = sqrt(h P / (k A_c))
+    = sqrt(4 h / (k d)); diameter d [m], conductivity k [W/(m K)], convection h
+    [W/(m^2 K)]. Numbers or arrays alike.
+
+    A 10.5 mm C45 root (k 50.7) in still air (h 10) has 1 / m = 115 mm: 136 mm of it
+    conducts 0.827 of an endless one's heat, a metre all of it:
+
+    >>> round(float(fin_share(0.136, 0.0105, 50.7, 10.0)), 3)
+    0.827
+    >>> round(float(fin_share(1.0, 0.0105, 50.7, 10.0)), 4)
+    1.0
+    """
+    m_per_m = np.sqrt(4.0 * h_w_m2_k / (np.asarray(conductivity_w_m_k) * diameter_m))
+    return np.tanh(m_per_m * length_m)
+
+
+def nut_sides_m(screw_length_m: float, span_m: float, nut_length_m: Any) -> tuple[Any, Any]:
+    """The screw's length each side of the nut [m] at the end of a stroke ``span_m`` [m]
+    centred on the screw: (L - s - L_nut) / 2 to the near end (none where the stroke and
+    the nut fill the screw) and the rest to the far one. Along a centred stroke the nut's
+    two fins conduct least there (tanh is concave), so its heat balance is taken there.
+
+    >>> [round(float(side), 3) for side in nut_sides_m(0.6, 0.3, 0.028)]
+    [0.136, 0.436]
+    """
+    near = np.maximum(0.0, (screw_length_m - span_m - nut_length_m) / 2.0)
+    return near, np.maximum(0.0, screw_length_m - nut_length_m - near)
+
+
+@formula(
+    "dT = P / (G_fin (tanh(m L_1) + tanh(m L_2)) + h pi D_nut L_nut)",
     "Incropera, sec. 3.6 and Newton's law of cooling",
 )
 def temperature_rise(
     power_w: float,
-    fin_w_k: float,
+    fins_w_k: float,
     nut_length_m: float,
     nut_diameter_m: float,
     h_w_m2_k: float,
-    conductance_w_k: float | None = None,
 ) -> float:
     """Steady temperature rise of the nut over the ambient [K]: the heat power [W] (the
     thread's friction and the nut's drag, ``friction_power`` + ``drag_power``) over the
-    screw's conductance both ways (two fins, [W/K]) plus the nut surface's convection
-    h pi D L (nut length and outside diameter [m], h [W/(m^2 K)]): ``nut_conductance``,
-    or ``conductance_w_k`` when already worked out (the candidate table's column at the
-    catalog's nut length), the same number.
+    screw's conductance both ways (its two fins together, ``fin_conductance`` times each
+    side's ``fin_share``, [W/K]) plus the nut surface's convection h pi D L (nut length
+    and outside diameter [m], h [W/(m^2 K)]): ``nut_conductance``.
 
-    >>> round(temperature_rise(10.0, 0.04, 0.028, 0.028, 10.0), 1)
+    >>> round(temperature_rise(10.0, 0.08, 0.028, 0.028, 10.0), 1)
     95.6
     """
-    if conductance_w_k is None:
-        conductance_w_k = nut_conductance(fin_w_k, nut_length_m, nut_diameter_m, h_w_m2_k)
-    return power_w / conductance_w_k
+    return power_w / nut_conductance(fins_w_k, nut_length_m, nut_diameter_m, h_w_m2_k)
 
 
 def nut_conductance(
-    fin_w_k: float, nut_length_m: float, nut_diameter_m: float, h_w_m2_k: float
+    fins_w_k: float, nut_length_m: float, nut_diameter_m: float, h_w_m2_k: float
 ) -> float:
     """The nut's conductance to the ambient [W/K] (``temperature_rise``): the screw's
-    both ways (two fins, [W/K]) plus the nut surface's convection h pi D L.
+    both ways (its two fins together, [W/K]) plus the nut surface's convection h pi D L.
 
-    >>> round(nut_conductance(0.04, 0.028, 0.028, 10.0), 4)
+    >>> round(nut_conductance(0.08, 0.028, 0.028, 10.0), 4)
     0.1046
     """
     surface_w_k = h_w_m2_k * math.pi * nut_diameter_m * nut_length_m
-    return 2.0 * fin_w_k + surface_w_k
+    return fins_w_k + surface_w_k
