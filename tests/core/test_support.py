@@ -218,3 +218,32 @@ def test_a_span_fix_names_the_span_and_keeps_the_margin(catalog: Catalog) -> Non
         "fixed-simple", screw.yield_strength_pa or float("nan"),
     )  # fmt: skip
     assert 0.5 * f_cr == pytest.approx(result.demand, rel=1e-6)
+
+
+def test_a_duty_in_hours_a_day_rates_the_thrust_bearing_too(catalog: Catalog) -> None:
+    """The duty given as hours of running a day instead of cycles: the thrust bearing's
+    life runs on the cycles those hours hold, as the nut's lives do. 1000 N both ways at
+    0.05 m/s over 0.5 m (1 m/s^2 ramps: 0.05 + 9.95 + 0.05 s a move, 20.1 s a cycle), 8 h
+    a day: 28,800 / 20.1 = 1432.8 cycles; THK FK12 (Ca 6.66 kN) on a 10 mm lead:
+    6.66^3 x 10^6 x 0.01 m / (2 x 0.5 m x 1432.8 x 365) = 5.65 years, short of 10. The
+    check once did not run at all (it read the cycles a day alone) and was not listed as
+    not checked."""
+    screw = catalog.by_id["ZBX8000-L10"]
+    duty = light_app(
+        load_n=1000.0,
+        accel_m_s2=1.0,
+        support_unit="thk-fk12",
+        stroke_m=0.5,
+        hours_per_day=8.0,
+        required_life_years=10.0,
+    )
+    app = with_support(duty, catalog.supports)
+    cycles = 8.0 * 3600.0 / 20.1
+    years = 6.66**3 * 1e6 * 0.01 / (2 * 0.5 * cycles * 365)
+    assert years == pytest.approx(5.65, abs=0.005)
+    result = check_of(app, screw, "support_life")
+    assert not result.passed
+    assert result.capacity == pytest.approx(years, rel=1e-6)
+    # the same duty as cycles a day rates the same life
+    counted = replace(app, hours_per_day=None, cycles_per_day=cycles)
+    assert check_of(counted, screw, "support_life").capacity == pytest.approx(years, rel=1e-9)

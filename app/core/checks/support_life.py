@@ -42,12 +42,9 @@ class SupportLife(Check):
     source = "ISO 281:2007 basic rating life (ball bearings); THK Ball Screw, average axial load"
 
     def applies(self, app: Application) -> bool:
-        duty = (
-            motion.equivalent_stroke(app)
-            and app.cycles_per_day
-            and app.required_life_years is not None
-        )
-        return bool(duty and app.support_dynamic_n is not None)
+        # a duty of cycles or of hours a day (``motion.has_duty``), as the nut's lives
+        duty = motion.has_duty(app) and app.required_life_years is not None
+        return duty and app.support_dynamic_n is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         life = q.support.support_life_years
@@ -62,7 +59,7 @@ class SupportLife(Check):
             "F_m": q.support.support_mean_load_n,
             "lead": t.lead_m,
             "stroke": motion.equivalent_stroke(app),
-            "cycles": app.cycles_per_day,
+            "cycles": motion.cycles_per_day(app),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
