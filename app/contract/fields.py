@@ -401,10 +401,11 @@ FIELDS: tuple[InputField, ...] = (
     ),
     InputField(
         api="ball_load_factor", page="ball_load_factor",
-        core="ball_load_factor", label="Ball nut load factor",
-        help="Operating factor f_w on a ball nut's mean load for its L10 life, which falls "
-        "as its cube: HIWIN 1.1 to 1.2 without impact, 1.3 to 1.8 in normal operation, 2 "
-        "to 3 with impact and vibration",
+        core="ball_load_factor", label="Load factor (ball nut, thrust bearing)",
+        help="Operating factor f_w on the mean load of the rolling parts, a ball nut and "
+        "the thrust bearing, for their L10 lives, which fall as its cube: HIWIN 1.1 to 1.2 "
+        "without impact, 1.3 to 1.8 in normal operation, 2 to 3 with impact and vibration "
+        "(IKO, bearings: 1 to 1.2 smooth, 1.2 to 1.5 ordinary, 1.5 to 3 with shocks)",
         group="Safety factors", kind="number", default=1.2, bounds=(1.0, 5.0),
     ),
     InputField(

@@ -234,7 +234,9 @@ def ball_track_load(app: Application, t: CandidateTable, c: motion.Cycle, force_
 def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[str, Any]:
     """The thrust bearing: its allowed static thrust C0a / fs, the cube-mean thrust of the
     cycle ``c`` (``motion.cycle_of``) and its L10 life in years (revolutions times the
-    lead over the duty's travel)."""
+    lead over the duty's travel, at the cycles a day given or those the hours a day hold,
+    ``c.cycles_per_day``), its mean thrust times the operating factor f_w that a ball
+    nut's life takes too: the axis's vibration and shocks load both alike."""
     nan = filled(len(t), np.nan)
     allowed = nan
     if app.support_static_n is not None:
@@ -245,11 +247,12 @@ def support_bearing(app: Application, t: CandidateTable, c: motion.Cycle) -> dic
     forces, distances = travel_thrusts(app, c)
     mean_n = support.mean_axial_load(forces, distances) if forces else math.nan
     years = nan
-    stroke = motion.equivalent_stroke(app)
-    duty = stroke and app.cycles_per_day
-    if app.support_dynamic_n is not None and duty and mean_n > 0.0:
-        revolutions = support.rating_life_revolutions(app.support_dynamic_n, mean_n)
-        years = life.life_years(revolutions * t.lead_m, stroke, app.cycles_per_day)
+    stroke, cycles = motion.equivalent_stroke(app), c.cycles_per_day
+    if app.support_dynamic_n is not None and stroke and cycles and mean_n > 0.0:
+        revolutions = support.rating_life_revolutions(
+            app.support_dynamic_n, mean_n, app.ball_load_factor
+        )
+        years = life.life_years(revolutions * t.lead_m, stroke, cycles)
     return {
         "support_allowed_n": allowed,
         "support_mean_load_n": filled(len(t), mean_n),

@@ -177,8 +177,9 @@ class Application:
     support_dynamic_n: float | None = None
     support_static_n: float | None = None
     support_static_safety_factor: float = 2.0
-    #: The operating factor f_w on a ball nut's mean load for its L10 life [-], and the
-    #: static safety factor f_s on its peak thrust against C0a [-].
+    #: The operating factor f_w on the mean load of a ball nut and of the thrust bearing
+    #: for their L10 lives (the axis's vibration and shocks load both) [-], and the
+    #: static safety factor f_s on a ball nut's peak thrust against C0a [-].
     ball_load_factor: float = 1.2
     ball_static_safety_factor: float = 2.0
     #: The longest span from the thrust bearing to the nut [m]: the column that buckles

@@ -133,11 +133,13 @@ def test_no_rating_no_check(catalog: Catalog) -> None:
 def test_the_rating_life_in_years_of_the_duty(catalog: Catalog) -> None:
     """1000 N of friction-like load both ways, no moving mass: every segment thrusts
     1000 N, so the cube mean is 1000 N. THK FK12, Ca 6.66 kN: L10 = 6.66^3 x 10^6 =
-    295.4 million revolutions (ISO 281); on a 10 mm lead 2954 km, over 2 x 0.5 m x 1000
-    cycles x 365 days = 365 km a year: 8.09 years, short of 10 (0.809), enough for 8."""
+    295.4 million revolutions (ISO 281, load factor 1); on a 10 mm lead 2954 km, over
+    2 x 0.5 m x 1000 cycles x 365 days = 365 km a year: 8.09 years, short of 10 (0.809),
+    enough for 8."""
     screw = catalog.by_id["ZBX8000-L10"]
     assert screw.lead_m == pytest.approx(0.01)
     duty = light_app(
+        ball_load_factor=1.0,
         load_n=1000.0,
         support_unit="thk-fk12",
         stroke_m=0.5,
@@ -218,3 +220,66 @@ def test_a_span_fix_names_the_span_and_keeps_the_margin(catalog: Catalog) -> Non
         "fixed-simple", screw.yield_strength_pa or float("nan"),
     )  # fmt: skip
     assert 0.5 * f_cr == pytest.approx(result.demand, rel=1e-6)
+
+
+def test_a_duty_in_hours_a_day_rates_the_thrust_bearing_too(catalog: Catalog) -> None:
+    """The duty given as hours of running a day instead of cycles: the thrust bearing's
+    life runs on the cycles those hours hold, as the nut's lives do. 1000 N both ways at
+    0.05 m/s over 0.5 m (1 m/s^2 ramps: 0.05 + 9.95 + 0.05 s a move, 20.1 s a cycle), 8 h
+    a day: 28,800 / 20.1 = 1432.8 cycles; THK FK12 (Ca 6.66 kN) on a 10 mm lead:
+    6.66^3 x 10^6 x 0.01 m / (2 x 0.5 m x 1432.8 x 365) = 5.65 years, short of 10. The
+    check once did not run at all (it read the cycles a day alone) and was not listed as
+    not checked."""
+    screw = catalog.by_id["ZBX8000-L10"]
+    duty = light_app(
+        ball_load_factor=1.0,
+        load_n=1000.0,
+        accel_m_s2=1.0,
+        support_unit="thk-fk12",
+        stroke_m=0.5,
+        hours_per_day=8.0,
+        required_life_years=10.0,
+    )
+    app = with_support(duty, catalog.supports)
+    cycles = 8.0 * 3600.0 / 20.1
+    years = 6.66**3 * 1e6 * 0.01 / (2 * 0.5 * cycles * 365)
+    assert years == pytest.approx(5.65, abs=0.005)
+    result = check_of(app, screw, "support_life")
+    assert not result.passed
+    assert result.capacity == pytest.approx(years, rel=1e-6)
+    # the same duty as cycles a day rates the same life
+    counted = replace(app, hours_per_day=None, cycles_per_day=cycles)
+    assert check_of(counted, screw, "support_life").capacity == pytest.approx(years, rel=1e-9)
+
+
+def test_the_thrust_bearing_life_takes_the_load_factor(catalog: Catalog) -> None:
+    """The bearing's load is the calculated load times the load factor fw (IKO, Needle
+    Roller Bearings catalog, eq. (10), Table 6: 1 to 1.2 in smooth operation), as the
+    ball nut's life takes it. R25-10K3-FSC on THK FK20 (Ca 17.9 kN), 2 kN against the
+    motion, 20 kg at 1 m/s^2 over 800 mm at 0.3 m/s, 2000 cycles a day: the cube-mean
+    thrust is 2000.0 N; at fw 1 L10 = 8.95^3 x 10^6 rev x 10 mm = 7169 km over 3200 m a
+    day, 6.14 years, which passed 5 years; at the default fw 1.2 (the ball nut's) it is
+    6.14 / 1.2^3 = 3.55 years and fails."""
+    screw = catalog.by_id["R25-10K3-FSC"]
+    duty = light_app(
+        load_n=2000.0,
+        moving_mass_kg=20.0,
+        accel_m_s2=1.0,
+        speed_m_s=0.3,
+        length_m=1.0,
+        stroke_m=0.8,
+        cycles_per_day=2000.0,
+        required_life_years=5.0,
+        support_unit="thk-fk20",
+    )
+    app = with_support(duty, catalog.supports)
+    unfactored = (17.9e3 / 2000.0) ** 3 * 1e6 * 0.01 / (2 * 0.8 * 2000 * 365)
+    assert unfactored == pytest.approx(6.14, abs=0.005)
+    assert app.ball_load_factor == 1.2
+    result = check_of(app, screw, "support_life")
+    assert result.capacity == pytest.approx(unfactored / 1.2**3, rel=1e-4)
+    assert result.capacity == pytest.approx(3.55, abs=0.005)
+    assert not result.passed
+    assert "load factor" in result.message.template
+    smooth = check_of(replace(app, ball_load_factor=1.0), screw, "support_life")
+    assert smooth.passed and smooth.capacity == pytest.approx(unfactored, rel=1e-4)
