@@ -18,7 +18,15 @@ from app.core.checks.base import Check
 from app.core.dry_run import screw_as_run
 from app.core.duty import ball_life_revolutions, travel_thrusts
 from app.core.input_rules import read_inputs, refused
-from app.core.model import Application, AxisProvenance, Motion, ScrewSpec, Segment
+from app.core.model import (
+    Application,
+    AxisProvenance,
+    Direction,
+    Motion,
+    ScrewSpec,
+    Segment,
+    SegmentName,
+)
 from app.core.phrase import Phrase, Quantity
 from app.core.quantities import PART_OF, PARTS, Quantities, quantity
 from app.core.screening import Screening
@@ -76,6 +84,12 @@ class Batch:
         """The equivalent stroke [m] and the cycles a day (``motion.equivalent_stroke``,
         ``motion.cycles_per_day``) that turn a travel into years: once per batch."""
         return motion.equivalent_stroke(self.app), motion.cycles_per_day(self.app)
+
+    @cached_property
+    def moving_segment_names(self) -> list[tuple[SegmentName, Direction]]:
+        """The moving segments' names and directions (``segments.moving_segment_names``),
+        the same for every candidate: worked out once per batch."""
+        return segments.moving_segment_names(self.app)
 
     @cached_property
     def l10_revolutions(self) -> list[float]:

@@ -8,7 +8,7 @@ from typing import Generic, Literal, Protocol, TypeVar, cast
 
 import numpy as np
 
-from app.core import motion, segments
+from app.core import motion
 from app.core.batch import Batch
 from app.core.checks.ball_life import BallLife
 from app.core.checks.life import Life as RatedLife
@@ -91,7 +91,7 @@ class Torque(Section):
         index = int(self.batch.column("peak_torque_segment")[self.k])
         if index < 0:
             return "starting from rest"
-        name, direction = segments.moving_segment_names(self.app)[index]
+        name, direction = self.batch.moving_segment_names[index]
         where = f", move {index // 3 + 1}" if self.app.moves else ""
         return f"{SEGMENT_WORDS[name]} {direction}{where}"
 
