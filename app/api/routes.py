@@ -307,7 +307,8 @@ async def evaluate_post(
 ) -> Response:
     """One catalog screw (`catalog_id`) or a custom geometry against one application:
     every check, number, formula and provenance, and its robustness. A catalog screw's
-    `share_url` is its report page, its `api_url` the GET of the same query."""
+    `share_url` is its report page, its `api_url` the GET of the same query; a custom
+    screw's `share_url` is the page of one's own screw with the same geometry and inputs."""
     return _evaluation(body.application, body.screw, catalog, "screw.catalog_id")
 
 

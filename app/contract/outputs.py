@@ -237,7 +237,8 @@ class EvaluateOut(BaseModel):
     motor_curve_origin: CurveOrigin | None = _curve_origin_field()
     formulas: dict[str, FormulaOut]
     share_url: str | None = Field(
-        description="A catalog screw's report page for the same inputs (none for a custom screw)."
+        description="A catalog screw's report page for the same inputs; a custom screw's "
+        "page of one's own screw with its geometry and the same inputs."
     )
     api_url: str | None = Field(
         description="The API's GET of the same query, a catalog screw's (none for a custom screw)."

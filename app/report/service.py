@@ -12,6 +12,7 @@ from app.contract.form import encode_query, share_query
 from app.contract.outputs import CompareOut, EvaluateOut, FormulaOut, PageSelectionOut, SelectOut
 from app.contract.params import api_url
 from app.contract.schemas import ApplicationIn, CandidateOut
+from app.contract.screw_link import custom_query
 from app.contract.screws import CatalogScrewIn, CustomScrewIn
 from app.contract.units import DEFAULT_UNITS
 from app.core.evaluate import evaluate
@@ -230,10 +231,11 @@ def run_evaluation(
 def evaluate_urls(
     inputs: ApplicationIn, screw: CatalogScrewIn | CustomScrewIn, units: Mapping[str, str]
 ) -> tuple[str | None, str | None]:
-    """A catalog screw's report page and the API's GET of the same evaluation; none for
-    a custom screw (its geometry has no query form in the API)."""
+    """A catalog screw's report page and the API's GET of the same evaluation; a custom
+    screw's page of one's own screw with its geometry and the application (the API has
+    no GET of a custom geometry)."""
     if not isinstance(screw, CatalogScrewIn):
-        return None, None
+        return "/custom?" + custom_query(inputs, screw, units), None
     report = f"/report?{share_query(inputs, units)}&{encode_query([('id', screw.catalog_id)])}"
     return report, api_url("evaluate", inputs, [("catalog_id", screw.catalog_id)])
 

@@ -10,11 +10,11 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
-from app.contract.form import TYPED_PREFIX, entered_units, share_query
+from app.contract.form import TYPED_PREFIX, entered_units
 from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
 from app.contract.params import form_errors, unknown_parameters
-from app.contract.schemas import ApplicationIn
+from app.contract.screw_link import OWN_MATERIAL, custom_query, screw_values
 from app.contract.screws import NUT_FIELD, NUT_LABEL, CustomScrewIn
 from app.contract.units import Display, api_value
 from app.core import motion
@@ -34,12 +34,9 @@ from app.web.screw_form import (
     MATERIAL_FIELDS,
     MATERIAL_LABEL,
     MATERIALS,
-    OWN_MATERIAL,
     SCREW_FIELDS,
     convert_screw,
     parse_screw,
-    screw_query,
-    screw_values,
 )
 from app.web.templating import templates
 
@@ -127,18 +124,12 @@ def custom_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any
     if inputs is None or screw is None:
         return context
     result = run_evaluation(inputs, screw, catalog, context["units"])
-    query = _query(inputs, screw, context["units"])
+    query = custom_query(inputs, screw, context["units"])
     context.update(result=result, query=query, share_url="/custom?" + query)
     context["figures"] = candidate_figures(result, context["units"])
     context["chart_captions"] = CHART_CAPTIONS
     context.update(screw=screw, screw_rows=screw_rows(screw, context["units"]))
     return context
-
-
-def _query(inputs: ApplicationIn, screw: CustomScrewIn, units: Mapping[str, str]) -> str:
-    """The share query: the screw, then the application in the display units."""
-    parts = (screw_query(screw, units), share_query(inputs, units))
-    return "&".join(part for part in parts if part)
 
 
 def screw_rows(screw: CustomScrewIn, units: Mapping[str, str]) -> list[list[str]]:

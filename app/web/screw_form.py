@@ -21,12 +21,11 @@ from app.contract.exact import PLAIN_MESSAGES, link_number, page_value
 from app.contract.figures import bound_sig, sig
 from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, encode_query, unit_key
 from app.contract.input_field import InputField
+from app.contract.screw_link import OWN_MATERIAL
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
 from app.contract.units import DEFAULT_UNITS, Quantity, label, si_to_api
 from app.core.model import ScrewSpec
 
-#: the material choice that takes the user's own modulus, density and yield strength.
-OWN_MATERIAL = "custom"
 #: the form's label of the material choice.
 MATERIAL_LABEL = "Screw material"
 
@@ -148,38 +147,6 @@ def parse_screw(
         data[NUT_API] = nut
     screw = _validate(CustomScrewIn, data, errors, units)
     return (screw if isinstance(screw, CustomScrewIn) else None), errors
-
-
-def _value_text(field: ScrewField | None, value: float, units: Mapping[str, str]) -> str:
-    """A screw value as its page field writes it: in the display unit (the API's for a
-    number no switch sets: degrees, Pa, friction), exactly (the fewest figures that read
-    back to it); a value of no field to 6 figures."""
-    if field is None:
-        return f"{value:.6g}"
-    return link_number(field.row, value, units)
-
-
-def screw_values(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS) -> dict[str, str]:
-    """The page fields of a screw: the material and each number not at its default, in
-    the display ``units``."""
-    dump = screw.model_dump()
-    material = dump.pop("material")
-    nut = dump.pop(NUT_API)
-    values = {"material": material if isinstance(material, str) else OWN_MATERIAL}
-    if nut is not None:
-        values[NUT_FIELD] = nut
-    if isinstance(material, dict):
-        dump.update(material)
-    for name, value in dump.items():
-        text = "" if value is None else _value_text(BY_NAME.get(name), value, units)
-        if name in BY_NAME and text not in ("", BY_NAME[name].default):
-            values[name] = text
-    return values
-
-
-def screw_query(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS) -> str:
-    """The screw's part of a share link, in the display ``units``."""
-    return encode_query(screw_values(screw, units))
 
 
 def convert_screw(

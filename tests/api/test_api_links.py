@@ -2,6 +2,7 @@
 API's GET of the same query); and a share link's query sent to the API, refused with the
 API's name of each page name it holds (both names from the field table)."""
 
+import html
 from typing import Any
 from urllib.parse import parse_qsl, urlsplit
 
@@ -155,12 +156,22 @@ def test_an_unread_name_in_a_screw_says_what_the_screw_reads(
     assert words in message
 
 
-def test_a_custom_screw_has_no_links(client: TestClient) -> None:
-    """A custom geometry has no query form in the API nor a page of its own: no links."""
+def test_a_custom_screws_share_url_is_its_page_with_the_same_answer(client: TestClient) -> None:
+    """A custom geometry has no query form in the API (no ``api_url``), but a page of its
+    own: its ``share_url`` opens /custom with the screw and the application, which gives
+    the same verdict."""
     screw = {"outer_diameter_mm": 12.7, "root_diameter_mm": 9.906, "lead_mm": 10.0}
     screw |= {"friction_dynamic": 0.15, "friction_static": 0.2}
     body = _ok(client.post("/api/v1/evaluate", json={"application": AXIS, "screw": screw}))
-    assert body["api_url"] is None and body["share_url"] is None
+    assert body["api_url"] is None
+    share = body["share_url"]
+    assert share.startswith("/custom?material=steel&outer_diameter_mm=12.7&root_diameter_mm=9.906")
+    page = client.get(share)
+    assert page.status_code == 200
+    verdict = body["candidate"]["verdict"]
+    assert verdict["text"].startswith("Governed by Motor torque-speed curve at 32 %")
+    assert verdict["summary"].startswith("Passes the 5 limits that ran")
+    assert verdict["summary"] in html.unescape(page.text)
 
 
 def test_the_api_query_is_the_share_link_s_under_the_api_s_names() -> None:
