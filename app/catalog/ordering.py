@@ -36,10 +36,11 @@ catalog, whatever the page's display units.
 
 import math
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from dataclasses import replace
 from fractions import Fraction
 
-from app.core.model import ScrewSpec
+from app.core.model import Provenance, ScrewSpec
 from app.core.units import from_si
 
 #: ISO 2903 clause 9: the medium tolerance class for the normal length of engagement.
@@ -270,12 +271,23 @@ def _series_line(spec: ScrewSpec, length_m: float) -> str:
 
 
 def _custom_line(spec: ScrewSpec, length_m: float) -> str:
+    """A screw of the user's own: its geometry, and its pitch and starts where given (the
+    flank pressure, the lead angle and the torque are worked on d2 = d - 0.5 P); its nut
+    in the material and length the nut checks rated, where a nut material is given."""
     flank = 2 * math.degrees(spec.thread_half_angle_rad)
+    pitch = ""
+    if spec.pitch_m:
+        starts = round(spec.lead_m / spec.pitch_m)
+        pitch = f", pitch {_mm(spec.pitch_m)} mm ({starts} start{'s' if starts > 1 else ''})"
+    if spec.nut_material:
+        length = "" if spec.nut_length_m is None else f", at least {_mm(spec.nut_length_m)} mm long"
+        nut = f"nut to match, {_nut_words(spec)}{length}, shape to state"
+    else:
+        nut = "nut to match: material and shape to state"
     return (
         f"Leadscrew to your geometry: outer diameter {_mm(spec.outer_diameter_m)} mm, root "
-        f"diameter {_mm(spec.root_diameter_m)} mm, lead {_mm(spec.lead_m)} mm, "
-        f"{flank:.3g}° flank angle, {_screw_words(spec)}, {_length(length_m)}; nut to "
-        "match: material and shape to state."
+        f"diameter {_mm(spec.root_diameter_m)} mm, lead {_mm(spec.lead_m)} mm{pitch}, "
+        f"{flank:.3g}° flank angle, {_screw_words(spec)}, {_length(length_m)}; {nut}."
     )
 
 
@@ -407,6 +419,23 @@ def _ball_line(spec: ScrewSpec, length_m: float) -> str:
         f"{spec.id.rsplit('-', 1)[-1]}{nut_length}, {_preload_words(spec)}; threaded length "
         f"to cover the stroke plus the nut, {_length(length_m)}."
     )
+
+
+def as_rated(
+    spec: ScrewSpec, nut_length_m: float, provenance: Mapping[str, Provenance]
+) -> ScrewSpec:
+    """``spec`` with the nut length its nut checks were worked at, ``nut_length_m`` [m]
+    (the application's where it gives one, else the catalog's; NaN where no check reads
+    a nut length, a thread without a pitch), and that length's ``provenance``: a line
+    that ordered the catalog's nut where the checks rated a longer one would buy a nut
+    that carries less than the numbers say."""
+    if spec.nut_length_m is None or not math.isfinite(nut_length_m):
+        return spec
+    length_provenance = provenance.get("nut_length", spec.provenance.get("nut_length"))
+    if length_provenance is None:
+        return spec
+    rated = {**spec.provenance, "nut_length": length_provenance}
+    return replace(spec, nut_length_m=nut_length_m, provenance=rated)
 
 
 def ordering_line(spec: ScrewSpec, length_m: float) -> str:

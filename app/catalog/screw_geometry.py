@@ -8,7 +8,7 @@ from collections.abc import Mapping
 from app.catalog.entry import Entry, optional, sourced
 from app.catalog.family import Family
 from app.catalog.models import Material, Sourced
-from app.core.formulas import geometry, pv, trapezoidal
+from app.core.formulas import geometry, pv, torque, trapezoidal
 from app.core.model import Provenance
 from app.core.phrase import in_words
 from app.core.units import from_si, to_si
@@ -122,7 +122,7 @@ def _inertia(entry: Entry, d2: Sourced | None, material: Material) -> Sourced:
     if d2 is None or entry.has("inertia_kg_m2_per_in"):
         inertia = to_si(entry.number("inertia_kg_m2_per_in"), "kg m²/in")
         return Sourced(inertia, "kg m2/m", entry.prov("inertia_kg_m2_per_in"))
-    inertia = trapezoidal.solid_rod_inertia_per_length(material.density_kg_m3.value, d2.value)
+    inertia = torque.solid_rod_inertia_per_length(material.density_kg_m3.value, d2.value)
     d2_mm = from_si(d2.value, "mm")
     rule = f"solid rod rho pi d^4 / 32 at the pitch diameter d2 = {d2_mm:g} mm"
     return Sourced(inertia, "kg m2/m", Provenance("derived", rule))

@@ -105,7 +105,7 @@ SCREW_FIELDS = (
         "inertia_kg_m2_per_m",
         "Inertia per length",
         bounds=(1e-15, 1e3),
-        help="Default: solid rod at the root",
+        help="Default: solid rod at the pitch diameter",
         dimension="inertia_per_length",
     ),
     _number(

@@ -698,7 +698,7 @@ def test_evaluate_custom_screw_against_hand_calculation(api: Api) -> None:
     eta_b = (cos_a * tan_l - mu_s) / (tan_l * (cos_a + mu_s * tan_l))
     load_nm = f * lead / (2 * math.pi * eta)  # T = F lead / (2 pi eta)
     alpha = 2 * math.pi * accel / lead  # screw angular acceleration
-    screw_nm = 7850 * math.pi * d_r**4 / 32 * length * alpha  # T = J alpha, solid rod at d_r
+    screw_nm = 7850 * math.pi * d_p**4 / 32 * length * alpha  # T = J alpha, solid rod at d_p
     mass_nm = mass * accel * lead / (2 * math.pi * eta)  # m a through the thread
     inertia_nm = screw_nm + mass_nm
     # from rest: static friction while the load and m a already act

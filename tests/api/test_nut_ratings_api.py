@@ -97,6 +97,22 @@ def test_an_unlisted_size_takes_the_lowest_listed_pressure(client: TestClient) -
     assert shorter["limit"] == pytest.approx(0.75 * MISUMI_POM_TR20X4_N)
 
 
+def test_the_order_line_asks_for_the_nut_the_checks_rated(client: TestClient) -> None:
+    """Tr20x4 bronze with a 60 mm nut: the contact-pressure check rates its 1696 mm^2 of
+    flanks (15 turns x pi x 18 x 2 mm^2), 18.7 kN at 11 MPa, so the order line asks for
+    at least 60 mm and names no nut length to confirm; it asked for the catalog's 40 mm
+    nut (1131 mm^2, two thirds of the flanks the numbers were worked on) and to confirm
+    40 mm."""
+    c = evaluate(client, "Tr20x4-bronze", **SLOW, nut_length_mm=60)
+    # Shigley Table 8-4's 1600 psi (11 MPa, the catalog's row) at 7.1 mm/s of sliding
+    assert check(c, "bearing_pressure")["limit"] == pytest.approx(11e6 * 15 * TR20_TURN_M2)
+    line = c["order_line"]
+    assert "nut Tr20x4-7H, bronze (CuSn7Zn4 / CuSn12), at least 60 mm long" in line
+    assert "the nut length (taken as" not in line
+    plain = evaluate(client, "Tr20x4-bronze", **SLOW)["order_line"]
+    assert "at least 40 mm long" in plain and "the nut length (taken as 40 mm)" in plain
+
+
 def test_a_bronze_nut_is_held_to_misumis_9_81_kn(client: TestClient) -> None:
     """Tr20x4 bronze: MISUMI's 9.81 kN, where Shigley's slow-sliding 11 MPa over
     1131 mm^2 alone allowed 12.4 kN. At 5 kN both pass; at 10 kN the contact-pressure

@@ -159,11 +159,11 @@ def test_a_short_heavy_column_fails_on_yield(client: TestClient) -> None:
     stress = check(c, "root_stress")
     # von Mises of the axial 200e3 / A = 407.4 MPa and the shear of the torque the screw
     # carries, T = F lead / (2 pi eta) at the lower efficiency (static, mu 0.2) plus the
-    # rod's inertia torque rho pi d_r^4 / 32 x L x 2 pi a / lead (a = 1 m/s^2): tau =
-    # 16 T / (pi d_r^3) (Shigley eqs. 8-7, 8-8, 5-15)
+    # rod's inertia torque rho pi d_p^4 / 32 x L x 2 pi a / lead (a = 1 m/s^2; a rod at the
+    # pitch diameter d_p = 27.5 mm): tau = 16 T / (pi d_r^3) (Shigley eqs. 8-7, 8-8, 5-15)
     tan_l = 0.006 / (math.pi * (0.030 + 0.025) / 2)
     eta = (COS_ACME - 0.2 * tan_l) / (COS_ACME + 0.2 / tan_l)
-    j_alpha = 7850 * math.pi * 0.025**4 / 32 * 0.1 * (2 * math.pi * 1.0 / 0.006)
+    j_alpha = 7850 * math.pi * 0.0275**4 / 32 * 0.1 * (2 * math.pi * 1.0 / 0.006)
     torque_nm = 200e3 * 0.006 / (2 * math.pi * eta) + j_alpha
     sigma, tau = 200e3 / area, 16 * torque_nm / (math.pi * 0.025**3)
     assert sigma / 1e6 == pytest.approx(407.4, abs=0.1)

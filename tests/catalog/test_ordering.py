@@ -15,6 +15,7 @@ from app.catalog.ordering import (
     HIWIN_NUT,
     ISO_BASIS,
     SEED_BASIS,
+    as_rated,
     hiwin_nut_code,
     hiwin_order_code,
     hiwin_shaft_code,
@@ -164,6 +165,50 @@ def test_a_custom_screw_is_specified_by_its_geometry(catalog: Catalog) -> None:
         "machining to drawing; nut to match: material and shape to state."
     )
     assert ordering_basis(spec) == CUSTOM_BASIS
+
+
+def test_a_custom_screw_with_a_pitch_and_a_nut_is_ordered_as_it_was_rated(
+    catalog: Catalog,
+) -> None:
+    """Tr16x8(P4) typed in with the catalog's bronze nut: the flank pressure, the lead
+    angle and the torque were worked on d2 = 16 - 0.5 x 4 = 14 mm and the nut's bronze
+    limits over a 2 d = 32 mm nut, so the line names the pitch and starts (a single-start
+    8 mm pitch has d2 = 12 mm and other flanks) and the nut's material and length; it said
+    "nut to match: material and shape to state"."""
+    geometry = OwnGeometry(
+        outer_diameter_m=0.016,
+        root_diameter_m=0.0115,
+        lead_m=0.008,
+        thread_half_angle_rad=math.radians(15.0),
+        friction_static=0.16,
+        friction_dynamic=0.13,
+        pitch_m=0.004,
+    )
+    nut = catalog.nut_materials["bronze"]
+    spec = own_screw(geometry, catalog.materials["c45-steel"], "c45-steel", nut)
+    line = ordering_line(spec, 0.4)
+    assert line.startswith(
+        "Leadscrew to your geometry: outer diameter 16 mm, root diameter 11.5 mm, lead 8 mm, "
+        "pitch 4 mm (2 starts), 30° flank angle, C45 (1.0503) steel, rolled, 400 mm"
+    )
+    assert "nut to match, bronze (CuSn7Zn4 / CuSn12), at least 32 mm long, shape to state" in line
+
+
+def test_the_line_orders_the_nut_length_the_checks_rated(catalog: Catalog) -> None:
+    """Tr20x4 bronze rated with a 60 mm nut (the application's): its flanks carry
+    60 / 4 x pi x 18 x 2 mm^2 = 1696 mm^2, 1.5 x the catalog's 40 mm nut, so the line asks
+    for at least 60 mm, the user's value with nothing to confirm; it asked for 40 mm and
+    to confirm 40 mm, a nut of two thirds the flank area the numbers were worked on. No
+    nut length read (NaN: no pitch), the spec is the catalog's."""
+    spec = catalog.by_id["Tr20x4-bronze"]
+    typed = Provenance("user", "typed in")
+    rated = as_rated(spec, 0.060, {"nut_length": typed})
+    line = ordering_line(rated, 0.5)
+    assert "nut Tr20x4-7H, bronze (CuSn7Zn4 / CuSn12), at least 60 mm long" in line
+    assert "the nut length" not in line
+    assert as_rated(spec, 0.040, {}) == spec
+    seed = next(s for s in catalog.screws if s.family_id == "ZBX")
+    assert as_rated(seed, math.nan, {"nut_length": typed}) == seed
 
 
 # HIWIN's order code (HIWIN GmbH ballscrew catalogue, section "HIWIN order code"):

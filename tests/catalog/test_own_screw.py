@@ -1,6 +1,6 @@
 """A screw of the user's own (app.catalog.own): the same candidate the API's custom-screw
 request gives (``report.present.custom_screw``), its values of provenance "user", and its
-inertia, when not given, that of a solid rod at the root diameter."""
+inertia, when not given, that of a solid rod at its pitch diameter, as a catalog screw's."""
 
 import math
 from dataclasses import replace
@@ -44,16 +44,45 @@ def test_the_users_material_gives_the_requests_screw(catalog: Catalog) -> None:
     assert built.screw_expansion_per_k == steel.expansion_per_k.value
 
 
-def test_the_inertia_is_a_solid_rod_at_the_root_unless_given(catalog: Catalog) -> None:
-    """J/L = rho pi d_r^4 / 32: 7850 kg/m^3 x pi x (8 mm)^4 / 32 = 3.157e-6 kg m^2/m."""
+def test_the_inertia_is_a_solid_rod_at_the_pitch_diameter_unless_given(catalog: Catalog) -> None:
+    """J/L = rho pi d_p^4 / 32 at d_p = (10 + 8) / 2 = 9 mm without a pitch: 7850 kg/m^3 x
+    pi x (9 mm)^4 / 32 = 5.057e-6 kg m^2/m, not the root's 3.157e-6 (a rod at the root
+    is 0.37 of one at the outer diameter where the seed's screws are 0.65-0.84)."""
     steel = catalog.materials["steel"]
     built = own_screw(GEOMETRY, steel, "steel")
     rho = steel.density_kg_m3.value
-    assert built.inertia_kg_m2_per_m == pytest.approx(rho * math.pi * 0.008**4 / 32, rel=1e-12)
+    assert built.inertia_kg_m2_per_m == pytest.approx(rho * math.pi * 0.009**4 / 32, rel=1e-12)
+    assert built.inertia_kg_m2_per_m == pytest.approx(5.057e-6, rel=1e-3)
     assert built.provenance["inertia_per_length"].kind == "derived"
     given = own_screw(replace(GEOMETRY, inertia_kg_m2_per_m=1e-5), steel, "steel")
     assert given.inertia_kg_m2_per_m == 1e-5
     assert given.provenance["inertia_per_length"].kind == "user"
+
+
+@pytest.mark.parametrize("catalog_id", ["Tr16x4-bronze", "Tr12x6(P3)-acetal", "Tr40x7-304-ptfe"])
+def test_an_iso_screw_typed_in_without_its_inertia_takes_the_catalogs(
+    catalog: Catalog, catalog_id: str
+) -> None:
+    """The catalog derives an ISO screw's inertia as a solid rod at d2 = d - 0.5 P (rule 9):
+    Tr16x4 in C45, 7800 kg/m^3 x pi x (14 mm)^4 / 32 = 2.942e-5 kg m^2/m. The same screw
+    typed in with its pitch and no inertia takes the same, not the 1.339e-5 of a rod at
+    its 11.5 mm root, which cut the screw's share of the accelerating torque by half."""
+    listed = catalog.by_id[catalog_id]
+    data = CustomScrewIn(
+        outer_diameter_mm=listed.outer_diameter_m * 1e3,
+        root_diameter_mm=listed.root_diameter_m * 1e3,
+        lead_mm=listed.lead_m * 1e3,
+        pitch_mm=(listed.pitch_m or 0.0) * 1e3,
+        thread_half_angle_deg=15.0,
+        friction_dynamic=listed.friction_dynamic,
+        friction_static=listed.friction_static,
+        material=listed.material_name,
+        nut_material=listed.variant,
+    )
+    own = custom_screw(data, catalog.materials, catalog.nut_materials)
+    assert own.inertia_kg_m2_per_m == pytest.approx(listed.inertia_kg_m2_per_m, rel=1e-12)
+    if catalog_id == "Tr16x4-bronze":
+        assert own.inertia_kg_m2_per_m == pytest.approx(2.942e-5, rel=1e-3)
 
 
 def test_a_catalog_nut_brings_its_ranged_values_to_the_users_screw(catalog: Catalog) -> None:

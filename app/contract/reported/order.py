@@ -8,10 +8,12 @@ from app.contract.reported.row import Reported
 from app.contract.source import From, Writer
 
 
-def order_line(values: tuple[Any, float], w: Writer) -> str:
-    """The line to send for a quote, from the screw and its length [m]
-    (``app.catalog.ordering.ordering_line``)."""
-    return ordering.ordering_line(*values)
+def order_line(values: tuple[Any, float, float, Any], w: Writer) -> str:
+    """The line to send for a quote, from the screw, its length [m], the nut length its
+    nut checks used [m] and the provenance of the values they read
+    (``app.catalog.ordering.ordering_line`` of ``ordering.as_rated``)."""
+    screw, length_m, nut_length_m, provenance = values
+    return ordering.ordering_line(ordering.as_rated(screw, nut_length_m, provenance), length_m)
 
 
 def order_basis(screw: Any, w: Writer) -> str:
@@ -29,7 +31,10 @@ ROWS: tuple[Reported, ...] = (
         cell="text",
         csv=True,
         compare=True,
-        source=From(("screw", "app.length_m"), via=order_line),
+        source=From(
+            ("screw", "app.length_m", "quantities.nut.nut_length_m", "value_provenance"),
+            via=order_line,
+        ),
         type=str,
     ),
     Reported(

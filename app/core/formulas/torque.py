@@ -31,8 +31,9 @@ def screw_inertia(inertia_per_length_kg_m2_per_m: float, length_m: float) -> flo
 def solid_rod_inertia_per_length(density_kg_m3: float, diameter_m: float) -> float:
     """Rotary inertia per length of a solid round rod, J / L = rho pi d^4 / 32 [kg m^2/m].
 
-    Used for a custom screw without a given inertia, at its root diameter (a lower bound
-    for a threaded shaft). Source: mass moment of a cylinder, m d^2 / 8.
+    A screw without a given inertia is taken as a solid rod at its pitch diameter
+    (``app.catalog.own.screw_inertia``, the ISO family's rule 9). Source: mass moment of a
+    cylinder, m d^2 / 8 with m = rho pi d^2 / 4 per length.
 
     >>> round(solid_rod_inertia_per_length(8000.0, 0.0127) * 0.0254, 10)
     5.19e-07

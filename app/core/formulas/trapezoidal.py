@@ -6,8 +6,6 @@ catalog gives d and P and these functions give the rest (values with provenance
 in iso-trapezoidal.md (flank angle 30 degrees).
 """
 
-import math
-
 #: Crest clearance a_c [m] by the largest pitch [m] it applies to (ISO 2904).
 CREST_CLEARANCE_BY_PITCH_M = ((0.0015, 0.00015), (0.005, 0.00025), (0.012, 0.0005), (0.044, 0.001))
 
@@ -53,15 +51,3 @@ def flank_height(pitch_m: float) -> float:
     0.002
     """
     return 0.5 * pitch_m
-
-
-def solid_rod_inertia_per_length(density_kg_m3: float, diameter_m: float) -> float:
-    """Polar mass moment of inertia per length of a solid round rod, rho pi d^4 / 32
-    [kg m^2/m]; a threaded screw is taken as a solid rod at an effective diameter.
-
-    Source: any dynamics handbook, J = m d^2 / 8 with m = rho pi d^2 / 4 per length.
-
-    >>> round(solid_rod_inertia_per_length(7850.0, 0.01) * 1e6, 4)
-    7.7067
-    """
-    return density_kg_m3 * math.pi * diameter_m**4 / 32.0
