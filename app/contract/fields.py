@@ -303,6 +303,11 @@ FIELDS: tuple[InputField, ...] = (
         group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
     ),
     InputField(
+        api="coupling_inertia_kg_m2", page="coupling_inertia", core="coupling_inertia_kg_m2",
+        label="Coupling inertia", help="Turns with the screw, counted as load; empty for none",
+        group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
+    ),
+    InputField(
         api="step_angle_deg", page="step_angle", core="step_angle_deg", label="Step angle",
         help="The stepper's full step: 1.8 for 200 steps a turn, 0.9 for 400; empty for "
         "no step rate or resolution check",

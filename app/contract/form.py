@@ -158,7 +158,7 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
     ... # doctest: +NORMALIZE_WHITESPACE
     ['load', 'moving_mass_kg', 'support_static', 'support_dynamic', 'brake_torque',
      'detent_torque', 'max_torque', 'motor_rms_torque', 'motor_inertia',
-     'motor_holding_torque']
+     'coupling_inertia', 'motor_holding_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
     return [field.page for field in FIELDS if field.quantity in changed]

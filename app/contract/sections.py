@@ -62,7 +62,9 @@ class ProvenanceOut(BaseModel):
 
 class TorqueOut(BaseModel):
     inertia_nm: Annotated[float, From("inertia_nm", "torque")]
-    inertia_screw_nm: Annotated[float, From("inertia_screw_nm", "torque")]
+    inertia_screw_nm: Annotated[float, From("inertia_screw_nm", "torque")] = Field(
+        description="(J_screw + J_coupling) alpha: accelerating the screw and its coupling."
+    )
     inertia_mass_nm: Annotated[float, From("inertia_mass_nm", "torque")] = Field(
         description="m a lead / (2 pi eta): the accelerating force through the thread."
     )

@@ -24,20 +24,20 @@ def torques(
     moving: list[segments.Moving],
     move: Move,
 ) -> dict[str, Any]:
-    """Motor torque: the screw's and the rotor's inertia J alpha, and every force that
-    passes through the sliding thread (the load and the force m a that accelerates the
-    moving mass) at the thread's efficiency, plus the nut's drag. Starting from rest the
-    thread is at static friction while the load and m a already act. The required torque
-    is the larger of break-away and the peak of the moving segments of both moves
-    (``moving``, the rows of ``segments.moving_torques``: decelerating a descending load
-    may need more). The breakdown is that of the move that starts hardest (``move``,
+    """Motor torque: the screw's (with its coupling's) and the rotor's inertia J alpha, and
+    every force that passes through the sliding thread (the load and the force m a that
+    accelerates the moving mass) at the thread's efficiency, plus the nut's drag. Starting
+    from rest the thread is at static friction while the load and m a already act. The
+    required torque is the larger of break-away and the peak of the moving segments of both
+    moves (``moving``, the rows of ``segments.moving_torques``: decelerating a descending
+    load may need more). The breakdown is that of the move that starts hardest (``move``,
     ``motion.lead_move``: out and back, the scalar inputs); break-away the largest of
     every move's start (``breakaway``): a move with less thrust may need more torque to
-    start, its acceleration higher. The load's inertia at the motor is the screw's and
-    the heaviest mass any move carries (``heaviest_mass_kg``), reflected: a lighter lead
-    move does not lighten the heaviest."""
+    start, its acceleration higher. The load's inertia at the motor is the screw's, the
+    coupling's and the heaviest mass any move carries (``heaviest_mass_kg``), reflected:
+    a lighter lead move does not lighten the heaviest."""
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
-    j_screw = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
+    j_screw = segments.screw_side_inertia(app, t)
     j_heaviest = torque.reflected_mass_inertia(
         heaviest_mass_kg(app), t.lead_m, t.reflected_inertia_per_kg_m2
     )

@@ -141,6 +141,9 @@ class Application:
     #: ascending (empty: none), continuous (RMS) torque rating, and its continuous duty
     #: zone as (rpm, N m) points (empty: the rating at every speed).
     motor_inertia_kg_m2: float | None = None
+    #: The coupling between motor and screw: its rotary inertia [kg m^2], turning with
+    #: the screw (the load the motor accelerates besides its rotor; None: none).
+    coupling_inertia_kg_m2: float | None = None
     motor_curve: tuple[tuple[float, float], ...] = ()
     motor_rms_torque_nm: float | None = None
     motor_rms_curve: tuple[tuple[float, float], ...] = ()

@@ -64,6 +64,15 @@ def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]
     return [(name, direction_word(app, move)) for move in cycle(app) for name, _ in RAMPS]
 
 
+def screw_side_inertia(app: Application, t: CandidateTable) -> Array:
+    """The rotary inertia that turns with the screw [kg m^2]: the screw's over its length
+    (``torque.screw_inertia``) and the coupling's (``coupling_inertia_kg_m2``); the
+    rotor's apart, the motor's own (Oriental Motor, Motor Sizing Calculations: the
+    coupling is part of the load inertia)."""
+    screw: Array = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
+    return screw + (app.coupling_inertia_kg_m2 or 0.0)
+
+
 def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) -> list[Moving]:
     """Each moving segment of every move, for every candidate: its name and direction,
     the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
@@ -73,7 +82,7 @@ def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) 
     horizontal axis) share one torque array. ``c``: the cycle when already worked out
     (``motion.cycle_of``)."""
     c = c or cycle_of(app)
-    inertia = torque.screw_inertia(t.inertia_kg_m2_per_m, app.length_m)
+    inertia = screw_side_inertia(app, t)
     if app.motor_inertia_kg_m2:
         inertia = inertia + app.motor_inertia_kg_m2
     forces = iter(c.moving_n)
