@@ -55,3 +55,29 @@ def test_an_axis_too_hot_for_its_nuts_draws_its_charts(client: TestClient) -> No
     assert top, "no candidate on the page"
     report = client.get(f"/report?{HOT}&id={top.group(1)}")
     assert report.status_code == 200 and "Infinity" not in report.text
+
+
+#: Two moves of 5e-324 mm, the smallest float: not 0 in mm, but 0 m in SI, and the cycle
+#: took no time (the nut's mean speed and the cycles a day divided by it).
+TINY_MOVES = "5e-324:250:0:0:0:0:0:opposes;-5e-324:250:0:0:0:0:0:opposes"
+
+
+def test_a_move_shorter_than_the_shortest_stroke_is_refused_at_its_cell(
+    client: TestClient,
+) -> None:
+    """A move's distance is bounded as the stroke, 0.01 mm either way: said at each cell
+    in the page's unit, a 422 for the links and the API, never a 500."""
+    page = client.get(f"/?{AXIS}&load=100&moves={TINY_MOVES}")
+    assert page.status_code == 200
+    assert 'id="e-m0_dist">Must be at least 0.01 mm.<' in page.text
+    assert 'id="e-m1_dist">Must be at most -0.01 mm.<' in page.text
+    inch = client.get(f"/?{AXIS}&load=100&moves={TINY_MOVES}&length_unit=in")
+    assert 'id="e-m0_dist">Must be at least 0.0003938 in.<' in inch.text
+    for path in ("/export.csv", "/export.json", "/charts", "/versus", "/report"):
+        response = client.get(f"{path}?{AXIS}&load=100&moves={TINY_MOVES}")
+        assert response.status_code == 422, path
+        assert "Move 1 distance</strong>: Must be at least 0.01 mm." in response.text, path
+    api = client.get(f"/api/v1/select?load_n=100&speed_mm_s=50&length_mm=500&moves={TINY_MOVES}")
+    assert api.status_code == 422
+    fields = [d["field"] for d in api.json()["detail"]]
+    assert fields == ["moves.0.distance_mm", "moves.1.distance_mm"]
