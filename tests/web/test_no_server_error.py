@@ -7,6 +7,8 @@ import pytest
 from fastapi.testclient import TestClient
 
 AXIS = "speed=50&length=500"
+#: the largest float
+MAX = "1.7976931348623157e308"
 
 
 @pytest.mark.parametrize(
@@ -24,8 +26,29 @@ AXIS = "speed=50&length=500"
             "max_torque",
             "Must be at most 14161193 oz in.",
         ),
+        # the largest float typed in N, shown in kgf (1.8e307): its link's decimal in kgf
+        # read back past the largest float, whose rounding raised (a 500)
+        (
+            f"load={MAX}&{AXIS}&from_force_unit=N&force_unit=kgf",
+            "load",
+            "Must be at most 101971 kgf.",
+        ),
+        (
+            f"load=50&{AXIS}&lead={MAX}&from_length_unit=mm&length_unit=in",
+            "lead",
+            "Must be at most 39.37 in.",
+        ),
     ],
-    ids=["lbf", "lbf-negative", "kgf", "length-in", "accel-in", "torque-switched"],
+    ids=[
+        "lbf",
+        "lbf-negative",
+        "kgf",
+        "length-in",
+        "accel-in",
+        "torque-switched",
+        "largest-float-switched",
+        "largest-float-switched-in",
+    ],
 )
 def test_a_number_past_any_float_gets_its_bound(
     client: TestClient, query: str, field: str, message: str
