@@ -104,3 +104,24 @@ def test_a_move_shorter_than_the_shortest_stroke_is_refused_at_its_cell(
     assert api.status_code == 422
     fields = [d["field"] for d in api.json()["detail"]]
     assert fields == ["moves.0.distance_mm", "moves.1.distance_mm"]
+
+
+#: A rotor of 5e-324 kg m², the smallest float: the load's inertia over it is no float.
+TINY_ROTOR = "load=100&speed=50&length=500&motor_inertia=5e-324&id=R12-04B1-RSIT"
+
+
+def test_a_rotor_too_small_for_any_ratio_is_said_without_inf(client: TestClient) -> None:
+    """The inertia ratio is infinite: the detail and the report wrote its value to 4
+    figures (a 500) and its message said 'inf times'; the value is a dash, as the JSON's
+    null, and the message says it is over the largest float."""
+    for path in ("/detail", "/report"):
+        response = client.get(f"{path}?{TINY_ROTOR}")
+        assert response.status_code == 200, path
+        assert "is over 1.8e+308 times the rotor" in response.text, path
+        assert not re.search(r"(?<![A-Za-z])-?inf(?![A-Za-z])", response.text), path
+    api = client.get(
+        "/api/v1/evaluate?load_n=100&speed_mm_s=50&length_mm=500"
+        "&motor_inertia_kg_m2=5e-324&catalog_id=R12-04B1-RSIT"
+    )
+    check = next(k for k in api.json()["candidate"]["checks"] if k["name"] == "inertia_ratio")
+    assert check["value"] is None and "over 1.8e+308 times" in check["message"]
