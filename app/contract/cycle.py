@@ -14,6 +14,7 @@ import math
 from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic_core import PydanticCustomError
 
 from app.contract.fields import BY_API, FIELDS
 from app.contract.input_field import InputField
@@ -50,6 +51,15 @@ def _by_core(core: str) -> InputField:
 
 #: The longest move [mm]: the longest screw.
 DISTANCE = (_by_core("length_m").bounds or (0.0, 0.0))[1]
+#: The shortest move [mm], either way: the shortest stroke. A shorter one is no travel
+#: in SI (5e-324 mm is 0 m) and a cycle of them no time.
+SHORTEST = (_by_core("stroke_m").bounds or (0.0, 0.0))[0]
+#: A move shorter than ``SHORTEST``, up (True) or down: the bound it breaks as pydantic
+#: says a bound (error type, context key, message), which the page says in its unit.
+TOO_SHORT = {
+    True: ("greater_than_equal", "ge", "Input should be greater than or equal to {ge}"),
+    False: ("less_than_equal", "le", "Input should be less than or equal to {le}"),
+}
 #: A cycle ends where it starts to this share of its longest move: the binary rounding
 #: of the typed decimals, nothing more (``closing_error_mm``).
 CLOSING_SHARE = 1e-12
@@ -63,7 +73,8 @@ class MoveIn(BaseModel):
     distance_mm: float = Field(
         ge=-DISTANCE,
         le=DISTANCE,
-        description="Travel of the move [mm]: above 0 up (out), below 0 down (back); not 0.",
+        description=f"Travel of the move [mm]: above 0 up (out), below 0 down (back); "
+        f"{SHORTEST:g} or more either way.",
     )
     speed_mm_s: float = Field(ge=SPEED[0], le=SPEED[1], description="Top speed [mm/s].")
     accel_mm_s2: float = Field(
@@ -96,6 +107,9 @@ class MoveIn(BaseModel):
     def _moves(cls, value: float) -> float:
         if value == 0.0:
             raise ValueError("must not be 0: a pause is the dwell of the move before it")
+        if abs(value) < SHORTEST:
+            kind, key, message = TOO_SHORT[value > 0]
+            raise PydanticCustomError(kind, message, {key: math.copysign(SHORTEST, value)})
         return value
 
     def to_core(self) -> Move:

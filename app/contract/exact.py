@@ -165,8 +165,13 @@ def page_value(field: InputField, text: str, units: Mapping[str, str]) -> float:
         raise ValueError(error)
     if isinstance(number, float):
         return number
-    exact = number * _factor(field, units) + _offset(field, units)
-    if abs(exact) > MAX_FLOAT:  # 1e308 lbf: past every input's bounds, which the model names
+    return _rounded(number * _factor(field, units) + _offset(field, units))
+
+
+def _rounded(exact: Fraction) -> float:
+    """An exact API value rounded once to a float; past the largest float (1e308 lbf:
+    past every input's bounds, which the model names) the largest of its sign."""
+    if abs(exact) > MAX_FLOAT:
         return sys.float_info.max if exact > 0 else -sys.float_info.max
     return float(exact)
 
@@ -192,7 +197,9 @@ def decimal_text(value: float, factor: Fraction, offset: Fraction = Fraction(0))
         shown = Decimal(exact.numerator) / Decimal(exact.denominator)
     for digits in range(6, reach):
         text = _trimmed(f"{shown:.{digits}g}")
-        if float(Fraction(Decimal(text)) * factor + offset) == value:
+        # read back as the page reads it (``page_value``): the largest float's decimal in
+        # another unit rounds past it at first (1.7976931348623157e308 mm in inches)
+        if _rounded(Fraction(Decimal(text)) * factor + offset) == value:
             break
     return text
 

@@ -15,7 +15,7 @@ string is ambiguous. A motor's torque curve is read and written by
 
 import math
 import re
-from collections.abc import Collection, Mapping, Sequence
+from collections.abc import Collection, Iterable, Mapping, Sequence
 from typing import Any
 from urllib.parse import urlencode
 
@@ -148,8 +148,11 @@ def entered_units(params: Mapping[str, str], units: dict[str, str]) -> dict[str,
     }
 
 
-def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str]:
-    """Page fields whose numbers change when going from ``entered`` to ``units``.
+def converted_fields(
+    entered: Mapping[str, str], units: Mapping[str, str], fields: Iterable[InputField] = FIELDS
+) -> list[str]:
+    """Page fields (of ``fields``: the application's, or a custom screw's) whose numbers
+    change when going from ``entered`` to ``units``.
 
     >>> same = {"length_unit": "mm", "accel_unit": "mm_s2"}
     >>> converted_fields(
@@ -161,7 +164,7 @@ def converted_fields(entered: dict[str, str], units: dict[str, str]) -> list[str
      'coupling_inertia', 'motor_holding_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
-    return [field.page for field in FIELDS if field.quantity in changed]
+    return [field.page for field in fields if field.quantity in changed]
 
 
 def unit_key(quantity: Quantity) -> str:

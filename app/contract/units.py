@@ -21,11 +21,12 @@ References
    t/°C = (t/°F - 32)/1.8, and a difference of 1 °F is 5/9 K.
 """
 
+import math
 from collections.abc import Mapping
 from fractions import Fraction
 from functools import cached_property
 from itertools import product
-from typing import get_args
+from typing import TypeGuard, get_args
 
 from app.contract.figures import bound_text, sig
 from app.core.phrase import Amount, Phrase
@@ -381,6 +382,13 @@ def catalog_value(name: str, value: object, unit: str) -> tuple[str, str]:
     return (" – " if is_range else ", ").join(texts), shown
 
 
+def worked_out(value: float | None) -> TypeGuard[float]:
+    """Whether a value is a number to write: given, and finite (a non-finite one is null
+    in the JSON, as ``app.server.responses.ModelJSON`` writes it; an infinite inertia
+    ratio from a rotor of 5e-324 kg m²)."""
+    return value is not None and math.isfinite(value)
+
+
 class Display:
     """API-unit values (N, mm, mm/s, N m) shown in the user's display units."""
 
@@ -399,8 +407,9 @@ class Display:
         return _in_display(api_value, quantity, *self._system)
 
     def text(self, api_value: float | None, quantity: Quantity, digits: int = 4) -> str:
-        """The number in display units as text; an em dash for None."""
-        if api_value is None:
+        """The number in display units as text; an em dash for a number not worked out
+        (``worked_out``)."""
+        if not worked_out(api_value):
             return "—"
         return sig(self.value(api_value, quantity), digits)
 
@@ -413,8 +422,10 @@ class Display:
         >>> Display({"force_unit": "lbf", "length_unit": "in", "torque_unit": "N_m"}).check(
         ...     100.0, "N")
         '22.48 lbf'
+        >>> Display(dict(DEFAULT_UNITS)).check(float("inf"), "")
+        '—'
         """
-        if api_value is None:
+        if not worked_out(api_value):
             return "—"
         quantity = API_UNIT_QUANTITY.get(api_unit)
         if quantity is None:

@@ -10,7 +10,7 @@ from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
-from app.contract.form import TYPED_PREFIX, entered_units
+from app.contract.form import TYPED_PREFIX, converted_fields, entered_units
 from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
 from app.contract.params import form_errors, unknown_parameters
@@ -81,9 +81,14 @@ def _base_context(params: Mapping[str, str], catalog: Catalog) -> dict[str, Any]
     context = form_context(params, catalog)
     entered = entered_units(params, context["units"])
     context["values"].update(convert_screw(context["values"], entered, context["units"]))
+    fields = {page: f for page, f in BY_PAGE.items() if not f.catalog_only}
+    own = [f.row for f in (*SCREW_FIELDS, *MATERIAL_FIELDS)]
     return {
         **context,
-        "fields": {page: f for page, f in BY_PAGE.items() if not f.catalog_only},
+        "fields": fields,
+        # the fields a change of units redraws: this page's (it has no lead to convert)
+        "converted": [name for name in context["converted"] if name in fields],
+        "converted_screw": converted_fields(entered, context["units"], own),
         "screw_fields": SCREW_FIELDS,
         "material_fields": MATERIAL_FIELDS,
         "materials": MATERIALS,

@@ -335,3 +335,23 @@ def test_share_link_writes_each_typed_number_exactly(client: TestClient) -> None
     link = soup(client.get(f"/custom?{query}").text).select_one("a.share-link")["href"]
     shared = dict(parse_qsl(link.split("?", 1)[1]))
     assert {name: shared[name] for name in typed} == typed
+
+
+def test_a_unit_switch_redraws_the_screw_fields_in_the_htmx_answer(client: TestClient) -> None:
+    """The form answers a unit switch by HTMX: the answer redrew every converted field
+    the selector has, its catalog-only lead among them, which this page has not (a 500);
+    it redraws this page's application fields and the screw's, each number and unit in
+    the new units, so that the next answer reads them in the units they show."""
+    query = f"{QUERY}&drag_torque_nm=0.05"
+    for switch, name, value, unit in (
+        ("from_length_unit=mm&length_unit=in", "outer_diameter_mm", "0.3937007874015748", "in"),
+        ("from_torque_unit=N_m&torque_unit=oz_in", "drag_torque_nm", "7.080596633061748", "oz in"),
+    ):
+        response = client.get(f"/custom?{query}&{switch}", headers=HX)
+        assert response.status_code == 200, switch
+        html = soup(response.text)
+        redrawn = html.select_one(f'#w-{name}[hx-swap-oob="true"]')
+        assert redrawn is not None, switch
+        assert redrawn.select_one(f'input[name="{name}"]')["value"] == value  # type: ignore[index]
+        assert redrawn.select_one("label .unit").get_text() == unit  # type: ignore[union-attr]
+        assert html.select_one("#w-lead") is None

@@ -1,6 +1,8 @@
 """The load's inertia at the motor against the rotor's: a stepper keeps in step, and a
 servo stays stable, only while the ratio is moderate (advice)."""
 
+import sys
+
 import numpy as np
 
 from app.core import drive
@@ -56,13 +58,16 @@ class InertiaRatio(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "within" if passed else "above"
+        ratio = r.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
+        # a rotor of 5e-324 kg m² (a rotor too small for any float ratio): said as such
+        ratio_text = f"{ratio:.3g}" if np.isfinite(ratio) else f"over {sys.float_info.max:.3g}"
         return Phrase(
             "The load's {load} at the motor is {ratio} times the rotor's {rotor}, "
             + verb
             + " the guide of {limit}.",
             {
                 "load": Amount(r.torque.inertia_kg_m2, "inertia"),
-                "ratio": f"{r.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan):.3g}",
+                "ratio": ratio_text,
                 "rotor": Amount(app.motor_inertia_kg_m2 or 0.0, "inertia"),
                 "limit": f"{MAX_INERTIA_RATIO:g}",
             },
