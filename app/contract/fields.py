@@ -79,6 +79,11 @@ FIELDS: tuple[InputField, ...] = (
         kind="number", default=1000.0, bounds=(0.0, 1e6), dimension="accel",
     ),
     InputField(
+        api="coupling_inertia_kg_m2", page="coupling_inertia", core="coupling_inertia_kg_m2",
+        label="Coupling inertia", help="Turns with the screw, counted as load; empty for none",
+        group="Motion and load", kind="number", bounds=(0.0, 10.0), dimension="inertia",
+    ),
+    InputField(
         api="guide_friction", page="guide_friction", core="guide_friction",
         label="Guide friction", help="Friction coefficient of the guides carrying the "
         "moving mass on a horizontal axis (μ m g more on the nut). Ball carriages "
@@ -300,11 +305,6 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="motor_inertia_kg_m2", page="motor_inertia", core="motor_inertia_kg_m2",
         label="Rotor inertia", help="The motor's own, at the screw; empty for none",
-        group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
-    ),
-    InputField(
-        api="coupling_inertia_kg_m2", page="coupling_inertia", core="coupling_inertia_kg_m2",
-        label="Coupling inertia", help="Turns with the screw, counted as load; empty for none",
         group="Motor and move", kind="number", bounds=(0.0, 10.0), dimension="inertia",
     ),
     InputField(

@@ -159,9 +159,9 @@ def converted_fields(
     ...     {"force_unit": "N", "torque_unit": "N_m", **same},
     ...     {"force_unit": "lbf", "torque_unit": "oz_in", **same})
     ... # doctest: +NORMALIZE_WHITESPACE
-    ['load', 'moving_mass_kg', 'support_static', 'support_dynamic', 'brake_torque',
-     'detent_torque', 'max_torque', 'motor_rms_torque', 'motor_inertia',
-     'coupling_inertia', 'motor_holding_torque']
+    ['load', 'moving_mass_kg', 'coupling_inertia', 'support_static', 'support_dynamic',
+     'brake_torque', 'detent_torque', 'max_torque', 'motor_rms_torque', 'motor_inertia',
+     'motor_holding_torque']
     """
     changed = {q for key, qs in UNIT_QUANTITIES.items() if entered[key] != units[key] for q in qs}
     return [field.page for field in fields if field.quantity in changed]
