@@ -43,14 +43,22 @@ def cycles_fit_a_day(cycles_per_day: float | None, p: Profile | None) -> bool:
     return cycles_per_day is None or most is None or cycles_per_day <= most * (1.0 + 1e-12)
 
 
+def stroke_span_m(app: Application) -> float:
+    """The length of screw the nut travels over [m]: the stroke, else the cycle's
+    equivalent stroke (``motion.equivalent_stroke``: half a cycle of moves' travel), 0
+    without either."""
+    if app.stroke_m is not None:
+        return app.stroke_m
+    return motion.equivalent_stroke(app) or 0.0
+
+
 def screw_fins(app: Application, t: CandidateTable, nut_m: Array) -> Array:
     """The screw's conductance both ways from the nut [W/K]: two fins of its root (the
     endless fin's conductance in still air, a catalog column, ``heat.fin_conductance``),
     each as long as the screw each side of the nut at the end of its stroke, centred on
     the screw (``heat.nut_sides_m``; the stroke, else the cycle's equivalent stroke), its
     far end taken as insulated (``heat.fin_share``)."""
-    span = app.stroke_m if app.stroke_m is not None else motion.equivalent_stroke(app) or 0.0
-    sides = heat.nut_sides_m(app.length_m, span, nut_m)
+    sides = heat.nut_sides_m(app.length_m, stroke_span_m(app), nut_m)
     d_r, k, h = t.root_diameter_m, t.thermal_conductivity_w_m_k, heat.FREE_CONVECTION_W_M2_K
     shares = heat.fin_share(sides[0], d_r, k, h) + heat.fin_share(sides[1], d_r, k, h)
     return np.asarray(t.fin_conductance_w_k * shares, dtype=np.float64)

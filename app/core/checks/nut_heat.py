@@ -4,7 +4,6 @@ both ways) and the nut's surface."""
 
 import numpy as np
 
-from app.core import motion
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -19,6 +18,7 @@ from app.core.checks.base import (
     most,
     where_given,
 )
+from app.core.duty import stroke_span_m
 from app.core.formulas import heat
 from app.core.phrase import Amount, Phrase
 
@@ -108,7 +108,7 @@ class NutHeat(Check):
             "D_nut": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
             "L_nut": q.nut.nut_length_m,
             "L": app.length_m,
-            "s": app.stroke_m if app.stroke_m is not None else motion.equivalent_stroke(app),
+            "s": stroke_span_m(app),
             "T_max": t.temperature_max_c,
             "T_ambient": app.ambient_c,
         }
