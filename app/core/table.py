@@ -171,8 +171,9 @@ class Reach:
 def _leads(screws: Sequence[ScrewSpec], lead_m: Array) -> Mapping[SizeKey, tuple[float, ...]]:
     """The leads each size and nut of ``screws`` is made in, ascending."""
     rows = size_rows(screws, lead_m)
+    # each size's rows come shortest lead first: its leads once each, in that order
     return MappingProxyType(
-        {size: tuple(np.unique(lead_m[at]).tolist()) for size, at in rows.items()}
+        {size: tuple(dict.fromkeys(lead_m[at].tolist())) for size, at in rows.items()}
     )
 
 
