@@ -46,3 +46,58 @@ def test_support_units_are_thks_table_in_newtons(
     ca_kn, permissible_kn = ratings_kn
     assert support.value("dynamic_axial_n") == pytest.approx(ca_kn * 1e3)
     assert support.value("static_axial_n") == pytest.approx(permissible_kn * 1e3)
+
+
+#: N m in one ounce-force inch (0.27801385 N x 0.0254 m).
+OZ_IN_NM = 0.00706155
+
+
+def test_qsh4218_47_28_040_holding_torque_is_the_lower_of_its_two_figures(
+    catalog: Catalog,
+) -> None:
+    """Trinamic QSH4218 manual V1.06 (thomasarmel/arduino_polytech_2019_2020,
+    datasheets/QSH4218_manual.pdf, commit 1437bba), motor technical data, column
+    -47-28-040: "Holding Torque (typ.)" 40 N cm and 56.3 oz in, which disagree (40 N cm is
+    56.6 oz in). The lower: 56.3 x 0.00706155 = 0.39757 N m, written 0.3975. The library
+    read 0.40, above the 56.3 oz in."""
+    motor = catalog.motors["qsh4218-47-28-040"]
+    holding = motor.value("holding_torque_nm")
+    assert holding == pytest.approx(0.3975)
+    assert holding <= 56.3 * OZ_IN_NM
+    assert "56.3 oz in" in motor.values["holding_torque_nm"].provenance.source
+
+
+def test_qsh4218_47_28_040_curve_is_held_to_the_holding_torque(catalog: Catalog) -> None:
+    """Figure 5.4 of the same manual plots 0.404 N m at 1000 and 2000 pps (150 and 300 rpm
+    half step), above the table's holding torque; the library held 0.4035 there (and down
+    to standstill). The lower figure is kept: 0.3975 N m at both, the rest as read."""
+    curve = catalog.motors["qsh4218-47-28-040"].published_curve()
+    assert curve is not None
+    assert curve[:3] == ((0.0, 0.3975), (149.8, 0.3975), (299.9, 0.3975))
+    assert curve[3] == (449.8, 0.3894)
+
+
+def test_robotshop_1182_holding_torque_is_the_lower_of_its_two_figures(catalog: Catalog) -> None:
+    """RobotShop datasheet-1182 as listed in asabe-robot-2023's MotorSpecifications.ino:
+    "Holding Torque: 0.57N.M (80oz*in)". 80 oz in = 80 x 0.00706155 = 0.56492 N m, below
+    0.57 and outside its rounding (0.565 to 0.575 takes in 80 oz in only up to 80.5 oz in
+    = 0.5685): the lower is kept, 0.5649. The library read 0.57."""
+    motor = catalog.motors["robotshop-1182"]
+    holding = motor.value("holding_torque_nm")
+    assert holding == pytest.approx(0.5649)
+    assert holding <= 80 * OZ_IN_NM
+    assert "80oz*in" in motor.values["holding_torque_nm"].provenance.source
+
+
+def test_no_published_pull_out_point_is_above_the_holding_torque(catalog: Catalog) -> None:
+    """A pull-out curve is held down to standstill from its first point: no point of a
+    library stepper's published curve may stand above the holding torque its datasheet
+    gives (23HS32-4004S 1.841 of 2.40 N m; SY35ST36-1004A 0.0976 of 0.1373; SY42STH47-1684B
+    0.31 of 0.4315; QSH4218-51-10-049 0.3963 of 0.49; QSH4218-47-28-040 0.3975 of 0.3975)."""
+    curved = [m for m in catalog.motors.values() if m.published_curve() is not None]
+    assert len(curved) == 5
+    for motor in curved:
+        curve = motor.published_curve()
+        assert curve is not None
+        holding = motor.value("holding_torque_nm")
+        assert max(nm for _, nm in curve) <= holding, motor.id
