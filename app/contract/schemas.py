@@ -104,9 +104,10 @@ class CandidateFields(BaseModel):
     )
     hold_margin: Annotated[float | None, From("hold_margin")] = Field(
         default=None,
-        description="Its margin, holding at 1 or more: the larger of the thread's (the "
-        "longest lead that self-locks at f mu_s over the lead) and the brake's or detent "
-        "torque's over the torque needed; null as above.",
+        description="Its margin, holding at 1 or more: the thread's (the longest lead that "
+        "self-locks at f mu_s over the lead) where the thread holds, else the brake's or "
+        "detent torque's over the torque needed where one is given, else the thread's; "
+        "null as above.",
     )
     holds_by: Annotated[Literal["thread", "brake", "detent"] | None, From("holds_by")] = Field(
         default=None, description="What gives that margin; null as above."

@@ -281,14 +281,15 @@ class Candidate:
 
     @property
     def holds_by(self) -> str | None:
-        """What holds the load with the power off: the thread when it alone holds with
-        the friction margin (a brake beside it is then a second means), else the brake or
-        the detent torque; None where nothing is required or held."""
+        """What holds the load with the power off, the means whose margin ``hold_margin``
+        is (``app.core.holding.hold_margins``): the thread when it alone holds with the
+        friction margin (a brake beside it is then a second means), else the brake or the
+        detent torque where one is given, else the thread (that does not hold); None where
+        nothing is required or held."""
         margin = self.hold_margin
         if margin is None:
             return None
-        thread = number(self.quantities.holding.hold_thread_margin)
-        if thread is not None and holds(thread):
+        if margin == number(self.quantities.holding.hold_thread_margin):
             return "thread"
         return "brake" if self.app.holding_source == "brake" else "detent"
 

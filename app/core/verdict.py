@@ -149,6 +149,35 @@ def percent(utilization: float) -> str:
     return f"{value:.{digits}f} %"
 
 
+def times(margin: float, digits: int = 2) -> str:
+    """A margin (allowed over actual, at 1 or more it passes) with ``digits`` decimals and
+    "×", and the decimals near 1 that keep a fail below 1 and a pass above it, as
+    ``percent`` keeps a utilisation (0.997 reads 0.997×, never 1.00×).
+
+    >>> times(3.14159), times(0.997), times(1.0004), times(0.99996), times(1.0 - 1e-12)
+    ('3.14×', '0.997×', '1.0004×', '0.99996×', '1.00×')
+    """
+    # at the limit within the rounding a check passes by (``PASS_UTILIZATION``): 1.00×
+    if abs(margin - 1.0) > PASS_UTILIZATION - 1.0:
+        while float(f"{margin:.{digits}f}") == 1.0:
+            digits += 1
+    return f"{margin:.{digits}f}×"
+
+
+def share(amount: float) -> str:
+    """A margin or an excess as a share (0.2: 20 %), never rounded to 0 % unless it is
+    nil within the pass rounding (``PASS_UTILIZATION``): 0.3 % over reads "0.3 %", not
+    "0 %", beside a fail.
+
+    >>> share(0.2), share(0.003), share(0.00004), share(1e-12)
+    ('20 %', '0.3 %', '0.004 %', '0 %')
+    """
+    value = amount * 100.0
+    if abs(amount) <= PASS_UTILIZATION - 1.0 or abs(value) >= 0.5:
+        return f"{value:.0f} %"
+    return f"{value:.1g} %"
+
+
 @dataclass(frozen=True, slots=True)
 class Rest:
     """A catalog value the governing result rests on: its key, its name in words, its
@@ -457,7 +486,7 @@ def sentence(
     else:
         u = governing.utilization
         verb = "Governed by" if passed else "Fails on"
-        margin = f"{percent(1.0 - u)} margin" if u <= 1.0 else f"{percent(u - 1.0)} over"
+        margin = f"{share(1.0 - u)} margin" if u <= 1.0 else f"{share(u - 1.0)} over"
         head = Phrase(f"{verb} {governing.label} at {percent(u)} ({margin}).")
     parts = [head]
     assumed = [r.label for r in rest if not r.hinges]

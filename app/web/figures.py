@@ -13,6 +13,7 @@ from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display, api_value
 from app.core.formulas import critical_speed
+from app.core.verdict import times
 from app.report.charts import chart_data
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis
@@ -59,7 +60,7 @@ def _operating_points(groups: list[list[CandidateOut]], x: float, d: Display) ->
         for c in group:
             points.setdefault((index, _round(c.rpm)), []).append(c)
     texts = [
-        "<br>".join(f"{c.id}: margin {c.critical_speed.margin:.2f}×" for c in members)
+        "<br>".join(f"{c.id}: margin {times(c.critical_speed.margin)}" for c in members)
         for members in points.values()
     ]
     return {

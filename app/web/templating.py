@@ -8,7 +8,7 @@ from fastapi.templating import Jinja2Templates
 from app.catalog.axis_motor import CURVE_ORIGINS
 from app.contract.figures import sig
 from app.core.phrase import figures
-from app.core.verdict import percent, value_label
+from app.core.verdict import percent, times, value_label
 from app.paths import resource_dir
 
 templates = Jinja2Templates(directory=str(resource_dir("templates")))
@@ -39,6 +39,7 @@ templates.env.filters["figures"] = figures
 templates.env.filters["sig"] = sig
 templates.env.filters["band"] = band
 templates.env.filters["percent"] = percent
+templates.env.filters["times"] = times
 templates.env.globals["value_label"] = value_label
 #: where a motor curve comes from, in words (the results' and the report's footnotes)
 templates.env.globals["curve_origins"] = CURVE_ORIGINS

@@ -20,11 +20,11 @@ def _holds(c: CandidateOut) -> str:
         if c.self_locking_with_margin:
             return "yes: the thread self-locks"
         return "nothing to hold" if c.holding_torque.brake_nm == 0.0 else "no: a brake is needed"
+    if not c.holds_power_off:
+        return "no: a brake is needed"
     if c.holds_by == "thread":
         return "yes: the thread self-locks"
-    if c.holds_power_off:
-        return f"yes: by the {c.holds_by}" if c.holds_by else "yes"
-    return "no: a brake is needed"
+    return f"yes: by the {c.holds_by}" if c.holds_by else "yes"
 
 
 def _life(c: CandidateOut, d: Display) -> str:

@@ -91,3 +91,29 @@ def test_a_utilization_near_its_limit_reads_on_its_side_of_100_percent(
     assert "99.8 %" in compare and ">100 %" not in compare
     report = client.get(f"/report?{CLOSE_FAIL}&id=Tr24x10(P5)-ptfe").text
     assert "at 100.05 % of its limit" in report
+
+
+#: Tr12x3-ptfe runs this axis at 1/0.9973 of its allowed critical speed: it fails by 0.27 %.
+CLOSE_WHIRL = "load=50&speed=75.1&length=900&stroke=600"
+
+
+def test_a_margin_just_below_1_reads_below_1_and_its_excess_is_not_0_percent(
+    client: TestClient,
+) -> None:
+    """A critical-speed margin of 0.9973 (a fail) read "1.00×" on the compare page, whose
+    help says above 1× passes, and the verdict beside it "(0 % over)": the margin now keeps
+    the decimals that put it below 1 (``verdict.times``), and the excess the figure that
+    says it is one (``verdict.share``)."""
+    api = client.get(
+        "/api/v1/evaluate?load_n=50&speed_mm_s=75.1&length_mm=900&stroke_mm=600"
+        "&catalog_id=Tr12x3-ptfe"
+    ).json()["candidate"]
+    assert 0.997 < api["critical_speed"]["margin"] < 0.998 and not api["passed"]
+    page = BeautifulSoup(
+        client.get(f"/compare?{CLOSE_WHIRL}&ids=Tr12x3-ptfe,Tr16x4-ptfe").text, "html.parser"
+    )
+    margin = page.select_one('tr[data-row="critical_speed.margin"] td').text
+    assert margin == "0.997×"
+    verdict = page.select_one('tr[data-row="verdict"] td').text
+    assert "at 100.27 % (0.3 % over)" in verdict
+    assert "(0.3 % over)" in api["verdict"]["text"]

@@ -42,7 +42,7 @@ from app.contract.reported.row import (
 )
 from app.contract.units import Display
 from app.core.phrase import figures
-from app.core.verdict import percent
+from app.core.verdict import percent, times
 
 __all__ = [
     "BY_KEY",
@@ -102,6 +102,8 @@ def show(row: Reported, value: Any, d: Display) -> str:
     ('10', '46 %')
     >>> show(BY_KEY["critical_speed.margin"], 3.14159, d), show(BY_KEY["life.years"], None, d)
     ('3.14×', '—')
+    >>> show(BY_KEY["critical_speed.margin"], 0.997, d)  # a fail never reads 1.00×
+    '0.997×'
     >>> show(BY_KEY["life.travel_km"], [15.0, 45.0], d)
     '15–45'
     >>> show(BY_KEY["life.years"], [21.8, 21.8], d)  # one value (a ball nut's L10)
@@ -117,7 +119,7 @@ def show(row: Reported, value: Any, d: Display) -> str:
     if row.cell == "percent":
         return percent(value)
     if row.cell == "times":
-        return f"{value:.{row.digits}f}×"
+        return times(value, row.digits)
     if isinstance(value, float):
         return d.text(value, row.quantity, row.digits) if row.quantity else sig(value, row.digits)
     return str(value)

@@ -40,7 +40,8 @@ ROWS: tuple[Reported, ...] = (
         csv=True,
         formula=Formula(
             efficiency.hold_margin,
-            "max(lead_max / lead, T_unpowered / (f T_needed)); holds at 1 or more",
+            "lead_max / lead where the thread holds at it, else T_unpowered / (f T_needed) "
+            "where a brake or detent torque is given, else lead_max / lead; holds at 1 or more",
         ),
     ),
     Reported("holds_by", csv=True, type=str),
