@@ -38,6 +38,21 @@ def sig(value: float, digits: int = 4) -> str:
     return f"{value:.{digits}g}"
 
 
+def apart(value: float, limit: float, decimals: int = 0) -> tuple[str, str]:
+    """``value`` and the ``limit`` it is judged against, with ``decimals`` and as many
+    more as it takes for two unequal numbers not to read equal (a speed 0.3 rpm over its
+    limit reads "3661.3 rpm of 3661.0 allowed", not "3661 of 3661"), up to 6 more.
+
+    >>> apart(3661.3, 3661.0), apart(1200.0, 3661.0), apart(2.0, 2.0)
+    (('3661.3', '3661.0'), ('1200', '3661'), ('2', '2'))
+    """
+    for places in range(decimals, decimals + 7):
+        shown = f"{value:.{places}f}", f"{limit:.{places}f}"
+        if value == limit or shown[0] != shown[1]:
+            return shown
+    return shown
+
+
 def _towards(value: float, lower: bool, digits: int) -> float:
     """``value`` (not 0) on the grid of its ``digits``-th significant figure, the step
     below it (``lower``) or above it."""

@@ -6,7 +6,7 @@ import pydantic_core
 from fastapi.templating import Jinja2Templates
 
 from app.catalog.axis_motor import CURVE_ORIGINS
-from app.contract.figures import sig
+from app.contract.figures import apart, sig
 from app.core.phrase import figures
 from app.core.verdict import percent, times, value_label
 from app.paths import resource_dir
@@ -37,6 +37,7 @@ def band(ends: Any) -> str:
 templates.env.policies["json.dumps_function"] = _json
 templates.env.filters["figures"] = figures
 templates.env.filters["sig"] = sig
+templates.env.globals["apart"] = apart
 templates.env.filters["band"] = band
 templates.env.filters["percent"] = percent
 templates.env.filters["times"] = times

@@ -117,3 +117,23 @@ def test_a_margin_just_below_1_reads_below_1_and_its_excess_is_not_0_percent(
     verdict = page.select_one('tr[data-row="verdict"] td').text
     assert "at 100.27 % (0.3 % over)" in verdict
     assert "(0.3 % over)" in api["verdict"]["text"]
+
+
+def test_a_speed_just_over_its_limit_does_not_read_equal_to_it(client: TestClient) -> None:
+    """Tr12x3-ptfe at 74.9063 mm/s turns 1498.126 rpm against 1497.93 allowed (a fail by
+    0.013 %): the detail read "1498 rpm of 1498 allowed"; it keeps the decimal that tells
+    them apart (``figures.apart``)."""
+    query = "load=50&speed=74.9063&length=900&stroke=600"
+    api = client.get(
+        "/api/v1/evaluate?load_n=50&speed_mm_s=74.9063&length_mm=900&stroke_mm=600"
+        "&catalog_id=Tr12x3-ptfe"
+    ).json()["candidate"]
+    assert api["rpm"] > api["critical_speed"]["allowed_rpm"] and not api["passed"]
+    page = BeautifulSoup(client.get(f"/detail?{query}&id=Tr12x3-ptfe").text, "html.parser")
+    line = next(
+        dd.text
+        for dt in page.select("dt")
+        if dt.text == "Critical speed"
+        for dd in [dt.find_next("dd")]
+    )
+    assert line.startswith("1498.1 rpm of 1497.9 allowed")
