@@ -114,7 +114,7 @@ def _judge(
     yes/no check) and where it fails (applies, and over its limit or flagged)."""
     numeric = [m.demand is not None and m.capacity is not None for m in measures]
     ratio = np.empty((len(measures), n))
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         for row, m, ok in zip(ratio, measures, numeric, strict=True):
             if ok:
                 np.divide(m.demand, m.capacity, out=row)

@@ -56,6 +56,7 @@ APPS = {
         decel_m_s2=4.0,
         dwell_s=0.5,
         motor_inertia_kg_m2=1e-5,
+        coupling_inertia_kg_m2=3e-6,
         motor_curve=((0.0, 0.6), (1500.0, 0.4), (3000.0, 0.15)),
         motor_rms_torque_nm=0.2,
         torque_safety_factor=1.5,

@@ -30,12 +30,13 @@ class InertiaRatio(Check):
     label = "Load-to-rotor inertia ratio"
     kind = "advice"
     description = (
-        "The screw's inertia and the heaviest moving mass of the cycle's moves reflected "
-        "to the screw, over the motor's rotor inertia, against 10: above it a stepper "
-        "loses steps in fast starts and stops and a servo needs careful tuning."
+        "The screw's inertia, the coupling's and the heaviest moving mass of the cycle's "
+        "moves reflected to the screw, over the motor's rotor inertia, against 10: above "
+        "it a stepper loses steps in fast starts and stops and a servo needs careful "
+        "tuning."
     )
     quantity = "factor"
-    formula = "r = (J_screw + m * (lead / (2 * pi))^2) / J_rotor; r_max = 10"
+    formula = "r = (J_screw + J_coupling + m * (lead / (2 * pi))^2) / J_rotor; r_max = 10"
     source = "Oriental Motor, Technical Reference, Motor Sizing Calculations (inertia ratio)"
     sources = ("inertia_per_length",)
 
@@ -43,7 +44,9 @@ class InertiaRatio(Check):
         return bool(app.motor_inertia_kg_m2)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        ratio = q.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
+        # a rotor too small for any float ratio (5e-324 kg m²) gives an infinite ratio
+        with np.errstate(over="ignore"):
+            ratio = q.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
         return Measure(everywhere(t), ratio, same(t, MAX_INERTIA_RATIO))
 
     def symbols(
@@ -51,6 +54,7 @@ class InertiaRatio(Check):
     ) -> Mapping[str, object]:
         return {
             "J_screw": t.inertia_kg_m2_per_m * app.length_m,
+            "J_coupling": app.coupling_inertia_kg_m2 or 0.0,
             "m": drive.heaviest_mass_kg(app),
             "lead": t.lead_m,
             "J_rotor": app.motor_inertia_kg_m2,
@@ -58,7 +62,8 @@ class InertiaRatio(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "within" if passed else "above"
-        ratio = r.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
+        with np.errstate(over="ignore"):
+            ratio = r.torque.inertia_kg_m2 / (app.motor_inertia_kg_m2 or np.nan)
         # a rotor of 5e-324 kg m² (a rotor too small for any float ratio): said as such
         ratio_text = f"{ratio:.3g}" if np.isfinite(ratio) else f"over {sys.float_info.max:.3g}"
         return Phrase(
