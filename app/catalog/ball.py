@@ -215,6 +215,7 @@ def _spec(
         preload_n=family.number("preload_fraction", allow_zero=True) * ca,
         travel_variation_300mm_m=to_si(family.number("lead_accuracy_mm_per_300mm"), "mm"),
         travel_deviation_bands=_deviation_bands(family),
+        assumption_ends=material.ends,
     )
 
 

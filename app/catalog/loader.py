@@ -24,7 +24,7 @@ from app.catalog.files import (
     toml_files,
 )
 from app.catalog.groups import Groups, read_group
-from app.catalog.models import Material, Series, Sourced
+from app.catalog.models import Ends, Material, Series, Sourced
 from app.catalog.motors import MOTOR_FILE, load_library
 from app.catalog.own import nut_materials
 from app.catalog.series import build_series
@@ -43,6 +43,30 @@ MATERIAL_FIELDS = frozenset(
         "thermal_conductivity_w_m_k",
     }
 )
+
+
+#: Material values a range may be given for: the ScrewSpec field each sets and the
+#: catalog's unit. Not the density, whose range no variant carries: a screw's inertia is
+#: derived from it, and is not re-derived at an end.
+RANGED_MATERIAL = {
+    "youngs_modulus_gpa": ("youngs_modulus_pa", "GPa"),
+    "expansion_per_c": ("screw_expansion_per_k", ""),
+    "yield_strength_mpa": ("yield_strength_pa", "MPa"),
+    "thermal_conductivity_w_m_k": ("thermal_conductivity_w_m_k", ""),
+}
+
+
+def _material_ends(entry: Entry) -> Ends:
+    """For each ranged material value, its ScrewSpec field at the low and the high end
+    (a range on the density is refused: it would be left out of the robustness)."""
+    if entry.ends("density_kg_m3") is not None:
+        raise entry.fail("density_kg_m3", "a range is not screened here: give the value alone")
+    out = {}
+    for name, (spec_field, unit) in RANGED_MATERIAL.items():
+        span = entry.ends(name)
+        if span is not None:
+            out[name] = ({spec_field: to_si(span[0], unit)}, {spec_field: to_si(span[1], unit)})
+    return out
 
 
 def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
@@ -74,6 +98,7 @@ def _material(file: str, name: str, table: Mapping[str, Any]) -> Material:
             if "thermal_conductivity_w_m_k" in table
             else None
         ),
+        _material_ends(entry),
     )
 
 

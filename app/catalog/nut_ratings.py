@@ -11,7 +11,7 @@ from typing import Any
 
 from app.catalog.entry import Entry, optional, sourced
 from app.catalog.family import Family, IdVariant
-from app.catalog.models import Sourced
+from app.catalog.models import Ends, Sourced
 from app.core.formulas import bearing, trapezoidal
 from app.core.model import Provenance
 from app.core.units import from_si, to_si
@@ -58,9 +58,6 @@ WEAR_VALUES = {
     "wear_rate": ("specific_wear_rate_mm3_n_m", "mm³/(N m)"),
     "allowed_wear": ("allowed_wear_to_flank_height", ""),
 }
-
-
-Ends = Mapping[str, tuple[Mapping[str, Any], Mapping[str, Any]]]
 
 
 @dataclass(frozen=True, slots=True)

@@ -13,8 +13,8 @@ is rated exactly as a catalog screw of the same size with that nut."""
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
 
-from app.catalog.models import Material, Series, Sourced
-from app.catalog.nut_ratings import Ends, thrust_pressure
+from app.catalog.models import Ends, Material, Series, Sourced
+from app.catalog.nut_ratings import thrust_pressure
 from app.catalog.series import NOT_GIVEN
 from app.core.formulas import geometry as thread_geometry
 from app.core.formulas import torque, trapezoidal
@@ -341,7 +341,7 @@ def own_screw(
         yield_strength_pa=None if strength is None else strength.value,
         thermal_conductivity_w_m_k=_conductivity(material),
         provenance=provenance,
-        assumption_ends=ends,
+        assumption_ends={**ends, **material.ends},
         **_thread(geometry),  # type: ignore[arg-type]
         **_nut(geometry, nut),  # type: ignore[arg-type]
     )

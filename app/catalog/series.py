@@ -11,8 +11,8 @@ from typing import Any
 
 from app.catalog.entry import Entry
 from app.catalog.family import Family
-from app.catalog.models import Material, Series, Sourced
-from app.catalog.nut_ratings import Ends, Variant, check_bearing, offered_variants, thrust_rated
+from app.catalog.models import Ends, Material, Series, Sourced
+from app.catalog.nut_ratings import Variant, check_bearing, offered_variants, thrust_rated
 from app.catalog.screw_geometry import geometry_fields, other_fields, screw_material
 from app.core.model import Provenance, ScrewSpec
 
@@ -130,7 +130,7 @@ def _spec_numbers(entry: Entry, family: Family, material: Material) -> dict[str,
 def _series_ends(entry: Entry, family: Family, material: Material) -> Ends:
     """For each ranged series value: the ScrewSpec numbers it changes, at each end,
     derived values recomputed by the same rules (a low root ratio lowers the root and
-    the derived design load)."""
+    the derived design load); then the screw material's ranged values."""
     nominal = _spec_numbers(entry, family, material)
     out = {}
     for name in RANGED_SERIES:
@@ -142,7 +142,7 @@ def _series_ends(entry: Entry, family: Family, material: Material) -> Ends:
             changed = _spec_numbers(entry.at(name, value), family, material)
             ends.append({k: v for k, v in changed.items() if v != nominal[k]})
         out[name] = (ends[0], ends[1])
-    return out
+    return {**out, **material.ends}
 
 
 def _ends(series_ends: Ends, variant: Variant) -> Ends:

@@ -38,6 +38,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "dry_friction_static": "static friction run dry",
     "dynamic_pressure": "flank pressure rating in motion",
     "dynamic_load": "dynamic load rating",
+    "expansion_per_c": "screw thermal expansion",
     "friction_dynamic": "running friction",
     "friction_static": "static friction",
     "inertia_per_length": "screw inertia",
@@ -68,6 +69,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "support_static": "support unit's static load rating",
     "temperature_range": "temperature range",
     "thermal_conductivity": "screw thermal conductivity",
+    "thermal_conductivity_w_m_k": "screw thermal conductivity",
     "thread_half_angle": "flank angle",
     "traverse_speed": "traverse speed limit",
     "travel_deviation": "travel deviation by useful travel",
@@ -75,6 +77,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "wear_rate": "specific wear rate",
     "yield_strength": "yield strength",
     "youngs_modulus": "Young's modulus",
+    "youngs_modulus_gpa": "Young's modulus",
 }
 #: Unit endings of catalog keys (``pv_limit_mpa_m_s``), longest first.
 UNIT_ENDINGS = ("_mm3_n_m", "_mpa_m_s", "_n_m", "_m_s", "_mpa", "_lbf", "_kgf", "_mm", "_n")

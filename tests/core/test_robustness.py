@@ -53,21 +53,26 @@ catalog with the same values (its variant rows built on the fly).
 """
 
 import json
+import math
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import pytest
 
-from app.catalog import Catalog
+from app.catalog import Catalog, load_catalog
+from app.catalog.errors import CatalogError
+from app.catalog.own import OwnGeometry, own_screw
 from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.robustness import at_values, build_variants
 from app.core.selection import select, with_robustness
+from app.core.verdict import verdict
 from tests.leadscrews import leadscrew_families
 
+ROOT = Path(__file__).parents[2]
 QUERIES: dict[str, Any] = json.loads(
-    (Path(__file__).parents[1] / "fixtures" / "robustness_queries.json").read_text()
+    (ROOT / "tests" / "fixtures" / "robustness_queries.json").read_text()
 )
 
 
@@ -131,3 +136,61 @@ def test_each_variant_is_its_screw_with_one_end_of_one_range(catalog: Catalog) -
                     assert all(getattr(variant, k) == v for k, v in changes.items())
                     count += 1
     assert count > 1000
+
+
+def test_a_material_value_with_a_range_is_screened_at_its_ends(catalog: Catalog) -> None:
+    """303 stainless's thermal conductivity is 15.1 W/(m K), range 14.9-16.3 (assumed,
+    catalog/common.toml): every screw of it carries the range, and one whose nut heat sits
+    within it hinges on it. A Tr16x4 of 303 with the catalog's bronze nut (32 mm long,
+    greased, 8 h a day over a 300 mm stroke at 10 mm/s, 140 C ambient against the nut's
+    150 C) at 50.5 N heats its nut to 0.9991 of the room at 15.1 W/(m K) and to 1.0022 at
+    14.9: it was called robust, its conductivity's range never screened."""
+    ranged = "thermal_conductivity_w_m_k"
+    of_303 = [s for s in catalog.screws if s.material_name == "stainless-303"]
+    assert of_303 and all(
+        s.assumption_ends[ranged] == ({ranged: 14.9}, {ranged: 16.3}) for s in of_303
+    )
+    geometry = OwnGeometry(0.016, 0.0115, 0.004, math.radians(15.0), 0.16, 0.13)
+    geometry = replace(geometry, pitch_m=0.004, nut_length_m=0.032)
+    material = catalog.materials["stainless-303"]
+    mine = own_screw(geometry, material, "stainless-303", catalog.nut_materials["bronze"])
+    app = Application(
+        load_n=50.5,
+        speed_m_s=0.01,
+        length_m=0.5,
+        stroke_m=0.3,
+        lubrication="greased",
+        hours_per_day=8.0,
+        ambient_c=140.0,
+    )
+    ev = evaluate(app, mine)
+    heat = {c.name: c for c in ev.checks}["nut_heat"]
+    assert ev.passed and heat.utilization == pytest.approx(0.9991, abs=1e-4)
+    low = evaluate(app, at_values(mine, {ranged: 14.9}))
+    assert not low.passed and [c.name for c in low.checks if not c.passed] == ["nut_heat"]
+    judged = with_robustness(app, ev, build_variants([mine]), 0)
+    assert (judged.robust, judged.hinges_on) == (False, (ranged,))
+    hinged = [r.label for r in verdict(judged).rests_on if r.hinges]
+    assert hinged == ["screw thermal conductivity"]
+
+
+def test_a_users_material_range_is_carried_and_a_density_range_refused(
+    tmp_path: Path,
+) -> None:
+    """The example family's material given with a range on its Young's modulus: every
+    screw of it carries that range's ends (193 GPa, range 180-200). No variant carries a
+    density's range (the inertia derives from it): one given stops the load rather than
+    call a screw robust without screening it."""
+    text = (ROOT / "examples" / "my-family" / "my-family.toml").read_text()
+    plain = "youngs_modulus_gpa = { value = 193.0 }"
+    assert plain in text
+    ranged = "youngs_modulus_gpa = { value = 193.0, range = [180.0, 200.0] }"
+    (tmp_path / "my-family.toml").write_text(text.replace(plain, ranged))
+    mine = [s for s in load_catalog([tmp_path]).screws if s.family_id == "MY"]
+    ends = ({"youngs_modulus_pa": 180e9}, {"youngs_modulus_pa": 200e9})
+    assert mine and all(s.assumption_ends["youngs_modulus_gpa"] == ends for s in mine)
+    density = "density_kg_m3 = { value = 8000.0 }"
+    dense = "density_kg_m3 = { value = 8000.0, range = [7900.0, 8100.0] }"
+    (tmp_path / "my-family.toml").write_text(text.replace(density, dense))
+    with pytest.raises(CatalogError, match="density_kg_m3"):
+        load_catalog([tmp_path])
