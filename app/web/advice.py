@@ -24,7 +24,7 @@ from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.core.checks import BY_NAME
 from app.core.remedy import MARGIN
-from app.core.verdict import percent
+from app.core.wording import percent
 
 #: significant figures of a proposed value, rounded towards the side that still clears.
 PROPOSAL_DIGITS = 3

@@ -15,7 +15,7 @@ from app.contract.reported import REPORTED, show, value_of
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display
 from app.core.checks import REGISTRY
-from app.core.verdict import percent
+from app.core.wording import percent
 
 Better = Literal["lower", "higher"] | None
 

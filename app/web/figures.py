@@ -13,7 +13,7 @@ from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display, api_value
 from app.core.formulas import critical_speed
-from app.core.verdict import times
+from app.core.wording import times
 from app.report.charts import chart_data
 from app.web.chart_style import PALETTE
 from app.web.chart_style import axis as _axis

@@ -8,7 +8,7 @@ from fastapi.templating import Jinja2Templates
 from app.catalog.axis_motor import CURVE_ORIGINS
 from app.contract.figures import apart, sig
 from app.core.phrase import figures
-from app.core.verdict import percent, times, value_label
+from app.core.wording import percent, times, value_label
 from app.paths import resource_dir
 
 templates = Jinja2Templates(directory=str(resource_dir("templates")))

@@ -11,13 +11,8 @@ from app.core.checks import BY_NAME
 from app.core.model import Application
 from app.core.record import governing
 from app.core.selection import select
-from app.core.verdict import (
-    LEADSCREW_NUT_CHECKS,
-    missing_values,
-    percent,
-    value_label,
-    verdict,
-)
+from app.core.verdict import LEADSCREW_NUT_CHECKS, missing_values, verdict
+from app.core.wording import percent, value_label
 from tests.leadscrews import leadscrew_families
 
 #: A horizontal axis where most screws pass with room (100 N, 50 mm/s, 300 mm).

@@ -81,7 +81,7 @@ def test_a_utilization_near_its_limit_reads_on_its_side_of_100_percent(
 ) -> None:
     """A pass at 99.76 % read "100 %" on the detail, the compare page and the report, and
     a fail at 100.05 % read "100 %" too: every page now writes them as the verdict does
-    (``verdict.percent``), 99.8 % and 100.05 %."""
+    (``wording.percent``), 99.8 % and 100.05 %."""
     detail = BeautifulSoup(
         client.get(f"/detail?{CLOSE_PASS}&id=Tr8x8(P2)-ptfe").text, "html.parser"
     )
@@ -102,8 +102,8 @@ def test_a_margin_just_below_1_reads_below_1_and_its_excess_is_not_0_percent(
 ) -> None:
     """A critical-speed margin of 0.9973 (a fail) read "1.00×" on the compare page, whose
     help says above 1× passes, and the verdict beside it "(0 % over)": the margin now keeps
-    the decimals that put it below 1 (``verdict.times``), and the excess the figure that
-    says it is one (``verdict.share``)."""
+    the decimals that put it below 1 (``wording.times``), and the excess the figure that
+    says it is one (``wording.share``)."""
     api = client.get(
         "/api/v1/evaluate?load_n=50&speed_mm_s=75.1&length_mm=900&stroke_mm=600"
         "&catalog_id=Tr12x3-ptfe"

@@ -42,7 +42,7 @@ from app.contract.reported.row import (
 )
 from app.contract.units import Display
 from app.core.phrase import figures
-from app.core.verdict import percent, times
+from app.core.wording import percent, times
 
 __all__ = [
     "BY_KEY",
