@@ -16,6 +16,7 @@ from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.files import CatalogFile
 from app.catalog.models import Material, Series, Sourced
+from app.catalog.series import NOT_GIVEN
 from app.core.formulas import ballscrew
 from app.core.model import Provenance, ScrewSpec
 from app.core.units import to_si
@@ -260,8 +261,9 @@ def _provenance(
     not_published = Provenance(
         "derived", "not published in the maker's ball-screw table: not checked for it"
     )
-    for name in ("max_length", "outgassing", "repeatability", "temperature_range", "pitch"):
+    for name in ("max_length", "repeatability", "temperature_range", "pitch"):
         prov.setdefault(name, not_published)
+    prov["outgassing"] = NOT_GIVEN["outgassing"]
     prov["traverse_speed"] = NOT_APPLICABLE
     prov["type"] = Provenance("vendor", "ball screw: the maker's nut table")
     prov["oil_compatible"] = Provenance(
