@@ -40,8 +40,9 @@ def _unsourced(candidate: dict[str, Any]) -> list[tuple[str, str]]:
         ("Tr20x4-acetal", {**AXIS, "vacuum": True}),
         ("R16-10K3-FSCDIN", {**AXIS, "vacuum": True}),
         (OWN_SCREW, {**AXIS, **DUTY}),
+        ("R32-10K5-FSC", {**AXIS, "positioning_tolerance_mm": 0.05}),
     ],
-    ids=["iso-nut-in-vacuum", "ball-nut-in-vacuum", "own-screw-unrated-life"],
+    ids=["iso-nut-in-vacuum", "ball-nut-in-vacuum", "own-screw-unrated-life", "preloaded-nut"],
 )
 def test_every_value_a_check_reads_has_its_provenance(
     client: TestClient, screw: str | dict[str, Any], axis: dict[str, Any]

@@ -15,8 +15,9 @@ AXIS = "load=100&speed=20&length=300"
     [
         ("vacuum=true", "Tr20x4-acetal", "outgassing", "derived"),
         ("vacuum=true", "R16-10K3-FSCDIN", "outgassing", "derived"),
+        ("positioning_tolerance=0.05", "R32-10K5-FSC", "backlash", "assumed"),
     ],
-    ids=["iso-nut-outgassing", "ball-nut-outgassing"],
+    ids=["iso-nut-outgassing", "ball-nut-outgassing", "preloaded-nut-play"],
 )
 def test_each_value_a_check_reads_shows_its_kind_and_source(
     client: TestClient, page: str, query: str, cid: str, value: str, kind: str
