@@ -16,8 +16,10 @@ from app.catalog.entry import Entry
 from app.catalog.errors import CatalogError
 from app.catalog.files import CatalogFile
 from app.catalog.models import Material, Series, Sourced
+from app.catalog.series import NOT_GIVEN
 from app.core.formulas import ballscrew
 from app.core.model import Provenance, ScrewSpec
+from app.core.record import CERTAINTY
 from app.core.units import to_si
 
 #: The table that makes a catalog file a ball-screw family.
@@ -227,7 +229,6 @@ FAMILY_PROVENANCE = {
     "travel_deviation": "travel_deviation_mm_by_useful_travel_mm",
     "dn_limit": "dn_limit_mm_rpm",
     "accuracy_grade": "accuracy_grade",
-    "drag_torque": "preload_friction_factor",
     "preload": "preload_fraction",
     "temperature_range": "temperature_range",
 }
@@ -252,6 +253,7 @@ def _provenance(
     prov = {name: NOT_APPLICABLE for name in LEADSCREW_ONLY}
     prov.update({k: columns[c] for k, c in COLUMN_PROVENANCE.items() if c in columns})
     prov.update({k: family.prov(v) for k, v in FAMILY_PROVENANCE.items() if family.has(v)})
+    prov.update(_preload_provenance(family, columns))
     prov["thread_half_angle"] = Provenance(
         "derived", "rolling contact: the thread-efficiency formula with a 0 flank angle"
     )
@@ -261,8 +263,9 @@ def _provenance(
     not_published = Provenance(
         "derived", "not published in the maker's ball-screw table: not checked for it"
     )
-    for name in ("max_length", "outgassing", "repeatability", "temperature_range", "pitch"):
+    for name in ("max_length", "repeatability", "temperature_range", "pitch"):
         prov.setdefault(name, not_published)
+    prov["outgassing"] = NOT_GIVEN["outgassing"]
     prov["traverse_speed"] = NOT_APPLICABLE
     prov["type"] = Provenance("vendor", "ball screw: the maker's nut table")
     prov["oil_compatible"] = Provenance(
@@ -278,6 +281,31 @@ def _provenance(
         "derived", "solid shaft of the outer diameter: J/L = pi rho d^4 / 32"
     )
     return prov
+
+
+def _preload_provenance(family: Entry, columns: Mapping[str, Provenance]) -> dict[str, Provenance]:
+    """The provenance of what the nut's preload sets, derived and no more certain than
+    what it is worked from: the idle (drag) torque from K_p and the preload (HIWIN F 3.2),
+    and, where the nut table gives no axial play, a preloaded nut's zero play."""
+    preload, factor = family.prov("preload_fraction"), family.prov("preload_friction_factor")
+    out = {
+        "drag_torque": Provenance(
+            min(("derived", preload.kind, factor.kind), key=CERTAINTY.index),
+            "idle torque T_d = K_p F_pr P / (2 pi), from K_p "
+            f"({factor.kind}: {factor.source}) and the preload F_pr "
+            f"({preload.kind}: {preload.source})",
+        )
+    }
+    if "axial_play_mm" not in columns:
+        preloaded = family.plain_flag("anti_backlash")
+        out["backlash"] = Provenance(
+            min(("derived", preload.kind), key=CERTAINTY.index),
+            f"no axial play: a preloaded nut, its play taken up by the preload F_pr "
+            f"({preload.kind}: {preload.source})"
+            if preloaded
+            else "no axial play column in the maker's nut table: none counted",
+        )
+    return out
 
 
 def _display(specs: list[ScrewSpec], prov: Mapping[str, Provenance]) -> dict[str, Sourced]:

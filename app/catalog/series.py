@@ -92,14 +92,19 @@ NOT_GIVEN = {
     "repeatability": Provenance(
         "derived", "no repeatability in the catalog for this screw: the accuracy check counts none"
     ),
+    # the life check runs on the wear life where there is a wear rate, else fails unrated
+    "life": Provenance(
+        "derived",
+        "no rated life in the catalog for this screw and nut (the seed lists N/A for its "
+        "free-wheeling B series): its life is its wear life where a wear rate is given",
+    ),
+    # the vacuum check warns on a nut without data: it is judged, not left out
+    "outgassing": Provenance(
+        "derived",
+        "no outgassing data in the catalog for this nut: in a vacuum its use is unproven "
+        "(the vacuum check warns)",
+    ),
 }
-
-
-UNRATED_LIFE = Provenance(
-    "derived",
-    "no life rating in the catalog for this series (the seed lists N/A for the "
-    "free-wheeling B series)",
-)
 
 
 def _value_or_none(fields: Mapping[str, Sourced], name: str) -> Any:
@@ -185,7 +190,6 @@ def _screw(
     fields = series.fields
     prov = {k: s.provenance for k, s in fields.items()}
     prov.update({k: s.provenance for k, s in variant.fields.items()})
-    prov.setdefault("life", UNRATED_LIFE)
     for name, not_given in NOT_GIVEN.items():
         prov.setdefault(name, not_given)
     prov["lead"] = fields["leads"].provenance

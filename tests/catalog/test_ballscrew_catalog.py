@@ -108,7 +108,21 @@ def test_a_preloaded_nuts_drag_is_hiwins_idle_torque_at_its_largest_preload(
         0.3 * 0.05 * 30800 * 10 / (2000 * 3.141592653589793)
     )
     assert s.drag_torque_min_nm == pytest.approx(s.drag_torque_max_nm / 3)
-    assert s.provenance["drag_torque"].kind == "vendor"
+    # worked from the assumed preload: no more certain than it, and naming both inputs
+    drag = s.provenance["drag_torque"]
+    assert drag.kind == "assumed" and "K_p" in drag.source and "F_pr (assumed" in drag.source
+
+
+def test_a_preloaded_nuts_zero_play_rests_on_its_preload(catalog: Catalog) -> None:
+    """HIWIN's ground FSC table prints no axial play: the nut's zero play is its preload's
+    (assumed 0-5 % of Cdyn, at 0 a nut with minimum play), and says so; a rolled nut's
+    play is its table's column, and its drag (no preload, the maker's) is derived."""
+    ground, rolled = catalog.by_id["R32-10K5-FSC"], catalog.by_id["R16-10K3-FSCDIN"]
+    assert ground.backlash_max_m == 0.0
+    play = ground.provenance["backlash"]
+    assert play.kind == "assumed" and "preload" in play.source
+    assert rolled.provenance["backlash"].kind == "vendor"
+    assert rolled.provenance["drag_torque"].kind == "derived"
 
 
 def test_a_ball_nut_has_no_leadscrew_nut_ratings(catalog: Catalog) -> None:
