@@ -12,6 +12,7 @@ from app.catalog.motors import (
     UnknownMotor,
     unknown_motor_message,
 )
+from app.catalog.supports import with_support
 from app.contract.form import share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.pairs import (
@@ -97,10 +98,11 @@ def _pair_out(
 
 def run_pairs(inputs: ApplicationIn, catalog: Catalog, asked: PairRankIn | None = None) -> PairsOut:
     """Every eligible catalog screw with every library motor for the axis of ``inputs``
-    (any motor given there is set aside), the passing pairs ranked as ``asked``, else
-    as the application's own ranking means (``pair_rank_of``: the page's ranking)."""
+    (any motor given there is set aside; a library support unit's ratings filled in, as
+    select and evaluate fill them), the passing pairs ranked as ``asked``, else as the
+    application's own ranking means (``pair_rank_of``: the page's ranking)."""
     rank = pair_rank_of(inputs, asked)
-    axis = inputs.axis()
+    axis = with_support(inputs.axis(), catalog.supports)
     if axis.motor not in (None, ANY_MOTOR, *catalog.motors):  # set aside, but named right
         raise UnknownMotor(unknown_motor_message(axis.motor or "", catalog.motors))
     alone, motors = pair_applications(axis, catalog.motors)

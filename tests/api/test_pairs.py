@@ -269,3 +269,26 @@ def test_each_pair_names_the_motor_limit_its_share_is(client: TestClient) -> Non
     assert pair["motor_limit"] == "motor_speed"
     checks = {c["name"] for c in client.get("/api/v1/checks").json()["checks"]}
     assert all(p["motor_limit"] in checks for p in body["pairs"])
+
+
+def test_a_library_support_unit_limits_the_pairs_as_it_limits_evaluate(
+    client: TestClient,
+) -> None:
+    """A library support unit's axial ratings judge every pair, as they judge the same
+    screw and motor on /evaluate and /select: a 1000 N push on a THK FK6 (static rating
+    1760 N over the factor 2: 880 N allowed) passes no screw; the pairs listed 14."""
+    axis = {
+        "load_n": 1000, "moving_mass_kg": 2, "speed_mm_s": 20, "length_mm": 300,
+        "accel_mm_s2": 500, "stroke_mm": 200, "support_id": "thk-fk6", "limit": 100,
+    }  # fmt: skip
+    assert _pairs(client, **axis)["pairs_passed"] == 0
+    without = {k: v for k, v in axis.items() if k != "support_id"}
+    pairs = _pairs(client, **without)["pairs"]
+    assert pairs
+    for pair in pairs[:3]:
+        r = client.post(
+            "/api/v1/evaluate",
+            json={"application": {**axis, "motor": pair["motor"]},
+                  "screw": {"catalog_id": pair["screw_id"]}},
+        )  # fmt: skip
+        assert r.json()["candidate"]["passed"] is False
