@@ -112,8 +112,8 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "torque.inertia_nm",
         "Breakdown",
-        "The torque's parts: accelerating the screw and the moving mass, the nut's drag, "
-        "and pushing the load through the thread.",
+        "The torque's parts: accelerating the screw, coupling, rotor and mass, the nut's "
+        "drag, and the load through the thread.",
         quantity="torque",
         cell="breakdown",
         column=True,
