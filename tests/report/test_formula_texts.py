@@ -54,3 +54,11 @@ def test_the_text_gives_the_functions_number(key: str) -> None:
 def test_the_reading_catches_a_wrong_text() -> None:
     """The old surface-speed text, n H.T. with n in rpm, is 60 times the function's."""
     assert _value("V = n H.T.", SCOPE) == pytest.approx(60 * pv.surface_speed(RPM, HELIX))
+
+
+def test_the_life_in_years_names_every_travel_it_divides() -> None:
+    """``life.years`` divides the travel band of ``sections.Life``: the seed's rating cut
+    to the nut's wear life, else the wear life, else a ball nut's L10 as travel."""
+    text = FORMULAS["life.years"]["formula"]
+    for term in ("rated travel", "wear life", "L10"):
+        assert term in text, term
