@@ -13,6 +13,7 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 
+from app.report.formulas import FORMULAS
 from tests.api.calls import check
 
 AXIS = {
@@ -52,3 +53,13 @@ def test_a_negative_coupling_inertia_is_refused_at_its_field(client: TestClient)
     assert response.status_code == 422
     fields = [d["field"] for d in response.json()["detail"]]
     assert fields == ["application.coupling_inertia_kg_m2"]
+
+
+def test_the_torque_formulas_name_the_inertias_they_sum() -> None:
+    """The formulas table names every inertia the code accelerates: the screw's row the
+    coupling's (``segments.screw_side_inertia``), break-away and each segment's torque the
+    coupling's and the rotor's too (``drive.breakaway``, ``segments.plus_spin``)."""
+    assert "J_coupling" in FORMULAS["torque.inertia_screw_nm"]["formula"]
+    for key in ("torque.breakaway_nm", "segments.torque_nm"):
+        text = FORMULAS[key]["formula"]
+        assert "(J_screw + J_coupling + J_rotor) alpha" in text, key

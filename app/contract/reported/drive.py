@@ -112,8 +112,8 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "torque.inertia_nm",
         "Breakdown",
-        "The torque's parts: accelerating the screw and the moving mass, the nut's drag, "
-        "and pushing the load through the thread.",
+        "The torque's parts: accelerating the screw, coupling, rotor and mass, the nut's "
+        "drag, and the load through the thread.",
         quantity="torque",
         cell="breakdown",
         column=True,
@@ -138,7 +138,14 @@ ROWS: tuple[Reported, ...] = (
         formula=Formula(torque.screw_inertia),
         source=From(("screw.inertia_kg_m2_per_m", "app.length_m"), via=screw_inertia),
     ),
-    Reported("torque.inertia_screw_nm", formula=Formula(torque.inertia_torque)),
+    Reported(
+        "torque.inertia_screw_nm",
+        formula=Formula(
+            torque.inertia_torque,
+            "T = (J/L x L + J_coupling) x 2 pi a / lead: the screw's and its coupling's inertia",
+            SEED + " (Inertia Torque T = I alpha) with the coupling's I",
+        ),
+    ),
     Reported(
         "torque.inertia_mass_nm",
         formula=Formula(
@@ -170,7 +177,8 @@ ROWS: tuple[Reported, ...] = (
         "torque.breakaway_nm",
         formula=Formula(
             torque.load_torque,
-            "T = (F + m a) lead / (2 pi eta_static) + J_screw alpha + T_drag, starting from rest",
+            "T = (F + m a) lead / (2 pi eta_static) + (J_screw + J_coupling + J_rotor) alpha "
+            "+ T_drag, starting from rest (the largest of every move's start)",
             SEED + " with static friction",
         ),
     ),

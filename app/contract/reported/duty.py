@@ -5,6 +5,7 @@ from app.contract.reported.row import Formula, Reported
 from app.contract.source import From
 from app.core import cycle_energy
 from app.core.formulas import energy, life
+from app.core.formulas.declare import SEED
 
 ROWS: tuple[Reported, ...] = (
     Reported(
@@ -21,7 +22,13 @@ ROWS: tuple[Reported, ...] = (
         ranks=("life",),
         csv=True,
         compare=True,
-        formula=Formula(life.life_years),
+        formula=Formula(
+            life.life_years,
+            "years = travel / (2 stroke x cycles/day x 365), the travel the seed's rated "
+            "travel (at most the nut's wear life), else the wear life, else a ball nut's "
+            "L10 revolutions x lead",
+            SEED + " (Anti-Backlash Life); Archard's law (nut wear); ISO 3408-5 (ball nut L10)",
+        ),
         views=("summary",),
     ),
     Reported(

@@ -63,8 +63,8 @@ ROWS: tuple[Reported, ...] = (
         formula=Formula(
             profile.thread_torque,
             "T = F lead / (2 pi eta) if F >= 0 else F lead eta_b / (2 pi), + T_drag "
-            "+ (J_screw + J_rotor) alpha; in a dwell the holding torque where a load is held "
-            "at rest, else 0",
+            "+ (J_screw + J_coupling + J_rotor) alpha; in a dwell the holding torque where a "
+            "load is held at rest, else 0",
         ),
     ),
 )

@@ -30,9 +30,9 @@ def contact_pressure(load_n: float, contact_area_m2: float) -> float:
     return load_n / contact_area_m2
 
 
-@formula("V = n H.T., H.T. = sqrt(lead^2 + (pi d_p)^2)", SEED)
+@formula("V = (n / 60) H.T., H.T. = sqrt(lead^2 + (pi d_p)^2), n in rpm", SEED)
 def surface_speed(rpm: float, helix_travel_m: float) -> float:
-    """Thread sliding speed V = n H.T. [m/s], n in rpm.
+    """Thread sliding speed V = (n / 60) H.T. [m/s], n in rpm.
 
     Source: seed [1], ``TS = RPM x H.T. / 12`` (ft/min with H.T. in inches).
 
@@ -42,7 +42,10 @@ def surface_speed(rpm: float, helix_travel_m: float) -> float:
     return rpm / 60.0 * helix_travel_m
 
 
-@formula("PV = F / (3 H.T. h) x n H.T.", SEED + " (PV Calculation, 3 threads in contact)")
+@formula(
+    "PV = F / (3 H.T. h) x (n / 60) H.T., n in rpm",
+    SEED + " (PV Calculation, 3 threads in contact)",
+)
 def pv_value(
     load_n: float,
     rpm: float,
@@ -53,7 +56,7 @@ def pv_value(
 ) -> float:
     """PV of the nut [Pa m/s] by the seed's three-thread method.
 
-    PV = (F / (3 H.T. h)) x (n H.T.) ; F [N], n [rpm], H.T. [m], h [m]; contact_area_m2:
+    PV = (F / (3 H.T. h)) x ((n / 60) H.T.) ; F [N], n [rpm], H.T. [m], h [m]; contact_area_m2:
     3 H.T. h [m^2] when already worked out (``contact_area``: the candidate table's
     column), the same number; ``pressure_speed``: P [Pa] and V [m/s] when already worked
     out (``contact_pressure``, ``surface_speed``), the same numbers.
@@ -72,11 +75,11 @@ def pv_value(
     return contact_pressure(load_n, area) * surface_speed(rpm, helix_travel_m)
 
 
-@formula("F = PV_lim 3 h / n", SEED + " (inverted)")
+@formula("F = PV_lim 3 h / (n / 60), n in rpm", SEED + " (inverted)")
 def max_load_for_pv(pv_limit_pa_m_s: float, rpm: float, thread_depth_m: float) -> float:
-    """Largest load the PV limit allows at this speed, F = PV_lim 3 h / n [N].
+    """Largest load the PV limit allows at this speed, F = PV_lim 3 h / (n / 60) [N].
 
-    Inverse of ``pv_value`` (H.T. cancels); n in rev/s.
+    Inverse of ``pv_value`` (H.T. cancels); n in rpm.
 
     >>> round(max_load_for_pv(1.0e5, 600.0, 0.001), 3)
     30.0
@@ -87,7 +90,7 @@ def max_load_for_pv(pv_limit_pa_m_s: float, rpm: float, thread_depth_m: float) -
 def max_load_at_speed(max_load_n: float, speed_m_s: float, new_speed_m_s: float) -> float:
     """The PV-limited load moved to another linear speed [N].
 
-    F_max = PV_lim 3 h / n and n = 60 v / lead, so F_max(v_new) = F_max(v) v / v_new
+    F_max = PV_lim 3 h / (n / 60) and n = 60 v / lead, so F_max(v_new) = F_max(v) v / v_new
     (inverse of ``pv_value``, seed [1]). Draws the PV chart from one evaluated point.
 
     >>> max_load_at_speed(100.0, 0.05, 0.1)
