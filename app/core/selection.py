@@ -21,6 +21,7 @@ from app.core.changes import (
 )
 from app.core.checks import BY_NAME, nut_heat
 from app.core.checks.wear_life import life_band
+from app.core.duty import ball_life_revolutions
 from app.core.index import CatalogIndex
 from app.core.model import Application, AxisProvenance, Remedy, ScrewSpec, Summary, holds
 from app.core.phrase import Amount, Phrase, join, plural
@@ -77,15 +78,22 @@ def shown_rms(s: Screening) -> np.ndarray:
     return np.where(np.isnan(q.motor.motor_rms_nm), shown_torque(s), q.motor.motor_rms_nm)
 
 
-def shown_life_min(s: Screening, pos: np.ndarray) -> np.ndarray:
+def shown_life_min(app: Application, s: Screening, pos: np.ndarray) -> np.ndarray:
     """The low end of the life band the results show for the candidates at ``pos``, as
-    nut travel [m]: the nut's wear life at the high end of its wear rate's range, or the
-    seed's rated life where it is shorter (``Life.travel_m``); NaN where neither is
-    given."""
+    nut travel [m] (``Life.travel_m``): the nut's wear life at the high end of its wear
+    rate's range, or the seed's rated life where it is shorter; a ball nut's L10 life over
+    the cycle (``duty.ball_life_revolutions`` times the lead), shown where it is finite (a
+    stroke given); NaN where none is."""
     t = s.table
     share = np.array([life_band(t.screws[i])[0] for i in pos], dtype=np.float64)
     wear = s.quantities.life.wear_travel_m[pos] * share
-    return np.asarray(np.fmin(t.life_min_m[pos], wear), dtype=np.float64)
+    low = np.asarray(np.fmin(t.life_min_m[pos], wear), dtype=np.float64)
+    ball = t.ball[pos]
+    if ball.any():
+        at = pos[ball]
+        travel = ball_life_revolutions(app, t.dynamic_load_n[at], t.preload_n[at]) * t.lead_m[at]
+        low[ball] = np.where(np.isfinite(travel), travel, np.nan)
+    return low
 
 
 def _rank_order(app: Application, s: Screening) -> np.ndarray:
@@ -93,7 +101,7 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
 
     torque: lowest torque shown (``shown_torque``: the peak motor torque under a move);
     rms: lowest RMS motor torque (``shown_rms``); margin: lowest worst utilisation; life:
-    longest life at the low end of the band shown (``shown_life_min``: rated or wear;
+    longest life at the low end of the band shown (``shown_life_min``: rated, wear or L10;
     neither last); size: smallest outer diameter; motor_margin: the
     smallest share of the motor used (``motor_use``). Ties: lower shown torque.
     Where the load must be held with the power off (``hold_power_off`` and a load held),
@@ -109,7 +117,7 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
         "torque": torque,
         "rms": shown_rms(s)[pos] if app.rank_by == "rms" else torque,
         "margin": util,
-        "life": -np.nan_to_num(shown_life_min(s, pos)) if app.rank_by == "life" else torque,
+        "life": -np.nan_to_num(shown_life_min(app, s, pos)) if app.rank_by == "life" else torque,
         "size": s.table.outer_diameter_m[pos],
         "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]

@@ -76,3 +76,20 @@ def test_the_retired_advice_rank_reads_as_warn(client: TestClient) -> None:
     assert client.get("/", params={**page, "advice": "rank"}).status_code == 200
     schema = client.get("/openapi.json").json()["components"]["schemas"]["ApplicationIn"]
     assert schema["properties"]["advice"]["enum"] == ["warn", "reject"]
+
+
+def test_longest_life_orders_ball_screws_by_their_l10_among_the_leadscrews(
+    client: TestClient,
+) -> None:
+    """Ranked by life, each candidate's shown life band orders the list (its low end, in
+    travel), a ball nut's L10 life among the leadscrews' wear or rated lives: the ball
+    screws, having no rated or wear life, all came last whatever their L10."""
+    found = candidates(
+        client, load_n=300, speed_mm_s=50, length_mm=500, stroke_mm=300, cycles_per_day=2000,
+        limit=100, rank_by="life", detail="full",
+    )  # fmt: skip
+    lows = [c["life"]["travel_km"][0] for c in found if c.get("life")]
+    assert lows == sorted(lows, reverse=True)
+    kinds = [c["screw_type"] for c in found if c.get("life")]
+    assert kinds[0] == "ball" and "lead" in kinds
+    assert [c for c in found if not c.get("life")] == found[len(lows) :]
