@@ -31,8 +31,9 @@ class Accuracy(Check):
     name = "accuracy"
     label = "Positioning accuracy"
     description = (
-        "Lead error over the stroke (a leadscrew's lead accuracy times the stroke; a ball "
-        "screw's limit deviation e_p of its ISO 3408-3 tolerance class over the stroke), "
+        "Lead error over the stroke (the screw length where no stroke is given: a "
+        "leadscrew's lead accuracy times it; a ball screw's limit deviation e_p of its "
+        "ISO 3408-3 tolerance class over it), "
         "plus the screw's thermal growth over the stroke (its material's expansion, the "
         "screw taken at the ambient against the 20 °C reference; its own friction heat is "
         "not counted), plus the largest backlash, plus repeatability, summed as a worst "
