@@ -101,7 +101,8 @@ class Batch:
             return [math.inf] * len(self.positions)
         table = self.screening.table
         rating, preload = table.dynamic_load_n[self.at], table.preload_n[self.at]
-        revolutions: list[float] = ball_life_revolutions(self.app, rating, preload).tolist()
+        nut = table.nut_length_m[self.at]
+        revolutions: list[float] = ball_life_revolutions(self.app, rating, preload, nut).tolist()
         return revolutions
 
     @cached_property

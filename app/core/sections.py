@@ -140,7 +140,8 @@ LIFE_NOTES = {
     "revolutions at the cycle's cubic mean load F_m (each moving segment weighted by its "
     "revolutions; a preloaded nut's load raised by its preload below 2^(3/2) times it, "
     "HIWIN F 3.7), times the load factor f_w (1.2 by default: HIWIN's 1.1 to 1.2 without "
-    "impact, 1.3 to 1.8 in normal operation); 90 % of nuts reach it. "
+    "impact, 1.3 to 1.8 in normal operation; at least 3.0 on a stroke under 3 nut "
+    "lengths, HIWIN F 3.8's 3.0 to 5.0); 90 % of nuts reach it. "
     "Lubrication and contamination move it (HIWIN sec. 3.7.2).",
 }
 

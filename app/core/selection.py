@@ -91,7 +91,10 @@ def shown_life_min(app: Application, s: Screening, pos: np.ndarray) -> np.ndarra
     ball = t.ball[pos]
     if ball.any():
         at = pos[ball]
-        travel = ball_life_revolutions(app, t.dynamic_load_n[at], t.preload_n[at]) * t.lead_m[at]
+        revolutions = ball_life_revolutions(
+            app, t.dynamic_load_n[at], t.preload_n[at], t.nut_length_m[at]
+        )
+        travel = revolutions * t.lead_m[at]
         low[ball] = np.where(np.isfinite(travel), travel, np.nan)
     return low
 

@@ -93,7 +93,7 @@ APPS = [
         load_n=load,
         speed_m_s=0.3,
         length_m=1.0,
-        stroke_m=0.4,
+        stroke_m=0.45,
         cycles_per_day=500.0,
         required_life_years=1.0,
         moving_mass_kg=mass,
@@ -122,10 +122,12 @@ def test_a_preloaded_nut_is_never_rated_above_one_sided_and_play_is_unchanged(
     table = catalog.index.table
     ball = np.flatnonzero(table.ball)
     ca, lead, preload = table.dynamic_load_n[ball], table.lead_m[ball], table.preload_n[ball]
+    nut = table.nut_length_m[ball]
+    assert (app.stroke_m or 0.0) >= 3.0 * nut.max()  # no short stroke: f_w stays 1.2
     forces, travels = travel_thrusts(app)
     per_year = sum(travels) * 500.0 * 365.0
-    years = life_years(app, ca, lead, preload)
-    played = life_years(app, ca, lead, np.where(preload > 0.0, np.nan, 0.0))
+    years = life_years(app, ca, lead, preload, nut)
+    played = life_years(app, ca, lead, np.where(preload > 0.0, np.nan, 0.0), nut)
     assert (preload > 0.0).any() and (preload == 0.0).any()
     for i in range(len(ball)):
         both, one = _reference(float(ca[i]), float(preload[i]), forces, travels)

@@ -18,12 +18,18 @@ from app.core.checks.base import (
 )
 from app.core.duty import (
     ball_life_revolutions,
+    ball_load_factors,
     operating_mean_load,
     side_mean_loads,
     travel_thrusts,
 )
 from app.core.formulas import ballscrew, life
 from app.core.phrase import Amount, Phrase
+
+#: What the life's sentence adds where a short stroke raised the load factor.
+SHORT_NOTE = (
+    " (raised for a stroke under 3 nut lengths: HIWIN's operating condition 3.0 to 5.0, F 3.8)"
+)
 
 
 def mean_load(app: Application) -> float:
@@ -37,14 +43,15 @@ def life_years(
     dynamic_load_n: Array,
     lead_m: Array,
     preload_n: Array,
+    nut_length_m: Array,
     thrusts: tuple[list[float], list[float]] | None = None,
 ) -> Array:
-    """The L10 life in years of the duty [year] for each nut of rating Ca [N], lead [m]
-    and preload [N] (``duty.ball_life_revolutions``: both sides of a preloaded nut);
-    ``thrusts`` as there."""
+    """The L10 life in years of the duty [year] for each nut of rating Ca [N], lead [m],
+    preload [N] and length [m] (``duty.ball_life_revolutions``: both sides of a preloaded
+    nut, its load factor raised on a short stroke); ``thrusts`` as there."""
     thrusts = thrusts or travel_thrusts(app)
     cycles = motion.cycles_per_day(app) or 0.0
-    revolutions = ball_life_revolutions(app, dynamic_load_n, preload_n, thrusts)
+    revolutions = ball_life_revolutions(app, dynamic_load_n, preload_n, nut_length_m, thrusts)
     revolutions_per_day = sum(thrusts[1]) / lead_m * cycles
     return np.asarray(revolutions / (revolutions_per_day * life.DAYS_PER_YEAR), dtype=np.float64)
 
@@ -60,7 +67,9 @@ class BallLife(Check):
         "A ball nut's rated fatigue life L10 (ISO 3408-5) in years of the given stroke and "
         "cycles (or hours) per day, against the life required, with the load factor f_w "
         "(1.2 by default, the top of HIWIN's 1.1 to 1.2 without impact; 1.3 to 1.8 in "
-        "normal operation). A nut with play: L10 = (Ca / (f_w F_m))^3 x 10^6 revolutions, "
+        "normal operation; at least 3.0 where the stroke is under 3 nut lengths, the "
+        "bottom of HIWIN's 3.0 to 5.0 for a short stroke, F 3.8). A nut with play: "
+        "L10 = (Ca / (f_w F_m))^3 x 10^6 revolutions, "
         "F_m the cycle's cubic mean thrust, each moving segment weighted by its "
         "revolutions. A preloaded nut rolls on both sides: in each segment the side the "
         "thrust presses carries F_b = (1 + F / 2^(3/2) F_pr)^(3/2) F_pr and the other "
@@ -96,7 +105,7 @@ class BallLife(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         with np.errstate(invalid="ignore", divide="ignore"):
-            years = life_years(app, t.dynamic_load_n, t.lead_m, t.preload_n)
+            years = life_years(app, t.dynamic_load_n, t.lead_m, t.preload_n, t.nut_length_m)
         return Measure(t.ball.copy(), same(t, app.required_life_years), years)
 
     def symbols(
@@ -107,7 +116,7 @@ class BallLife(Check):
         return {
             "Y_req": app.required_life_years,
             "Ca": t.dynamic_load_n,
-            "f_w": app.ball_load_factor,
+            "f_w": ball_load_factors(app, t.nut_length_m),
             "F_m": operating_mean_load(app, t.preload_n, thrusts),
             "F_bm1": side1,
             "F_bm2": side2,
@@ -119,23 +128,26 @@ class BallLife(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         ca, preload = s.dynamic_load_n or 0.0, np.array([s.preload_n or 0.0])
+        nut = np.array([np.nan if s.nut_length_m is None else s.nut_length_m])
         thrusts = travel_thrusts(app)
-        years = life_years(app, np.array([ca]), np.array([s.lead_m]), preload, thrusts)
+        years = life_years(app, np.array([ca]), np.array([s.lead_m]), preload, nut, thrusts)
+        factor = float(ball_load_factors(app, nut)[0])
         verb = "{years} rated (L10)" if passed else "Only {years} rated (L10)"
         values = {
             "years": Amount(float(years[0]), "years"),
             "required": Amount(app.required_life_years or 0.0, "years"),
             "ca": Amount(ca, "force"),
             "fm": Amount(float(operating_mean_load(app, preload, thrusts)[0]), "force"),
-            "fw": Amount(app.ball_load_factor, "factor"),
+            "fw": Amount(factor, "factor"),
         }
+        short = SHORT_NOTE if factor > app.ball_load_factor else ""
         if not (s.preload_n and s.preload_n > 0.0):
             text = (
                 verb + ", {required} required: Ca = {ca} against the cycle's cubic mean load "
-                "{fm} times the load factor {fw}."
+                "{fm} times the load factor {fw}" + short + "."
             )
             return Phrase(text, values)
-        return _preloaded(app, verb, values, preload, thrusts)
+        return _preloaded(app, verb, values, preload, thrusts, short)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
@@ -150,12 +162,14 @@ def _preloaded(
     values: dict[str, Amount],
     preload: Array,
     thrusts: tuple[list[float], list[float]],
+    short: str,
 ) -> Phrase:
     """``BallLife.explain`` for a preloaded nut: its two sides' mean loads and lives
     combined, or the one-sided mean where that rates shorter
-    (``ballscrew.nut_life_revolutions``)."""
+    (``ballscrew.nut_life_revolutions``), at its load factor ``values["fw"]`` (``short``:
+    the words where a short stroke raised it)."""
     side1, side2 = side_mean_loads(app, preload, thrusts)
-    ca, factor = values["ca"].value, app.ball_load_factor
+    ca, factor = values["ca"].value, values["fw"].value
     both = ballscrew.two_sided_life_revolutions(ca, factor, side1[0], side2[0])
     one = ballscrew.rated_life_revolutions(ca, factor, values["fm"].value)
     values |= {
@@ -165,9 +179,10 @@ def _preloaded(
         "side2": Amount(float(side2[0]), "force"),
     }
     text = (
-        verb + ", {required} required: Ca = {ca}, load factor {fw}. The nut's preload "
-        "{preload} loads both its sides (the axis's thrust alone: {axis}): cubic mean "
-        "loads {side1} and {side2}, their lives combined as (L1^(-10/9) + L2^(-10/9))^(-9/10)."
+        verb + ", {required} required: Ca = {ca}, load factor {fw}" + short + ". The nut's "
+        "preload {preload} loads both its sides (the axis's thrust alone: {axis}): cubic "
+        "mean loads {side1} and {side2}, their lives combined as "
+        "(L1^(-10/9) + L2^(-10/9))^(-9/10)."
     )
     if one < both:
         text += " One side under the cycle's mean load {fm} rates shorter, and is taken."
