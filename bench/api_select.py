@@ -23,9 +23,9 @@ from starlette.datastructures import QueryParams
 
 from app.api.query import parse_query
 from app.catalog import load_catalog
-from app.contract.form import share_query
 from app.contract.outputs import SelectQuery
 from app.contract.params import api_url
+from app.contract.share_link import share_query
 from app.core.selection import select
 from app.report import service
 from app.report.present import selection_summary

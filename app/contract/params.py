@@ -20,17 +20,10 @@ from difflib import get_close_matches
 from urllib.parse import parse_qsl
 
 from app.contract.fields import BY_API, BY_PAGE
-from app.contract.form import (
-    ENTERED_PREFIX,
-    MOVES,
-    TYPED_PREFIX,
-    UNIT_CHOICES,
-    encode_query,
-    repeated,
-    share_query,
-)
+from app.contract.form import ENTERED_PREFIX, MOVES, TYPED_PREFIX, UNIT_CHOICES, repeated
 from app.contract.inputs import ApplicationIn
 from app.contract.move_table import ADD_MOVE, REMOVE_MOVE, is_cell
+from app.contract.share_link import encode_query, share_query
 from app.contract.units import DEFAULT_UNITS
 
 #: Every name a page with the application form reads, whatever the route.

@@ -4,10 +4,10 @@ and each number not at its default, in the display units, exactly."""
 from collections.abc import Mapping
 
 from app.contract.exact import link_number
-from app.contract.form import encode_query, share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.screw_fields import BY_NAME
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn
+from app.contract.share_link import encode_query, share_query
 from app.contract.units import DEFAULT_UNITS
 
 #: the material choice that takes the user's own modulus, density and yield strength.

@@ -8,9 +8,9 @@ from app.catalog.axis_motor import library_motor_mass
 from app.catalog.motors import UndrivableMotor, UnknownMotor
 from app.catalog.supports import UnknownSupport
 from app.contract.fields import MOVING_MASS
-from app.contract.form import share_query
 from app.contract.machine import MachineIn
 from app.contract.reported import REPORTED
+from app.contract.share_link import share_query
 from app.contract.source import Writer
 from app.contract.units import DEFAULT_UNITS
 from app.core import motion

@@ -13,7 +13,6 @@ from app.catalog.motors import (
     unknown_motor_message,
 )
 from app.catalog.supports import with_support
-from app.contract.form import share_query
 from app.contract.inputs import ApplicationIn
 from app.contract.pairs import (
     PAIR_RANKS,
@@ -24,6 +23,7 @@ from app.contract.pairs import (
     pair_rank_of,
 )
 from app.contract.params import api_url
+from app.contract.share_link import share_query
 from app.contract.units import UNITS, from_si
 from app.core.model import Application
 from app.core.pairs import Pair, rank_pairs

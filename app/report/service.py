@@ -8,12 +8,12 @@ from typing import Any
 from app.catalog import Catalog
 from app.catalog.axis_motor import CurveOrigin
 from app.contract.fields import FIELDS
-from app.contract.form import encode_query, share_query
 from app.contract.outputs import CompareOut, EvaluateOut, FormulaOut, PageSelectionOut, SelectOut
 from app.contract.params import api_url
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screw_link import custom_query
 from app.contract.screws import CatalogScrewIn, CustomScrewIn
+from app.contract.share_link import encode_query, share_query
 from app.contract.units import DEFAULT_UNITS
 from app.core.evaluate import evaluate
 from app.core.record import Candidate

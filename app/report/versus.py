@@ -10,10 +10,10 @@ from collections.abc import Mapping
 from typing import Literal
 
 from app.catalog import Catalog
-from app.contract.form import share_query
 from app.contract.outputs import CitedNoteOut, VersusOut, VersusSideOut
 from app.contract.params import api_url
 from app.contract.schemas import ApplicationIn, CandidateOut
+from app.contract.share_link import share_query
 from app.contract.units import DEFAULT_UNITS
 from app.core.checks import BY_NAME
 from app.report.service import run_selection

@@ -19,9 +19,9 @@ from pydantic import ValidationError
 from app.contract.exact import page_value
 from app.contract.fields import BY_API
 from app.contract.figures import round_towards, sig
-from app.contract.form import share_query
 from app.contract.outputs import PageSelectionOut, SelectOut
 from app.contract.schemas import ApplicationIn, CandidateOut
+from app.contract.share_link import share_query
 from app.core.checks import BY_NAME
 from app.core.remedy import MARGIN
 from app.core.wording import percent

@@ -11,11 +11,11 @@ from fastapi.responses import HTMLResponse, Response
 from app.catalog import Catalog
 from app.contract.fields import BY_PAGE
 from app.contract.form import TYPED_PREFIX, converted_fields, entered_units
-from app.contract.form import summary_rows as input_rows
 from app.contract.outputs import EvaluateOut
 from app.contract.params import form_errors, unknown_parameters
 from app.contract.screw_link import OWN_MATERIAL, custom_query, screw_values
 from app.contract.screws import NUT_FIELD, NUT_LABEL, CustomScrewIn
+from app.contract.share_link import summary_rows as input_rows
 from app.contract.units import Display, api_value
 from app.core import motion
 from app.report.present import nut_rows

@@ -15,10 +15,11 @@ from fastapi.responses import HTMLResponse, Response
 from pydantic import ValidationError
 
 from app.catalog import Catalog
-from app.contract.form import encode_query, parse_inputs
+from app.contract.form import parse_inputs
 from app.contract.inputs import ApplicationIn
 from app.contract.machine import MAX_AXES, AxisIn, MachineIn
 from app.contract.params import form_errors, unknown_message, unknown_parameters
+from app.contract.share_link import encode_query
 from app.report.machine import UnknownChoice, run_machine
 from app.server.compute import computed
 from app.server.deps import CatalogDep

@@ -21,8 +21,6 @@ from app.contract.form import (
     form_defaults,
     parse_inputs,
     parse_units,
-    share_query,
-    summary_rows,
     typed_exactly,
 )
 from app.contract.input_field import GROUPS
@@ -44,6 +42,7 @@ from app.contract.params import form_errors, unknown_parameters
 from app.contract.reported import columns, row_cells, show, value_of
 from app.contract.schemas import ApplicationIn, CandidateOut
 from app.contract.screws import CatalogScrewIn
+from app.contract.share_link import share_query, summary_rows
 from app.contract.units import UNIT_LABELS, Display
 from app.report.pairs import run_pairs
 from app.report.service import (

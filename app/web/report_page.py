@@ -17,9 +17,9 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
-from app.contract.form import encode_query, share_query, summary_rows
 from app.contract.move_table import COLUMNS, shown_moves
 from app.contract.reported import REPORTED, show, value_of
+from app.contract.share_link import encode_query, share_query, summary_rows
 from app.contract.units import Display
 from app.report.service import run_page_result
 from app.server.deps import CatalogDep

@@ -14,8 +14,8 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, Response
 
 from app.catalog import Catalog
-from app.contract.form import share_query
 from app.contract.schemas import ApplicationIn
+from app.contract.share_link import share_query
 from app.report.service import run_page_result, run_page_selection
 from app.server.compute import computed
 from app.server.deps import CatalogDep

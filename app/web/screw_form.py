@@ -19,10 +19,11 @@ from pydantic import BaseModel, ValidationError
 from app.contract import screw_fields
 from app.contract.exact import PLAIN_MESSAGES, link_number, page_value
 from app.contract.figures import bound_sig, sig
-from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, encode_query, unit_key
+from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, unit_key
 from app.contract.input_field import InputField
 from app.contract.screw_link import OWN_MATERIAL
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
+from app.contract.share_link import encode_query
 from app.contract.units import DEFAULT_UNITS, Quantity, label, si_to_api
 from app.core.model import ScrewSpec
 

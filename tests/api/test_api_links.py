@@ -177,7 +177,7 @@ def test_a_custom_screws_share_url_is_its_page_with_the_same_answer(client: Test
 def test_the_api_query_is_the_share_link_s_under_the_api_s_names() -> None:
     """Required fields and non-defaults, numbers exact, a list repeated, the motor's id as
     the library writes it; the route's own names after them, encoded but for the
-    separators ':' and ',' (``form.LINK_SAFE``)."""
+    separators ':' and ',' (``share_link.LINK_SAFE``)."""
     inputs = ApplicationIn(load_n=100, speed_mm_s=50, length_mm=500, family="B, TR-C45")
     assert api_query(inputs) == "load_n=100&speed_mm_s=50&length_mm=500&family=B&family=TR-C45"
     inputs = ApplicationIn(load_n=0.1, speed_mm_s=5, length_mm=90, motor=" ANY")

@@ -6,8 +6,9 @@ from urllib.parse import parse_qsl
 import pytest
 from fastapi.testclient import TestClient
 
-from app.contract.form import parse_inputs, parse_units, share_query
+from app.contract.form import parse_inputs, parse_units
 from app.contract.inputs import ApplicationIn
+from app.contract.share_link import share_query
 from tests.motor_library import MOTORS
 
 #: A printer's Z axis (Tr8x8(P2), 12 mm/s) with a stepper on a 4 kHz controller, 0.5 mm

@@ -5,8 +5,9 @@ from urllib.parse import parse_qsl
 import pytest
 from fastapi.testclient import TestClient
 
-from app.contract.form import parse_inputs, parse_units, share_query
+from app.contract.form import parse_inputs, parse_units
 from app.contract.inputs import ApplicationIn
+from app.contract.share_link import share_query
 from tests.motor_library import MOTORS
 
 BASE = {"load_n": 50.0, "speed_mm_s": 100.0, "length_mm": 500.0, "stroke_mm": 200.0}

@@ -12,8 +12,9 @@ from fastapi.testclient import TestClient
 
 from app.catalog import Catalog, CatalogError
 from app.catalog.motors import MAX_STEPPER_RPM, load_motors
-from app.contract.form import parse_inputs, parse_units, share_query
+from app.contract.form import parse_inputs, parse_units
 from app.contract.inputs import ApplicationIn
+from app.contract.share_link import share_query
 from app.core import segments
 from app.core.evaluate import evaluate
 from app.core.formulas import stepper

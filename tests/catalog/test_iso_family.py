@@ -12,8 +12,9 @@ import pytest
 from fastapi.testclient import TestClient
 
 from app.catalog import Catalog, load_catalog
-from app.contract.form import parse_inputs, parse_units, share_query
+from app.contract.form import parse_inputs, parse_units
 from app.contract.inputs import ApplicationIn
+from app.contract.share_link import share_query
 from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.robustness import at_values, robustness

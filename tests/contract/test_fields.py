@@ -26,10 +26,11 @@ import app.contract.sections
 from app.catalog import Catalog
 from app.contract.exact import link_number, page_value, read_number
 from app.contract.fields import BY_API, BY_PAGE, FIELDS
-from app.contract.form import parse_inputs, parse_units, share_query
+from app.contract.form import parse_inputs, parse_units
 from app.contract.input_field import GROUPS, InputField
 from app.contract.inputs import ApplicationIn
 from app.contract.move_table import ADD_MOVE, REMOVE_MOVE, is_cell
+from app.contract.share_link import share_query
 from app.contract.units import (
     ACCEL_UNITS,
     DEFAULT_UNITS,
