@@ -61,19 +61,24 @@ def hold_margins(
     """The power-off hold's margins (``efficiency.hold_margin``): the thread's alone, and
     the hold's: the thread's where it holds (``holds``), else the unpowered torque's
     (``unpowered_torque``) over ``needed_nm`` where one is given, else the thread's: the
-    margin of what holds, or would, as ``Record.holds_by`` names it (the larger of the two
-    read as the thread's 240× where a brake gave it, or as a 0.48× brake's 0.92×). NaN
-    where holding with the power off is not required or no load is held."""
+    margin of what holds, or would (the larger of the two read as the thread's 240× where
+    a brake gave it, or as a 0.48× brake's 0.92×), and ``hold_by_thread`` which it is (1:
+    the thread), which ``Record.holds_by`` names. NaN where holding with the power off is
+    not required or no load is held."""
     nan = filled(len(t), np.nan)
     if not (app.hold_power_off and motion.holds_a_load(app)):
-        return {"hold_thread_margin": nan, "hold_margin": nan}
+        return {"hold_thread_margin": nan, "hold_margin": nan, "hold_by_thread": nan}
     torque_nm = unpowered_torque(app)
     device = nan if torque_nm is None else filled(len(t), torque_nm)
     needed = np.where(needed_nm > 0.0, needed_nm, np.nan)
     thread = efficiency.hold_margin(max_lock_m, t.lead_m, nan, 1.0)
     unpowered = efficiency.hold_margin(nan, t.lead_m, device, needed)
     by_thread = holds(thread) | np.isnan(unpowered)
-    return {"hold_thread_margin": thread, "hold_margin": np.where(by_thread, thread, unpowered)}
+    return {
+        "hold_thread_margin": thread,
+        "hold_margin": np.where(by_thread, thread, unpowered),
+        "hold_by_thread": by_thread.astype(np.float64),
+    }
 
 
 #: The service factor on the torque a brake holds where no holding factor is given: a

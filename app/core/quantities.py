@@ -276,11 +276,14 @@ class PowerOffHold(Generic[V]):
     locks_with_margin: V
     max_self_locking_lead_with_margin_m: V
     #: Where it is required and a load is held (NaN otherwise): the thread's margin, the
-    #: longest lead that self-locks at f mu_s over the lead; and the hold's, the larger of
-    #: it and the unpowered torque (a brake's or the detent) over the torque needed
-    #: (``brake_needed_nm`` as if it did not lock). Each holds at 1 or more.
+    #: longest lead that self-locks at f mu_s over the lead; the hold's, the margin of the
+    #: means that holds or would (``holding.hold_margins``): the thread's where it holds or
+    #: nothing else is given, else the unpowered torque (a brake's or the detent) over the
+    #: torque needed (``brake_needed_nm`` as if it did not lock); and whether that means
+    #: is the thread (1) or not (0). Each margin holds at 1 or more.
     hold_thread_margin: V
     hold_margin: V
+    hold_by_thread: V
 
 
 @dataclass(slots=True)

@@ -286,10 +286,9 @@ class Candidate:
         friction margin (a brake beside it is then a second means), else the brake or the
         detent torque where one is given, else the thread (that does not hold); None where
         nothing is required or held."""
-        margin = self.hold_margin
-        if margin is None:
+        if self.hold_margin is None:
             return None
-        if margin == number(self.quantities.holding.hold_thread_margin):
+        if self.quantities.holding.hold_by_thread:
             return "thread"
         return "brake" if self.app.holding_source == "brake" else "detent"
 
