@@ -12,6 +12,7 @@ from typing import Any
 from app.catalog.entry import Entry, optional, sourced
 from app.catalog.family import Family, IdVariant
 from app.catalog.models import Ends, Sourced
+from app.core.dry_run import DRY
 from app.core.formulas import bearing, trapezoidal
 from app.core.model import Provenance
 from app.core.units import from_si, to_si
@@ -42,11 +43,9 @@ BEARING_VALUES = {
 }
 
 
-#: A nut rated lubricated (``lubricated_rating``) run dry: its running and static friction.
-DRY_FRICTION = {
-    "dry_friction_dynamic": ("dry_friction_dynamic", ""),
-    "dry_friction_static": ("dry_friction_static", ""),
-}
+#: A nut rated lubricated (``lubricated_rating``) run dry: its running and static friction
+#: (``dry_run.DRY``'s fields), read as the ranged values they are.
+DRY_FRICTION = {name: RANGED_VARIANT[name] for name in DRY.values()}
 
 
 #: A maker's allowable dynamic thrust of the nut by thread size, rows [d mm, P mm, N].

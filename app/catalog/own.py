@@ -16,6 +16,7 @@ from dataclasses import dataclass, field, replace
 from app.catalog.models import Ends, Material, Series, Sourced
 from app.catalog.nut_ratings import thrust_pressure
 from app.catalog.series import NOT_GIVEN
+from app.core.dry_run import DRY
 from app.core.formulas import geometry as thread_geometry
 from app.core.formulas import torque, trapezoidal
 from app.core.model import Provenance, ScrewSpec
@@ -65,7 +66,7 @@ NUT_VALUES = {
 
 
 #: The ScrewSpec values of a nut rated lubricated run dry (``NutMaterial``), ranged.
-DRY_FRICTION = ("dry_friction_dynamic", "dry_friction_static")
+DRY_FRICTION = tuple(DRY.values())
 
 
 #: The catalog's name of the ranged nut length over the screw's diameter.
