@@ -83,8 +83,8 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
     same formula call it would make per query: tan of the lead angle and the static
     friction at which the thread self-locks (``efficiency``), the seed's contact area of
     three threads (``pv``), the transition slenderness (``buckling``), the engaged flank
-    area at the catalog's nut length (``bearing``), the screw's endless fin conductance in
-    still air and the nut's outside diameter (``heat``), and the root section's and the
+    area at the catalog's nut length (``bearing``), the screw's endless fin conductance and fin
+    parameter in still air and the nut's outside diameter (``heat``), and the root section's and the
     shaft's own terms of the column, stress and whirl formulas (``buckling``,
     ``critical_speed``). What follows from the friction is ``friction_columns``'s."""
     tan_l = np.tan(c["lead_angle_rad"])
@@ -92,9 +92,8 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
     with np.errstate(invalid="ignore", divide="ignore"):
         transition = buckling.transition_slenderness(e, c["yield_strength_pa"])
         wave, gyration = critical_speed.shaft_terms(d_r, e, c["density_kg_m3"])
-    fin = heat.fin_conductance(
-        c["root_diameter_m"], c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
-    )
+    k, h = c["thermal_conductivity_w_m_k"], heat.FREE_CONVECTION_W_M2_K
+    fin = heat.fin_conductance(d_r, k, h)
     nut_d = heat.NUT_OUTER_TO_D * c["outer_diameter_m"]
     flanks = bearing.engaged_flank_area(
         c["nut_length_m"], c["pitch_m"], c["flank_pitch_diameter_m"], c["flank_height_m"]
@@ -106,6 +105,7 @@ def axis_free(c: dict[str, Array]) -> dict[str, Any]:
         "transition_slenderness": transition,
         "catalog_flank_area_m2": np.asarray(flanks, dtype=np.float64),
         "fin_conductance_w_k": fin,
+        "fin_m_per_m": heat.fin_parameter(d_r, k, h),
         "nut_outer_diameter_m": nut_d,
         "root_area_m2": buckling.root_area(d_r),
         "root_second_moment_m4": buckling.second_moment_round(d_r),

@@ -54,13 +54,13 @@ def stroke_span_m(app: Application) -> float:
 
 def screw_fins(app: Application, t: CandidateTable, nut_m: Array) -> Array:
     """The screw's conductance both ways from the nut [W/K]: two fins of its root (the
-    endless fin's conductance in still air, a catalog column, ``heat.fin_conductance``),
+    endless fin's conductance and the fin parameter in still air, catalog columns,
+    ``heat.fin_conductance``, ``heat.fin_parameter``),
     each as long as the screw each side of the nut at the end of its stroke, centred on
     the screw (``heat.nut_sides_m``; the stroke, else the cycle's equivalent stroke), its
     far end taken as insulated (``heat.fin_share``)."""
     sides = heat.nut_sides_m(app.length_m, stroke_span_m(app), nut_m)
-    d_r, k, h = t.root_diameter_m, t.thermal_conductivity_w_m_k, heat.FREE_CONVECTION_W_M2_K
-    shares = heat.fin_share(sides[0], d_r, k, h) + heat.fin_share(sides[1], d_r, k, h)
+    shares = heat.fin_share(sides[0], t.fin_m_per_m) + heat.fin_share(sides[1], t.fin_m_per_m)
     return np.asarray(t.fin_conductance_w_k * shares, dtype=np.float64)
 
 

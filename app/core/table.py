@@ -318,14 +318,15 @@ class CandidateTable:
     #: the static friction at which the thread self-locks, the seed's contact area of
     #: three threads [m^2], the transition slenderness, the engaged flank area at the
     #: catalog's nut length [m^2] (NaN: no thread pitch or nut length), the screw's fin
-    #: conductance [W/K], the nut's outside diameter [m] and min(efficiency,
-    #: efficiency_static).
+    #: conductance [W/K] and fin parameter [1/m], the nut's outside diameter [m] and
+    #: min(efficiency, efficiency_static).
     tan_lead_angle: Array
     self_locking_friction: Array
     contact_area_m2: Array
     transition_slenderness: Array
     catalog_flank_area_m2: Array
     fin_conductance_w_k: Array
+    fin_m_per_m: Array
     nut_outer_diameter_m: Array
     root_efficiency: Array
     #: The root section's area [m^2], second moment [m^4] and pi d_r^3 [m^3]

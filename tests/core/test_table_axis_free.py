@@ -51,6 +51,7 @@ def test_each_axis_free_column_is_its_formula(table: CandidateTable) -> None:
         "fin_conductance_w_k": heat.fin_conductance(
             t.root_diameter_m, t.thermal_conductivity_w_m_k, h
         ),
+        "fin_m_per_m": heat.fin_parameter(t.root_diameter_m, t.thermal_conductivity_w_m_k, h),
         "nut_outer_diameter_m": heat.NUT_OUTER_TO_D * t.outer_diameter_m,
         "root_efficiency": np.minimum(t.efficiency, t.efficiency_static),
         "root_area_m2": buckling.root_area(t.root_diameter_m),
