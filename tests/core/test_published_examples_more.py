@@ -13,9 +13,8 @@ Fa1..Fa6 = 585, 510, 435, 395, 470, 545 N; T1 = 900 N mm (up, uniform), T2 = 830
 Tg1 = 700, Tk2 = 630, Tg2 = 1030 N mm; at rest with the work removed Ts = 658 N mm; over
 up 0.2/1.8/0.2 s, down 0.2/1.8/0.2 s and a 7.6 s stop, Trms = 743 N mm.
 
-Mott, Machine Elements in Mechanical Design, 4th ed., Example Problem 17-1, p. 703
-(https://fliphtml5.com/eraqv/nlwf/Machine_Elements_in_Mechanical_Design_%284th_Edition%29
-_%28_PDFDrive_%29/719): an Acme 1 1/2-4 screw, pitch diameter 1.3429 in, lead 0.250 in:
+Mott, Machine Elements in Mechanical Design, 4th ed. (Pearson, 2004), Example Problem 17-1,
+p. 703: an Acme 1 1/2-4 screw, pitch diameter 1.3429 in, lead 0.250 in:
 lead angle 3.39 deg, tan 0.0592.
 """
 
