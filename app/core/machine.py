@@ -28,7 +28,7 @@ from app.core.formulas import geometry, stacking
 from app.core.index import CatalogIndex
 from app.core.model import STANDARD_GRAVITY_M_S2, Application, AxisProvenance, Provenance
 from app.core.record import Candidate
-from app.core.selection import Selection, select
+from app.core.selection import Selection, select, with_robustness
 
 #: Where an axis's motor mass comes from: typed in (``Axis.motor_kg``), the library
 #: motor's published mass (``Axis.library_motor``), or neither (0 kg).
@@ -120,9 +120,11 @@ def screw_mass(app: Application, chosen: Candidate) -> float:
 
 
 def _chosen(app: Application, index: CatalogIndex, sel: Selection, axis: Axis) -> Candidate | None:
-    """The chosen screw's candidate: the named one (evaluated alone when it is not among
-    those returned), else the first-ranked; None when none passes. LookupError for a
-    name the catalog lacks."""
+    """The chosen screw's candidate: the named one, else the first-ranked; None when none
+    passes. LookupError for a name the catalog lacks. A named screw not among those
+    returned is evaluated alone and, when it passes, screened at the ends of its ranged
+    values as the returned ones are (``selection.with_robustness``, as the single screw's
+    evaluation does): a marginal screw is said to hinge on the values that fail it."""
     choice = axis.choice
     if choice is None:
         return sel.candidates[0] if sel.candidates else None
@@ -131,7 +133,10 @@ def _chosen(app: Application, index: CatalogIndex, sel: Selection, axis: Axis) -
             return c
     if choice not in index.positions:
         raise LookupError(choice)
-    return evaluate(app, index.row(index.positions[choice]), index.table.reach, axis.provenance)
+    position = index.positions[choice]
+    alone = evaluate(app, index.row(position), index.table.reach, axis.provenance)
+    variants, (at,) = index.variants_at([position])
+    return with_robustness(app, alone, variants, at)
 
 
 def carrying(app: Application, carried_kg: float) -> Application:
