@@ -491,3 +491,6 @@ BY_PAGE = {field.page: field for field in FIELDS}
 #: The moving mass's field: a machine adds the axes an axis carries to it
 #: (``app.report.machine``).
 MOVING_MASS = BY_API["moving_mass_kg"]
+#: The load and its direction: a machine adds to them the loads the vertical axes above a
+#: vertical axis stand on its nut (``app.report.machine``).
+LOAD, LOAD_DIRECTION = BY_API["load_n"], BY_API["load_direction"]

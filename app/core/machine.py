@@ -12,9 +12,12 @@ moving mass of the axes below; their rotary inertia matters only to their own mo
 
 Each axis is taken to move at right angles to the axes it carries: their own thrust (their
 m a and their load) goes into its guides, not its screw. Only two vertical axes are known
-to be parallel: the thrust a vertical axis above exerts beyond its weight reaches the nut
-of a vertical axis below it whenever the two move together (``parallel_thrust``); the
-answer gives it, and the sizing leaves it out (the axes moved one at a time).
+to be parallel. A load that acts one way on a vertical axis above (a weight, spring or
+press: ``standing_load_n``) reaches the nut of a vertical axis below it whether either
+moves or not, so the lower one is sized with it (``with_standing_load``). The thrust
+beyond that and the weight (the upper axis's m a, a load that opposes its motion) reaches
+the lower nut whenever the two move together (``parallel_thrust``); the answer gives it,
+and the sizing leaves it out (the axes moved one at a time).
 """
 
 from collections.abc import Sequence
@@ -26,7 +29,13 @@ from app.core.changes import Ranges, Words
 from app.core.evaluate import evaluate
 from app.core.formulas import geometry, stacking
 from app.core.index import CatalogIndex
-from app.core.model import STANDARD_GRAVITY_M_S2, Application, AxisProvenance, Provenance
+from app.core.model import (
+    STANDARD_GRAVITY_M_S2,
+    Application,
+    AxisProvenance,
+    Move,
+    Provenance,
+)
 from app.core.record import Candidate
 from app.core.selection import Selection, select, with_robustness
 
@@ -84,8 +93,10 @@ class AxisResult:
     axes above whose screw that mass leaves out (none chosen there: its mass is not
     known until one is), the vertical axes above a vertical one (parallel to it), and
     the thrust beyond their weight they pass to its nut when they move with it [N]
-    (``parallel_thrust``; not in its sizing), and its motor's mass in that total [kg]
-    with where it comes from (``motor_mass``)."""
+    (``parallel_thrust``; not in its sizing), its motor's mass in that total [kg]
+    with where it comes from (``motor_mass``), and the load the parallel axes above
+    stand on its nut whether they move or not, in its sizing [N] (``standing_load_n``;
+    0 where its own load opposes the motion and cannot take it: then in the thrust)."""
 
     axis: Axis
     app: Application
@@ -98,6 +109,7 @@ class AxisResult:
     parallel: tuple[str, ...] = ()
     parallel_thrust_n: float = 0.0
     motor_kg: float = 0.0
+    standing_load_n: float = 0.0
     motor_origin: MotorMassOrigin = "none"
 
 
@@ -146,6 +158,43 @@ def carrying(app: Application, carried_kg: float) -> Application:
     return replace(app, moving_mass_kg=app.moving_mass_kg + carried_kg, moves=moves)
 
 
+def standing_load_n(app: Application) -> float:
+    """The load [N] a vertical axis stands on the nut of a vertical axis carrying it,
+    whether either moves or not: the largest load of its moves that acts one way, against
+    the up move (``motion.load_sense``: a weight, spring or press); 0 on a horizontal
+    axis, whose loads go into the guides of the axis below."""
+    if app.orientation != "vertical":
+        return 0.0
+    return max((m.load_n * motion.load_sense(app, m)[0] for m in motion.cycle(app)), default=0.0)
+
+
+def _one_way(app: Application, move: Move | None = None) -> bool:
+    """Whether the load of ``app`` (of ``move``) can take one acting one way: it acts so
+    itself, or it is nil."""
+    load = app.load_n if move is None else move.load_n
+    return load == 0.0 or motion.load_sense(app, move)[0] == 1.0
+
+
+def with_standing_load(app: Application, load_n: float) -> Application | None:
+    """``app`` (vertical) with ``load_n`` [N] more load acting one way, against its up
+    move (``standing_load_n`` of the axes above), in its scalar load and in each move's:
+    the sum where its own acts one way, ``load_n`` alone that way where its own is nil.
+    None where its load (or one move's) opposes the motion both ways, which one load
+    acting one way cannot join: the answer then reports it in the thrust."""
+    if not (_one_way(app) and all(_one_way(app, m) for m in app.moves)):
+        return None
+    moves = tuple(replace(m, load_n=m.load_n + load_n, load_direction="fixed") for m in app.moves)
+    return replace(app, load_n=app.load_n + load_n, load_direction="fixed", moves=moves)
+
+
+def without_standing_load(app: Application) -> Application:
+    """``app`` without its loads that act one way (``standing_load_n``): what is left of
+    its thrust beyond its weight is its m a and a load that opposes its motion."""
+    moves = tuple(replace(m, load_n=0.0) if motion.load_sense(app, m)[0] else m for m in app.moves)
+    still = motion.load_sense(app)[0] == 1.0
+    return replace(app, load_n=0.0 if still else app.load_n, moves=moves)
+
+
 def size_axis(
     axis: Axis,
     carried_kg: float,
@@ -153,10 +202,17 @@ def size_axis(
     ranges: Ranges,
     words: Words,
     uncounted: tuple[str, ...] = (),
+    standing_n: float = 0.0,
 ) -> AxisResult:
     """One axis with ``carried_kg`` of upper axes added to its moving mass, which leaves
-    out the screws of the axes ``uncounted`` (none chosen there)."""
+    out the screws of the axes ``uncounted`` (none chosen there), and, when it is
+    vertical, the load ``standing_n`` [N] the vertical axes above stand on its nut added
+    to its own (``with_standing_load``; left out where its own opposes the motion)."""
     app = carrying(axis.app, carried_kg)
+    loaded = None
+    if standing_n > 0.0 and app.orientation == "vertical":
+        loaded = with_standing_load(app, standing_n)
+    app = app if loaded is None else loaded
     sel = select(app, index, ranges, words, axis.provenance)
     chosen = _chosen(app, index, sel, axis)
     screw_kg = 0.0 if chosen is None else screw_mass(app, chosen)
@@ -173,6 +229,7 @@ def size_axis(
         uncounted,
         motor_kg=motor_kg,
         motor_origin=origin,
+        standing_load_n=0.0 if loaded is None else standing_n,
     )
 
 
@@ -187,28 +244,33 @@ def own_thrust(app: Application) -> float:
 
 
 def parallel_thrust(
-    results: Sequence[AxisResult], app: Application
+    results: Sequence[AxisResult], lower: AxisResult
 ) -> tuple[tuple[str, ...], float]:
-    """The vertical axes among ``results`` (the axes above) when ``app`` is vertical too,
-    and the sum of their ``own_thrust`` [N]: each one's thrust beyond its weight reaches
-    the nut below when they move together (none: ``((), 0.0)``)."""
-    if app.orientation != "vertical":
+    """The vertical axes among ``results`` (the axes above) when ``lower`` is vertical
+    too, and the sum of their ``own_thrust`` [N]: each one's thrust beyond its weight
+    reaches the nut below when they move together, beyond their standing loads where
+    ``lower`` is sized with them (``without_standing_load``) (none: ``((), 0.0)``)."""
+    if lower.app.orientation != "vertical":
         return (), 0.0
     above = [r for r in results if r.app.orientation == "vertical"]
-    return tuple(r.axis.name for r in above), sum(own_thrust(r.app) for r in above)
+    carried = lower.standing_load_n > 0.0
+    thrust = sum(own_thrust(without_standing_load(r.app) if carried else r.app) for r in above)
+    return tuple(r.axis.name for r in above), thrust
 
 
 def size_machine(
     axes: Sequence[Axis], index: CatalogIndex, ranges: Ranges, words: Words
 ) -> Machine:
-    """Size ``axes`` (top first): each with the total mass of the axis above it, and the
-    thrust the parallel axes above pass to it (``parallel_thrust``)."""
+    """Size ``axes`` (top first): each with the total mass of the axis above it and the
+    standing loads of the vertical axes above (``standing_load_n``), and the thrust the
+    parallel axes above pass to it when they move together (``parallel_thrust``)."""
     results: list[AxisResult] = []
     carried = 0.0
     uncounted: tuple[str, ...] = ()
     for axis in axes:
-        result = size_axis(axis, carried, index, ranges, words, uncounted)
-        parallel, thrust = parallel_thrust(results, result.app)
+        standing = sum(standing_load_n(r.axis.app) for r in results)
+        result = size_axis(axis, carried, index, ranges, words, uncounted, standing)
+        parallel, thrust = parallel_thrust(results, result)
         result = replace(result, parallel=parallel, parallel_thrust_n=thrust)
         results.append(result)
         carried = result.total_kg

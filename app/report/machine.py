@@ -7,7 +7,7 @@ from app.catalog import Catalog
 from app.catalog.axis_motor import library_motor_mass
 from app.catalog.motors import UndrivableMotor, UnknownMotor
 from app.catalog.supports import UnknownSupport
-from app.contract.fields import MOVING_MASS
+from app.contract.fields import LOAD, LOAD_DIRECTION, MOVING_MASS
 from app.contract.machine import MachineIn
 from app.contract.reported import REPORTED
 from app.contract.share_link import share_query
@@ -69,16 +69,27 @@ def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
     return axes
 
 
+def _sized(given: Any, r: AxisResult) -> Any:
+    """The axis's inputs (or one move's) as it was sized: the mass of the axes above
+    added to its moving mass and, where it is sized with it, their standing load to its
+    load, acting down (``app.core.machine.with_standing_load``)."""
+    update: dict[str, Any] = {MOVING_MASS.api: getattr(given, MOVING_MASS.api) + r.carried_kg}
+    if r.standing_load_n > 0.0:
+        update[LOAD.api] = getattr(given, LOAD.api) + r.standing_load_n
+        update[LOAD_DIRECTION.api] = "fixed"
+    return given.model_copy(update=update)
+
+
 def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
-    given, mass = body.axes[i].inputs, MOVING_MASS.api
-    moves = [m.model_copy(update={mass: getattr(m, mass) + r.carried_kg}) for m in given.moves]
-    inputs = given.model_copy(update={mass: getattr(given, mass) + r.carried_kg, "moves": moves})
+    given = body.axes[i].inputs
+    inputs = _sized(given, r).model_copy(update={"moves": [_sized(m, r) for m in given.moves]})
     return {
         "name": r.axis.name,
         "carried_kg": r.carried_kg,
         "uncounted": list(r.uncounted),
         "parallel": list(r.parallel),
         "parallel_thrust_n": r.parallel_thrust_n,
+        "standing_load_n": r.standing_load_n,
         "sized_mass_kg": motion.heaviest_mass(r.app),
         "screw_kg": None if r.chosen is None else r.screw_kg,
         **motor_mass_json(r),

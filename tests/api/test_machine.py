@@ -162,3 +162,25 @@ def test_a_vertical_axis_under_a_vertical_one_is_told_the_thrust_it_leaves_out(
     assert low["parallel"] == ["Z"] and low["parallel_thrust_n"] == pytest.approx(0.1, rel=1e-12)
     x = client.post("/api/v1/machine", json=printer()).json()["axes"][1]
     assert (x["parallel"], x["parallel_thrust_n"]) == ([], 0.0)
+
+
+def test_a_vertical_lift_is_sized_and_linked_with_the_load_standing_on_it(
+    client: TestClient,
+) -> None:
+    """Z (vertical, a 100 N load acting as a weight) on a vertical lift L: Z's load stands
+    on L's nut whether either moves, so L is sized and linked with 100 N acting down on
+    top of the mass it carries; what Z passes beyond that when both move is its m a,
+    0.5 kg x 0.2 m/s^2 = 0.1 N. L answers as the single axis of those inputs does."""
+    lift = {**Z, "moving_mass_kg": 0.2, "lead_mm": None}
+    body = {"axes": [{"name": "Z", "inputs": {**Z, "load_n": 100}}, {"name": "L", "inputs": lift}]}
+    z, low = client.post("/api/v1/machine", json=body).json()["axes"]
+    assert z["standing_load_n"] == 0.0 and low["standing_load_n"] == 100.0
+    assert low["parallel_thrust_n"] == pytest.approx(0.1, rel=1e-9)
+    alone = {**lift, "moving_mass_kg": low["sized_mass_kg"], "load_n": 100}
+    alone["load_direction"] = "fixed"
+    single = client.post("/api/v1/select", json=alone).json()["candidates"][0]
+    assert single["id"] == low["chosen"]["id"]
+    assert single["torque"] == low["chosen"]["torque"]
+    assert "load=100" in low["share_url"] and "load_direction=fixed" in low["share_url"]
+    page = client.get(low["share_url"])
+    assert page.status_code == 200 and low["chosen"]["id"] in page.text

@@ -135,21 +135,75 @@ def test_a_vertical_axis_above_a_vertical_one_passes_its_thrust_beyond_its_weigh
 ) -> None:
     """Z (vertical, 0.5 kg, 0.2 m/s^2, a 5 N load down) rides on X (horizontal), which
     rides on V (vertical): Z's thrust reaches V's nut through X's guides and frame, as
-    parallel to V. Z's nut force accelerating up 0.5 (9.80665 + 0.2) + 5 = 10.00333 N,
-    its weight 0.5 x 9.80665 = 4.90333 N, so E = 0.5 x 0.2 + 5 = 5.1 N (decelerating
-    up: 0.5 (9.80665 - 0.2) + 5 - 4.90333 = 4.9 N, less). X, horizontal, takes Z's
-    thrust in its guides: nothing parallel, 0 N. V is sized with Z's and X's mass only."""
+    parallel to V. Its 5 N load acts one way (a weight: "auto" on a vertical axis), so it
+    stands on V's nut whether either moves: V is sized with it. What is left beyond Z's
+    weight and that load: its m a, 0.5 x 0.2 = 0.1 N, when both move. X, horizontal,
+    takes Z's thrust in its guides: nothing parallel, 0 N, no load added."""
     axes = [
         Axis("Z", replace(Z, load_n=5.0), frame_kg=0.3, motor_kg=0.4),
         Axis("X", X, frame_kg=0.5, motor_kg=0.4),
         Axis("V", replace(Z, moving_mass_kg=0.2, lead_m=None, brake_torque_nm=None)),
     ]
     z, x, v = size_machine(axes, catalog.index, {}, {}).axes
-    assert (z.parallel, z.parallel_thrust_n) == ((), 0.0)
-    assert (x.parallel, x.parallel_thrust_n) == ((), 0.0)
+    assert (z.parallel, z.parallel_thrust_n, z.standing_load_n) == ((), 0.0, 0.0)
+    assert (x.parallel, x.parallel_thrust_n, x.standing_load_n) == ((), 0.0, 0.0)
+    assert x.app.load_n == 0.0
     assert v.parallel == ("Z",)
-    assert v.parallel_thrust_n == pytest.approx(5.1, rel=1e-12)
-    assert v.app.load_n == 0.0 and v.app.moving_mass_kg == pytest.approx(0.2 + x.total_kg)
+    assert v.parallel_thrust_n == pytest.approx(0.1, rel=1e-12)
+    assert (v.standing_load_n, v.app.load_n, v.app.load_direction) == (5.0, 5.0, "fixed")
+    assert v.app.moving_mass_kg == pytest.approx(0.2 + x.total_kg)
+
+
+def test_a_load_on_a_vertical_axis_stands_on_the_vertical_axis_below(catalog: Catalog) -> None:
+    """Z (vertical, 0.5 kg, a 100 N load down) on a vertical lift W: the 100 N reaches
+    W's nut whether Z moves or not, so W is the single axis with Z's whole mass carried
+    and a 100 N load acting down. W's nut holds (0.2 + carried) g + 100 N at rest, not
+    (0.2 + carried) g: its first-ranked screw, its torque and its holding are those of
+    that single axis."""
+    w = replace(Z, moving_mass_kg=0.2, lead_m=None, brake_torque_nm=None)
+    axes = [Axis("Z", replace(Z, load_n=100.0), 0.3, 0.4), Axis("W", w)]
+    _, low = size_machine(axes, catalog.index, {}, {}).axes
+    alone_app = replace(
+        w, moving_mass_kg=0.2 + low.carried_kg, load_n=100.0, load_direction="fixed"
+    )
+    alone = select(alone_app, catalog.index)
+    assert low.app == alone_app and low.standing_load_n == 100.0
+    assert low.chosen is not None
+    assert low.chosen.screw.id == alone.candidates[0].screw.id
+    held = (0.2 + low.carried_kg) * STANDARD_GRAVITY_M_S2 + 100.0
+    assert low.chosen.quantities.axis.holding_force_n == pytest.approx(held, rel=1e-12)
+    assert low.chosen.quantities.torque.total_nm == alone.candidates[0].quantities.torque.total_nm
+    # without it, the lift was sized for its weight alone: half the torque or less
+    bare = select(replace(alone_app, load_n=0.0), catalog.index).candidates[0]
+    assert bare.quantities.torque.total_nm < 0.6 * low.chosen.quantities.torque.total_nm
+
+
+def test_a_lower_load_that_opposes_the_motion_cannot_take_a_standing_one(
+    catalog: Catalog,
+) -> None:
+    """W's own 20 N opposes its motion both ways: one load cannot act both so and one
+    way, so W keeps its own and the answer gives Z's 100 N standing load with its m a in
+    the thrust it leaves out: 100 + 0.5 x 0.2 = 100.1 N."""
+    w = replace(Z, moving_mass_kg=0.2, lead_m=None, brake_torque_nm=None, load_n=20.0)
+    w = replace(w, load_direction="opposes")
+    axes = [Axis("Z", replace(Z, load_n=100.0), 0.3, 0.4), Axis("W", w)]
+    _, low = size_machine(axes, catalog.index, {}, {}).axes
+    assert (low.standing_load_n, low.app.load_n, low.app.load_direction) == (0.0, 20.0, "opposes")
+    assert low.parallel_thrust_n == pytest.approx(100.1, rel=1e-12)
+
+
+def test_each_move_of_a_lower_vertical_cycle_takes_the_standing_load(catalog: Catalog) -> None:
+    """W given as moves (up with nothing, down with its own 30 N weight-like load): each
+    move takes Z's 100 N acting down, the unloaded one as a load of that direction."""
+    up = Move(0.1, 0.01, 0.2, 0.2, moving_mass_kg=0.2, load_direction="opposes")
+    down = Move(-0.1, 0.01, 0.2, 0.2, moving_mass_kg=0.2, load_n=30.0)
+    w = replace(Z, lead_m=None, brake_torque_nm=None, moves=(up, down))
+    axes = [Axis("Z", replace(Z, load_n=100.0), 0.3, 0.4), Axis("W", w)]
+    _, low = size_machine(axes, catalog.index, {}, {}).axes
+    assert [(m.load_n, m.load_direction) for m in low.app.moves] == [
+        (100.0, "fixed"),
+        (130.0, "fixed"),
+    ]
 
 
 def test_two_vertical_axes_above_sum_their_thrust(catalog: Catalog) -> None:

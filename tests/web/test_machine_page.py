@@ -131,3 +131,20 @@ def test_two_axes_of_one_name_are_said_on_the_form(client: TestClient) -> None:
     assert 'id="e-form"' in page.text and "each axis needs a name of its own" in page.text
     nan = client.get("/machine?" + urlencode({**AXES, "frame1": "nan"}))
     assert nan.status_code == 422 and 'id="e-frame1"' in nan.text
+
+
+def test_a_vertical_axis_below_says_it_carries_the_load_standing_on_it(
+    client: TestClient,
+) -> None:
+    """Z (vertical, 100 N acting as a weight) on a vertical lift: the lift's row says Z's
+    load stands in its load, and gives the 0.1 N of Z's m a it leaves out."""
+    z = "/?" + machine_axes.page_query({**machine_axes.Z, "load_n": 100})
+    own = {k: v for k, v in machine_axes.Z.items() if k != "lead_mm"}
+    lift = machine_axes.page_query({**own, "moving_mass_kg": 0.2})
+    page = client.get(
+        "/machine?" + urlencode({"name1": "Z", "link1": z, "name2": "L", "link2": lift})
+    )
+    assert page.status_code == 200
+    text = re.sub(r"\s+", " ", re.sub("<[^>]+>", " ", page.text))
+    assert "Z above is vertical as this axis: its standing load, 100 N down, is in this" in text
+    assert "up to 0.1 N beyond its weight and that load to this nut" in text
