@@ -164,14 +164,16 @@ DRIVE_VALUES = (
 
 def library_motor_mass(app: Application, motors: Mapping[str, Motor]) -> LibraryMotorMass | None:
     """The published mass of the library motor ``app`` names (``with_motor``'s
-    application: its ``motor`` is the library's id), with its provenance, for the machine
-    to count on the axis below; None without a library motor (none, or "any") or where
-    the library gives no mass."""
+    application: its ``motor`` is the library's id), at the top of its range where the
+    library gives one (``Motor.heaviest_kg``), with its provenance, for the machine to
+    count on the axis below; None without a library motor (none, or "any") or where the
+    library gives no mass."""
     motor = motors.get(app.motor) if app.motor is not None else None
     mass = None if motor is None else motor.mass()
-    if motor is None or mass is None:
+    heaviest = None if motor is None else motor.heaviest_kg()
+    if motor is None or mass is None or heaviest is None:
         return None
-    return LibraryMotorMass(motor.id, float(mass.value), mass.provenance)
+    return LibraryMotorMass(motor.id, heaviest, mass.provenance)
 
 
 def drive_retyped(app: Application, motor: Motor) -> bool:

@@ -7,7 +7,7 @@ published one, or the stepper or servo model's), and the ids the inputs may name
 """
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 from itertools import pairwise
 from pathlib import Path
@@ -143,6 +143,8 @@ class Motor:
     frame: str
     values: Mapping[str, Sourced]
     kind: str = "stepper"
+    #: the high end of each value given with a range, by name (SI)
+    tops: Mapping[str, float] = field(default_factory=dict)
 
     def value(self, name: str) -> float:
         number: float = self.values[name].value
@@ -198,6 +200,13 @@ class Motor:
         """The motor's published mass [kg] with its provenance; None where the library
         gives none."""
         return self.values.get("mass_kg")
+
+    def heaviest_kg(self) -> float | None:
+        """The motor's mass at the top of its range where the library gives one, else its
+        mass [kg]: what an axis carrying it counts (the heavier the safer side there);
+        None where the library gives none."""
+        mass = self.mass()
+        return None if mass is None else self.tops.get("mass_kg", float(mass.value))
 
     def continuous_torque_nm(self) -> float | None:
         """A servo's rated (S1) torque, the limit of the cycle's RMS torque; None for a
@@ -281,7 +290,7 @@ def _motor(file: str, motor_id: str, data: Any) -> Motor:
     for name in PLAIN - {"kind"}:
         if not isinstance(data.get(name), str) or not data[name].strip():
             raise entry.fail(name, "missing or not text")
-    values = {}
+    values, tops = {}, {}
     given = {n: u for n, u in OPTIONAL[kind].items() if n in data and n != CURVE}
     if CURVE in data:
         values[CURVE] = Sourced(_curve(entry), SI_UNITS[CURVE], entry.prov(CURVE))
@@ -289,7 +298,10 @@ def _motor(file: str, motor_id: str, data: Any) -> Motor:
         number = entry.number(name, allow_zero=name in MAY_BE_ZERO)
         value = to_si(number, unit) if unit else number
         values[name] = Sourced(value, SI_UNITS[name], entry.prov(name))
-    motor = Motor(motor_id, data["name"], data["frame"], values, kind)
+        ends = entry.ends(name)
+        if ends is not None:
+            tops[name] = to_si(ends[1], unit) if unit else ends[1]
+    motor = Motor(motor_id, data["name"], data["frame"], values, kind, tops)
     if kind == "servo":
         _check_servo(entry, motor)
     elif motor.corner_rpm() <= 0.0:

@@ -135,7 +135,8 @@ MachineAxisOut = create_model(
         float,
         Field(
             description="Its motor's mass in total_kg [kg]: motor_kg as typed, else the "
-            "published mass of the library motor it names (motor_mass_origin), else 0."
+            "published mass of the library motor it names, at the top of its range where "
+            "the library gives one (motor_mass_origin), else 0."
         ),
     ),
     motor_mass_origin=(

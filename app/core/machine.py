@@ -47,7 +47,8 @@ MotorMassOrigin = Literal["typed", "library", "none"]
 @dataclass(frozen=True, slots=True)
 class LibraryMotorMass:
     """The published mass of the library motor an axis names: the motor's id, its mass
-    [kg] and where that value comes from."""
+    [kg] (the top of its range where the library gives one: the safe side for the axis
+    that carries it) and where that value comes from."""
 
     motor: str
     mass_kg: float
