@@ -21,7 +21,12 @@ class AxisIn(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
     name: str = Field(
-        min_length=1, max_length=40, description="The axis's name, e.g. Z.", examples=["Z"]
+        min_length=1,
+        max_length=40,
+        pattern=r"\S",
+        description="The axis's name, e.g. Z: not blank, since the answer names the "
+        "governing axis by it.",
+        examples=["Z"],
     )
     inputs: ApplicationIn = Field(
         description="The axis as the select call takes it; its moving mass is its own "

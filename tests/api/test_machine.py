@@ -139,6 +139,10 @@ def test_a_machines_own_bad_values_are_named_by_axis(client: TestClient) -> None
     r = client.post("/api/v1/machine", json=twice)
     assert r.status_code == 422 and r.json()["detail"][0]["field"] == "axes"
     assert "Z, z repeats" in r.json()["detail"][0]["message"]
+    blank = printer()
+    blank["axes"][1]["name"] = "  "
+    r = client.post("/api/v1/machine", json=blank)
+    assert r.status_code == 422 and r.json()["detail"][0]["field"] == "axes.1.name"
 
 
 def test_an_empty_choice_is_the_first_ranked_as_on_the_page(client: TestClient) -> None:
