@@ -97,9 +97,10 @@ class MoveIn(BaseModel):
     )
     load_direction: LoadDirection = Field(
         default="auto",
-        description="How the load acts, as the scalar load_direction: auto (a weight when "
-        "vertical, against the motion when horizontal), opposes (against the motion), "
-        "fixed (against the up or out move).",
+        description="How the load acts, as the scalar load_direction: auto (down when "
+        "vertical, as a weight acts, against the motion when horizontal), opposes "
+        "(against the motion), fixed (against the up or out move). A load has no mass: a "
+        "payload's mass goes in moving_mass_kg.",
     )
 
     @field_validator("distance_mm")

@@ -34,12 +34,12 @@ from app.core.model import (
 FIELDS: tuple[InputField, ...] = (
     InputField(
         api="load_n", page="load", core="load_n", label="Axial load",
-        help="External axial force on the nut; 0 for a pure-inertia axis", group="Axis",
+        help="External axial force; a payload's mass goes in Moving mass", group="Axis",
         kind="number", required=True, bounds=(0.0, 1e6), dimension="force",
     ),
     InputField(
         api="load_direction", page="load_direction", core="load_direction",
-        label="Load direction", help="Automatic: a weight if vertical, else opposing",
+        label="Load direction", help="Automatic: down if vertical, else opposing",
         group="Axis", kind="choice", default="auto", options=LoadDirection,
         texts={"auto": "Automatic", "opposes": "Opposes move", "fixed": "Down (in)"},
     ),
