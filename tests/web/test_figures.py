@@ -4,6 +4,7 @@ import json
 import math
 from typing import Any
 
+import numpy as np
 import plotly.graph_objects as go
 import pytest
 
@@ -284,7 +285,9 @@ def test_motor_and_move_charts_follow_the_segments(catalog: Catalog) -> None:
     moving = [s for s in top.segments if s.name != "dwell"]
     points = motor["data"][1]
     assert points["name"] == top.id
-    assert points["y"] == pytest.approx([abs(s.torque_nm) * 1.5 for s in moving])
+    demands = [abs(s.torque_nm) for s in moving] + [top.torque.breakaway_nm]
+    assert points["x"] == [s.rpm for s in moving] + [0.0]
+    assert points["y"] == pytest.approx([t * 1.5 for t in demands])
     times = move["data"][0]["x"]
     assert times[-1] == pytest.approx(top.profile.cycle_time_s)
     constant = next(i for i, s in enumerate(top.segments) if s.name == "constant")
@@ -442,3 +445,40 @@ def test_a_servos_continuous_zone_is_drawn_beside_its_peak_envelope(catalog: Cat
     (rated,) = lines["rated"]
     assert (rated["x"], rated["y"]) == ([0.0, 3000.0], pytest.approx([0.3, 0.3]))
     assert lines["curve alone"] == []
+
+
+def test_the_motor_chart_draws_the_break_away_the_check_holds_to_the_curve(
+    catalog: Catalog,
+) -> None:
+    """A bronze ISO nut lifting 150 N and 10 kg at 20 mm/s on the STEPPERONLINE
+    23HS32-4004S (its published 48 V curve: 1.841 N m held from standstill to 90 rpm,
+    1.729 N m at 390 and 1.498 N m at 510 rpm; usable over the 1.5 torque margin). The
+    top screw, Tr14x3-bronze, turns at 400 rpm: its largest moving segment, accelerating
+    up, needs 0.4044 N m against 1.709 / 1.5 = 1.1398 N m there (35.5 %), but starting
+    from rest the oiled bronze thread is at its static friction: 0.4550 N m against
+    1.841 / 1.5 = 1.2273 N m at standstill, 37.1 %, the motor-curve check's utilization
+    and the results' peak torque ('starting from rest'). The chart draws that point at
+    0 rpm, so its highest point against the usable line is the check's 37.1 %, not the
+    segments' 35.5 %."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 150, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 20,
+         "length_mm": 600, "accel_mm_s2": 500, "stroke_mm": 400, "cycles_per_day": 200,
+         "motor": "23hs32-4004s", "family": ["TR-304", "TR-C45"], "nut_material": "bronze",
+         "lubrication": "oiled"}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    data = result_figures(result, METRIC, catalog)["motor"]["data"]
+    usable = next(t for t in data if t["name"].startswith("Usable"))
+    for c in result.candidates[:TOP]:
+        points = next(t for t in data if t["name"] == c.id)
+        start = points["text"].index("start from rest")
+        assert (points["x"][start], points["y"][start]) == (0.0, c.torque.peak_motor_nm)
+        shares = [
+            y / float(np.interp(x, usable["x"], usable["y"]))
+            for x, y in zip(points["x"], points["y"], strict=True)
+        ]
+        assert max(shares) == pytest.approx(c.utilization["motor_curve"])
+    top = result.candidates[0]
+    assert top.id == "Tr14x3-bronze" and top.torque.peak_segment == "starting from rest"
+    assert top.torque.peak_motor_nm == pytest.approx(0.4550, abs=5e-5)
+    assert top.utilization["motor_curve"] == pytest.approx(0.3707, abs=5e-5)
