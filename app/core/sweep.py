@@ -15,17 +15,19 @@ from app.core.model import Application
 from app.core.nut import nut_allowed_pressures
 from app.core.quantities import Quantities, operating_point
 from app.core.screening import screen_table
+from app.core.selection import shown_torque
 from app.core.table import Array
 
 
 @dataclass(frozen=True, slots=True)
 class LeadPoint:
-    """One lead of a size and nut for an application: the drive torque [N m], the screw
-    speed as a share of the allowed speed and the PV as a share of its limit (None: no PV
-    limit)."""
+    """One lead of a size and nut for an application: the drive torque the results show
+    [N m] (``selection.shown_torque``: with a move, the peak of its segments and of the
+    break-away; without, the torque while accelerating), the screw speed as a share of
+    the allowed speed and the PV as a share of its limit (None: no PV limit)."""
 
     lead_m: float
-    total_nm: float
+    torque_nm: float
     speed_share: float
     pv_share: float | None
 
@@ -41,12 +43,12 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
     if rows is None:
         return []
     sc = screen_table(replace(app, lead_m=None), index.table.take(rows), rows)
-    q, pv_use = sc.quantities, sc.utilization.get("pv")
+    q, pv_use, torque_nm = sc.quantities, sc.utilization.get("pv"), shown_torque(sc)
     pv_applies = sc.measures["pv"].applicable if "pv" in sc.measures else None
     return [
         LeadPoint(
             lead_m=float(sc.table.lead_m[k]),
-            total_nm=float(q.torque.total_nm[k]),
+            torque_nm=float(torque_nm[k]),
             speed_share=float(q.axis.rpm[k] / q.column.allowed_rpm[k]),
             pv_share=None
             if pv_use is None or pv_applies is None or not pv_applies[k]
