@@ -118,15 +118,35 @@ def _operating(q: Quantities[Array], k: int) -> tuple[str, float, float] | None:
     return None
 
 
+def chart_speeds(
+    operating: Sequence[float], corners: Sequence[float], span: float, points: int
+) -> Array:
+    """The sliding speeds [m/s] the pressure limits are drawn at: ``points`` spaced evenly
+    in log from the lowest ``operating`` speed over ``span`` to the highest times
+    ``span``, and, between those ends, each operating speed and each row speed of the
+    nuts' pressure-speed tables (``corners``). A chart joins its points with straight
+    lines: with the table's corners among them, no line cuts above a corner where the
+    table turns flat, and the line at each operating speed is the check's limit there.
+
+    >>> chart_speeds([0.1], [0.05, 0.25, 2.0], 10.0, 3).tolist()
+    [0.01, 0.05, 0.1, 0.25, 1.0]
+    """
+    low, high = min(operating) / span, max(operating) * span
+    inside = [v for v in (*operating, *corners) if low < v < high]
+    speeds: Array = np.unique(np.concatenate([np.geomspace(low, high, points), inside]))
+    return speeds
+
+
 def pressure_limits(
     app: Application, index: CatalogIndex, ids: Sequence[str], span: float, points: int
 ) -> list[PressureLimit]:
     """The candidates ``ids`` whose nut has a pressure limit that moves with the sliding
-    speed, in the order given, each with the pressure it allows at the same ``points``
-    speeds, spaced evenly in log from the lowest operating sliding speed over ``span`` to
-    the highest times ``span`` (so nuts of one material draw one curve): the limits the
-    checks use (``nut_allowed_pressures`` for the flanks, PV_lim / v for the seed's PV),
-    derated as the checks derate them."""
+    speed, in the order given, each with the pressure it allows at the same speeds
+    (``chart_speeds``: ``points`` spaced evenly in log from the lowest operating sliding
+    speed over ``span`` to the highest times ``span``, with the operating speeds and the
+    tables' corners; so nuts of one material draw one curve): the limits the checks use
+    (``nut_allowed_pressures`` for the flanks, PV_lim / v for the seed's PV), derated as
+    the checks derate them."""
     rows = np.array([index.positions[i] for i in ids if i in index.positions], dtype=np.intp)
     if not rows.size:
         return []
@@ -135,7 +155,10 @@ def pressure_limits(
     if not found:
         return []
     operating_speeds = [speed for _, (_, speed, _) in found]
-    speeds = np.geomspace(min(operating_speeds) / span, max(operating_speeds) * span, points)
+    tables = {int(index.table.pressure_table[rows[k]]) for k, _ in found} - {-1}
+    corners = [v for i in tables for v, _ in index.table.pressure_tables[i]]
+    speeds = chart_speeds(operating_speeds, corners, span, points)
+    points = len(speeds)
     out = []
     for k, (check, speed, pressure) in found:
         position = int(rows[k])
