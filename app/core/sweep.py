@@ -61,12 +61,15 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
 @dataclass(frozen=True, slots=True)
 class WearPoint:
     """One wear-rated candidate at the cycle's wear thrust [N] (``motion.wear_thrust``):
-    its wear life in years of the duty (None without a duty) and in travel [m]."""
+    its wear life in years of the duty (None without a duty) and in travel [m], and the
+    seed's rated travel band [m] where the catalog gives one (None: no rating), which
+    caps the life the results show at any thrust (``sections.Life.travel_m``)."""
 
     id: str
     force_n: float
     life_years: float | None
     travel_m: float
+    rated_m: tuple[float, float] | None = None
 
 
 def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> list[WearPoint]:
@@ -87,7 +90,10 @@ def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> li
         if np.isfinite(travel) and force > 0.0:
             life = float(years) if np.isfinite(years) else None
             screw = index.table.screws[position]
-            points.append(WearPoint(screw.id, float(force), life, float(travel)))
+            rated = None
+            if screw.life_min_m is not None and screw.life_max_m is not None:
+                rated = (screw.life_min_m, screw.life_max_m)
+            points.append(WearPoint(screw.id, float(force), life, float(travel), rated))
     return points
 
 

@@ -482,3 +482,29 @@ def test_the_motor_chart_draws_the_break_away_the_check_holds_to_the_curve(
     assert top.id == "Tr14x3-bronze" and top.torque.peak_segment == "starting from rest"
     assert top.torque.peak_motor_nm == pytest.approx(0.4550, abs=5e-5)
     assert top.utilization["motor_curve"] == pytest.approx(0.3707, abs=5e-5)
+
+
+def test_a_rated_nuts_life_line_stays_within_the_results_band(catalog: Catalog) -> None:
+    """The seed rates its KHD nuts' travel and the results cap that rating by the wear
+    law at either end (``sections.Life.travel_m``). At 1 N and 0.1 kg, 2000 cycles a day
+    of a 200 mm stroke, the wear alone would give KHD6000-L8-TFE 7.52-68.4 years (22.6
+    nominal), but its rated travel caps the high end: the results say 7.52-19.86 years.
+    The chart drew the nominal wear line at 22.6 years at this thrust, above the band;
+    it now stops at the rated travel, and each band edge at the axis's thrust (the
+    middle point) is the results' band, for every nut drawn."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 1, "moving_mass_kg": 0.1, "speed_mm_s": 20, "length_mm": 300,
+         "stroke_mm": 200, "accel_mm_s2": 500, "cycles_per_day": 2000, "family": ["KHD"],
+         "max_torque_nm": 2.0, "limit": 20}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    by_id = {c.id: c for c in result.candidates}
+    data = result_figures(result, METRIC, catalog)["life"]["data"]
+    for k in range(0, len(data), 3):
+        low, high, line = data[k : k + 3]
+        life = by_id[line["name"].split(", ")[0]].life
+        assert life is not None and life.years is not None
+        assert [low["y"][12], high["y"][12]] == pytest.approx(life.years, rel=1e-12)
+        assert max(line["y"] + high["y"]) <= life.years[1] * (1 + 1e-12)
+    l8 = by_id["KHD6000-L8-TFE"].life
+    assert l8 is not None and l8.years == pytest.approx([7.519, 19.863], abs=5e-4)
