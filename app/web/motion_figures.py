@@ -110,15 +110,18 @@ def _demand_points(c: CandidateOut) -> tuple[list[float], list[float], list[str]
 def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float], list[float]]:
     """Time, speed and motor torque at each segment's start and end, both signed by the
     shaft's direction (the back or down move turns the shaft the other way), so that a
-    torque of the speed's sign drives and one of the opposite sign brakes."""
+    torque of the speed's sign drives and one of the opposite sign brakes. A dwell's
+    torque holds the load (a weight, a load of fixed direction) against its direction,
+    the way the out or up move drives: the same sign after either move."""
     times, speeds, torques = [], [], []
     t = 0.0
     for s in segments:
         start, end = RAMPS.get(s.name, (0.0, 0.0))
         sign = -1.0 if s.direction in REVERSED else 1.0
+        turn = 1.0 if s.name == "dwell" else sign
         times += [t, t + s.duration_s]
         speeds += [sign * start * s.rpm, sign * end * s.rpm]
-        torques += [sign * s.torque_nm, sign * s.torque_nm]
+        torques += [turn * s.torque_nm, turn * s.torque_nm]
         t += s.duration_s
     return times, speeds, torques
 

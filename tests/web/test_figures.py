@@ -508,3 +508,32 @@ def test_a_rated_nuts_life_line_stays_within_the_results_band(catalog: Catalog) 
         assert max(line["y"] + high["y"]) <= life.years[1] * (1 + 1e-12)
     l8 = by_id["KHD6000-L8-TFE"].life
     assert l8 is not None and l8.years == pytest.approx([7.519, 19.863], abs=5e-4)
+
+
+def test_the_move_chart_holds_a_weight_the_same_way_after_either_move(
+    catalog: Catalog,
+) -> None:
+    """A HIWIN rolled ball screw lifting 100 N and 10 kg (vertical, 1 s dwells, a brake
+    for the power-off hold) on the Yaskawa SGM7J-01A. The ball screw does not self-lock,
+    so in each dwell the motor holds the 198 N on the nut up: the same torque turning
+    the shaft the up way at the top and at the bottom of the stroke (the results' two
+    dwells: +0.3133 N m each for R12-10K3-FSCDIN). The chart signs torque by the shaft's
+    direction (up positive), and drew the dwell after the down move at -0.3133 N m, as
+    if the motor pushed the weight down; now both dwells are +0.3133 N m."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 100, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 250,
+         "length_mm": 800, "accel_mm_s2": 5000, "stroke_mm": 600, "cycles_per_day": 5000,
+         "motor": "yaskawa-sgm7j-01a", "family": ["HIWIN-ROLLED"], "brake_torque_nm": 1.0,
+         "dwell_s": 1.0}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    top = result.candidates[0]
+    assert top.segments is not None
+    dwells = [i for i, s in enumerate(top.segments) if s.name == "dwell"]
+    assert [top.segments[i].direction for i in dwells] == ["up", "down"]
+    held = [top.segments[i].torque_nm for i in dwells]
+    assert held[0] == held[1] > 0.0
+    torque = result_figures(result, METRIC, catalog)["move"]["data"][1]["y"]
+    assert [torque[2 * i] for i in dwells] == [held[0], held[0]]
+    assert [torque[2 * i + 1] for i in dwells] == [held[0], held[0]]
+    assert top.id == "R12-10K3-FSCDIN" and held[0] == pytest.approx(0.3133, abs=5e-5)
