@@ -71,7 +71,7 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
     figures = {"critical_speed": critical_speed_figure([c], length_mm, d)}
     if c.pv is not None and c.pv.max_load_n is not None:
         figures["pv"] = pv_figure([c], speed_mm_per_s, c.axial_load_n, d)
-    figures["torque"] = torque_figure([c], app.max_torque_nm, d)
+    figures["torque"] = torque_figure([c], app.max_torque_nm, d, app.torque_safety_factor)
     return figures
 
 

@@ -70,8 +70,9 @@ CHARTS = (
     ),
     (
         "Torque breakdown",
-        "Stacked bars of the running torque per screw; the dashed line is "
-        "your motor's maximum torque when you give one.",
+        "Stacked bars of the torque while accelerating per screw (inertia, drag and load, "
+        "before the torque safety factor); the dashed line is your drive's maximum torque "
+        "over the torque safety factor when you give one.",
     ),
     (
         "Lead sweep",

@@ -537,3 +537,28 @@ def test_the_move_chart_holds_a_weight_the_same_way_after_either_move(
     assert [torque[2 * i] for i in dwells] == [held[0], held[0]]
     assert [torque[2 * i + 1] for i in dwells] == [held[0], held[0]]
     assert top.id == "R12-10K3-FSCDIN" and held[0] == pytest.approx(0.3133, abs=5e-5)
+
+
+def test_the_torque_limit_line_is_the_drive_over_the_safety_factor(catalog: Catalog) -> None:
+    """The bars are before the torque safety factor; the torque check holds the torque
+    times the factor to the drive's 0.3 N m. With a factor of 3 no screw passes (the
+    lightest, R12-10K3-FSCDIN, needs 0.1722 x 3 = 0.517 N m) and the chart shows the
+    nearest rejected: the line the bars are held to is 0.3 / 3 = 0.1 N m, and every bar
+    (0.17 N m and up) stands above it. Drawn at 0.3 N m, the line stood above every bar
+    of screws that all fail on torque. Where break-away is no larger than the torque
+    while accelerating, as here, a bar above the line is a failed torque check."""
+    inputs = ApplicationIn(
+        load_n=100, speed_mm_s=50, length_mm=500, lead_mm=10, max_torque_nm=0.3,
+        torque_safety_factor=3.0,
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    assert not result.candidates
+    figure = result_figures(result, METRIC, catalog)["torque"]
+    (line,) = figure["layout"]["shapes"]
+    assert line["y0"] == line["y1"] == pytest.approx(0.1)
+    charted = chart_candidates(result)[0]
+    for i, c in enumerate(charted):
+        top = sum(trace["y"][i] for trace in figure["data"])
+        assert c.torque.breakaway_nm <= c.torque.total_nm
+        assert (top > line["y0"]) == ((c.utilization["torque"] or 0.0) > 1.0)
+    assert all((c.utilization["torque"] or 0.0) > 1.0 for c in charted)
