@@ -56,7 +56,8 @@ CHART_CAPTIONS = {
     "pv": (
         "PV limit",
         "Largest axial load the nut's PV limit allows against linear speed; the cross is "
-        "your load and speed.",
+        "the thrust the PV check judges (your load with the weight and m a where they act, "
+        "at the peak) at the top speed.",
     )
 }
 
