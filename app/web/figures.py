@@ -206,14 +206,15 @@ def result_figures(
     limit); without it, the PV-limited load against linear speed. When nothing passes, the chart of
     the check that excludes the most screws comes first. The charts of one screw (the
     lead sweep, the move and its torque over the cycle) are those of ``focus`` (a
-    report's screw), else of the first candidate charted."""
+    report's screw), else of the first candidate charted; the charts of several draw
+    ``focus`` first, so that the few they draw include it."""
     candidates, passing = chart_candidates(result)
     if not candidates:
         return {}
     top = focus or candidates[0]
     d = Display(units)
-    others = [c.id for c in candidates if c.id != top.id]
-    data = chart_data(result.inputs, catalog, [top.id, *others], LIFE_TOP)
+    candidates = [top, *(c for c in candidates if c.id != top.id)]
+    data = chart_data(result.inputs, catalog, [c.id for c in candidates], LIFE_TOP)
     length_mm, _ = api_value(data.length_m, "length")
     speed_mm_per_s, _ = api_value(data.speed_m_s, "speed")
     figures = {"critical_speed": critical_speed_figure(candidates, length_mm, d)}
