@@ -15,17 +15,19 @@ from app.core.model import Application
 from app.core.nut import nut_allowed_pressures
 from app.core.quantities import Quantities, operating_point
 from app.core.screening import screen_table
+from app.core.selection import shown_torque
 from app.core.table import Array
 
 
 @dataclass(frozen=True, slots=True)
 class LeadPoint:
-    """One lead of a size and nut for an application: the drive torque [N m], the screw
-    speed as a share of the allowed speed and the PV as a share of its limit (None: no PV
-    limit)."""
+    """One lead of a size and nut for an application: the drive torque the results show
+    [N m] (``selection.shown_torque``: with a move, the peak of its segments and of the
+    break-away; without, the torque while accelerating), the screw speed as a share of
+    the allowed speed and the PV as a share of its limit (None: no PV limit)."""
 
     lead_m: float
-    total_nm: float
+    torque_nm: float
     speed_share: float
     pv_share: float | None
 
@@ -41,12 +43,12 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
     if rows is None:
         return []
     sc = screen_table(replace(app, lead_m=None), index.table.take(rows), rows)
-    q, pv_use = sc.quantities, sc.utilization.get("pv")
+    q, pv_use, torque_nm = sc.quantities, sc.utilization.get("pv"), shown_torque(sc)
     pv_applies = sc.measures["pv"].applicable if "pv" in sc.measures else None
     return [
         LeadPoint(
             lead_m=float(sc.table.lead_m[k]),
-            total_nm=float(q.torque.total_nm[k]),
+            torque_nm=float(torque_nm[k]),
             speed_share=float(q.axis.rpm[k] / q.column.allowed_rpm[k]),
             pv_share=None
             if pv_use is None or pv_applies is None or not pv_applies[k]
@@ -59,12 +61,15 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
 @dataclass(frozen=True, slots=True)
 class WearPoint:
     """One wear-rated candidate at the cycle's wear thrust [N] (``motion.wear_thrust``):
-    its wear life in years of the duty (None without a duty) and in travel [m]."""
+    its wear life in years of the duty (None without a duty) and in travel [m], and the
+    seed's rated travel band [m] where the catalog gives one (None: no rating), which
+    caps the life the results show at any thrust (``sections.Life.travel_m``)."""
 
     id: str
     force_n: float
     life_years: float | None
     travel_m: float
+    rated_m: tuple[float, float] | None = None
 
 
 def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> list[WearPoint]:
@@ -85,7 +90,10 @@ def wear_points(app: Application, index: CatalogIndex, ids: Sequence[str]) -> li
         if np.isfinite(travel) and force > 0.0:
             life = float(years) if np.isfinite(years) else None
             screw = index.table.screws[position]
-            points.append(WearPoint(screw.id, float(force), life, float(travel)))
+            rated = None
+            if screw.life_min_m is not None and screw.life_max_m is not None:
+                rated = (screw.life_min_m, screw.life_max_m)
+            points.append(WearPoint(screw.id, float(force), life, float(travel), rated))
     return points
 
 
@@ -116,15 +124,35 @@ def _operating(q: Quantities[Array], k: int) -> tuple[str, float, float] | None:
     return None
 
 
+def chart_speeds(
+    operating: Sequence[float], corners: Sequence[float], span: float, points: int
+) -> Array:
+    """The sliding speeds [m/s] the pressure limits are drawn at: ``points`` spaced evenly
+    in log from the lowest ``operating`` speed over ``span`` to the highest times
+    ``span``, and, between those ends, each operating speed and each row speed of the
+    nuts' pressure-speed tables (``corners``). A chart joins its points with straight
+    lines: with the table's corners among them, no line cuts above a corner where the
+    table turns flat, and the line at each operating speed is the check's limit there.
+
+    >>> chart_speeds([0.1], [0.05, 0.25, 2.0], 10.0, 3).tolist()
+    [0.01, 0.05, 0.1, 0.25, 1.0]
+    """
+    low, high = min(operating) / span, max(operating) * span
+    inside = [v for v in (*operating, *corners) if low < v < high]
+    speeds: Array = np.unique(np.concatenate([np.geomspace(low, high, points), inside]))
+    return speeds
+
+
 def pressure_limits(
     app: Application, index: CatalogIndex, ids: Sequence[str], span: float, points: int
 ) -> list[PressureLimit]:
     """The candidates ``ids`` whose nut has a pressure limit that moves with the sliding
-    speed, in the order given, each with the pressure it allows at the same ``points``
-    speeds, spaced evenly in log from the lowest operating sliding speed over ``span`` to
-    the highest times ``span`` (so nuts of one material draw one curve): the limits the
-    checks use (``nut_allowed_pressures`` for the flanks, PV_lim / v for the seed's PV),
-    derated as the checks derate them."""
+    speed, in the order given, each with the pressure it allows at the same speeds
+    (``chart_speeds``: ``points`` spaced evenly in log from the lowest operating sliding
+    speed over ``span`` to the highest times ``span``, with the operating speeds and the
+    tables' corners; so nuts of one material draw one curve): the limits the checks use
+    (``nut_allowed_pressures`` for the flanks, PV_lim / v for the seed's PV), derated as
+    the checks derate them."""
     rows = np.array([index.positions[i] for i in ids if i in index.positions], dtype=np.intp)
     if not rows.size:
         return []
@@ -133,7 +161,10 @@ def pressure_limits(
     if not found:
         return []
     operating_speeds = [speed for _, (_, speed, _) in found]
-    speeds = np.geomspace(min(operating_speeds) / span, max(operating_speeds) * span, points)
+    tables = {int(index.table.pressure_table[rows[k]]) for k, _ in found} - {-1}
+    corners = [v for i in tables for v, _ in index.table.pressure_tables[i]]
+    speeds = chart_speeds(operating_speeds, corners, span, points)
+    points = len(speeds)
     out = []
     for k, (check, speed, pressure) in found:
         position = int(rows[k])

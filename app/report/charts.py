@@ -26,13 +26,16 @@ from app.core.units import from_si
 @dataclass(frozen=True, slots=True)
 class WearLine:
     """One wear-rated candidate at the cycle's wear thrust ``force_n`` [N]: its life
-    (years of the duty, or km of travel without a duty) and the shares of that life at
-    the wear rate's high and low ends (``life_band``)."""
+    (years of the duty, or km of travel without a duty), the shares of that life at
+    the wear rate's high and low ends (``life_band``) and, for a nut the seed rates, its
+    rated travel band in the same unit (None: no rating), which the results' life never
+    exceeds at either end."""
 
     id: str
     force_n: float
     life: float
     band: tuple[float, float]
+    cap: tuple[float, float] | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,7 +72,11 @@ def _wear_lines(
         life = point.life_years
         if life is None:
             life = from_si(point.travel_m, "km")
-        lines.append(WearLine(point.id, point.force_n, life, life_band(catalog.by_id[point.id])))
+        per_m = life / point.travel_m  # the life's years (or km) per metre of travel
+        rated = point.rated_m
+        cap = None if rated is None else (rated[0] * per_m, rated[1] * per_m)
+        band = life_band(catalog.by_id[point.id])
+        lines.append(WearLine(point.id, point.force_n, life, band, cap))
     return lines, bool(app.stroke_m and motion.cycles_per_day(app))
 
 

@@ -56,7 +56,8 @@ CHART_CAPTIONS = {
     "pv": (
         "PV limit",
         "Largest axial load the nut's PV limit allows against linear speed; the cross is "
-        "your load and speed.",
+        "the thrust the PV check judges (your load with the weight and m a where they act, "
+        "at the peak) at the top speed.",
     )
 }
 
@@ -71,7 +72,7 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
     figures = {"critical_speed": critical_speed_figure([c], length_mm, d)}
     if c.pv is not None and c.pv.max_load_n is not None:
         figures["pv"] = pv_figure([c], speed_mm_per_s, c.axial_load_n, d)
-    figures["torque"] = torque_figure([c], app.max_torque_nm, d)
+    figures["torque"] = torque_figure([c], app.max_torque_nm, d, app.torque_safety_factor)
     return figures
 
 

@@ -130,12 +130,17 @@ def critical_speed_figure(
 
 
 def torque_figure(
-    candidates: Sequence[CandidateOut], limit_nm: float | None, d: Display
+    candidates: Sequence[CandidateOut],
+    limit_nm: float | None,
+    d: Display,
+    safety_factor: float = 1.0,
 ) -> dict[str, Any]:
     """Stacked bars of the motor torque while accelerating per candidate: inertia + drag
     + load (``torque.total_nm``, before the torque safety factor).
 
-    A dashed line marks the drive's maximum torque when the user gave one.
+    A dashed line marks the drive's maximum torque when the user gave one, over the
+    torque safety factor: the most the bars, before that factor, may reach (the torque
+    check holds the torque times the factor to the drive's).
     """
     ids = [c.id for c in candidates]
     unit = d.label("torque")
@@ -152,6 +157,7 @@ def torque_figure(
     ]
     extra: dict[str, Any] = {"barmode": "stack"}
     if limit_nm is not None:
+        limit = _round(d.value(limit_nm / safety_factor, "torque"))
         extra["shapes"] = [
             {
                 "type": "line",
@@ -159,8 +165,8 @@ def torque_figure(
                 "x0": 0,
                 "x1": 1,
                 "yref": "y",
-                "y0": _round(d.value(limit_nm, "torque")),
-                "y1": _round(d.value(limit_nm, "torque")),
+                "y0": limit,
+                "y1": limit,
                 "line": {"color": "#A00000", "dash": "dash", "width": 2},
             }
         ]
@@ -200,14 +206,15 @@ def result_figures(
     limit); without it, the PV-limited load against linear speed. When nothing passes, the chart of
     the check that excludes the most screws comes first. The charts of one screw (the
     lead sweep, the move and its torque over the cycle) are those of ``focus`` (a
-    report's screw), else of the first candidate charted."""
+    report's screw), else of the first candidate charted; the charts of several draw
+    ``focus`` first, so that the few they draw include it."""
     candidates, passing = chart_candidates(result)
     if not candidates:
         return {}
     top = focus or candidates[0]
     d = Display(units)
-    others = [c.id for c in candidates if c.id != top.id]
-    data = chart_data(result.inputs, catalog, [top.id, *others], LIFE_TOP)
+    candidates = [top, *(c for c in candidates if c.id != top.id)]
+    data = chart_data(result.inputs, catalog, [c.id for c in candidates], LIFE_TOP)
     length_mm, _ = api_value(data.length_m, "length")
     speed_mm_per_s, _ = api_value(data.speed_m_s, "speed")
     figures = {"critical_speed": critical_speed_figure(candidates, length_mm, d)}
@@ -215,7 +222,9 @@ def result_figures(
         figures["pv"] = pressure_figure(data.pressure, d)
     elif catalog is None:
         figures["pv"] = pv_figure(candidates, speed_mm_per_s, candidates[0].axial_load_n, d)
-    figures["torque"] = torque_figure(candidates, data.torque_limit_nm, d)
+    figures["torque"] = torque_figure(
+        candidates, data.torque_limit_nm, d, data.torque_safety_factor
+    )
     if len(data.sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(data.sweep, top, d)
     life = life_figure(data.wear, data.wear_in_years, d)

@@ -70,21 +70,23 @@ CHARTS = (
     ),
     (
         "Torque breakdown",
-        "Stacked bars of the running torque per screw; the dashed line is "
-        "your motor's maximum torque when you give one.",
+        "Stacked bars of the torque while accelerating per screw (inertia, drag and load, "
+        "before the torque safety factor); the dashed line is your drive's maximum torque "
+        "over the torque safety factor when you give one.",
     ),
     (
         "Lead sweep",
         "The top screw's size with every lead the catalog offers: drive torque, "
         "speed as a share of the allowed critical speed, and PV used. The shaded band holds "
-        "the leads that still self-lock; the ringed points are the chosen lead.",
+        "the leads that still self-lock; the dashed line is the chosen lead.",
     ),
     (
         "Motor torque against speed",
         "Given a stroke and a motor curve: the curve is the torque the motor can give at "
         "each speed; each point is one segment of the move (accelerate, constant, "
-        "decelerate) of a screw, at its top speed, with the torque safety factor. Points "
-        "under the line: the motor drives the move.",
+        "decelerate) of a screw, at its top speed, or its start from rest (break-away) at "
+        "standstill, with the torque safety factor. Points under the line: the motor "
+        "drives the move.",
     ),
     (
         "The move over time",

@@ -27,8 +27,9 @@ def motor_figure(
     continuous: tuple[tuple[float, float], ...] = (),
 ) -> dict[str, Any]:
     """The motor's torque against speed (its curve) and, for each top candidate, every
-    moving segment's top rpm and torque times the safety factor: a point above the line
-    is a segment the motor cannot drive. A stepper's curve (its pull-out) is drawn beside
+    moving segment's top rpm and torque and the break-away at standstill, times the
+    safety factor (``_demand_points``): a point above the line is one the motor cannot
+    drive. A stepper's curve (its pull-out) is drawn beside
     the usable torque the checks hold the move against, the pull-out over ``margin``.
     The curve's legend says where it comes from (``origin``, a key of
     ``axis_motor.CURVE_ORIGINS``: typed in, the maker's published curve, or the model).
@@ -75,15 +76,15 @@ def motor_figure(
             }
         )
     for colour, c in zip(PALETTE, candidates[:TOP], strict=False):
-        moving = [s for s in c.segments or [] if s.name != "dwell"]
+        rpm, torque_nm, text = _demand_points(c)
         data.append(
             {
                 "type": "scatter",
                 "mode": "markers",
                 "name": c.id,
-                "x": [s.rpm for s in moving],
-                "y": [d.value(abs(s.torque_nm) * safety_factor, "torque") for s in moving],
-                "text": [f"{s.name}, {s.direction}" for s in moving],
+                "x": rpm,
+                "y": [d.value(t * safety_factor, "torque") for t in torque_nm],
+                "text": text,
                 "marker": {"color": colour, "size": 9},
                 "hovertemplate": f"%{{text}}<br>%{{x:.4g}} rpm, %{{y:.4g}} {unit}"
                 f"<extra>{c.id}</extra>",
@@ -94,18 +95,33 @@ def motor_figure(
     return {"data": data, "layout": layout(x_axis, y_axis)}
 
 
+def _demand_points(c: CandidateOut) -> tuple[list[float], list[float], list[str]]:
+    """The points the motor-curve check holds against the curve: each moving segment at
+    its top speed with its torque [N m] (its magnitude), and the break-away that starts
+    a move from rest (``torque.breakaway_nm``: the thread at static friction) at
+    standstill, as (rpm, torque, what each is)."""
+    moving = [s for s in c.segments or [] if s.name != "dwell"]
+    rpm = [s.rpm for s in moving] + [0.0]
+    torque_nm = [abs(s.torque_nm) for s in moving] + [abs(c.torque.breakaway_nm)]
+    text = [f"{s.name}, {s.direction}" for s in moving] + ["start from rest"]
+    return rpm, torque_nm, text
+
+
 def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float], list[float]]:
     """Time, speed and motor torque at each segment's start and end, both signed by the
     shaft's direction (the back or down move turns the shaft the other way), so that a
-    torque of the speed's sign drives and one of the opposite sign brakes."""
+    torque of the speed's sign drives and one of the opposite sign brakes. A dwell's
+    torque holds the load (a weight, a load of fixed direction) against its direction,
+    the way the out or up move drives: the same sign after either move."""
     times, speeds, torques = [], [], []
     t = 0.0
     for s in segments:
         start, end = RAMPS.get(s.name, (0.0, 0.0))
         sign = -1.0 if s.direction in REVERSED else 1.0
+        turn = 1.0 if s.name == "dwell" else sign
         times += [t, t + s.duration_s]
         speeds += [sign * start * s.rpm, sign * end * s.rpm]
-        torques += [sign * s.torque_nm, sign * s.torque_nm]
+        torques += [turn * s.torque_nm, turn * s.torque_nm]
         t += s.duration_s
     return times, speeds, torques
 

@@ -20,20 +20,38 @@ from app.web.curves import TOP, by_curve, curve_name, span
 PV_SPAN = 10.0
 
 
+def judged_point(c: CandidateOut) -> tuple[float, float] | None:
+    """The linear speed [mm/s] and thrust [N] the PV check judges ``c``'s nut at (the
+    peak thrust at the top speed; in a cycle of moves, the move whose product of the two
+    is largest: ``quantities.pv_point``), read from its PV numbers: at that speed the
+    PV-limited load ``max_load_n`` is the thrust over the PV's share of its limit, and
+    at that thrust the PV-limited speed ``max_speed_mm_s`` is the speed over the same
+    share. None without a PV limit."""
+    pv = c.pv
+    if pv is None or not pv.limit_mpa_m_s or pv.max_load_n is None or pv.max_speed_mm_s is None:
+        return None
+    share = pv.value_mpa_m_s / pv.limit_mpa_m_s
+    return pv.max_speed_mm_s * share, pv.max_load_n * share
+
+
 def pv_figure(
     candidates: Sequence[CandidateOut], speed_mm_per_s: float, load_n: float, d: Display
 ) -> dict[str, Any]:
     """PV limit of each nut as the largest load vs linear speed (log-log), one line per
-    distinct limit, and the operating point.
+    distinct limit, and the operating point: the speed and thrust the PV check judges
+    (``judged_point``; the axis's are the same for every screw), else, without a PV
+    limit, ``speed_mm_per_s`` and ``load_n``.
 
-    Each curve moves the PV-limited load at the user's speed to other speeds with
+    Each curve moves the PV-limited load at that speed to other speeds with
     ``app.core.formulas.pv.max_load_at_speed`` (F_max proportional to 1 / v).
     """
+    pvs = {c.id: c.pv for c in candidates if judged_point(c) is not None and c.pv is not None}
+    limited = by_curve([c for c in candidates if c.id in pvs], lambda c: pvs[c.id].max_load_n)
+    if limited:
+        speed_mm_per_s, load_n = judged_point(limited[0][0]) or (speed_mm_per_s, load_n)
     speeds = span(speed_mm_per_s, PV_SPAN)
     x = [_round(d.value(v, "speed")) for v in speeds]
     data: list[dict[str, Any]] = []
-    pvs = {c.id: c.pv for c in candidates if c.pv is not None}
-    limited = by_curve([c for c in candidates if c.id in pvs], lambda c: pvs[c.id].max_load_n)
     for colour, group in zip(PALETTE, limited, strict=False):
         max_load = pvs[group[0].id].max_load_n or 0.0
         used = ", ".join(

@@ -57,7 +57,7 @@ def _sweep_traces(sweep: list[LeadPoint], leads: list[float], d: Display) -> lis
         (
             "Drive torque",
             "y",
-            [_round(d.value(p.total_nm, "torque")) for p in sweep],
+            [_round(d.value(p.torque_nm, "torque")) for p in sweep],
             "#0072B2",
             f"%{{y:.4g}} {unit}",
         ),

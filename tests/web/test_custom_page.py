@@ -3,8 +3,10 @@ and the robust, assumed-limit and warning marks of the selector's results."""
 
 import csv
 import io
+import json
 from urllib.parse import parse_qsl
 
+import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
@@ -355,3 +357,37 @@ def test_a_unit_switch_redraws_the_screw_fields_in_the_htmx_answer(client: TestC
         assert redrawn.select_one(f'input[name="{name}"]')["value"] == value  # type: ignore[index]
         assert redrawn.select_one("label .unit").get_text() == unit  # type: ignore[union-attr]
         assert html.select_one("#w-lead") is None
+
+
+def test_the_pv_chart_marks_the_thrust_the_pv_check_judges(client: TestClient) -> None:
+    """A 12 x 9.5 mm screw of 6 mm lead with a 0.2 MPa m/s PV limit lifting 60 N and
+    8 kg at 60 mm/s, accelerating at 2 m/s^2: the PV check judges the peak thrust at the
+    top speed, 60 + 8 x 9.80665 + 8 x 2 = 154.45 N (the API's peak_axial_load_n), and
+    its PV is 2.059 times the limit; the PV-limited load at 60 mm/s is 75 N. The cross
+    stood at the running load, 138.45 N (1.846 times the 75 N line); it now stands at
+    154.45 N, 2.059 times the line: the check's utilization."""
+    screw = {
+        "outer_diameter_mm": 12, "root_diameter_mm": 9.5, "lead_mm": 6,
+        "friction_dynamic": 0.15, "friction_static": 0.2, "pv_limit_mpa_m_s": 0.2,
+    }  # fmt: skip
+    axis = {
+        "load": 60, "moving_mass_kg": 8, "orientation": "vertical", "speed": 60,
+        "length": 500, "accel": 2000, "stroke": 300,
+    }  # fmt: skip
+    page = soup(client.get("/custom", params={**screw, **axis}).text)
+    figure = json.loads(page.select_one("script#fig-pv").text)
+    line, cross = figure["data"]
+    body = {
+        "application": {
+            "load_n": 60, "moving_mass_kg": 8, "orientation": "vertical", "speed_mm_s": 60,
+            "length_mm": 500, "accel_mm_s2": 2000, "stroke_mm": 300,
+        },
+        "screw": screw,
+    }  # fmt: skip
+    c = client.post("/api/v1/evaluate", params={"detail": "full"}, json=body).json()["candidate"]
+    assert cross["x"] == [60.0]
+    assert cross["y"] == [pytest.approx(c["peak_axial_load_n"], rel=1e-4)]
+    assert c["peak_axial_load_n"] == pytest.approx(154.4532)
+    at_cross = line["y"][line["x"].index(60.0)]
+    assert at_cross == pytest.approx(c["pv"]["max_load_n"], rel=1e-4) == 75.0
+    assert cross["y"][0] / at_cross == pytest.approx(c["utilization"]["pv"], rel=1e-4)

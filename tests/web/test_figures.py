@@ -4,6 +4,7 @@ import json
 import math
 from typing import Any
 
+import numpy as np
 import plotly.graph_objects as go
 import pytest
 
@@ -284,7 +285,9 @@ def test_motor_and_move_charts_follow_the_segments(catalog: Catalog) -> None:
     moving = [s for s in top.segments if s.name != "dwell"]
     points = motor["data"][1]
     assert points["name"] == top.id
-    assert points["y"] == pytest.approx([abs(s.torque_nm) * 1.5 for s in moving])
+    demands = [abs(s.torque_nm) for s in moving] + [top.torque.breakaway_nm]
+    assert points["x"] == [s.rpm for s in moving] + [0.0]
+    assert points["y"] == pytest.approx([t * 1.5 for t in demands])
     times = move["data"][0]["x"]
     assert times[-1] == pytest.approx(top.profile.cycle_time_s)
     constant = next(i for i, s in enumerate(top.segments) if s.name == "constant")
@@ -442,3 +445,120 @@ def test_a_servos_continuous_zone_is_drawn_beside_its_peak_envelope(catalog: Cat
     (rated,) = lines["rated"]
     assert (rated["x"], rated["y"]) == ([0.0, 3000.0], pytest.approx([0.3, 0.3]))
     assert lines["curve alone"] == []
+
+
+def test_the_motor_chart_draws_the_break_away_the_check_holds_to_the_curve(
+    catalog: Catalog,
+) -> None:
+    """A bronze ISO nut lifting 150 N and 10 kg at 20 mm/s on the STEPPERONLINE
+    23HS32-4004S (its published 48 V curve: 1.841 N m held from standstill to 90 rpm,
+    1.729 N m at 390 and 1.498 N m at 510 rpm; usable over the 1.5 torque margin). The
+    top screw, Tr14x3-bronze, turns at 400 rpm: its largest moving segment, accelerating
+    up, needs 0.4044 N m against 1.709 / 1.5 = 1.1398 N m there (35.5 %), but starting
+    from rest the oiled bronze thread is at its static friction: 0.4550 N m against
+    1.841 / 1.5 = 1.2273 N m at standstill, 37.1 %, the motor-curve check's utilization
+    and the results' peak torque ('starting from rest'). The chart draws that point at
+    0 rpm, so its highest point against the usable line is the check's 37.1 %, not the
+    segments' 35.5 %."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 150, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 20,
+         "length_mm": 600, "accel_mm_s2": 500, "stroke_mm": 400, "cycles_per_day": 200,
+         "motor": "23hs32-4004s", "family": ["TR-304", "TR-C45"], "nut_material": "bronze",
+         "lubrication": "oiled"}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    data = result_figures(result, METRIC, catalog)["motor"]["data"]
+    usable = next(t for t in data if t["name"].startswith("Usable"))
+    for c in result.candidates[:TOP]:
+        points = next(t for t in data if t["name"] == c.id)
+        start = points["text"].index("start from rest")
+        assert (points["x"][start], points["y"][start]) == (0.0, c.torque.peak_motor_nm)
+        shares = [
+            y / float(np.interp(x, usable["x"], usable["y"]))
+            for x, y in zip(points["x"], points["y"], strict=True)
+        ]
+        assert max(shares) == pytest.approx(c.utilization["motor_curve"])
+    top = result.candidates[0]
+    assert top.id == "Tr14x3-bronze" and top.torque.peak_segment == "starting from rest"
+    assert top.torque.peak_motor_nm == pytest.approx(0.4550, abs=5e-5)
+    assert top.utilization["motor_curve"] == pytest.approx(0.3707, abs=5e-5)
+
+
+def test_a_rated_nuts_life_line_stays_within_the_results_band(catalog: Catalog) -> None:
+    """The seed rates its KHD nuts' travel and the results cap that rating by the wear
+    law at either end (``sections.Life.travel_m``). At 1 N and 0.1 kg, 2000 cycles a day
+    of a 200 mm stroke, the wear alone would give KHD6000-L8-TFE 7.52-68.4 years (22.6
+    nominal), but its rated travel caps the high end: the results say 7.52-19.86 years.
+    The chart drew the nominal wear line at 22.6 years at this thrust, above the band;
+    it now stops at the rated travel, and each band edge at the axis's thrust (the
+    middle point) is the results' band, for every nut drawn."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 1, "moving_mass_kg": 0.1, "speed_mm_s": 20, "length_mm": 300,
+         "stroke_mm": 200, "accel_mm_s2": 500, "cycles_per_day": 2000, "family": ["KHD"],
+         "max_torque_nm": 2.0, "limit": 20}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    by_id = {c.id: c for c in result.candidates}
+    data = result_figures(result, METRIC, catalog)["life"]["data"]
+    for k in range(0, len(data), 3):
+        low, high, line = data[k : k + 3]
+        life = by_id[line["name"].split(", ")[0]].life
+        assert life is not None and life.years is not None
+        assert [low["y"][12], high["y"][12]] == pytest.approx(life.years, rel=1e-12)
+        assert max(line["y"] + high["y"]) <= life.years[1] * (1 + 1e-12)
+    l8 = by_id["KHD6000-L8-TFE"].life
+    assert l8 is not None and l8.years == pytest.approx([7.519, 19.863], abs=5e-4)
+
+
+def test_the_move_chart_holds_a_weight_the_same_way_after_either_move(
+    catalog: Catalog,
+) -> None:
+    """A HIWIN rolled ball screw lifting 100 N and 10 kg (vertical, 1 s dwells, a brake
+    for the power-off hold) on the Yaskawa SGM7J-01A. The ball screw does not self-lock,
+    so in each dwell the motor holds the 198 N on the nut up: the same torque turning
+    the shaft the up way at the top and at the bottom of the stroke (the results' two
+    dwells: +0.3133 N m each for R12-10K3-FSCDIN). The chart signs torque by the shaft's
+    direction (up positive), and drew the dwell after the down move at -0.3133 N m, as
+    if the motor pushed the weight down; now both dwells are +0.3133 N m."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 100, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 250,
+         "length_mm": 800, "accel_mm_s2": 5000, "stroke_mm": 600, "cycles_per_day": 5000,
+         "motor": "yaskawa-sgm7j-01a", "family": ["HIWIN-ROLLED"], "brake_torque_nm": 1.0,
+         "dwell_s": 1.0}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    top = result.candidates[0]
+    assert top.segments is not None
+    dwells = [i for i, s in enumerate(top.segments) if s.name == "dwell"]
+    assert [top.segments[i].direction for i in dwells] == ["up", "down"]
+    held = [top.segments[i].torque_nm for i in dwells]
+    assert held[0] == held[1] > 0.0
+    torque = result_figures(result, METRIC, catalog)["move"]["data"][1]["y"]
+    assert [torque[2 * i] for i in dwells] == [held[0], held[0]]
+    assert [torque[2 * i + 1] for i in dwells] == [held[0], held[0]]
+    assert top.id == "R12-10K3-FSCDIN" and held[0] == pytest.approx(0.3133, abs=5e-5)
+
+
+def test_the_torque_limit_line_is_the_drive_over_the_safety_factor(catalog: Catalog) -> None:
+    """The bars are before the torque safety factor; the torque check holds the torque
+    times the factor to the drive's 0.3 N m. With a factor of 3 no screw passes (the
+    lightest, R12-10K3-FSCDIN, needs 0.1722 x 3 = 0.517 N m) and the chart shows the
+    nearest rejected: the line the bars are held to is 0.3 / 3 = 0.1 N m, and every bar
+    (0.17 N m and up) stands above it. Drawn at 0.3 N m, the line stood above every bar
+    of screws that all fail on torque. Where break-away is no larger than the torque
+    while accelerating, as here, a bar above the line is a failed torque check."""
+    inputs = ApplicationIn(
+        load_n=100, speed_mm_s=50, length_mm=500, lead_mm=10, max_torque_nm=0.3,
+        torque_safety_factor=3.0,
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    assert not result.candidates
+    figure = result_figures(result, METRIC, catalog)["torque"]
+    (line,) = figure["layout"]["shapes"]
+    assert line["y0"] == line["y1"] == pytest.approx(0.1)
+    charted = chart_candidates(result)[0]
+    for i, c in enumerate(charted):
+        top = sum(trace["y"][i] for trace in figure["data"])
+        assert c.torque.breakaway_nm <= c.torque.total_nm
+        assert (top > line["y0"]) == ((c.utilization["torque"] or 0.0) > 1.0)
+    assert all((c.utilization["torque"] or 0.0) > 1.0 for c in charted)

@@ -171,3 +171,33 @@ def test_the_report_says_a_marginal_pass_and_tabulates_the_peak_torque(client: T
     assert shown and shown == pytest.approx(peaks, rel=5e-3)
     totals = [c["torque"]["total_nm"] for c in selected[1 : 1 + len(shown)]]
     assert any(abs(p - t) / p > 5e-3 for p, t in zip(peaks, totals, strict=True))
+
+
+def test_a_report_charts_its_own_screw_among_the_several(client: TestClient) -> None:
+    """A 10 mm lead, 50 N at 50 mm/s over a 200 mm stroke with a typed motor curve: the
+    ninth passing screw, KHD6000-L10-TFE, reported on its own. The charts of several
+    screws draw at most five; they drew the first five of the ranking, so this screw's
+    report had a motor chart without its own points (and a torque chart led by others).
+    They now draw the reported screw first: its segments and break-away are on its
+    motor chart, at its own torques, and its bar leads the torque chart."""
+    axis = {
+        "load_n": 50, "moving_mass_kg": 2, "lead_mm": 10, "speed_mm_s": 50,
+        "length_mm": 500, "stroke_mm": 200, "cycles_per_day": 1000,
+        "motor_curve": [[0, 0.4], [600, 0.3], [1200, 0.1]], "torque_safety_factor": 1.5,
+    }  # fmt: skip
+    api = client.post("/api/v1/select", params={"detail": "full"}, json={**axis, "limit": 20})
+    candidates = api.json()["candidates"]
+    chosen = candidates[8]
+    assert chosen["id"] == "KHD6000-L10-TFE"
+    link = {
+        "load": "50", "moving_mass_kg": "2", "lead": "10", "speed": "50", "length": "500",
+        "stroke": "200", "cycles_per_day": "1000", "motor_curve": "0:0.4,600:0.3,1200:0.1",
+        "torque_safety_factor": "1.5", "id": chosen["id"],
+    }  # fmt: skip
+    page = soup(client, link)
+    figures = {s["id"]: json.loads(s.text) for s in page.select("script[data-chart]")}
+    motor = next(t for t in figures["fig-motor"]["data"] if t["name"] == chosen["id"])
+    moving = [s for s in chosen["segments"] if s["name"] != "dwell"]
+    needed = [abs(s["torque_nm"]) * 1.5 for s in moving] + [chosen["torque"]["breakaway_nm"] * 1.5]
+    assert motor["y"] == pytest.approx(needed)
+    assert figures["fig-torque"]["data"][0]["x"][0] == chosen["id"]
