@@ -77,6 +77,15 @@ def torques(
     }
 
 
+def torque_before_factor_nm(app: Application) -> float | None:
+    """The most a torque before the torque safety factor may reach [N m]: the drive's
+    maximum torque over that factor (the torque check holds the torque times the factor
+    to the maximum); None without a maximum."""
+    if app.max_torque_nm is None:
+        return None
+    return app.max_torque_nm / app.torque_safety_factor
+
+
 def heaviest_mass_kg(app: Application) -> float:
     """The heaviest mass any move of the cycle carries [kg] (``motion.cycle``: out and
     back carry the one moving mass; a pick-and-place cycle carries the part one way

@@ -13,7 +13,7 @@ import numpy as np
 from app.catalog import Catalog
 from app.catalog.axis_motor import CurveOrigin, curve_origin
 from app.contract.schemas import ApplicationIn
-from app.core import motion, segments
+from app.core import drive, motion, segments
 from app.core.checks.wear_life import life_band
 from app.core.index import size_of
 from app.core.model import Application
@@ -41,15 +41,17 @@ class WearLine:
 @dataclass(frozen=True, slots=True)
 class ChartData:
     """The axis's numbers in SI that the charts mark (length [m], the speed the move
-    reaches [m/s], ``motion.reached_speed``, the torque
-    limit [N m] or None, the motor's curve as (rpm, N m) pairs, the torque safety factor and the
-    curve's margin, ``segments.curve_margin``), the lead sweep (empty without a catalog)
+    reaches [m/s], ``motion.reached_speed``, the torque line [N m] or None, the motor's
+    curve as (rpm, N m) pairs, the torque safety factor and the curve's margin,
+    ``segments.curve_margin``), the lead sweep (empty without a catalog)
     the wear lines (``wear_in_years``: their life is in years of a duty) and the nuts'
     pressure limits (empty without a catalog)."""
 
     length_m: float
     speed_m_s: float
-    torque_limit_nm: float | None
+    #: the most the torque before its safety factor may reach [N m]
+    #: (``drive.torque_before_factor_nm``)
+    torque_line_nm: float | None
     curve: tuple[tuple[float, float], ...]
     #: where the curve comes from (``axis_motor.curve_origin``; None without a curve)
     curve_origin: CurveOrigin | None
@@ -127,7 +129,7 @@ def chart_data(
     return ChartData(
         length_m=app.length_m,
         speed_m_s=motion.reached_speed(app),
-        torque_limit_nm=app.max_torque_nm,
+        torque_line_nm=drive.torque_before_factor_nm(app),
         curve=app.motor_curve,
         curve_origin=origin,
         continuous=continuous_line(app),

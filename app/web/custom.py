@@ -17,7 +17,7 @@ from app.contract.screw_link import OWN_MATERIAL, custom_query, screw_values
 from app.contract.screws import NUT_FIELD, NUT_LABEL, CustomScrewIn
 from app.contract.share_link import summary_rows as input_rows
 from app.contract.units import Display, api_value
-from app.core import motion
+from app.core import drive, motion
 from app.report.present import nut_rows
 from app.report.service import run_evaluation
 from app.server.deps import CatalogDep
@@ -72,7 +72,7 @@ def candidate_figures(out: EvaluateOut, units: dict[str, str]) -> dict[str, dict
     figures = {"critical_speed": critical_speed_figure([c], length_mm, d)}
     if c.pv is not None and c.pv.max_load_n is not None:
         figures["pv"] = pv_figure([c], speed_mm_per_s, c.axial_load_n, d)
-    figures["torque"] = torque_figure([c], app.max_torque_nm, d, app.torque_safety_factor)
+    figures["torque"] = torque_figure([c], drive.torque_before_factor_nm(app), d)
     return figures
 
 

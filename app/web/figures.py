@@ -130,17 +130,14 @@ def critical_speed_figure(
 
 
 def torque_figure(
-    candidates: Sequence[CandidateOut],
-    limit_nm: float | None,
-    d: Display,
-    safety_factor: float = 1.0,
+    candidates: Sequence[CandidateOut], line_nm: float | None, d: Display
 ) -> dict[str, Any]:
     """Stacked bars of the motor torque while accelerating per candidate: inertia + drag
     + load (``torque.total_nm``, before the torque safety factor).
 
-    A dashed line marks the drive's maximum torque when the user gave one, over the
-    torque safety factor: the most the bars, before that factor, may reach (the torque
-    check holds the torque times the factor to the drive's).
+    A dashed line marks ``line_nm`` when the user gave a drive's maximum torque: that
+    maximum over the torque safety factor, the most the bars, before that factor, may
+    reach (``drive.torque_before_factor_nm``).
     """
     ids = [c.id for c in candidates]
     unit = d.label("torque")
@@ -156,8 +153,8 @@ def torque_figure(
         for key, name, colour in (*TORQUE_PARTS, LOAD_PART)
     ]
     extra: dict[str, Any] = {"barmode": "stack"}
-    if limit_nm is not None:
-        limit = _round(d.value(limit_nm / safety_factor, "torque"))
+    if line_nm is not None:
+        limit = _round(d.value(line_nm, "torque"))
         extra["shapes"] = [
             {
                 "type": "line",
@@ -222,9 +219,7 @@ def result_figures(
         figures["pv"] = pressure_figure(data.pressure, d)
     elif catalog is None:
         figures["pv"] = pv_figure(candidates, speed_mm_per_s, candidates[0].axial_load_n, d)
-    figures["torque"] = torque_figure(
-        candidates, data.torque_limit_nm, d, data.torque_safety_factor
-    )
+    figures["torque"] = torque_figure(candidates, data.torque_line_nm, d)
     if len(data.sweep) > 1:
         figures["lead_sweep"] = lead_sweep_figure(data.sweep, top, d)
     life = life_figure(data.wear, data.wear_in_years, d)
