@@ -133,10 +133,13 @@ def torque_figure(
     candidates: Sequence[CandidateOut], line_nm: float | None, d: Display
 ) -> dict[str, Any]:
     """Stacked bars of the motor torque while accelerating per candidate: inertia + drag
-    + load (``torque.total_nm``, before the torque safety factor).
+    + load (``torque.total_nm``, before the torque safety factor), and a diamond at the
+    peak torque the torque check judges (``torque.peak_motor_nm``: under a move the peak
+    of its segments or of the start from rest; without, the break-away where that is
+    larger), which the bars may sit under.
 
     A dashed line marks ``line_nm`` when the user gave a drive's maximum torque: that
-    maximum over the torque safety factor, the most the bars, before that factor, may
+    maximum over the torque safety factor, the most the peak, before that factor, may
     reach (``drive.torque_before_factor_nm``).
     """
     ids = [c.id for c in candidates]
@@ -152,6 +155,17 @@ def torque_figure(
         }
         for key, name, colour in (*TORQUE_PARTS, LOAD_PART)
     ]
+    data.append(
+        {
+            "type": "scatter",
+            "mode": "markers",
+            "name": "peak, judged",
+            "x": ids,
+            "y": [_round(d.value(c.torque.peak_motor_nm, "torque")) for c in candidates],
+            "marker": {"color": "#000000", "symbol": "diamond", "size": 10},
+            "hovertemplate": f"%{{x}}<br>peak %{{y:.4g}} {unit}<extra></extra>",
+        }
+    )
     extra: dict[str, Any] = {"barmode": "stack"}
     if line_nm is not None:
         limit = _round(d.value(line_nm, "torque"))
@@ -171,7 +185,7 @@ def torque_figure(
         "data": data,
         "layout": _layout(
             {**_axis("Screw"), "type": "category"},
-            _axis(f"Torque while accelerating [{unit}]"),
+            _axis(f"Motor torque [{unit}]"),
             **extra,
         ),
     }

@@ -71,8 +71,9 @@ CHARTS = (
     (
         "Torque breakdown",
         "Stacked bars of the torque while accelerating per screw (inertia, drag and load, "
-        "before the torque safety factor); the dashed line is your drive's maximum torque "
-        "over the torque safety factor when you give one.",
+        "before the torque safety factor); the diamond is the peak torque the torque check "
+        "judges (the move's peak or the start from rest); the dashed line is your drive's "
+        "maximum torque over the torque safety factor when you give one.",
     ),
     (
         "Lead sweep",

@@ -11,11 +11,12 @@ import pytest
 from app.catalog import Catalog
 from app.contract.outputs import SelectOut
 from app.contract.schemas import ApplicationIn
+from app.contract.units import Display
 from app.core.formulas.critical_speed import ball_screw_critical_speed_rpm, critical_speed_rpm
 from app.report.charts import chart_data
 from app.report.service import run_selection
 from app.web.curves import TOP
-from app.web.figures import chart_candidates, result_figures
+from app.web.figures import chart_candidates, result_figures, torque_figure
 from app.web.life_figures import LIFE_TOP
 from tests.leadscrews import leadscrew_families
 
@@ -215,11 +216,13 @@ def test_a_size_with_one_lead_of_its_nut_has_no_sweep(catalog: Catalog) -> None:
 def test_torque_bars_stack_to_the_total(result: SelectOut) -> None:
     figure = result_figures(result, METRIC)["torque"]
     assert figure["layout"]["barmode"] == "stack"
-    assert [t["name"] for t in figure["data"]] == ["Inertia", "Drag", "Load"]
-    assert all(t["type"] == "bar" for t in figure["data"])
+    bars, peak = figure["data"][:3], figure["data"][3]
+    assert [t["name"] for t in bars] == ["Inertia", "Drag", "Load"]
+    assert all(t["type"] == "bar" for t in bars) and peak["type"] == "scatter"
     for i, candidate in enumerate(plain(result)["candidates"]):
-        stacked = sum(trace["y"][i] for trace in figure["data"])
+        stacked = sum(trace["y"][i] for trace in bars)
         assert stacked == pytest.approx(candidate["torque"]["total_nm"], rel=1e-3)
+        assert peak["y"][i] == pytest.approx(candidate["torque"]["peak_motor_nm"], rel=1e-3)
     (limit,) = figure["layout"]["shapes"]
     assert limit["y0"] == limit["y1"] == 0.3
 
@@ -406,19 +409,24 @@ def test_screws_whose_wear_lines_coincide_share_one_line(catalog: Catalog) -> No
 
 def test_the_torque_chart_stacks_the_torque_while_accelerating(catalog: Catalog) -> None:
     """Each candidate's bars (inertia, drag, load) sum to its torque while accelerating
-    (``torque.total_nm``, the table's torque without a move), which the axis names: not
-    a running torque, which has no inertia part."""
+    (``torque.total_nm``, the table's torque without a move): not a running torque, which
+    has no inertia part. Beside them, a diamond at the peak the torque check judges: with
+    a 2 m/s^2 move of 5 kg on a horizontal axis, the move's peak (its acceleration), at
+    least the bars."""
     inputs = ApplicationIn(
         load_n=50, speed_mm_s=100, length_mm=500, accel_mm_s2=2000, moving_mass_kg=5
     )
     result = run_selection(inputs, catalog)
     figure = result_figures(result, METRIC)["torque"]
-    assert figure["layout"]["yaxis"]["title"]["text"] == "Torque while accelerating [N m]"
+    assert figure["layout"]["yaxis"]["title"]["text"] == "Motor torque [N m]"
     candidates = plain(result)["candidates"]
+    bars, peak = figure["data"][:3], figure["data"][3]
     for i, c in enumerate(candidates):
-        parts = [trace["y"][i] for trace in figure["data"]]
+        parts = [trace["y"][i] for trace in bars]
         assert parts[0] > 0  # the inertia
         assert sum(parts) == pytest.approx(c["torque"]["total_nm"], rel=1e-3)
+        assert peak["y"][i] == pytest.approx(c["torque"]["peak_motor_nm"], rel=1e-3)
+        assert peak["y"][i] >= sum(parts) * (1 - 1e-3)
 
 
 def test_a_servos_continuous_zone_is_drawn_beside_its_peak_envelope(catalog: Catalog) -> None:
@@ -562,3 +570,22 @@ def test_the_torque_limit_line_is_the_drive_over_the_safety_factor(catalog: Cata
         assert c.torque.breakaway_nm <= c.torque.total_nm
         assert (top > line["y0"]) == ((c.utilization["torque"] or 0.0) > 1.0)
     assert all((c.utilization["torque"] or 0.0) > 1.0 for c in charted)
+
+
+def test_the_torque_chart_marks_a_break_away_above_the_bars(catalog: Catalog) -> None:
+    """200 N lifted at 20 mm/s on a vertical axis, with no move: a sliding nut starts
+    from rest at its static friction, so its peak (the break-away, what the torque check
+    judges) stands above the bars of its torque while accelerating. Tr14x3-ptfe: bars
+    0.309 N m, diamond 0.376 N m; with a drive of 0.34 N m, the line sits between them,
+    and the diamond shows why the screw fails."""
+    inputs = ApplicationIn(
+        load_n=200, speed_mm_s=20, length_mm=400, orientation="vertical", max_torque_nm=0.34
+    )
+    result = run_selection(inputs, catalog)
+    c = next(c for c in [*result.candidates, *result.rejected] if c.id == "Tr14x3-ptfe")
+    figure = torque_figure([c], 0.34, Display(METRIC))
+    bars = sum(trace["y"][0] for trace in figure["data"][:3])
+    peak = figure["data"][3]["y"][0]
+    assert bars == pytest.approx(0.3087, abs=1e-4) and peak == pytest.approx(0.3757, abs=1e-4)
+    assert bars < figure["layout"]["shapes"][0]["y0"] < peak
+    assert not c.passed and c.governing_check == "torque"
