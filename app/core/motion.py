@@ -250,14 +250,16 @@ def _cycles_per_day(app: Application, p: Profile | None) -> float | None:
 
 
 def holds_a_load(app: Application) -> bool:
-    """Whether the axis must hold a load at rest: a vertical axis (its moving mass's
-    weight) or a load of fixed direction (a spring or press on a horizontal one) on any
-    move."""
-    if app.orientation == "vertical":
-        return True
-    if not app.moves:  # out and back: both moves carry the application's load direction
-        return load_sense(app)[0] > 0.0
-    return any(load_sense(app, m)[0] > 0.0 for m in app.moves)
+    """Whether the axis must hold a load at rest: a load left on the nut after some move
+    (``_rest_load``: its mass's weight on a vertical axis, a load of fixed direction, a
+    spring or press, on any axis). A vertical axis moving no mass against a load that
+    opposes the motion, or a fixed load of 0 N, leaves none: there is nothing to hold.
+
+    >>> axis = {"load_n": 0.0, "speed_m_s": 0.1, "length_m": 0.5, "orientation": "vertical"}
+    >>> holds_a_load(Application(**axis)), holds_a_load(Application(**axis, moving_mass_kg=1))
+    (False, True)
+    """
+    return any(_rest_load(app, move) > 0.0 for move in cycle(app))
 
 
 def _rest_load(app: Application, move: Move) -> float:
