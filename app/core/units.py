@@ -145,18 +145,22 @@ SI_UNITS: dict[Quantity, str] = {u.dimension: u.symbol for u in UNITS.values() i
 
 
 def to_si(value: float, unit: str) -> float:
-    """A value in ``unit`` in the core's unit of its dimension.
+    """A value in ``unit`` in the core's unit of its dimension: value x factor + the
+    scale's offset (a temperature's: 212 °F is 100 °C).
 
-    >>> to_si(10.0, "mm"), to_si(2.0, "MPa")
-    (0.01, 2000000.0)
+    >>> to_si(10.0, "mm"), to_si(2.0, "MPa"), round(to_si(212.0, "°F"), 12)
+    (0.01, 2000000.0, 100.0)
     """
-    return value * UNITS[unit].si
+    u = UNITS[unit]
+    return value * u.si + float(u.offset) if u.offset else value * u.si
 
 
 def from_si(value: float, unit: str) -> float:
-    """A value in the core's unit in ``unit``.
+    """A value in the core's unit in ``unit``: (value - the scale's offset) / factor (a
+    temperature's: 100 °C is 212 °F).
 
-    >>> from_si(0.0254, "in"), from_si(2e6, "MPa m/s")
-    (1.0, 2.0)
+    >>> from_si(0.0254, "in"), from_si(2e6, "MPa m/s"), round(from_si(100.0, "°F"), 12)
+    (1.0, 2.0, 212.0)
     """
-    return value * UNITS[unit].from_si
+    u = UNITS[unit]
+    return (value - float(u.offset)) * u.from_si if u.offset else value * u.from_si
