@@ -114,7 +114,7 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     warning (failed advice) come after those without, whatever the policy ("reject"
     rejects them).
     """
-    pos = np.flatnonzero(s.passed)
+    pos = s.passed.nonzero()[0]
     torque, util = shown_torque(s)[pos], s.max_utilization[pos]
     primary = {
         "torque": torque,
@@ -166,7 +166,7 @@ class Selection:
 def _nearest_order(s: Screening) -> np.ndarray:
     """Positions of rejected candidates, nearest first: fewest failed limits, then the
     smallest worst utilisation (how far the worst limit is exceeded)."""
-    failing = np.flatnonzero(~s.passed)
+    failing = (~s.passed).nonzero()[0]
     return failing[np.lexsort((s.max_utilization[failing], s.failed_limits[failing]))]
 
 
