@@ -445,8 +445,9 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
     forces = c.forces
     force_n, peak_n = axial_load(app, c.lead), peak_axial_load(app, forces)
     wear_n, steady_n = c.wear_n, c.steady_n
-    moving = segments.moving_torques(app, t, c)
-    torques = drive.torques(app, t, force_n, moving, c.lead)
+    j_screw = segments.screw_side_inertia(app, t)
+    moving = segments.moving_torques(app, t, c, j_screw)
+    torques = drive.torques(app, t, force_n, moving, c, j_screw)
     derate = (limits := nut.pv_limit(app, t))["pv_temperature_factor"]
     flank = nut.flanks(app, t, rpm, derate * limits["pv_lubrication_factor"])
     worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n, c.cycles_per_day)
