@@ -22,7 +22,8 @@ def torques(
     t: CandidateTable,
     force_n: float,
     moving: list[segments.Moving],
-    move: Move,
+    c: motion.Cycle,
+    j_screw: Array,
 ) -> dict[str, Any]:
     """Motor torque: the screw's (with its coupling's) and the rotor's inertia J alpha, and
     every force that passes through the sliding thread (the load and the force m a that
@@ -30,26 +31,29 @@ def torques(
     from rest the thread is at static friction while the load and m a already act. The
     required torque is the larger of break-away and the peak of the moving segments of both
     moves (``moving``, the rows of ``segments.moving_torques``: decelerating a descending
-    load may need more). The breakdown is that of the move that starts hardest (``move``,
-    ``motion.lead_move``: out and back, the scalar inputs); break-away the largest of
-    every move's start (``breakaway``): a move with less thrust may need more torque to
-    start, its acceleration higher. The load's inertia at the motor is the screw's, the
-    coupling's and the heaviest mass any move carries (``heaviest_mass_kg``), reflected:
-    a lighter lead move does not lighten the heaviest."""
+    load may need more). The breakdown is that of the move of the cycle ``c``
+    (``motion.cycle_of``) that starts hardest (``c.lead``, ``motion.lead_move``: out and
+    back, the scalar inputs); break-away the largest of every move's start
+    (``breakaway``): a move with less thrust may need more torque to start, its
+    acceleration higher. The load's inertia at the motor is the screw's and the
+    coupling's (``j_screw``, ``segments.screw_side_inertia``) and the heaviest mass any
+    move carries (``heaviest_mass_kg``), reflected: a lighter lead move does not lighten
+    the heaviest."""
+    move = c.lead
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
-    j_screw = segments.screw_side_inertia(app, t)
     j_heaviest = torque.reflected_mass_inertia(
-        heaviest_mass_kg(app), t.lead_m, t.reflected_inertia_per_kg_m2
+        heaviest_mass_kg(app, c.moves), t.lead_m, t.reflected_inertia_per_kg_m2
     )
     inertial_force_n = move.moving_mass_kg * move.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
     t_motor = torque.inertia_torque(app.motor_inertia_kg_m2 or 0.0, alpha)
     t_mass = torque.load_torque(inertial_force_n, t.lead_m, t.efficiency, t.efficient_turn_rad)
     t_load = torque.load_torque(force_n, t.lead_m, t.efficiency, t.efficient_turn_rad)
-    t_inertia = t_screw + t_motor + t_mass
+    t_spin = t_screw + t_motor
+    t_inertia = t_spin + t_mass
     t_total = torque.total_torque(t_inertia, t.drag_max_nm, t_load)
     # each move's start; the lead move's inertia torques are those of the breakdown
-    starts = [breakaway(t, force_n + inertial_force_n, t_screw + t_motor)]
+    starts = [breakaway(t, force_n + inertial_force_n, t_spin)]
     for other in app.moves:
         if other is not move:
             start_n = motion.running_thrust(app, other) + other.moving_mass_kg * other.accel_m_s2
@@ -86,17 +90,18 @@ def torque_before_factor_nm(app: Application) -> float | None:
     return app.max_torque_nm / app.torque_safety_factor
 
 
-def heaviest_mass_kg(app: Application) -> float:
+def heaviest_mass_kg(app: Application, moves: tuple[Move, ...] = ()) -> float:
     """The heaviest mass any move of the cycle carries [kg] (``motion.cycle``: out and
     back carry the one moving mass; a pick-and-place cycle carries the part one way
     only): the mass whose reflected inertia the motor must control at its worst.
+    ``moves``: the cycle's moves when already worked out.
 
     >>> from app.core.model import Move
     >>> heaviest_mass_kg(Application(load_n=0.0, speed_m_s=0.3, length_m=0.8, moves=(
     ...     Move(0.3, 0.3, 10.0, 10.0, 0.0, 2.0), Move(-0.3, 0.1, 0.25, 0.25, 0.0, 40.0))))
     40.0
     """
-    return max(move.moving_mass_kg for move in motion.cycle(app))
+    return max(move.moving_mass_kg for move in moves or motion.cycle(app))
 
 
 def breakaway(t: CandidateTable, start_n: float, spin_nm: Array) -> Array:

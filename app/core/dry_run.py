@@ -41,7 +41,7 @@ def as_run(app: Application, table: CandidateTable) -> CandidateTable:
     itself when none does. A robustness variant's row keeps its end: one at an end of
     the dry friction's range runs at that end."""
     dry = runs_dry(app, table)
-    rows = np.flatnonzero(dry != table.runs_dry)
+    rows = (dry != table.runs_dry).nonzero()[0]
     if not rows.size:
         return table
     screws = [table.screws[i] for i in rows.tolist()]

@@ -66,7 +66,7 @@ def table_pressures(t: CandidateTable, speed_m_s: Array) -> Array:
     a table); candidates sharing a table are interpolated together."""
     out = filled(len(t), np.nan)
     for position, table in enumerate(t.pressure_tables):
-        rows = np.flatnonzero(t.pressure_table == position)
+        rows = (t.pressure_table == position).nonzero()[0]
         if rows.size:
             out[rows] = bearing.table_pressure(speed_m_s[rows], table)
     return out

@@ -16,8 +16,7 @@ name is unique across the parts, so a name alone finds it (``quantity``, ``PART_
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, fields
-from itertools import repeat
-from operator import attrgetter, getitem, itemgetter
+from operator import itemgetter
 from typing import Any, Generic, TypeVar, cast, get_origin
 
 import numpy as np
@@ -114,8 +113,8 @@ def compressive_axial_load(app: Application, forces: Sequence[float] = ()) -> fl
 
 
 # Not frozen: a frozen dataclass sets each of its fields through object.__setattr__,
-# which cost tens of microseconds per select (built twice: the operating point and the
-# head of a joint screening). Nothing assigns to one.
+# which cost tens of microseconds per select (a dozen parts of ten numbers each).
+# Nothing assigns to one.
 @dataclass(slots=True)
 class AxisLoad(Generic[V]):
     """The axis on each screw: the thrusts on the nut [N] and the screw's speed [rpm]."""
@@ -372,15 +371,6 @@ class Quantities(Generic[V]):
         what a check's sentence or fix reads (a handful of its hundred numbers)."""
         return cast("Quantities[float]", _At(self, i))
 
-    def sliced(self, rows: slice) -> "Quantities[V]":
-        """Rows ``rows`` of every number (views of the arrays), each in its part."""
-        return Quantities(
-            *[
-                part(*map(getitem, numbers(getattr(self, name)), repeat(rows)))
-                for name, part, numbers, _ in _PARTS
-            ]
-        )
-
 
 class _At:
     """One candidate's numbers (or those of one part) read from the arrays of
@@ -402,11 +392,9 @@ PARTS: dict[str, tuple[type[Any], tuple[str, ...]]] = {
     for f in fields(Quantities)
     for cls in [cast(type[Any], get_origin(f.type))]
 }
-#: Each part as (its name, its class, the getter of its numbers from the part as one
-#: tuple, the getter of them from a mapping by name), for ``sliced`` and ``from_names``.
-_PARTS = [
-    (name, cls, attrgetter(*names), itemgetter(*names)) for name, (cls, names) in PARTS.items()
-]
+#: Each part's class and the getter of its numbers from a mapping by name, for
+#: ``from_names``.
+_PARTS = [(cls, itemgetter(*names)) for cls, names in PARTS.values()]
 #: Every number's name, part by part in declaration order, and the part that holds it.
 PART_OF = {name: part for part, (_, names) in PARTS.items() for name in names}
 NAMES = tuple(PART_OF)
@@ -424,7 +412,7 @@ def quantity(q: Quantities[V], name: str) -> V:
 
 def from_names(values: Mapping[str, V]) -> Quantities[V]:
     """The ``Quantities`` holding ``values`` (every number, by its name)."""
-    return Quantities(*[cls(*take(values)) for _, cls, _, take in _PARTS])
+    return Quantities(*[cls(*take(values)) for cls, take in _PARTS])
 
 
 def operating_point(app: Application, t: CandidateTable) -> Quantities[Array]:
@@ -445,8 +433,9 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
     forces = c.forces
     force_n, peak_n = axial_load(app, c.lead), peak_axial_load(app, forces)
     wear_n, steady_n = c.wear_n, c.steady_n
-    moving = segments.moving_torques(app, t, c)
-    torques = drive.torques(app, t, force_n, moving, c.lead)
+    j_screw = segments.screw_side_inertia(app, t)
+    moving = segments.moving_torques(app, t, c, j_screw)
+    torques = drive.torques(app, t, force_n, moving, c, j_screw)
     derate = (limits := nut.pv_limit(app, t))["pv_temperature_factor"]
     flank = nut.flanks(app, t, rpm, derate * limits["pv_lubrication_factor"])
     worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n, c.cycles_per_day)

@@ -87,7 +87,7 @@ def robustness(
         screened = np.ones(len(variants.table), dtype=bool)  # the rows not screened: unread
         if rows.size:
             screened[rows] = screen_table(app, variants.table.take(rows)).passed
-    failing = np.flatnonzero(~screened).tolist()
+    failing = (~screened).nonzero()[0].tolist()
     found = []
     start, names = variants.start.tolist(), variants.names
     for p in positions:

@@ -27,6 +27,8 @@ class Screening:
 
     ``failed`` holds every check's failures, ``failed_by_check`` those of the checks that
     reject (limits, and advice when the user asks); ``warned`` marks failed advice.
+    ``quantities`` and ``measures`` are read at a candidate's position: those of a head
+    (``head``) are the whole screening's, its candidates' rows first.
     """
 
     index: NDArray[np.intp]
@@ -48,15 +50,17 @@ class Screening:
         return self.quantities.torque.total_nm
 
     def head(self, n: int, index: NDArray[np.intp], table: CandidateTable) -> "Screening":
-        """The screening of the first ``n`` rows alone (views), as rows ``index`` of
-        ``table``: for a table screened together with rows that follow them."""
+        """The screening of the first ``n`` rows alone, as rows ``index`` of ``table``: for
+        a table screened together with rows that follow them. Its verdicts and
+        utilisations are views of the first ``n`` rows; its numbers and measures, read at
+        a candidate's position, are the whole screening's (a hundred arrays, not sliced)."""
         cut = slice(0, n)
         failed = {name: mask[cut] for name, mask in self.failed.items()}
         return Screening(
             index,
             table,
-            self.quantities.sliced(cut),
-            {name: m.head(n) for name, m in self.measures.items()},
+            self.quantities,
+            self.measures,
             {name: None if u is None else u[cut] for name, u in self.utilization.items()},
             failed,
             {name: failed[name] for name in self.failed_by_check},

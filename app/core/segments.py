@@ -73,16 +73,19 @@ def screw_side_inertia(app: Application, t: CandidateTable) -> Array:
     return screw + (app.coupling_inertia_kg_m2 or 0.0)
 
 
-def moving_torques(app: Application, t: CandidateTable, c: Cycle | None = None) -> list[Moving]:
+def moving_torques(
+    app: Application, t: CandidateTable, c: Cycle | None = None, j_screw: Array | None = None
+) -> list[Moving]:
     """Each moving segment of every move, for every candidate: its name and direction,
     the thrust against the motion v F_nut [N] and the motor torque [N m]: the thrust
     through the thread and the nut's drag (``running_torque``, worked out once per
     thrust), and the spin (``plus_spin``), whether the segment has a stroke to last or not.
     Segments of the same thrust and acceleration (the out and the back move of a
-    horizontal axis) share one torque array. ``c``: the cycle when already worked out
+    horizontal axis) share one torque array. ``c``: the cycle and ``j_screw``: the
+    screw's side's inertia (``screw_side_inertia``) when already worked out
     (``motion.cycle_of``)."""
     c = c or cycle_of(app)
-    inertia = screw_side_inertia(app, t)
+    inertia = screw_side_inertia(app, t) if j_screw is None else j_screw
     if app.motor_inertia_kg_m2:
         inertia = inertia + app.motor_inertia_kg_m2
     forces = iter(c.moving_n)

@@ -4,6 +4,7 @@ from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import partial
+from operator import itemgetter
 
 import numpy as np
 from numpy.typing import NDArray
@@ -114,14 +115,14 @@ def _rank_order(app: Application, s: Screening) -> np.ndarray:
     warning (failed advice) come after those without, whatever the policy ("reject"
     rejects them).
     """
-    pos = np.flatnonzero(s.passed)
+    pos = s.passed.nonzero()[0]
     torque, util = shown_torque(s)[pos], s.max_utilization[pos]
     primary = {
         "torque": torque,
         "rms": shown_rms(s)[pos] if app.rank_by == "rms" else torque,
         "margin": util,
         "life": -np.nan_to_num(shown_life_min(app, s, pos)) if app.rank_by == "life" else torque,
-        "size": s.table.outer_diameter_m[pos],
+        "size": s.table.outer_diameter_m[pos] if app.rank_by == "size" else torque,
         "motor_margin": motor_use(s)[pos] if app.rank_by == "motor_margin" else torque,
     }[app.rank_by]
     secondary = util if app.rank_by == "torque" else torque
@@ -166,7 +167,7 @@ class Selection:
 def _nearest_order(s: Screening) -> np.ndarray:
     """Positions of rejected candidates, nearest first: fewest failed limits, then the
     smallest worst utilisation (how far the worst limit is exceeded)."""
-    failing = np.flatnonzero(~s.passed)
+    failing = (~s.passed).nonzero()[0]
     return failing[np.lexsort((s.max_utilization[failing], s.failed_limits[failing]))]
 
 
@@ -332,8 +333,7 @@ def summarize(
     ``words``. ``fixable``: the nearest rejected candidates besides ``nearest`` whose
     every failed check names an input that clears it (``_fixable_order``): where no
     remedy admits one of ``nearest``, the remedies and the feasible changes are theirs."""
-    top = by_check.most_common(1)
-    worst, worst_count = top[0] if top else (None, 0)
+    worst, worst_count = max(by_check.items(), key=itemgetter(1), default=(None, 0))
     if evaluated == 0:
         return _no_match(app, table)
     notes = (motion.speed_note(app), _unheld(app, table.reach))  # a family or nut it lacks

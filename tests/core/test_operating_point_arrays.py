@@ -72,15 +72,26 @@ def test_every_number_is_a_float_array_of_the_tables_length(catalog: Catalog, na
 def test_the_head_of_a_screening_is_the_whole_screenings_first_rows(
     catalog: Catalog, name: str
 ) -> None:
+    """The head's verdicts are the whole screening's first rows; its numbers and
+    measures, read at its candidates' positions, are those of the rows screened alone."""
     app, t = APPS[name], catalog.index.table
     whole = screen_table(app, t)
     n = 40
     index = np.arange(n, dtype=np.intp)
     head = whole.head(n, index, t.take(index))
+    alone = screen_table(app, t.take(index))
     for field in NAMES:
-        part, full = quantity(head.quantities, field), quantity(whole.quantities, field)
-        assert np.array_equal(part, full[:n], equal_nan=True), field
+        part, own = quantity(head.quantities, field), quantity(alone.quantities, field)
+        assert np.array_equal(part[:n], own, equal_nan=True), field
+    for check, m in alone.measures.items():
+        read = head.measures[check]
+        assert np.array_equal(read.applicable[:n], m.applicable), check
+        for got, want in ((read.demand, m.demand), (read.capacity, m.capacity)):
+            assert (got is None) == (want is None), check
+            if got is not None:
+                assert np.array_equal(got[:n], want, equal_nan=True), check
     assert np.array_equal(head.passed, whole.passed[:n])
+    assert np.array_equal(head.passed, alone.passed)
     assert np.array_equal(head.max_utilization, whole.max_utilization[:n], equal_nan=True)
     assert head.failed.keys() == whole.failed.keys()
 

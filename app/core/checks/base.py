@@ -72,8 +72,7 @@ def least(limit: float, quantity: Quantity) -> Amount:
 
 
 # Not frozen: a frozen dataclass sets each field through object.__setattr__, and a
-# select builds 26 of these (each check's, and the head of a joint screening). Nothing
-# assigns to one.
+# select builds one per check. Nothing assigns to one.
 @dataclass(slots=True)
 class Measure:
     """A check over many candidates: where it applies, demand and capacity, or failures."""
@@ -82,15 +81,6 @@ class Measure:
     demand: Array | None = None
     capacity: Array | None = None
     flagged: Mask | None = None
-
-    def head(self, n: int) -> "Measure":
-        """The first ``n`` candidates' part (views)."""
-        return Measure(
-            self.applicable[:n],
-            None if self.demand is None else self.demand[:n],
-            None if self.capacity is None else self.capacity[:n],
-            None if self.flagged is None else self.flagged[:n],
-        )
 
     def utilization(self) -> Array | None:
         """demand / capacity (NaN where the limit does not exist); None for yes/no. The

@@ -31,7 +31,8 @@ class OilCompatibility(Check):
     capacity_sources = ("oil_compatible",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        return Measure(~t.oil_compatible, flagged=~t.oil_compatible & np.bool_(app.oil_reaches_nut))
+        unsuited = ~t.oil_compatible
+        return Measure(unsuited, flagged=unsuited & np.bool_(app.oil_reaches_nut))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

@@ -172,7 +172,7 @@ def rated_critical_speed_rpm(
         root_diameter_m, length_m, youngs_modulus_pa, density_kg_m3, end_fixity, shaft
     )
     leadscrew = beam * makers_table_ratio(end_fixity)
-    if not np.any(ball):
+    if not np.asarray(ball).any():
         return leadscrew
     hiwin = ball_screw_critical_speed_rpm(root_diameter_m, length_m, end_fixity)
     return np.where(ball, np.minimum(beam, hiwin), leadscrew)
