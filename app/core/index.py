@@ -17,6 +17,8 @@ from types import MappingProxyType
 import numpy as np
 from numpy.typing import NDArray
 
+from app.core import motion
+from app.core.checks.wear_life import WEAR_ONLY
 from app.core.dry_run import as_run
 from app.core.model import Application, ScrewSpec
 from app.core.robustness import Variants, build_variants
@@ -128,18 +130,21 @@ class CatalogIndex:
     def _joint(
         self, app: Application, index: NDArray[np.intp], rows: CandidateTable
     ) -> Joint | None:
-        """``rows`` (at ``index`` of ``table``) followed by their variant rows, as ``app``
-        runs them, when the index has variant rows and these are at most
-        ``JOINT_MAX_VARIANTS``."""
+        """``rows`` (at ``index`` of ``table``) followed by their variant rows that can
+        change a verdict for ``app`` (``_screened``), as ``app`` runs them, when the index
+        has variant rows and these are at most ``JOINT_MAX_VARIANTS``."""
         if self.variants is None:
             return None
-        counts = np.diff(self.variants.start)[index]
-        if counts.sum() > JOINT_MAX_VARIANTS:
+        v = self.variants
+        spans = [_screened(app, v, range(v.start[p], v.start[p + 1])) for p in index.tolist()]
+        counts = [len(span) for span in spans]
+        if sum(counts) > JOINT_MAX_VARIANTS:
             return None
-        picked = self.variants.rows(index.tolist())
+        picked = np.array([r for span in spans for r in span], dtype=np.intp)
         start = np.concatenate(([0], np.cumsum(counts))).astype(np.intp)
-        names = tuple(self.variants.names[r] for r in picked.tolist())
-        own = Variants(_read_only(self.variants.table.take(picked)), names, start)
+        names = tuple(v.names[r] for r in picked.tolist())
+        moved = tuple(v.moved[r] for r in picked.tolist())
+        own = Variants(_read_only(v.table.take(picked)), names, start, moved)
         return Joint(_read_only(as_run(app, rows.join(own.table))), len(index), own)
 
     def row(self, position: int) -> CandidateTable:
@@ -153,6 +158,15 @@ class CatalogIndex:
             return self.variants, positions
         screws = self.table.screws
         return build_variants([screws[p] for p in positions]), range(len(positions))
+
+
+def _screened(app: Application, v: Variants, rows: range) -> list[int]:
+    """The variant ``rows`` of ``v`` that can change a verdict for ``app``: all of them,
+    but those that move only values the nut's wear life alone reads (``WEAR_ONLY``) where
+    no life is judged (``motion.life_judged``): there they pass wherever their screw does."""
+    if motion.life_judged(app):
+        return list(rows)
+    return [r for r in rows if not v.moved[r] <= WEAR_ONLY]
 
 
 def _read_only(table: CandidateTable) -> CandidateTable:

@@ -172,6 +172,12 @@ def has_duty(app: Application) -> bool:
     return bool(equivalent_stroke(app)) and bool(cycles_per_day(app))
 
 
+def life_judged(app: Application) -> bool:
+    """Whether a nut's life is judged: a life is required and the duty turns each nut's
+    travel into years (``has_duty``)."""
+    return app.required_life_years is not None and has_duty(app)
+
+
 def life_unchecked(app: Application) -> bool:
     """Whether the duty turns each nut's life into years but no required life is given,
     so no life check runs (the rated, wear and L10 life checks need one)."""

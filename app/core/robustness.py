@@ -40,12 +40,14 @@ ROBUST = Robustness(True, ())
 @dataclass(frozen=True, slots=True)
 class Variants:
     """Screws at the low and the high end of each of their ranged values, one at a time:
-    rows ``start[i]:start[i + 1]`` of ``table`` are screw ``i``'s, and ``names`` gives the
-    ranged value of each row."""
+    rows ``start[i]:start[i + 1]`` of ``table`` are screw ``i``'s, ``names`` gives the
+    ranged value of each row and ``moved`` the screw's values (``ScrewSpec`` fields) it
+    moves."""
 
     table: CandidateTable
     names: tuple[str, ...]
     start: NDArray[np.intp]
+    moved: tuple[frozenset[str], ...] = ()
 
     def rows(self, positions: Sequence[int]) -> NDArray[np.intp]:
         """The rows of the screws at ``positions``, in that order."""
@@ -57,6 +59,7 @@ def build_variants(screws: Sequence[ScrewSpec]) -> Variants:
     """The variants of ``screws`` as one table (see ``Variants``)."""
     rows: list[ScrewSpec] = []
     names: list[str] = []
+    moved: list[frozenset[str]] = []
     start = [0]
     for screw in screws:
         for name, ends in screw.assumption_ends.items():
@@ -64,8 +67,10 @@ def build_variants(screws: Sequence[ScrewSpec]) -> Variants:
                 if changes:
                     rows.append(at_values(screw, changes))
                     names.append(name)
+                    moved.append(frozenset(changes))
         start.append(len(rows))
-    return Variants(CandidateTable.build(rows), tuple(names), np.array(start, dtype=np.intp))
+    starts = np.array(start, dtype=np.intp)
+    return Variants(CandidateTable.build(rows), tuple(names), starts, tuple(moved))
 
 
 def robustness(

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from app.core import motion
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Check, Measure, Reach
 from app.core.dry_run import as_run
@@ -83,14 +84,17 @@ def failing_beyond(s: Screening, cleared: Callable[[Check], bool]) -> Mask:
     return stuck
 
 
-#: What picks the eligible candidates of a table: (lead [m], coating, families, nut material).
-Filters = tuple[float | None, str, tuple[str, ...], str | None, bool]
+#: What picks the eligible candidates of a table and their variant rows: (lead [m],
+#: coating, families, nut material, lubricated, life judged).
+Filters = tuple[float | None, str, tuple[str, ...], str | None, bool, bool]
 
 
 def filters(app: Application) -> Filters:
     """The values of ``app`` its eligible rows depend on: those ``eligible_mask`` reads,
-    and whether the nut is lubricated (the friction the rows run at, ``dry_run.as_run``)."""
-    return (app.lead_m, app.coating, app.families, app.nut_material, app.lubricated)
+    whether the nut is lubricated (the friction the rows run at, ``dry_run.as_run``) and
+    whether a life is judged (the variant rows screened with them, ``index.Eligible``)."""
+    lubricated, judged = app.lubricated, motion.life_judged(app)
+    return (app.lead_m, app.coating, app.families, app.nut_material, lubricated, judged)
 
 
 def eligible_mask(app: Application, table: CandidateTable) -> Mask:

@@ -41,8 +41,8 @@ class Life(Check):
     capacity_sources = ("life", "wear_rate", "allowed_wear")
 
     def applies(self, app: Application) -> bool:
-        # without a duty there is nothing to turn the rated travel into years
-        return app.required_life_years is not None and motion.has_duty(app)
+        # without a duty there is nothing to turn the travel into years
+        return motion.life_judged(app)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         unrated = np.isnan(q.life.life_years_min)

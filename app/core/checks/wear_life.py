@@ -21,6 +21,10 @@ from app.core.phrase import Amount, Phrase, figures
 
 #: The catalog's name of the ranged wear rate (its ends give the life band).
 WEAR_RATE = "specific_wear_rate_mm3_n_m"
+#: The screw's values (``ScrewSpec`` fields) only the nut's wear life reads, which caps
+#: the rated life too: moving them changes no verdict where no life is judged
+#: (``motion.life_judged``), so robustness then leaves such variants unscreened.
+WEAR_ONLY = frozenset({"wear_rate_m2_n", "allowed_wear_fraction"})
 
 
 def life_band(s: ScrewSpec) -> tuple[float, float]:
@@ -63,7 +67,7 @@ class WearLife(Check):
     capacity_sources = ("wear_rate", "allowed_wear", "nut_length")
 
     def applies(self, app: Application) -> bool:
-        return app.required_life_years is not None and motion.has_duty(app)
+        return motion.life_judged(app)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         required = same(t, app.required_life_years)
