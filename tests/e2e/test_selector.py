@@ -168,14 +168,16 @@ def test_each_chart_renders_its_traces_with_png_export(
     top = api["candidates"][:5]
     # the PV chart: per nut material's limit curve a line and its operating crosses
     curves = {(c["nut_material"], c["pv"]["limit_mpa_m_s"]) for c in top}
-    expected = {"critical_speed": len(top) + 2, "pv": 2 * len(curves), "torque": 3}
+    # the torque chart: three stacked bars (inertia, drag, load) and the peak's diamonds
+    expected = {"critical_speed": len(top) + 2, "pv": 2 * len(curves), "torque": 4}
     open_results(page, live_server, LEAD_AXIS)
     for chart, count in expected.items():
         selector = f"#chart-{chart}"
         page.wait_for_selector(f"{selector} .main-svg")
         assert page.evaluate(f"() => document.querySelector('{selector}').data.length") == count
-        layer = ".barlayer" if chart == "torque" else ".scatterlayer"
-        assert page.locator(f"{selector} {layer} .trace").count() == count
+        bars = 3 if chart == "torque" else 0
+        assert page.locator(f"{selector} .barlayer .trace").count() == bars
+        assert page.locator(f"{selector} .scatterlayer .trace").count() == count - bars
         assert page.locator(f"{selector} {PNG_BUTTON}").count() == 1
         assert page.locator(f"{selector} .modebar-btn[data-title='Share chart...']").count() == 0
     page.hover("#chart-torque")
