@@ -40,41 +40,13 @@ def motor_figure(
     name = "Motor curve" if margin == 1.0 else "Pull-out"
     if origin:
         name += f" ({CURVE_ORIGINS[origin]})"
-    data: list[dict[str, Any]] = [
-        {
-            "type": "scatter",
-            "mode": "lines",
-            "name": name,
-            "x": [rpm for rpm, _ in curve],
-            "y": [d.value(torque, "torque") for _, torque in curve],
-            "line": {"color": "#000000", "width": 2},
-            "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>motor</extra>",
-        }
-    ]
+    data = [_line(name, curve, d, "solid", "motor")]
     if margin != 1.0:
-        data.append(
-            {
-                "type": "scatter",
-                "mode": "lines",
-                "name": f"Usable (pull-out / {margin:g})",
-                "x": [rpm for rpm, _ in curve],
-                "y": [d.value(torque / margin, "torque") for _, torque in curve],
-                "line": {"color": "#000000", "width": 2, "dash": "dash"},
-                "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>usable</extra>",
-            }
-        )
+        usable = tuple((rpm, torque / margin) for rpm, torque in curve)
+        data.append(_line(f"Usable (pull-out / {margin:g})", usable, d, "dash", "usable"))
     if continuous:
-        data.append(
-            {
-                "type": "scatter",
-                "mode": "lines",
-                "name": "Continuous rating (for the cycle's RMS torque)",
-                "x": [rpm for rpm, _ in continuous],
-                "y": [d.value(torque, "torque") for _, torque in continuous],
-                "line": {"color": "#000000", "width": 2, "dash": "dot"},
-                "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>continuous</extra>",
-            }
-        )
+        rating = "Continuous rating (for the cycle's RMS torque)"
+        data.append(_line(rating, continuous, d, "dot", "continuous"))
     for colour, c in zip(PALETTE, candidates[:TOP], strict=False):
         rpm, torque_nm, text = _demand_points(c)
         data.append(
@@ -93,6 +65,23 @@ def motor_figure(
     x_axis = {**axis("Screw speed [rpm]"), "rangemode": "tozero"}
     y_axis = {**axis(f"Torque [{unit}]"), "rangemode": "tozero"}
     return {"data": data, "layout": layout(x_axis, y_axis)}
+
+
+def _line(
+    name: str, points: tuple[tuple[float, float], ...], d: Display, dash: str, tag: str
+) -> dict[str, Any]:
+    """A black line through torque-speed ``points`` (rpm, N m), in the torque unit shown;
+    ``tag`` names it in the hover label."""
+    unit = d.label("torque")
+    return {
+        "type": "scatter",
+        "mode": "lines",
+        "name": name,
+        "x": [rpm for rpm, _ in points],
+        "y": [d.value(torque, "torque") for _, torque in points],
+        "line": {"color": "#000000", "width": 2, "dash": dash},
+        "hovertemplate": f"%{{x:.4g}} rpm<br>%{{y:.4g}} {unit}<extra>{tag}</extra>",
+    }
 
 
 def _demand_points(c: CandidateOut) -> tuple[list[float], list[float], list[str]]:
