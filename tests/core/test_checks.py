@@ -108,6 +108,8 @@ def test_coated_screw_over_2_4_m_fails_the_length_check(catalog: Catalog) -> Non
     assert not coated.passed and coated.limit == pytest.approx(2.4)
     assert coated.fix is not None and "at most 2280 mm" in render(coated.fix)
     assert uncoated.passed and uncoated.limit == pytest.approx(4.0)
+    # the input is the length between the supports; the limit holds the whole screw
+    assert "machined ends beyond the supports count against it" in render(uncoated.message)
 
 
 @pytest.mark.parametrize(

@@ -22,7 +22,10 @@ class Length(Check):
     name = "length"
     why_none = "no screw in the catalog is made this long: consider a ball screw or a belt"
     label = "Length"
-    description = "The screw length against the longest screw made in this variant."
+    description = (
+        "The screw length between the supports against the longest screw made in this "
+        "variant, which holds the machined ends beyond the supports too."
+    )
     quantity = "length"
     formula = "L = L_screw; L_max = L_variant"
     source = "the family's length limit per variant (catalog data)"
@@ -39,7 +42,8 @@ class Length(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         template = (
-            "{L} is within the maximum {cap}."
+            "{L} between the supports is within the maximum {cap}; the screw's machined "
+            "ends beyond the supports count against it too."
             if passed
             else ("{L} exceeds the maximum length {cap}.")
         )
