@@ -173,14 +173,12 @@ def has_duty(app: Application) -> bool:
 
 
 def life_judged(app: Application) -> bool:
-    """Whether a nut's life is judged: a life is required and the duty turns each nut's
-    travel into years (``has_duty``)."""
+    """Whether a life is required and the duty turns travel into years (``has_duty``)."""
     return app.required_life_years is not None and has_duty(app)
 
 
 def life_unchecked(app: Application) -> bool:
-    """Whether the duty turns each nut's life into years but no required life is given,
-    so no life check runs (the rated, wear and L10 life checks need one)."""
+    """Whether the duty turns life into years but no life check runs (none required)."""
     return app.required_life_years is None and has_duty(app)
 
 
@@ -257,14 +255,8 @@ def _cycles_per_day(app: Application, p: Profile | None) -> float | None:
 
 def holds_a_load(app: Application) -> bool:
     """Whether the axis must hold a load at rest: a load left on the nut after some move
-    (``_rest_load``: its mass's weight on a vertical axis, a load of fixed direction, a
-    spring or press, on any axis). A vertical axis moving no mass against a load that
-    opposes the motion, or a fixed load of 0 N, leaves none: there is nothing to hold.
-
-    >>> axis = {"load_n": 0.0, "speed_m_s": 0.1, "length_m": 0.5, "orientation": "vertical"}
-    >>> holds_a_load(Application(**axis)), holds_a_load(Application(**axis, moving_mass_kg=1))
-    (False, True)
-    """
+    (``_rest_load``: its mass's weight on a vertical axis, a load of fixed direction). A
+    vertical axis moving no mass, or a fixed load of 0 N, leaves nothing to hold."""
     return any(_rest_load(app, move) > 0.0 for move in cycle(app))
 
 
