@@ -4,6 +4,7 @@ and each number not at its default, in the display units, exactly."""
 from collections.abc import Mapping
 
 from app.contract.exact import link_number
+from app.contract.input_field import InputField
 from app.contract.inputs import ApplicationIn
 from app.contract.screw_fields import BY_NAME
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn
@@ -14,10 +15,9 @@ from app.contract.units import DEFAULT_UNITS
 OWN_MATERIAL = "custom"
 
 
-def _default_text(name: str) -> str:
-    """A field's default as its page field writes it ("" without one)."""
-    default = BY_NAME[name].default
-    return "" if default is None else f"{default:g}"
+def default_text(field: InputField) -> str:
+    """A screw field's default as its page field writes it ("" without one)."""
+    return "" if field.default is None else f"{field.default:g}"
 
 
 def _value_text(name: str, value: float, units: Mapping[str, str]) -> str:
@@ -42,7 +42,7 @@ def screw_values(screw: CustomScrewIn, units: Mapping[str, str] = DEFAULT_UNITS)
         dump.update(material)
     for name, value in dump.items():
         text = "" if value is None else _value_text(name, value, units)
-        if name in BY_NAME and text not in ("", _default_text(name)):
+        if name in BY_NAME and text not in ("", default_text(BY_NAME[name])):
             values[name] = text
     return values
 

@@ -16,7 +16,7 @@ from app.core import motion, segments
 from app.core.checks import BY_NAME
 from app.core.checks.base import Check
 from app.core.dry_run import screw_as_run
-from app.core.duty import ball_life_revolutions, travel_thrusts
+from app.core.duty import ball_life_revolutions, ball_load_factors, travel_thrusts
 from app.core.input_rules import read_inputs, refused
 from app.core.model import (
     Application,
@@ -101,8 +101,8 @@ class Batch:
             return [math.inf] * len(self.positions)
         table = self.screening.table
         rating, preload = table.dynamic_load_n[self.at], table.preload_n[self.at]
-        nut = table.nut_length_m[self.at]
-        revolutions: list[float] = ball_life_revolutions(self.app, rating, preload, nut).tolist()
+        factor = ball_load_factors(self.app, table.nut_length_m[self.at])
+        revolutions: list[float] = ball_life_revolutions(self.app, rating, preload, factor).tolist()
         return revolutions
 
     @cached_property

@@ -37,12 +37,12 @@ def torques(
     (``breakaway``): a move with less thrust may need more torque to start, its
     acceleration higher. The load's inertia at the motor is the screw's and the
     coupling's (``j_screw``, ``segments.screw_side_inertia``) and the heaviest mass any
-    move carries (``heaviest_mass_kg``), reflected: a lighter lead move does not lighten
+    move carries (``motion.heaviest_mass``), reflected: a lighter lead move does not lighten
     the heaviest."""
     move = c.lead
     alpha = torque.angular_acceleration(move.accel_m_s2, t.lead_m)
     j_heaviest = torque.reflected_mass_inertia(
-        heaviest_mass_kg(app, c.moves), t.lead_m, t.reflected_inertia_per_kg_m2
+        motion.heaviest_mass(app, c.moves), t.lead_m, t.reflected_inertia_per_kg_m2
     )
     inertial_force_n = move.moving_mass_kg * move.accel_m_s2
     t_screw = torque.inertia_torque(j_screw, alpha)
@@ -88,20 +88,6 @@ def torque_before_factor_nm(app: Application) -> float | None:
     if app.max_torque_nm is None:
         return None
     return app.max_torque_nm / app.torque_safety_factor
-
-
-def heaviest_mass_kg(app: Application, moves: tuple[Move, ...] = ()) -> float:
-    """The heaviest mass any move of the cycle carries [kg] (``motion.cycle``: out and
-    back carry the one moving mass; a pick-and-place cycle carries the part one way
-    only): the mass whose reflected inertia the motor must control at its worst.
-    ``moves``: the cycle's moves when already worked out.
-
-    >>> from app.core.model import Move
-    >>> heaviest_mass_kg(Application(load_n=0.0, speed_m_s=0.3, length_m=0.8, moves=(
-    ...     Move(0.3, 0.3, 10.0, 10.0, 0.0, 2.0), Move(-0.3, 0.1, 0.25, 0.25, 0.0, 40.0))))
-    40.0
-    """
-    return max(move.moving_mass_kg for move in moves or motion.cycle(app))
 
 
 def breakaway(t: CandidateTable, start_n: float, spin_nm: Array) -> Array:

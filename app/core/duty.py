@@ -218,20 +218,20 @@ def ball_life_revolutions(
     app: Application,
     dynamic_load_n: Array,
     preload_n: Array,
-    nut_length_m: Array,
+    load_factor: float | Array,
     thrusts: tuple[list[float], list[float]] | None = None,
-    load_factor: float | None = None,
 ) -> Array:
     """Each ball nut's L10 life [revolutions] over the cycle (``ballscrew.nut_life_revolutions``)
-    for its rating Ca [N], preload F_pr [N] and length [m]: both sides' lives combined for
-    a preloaded nut, the one-sided life for one without preload; infinite where nothing
-    loads it. ``thrusts``: the cycle's ``travel_thrusts`` when already worked out;
-    ``load_factor``: f_w for every nut, else each nut's ``ball_load_factors``."""
+    for its rating Ca [N], preload F_pr [N] and load factor f_w (``ball_load_factors``
+    gives each nut's): both sides' lives combined for a preloaded nut, the one-sided life
+    for one without preload; infinite where nothing loads it. ``thrusts``: the cycle's
+    ``travel_thrusts`` when already worked out."""
     thrusts = thrusts or travel_thrusts(app)
     mean = operating_mean_load(app, preload_n, thrusts)
     sides = side_mean_loads(app, preload_n, thrusts)
-    factor = ball_load_factors(app, nut_length_m) if load_factor is None else load_factor
-    revolutions = ballscrew.nut_life_revolutions(dynamic_load_n, factor, mean, sides, preload_n)
+    revolutions = ballscrew.nut_life_revolutions(
+        dynamic_load_n, load_factor, mean, sides, preload_n
+    )
     return np.asarray(revolutions, dtype=np.float64)
 
 
@@ -245,8 +245,7 @@ def track_life_revolutions(
     f_w ``load_factor``."""
     thrusts = travel_thrusts(app)
     if ballscrew.cubic_mean_load(*thrusts) > 0.0:
-        nut = np.full(np.shape(dynamic_load_n), np.nan)  # the factor is given: no length read
-        return ball_life_revolutions(app, dynamic_load_n, preload_n, nut, thrusts, load_factor)
+        return ball_life_revolutions(app, dynamic_load_n, preload_n, load_factor, thrusts)
     preload = np.asarray(preload_n, dtype=np.float64)
     carried = ballscrew.preloaded_operating_load(force_n, preload)
     sides = ballscrew.side_loads(force_n, preload)

@@ -67,18 +67,18 @@ def cycle(app: Application) -> tuple[Move, ...]:
     )
 
 
-def heaviest_mass(app: Application) -> float:
-    """The largest moving mass the nut carries over the cycle [kg]: of its heaviest move
-    (a part picked up on the way out), the scalar input's without moves of its own.
+def heaviest_mass(app: Application, moves: tuple[Move, ...] = ()) -> float:
+    """The largest moving mass the nut carries over the cycle [kg] (of ``moves``, the
+    cycle's when worked out): its heaviest move's (a part picked up on the way out), the
+    scalar input's without moves of its own; the inertia the motor controls at its worst.
 
-    >>> out, back = (Move(d, 0.1, 1.0, 1.0, 0.0, m, 0.0, "opposes") for d, m in ((0.1, 3.0),
-    ...                                                                      (-0.1, 2.0)))
+    >>> out, back = (Move(d, 0.1, 1.0, 1.0, 0.0, m) for d, m in ((0.1, 3.0), (-0.1, 2.0)))
     >>> scalar = Application(load_n=0.0, speed_m_s=0.1, length_m=0.5, moving_mass_kg=1.0)
     >>> cycle_of_moves = Application(load_n=0.0, speed_m_s=0.1, length_m=0.5, moves=(out, back))
     >>> heaviest_mass(scalar), heaviest_mass(cycle_of_moves)
     (1.0, 3.0)
     """
-    return max(m.moving_mass_kg for m in cycle(app))
+    return max(m.moving_mass_kg for m in moves or cycle(app))
 
 
 def sense(move: Move) -> float:

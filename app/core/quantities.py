@@ -137,7 +137,7 @@ class Torques(Generic[V]):
 
     angular_accel_rad_s2: V
     #: the load's inertia at the motor: the screw's and the heaviest moving mass of the
-    #: cycle's moves reflected (``drive.heaviest_mass_kg``) [kg m^2]
+    #: cycle's moves reflected (``motion.heaviest_mass``) [kg m^2]
     inertia_kg_m2: V
     inertia_screw_nm: V
     inertia_mass_nm: V

@@ -22,7 +22,7 @@ from app.core.changes import (
 )
 from app.core.checks import BY_NAME, nut_heat
 from app.core.checks.wear_life import life_band
-from app.core.duty import ball_life_revolutions
+from app.core.duty import ball_life_revolutions, ball_load_factors
 from app.core.index import CatalogIndex
 from app.core.model import Application, AxisProvenance, Remedy, ScrewSpec, Summary, holds
 from app.core.phrase import Amount, Phrase, join, plural
@@ -92,9 +92,8 @@ def shown_life_min(app: Application, s: Screening, pos: np.ndarray) -> np.ndarra
     ball = t.ball[pos]
     if ball.any():
         at = pos[ball]
-        revolutions = ball_life_revolutions(
-            app, t.dynamic_load_n[at], t.preload_n[at], t.nut_length_m[at]
-        )
+        factor = ball_load_factors(app, t.nut_length_m[at])
+        revolutions = ball_life_revolutions(app, t.dynamic_load_n[at], t.preload_n[at], factor)
         travel = revolutions * t.lead_m[at]
         low[ball] = np.where(np.isfinite(travel), travel, np.nan)
     return low

@@ -57,18 +57,26 @@ MEAN_NOTE = (
 )
 
 
-def screw() -> ScrewSpec:
-    """WTF2040-2 as a screw of the app's, for the torques: a square thread on the 20 mm
-    shaft diameter whose friction gives THK's efficiency 0.9, with THK's shaft inertia."""
-    tan_l = geometry.tan_lead_angle(LEAD_M, SHAFT_D_M)
+def square_thread(
+    screw_id: str, shaft_d_m: float, lead_m: float, inertia_kg_m2_per_m: float
+) -> ScrewSpec:
+    """A THK ball screw as a screw of the app's, for the torques: a square thread on its
+    shaft diameter [m] whose friction gives THK's efficiency 0.9 at its lead [m], with
+    THK's shaft inertia [kg m^2/m]."""
+    tan_l = geometry.tan_lead_angle(lead_m, shaft_d_m)
     mu = efficiency.friction_for_efficiency(tan_l, ETA, 1.0)
     return ScrewSpec(
-        id="WTF2040-2", series_id="example", series_name="example", anti_backlash=False,
-        coated=False, outer_diameter_m=SHAFT_D_M, root_diameter_m=SHAFT_D_M, lead_m=LEAD_M,
+        id=screw_id, series_id="example", series_name="example", anti_backlash=False,
+        coated=False, outer_diameter_m=shaft_d_m, root_diameter_m=shaft_d_m, lead_m=lead_m,
         thread_half_angle_rad=0.0, friction_static=mu, friction_dynamic=mu,
         youngs_modulus_pa=STEEL_E, density_kg_m3=STEEL_RHO, screw_expansion_per_k=1.2e-5,
-        inertia_kg_m2_per_m=INERTIA_KG_M2_PER_M,
+        inertia_kg_m2_per_m=inertia_kg_m2_per_m,
     )  # fmt: skip
+
+
+def screw() -> ScrewSpec:
+    """WTF2040-2 on its 20 mm shaft (``square_thread``)."""
+    return square_thread("WTF2040-2", SHAFT_D_M, LEAD_M, INERTIA_KG_M2_PER_M)
 
 
 def application(mass_as_inertia: bool) -> Application:

@@ -21,7 +21,7 @@ from app.contract.exact import PLAIN_MESSAGES, link_number, page_value
 from app.contract.figures import bound_sig, sig
 from app.contract.form import BOUND_MESSAGES, LOWER_BOUNDS, unit_key
 from app.contract.input_field import InputField
-from app.contract.screw_link import OWN_MATERIAL
+from app.contract.screw_link import OWN_MATERIAL, default_text
 from app.contract.screws import NUT_API, NUT_FIELD, CustomScrewIn, MaterialIn
 from app.contract.share_link import encode_query
 from app.contract.units import DEFAULT_UNITS, Quantity, label, si_to_api
@@ -56,7 +56,7 @@ class ScrewField:
 
 def _page_field(row: InputField) -> ScrewField:
     """One row of the screw's field table as the page shows it (its default as text)."""
-    default = "" if row.default is None else f"{row.default:g}"
+    default = default_text(row)
     return ScrewField(row.page, row.label, row.unit, row.help, row.required, default, row.quantity)
 
 

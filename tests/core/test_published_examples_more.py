@@ -29,7 +29,8 @@ from app.core.model import STANDARD_GRAVITY_M_S2, Application, Move, ScrewSpec
 from app.core.quantities import operating_point
 from app.core.table import CandidateTable
 from app.core.units import to_si
-from tests.core.conftest import IN, STEEL_E, STEEL_RHO
+from app.report.thk_example import square_thread
+from tests.core.conftest import IN
 
 WITHIN = 0.01
 
@@ -47,18 +48,9 @@ ACCEL = SPEED_M_S / RAMP_S
 
 
 def _screw() -> ScrewSpec:
-    """BLK1510-5.6 as a screw of the app's: a square thread on the 15 mm shaft whose
-    friction gives THK's efficiency 0.9 (as ``app.report.thk_example`` does for its
-    horizontal example), with THK's shaft inertia."""
-    tan_l = geometry.tan_lead_angle(LEAD_M, SHAFT_D_M)
-    mu = efficiency.friction_for_efficiency(tan_l, ETA, 1.0)
-    return ScrewSpec(
-        id="BLK1510-5.6", series_id="example", series_name="example", anti_backlash=False,
-        coated=False, outer_diameter_m=SHAFT_D_M, root_diameter_m=SHAFT_D_M, lead_m=LEAD_M,
-        thread_half_angle_rad=0.0, friction_static=mu, friction_dynamic=mu,
-        youngs_modulus_pa=STEEL_E, density_kg_m3=STEEL_RHO, screw_expansion_per_k=1.2e-5,
-        inertia_kg_m2_per_m=SHAFT_INERTIA,
-    )  # fmt: skip
+    """BLK1510-5.6 on its 15 mm shaft, as ``app.report.thk_example`` takes its horizontal
+    example's screw (``square_thread``: THK's efficiency 0.9, its shaft inertia)."""
+    return square_thread("BLK1510-5.6", SHAFT_D_M, LEAD_M, SHAFT_INERTIA)
 
 
 def _own_model() -> Application:

@@ -51,7 +51,8 @@ def life_years(
     nut, its load factor raised on a short stroke); ``thrusts`` as there."""
     thrusts = thrusts or travel_thrusts(app)
     cycles = motion.cycles_per_day(app) or 0.0
-    revolutions = ball_life_revolutions(app, dynamic_load_n, preload_n, nut_length_m, thrusts)
+    factor = ball_load_factors(app, nut_length_m)
+    revolutions = ball_life_revolutions(app, dynamic_load_n, preload_n, factor, thrusts)
     revolutions_per_day = sum(thrusts[1]) / lead_m * cycles
     return np.asarray(revolutions / (revolutions_per_day * life.DAYS_PER_YEAR), dtype=np.float64)
 

@@ -5,7 +5,7 @@ import sys
 
 import numpy as np
 
-from app.core import drive
+from app.core import motion
 from app.core.checks.base import (
     Application,
     Array,
@@ -55,7 +55,7 @@ class InertiaRatio(Check):
         return {
             "J_screw": t.inertia_kg_m2_per_m * app.length_m,
             "J_coupling": app.coupling_inertia_kg_m2 or 0.0,
-            "m": drive.heaviest_mass_kg(app),
+            "m": motion.heaviest_mass(app),
             "lead": t.lead_m,
             "J_rotor": app.motor_inertia_kg_m2,
         }
