@@ -23,7 +23,7 @@ from app.core.dry_run import as_run
 from app.core.model import Application, ScrewSpec
 from app.core.robustness import Variants, build_variants
 from app.core.screening import Filters, eligible_mask, filters
-from app.core.table import COLUMNS, CandidateTable, SizeKey, size_of, size_rows
+from app.core.table import COLUMNS, CandidateTable, SizeKey, size_of
 
 __all__ = ["CatalogIndex", "SizeKey", "size_of"]
 
@@ -110,7 +110,7 @@ class CatalogIndex:
             table=table,
             variants=variants,
             positions=MappingProxyType({s.id: i for i, s in enumerate(table.screws)}),
-            sizes=_sizes(table),
+            sizes=table.reach.rows,
             eligible_rows=EligibleCache(ELIGIBLE_KEPT),
         )
 
@@ -174,8 +174,3 @@ def _read_only(table: CandidateTable) -> CandidateTable:
     for name in COLUMNS:
         getattr(table, name).setflags(write=False)
     return table
-
-
-def _sizes(table: CandidateTable) -> Mapping[SizeKey, NDArray[np.intp]]:
-    """The rows of each size and nut of ``table``, shortest lead first (``size_rows``)."""
-    return MappingProxyType(size_rows(table.screws, table.lead_m))

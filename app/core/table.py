@@ -27,9 +27,26 @@ Array = NDArray[np.float64]
 Mask = NDArray[np.bool_]
 
 
+#: None (no such limit) to NaN; any other value to itself (``dict.get(v, v)``)
+_NAN_FOR_NONE: dict[float | None, float] = {None: math.nan}
+
+
 def column(values: Sequence[float | None]) -> Array:
-    """Float column; None (no such limit) becomes NaN (as numpy converts it)."""
-    return np.array(values, dtype=np.float64)
+    """Float column; None (no such limit) becomes NaN.
+
+    ``np.fromiter`` reads a list of floats about twice as fast as ``np.array`` and stops
+    with a TypeError at the first None; a column with some is then read again with each
+    None looked up as NaN (``dict.get`` mapped in C), still faster than ``np.array``'s
+    conversion of None (a column of 100,000 catalog values in 1-2 ms).
+
+    >>> column([0.5, None, 2]).tolist()
+    [0.5, nan, 2.0]
+    """
+    try:
+        return np.fromiter(values, dtype=np.float64, count=len(values))
+    except TypeError:
+        nan = _NAN_FOR_NONE.get
+        return np.fromiter(map(nan, values, values), dtype=np.float64, count=len(values))
 
 
 def filled(n: int, value: float) -> Array:
@@ -60,15 +77,16 @@ def _bands(screws: Sequence[ScrewSpec], lead_m: Array) -> tuple[Array, Mask]:
     return speeds, off
 
 
-def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[str, Array]:
-    """Thread and nut-rating columns (NaN where a family gives none): pitch, d2, H1, nut
-    length, the polymer limits, the wear rating and the helix of one turn at d2."""
-    names = ("pitch_m", "flank_pitch_diameter_m", "flank_height_m", "nut_length_m")
+def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array, d2: Array) -> dict[str, Array]:
+    """Thread and nut-rating columns (NaN where a family gives none): pitch, d2 (the
+    column ``d2`` read), H1, nut length, the polymer limits, the wear rating and the helix
+    of one turn at d2."""
+    names = ("pitch_m", "flank_height_m", "nut_length_m")
     names += ("max_pressure_pa", "dynamic_pressure_pa", "nut_pv_limit_pa_m_s")
     names += ("max_sliding_speed_m_s",)
     names += ("wear_rate_m2_n", "allowed_wear_fraction")
     out = {name: column(list(map(attrgetter(name), screws))) for name in names}
-    d2 = out["flank_pitch_diameter_m"]
+    out["flank_pitch_diameter_m"] = d2
     out["flank_helix_travel_m"] = np.asarray(geometry.helix_travel(lead_m, d2), dtype=np.float64)
     return out
 
@@ -145,7 +163,11 @@ def size_rows(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[SizeKey, NDArr
 class Reach:
     """What a catalog offers, so that a fix never names a screw nobody makes (unbounded
     for a screw of the user's own): the largest values, the leads each size and nut is
-    made in, ascending, and the families and nut materials it holds (None: any)."""
+    made in, ascending, and the families and nut materials it holds (None: any).
+
+    ``rows`` are the rows of each size and nut in the catalog's own table (``size_rows``),
+    which its leads are read from and its index keeps (``CatalogIndex.sizes``); a subset of
+    the table (``take``) keeps its catalog's reach, rows included."""
 
     max_lead_m: float = math.inf
     max_root_diameter_m: float = math.inf
@@ -155,6 +177,9 @@ class Reach:
     leads: Mapping[SizeKey, tuple[float, ...]] = field(default_factory=lambda: MappingProxyType({}))
     families: tuple[str, ...] | None = None
     nut_materials: tuple[str, ...] | None = None
+    rows: Mapping[SizeKey, NDArray[np.intp]] = field(
+        default_factory=lambda: MappingProxyType({}), compare=False, repr=False
+    )
 
     def made_lead(self, screw: ScrewSpec, bound_m: float, larger: bool) -> float | None:
         """The lead of ``screw``'s size nearest ``bound_m`` on its far side: the smallest
@@ -168,9 +193,10 @@ class Reach:
         return next((lead for lead in reversed(leads) if lead <= bound_m), None)
 
 
-def _leads(screws: Sequence[ScrewSpec], lead_m: Array) -> Mapping[SizeKey, tuple[float, ...]]:
-    """The leads each size and nut of ``screws`` is made in, ascending."""
-    rows = size_rows(screws, lead_m)
+def _leads(
+    rows: Mapping[SizeKey, NDArray[np.intp]], lead_m: Array
+) -> Mapping[SizeKey, tuple[float, ...]]:
+    """The leads each size and nut is made in, ascending, from its ``rows``."""
     # each size's rows come shortest lead first: its leads once each, in that order
     return MappingProxyType(
         {size: tuple(dict.fromkeys(lead_m[at].tolist())) for size, at in rows.items()}
@@ -192,15 +218,17 @@ def _reach(
     anti_backlash: Mask,
 ) -> Reach:
     """What ``screws`` offer (``Reach``), from their columns."""
+    rows = MappingProxyType(size_rows(screws, lead))
     return Reach(
         max_lead_m=_largest(lead),
         max_root_diameter_m=_largest(root),
         max_design_load_n=_largest(design_load),
         max_length_m=_largest(max_length),
         anti_backlash=bool(anti_backlash.any()),
-        leads=_leads(screws, lead),
+        leads=_leads(rows, lead),
         families=_held(dict.fromkeys(map(attrgetter("family_id"), screws))),
         nut_materials=_held(dict.fromkeys(map(attrgetter("nut_material"), screws))),
+        rows=rows,
     )
 
 
@@ -409,7 +437,9 @@ class CandidateTable:
         ball = np.array([s.screw_type == "ball" for s in screws], dtype=bool)
         tables, which = _distinct(screws, "bearing_pressure_table")
         deviation_tables, deviation_table = _distinct(screws, "travel_deviation_bands")
-        limits = (col("design_load_n"), col("max_length_m"), flag("anti_backlash"))
+        copied = {name: col(attr) for name, attr in COPIED.items()}
+        anti_backlash = flag("anti_backlash")
+        limits = (copied["design_load_n"], copied["max_length_m"], anti_backlash)
         reach = _reach(screws, lead, rd, *limits)
         columns = dict(
             lead_m=lead,
@@ -419,8 +449,8 @@ class CandidateTable:
             helix_travel_m=geometry.helix_travel(lead, d_p),
             lead_angle_rad=np.arctan(tan_l),
             cos_half_angle=cos_a,
-            **{name: col(attr) for name, attr in COPIED.items()},
-            **_nut_columns(screws, lead),
+            **copied,
+            **_nut_columns(screws, lead, d2),
         )
         mu = (col("friction_static"), col("friction_dynamic"))
         columns |= friction_columns(tan_l, cos_a, d_p, *mu, ball)
@@ -435,7 +465,7 @@ class CandidateTable:
             screws=screws,
             repeatability_m=np.nan_to_num(col("repeatability_m")),
             coated=flag("coated"),
-            anti_backlash=flag("anti_backlash"),
+            anti_backlash=anti_backlash,
             oil_compatible=flag("oil_compatible"),
             lubricated_rating=flag("lubricated_rating"),
             runs_dry=np.zeros(len(screws), dtype=bool),
