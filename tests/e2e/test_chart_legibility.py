@@ -1,7 +1,7 @@
 """Charts that read, in real Chromium: tick labels on every chart's axes (the wear life's
 too), the PV chart's limit curves beside the operating points, no two y tick labels
 overlapping at 390 px or in the printed report, and the printed report's pages rendered
-to PNG (pdftoppm) and its screens at 1280 and 390 px saved under test-artifacts/."""
+to PNG (pdftoppm) and its screens at 1280 and 390 px saved under test-artifacts/ (``shots``)."""
 
 import shutil
 import subprocess
@@ -11,6 +11,7 @@ from typing import Any
 import pytest
 
 from tests.builtin_catalog import builtin_catalog
+from tests.e2e.shots import shoot
 from tests.leadscrews import leadscrew_families
 
 #: a duty (the wear-life chart) with a move and a motor curve (motor and move charts).
@@ -94,7 +95,7 @@ def test_every_chart_has_tick_labels_and_the_pv_chart_its_limit(
     assert limits and all(n.endswith(("allowed pressure", "PV limit")) for n in limits)
     assert sum(mode == "markers" for _, mode in pv) == len(limits)  # an operating point each
     assert "[MPa]" in page.text_content("#chart-pv .g-ytitle")
-    page.screenshot(path=str(artifacts / "charts-1280.png"), full_page=True)
+    shoot(page, artifacts / "charts-1280.png", full_page=True)
     assert console_errors == []
 
 
@@ -117,8 +118,8 @@ def test_no_tick_labels_overlap_on_a_phone(
     ticks = page.evaluate(TICKS)
     assert len(ticks["chart-critical_speed"]["y"]) >= 2
     assert_ticks_readable(ticks)
-    page.screenshot(path=str(artifacts / "report-charts-390.png"), full_page=True)
-    page.locator("#chart-critical_speed").screenshot(path=str(artifacts / "critical-speed-390.png"))
+    shoot(page, artifacts / "report-charts-390.png", full_page=True)
+    shoot(page.locator("#chart-critical_speed"), artifacts / "critical-speed-390.png")
     assert console_errors == []
 
 
@@ -132,7 +133,7 @@ def test_no_tick_labels_overlap_when_printed(
     a row)."""
     name = "report-charts" if path == "/report" else "results-charts"
     drawn(page, f"{live_server}{path}?{DUTY}")
-    page.screenshot(path=str(artifacts / f"{name}-1280.png"), full_page=True)
+    shoot(page, artifacts / f"{name}-1280.png", full_page=True)
     page.evaluate(RECORD_PRINTED_TICKS)
     pdf = artifacts / f"{name}.pdf"
     page.pdf(path=str(pdf), prefer_css_page_size=True, print_background=True)

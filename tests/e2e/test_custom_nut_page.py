@@ -7,6 +7,7 @@ second time: "/custom bronze-nut", "/custom results" (its checks not run named) 
 from pathlib import Path
 from typing import Any
 
+from tests.e2e.shots import shoot
 from tests.e2e.test_accessibility import resize
 
 #: Tr12x3 (ISO 2904: d 12 mm, P 3 mm, d3 8.5 mm) in C45 steel, as the form takes it
@@ -67,7 +68,7 @@ def test_a_bronze_nut_gives_the_custom_screw_the_catalogs_checks(
             page.locator(".custom-verdict").inner_text().split(".")[0]
             == catalog.locator(".verdict").inner_text().split(".")[0]
         )
-        page.screenshot(path=str(artifacts / f"custom-bronze-nut-{width}.png"), full_page=True)
+        shoot(page, artifacts / f"custom-bronze-nut-{width}.png", full_page=True)
     assert errors == []
     context.close()
 
@@ -86,7 +87,7 @@ def test_a_screw_without_nut_data_names_the_checks_it_skipped(
         assert "every check" not in verdict
         assert "Not checked:" in verdict and "Nut contact pressure (no " in verdict
         assert page.locator(".custom-verdict").is_visible()
-        page.screenshot(path=str(artifacts / f"custom-skipped-checks-{width}.png"))
+        shoot(page, artifacts / f"custom-skipped-checks-{width}.png")
     context.close()
 
 
@@ -117,14 +118,14 @@ def test_the_phone_bar_shows_the_top_screws_whole_id(
     )
     bar_box = bar.bounding_box()
     assert bar_box is not None and abs(bar_box["y"] + bar_box["height"] - 844) < 1
-    page.screenshot(path=str(artifacts / "result-bar-long-id-390.png"))
+    shoot(page, artifacts / "result-bar-long-id-390.png")
     context.close()
     wide = browser.new_context(viewport={"width": 1280, "height": 900})
     page = wide.new_page()
     page.goto(f"{live_server}/?{LONG_TOP}")
     page.wait_for_selector("tbody.candidate")
     assert not page.locator("#result-bar").is_visible()
-    page.screenshot(path=str(artifacts / "result-bar-long-id-1280.png"))
+    shoot(page, artifacts / "result-bar-long-id-1280.png")
     wide.close()
 
 
@@ -155,5 +156,5 @@ def test_the_acceleration_unit_choice_converts_and_its_link_reproduces_the_answe
         resize(page, width)
         assert "g" in page.locator("label[for=f-accel] .unit").inner_text()
         assert page.locator("tbody.candidate .torque-peak").first.inner_text() == before
-        page.screenshot(path=str(artifacts / f"accel-unit-g-{width}.png"))
+        shoot(page, artifacts / f"accel-unit-g-{width}.png")
     context.close()

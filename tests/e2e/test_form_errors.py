@@ -12,6 +12,8 @@ from urllib.parse import parse_qs, urlparse
 
 import pytest
 
+from tests.e2e.shots import shoot
+
 #: the top of every visible control of the form, in page pixels
 TOPS = """() => Object.fromEntries(
   [...document.querySelectorAll('#selector input:not([type=hidden]), #selector select')]
@@ -70,7 +72,7 @@ def test_first_keystroke_shows_no_error_and_no_banner(
     assert page.inner_text("#result-bar") == bar and page.inner_text("#status") == status
     assert page.title() == "Leadscrew selector"
     assert_still(page, tops)
-    page.screenshot(path=str(artifacts / f"form-first-keystroke-{width}.png"))
+    shoot(page, artifacts / f"form-first-keystroke-{width}.png")
     context.close()
     assert errors == []
 
@@ -118,7 +120,7 @@ def test_no_field_moves_as_errors_appear_and_clear(
     box = long.bounding_box()
     assert box is not None and box["height"] > 30  # wrapped, lying over what follows
     assert_still(page, tops)
-    page.screenshot(path=str(artifacts / f"form-errors-shown-{width}.png"))
+    shoot(page, artifacts / f"form-errors-shown-{width}.png")
     page.fill("#f-length", "")
     type_and_wait(page, "length", "500")  # the long message clears
     type_and_wait(page, "speed", "50")  # and so does speed's: results
@@ -126,7 +128,7 @@ def test_no_field_moves_as_errors_appear_and_clear(
     assert page.evaluate(SHOWN) == {}
     assert page.locator("#selector [aria-invalid]").count() == 0
     assert_still(page, tops)
-    page.screenshot(path=str(artifacts / f"form-errors-cleared-{width}.png"))
+    shoot(page, artifacts / f"form-errors-cleared-{width}.png")
     context.close()
     assert errors == []
 

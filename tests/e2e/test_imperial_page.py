@@ -5,6 +5,8 @@ the /custom page's screw in inches. Screenshots at 1280 and 390 px."""
 from pathlib import Path
 from typing import Any
 
+from tests.e2e.shots import shoot
+
 IMPERIAL = "/?force_unit=lbf&length_unit=in&torque_unit=oz_in"
 
 
@@ -34,10 +36,10 @@ def test_imperial_selector_typed_with_a_comma_and_a_fraction(
     page.locator("#detail-1 li.check").first.wait_for()
     limit = page.inner_text("#detail-1 li.check[data-check=buckling] .check-limit")
     assert limit.endswith(" lbf")
-    page.screenshot(path=str(artifacts / "imperial-selector-1280.png"), full_page=True)
+    shoot(page, artifacts / "imperial-selector-1280.png", full_page=True)
     page.set_viewport_size({"width": 390, "height": 844})
     charts_fit(page)
-    page.screenshot(path=str(artifacts / "imperial-selector-390.png"), full_page=True)
+    shoot(page, artifacts / "imperial-selector-390.png", full_page=True)
     assert console_errors == []
 
 
@@ -84,8 +86,8 @@ def test_custom_screw_in_inches(
     assert "outer_diameter_mm=0.5" in link and "lead_mm=0.125" in link
     # 1/2 in outer diameter, shown back in inches in the detail
     assert "outer 0.5 " in page.inner_text(".facts")
-    page.screenshot(path=str(artifacts / "imperial-custom-1280.png"), full_page=True)
+    shoot(page, artifacts / "imperial-custom-1280.png", full_page=True)
     page.set_viewport_size({"width": 390, "height": 844})
     charts_fit(page)
-    page.screenshot(path=str(artifacts / "imperial-custom-390.png"), full_page=True)
+    shoot(page, artifacts / "imperial-custom-390.png", full_page=True)
     assert console_errors == []

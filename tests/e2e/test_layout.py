@@ -8,6 +8,7 @@ from typing import Any
 
 import pytest
 
+from tests.e2e.shots import shoot
 from tests.e2e.test_accessibility import resize
 
 #: every optional column: the peak and RMS torque of a move, the share of a motor used.
@@ -53,7 +54,7 @@ def test_the_results_fit_the_viewport_with_a_detail_open(
         opened = page.evaluate(WIDTHS)
         assert opened["page"] <= width
         assert opened["table"] <= max(opened["region"], closed[width]["table"])
-        page.screenshot(path=str(artifacts / f"results-detail-open-{width}.png"))
+        shoot(page, artifacts / f"results-detail-open-{width}.png")
     context.close()
 
 
@@ -76,7 +77,7 @@ def test_the_phone_results_bar_covers_no_result(
     )
     assert bar is not None and bar["y"] + bar["height"] == pytest.approx(844, abs=1)
     assert end <= bar["y"]
-    page.screenshot(path=str(artifacts / "results-end-bar-390.png"))
+    shoot(page, artifacts / "results-end-bar-390.png")
     context.close()
 
 
@@ -103,7 +104,7 @@ def test_the_results_start_near_the_top_with_advanced_closed(
                  s => document.querySelector(s).getBoundingClientRect().top + scrollY)"""
         )
         assert 0 < tops[0] <= 1.5 * 900 and tops[0] < tops[1] <= 2 * 900, width
-        page.screenshot(path=str(artifacts / f"results-start-{width}.png"))
+        shoot(page, artifacts / f"results-start-{width}.png")
     context.close()
 
 
@@ -144,7 +145,7 @@ def test_the_results_stay_near_the_top_with_advanced_groups_open(
             assert not hint.is_visible()
             page.focus("#f-stroke")
             assert hint.is_visible()
-        page.screenshot(path=str(artifacts / f"advanced-groups-open-{width}.png"), full_page=True)
+        shoot(page, artifacts / f"advanced-groups-open-{width}.png", full_page=True)
     context.close()
 
 

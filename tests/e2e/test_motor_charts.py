@@ -8,6 +8,7 @@ from typing import Any
 
 import pytest
 
+from tests.e2e.shots import shoot
 from tests.e2e.test_accessibility import resize
 
 pytestmark = pytest.mark.e2e
@@ -30,8 +31,8 @@ def test_motor_curve_and_move_charts(
     legend = page.locator("#chart-motor .legend .traces").all_text_contents()
     assert legend[0] == "Motor curve (as entered)" and len(legend) >= 2
     assert "Time [s]" in page.text_content("#chart-move .g-xtitle")
-    page.locator(".chart-motor").screenshot(path=str(artifacts / "motor-chart-1280.png"))
-    page.locator(".chart-move").screenshot(path=str(artifacts / "move-chart-1280.png"))
+    shoot(page.locator(".chart-motor"), artifacts / "motor-chart-1280.png")
+    shoot(page.locator(".chart-move"), artifacts / "move-chart-1280.png")
     assert console_errors == []
 
 
@@ -59,7 +60,7 @@ def test_a_library_servo_and_then_any_motor_on_the_page(
         for text in page.locator("table.pairs .motor-use").all_text_contents()
     ]
     assert len(used) == 10 and used == sorted(used)
-    page.locator("table.pairs").screenshot(path=str(artifacts / "motor-pairs-1280.png"))
+    shoot(page.locator("table.pairs"), artifacts / "motor-pairs-1280.png")
     assert console_errors == []
 
 
@@ -95,5 +96,5 @@ def test_the_table_gives_each_screws_motor_numbers(
             assert row.locator(".motor-use").is_visible()
             assert row.locator(".torque-rms").is_visible()
         shot = artifacts / f"motor-table-{width}.png"
-        page.locator("table.candidates").screenshot(path=str(shot))
+        shoot(page.locator("table.candidates"), shot)
     context.close()

@@ -1,11 +1,13 @@
 """The table of moves in a real browser: a move edited with the keyboard updates the
 result and its link, a row added with the keyboard takes the focus, a cell's error is
-said beside it; screenshots at 1280 and 390 px under test-artifacts/."""
+said beside it; screenshots at 1280 and 390 px under test-artifacts/ (``shots``)."""
 
 import re
 import urllib.parse
 from pathlib import Path
 from typing import Any
+
+from tests.e2e.shots import shoot
 
 MOVES = "300:250:2500:2500:0.2:2.5:10:opposes;-300:250:2500:2500:0.2:0.5:10:opposes"
 LINK = urllib.parse.urlencode({"load": 10, "speed": 250, "length": 500, "moves": MOVES})
@@ -66,7 +68,7 @@ def test_a_move_is_edited_and_a_row_added_with_the_keyboard(
     page.keyboard.type("50")
     _wait_settled(page, "m2_dist=50")
     assert page.text_content("#e-m2_speed").strip() == "Required."
-    page.locator("#moves-table").screenshot(path=str(artifacts / "move-table-1280.png"))
+    shoot(page.locator("#moves-table"), artifacts / "move-table-1280.png")
     page.set_viewport_size({"width": 390, "height": 844})
     page.locator("#moves-table").scroll_into_view_if_needed()
     # the table scrolls in its own box: the page is no wider with it than without it
@@ -76,5 +78,5 @@ def test_a_move_is_edited_and_a_row_added_with_the_keyboard(
     page.evaluate("document.querySelector('#moves-table').style.display = 'none'")
     assert page.evaluate("document.documentElement.scrollWidth") == wide
     page.evaluate("document.querySelector('#moves-table').style.display = ''")
-    page.screenshot(path=str(artifacts / "move-table-390.png"))
+    shoot(page, artifacts / "move-table-390.png")
     assert not [e for e in console_errors if not re.search(r"favicon", e)]

@@ -1,5 +1,5 @@
 """The ordering line's copy button in Chromium: it puts the line on the clipboard, at a
-desktop and a phone width (screenshots under test-artifacts/), with axe finding nothing;
+desktop and a phone width (screenshots under test-artifacts/, ``shots``), with axe finding nothing;
 without JavaScript the button stays hidden and the line is text to select."""
 
 import json
@@ -10,6 +10,7 @@ from typing import Any
 
 import pytest
 
+from tests.e2e.shots import shoot
 from tests.e2e.test_accessibility import AXE, RULE_TAGS, summary
 
 AXIS = "load=50&speed=200&length=500"
@@ -48,7 +49,7 @@ def test_copy_button_puts_the_line_on_the_clipboard(
     assert copied == first["order_line"]
     assert copied == page.inner_text(".order code.order-line")
     page.locator(".order").scroll_into_view_if_needed()
-    page.screenshot(path=str(artifacts / f"order-line-{width}.png"))
+    shoot(page, artifacts / f"order-line-{width}.png")
     result = page.evaluate(
         "tags => axe.run(document, {runOnly: {type: 'tag', values: tags},"
         " resultTypes: ['violations']})",

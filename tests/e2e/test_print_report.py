@@ -12,6 +12,8 @@ from urllib.parse import urlencode
 
 from pypdf import PdfReader
 
+from tests.e2e.shots import shoot
+
 AXIS = "load=100&speed=50&length=500"
 #: 22.48 lbf, 2 in/s, 20 in: about 100 N, 50.8 mm/s and 508 mm.
 IMPERIAL = "load=22.48&speed=2&length=20&force_unit=lbf&length_unit=in"
@@ -99,7 +101,7 @@ def test_custom_printout_leaves_out_the_form(
     page.emulate_media(media="print")
     assert not page.locator("form#custom").is_visible()
     assert page.locator("#chart-torque").is_visible()
-    page.screenshot(path=str(artifacts / "custom-print-imperial-1280.png"), full_page=True)
+    shoot(page, artifacts / "custom-print-imperial-1280.png", full_page=True)
     assert console_errors == []
 
 
@@ -111,7 +113,7 @@ def test_report_pdf_holds_inputs_candidate_provenance_and_whole_charts(
     second = page.locator("tbody.candidate").nth(1).get_attribute("data-id")
     page.goto(f"{live_server}/report?{IMPERIAL}&id={second}")
     page.wait_for_selector("#chart-torque .main-svg")
-    page.screenshot(path=str(artifacts / "report-imperial-1280.png"), full_page=True)
+    shoot(page, artifacts / "report-imperial-1280.png", full_page=True)
     charts = page.locator(".chart.js-plotly-plot").count()
     assert charts >= 3
     day_before = datetime.now(UTC).date().isoformat()
@@ -133,7 +135,7 @@ def test_report_pdf_holds_inputs_candidate_provenance_and_whole_charts(
     assert date in {day_before, datetime.now(UTC).date().isoformat()} and date in flat
     assert "Print or save as PDF" not in flat and "Back to the results" not in flat
     page.set_viewport_size({"width": 390, "height": 844})
-    page.screenshot(path=str(artifacts / "report-imperial-390.png"), full_page=True)
+    shoot(page, artifacts / "report-imperial-390.png", full_page=True)
     assert console_errors == []
 
 

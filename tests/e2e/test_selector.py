@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from tests.builtin_catalog import builtin_catalog
+from tests.e2e.shots import shoot
 from tests.leadscrews import leadscrew_families
 
 AXIS = "load=100&lead=10&speed=50&length=500"
@@ -278,25 +279,25 @@ def test_print_is_one_page(page: Any, live_server: str, console_errors: list[str
     assert console_errors == []
 
 
-def test_screenshots_desktop_and_phone(
+def test_results_and_catalog_fit_a_phone(
     page: Any, live_server: str, artifacts: Path, console_errors: list[str]
 ) -> None:
     open_results(page, live_server)
     page.click("tbody.candidate >> nth=0 >> tr.main td.num >> nth=0")
     page.locator("#detail-1 li.check").first.wait_for()
-    page.screenshot(path=str(artifacts / "selector-desktop-1280.png"), full_page=True)
+    shoot(page, artifacts / "selector-desktop-1280.png", full_page=True)
     page.set_viewport_size({"width": 390, "height": 844})
     page.wait_for_function(
         "() => document.querySelector('#chart-torque .main-svg').getAttribute('width') <= 390"
     )
     assert page.evaluate("() => document.documentElement.scrollWidth") <= 390
-    page.screenshot(path=str(artifacts / "selector-phone-390.png"), full_page=True)
+    shoot(page, artifacts / "selector-phone-390.png", full_page=True)
     page.fill("#f-load", "abc")
     page.wait_for_function("() => document.querySelector('#e-load').textContent.length > 0")
-    page.screenshot(path=str(artifacts / "selector-error-phone-390.png"))
+    shoot(page, artifacts / "selector-error-phone-390.png")
     page.goto(live_server + "/catalog")
     assert page.evaluate("() => document.documentElement.scrollWidth") <= 390
-    page.screenshot(path=str(artifacts / "catalog-phone-390.png"))
+    shoot(page, artifacts / "catalog-phone-390.png")
     page.set_viewport_size({"width": 1280, "height": 900})
-    page.screenshot(path=str(artifacts / "catalog-desktop-1280.png"))
+    shoot(page, artifacts / "catalog-desktop-1280.png")
     assert console_errors == []

@@ -1,12 +1,13 @@
 """In real Chromium: each candidate's verdict in the results table, the side-by-side
 compare reached by ticking rows with the keyboard (and its shared link), and the advice
-for an axis that cannot be built as asked; screenshots at 1280 and 390 px."""
+for an axis that cannot be built as asked; screenshots at 1280 and 390 px (``shots``)."""
 
 import json
 import urllib.request
 from pathlib import Path
 from typing import Any
 
+from tests.e2e.shots import shoot
 from tests.e2e.test_accessibility import resize
 
 AXIS = "load=100&speed=50&length=300"
@@ -41,11 +42,11 @@ def test_each_row_reads_its_verdict(
     )
     to_table = "document.querySelector('#candidates-heading').scrollIntoView()"
     page.evaluate(to_table)
-    page.screenshot(path=str(artifacts / "verdicts-desktop-1280.png"))
+    shoot(page, artifacts / "verdicts-desktop-1280.png")
     page.set_viewport_size(PHONE)
     page.evaluate(to_table)
     assert lines.first.is_visible()
-    page.screenshot(path=str(artifacts / "verdicts-phone-390.png"))
+    shoot(page, artifacts / "verdicts-phone-390.png")
     assert console_errors == []
 
 
@@ -69,7 +70,7 @@ def test_ticking_rows_with_the_keyboard_opens_a_shareable_compare(
     table.wait_for()
     assert table.locator("thead th.cid").all_inner_texts() == ids
     assert table.locator("td.best").count() >= 1
-    page.screenshot(path=str(artifacts / "compare-desktop-1280.png"), full_page=True)
+    shoot(page, artifacts / "compare-desktop-1280.png", full_page=True)
     # the shared link renders the same view for a colleague
     share = page.locator("a.share-link").get_attribute("href")
     assert share is not None and "ids=" in share
@@ -78,7 +79,7 @@ def test_ticking_rows_with_the_keyboard_opens_a_shareable_compare(
     assert page.locator("table.compare thead th.cid").all_inner_texts() == ids
     body_width = page.evaluate("document.documentElement.scrollWidth")
     assert body_width <= PHONE["width"]  # the table scrolls inside its region
-    page.screenshot(path=str(artifacts / "compare-phone-390.png"), full_page=True)
+    shoot(page, artifacts / "compare-phone-390.png", full_page=True)
     assert console_errors == []
     # one id only: said inline with status 422 (the browser logs the status), not a crash
     page.goto(f"{live_server}/compare?{AXIS}&ids={ids[0]}")
@@ -94,11 +95,11 @@ def test_impossible_axis_advice(
     remedies.first.wait_for()
     fields = [f.split() for f in remedies.evaluate_all("els => els.map(e => e.dataset.fields)")]
     assert any("end_fixity" in f for f in fields) and any(len(f) >= 2 for f in fields)
-    page.screenshot(path=str(artifacts / "impossible-remedies-desktop-1280.png"), full_page=True)
+    shoot(page, artifacts / "impossible-remedies-desktop-1280.png", full_page=True)
     to_notice = "document.querySelector('.no-pass').scrollIntoView()"
     resize(page, PHONE["width"], PHONE["height"])  # the same answer on a phone
     page.evaluate(to_notice)
-    page.screenshot(path=str(artifacts / "impossible-remedies-phone-390.png"))
+    shoot(page, artifacts / "impossible-remedies-phone-390.png")
     resize(page, 1280)
     remedies.first.locator("a.apply").click()
     page.wait_for_selector("table.candidates tbody.candidate")
@@ -110,8 +111,8 @@ def test_impossible_axis_advice(
     assert why.inner_text().startswith("No screw in the catalog can do this")
     assert page.locator(".no-pass a.apply").count() == 0
     page.evaluate(to_notice)
-    page.screenshot(path=str(artifacts / "impossible-no-leadscrew-phone-390.png"))
+    shoot(page, artifacts / "impossible-no-leadscrew-phone-390.png")
     page.set_viewport_size({"width": 1280, "height": 900})
     page.evaluate(to_notice)
-    page.screenshot(path=str(artifacts / "impossible-no-leadscrew-desktop-1280.png"))
+    shoot(page, artifacts / "impossible-no-leadscrew-desktop-1280.png")
     assert console_errors == []
