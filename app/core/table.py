@@ -8,6 +8,7 @@ the whole catalog.
 import math
 from collections.abc import Hashable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, fields
+from functools import partial
 from operator import attrgetter
 from types import MappingProxyType
 from typing import Any
@@ -77,6 +78,25 @@ def _bands(screws: Sequence[ScrewSpec], lead_m: Array) -> tuple[Array, Mask]:
     return speeds, off
 
 
+def _column_of(screws: Sequence[ScrewSpec], name: str) -> Array:
+    """The float column of ScrewSpec field ``name`` (``column``: None becomes NaN)."""
+    return column(list(map(attrgetter(name), screws)))
+
+
+def _flag_of(screws: Sequence[ScrewSpec], name: str) -> Mask:
+    """The boolean column of ScrewSpec field ``name``."""
+    return np.fromiter(map(attrgetter(name), screws), dtype=bool, count=len(screws))
+
+
+def _pitch_diameter(od: Array, rd: Array, d2: Array, d0: Array) -> Array:
+    """The diameter the thread's lead angle and friction are taken at [m]: a standard
+    thread's pitch diameter (ISO 2904 d2 = d - 0.5 P), a ball screw's pitch circle
+    diameter d0 (its nominal diameter, ISO 3408-1; the balls' centres run above the
+    shaft's outer diameter); otherwise the seed's (OD + RD) / 2 (NaN: not given)."""
+    given: Array = np.where(np.isnan(d2), d0, d2)
+    return np.where(np.isnan(given), geometry.pitch_diameter(od, rd), given)
+
+
 def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array, d2: Array) -> dict[str, Array]:
     """Thread and nut-rating columns (NaN where a family gives none): pitch, d2 (the
     column ``d2`` read), H1, nut length, the polymer limits, the wear rating and the helix
@@ -85,7 +105,7 @@ def _nut_columns(screws: Sequence[ScrewSpec], lead_m: Array, d2: Array) -> dict[
     names += ("max_pressure_pa", "dynamic_pressure_pa", "nut_pv_limit_pa_m_s")
     names += ("max_sliding_speed_m_s",)
     names += ("wear_rate_m2_n", "allowed_wear_fraction")
-    out = {name: column(list(map(attrgetter(name), screws))) for name in names}
+    out = {name: _column_of(screws, name) for name in names}
     out["flank_pitch_diameter_m"] = d2
     out["flank_helix_travel_m"] = np.asarray(geometry.helix_travel(lead_m, d2), dtype=np.float64)
     return out
@@ -415,22 +435,10 @@ class CandidateTable:
     def build(cls, screws: Sequence[ScrewSpec]) -> "CandidateTable":
         """Columns from screws, and the efficiencies and limits that follow from them."""
         screws = tuple(screws)
-
-        def col(name: str) -> Array:
-            return column(list(map(attrgetter(name), screws)))
-
-        def flag(name: str) -> Mask:
-            return np.fromiter(map(attrgetter(name), screws), dtype=bool, count=len(screws))
-
+        col, flag = partial(_column_of, screws), partial(_flag_of, screws)
         od, rd, lead = col("outer_diameter_m"), col("root_diameter_m"), col("lead_m")
-        # a standard thread states its pitch diameter (ISO 2904 d2 = d - 0.5 P), a ball
-        # screw its pitch circle diameter d0 (its nominal diameter, ISO 3408-1; the balls'
-        # centres run above the shaft's outer diameter); otherwise the seed's (OD + RD) / 2
         d2 = col("flank_pitch_diameter_m")
-        d0 = col("pitch_circle_diameter_m")
-        d_p = np.where(
-            np.isnan(d2), np.where(np.isnan(d0), geometry.pitch_diameter(od, rd), d0), d2
-        )
+        d_p = _pitch_diameter(od, rd, d2, col("pitch_circle_diameter_m"))
         tan_l = geometry.tan_lead_angle(lead, d_p)
         cos_a = np.cos(col("thread_half_angle_rad"))
         traverse, extrapolated = _bands(screws, lead)
