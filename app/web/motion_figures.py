@@ -15,6 +15,8 @@ TOP = 5
 #: the speed at the start and end of each segment, as a share of its top speed.
 RAMPS = {"accelerate": (0.0, 1.0), "constant": (1.0, 1.0), "decelerate": (1.0, 0.0)}
 REVERSED = ("down", "back")
+#: the hover text of a candidate's RMS point (``_rms_point``)
+RMS_POINT = "cycle RMS (against the continuous rating)"
 
 
 def motor_figure(
@@ -35,7 +37,9 @@ def motor_figure(
     ``axis_motor.CURVE_ORIGINS``: typed in, the maker's published curve, or the model).
     A motor with a continuous rating has it drawn too, dotted (``continuous``, the
     torque-speed points of ``charts.continuous_line``): the line the cycle's RMS torque
-    times the safety factor is held to, not the segments' points."""
+    times the safety factor is held to, not the segments' points. Each candidate's RMS
+    torque as the RMS check judges it is then a square at the line's standstill end
+    (``_rms_point``)."""
     unit = d.label("torque")
     name = "Motor curve" if margin == 1.0 else "Pull-out"
     if origin:
@@ -49,15 +53,21 @@ def motor_figure(
         data.append(_line(rating, continuous, d, "dot", "continuous"))
     for colour, c in zip(PALETTE, candidates[:TOP], strict=False):
         rpm, torque_nm, text = _demand_points(c)
+        needed = [t * safety_factor for t in torque_nm]
+        symbols = ["circle"] * len(rpm)
+        rms = _rms_point(c, continuous[0][1]) if continuous else None
+        if rms is not None:
+            rpm, needed = [*rpm, continuous[0][0]], [*needed, rms]
+            text, symbols = [*text, RMS_POINT], [*symbols, "square"]
         data.append(
             {
                 "type": "scatter",
                 "mode": "markers",
                 "name": c.id,
                 "x": rpm,
-                "y": [d.value(t * safety_factor, "torque") for t in torque_nm],
+                "y": [d.value(t, "torque") for t in needed],
                 "text": text,
-                "marker": {"color": colour, "size": 9},
+                "marker": {"color": colour, "size": 9, "symbol": symbols},
                 "hovertemplate": f"%{{text}}<br>%{{x:.4g}} rpm, %{{y:.4g}} {unit}"
                 f"<extra>{c.id}</extra>",
             }
@@ -94,6 +104,15 @@ def _demand_points(c: CandidateOut) -> tuple[list[float], list[float], list[str]
     torque_nm = [abs(s.torque_nm) for s in moving] + [abs(c.torque.breakaway_nm)]
     text = [f"{s.name}, {s.direction}" for s in moving] + ["start from rest"]
     return rpm, torque_nm, text
+
+
+def _rms_point(c: CandidateOut, rating_nm: float) -> float | None:
+    """The RMS check's demand [N m], its utilisation times the continuous rating at
+    standstill ``rating_nm`` it is held to: the cycle's RMS torque times the safety
+    factor, each segment's scaled up where the continuous zone narrows with speed
+    (``checks.motor_rms``); None where the check did not run."""
+    use = c.utilization.get("motor_rms")
+    return None if use is None else use * rating_nm
 
 
 def _trace_points(segments: list[SegmentOut]) -> tuple[list[float], list[float], list[float]]:

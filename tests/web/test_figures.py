@@ -589,3 +589,54 @@ def test_the_torque_chart_marks_a_break_away_above_the_bars(catalog: Catalog) ->
     assert bars == pytest.approx(0.3087, abs=1e-4) and peak == pytest.approx(0.3757, abs=1e-4)
     assert bars < figure["layout"]["shapes"][0]["y0"] < peak
     assert not c.passed and c.governing_check == "torque"
+
+
+def test_the_motor_chart_marks_each_candidates_rms_as_the_rms_check_judges_it(
+    catalog: Catalog,
+) -> None:
+    """Beside a continuous rating, each top candidate's RMS torque is a square at the
+    rating line's standstill end: with a flat rating (0.3 N m typed), the cycle's RMS
+    torque times the safety factor (1.5), the RMS check's demand; with the Yaskawa
+    SGM7J-01A's continuous zone, which narrows above 3000 rpm, the check's demand (each
+    segment scaled up by the zone), not the plain RMS. A square sits above the line's end
+    exactly where the candidate fails the RMS check (a 0.01 N m rating fails them all);
+    without a continuous rating there is no square."""
+    axis = {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10,
+            "stroke_mm": 200, "torque_safety_factor": 1.5}  # fmt: skip
+    runs = {
+        "flat": {"motor_curve": [[0, 0.9], [3000, 0.6]], "motor_rms_torque_nm": 0.3},
+        "zone": {"motor": "yaskawa-sgm7j-01a", "speed_mm_s": 900, "lead_mm": None},
+        "too small": {"motor_curve": [[0, 0.9], [3000, 0.6]], "motor_rms_torque_nm": 0.01},
+        "no rating": {"motor_curve": [[0, 0.9], [3000, 0.6]]},
+    }
+    for name, extra in runs.items():
+        inputs = ApplicationIn.model_validate({**axis, **extra})
+        result = run_selection(inputs, catalog)
+        shown, _ = chart_candidates(result)
+        data = result_figures(result, METRIC, catalog)["motor"]["data"]
+        line = [t for t in data if t["name"].startswith("Continuous")]
+        squares = 0
+        for c in shown[:TOP]:
+            trace = next(t for t in data if t["name"] == c.id)
+            at = [i for i, s in enumerate(trace["marker"]["symbol"]) if s == "square"]
+            if not line:
+                assert at == []
+                continue
+            (i,) = at
+            check = next(k for k in c.checks if k.name == "motor_rms")
+            assert check.unit == "N m" and trace["x"][i] == line[0]["x"][0] == 0.0
+            assert trace["y"][i] == pytest.approx(check.value, rel=1e-9)
+            assert check.limit == pytest.approx(line[0]["y"][0], rel=1e-12)
+            assert (trace["y"][i] > line[0]["y"][0]) == (not check.passed)
+            if name == "flat":
+                assert check.value == pytest.approx(1.5 * c.torque.rms_nm, rel=1e-9)
+            if name == "too small":
+                assert not check.passed
+            squares += 1
+        assert squares == (0 if name == "no rating" else min(TOP, len(shown)))
+    zone = run_selection(ApplicationIn.model_validate({**axis, **runs["zone"]}), catalog)
+    scaled = [c for c in [*zone.candidates, *zone.rejected] if c.segments]
+    assert any(
+        next(k for k in c.checks if k.name == "motor_rms").value > 1.5 * c.torque.rms_nm * 1.01
+        for c in scaled
+    ), "the zone run reaches where the continuous zone narrows"
