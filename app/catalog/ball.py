@@ -17,7 +17,7 @@ from app.catalog.errors import CatalogError
 from app.catalog.files import CatalogFile
 from app.catalog.models import Material, Series, Sourced
 from app.catalog.series import NOT_GIVEN
-from app.core.formulas import ballscrew
+from app.core.formulas import ballscrew, critical_speed
 from app.core.model import Provenance, ScrewSpec
 from app.core.record import CERTAINTY
 from app.core.units import to_si
@@ -36,6 +36,7 @@ FAMILY_FIELDS = frozenset(
         "lead_accuracy_mm_per_300mm",
         "travel_deviation_mm_by_useful_travel_mm",
         "dn_limit_mm_rpm",
+        "critical_speed_rule",
         "friction_dynamic",
         "friction_static",
         "preload_fraction",
@@ -211,6 +212,9 @@ def _spec(
         ball_diameter_m=_row_value(row, "ball_diameter_mm"),
         pitch_circle_diameter_m=_row_value(row, "nominal_diameter_mm"),
         dn_limit_mm_rpm=family.number("dn_limit_mm_rpm"),
+        critical_speed_rule=family.text("critical_speed_rule", critical_speed.MAKER_RULES)
+        if family.has("critical_speed_rule")
+        else None,
         accuracy_grade=family.text("accuracy_grade"),
         temperature_min_c=t_min,
         temperature_max_c=t_max,
@@ -228,6 +232,7 @@ FAMILY_PROVENANCE = {
     "lead_accuracy": "lead_accuracy_mm_per_300mm",
     "travel_deviation": "travel_deviation_mm_by_useful_travel_mm",
     "dn_limit": "dn_limit_mm_rpm",
+    "critical_speed_rule": "critical_speed_rule",
     "accuracy_grade": "accuracy_grade",
     "preload": "preload_fraction",
     "temperature_range": "temperature_range",
@@ -316,6 +321,7 @@ def _display(specs: list[ScrewSpec], prov: Mapping[str, Provenance]) -> dict[str
         "screw_type": ("ball", ""),
         "leads": (sorted(s.lead_m for s in specs), "m"),
         "dn_limit": (first.dn_limit_mm_rpm, "mm rpm"),
+        "critical_speed_rule": (first.critical_speed_rule, ""),
         "accuracy_grade": (first.accuracy_grade, ""),
         "lead_accuracy_per_300mm": (first.travel_variation_300mm_m, "m"),
         "travel_deviation": (first.travel_deviation_bands or None, "m"),

@@ -21,9 +21,10 @@ from app.core import motion
 from app.core.checks.wear_life import WEAR_ONLY
 from app.core.dry_run import as_run
 from app.core.model import Application, ScrewSpec
+from app.core.reach import SizeKey, size_of
 from app.core.robustness import Variants, build_variants
 from app.core.screening import Filters, eligible_mask, filters
-from app.core.table import COLUMNS, CandidateTable, SizeKey, size_of
+from app.core.table import COLUMNS, CandidateTable
 
 __all__ = ["CatalogIndex", "SizeKey", "size_of"]
 

@@ -308,6 +308,10 @@ class ScrewSpec:
     #: then taken on (OD + RD) / 2).
     pitch_circle_diameter_m: float | None = None
     dn_limit_mm_rpm: float | None = None
+    #: The published rule a ball screw's maker rates its critical speed by, as its family
+    #: declares it (``critical_speed.MAKER_RULES``); None: not declared, and a ball screw
+    #: is rated by the lowest of the published rules (``rated_critical_speed_rpm``).
+    critical_speed_rule: str | None = None
     accuracy_grade: str = ""
     #: a ball nut's axial preload [N] (0: a nut with play; None: not a ball screw)
     preload_n: float | None = None

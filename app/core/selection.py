@@ -26,11 +26,12 @@ from app.core.duty import ball_life_revolutions, ball_load_factors
 from app.core.index import CatalogIndex
 from app.core.model import Application, AxisProvenance, Remedy, ScrewSpec, Summary, holds
 from app.core.phrase import Amount, Phrase, join, plural
+from app.core.reach import Reach
 from app.core.record import MOTOR_CHECKS, Candidate, records
 from app.core.remedy import impossible, remedies
 from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, failing_beyond, screen_table
-from app.core.table import CandidateTable, Reach
+from app.core.table import CandidateTable
 
 NO_MATCH = "No catalog screw with a {lead} lead matches the filters; try another lead or 'any'."
 #: Nothing eligible at any lead: the other filters exclude every screw together.

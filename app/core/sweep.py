@@ -14,7 +14,7 @@ from app.core.index import CatalogIndex, SizeKey
 from app.core.model import Application
 from app.core.nut import nut_allowed_pressures
 from app.core.quantities import Quantities, operating_point
-from app.core.screening import screen_table
+from app.core.screening import Screening, screen_table
 from app.core.selection import shown_torque
 from app.core.table import Array
 
@@ -24,12 +24,15 @@ class LeadPoint:
     """One lead of a size and nut for an application: the drive torque the results show
     [N m] (``selection.shown_torque``: with a move, the peak of its segments and of the
     break-away; without, the torque while accelerating), the screw speed as a share of
-    the allowed speed and the PV as a share of its limit (None: no PV limit)."""
+    the allowed speed, the PV as a share of its limit (None: no PV limit) and an ISO
+    nut's flank pressure as a share of the pressure its material allows at the sliding
+    speed (None: no flank data)."""
 
     lead_m: float
     torque_nm: float
     speed_share: float
     pv_share: float | None
+    pressure_share: float | None = None
 
 
 def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[LeadPoint]:
@@ -37,25 +40,33 @@ def lead_sweep(app: Application, index: CatalogIndex, size: SizeKey) -> list[Lea
     ``app`` at any lead, shortest lead first; empty for a size the index lacks.
 
     The speed share is n / n_allowed (the critical speed with its safety factor); the PV
-    share is the PV check's utilisation, PV / PV_limit.
+    and pressure shares are the utilisations of the PV and nut contact pressure checks
+    (``_share``).
     """
     rows = index.sizes.get(size)
     if rows is None:
         return []
     sc = screen_table(replace(app, lead_m=None), index.table.take(rows), rows)
-    q, pv_use, torque_nm = sc.quantities, sc.utilization.get("pv"), shown_torque(sc)
-    pv_applies = sc.measures["pv"].applicable if "pv" in sc.measures else None
+    q, torque_nm = sc.quantities, shown_torque(sc)
     return [
         LeadPoint(
             lead_m=float(sc.table.lead_m[k]),
             torque_nm=float(torque_nm[k]),
             speed_share=float(q.axis.rpm[k] / q.column.allowed_rpm[k]),
-            pv_share=None
-            if pv_use is None or pv_applies is None or not pv_applies[k]
-            else float(pv_use[k]),
+            pv_share=_share(sc, "pv", k),
+            pressure_share=_share(sc, "bearing_pressure", k),
         )
         for k in range(len(rows))
     ]
+
+
+def _share(sc: Screening, check: str, k: int) -> float | None:
+    """Row ``k``'s utilisation of ``check`` in ``sc``; None where the check does not apply
+    to it (or did not run)."""
+    use, measure = sc.utilization.get(check), sc.measures.get(check)
+    if use is None or measure is None or not measure.applicable[k]:
+        return None
+    return float(use[k])
 
 
 @dataclass(frozen=True, slots=True)

@@ -51,7 +51,8 @@ def _percent(share: float | None) -> float | None:
 
 
 def _sweep_traces(sweep: list[LeadPoint], leads: list[float], d: Display) -> list[dict[str, Any]]:
-    """Torque on the left axis; speed and PV as shares of their limits on the right."""
+    """Torque on the left axis; speed, PV and an ISO nut's flank pressure as shares of
+    their limits on the right (each drawn where some lead has it)."""
     unit = d.label("torque")
     series: list[tuple[str, str, list[float | None], str, str]] = [
         (
@@ -69,6 +70,13 @@ def _sweep_traces(sweep: list[LeadPoint], leads: list[float], d: Display) -> lis
             "%{y:.3g} %",
         ),
         ("PV, % of limit", "y2", [_percent(p.pv_share) for p in sweep], "#009E73", "%{y:.3g} %"),
+        (
+            "Flank pressure, % of allowed",
+            "y2",
+            [_percent(p.pressure_share) for p in sweep],
+            "#CC79A7",
+            "%{y:.3g} %",
+        ),
     ]
     return [
         {

@@ -11,8 +11,8 @@ from app.contract.units import amount_text, api_to_si, render
 from app.core.evaluate import evaluate
 from app.core.model import Application, ScrewSpec
 from app.core.phrase import Amount, Phrase
+from app.core.reach import size_of
 from app.core.selection import screen
-from app.core.table import size_of
 from tests.core.conftest import light_app
 
 #: The utilisation a fix promises (a 5 % margin), plus float rounding.

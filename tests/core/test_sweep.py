@@ -94,3 +94,24 @@ def test_with_a_move_each_point_is_the_torque_the_results_show(catalog: Catalog)
         assert peak > ev.torque.total_nm
         assert point.torque_nm == pytest.approx(peak, rel=1e-12)
     assert [round(p.torque_nm, 4) for p in sweep] == [0.4550, 0.5504]
+
+
+def test_an_iso_nuts_flank_pressure_share_is_its_check_at_every_lead(catalog: Catalog) -> None:
+    """Tr8 (P2, 304 steel) with a bronze nut, made in leads 2, 4 and 8 mm (one, two and
+    four starts): each lead's flank pressure share equals the nut contact pressure check's
+    utilisation when that screw is evaluated; it falls as the lead grows (at 20 mm/s a
+    longer lead turns the screw slower, so the flanks slide slower and bronze allows more
+    pressure). The polymer nut B8000 has no flank data: no share."""
+    app = Application(load_n=300.0, speed_m_s=0.02, length_m=0.5, lead_m=0.004)
+    size = ("Tr8-P2-304", "bronze", False, False)
+    sweep = lead_sweep(app, catalog.index, size)
+    screws = [catalog.index.table.screws[r] for r in catalog.index.sizes[size]]
+    assert [p.lead_m for p in sweep] == [s.lead_m for s in screws] == [0.002, 0.004, 0.008]
+    for point, screw in zip(sweep, screws, strict=True):
+        ev = evaluate(replace(app, lead_m=None), screw)
+        check = next(c for c in ev.checks if c.name == "bearing_pressure")
+        assert point.pressure_share == pytest.approx(check.utilization, rel=1e-12)
+        assert point.pv_share is None
+    shares = [p.pressure_share or 0.0 for p in sweep]
+    assert shares == sorted(shares, reverse=True) and shares[-1] > 0
+    assert all(p.pressure_share is None for p in lead_sweep(APP, catalog.index, B8000))

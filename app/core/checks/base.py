@@ -17,7 +17,8 @@ from app.core import load_caps, motion
 from app.core.model import FIX_MARGIN, FIXITY_ORDER, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities, compression_sign
-from app.core.table import Array, CandidateTable, Mask, Reach, filled
+from app.core.reach import Reach
+from app.core.table import Array, CandidateTable, Mask, filled
 
 __all__ = [
     "FIX_MARGIN",

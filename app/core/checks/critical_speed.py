@@ -1,5 +1,7 @@
 """Screw speed against the allowed fraction of its first whirling speed."""
 
+import math
+
 import numpy as np
 
 from app.core import motion
@@ -47,9 +49,10 @@ class CriticalSpeed(Check):
         "* d_r / 4, n_H)"
     )
     source = (
-        "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; a leadscrew at "
-        "most Thomson's and Roton's end fixity factor C_s times simple-simple; a ball screw "
-        "at most HIWIN BS-08-2-EN-1704-K F 3.27 (n_H)"
+        "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; at most Thomson's "
+        "and Roton's end fixity factor C_s times simple-simple (for a ball screw too, as "
+        "Rockford Ball Screw rates its own, unless its maker rates it by HIWIN's rule); a "
+        "ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27 (n_H)"
     )
     sources = ("root_diameter", "youngs_modulus", "density")
     capacity_sources = ("root_diameter", "youngs_modulus", "density")
@@ -69,9 +72,13 @@ class CriticalSpeed(Check):
             "E": t.youngs_modulus_pa,
             "rho": t.density_kg_m3,
             "d_r": t.root_diameter_m,
-            # a leadscrew's at most its makers' C_s times simple-simple (pi^2), a ball
-            # screw's at most HIWIN's F 3.27
-            "C_s": np.where(t.ball, np.inf, critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]),
+            # at most the leadscrew makers' C_s times simple-simple (pi^2), but a ball screw
+            # its maker rates by HIWIN's rule; a ball screw at most HIWIN's F 3.27 too
+            "C_s": np.where(
+                t.ball & t.hiwin_rated,
+                np.inf,
+                critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity],
+            ),
             "n_H": np.where(
                 t.ball,
                 critical_speed.ball_screw_critical_speed_rpm(
@@ -91,27 +98,29 @@ class CriticalSpeed(Check):
             "fixity": app.end_fixity,
         }
         text = "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity})."
-        if s.screw_type == "ball":
+        if s.screw_type == "ball" and _hiwin_governs(app, s, r.column.critical_rpm):
             beam = critical_speed.critical_speed_rpm(
                 s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3,
                 app.end_fixity,
             )  # fmt: skip
-            if r.column.critical_rpm < beam:
-                values["lower"] = f"{(1.0 - r.column.critical_rpm / beam) * 100.0:.1f} %"
-                text += (
-                    " HIWIN rates it (F 3.27, its mounting factor for these ends) {lower} "
-                    "below the beam's."
-                )
+            values["lower"] = f"{(1.0 - r.column.critical_rpm / beam) * 100.0:.1f} %"
+            text += (
+                " HIWIN rates it (F 3.27, its mounting factor for these ends) {lower} "
+                "below the beam's."
+            )
             return Phrase(text, values)
         ratio = critical_speed.makers_table_ratio(app.end_fixity)
-        if ratio >= 1.0:
+        if ratio >= 1.0 or s.critical_speed_rule == critical_speed.HIWIN_RULE:
             return Phrase(text, values)
         # leadscrew makers' tables rate these ends below the beam: the rating is theirs
         values["cs"] = f"{critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]:g}"
         values["lower"] = f"{(1.0 - ratio) * 100.0:.1f} %"
+        makers = "leadscrew makers' (Thomson, Roton)"
+        if s.screw_type == "ball":  # its family names no maker's rule: the lowest published
+            makers = "lowest published rule, the makers' (Thomson, Roton, Rockford)"
         text += (
-            " Its critical speed is the leadscrew makers' (Thomson, Roton) for these ends: "
-            "C_s {cs} times simple-simple, {lower} below the beam's."
+            " Its critical speed is the " + makers + " for these ends: C_s {cs} times "
+            "simple-simple, {lower} below the beam's."
         )
         return Phrase(text, values)
 
@@ -120,6 +129,7 @@ class CriticalSpeed(Check):
             n_c = critical_speed.rated_critical_speed_rpm(
                 s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3, fixity,
                 s.screw_type == "ball",
+                hiwin_rated=s.critical_speed_rule == critical_speed.HIWIN_RULE,
             )  # fmt: skip
             return critical_speed.allowed_speed_rpm(float(n_c), app.critical_speed_safety_factor)
 
@@ -182,3 +192,12 @@ class CriticalSpeed(Check):
 def _max_length(app: Application, r: Quantities[float]) -> float:
     """Longest unsupported length at which this screw's speed is allowed [m]."""
     return critical_speed.max_length_for_speed(app.length_m, r.column.allowed_rpm, r.axis.rpm)
+
+
+def _hiwin_governs(app: Application, s: ScrewSpec, critical_rpm: float) -> bool:
+    """Whether a ball screw's critical speed ``critical_rpm`` is HIWIN's rule (F 3.27),
+    below the beam's (``rated_critical_speed_rpm``)."""
+    hiwin = critical_speed.ball_screw_critical_speed_rpm(
+        s.root_diameter_m, app.length_m, app.end_fixity
+    )
+    return math.isclose(critical_rpm, float(hiwin))

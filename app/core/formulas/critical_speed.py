@@ -112,6 +112,11 @@ BALL_SCREW_FIXITY_FACTOR: dict[str, float] = {
 
 #: HIWIN F 3.27's constant [rpm mm]: n_k = 2.71e8 f_n d_k / l_s^2 with d_k and l_s in mm.
 HIWIN_CRITICAL_SPEED_RPM_MM = 2.71e8
+#: The rule of HIWIN's ball screws (``ball_screw_critical_speed_rpm``), as a ball-screw
+#: family declares it (``ScrewSpec.critical_speed_rule``).
+HIWIN_RULE = "HIWIN F 3.27"
+#: The makers' critical-speed rules a ball-screw family may declare.
+MAKER_RULES = (HIWIN_RULE,)
 
 
 @formula(
@@ -138,9 +143,12 @@ def ball_screw_critical_speed_rpm(root_diameter_m: Any, length_m: float, end_fix
 
 
 @formula(
-    "n_c = min(n_beam, C_s n_ss), a ball screw's min(n_beam, n_k)",
+    "n_c = min(n_beam, C_s n_ss); a ball screw's min(n_c, n_k), or min(n_beam, n_k) where "
+    "its maker rates it by HIWIN F 3.27",
     "the beam (Blevins table 8-1); a leadscrew at most Thomson's and Roton's end fixity "
-    "factors C_s; a ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27",
+    "factors C_s; a ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27, and at most the "
+    "factors C_s too unless its maker rates it by HIWIN's rule (Rockford Ball Screw, How "
+    "to Size a Ball Screw, rates its ball screws by C_s)",
 )
 def rated_critical_speed_rpm(
     root_diameter_m: Any,
@@ -150,13 +158,18 @@ def rated_critical_speed_rpm(
     end_fixity: str,
     ball: Any,
     shaft: tuple[Any, Any] | None = None,
+    hiwin_rated: Any = False,
 ) -> Any:
     """The critical speed a screw is rated at [rpm], never above its makers': the beam's
     (``critical_speed_rpm``, ``shaft`` its terms when already worked out) times
     ``makers_table_ratio`` for a leadscrew (the lower of the beam's and the leadscrew
-    makers' C_s times simple-simple), and where ``ball`` (a ball screw) the lower of the
-    beam's and its maker's (``ball_screw_critical_speed_rpm``). The factor is constant
-    for an end fixity, so the rating keeps the beam's d_r / L^2. Numbers or arrays alike.
+    makers' C_s times simple-simple). Where ``ball`` (a ball screw), also at most HIWIN's
+    rule (``ball_screw_critical_speed_rpm``); where ``hiwin_rated`` too (its maker rates
+    it by that rule, ``HIWIN_RULE``), the lower of the beam's and HIWIN's alone. A ball
+    screw of another maker is held to the lowest published rule: Rockford, like the
+    leadscrew makers, rates fixed-simple ends at 1.47 times simple-simple where HIWIN's
+    mounting factors give 0.692 / 0.446 = 1.55. The factor is constant for an end
+    fixity, so the rating keeps the beam's d_r / L^2. Numbers or arrays alike.
 
     A leadscrew with a 1 in steel root (206 GPa, 7850 kg/m^3) over 100 in, fixed-simple:
     simple-simple 475.2 rpm (``critical_speed_rpm``) x C_s 1.47 = 698.5 rpm, where the
@@ -167,6 +180,13 @@ def rated_critical_speed_rpm(
     698.5
     >>> round(float(rated_critical_speed_rpm(0.01732, 1.0, 207e9, 7800.0, "fixed-free", True)), 1)
     690.0
+
+    Fixed-simple, the same root over 1 m: HIWIN's 2.71e8 x 0.692 x 17.32 / 1000^2 = 3248
+    rpm for a HIWIN screw; any other ball screw the makers' 1.47 x simple-simple 2102 rpm:
+
+    >>> args = (0.01732, 1.0, 207e9, 7800.0, "fixed-simple", True)
+    >>> [round(float(rated_critical_speed_rpm(*args, hiwin_rated=h))) for h in (True, False)]
+    [3248, 3090]
     """
     beam = critical_speed_rpm(
         root_diameter_m, length_m, youngs_modulus_pa, density_kg_m3, end_fixity, shaft
@@ -175,7 +195,7 @@ def rated_critical_speed_rpm(
     if not np.asarray(ball).any():
         return leadscrew
     hiwin = ball_screw_critical_speed_rpm(root_diameter_m, length_m, end_fixity)
-    return np.where(ball, np.minimum(beam, hiwin), leadscrew)
+    return np.where(ball, np.minimum(np.where(hiwin_rated, beam, leadscrew), hiwin), leadscrew)
 
 
 @formula("n = SF x n_c", "Thomson (80 % of critical)")
