@@ -14,6 +14,9 @@ import pytest
 from app.catalog import Catalog, load_catalog
 from app.catalog.ball import NOT_APPLICABLE
 from app.catalog.errors import CatalogError
+from app.core.evaluate import evaluate
+from app.core.formulas.critical_speed import ball_screw_critical_speed_rpm, critical_speed_rpm
+from app.core.model import Application
 
 BALL_FAMILIES = {"HIWIN-ROLLED", "HIWIN-ROLLED-RSIT", "HIWIN-GROUND"}
 
@@ -249,3 +252,38 @@ def test_every_ball_screw_has_an_assumed_operating_range(
         assert (screw.temperature_min_c, screw.temperature_max_c) == (-20.0, 80.0), screw.id
         prov = screw.provenance["temperature_range"]
         assert prov.kind == "assumed" and "80 C" in prov.source, screw.id
+
+
+@pytest.mark.parametrize("rule", [None, "HIWIN F 3.27"])
+def test_a_ball_screw_families_critical_speed_rule(tmp_path: Path, rule: str | None) -> None:
+    """A family that names its maker's rule (HIWIN F 3.27) is rated by it and the beam,
+    the lower of the two: 2.71e8 x 0.692 x 12.9 / 1000^2 = 2419 rpm fixed-simple over 1 m,
+    shown with its provenance. One that names none is held to the lowest published rule:
+    also at most the makers' C_s 1.47 times simple-simple (Rockford, Thomson, Roton),
+    5.6 % less. A rule the app does not know is refused, naming the field."""
+    value = 'provenance = "user", source = "test"'
+    text = _family_text()
+    if rule is not None:
+        line = f'critical_speed_rule = {{ value = "{rule}", {value} }}'
+        text = text.replace("[ballscrew.columns]", line + "\n[ballscrew.columns]")
+    (tmp_path / "ballscrew-mine.toml").write_text(text)
+    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    app = Application(load_n=100.0, speed_m_s=0.05, length_m=1.0, end_fixity="fixed-simple")
+    allowed = evaluate(app, screw).critical_speed.allowed_rpm
+    rated = allowed / app.critical_speed_safety_factor
+    hiwin = ball_screw_critical_speed_rpm(screw.root_diameter_m, 1.0, "fixed-simple")
+    assert hiwin == pytest.approx(2419.0, rel=1e-3)
+    simple = critical_speed_rpm(
+        screw.root_diameter_m, 1.0, screw.youngs_modulus_pa, screw.density_kg_m3, "simple-simple"
+    )
+    assert rated == pytest.approx(hiwin if rule else 1.47 * simple, rel=1e-9)
+    assert (screw.critical_speed_rule, "critical_speed_rule" in screw.provenance) == (
+        rule,
+        rule is not None,
+    )
+    bad = text.replace("HIWIN F 3.27", "THK") if rule else ""
+    if bad:
+        (tmp_path / "ballscrew-mine.toml").write_text(bad)
+        with pytest.raises(CatalogError) as err:
+            load_catalog([tmp_path])
+        assert "critical_speed_rule" in str(err.value)
