@@ -277,6 +277,9 @@ def test_a_ball_screw_families_critical_speed_rule(tmp_path: Path, rule: str | N
         screw.root_diameter_m, 1.0, screw.youngs_modulus_pa, screw.density_kg_m3, "simple-simple"
     )
     assert rated == pytest.approx(hiwin if rule else 1.47 * simple, rel=1e-9)
+    check = next(c for c in evaluate(app, screw).checks if c.name == "critical_speed")
+    said = "HIWIN rates it" if rule else "the lowest published rule, the makers'"
+    assert said in check.message.template
     assert (screw.critical_speed_rule, "critical_speed_rule" in screw.provenance) == (
         rule,
         rule is not None,
