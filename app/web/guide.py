@@ -78,7 +78,8 @@ CHARTS = (
     (
         "Lead sweep",
         "The top screw's size with every lead the catalog offers: drive torque, "
-        "speed as a share of the allowed critical speed, and PV used. The shaded band holds "
+        "speed as a share of the allowed critical speed, and PV or an ISO nut's flank "
+        "pressure used. The shaded band holds "
         "the leads that still self-lock; the dashed line is the chosen lead.",
     ),
     (

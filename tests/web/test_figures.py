@@ -195,6 +195,28 @@ def test_lead_sweep_evaluates_every_lead_of_the_top_size(catalog: Catalog) -> No
     )
 
 
+def test_an_iso_nuts_lead_sweep_shows_its_flank_pressure(catalog: Catalog) -> None:
+    """300 N at 20 mm/s on the 304 steel ISO screws with a bronze nut, lead 4 mm: the top
+    screw is Tr8x4(P2), made in leads 2, 4 and 8 mm. Its nut has no PV rating (no PV
+    trace) but a flank pressure check: the sweep draws its share of the allowed pressure
+    at each lead, the chosen lead's equal to the check's utilisation."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 300, "speed_mm_s": 20, "length_mm": 500, "lead_mm": 4,
+         "family": ["TR-304"], "nut_material": "bronze"}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    top = result.candidates[0]
+    assert top.id == "Tr8x4(P2)-304-bronze"
+    data = {t["name"]: t for t in result_figures(result, METRIC, catalog)["lead_sweep"]["data"]}
+    assert "PV, % of limit" not in data
+    flank = data["Flank pressure, % of allowed"]
+    assert flank["x"] == [2.0, 4.0, 8.0] and flank["yaxis"] == "y2"
+    check = next(k for k in top.checks if k.name == "bearing_pressure")
+    assert flank["y"][flank["x"].index(top.lead_mm)] == pytest.approx(
+        check.utilization * 100, rel=1e-3
+    )
+
+
 def test_a_size_with_one_lead_of_its_nut_has_no_sweep(catalog: Catalog) -> None:
     """Tr8x1.5 is made in one lead, with a bronze, an acetal or a PTFE nut: the top
     (bronze) screw's size and nut has nothing to sweep, so the chart is left out rather
