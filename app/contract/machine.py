@@ -207,8 +207,9 @@ MachineOut = create_model(
     governing=(
         str | None,
         Field(
-            description="The axis nearest its limit: one with no passing screw first, else "
-            "the chosen screw with the highest governing utilization."
+            description="The axis nearest its limit or furthest past it: one with no screw "
+            "chosen first, else of the chosen screws that fail the one with the highest "
+            "governing utilization, else the highest governing utilization of all."
         ),
     ),
     moved_kg=(float, Field(description="The mass the bottom axis moves [kg].")),

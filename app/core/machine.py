@@ -20,6 +20,7 @@ the lower nut whenever the two move together (``parallel_thrust``); the answer g
 and the sizing leaves it out (the axes moved one at a time).
 """
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Literal
@@ -281,10 +282,17 @@ def size_machine(
 
 
 def _governing(results: Sequence[AxisResult]) -> str | None:
-    """The axis nearest its limit: one with no screw chosen, or a chosen screw that
-    fails, first; else the highest governing utilisation."""
+    """The axis nearest its limit, or furthest past it: the first with no screw chosen;
+    else of the chosen screws that fail, the one with the highest governing utilisation
+    (not the first from the top: the axis to change first is the one furthest over);
+    else the highest governing utilisation of all. A failure with no utilisation (a
+    yes/no check) counts as furthest over."""
     for r in results:
-        if r.chosen is None or not r.chosen.passed:
+        if r.chosen is None:
             return r.axis.name
-    utilization = {r.axis.name: r.chosen.max_utilization for r in results if r.chosen}
-    return max(utilization, key=utilization.__getitem__, default=None)
+    chosen = [(r.axis.name, r.chosen) for r in results if r.chosen is not None]
+    failing = [(name, c) for name, c in chosen if not c.passed]
+    pool = failing or chosen
+    use = {name: float(c.max_utilization) for name, c in pool}
+    over = {name: math.inf if math.isnan(u) else u for name, u in use.items()}
+    return max(over, key=over.__getitem__, default=None)

@@ -242,3 +242,21 @@ def test_a_named_screw_beyond_the_returned_ones_is_screened_at_its_ranges_ends(
     alone = select(replace(z, limit=50), catalog.index)
     same = next(c for c in alone.candidates if c.screw.id == "B4000-L8-TFE")
     assert (same.robust, same.hinges_on) == (chosen.robust, chosen.hinges_on)
+
+
+def test_of_two_failing_axes_the_one_furthest_over_governs(catalog: Catalog) -> None:
+    """Z given the screw that fails its own axis by the least, Y the one that fails its
+    axis by the most (the nearest and the furthest of all their axes' rejected screws):
+    Y governs, though Z fails too and sits above it."""
+    z_near = select(Z, catalog.index).rejected[0].screw.id
+    y_far = select(replace(Y, limit=10_000), catalog.index).rejected[-1].screw.id
+    axes = [
+        Axis("Z", Z, frame_kg=0.3, motor_kg=0.4, choice=z_near),
+        Axis("X", X, frame_kg=0.5, motor_kg=0.4),
+        Axis("Y", Y, motor_kg=0.4, choice=y_far),
+    ]
+    m = size_machine(axes, catalog.index, {}, {})
+    z, _, y = (a.chosen for a in m.axes)
+    assert z is not None and y is not None and not z.passed and not y.passed
+    assert float(y.max_utilization) > float(z.max_utilization) > 1.0
+    assert m.governing == "Y"
