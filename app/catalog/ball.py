@@ -17,7 +17,7 @@ from app.catalog.errors import CatalogError
 from app.catalog.files import CatalogFile
 from app.catalog.models import Material, Series, Sourced
 from app.catalog.series import NOT_GIVEN
-from app.core.formulas import ballscrew, critical_speed
+from app.core.formulas import ballscrew, buckling, critical_speed
 from app.core.model import Provenance, ScrewSpec
 from app.core.record import CERTAINTY
 from app.core.units import to_si
@@ -37,6 +37,7 @@ FAMILY_FIELDS = frozenset(
         "travel_deviation_mm_by_useful_travel_mm",
         "dn_limit_mm_rpm",
         "critical_speed_rule",
+        "buckling_rule",
         "friction_dynamic",
         "friction_static",
         "preload_fraction",
@@ -215,6 +216,9 @@ def _spec(
         critical_speed_rule=family.text("critical_speed_rule", critical_speed.MAKER_RULES)
         if family.has("critical_speed_rule")
         else None,
+        buckling_rule=family.text("buckling_rule", buckling.BUCKLING_RULES)
+        if family.has("buckling_rule")
+        else None,
         accuracy_grade=family.text("accuracy_grade"),
         temperature_min_c=t_min,
         temperature_max_c=t_max,
@@ -233,6 +237,7 @@ FAMILY_PROVENANCE = {
     "travel_deviation": "travel_deviation_mm_by_useful_travel_mm",
     "dn_limit": "dn_limit_mm_rpm",
     "critical_speed_rule": "critical_speed_rule",
+    "buckling_rule": "buckling_rule",
     "accuracy_grade": "accuracy_grade",
     "preload": "preload_fraction",
     "temperature_range": "temperature_range",
@@ -322,6 +327,7 @@ def _display(specs: list[ScrewSpec], prov: Mapping[str, Provenance]) -> dict[str
         "leads": (sorted(s.lead_m for s in specs), "m"),
         "dn_limit": (first.dn_limit_mm_rpm, "mm rpm"),
         "critical_speed_rule": (first.critical_speed_rule, ""),
+        "buckling_rule": (first.buckling_rule, ""),
         "accuracy_grade": (first.accuracy_grade, ""),
         "lead_accuracy_per_300mm": (first.travel_variation_300mm_m, "m"),
         "travel_deviation": (first.travel_deviation_bands or None, "m"),

@@ -48,8 +48,9 @@ def column_limits(
     leadscrew's Thomson's and Roton's, a ball screw's HIWIN's:
     ``critical_speed.rated_critical_speed_rpm``), and the screw as a column (its span from
     the thrust bearing to the nut) under the peak thrust: Euler when slender, Johnson's
-    parabola when short, and the stress at the root under the peak thrust and the torque
-    the screw carries with it (von Mises)."""
+    parabola when short, a ball screw's never above its makers' Euler load
+    (``buckling.rated_column_load``), and the stress at the root under the peak thrust
+    and the torque the screw carries with it (von Mises)."""
     n_c = critical_speed.rated_critical_speed_rpm(
         t.root_diameter_m,
         app.length_m,
@@ -70,6 +71,10 @@ def column_limits(
         t.yield_strength_pa,
         section=(t.root_area_m2, t.root_second_moment_m4, t.transition_slenderness),
         slenderness_ratio=s,
+    )
+    # never above the makers' Euler load: HIWIN's F 3.25 where its family declares it
+    f_cr = buckling.rated_column_load(
+        f_cr, t.root_second_moment_m4, column_m, app.end_fixity, t.ball, t.hiwin_column
     )
     root_nm = root_torque(t, peak_n, torques)
     axial = buckling.root_stress(peak_n, t.root_diameter_m, t.root_area_m2)

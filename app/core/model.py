@@ -312,6 +312,10 @@ class ScrewSpec:
     #: declares it (``critical_speed.MAKER_RULES``); None: not declared, and a ball screw
     #: is rated by the lowest of the published rules (``rated_critical_speed_rpm``).
     critical_speed_rule: str | None = None
+    #: The published buckling rule a ball screw's maker rates its column by, as its family
+    #: declares it (``buckling.BUCKLING_RULES``); None: not declared, and a ball screw's
+    #: column is rated by the lowest published rule (``buckling.rated_column_load``).
+    buckling_rule: str | None = None
     accuracy_grade: str = ""
     #: a ball nut's axial preload [N] (0: a nut with play; None: not a ball screw)
     preload_n: float | None = None

@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 
 from app.core.axis_free import axis_free, friction_columns, screw_terms
 from app.core.formulas import (
+    buckling,
     critical_speed,
     efficiency,
     geometry,
@@ -256,6 +257,9 @@ class CandidateTable:
     #: a ball screw whose maker rates its critical speed by HIWIN's rule, as its family
     #: declares (``critical_speed.rated_critical_speed_rpm``)
     hiwin_rated: Mask
+    #: a ball screw whose maker rates its column by HIWIN's buckling rule, as its family
+    #: declares (``buckling.rated_column_load``)
+    hiwin_column: Mask
     dynamic_load_n: Array
     static_load_n: Array
     dn_limit_mm_rpm: Array
@@ -383,6 +387,9 @@ class CandidateTable:
             ball=ball,
             hiwin_rated=np.array(
                 [s.critical_speed_rule == critical_speed.HIWIN_RULE for s in screws], dtype=bool
+            ),
+            hiwin_column=np.array(
+                [s.buckling_rule == buckling.HIWIN_BUCKLING_RULE for s in screws], dtype=bool
             ),
             **columns,
             **screw_terms(columns),

@@ -12,6 +12,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "allowed_wear_to_flank_height": "allowed wear depth",
     "backlash": "backlash",
     "critical_speed_rule": "critical speed rule",
+    "buckling_rule": "buckling rule",
     "bearing_pressure": "allowed contact pressure",
     "bearing_pv_limit": "nut PV limit",
     "density": "screw density",

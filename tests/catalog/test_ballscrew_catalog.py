@@ -17,6 +17,7 @@ from app.catalog.errors import CatalogError
 from app.core.evaluate import evaluate
 from app.core.formulas.critical_speed import ball_screw_critical_speed_rpm, critical_speed_rpm
 from app.core.model import Application
+from app.core.units import from_si, to_si
 
 BALL_FAMILIES = {"HIWIN-ROLLED", "HIWIN-ROLLED-RSIT", "HIWIN-GROUND"}
 
@@ -290,3 +291,42 @@ def test_a_ball_screw_families_critical_speed_rule(tmp_path: Path, rule: str | N
         with pytest.raises(CatalogError) as err:
             load_catalog([tmp_path])
         assert "critical_speed_rule" in str(err.value)
+
+
+@pytest.mark.parametrize("rule", [None, "HIWIN F 3.25"])
+def test_a_ball_screw_families_buckling_rule(tmp_path: Path, rule: str | None) -> None:
+    """A user's family of C45 steel (E 207 GPa), root 12.9 mm, over 1000 mm, fixed-
+    supported. Its Euler column, 5,554 N, is below HIWIN's F_k = 4.072e5 x 0.5 x 12.9^4 /
+    1000^2 = 5,638 N (BS-08-2-EN-1704-K F 3.25): a family that names HIWIN's rule keeps
+    it. One that names none is held to the lowest published rule, Rockford's and
+    Thomson's 14.03e6 x 2 x d^4 / L^2 [lb, in] = 5,358 N; the allowed half of it, 2,679 N,
+    is then within THK's permissible P1 = 10 x 12.9^4 / 1000^2 x 10^4 = 2,769 N (General
+    Catalog, Ball Screw, A15-30, formula 5, 0.5 of Euler built in), where half the
+    column's own, 2,777 N, was 0.29 % above it. A rule the app does not know is refused."""
+    value = 'provenance = "user", source = "test"'
+    text = _family_text()
+    if rule is not None:
+        line = f'buckling_rule = {{ value = "{rule}", {value} }}'
+        text = text.replace("[ballscrew.columns]", line + "\n[ballscrew.columns]")
+    (tmp_path / "ballscrew-mine.toml").write_text(text)
+    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    app = Application(load_n=100.0, speed_m_s=0.05, length_m=1.0, end_fixity="fixed-simple")
+    column = evaluate(app, screw).buckling
+    root_mm, span_mm = from_si(screw.root_diameter_m, "mm"), 1000.0
+    hiwin = 4.072e5 * 0.5 * root_mm**4 / span_mm**2
+    assert hiwin == pytest.approx(5638.0, rel=1e-3)
+    assert column.critical_load_n < hiwin
+    root_in, span_in = from_si(screw.root_diameter_m, "in"), from_si(1.0, "in")
+    rockford = to_si(14.03e6 * 2.0 * root_in**4 / span_in**2, "lbf")
+    thk = 10.0 * root_mm**4 / span_mm**2 * 1e4
+    if rule is None:
+        assert column.critical_load_n == pytest.approx(rockford, rel=1e-9)
+        assert column.allowed_load_n <= thk
+    else:
+        assert column.allowed_load_n > thk  # HIWIN's own rule allows its screws more
+    assert (screw.buckling_rule, "buckling_rule" in screw.provenance) == (rule, bool(rule))
+    if rule:
+        (tmp_path / "ballscrew-mine.toml").write_text(text.replace("HIWIN F 3.25", "THK"))
+        with pytest.raises(CatalogError) as err:
+            load_catalog([tmp_path])
+        assert "buckling_rule" in str(err.value)

@@ -1,6 +1,8 @@
 """Compressive peak thrust against the allowed fraction of the column's critical load:
 Euler when the screw is slender, Johnson's parabola when it is short."""
 
+import numpy as np
+
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -36,16 +38,21 @@ class ColumnBuckling(Check):
         "short ones (below the transition slenderness) follow Johnson's parabola, which "
         "ends at the yield load of the root section. The allowed force is a fraction (the "
         "buckling factor) of that critical load, judged at the largest thrust that pushes "
-        "the screw onto its thrust bearing in any segment of either move."
+        "the screw onto its thrust bearing in any segment of either move. A ball screw's "
+        "critical load is at most its maker's Euler load (HIWIN's rule where its family "
+        "declares it, else the lowest published rule, Rockford's and Thomson's)."
     )
     quantity = "force"
     formula = (
-        "F = F_c; F_allowed = SF * (pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / S_y) "
-        "else A * (S_y - (S_y * s / (2 * pi))^2 / E))"
+        "F = F_c; F_allowed = SF * min(pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / S_y) "
+        "else A * (S_y - (S_y * s / (2 * pi))^2 / E), pi^2 * E_m * A / s^2)"
     )
     source = (
         "Euler column (Timoshenko & Gere); Johnson parabola and transition slenderness, "
-        "Shigley's Mechanical Engineering Design, 9th ed., sec. 4-11 to 4-13"
+        "Shigley's Mechanical Engineering Design, 9th ed., sec. 4-11 to 4-13; a ball "
+        "screw's at most its maker's Euler load: HIWIN BS-08-2-EN-1704-K F 3.25 where its "
+        "family declares it, else the lowest published, Rockford Ball Screw 'How To Size A "
+        "Ball Screw' step 9 and Thomson (14.03e6 C d^4 / L^2, E_m = 199.7 GPa)"
     )
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
@@ -61,6 +68,9 @@ class ColumnBuckling(Check):
             "F_c": q.axis.compressive_force_n,
             "SF": app.buckling_safety_factor,
             "E": t.youngs_modulus_pa,
+            # a ball screw's maker's column modulus (inf: a leadscrew), which rates the
+            # column no higher than its maker's Euler load
+            "E_m": buckling.makers_column_modulus(np.inf, t.ball, t.hiwin_column),
             "A": buckling.root_area(t.root_diameter_m),
             "s": buckling.slenderness(t.root_diameter_m, column_length(app), app.end_fixity),
             "S_y": t.yield_strength_pa,
@@ -96,13 +106,13 @@ class ColumnBuckling(Check):
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         def critical(fixity: EndFixity) -> float:
             return buckling.column_critical_load(
-                s.youngs_modulus_pa, s.root_diameter_m, column_length(app), fixity, _yield(s)
+                _modulus(s), s.root_diameter_m, column_length(app), fixity, _yield(s)
             )
 
         force_n = at_least(r.axis.compressive_force_n)
         d_min = buckling.min_root_diameter_for_column(
             force_n / app.buckling_safety_factor,
-            s.youngs_modulus_pa,
+            _modulus(s),
             column_length(app),
             app.end_fixity,
             _yield(s),
@@ -153,6 +163,16 @@ def _column_input(app: Application) -> str:
     return "length_m" if app.bearing_to_nut_m is None else "bearing_to_nut_m"
 
 
+def _modulus(s: ScrewSpec) -> float:
+    """The Young's modulus [Pa] a fix sizes ``s``'s column with: a ball screw's at most its
+    maker's (``buckling.makers_column_modulus``). Its Johnson parabola is then below the
+    rated one (``buckling.rated_column_load``), so a length or diameter found is on the
+    safe side."""
+    ball = s.screw_type == "ball"
+    hiwin = s.buckling_rule == buckling.HIWIN_BUCKLING_RULE
+    return float(buckling.makers_column_modulus(s.youngs_modulus_pa, ball, hiwin))
+
+
 def _yield(s: ScrewSpec) -> float:
     """The screw's yield strength [Pa] (NaN when unknown: Euler alone)."""
     return float("nan") if s.yield_strength_pa is None else s.yield_strength_pa
@@ -171,7 +191,7 @@ def _max_length(
     as the column shortens, so a length a margin shorter would not keep the margin."""
     return buckling.max_length_for_column(
         (r.axis.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
-        s.youngs_modulus_pa,
+        _modulus(s),
         s.root_diameter_m,
         app.end_fixity if fixity is None else fixity,
         _yield(s),

@@ -2,11 +2,12 @@
 the stress at the root section (Shigley [2], sec. 4-11 to 4-13)."""
 
 import math
-from typing import cast
+from typing import Any, cast
 
 import numpy as np
 
 from app.core.formulas.declare import formula
+from app.core.units import to_si
 
 #: Effective-length factor k in F_cr = k pi^2 E I / L^2 for each end fixity [4].
 END_FIXITY_K: dict[str, float] = {
@@ -42,6 +43,76 @@ def euler_critical_load(
     return (
         END_FIXITY_K[end_fixity] * math.pi**2 * youngs_modulus_pa * second_moment_m4 / (length_m**2)
     )
+
+
+#: HIWIN's buckling rule, F_k = 4.072e5 f_k d_k^4 / l_s^2 [N, mm] with f_k = k / 4 (1.0
+#: fixed-fixed, 0.5 fixed-supported, 0.25 supported-supported, 0.0625 fixed-free) and the
+#: permissible F_kmax = 0.5 F_k (HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K,
+#: sec. 3.7.4, F 3.25 and F 3.26), as a ball-screw family declares it.
+HIWIN_BUCKLING_RULE = "HIWIN F 3.25"
+#: The buckling rules a ball-screw family may declare.
+BUCKLING_RULES = (HIWIN_BUCKLING_RULE,)
+#: The Young's modulus HIWIN's constant is Euler's with: 4.072e5 N/mm^2 = 4 pi^3 E / 64,
+#: E = 210.1 GPa.
+HIWIN_COLUMN_MODULUS_PA = to_si(4.072e5 * 64.0 / (4.0 * math.pi**3), "MPa")
+#: The lowest makers' column rule: Rockford Ball Screw ("How To Size A Ball Screw", step
+#: 9) and Thomson (ball screw column buckling) F_c = 14.03e6 C d^4 / L^2 [lb, in], C the
+#: Euler k of the end fixity: Euler's with E = 14.03e6 x 64 / pi^3 psi = 199.7 GPa, below
+#: HIWIN's 210.1, NSK's 2.1e5 N/mm^2 and THK's 2.06e5 N/mm^2 (its P1 = eta_2 d^4 / l^2 x
+#: 10^4 N, 0.5 of Euler's; General Catalog, Ball Screw, A15-30, formula 5).
+LOWEST_COLUMN_MODULUS_PA = to_si(14.03e6 * 64.0 / math.pi**3, "psi")
+
+
+def makers_column_modulus(youngs_modulus_pa: Any, ball: Any, hiwin_rated: Any = False) -> Any:
+    """The Young's modulus a screw's column is rated with [Pa], never above its makers':
+    a leadscrew's own E; a ball screw's at most the E its maker's constant is Euler's with,
+    HIWIN's 210.1 GPa where its family declares HIWIN's rule (``HIWIN_BUCKLING_RULE``),
+    else the lowest published, Rockford's and Thomson's 199.7 GPa. With it the Euler load
+    is the lower of the beam's and the maker's (F_cr proportional to E), and Johnson's
+    parabola, below Euler's tangent to it, is lower too. Numbers or arrays alike.
+
+    >>> [round(float(makers_column_modulus(207e9, b, h)) / 1e9, 1)
+    ...  for b, h in ((False, False), (True, True), (True, False))]
+    [207.0, 207.0, 199.7]
+    """
+    maker = np.where(hiwin_rated, HIWIN_COLUMN_MODULUS_PA, LOWEST_COLUMN_MODULUS_PA)
+    return np.where(ball, np.minimum(youngs_modulus_pa, maker), youngs_modulus_pa)
+
+
+@formula(
+    "F_cr = min(F_col, k pi^2 E_m I / L^2) for a ball screw",
+    "HIWIN BS-08-2-EN-1704-K F 3.25 where its family declares it, else Rockford Ball "
+    "Screw, How To Size A Ball Screw, step 9 (14.03e6 C d^4 / L^2) and Thomson",
+)
+def rated_column_load(
+    column_load_n: Any,
+    second_moment_m4: Any,
+    length_m: float,
+    end_fixity: str,
+    ball: Any,
+    hiwin_rated: Any = False,
+) -> Any:
+    """A screw's critical column load as rated [N], never above its makers': the column's
+    (``column_critical_load``) and, for a ball screw, at most its maker's Euler load, the
+    Euler load with ``makers_column_modulus`` (HIWIN's F_k = 4.072e5 f_k d_k^4 / l_s^2
+    where ``hiwin_rated``, else Rockford's and Thomson's 14.03e6 C d^4 / L^2 [lb, in]).
+    second_moment_m4: I [m^4]; length_m: L [m]; end_fixity: a key of END_FIXITY_K.
+
+    HIWIN R20-05 (d_k 16.9 mm) over 1000 mm, fixed-supported: HIWIN's F_k = 4.072e5 x 0.5
+    x 16.9^4 / 1000^2 = 16,608 N; the column with E = 207 GPa, 16,361 N, is lower and
+    stays; held to Rockford's rule it is 15,782 N:
+
+    >>> i = second_moment_round(0.0169)
+    >>> round(float(euler_critical_load(HIWIN_COLUMN_MODULUS_PA, i, 1.0, "fixed-simple")))
+    16608
+    >>> col = euler_critical_load(207e9, i, 1.0, "fixed-simple")
+    >>> [round(float(rated_column_load(col, i, 1.0, "fixed-simple", True, h))) for h in (1, 0)]
+    [16361, 15782]
+    """
+    modulus = makers_column_modulus(np.inf, ball, hiwin_rated)
+    with np.errstate(invalid="ignore"):
+        maker = euler_critical_load(modulus, second_moment_m4, length_m, end_fixity)
+    return np.where(ball, np.minimum(column_load_n, maker), column_load_n)
 
 
 @formula("F = SF x F_cr", "lead-screw practice (0.5)")
