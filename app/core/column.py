@@ -59,7 +59,7 @@ def column_limits(
         app.end_fixity,
         t.ball,
         (t.wave_speed_m_s, t.root_gyration_m),
-        t.hiwin_rated,
+        t.hiwin_speed,
     )
     column_m = column_length(app)
     s = buckling.slenderness(t.root_diameter_m, column_m, app.end_fixity, t.root_gyration_m)

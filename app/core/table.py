@@ -256,7 +256,7 @@ class CandidateTable:
     ball: Mask
     #: a ball screw whose maker rates its critical speed by HIWIN's rule, as its family
     #: declares (``critical_speed.rated_critical_speed_rpm``)
-    hiwin_rated: Mask
+    hiwin_speed: Mask
     #: a ball screw whose maker rates its column by HIWIN's buckling rule, as its family
     #: declares (``buckling.rated_column_load``)
     hiwin_column: Mask
@@ -385,7 +385,7 @@ class CandidateTable:
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             traverse_extrapolated=extrapolated,
             ball=ball,
-            hiwin_rated=np.array(
+            hiwin_speed=np.array(
                 [s.critical_speed_rule == critical_speed.HIWIN_RULE for s in screws], dtype=bool
             ),
             hiwin_column=np.array(

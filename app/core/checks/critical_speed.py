@@ -75,7 +75,7 @@ class CriticalSpeed(Check):
             # at most the leadscrew makers' C_s times simple-simple (pi^2), but a ball screw
             # its maker rates by HIWIN's rule; a ball screw at most HIWIN's F 3.27 too
             "C_s": np.where(
-                t.ball & t.hiwin_rated,
+                t.ball & t.hiwin_speed,
                 np.inf,
                 critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity],
             ),
