@@ -5,6 +5,7 @@ fix never names a screw nobody makes."""
 import math
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from itertools import count
 from operator import attrgetter
 from types import MappingProxyType
 
@@ -31,9 +32,12 @@ def size_of(screw: ScrewSpec) -> SizeKey:
 
 def size_rows(screws: Sequence[ScrewSpec], lead_m: Array) -> dict[SizeKey, NDArray[np.intp]]:
     """The rows of each size and nut of ``screws`` (``size_of``), shortest lead first (one
-    stable sort by size, then lead); each read-only."""
+    stable sort by size, then lead); each read-only. A size's code is the row it first
+    appears in, so the codes rise in the order the sizes first appear, as ``codes`` holds
+    them."""
     codes: dict[SizeKey, int] = {}
-    code = np.array([codes.setdefault(size, len(codes)) for size in map(_SIZE, screws)])
+    first_row = map(codes.setdefault, map(_SIZE, screws), count())
+    code = np.fromiter(first_row, dtype=np.intp, count=len(screws))
     if not codes:
         return {}
     order = np.lexsort((lead_m, code))

@@ -9,7 +9,7 @@ import math
 from collections.abc import Hashable, Sequence
 from dataclasses import dataclass, fields
 from functools import partial
-from operator import attrgetter
+from operator import attrgetter, eq
 from typing import Any
 
 import numpy as np
@@ -88,6 +88,12 @@ def _column_of(screws: Sequence[ScrewSpec], name: str) -> Array:
 def _flag_of(screws: Sequence[ScrewSpec], name: str) -> Mask:
     """The boolean column of ScrewSpec field ``name``."""
     return np.fromiter(map(attrgetter(name), screws), dtype=bool, count=len(screws))
+
+
+def _equals(screws: Sequence[ScrewSpec], name: str, value: str) -> Mask:
+    """Whether each screw's ScrewSpec field ``name`` is ``value``."""
+    same = map(partial(eq, value), map(attrgetter(name), screws))
+    return np.fromiter(same, dtype=bool, count=len(screws))
 
 
 def _pitch_diameter(od: Array, rd: Array, d2: Array, d0: Array) -> Array:
@@ -346,7 +352,7 @@ class CandidateTable:
         tan_l = geometry.tan_lead_angle(lead, d_p)
         cos_a = np.cos(col("thread_half_angle_rad"))
         traverse, extrapolated = _bands(screws, lead)
-        ball = np.array([s.screw_type == "ball" for s in screws], dtype=bool)
+        ball = _equals(screws, "screw_type", "ball")
         tables, which = _distinct(screws, "bearing_pressure_table")
         deviation_tables, deviation_table = _distinct(screws, "travel_deviation_bands")
         copied = {name: col(attr) for name, attr in COPIED.items()}
@@ -385,12 +391,8 @@ class CandidateTable:
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             traverse_extrapolated=extrapolated,
             ball=ball,
-            hiwin_speed=np.array(
-                [s.critical_speed_rule == critical_speed.HIWIN_RULE for s in screws], dtype=bool
-            ),
-            hiwin_column=np.array(
-                [s.buckling_rule == buckling.HIWIN_BUCKLING_RULE for s in screws], dtype=bool
-            ),
+            hiwin_speed=_equals(screws, "critical_speed_rule", critical_speed.HIWIN_RULE),
+            hiwin_column=_equals(screws, "buckling_rule", buckling.HIWIN_BUCKLING_RULE),
             **columns,
             **screw_terms(columns),
         )
