@@ -88,7 +88,8 @@ CHARTS = (
         "each speed; each point is one segment of the move (accelerate, constant, "
         "decelerate) of a screw, at its top speed, or its start from rest (break-away) at "
         "standstill, with the torque safety factor. Points under the line: the motor "
-        "drives the move.",
+        "drives the move. Beside a continuous rating (dotted), each screw's square is its "
+        "cycle's RMS torque as the RMS check judges it.",
     ),
     (
         "The move over time",

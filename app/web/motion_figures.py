@@ -190,22 +190,34 @@ def _steps(segments: list[SegmentOut], values: list[float]) -> tuple[list[float]
     return times, shown
 
 
-def _governing(segments: list[SegmentOut], d: Display) -> dict[str, Any] | None:
-    """A marker at the middle of the segment that governs the motor, at its torque."""
+def _governing(top: CandidateOut, d: Display) -> dict[str, Any] | None:
+    """A marker at the middle of the segment that governs the motor, at its torque; where
+    none does, the start from rest governs (``drive.worst_point``: the break-away nearest
+    the curve at standstill, or the largest torque): a marker at the cycle's start, at the
+    break-away driving the first move."""
+    segments = top.segments or []
     t = 0.0
     for s in segments:
         if s.governs:
-            return {
-                "type": "scatter",
-                "mode": "markers",
-                "name": f"Governs: {s.name} {s.direction}",
-                "x": [t + s.duration_s / 2],
-                "y": [d.value(s.torque_nm, "torque")],
-                "marker": {"symbol": "diamond", "size": 12, "color": "#CC79A7"},
-                "hovertemplate": f"%{{y:.4g}} {d.label('torque')}<extra>governs</extra>",
-            }
+            return _marker(f"Governs: {s.name} {s.direction}", t + s.duration_s / 2, s.torque_nm, d)
         t += s.duration_s
-    return None
+    if not segments:
+        return None
+    sign = -1.0 if segments[0].direction in REVERSED else 1.0
+    return _marker("Governs: starting from rest", 0.0, sign * abs(top.torque.breakaway_nm), d)
+
+
+def _marker(name: str, time_s: float, torque_nm: float, d: Display) -> dict[str, Any]:
+    """The governing point's diamond at ``time_s``, ``torque_nm`` in the torque shown."""
+    return {
+        "type": "scatter",
+        "mode": "markers",
+        "name": name,
+        "x": [time_s],
+        "y": [d.value(torque_nm, "torque")],
+        "marker": {"symbol": "diamond", "size": 12, "color": "#CC79A7"},
+        "hovertemplate": f"%{{y:.4g}} {d.label('torque')}<extra>governs</extra>",
+    }
 
 
 def cycle_torque_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
@@ -241,7 +253,7 @@ def cycle_torque_figure(top: CandidateOut, d: Display) -> dict[str, Any]:
                     "hovertemplate": f"%{{x:.3g}} s<br>%{{y:.4g}} {unit}<extra>motor</extra>",
                 }
             )
-    marker = _governing(segments, d)
+    marker = _governing(top, d)
     if marker is not None:
         data.append(marker)
     y_axis = {**axis(f"Motor torque [{unit}]"), "zeroline": True, "zerolinecolor": "#999999"}

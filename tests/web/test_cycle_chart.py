@@ -75,3 +75,25 @@ def test_the_governing_segment_is_marked(selected: SelectOut) -> None:
     assert marker["x"] == pytest.approx([start + segments[worst].duration_s / 2])
     assert marker["y"] == pytest.approx([segments[worst].torque_nm])
     assert segments[worst].name in marker["name"]
+
+
+def test_the_start_from_rest_is_marked_where_it_governs(catalog: Catalog) -> None:
+    """A bronze ISO nut lifting 150 N and 10 kg at 20 mm/s on the STEPPERONLINE
+    23HS32-4004S (the case of test_figures' break-away test): starting from rest the oiled
+    bronze thread is at its static friction, nearest the motor's curve of any point, so
+    no moving segment governs. The marker sits at the cycle's start, at the break-away
+    driving the up move (0.4550 N m), where before the chart marked nothing."""
+    inputs = ApplicationIn.model_validate(
+        {"load_n": 150, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 20,
+         "length_mm": 600, "accel_mm_s2": 500, "stroke_mm": 400, "cycles_per_day": 200,
+         "motor": "23hs32-4004s", "family": ["TR-304", "TR-C45"], "nut_material": "bronze",
+         "lubrication": "oiled"}
+    )  # fmt: skip
+    result = run_selection(inputs, catalog)
+    top = result.candidates[0]
+    assert top.torque.peak_segment == "starting from rest"
+    assert not any(s.governs for s in top.segments or [])
+    marker = result_figures(result, METRIC, catalog)["cycle_torque"]["data"][-1]
+    assert marker["name"] == "Governs: starting from rest" and marker["x"] == [0.0]
+    assert marker["y"] == pytest.approx([top.torque.breakaway_nm], rel=1e-12)
+    assert marker["y"][0] == pytest.approx(0.4550, rel=1e-3)
