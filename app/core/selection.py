@@ -339,13 +339,8 @@ def summarize(
     notes = (motion.speed_note(app), _unheld(app, table.reach))  # a family or nut it lacks
     note = [n for n in notes if n is not None]
     if passed:
-        message = Phrase(f"{passed} of {evaluated} candidates {plural(passed, 'passes', 'pass')}.")
-        first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]
-        sliding = screening is None or bool((screening.passed & ~screening.table.ball).any())
-        later = (motion.life_note(app), nut_heat.unchecked_note(app, sliding))
-        parts = [p for p in first if p is not None]
-        after = [n for n in later if n is not None]
-        return Summary(worst, worst_count, None, {}, join([*parts, *note, message, *after]))
+        said = _passing_words(app, evaluated, passed, note, screening, passing_ids)
+        return Summary(worst, worst_count, None, {}, said)
     best = nearest[0]
     # each of the nearest candidates' changes, worked out once (each may judge it again)
     near_changes = [input_change(c) for c in nearest[:REMEDY_FROM]]
@@ -380,6 +375,26 @@ def summarize(
         found,
         why,
     )
+
+
+def _passing_words(
+    app: Application,
+    evaluated: int,
+    passed: int,
+    note: list[Phrase],
+    screening: Screening | None,
+    passing_ids: Sequence[str],
+) -> Phrase:
+    """What the summary says when some candidates pass: that no leadscrew passes where
+    only ball screws do (``kinds.no_leadscrew``), the speed and catalog ``note``, the
+    count, then the life and unchecked nut heat notes."""
+    message = Phrase(f"{passed} of {evaluated} candidates {plural(passed, 'passes', 'pass')}.")
+    first = [] if screening is None else [kinds.no_leadscrew(screening, passing_ids)]
+    sliding = screening is None or bool((screening.passed & ~screening.table.ball).any())
+    later = (motion.life_note(app), nut_heat.unchecked_note(app, sliding))
+    parts = [p for p in first if p is not None]
+    after = [n for n in later if n is not None]
+    return join([*parts, *note, message, *after])
 
 
 def _verified(
