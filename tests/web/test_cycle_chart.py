@@ -11,6 +11,7 @@ from app.contract.outputs import SelectOut
 from app.contract.schemas import ApplicationIn
 from app.report.service import run_selection
 from app.web.figures import result_figures
+from tests.web import breakaway_lift
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 OZ_IN = {**METRIC, "torque_unit": "oz_in"}
@@ -83,13 +84,7 @@ def test_the_start_from_rest_is_marked_where_it_governs(catalog: Catalog) -> Non
     bronze thread is at its static friction, nearest the motor's curve of any point, so
     no moving segment governs. The marker sits at the cycle's start, at the break-away
     driving the up move (0.4550 N m), where before the chart marked nothing."""
-    inputs = ApplicationIn.model_validate(
-        {"load_n": 150, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 20,
-         "length_mm": 600, "accel_mm_s2": 500, "stroke_mm": 400, "cycles_per_day": 200,
-         "motor": "23hs32-4004s", "family": ["TR-304", "TR-C45"], "nut_material": "bronze",
-         "lubrication": "oiled"}
-    )  # fmt: skip
-    result = run_selection(inputs, catalog)
+    result = run_selection(breakaway_lift.INPUTS, catalog)
     top = result.candidates[0]
     assert top.torque.peak_segment == "starting from rest"
     assert not any(s.governs for s in top.segments or [])

@@ -19,6 +19,7 @@ from app.web.curves import TOP
 from app.web.figures import chart_candidates, result_figures, torque_figure
 from app.web.life_figures import LIFE_TOP
 from tests.leadscrews import leadscrew_families
+from tests.web import breakaway_lift
 
 METRIC = {"force_unit": "N", "length_unit": "mm", "torque_unit": "N_m"}
 IMPERIAL = {"force_unit": "lbf", "length_unit": "in", "torque_unit": "oz_in"}
@@ -490,13 +491,7 @@ def test_the_motor_chart_draws_the_break_away_the_check_holds_to_the_curve(
     and the results' peak torque ('starting from rest'). The chart draws that point at
     0 rpm, so its highest point against the usable line is the check's 37.1 %, not the
     segments' 35.5 %."""
-    inputs = ApplicationIn.model_validate(
-        {"load_n": 150, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 20,
-         "length_mm": 600, "accel_mm_s2": 500, "stroke_mm": 400, "cycles_per_day": 200,
-         "motor": "23hs32-4004s", "family": ["TR-304", "TR-C45"], "nut_material": "bronze",
-         "lubrication": "oiled"}
-    )  # fmt: skip
-    result = run_selection(inputs, catalog)
+    result = run_selection(breakaway_lift.INPUTS, catalog)
     data = result_figures(result, METRIC, catalog)["motor"]["data"]
     usable = next(t for t in data if t["name"].startswith("Usable"))
     for c in result.candidates[:TOP]:
