@@ -49,8 +49,10 @@ def column_limits(
     ``critical_speed.rated_critical_speed_rpm``), and the screw as a column (its span from
     the thrust bearing to the nut) under the peak thrust: Euler when slender, Johnson's
     parabola when short, a ball screw's never above its makers' Euler load
-    (``buckling.rated_column_load``), and the stress at the root under the peak thrust
-    and the torque the screw carries with it (von Mises)."""
+    (``buckling.rated_column_load``), its allowed load never above its makers'
+    (``buckling.rated_allowed_load``: THK's P2 where a ball screw's family declares no
+    buckling rule), and the stress at the root under the peak thrust and the torque the
+    screw carries with it (von Mises)."""
     n_c = critical_speed.rated_critical_speed_rpm(
         t.root_diameter_m,
         app.length_m,
@@ -83,7 +85,10 @@ def column_limits(
         "critical_rpm": n_c,
         "allowed_rpm": critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
         "critical_load_n": f_cr,
-        "allowed_load_n": buckling.allowed_buckling_load(f_cr, app.buckling_safety_factor),
+        # never above THK's P2 = 116 d1^2 where a ball screw's family declares no rule
+        "allowed_load_n": buckling.rated_allowed_load(
+            f_cr, app.buckling_safety_factor, t.root_area_m2, t.ball, t.hiwin_column
+        ),
         "slenderness": s,
         "column_length_m": filled(len(t), column_m),
         "transition_slenderness": t.transition_slenderness,

@@ -7,6 +7,7 @@ Table 4.4 (rolled flange single nut FSCDIN/FSIDIN, p. 35-36), Table 4.5 (rolled 
 p. 37), Table 6.4 (ground DIN single nut FSC, p. 48-49), sec. 3.7.6 (DN limits).
 """
 
+import math
 from pathlib import Path
 
 import pytest
@@ -330,3 +331,49 @@ def test_a_ball_screw_families_buckling_rule(tmp_path: Path, rule: str | None) -
         with pytest.raises(CatalogError) as err:
             load_catalog([tmp_path])
         assert "buckling_rule" in str(err.value)
+
+
+@pytest.mark.parametrize("rule", [None, "HIWIN F 3.25"])
+def test_a_ball_screw_families_axial_stress_is_held_to_thks_p2(
+    tmp_path: Path, rule: str | None
+) -> None:
+    """THK's permissible tensile/compressive load of a ball screw shaft, P2 = 116 d1^2
+    [N, mm] (General Catalog, Ball Screw, A15-30, formula 6), is an axial stress of
+    116 x 4 / pi = 147.7 MPa on the root area, 4.7 % below 0.5 x 310 MPa, C45's yield at
+    the default buckling factor. A user's family of C45 that names no buckling rule has
+    its root stress held to it, and its short column (root 12.9 mm, 50 mm, fixed-
+    supported: 0.5 x Johnson = 0.5 x 130.7 mm^2 x 308.6 MPa = 20,170 N) to
+    P2 = 116 x 12.9^2 = 19,304 N. One that names HIWIN's rule (HIWIN publishes no such
+    cap) keeps 0.5 x 310 MPa and 0.5 x its Johnson load."""
+    value = 'provenance = "user", source = "test"'
+    text = _family_text()
+    if rule is not None:
+        line = f'buckling_rule = {{ value = "{rule}", {value} }}'
+        text = text.replace("[ballscrew.columns]", line + "\n[ballscrew.columns]")
+    (tmp_path / "ballscrew-mine.toml").write_text(text)
+    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    assert screw.yield_strength_pa == pytest.approx(to_si(310.0, "MPa"))
+    app = Application(load_n=4000.0, speed_m_s=0.05, length_m=0.05, end_fixity="fixed-simple")
+    result = evaluate(app, screw)
+    names = ("root_stress", "buckling")
+    root_mm = from_si(screw.root_diameter_m, "mm")
+    p2 = 116.0 * root_mm**2
+    assert p2 == pytest.approx(19304.0, rel=1e-4)
+    thk_pa = to_si(116.0 * 4.0 / math.pi, "MPa")
+    assert thk_pa == pytest.approx(to_si(147.7, "MPa"), rel=1e-3)
+    check, buckled = (next(c for c in result.checks if c.name == n) for n in names)
+    assert check.utilization is not None
+    allowed_pa = result.buckling.root_stress_pa / check.utilization
+    column = result.buckling
+    assert column.mode == "johnson"
+    half_johnson = 0.5 * column.critical_load_n
+    assert half_johnson == pytest.approx(20170.0, rel=1e-3)
+    if rule is None:
+        assert allowed_pa == pytest.approx(thk_pa, rel=1e-9)
+        assert column.allowed_load_n == pytest.approx(p2, rel=1e-9)
+        assert "THK's P2" in check.message.template
+        assert "THK's P2" in buckled.message.template
+    else:
+        assert allowed_pa == pytest.approx(0.5 * to_si(310.0, "MPa"), rel=1e-9)
+        assert column.allowed_load_n == pytest.approx(half_johnson, rel=1e-12)
+        assert "THK" not in check.message.template + buckled.message.template

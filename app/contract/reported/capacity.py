@@ -62,7 +62,7 @@ ROWS: tuple[Reported, ...] = (
         column=True,
     ),
     Reported("buckling.critical_load_n", formula=Formula(buckling.column_critical_load)),
-    Reported("buckling.allowed_load_n", formula=Formula(buckling.allowed_buckling_load)),
+    Reported("buckling.allowed_load_n", formula=Formula(buckling.rated_allowed_load)),
     Reported("buckling.slenderness", formula=Formula(buckling.slenderness)),
     Reported("buckling.transition_slenderness", formula=Formula(buckling.transition_slenderness)),
     Reported("buckling.root_stress_mpa", formula=Formula(buckling.root_von_mises_stress)),

@@ -1,6 +1,8 @@
 """Compressive peak thrust against the allowed fraction of the column's critical load:
 Euler when the screw is slender, Johnson's parabola when it is short."""
 
+import math
+
 import numpy as np
 
 from app.core.checks.base import (
@@ -40,19 +42,23 @@ class ColumnBuckling(Check):
         "buckling factor) of that critical load, judged at the largest thrust that pushes "
         "the screw onto its thrust bearing in any segment of either move. A ball screw's "
         "critical load is at most its maker's Euler load (HIWIN's rule where its family "
-        "declares it, else the lowest published rule, Rockford's and Thomson's)."
+        "declares it, else the lowest published rule, Rockford's and Thomson's), and its "
+        "allowed force, where its family declares no rule, at most THK's permissible "
+        "P2 = 116 d1^2 N (147.7 MPa on the root area)."
     )
     quantity = "force"
     formula = (
-        "F = F_c; F_allowed = SF * min(pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / S_y) "
-        "else A * (S_y - (S_y * s / (2 * pi))^2 / E), pi^2 * E_m * A / s^2)"
+        "F = F_c; F_allowed = min(SF * min(pi^2 * E * A / s^2 if s >= sqrt(2 * pi^2 * E / S_y) "
+        "else A * (S_y - (S_y * s / (2 * pi))^2 / E), pi^2 * E_m * A / s^2), sigma_m * A)"
     )
     source = (
         "Euler column (Timoshenko & Gere); Johnson parabola and transition slenderness, "
         "Shigley's Mechanical Engineering Design, 9th ed., sec. 4-11 to 4-13; a ball "
         "screw's at most its maker's Euler load: HIWIN BS-08-2-EN-1704-K F 3.25 where its "
         "family declares it, else the lowest published, Rockford Ball Screw 'How To Size A "
-        "Ball Screw' step 9 and Thomson (14.03e6 C d^4 / L^2, E_m = 199.7 GPa)"
+        "Ball Screw' step 9 and Thomson (14.03e6 C d^4 / L^2, E_m = 199.7 GPa), and its "
+        "allowed load at most THK's P2 = 116 d1^2 N (General Catalog, Ball Screw, A15-30, "
+        "formula 6; sigma_m = 147.7 MPa)"
     )
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
@@ -74,12 +80,19 @@ class ColumnBuckling(Check):
             "A": buckling.root_area(t.root_diameter_m),
             "s": buckling.slenderness(t.root_diameter_m, column_length(app), app.end_fixity),
             "S_y": t.yield_strength_pa,
+            # the makers' allowed root stress (inf: none published), THK's P2 over A
+            "sigma_m": buckling.makers_allowed_stress(t.ball, t.hiwin_column),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         short = r.column.slenderness < r.column.transition_slenderness
         model = "Johnson, short column" if short else "Euler"
+        # held to THK's P2 below the buckling factor's share of the critical load
+        capped = r.column.allowed_load_n < buckling.allowed_buckling_load(
+            r.column.critical_load_n, app.buckling_safety_factor
+        )
+        limit = "THK's P2 = 116 d1^2 N, below " if capped else ""
         span = (
             ""
             if app.bearing_to_nut_m is None
@@ -88,7 +101,9 @@ class ColumnBuckling(Check):
         return Phrase(
             "Peak thrust {f} in compression "
             + verb
-            + " the allowed {allowed} ({sf} x "
+            + " the allowed {allowed} ("
+            + limit
+            + "{sf} x "
             + model
             + " {f_cr}, slenderness {s}"
             + span
@@ -104,19 +119,22 @@ class ColumnBuckling(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        def critical(fixity: EndFixity) -> float:
-            return buckling.column_critical_load(
+        def allowed(fixity: EndFixity) -> float:
+            critical = buckling.column_critical_load(
                 _modulus(s), s.root_diameter_m, column_length(app), fixity, _yield(s)
             )
+            return min(app.buckling_safety_factor * critical, _most_n(s, s.root_diameter_m))
 
         force_n = at_least(r.axis.compressive_force_n)
-        d_min = buckling.min_root_diameter_for_column(
+        d_column = buckling.min_root_diameter_for_column(
             force_n / app.buckling_safety_factor,
             _modulus(s),
             column_length(app),
             app.end_fixity,
             _yield(s),
         )
+        # the root whose area carries the thrust at the makers' allowed stress (THK's P2)
+        d_min = max(d_column, (4.0 * force_n / (math.pi * _makers_stress(s))) ** 0.5)
         length_m = _max_length(app, s, r, force_n)
         values: dict[str, Amount | str] = {
             "length": Amount(length_m, "length", "down"),
@@ -129,7 +147,7 @@ class ColumnBuckling(Check):
         spanned = app.bearing_to_nut_m is not None
         what = "span from the thrust bearing to the nut" if spanned else "column"
         # a stiffer mounting is offered only when it keeps the margin at this length
-        stiffer = stiffer_fixity(app, lambda f: force_n <= app.buckling_safety_factor * critical(f))
+        stiffer = stiffer_fixity(app, lambda f: force_n <= allowed(f))
         if stiffer is not None:
             values["stiffer"] = stiffer
             stiffer_m = _max_length(app, s, r, force_n, stiffer)
@@ -173,6 +191,21 @@ def _modulus(s: ScrewSpec) -> float:
     return float(buckling.makers_column_modulus(s.youngs_modulus_pa, ball, hiwin))
 
 
+def _makers_stress(s: ScrewSpec) -> float:
+    """The makers' allowed root stress of ``s`` [Pa] (``buckling.makers_allowed_stress``:
+    THK's P2 over the root area, 147.7 MPa, for a ball screw whose family declares no
+    buckling rule; else inf)."""
+    ball = s.screw_type == "ball"
+    hiwin = s.buckling_rule == buckling.HIWIN_BUCKLING_RULE
+    return float(buckling.makers_allowed_stress(ball, hiwin))
+
+
+def _most_n(s: ScrewSpec, root_diameter_m: float) -> float:
+    """The makers' allowed column load of ``s`` at a root diameter [N]: THK's
+    P2 = 116 d1^2 [N, mm] where ``_makers_stress`` is, else inf."""
+    return _makers_stress(s) * buckling.root_area(root_diameter_m)
+
+
 def _yield(s: ScrewSpec) -> float:
     """The screw's yield strength [Pa] (NaN when unknown: Euler alone)."""
     return float("nan") if s.yield_strength_pa is None else s.yield_strength_pa
@@ -188,9 +221,13 @@ def _max_length(
     """Longest column carrying the peak thrust (or ``force_n``) with the buckling factor,
     with the ends ``app``'s (or ``fixity``) [m]. A fix asks for the column that carries the
     thrust with its margin: in Johnson's short-column range the critical load hardly grows
-    as the column shortens, so a length a margin shorter would not keep the margin."""
+    as the column shortens, so a length a margin shorter would not keep the margin. 0
+    when the thrust is above the makers' allowed load at any length (THK's P2)."""
+    force_n = r.axis.compressive_force_n if force_n is None else force_n
+    if force_n > _most_n(s, s.root_diameter_m):
+        return 0.0
     return buckling.max_length_for_column(
-        (r.axis.compressive_force_n if force_n is None else force_n) / app.buckling_safety_factor,
+        force_n / app.buckling_safety_factor,
         _modulus(s),
         s.root_diameter_m,
         app.end_fixity if fixity is None else fixity,

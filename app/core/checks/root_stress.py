@@ -1,6 +1,8 @@
 """Stress at the root section under the peak thrust and the torque the screw carries with
 it (von Mises) against the screw's yield."""
 
+import numpy as np
+
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -28,23 +30,28 @@ class RootStress(Check):
         "The root section of the screw under the peak thrust, pushed or pulled, and the "
         "torque it carries with it (the thread's torque for that thrust, the nut's drag and "
         "the screw's own inertia torque), combined by von Mises, against a fraction (the "
-        "buckling factor) of the screw material's yield strength."
+        "buckling factor) of the screw material's yield strength; a ball screw's whose "
+        "family declares no buckling rule at most THK's permissible P2 = 116 d1^2 N, "
+        "147.7 MPa on the root area."
     )
     quantity = "pressure"
     formula = (
         "sigma_vm = sqrt((F_peak / (pi * d_r^2 / 4))^2 + 3 * (16 * T_root / (pi * d_r^3))^2); "
-        "sigma_allowed = SF * S_y"
+        "sigma_allowed = min(SF * S_y, sigma_m)"
     )
     source = (
         "Shigley's Mechanical Engineering Design, 9th ed., eqs. (8-7), (8-8) (body stresses "
         "of a power screw) and (5-15) (von Mises); yield strength from the material "
-        "(handbook)"
+        "(handbook); a ball screw's whose family declares no buckling rule at most THK's "
+        "P2 = 116 d1^2 N (General Catalog, Ball Screw, A15-30, formula 6), sigma_m = "
+        "147.7 MPa"
     )
     sources = ("root_diameter", "yield_strength", "friction_static", "friction_dynamic")
     capacity_sources = ("yield_strength",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        allowed = app.buckling_safety_factor * t.yield_strength_pa
+        makers = buckling.makers_allowed_stress(t.ball, t.hiwin_column)
+        allowed = np.minimum(app.buckling_safety_factor * t.yield_strength_pa, makers)
         return Measure(where_given(allowed), q.column.root_stress_pa, allowed)
 
     def symbols(
@@ -56,14 +63,18 @@ class RootStress(Check):
             "T_root": q.column.root_torque_nm,
             "SF": app.buckling_safety_factor,
             "S_y": t.yield_strength_pa,
+            # the makers' allowed root stress (inf: none published)
+            "sigma_m": buckling.makers_allowed_stress(t.ball, t.hiwin_column),
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
+        capped = _makers(s) < app.buckling_safety_factor * (s.yield_strength_pa or 0.0)
+        limit = "THK's P2 = 116 d1^2 N, below {sf} x yield {s_y}" if capped else ""
         return Phrase(
             "{stress} at the root (von Mises of {sigma} axial under the peak thrust and "
             "{tau} shear from the {torque} the screw carries with it) " + verb + " {allowed} "
-            "({sf} x yield {s_y}).",
+            "(" + (limit or "{sf} x yield {s_y}") + ").",
             {
                 "stress": Amount(r.column.root_stress_pa, "pressure"),
                 "sigma": Amount(r.column.root_axial_stress_pa, "pressure"),
@@ -96,6 +107,15 @@ class RootStress(Check):
         return load_input(app, allowed_n)
 
 
+def _makers(s: ScrewSpec) -> float:
+    """The makers' allowed root stress of ``s`` [Pa] (``buckling.makers_allowed_stress``:
+    THK's 147.7 MPa for a ball screw whose family declares no buckling rule, else inf)."""
+    ball = s.screw_type == "ball"
+    hiwin = s.buckling_rule == buckling.HIWIN_BUCKLING_RULE
+    return float(buckling.makers_allowed_stress(ball, hiwin))
+
+
 def _allowed(app: Application, s: ScrewSpec) -> float:
-    """Allowed root stress [Pa]."""
-    return app.buckling_safety_factor * (s.yield_strength_pa or 0.0)
+    """Allowed root stress [Pa]: the buckling factor times the yield strength, at most the
+    makers' (``_makers``)."""
+    return min(app.buckling_safety_factor * (s.yield_strength_pa or 0.0), _makers(s))

@@ -115,6 +115,53 @@ def rated_column_load(
     return np.where(ball, np.minimum(column_load_n, maker), column_load_n)
 
 
+#: THK's permissible tensile/compressive load of a ball screw shaft, P2 = 116 d1^2 [N, d1
+#: the root diameter in mm] (General Catalog, Ball Screw, A15-30, formula 6): an allowed
+#: axial stress of 116 x 4 / pi = 147.7 N/mm^2 on the root area, the lowest published.
+#: HIWIN publishes no such cap.
+THK_PERMISSIBLE_STRESS_PA = to_si(116.0 * 4.0 / math.pi, "MPa")
+
+
+def makers_allowed_stress(ball: Any, hiwin_rated: Any = False) -> Any:
+    """The highest stress a screw's makers allow at its root [Pa]: a ball screw's whose
+    family declares no buckling rule, THK's P2 = 116 d1^2 [N, mm] over the root area,
+    116 x 4 / pi = 147.7 MPa (General Catalog, Ball Screw, A15-30, formula 6); inf (none
+    published) for a leadscrew and a ball screw rated by HIWIN's rule
+    (``HIWIN_BUCKLING_RULE``). Numbers or arrays alike.
+
+    >>> [round(float(makers_allowed_stress(b, h)) / 1e6, 1)
+    ...  for b, h in ((False, False), (True, True), (True, False))]
+    [inf, inf, 147.7]
+    """
+    capped = np.logical_and(ball, np.logical_not(hiwin_rated))
+    return np.where(capped, THK_PERMISSIBLE_STRESS_PA, np.inf)
+
+
+@formula(
+    "F_allowed = min(SF x F_cr, sigma_P2 A) for a ball screw",
+    "THK General Catalog, Ball Screw, A15-30, formula 6 (P2 = 116 d1^2 N) where its "
+    "family declares no buckling rule",
+)
+def rated_allowed_load(
+    critical_load_n: Any, safety_factor: float, area_m2: Any, ball: Any, hiwin_rated: Any = False
+) -> Any:
+    """A screw's allowed column load [N], never above its makers': the buckling factor
+    times the critical load (``allowed_buckling_load``) and, for a ball screw whose family
+    declares no buckling rule, at most THK's permissible P2 = 116 d1^2 [N, mm], the
+    stress ``makers_allowed_stress`` (147.7 MPa) on the root area ``area_m2`` [m^2].
+    critical_load_n: F_cr [N]; safety_factor: SF [-].
+
+    HIWIN R20-05 (d1 16.9 mm) as a short column: 0.5 x A x 310 MPa = 34,769 N; THK's
+    P2 = 116 x 16.9^2 = 33,131 N:
+
+    >>> a = root_area(0.0169)
+    >>> [round(float(rated_allowed_load(a * 310e6, 0.5, a, True, h))) for h in (1, 0)]
+    [34769, 33131]
+    """
+    most = makers_allowed_stress(ball, hiwin_rated) * area_m2
+    return np.minimum(allowed_buckling_load(critical_load_n, safety_factor), most)
+
+
 @formula("F = SF x F_cr", "lead-screw practice (0.5)")
 def allowed_buckling_load(critical_load_n: float, safety_factor: float) -> float:
     """Allowed compressive load = safety factor x F_cr [N] (default factor 0.5).
