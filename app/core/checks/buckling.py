@@ -19,6 +19,7 @@ from app.core.checks.base import (
     ScrewSpec,
     at_least,
     load_input,
+    makers_stress,
     sentence,
     stiffer_fixity,
 )
@@ -134,7 +135,7 @@ class ColumnBuckling(Check):
             _yield(s),
         )
         # the root whose area carries the thrust at the makers' allowed stress (THK's P2)
-        d_min = max(d_column, (4.0 * force_n / (math.pi * _makers_stress(s))) ** 0.5)
+        d_min = max(d_column, (4.0 * force_n / (math.pi * makers_stress(s))) ** 0.5)
         length_m = _max_length(app, s, r, force_n)
         values: dict[str, Amount | str] = {
             "length": Amount(length_m, "length", "down"),
@@ -191,19 +192,10 @@ def _modulus(s: ScrewSpec) -> float:
     return float(buckling.makers_column_modulus(s.youngs_modulus_pa, ball, hiwin))
 
 
-def _makers_stress(s: ScrewSpec) -> float:
-    """The makers' allowed root stress of ``s`` [Pa] (``buckling.makers_allowed_stress``:
-    THK's P2 over the root area, 147.7 MPa, for a ball screw whose family declares no
-    buckling rule; else inf)."""
-    ball = s.screw_type == "ball"
-    hiwin = s.buckling_rule == buckling.HIWIN_BUCKLING_RULE
-    return float(buckling.makers_allowed_stress(ball, hiwin))
-
-
 def _most_n(s: ScrewSpec, root_diameter_m: float) -> float:
     """The makers' allowed column load of ``s`` at a root diameter [N]: THK's
-    P2 = 116 d1^2 [N, mm] where ``_makers_stress`` is, else inf."""
-    return _makers_stress(s) * buckling.root_area(root_diameter_m)
+    P2 = 116 d1^2 [N, mm] where ``makers_stress`` is, else inf."""
+    return makers_stress(s) * buckling.root_area(root_diameter_m)
 
 
 def _yield(s: ScrewSpec) -> float:

@@ -16,6 +16,7 @@ from app.core.checks.base import (
     ScrewSpec,
     at_least,
     load_input,
+    makers_stress,
     where_given,
 )
 from app.core.formulas import buckling
@@ -69,7 +70,7 @@ class RootStress(Check):
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
-        capped = _makers(s) < app.buckling_safety_factor * (s.yield_strength_pa or 0.0)
+        capped = makers_stress(s) < app.buckling_safety_factor * (s.yield_strength_pa or 0.0)
         limit = "THK's P2 = 116 d1^2 N, below {sf} x yield {s_y}" if capped else ""
         return Phrase(
             "{stress} at the root (von Mises of {sigma} axial under the peak thrust and "
@@ -107,15 +108,7 @@ class RootStress(Check):
         return load_input(app, allowed_n)
 
 
-def _makers(s: ScrewSpec) -> float:
-    """The makers' allowed root stress of ``s`` [Pa] (``buckling.makers_allowed_stress``:
-    THK's 147.7 MPa for a ball screw whose family declares no buckling rule, else inf)."""
-    ball = s.screw_type == "ball"
-    hiwin = s.buckling_rule == buckling.HIWIN_BUCKLING_RULE
-    return float(buckling.makers_allowed_stress(ball, hiwin))
-
-
 def _allowed(app: Application, s: ScrewSpec) -> float:
     """Allowed root stress [Pa]: the buckling factor times the yield strength, at most the
     makers' (``_makers``)."""
-    return min(app.buckling_safety_factor * (s.yield_strength_pa or 0.0), _makers(s))
+    return min(app.buckling_safety_factor * (s.yield_strength_pa or 0.0), makers_stress(s))
