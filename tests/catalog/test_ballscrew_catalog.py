@@ -17,7 +17,7 @@ from app.catalog.ball import NOT_APPLICABLE
 from app.catalog.errors import CatalogError
 from app.core.evaluate import evaluate
 from app.core.formulas.critical_speed import ball_screw_critical_speed_rpm, critical_speed_rpm
-from app.core.model import Application
+from app.core.model import Application, ScrewSpec
 from app.core.units import from_si, to_si
 
 BALL_FAMILIES = {"HIWIN-ROLLED", "HIWIN-ROLLED-RSIT", "HIWIN-GROUND"}
@@ -256,6 +256,21 @@ def test_every_ball_screw_has_an_assumed_operating_range(
         assert prov.kind == "assumed" and "80 C" in prov.source, screw.id
 
 
+def _with_rule(text: str, key: str, rule: str | None) -> str:
+    """A family's ``text`` with its ``key`` set to the maker's ``rule``, as a user's file
+    gives it (None: left out)."""
+    if rule is None:
+        return text
+    line = f'{key} = {{ value = "{rule}", provenance = "user", source = "test" }}'
+    return text.replace("[ballscrew.columns]", line + "\n[ballscrew.columns]")
+
+
+def _user_screw(tmp_path: Path, text: str) -> ScrewSpec:
+    """The nut of the user's family ``text``, loaded as a catalog directory of its own."""
+    (tmp_path / "ballscrew-mine.toml").write_text(text)
+    return load_catalog([tmp_path]).by_id["MY16-05"]
+
+
 @pytest.mark.parametrize("rule", [None, "HIWIN F 3.27"])
 def test_a_ball_screw_families_critical_speed_rule(tmp_path: Path, rule: str | None) -> None:
     """A family that names its maker's rule (HIWIN F 3.27) is rated by it and the beam,
@@ -263,13 +278,8 @@ def test_a_ball_screw_families_critical_speed_rule(tmp_path: Path, rule: str | N
     shown with its provenance. One that names none is held to the lowest published rule:
     also at most the makers' C_s 1.47 times simple-simple (Rockford, Thomson, Roton),
     5.6 % less. A rule the app does not know is refused, naming the field."""
-    value = 'provenance = "user", source = "test"'
-    text = _family_text()
-    if rule is not None:
-        line = f'critical_speed_rule = {{ value = "{rule}", {value} }}'
-        text = text.replace("[ballscrew.columns]", line + "\n[ballscrew.columns]")
-    (tmp_path / "ballscrew-mine.toml").write_text(text)
-    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    text = _with_rule(_family_text(), "critical_speed_rule", rule)
+    screw = _user_screw(tmp_path, text)
     app = Application(load_n=100.0, speed_m_s=0.05, length_m=1.0, end_fixity="fixed-simple")
     allowed = evaluate(app, screw).critical_speed.allowed_rpm
     rated = allowed / app.critical_speed_safety_factor
@@ -304,13 +314,8 @@ def test_a_ball_screw_families_buckling_rule(tmp_path: Path, rule: str | None) -
     is then within THK's permissible P1 = 10 x 12.9^4 / 1000^2 x 10^4 = 2,769 N (General
     Catalog, Ball Screw, A15-30, formula 5, 0.5 of Euler built in), where half the
     column's own, 2,777 N, was 0.29 % above it. A rule the app does not know is refused."""
-    value = 'provenance = "user", source = "test"'
-    text = _family_text()
-    if rule is not None:
-        line = f'buckling_rule = {{ value = "{rule}", {value} }}'
-        text = text.replace("[ballscrew.columns]", line + "\n[ballscrew.columns]")
-    (tmp_path / "ballscrew-mine.toml").write_text(text)
-    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    text = _with_rule(_family_text(), "buckling_rule", rule)
+    screw = _user_screw(tmp_path, text)
     app = Application(load_n=100.0, speed_m_s=0.05, length_m=1.0, end_fixity="fixed-simple")
     column = evaluate(app, screw).buckling
     root_mm, span_mm = from_si(screw.root_diameter_m, "mm"), 1000.0
@@ -345,13 +350,8 @@ def test_a_ball_screw_families_axial_stress_is_held_to_thks_p2(
     supported: 0.5 x Johnson = 0.5 x 130.7 mm^2 x 308.6 MPa = 20,170 N) to
     P2 = 116 x 12.9^2 = 19,304 N. One that names HIWIN's rule (HIWIN publishes no such
     cap) keeps 0.5 x 310 MPa and 0.5 x its Johnson load."""
-    value = 'provenance = "user", source = "test"'
-    text = _family_text()
-    if rule is not None:
-        line = f'buckling_rule = {{ value = "{rule}", {value} }}'
-        text = text.replace("[ballscrew.columns]", line + "\n[ballscrew.columns]")
-    (tmp_path / "ballscrew-mine.toml").write_text(text)
-    screw = load_catalog([tmp_path]).by_id["MY16-05"]
+    text = _with_rule(_family_text(), "buckling_rule", rule)
+    screw = _user_screw(tmp_path, text)
     assert screw.yield_strength_pa == pytest.approx(to_si(310.0, "MPa"))
     app = Application(load_n=4000.0, speed_m_s=0.05, length_m=0.05, end_fixity="fixed-simple")
     result = evaluate(app, screw)
