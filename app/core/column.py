@@ -76,7 +76,7 @@ def column_limits(
     )
     # never above the makers' Euler load: HIWIN's F 3.25 where its family declares it
     f_cr = buckling.rated_column_load(
-        f_cr, t.root_second_moment_m4, column_m, app.end_fixity, t.ball, t.hiwin_column
+        f_cr, t.root_second_moment_m4, column_m, app.end_fixity, t.makers_modulus_pa
     )
     root_nm = root_torque(t, peak_n, torques)
     axial = buckling.root_stress(peak_n, t.root_diameter_m, t.root_area_m2)
@@ -87,7 +87,7 @@ def column_limits(
         "critical_load_n": f_cr,
         # never above THK's P2 = 116 d1^2 where a ball screw's family declares no rule
         "allowed_load_n": buckling.rated_allowed_load(
-            f_cr, app.buckling_safety_factor, t.root_area_m2, t.ball, t.hiwin_column
+            f_cr, app.buckling_safety_factor, t.root_area_m2, t.makers_stress_pa
         ),
         "slenderness": s,
         "column_length_m": filled(len(t), column_m),

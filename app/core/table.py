@@ -96,6 +96,15 @@ def _equals(screws: Sequence[ScrewSpec], name: str, value: str) -> Mask:
     return np.fromiter(same, dtype=bool, count=len(screws))
 
 
+def _makers_column(ball: Mask, hiwin: Mask) -> dict[str, Array]:
+    """The makers' column rules of each screw, ball screws ``ball`` of which ``hiwin``
+    are rated by HIWIN's buckling rule: ``makers_modulus_pa`` and ``makers_stress_pa``."""
+    return {
+        "makers_modulus_pa": buckling.makers_column_modulus(np.inf, ball, hiwin),
+        "makers_stress_pa": buckling.makers_allowed_stress(ball, hiwin),
+    }
+
+
 def _pitch_diameter(od: Array, rd: Array, d2: Array, d0: Array) -> Array:
     """The diameter the thread's lead angle and friction are taken at [m]: a standard
     thread's pitch diameter (ISO 2904 d2 = d - 0.5 P), a ball screw's pitch circle
@@ -263,9 +272,11 @@ class CandidateTable:
     #: a ball screw whose maker rates its critical speed by HIWIN's rule, as its family
     #: declares (``critical_speed.rated_critical_speed_rpm``)
     hiwin_speed: Mask
-    #: a ball screw whose maker rates its column by HIWIN's buckling rule, as its family
-    #: declares (``buckling.rated_column_load``)
-    hiwin_column: Mask
+    #: a ball screw's makers' column rules (its family's, else the lowest published):
+    #: the Young's modulus their Euler load is taken with (``makers_column_modulus``) and
+    #: the root stress they allow (``makers_allowed_stress``) [Pa]; inf: none (a leadscrew)
+    makers_modulus_pa: Array
+    makers_stress_pa: Array
     dynamic_load_n: Array
     static_load_n: Array
     dn_limit_mm_rpm: Array
@@ -392,7 +403,7 @@ class CandidateTable:
             traverse_extrapolated=extrapolated,
             ball=ball,
             hiwin_speed=_equals(screws, "critical_speed_rule", critical_speed.HIWIN_RULE),
-            hiwin_column=_equals(screws, "buckling_rule", buckling.HIWIN_BUCKLING_RULE),
+            **_makers_column(ball, _equals(screws, "buckling_rule", buckling.HIWIN_BUCKLING_RULE)),
             **columns,
             **screw_terms(columns),
         )

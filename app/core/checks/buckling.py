@@ -3,8 +3,6 @@ Euler when the screw is slender, Johnson's parabola when it is short."""
 
 import math
 
-import numpy as np
-
 from app.core.checks.base import (
     MARGIN_NOTE,
     Application,
@@ -77,12 +75,12 @@ class ColumnBuckling(Check):
             "E": t.youngs_modulus_pa,
             # a ball screw's maker's column modulus (inf: a leadscrew), which rates the
             # column no higher than its maker's Euler load
-            "E_m": buckling.makers_column_modulus(np.inf, t.ball, t.hiwin_column),
+            "E_m": t.makers_modulus_pa,
             "A": buckling.root_area(t.root_diameter_m),
             "s": buckling.slenderness(t.root_diameter_m, column_length(app), app.end_fixity),
             "S_y": t.yield_strength_pa,
             # the makers' allowed root stress (inf: none published), THK's P2 over A
-            "sigma_m": buckling.makers_allowed_stress(t.ball, t.hiwin_column),
+            "sigma_m": t.makers_stress_pa,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:

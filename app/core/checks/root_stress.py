@@ -51,8 +51,7 @@ class RootStress(Check):
     capacity_sources = ("yield_strength",)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        makers = buckling.makers_allowed_stress(t.ball, t.hiwin_column)
-        allowed = np.minimum(app.buckling_safety_factor * t.yield_strength_pa, makers)
+        allowed = np.minimum(app.buckling_safety_factor * t.yield_strength_pa, t.makers_stress_pa)
         return Measure(where_given(allowed), q.column.root_stress_pa, allowed)
 
     def symbols(
@@ -65,7 +64,7 @@ class RootStress(Check):
             "SF": app.buckling_safety_factor,
             "S_y": t.yield_strength_pa,
             # the makers' allowed root stress (inf: none published)
-            "sigma_m": buckling.makers_allowed_stress(t.ball, t.hiwin_column),
+            "sigma_m": t.makers_stress_pa,
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:

@@ -89,13 +89,13 @@ def rated_column_load(
     second_moment_m4: Any,
     length_m: float,
     end_fixity: str,
-    ball: Any,
-    hiwin_rated: Any = False,
+    makers_modulus_pa: Any,
 ) -> Any:
     """A screw's critical column load as rated [N], never above its makers': the column's
-    (``column_critical_load``) and, for a ball screw, at most its maker's Euler load, the
-    Euler load with ``makers_column_modulus`` (HIWIN's F_k = 4.072e5 f_k d_k^4 / l_s^2
-    where ``hiwin_rated``, else Rockford's and Thomson's 14.03e6 C d^4 / L^2 [lb, in]).
+    (``column_critical_load``) and at most the Euler load with its makers' modulus
+    ``makers_modulus_pa`` (``makers_column_modulus``: a ball screw's HIWIN's F_k =
+    4.072e5 f_k d_k^4 / l_s^2 where its family declares that rule, else Rockford's and
+    Thomson's 14.03e6 C d^4 / L^2 [lb, in]; inf, no cap, for a leadscrew).
     second_moment_m4: I [m^4]; length_m: L [m]; end_fixity: a key of END_FIXITY_K.
 
     HIWIN R20-05 (d_k 16.9 mm) over 1000 mm, fixed-supported: HIWIN's F_k = 4.072e5 x 0.5
@@ -106,13 +106,12 @@ def rated_column_load(
     >>> round(float(euler_critical_load(HIWIN_COLUMN_MODULUS_PA, i, 1.0, "fixed-simple")))
     16608
     >>> col = euler_critical_load(207e9, i, 1.0, "fixed-simple")
-    >>> [round(float(rated_column_load(col, i, 1.0, "fixed-simple", True, h))) for h in (1, 0)]
+    >>> moduli = [makers_column_modulus(np.inf, True, h) for h in (True, False)]
+    >>> [round(float(rated_column_load(col, i, 1.0, "fixed-simple", e))) for e in moduli]
     [16361, 15782]
     """
-    modulus = makers_column_modulus(np.inf, ball, hiwin_rated)
-    with np.errstate(invalid="ignore"):
-        maker = euler_critical_load(modulus, second_moment_m4, length_m, end_fixity)
-    return np.where(ball, np.minimum(column_load_n, maker), column_load_n)
+    maker = euler_critical_load(makers_modulus_pa, second_moment_m4, length_m, end_fixity)
+    return np.minimum(column_load_n, maker)
 
 
 #: THK's permissible tensile/compressive load of a ball screw shaft, P2 = 116 d1^2 [N, d1
@@ -143,22 +142,24 @@ def makers_allowed_stress(ball: Any, hiwin_rated: Any = False) -> Any:
     "family declares no buckling rule",
 )
 def rated_allowed_load(
-    critical_load_n: Any, safety_factor: float, area_m2: Any, ball: Any, hiwin_rated: Any = False
+    critical_load_n: Any, safety_factor: float, area_m2: Any, makers_stress_pa: Any
 ) -> Any:
     """A screw's allowed column load [N], never above its makers': the buckling factor
-    times the critical load (``allowed_buckling_load``) and, for a ball screw whose family
-    declares no buckling rule, at most THK's permissible P2 = 116 d1^2 [N, mm], the
-    stress ``makers_allowed_stress`` (147.7 MPa) on the root area ``area_m2`` [m^2].
+    times the critical load (``allowed_buckling_load``) and at most its makers' allowed
+    stress ``makers_stress_pa`` (``makers_allowed_stress``: for a ball screw whose family
+    declares no buckling rule THK's permissible P2 = 116 d1^2 [N, mm], 147.7 MPa; inf,
+    no cap, otherwise) on the root area ``area_m2`` [m^2].
     critical_load_n: F_cr [N]; safety_factor: SF [-].
 
     HIWIN R20-05 (d1 16.9 mm) as a short column: 0.5 x A x 310 MPa = 34,769 N; THK's
     P2 = 116 x 16.9^2 = 33,131 N:
 
     >>> a = root_area(0.0169)
-    >>> [round(float(rated_allowed_load(a * 310e6, 0.5, a, True, h))) for h in (1, 0)]
+    >>> stresses = [makers_allowed_stress(True, h) for h in (True, False)]
+    >>> [round(float(rated_allowed_load(a * 310e6, 0.5, a, s))) for s in stresses]
     [34769, 33131]
     """
-    most = makers_allowed_stress(ball, hiwin_rated) * area_m2
+    most = makers_stress_pa * area_m2
     return np.minimum(allowed_buckling_load(critical_load_n, safety_factor), most)
 
 
