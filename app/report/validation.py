@@ -8,9 +8,7 @@ ratio within ``TOLERANCE``: the page and the test cannot drift apart.
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
-
-import numpy as np
+from dataclasses import dataclass
 
 from app.contract.units import from_si, to_si
 from app.core.formulas import (
@@ -27,9 +25,7 @@ from app.core.formulas import (
     wear,
 )
 from app.core.formulas import critical_speed as cs
-from app.core.model import Application, Move, ScrewSpec
-from app.core.quantities import Quantities, operating_point
-from app.core.table import CandidateTable
+from app.report import maker_examples as maker
 from app.report import thk_example as thk
 from app.report import thread_examples as threads
 from app.report import trapezoid_table as tr
@@ -91,61 +87,6 @@ def _euler(e_pa: float, d_or_i: float, length_m: float, fixity: str, round_d: bo
     return buckling.euler_critical_load(e_pa, i_m4, length_m, fixity)
 
 
-#: The maker's ball-screw example: 10 kg table, mu 0.1, ball screw 20 mm x lead 20 mm (0.5 m,
-#: steel 7.9 t/m^3, efficiency 0.9 as stated), 0.3 m in 0.1 / 0.8 / 0.1 s then stopped, a
-#: 2 s cycle; coupling 10e-6 and 0.2 kW motor 0.14e-4 kg m^2 (pp. 25-26 of the manual).
-WEIHONG_MASS_KG, WEIHONG_MU, WEIHONG_G = 10.0, 0.1, 9.8
-WEIHONG_LEAD_M, WEIHONG_SCREW_D_M, WEIHONG_SCREW_L_M = 0.02, 0.02, 0.5
-WEIHONG_J_COUPLING, WEIHONG_J_MOTOR = 10e-6, 0.14e-4
-
-
-def weihong_screw() -> ScrewSpec:
-    """The example's ball screw as a screw of the app's: a square thread on a 20 mm pitch
-    diameter, lead 20 mm, whose friction gives the stated efficiency 0.9
-    (``efficiency.friction_for_efficiency``), inertia of a solid 20 mm steel rod at the
-    maker's density 7.9 t/m^3 (the maker's W_B D^2 / 8)."""
-    tan_l = geometry.tan_lead_angle(WEIHONG_LEAD_M, WEIHONG_SCREW_D_M)
-    mu = efficiency.friction_for_efficiency(tan_l, 0.9, threads.SQUARE)
-    return ScrewSpec(
-        id="weihong-ball-screw", series_id="example", series_name="example",
-        anti_backlash=False, coated=False, outer_diameter_m=WEIHONG_SCREW_D_M,
-        root_diameter_m=WEIHONG_SCREW_D_M, lead_m=WEIHONG_LEAD_M, thread_half_angle_rad=0.0,
-        friction_static=mu, friction_dynamic=mu, youngs_modulus_pa=STEEL_E,
-        density_kg_m3=7900.0, screw_expansion_per_k=1.2e-5,
-        inertia_kg_m2_per_m=torque.solid_rod_inertia_per_length(7900.0, WEIHONG_SCREW_D_M),
-    )  # fmt: skip
-
-
-def weihong_application(mass_as_inertia: bool = True) -> Application:
-    """The example's cycle as the app's: 0.3 m out and 0.3 m back, each at 1/3 m/s with
-    0.1 s ramps (10/3 m/s^2) and the 1 s stop after it (the maker's 2 s cycle is one move
-    and its stop; both halves are alike, so the RMS over the two is the RMS over one). The
-    guide friction mu W g = 0.1 x 9.8 x 10 = 9.8 N opposes the motion both ways. The maker
-    reflects the table to the motor as W (lead / 2 pi)^2, outside the screw's efficiency:
-    ``mass_as_inertia`` does the same (the 10 kg joins the rotor's inertia), else the app's
-    own model carries m a through the thread."""
-    speed, ramp = 0.3 / 0.9, 0.3 / 0.9 / 0.1
-    mass = 0.0 if mass_as_inertia else WEIHONG_MASS_KG
-    reflected = torque.reflected_mass_inertia(WEIHONG_MASS_KG - mass, WEIHONG_LEAD_M)
-    friction = WEIHONG_MU * WEIHONG_G * WEIHONG_MASS_KG
-    out = Move(0.3, speed, ramp, ramp, 1.0, mass, friction, "opposes")
-    return Application(
-        load_n=friction,
-        speed_m_s=speed,
-        length_m=WEIHONG_SCREW_L_M,
-        moves=(out, replace(out, distance_m=-0.3)),
-        motor_inertia_kg_m2=WEIHONG_J_MOTOR + WEIHONG_J_COUPLING + reflected,
-    )
-
-
-def weihong_cycle(mass_as_inertia: bool = True) -> Quantities[np.ndarray]:
-    """The example's operating point, by the selection's own path (``operating_point``:
-    ``motion.cycle``, ``segments.segments``, ``segments.rms``)."""
-    table = CandidateTable.build([weihong_screw()])
-    return operating_point(weihong_application(mass_as_inertia), table)
-
-
-#: one kgf cm [N m]: FANUC prints its torques in N m and in kgf cm.
 KGF_CM = to_si(1.0, "kgf") * to_si(10.0, "mm")
 FANUC_ALPHA = (
     "FANUC AC Servo Motor α series Descriptions, B-65142E/04, 4. Selecting a Motor, "
@@ -277,25 +218,6 @@ MISUMI = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 2"
 MISUMI_LIFE = "MISUMI Economy Series e-catalog 2025, Selection of Ball Screws 3, p. 1678"
 NOOK = "Nook Industries, Acme and lead screw assembly application selection example"
 ROTON = "Roton, Application Engineering: Speed (https://www.roton.com/resources/application-engineering/speed/)"
-WEIHONG = (
-    "Weihong, WISE servo (WSDV) user manual, 3.5.2.1 Example of Motor Selection for Ball "
-    "Screw System, pp. 25–27 (https://www.easymanua.ls/weihong/wise-wsdv-6r820psb/manual?p=31, "
-    "https://manualshive.com/ru/manual/weihong/wise-wsdv-11020psb/952565?page=32, "
-    "https://www.easymanua.ls/weihong/wise-wsdv-2r820psb/manual?p=33)"
-)
-WEIHONG_INPUTS = (
-    "10 kg, μ 0.1; ball screw 20 mm, lead 20 mm, 0.5 m, η 0.9; 0.3 m in 0.1 / 0.8 / 0.1 s, "
-    "cycle 2 s; rotor 0.14e-4, coupling 10e-6 kg m²"
-)
-WEIHONG_NOTE = (
-    "Through the selection's own cycle (out and back, each move and its 1 s stop). As the "
-    "maker does, the table's 10 kg enters as the inertia m (lead / 2π)² at the motor, "
-    "outside the screw's efficiency; the app's own model, m a through the thread at 0.9, "
-    "gives about 2 % more RMS and 5 % more peak. The guide friction is the maker's "
-    "μ W g = 0.1 × 9.8 × 10 N; the screw's efficiency 0.9 is the maker's, given to a "
-    "square thread by its friction (μ 0.032); the screw's inertia a solid 20 mm rod at "
-    "the maker's 7.9 t/m³."
-)
 
 # fmt: off
 EXAMPLES: tuple[Example, ...] = (
@@ -385,10 +307,10 @@ EXAMPLES: tuple[Example, ...] = (
     Example("Sliding wear life", "SKF, composite plain bearings, calculation example",
             "PTFE composite, c 1.17, KM 480, p v 0.025 applied", 22500.0, "h",
             _skf_composite_life_h),
-    Example("Peak torque of a cycle", WEIHONG, WEIHONG_INPUTS, 0.231, "N m",
-            lambda: float(weihong_cycle().motor.motor_peak_nm[0]), WEIHONG_NOTE),
-    Example("RMS torque of a cycle", WEIHONG, WEIHONG_INPUTS, 0.067, "N m",
-            lambda: float(weihong_cycle().motor.motor_rms_nm[0]), WEIHONG_NOTE),
+    Example("Peak torque of a cycle", maker.WEIHONG, maker.WEIHONG_INPUTS, 0.231, "N m",
+            lambda: float(maker.weihong_cycle().motor.motor_peak_nm[0]), maker.WEIHONG_NOTE),
+    Example("RMS torque of a cycle", maker.WEIHONG, maker.WEIHONG_INPUTS, 0.067, "N m",
+            lambda: float(maker.weihong_cycle().motor.motor_rms_nm[0]), maker.WEIHONG_NOTE),
     Example("Axial load, acceleration (Fa1)", thk.SOURCE, thk.INPUTS, 550.0, "N",
             lambda: thk.axial_load(1), thk.NOTE),
     Example("Axial load, deceleration (Fa3)", thk.SOURCE, thk.INPUTS, -516.0, "N",
@@ -484,5 +406,21 @@ EXAMPLES: tuple[Example, ...] = (
     _tr("Tr 14 x 6 (P3)", 0.1),
     _tr("Tr 20 x 20 (P5)", 0.1),
     _tr("Tr 20 x 20 (P5)", 0.2),
+    Example("Critical speed, a ball screw", f"{maker.ROCKFORD}, step 6", maker.ROCKFORD_INPUTS,
+            687.0, "in/min", maker.rockford_critical_speed, maker.ROCKFORD_NOTE),
+    Example("Column load, a ball screw", f"{maker.ROCKFORD}, step 9", maker.ROCKFORD_INPUTS,
+            6537.0, "lb", maker.rockford_column_lbf, maker.ROCKFORD_NOTE),
+    Example("Ball screw inertia (J_B)", maker.OMRON, maker.OMRON_INPUTS, 1.5e-4, "kg m²",
+            maker.omron_screw_inertia, maker.OMRON_NOTE),
+    Example("Load inertia (J_L)", maker.OMRON, maker.OMRON_INPUTS, 1.63e-4, "kg m²",
+            maker.omron_load_inertia, maker.OMRON_NOTE),
+    Example("Load torque (T_L)", maker.OMRON, maker.OMRON_INPUTS, 7.8e-3, "N m",
+            maker.omron_load_torque, maker.OMRON_NOTE),
+    Example("Acceleration torque (T_A)", maker.OMRON, maker.OMRON_INPUTS, 0.165, "N m",
+            maker.omron_acceleration_torque, maker.OMRON_NOTE),
+    Example("Peak torque of a cycle (T_1)", maker.OMRON, maker.OMRON_INPUTS, 0.173, "N m",
+            maker.omron_peak_torque, maker.OMRON_NOTE),
+    Example("RMS torque of a cycle (T_rms)", maker.OMRON, maker.OMRON_INPUTS, 0.0828, "N m",
+            maker.omron_rms_torque, maker.OMRON_NOTE),
 )
 # fmt: on

@@ -22,32 +22,26 @@ T_A = 0.165 N m, T_1 = 0.173 N m, T_rms = 0.0828 N m.
 """
 
 import math
+from typing import Any
 
 import pytest
 
-from app.core.formulas import buckling, critical_speed, geometry, life, profile, torque
+from app.core.formulas import buckling, critical_speed, geometry, life, torque
 from app.core.model import Application, Move, ScrewSpec
-from app.core.quantities import operating_point
+from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
 from app.core.units import from_si, to_si
+from app.report import maker_examples as maker
 from tests.core.conftest import STEEL_E, STEEL_RHO
 
 WITHIN = 0.01
 
-#: Rockford's screw: root 0.84 in, lead 0.250 in, 41.347 in between bearings.
-ROOT_M = to_si(0.84, "in")
-LEAD_M = to_si(0.250, "in")
-SPAN_M = to_si(41.347, "in")
+ROOT_M, LEAD_M, SPAN_M = maker.ROOT_M, maker.LEAD_M, maker.SPAN_M
 THRUST_N = to_si(2500 * 0.20, "lbf")
 #: Rockford's factor of safety on the critical speed and on the column load.
-ROCKFORD_FS = 0.8
+ROCKFORD_FS = maker.FACTOR
 #: Rockford's column constant 14.03e6 [lb in^2 / in^4] is pi^3 E / 64: its steel's E.
 ROCKFORD_E_PA = to_si(14.03e6 * 64.0 / math.pi**3, "psi")
-
-
-def _in_per_min(rpm: float) -> float:
-    """A screw speed [rpm] as Rockford's travel rate on its 0.250 in lead [in/min]."""
-    return from_si(geometry.linear_speed(rpm, LEAD_M), "in/s") * 60.0
 
 
 def test_rockford_required_life_and_thrust() -> None:
@@ -68,7 +62,7 @@ def test_rockford_critical_speed_with_the_leadscrew_makers_factor() -> None:
         ROOT_M, SPAN_M, STEEL_E, STEEL_RHO, "fixed-simple", False
     )
     allowed = critical_speed.allowed_speed_rpm(float(rated), ROCKFORD_FS)
-    assert _in_per_min(allowed) == pytest.approx(687.0, rel=WITHIN)
+    assert maker.in_per_min(allowed) == pytest.approx(687.0, rel=WITHIN)
 
 
 def test_rockford_critical_speed_of_a_ball_screw() -> None:
@@ -77,14 +71,11 @@ def test_rockford_critical_speed_of_a_ball_screw() -> None:
     by HIWIN's rule (a family that declares it, as the built-in HIWIN ones do) it would be
     HIWIN's mounting factor, 0.692 / 0.446 = 1.55 times simple-simple: 3628 rpm, 725.5
     in/min at 0.8, 5.6 % more, which HIWIN allows its own screws and Rockford does not."""
+    assert maker.rockford_critical_speed() == pytest.approx(687.0, rel=WITHIN)
     args = (ROOT_M, SPAN_M, STEEL_E, STEEL_RHO, "fixed-simple", True)
-    rated = critical_speed.rated_critical_speed_rpm(*args)
-    allowed = critical_speed.allowed_speed_rpm(float(rated), ROCKFORD_FS)
-    assert _in_per_min(allowed) == pytest.approx(687.0, rel=WITHIN)
     hiwin = critical_speed.rated_critical_speed_rpm(*args, hiwin_rated=True)
     assert float(hiwin) == pytest.approx(3628.0, rel=WITHIN)
-    by_hiwin = critical_speed.allowed_speed_rpm(float(hiwin), ROCKFORD_FS)
-    assert _in_per_min(by_hiwin) == pytest.approx(725.5, rel=WITHIN)
+    assert maker.rockford_critical_speed(hiwin_rated=True) == pytest.approx(725.5, rel=WITHIN)
 
 
 def test_rockford_column_load() -> None:
@@ -110,9 +101,7 @@ def test_rockford_column_load_of_a_ball_screw() -> None:
     lb: HIWIN's F_k, Euler with E = 210.1 GPa, is higher still."""
     i = buckling.second_moment_round(ROOT_M)
     own = buckling.column_critical_load(STEEL_E, ROOT_M, SPAN_M, "fixed-simple", 310e6)
-    lowest = buckling.makers_column_modulus(STEEL_E, True, False)
-    rated = buckling.rated_column_load(own, i, SPAN_M, "fixed-simple", lowest)
-    assert from_si(ROCKFORD_FS * float(rated), "lbf") == pytest.approx(6537.0, rel=WITHIN)
+    assert maker.rockford_column_lbf() == pytest.approx(6537.0, rel=WITHIN)
     by_hiwin = buckling.makers_column_modulus(math.inf, True, True)
     assert float(buckling.rated_column_load(own, i, SPAN_M, "fixed-simple", by_hiwin)) == own
     assert from_si(own, "lbf") == pytest.approx(8431.0, rel=WITHIN)
@@ -127,83 +116,56 @@ def test_rockford_drive_torque() -> None:
     assert from_si(t, "lb in") < 23.0
 
 
-#: Omron's sample: table and work, friction, lead, screw diameter and mass, rotor.
-OMRON_MASS_KG, OMRON_MU, OMRON_G = 5.0, 0.1, 9.8
-OMRON_LEAD_M, OMRON_SCREW_D_M, OMRON_SCREW_KG = 0.010, 0.020, 3.0
-OMRON_J_MOTOR = 1.23e-5
-OMRON_SPEED, OMRON_RAMP_S, OMRON_STROKE_M, OMRON_STOP_S = 0.300, 0.2, 0.360, 0.2
-#: Omron gives the screw's mass, not its length: a 1 m rod of the density that makes it
-#: 3 kg has Omron's J_B = M_B D^2 / 8 (the length cancels).
-OMRON_SCREW_L_M = 1.0
-OMRON_RHO = OMRON_SCREW_KG / (math.pi * OMRON_SCREW_D_M**2 / 4.0 * OMRON_SCREW_L_M)
-
-
-def _omron_screw_inertia() -> float:
-    """Omron's J_B through the core's solid rod [kg m^2]."""
-    per_m = torque.solid_rod_inertia_per_length(OMRON_RHO, OMRON_SCREW_D_M)
-    return torque.screw_inertia(per_m, OMRON_SCREW_L_M)
-
-
 def test_omron_inertias_speed_and_load_torque() -> None:
     """J_B = 3 x 0.02^2 / 8 = 1.5e-4 kg m^2; J_L = J_B + 5 (0.01 / 2 pi)^2 = 1.627e-4
     (printed 1.63e-4); N = 0.3 / 0.01 x 60 = 1800 rpm; T_L = 0.1 x 5 x 9.8 x 0.01 /
     (2 pi) = 7.80e-3 N m at efficiency 1."""
-    j_b = _omron_screw_inertia()
-    assert j_b == pytest.approx(1.5e-4, rel=WITHIN)
-    j_l = j_b + torque.reflected_mass_inertia(OMRON_MASS_KG, OMRON_LEAD_M)
-    assert j_l == pytest.approx(1.63e-4, rel=WITHIN)
-    assert geometry.screw_speed_rpm(OMRON_SPEED, OMRON_LEAD_M) == pytest.approx(1800.0)
-    t_l = torque.load_torque(OMRON_MU * OMRON_MASS_KG * OMRON_G, OMRON_LEAD_M, 1.0)
-    assert t_l == pytest.approx(7.8e-3, rel=WITHIN)
+    assert maker.omron_screw_inertia() == pytest.approx(1.5e-4, rel=WITHIN)
+    assert maker.omron_load_inertia() == pytest.approx(1.63e-4, rel=WITHIN)
+    assert geometry.screw_speed_rpm(maker.SPEED, maker.OMRON_LEAD_M) == pytest.approx(1800.0)
+    assert maker.omron_load_torque() == pytest.approx(7.8e-3, rel=WITHIN)
 
 
 def test_omron_acceleration_peak_and_rms_torques() -> None:
     """T_A = (J_M + J_L) 2 pi N / (60 t_A) = 1.750e-4 x 942.5 = 0.1649 N m (printed 0.165);
     T_1 = T_A + T_L = 0.1727 (0.173); over 0.2 s at T_1, 1.0 s at T_L, 0.2 s at T_A - T_L
     and the 0.2 s stop, T_rms = 0.0828 N m."""
-    j = OMRON_J_MOTOR + _omron_screw_inertia()
-    j += torque.reflected_mass_inertia(OMRON_MASS_KG, OMRON_LEAD_M)
-    alpha = torque.angular_acceleration(OMRON_SPEED / OMRON_RAMP_S, OMRON_LEAD_M)
-    t_a = torque.inertia_torque(j, alpha)
-    t_l = torque.load_torque(OMRON_MU * OMRON_MASS_KG * OMRON_G, OMRON_LEAD_M, 1.0)
-    assert t_a == pytest.approx(0.165, rel=WITHIN)
-    assert t_a + t_l == pytest.approx(0.173, rel=WITHIN)
-    run_s = OMRON_STROKE_M / OMRON_SPEED - OMRON_RAMP_S
-    rms = profile.rms_torque(
-        [t_a + t_l, t_l, t_a - t_l, 0.0], [OMRON_RAMP_S, run_s, OMRON_RAMP_S, OMRON_STOP_S]
-    )
-    assert rms == pytest.approx(0.0828, rel=WITHIN)
-
-
-def _omron_screw() -> ScrewSpec:
-    """Omron's ball screw as a screw of the core's: a square thread without friction
-    (efficiency 1, Omron's no-reducer eta), 20 mm across, lead 10 mm, Omron's inertia."""
-    return ScrewSpec(
-        id="omron-ball-screw", series_id="example", series_name="example",
-        anti_backlash=False, coated=False, outer_diameter_m=OMRON_SCREW_D_M,
-        root_diameter_m=OMRON_SCREW_D_M, lead_m=OMRON_LEAD_M, thread_half_angle_rad=0.0,
-        friction_static=0.0, friction_dynamic=0.0, youngs_modulus_pa=STEEL_E,
-        density_kg_m3=OMRON_RHO, screw_expansion_per_k=1.2e-5,
-        inertia_kg_m2_per_m=torque.solid_rod_inertia_per_length(OMRON_RHO, OMRON_SCREW_D_M),
-    )  # fmt: skip
+    assert maker.omron_acceleration_torque() == pytest.approx(0.165, rel=WITHIN)
+    assert maker.omron_peak_torque() == pytest.approx(0.173, rel=WITHIN)
+    assert maker.omron_rms_torque() == pytest.approx(0.0828, rel=WITHIN)
 
 
 def test_omron_cycle_through_the_operating_point() -> None:
     """The sample as a user types it: 5 kg out 360 mm and back at 300 mm/s with 0.2 s
     ramps and the 0.2 s stop after each, the guide's mu m g opposing the motion. At
     efficiency 1 the app's own model (m a through the thread) is Omron's (m as inertia),
-    so the cycle's peak is T_1 = 0.173 N m and its RMS 0.0828 N m (both halves alike);
-    the app's g, 9.80665, is 0.07 % above Omron's 9.8 on the friction."""
-    accel = OMRON_SPEED / OMRON_RAMP_S
-    friction = OMRON_MU * OMRON_MASS_KG * OMRON_G
-    out = Move(OMRON_STROKE_M, OMRON_SPEED, accel, accel, OMRON_STOP_S, OMRON_MASS_KG,
-               friction, "opposes")  # fmt: skip
-    back = Move(-OMRON_STROKE_M, OMRON_SPEED, accel, accel, OMRON_STOP_S, OMRON_MASS_KG,
-                friction, "opposes")  # fmt: skip
-    app = Application(
-        friction, OMRON_SPEED, OMRON_SCREW_L_M, moves=(out, back),
-        motor_inertia_kg_m2=OMRON_J_MOTOR,
-    )  # fmt: skip
-    motor = operating_point(app, CandidateTable.build([_omron_screw()])).motor
+    so the cycle's peak is T_1 = 0.173 N m and its RMS 0.0828 N m (both halves alike)."""
+    motor = _omron_cycle().motor
     assert float(motor.motor_peak_nm[0]) == pytest.approx(0.173, rel=WITHIN)
     assert float(motor.motor_rms_nm[0]) == pytest.approx(0.0828, rel=WITHIN)
+
+
+def _omron_screw() -> ScrewSpec:
+    """Omron's ball screw as a screw of the core's: a square thread without friction
+    (efficiency 1), 20 mm across, lead 10 mm, Omron's inertia."""
+    return ScrewSpec(
+        id="omron-ball-screw", series_id="example", series_name="example",
+        anti_backlash=False, coated=False, outer_diameter_m=maker.SCREW_D_M,
+        root_diameter_m=maker.SCREW_D_M, lead_m=maker.OMRON_LEAD_M, thread_half_angle_rad=0.0,
+        friction_static=0.0, friction_dynamic=0.0, youngs_modulus_pa=maker.STEEL_E,
+        density_kg_m3=maker.OMRON_RHO, screw_expansion_per_k=1.2e-5,
+        inertia_kg_m2_per_m=torque.solid_rod_inertia_per_length(maker.OMRON_RHO, maker.SCREW_D_M),
+    )  # fmt: skip
+
+
+def _omron_cycle() -> Quantities[Any]:
+    """The sample as a user types it: 5 kg out 360 mm and back at 300 mm/s, 0.2 s ramps
+    and the 0.2 s stop after each, the guide's mu m g opposing the motion."""
+    m = maker
+    accel, friction = m.SPEED / m.RAMP_S, m.MU * m.MASS_KG * m.G
+    out = Move(m.STROKE_M, m.SPEED, accel, accel, m.STOP_S, m.MASS_KG, friction, "opposes")
+    back = Move(-m.STROKE_M, m.SPEED, accel, accel, m.STOP_S, m.MASS_KG, friction, "opposes")
+    app = Application(
+        friction, m.SPEED, m.SCREW_L_M, moves=(out, back), motor_inertia_kg_m2=m.J_MOTOR
+    )
+    return operating_point(app, CandidateTable.build([_omron_screw()]))
