@@ -95,8 +95,6 @@ class CatalogIndex:
     variants: Variants | None
     #: each candidate's row of ``table``, by id
     positions: Mapping[str, int]
-    #: the rows of each size and nut, shortest lead first
-    sizes: Mapping[SizeKey, NDArray[np.intp]]
     eligible_rows: EligibleCache = field(compare=False, repr=False)
 
     @classmethod
@@ -111,9 +109,14 @@ class CatalogIndex:
             table=table,
             variants=variants,
             positions=MappingProxyType({s.id: i for i, s in enumerate(table.screws)}),
-            sizes=table.reach.rows,
             eligible_rows=EligibleCache(ELIGIBLE_KEPT),
         )
+
+    @property
+    def sizes(self) -> Mapping[SizeKey, NDArray[np.intp]]:
+        """The rows of each size and nut, shortest lead first: those its catalog's reach
+        was read from (``Reach.rows``)."""
+        return self.table.reach.rows
 
     def eligible(self, app: Application) -> Eligible:
         """The candidates eligible for ``app`` (``screening.eligible_mask``), kept per

@@ -53,7 +53,7 @@ class Reach:
     made in, ascending, and the families and nut materials it holds (None: any).
 
     ``rows`` are the rows of each size and nut in the catalog's own table (``size_rows``),
-    which its leads are read from and its index keeps (``CatalogIndex.sizes``); a subset of
+    which its leads are read from and its index reads (``CatalogIndex.sizes``); a subset of
     the table (``take``) keeps its catalog's reach, rows included."""
 
     max_lead_m: float = math.inf

@@ -109,5 +109,5 @@ class RootStress(Check):
 
 def _allowed(app: Application, s: ScrewSpec) -> float:
     """Allowed root stress [Pa]: the buckling factor times the yield strength, at most the
-    makers' (``_makers``)."""
+    makers' (``makers_stress``)."""
     return min(app.buckling_safety_factor * (s.yield_strength_pa or 0.0), makers_stress(s))
