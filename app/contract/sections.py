@@ -171,6 +171,13 @@ class BucklingOut(BaseModel):
 
 
 class PVOut(BaseModel):
+    judged_thrust_n: Annotated[float, From("force_n", "force")] = Field(
+        description="The thrust the PV is judged at: the peak thrust at the top speed; in a "
+        "cycle of moves, that of the move whose thrust times speed is largest."
+    )
+    judged_speed_mm_s: Annotated[float, From("speed_m_s", "speed")] = Field(
+        description="The linear speed the PV is judged at, with judged_thrust_n."
+    )
     value_mpa_m_s: Annotated[float, From("value_pa_m_s", "pv")]
     limit_mpa_m_s: Annotated[float | None, From("limit_pa_m_s", "pv")]
     pressure_mpa: Annotated[float, From("pressure_pa", "pressure")]

@@ -383,6 +383,11 @@ class Buckling:
 
 @dataclass(frozen=True, slots=True)
 class PV:
+    """The nut's PV at the thrust and linear speed it is judged at
+    (``quantities.pv_point``), against its permissible PV."""
+
+    force_n: float
+    speed_m_s: float
     value_pa_m_s: float
     limit_pa_m_s: float | None
     pressure_pa: float

@@ -21,6 +21,7 @@ from app.core.batch import Batch, CheckResult, Numbers
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.back_driving import rule_note
 from app.core.checks.base import Check
+from app.core.formulas import geometry
 from app.core.model import (
     PV,
     RMS_ZONE,
@@ -345,6 +346,8 @@ class Candidate:
         if s.screw_type == "ball" or (limit is None and s.pitch_m is not None):
             return None
         return PV(
+            force_n=q.nut.pv_force_n,
+            speed_m_s=geometry.linear_speed(q.nut.pv_rpm, s.lead_m),
             value_pa_m_s=q.nut.pv_pa_m_s,
             limit_pa_m_s=None if limit is None else q.nut.pv_limit_pa_m_s,
             pressure_pa=q.nut.pressure_pa,

@@ -23,15 +23,11 @@ PV_SPAN = 10.0
 def judged_point(c: CandidateOut) -> tuple[float, float] | None:
     """The linear speed [mm/s] and thrust [N] the PV check judges ``c``'s nut at (the
     peak thrust at the top speed; in a cycle of moves, the move whose product of the two
-    is largest: ``quantities.pv_point``), read from its PV numbers: at that speed the
-    PV-limited load ``max_load_n`` is the thrust over the PV's share of its limit, and
-    at that thrust the PV-limited speed ``max_speed_mm_s`` is the speed over the same
-    share. None without a PV limit."""
+    is largest: ``quantities.pv_point``). None without a PV limit."""
     pv = c.pv
-    if pv is None or not pv.limit_mpa_m_s or pv.max_load_n is None or pv.max_speed_mm_s is None:
+    if pv is None or not pv.limit_mpa_m_s:
         return None
-    share = pv.value_mpa_m_s / pv.limit_mpa_m_s
-    return pv.max_speed_mm_s * share, pv.max_load_n * share
+    return pv.judged_speed_mm_s, pv.judged_thrust_n
 
 
 def pv_figure(

@@ -159,6 +159,9 @@ def test_the_pv_of_a_cycle_is_each_moves_thrust_at_its_own_speed(client: TestCli
     pv = check(candidate, "pv")
     assert pv["passed"] and pv["utilization"] == pytest.approx(0.07516 / 0.105, rel=1e-3)
     assert "21 N at 900 rpm" in pv["message"]
+    # the point judged is reported: the out move's 21 N at its own 150 mm/s
+    assert candidate["pv"]["judged_thrust_n"] == pytest.approx(21.0)
+    assert candidate["pv"]["judged_speed_mm_s"] == pytest.approx(150.0)
 
 
 def test_a_cycle_of_moves_is_offered_no_change_of_an_input_its_moves_replace(
