@@ -463,7 +463,12 @@ def _is_pure(name: str) -> bool:
 
 
 def _scanned_files() -> dict[Path, str]:
-    files = (path for folder in SCANNED for path in (ROOT / folder).rglob("*") if path.is_file())
+    files = (
+        path
+        for folder in SCANNED
+        for path in (ROOT / folder).rglob("*")
+        if path.is_file() and "__pycache__" not in path.parts
+    )
     return {
         path: path.read_text(encoding="utf-8", errors="ignore")
         for path in files
