@@ -4,6 +4,7 @@ fix names (utilisation at most 1 / 1.05), a stiffer mounting is proposed only wh
 that margin, the length it brackets is the length for the mounting it proposes, and a
 pass message gives the demand the check computed, not the demand with the fix margin."""
 
+import math
 import re
 from dataclasses import replace
 
@@ -20,6 +21,7 @@ from app.core.formulas import critical_speed
 from app.core.model import Application, ScrewSpec
 from app.core.phrase import Amount, Phrase
 from app.core.selection import screen
+from app.core.units import to_si
 from tests.core.conftest import applications, light_app
 
 #: The utilisation a fix promises: its figures sit FIX_MARGIN past the limit, a demand
@@ -297,3 +299,27 @@ def test_a_column_shorter_than_the_stroke_is_offered_as_a_support(catalog: Catal
     assert "add an intermediate support (column at most 580.5 mm" in text, text
     assert "a column of at most" not in text, text
     assert "mount the ends fixed-fixed" in text, text
+
+
+def test_a_thrust_no_column_of_the_root_carries_is_offered_no_support(catalog: Catalog) -> None:
+    """ZBX8000-L10 (root 9.906 mm, yield 240 MPa) compressed by 20 kN over 300 mm with
+    both ends fixed: at any length its column carries at most the buckling factor times
+    the yield on its root, 0.5 x 240 MPa x pi x 9.906^2 / 4 = 9,248 N (Johnson's parabola
+    at no slenderness), under the thrust. No shorter column, stiffer mounting or
+    intermediate support helps, so the fix offers none of them: a thicker root (which
+    keeps its promise), less load, or the load pulling the screw."""
+    screw = catalog.by_id["ZBX8000-L10"]
+    app = light_app(
+        load_n=20_000.0, speed_m_s=0.01, length_m=0.3, stroke_m=0.2, end_fixity="fixed-fixed"
+    )
+    yield_pa = to_si(240.0, "MPa")
+    assert screw.yield_strength_pa == yield_pa
+    assert 0.5 * yield_pa * math.pi * screw.root_diameter_m**2 / 4 == pytest.approx(9248.4, 1e-5)
+    result = next(c for c in evaluate(app, screw).checks if c.name == "buckling")
+    assert result.fix is not None and not result.passed
+    text = render(result.fix)
+    assert "reduce the load" in text, text
+    for never in ("intermediate support", "column of at most", "mount the ends"):
+        assert never not in text, text
+    kept = promises(app, screw, "buckling", result.fix)
+    assert set(kept) == {"root diameter"} and kept["root diameter"] <= PROMISED

@@ -155,14 +155,18 @@ class ColumnBuckling(Check):
                 f"mount the ends {{stiffer}} ({what} at most {{stiffer_length}} with the ends "
                 "{stiffer})"
             )
-        # no column of this screw carries the thrust when its root yields first
-        shorter = f"{what} at most {{length}} with the ends {{fixity}}" if length_m > 0 else ""
-        # a screw shorter than the stroke is no screw the inputs accept: a support then
-        too_short = length_m < least_inputs(app).get("length_m", 0.0)
-        if (stiffer is None or too_short) and not spanned:
-            options.append("add an intermediate support" + (f" ({shorter})" if shorter else ""))
-        elif shorter:
-            options.append(f"a {shorter.replace(' at most', ' of at most', 1)}")
+        # no column of this screw carries the thrust when its root yields first (or
+        # passes the makers' allowed stress): no length or support helps, less load does
+        if length_m <= 0.0:
+            options.append("reduce the load")
+        else:
+            shorter = f"{what} at most {{length}} with the ends {{fixity}}"
+            # a screw shorter than the stroke is no screw the inputs accept: a support then
+            too_short = length_m < least_inputs(app).get("length_m", 0.0)
+            if (stiffer is None or too_short) and not spanned:
+                options.append(f"add an intermediate support ({shorter})")
+            else:
+                options.append(f"a {shorter.replace(' at most', ' of at most', 1)}")
         options.append("move the thrust bearing so that the load pulls the screw")
         return sentence(", or ".join(options) + "." + MARGIN_NOTE, values)
 
