@@ -271,7 +271,7 @@ def _provenance(
     prov["density"] = material.density_kg_m3.provenance
     prov["screw_expansion"] = material.expansion_per_k.provenance
     not_published = Provenance(
-        "derived", "not published in the maker's ball-screw table: not checked for it"
+        "derived", "not published in the maker's ball-screw table: the checks go without it"
     )
     for name in ("max_length", "repeatability", "temperature_range", "pitch"):
         prov.setdefault(name, not_published)

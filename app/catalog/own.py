@@ -294,7 +294,7 @@ def own_screw(
 ) -> ScrewSpec:
     """The candidate "custom" from the user's ``geometry``, a ``material`` and a catalog
     ``nut`` material (None: no nut rating beyond a given PV limit). A value the screw
-    lacks has the catalog's "not checked" provenance (``series.NOT_GIVEN``)."""
+    lacks has the catalog's provenance of a value not given (``series.NOT_GIVEN``)."""
     rho = material.density_kg_m3.value
     inertia, inertia_source = screw_inertia(geometry, rho)
     strength = material.yield_strength_pa
@@ -395,7 +395,7 @@ def _nut_length_end(geometry: OwnGeometry, nut: NutMaterial, ratio: float) -> di
 
 def _conductivity_provenance(material: Material) -> dict[str, Provenance]:
     """The screw material's thermal conductivity's provenance, where it gives one (else
-    the catalog's "not checked")."""
+    the catalog's provenance of a value not given)."""
     k = material.thermal_conductivity_w_m_k
     return {} if k is None else {"thermal_conductivity": k.provenance}
 

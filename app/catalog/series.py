@@ -66,7 +66,7 @@ RANGED_SERIES = (
 #: What a candidate's provenance says for a nut rating or thread value its family gives
 #: none of (the check that reads it does not apply to the candidate).
 NOT_GIVEN = {
-    name: Provenance("derived", f"no {text} in the catalog for this screw and nut: not checked")
+    name: Provenance("derived", f"no {text} in the catalog for this screw and nut: the checks go without it")
     for name, text in (
         ("bearing_pressure", "pressure-speed table"),
         ("max_pressure", "maximum contact pressure"),

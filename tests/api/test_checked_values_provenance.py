@@ -60,3 +60,24 @@ def test_a_nut_without_outgassing_data_says_the_vacuum_check_warns(client: TestC
         assert not vacuum["passed"]
         source = c["provenance"]["outgassing"]["source"]
         assert "no outgassing data" in source and "not checked" not in source
+
+
+@pytest.mark.parametrize(
+    ("screw", "axis"),
+    [("Tr16x4-ptfe", {**AXIS, **DUTY}), ("Tr20x4-acetal", AXIS), (OWN_SCREW, {**AXIS, **DUTY})],
+    ids=["ptfe-nut-no-pressure-table", "acetal-nut", "own-screw"],
+)
+def test_no_value_a_check_ran_on_says_it_is_not_checked(
+    client: TestClient, screw: str | dict[str, Any], axis: dict[str, Any]
+) -> None:
+    """A value the screw lacks says so, and not that it is "not checked" where a check
+    that ran reads it: Tr16x4-ptfe has no pressure-speed table, and its nut contact
+    pressure check runs on its maximum pressure and PV limit without one."""
+    c = evaluate(client, screw, **axis)
+    said = [
+        (result["name"], key, c["provenance"][key]["source"])
+        for result in c["checks"]
+        for key in BY_NAME[result["name"]].sources
+        if key in c["provenance"] and "not checked" in c["provenance"][key]["source"]
+    ]
+    assert said == []
