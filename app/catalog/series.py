@@ -64,9 +64,12 @@ RANGED_SERIES = (
 
 
 #: What a candidate's provenance says for a nut rating or thread value its family gives
-#: none of (the check that reads it does not apply to the candidate).
+#: none of (a check that needs it does not apply; one that reads it among others runs on
+#: the others).
 NOT_GIVEN = {
-    name: Provenance("derived", f"no {text} in the catalog for this screw and nut: the checks go without it")
+    name: Provenance(
+        "derived", f"no {text} in the catalog for this screw and nut: the checks go without it"
+    )
     for name, text in (
         ("bearing_pressure", "pressure-speed table"),
         ("max_pressure", "maximum contact pressure"),
