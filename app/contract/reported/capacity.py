@@ -2,8 +2,16 @@
 buckling and the root stress, the traverse speed limit."""
 
 from app.contract.reported.row import Formula, Reported
+from app.core import quantities
 from app.core.formulas import buckling, critical_speed, efficiency, limits, pv
 from app.core.formulas.declare import SHIGLEY
+
+#: The point the PV is judged at (``quantities.pv_point``), for both of its numbers.
+PV_POINT = (
+    "F_pv, v_pv = the peak thrust at the top speed; in a cycle of moves, each move's "
+    "largest thrust at its own top speed, of the move whose F v is largest",
+    "statics of the moving mass; the seed's PV is proportional to F v",
+)
 
 ROWS: tuple[Reported, ...] = (
     Reported(
@@ -66,6 +74,8 @@ ROWS: tuple[Reported, ...] = (
     Reported("buckling.slenderness", formula=Formula(buckling.slenderness)),
     Reported("buckling.transition_slenderness", formula=Formula(buckling.transition_slenderness)),
     Reported("buckling.root_stress_mpa", formula=Formula(buckling.root_von_mises_stress)),
+    Reported("pv.judged_thrust_n", formula=Formula(quantities.pv_point, *PV_POINT)),
+    Reported("pv.judged_speed_mm_s", formula=Formula(quantities.pv_point, *PV_POINT)),
     Reported("pv.value_mpa_m_s", formula=Formula(pv.pv_value)),
     Reported("pv.pressure_mpa", formula=Formula(pv.contact_pressure)),
     Reported("pv.surface_speed_m_s", formula=Formula(pv.surface_speed)),
