@@ -417,37 +417,42 @@ def test_the_holding_torque_a_brake_is_sized_on_is_reported(client: TestClient) 
 
 def test_a_leadscrew_between_its_makers_and_the_beams_speed_fails(client: TestClient) -> None:
     """Tr16x4 bronze, 1.5 m, fixed-simple: its makers (Thomson, Roton) rate these ends
-    C_s = 1.47 times simple-simple, 1.47 x 620.4 = 912.0 rpm, allowed 0.8 x 912.0 = 729.6
-    rpm; the beam's (3.92660 / pi)^2 = 1.562 would allow 0.8 x 969.2 = 775.4 rpm. At 49.3
-    mm/s (60 x 49.3 / 4 = 739.5 rpm, between the two) the check fails, its message naming
-    the makers' factor; at 40 mm/s (600 rpm) it passes. Fixed-fixed: C_s 2.23 allows 0.8
-    x 2.23 x 620.4 = 1106.8 rpm (the beam's 2.267, 1125.0): 74.3 mm/s (1114.5 rpm) fails.
-    Simple-simple the makers' factor is the beam's (1.0), and a ball screw is rated at
-    most at HIWIN's: no leadscrew makers' sentence."""
+    C_s = 1.47 times simple-simple, Thomson's simple-simple 4.76e6 x 0.4528 / 59.06^2 =
+    618.0 rpm (the C45 beam's 620.4 is above it), 1.47 x 618.0 = 908.4 rpm, allowed 0.8 x
+    908.4 = 726.7 rpm; the beam's (3.92660 / pi)^2 = 1.562 would allow 0.8 x 969.2 = 775.4
+    rpm. At 49.3 mm/s (60 x 49.3 / 4 = 739.5 rpm, between the two) the check fails, its
+    message naming the makers' factor; at 40 mm/s (600 rpm) it passes. Fixed-fixed: C_s
+    2.23 allows 0.8 x 2.23 x 618.0 = 1102.5 rpm (the beam's 2.267, 1125.0): 74.3 mm/s
+    (1114.5 rpm) fails. Fixed-simple 6.3 % below the beam; simple-simple Thomson's
+    constant alone, 0.4 % below the beam, and a ball screw is rated at most at HIWIN's:
+    no leadscrew makers' factor there."""
     # Tr16x4: ISO 2904 root d3 = 16 - 4 - 2 x 0.25 = 11.5 mm, carbon steel E 207 GPa,
     # rho 7800 kg/m^3, over 1.5 m simple-simple (Blevins table 8-1, beta = pi)
     n_ss = 60 / (2 * math.pi) * (math.pi / 1.5) ** 2 * math.sqrt(207e9 / 7800) * 0.0115 / 4
     assert n_ss == pytest.approx(620.4, abs=0.05)
+    thomson = 4.76e6 * (11.5 / 25.4) / (1500 / 25.4) ** 2
+    assert thomson == pytest.approx(618.0, abs=0.05)
     axis = {"load_n": 50, "length_mm": 1500, "end_fixity": "fixed-simple"}
     fast = check(evaluate(client, "Tr16x4-bronze", **axis, speed_mm_s=49.3), "critical_speed")
-    allowed = 0.8 * 1.47 * n_ss
-    assert allowed == pytest.approx(729.6, abs=0.05)
+    allowed = 0.8 * 1.47 * thomson
+    assert allowed == pytest.approx(726.7, abs=0.05)
     assert allowed < 60 * 49.3 / 4 < 0.8 * (3.92660 / math.pi) ** 2 * n_ss
     assert not fast["passed"]
     assert fast["limit"] == pytest.approx(allowed, rel=1e-6)
-    assert "C_s 1.47 times simple-simple, 5.9 % below the beam's" in fast["message"]
+    said = "C_s 1.47 (at most Thomson's 4.76e6 d_r / L^2 [rpm, in]) times simple-simple"
+    assert said + ", 6.3 % below the beam's" in fast["message"]
     slow = check(evaluate(client, "Tr16x4-bronze", **axis, speed_mm_s=40), "critical_speed")
     assert slow["passed"] and slow["limit"] == pytest.approx(allowed, rel=1e-6)
-    assert "C_s 1.47 times simple-simple" in slow["message"]
+    assert "C_s 1.47 (at most Thomson's" in slow["message"]
     fixed = {**axis, "end_fixity": "fixed-fixed"}
     both = check(evaluate(client, "Tr16x4-bronze", **fixed, speed_mm_s=74.3), "critical_speed")
-    allowed_ff = 0.8 * 2.23 * n_ss
+    allowed_ff = 0.8 * 2.23 * thomson
     assert allowed_ff < 60 * 74.3 / 4 < 0.8 * (4.73004 / math.pi) ** 2 * n_ss
     assert not both["passed"] and both["limit"] == pytest.approx(allowed_ff, rel=1e-6)
-    assert "C_s 2.23 times simple-simple, 1.6 % below the beam's" in both["message"]
+    assert "times simple-simple, 2.0 % below the beam's" in both["message"]
     simple = {**axis, "end_fixity": "simple-simple"}
     plain = check(evaluate(client, "Tr16x4-bronze", **simple, speed_mm_s=20), "critical_speed")
-    assert plain["limit"] == pytest.approx(0.8 * n_ss, rel=1e-6)
-    assert "leadscrew makers" not in plain["message"]
+    assert plain["limit"] == pytest.approx(0.8 * thomson, rel=1e-6)
+    assert "C_s 1 (at most Thomson's" in plain["message"]
     ball = check(evaluate(client, "R16-10K3-FSCDIN", **axis, speed_mm_s=100), "critical_speed")
     assert ball["passed"] and "leadscrew makers" not in ball["message"]

@@ -16,7 +16,11 @@ from app.catalog import Catalog, load_catalog
 from app.catalog.ball import NOT_APPLICABLE
 from app.catalog.errors import CatalogError
 from app.core.evaluate import evaluate
-from app.core.formulas.critical_speed import ball_screw_critical_speed_rpm, critical_speed_rpm
+from app.core.formulas.critical_speed import (
+    ball_screw_critical_speed_rpm,
+    critical_speed_rpm,
+    leadscrew_makers_critical_speed_rpm,
+)
 from app.core.model import Application, ScrewSpec
 from app.core.units import from_si, to_si
 
@@ -277,7 +281,8 @@ def test_a_ball_screw_families_critical_speed_rule(tmp_path: Path, rule: str | N
     the lower of the two: 2.71e8 x 0.692 x 12.9 / 1000^2 = 2419 rpm fixed-simple over 1 m,
     shown with its provenance. One that names none is held to the lowest published rule:
     also at most the makers' C_s 1.47 times simple-simple (Rockford, Thomson, Roton),
-    5.6 % less. A rule the app does not know is refused, naming the field."""
+    5.6 % less, and at most Thomson's steel constant, 4.76e6. A rule the app does not
+    know is refused, naming the field."""
     text = _with_rule(_family_text(), "critical_speed_rule", rule)
     screw = _user_screw(tmp_path, text)
     app = Application(load_n=100.0, speed_m_s=0.05, length_m=1.0, end_fixity="fixed-simple")
@@ -288,7 +293,9 @@ def test_a_ball_screw_families_critical_speed_rule(tmp_path: Path, rule: str | N
     simple = critical_speed_rpm(
         screw.root_diameter_m, 1.0, screw.youngs_modulus_pa, screw.density_kg_m3, "simple-simple"
     )
-    assert rated == pytest.approx(hiwin if rule else 1.47 * simple, rel=1e-9)
+    # and at most Thomson's C_s x 4.76e6 d_r / L^2 [rpm, in], its constant a steel's
+    thomson = leadscrew_makers_critical_speed_rpm(screw.root_diameter_m, 1.0, "fixed-simple")
+    assert rated == pytest.approx(hiwin if rule else min(1.47 * simple, thomson), rel=1e-9)
     check = next(c for c in evaluate(app, screw).checks if c.name == "critical_speed")
     said = "HIWIN rates it" if rule else "the lowest published rule, the makers'"
     assert said in check.message.template

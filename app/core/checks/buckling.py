@@ -43,7 +43,8 @@ class ColumnBuckling(Check):
         "critical load is at most its maker's Euler load (HIWIN's rule where its family "
         "declares it, else the lowest published rule, Rockford's and Thomson's), and its "
         "allowed force, where its family declares no rule, at most THK's permissible "
-        "P2 = 116 d1^2 N (147.7 MPa on the root area)."
+        "P2 = 116 d1^2 N (147.7 MPa on the root area). A leadscrew's critical load is at "
+        "most the lowest leadscrew maker's Euler load (W.M. Berg's, 190.7 GPa)."
     )
     quantity = "force"
     formula = (
@@ -57,7 +58,9 @@ class ColumnBuckling(Check):
         "family declares it, else the lowest published, Rockford Ball Screw 'How To Size A "
         "Ball Screw' step 9 and Thomson (14.03e6 C d^4 / L^2, E_m = 199.7 GPa), and its "
         "allowed load at most THK's P2 = 116 d1^2 N (General Catalog, Ball Screw, A15-30, "
-        "formula 6; sigma_m = 147.7 MPa)"
+        "formula 6; sigma_m = 147.7 MPa); a leadscrew's at most the lowest leadscrew "
+        "maker's, W.M. Berg's Maximum Column Load Formula (13.4e6 K d^4 / D^2, "
+        "E_m = 190.7 GPa)"
     )
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
@@ -73,8 +76,8 @@ class ColumnBuckling(Check):
             "F_c": q.axis.compressive_force_n,
             "SF": app.buckling_safety_factor,
             "E": t.youngs_modulus_pa,
-            # a ball screw's maker's column modulus (inf: a leadscrew), which rates the
-            # column no higher than its maker's Euler load
+            # the makers' column modulus (a leadscrew's Berg's 190.7 GPa), which rates
+            # the column no higher than its makers' Euler load
             "E_m": t.makers_modulus_pa,
             "A": buckling.root_area(t.root_diameter_m),
             "s": buckling.slenderness(t.root_diameter_m, column_length(app), app.end_fixity),
@@ -185,8 +188,8 @@ def _column_input(app: Application) -> str:
 
 
 def _modulus(s: ScrewSpec) -> float:
-    """The Young's modulus [Pa] a fix sizes ``s``'s column with: a ball screw's at most its
-    maker's (``buckling.makers_column_modulus``). Its Johnson parabola is then below the
+    """The Young's modulus [Pa] a fix sizes ``s``'s column with: at most its makers'
+    (``buckling.makers_column_modulus``). Its Johnson parabola is then below the
     rated one (``buckling.rated_column_load``), so a length or diameter found is on the
     safe side."""
     ball = s.screw_type == "ball"

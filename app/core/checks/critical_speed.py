@@ -46,13 +46,14 @@ class CriticalSpeed(Check):
     formula = (
         "n = 60 * v / lead; "
         "n_allowed = SF * min(60 / (2 * pi) * min(beta^2, C_s * pi^2) / L^2 * sqrt(E / rho) "
-        "* d_r / 4, n_H)"
+        "* d_r / 4, n_T, n_H)"
     )
     source = (
         "Blevins, Formulas for Natural Frequency and Mode Shape, table 8-1; at most Thomson's "
         "and Roton's end fixity factor C_s times simple-simple (for a ball screw too, as "
         "Rockford Ball Screw rates its own, unless its maker rates it by HIWIN's rule); a "
-        "ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27 (n_H)"
+        "ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27 (n_H); likewise at most "
+        "Thomson's C_s x 4.76e6 d_r / L^2 [rpm, in] (n_T, its constant a steel's)"
     )
     sources = ("root_diameter", "youngs_modulus", "density")
     capacity_sources = ("root_diameter", "youngs_modulus", "density")
@@ -78,6 +79,14 @@ class CriticalSpeed(Check):
                 t.ball & t.hiwin_speed,
                 np.inf,
                 critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity],
+            ),
+            # Thomson's C_s 4.76e6 d_r / L^2 [rpm, in], where C_s holds
+            "n_T": np.where(
+                t.ball & t.hiwin_speed,
+                np.inf,
+                critical_speed.leadscrew_makers_critical_speed_rpm(
+                    t.root_diameter_m, app.length_m, app.end_fixity
+                ),
             ),
             "n_H": np.where(
                 t.ball,
@@ -109,11 +118,21 @@ class CriticalSpeed(Check):
                 "below the beam's."
             )
             return Phrase(text, values)
-        ratio = critical_speed.makers_table_ratio(app.end_fixity)
-        if ratio >= 1.0 or s.critical_speed_rule == critical_speed.HIWIN_RULE:
+        beam = critical_speed.critical_speed_rpm(
+            s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3,
+            app.end_fixity,
+        )  # fmt: skip
+        ratio = r.column.critical_rpm / beam
+        below = ratio < 1.0 and not math.isclose(ratio, 1.0)
+        if not below or s.critical_speed_rule == critical_speed.HIWIN_RULE:
             return Phrase(text, values)
         # leadscrew makers' tables rate these ends below the beam: the rating is theirs
-        values["cs"] = f"{critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]:g}"
+        factor = f"{critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]:g}"
+        table = critical_speed.makers_table_ratio(app.end_fixity)
+        if ratio < table and not math.isclose(ratio, table):
+            # the screw's steel is stiffer or lighter than Thomson's constant is worked with
+            factor += " (at most Thomson's 4.76e6 d_r / L^2 [rpm, in])"
+        values["cs"] = factor
         values["lower"] = f"{(1.0 - ratio) * 100.0:.1f} %"
         makers = "leadscrew makers' (Thomson, Roton)"
         if s.screw_type == "ball":  # its family names no maker's rule: the lowest published

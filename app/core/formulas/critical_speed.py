@@ -99,6 +99,38 @@ def makers_table_ratio(end_fixity: str) -> float:
     return min(1.0, LEADSCREW_FIXITY_FACTOR[end_fixity] / beam)
 
 
+#: Thomson's constant for a steel screw [rpm in]: n_c = C_s 4.76e6 d_r / L^2 with d_r and L
+#: in inches (Thomson, "Screw critical speed (maximum RPM) calculation"; fxsolver, "Critical
+#: speed for a leadscrew", the same for a steel leadscrew).
+THOMSON_CRITICAL_SPEED_RPM_IN = 4.76e6
+
+
+@formula(
+    "n_c = C_s 4.76e6 d_r / L^2 [rpm, in]",
+    "Thomson, Screw critical speed (maximum RPM) calculation; fxsolver, Critical speed for "
+    "a leadscrew",
+)
+def leadscrew_makers_critical_speed_rpm(
+    root_diameter_m: Any, length_m: float, end_fixity: str
+) -> Any:
+    """A leadscrew's critical speed as its makers rate it [rpm]: Thomson's n_c = C_s x
+    4.76e6 x d_r / L^2 with the root diameter d_r [m] and the length between the bearings
+    L [m] (taken in inches, as the constant is), C_s the end fixity factor
+    (``LEADSCREW_FIXITY_FACTOR``). The constant is the beam's with a steel's E / rho
+    (about 206 GPa over 7850 kg/m^3); a stiffer or lighter steel's beam is above it, and
+    a leadscrew is rated at no more than it (``rated_critical_speed_rpm``). Numbers or
+    arrays alike.
+
+    A 15.5 mm root (Tr20x4) over 1 m, simple-simple: 4.76e6 x 0.6102 / 39.37^2 = 1874 rpm:
+
+    >>> round(float(leadscrew_makers_critical_speed_rpm(0.0155, 1.0, "simple-simple")), 1)
+    1874.0
+    """
+    root_in, length_in = from_si(1.0, "in") * root_diameter_m, from_si(length_m, "in")
+    factor = LEADSCREW_FIXITY_FACTOR[end_fixity]
+    return THOMSON_CRITICAL_SPEED_RPM_IN * factor * root_in / length_in**2
+
+
 #: HIWIN's mounting factors f_n for its ball screws' critical speed, n_k = 2.71e8 f_n d_k
 #: / l_s^2 [rpm, mm] (HIWIN GmbH, Ballscrews & Accessories, BS-08-2-EN-1704-K, F 3.27):
 #: 1.0 fixed-fixed, 0.692 fixed-simple, 0.446 simple-simple, 0.147 fixed-free.
@@ -143,12 +175,13 @@ def ball_screw_critical_speed_rpm(root_diameter_m: Any, length_m: float, end_fix
 
 
 @formula(
-    "n_c = min(n_beam, C_s n_ss); a ball screw's min(n_c, n_k), or min(n_beam, n_k) where "
-    "its maker rates it by HIWIN F 3.27",
+    "n_c = min(n_beam, C_s n_ss, C_s 4.76e6 d_r / L^2 [rpm, in]); a ball screw's "
+    "min(n_c, n_k), or min(n_beam, n_k) where its maker rates it by HIWIN F 3.27",
     "the beam (Blevins table 8-1); a leadscrew at most Thomson's and Roton's end fixity "
-    "factors C_s; a ball screw at most HIWIN BS-08-2-EN-1704-K F 3.27, and at most the "
-    "factors C_s too unless its maker rates it by HIWIN's rule (Rockford Ball Screw, How "
-    "to Size a Ball Screw, rates its ball screws by C_s)",
+    "factors C_s and Thomson's steel constant 4.76e6; a ball screw at most HIWIN "
+    "BS-08-2-EN-1704-K F 3.27, and at most the factors C_s too unless its maker rates it "
+    "by HIWIN's rule (Rockford Ball Screw, How to Size a Ball Screw, rates its ball "
+    "screws by C_s)",
 )
 def rated_critical_speed_rpm(
     root_diameter_m: Any,
@@ -163,13 +196,17 @@ def rated_critical_speed_rpm(
     """The critical speed a screw is rated at [rpm], never above its makers': the beam's
     (``critical_speed_rpm``, ``shaft`` its terms when already worked out) times
     ``makers_table_ratio`` for a leadscrew (the lower of the beam's and the leadscrew
-    makers' C_s times simple-simple). Where ``ball`` (a ball screw), also at most HIWIN's
-    rule (``ball_screw_critical_speed_rpm``); where ``hiwin_rated`` too (its maker rates
-    it by that rule, ``HIWIN_RULE``), the lower of the beam's and HIWIN's alone. A ball
+    makers' C_s times simple-simple), and at most Thomson's C_s x 4.76e6 d_r / L^2
+    (``leadscrew_makers_critical_speed_rpm``: a C45 screw's 207 GPa over 7800 kg/m^3 is
+    0.39 % above the steel that constant is worked with). Where ``ball`` (a ball
+    screw), also at most HIWIN's rule (``ball_screw_critical_speed_rpm``); where
+    ``hiwin_rated`` too (its maker rates it by that rule, ``HIWIN_RULE``), the lower of
+    the beam's and HIWIN's alone. A ball
     screw of another maker is held to the lowest published rule: Rockford, like the
     leadscrew makers, rates fixed-simple ends at 1.47 times simple-simple where HIWIN's
     mounting factors give 0.692 / 0.446 = 1.55. The factor is constant for an end
-    fixity, so the rating keeps the beam's d_r / L^2. Numbers or arrays alike.
+    fixity, so the rating keeps the beam's d_r / L^2 (so does Thomson's constant).
+    Numbers or arrays alike.
 
     A leadscrew with a 1 in steel root (206 GPa, 7850 kg/m^3) over 100 in, fixed-simple:
     simple-simple 475.2 rpm (``critical_speed_rpm``) x C_s 1.47 = 698.5 rpm, where the
@@ -182,16 +219,18 @@ def rated_critical_speed_rpm(
     690.0
 
     Fixed-simple, the same root over 1 m: HIWIN's 2.71e8 x 0.692 x 17.32 / 1000^2 = 3248
-    rpm for a HIWIN screw; any other ball screw the makers' 1.47 x simple-simple 2102 rpm:
+    rpm for a HIWIN screw; any other ball screw the makers' 1.47 x 4.76e6 x 0.6819 /
+    39.37^2 = 3078 rpm (the beam's simple-simple 2102 rpm x 1.47 is 3090):
 
     >>> args = (0.01732, 1.0, 207e9, 7800.0, "fixed-simple", True)
     >>> [round(float(rated_critical_speed_rpm(*args, hiwin_rated=h))) for h in (True, False)]
-    [3248, 3090]
+    [3248, 3078]
     """
     beam = critical_speed_rpm(
         root_diameter_m, length_m, youngs_modulus_pa, density_kg_m3, end_fixity, shaft
     )
-    leadscrew = beam * makers_table_ratio(end_fixity)
+    makers = leadscrew_makers_critical_speed_rpm(root_diameter_m, length_m, end_fixity)
+    leadscrew = np.minimum(beam * makers_table_ratio(end_fixity), makers)
     if not np.asarray(ball).any():
         return leadscrew
     hiwin = ball_screw_critical_speed_rpm(root_diameter_m, length_m, end_fixity)
