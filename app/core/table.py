@@ -96,11 +96,12 @@ def _equals(screws: Sequence[ScrewSpec], name: str, value: str) -> Mask:
     return np.fromiter(same, dtype=bool, count=len(screws))
 
 
-def _makers_column(ball: Mask, hiwin: Mask) -> dict[str, Array]:
-    """The makers' column rules of each screw, ball screws ``ball`` of which ``hiwin``
-    are rated by HIWIN's buckling rule: ``makers_modulus_pa`` and ``makers_stress_pa``."""
+def _makers_column(youngs_modulus_pa: Array, ball: Mask, hiwin: Mask) -> dict[str, Array]:
+    """The makers' column rules of each screw of modulus ``youngs_modulus_pa``, ball
+    screws ``ball`` of which ``hiwin`` are rated by HIWIN's buckling rule:
+    ``makers_modulus_pa`` and ``makers_stress_pa``."""
     return {
-        "makers_modulus_pa": buckling.makers_column_modulus(np.inf, ball, hiwin),
+        "makers_modulus_pa": buckling.makers_column_modulus(youngs_modulus_pa, ball, hiwin),
         "makers_stress_pa": buckling.makers_allowed_stress(ball, hiwin),
     }
 
@@ -403,7 +404,11 @@ class CandidateTable:
             traverse_extrapolated=extrapolated,
             ball=ball,
             hiwin_speed=_equals(screws, "critical_speed_rule", critical_speed.HIWIN_RULE),
-            **_makers_column(ball, _equals(screws, "buckling_rule", buckling.HIWIN_BUCKLING_RULE)),
+            **_makers_column(
+                copied["youngs_modulus_pa"],
+                ball,
+                _equals(screws, "buckling_rule", buckling.HIWIN_BUCKLING_RULE),
+            ),
             **columns,
             **screw_terms(columns),
         )

@@ -192,9 +192,9 @@ def test_buckling_over_the_span_from_the_thrust_bearing_to_the_nut(catalog: Cata
     app = light_app(length_m=1.2, end_fixity="fixed-simple", load_n=100.0)
     spanned = replace(app, bearing_to_nut_m=0.82)
     assert column_length(spanned) == pytest.approx(0.82)
-    # a leadscrew is held to the lowest leadscrew maker's column rule (W.M. Berg's,
-    # E_m = 190.7 GPa), 190.7 / 206 of MISUMI's 2.06e5 N/mm^2: 3360 N
-    held = buckling.LEADSCREW_COLUMN_MODULUS_PA / STEEL_E
+    # a steel leadscrew is held to its makers' column rule (Thomson's and Nook's 14.03e6,
+    # E_m = 199.7 GPa), 199.7 / 206 of MISUMI's 2.06e5 N/mm^2: 3519 N
+    held = buckling.LOWEST_COLUMN_MODULUS_PA / STEEL_E
     assert check_of(spanned, screw, "buckling").capacity == pytest.approx(3630.0 * held, rel=0.01)
     whole = check_of(app, screw, "buckling").capacity
     assert whole == pytest.approx(3630.0 * held * (0.82 / 1.2) ** 2, rel=0.01)
@@ -219,7 +219,7 @@ def test_a_span_fix_names_the_span_and_keeps_the_margin(catalog: Catalog) -> Non
     limits = result.input_limits
     assert limits is not None and "bearing_to_nut_m" in limits and "length_m" not in limits
     f_cr = buckling.column_critical_load(
-        min(screw.youngs_modulus_pa, buckling.LEADSCREW_COLUMN_MODULUS_PA),
+        float(buckling.leadscrew_column_modulus(screw.youngs_modulus_pa)),
         screw.root_diameter_m, limits["bearing_to_nut_m"],
         "fixed-simple", screw.yield_strength_pa or float("nan"),
     )  # fmt: skip

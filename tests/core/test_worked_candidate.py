@@ -55,7 +55,7 @@ BREAK = PEAK * LEAD / (2 * math.pi * ETA_S) + J_SCREW * ALPHA + 0.04  # from res
 N_C = 1.47 * (math.pi / L) ** 2 * math.sqrt(E / RHO) * RD / 4 * 60 / (2 * math.pi)
 S_Y = 240e6  # 303 annealed
 SLENDER = (L / math.sqrt(2)) / (RD / 4)  # 171, above sqrt(2 pi^2 E / S_y) = 126: Euler
-# held to the lowest leadscrew maker's column rule, W.M. Berg's 13.4e6 K d^4 / D^2 [lb, in]
+# held to its makers' column rule for stainless, W.M. Berg's 13.4e6 K d^4 / D^2 [lb, in]
 # (Euler's with E_m = 13.4e6 x 64 / pi^3 psi = 190.7 GPa, below 303's 193 GPa)
 E_M = 13.4e6 * 64 / math.pi**3 * 6894.757293168
 F_CR = 2 * math.pi**2 * E_M * (math.pi * RD**4 / 64) / L**2

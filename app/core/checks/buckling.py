@@ -44,7 +44,8 @@ class ColumnBuckling(Check):
         "declares it, else the lowest published rule, Rockford's and Thomson's), and its "
         "allowed force, where its family declares no rule, at most THK's permissible "
         "P2 = 116 d1^2 N (147.7 MPa on the root area). A leadscrew's critical load is at "
-        "most the lowest leadscrew maker's Euler load (W.M. Berg's, 190.7 GPa)."
+        "most its makers' Euler load for its class of steel (Thomson's and Nook's for "
+        "steel, W.M. Berg's for stainless)."
     )
     quantity = "force"
     formula = (
@@ -58,9 +59,10 @@ class ColumnBuckling(Check):
         "family declares it, else the lowest published, Rockford Ball Screw 'How To Size A "
         "Ball Screw' step 9 and Thomson (14.03e6 C d^4 / L^2, E_m = 199.7 GPa), and its "
         "allowed load at most THK's P2 = 116 d1^2 N (General Catalog, Ball Screw, A15-30, "
-        "formula 6; sigma_m = 147.7 MPa); a leadscrew's at most the lowest leadscrew "
-        "maker's, W.M. Berg's Maximum Column Load Formula (13.4e6 K d^4 / D^2, "
-        "E_m = 190.7 GPa)"
+        "formula 6; sigma_m = 147.7 MPa); a leadscrew's at most its makers' for its class "
+        "of steel: Thomson's and Nook's 14.03e6 F_c d^4 / L^2 for steel (E_m = 199.7 GPa), "
+        "W.M. Berg's Maximum Column Load Formula 13.4e6 K d^4 / D^2 for stainless "
+        "(E_m = 190.7 GPa)"
     )
     sources = ("root_diameter", "youngs_modulus", "yield_strength")
     capacity_sources = ("root_diameter", "youngs_modulus", "yield_strength")
@@ -76,8 +78,8 @@ class ColumnBuckling(Check):
             "F_c": q.axis.compressive_force_n,
             "SF": app.buckling_safety_factor,
             "E": t.youngs_modulus_pa,
-            # the makers' column modulus (a leadscrew's Berg's 190.7 GPa), which rates
-            # the column no higher than its makers' Euler load
+            # the makers' column modulus (a leadscrew's that of its class of steel), which
+            # rates the column no higher than its makers' Euler load
             "E_m": t.makers_modulus_pa,
             "A": buckling.root_area(t.root_diameter_m),
             "s": buckling.slenderness(t.root_diameter_m, column_length(app), app.end_fixity),

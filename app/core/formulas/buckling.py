@@ -61,38 +61,58 @@ HIWIN_COLUMN_MODULUS_PA = to_si(4.072e5 * 64.0 / (4.0 * math.pi**3), "MPa")
 #: HIWIN's 210.1, NSK's 2.1e5 N/mm^2 and THK's 2.06e5 N/mm^2 (its P1 = eta_2 d^4 / l^2 x
 #: 10^4 N, 0.5 of Euler's; General Catalog, Ball Screw, A15-30, formula 5).
 LOWEST_COLUMN_MODULUS_PA = to_si(14.03e6 * 64.0 / math.pi**3, "psi")
-#: The lowest leadscrew maker's column rule: W.M. Berg ("How to Calculate Lead Screw
-#: Maximum Load, Speed & More", Maximum Column Load Formula) F = K C 10^6 d^4 / D^2 [lb,
-#: in], K the Euler k of the end fixity, C = 13.4 for its stainless steel screws: Euler's
-#: with E = 13.4e6 x 64 / pi^3 psi = 190.7 GPa, below Thomson's and Nook's 14.03e6
-#: (199.7 GPa) for steel leadscrews and the handbook's 193 GPa for 303 and 304 stainless.
-LEADSCREW_COLUMN_MODULUS_PA = to_si(13.4e6 * 64.0 / math.pi**3, "psi")
+#: W.M. Berg's column rule for its stainless leadscrews ("How to Calculate Lead Screw
+#: Maximum Load, Speed & More", Maximum Column Load Formula): F = K C 10^6 d^4 / D^2 [lb,
+#: in], K the Euler k of the end fixity, C = 13.4 for stainless steel: Euler's with E =
+#: 13.4e6 x 64 / pi^3 psi = 190.7 GPa, below the handbook's 193 GPa for 303 and 304.
+STAINLESS_COLUMN_MODULUS_PA = to_si(13.4e6 * 64.0 / math.pi**3, "psi")
+#: The leadscrew makers' column rules as Euler's modulus, one per class of screw steel,
+#: stiffest first: Thomson's and Nook's 14.03e6 F_c d^4 / L^2 [lb, in] for steel (199.7
+#: GPa, ``LOWEST_COLUMN_MODULUS_PA``), Berg's 13.4e6 for stainless (190.7 GPa).
+LEADSCREW_COLUMN_MODULI_PA = (LOWEST_COLUMN_MODULUS_PA, STAINLESS_COLUMN_MODULUS_PA)
+
+
+def leadscrew_column_modulus(youngs_modulus_pa: Any) -> Any:
+    """The Young's modulus a leadscrew's column is rated with [Pa]: the makers' rule of
+    the class of steel its own modulus reaches (``LEADSCREW_COLUMN_MODULI_PA``: at least
+    199.7 GPa, a steel's, Thomson's and Nook's; at least 190.7 GPa, a stainless steel's,
+    Berg's), else its own (no maker's rule is that soft). So a C45 screw (207 GPa) is rated
+    by Thomson's and Nook's constant, not 3.7 % above it, a 303 or 304 one (193 GPa) by
+    Berg's, not 1.2 % above it. Numbers or arrays alike.
+
+    >>> [round(float(leadscrew_column_modulus(e)) / 1e9, 1) for e in (207e9, 193e9, 70e9)]
+    [199.7, 190.7, 70.0]
+    """
+    rated = youngs_modulus_pa
+    for makers in sorted(LEADSCREW_COLUMN_MODULI_PA):
+        rated = np.where(np.asarray(youngs_modulus_pa) >= makers, makers, rated)
+    return rated
 
 
 def makers_column_modulus(youngs_modulus_pa: Any, ball: Any, hiwin_rated: Any = False) -> Any:
     """The Young's modulus a screw's column is rated with [Pa], never above its makers':
-    a leadscrew's at most the lowest leadscrew maker's, Berg's 190.7 GPa
-    (``LEADSCREW_COLUMN_MODULUS_PA``: a C45 screw's 207 GPa was 3.7 % above Thomson's and
-    Nook's 14.03e6 F_c d^4 / L^2, a stainless one's 193 GPa 1.2 % above Berg's); a ball
-    screw's at most the E its maker's constant is Euler's with,
-    HIWIN's 210.1 GPa where its family declares HIWIN's rule (``HIWIN_BUCKLING_RULE``),
-    else the lowest published, Rockford's and Thomson's 199.7 GPa. With it the Euler load
-    is the lower of the beam's and the maker's (F_cr proportional to E), and Johnson's
-    parabola, below Euler's tangent to it, is lower too. Numbers or arrays alike.
+    a leadscrew's the makers' rule of its class of steel (``leadscrew_column_modulus``);
+    a ball screw's at most the E its maker's constant is Euler's with, HIWIN's 210.1 GPa
+    where its family declares HIWIN's rule (``HIWIN_BUCKLING_RULE``), else the lowest
+    published, Rockford's and Thomson's 199.7 GPa. With it the Euler load is the lower of
+    the beam's and the maker's (F_cr proportional to E), and Johnson's parabola, below
+    Euler's tangent to it, is lower too. Numbers or arrays alike.
 
     >>> [round(float(makers_column_modulus(207e9, b, h)) / 1e9, 1)
     ...  for b, h in ((False, False), (True, True), (True, False))]
-    [190.7, 207.0, 199.7]
+    [199.7, 207.0, 199.7]
     """
     maker = np.where(hiwin_rated, HIWIN_COLUMN_MODULUS_PA, LOWEST_COLUMN_MODULUS_PA)
-    return np.minimum(youngs_modulus_pa, np.where(ball, maker, LEADSCREW_COLUMN_MODULUS_PA))
+    ball_rated = np.minimum(youngs_modulus_pa, maker)
+    return np.where(ball, ball_rated, leadscrew_column_modulus(youngs_modulus_pa))
 
 
 @formula(
     "F_cr = min(F_col, k pi^2 E_m I / L^2)",
     "a ball screw HIWIN BS-08-2-EN-1704-K F 3.25 where its family declares it, else "
     "Rockford Ball Screw, How To Size A Ball Screw, step 9 (14.03e6 C d^4 / L^2) and "
-    "Thomson; a leadscrew W.M. Berg, Maximum Column Load Formula (13.4e6 K d^4 / D^2)",
+    "Thomson; a leadscrew Thomson's and Nook's 14.03e6 F_c d^4 / L^2 for steel, W.M. "
+    "Berg's Maximum Column Load Formula (13.4e6 K d^4 / D^2) for stainless",
 )
 def rated_column_load(
     column_load_n: Any,
@@ -105,8 +125,8 @@ def rated_column_load(
     (``column_critical_load``) and at most the Euler load with its makers' modulus
     ``makers_modulus_pa`` (``makers_column_modulus``: a ball screw's HIWIN's F_k =
     4.072e5 f_k d_k^4 / l_s^2 where its family declares that rule, else Rockford's and
-    Thomson's 14.03e6 C d^4 / L^2 [lb, in]; a leadscrew's W.M. Berg's 13.4e6 K d^4 / D^2
-    [lb, in], E_m = 190.7 GPa).
+    Thomson's 14.03e6 C d^4 / L^2 [lb, in]; a leadscrew's its makers' for its class of
+    steel, ``leadscrew_column_modulus``).
     second_moment_m4: I [m^4]; length_m: L [m]; end_fixity: a key of END_FIXITY_K.
 
     HIWIN R20-05 (d_k 16.9 mm) over 1000 mm, fixed-supported: HIWIN's F_k = 4.072e5 x 0.5
