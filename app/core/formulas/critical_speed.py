@@ -126,9 +126,9 @@ def leadscrew_makers_critical_speed_rpm(
     >>> round(float(leadscrew_makers_critical_speed_rpm(0.0155, 1.0, "simple-simple")), 1)
     1874.0
     """
-    root_in, length_in = from_si(1.0, "in") * root_diameter_m, from_si(length_m, "in")
     factor = LEADSCREW_FIXITY_FACTOR[end_fixity]
-    return THOMSON_CRITICAL_SPEED_RPM_IN * factor * root_in / length_in**2
+    per_root_in = THOMSON_CRITICAL_SPEED_RPM_IN * factor / from_si(length_m, "in") ** 2
+    return per_root_in * from_si(1.0, "in") * root_diameter_m
 
 
 #: HIWIN's mounting factors f_n for its ball screws' critical speed, n_k = 2.71e8 f_n d_k
