@@ -81,20 +81,21 @@ def machine(z_motor_kg: float | None = None) -> dict[str, Any]:
 
 
 def test_a_library_motor_s_mass_rides_on_the_axis_below(client: TestClient) -> None:
-    """Z brings X its payload, frame, chosen screw and motor: 0.5 + 0.3 + 0.4962 (its
-    Tr20x8 over 250 mm, screw_kg) + 0.365 (the SY42STH47-1684B's datasheet weight) =
-    1.6612 kg, where the old answer left the motor out (1.2962 kg). X brings Y
-    0.8 + 0.5 + 1.6612 + its screw (0.0803) + 0.35 (the QSH4218-47-28-040's) = 3.3915 kg."""
+    """Z brings X its payload, frame, chosen screw and motor: 0.5 + 0.3 + 0.0502 (its
+    B4000-L8-TFE over 250 mm, screw_kg: 8000 x pi x 5.6515^2 mm^2 / 4 x 0.25 m) + 0.365
+    (the SY42STH47-1684B's datasheet weight) = 1.2152 kg, where the old answer left the
+    motor out (0.8502 kg). X brings Y 0.8 + 0.5 + 1.2152 + its screw (0.0803) + 0.35 (the
+    QSH4218-47-28-040's) = 2.9455 kg."""
     z, x, y = client.post("/api/v1/machine", json=machine()).json()["axes"]
     assert z["motor_kg"] == 0.365 and z["motor_mass_origin"] == "library"
     assert z["motor_mass_motor"] == "sy42sth47-1684b"
     assert z["motor_mass_provenance"]["kind"] == "vendor"
     assert "0.365 kg" in z["motor_mass_provenance"]["source"]
-    assert z["screw_kg"] == pytest.approx(0.4962, abs=1e-4)
+    assert z["screw_kg"] == pytest.approx(0.0502, abs=1e-4)
     assert x["carried_kg"] == pytest.approx(0.5 + 0.3 + z["screw_kg"] + 0.365, rel=1e-12)
-    assert x["carried_kg"] == pytest.approx(1.6612, abs=1e-4)
+    assert x["carried_kg"] == pytest.approx(1.2152, abs=1e-4)
     assert x["motor_kg"] == 0.35 and x["motor_mass_origin"] == "library"
-    assert y["carried_kg"] == pytest.approx(0.8 + 0.5 + 1.6612 + x["screw_kg"] + 0.35, abs=1e-4)
+    assert y["carried_kg"] == pytest.approx(0.8 + 0.5 + 1.2152 + x["screw_kg"] + 0.35, abs=1e-4)
     assert y["motor_mass_origin"] == "library" and y["motor_mass_motor"] == "17hs19-2004s1"
 
 

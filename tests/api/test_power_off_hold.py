@@ -10,8 +10,8 @@ from fastapi.testclient import TestClient
 
 from tests.api.calls import check, evaluate, names
 
-#: 20 kg on a vertical Tr16x4 with a PTFE-filled nut (mu_s 0.20, catalog
-#: iso-trapezoidal/common.toml, assumed), d_p = 14 mm, 30-degree thread (a_n = 15 deg).
+#: 20 kg on a vertical Tr16x4 with an acetal (POM) nut (mu_s 0.20, catalog
+#: iso-trapezoidal/common.toml, handbook), d_p = 14 mm, 30-degree thread (a_n = 15 deg).
 VERTICAL = {"load_n": 0.0, "moving_mass_kg": 20.0, "orientation": "vertical",
             "speed_mm_s": 50.0, "length_mm": 500.0}  # fmt: skip
 COS_15 = math.cos(math.radians(15.0))
@@ -25,7 +25,7 @@ def lock_lead_mm(factor: float) -> float:
 def test_the_thread_holds_with_its_margin(client: TestClient) -> None:
     """f = 0.5: lead_max = pi x 14 x 0.5 x 0.20 / cos 15 = 4.553 mm, margin 4.553 / 4 =
     1.138: yes, by the thread."""
-    c = evaluate(client, "Tr16x4-ptfe", **VERTICAL)
+    c = evaluate(client, "Tr16x4-acetal", **VERTICAL)
     assert lock_lead_mm(0.5) == pytest.approx(4.553, abs=1e-3)
     assert c["holds_power_off"] is True and c["holds_by"] == "thread"
     assert c["hold_margin"] == pytest.approx(lock_lead_mm(0.5) / 4.0, rel=1e-9)
@@ -34,7 +34,7 @@ def test_the_thread_holds_with_its_margin(client: TestClient) -> None:
 
 def test_a_thin_margin_is_a_no_and_a_fail(client: TestClient) -> None:
     """f = 0.4: lead_max = 3.642 mm < 4 mm, margin 0.911: no, and the check fails."""
-    c = evaluate(client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4)
+    c = evaluate(client, "Tr16x4-acetal", **VERTICAL, self_locking_friction_factor=0.4)
     assert c["hold_margin"] == pytest.approx(lock_lead_mm(0.4) / 4.0, rel=1e-9)
     assert c["hold_margin"] == pytest.approx(0.9106, abs=1e-4)
     assert c["holds_power_off"] is False and not c["passed"]
@@ -46,7 +46,7 @@ def test_a_brake_answers_with_its_own_margin(client: TestClient) -> None:
     0.3 N m over the torque needed (the larger of the seed's and the friction's at f mu_s,
     times a brake's service factor 1.5 where no holding factor is given)."""
     c = evaluate(
-        client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4, brake_torque_nm=0.3
+        client, "Tr16x4-acetal", **VERTICAL, self_locking_friction_factor=0.4, brake_torque_nm=0.3
     )
     needed = c["holding_torque"]["brake_nm"]
     assert needed > 0.0
@@ -58,7 +58,7 @@ def test_no_requirement_no_answer_and_no_check(client: TestClient) -> None:
     """hold_power_off false: the energised motor holds; the back-driving check and the
     answer are left out (the thread that would fail at f = 0.4 is no longer rejected)."""
     c = evaluate(
-        client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4,
+        client, "Tr16x4-acetal", **VERTICAL, self_locking_friction_factor=0.4,
         hold_power_off=False,
     )  # fmt: skip
     assert c["holds_power_off"] is None and c["hold_margin"] is None
@@ -67,7 +67,7 @@ def test_no_requirement_no_answer_and_no_check(client: TestClient) -> None:
 
 def test_nothing_held_nothing_to_answer(client: TestClient) -> None:
     """A horizontal axis whose load opposes the motion holds nothing at rest."""
-    c = evaluate(client, "Tr16x4-ptfe", load_n=50.0, speed_mm_s=50.0, length_mm=500.0)
+    c = evaluate(client, "Tr16x4-acetal", load_n=50.0, speed_mm_s=50.0, length_mm=500.0)
     assert c["holds_power_off"] is None and c["holds_by"] is None
 
 
@@ -76,19 +76,19 @@ def test_a_load_of_fixed_direction_on_a_horizontal_axis_is_held_back_not_down(
 ) -> None:
     """A spring or a press on a horizontal axis (``load_direction`` fixed) is held at rest
     like a weight: the same check, named for a load held at rest (it said "vertical
-    axis"), which drives the screw back, not down. Tr16x4-ptfe self-locks with its
+    axis"), which drives the screw back, not down. Tr16x4-acetal self-locks with its
     margin (lead_max 4.553 mm); Tr16x8(P4) (two-start) does not."""
     held = {"load_n": 200.0, "load_direction": "fixed", "speed_mm_s": 50.0, "length_mm": 500.0}
     locks, slips = (
-        evaluate(client, "Tr16x4-ptfe", **held),
-        evaluate(client, "Tr16x8(P4)-ptfe", **held),
+        evaluate(client, "Tr16x4-acetal", **held),
+        evaluate(client, "Tr16x8(P4)-acetal", **held),
     )
     assert locks["holds_by"] == "thread" and slips["holds_power_off"] is False
     for c in (locks, slips):
         found = check(c, "back_driving")
         assert found["label"] == "Self-locking (load held at rest, no brake)"
         assert "drive the screw back" in found["message"] and "down" not in found["message"]
-    vertical = check(evaluate(client, "Tr16x8(P4)-ptfe", **VERTICAL), "back_driving")
+    vertical = check(evaluate(client, "Tr16x8(P4)-acetal", **VERTICAL), "back_driving")
     assert "drive the screw down" in vertical["message"]
 
 
@@ -96,10 +96,10 @@ def test_the_rule_of_thumb_says_which_governs(client: TestClient) -> None:
     """Tr16x4: lead 4 mm is not under OD / 8 = 2 mm, so the catalog's rule says it
     back-drives, while friction at 0.5 x 0.20 holds it: the row says the friction
     calculation governs. Where they agree (f = 0.4: both say it back-drives) it is silent."""
-    c = evaluate(client, "Tr16x4-ptfe", **VERTICAL)
+    c = evaluate(client, "Tr16x4-acetal", **VERTICAL)
     assert not c["seed_rule_no_backdrive"] and c["holds_power_off"]
     assert "governs" in c["holding_rule"] and "back-drives" in c["holding_rule"]
-    agree = evaluate(client, "Tr16x4-ptfe", **VERTICAL, self_locking_friction_factor=0.4)
+    agree = evaluate(client, "Tr16x4-acetal", **VERTICAL, self_locking_friction_factor=0.4)
     assert agree["holding_rule"] is None
 
 

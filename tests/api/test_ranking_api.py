@@ -26,8 +26,14 @@ def candidates(client: TestClient, **query: Any) -> list[dict[str, Any]]:
     return found
 
 
+#: The pick-and-place slower (20 mm/s, 2 m/s^2) with the nuts oiled: the bronze nuts
+#: (static friction 0.16 over 0.13 running) pass, and start from rest above their
+#: accelerating torque, so the two torques order differently.
+SLOW_OILED = {**PICK_AND_PLACE, "speed_mm_s": 20, "accel_mm_s2": 2000, "lubrication": "oiled"}
+
+
 def test_lowest_torque_orders_by_the_peak_motor_torque_shown(client: TestClient) -> None:
-    found = candidates(client, **PICK_AND_PLACE, rank_by="torque")
+    found = candidates(client, **SLOW_OILED, rank_by="torque")
     peak = [c["torque"]["peak_motor_nm"] for c in found]
     assert peak == sorted(peak)
     accelerating = [c["torque"]["total_nm"] for c in found]

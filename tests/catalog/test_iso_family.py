@@ -268,6 +268,32 @@ def test_design_pressure_range_reaches_the_published_cmp_rating(catalog: Catalog
     assert low["design_load_n"] / 4.4482216 == pytest.approx(5.0, abs=0.1)
 
 
+def test_a_polymer_nut_starts_at_no_more_than_its_published_static_friction(
+    catalog: Catalog,
+) -> None:
+    """Holding with the power off rests on the static friction, so a polymer nut's is
+    never put above what is published: acetal (POM homopolymer) on steel 0.1-0.3
+    (Shackelford and Alexander, CRC Materials Science and Engineering Handbook, 3rd ed.,
+    Table 399), taken 0.20; PTFE starts at its running friction (no stick-slip), so its
+    static value and range are its running ones. They were assumed above the running
+    friction (0.30 and 0.20), which held vertical loads the published friction does not."""
+    iso = [s for s in catalog.by_id.values() if s.series_id.startswith("Tr")]
+    acetal = [s for s in iso if s.id.endswith("-acetal")]
+    ptfe = [s for s in iso if s.id.endswith("-ptfe")]
+    assert len(acetal) > 40 and len(ptfe) > 40
+    for s in acetal:
+        low, high = s.assumption_ends["friction_static"]
+        assert (s.friction_static, low["friction_static"], high["friction_static"]) == (
+            0.20,
+            0.10,
+            0.30,
+        )
+    for s in ptfe:
+        low, high = s.assumption_ends["friction_static"]
+        assert s.friction_static == s.friction_dynamic == 0.15
+        assert low == {"friction_static": 0.05} and high == {"friction_static": 0.35}
+
+
 def test_every_assumed_number_a_check_uses_has_a_range() -> None:
     """Assumed single numbers carry `range = [low, high]` (catalog/README.md); the lists
     that choose what is offered (leads) and the thread form are not limits."""

@@ -47,7 +47,14 @@ script against the recorded rankings). "motion-motor" and "life-advice-reject" w
 recorded again when the screw's fins each side of a sliding nut came to be taken as long
 as the screw there (Incropera Table 3.4, case B), not endless: one non-robust nut in each
 now hinges on its friction too (its nut heat nearer the limit); the order and every other
-verdict stayed. Every path
+verdict stayed. Three were recorded again when the polymer nuts' static friction came from
+published data (an acetal nut 0.20, range 0.10-0.30, Shackelford's CRC table; a PTFE one
+its running 0.15, PTFE starting without stick-slip; they were assumed above the running
+friction, 0.30 and 0.20): on the vertical axis the Tr16x4, Tr18x4 and Tr22x5 PTFE and the
+Tr20x8(P4) and Tr24x10(P5) acetal nuts no longer hold with the power off by their thread,
+and larger, flatter leads (Tr36x6 to Tr44x7) take their places, each hinging on its static
+friction; where a stroke ranks by the peak torque ("motion-motor", "life-advice-reject")
+the PTFE nuts' start from rest costs less and they rank ahead. Every path
 must still give them: select, a catalog screw evaluated alone, and a screw outside the
 catalog with the same values (its variant rows built on the fly).
 """

@@ -197,9 +197,9 @@ def test_a_detail_reached_through_the_selectors_filters_tries_its_screw_alone(
     among the catalog's screws: the page of one's own screw refuses them ('limit' is not
     read on this page) and would show no verdict. The link leaves them out and gives the
     verdict of the same screw: Tr16x4-ptfe, 10 kg and 100 N lifted 300 mm 500 times a day
-    for 5 years, passes on both pages."""
+    for 5 years, held by a 1 N m brake, passes on both pages."""
     axis = "load=100&orientation=vertical&moving_mass_kg=10&speed=50&length=400&stroke=300"
-    axis += "&cycles_per_day=500&required_life_years=5"
+    axis += "&cycles_per_day=500&required_life_years=5&brake_torque=1"
     chosen = "&limit=5&lead=4&family=TR-304&rank_by=size"
     detail = soup(client.get(f"/detail?{axis}{chosen}&id=Tr16x4-ptfe").text)
     link = detail.select_one(".try-custom a")["href"]

@@ -21,18 +21,19 @@ def _evaluate(client: TestClient, screw: str, brake_nm: float) -> dict:
 
 
 def test_a_self_locking_thread_answers_with_its_own_margin(client: TestClient) -> None:
-    """Tr8x1.5-ptfe self-locks (lead_max / lead = 1.57) beside a 0.5 N m brake that
-    would hold 241 times over: the thread holds, at its margin."""
+    """Tr8x1.5-ptfe self-locks (lead_max / lead = pi x 7.25 x 0.5 x 0.15 / cos 15 deg /
+    1.5 = 1.179, at half its static friction 0.15) beside a 0.5 N m brake that would hold
+    it many times over: the thread holds, at its margin."""
     c = _evaluate(client, "Tr8x1.5-ptfe", 0.5)
     thread = c["max_self_locking_lead_with_margin_mm"] / c["lead_mm"]
-    assert thread == pytest.approx(1.572, abs=1e-3)
+    assert thread == pytest.approx(1.179, abs=1e-3)
     assert (c["holds_by"], c["holds_power_off"]) == ("thread", True)
     assert c["hold_margin"] == pytest.approx(thread, rel=1e-12)
     page = BeautifulSoup(
         client.get("/", params={**PAGE, "brake_torque": "0.5"}).text, "html.parser"
     )
     row = page.select_one('tbody.candidate[data-id="Tr8x1.5-ptfe"] .hold-answer')
-    assert row is not None and row.text == "Holds power-off: yes, margin 1.57× (self-locking)"
+    assert row is not None and row.text == "Holds power-off: yes, margin 1.18× (self-locking)"
 
 
 def test_a_brake_too_weak_answers_with_its_margin_not_the_threads(client: TestClient) -> None:
