@@ -3,6 +3,7 @@ stepper's datasheet values, at the API and in share links; the library's errors 
 file, the entry and the field; and two axes sized end to end with a library motor."""
 
 import math
+from dataclasses import replace
 from pathlib import Path
 from urllib.parse import parse_qsl
 
@@ -714,3 +715,23 @@ def test_the_nema_11_holds_what_its_maker_publishes() -> None:
     """Pololu's page of item #1205: 950 g-cm of holding torque, 0.0932 N m (the library
     held 0.095 N m, 2 % above it)."""
     assert MOTORS["pololu-1205"].holding_torque_nm() == pytest.approx(950 * 9.80665e-5, rel=1e-3)
+
+
+def test_an_assumed_drive_voltage_is_the_lowest_usual_one() -> None:
+    """A stepper's torque at speed rises with its drive's voltage. Where the library draws
+    a curve from the model on a drive it assumes, it takes 24 V, the lowest usual supply
+    for these frames, so the curve is never the one a stronger drive would give: the NEMA
+    23 175 oz in table recommends 24-48 V (36 V was taken), the Schneider NEMA 23 was
+    given a 48 V drive (24-60 V in use). There 48 V gives the model's corner speed about
+    twice 24 V's."""
+    assumed = {
+        motor_id: motor.values["supply_v"]
+        for motor_id, motor in MOTORS.items()
+        if "supply_v" in motor.values and motor.values["supply_v"].provenance.kind == "assumed"
+    }
+    assert {"nema23-175ozin", "nema23-schneider-270ozin"} <= set(assumed)
+    assert all(supply.value == 24.0 for supply in assumed.values()), assumed
+    schneider = MOTORS["nema23-schneider-270ozin"]
+    at_48 = replace(schneider.values["supply_v"], value=48.0)
+    stronger = replace(schneider, values={**schneider.values, "supply_v": at_48})
+    assert stronger.corner_rpm() == pytest.approx(2 * schneider.corner_rpm(), rel=0.15)
