@@ -201,12 +201,11 @@ def rated_critical_speed_rpm(
     0.39 % above the steel that constant is worked with). Where ``ball`` (a ball
     screw), also at most HIWIN's rule (``ball_screw_critical_speed_rpm``); where
     ``hiwin_rated`` too (its maker rates it by that rule, ``HIWIN_RULE``), the lower of
-    the beam's and HIWIN's alone. A ball
-    screw of another maker is held to the lowest published rule: Rockford, like the
-    leadscrew makers, rates fixed-simple ends at 1.47 times simple-simple where HIWIN's
-    mounting factors give 0.692 / 0.446 = 1.55. The factor is constant for an end
-    fixity, so the rating keeps the beam's d_r / L^2 (so does Thomson's constant).
-    Numbers or arrays alike.
+    the beam's and HIWIN's alone. A ball screw of another maker is held to the lowest
+    published rule: Rockford, like the leadscrew makers, rates fixed-simple ends at 1.47
+    times simple-simple where HIWIN's mounting factors give 0.692 / 0.446 = 1.55. The
+    factor is constant for an end fixity, so the rating keeps the beam's d_r / L^2 (so
+    does Thomson's constant). Numbers or arrays alike.
 
     A leadscrew with a 1 in steel root (206 GPa, 7850 kg/m^3) over 100 in, fixed-simple:
     simple-simple 475.2 rpm (``critical_speed_rpm``) x C_s 1.47 = 698.5 rpm, where the
