@@ -467,6 +467,16 @@ def test_detail_at_no_axial_load_says_pv_sets_no_speed_limit(client: TestClient)
     assert "nan" not in detail.text.lower()
 
 
+def test_detail_says_where_the_pv_is_judged(client: TestClient) -> None:
+    """100 N at 50 mm/s with no move: the PV is judged at the axis's own thrust and speed,
+    and the line says so, so that "at this speed" and "at this load" after it name them."""
+    c = next(c for c in api_select(client)["candidates"] if c["pv"] is not None)
+    assert (c["pv"]["judged_thrust_n"], c["pv"]["judged_speed_mm_s"]) == (100.0, 50.0)
+    detail = soup(client.get("/detail", params={**AXIS, "id": c["id"]}, headers=HX))
+    pv = next(div.dd for div in detail.select("dl.facts > div") if div.dt.text == "PV")
+    assert pv.select_one(".pv-judged").text == "100 N and 50 mm/s"
+
+
 def test_detail_of_a_rejected_candidate_names_its_failures_and_fix(client: TestClient) -> None:
     c = api_select(client)["rejected"][0]
     page = soup(client.get("/detail", params={**AXIS, "id": c["id"]}))
