@@ -639,6 +639,8 @@ def test_evaluate_catalog_screw_has_every_issue_field(api: Api) -> None:
     assert candidate["id"] == CATALOG_SCREW and candidate["series"] == "ZBX8000"
 
 
+#: one pound-force per square inch [Pa] (NIST SP 811)
+PSI_PA = 6894.757293168
 MATERIALS: dict[str, tuple[Any, float, float, str]] = {
     # request value: (value, E [Pa], rho [kg/m3], provenance kind of E)
     "steel": ("steel", 206e9, 7850.0, "handbook"),
@@ -660,7 +662,9 @@ def test_evaluate_custom_screw_per_material(api: Api, material: str) -> None:
     D^2 for stainless, 190.7 GPa; the custom 110 GPa its own.
     """
     value, e, rho, kind = MATERIALS[material]
-    e_column = {"steel": 199.667e9, "stainless-303": 190.702e9}.get(material, e)
+    # the makers' column constant [lb in^2 / in^4] is pi^3 E / 64: E = C x 64 / pi^3 psi
+    makers = {"steel": 14.03e6, "stainless-303": 13.4e6}.get(material)
+    e_column = e if makers is None else makers * 64 / math.pi**3 * PSI_PA
     candidate = evaluate(api, {**CUSTOM_SCREW, "material": value})["candidate"]
     assert_candidate(candidate)
     assert candidate["id"] == "custom"
