@@ -17,7 +17,7 @@ from app.catalog.errors import CatalogError
 from app.catalog.files import CatalogFile
 from app.catalog.models import Material, Series, Sourced
 from app.catalog.series import NOT_GIVEN
-from app.core.formulas import ballscrew, buckling, critical_speed
+from app.core.formulas import ballscrew, column_rules, critical_speed
 from app.core.model import Provenance, ScrewSpec
 from app.core.record import CERTAINTY
 from app.core.units import to_si
@@ -216,7 +216,7 @@ def _spec(
         critical_speed_rule=family.text("critical_speed_rule", critical_speed.MAKER_RULES)
         if family.has("critical_speed_rule")
         else None,
-        buckling_rule=family.text("buckling_rule", buckling.BUCKLING_RULES)
+        buckling_rule=family.text("buckling_rule", column_rules.BUCKLING_RULES)
         if family.has("buckling_rule")
         else None,
         accuracy_grade=family.text("accuracy_grade"),

@@ -9,6 +9,7 @@ import numpy as np
 
 from app.core.formulas import (
     buckling,
+    column_rules,
     critical_speed,
     torque,
 )
@@ -49,8 +50,8 @@ def column_limits(
     ``critical_speed.rated_critical_speed_rpm``), and the screw as a column (its span from
     the thrust bearing to the nut) under the peak thrust: Euler when slender, Johnson's
     parabola when short, a ball screw's never above its makers' Euler load
-    (``buckling.rated_column_load``), its allowed load never above its makers'
-    (``buckling.rated_allowed_load``: THK's P2 where a ball screw's family declares no
+    (``column_rules.rated_column_load``), its allowed load never above its makers'
+    (``column_rules.rated_allowed_load``: THK's P2 where a ball screw's family declares no
     buckling rule), and the stress at the root under the peak thrust and the torque the
     screw carries with it (von Mises)."""
     n_c = critical_speed.rated_critical_speed_rpm(
@@ -75,7 +76,7 @@ def column_limits(
         slenderness_ratio=s,
     )
     # never above the makers' Euler load: HIWIN's F 3.25 where its family declares it
-    f_cr = buckling.rated_column_load(
+    f_cr = column_rules.rated_column_load(
         f_cr, t.root_second_moment_m4, column_m, app.end_fixity, t.makers_modulus_pa
     )
     root_nm = root_torque(t, peak_n, torques)
@@ -86,7 +87,7 @@ def column_limits(
         "allowed_rpm": critical_speed.allowed_speed_rpm(n_c, app.critical_speed_safety_factor),
         "critical_load_n": f_cr,
         # never above THK's P2 = 116 d1^2 where a ball screw's family declares no rule
-        "allowed_load_n": buckling.rated_allowed_load(
+        "allowed_load_n": column_rules.rated_allowed_load(
             f_cr, app.buckling_safety_factor, t.root_area_m2, t.makers_stress_pa
         ),
         "slenderness": s,

@@ -313,8 +313,8 @@ class ScrewSpec:
     #: is rated by the lowest of the published rules (``rated_critical_speed_rpm``).
     critical_speed_rule: str | None = None
     #: The published buckling rule a ball screw's maker rates its column by, as its family
-    #: declares it (``buckling.BUCKLING_RULES``); None: not declared, and a ball screw's
-    #: column is rated by the lowest published rule (``buckling.rated_column_load``).
+    #: declares it (``column_rules.BUCKLING_RULES``); None: not declared, and a ball screw's
+    #: column is rated by the lowest published rule (``column_rules.rated_column_load``).
     buckling_rule: str | None = None
     accuracy_grade: str = ""
     #: a ball nut's axial preload [N] (0: a nut with play; None: not a ball screw)

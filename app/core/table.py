@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 
 from app.core.axis_free import axis_free, friction_columns, screw_terms
 from app.core.formulas import (
-    buckling,
+    column_rules,
     critical_speed,
     efficiency,
     geometry,
@@ -101,8 +101,8 @@ def _makers_column(youngs_modulus_pa: Array, ball: Mask, hiwin: Mask) -> dict[st
     screws ``ball`` of which ``hiwin`` are rated by HIWIN's buckling rule:
     ``makers_modulus_pa`` and ``makers_stress_pa``."""
     return {
-        "makers_modulus_pa": buckling.makers_column_modulus(youngs_modulus_pa, ball, hiwin),
-        "makers_stress_pa": buckling.makers_allowed_stress(ball, hiwin),
+        "makers_modulus_pa": column_rules.makers_column_modulus(youngs_modulus_pa, ball, hiwin),
+        "makers_stress_pa": column_rules.makers_allowed_stress(ball, hiwin),
     }
 
 
@@ -407,7 +407,7 @@ class CandidateTable:
             **_makers_column(
                 copied["youngs_modulus_pa"],
                 ball,
-                _equals(screws, "buckling_rule", buckling.HIWIN_BUCKLING_RULE),
+                _equals(screws, "buckling_rule", column_rules.HIWIN_BUCKLING_RULE),
             ),
             **columns,
             **screw_terms(columns),

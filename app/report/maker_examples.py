@@ -20,7 +20,15 @@ from dataclasses import replace
 
 import numpy as np
 
-from app.core.formulas import buckling, critical_speed, efficiency, geometry, profile, torque
+from app.core.formulas import (
+    buckling,
+    column_rules,
+    critical_speed,
+    efficiency,
+    geometry,
+    profile,
+    torque,
+)
 from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
@@ -73,9 +81,9 @@ def rockford_column_lbf() -> float:
     """Rockford's column at 0.8 [lbf], rated as a ball screw of a family that names no
     rule: the core's column (carbon steel) held to Rockford's and Thomson's Euler load."""
     own = buckling.column_critical_load(STEEL_E, ROOT_M, SPAN_M, "fixed-simple", C45_YIELD)
-    lowest = buckling.makers_column_modulus(STEEL_E, True, False)
+    lowest = column_rules.makers_column_modulus(STEEL_E, True, False)
     i = buckling.second_moment_round(ROOT_M)
-    rated = buckling.rated_column_load(own, i, SPAN_M, "fixed-simple", lowest)
+    rated = column_rules.rated_column_load(own, i, SPAN_M, "fixed-simple", lowest)
     return float(from_si(FACTOR * float(rated), "lbf"))
 
 

@@ -26,7 +26,7 @@ from typing import Any
 
 import pytest
 
-from app.core.formulas import buckling, critical_speed, geometry, life, torque
+from app.core.formulas import buckling, column_rules, critical_speed, geometry, life, torque
 from app.core.model import Application, Move, ScrewSpec
 from app.core.quantities import Quantities, operating_point
 from app.core.table import CandidateTable
@@ -102,8 +102,8 @@ def test_rockford_column_load_of_a_ball_screw() -> None:
     i = buckling.second_moment_round(ROOT_M)
     own = buckling.column_critical_load(STEEL_E, ROOT_M, SPAN_M, "fixed-simple", 310e6)
     assert maker.rockford_column_lbf() == pytest.approx(6537.0, rel=WITHIN)
-    by_hiwin = buckling.makers_column_modulus(math.inf, True, True)
-    assert float(buckling.rated_column_load(own, i, SPAN_M, "fixed-simple", by_hiwin)) == own
+    by_hiwin = column_rules.makers_column_modulus(math.inf, True, True)
+    assert float(column_rules.rated_column_load(own, i, SPAN_M, "fixed-simple", by_hiwin)) == own
     assert from_si(own, "lbf") == pytest.approx(8431.0, rel=WITHIN)
 
 

@@ -34,7 +34,7 @@ import numpy as np
 import pytest
 
 from app.core.evaluate import evaluate
-from app.core.formulas import buckling, critical_speed, geometry, profile, torque
+from app.core.formulas import buckling, column_rules, critical_speed, geometry, profile, torque
 from app.core.model import Application, ScrewSpec
 from app.core.table import CandidateTable
 from app.core.units import from_si, to_si
@@ -176,13 +176,13 @@ def test_a_ball_screw_is_never_rated_above_thks_shaft_rules(fixity: str, hiwin_r
     )
     speed = critical_speed.allowed_speed_rpm(float(rated), app.critical_speed_safety_factor)
     own = buckling.column_critical_load(STEEL_E, ROOT_M, SPAN_M, fixity, C45_YIELD)
-    modulus = buckling.makers_column_modulus(STEEL_E, True, hiwin_rated)
-    column = buckling.rated_column_load(
+    modulus = column_rules.makers_column_modulus(STEEL_E, True, hiwin_rated)
+    column = column_rules.rated_column_load(
         own, buckling.second_moment_round(ROOT_M), SPAN_M, fixity, modulus
     )
-    allowed = buckling.rated_allowed_load(
+    allowed = column_rules.rated_allowed_load(
         column, app.buckling_safety_factor, buckling.root_area(ROOT_M),
-        buckling.makers_allowed_stress(True, hiwin_rated),
+        column_rules.makers_allowed_stress(True, hiwin_rated),
     )  # fmt: skip
     assert speed <= _thk_speed(fixity)
     assert float(allowed) <= _thk_column(fixity)

@@ -15,7 +15,7 @@ from app.core.checks.base import FIX_MARGIN
 from app.core.column import column_length
 from app.core.duty import travel_thrusts
 from app.core.evaluate import evaluate
-from app.core.formulas import buckling, support
+from app.core.formulas import buckling, column_rules, support
 from app.core.model import Application, ScrewSpec
 from app.core.phrase import Amount
 from tests.core.conftest import STEEL_E, light_app
@@ -194,7 +194,7 @@ def test_buckling_over_the_span_from_the_thrust_bearing_to_the_nut(catalog: Cata
     assert column_length(spanned) == pytest.approx(0.82)
     # a steel leadscrew is held to its makers' column rule (Thomson's and Nook's 14.03e6,
     # E_m = 199.7 GPa), 199.7 / 206 of MISUMI's 2.06e5 N/mm^2: 3519 N
-    held = buckling.LOWEST_COLUMN_MODULUS_PA / STEEL_E
+    held = column_rules.LOWEST_COLUMN_MODULUS_PA / STEEL_E
     assert check_of(spanned, screw, "buckling").capacity == pytest.approx(3630.0 * held, rel=0.01)
     whole = check_of(app, screw, "buckling").capacity
     assert whole == pytest.approx(3630.0 * held * (0.82 / 1.2) ** 2, rel=0.01)
@@ -219,7 +219,7 @@ def test_a_span_fix_names_the_span_and_keeps_the_margin(catalog: Catalog) -> Non
     limits = result.input_limits
     assert limits is not None and "bearing_to_nut_m" in limits and "length_m" not in limits
     f_cr = buckling.column_critical_load(
-        float(buckling.leadscrew_column_modulus(screw.youngs_modulus_pa)),
+        float(column_rules.leadscrew_column_modulus(screw.youngs_modulus_pa)),
         screw.root_diameter_m, limits["bearing_to_nut_m"],
         "fixed-simple", screw.yield_strength_pa or float("nan"),
     )  # fmt: skip

@@ -3,7 +3,7 @@ buckling and the root stress, the traverse speed limit."""
 
 from app.contract.reported.row import Formula, Reported
 from app.core import quantities
-from app.core.formulas import buckling, critical_speed, efficiency, limits, pv
+from app.core.formulas import buckling, column_rules, critical_speed, efficiency, limits, pv
 from app.core.formulas.declare import SHIGLEY
 
 #: The point the PV is judged at (``quantities.pv_point``), for both of its numbers.
@@ -70,7 +70,7 @@ ROWS: tuple[Reported, ...] = (
         column=True,
     ),
     Reported("buckling.critical_load_n", formula=Formula(buckling.column_critical_load)),
-    Reported("buckling.allowed_load_n", formula=Formula(buckling.rated_allowed_load)),
+    Reported("buckling.allowed_load_n", formula=Formula(column_rules.rated_allowed_load)),
     Reported("buckling.slenderness", formula=Formula(buckling.slenderness)),
     Reported("buckling.transition_slenderness", formula=Formula(buckling.transition_slenderness)),
     Reported("buckling.root_stress_mpa", formula=Formula(buckling.root_von_mises_stress)),

@@ -14,7 +14,7 @@ from typing import ClassVar, Literal
 import numpy as np
 
 from app.core import load_caps, motion
-from app.core.formulas import buckling
+from app.core.formulas import column_rules
 from app.core.model import FIX_MARGIN, FIXITY_ORDER, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import Quantities, compression_sign
@@ -177,10 +177,10 @@ class Check:
 
 def makers_stress(s: ScrewSpec) -> float:
     """The makers' allowed axial stress at the root of ``s`` [Pa]
-    (``buckling.makers_allowed_stress``): THK's P2 over the root area, 147.7 MPa, for a
+    (``column_rules.makers_allowed_stress``): THK's P2 over the root area, 147.7 MPa, for a
     ball screw whose family declares no buckling rule; else inf (no cap)."""
-    hiwin = s.buckling_rule == buckling.HIWIN_BUCKLING_RULE
-    return float(buckling.makers_allowed_stress(s.screw_type == "ball", hiwin))
+    hiwin = s.buckling_rule == column_rules.HIWIN_BUCKLING_RULE
+    return float(column_rules.makers_allowed_stress(s.screw_type == "ball", hiwin))
 
 
 def everywhere(t: CandidateTable) -> Mask:

@@ -22,7 +22,7 @@ from app.core.checks.base import (
     stiffer_fixity,
 )
 from app.core.column import column_length
-from app.core.formulas import buckling
+from app.core.formulas import buckling, column_rules
 from app.core.input_rules import least_inputs
 from app.core.phrase import Amount, Phrase
 
@@ -191,12 +191,12 @@ def _column_input(app: Application) -> str:
 
 def _modulus(s: ScrewSpec) -> float:
     """The Young's modulus [Pa] a fix sizes ``s``'s column with: at most its makers'
-    (``buckling.makers_column_modulus``). Its Johnson parabola is then below the
-    rated one (``buckling.rated_column_load``), so a length or diameter found is on the
+    (``column_rules.makers_column_modulus``). Its Johnson parabola is then below the
+    rated one (``column_rules.rated_column_load``), so a length or diameter found is on the
     safe side."""
     ball = s.screw_type == "ball"
-    hiwin = s.buckling_rule == buckling.HIWIN_BUCKLING_RULE
-    return float(buckling.makers_column_modulus(s.youngs_modulus_pa, ball, hiwin))
+    hiwin = s.buckling_rule == column_rules.HIWIN_BUCKLING_RULE
+    return float(column_rules.makers_column_modulus(s.youngs_modulus_pa, ball, hiwin))
 
 
 def _most_n(s: ScrewSpec, root_diameter_m: float) -> float:
