@@ -97,6 +97,7 @@ class ColumnBuckling(Check):
             r.column.critical_load_n, app.buckling_safety_factor
         )
         limit = "THK's P2 = 116 d1^2 N, below " if capped else ""
+        rule = _makers_rule(app, s, r)
         span = (
             ""
             if app.bearing_to_nut_m is None
@@ -109,10 +110,13 @@ class ColumnBuckling(Check):
             + limit
             + "{sf} x "
             + model
-            + " {f_cr}, slenderness {s}"
+            + " {f_cr}"
+            + (f" with E {{e_m}}, {rule}" if rule else "")
+            + ", slenderness {s}"
             + span
             + ").",
             {
+                "e_m": Amount(_modulus(s), "pressure"),
                 "f": Amount(r.axis.compressive_force_n, "force"),
                 "allowed": Amount(r.column.allowed_load_n, "force"),
                 "sf": Amount(app.buckling_safety_factor, "factor"),
@@ -197,6 +201,27 @@ def _modulus(s: ScrewSpec) -> float:
     ball = s.screw_type == "ball"
     hiwin = s.buckling_rule == column_rules.HIWIN_BUCKLING_RULE
     return float(column_rules.makers_column_modulus(s.youngs_modulus_pa, ball, hiwin))
+
+
+def _makers_rule(app: Application, s: ScrewSpec, r: Quantities[float]) -> str:
+    """The makers' column rule, in words, where it and not the screw's own modulus gives
+    its critical load (Euler with the makers' E, ``_modulus``, below the column's own);
+    "" where the screw's own column governs."""
+    e_m = _modulus(s)
+    own = s.youngs_modulus_pa
+    makers = buckling.euler_critical_load(
+        e_m, buckling.second_moment_round(s.root_diameter_m), r.column.column_length_m,
+        app.end_fixity,
+    )  # fmt: skip
+    if not e_m < own or not math.isclose(r.column.critical_load_n, makers):
+        return ""
+    if s.screw_type == "ball":
+        if s.buckling_rule == column_rules.HIWIN_BUCKLING_RULE:
+            return "HIWIN's F 3.25"
+        return "the lowest published ball-screw rule, Rockford's and Thomson's"
+    if e_m == column_rules.LOWEST_COLUMN_MODULUS_PA:
+        return "Thomson's and Nook's rule for steel"
+    return "W.M. Berg's rule for stainless"
 
 
 def _most_n(s: ScrewSpec, root_diameter_m: float) -> float:

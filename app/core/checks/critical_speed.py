@@ -64,6 +64,7 @@ class CriticalSpeed(Check):
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
+        hiwin_rated = t.ball & t.hiwin_speed  # rated by HIWIN's rule alone
         return {
             "v": motion.reached_speed(app),
             "lead": t.lead_m,
@@ -76,13 +77,11 @@ class CriticalSpeed(Check):
             # at most the leadscrew makers' C_s times simple-simple (pi^2), but a ball screw
             # its maker rates by HIWIN's rule; a ball screw at most HIWIN's F 3.27 too
             "C_s": np.where(
-                t.ball & t.hiwin_speed,
-                np.inf,
-                critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity],
+                hiwin_rated, np.inf, critical_speed.LEADSCREW_FIXITY_FACTOR[app.end_fixity]
             ),
             # Thomson's C_s 4.76e6 d_r / L^2 [rpm, in], where C_s holds
             "n_T": np.where(
-                t.ball & t.hiwin_speed,
+                hiwin_rated,
                 np.inf,
                 critical_speed.leadscrew_makers_critical_speed_rpm(
                     t.root_diameter_m, app.length_m, app.end_fixity
@@ -107,22 +106,18 @@ class CriticalSpeed(Check):
             "fixity": app.end_fixity,
         }
         text = "{n} " + verb + " the allowed {allowed} ({sf} x critical {n_c}, {fixity})."
-        if s.screw_type == "ball" and _hiwin_governs(app, s, r.column.critical_rpm):
-            beam = critical_speed.critical_speed_rpm(
-                s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3,
-                app.end_fixity,
-            )  # fmt: skip
-            values["lower"] = f"{(1.0 - r.column.critical_rpm / beam) * 100.0:.1f} %"
-            text += (
-                " HIWIN rates it (F 3.27, its mounting factor for these ends) {lower} "
-                "below the beam's."
-            )
-            return Phrase(text, values)
         beam = critical_speed.critical_speed_rpm(
             s.root_diameter_m, app.length_m, s.youngs_modulus_pa, s.density_kg_m3,
             app.end_fixity,
         )  # fmt: skip
         ratio = r.column.critical_rpm / beam
+        if s.screw_type == "ball" and _hiwin_governs(app, s, r.column.critical_rpm):
+            values["lower"] = f"{(1.0 - ratio) * 100.0:.1f} %"
+            text += (
+                " HIWIN rates it (F 3.27, its mounting factor for these ends) {lower} "
+                "below the beam's."
+            )
+            return Phrase(text, values)
         below = ratio < 1.0 and not math.isclose(ratio, 1.0)
         if not below or s.critical_speed_rule == critical_speed.HIWIN_RULE:
             return Phrase(text, values)
