@@ -19,14 +19,24 @@ def _null(value: Any) -> bool:
     return value is None or (isinstance(value, float) and not math.isfinite(value))
 
 
+def _empty(full: Any, view: View | bool) -> bool:
+    """Whether ``full`` is an object none of whose fields in ``view`` is worked out: the
+    compact form leaves such a part out (``app.report.reader``; the parts that may be null,
+    which are the only ones that can be so)."""
+    if not isinstance(full, dict) or view is True:
+        return False
+    return all(_null(full[k]) or _empty(full[k], view[k]) for k in view)
+
+
 def assert_compact_of(compact: Any, full: Any, view: View | bool = True, at: str = "") -> None:
     """``compact`` is ``full`` (JSON values) in the compact form of ``view`` (True: whole):
     each key of the view that is not null in ``full`` and no other, each number to 6
-    significant figures and equal to the full one within ``RELATIVE``."""
+    significant figures and equal to the full one within ``RELATIVE``; a part with nothing
+    in ``view`` worked out is left out."""
     if isinstance(full, dict):
         assert isinstance(compact, dict), at
         shown = full if view is True else view
-        expected = {k for k in shown if not _null(full[k])}
+        expected = {k for k in shown if not _null(full[k]) and not _empty(full[k], shown[k])}
         assert set(compact) == expected, f"{at}: {sorted(set(compact) ^ expected)}"
         for key in expected:
             part = True if view is True else view[key]

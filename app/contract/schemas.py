@@ -250,7 +250,8 @@ VIEWS: dict[str, View] = {
 #: The views of the compact select (and /machine), as JSON: each number to
 #: ``COMPACT_FIGURES`` significant figures, and a value not worked out for this query
 #: (null in the full form, a non-finite number, a check's utilisation where it did not
-#: run) left out rather than given as null. ``detail=full`` gives every field at full
+#: run, a part that may be null none of whose fields in the view is worked out) left out
+#: rather than given as null. ``detail=full`` gives every field at full
 #: precision. ``app.report.reader`` applies it as it reads such a view; ``view_model``
 #: with ``compact`` describes it.
 COMPACT_VIEWS = frozenset({"summary", "rejected"})
@@ -258,7 +259,8 @@ COMPACT_FIGURES = 6
 #: What a compact view model's doc and each of its optional fields add.
 COMPACT_DOC = (
     "The compact form: numbers to 6 significant figures; a value not worked out for this "
-    "query (null in the full form) is absent, never null."
+    "query (null in the full form, or a part none of whose fields shown here is) is "
+    "absent, never null."
 )
 COMPACT_ABSENT = " Absent when not worked out for this query (null in the full form)."
 COMPACT_ENTRIES = " An entry not worked out for this query (null in the full form) is absent."

@@ -222,20 +222,21 @@ class Life(Section):
     def travel_max_m(self) -> float:
         return self.travel_m[1]
 
-    def _years(self, travel_m: float) -> float | None:
-        """``travel_m`` in years of the duty (None without one)."""
+    def _years(self, end: int) -> float | None:
+        """The travel band's low (``end`` 0) or high (1) end in years of the duty (None
+        without one: the travel is then not worked out for it)."""
         stroke, cycles = self.batch.duty
         if not (stroke and cycles):
             return None
-        return number(life.life_years(travel_m, stroke, cycles))
+        return number(life.life_years(self.travel_m[end], stroke, cycles))
 
     @property
     def years_min(self) -> float | None:
-        return self._years(self.travel_m[0])
+        return self._years(0)
 
     @property
     def years_max(self) -> float | None:
-        return self._years(self.travel_m[1])
+        return self._years(1)
 
     @property
     def hours(self) -> tuple[float, float]:

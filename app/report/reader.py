@@ -8,7 +8,8 @@ twenty candidates on every request, so nothing is looked up per call.
 
 A compact view (``COMPACT_VIEWS``) read as JSON is in the compact form: each number to
 ``COMPACT_FIGURES`` significant figures, and a value not worked out for the query (None,
-a non-finite number, a dict's None value) left out; the getters of such a view do it as
+a non-finite number, a dict's None value, a part that may be null with none of its view's
+fields worked out) left out; the getters of such a view do it as
 they read, so the finished dict is never walked again.
 """
 
@@ -91,7 +92,11 @@ def _getter(
     nested, shape = _nested(info.annotation)
     if nested is not None:
         read = reader(nested, view, path, as_dict)
-        return _each(at, _shared(read) if nested.model_config.get("frozen") else read, shape)
+        get = _each(at, _shared(read) if nested.model_config.get("frozen") else read, shape)
+        if compact and shape == "one" and _nullable(info.annotation):
+            # nothing of it worked out for this query (e.g. a life's years without a duty)
+            return lambda s, r, u: v if (v := get(s, r, u)) else None
+        return get
     if source.via is not None:
         via = source.via
         if compact:
@@ -222,6 +227,11 @@ def _nested(annotation: Any) -> tuple[type[BaseModel] | None, str]:
     if isinstance(model, type) and issubclass(model, BaseModel):
         return model, origin.__name__
     return None, ""
+
+
+def _nullable(annotation: Any) -> bool:
+    """Whether a field of this type may be null (is ``X | None``)."""
+    return get_origin(annotation) in (UnionType, Union) and type(None) in get_args(annotation)
 
 
 def _kind(annotation: Any) -> str:

@@ -94,3 +94,19 @@ def test_the_machines_candidates_are_compact_too(client: TestClient) -> None:
         assert null_keys([axis["chosen"], *axis["candidates"]], axis["name"]) == []
         same = next(c for c in axis["candidates"] if c["id"] == axis["chosen"]["id"])
         assert same == axis["chosen"]
+
+
+def test_a_life_without_a_duty_is_left_out_and_with_one_gives_its_years(
+    client: TestClient,
+) -> None:
+    """The summary shows a life as years at the duty. Without a stroke and cycles a day
+    there are no years: a lead screw's wear life (in the full form, as travel) is left out
+    of the compact form, not given as an empty object; with a duty it gives its band of
+    years, low end first."""
+    for c in _select(client, DEFAULT)["candidates"]:
+        assert "life" not in c, c["id"]
+    full = _select(client, DEFAULT, detail="full")["candidates"]
+    assert any(c["screw_type"] == "lead" and c["life"] is not None for c in full)
+    with_duty = _select(client, QUERIES["move-with-motor"])["candidates"]
+    years = [c["life"]["years"] for c in with_duty if "life" in c]
+    assert years and all(0 < low <= high for low, high in years)
