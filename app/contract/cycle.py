@@ -4,13 +4,15 @@ string and a share link carry.
 A move is an object with its units in its names (``distance_mm``: above 0 up or out,
 below 0 down or back; ``speed_mm_s``, ``accel_mm_s2``, ``decel_mm_s2``, ``dwell_s``,
 ``moving_mass_kg``, ``load_n``, ``load_direction``), each bounded as the scalar input of
-the same name (``app.contract.fields``). In a query string the list is one ``moves``
+the same name (``app.contract.fields``); its dwell, mass, load and load direction left out
+are the axis's (those scalar inputs'). In a query string the list is one ``moves``
 parameter, each move ``distance:speed:accel:decel:dwell:mass:load:direction`` in those
 API units and moves joined by ``;`` (``moves_text`` writes it, ``parse_moves_text``
 reads it, for the API and the page alike).
 """
 
 import math
+from collections.abc import Mapping
 from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
@@ -63,6 +65,9 @@ TOO_SHORT = {
 #: A cycle ends where it starts to this share of its longest move: the binary rounding
 #: of the typed decimals, nothing more (``closing_error_mm``).
 CLOSING_SHARE = 1e-12
+#: A move's values that, left out, are the axis's: each the scalar input of the same name,
+#: whose API name is its core name and whose API unit is SI (s, kg, N).
+AXIS_VALUES = ("dwell_s", "moving_mass_kg", "load_n", "load_direction")
 
 
 class MoveIn(BaseModel):
@@ -86,21 +91,30 @@ class MoveIn(BaseModel):
         le=ACCEL[1],
         description="Deceleration [mm/s²]; left out: the acceleration.",
     )
-    dwell_s: float = Field(
-        default=0.0, ge=DWELL[0], le=DWELL[1], description="Rest after the move [s]."
+    dwell_s: float | None = Field(
+        default=None,
+        ge=DWELL[0],
+        le=DWELL[1],
+        description="Rest after the move [s]; left out: the axis's dwell_s.",
     )
-    moving_mass_kg: float = Field(
-        default=0.0, ge=MASS[0], le=MASS[1], description="Mass the move carries [kg]."
+    moving_mass_kg: float | None = Field(
+        default=None,
+        ge=MASS[0],
+        le=MASS[1],
+        description="Mass the move carries [kg]; left out: the axis's moving_mass_kg.",
     )
-    load_n: float = Field(
-        default=0.0, ge=LOAD[0], le=LOAD[1], description="External axial load [N]."
+    load_n: float | None = Field(
+        default=None,
+        ge=LOAD[0],
+        le=LOAD[1],
+        description="External axial load [N]; left out: the axis's load_n.",
     )
-    load_direction: LoadDirection = Field(
-        default="auto",
+    load_direction: LoadDirection | None = Field(
+        default=None,
         description="How the load acts, as the scalar load_direction: auto (down when "
         "vertical, as a weight acts, against the motion when horizontal), opposes "
-        "(against the motion), fixed (against the up or out move). A load has no mass: a "
-        "payload's mass goes in moving_mass_kg.",
+        "(against the motion), fixed (against the up or out move); left out: the axis's "
+        "load_direction. A load has no mass: a payload's mass goes in moving_mass_kg.",
     )
 
     @field_validator("distance_mm")
@@ -113,19 +127,19 @@ class MoveIn(BaseModel):
             raise PydanticCustomError(kind, message, {key: math.copysign(SHORTEST, value)})
         return value
 
-    def to_core(self) -> Move:
-        """The move in SI."""
+    def to_core(self, axis: Mapping[str, Any]) -> Move:
+        """The move in SI; its dwell, mass, load and load direction, where left out, the
+        axis's (``axis``: the application's values in SI by core name; ``AXIS_VALUES``),
+        so that a cycle of moves that gives none of them carries the axis's load."""
         accel = self.accel_mm_s2 * _si("accel_mm_s2")
         decel = accel if self.decel_mm_s2 is None else self.decel_mm_s2 * _si("decel_mm_s2")
+        own = {name: getattr(self, name) for name in AXIS_VALUES}
         return Move(
             distance_m=self.distance_mm * _by_core("stroke_m").si_factor,
             speed_m_s=self.speed_mm_s * _si("speed_mm_s"),
             accel_m_s2=accel,
             decel_m_s2=decel,
-            dwell_s=self.dwell_s,
-            moving_mass_kg=self.moving_mass_kg,
-            load_n=self.load_n,
-            load_direction=self.load_direction,
+            **{name: axis[name] if value is None else value for name, value in own.items()},
         )
 
 

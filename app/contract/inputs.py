@@ -86,8 +86,9 @@ class ApplicationInputs(BaseModel):
         description="The cycle as its moves, each with its own distance, speed, ramps, "
         "dwell, mass and load (``app.contract.cycle``); in a query string one text, "
         "distance:speed:accel:decel:dwell:mass:load:direction in mm, mm/s, mm/s², s, kg "
-        "and N, moves joined by ';'. Empty: out and back over the stroke from the scalar "
-        "inputs. With moves, the stroke (when not given) is the span the nut covers.",
+        "and N, moves joined by ';'; a move's dwell, mass, load or direction left out is "
+        "the axis's (the scalar input). Empty: out and back over the stroke from the "
+        "scalar inputs. With moves, the stroke (when not given) is the span the nut covers.",
     )
 
     @field_validator("*")
@@ -280,7 +281,7 @@ class ApplicationInputs(BaseModel):
         for the axis's own numbers (length, speed, a torque limit typed in)."""
         values = {f.core: f.to_si(getattr(self, f.api)) for f in FIELDS}
         if self.moves:
-            values["moves"] = tuple(m.to_core() for m in self.moves)
+            values["moves"] = tuple(m.to_core(values) for m in self.moves)
             if values["stroke_m"] is None:
                 values["stroke_m"] = span_mm(self.moves) * BY_API[API_OF["stroke_m"]].si_factor
         return Application(**values)

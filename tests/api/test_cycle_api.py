@@ -256,3 +256,26 @@ def test_the_peak_of_a_cycle_names_the_direction_its_move_runs(client: TestClien
     candidate = evaluate(client, "B7000-L8", **axis, moves=moves)
     assert candidate["peak_axial_load_n"] == pytest.approx(60.2941995)
     assert candidate["torque"]["peak_segment"] == "accelerating out, move 2"
+
+
+def test_a_move_without_its_own_mass_load_or_dwell_carries_the_axiss(
+    client: TestClient,
+) -> None:
+    """A move's dwell, mass, load and load direction left out are the axis's scalar
+    inputs: the cycle out and back over 300 mm given as two bare moves (distance, speed,
+    ramps) is the axis's own out and back over a 300 mm stroke, number for number (it
+    was judged at no load and no mass: a 5 kN axis passed on B6000-L10-TFE at 0 N)."""
+    axis = {"load_n": 5000, "moving_mass_kg": 8, "speed_mm_s": 50, "length_mm": 500,
+            "accel_mm_s2": 500, "dwell_s": 0.3, "load_direction": "opposes"}  # fmt: skip
+    bare = "300:50:500;-300:50:500"
+    by_moves = evaluate(client, "B6000-L10-TFE", **axis, moves=bare)
+    by_stroke = evaluate(client, "B6000-L10-TFE", **axis, stroke_mm=300)
+    assert by_moves["axial_load_n"] == by_stroke["axial_load_n"] == 5000
+    # the same torques; the peak's segment named by its move ("move 1") in a cycle of moves
+    same = [k for k in by_stroke["torque"] if k != "peak_segment"]
+    assert [by_moves["torque"][k] for k in same] == [by_stroke["torque"][k] for k in same]
+    assert by_moves["utilization"] == by_stroke["utilization"]
+    assert not by_moves["passed"] and by_moves["governing_check"] == "pv"
+    # a value a move gives is its own: no load back (0 N), the mass alone moved
+    own = evaluate(client, "B6000-L10-TFE", **axis, moves="300:50:500;-300:50:500::::0")
+    assert own["torque"]["rms_nm"] < by_moves["torque"]["rms_nm"]

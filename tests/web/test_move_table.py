@@ -86,7 +86,7 @@ def test_a_move_is_added_by_a_plain_get(client: TestClient) -> None:
     rows = cells(html)
     assert len(rows) == 3
     assert rows[0]["dist"] == "300" and rows[1]["dist"] == "-300"
-    assert rows[2] == {key: "" for key in rows[2] if key != "dir"} | {"dir": "auto"}
+    assert rows[2] == {key: "" for key in rows[2]}  # its direction too: the axis's
     new = html.select_one("#f-m2_dist")
     assert new is not None and new.has_attr("autofocus")
     # the empty new row is no move: no error at it, and the result is the two moves'
@@ -214,7 +214,8 @@ def test_the_custom_screws_page_reads_the_table_too(client: TestClient) -> None:
     link = html.select_one("a.share-link")
     assert link is not None
     moves = dict(parse_qsl(urlsplit(str(link["href"])).query))["moves"]
-    assert moves.startswith("300:250:2500::0:2.5:0:opposes;-300:")  # empty decel: the accel
+    # an empty deceleration is the acceleration; an empty dwell and load the axis's
+    assert moves.startswith("300:250:2500:::2.5::opposes;-300:")
     bad = {**params, "m1_accel": "-1"}
     refused = BeautifulSoup(client.get("/custom?" + urlencode(bad)).text, "html.parser")
     assert refused.select_one("#e-m1_accel").text == "Must be at least 0 mm/s²."
