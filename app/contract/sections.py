@@ -204,11 +204,11 @@ class HoldingTorqueOut(BaseModel):
         description="Holding torque needed: the larger of the seed's and the physics with "
         "margin; 0 when self-locking with margin (before the brake safety factor)."
     )
-    brake_to_fit_nm: Annotated[float, From("brake_needed_nm", "torque")] = Field(
-        description="The brake to fit: brake_nm times the holding safety factor (the brake "
-        "safety factor; when none is given, 1.5 for a brake, else the torque safety "
-        "factor), the torque the holding check asks of a brake; 0 when self-locking with "
-        "margin."
+    brake_to_fit_nm: Annotated[float, From("brake_to_fit_nm", "torque")] = Field(
+        description="The brake to fit: brake_nm times a brake's safety factor (the brake "
+        "safety factor; when none is given, the torque safety factor and at least 1.5), "
+        "the torque the holding check asks of a brake, whatever holds the load now; 0 when "
+        "self-locking with margin."
     )
     available_nm: Annotated[float | None, From("app.brake_torque_nm", "torque")] = Field(
         description="The brake or holding torque given."

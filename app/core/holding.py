@@ -3,7 +3,7 @@ margin, the torque a brake (or the motor) must hold otherwise, and the power-off
 margins.
 """
 
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 
@@ -20,8 +20,9 @@ def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, An
     nothing). The thread counts as self-locking only with static friction reduced by
     ``app.self_locking_friction_factor``; otherwise a brake (or the motor) must hold the
     larger of the seed's value (forward efficiency, running friction) and the physical one
-    at that same distrusted friction (back-drive efficiency at f mu_s), times the brake's
-    safety factor (the torque safety factor when none is given)."""
+    at that same distrusted friction (back-drive efficiency at f mu_s), times the holding
+    safety factor of what holds it (``brake_factor``); a brake fitted to hold it, times a
+    brake's (``brake_to_fit_nm``: at least the service factor, whatever holds it now)."""
     mu_margin = t.friction_static * app.self_locking_friction_factor
     locks = mu_margin >= t.self_locking_friction
     seed = efficiency.holding_torque(force_n, t.lead_m, t.efficiency)
@@ -42,17 +43,26 @@ def holding(app: Application, t: CandidateTable, force_n: float) -> dict[str, An
         "holding_distrusted_nm": distrusted,
         "brake_nm": brake,
         "brake_needed_nm": brake * factor,
+        "brake_to_fit_nm": brake * brake_factor(app, brake=True),
         "locks_with_margin": locks.astype(np.float64),
         "max_self_locking_lead_with_margin_m": max_lock,
     }
 
 
+def unpowered_holder(app: Application) -> Literal["brake", "detent"] | None:
+    """What holds the load with the power off besides the thread: the brake, where the
+    holding torque given is a brake's, else a stepper's detent torque where one is given
+    (its energised holding torque does not count); None: nothing."""
+    if app.holding_source == "brake" and app.brake_torque_nm is not None:
+        return "brake"
+    return None if app.detent_torque_nm is None else "detent"
+
+
 def unpowered_torque(app: Application) -> float | None:
-    """The torque that holds with the power off besides the thread [N m]: a brake's, or
-    a stepper's detent torque (its energised holding torque does not count); None: none."""
-    if app.holding_source == "brake":
-        return app.brake_torque_nm
-    return app.detent_torque_nm
+    """The torque of what holds with the power off besides the thread (``unpowered_holder``)
+    [N m]; None: nothing."""
+    holder = unpowered_holder(app)
+    return app.brake_torque_nm if holder == "brake" else app.detent_torque_nm
 
 
 def hold_margins(
@@ -88,11 +98,14 @@ def hold_margins(
 BRAKE_SERVICE_FACTOR = 1.5
 
 
-def brake_factor(app: Application) -> float:
-    """The safety factor on the holding torque: the one given, else the torque factor,
-    and for a brake at least its service factor (``BRAKE_SERVICE_FACTOR``)."""
+def brake_factor(app: Application, brake: bool | None = None) -> float:
+    """The safety factor on a holding torque: the one given, else the torque factor, and
+    for a brake at least its service factor (``BRAKE_SERVICE_FACTOR``). ``brake``: whether
+    a brake holds (a brake to fit: True); None: whether the given torque that holds is a
+    brake's (``unpowered_holder``; a detent or an energised motor holds by no friction
+    that wears)."""
     if app.brake_safety_factor is not None:
         return app.brake_safety_factor
-    if app.holding_source == "brake":
+    if unpowered_holder(app) == "brake" if brake is None else brake:
         return max(app.torque_safety_factor, BRAKE_SERVICE_FACTOR)
     return app.torque_safety_factor

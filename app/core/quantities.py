@@ -270,8 +270,12 @@ class PowerOffHold(Generic[V]):
     #: the self-locking margin trusts (what the brake is sized on, beside the seed's)
     holding_distrusted_nm: V
     brake_nm: V
-    #: the brake torque to fit: ``brake_nm`` times the brake safety factor (``brake_factor``)
+    #: the holding torque the given brake or motor must hold: ``brake_nm`` times its
+    #: safety factor (``brake_factor``)
     brake_needed_nm: V
+    #: the brake torque to fit: ``brake_nm`` times a brake's safety factor (at least its
+    #: service factor, whatever holds the load now: a brake the fixes ask for)
+    brake_to_fit_nm: V
     locks_with_margin: V
     max_self_locking_lead_with_margin_m: V
     #: Where it is required and a load is held (NaN otherwise): the thread's margin, the

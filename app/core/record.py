@@ -22,6 +22,7 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.back_driving import rule_note
 from app.core.checks.base import Check
 from app.core.formulas import geometry
+from app.core.holding import unpowered_holder
 from app.core.model import (
     PV,
     RMS_ZONE,
@@ -126,6 +127,7 @@ class Candidate:
     holding_torque_with_margin_nm = Column[float]("holding_distrusted_nm")
     brake_nm = Column[float]("brake_nm")
     brake_needed_nm = Column[float]("brake_needed_nm")
+    brake_to_fit_nm = Column[float]("brake_to_fit_nm")
     max_utilization = Column[float]("max_utilization")
     passed = Column[bool]("passed")
 
@@ -291,7 +293,7 @@ class Candidate:
             return None
         if self.quantities.holding.hold_by_thread:
             return "thread"
-        return "brake" if self.app.holding_source == "brake" else "detent"
+        return unpowered_holder(self.app)
 
     @property
     def holding_rule(self) -> Phrase | None:

@@ -270,7 +270,7 @@ class Record(Protocol):
     @property
     def self_locking_with_margin(self) -> bool: ...
     @property
-    def brake_needed_nm(self) -> float: ...
+    def brake_to_fit_nm(self) -> float: ...
     @property
     def life(self) -> Life | None: ...
 
@@ -315,9 +315,9 @@ def watch_list(c: Record) -> tuple[Phrase, ...]:
                 Phrase(f"power off: held by the detent torque at {percent(detent.utilization)}")
             )
         else:
-            # the brake to fit: the torque to hold times the brake's safety factor, as the
-            # holding check sizes it (``holding.holding``)
-            brake = Amount(c.brake_needed_nm, "torque")
+            # the brake to fit: the torque to hold times a brake's safety factor, as the
+            # holding check sizes a brake (``holding.holding``)
+            brake = Amount(c.brake_to_fit_nm, "torque")
             found.append(
                 Phrase("back-drives: a brake of at least {t} holds it power-off", {"t": brake})
             )

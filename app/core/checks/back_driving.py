@@ -18,6 +18,7 @@ from app.core.checks.base import (
 )
 from app.core.checks.holding import brake_or_lead
 from app.core.formulas import efficiency
+from app.core.holding import unpowered_holder
 from app.core.phrase import Amount, Phrase
 
 
@@ -46,11 +47,11 @@ class BackDriving(Check):
     capacity_sources = ("friction_static", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        """Holding with the power off is required, and nothing else holds then: no torque
-        given, or a stepper's energised holding torque without its detent torque."""
-        unpowered = app.holding_source == "energised" and app.detent_torque_nm is None
+        """Holding with the power off is required, and nothing else holds then
+        (``unpowered_holder``): no brake given, nor a stepper's detent torque (its
+        energised holding torque does not count)."""
         needed = app.hold_power_off and motion.holds_a_load(app)
-        return needed and (app.brake_torque_nm is None or unpowered)
+        return needed and unpowered_holder(app) is None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), t.lead_m, q.holding.max_self_locking_lead_with_margin_m)

@@ -108,9 +108,10 @@ class Holding(Check):
 
 
 def brake_or_lead(start: str, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-    """``start`` (naming the torque ``{needed}``), or the largest lead this size is made in
-    that self-locks with margin, when it is made in one."""
-    values = {"needed": least(r.holding.brake_needed_nm, "torque")}
+    """``start`` (naming the brake to fit, ``{needed}``: with a brake's safety factor), or
+    the largest lead this size is made in that self-locks with margin, when it is made in
+    one."""
+    values = {"needed": least(r.holding.brake_to_fit_nm, "torque")}
     # the lead FIX_MARGIN inside the self-locking limit, as the fix promises
     limit = at_most(r.holding.max_self_locking_lead_with_margin_m)
     lead = reach.made_lead(s, limit, larger=False)

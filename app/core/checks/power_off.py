@@ -16,6 +16,7 @@ from app.core.checks.base import (
     same,
 )
 from app.core.checks.holding import brake_or_lead, holding_phrase, needed_symbols
+from app.core.holding import unpowered_holder
 from app.core.phrase import Phrase
 
 
@@ -41,12 +42,10 @@ class HoldingPowerOff(Check):
     sources = ("friction_static", "friction_dynamic", "thread_half_angle")
 
     def applies(self, app: Application) -> bool:
-        return (
-            app.hold_power_off
-            and motion.holds_a_load(app)
-            and app.holding_source == "energised"
-            and app.detent_torque_nm is not None
-        )
+        """Holding with the power off is required and the detent torque given is what holds
+        then (``unpowered_holder``: no brake given)."""
+        needed = app.hold_power_off and motion.holds_a_load(app)
+        return needed and unpowered_holder(app) == "detent"
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(everywhere(t), q.holding.brake_needed_nm, same(t, app.detent_torque_nm))
