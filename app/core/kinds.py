@@ -7,15 +7,26 @@ from collections.abc import Sequence
 import numpy as np
 
 from app.core.checks import BY_NAME
+from app.core.model import Application
 from app.core.phrase import Phrase, plural
-from app.core.screening import Screening
+from app.core.screening import Screening, asked_for
 from app.core.table import Mask
 
 #: How many passing ball screws the summary names.
 NAMED = 3
-#: The shaft's own limits, which any screw of that length and speed meets.
-SHAFT_CHECKS = frozenset({"critical_speed", "buckling", "root_stress"})
 NOT_A_SCREW = "a belt drive, a rack and pinion or a linear motor"
+#: The shaft's own limits, which any screw of that length, speed and thrust meets, when
+#: one excludes the screws of both kinds: what could do it instead.
+SHAFT_CHECKS = {
+    "critical_speed": "no screw shaft this long turns this fast as mounted; stiffer end "
+    "fixing, a screw support or a shorter shaft may (each screw's fix says which), "
+    f"otherwise {NOT_A_SCREW} can",
+    "buckling": "no screw shaft this long carries this thrust in compression as mounted; "
+    "stiffer end fixing, a screw that pulls (tension) or a shorter shaft may (each "
+    f"screw's fix says which), otherwise {NOT_A_SCREW} can",
+    "root_stress": "no screw's root carries this thrust, whatever its length, speed or "
+    "mounting: a larger screw than the catalog's, a roller screw or a hydraulic cylinder",
+}
 
 
 def _most_excluding(sc: Screening, rows: Mask) -> tuple[str, int]:
@@ -66,9 +77,10 @@ def _only_back_driving(sc: Screening, rows: Mask) -> int:
     return int(np.count_nonzero(rows & sc.failed_by_check["back_driving"] & ~others))
 
 
-def neither(sc: Screening) -> Phrase | None:
+def neither(app: Application, sc: Screening) -> Phrase | None:
     """When both kinds were screened and none passes: the limit that excludes the most
-    ball screws, and what kind of drive could do it; None otherwise."""
+    ball screws, and what kind of drive could do it; None otherwise. Of the screws the
+    application asks for (``screening.asked_for``) where it names some."""
     ball = sc.table.ball
     if not ball.any() or not (~ball).any() or sc.passed.any():
         return None
@@ -82,14 +94,13 @@ def neither(sc: Screening) -> Phrase | None:
             "screw with a brake can (each one's fix gives the brake's holding torque)"
         )
     elif name in SHAFT_CHECKS:
-        what = (
-            "no screw shaft this long and fast does as mounted; stiffer end fixing or a "
-            f"shorter shaft may (each screw's fix says which), otherwise {NOT_A_SCREW} can"
-        )
+        what = SHAFT_CHECKS[name]
     else:
         what = f"its fix names what would clear it, or {NOT_A_SCREW}"
     total = int(ball.sum())
+    scope, values = asked_for(app)
     return Phrase(
-        f"Neither a leadscrew nor a ball screw in the catalog can do this: {_label(name)} "
-        f"excludes {count} of {total} ball screws too; {what}."
+        f"Neither a leadscrew nor a ball screw {scope or 'in the catalog'} can do this: "
+        f"{_label(name)} excludes {count} of {total} ball screws too; {what}.",
+        values,
     )

@@ -23,7 +23,7 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.input_rules import inputs_hold
 from app.core.model import FIXITY_ORDER, PASS_UTILIZATION, Application, Remedy
 from app.core.phrase import Phrase
-from app.core.screening import Screening, screen_table
+from app.core.screening import Screening, asked_for, screen_table
 
 #: How far past a limit a proposed input lands: a remedy must pass at a governing
 #: utilisation of at most 1 / (1 + MARGIN).
@@ -141,6 +141,7 @@ def remedies(
 
 
 def impossible(
+    app: Application,
     most_excluding: str | None,
     label: str,
     excludes_all: bool,
@@ -149,9 +150,10 @@ def impossible(
 ) -> Phrase:
     """Why no change tried lets a screw pass. When the check that excludes the most
     excludes every screw, no screw of the ``kind`` screened ("leadscrew", "ball screw" or
-    "screw" for both) can do it: say so and what kind of drive could; otherwise name what
-    the nearest screws fail on (``nearest_fails``, check labels), whose fixes name the
-    change that would clear them."""
+    "screw" for both) can do it: say so, of the screws the application asks for
+    (``asked_for``: a lead, families, a nut or a coating leave others unscreened), and what
+    kind of drive could; otherwise name what the nearest screws fail on (``nearest_fails``,
+    check labels), whose fixes name the change that would clear them."""
     tried = (
         f"no change of load, speed, length, acceleration or mounting tried lets one pass "
         f"with a {MARGIN * 100:.0f} % margin"
@@ -166,7 +168,15 @@ def impossible(
     check = BY_NAME.get(most_excluding or "")
     why = (check and check.why_none) or f"{label} excludes every screw"
     drive = " with this motor" if most_excluding in MOTOR_BOUND else ""
+    scope, values = asked_for(app)
+    if not scope:
+        return Phrase(
+            f"No {kind} in the catalog can do this{drive} within the accepted inputs: "
+            f"{tried}. {why[0].upper()}{why[1:]}."
+        )
     return Phrase(
-        f"No {kind} in the catalog can do this{drive} within the accepted inputs: {tried}. "
-        f"{why[0].upper()}{why[1:]}."
+        f"No {kind} {scope} can do this{drive} within the accepted inputs: {tried}. "
+        f"{why[0].upper()}{why[1:]}. Only the screws asked for were screened: leave the "
+        "choice open to screen the rest of the catalog.",
+        values,
     )

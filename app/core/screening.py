@@ -16,6 +16,7 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.checks.base import Check, Measure, Reach
 from app.core.dry_run import as_run
 from app.core.model import PASS_UTILIZATION, Application
+from app.core.phrase import Amount
 from app.core.quantities import Quantities, operating_point
 from app.core.table import Array, CandidateTable, Mask
 
@@ -111,6 +112,23 @@ def eligible_mask(app: Application, table: CandidateTable) -> Mask:
     if app.coating != "auto":
         mask &= table.coated == (app.coating == "tfe")
     return mask
+
+
+def asked_for(app: Application) -> tuple[str, dict[str, Amount]]:
+    """The screws the application asks for (``eligible_mask``), in words after "No
+    leadscrew" ("of lead {lead}, with a bronze nut", its values); "" when it asks for every
+    screw of the catalog. Only those are screened."""
+    parts, values = [], {}
+    if app.lead_m is not None:
+        parts.append("of lead {lead}")
+        values["lead"] = Amount(app.lead_m, "length")
+    if app.families:
+        parts.append("of the families asked for")
+    if app.nut_material is not None:
+        parts.append(f"with a {app.nut_material} nut")
+    if app.coating != "auto":
+        parts.append("coated" if app.coating == "tfe" else "uncoated")
+    return ", ".join(parts), values
 
 
 def _judge(

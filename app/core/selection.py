@@ -346,7 +346,7 @@ def summarize(
     near_changes = [input_change(c) for c in nearest[:REMEDY_FROM]]
     change = near_changes[0]
     label = BY_NAME[worst].label if worst in BY_NAME else str(worst)
-    both = None if screening is None else kinds.neither(screening)
+    both = None if screening is None else kinds.neither(app, screening)
     parts = [
         *([both] if both is not None else []),
         *note,
@@ -464,4 +464,4 @@ def _remedies(
         return found, None
     worst, label, excludes_all = most
     fails = list(dict.fromkeys(k.label for c in near for k in c.failed_checks))
-    return found, impossible(worst, label, excludes_all, fails, kinds.screened(sc))
+    return found, impossible(app, worst, label, excludes_all, fails, kinds.screened(sc))

@@ -63,7 +63,10 @@ def test_5_kn_at_1_m_s_over_2_m_is_beyond_every_screw_as_mounted(client: TestCli
     assert summary["message"].startswith("Neither a leadscrew nor a ball screw")
     assert "a belt drive, a rack and pinion or a linear motor" in summary["message"]
     # the limit is the mounting's: the message says so, since fixed-fixed ends clear some
-    assert "as mounted; stiffer end fixing or a shorter shaft may" in summary["message"]
+    assert (
+        "as mounted; stiffer end fixing, a screw support or a shorter shaft may"
+        in (summary["message"])
+    )
     assert any(r["inputs"] == {"end_fixity": "fixed-fixed"} for r in summary["remedies"])
     ball = _evaluate(client, FAST, "R50-40K3-FSCDIN")
     assert ball["rpm"] == pytest.approx(1500.0)
@@ -144,3 +147,34 @@ def test_a_50_kg_lift_at_100_mm_s_needs_a_ball_screw_with_a_brake(client: TestCl
     years = (5500 / (1.2 * mean_n)) ** 3 * 1e6 * 0.005 / (0.8 * 1000) / 365
     assert years == pytest.approx(13.96, rel=WITHIN)
     assert ball["life"]["years"][0] == pytest.approx(years, rel=WITHIN)
+
+
+def test_the_no_pass_claims_are_of_the_screws_asked_for(client: TestClient) -> None:
+    """A 5 kg vertical axis asked on a 10 mm lead: every screw of that lead back-drives,
+    but six of lead 5 mm self-lock. The summary says no screw of lead 10 mm can do it,
+    not none in the catalog (it did, with the nearest screw's fix naming the 5 mm lead)."""
+    axis = ("load_n=100&moving_mass_kg=5&orientation=vertical&speed_mm_s=50&length_mm=500"
+            "&stroke_mm=300")  # fmt: skip
+    asked = _select(client, axis + "&lead_mm=10")
+    assert asked["counts"]["passed"] == 0
+    said = asked["summary"]["impossible"]
+    assert said.startswith("No screw of lead 10 mm can do this"), said
+    assert "in the catalog" not in said.split(".")[0]
+    assert said.endswith("leave the choice open to screen the rest of the catalog.")
+    assert "Neither a leadscrew nor a ball screw of lead 10 mm" in asked["summary"]["message"]
+    assert _select(client, axis + "&lead_mm=5")["counts"]["passed"] > 0
+
+
+def test_a_thrust_that_yields_every_root_is_not_blamed_on_length_or_speed(
+    client: TestClient,
+) -> None:
+    """400 kN on 60 mm at 5 mm/s, ends fixed: root stress (P / A at yield, which length,
+    speed and mounting do not change) excludes every screw. The summary says no root
+    carries the thrust and names what carries such thrusts, not a shorter or slower shaft
+    or a belt."""
+    message = _select(client, "load_n=400000&speed_mm_s=5&length_mm=60&end_fixity=fixed-fixed")[
+        "summary"
+    ]["message"]
+    assert "Root stress (yield) excludes 57 of 57 ball screws too" in message
+    assert "no screw's root carries this thrust, whatever its length, speed or mounting" in message
+    assert "this long" not in message and "belt" not in message

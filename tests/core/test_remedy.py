@@ -117,7 +117,8 @@ def test_when_no_change_helps_it_says_no_leadscrew_can_and_why(catalog: Catalog)
     assert summary.remedies == ()
     assert summary.impossible is not None
     text = summary.impossible.template
-    assert text.startswith("No leadscrew in the catalog can do this")
+    # the leadscrew families asked for, and no others, were screened: the claim is theirs
+    assert text.startswith("No leadscrew of the families asked for can do this")
     assert "temperature" in text and "5 % margin" in text
 
 
@@ -137,7 +138,7 @@ def test_when_only_ball_screws_were_screened_it_names_ball_screws(catalog: Catal
     summary = select(app, catalog.index, INPUT_RANGES).summary
     assert summary.impossible is not None
     text = summary.impossible.template
-    assert text.startswith("No ball screw in the catalog can do this"), text
+    assert text.startswith("No ball screw of the families asked for can do this"), text
     assert "leadscrew" not in text
 
 
@@ -164,17 +165,25 @@ def test_when_some_screws_are_excluded_otherwise_it_does_not_say_no_leadscrew_ca
     assert summary.remedies == ()
     assert summary.impossible is not None
     text = summary.impossible.template
-    assert text.startswith("No leadscrew in the catalog can do this with this motor")
+    assert text.startswith(
+        "No leadscrew of lead {lead}, of the families asked for can do this with this motor"
+    )
+    assert text.endswith("leave the choice open to screen the rest of the catalog.")
     assert "a larger motor or a gearbox" in text
+
+
+#: an axis that asks for no lead, family, nut or coating: every screw of the catalog
+ANY_SCREW = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5)
 
 
 def test_why_none_is_the_excluding_checks_own_text() -> None:
     """The sentence for a check that excludes every screw is the one its module gives
     (``Check.why_none``), and only a motor check adds 'with this motor'."""
-    speed = impossible("critical_speed", "Critical speed", True, (), "leadscrew")
+    speed = impossible(ANY_SCREW, "critical_speed", "Critical speed", True, (), "leadscrew")
     assert BY_NAME["critical_speed"].why_none[1:] in speed.template
+    assert speed.template.startswith("No leadscrew in the catalog can do this")
     assert "with this motor" not in speed.template
-    rms = impossible("motor_rms", "Motor RMS torque", True, (), "leadscrew")
+    rms = impossible(ANY_SCREW, "motor_rms", "Motor RMS torque", True, (), "leadscrew")
     assert "with this motor" in rms.template
     assert BY_NAME["motor_rms"].why_none[1:] in rms.template
 
@@ -182,7 +191,7 @@ def test_why_none_is_the_excluding_checks_own_text() -> None:
 def test_a_check_without_its_own_text_is_named() -> None:
     checks = [c for c in REGISTRY if not c.why_none]
     assert checks, "every check has a text: this test has nothing to try"
-    text = impossible(checks[0].name, checks[0].label, True, (), "screw").template
+    text = impossible(ANY_SCREW, checks[0].name, checks[0].label, True, (), "screw").template
     assert f"{checks[0].label[1:]} excludes every screw" in text
 
 
