@@ -144,10 +144,10 @@ class ApplicationInputs(BaseModel):
         context = info.context if isinstance(info.context, dict) else {}
         return check_support(SUPPORT.to_si(value), context.get("supports"))
 
-    @field_validator("bearing_to_nut_mm", check_fields=False)
+    @field_validator("bearing_to_nut_mm", "nut_length_mm", check_fields=False)
     @classmethod
     def _within_length(cls, value: float | None, info: ValidationInfo) -> float | None:
-        """The span from the thrust bearing to the nut lies on the screw."""
+        """The span from the thrust bearing to the nut, and the nut, lie on the screw."""
         length = info.data.get(LENGTH.api)
         if value is not None and length is not None and value > length:
             raise ValueError(f"at most the screw length, {length:g} ({LENGTH.api})")

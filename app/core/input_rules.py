@@ -37,11 +37,10 @@ def read_inputs(app: Application, limits: Mapping[str, float] | None) -> dict[st
 def least_inputs(app: Application) -> dict[str, float]:
     """The least value of each input that the other inputs' rules set: the screw's
     length, at least the stroke and the nut length given (the input table's rule,
-    ``ApplicationInputs._stroke_fits``) and the span from the thrust bearing to the nut
-    given (``ApplicationInputs._within_length``); ``inputs_hold``."""
+    ``ApplicationInputs._stroke_fits``), the nut length alone and the span from the thrust
+    bearing to the nut given (``ApplicationInputs._within_length``); ``inputs_hold``."""
     least = [app.stroke_m + (app.nut_length_m or 0.0)] if app.stroke_m is not None else []
-    if app.bearing_to_nut_m is not None:
-        least.append(app.bearing_to_nut_m)
+    least += [v for v in (app.nut_length_m, app.bearing_to_nut_m) if v is not None]
     return {"length_m": max(least)} if least else {}
 
 

@@ -300,6 +300,8 @@ VALUES = {field.api: _value(field) for field in FIELDS}
 def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
     """Valid inputs over the whole table; a field with ``needs`` only with them."""
     data = {field.api: draw(VALUES[field.api]) for field in FIELDS}
+    if (data["nut_length_mm"] or 0.0) > data["length_mm"]:
+        data["nut_length_mm"] = None  # the nut lies on the screw
     if data["stroke_mm"] is not None:  # the nut travels between the screw's ends
         room = data["length_mm"] - (data["nut_length_mm"] or 0.0)
         data["stroke_mm"] = data["stroke_mm"] if data["stroke_mm"] <= room else None
