@@ -188,15 +188,18 @@ def describe_change(
     app: Application, change: Mapping[str, float | str], words: Words | None = None
 ) -> Phrase:
     """The change in words: "reduce the axial load to {value}" per input, each named by
-    ``words`` ("mount the ends fixed-fixed" for the end fixity)."""
+    ``words`` ("mount the ends fixed-fixed" for the end fixity), each value rounded for
+    the reader away from the limit it clears (a reduction down, a rise up)."""
     parts = []
     for key, value in change.items():
         if isinstance(value, str):
             parts.append(Phrase("mount the ends {v}", {"v": value}))
             continue
         label, quantity = input_words(key, words or {})
-        verb = "reduce" if value < getattr(app, key) else "set"
-        parts.append(Phrase(f"{verb} the {label} to {{v}}", {"v": Amount(value, quantity)}))
+        less = value < getattr(app, key)
+        # shown rounded away from the limit the change clears: a reduction down, a rise up
+        amount = Amount(value, quantity, "down" if less else "up")
+        parts.append(Phrase(f"{'reduce' if less else 'set'} the {label} to {{v}}", {"v": amount}))
     return join(parts, " and ")
 
 

@@ -6,6 +6,7 @@ its makers' C_s = 1.47 times simple-simple (Thomson, Roton); g = 9.80665 m/s^2; 
 default acceleration 1 m/s^2."""
 
 import math
+import re
 from typing import Any
 
 import pytest
@@ -178,3 +179,15 @@ def test_a_thrust_that_yields_every_root_is_not_blamed_on_length_or_speed(
     assert "Root stress (yield) excludes 57 of 57 ball screws too" in message
     assert "no screw's root carries this thrust, whatever its length, speed or mounting" in message
     assert "this long" not in message and "belt" not in message
+
+
+def test_a_reduction_is_shown_rounded_down(client: TestClient) -> None:
+    """The change offered, 142,952 N, is shown as 142,900 N (it was 143,000 N: above the
+    load it verified)."""
+    summary = _select(client, "load_n=400000&speed_mm_s=5&length_mm=60&end_fixity=fixed-fixed")[
+        "summary"
+    ]
+    verified = summary["remedies"][0]["inputs"]["load_n"]
+    shown = re.search(r"reduce the axial load to ([0-9,]+) N", summary["message"])
+    assert shown is not None and verified == pytest.approx(142_952.4, abs=0.1)
+    assert float(shown[1].replace(",", "")) == 142_900
