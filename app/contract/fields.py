@@ -379,7 +379,7 @@ FIELDS: tuple[InputField, ...] = (
     InputField(
         api="dwell_s", page="dwell", core="dwell_s", label="Dwell",
         help="Rest after each move, out and back (needs a stroke)", group="Motor and move",
-        kind="number", default=0.0, bounds=(0.0, 1e6), dimension="time",
+        kind="number", default=0.0, bounds=(0.0, 1e6), dimension="time", needs=("stroke_mm",),
     ),
     InputField(
         api="critical_speed_safety_factor", page="critical_speed_safety_factor",

@@ -94,19 +94,21 @@ class ApplicationInputs(BaseModel):
     @field_validator("*")
     @classmethod
     def _needs(cls, value: Any, info: ValidationInfo) -> Any:
-        """A field with ``needs`` (the required life) is refused without those fields. A
-        cycle of moves gives the stroke (the span the nut covers: ``axis``).
+        """A field with ``needs`` (the required life) is refused without those fields,
+        unless it is left at its default (a dwell of 0). A cycle of moves gives the stroke
+        (the span the nut covers: ``axis``).
 
         Fields validate in table order, after ``moves``, so the needed ones are already
         in ``info.data``.
         """
         field = BY_API.get(str(info.field_name))
-        needs = () if field is None else field.needs
-        given = {name for name in needs if info.data.get(name) is not None}
+        if field is None or value is None or value == field.default:
+            return value
+        given = {name for name in field.needs if info.data.get(name) is not None}
         if info.data.get("moves"):
             given.add(API_OF["stroke_m"])
-        if value is not None and not given.issuperset(needs):
-            raise ValueError("needs " + " and ".join(needs))
+        if not given.issuperset(field.needs):
+            raise ValueError("needs " + " and ".join(field.needs))
         return value
 
     @field_validator("hours_per_day", check_fields=False)

@@ -190,6 +190,17 @@ def test_required_life_needs_the_duty() -> None:
     assert ApplicationIn.model_validate({**REQUIRED, **hours}).to_core(MOTORS).hours_per_day == 8
 
 
+def test_a_dwell_needs_a_stroke_or_moves_unless_it_is_none() -> None:
+    """A dwell is the rest after each move: without a stroke or moves there is no move,
+    and a dwell given is refused rather than read as nothing; 0, the default, is none."""
+    with pytest.raises(ValueError, match="needs stroke_mm"):
+        ApplicationIn.model_validate({**REQUIRED, "dwell_s": 1})
+    assert ApplicationIn.model_validate({**REQUIRED, "dwell_s": 0}).dwell_s == 0
+    moves = "100:50:500;-100:50:500"
+    given = ApplicationIn.model_validate({**REQUIRED, "dwell_s": 1, "moves": moves})
+    assert [m.dwell_s for m in given.to_core(MOTORS).moves] == [1.0, 1.0]
+
+
 def test_the_duty_is_cycles_or_hours_never_both() -> None:
     """Both given could disagree: a field-level error on the hours."""
     both = {"stroke_mm": 100, "cycles_per_day": 10, "hours_per_day": 8}
@@ -298,7 +309,8 @@ VALUES = {field.api: _value(field) for field in FIELDS}
 
 @st.composite
 def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
-    """Valid inputs over the whole table; a field with ``needs`` only with them."""
+    """Valid inputs over the whole table; a field with ``needs`` only with them (else at
+    its default)."""
     data = {field.api: draw(VALUES[field.api]) for field in FIELDS}
     if (data["nut_length_mm"] or 0.0) > data["length_mm"]:
         data["nut_length_mm"] = None  # the nut lies on the screw
@@ -311,7 +323,7 @@ def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
         data["cycles_per_day"] = None  # more cycles than a day holds
     for field in FIELDS:
         if any(data[name] is None for name in field.needs):
-            data[field.api] = None
+            data[field.api] = field.default  # none given (a dwell's 0)
     if data["cycles_per_day"] is not None:
         data["hours_per_day"] = None  # the duty is cycles or hours a day, not both
     if data["cycles_per_day"] is None and data["hours_per_day"] is None:
