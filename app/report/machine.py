@@ -72,10 +72,16 @@ def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
 def _sized(given: Any, r: AxisResult) -> Any:
     """The axis's inputs (or one move's) as it was sized: the mass of the axes above
     added to its moving mass and, where it is sized with it, their standing load to its
-    load, acting down (``app.core.machine.with_standing_load``)."""
-    update: dict[str, Any] = {MOVING_MASS.api: getattr(given, MOVING_MASS.api) + r.carried_kg}
+    load, acting down (``app.core.machine.with_standing_load``). A move's mass or load left
+    out stays so: it is the axis's, which carries them."""
+    update: dict[str, Any] = {}
+    mass = getattr(given, MOVING_MASS.api)
+    if mass is not None:
+        update[MOVING_MASS.api] = mass + r.carried_kg
     if r.standing_load_n > 0.0:
-        update[LOAD.api] = getattr(given, LOAD.api) + r.standing_load_n
+        load = getattr(given, LOAD.api)
+        if load is not None:
+            update[LOAD.api] = load + r.standing_load_n
         update[LOAD_DIRECTION.api] = "fixed"
     return given.model_copy(update=update)
 

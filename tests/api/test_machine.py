@@ -188,3 +188,29 @@ def test_a_vertical_lift_is_sized_and_linked_with_the_load_standing_on_it(
     assert "load=100" in low["share_url"] and "load_direction=fixed" in low["share_url"]
     page = client.get(low["share_url"])
     assert page.status_code == 200 and low["chosen"]["id"] in page.text
+
+
+def test_axes_of_bare_moves_take_their_mass_and_load_from_the_axis(client: TestClient) -> None:
+    """Moves that leave out their mass and load (a share link's moves, as the page writes
+    them from empty cells) are the axis's: X of bare moves under Z carries Z as X's own
+    stroke does, and a lift of bare moves under Z with a 100 N load stands that load on
+    its nut. Both were answered with a 500 (the mass above added to a move's None)."""
+    bare = "300:100:1000;-300:100:1000"
+    by_moves = printer()
+    by_moves["axes"][1]["inputs"] = {**X, "moves": bare}
+    r = client.post("/api/v1/machine", json=by_moves)
+    assert r.status_code == 200, r.text
+    x_moves = r.json()["axes"][1]
+    x_stroke = client.post("/api/v1/machine", json=printer()).json()["axes"][1]
+    assert x_moves["carried_kg"] == x_stroke["carried_kg"] > 0
+    assert x_moves["sized_mass_kg"] == pytest.approx(x_stroke["sized_mass_kg"], rel=1e-12)
+    assert x_moves["chosen"]["id"] == x_stroke["chosen"]["id"]
+    assert client.get(x_moves["share_url"]).status_code == 200
+    lift = {**Z, "moving_mass_kg": 0.2, "lead_mm": None, "moves": "150:10:200;-150:10:200"}
+    body = {"axes": [{"name": "Z", "inputs": {**Z, "load_n": 100}}, {"name": "L", "inputs": lift}]}
+    r = client.post("/api/v1/machine", json=body)
+    assert r.status_code == 200, r.text
+    low = r.json()["axes"][1]
+    assert low["standing_load_n"] == 100.0
+    page = client.get(low["share_url"])
+    assert page.status_code == 200 and low["chosen"]["id"] in page.text

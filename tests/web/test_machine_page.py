@@ -148,3 +148,12 @@ def test_a_vertical_axis_below_says_it_carries_the_load_standing_on_it(
     text = re.sub(r"\s+", " ", re.sub("<[^>]+>", " ", page.text))
     assert "Z above is vertical as this axis: its standing load, 100 N down, is in this" in text
     assert "up to 0.1 N beyond its weight and that load to this nut" in text
+
+
+def test_an_axis_linked_with_bare_moves_is_sized(client: TestClient) -> None:
+    """The selector's share link of a two-move cycle with its mass and load left to the
+    axis (empty cells): the page sized it (it answered 500)."""
+    link = "/?load=0&speed=30&length=400&moves=200:30:1000:::::;-200:30:1000:::::"
+    page = client.get("/machine?" + urlencode({"name1": "X", "link1": link}))
+    assert page.status_code == 200
+    assert len(rows(page.text)) == 1
