@@ -154,6 +154,29 @@ def test_a_vanishing_load_gives_the_mean_load_advice_without_a_life(client: Test
     assert check["passed"] and "rated life" not in check["message"]
 
 
+def test_a_preloaded_nut_wears_out_under_no_thrust_and_a_nut_with_play_does_not(
+    client: TestClient,
+) -> None:
+    """No load, no mass: only the preload loads the balls. R16-16K2-FSC (Ca 6800 N,
+    preload 5 % of Ca, 340 N on each side): L1 = L2 = (6800 / (1.2 x 340))^3 x 10^6 rev,
+    combined L = 2^(-9/10) L1 (HIWIN sec. 3.7.2 d)), over 800 mm of travel a cycle at a
+    16 mm lead and 5,000 cycles a day: 27.19 years, short of 40. The check did not run
+    without thrust, and the screw passed. R16-16K3-FSCDIN, a nut with play, has no load
+    on its balls: it passes with no life worked out."""
+    axis = {"load_n": 0, "speed_mm_s": 200, "length_mm": 600, "stroke_mm": 400,
+            "cycles_per_day": 5000, "required_life_years": 40}  # fmt: skip
+    one_side = (6800 / (1.2 * 340)) ** 3 * 1e6
+    revolutions = 2 ** (-0.9) * one_side
+    years = revolutions / (0.8 / 0.016 * 5000 * 365)
+    assert years == pytest.approx(27.19, abs=0.01)
+    preloaded = _check(client, "ball_life", catalog_id="R16-16K2-FSC", **axis)
+    assert preloaded["limit"] == pytest.approx(years, rel=1e-6)
+    assert not preloaded["passed"] and not preloaded["screw"]["passed"]
+    play = _check(client, "ball_life", catalog_id="R16-16K3-FSCDIN", **axis)
+    assert play["passed"] and play["utilization"] == 0.0 and play["limit"] is None
+    assert "no fatigue" in play["message"] and "inf" not in play["message"]
+
+
 def test_a_short_stroke_carries_the_whole_first_band_of_its_class(client: TestClient) -> None:
     """R12-05K4-FSCDIN, rolled T7, over a 100 mm stroke against 0.05 mm: HIWIN Table 3.3
     v300p = 52 um is the variation allowed within any 300 mm, not a rate, so the 100 mm

@@ -32,12 +32,6 @@ SHORT_NOTE = (
 )
 
 
-def mean_load(app: Application) -> float:
-    """The cycle's cubic mean axial load [N], each moving segment weighted by its travel
-    (its revolutions); 0 without a stroke."""
-    return float(ballscrew.cubic_mean_load(*travel_thrusts(app)))
-
-
 def life_years(
     app: Application,
     dynamic_load_n: Array,
@@ -96,12 +90,11 @@ class BallLife(Check):
     capacity_sources = ("dynamic_load", "preload")
 
     def applies(self, app: Application) -> bool:
-        # the cheap conditions first: the mean load works out the whole cycle
+        """A life is required of a duty over a stroke. Whatever the thrust: a preloaded
+        nut's balls carry its preload with no thrust at all (a nut with play then lives
+        forever, and passes)."""
         return bool(
-            app.required_life_years is not None
-            and app.stroke_m
-            and motion.cycles_per_day(app)
-            and mean_load(app) > 0.0
+            app.required_life_years is not None and app.stroke_m and motion.cycles_per_day(app)
         )
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
@@ -142,6 +135,12 @@ class BallLife(Check):
             "fw": Amount(factor, "factor"),
         }
         short = SHORT_NOTE if factor > app.ball_load_factor else ""
+        if not np.isfinite(years[0]):
+            return Phrase(
+                "No thrust loads the balls over the cycle and the nut has no preload: no "
+                "fatigue, whatever the life required ({required}).",
+                values,
+            )
         if not (s.preload_n and s.preload_n > 0.0):
             text = (
                 verb + ", {required} required: Ca = {ca} against the cycle's cubic mean load "
