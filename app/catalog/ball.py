@@ -318,13 +318,29 @@ def _preload_provenance(family: Entry, columns: Mapping[str, Provenance]) -> dic
     return out
 
 
+def _each(values: list[Any]) -> Any:
+    """A size's value: the one every nut has, else each nut's in the order of its leads
+    (two of them read as the range of the size's nuts)."""
+    return values[0] if all(v == values[0] for v in values) else values
+
+
 def _display(specs: list[ScrewSpec], prov: Mapping[str, Provenance]) -> dict[str, Sourced]:
-    """A size's fields as the catalog page and API show them: the family's values and
-    the leads it is made in (each nut's own ratings are on its candidate)."""
+    """A size's fields as the catalog page and API show them: the family's values, the
+    leads it is made in and its nuts' diameters, lengths and ratings (one value where
+    every nut has it, else each nut's in the order of the leads)."""
+    specs = sorted(specs, key=lambda s: s.lead_m)
     first = specs[0]
     values: dict[str, tuple[Any, str]] = {
         "screw_type": ("ball", ""),
-        "leads": (sorted(s.lead_m for s in specs), "m"),
+        "leads": ([s.lead_m for s in specs], "m"),
+        "outer_diameter": (_each([s.outer_diameter_m for s in specs]), "m"),
+        "root_diameter": (_each([s.root_diameter_m for s in specs]), "m"),
+        "ball_diameter": (_each([s.ball_diameter_m for s in specs]), "m"),
+        "nut_length": (_each([s.nut_length_m for s in specs]), "m"),
+        "dynamic_load": (_each([s.dynamic_load_n for s in specs]), "N"),
+        "static_load": (_each([s.static_load_n for s in specs]), "N"),
+        "preload": (_each([s.preload_n for s in specs]), "N"),
+        "temperature_range": ((first.temperature_min_c, first.temperature_max_c), "C"),
         "dn_limit": (first.dn_limit_mm_rpm, "mm rpm"),
         "critical_speed_rule": (first.critical_speed_rule, ""),
         "buckling_rule": (first.buckling_rule, ""),

@@ -14,7 +14,17 @@ from app.catalog.models import Sourced
 from app.core.model import Provenance
 from app.core.units import SI_UNITS, UNITS, to_si
 
-PROVENANCE_KINDS = ("seed", "standard", "handbook", "vendor", "derived", "assumed", "user")
+#: Where a value comes from, each kind in words: what the catalog pages' legend says.
+PROVENANCE_MEANINGS = {
+    "seed": "printed in the manufacturer's data this catalog is built from",
+    "standard": "set by a standard (ISO thread dimensions)",
+    "handbook": "a standard reference",
+    "vendor": "a maker's published catalog or data sheet",
+    "derived": "computed from other values",
+    "assumed": "a stated assumption where the data is silent",
+    "user": "typed in by you",
+}
+PROVENANCE_KINDS = tuple(PROVENANCE_MEANINGS)
 
 
 def _is_number(value: object) -> TypeGuard[int | float]:

@@ -6,6 +6,7 @@ import pydantic_core
 from fastapi.templating import Jinja2Templates
 
 from app.catalog.axis_motor import CURVE_ORIGINS
+from app.catalog.entry import PROVENANCE_MEANINGS
 from app.contract.figures import apart, sig
 from app.core.phrase import figures
 from app.core.wording import percent, times, value_label
@@ -44,4 +45,6 @@ templates.env.filters["times"] = times
 templates.env.globals["value_label"] = value_label
 #: where a motor curve comes from, in words (the results' and the report's footnotes)
 templates.env.globals["curve_origins"] = CURVE_ORIGINS
+#: each provenance kind in words (the catalog pages' legend)
+templates.env.globals["provenance_meanings"] = PROVENANCE_MEANINGS
 templates.env.filters["value_label"] = value_label

@@ -9,7 +9,7 @@ import pytest
 from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
-from app.catalog import Catalog
+from app.catalog import PROVENANCE_KINDS, Catalog
 
 HX = {"HX-Request": "true"}
 
@@ -104,3 +104,38 @@ def test_a_candidates_detail_links_every_value_of_its_series(
         series = _page(client, href)
         assert series.select_one("h1")["data-series"] == series_id
         assert series.select("table.series-fields tr[data-field] td.source")
+
+
+def test_a_ball_screw_size_shows_its_nuts_diameters_lengths_and_ratings(
+    client: TestClient, catalog: Catalog
+) -> None:
+    """HIWIN-GROUND R32 (HIWIN Table 6.4): the values its candidates are judged with, with
+    their provenance, one value where every nut has it (the 32 mm outer diameter), else
+    each nut's in the order of the leads (Cdyn 18.4 to 12.4 kN over leads 5 to 40 mm). The
+    size showed its leads alone, and the overview '—' for its diameters."""
+    fields = client.get("/api/v1/series/" + quote("HIWIN-GROUND R32")).json()["fields"]
+    nuts = sorted(
+        (s for s in catalog.by_id.values() if s.series_id == "HIWIN-GROUND R32"),
+        key=lambda s: s.lead_m,
+    )
+    assert fields["leads"]["value"] == [s.lead_m for s in nuts] == [0.005, 0.01, 0.02, 0.032, 0.04]
+    assert fields["outer_diameter"]["value"] == 0.032
+    assert fields["dynamic_load"]["value"] == [s.dynamic_load_n for s in nuts]
+    assert fields["dynamic_load"]["value"] == [18400, 30800, 19000, 12800, 12400]
+    assert fields["static_load"]["value"] == [s.static_load_n for s in nuts]
+    assert fields["nut_length"]["value"] == [s.nut_length_m for s in nuts]
+    assert fields["root_diameter"]["value"] == [s.root_diameter_m for s in nuts]
+    for name in ("outer_diameter", "dynamic_load", "static_load", "nut_length"):
+        assert fields[name]["provenance"]["kind"] == "vendor", name
+    assert fields["preload"]["provenance"]["kind"] == "assumed"
+    overview = _page(client, "/catalog")
+    row = next(r for r in overview.select("tr") if r.find(string=re.compile(r"^HIWIN-GROUND R32$")))
+    assert "32" in row.get_text(" ") and "28.74" in row.get_text(" ")
+
+
+def test_the_legend_names_every_provenance_kind(client: TestClient) -> None:
+    """Every kind a catalog value may carry is explained where values are listed (the
+    legend left out 'vendor', the kind of every ball screw value, 'standard' and 'user')."""
+    for path in ("/catalog", "/catalog/" + quote("HIWIN-GROUND R32")):
+        legend = _page(client, path).select("span.kind")
+        assert {s.get_text() for s in legend} >= set(PROVENANCE_KINDS), path
