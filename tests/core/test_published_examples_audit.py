@@ -1,11 +1,12 @@
-"""Further published worked examples run through the core: three of Bhandari's power-screw
+"""Further published worked examples run through the core: five of Bhandari's power-screw
 examples and THK's ball-screw shaft rules for all four mountings.
 
 Bhandari, Design of Machine Elements, 3rd ed. (Tata McGraw-Hill, 2010), ch. 6 "Power
 Screws", the figures as the FOSSEE Scilab textbook companion works them
-(github.com/FOSSEE/Scilab-TBC-Uploads, 764/CH6, result6_2.txt, result6_5.txt,
-result6_7.txt). Bhandari takes the mean diameter d_m = d - 0.5 p, the core diameter
-d - p for a square thread, and an ISO trapezoidal thread's friction as mu sec 15 deg.
+(github.com/FOSSEE/Scilab-TBC-Uploads, 764/CH6, result6_1.txt, result6_2.txt,
+result6_5.txt, result6_6.txt, result6_7.txt). Bhandari takes the mean diameter
+d_m = d - 0.5 p, the core diameter d - p for a square thread, and an ISO trapezoidal
+thread's friction as mu sec 15 deg.
 
 - Example 6.2: Tr100x12, two starts (lead 24 mm), raising 300 kN, mu 0.15, no collar:
   torque to raise 3378.16 N m, to lower 1030.69 N m, efficiency 33.92 %; the screw
@@ -117,6 +118,39 @@ def test_bhandari_6_7_power_at_the_feed_rate() -> None:
     watts = total * rpm * 2.0 * math.pi / 60.0
     assert watts == pytest.approx(347.3, rel=WITHIN)  # printed 0.3473 kW
     assert torque.load_torque(500.0, screw.lead_m, 1.0) / total == pytest.approx(0.1200, rel=WITHIN)
+
+
+def _collar_nm(mu: float, load_n: float, outer_m: float, inner_m: float) -> float:
+    """Bhandari's friction collar under uniform wear, mu W (D_o + D_i) / 4 [N m]: a term
+    of his screw jacks the core has no part for (an axis's thrust bearing is a drag)."""
+    return mu * load_n * (outer_m + inner_m) / 4.0
+
+
+def test_bhandari_6_1_an_overhauling_three_start_thread() -> None:
+    """Square 50 x 8, three starts (lead 24 mm, d_m 46 mm), 15 kN, mu 0.15 on the thread
+    and on a collar of 100 / 65 mm (92.81 N m): to raise 204.644 N m, 409.29 N on a
+    500 mm arm; to lower 87.402 N m, the collar's 92.81 less the 5.41 N m the load gives
+    back through a thread that overhauls (tan lambda 0.1661 > mu: the core's signed
+    back-drive efficiency above 0, the thread's torque below 0). EX6.1, result6_1.txt."""
+    screw = _thread("Sq50x8-3", 0.050, 0.008, 3, 0.0, 0.15)
+    collar = _collar_nm(0.15, 15e3, 0.100, 0.065)
+    raise_nm = _thread_torque(screw, 15e3) + collar
+    lower_nm = _thread_torque(screw, -15e3) + collar
+    assert raise_nm == pytest.approx(204.644, rel=WITHIN)
+    assert raise_nm / 0.500 == pytest.approx(409.288, rel=WITHIN)
+    assert lower_nm == pytest.approx(87.4015, rel=WITHIN)
+    assert _thread_torque(screw, -15e3) < 0.0
+    assert not bool(CandidateTable.build([screw]).self_locking[0])
+
+
+def test_bhandari_6_6_a_trapezoidal_lead_screws_power() -> None:
+    """Tr52 x 8, single start (d_m 48 mm, mu 0.15 as mu sec 15 deg), 2 kN at 30 rpm, and
+    a collar of 100 / 60 mm at mu 0.12 (9.6 N m): 0.061838 kW, overall efficiency
+    W l / (2 pi T) = 12.937 %. EX6.6, result6_6.txt."""
+    screw = _thread("Tr52x8", 0.052, 0.008, 1, 15.0, 0.15)
+    total = _thread_torque(screw, 2e3) + _collar_nm(0.12, 2e3, 0.100, 0.060)
+    assert total * 30.0 * 2.0 * math.pi / 60.0 == pytest.approx(61.838, rel=WITHIN)
+    assert torque.load_torque(2e3, screw.lead_m, 1.0) / total == pytest.approx(0.12937, rel=WITHIN)
 
 
 #: THK's printed factors, formula 5 (eta_2) and formula 7 (lambda_2), by mounting.
