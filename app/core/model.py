@@ -202,6 +202,12 @@ class Application:
         return self.lubrication != "dry"
 
     @property
+    def lubrication_counted(self) -> Lubrication:
+        """The lubrication a rating may count on: the nut's, but none in a vacuum, where
+        oil and grease evaporate (the vacuum advice warns of them)."""
+        return "dry" if self.vacuum else self.lubrication
+
+    @property
     def oil_reaches_nut(self) -> bool:
         """Oil or grease meets the screw and nut: oil is present around the axis, or the
         nut is lubricated."""

@@ -24,14 +24,15 @@ from app.core.table import Array, CandidateTable, filled, finite
 def pv_limit(app: Application, t: CandidateTable) -> dict[str, Any]:
     """The nut's permissible PV at the ambient and its lubrication: the rating times the
     temperature factor (``pv_derating.temperature_factors`` at the ambient; 1 where the
-    material's highest temperature is unknown) times the lubrication factor.
+    material's highest temperature is unknown) times the lubrication factor (of the
+    lubrication counted: none in a vacuum, ``Application.lubrication_counted``).
 
     A PV rating is the PV whose own friction heat brings the nut to its highest
     temperature from the rating's room [pv_derating 1-3]: it already holds the nut's rise,
     so only the ambient above the room derates it (the rise itself is the nut heat
     check's, with the duty)."""
     temperature = pv_derating.temperature_factors(app.ambient_c, t.temperature_max_c)
-    lubrication = pv_derating.LUBRICATION_FACTORS[app.lubrication][0]
+    lubrication = pv_derating.LUBRICATION_FACTORS[app.lubrication_counted][0]
     return {
         "pv_temperature_factor": temperature,
         "pv_lubrication_factor": filled(len(t), lubrication),

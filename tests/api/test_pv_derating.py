@@ -279,3 +279,31 @@ def test_a_nut_judged_by_the_other_pv_check_does_not_list_the_one_it_lacks(
     assert {"pv", "bearing_pressure"} <= {
         s["check"] for s in own["candidate"]["verdict"]["skipped"]
     }
+
+
+@pytest.mark.parametrize("lubrication", ["greased", "oiled"])
+def test_in_a_vacuum_no_lubricant_is_counted_and_the_advice_says_so(
+    client: TestClient, lubrication: str
+) -> None:
+    """Oil and grease evaporate in a vacuum: the PV is judged at the dry rating, 0.105
+    MPa m/s (it kept the oiled nut's 2 x 0.105), and the vacuum advice flags the
+    lubricated nut whose outgassing was measured dry (it passed on the dry nut's 0.37 %);
+    run dry, the same nut passes the advice. B8000-L5 at 30 N and 100 mm/s."""
+    axis = {**AXIS, "load_n": 30.0, "speed_mm_s": 100.0, "vacuum": True}
+    body = {"application": {**axis, "lubrication": lubrication, "advice": "reject"},
+            "screw": {"catalog_id": "B8000-L5"}}  # fmt: skip
+    candidate = client.post("/api/v1/evaluate", json=body).json()["candidate"]
+    checks = {c["name"]: c for c in candidate["checks"]}
+    assert checks["pv"]["limit"] == pytest.approx(RATING)
+    assert "evaporates in a vacuum" in checks["pv"]["message"]
+    assert not checks["vacuum"]["passed"] and not candidate["passed"]
+    assert checks["vacuum"]["fix"] == "Run the nut dry, as its outgassing was measured."
+    body["application"]["lubrication"] = "dry"
+    dry = client.post("/api/v1/evaluate", json=body).json()["candidate"]
+    assert next(c for c in dry["checks"] if c["name"] == "vacuum")["passed"]
+    out_of_vacuum = {**body["application"], "vacuum": False, "lubrication": lubrication}
+    body["application"] = out_of_vacuum
+    kept = client.post("/api/v1/evaluate", json=body).json()["candidate"]
+    factor = pv_derating.LUBRICATION_FACTORS[lubrication][0]
+    pv = next(c for c in kept["checks"] if c["name"] == "pv")
+    assert pv["limit"] == pytest.approx(RATING * factor)

@@ -116,12 +116,18 @@ def no_pv_left(app: Application, r: Quantities[float]) -> Phrase:
 def derating(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
     """How a PV rating is derated: the temperature factor at the ambient, with the line
     it is read from, and the lubrication factor, with its provenance and source."""
-    _, kind, source = pv_derating.LUBRICATION_FACTORS[app.lubrication]
+    counted = app.lubrication_counted
+    _, kind, source = pv_derating.LUBRICATION_FACTORS[counted]
+    lost = (
+        f" (the {app.lubrication} nut's lubricant evaporates in a vacuum)"
+        if counted != app.lubrication
+        else ""
+    )
     values: dict[str, Amount | str] = {
         "f_t": f"{r.nut.pv_temperature_factor:.2f}",
         "temp": Amount(app.ambient_c, "temperature"),
         "f_lub": f"{r.nut.pv_lubrication_factor:.2f}",
-        "lub": f"{app.lubrication}, {kind}: {source}",
+        "lub": f"{counted}{lost}, {kind}: {source}",
     }
     line = ""
     if s.temperature_max_c is not None and s.temperature_max_c > pv_derating.REFERENCE_C:

@@ -31,9 +31,10 @@ class Vacuum(Check):
     description = (
         "In a vacuum an oiled or greased nut loses its lubricant and a polymer nut "
         "outgasses: a nut is judged fit only where its outgassing has been measured (the "
-        "seed's polyacetal nut: weight loss at 1e-4 torr over time); others are warned."
+        "seed's polyacetal nut: weight loss at 1e-4 torr over time) and it runs dry, as it "
+        "was measured; others are warned, and no rating counts a lubricant there."
     )
-    formula = "passes when outgassing_known or not vacuum"
+    formula = "passes when (outgassing_known and not lubricated) or not vacuum"
     source = "seed catalog, degassing in a vacuum at 1e-4 torr (weight loss by hours)"
     sources = ("outgassing",)
     capacity_sources = ("outgassing",)
@@ -42,15 +43,25 @@ class Vacuum(Check):
         return app.vacuum
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        known = outgassing_known(t)
-        return Measure(np.ones(len(t), dtype=bool), flagged=~known & np.bool_(app.vacuum))
+        unfit = ~outgassing_known(t) | np.bool_(app.lubricated)
+        return Measure(np.ones(len(t), dtype=bool), flagged=unfit & np.bool_(app.vacuum))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"outgassing_known": outgassing_known(t), "vacuum": app.vacuum}
+        return {
+            "outgassing_known": outgassing_known(t),
+            "lubricated": app.lubricated,
+            "vacuum": app.vacuum,
+        }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        if not passed and s.outgassing and app.lubricated:
+            return Phrase(
+                f"The nut is {app.lubrication}: in a vacuum its lubricant evaporates and "
+                "outgasses (the nut's measured outgassing is its own, run dry), and its "
+                "PV is judged without it."
+            )
         if not passed:
             return Phrase(
                 "No outgassing data for this nut (an oiled or greased nut loses its "
@@ -63,4 +74,8 @@ class Vacuum(Check):
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        return Phrase("Use a nut whose outgassing is measured, such as the seed's polyacetal.")
+        if s.outgassing and app.lubricated:
+            return Phrase("Run the nut dry, as its outgassing was measured.")
+        return Phrase(
+            "Use a nut whose outgassing is measured, such as the seed's polyacetal, run dry."
+        )
