@@ -2,6 +2,7 @@
 the pressure and load they allow, and its wear life (Archard).
 """
 
+from collections.abc import Sequence
 from functools import partial
 from typing import Any
 
@@ -103,23 +104,54 @@ def flank_area(app: Application, t: CandidateTable) -> Array:
     return np.asarray(area, dtype=np.float64)
 
 
-def flanks(app: Application, t: CandidateTable, rpm: Array, derate: Array) -> dict[str, Any]:
-    """The engaged flanks of the nut: sliding speed n / 60 times the helix of one turn at
-    d2, the pressure the nut material allows at it (the lowest of its table value, p_max
-    and PV_lim / v, the PV limit derated by ``derate``, the temperature and lubrication
-    factors of ``pv_limit``) and that pressure over the engaged flank area."""
-    speed = pv.surface_speed(rpm, t.flank_helix_travel_m)
+def flanks(
+    app: Application,
+    t: CandidateTable,
+    rpm: Array,
+    derate: Array,
+    points: Sequence[tuple[float, float]],
+) -> dict[str, Any]:
+    """The engaged flanks of the nut: their sliding speed at the top speed (``rpm``), n /
+    60 times the helix of one turn at d2; the pressure the nut material allows (the lowest
+    of its table value, p_max and PV_lim / v, the PV limit derated by ``derate``, the
+    temperature and lubrication factors of ``pv_limit``) and that pressure over the
+    engaged flank area, at the thrust and speed of the move each nut carries worst
+    (``worst_point`` of the moves' ``points``: thrust [N], linear speed [m/s])."""
     pv_limit = t.nut_pv_limit_pa_m_s * derate
-    allowed = nut_allowed_pressures(t, pv_limit, speed)
     area = flank_area(app, t)
+    force, speed, allowed = worst_point(t, pv_limit, area, points)
     return {
         "nut_pv_limit_pa_m_s": pv_limit,
         "flank_area_m2": area,
-        "sliding_speed_m_s": speed,
+        "sliding_speed_m_s": pv.surface_speed(rpm, t.flank_helix_travel_m),
+        "bearing_force_n": force,
+        "bearing_sliding_speed_m_s": speed,
         "nut_allowed_pressure_pa": allowed,
         "nut_allowed_load_n": allowed * area,
         **dict(zip(("rated_load_n", "nut_length_m"), rating(app, t, area), strict=True)),
     }
+
+
+def worst_point(
+    t: CandidateTable, pv_limit: Array, area_m2: Array, points: Sequence[tuple[float, float]]
+) -> tuple[Array, Array, Array]:
+    """Of the moves' (thrust [N], linear speed [m/s]), the one each nut carries worst: its
+    thrust over the load its flanks carry at that move's sliding speed, the largest (a
+    heavy slow move may govern a bronze nut, a light fast one a polymer's PV): the thrust,
+    the flanks' sliding speed [m/s] and the pressure allowed there [Pa], per nut."""
+    # the heaviest first: a nut its flanks rate for no load (no flank area) shows it
+    points = sorted(points, key=lambda point: -point[0])
+    forces = np.array([force for force, _ in points])[:, None]
+    helix = t.flank_helix_travel_m
+    speeds = np.array(
+        [pv.surface_speed(geometry.screw_speed_rpm(v, t.lead_m), helix) for _, v in points]
+    )
+    allowed = np.array([nut_allowed_pressures(t, pv_limit, speed) for speed in speeds])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        share = forces / (allowed * area_m2)
+    worst = np.where(np.isnan(share), -np.inf, share).argmax(axis=0)
+    at = (worst, np.arange(len(t)))
+    return np.broadcast_to(forces, share.shape)[at], speeds[at], allowed[at]
 
 
 def rating(app: Application, t: CandidateTable, area_m2: Array) -> tuple[Array, Array]:

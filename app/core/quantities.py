@@ -66,12 +66,22 @@ def peak_axial_load(app: Application, forces: Sequence[float] = ()) -> float:
     return max(abs(f) for f in forces or motion.nut_forces(app))
 
 
+def move_points(app: Application, c: motion.Cycle, peak_n: float) -> list[tuple[float, float]]:
+    """The thrust [N] and speed [m/s] a nut's rating is judged at, per move: the peak
+    thrust ``peak_n`` at the top speed (an accelerating segment reaches the top speed
+    still carrying m a); in a cycle of the user's own moves, which differ in thrust and
+    speed, each move's largest thrust at its own top speed."""
+    if not app.moves or c.profiles is None:
+        return [(peak_n, c.reached_m_s)]
+    return [
+        (max(abs(f) for f in c.moving_n[3 * k : 3 * k + 3]), p.peak_speed_m_s)
+        for k, p in enumerate(c.profiles)
+    ]
+
+
 def pv_point(app: Application, c: motion.Cycle, peak_n: float) -> tuple[float, float]:
-    """The thrust [N] and speed [m/s] the nut's PV is judged at: the peak thrust
-    ``peak_n`` at the top speed (an accelerating segment reaches the top speed still
-    carrying m a); in a cycle of the user's own moves, which differ in thrust and speed,
-    each move's largest thrust at its own top speed, of the move where their product
-    (to which a nut's PV is proportional) is largest.
+    """The thrust [N] and speed [m/s] the nut's PV is judged at: of ``move_points``, the
+    move where their product (to which a nut's PV is proportional) is largest.
 
     >>> from app.core.model import Move
     >>> moves = (Move(0.3, 0.15, 1.5, 1.5, 0.3, 4.0, 15.0, "opposes"),
@@ -80,13 +90,7 @@ def pv_point(app: Application, c: motion.Cycle, peak_n: float) -> tuple[float, f
     >>> pv_point(app, motion.cycle_of(app), 21.0)
     (21.0, 0.15)
     """
-    if not app.moves or c.profiles is None:
-        return peak_n, c.reached_m_s
-    points = [
-        (max(abs(f) for f in c.moving_n[3 * k : 3 * k + 3]), p.peak_speed_m_s)
-        for k, p in enumerate(c.profiles)
-    ]
-    return max(points, key=lambda point: point[0] * point[1])
+    return max(move_points(app, c, peak_n), key=lambda point: point[0] * point[1])
 
 
 def compression_sign(app: Application) -> float:
@@ -204,6 +208,11 @@ class NutLoad(Generic[V]):
     #: derated as ``pv_limit_pa_m_s`` (NaN: none given).
     flank_area_m2: V
     sliding_speed_m_s: V
+    #: the thrust [N] and the flanks' sliding speed [m/s] the contact pressure is judged
+    #: at: of the move each nut carries worst (``nut.flanks``), where the pressure allowed
+    #: and its load are taken
+    bearing_force_n: V
+    bearing_sliding_speed_m_s: V
     nut_allowed_pressure_pa: V
     nut_allowed_load_n: V
     nut_pv_limit_pa_m_s: V
@@ -441,7 +450,8 @@ def _values(app: Application, t: CandidateTable, rpm: Array, c: motion.Cycle) ->
     moving = segments.moving_torques(app, t, c, j_screw)
     torques = drive.torques(app, t, force_n, moving, c, j_screw)
     derate = (limits := nut.pv_limit(app, t))["pv_temperature_factor"]
-    flank = nut.flanks(app, t, rpm, derate * limits["pv_lubrication_factor"])
+    points = move_points(app, c, peak_n)
+    flank = nut.flanks(app, t, rpm, derate * limits["pv_lubrication_factor"], points)
     worn = nut.wear_life(app, t, flank["flank_area_m2"], wear_n, c.cycles_per_day)
     held = holding.holding(app, t, steady_n)
     motor = drive.motor_point(app, t, rpm, held["brake_nm"], torques, moving, c)

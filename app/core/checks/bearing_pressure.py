@@ -32,7 +32,8 @@ class BearingPressure(Check):
         "length over pitch turns of pi d2 H1 each) against the contact pressure the nut "
         "material allows at the sliding speed: a bronze nut by its pressure-speed "
         "table, a polymer nut by its maximum pressure and its PV limit, derated to the "
-        "ambient and raised for its lubrication as in the PV check."
+        "ambient and raised for its lubrication as in the PV check. In a cycle of moves, "
+        "each move's peak thrust at its own speed, the move the nut carries worst."
     )
     quantity = "force"
     formula = "F = F_peak; F_allow = p_nut_v * L_nut / P * pi * d_2 * H_1"
@@ -46,20 +47,20 @@ class BearingPressure(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(
-            where_given(q.nut.nut_allowed_load_n), q.axis.peak_force_n, q.nut.nut_allowed_load_n
+            where_given(q.nut.nut_allowed_load_n), q.nut.bearing_force_n, q.nut.nut_allowed_load_n
         )
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
         return {
-            "F_peak": q.axis.peak_force_n,
+            "F_peak": q.nut.bearing_force_n,
             "p_nut_v": q.nut.nut_allowed_pressure_pa,
             "L_nut": q.nut.nut_length_m,
             "P": t.pitch_m,
             "d_2": t.flank_pitch_diameter_m,
             "H_1": t.flank_height_m,
-            "v": q.nut.sliding_speed_m_s,
+            "v": q.nut.bearing_sliding_speed_m_s,
             "p_max": t.max_pressure_pa,
             "PV_nut": t.nut_pv_limit_pa_m_s,
             "f_T": q.nut.pv_temperature_factor,
@@ -69,9 +70,9 @@ class BearingPressure(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "is within" if passed else "exceeds"
         values: dict[str, Amount | str | Phrase] = {
-            "f": Amount(r.axis.peak_force_n, "force"),
+            "f": Amount(r.nut.bearing_force_n, "force"),
             "cap": Amount(r.nut.nut_allowed_load_n, "force"),
-            "v": Amount(r.nut.sliding_speed_m_s, "speed"),
+            "v": Amount(r.nut.bearing_sliding_speed_m_s, "speed"),
             "p": Amount(r.nut.nut_allowed_pressure_pa, "pressure"),
             "why": _slower(app, s, r),
         }
@@ -109,7 +110,7 @@ def _slower(app: Application, s: ScrewSpec, r: Quantities[float]) -> Phrase:
     if not slow or r.nut.nut_allowed_pressure_pa >= min(slow):
         return Phrase("")
     values: dict[str, Amount | str | Phrase] = {"p0": Amount(min(slow), "pressure")}
-    if table and r.nut.sliding_speed_m_s > table[0][0]:
+    if table and r.nut.bearing_sliding_speed_m_s > table[0][0]:
         values["v0"] = Amount(table[0][0], "speed")
         return Phrase(
             ", less than the {p0} it allows up to {v0}: the allowable pressure falls as the "
