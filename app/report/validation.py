@@ -14,6 +14,7 @@ from app.contract.units import from_si, to_si
 from app.core.formulas import (
     ballscrew,
     buckling,
+    column_rules,
     efficiency,
     geometry,
     heat,
@@ -85,6 +86,26 @@ def _skf_composite_life_h() -> float:
 def _euler(e_pa: float, d_or_i: float, length_m: float, fixity: str, round_d: bool) -> float:
     i_m4 = buckling.second_moment_round(d_or_i) if round_d else d_or_i
     return buckling.euler_critical_load(e_pa, i_m4, length_m, fixity)
+
+
+def _makishinko(e_pa: float) -> float:
+    """Makishinko's JA050 jack screw: a 31.5 mm root over 1000 mm, fixed-free, a quarter
+    of Euler's load [N] with the modulus ``e_pa``."""
+    return float(
+        buckling.allowed_buckling_load(_euler(e_pa, 0.0315, 1.0, "fixed-free", True), 0.25)
+    )
+
+
+def _makishinko_note() -> str:
+    """What the selector rates the same steel jack screw at: with the leadscrew makers'
+    modulus for steel (``column_rules.leadscrew_column_modulus``), below Makishinko's."""
+    makers_e = float(column_rules.leadscrew_column_modulus(STEEL_E))
+    rated = _makishinko(makers_e)
+    return (
+        f"Euler's load at Makishinko's E = {STEEL_E / 1e9:g} GPa. The selector rates a steel "
+        f"lead screw by Thomson's and Nook's rule for steel (E = {makers_e / 1e9:.1f} GPa): "
+        f"{rated:.0f} N, {(1 - rated / 6135.0) * 100:.1f} % below the published value."
+    )
 
 
 KGF_CM = to_si(1.0, "kgf") * to_si(10.0, "mm")
@@ -240,8 +261,7 @@ EXAMPLES: tuple[Example, ...] = (
                 _euler(STEEL_E, 0.0125, 0.820, "fixed-simple", True), 0.5)),
     Example("Allowed axial load", "Makishinko screw jacks, E-19, example JA050",
             "root 31.5 mm, 1000 mm, fixed–free, factor 0.25", 6135.0, "N",
-            lambda: buckling.allowed_buckling_load(
-                _euler(STEEL_E, 0.0315, 1.0, "fixed-free", True), 0.25)),
+            lambda: _makishinko(STEEL_E), _makishinko_note()),
     Example("Raising torque (thread)", threads.SHIGLEY,
             "square, d 32 mm, p 4 mm, double start, f 0.08, F 6.4 kN", 15.94, "N m",
             threads.shigley_thread_torque),
