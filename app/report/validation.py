@@ -101,9 +101,10 @@ def _makishinko_note() -> str:
     modulus for steel (``column_rules.leadscrew_column_modulus``), below Makishinko's."""
     makers_e = float(column_rules.leadscrew_column_modulus(STEEL_E))
     rated = _makishinko(makers_e)
+    own_gpa, makers_gpa = from_si(STEEL_E, "GPa"), from_si(makers_e, "GPa")
     return (
-        f"Euler's load at Makishinko's E = {STEEL_E / 1e9:g} GPa. The selector rates a steel "
-        f"lead screw by Thomson's and Nook's rule for steel (E = {makers_e / 1e9:.1f} GPa): "
+        f"Euler's load at Makishinko's E = {own_gpa:g} GPa. The selector rates a steel lead "
+        f"screw by Thomson's and Nook's rule for steel (E = {makers_gpa:.1f} GPa): "
         f"{rated:.0f} N, {(1 - rated / 6135.0) * 100:.1f} % below the published value."
     )
 

@@ -69,8 +69,8 @@ class Vacuum(Check):
             )
         hours, percent = s.outgassing[-1]
         return Phrase(
-            "Measured outgassing: {w} % weight loss after {h} at 1e-4 torr.",
-            {"w": Amount(percent, "factor"), "h": Amount(hours * 3600.0, "time")},
+            "Measured outgassing: {w} % weight loss after {h} h at 1e-4 torr.",
+            {"w": Amount(percent, "factor"), "h": Amount(hours, "factor")},
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
