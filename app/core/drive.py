@@ -146,6 +146,8 @@ def motor_point(
         worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
         index, peak, rms = filled(len(t), -1.0), nan, nan
         referred = nan
+        if app.motor_curve:
+            fits = point_fits(app, rpm, torques, c.reached_m_s)
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = segments.segments(app, t, hold_nm, moving, c)
@@ -233,6 +235,23 @@ def curve_fits(
     fitting_speed = slower_fit(app, starting, at_rest, peak_speed)
     fix_speed = slower_fit(app, starting, at_rest, peak_speed, 1.0 + FIX_MARGIN)
     return fitting, fitting_speed, fix_accel, fix_speed
+
+
+def point_fits(
+    app: Application, rpm: Array, torques: dict[str, Any], speed_m_s: float
+) -> tuple[Array, Array, Array, Array]:
+    """``curve_fits`` without a stroke: no acceleration to fit (NaN), and the top speed at
+    which the running torque at ``rpm`` and the break-away at standstill both fit the
+    curve (``slower_fit`` of the two), bare and with the fix's margin."""
+    load = np.vstack([np.abs(torques["total_nm"]), np.abs(torques["breakaway_nm"])])
+    speeds = np.vstack([rpm, np.zeros_like(rpm)])
+    nan = np.full(np.shape(rpm), np.nan)
+    return (
+        nan,
+        slower_fit(app, load, speeds, speed_m_s),
+        nan,
+        slower_fit(app, load, speeds, speed_m_s, 1.0 + FIX_MARGIN),
+    )
 
 
 def fitting_accel(

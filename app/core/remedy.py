@@ -23,7 +23,7 @@ from app.core.checks import BY_NAME, REGISTRY
 from app.core.input_rules import inputs_hold
 from app.core.model import FIXITY_ORDER, PASS_UTILIZATION, Application, Remedy
 from app.core.phrase import Phrase
-from app.core.screening import Screening, asked_for, screen_table
+from app.core.screening import Screening, asked_for, failing_beyond, screen_table
 
 #: How far past a limit a proposed input lands: a remedy must pass at a governing
 #: utilisation of at most 1 / (1 + MARGIN).
@@ -114,6 +114,30 @@ def proposals(
         for fixity in mountings:
             for key, value in single.items():
                 yield {"end_fixity": fixity, key: part_way(_now(app, key), value, share)}
+
+
+#: How many of the screened screws that a slower move may clear are tried.
+SLOWER_TRIED = 3
+
+
+def slower_positions(app: Application, sc: Screening) -> list[int]:
+    """The positions in ``sc`` of the few screws that fail only checks a slower move may
+    clear (``Check.slower_may_clear``) and fit the motor's curve at the fastest top speeds
+    below the one asked for (``motor_fitting_speed_m_s``): a slower move is a stepper's
+    way to more torque, which the nearest screws may not show (a fine lead nearest to
+    passing needs more torque than the curve gives at any speed; a coarse one, far from
+    passing at full speed, fits a slower move). Their own fixes then name the speed that
+    clears all their checks. None without a motor curve, or in a cycle of moves, whose
+    speeds are the moves' own."""
+    if not app.motor_curve or app.moves:
+        return []
+    # a head screening's numbers are the whole one's: its rows are the first
+    speeds = np.asarray(sc.quantities.motor.motor_fitting_speed_m_s)[: len(sc.passed)]
+    fits = np.isfinite(speeds) & (speeds > 0.0) & (speeds < app.speed_m_s)
+    fits &= ~failing_beyond(sc, lambda check: check.slower_may_clear)
+    found = np.flatnonzero(fits)
+    fastest: list[int] = found[np.argsort(-speeds[found], kind="stable")][:SLOWER_TRIED].tolist()
+    return fastest
 
 
 def remedies(

@@ -28,7 +28,7 @@ from app.core.model import Application, AxisProvenance, Remedy, ScrewSpec, Summa
 from app.core.phrase import Amount, Phrase, join, plural
 from app.core.reach import Reach
 from app.core.record import MOTOR_CHECKS, Candidate, records
-from app.core.remedy import impossible, remedies
+from app.core.remedy import impossible, remedies, slower_positions
 from app.core.robustness import Robustness, Variants, robustness
 from app.core.screening import Screening, failing_beyond, screen_table
 from app.core.table import CandidateTable
@@ -449,16 +449,20 @@ def _remedies(
     ranges: Ranges,
 ) -> tuple[tuple[Remedy, ...], Phrase | None]:
     """The verified remedies from the nearest candidates' input changes (``changes``: the
-    first ``REMEDY_FROM`` candidates' ``input_change``), or (none found) why no screw
+    first ``REMEDY_FROM`` candidates' ``input_change``) and those of the screws a slower
+    move may let pass (``remedy.slower_positions``), or (none found) why no screw
     of the kind screened can do it; nothing without the screening to verify against.
     ``most``: the check excluding the most screws, its label, and whether it excludes
     them all."""
     if sc is None:
         return (), None
     near = nearest[:REMEDY_FROM]
-    targets = [t for c in near for t in one_input_changes(c)]
-    targets += [dict(change) for change in changes if len(change) > 1]
-    failed = {k.name for c in near for k in c.failed_checks}
+    slower = records(app, sc, positions) if (positions := slower_positions(app, sc)) else []
+    tried = [*near, *slower]
+    targets = [t for c in tried for t in one_input_changes(c)]
+    together = [*changes, *(input_change(c) for c in slower)]
+    targets += [dict(change) for change in together if len(change) > 1]
+    failed = {k.name for c in tried for k in c.failed_checks}
     found = remedies(app, sc, targets, failed, ranges)
     if found:
         return found, None

@@ -25,6 +25,7 @@ from app.core.phrase import Amount, Phrase
 
 class BallSpeed(Check):
     name = "ball_speed"
+    slower_may_clear = True
     why_none = (
         "the speed exceeds every ball screw's DN limit: a belt drive, a rack and pinion or "
         "a linear motor"

@@ -129,6 +129,10 @@ class Check:
     #: stepper's energised holding torque or its detent torque holds the load): the
     #: screw + motor pairs screen such a screw with every motor
     motor_may_clear: ClassVar[bool] = False
+    #: whether a slower top speed may clear it (the motor's curve and speed, the step
+    #: rate, whirl, a ball's DN, a nut's PV, pressure, sliding speed and heat): the
+    #: no-pass summary then tries the speeds at which such screws fit their motor
+    slower_may_clear: ClassVar[bool] = False
     #: the check that judges the same limit of a nut this one has no value for (the
     #: seed's PV and an ISO nut's flank pressure against its material's PV): where that
     #: one runs, this one not running is no gap in the verdict

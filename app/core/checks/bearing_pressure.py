@@ -22,6 +22,7 @@ from app.core.phrase import Amount, Phrase
 
 class BearingPressure(Check):
     name = "bearing_pressure"
+    slower_may_clear = True
     judged_instead_by = "pv"
     why_none = (
         "no nut carries this thrust at its contact pressure: consider a longer nut or a ball screw"

@@ -33,6 +33,7 @@ from app.core.phrase import Amount, Phrase
 
 class CriticalSpeed(Check):
     name = "critical_speed"
+    slower_may_clear = True
     why_none = (
         "the speed needs a critical-speed margin no screw of this length reaches, at any "
         "mounting: consider a ball screw, a rotating nut or an intermediate screw support"

@@ -21,6 +21,7 @@ from app.core.phrase import Amount, Phrase
 
 class MaxSlidingSpeed(Check):
     name = "max_sliding_speed"
+    slower_may_clear = True
     why_none = "no nut slides this fast: consider a longer lead, a ball screw or a belt"
     label = "Nut sliding speed"
     description = (

@@ -93,6 +93,7 @@ def speed_that_fits(app: Application, r: Quantities[float]) -> float | None:
 
 class MotorCurve(Check):
     name = "motor_curve"
+    slower_may_clear = True
     why_none = "the motor's curve is too low for every screw: a larger motor or a gearbox"
     judges_motor = True
     label = "Motor torque-speed curve"

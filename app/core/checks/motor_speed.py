@@ -27,6 +27,7 @@ def top_curve_rpm(app: Application) -> float:
 
 class MotorSpeed(Check):
     name = "motor_speed"
+    slower_may_clear = True
     why_none = "the motor cannot turn fast enough for every lead: a faster motor"
     judges_motor = True
     label = "Motor speed"

@@ -42,6 +42,7 @@ def unchecked_note(app: Application, sliding_passes: bool) -> Phrase | None:
 
 class NutHeat(Check):
     name = "nut_heat"
+    slower_may_clear = True
     why_none = "every nut runs too hot at this duty: a ball screw, or a lower duty"
     label = "Nut heat"
     description = (

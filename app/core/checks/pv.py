@@ -23,6 +23,7 @@ from app.core.phrase import Amount, Phrase
 
 class NutPV(Check):
     name = "pv"
+    slower_may_clear = True
     judged_instead_by = "bearing_pressure"
     why_none = (
         "no nut carries this load at this speed (PV): consider a ball screw, whose rolling "

@@ -27,6 +27,7 @@ def steps_per_rev(app: Application) -> float:
 
 class StepRate(Check):
     name = "step_rate"
+    slower_may_clear = True
     label = "Controller step rate"
     description = (
         "The step pulses per second the peak screw speed needs (360 / step angle x "

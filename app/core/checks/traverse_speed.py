@@ -22,6 +22,7 @@ from app.core.phrase import Amount, Phrase
 
 class TraverseSpeed(Check):
     name = "traverse_speed"
+    slower_may_clear = True
     label = "Traverse speed"
     description = (
         "The family's table of the highest linear speed recommended for each lead band "
