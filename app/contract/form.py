@@ -58,6 +58,13 @@ BOUND_MESSAGES = {
     "greater_than_equal": ("Must be at least {bound}.", "ge"),
     "less_than": ("Must be less than {bound}.", "lt"),
     "less_than_equal": ("Must be at most {bound}.", "le"),
+    # a length bounded by the screw's (``ApplicationInputs``): the bound in the form's unit
+    "within_length": ("Must be at most the screw length, {bound}.", "le"),
+    "stroke_room": (
+        "Must be at most the screw length less the nut length, {bound}: the nut cannot "
+        "travel past the screw's end.",
+        "le",
+    ),
 }
 #: the context keys of a lower bound (its message's figure is rounded up, ``bound_sig``).
 LOWER_BOUNDS = frozenset({"gt", "ge"})

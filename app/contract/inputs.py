@@ -152,7 +152,11 @@ class ApplicationInputs(BaseModel):
         """The span from the thrust bearing to the nut, and the nut, lie on the screw."""
         length = info.data.get(LENGTH.api)
         if value is not None and length is not None and value > length:
-            raise ValueError(f"at most the screw length, {length:g} ({LENGTH.api})")
+            raise PydanticCustomError(
+                "within_length",
+                "at most the screw length, {shown} mm ({length})",
+                {"le": float(length), "shown": f"{length:g}", "length": LENGTH.api},
+            )
         return value
 
     @field_validator("max_step_rate_hz", check_fields=False)
@@ -186,9 +190,11 @@ class ApplicationInputs(BaseModel):
         room = float(length) - float(nut or 0.0)
         if value > room:
             less = f" less the nut length ({float(length):g} - {float(nut or 0.0):g} mm)"
-            raise ValueError(
-                f"must be at most the screw length{less if nut else ''}, {room:g} mm: the "
-                "nut cannot travel past the screw's end"
+            raise PydanticCustomError(
+                "stroke_room" if nut else "within_length",
+                f"must be at most the screw length{less if nut else ''}, {{shown}} mm: the "
+                "nut cannot travel past the screw's end",
+                {"le": room, "shown": f"{room:g}"},
             )
         return value
 

@@ -4,6 +4,7 @@ a remedy never shortens the screw below it."""
 
 from typing import Any
 
+from bs4 import BeautifulSoup
 from fastapi.testclient import TestClient
 
 from app.core.input_rules import inputs_hold, least_inputs
@@ -36,3 +37,19 @@ def test_a_change_keeps_the_screw_at_least_as_long_as_the_nut() -> None:
     assert inputs_hold(app)
     assert not inputs_hold(Application(load_n=500.0, speed_m_s=0.05, length_m=0.25,
                                        nut_length_m=0.3))  # fmt: skip
+
+
+def test_a_length_held_to_the_screws_is_said_in_the_forms_unit(client: TestClient) -> None:
+    """On a form in inches a stroke, a nut or a span longer than the 20 in screw is told
+    the screw's 20 in (it was told 508 mm, or 508 with no unit); beside a 15 in nut, the
+    stroke at most the 5 in left."""
+    axis = "/?load=20&speed=1&length=20&length_unit=in"
+    for field, value in (("stroke", 30), ("nut_length", 50), ("bearing_to_nut", 30)):
+        page = BeautifulSoup(client.get(f"{axis}&{field}={value}").text, "html.parser")
+        error = page.select_one(f"#e-{field}")
+        assert error is not None and error.text == "Must be at most the screw length, 20 in."
+    page = BeautifulSoup(client.get(f"{axis}&nut_length=15&stroke=10").text, "html.parser")
+    error = page.select_one("#e-stroke")
+    assert error is not None and error.text.startswith(
+        "Must be at most the screw length less the nut length, 5 in:"
+    )
