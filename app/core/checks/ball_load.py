@@ -54,14 +54,21 @@ class BallLoad(Check):
         verb = "within" if passed else "above"
         values = {"load": Amount(load, "force"), "ca": Amount(ca, "force")}
         text = "The ball track carries {load}, " + verb + " a fifth of Ca = {ca} (HIWIN's "
+        if app.stroke_m or app.moves:  # the life section gives the L10 life over the cycle
+            return Phrase(text + "recommended most).", values)
+        factor = app.ball_load_factor
         with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
             (revolutions,) = track_life_revolutions(
-                app, np.array([ca]), np.array([s.preload_n or 0.0]), r.axis.force_n, 1.0
+                app, np.array([ca]), np.array([s.preload_n or 0.0]), r.axis.force_n, factor
             )
         if not np.isfinite(revolutions):  # no load, or one so small the life overflows
             return Phrase(text + "recommended most).", values)
         values["km"] = Amount(float(revolutions) * s.lead_m, "travel")
-        text += "recommended most); its rated life there is {km} of travel (L10, load factor 1)."
+        values["fw"] = Amount(factor, "factor")
+        text += (
+            "recommended most); its rated life there is {km} of travel (L10 at the load "
+            "factor {fw}; a stroke and a duty give it in years)."
+        )
         return Phrase(text, values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
