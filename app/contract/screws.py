@@ -15,6 +15,7 @@ from pydantic import (
     create_model,
     field_validator,
 )
+from pydantic_core import PydanticCustomError
 
 from app.contract.input_field import InputField
 from app.contract.input_types import api_type
@@ -98,22 +99,31 @@ class CustomScrewInputs(BaseModel):
             return value
         starts = round(lead / value)
         if starts < 1 or not math.isclose(lead, starts * value):
-            raise ValueError(f"the lead {lead:g} mm must be a whole number of pitches")
+            raise _lengths_error(
+                "pitch_multiple", "the lead {lead} must be a whole number of pitches", lead=lead
+            )
         outer, root = info.data.get("outer_diameter_mm"), info.data.get("root_diameter_mm")
         half_angle = info.data.get("thread_half_angle_deg")
         if outer is None or root is None or half_angle is None:
             return value  # an earlier field is invalid and already reported
         flank = from_si(trapezoidal.pitch_diameter(to_si(outer, "mm"), to_si(value, "mm")), "mm")
         if flank <= root:
-            raise ValueError(
-                f"too coarse for this screw: its flanks' pitch diameter d - P/2 = {flank:.4g} "
-                f"mm is not above the root diameter {root:g} mm"
+            raise _lengths_error(
+                "pitch_too_coarse",
+                "too coarse for this screw: its flanks' pitch diameter d - P/2 = {flank} is "
+                "not above the root diameter {root}",
+                flank=flank,
+                root=root,
             )
         for name in ("friction_dynamic", "friction_static"):
             friction = info.data.get(name)
             problem = None if friction is None else _undrivable(lead, flank, half_angle, friction)
             if problem:
-                raise ValueError(f"at its pitch diameter d - P/2 = {flank:.4g} mm, {problem}")
+                raise _lengths_error(
+                    "pitch_undrivable",
+                    "at its pitch diameter d - P/2 = {flank}, " + problem,
+                    flank=flank,
+                )
         return value
 
     @field_validator("friction_dynamic", "friction_static", check_fields=False)
@@ -140,6 +150,15 @@ else:
         __doc__=CustomScrewInputs.__doc__,
         **_definitions(SCREW_FIELDS),
     )
+
+
+def _lengths_error(kind: str, template: str, **lengths_mm: float) -> PydanticCustomError:
+    """A screw's error naming lengths [mm]: its words in the API with each length in mm
+    (``{name}`` in ``template``), and the lengths in its context, for a page to say them
+    in its own unit (``app.web.screw_form``: the ``lengths`` key lists them)."""
+    shown = {name: f"{value:.4g} mm" for name, value in lengths_mm.items()}
+    words = template.format(**shown)
+    return PydanticCustomError(kind, words, {"lengths": dict(lengths_mm), "template": template})
 
 
 def _undrivable(lead: float, pitch_diameter: float, half_angle_deg: float, friction: float) -> str:

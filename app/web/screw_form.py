@@ -86,6 +86,16 @@ def _message(error: Mapping[str, Any], units: Mapping[str, str]) -> str:
         return template.format(bound=shown)
     if kind in PLAIN_MESSAGES:
         return PLAIN_MESSAGES[kind]
+    context = error.get("ctx", {})
+    field = BY_NAME.get(str(error.get("loc", ("",))[0]))
+    if "lengths" in context and field is not None:  # lengths [mm] said in the form's unit
+        unit = field.display_unit(units)
+        said = {
+            name: f"{sig(field.row.display_value(value, units))} {unit}"
+            for name, value in context["lengths"].items()
+        }
+        message = str(context["template"]).format(**said)
+        return message[:1].upper() + message[1:].rstrip(".") + "."
     message = str(error.get("msg", "")).removeprefix("Value error, ")
     for field in sorted(BY_NAME.values(), key=lambda f: -len(f.name)):
         message = message.replace(field.name, field.label.lower())

@@ -228,3 +228,21 @@ def test_a_screw_without_a_nut_has_no_play_given_not_zero(client: TestClient) ->
     assert bronze["accuracy"]["backlash_mm"] == pytest.approx([0.05, 0.3])
     messages = {c["name"]: c["message"] for c in bare["checks"]}
     assert messages["anti_backlash"] == "Free-wheeling nut; its axial play is not given."
+
+
+def test_a_pitch_refused_on_an_inch_form_is_said_in_inches(client: TestClient) -> None:
+    """The custom page typed in inches: the lead 1/4 in is no whole number of 0.1 in
+    pitches, and a 0.3 in pitch on a 1/2 in screw puts d - P/2 = 0.35 in below its 0.36 in
+    root; each said in inches (they were said in mm: 6.35 mm, 8.89 and 9.144 mm)."""
+    inch = ("thread_half_angle_deg=14.5&friction_dynamic=0.13&friction_static=0.16"
+            "&nut=bronze&material=c45-steel&load=20&speed=1&length=20&length_unit=in")  # fmt: skip
+    cases = {
+        "outer_diameter_mm=0.5&root_diameter_mm=0.35&lead_mm=0.25&pitch_mm=0.1":
+            "The lead 0.25 in must be a whole number of pitches.",
+        "outer_diameter_mm=0.5&root_diameter_mm=0.36&lead_mm=0.3&pitch_mm=0.3":
+            "Too coarse for this screw: its flanks' pitch diameter d - P/2 = 0.35 in is not "
+            "above the root diameter 0.36 in.",
+    }  # fmt: skip
+    for screw, words in cases.items():
+        page = soup(client.get(f"/custom?{screw}&{inch}").text)
+        assert page.select_one("#e-pitch_mm").text.strip() == words
