@@ -124,10 +124,10 @@ def slower_positions(app: Application, sc: Screening) -> list[int]:
     """The positions in ``sc`` of the few screws that fail only checks a slower move may
     clear (``Check.slower_may_clear``) and fit the motor's curve at the fastest top speeds
     below the one asked for (``motor_fitting_speed_m_s``): a slower move is a stepper's
-    way to more torque, which the nearest screws may not show (a fine lead nearest to
-    passing needs more torque than the curve gives at any speed; a coarse one, far from
-    passing at full speed, fits a slower move). Their own fixes then name the speed that
-    clears all their checks. None without a motor curve, or in a cycle of moves, whose
+    way to more torque, which the nearest screws may not show (a coarser lead nearest to
+    passing needs more torque than the curve gives at any speed; a finer one, far from
+    passing at full speed, which it turns faster, fits a slower move). Their own fixes
+    then name the speed that clears all their checks. None without a motor curve, or in a cycle of moves, whose
     speeds are the moves' own."""
     if not app.motor_curve or app.moves:
         return []
