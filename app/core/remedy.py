@@ -127,8 +127,8 @@ def slower_positions(app: Application, sc: Screening) -> list[int]:
     way to more torque, which the nearest screws may not show (a coarser lead nearest to
     passing needs more torque than the curve gives at any speed; a finer one, far from
     passing at full speed, which it turns faster, fits a slower move). Their own fixes
-    then name the speed that clears all their checks. None without a motor curve, or in a cycle of moves, whose
-    speeds are the moves' own."""
+    then name the speed that clears all their checks. None without a motor curve, or in a
+    cycle of moves, whose speeds are the moves' own."""
     if not app.motor_curve or app.moves:
         return []
     # a head screening's numbers are the whole one's: its rows are the first
