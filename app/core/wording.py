@@ -40,7 +40,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "motor_holding": "motor holding torque",
     "motor_rms_torque": "motor rated torque",
     "nut_length": "nut length",
-    "nut_length_to_d": "nut length",
+    "nut_length_to_d": "rated nut length",
     "oil_compatible": "oil compatibility",
     "lubricated_rating": "lubricated rating",
     "outer_diameter": "outer diameter",

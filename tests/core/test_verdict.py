@@ -28,7 +28,7 @@ EASY = Application(load_n=100.0, speed_m_s=0.05, length_m=0.3)
         ("max_sliding_speed_m_s", "maximum sliding speed"),
         ("specific_wear_rate_mm3_n_m", "specific wear rate"),
         ("friction_static_bronze", "static friction"),
-        ("nut_length_to_d", "nut length"),
+        ("nut_length_to_d", "rated nut length"),
     ],
 )
 def test_catalog_keys_are_named_in_words(key: str, words: str) -> None:
