@@ -139,6 +139,11 @@ def worst_point(
     thrust over the load its flanks carry at that move's sliding speed, the largest (a
     heavy slow move may govern a bronze nut, a light fast one a polymer's PV): the thrust,
     the flanks' sliding speed [m/s] and the pressure allowed there [Pa], per nut."""
+    if len(points) == 1:  # out and back over the stroke: one point, as the PV's
+        ((force_n, speed_m_s),) = points
+        rpm = geometry.screw_speed_rpm(speed_m_s, t.lead_m)
+        sliding = np.asarray(pv.surface_speed(rpm, t.flank_helix_travel_m), dtype=np.float64)
+        return filled(len(t), force_n), sliding, nut_allowed_pressures(t, pv_limit, sliding)
     # the heaviest first: a nut its flanks rate for no load (no flank area) shows it
     points = sorted(points, key=lambda point: -point[0])
     forces = np.array([force for force, _ in points])[:, None]
