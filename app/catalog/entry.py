@@ -18,7 +18,7 @@ from app.core.units import SI_UNITS, UNITS, to_si
 PROVENANCE_MEANINGS = {
     "seed": "printed in the manufacturer's data this catalog is built from",
     "standard": "set by a standard (ISO thread dimensions)",
-    "handbook": "a standard reference",
+    "handbook": "an engineering handbook (Shigley, the CRC handbook)",
     "vendor": "a maker's published catalog or data sheet",
     "derived": "computed from other values",
     "assumed": "a stated assumption where the data is silent",
