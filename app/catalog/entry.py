@@ -14,15 +14,17 @@ from app.catalog.models import Sourced
 from app.core.model import Provenance
 from app.core.units import SI_UNITS, UNITS, to_si
 
-#: Where a value comes from, each kind in words: what the catalog pages' legend says.
+#: Where a catalog value comes from, each kind in words: what the guide and the catalog
+#: pages' legend say of it.
 PROVENANCE_MEANINGS = {
-    "seed": "printed in the manufacturer's data this catalog is built from",
-    "standard": "set by a standard (ISO thread dimensions)",
-    "handbook": "an engineering handbook (Shigley, the CRC handbook)",
-    "vendor": "a maker's published catalog or data sheet",
-    "derived": "computed from other values",
-    "assumed": "a stated assumption where the data is silent",
-    "user": "typed in by you",
+    "seed": "Printed in the leadscrew maker's catalog the app's data started from.",
+    "handbook": "From an engineering handbook or textbook, such as a material's modulus.",
+    "standard": "From a published standard, such as a thread form's dimensions.",
+    "vendor": "From another maker's catalog or data sheet.",
+    "derived": "Computed from other catalog values by the rule its source states, as a "
+    "motor's torque-speed curve drawn by the motor model from its datasheet values.",
+    "assumed": "Not published: an engineering assumption to confirm with the maker.",
+    "user": "From a catalog file supplied at start-up, or from your own input.",
 }
 PROVENANCE_KINDS = tuple(PROVENANCE_MEANINGS)
 

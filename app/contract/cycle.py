@@ -42,8 +42,7 @@ def _bounds(api: str) -> tuple[float, float]:
     return BY_API[api].bounds or (0.0, 0.0)
 
 
-SPEED, ACCEL, DWELL = _bounds("speed_mm_s"), _bounds("accel_mm_s2"), _bounds("dwell_s")
-MASS, LOAD = _bounds("moving_mass_kg"), _bounds("load_n")
+SPEED, ACCEL = _bounds("speed_mm_s"), _bounds("accel_mm_s2")
 
 
 def _by_core(core: str) -> InputField:
@@ -70,6 +69,15 @@ CLOSING_SHARE = 1e-12
 AXIS_VALUES = ("dwell_s", "moving_mass_kg", "load_n", "load_direction")
 
 
+def _or_axis(api: str, description: str) -> Any:
+    """A move's value that, left out, is the axis's (``AXIS_VALUES``): bounded as the
+    scalar input ``api`` of the same name."""
+    low, high = _bounds(api)
+    return Field(
+        default=None, ge=low, le=high, description=f"{description}; left out: the axis's {api}."
+    )
+
+
 class MoveIn(BaseModel):
     """One move of the cycle, in the API's units; the dwell after it."""
 
@@ -91,24 +99,9 @@ class MoveIn(BaseModel):
         le=ACCEL[1],
         description="Deceleration [mm/s²]; left out: the acceleration.",
     )
-    dwell_s: float | None = Field(
-        default=None,
-        ge=DWELL[0],
-        le=DWELL[1],
-        description="Rest after the move [s]; left out: the axis's dwell_s.",
-    )
-    moving_mass_kg: float | None = Field(
-        default=None,
-        ge=MASS[0],
-        le=MASS[1],
-        description="Mass the move carries [kg]; left out: the axis's moving_mass_kg.",
-    )
-    load_n: float | None = Field(
-        default=None,
-        ge=LOAD[0],
-        le=LOAD[1],
-        description="External axial load [N]; left out: the axis's load_n.",
-    )
+    dwell_s: float | None = _or_axis("dwell_s", "Rest after the move [s]")
+    moving_mass_kg: float | None = _or_axis("moving_mass_kg", "Mass the move carries [kg]")
+    load_n: float | None = _or_axis("load_n", "External axial load [N]")
     load_direction: LoadDirection | None = Field(
         default=None,
         description="How the load acts, as the scalar load_direction: auto (down when "

@@ -88,6 +88,10 @@ def _euler(e_pa: float, d_or_i: float, length_m: float, fixity: str, round_d: bo
     return buckling.euler_critical_load(e_pa, i_m4, length_m, fixity)
 
 
+#: Makishinko's printed allowed axial load of its JA050 jack screw [N].
+MAKISHINKO_N = 6135.0
+
+
 def _makishinko(e_pa: float) -> float:
     """Makishinko's JA050 jack screw: a 31.5 mm root over 1000 mm, fixed-free, a quarter
     of Euler's load [N] with the modulus ``e_pa``."""
@@ -105,7 +109,7 @@ def _makishinko_note() -> str:
     return (
         f"Euler's load at Makishinko's E = {own_gpa:g} GPa. The selector rates a steel lead "
         f"screw by Thomson's and Nook's rule for steel (E = {makers_gpa:.1f} GPa): "
-        f"{rated:.0f} N, {(1 - rated / 6135.0) * 100:.1f} % below the published value."
+        f"{rated:.0f} N, {(1 - rated / MAKISHINKO_N) * 100:.1f} % below the published value."
     )
 
 
@@ -261,7 +265,7 @@ EXAMPLES: tuple[Example, ...] = (
             lambda: buckling.allowed_buckling_load(
                 _euler(STEEL_E, 0.0125, 0.820, "fixed-simple", True), 0.5)),
     Example("Allowed axial load", "Makishinko screw jacks, E-19, example JA050",
-            "root 31.5 mm, 1000 mm, fixed–free, factor 0.25", 6135.0, "N",
+            "root 31.5 mm, 1000 mm, fixed–free, factor 0.25", MAKISHINKO_N, "N",
             lambda: _makishinko(STEEL_E), _makishinko_note()),
     Example("Raising torque (thread)", threads.SHIGLEY,
             "square, d 32 mm, p 4 mm, double start, f 0.08, F 6.4 kN", 15.94, "N m",

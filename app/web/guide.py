@@ -11,6 +11,7 @@ from functools import cache
 from fastapi import APIRouter
 from fastapi.responses import HTMLResponse, Response
 
+from app.catalog.entry import PROVENANCE_MEANINGS
 from app.contract.fields import BY_API
 from app.contract.figures import sig
 from app.contract.reported import REPORTED
@@ -25,19 +26,8 @@ router = APIRouter(include_in_schema=False)
 #: The results table's columns, each a row of the output table with its label and help.
 COLUMNS = tuple(r for r in REPORTED if r.column)
 
-PROVENANCE = (
-    ("seed", "Printed in the leadscrew maker's catalog the app's data started from."),
-    ("handbook", "From an engineering handbook or textbook, such as a material's modulus."),
-    ("standard", "From a published standard, such as a thread form's dimensions."),
-    ("vendor", "From another maker's catalog or data sheet."),
-    (
-        "derived",
-        "Computed from other catalog values by the rule its source states, as a "
-        "motor's torque-speed curve drawn by the motor model from its datasheet values.",
-    ),
-    ("assumed", "Not published: an engineering assumption to confirm with the maker."),
-    ("user", "From a catalog file supplied at start-up, or from your own input."),
-)
+#: each provenance kind and its words, in the guide's order (``PROVENANCE_MEANINGS``)
+PROVENANCE = tuple(PROVENANCE_MEANINGS.items())
 
 RANKING = {
     "torque": "lowest torque first, the torque the table shows: under a move (a stroke "

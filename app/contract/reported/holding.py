@@ -62,9 +62,10 @@ ROWS: tuple[Reported, ...] = (
         compare=True,
         formula=Formula(
             holding.holding,
-            "T = SF_hold x max(seed method, physics at f mu_s); 0 when self-locking with "
-            "the friction margin; SF_hold the holding safety factor (none given: the torque "
-            "safety factor, for a brake at least its service factor 1.5)",
+            "T = SF_brake x max(seed method, physics at f mu_s); 0 when self-locking with "
+            "the friction margin; SF_brake the brake safety factor given, else the torque "
+            "safety factor and at least a brake's service factor 1.5, whatever holds the "
+            "load now",
             "safe side of both; the brake's service factor: Machine Design, \"Mechatronics "
             'Q & A: Hold It Steady" (2007)',
         ),
