@@ -136,6 +136,25 @@ class MoveIn(BaseModel):
         )
 
 
+def move_in(move: Move) -> MoveIn:
+    """A core move's travel, speed and ramps in the API's units (to 12 significant
+    figures: the unit's binary rounding left out); its dwell, mass, load and load
+    direction left out: the axis's."""
+    factors = {
+        "distance_mm": _by_core("stroke_m").si_factor,
+        "speed_mm_s": _si("speed_mm_s"),
+        "accel_mm_s2": _si("accel_mm_s2"),
+        "decel_mm_s2": _si("decel_mm_s2"),
+    }
+    values = (move.distance_m, move.speed_m_s, move.accel_m_s2, move.decel_m_s2)
+    return MoveIn(
+        **{
+            name: float(f"{v / f:.12g}")
+            for (name, f), v in zip(factors.items(), values, strict=True)
+        }
+    )
+
+
 def _si(api: str) -> float:
     field: InputField = BY_API[api]
     return field.si_factor

@@ -107,9 +107,8 @@ MachineAxisOut = create_model(
             "m a, a load that opposes their motion) that the parallel axes above pass to "
             "this axis's nut when they move while it moves, the largest of each summed [N] "
             "(stacking.parallel_reaction). Not in its sizing, which moves them one at a "
-            "time: when they move together, add it to this axis's load. It holds their "
-            "standing load too where this axis is not sized with it (standing_load_n 0). "
-            "0 without a parallel axis above."
+            "time: when they move together, add it to this axis's load. 0 without a "
+            "parallel axis above."
         ),
     ),
     standing_load_n=(
@@ -118,8 +117,9 @@ MachineAxisOut = create_model(
             description="The load that acts one way (a weight, spring or press) on the "
             "parallel axes above, which stands on this axis's nut whether either moves "
             "[N]: added to this axis's load, acting down, in its sizing and its share "
-            "link (machine.with_standing_load). 0 without one, and where this axis's own "
-            "load opposes its motion and cannot take it (then in parallel_thrust_n)."
+            "link (machine.with_standing_load). Where this axis's own load opposes its "
+            "motion, its out and back are sized as two moves: up with the sum, down with "
+            "the difference. 0 without one."
         ),
     ),
     sized_mass_kg=(

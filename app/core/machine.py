@@ -97,8 +97,7 @@ class AxisResult:
     the thrust beyond their weight they pass to its nut when they move with it [N]
     (``parallel_thrust``; not in its sizing), its motor's mass in that total [kg]
     with where it comes from (``motor_mass``), and the load the parallel axes above
-    stand on its nut whether they move or not, in its sizing [N] (``standing_load_n``;
-    0 where its own load opposes the motion and cannot take it: then in the thrust)."""
+    stand on its nut whether they move or not, in its sizing [N] (``standing_load_n``)."""
 
     axis: Axis
     app: Application
@@ -170,22 +169,28 @@ def standing_load_n(app: Application) -> float:
     return max((m.load_n * motion.load_sense(app, m)[0] for m in motion.cycle(app)), default=0.0)
 
 
-def _one_way(app: Application, move: Move | None = None) -> bool:
-    """Whether the load of ``app`` (of ``move``) can take one acting one way: it acts so
-    itself, or it is nil."""
-    load = app.load_n if move is None else move.load_n
-    return load == 0.0 or motion.load_sense(app, move)[0] == 1.0
+def _standing_move(app: Application, move: Move, load_n: float) -> Move:
+    """``move`` with ``load_n`` [N] more acting one way (down, against its up move): the
+    sum where its own acts so; where its own opposes the motion, the sum on an up move
+    and the difference on a down one, which opposes the motion where its own is the
+    larger."""
+    own = move.load_n
+    if motion.load_sense(app, move)[0] == 1.0 or move.distance_m >= 0.0:
+        return replace(move, load_n=load_n + own, load_direction="fixed")
+    net = load_n - own
+    return replace(move, load_n=abs(net), load_direction="fixed" if net >= 0.0 else "opposes")
 
 
-def with_standing_load(app: Application, load_n: float) -> Application | None:
+def with_standing_load(app: Application, load_n: float) -> Application:
     """``app`` (vertical) with ``load_n`` [N] more load acting one way, against its up
-    move (``standing_load_n`` of the axes above), in its scalar load and in each move's:
-    the sum where its own acts one way, ``load_n`` alone that way where its own is nil.
-    None where its load (or one move's) opposes the motion both ways, which one load
-    acting one way cannot join: the answer then reports it in the thrust."""
-    if not (_one_way(app) and all(_one_way(app, m) for m in app.moves)):
-        return None
-    moves = tuple(replace(m, load_n=m.load_n + load_n, load_direction="fixed") for m in app.moves)
+    move (``standing_load_n`` of the axes above), in its scalar load and in each move's
+    (``_standing_move``). Where a load of its own opposes the motion, its cycle out and
+    back over the stroke becomes its two moves, each with its own sum; without a stroke
+    the scalar load is the sum, as on the up move, the larger."""
+    own = app.load_n * motion.load_sense(app)[1]
+    if own > 0.0 and not app.moves and app.stroke_m:
+        app = replace(app, moves=motion.cycle(app))
+    moves = tuple(_standing_move(app, m, load_n) for m in app.moves)
     return replace(app, load_n=app.load_n + load_n, load_direction="fixed", moves=moves)
 
 
@@ -209,12 +214,11 @@ def size_axis(
     """One axis with ``carried_kg`` of upper axes added to its moving mass, which leaves
     out the screws of the axes ``uncounted`` (none chosen there), and, when it is
     vertical, the load ``standing_n`` [N] the vertical axes above stand on its nut added
-    to its own (``with_standing_load``; left out where its own opposes the motion)."""
+    to its own (``with_standing_load``)."""
     app = carrying(axis.app, carried_kg)
-    loaded = None
-    if standing_n > 0.0 and app.orientation == "vertical":
-        loaded = with_standing_load(app, standing_n)
-    app = app if loaded is None else loaded
+    standing = standing_n if app.orientation == "vertical" else 0.0
+    if standing > 0.0:
+        app = with_standing_load(app, standing)
     sel = select(app, index, ranges, words, axis.provenance)
     chosen = _chosen(app, index, sel, axis)
     screw_kg = 0.0 if chosen is None else screw_mass(app, chosen)
@@ -231,7 +235,7 @@ def size_axis(
         uncounted,
         motor_kg=motor_kg,
         motor_origin=origin,
-        standing_load_n=0.0 if loaded is None else standing_n,
+        standing_load_n=standing,
     )
 
 

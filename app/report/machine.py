@@ -7,6 +7,7 @@ from app.catalog import Catalog
 from app.catalog.axis_motor import library_motor_mass
 from app.catalog.motors import UndrivableMotor, UnknownMotor
 from app.catalog.supports import UnknownSupport
+from app.contract.cycle import move_in
 from app.contract.fields import LOAD, LOAD_DIRECTION, MOVING_MASS
 from app.contract.machine import MachineIn
 from app.contract.reported import REPORTED
@@ -69,26 +70,31 @@ def machine_axes(body: MachineIn, catalog: Catalog) -> list[Axis]:
     return axes
 
 
-def _sized(given: Any, r: AxisResult) -> Any:
+def _sized(given: Any, r: AxisResult, sized: Any) -> Any:
     """The axis's inputs (or one move's) as it was sized: the mass of the axes above
-    added to its moving mass and, where it is sized with it, their standing load to its
-    load, acting down (``app.core.machine.with_standing_load``). A move's mass or load left
-    out stays so: it is the axis's, which carries them."""
+    added to its moving mass and, where it is sized with it, the load of ``sized`` (the
+    core's application or move it became: ``app.core.machine.with_standing_load``), in
+    N as the API's. A move's mass left out stays so: it is the axis's, which carries it."""
     update: dict[str, Any] = {}
     mass = getattr(given, MOVING_MASS.api)
     if mass is not None:
         update[MOVING_MASS.api] = mass + r.carried_kg
     if r.standing_load_n > 0.0:
-        load = getattr(given, LOAD.api)
-        if load is not None:
-            update[LOAD.api] = load + r.standing_load_n
-        update[LOAD_DIRECTION.api] = "fixed"
+        update[LOAD.api] = getattr(sized, LOAD.core)
+        update[LOAD_DIRECTION.api] = getattr(sized, LOAD_DIRECTION.core)
     return given.model_copy(update=update)
+
+
+def _sized_moves(given: Any, r: AxisResult) -> list[Any]:
+    """The axis's moves as it was sized: its own, or the out and back over its stroke
+    that sizing it with a standing load made of it (its own load opposing the motion)."""
+    moves = given.moves or [move_in(m) for m in r.app.moves]
+    return [_sized(m, r, c) for m, c in zip(moves, r.app.moves, strict=True)]
 
 
 def _axis_out(body: MachineIn, i: int, r: AxisResult) -> dict[str, Any]:
     given = body.axes[i].inputs
-    inputs = _sized(given, r).model_copy(update={"moves": [_sized(m, r) for m in given.moves]})
+    inputs = _sized(given, r, r.app).model_copy(update={"moves": _sized_moves(given, r)})
     return {
         "name": r.axis.name,
         "carried_kg": r.carried_kg,

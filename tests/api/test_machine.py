@@ -190,6 +190,39 @@ def test_a_vertical_lift_is_sized_and_linked_with_the_load_standing_on_it(
     assert page.status_code == 200 and low["chosen"]["id"] in page.text
 
 
+def test_a_lift_whose_friction_opposes_its_motion_still_carries_the_press_above(
+    client: TestClient,
+) -> None:
+    """Z presses 3000 N down (a load acting one way) on a vertical W whose own 20 N of
+    friction opposes its motion: the 3000 N stands on W's nut all the time, so W is sized
+    with 3020 N up and 2980 N down (W's friction against each move). It was sized with
+    the 20 N alone, and passed a ball screw rated about a week at this duty. Its share
+    link carries the two moves and reproduces the choice, and W of those moves alone is
+    the same answer."""
+    z = {
+        "load_n": 3000, "speed_mm_s": 100, "length_mm": 400, "stroke_mm": 300,
+        "cycles_per_day": 2000, "required_life_years": 5, "moving_mass_kg": 10,
+        "orientation": "vertical", "family": ["HIWIN-ROLLED"], "brake_torque_nm": 10,
+    }  # fmt: skip
+    w = {**z, "load_n": 20, "load_direction": "opposes", "length_mm": 600, "stroke_mm": 400}
+    axes = [{"name": "Z", "inputs": z, "frame_kg": 5}, {"name": "W", "inputs": w}]
+    low = client.post("/api/v1/machine", json={"axes": axes}).json()["axes"][1]
+    assert low["standing_load_n"] == 3000.0
+    moves = "400:100:1000:1000:::3020:fixed;-400:100:1000:1000:::2980:fixed"
+    alone = {**w, "moving_mass_kg": low["sized_mass_kg"], "moves": moves}
+    single = client.post("/api/v1/select", json=alone).json()["candidates"][0]
+    assert single["id"] == low["chosen"]["id"] and single["torque"] == low["chosen"]["torque"]
+    # the ball screw the 20 N alone let through fails its life at the 3000 N standing load
+    assert low["chosen"]["id"] != "R12-05K4-FSCDIN"
+    evaluated = client.post(
+        "/api/v1/evaluate", json={"application": alone, "screw": {"catalog_id": "R12-05K4-FSCDIN"}}
+    ).json()
+    assert evaluated["candidate"]["passed"] is False
+    assert "3020" in low["share_url"] and "2980" in low["share_url"]
+    page = client.get(low["share_url"])
+    assert page.status_code == 200 and low["chosen"]["id"] in page.text
+
+
 def test_axes_of_bare_moves_take_their_mass_and_load_from_the_axis(client: TestClient) -> None:
     """Moves that leave out their mass and load (a share link's moves, as the page writes
     them from empty cells) are the axis's: X of bare moves under Z carries Z as X's own

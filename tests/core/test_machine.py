@@ -178,18 +178,40 @@ def test_a_load_on_a_vertical_axis_stands_on_the_vertical_axis_below(catalog: Ca
     assert bare.quantities.torque.total_nm < 0.6 * low.chosen.quantities.torque.total_nm
 
 
-def test_a_lower_load_that_opposes_the_motion_cannot_take_a_standing_one(
+def test_a_lower_load_that_opposes_the_motion_is_sized_with_the_standing_one(
     catalog: Catalog,
 ) -> None:
-    """W's own 20 N opposes its motion both ways: one load cannot act both so and one
-    way, so W keeps its own and the answer gives Z's 100 N standing load with its m a in
-    the thrust it leaves out: 100 + 0.5 x 0.2 = 100.1 N."""
+    """W's own 20 N opposes its motion both ways, Z's 100 N stands on W's nut: up, both
+    act down (120 N); down, W's own acts up (100 - 20 = 80 N down). With a stroke W's
+    out and back are sized as those two moves; without one, at the larger, 120 N. The
+    thrust left out is Z's m a alone: 0.5 x 0.2 = 0.1 N."""
     w = replace(Z, moving_mass_kg=0.2, lead_m=None, brake_torque_nm=None, load_n=20.0)
+    w = replace(w, load_direction="opposes")
+    z = Axis("Z", replace(Z, load_n=100.0), 0.3, 0.4)
+    _, low = size_machine([z, Axis("W", w)], catalog.index, {}, {}).axes
+    assert low.standing_load_n == 100.0
+    assert [(m.distance_m, m.load_n, m.load_direction) for m in low.app.moves] == [
+        (0.2, 120.0, "fixed"),
+        (-0.2, 80.0, "fixed"),
+    ]
+    assert low.parallel_thrust_n == pytest.approx(0.1, rel=1e-12)
+    _, bare = size_machine([z, Axis("W", replace(w, stroke_m=None))], catalog.index, {}, {}).axes
+    assert (bare.app.moves, bare.app.load_n, bare.app.load_direction) == ((), 120.0, "fixed")
+
+
+def test_a_lower_load_larger_than_the_standing_one_opposes_the_down_move(
+    catalog: Catalog,
+) -> None:
+    """W's own 150 N opposes its motion, Z's 100 N stands on W's nut: down, 150 N acts up
+    against 100 N down, so the move meets 50 N against its motion."""
+    w = replace(Z, moving_mass_kg=0.2, lead_m=None, brake_torque_nm=None, load_n=150.0)
     w = replace(w, load_direction="opposes")
     axes = [Axis("Z", replace(Z, load_n=100.0), 0.3, 0.4), Axis("W", w)]
     _, low = size_machine(axes, catalog.index, {}, {}).axes
-    assert (low.standing_load_n, low.app.load_n, low.app.load_direction) == (0.0, 20.0, "opposes")
-    assert low.parallel_thrust_n == pytest.approx(100.1, rel=1e-12)
+    assert [(m.load_n, m.load_direction) for m in low.app.moves] == [
+        (250.0, "fixed"),
+        (50.0, "opposes"),
+    ]
 
 
 def test_each_move_of_a_lower_vertical_cycle_takes_the_standing_load(catalog: Catalog) -> None:
