@@ -76,7 +76,9 @@ class TorqueOut(BaseModel):
     load_nm: Annotated[float, From("load_nm", "torque")]
     total_nm: Annotated[float, From("total_nm", "torque")]
     breakaway_nm: Annotated[float, From("breakaway_nm", "torque")] = Field(
-        description="Starting from rest: (F + m a) lead / (2 pi eta_static) + J alpha + drag."
+        description="Starting from rest: (F + m a) lead / (2 pi eta_static) + J alpha + drag "
+        "(a move the load drives: through the back-driven efficiency at static friction), "
+        "the largest of every move's start."
     )
     safety_factor: Annotated[float, From("safety_factor")]
     required_nm: Annotated[float, From("required_nm", "torque")]

@@ -40,7 +40,8 @@ def friction_columns(
     ``mu_d``, with the screw's geometry (tan of the lead angle ``tan_l``, cos of the
     flank half-angle ``cos_a``, the pitch diameter ``d_p`` [m]; ``ball``: a ball screw):
     the frictions themselves, the efficiencies driving
-    and back-driven, running and from rest, and whether the thread self-locks
+    and back-driven, running and from rest (the signed back-driven ones, negative where
+    the thread self-locks, at ``mu_d`` and ``mu_s``), and whether the thread self-locks
     (``formulas.efficiency``, ``formulas.profile``; a ball screw drives at most at its
     maker's efficiency, ``ballscrew.forward_efficiency``), the longest self-locking
     lead, the lower of the two driving efficiencies (the root section's torque), 2 pi
@@ -70,6 +71,9 @@ def friction_columns(
         "self_locking": hold >= efficiency.self_locking_limit_friction(tan_l, cos_a),
         "backdrive_efficiency_running": efficiency.backdrive_efficiency(tan_l, mu_d, cos_a),
         "backdrive_efficiency_signed": profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
+        "start_backdrive_efficiency_signed": profile.signed_backdrive_efficiency(
+            tan_l, mu_s, cos_a
+        ),
         "max_self_locking_lead_m": efficiency.max_self_locking_lead(d_p, hold, cos_a),
         "root_efficiency": np.minimum(eta, eta_s),
         "efficient_turn_rad": torque.efficient_turn(eta),

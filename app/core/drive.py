@@ -10,6 +10,7 @@ import numpy as np
 from app.core import cycle_energy, motion, segments
 from app.core.formulas import (
     geometry,
+    profile,
     stepping,
     torque,
 )
@@ -93,9 +94,16 @@ def torque_before_factor_nm(app: Application) -> float | None:
 def breakaway(t: CandidateTable, start_n: float, spin_nm: Array) -> Array:
     """The torque that starts a move from rest [N m]: its thrust ``start_n`` (the running
     thrust and the force m a that accelerates its mass) through the thread at static
-    friction, the screw's and the rotor's inertia torque ``spin_nm`` and the nut's drag."""
-    thread: Array = torque.load_torque(
-        start_n, t.lead_m, t.efficiency_static, t.start_efficient_turn_rad
+    friction (``profile.thread_torque``: where the load drives the move, at the signed
+    back-driven efficiency, so that a thread self-locking at static friction needs the
+    motor to start lowering), the screw's and the rotor's inertia torque ``spin_nm`` and
+    the nut's drag."""
+    thread: Array = profile.thread_torque(
+        start_n,
+        t.lead_m,
+        t.efficiency_static,
+        t.start_backdrive_efficiency_signed,
+        t.start_efficient_turn_rad,
     )
     return thread + spin_nm + t.drag_max_nm
 

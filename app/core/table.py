@@ -254,6 +254,9 @@ class CandidateTable:
     #: running back-drive efficiency without the clip at 0 (negative: self-locking), for
     #: the torque of a segment where the load drives
     backdrive_efficiency_signed: Array
+    #: the same at static friction, for the start from rest of a move the load drives (a
+    #: thread that self-locks at static friction needs the motor to start lowering)
+    start_backdrive_efficiency_signed: Array
     yield_strength_pa: Array
     thermal_conductivity_w_m_k: Array
     pitch_m: Array

@@ -85,6 +85,38 @@ def test_breakaway_uses_static_friction_and_running_uses_dynamic(
     assert ev.self_locking == efficiency.is_self_locking(tan_l, screw.friction_static, cos_a)
 
 
+def test_lowering_a_load_from_rest_on_a_self_locking_thread_needs_the_motor(
+    catalog: Catalog,
+) -> None:
+    """200 kg lowered 200 mm on Tr20x4-bronze oiled (mu_s 0.16: self-locking), returned
+    empty. The load pulls the nut down with W - m a = 200 (9.80665 - 0.05) = 1951.33 N,
+    but the thread holds at static friction: the motor starts the lowering against it,
+    Shigley's lowering torque T_L = F d2/2 (mu - cos a tan l) / (cos a + mu tan l) at
+    mu_s (sec. 8-2, with the flank angle), 1.6475 N m, plus the
+    screw's inertia torque and the drag. It was worked at the forward efficiency, a
+    negative torque that the up move's start outweighed, and passed a 1.3 N m drive."""
+    from app.core.model import Move
+
+    down = Move(-0.2, 0.005, 0.05, 0.05, dwell_s=1.0, moving_mass_kg=200.0)
+    up = Move(0.2, 0.005, 0.05, 0.05, dwell_s=1.0)
+    app = Application(
+        load_n=0.0, speed_m_s=0.005, length_m=0.5, orientation="vertical",
+        lubrication="oiled", max_torque_nm=1.3, moves=(down, up),
+    )  # fmt: skip
+    screw = catalog.by_id["Tr20x4-bronze"]
+    ev = evaluate(app, screw)
+    force_n = 200.0 * (STANDARD_GRAVITY_M_S2 - 0.05)
+    d2 = screw.flank_pitch_diameter_m  # ISO 2904's d2, which the thread's angle is taken at
+    tan_l, cos_a = screw.lead_m / (math.pi * d2), math.cos(math.radians(15.0))
+    mu_s = screw.friction_static
+    assert (round(d2 * 1e3, 6), mu_s, screw.drag_torque_max_nm) == (18.0, 0.16, 0.0)
+    lowering = force_n * d2 / 2 * (mu_s - cos_a * tan_l) / (cos_a + mu_s * tan_l)
+    assert lowering == pytest.approx(1.6475, abs=5e-5)
+    spin = ev.torque.inertia_screw_nm + ev.torque.inertia_motor_nm
+    assert ev.torque.breakaway_nm == pytest.approx(lowering + spin, rel=1e-9)
+    assert not check(ev, "torque").passed
+
+
 def test_buckling_only_in_compression(zbx8000_l10: ScrewSpec) -> None:
     """engineering.md section 5: buckling applies only when the load compresses the screw:
     a vertical axis hanging from its thrust bearing (tension) never is; 50 N of friction

@@ -6,9 +6,9 @@ from typing import Any
 from app.contract.reported.row import Formula, Reported
 from app.contract.source import From, Writer
 from app.contract.units import si_to_api
-from app.core import quantities, segments
+from app.core import drive, quantities, segments
 from app.core.formulas import efficiency, energy, geometry, profile, torque
-from app.core.formulas.declare import SEED
+from app.core.formulas.declare import SEED, SHIGLEY
 
 
 def screw_inertia(values: tuple[float, float], w: Writer) -> float:
@@ -176,10 +176,12 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "torque.breakaway_nm",
         formula=Formula(
-            torque.load_torque,
+            drive.breakaway,
             "T = (F + m a) lead / (2 pi eta_static) + (J_screw + J_coupling + J_rotor) alpha "
-            "+ T_drag, starting from rest (the largest of every move's start)",
-            SEED + " with static friction",
+            "+ T_drag, starting from rest (the largest of every move's start; where the "
+            "load drives the move, (F + m a) lead eta_b_static / (2 pi): positive where "
+            "the thread self-locks at static friction, the motor starting the lowering)",
+            SEED + " with static friction; " + SHIGLEY + " (lowering torque)",
         ),
     ),
     Reported(
