@@ -237,3 +237,21 @@ def test_a_preloaded_nut_carries_its_preload_below_the_disengagement_force() -> 
     )
     assert float(ballscrew.preloaded_operating_load(2000.0, 480.0)) == 2000.0
     assert float(ballscrew.preloaded_operating_load(50.9, 0.0)) == 50.9
+
+
+def test_a_ball_nut_travels_its_stroke_on_the_screw(catalog: Catalog) -> None:
+    """R12-05K4-FSCDIN's nut is 33 mm long (HIWIN BS-08-2-EN Table 4.4, L): a 790 mm
+    stroke on an 800 mm screw runs it off the thread (823 mm), a 700 mm one fits (733 mm).
+    Its nut has no thread pitch to rate turns by, and the check was left out unsaid: the
+    nut that cannot fit passed."""
+    screw = catalog.by_id["R12-05K4-FSCDIN"]
+    assert screw.nut_length_m == pytest.approx(0.033)
+    for stroke_m, passes in ((0.79, False), (0.7, True)):
+        app = Application(load_n=50.0, speed_m_s=0.1, length_m=0.8, stroke_m=stroke_m)
+        stroke = next(c for c in evaluate(app, screw).checks if c.name == "stroke_travel")
+        assert stroke.value == pytest.approx(stroke_m + 0.033, rel=1e-12)
+        assert stroke.passed is passes
+    # a nut length typed is the one that travels
+    typed = Application(load_n=50.0, speed_m_s=0.1, length_m=0.8, stroke_m=0.7, nut_length_m=0.12)
+    stroke = next(c for c in evaluate(typed, screw).checks if c.name == "stroke_travel")
+    assert not stroke.passed and stroke.value == pytest.approx(0.82, rel=1e-12)

@@ -42,13 +42,14 @@ class StrokeTravel(Check):
         return app.stroke_m is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        total = (app.stroke_m or 0.0) + q.nut.nut_length_m
-        return Measure(where_given(q.nut.nut_length_m), total, same(t, app.length_m))
+        nut_m = nut_lengths(app, t)
+        total = (app.stroke_m or 0.0) + nut_m
+        return Measure(where_given(nut_m), total, same(t, app.length_m))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"stroke": app.stroke_m, "L_nut": q.nut.nut_length_m, "L_screw": app.length_m}
+        return {"stroke": app.stroke_m, "L_nut": nut_lengths(app, t), "L_screw": app.length_m}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "fit within" if passed else "exceed"
@@ -56,15 +57,16 @@ class StrokeTravel(Check):
             "The stroke {s} and the nut {nut} " + verb + " the screw length {L}.",
             {
                 "s": Amount(app.stroke_m or 0.0, "length"),
-                "nut": Amount(r.nut.nut_length_m, "length"),
+                "nut": Amount(nut_length(app, s), "length"),
                 "L": Amount(app.length_m, "length"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        longer = {"L": least((app.stroke_m or 0.0) + r.nut.nut_length_m, "length")}
+        nut_m = nut_length(app, s)
+        longer = {"L": least((app.stroke_m or 0.0) + nut_m, "length")}
         # the stroke plus the nut kept FIX_MARGIN inside the screw length, as promised
-        room = at_most(app.length_m) - r.nut.nut_length_m
+        room = at_most(app.length_m) - nut_m
         if room <= 0.0:
             return Phrase("Lengthen the screw to at least {L}." + MARGIN_NOTE, longer)
         return Phrase(
@@ -76,4 +78,16 @@ class StrokeTravel(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return {"length_m": (app.stroke_m or 0.0) + r.nut.nut_length_m}
+        return {"length_m": (app.stroke_m or 0.0) + nut_length(app, s)}
+
+
+def nut_lengths(app: Application, t: CandidateTable) -> Array:
+    """Each candidate's nut length [m]: the one typed, else the catalog's (NaN: none), the
+    whole nut, whether or not its turns' share of the load is rated (a ball nut's)."""
+    return t.nut_length_m if app.nut_length_m is None else same(t, app.nut_length_m)
+
+
+def nut_length(app: Application, s: ScrewSpec) -> float:
+    """``nut_lengths`` of one screw [m] (NaN: none)."""
+    length = app.nut_length_m if app.nut_length_m is not None else s.nut_length_m
+    return float("nan") if length is None else length
