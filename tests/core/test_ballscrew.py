@@ -255,3 +255,25 @@ def test_a_ball_nut_travels_its_stroke_on_the_screw(catalog: Catalog) -> None:
     typed = Application(load_n=50.0, speed_m_s=0.1, length_m=0.8, stroke_m=0.7, nut_length_m=0.12)
     stroke = next(c for c in evaluate(typed, screw).checks if c.name == "stroke_travel")
     assert not stroke.passed and stroke.value == pytest.approx(0.82, rel=1e-12)
+
+
+@pytest.mark.parametrize(("load_n", "passes"), [(900.0, True), (1000.0, False)])
+def test_a_preloaded_nut_keeps_no_play_below_its_preload_release_force(
+    catalog: Catalog, load_n: float, passes: bool
+) -> None:
+    """R16-16K2-FSC: Ca 6800 N, preloaded to 5 % of it (the catalog's assumed top of
+    HIWIN's range), F_pr = 340 N, released at F_lim = 2^(3/2) x 340 = 961.7 N (HIWIN sec.
+    3.7.2 F 3.7): an axis that must have no backlash keeps it at 900 N, not at 1000 N.
+    Every preloaded nut passed "Anti-backlash" at any thrust (3000 N on it passed)."""
+    screw = catalog.by_id["R16-16K2-FSC"]
+    assert (screw.dynamic_load_n, screw.preload_n) == (6800.0, pytest.approx(340.0))
+    app = light_app(load_n=load_n, require_anti_backlash=True)
+    checks = {c.name: c for c in evaluate(app, screw).checks}
+    assert checks["anti_backlash"].passed
+    release = checks["preload_release"]
+    assert release.capacity == pytest.approx(961.665, rel=1e-6)
+    assert release.value == pytest.approx(load_n, rel=1e-9)  # light_app has no moving mass
+    assert release.passed is passes
+    # an axis that may have play does not ask
+    free = evaluate(light_app(load_n=load_n), screw).checks
+    assert "preload_release" not in {c.name for c in free}

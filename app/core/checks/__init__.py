@@ -29,6 +29,7 @@ from app.core.checks.motor_speed import MotorSpeed
 from app.core.checks.nut_heat import NutHeat
 from app.core.checks.oil import OilCompatibility
 from app.core.checks.power_off import HoldingPowerOff
+from app.core.checks.preload_release import PreloadRelease
 from app.core.checks.pv import NutPV
 from app.core.checks.root_stress import RootStress
 from app.core.checks.step_rate import StepRate
@@ -72,6 +73,7 @@ REGISTRY: tuple[Check, ...] = (
     Holding(),
     HoldingPowerOff(),
     AntiBacklash(),
+    PreloadRelease(),
     Life(),
     BallLife(),
     BallLoad(),

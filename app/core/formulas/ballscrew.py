@@ -63,6 +63,18 @@ def cubic_mean_load(forces_n: ArrayLike, travels_m: Sequence[float]) -> Any:
     return np.cbrt(cubes / total)
 
 
+@formula("F_lim = 2^(3/2) F_pr", HIWIN + ", sec. 3.7.2 F 3.7 (the operating load's limit)")
+def preload_release_force(preload_n: ArrayLike) -> Any:
+    """The axial load [N] at which a preloaded ball nut's unloaded side goes slack, the
+    disengagement force F_lim = 2^(3/2) F_pr of the preload F_pr [N]: beyond it the nut
+    has play. Numbers or arrays alike.
+
+    >>> round(float(preload_release_force(340.0)), 1)
+    961.7
+    """
+    return 2.0**1.5 * np.asarray(preload_n, dtype=np.float64)
+
+
 @formula(
     "F_b = (1 + F / (2^(3/2) F_pr))^(3/2) F_pr below F_lim = 2^(3/2) F_pr, else F",
     HIWIN + ", sec. 3.7.2 F 3.7 (operating load of a preloaded nut)",
@@ -85,7 +97,7 @@ def preloaded_operating_load(force_n: ArrayLike, preload_n: ArrayLike) -> Any:
     """
     force = np.abs(np.asarray(force_n, dtype=np.float64))
     preload = np.asarray(preload_n, dtype=np.float64)
-    limit = 2.0**1.5 * preload
+    limit = preload_release_force(preload)
     engaged = force < limit
     # raised to the 3/2 power only where the preload counts (NaN, a nut without one, is
     # slow to raise), the rest left 0 and not read
