@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Protocol
 
-from app.core import motion
+from app.core import holding, motion
 from app.core.batch import CheckResult
 from app.core.checks.base import Check
 from app.core.model import Application, Provenance, ScrewSpec
@@ -309,22 +309,26 @@ def watch_list(c: Record) -> tuple[Phrase, ...]:
     if second is not None and second.utilization is not None:
         found.append(Phrase(f"{second.label} next, at {percent(second.utilization)}"))
     if motion.holds_a_load(c.app) and not c.self_locking_with_margin:
-        detent = next((k for k in c.checks if k.name == "holding_power_off"), None)
-        if detent is not None and detent.utilization is not None:
-            found.append(
-                Phrase(f"power off: held by the detent torque at {percent(detent.utilization)}")
-            )
-        else:
-            # the brake to fit: the torque to hold times a brake's safety factor, as the
-            # holding check sizes a brake (``holding.holding``)
-            brake = Amount(c.brake_to_fit_nm, "torque")
-            found.append(
-                Phrase("back-drives: a brake of at least {t} holds it power-off", {"t": brake})
-            )
+        found.append(_held_power_off(c))
     short = _unchecked_life(c)
     if short is not None:
         found.append(short)
     return tuple(found)
+
+
+def _held_power_off(c: Record) -> Phrase:
+    """How a load the thread does not hold with margin is held with the power off: by the
+    brake or the detent torque given (``holding.unpowered_holder``) at its utilisation
+    where it holds, else the brake to fit, a brake's safety factor times the torque to hold (as the
+    holding check sizes a brake, ``holding.holding``), rounded up."""
+    holder = holding.unpowered_holder(c.app)
+    name = {"brake": "holding", "detent": "holding_power_off"}.get(holder or "")
+    held = next((k for k in c.checks if k.name == name), None)
+    if held is not None and held.utilization is not None and held.passed:
+        what = "brake" if holder == "brake" else "detent torque"
+        return Phrase(f"power off: held by the {what} at {percent(held.utilization)}")
+    brake = Amount(c.brake_to_fit_nm, "torque", "up")
+    return Phrase("back-drives: a brake of at least {t} holds it power-off", {"t": brake})
 
 
 def life_rests_on(life: Life, provenance: Mapping[str, Provenance]) -> tuple[str, ...]:

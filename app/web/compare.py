@@ -11,6 +11,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Literal
 
+from app.contract.figures import bound_text
 from app.contract.reported import REPORTED, show, value_of
 from app.contract.schemas import CandidateOut
 from app.contract.units import Display
@@ -67,7 +68,8 @@ def _holding(c: CandidateOut, d: Display) -> str:
         return "self-locking"
     if c.holding_torque.brake_nm == 0.0:
         return "no load to hold"
-    return f"brake ≥ {d.text(c.holding_torque.brake_to_fit_nm, 'torque', 3)} {d.label('torque')}"
+    needed = d.value(c.holding_torque.brake_to_fit_nm, "torque")
+    return f"brake ≥ {bound_text(needed, '.3g', 'up')} {d.label('torque')}"
 
 
 def _ranked(value: object) -> float | None:

@@ -26,9 +26,10 @@ BRAKE_TO_FIT_NM = 1.5 * HOLD_NM
 
 
 def test_the_brake_to_fit_carries_the_service_factor(client: TestClient) -> None:
-    """The holding check asks 0.464 N m of the brake; the verdict's watch list, the API's
-    brake to fit and the results cell give the same torque, never the 0.309 N m before the
-    factor (a 0.318 N m brake, the SGM7J's own, would read as enough and fail the check)."""
+    """The holding check asks 0.464 N m of the brake; the API's brake to fit and the
+    results cell give the same torque, never the 0.309 N m before the factor (a 0.318 N m
+    brake, the SGM7J's own, would read as enough and fail the check), and the verdict's
+    watch list the 0.6 N m brake given at 0.4637 / 0.6 = 77 % of it."""
     c = client.get("/api/v1/evaluate", params=QUERY).json()["candidate"]
     held = next(k for k in c["checks"] if k["name"] == "holding")
     assert held["value"] == pytest.approx(BRAKE_TO_FIT_NM, rel=1e-4)
@@ -36,7 +37,7 @@ def test_the_brake_to_fit_carries_the_service_factor(client: TestClient) -> None
     assert c["holding_torque"]["brake_to_fit_nm"] == pytest.approx(BRAKE_TO_FIT_NM, rel=1e-4)
     assert c["hold_margin"] == pytest.approx(0.6 / BRAKE_TO_FIT_NM, rel=1e-4)  # 1.294
     watch = " ".join(c["verdict"]["watch"])
-    assert "a brake of at least 0.464 N m holds it power-off" in watch, watch
+    assert "power off: held by the brake at 77 %" in watch, watch
     page = client.get("/", params={
         "load": "0", "moving_mass_kg": "20", "orientation": "vertical", "lead": "10",
         "speed": "250", "length": "600", "family": "HIWIN-GROUND", "brake_torque": "0.6",
@@ -100,3 +101,24 @@ def test_the_detail_names_johnson_where_the_short_column_governs(client: TestCli
     }).text  # fmt: skip
     assert "0.5 × Johnson, short column 46438 N" in page
     assert "× Euler 46438" not in page
+
+
+def test_the_brake_the_verdict_asks_for_holds_when_fitted(client: TestClient) -> None:
+    """Tr20x8(P4)-ptfe lifting 10 kg back-drives: the brake to fit is 0.087324 N m. The
+    watch list asked for "at least 0.0873 N m", rounded to the nearest, and a 0.0873 N m
+    brake then failed, its message reading "0.0873 N m is short of the 0.0873 N m needed".
+    A torque needed is written rounded up: 0.0874 N m, which holds."""
+    axis = {
+        "load_n": "0", "moving_mass_kg": "10", "orientation": "vertical", "speed_mm_s": "100",
+        "length_mm": "600", "stroke_mm": "500", "catalog_id": "Tr20x8(P4)-ptfe",
+    }  # fmt: skip
+    bare = client.get("/api/v1/evaluate", params=axis).json()["candidate"]
+    assert bare["holding_torque"]["brake_to_fit_nm"] == pytest.approx(0.087324, rel=1e-5)
+    assert "a brake of at least 0.0874 N m holds it power-off" in " ".join(bare["verdict"]["watch"])
+    short = client.get("/api/v1/evaluate", params={**axis, "brake_torque_nm": "0.0873"})
+    held = next(k for k in short.json()["candidate"]["checks"] if k["name"] == "holding")
+    assert not held["passed"] and "0.0873 N m is short of the 0.0874 N m needed" in held["message"]
+    fitted = client.get("/api/v1/evaluate", params={**axis, "brake_torque_nm": "0.0874"})
+    c = fitted.json()["candidate"]
+    assert c["passed"], c["verdict"]["text"]
+    assert "power off: held by the brake at 99.9 %" in c["verdict"]["watch"]

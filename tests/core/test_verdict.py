@@ -86,21 +86,30 @@ def test_the_verdict_rests_on_the_assumed_values_of_its_governing_check(
 def test_a_back_driving_vertical_screw_says_what_holds_it_power_off(catalog: Catalog) -> None:
     """Vertical, 10 kg on the nut: a screw that does not self-lock with margin names the
     brake it needs (the torque to hold times the brake's safety factor, as the holding
-    check asks) in its watch list. (The surest power-off holds rank
-    first, the self-locking ones among them: the list goes to 100 to reach the others.)"""
+    check asks) in its watch list; with a 5 N m brake given, the share of it the hold
+    takes. (The surest power-off holds rank first, the self-locking ones among them: the
+    list goes to 100 to reach the others.)"""
     app = Application(
         load_n=0.0, speed_m_s=0.05, length_m=0.3, moving_mass_kg=10.0,
-        orientation="vertical", brake_torque_nm=5.0, limit=100,
+        orientation="vertical", limit=100,
     )  # fmt: skip
-    sel = select(app, catalog.index)
-    loose = [c for c in sel.candidates if not c.self_locking_with_margin]
-    assert loose
-    for c in loose[:5]:
-        watch = verdict(c).watch
-        assert any("brake" in w.template for w in watch)
-        brake = next(w for w in watch if "brake" in w.template).values["t"]
-        assert brake.value == pytest.approx(c.brake_needed_nm)  # type: ignore[union-attr]
-        assert brake.value == pytest.approx(1.5 * c.brake_nm)  # type: ignore[union-attr]
+    for braked in (False, True):
+        given = replace(app, brake_torque_nm=5.0) if braked else app
+        sel = select(given, catalog.index)
+        # without a brake they fail, not held: among the rejected
+        pool = sel.candidates if braked else sel.rejected
+        loose = [c for c in pool if not c.self_locking_with_margin]
+        assert loose
+        for c in loose[:5]:
+            watch = [w for w in verdict(c).watch if "brake" in w.template]
+            assert len(watch) == 1
+            if braked:
+                held = percent(c.brake_needed_nm / 5.0)
+                assert watch[0].template == f"power off: held by the brake at {held}"
+                continue
+            brake = watch[0].values["t"]
+            assert brake.value == pytest.approx(c.brake_to_fit_nm)  # type: ignore[union-attr]
+            assert brake.value == pytest.approx(1.5 * c.brake_nm)  # type: ignore[union-attr]
 
 
 def test_a_pass_with_skipped_checks_never_says_every_check(catalog: Catalog) -> None:

@@ -157,16 +157,16 @@ def test_a_back_driving_screw_not_asked_to_hold_still_has_a_load_to_hold(
     client: TestClient,
 ) -> None:
     """A 1 kg vertical Z axis that does not ask to hold with the power off: B4000-L8-TFE
-    back-drives and needs a 0.0167 N m brake (0.0111 N m to hold, times the brake's
-    service factor 1.5), as its own holding row says; the power-off
-    row said "nothing to hold"."""
+    back-drives and needs a brake of 0.01671 N m (0.0111 N m to hold, times the brake's
+    service factor 1.5), at least 0.0168 N m rounded up, as its own holding row says; the
+    power-off row said "nothing to hold"."""
     query = {
         "load": "0", "moving_mass_kg": "1", "orientation": "vertical", "lead": "8",
         "speed": "12", "length": "350", "accel": "200", "stroke": "200",
         "hold_power_off": "false",
     }  # fmt: skip
     rows = _rows(_page(client, query))
-    assert rows["holding_torque.brake_to_fit_nm"][0].startswith("brake ≥ 0.0167")
+    assert rows["holding_torque.brake_to_fit_nm"][0].startswith("brake ≥ 0.0168")
     assert rows["holds_power_off"][0] == "no: a brake is needed"
 
 

@@ -53,7 +53,8 @@ def holding_phrase(
         "larger of {seed} (seed method) and {physics} (physics at {f} x static friction)).",
         {
             "available": Amount(available_nm, "torque"),
-            "needed": Amount(r.holding.brake_needed_nm, "torque"),
+            # a requirement: rounded up, so that the figure read holds
+            "needed": Amount(r.holding.brake_needed_nm, "torque", "up"),
             "sf": Amount(brake_factor(app), "factor"),
             "seed": Amount(r.holding.holding_seed_nm, "torque"),
             "physics": Amount(r.holding.holding_distrusted_nm, "torque"),
