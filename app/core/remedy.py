@@ -190,7 +190,8 @@ def impossible(
             "another nut)."
         )
     check = BY_NAME.get(most_excluding or "")
-    why = (check and check.why_none) or f"{label} excludes every screw"
+    words = check and ((kind == "ball screw" and check.why_none_ball) or check.why_none)
+    why = words or f"{label} excludes every screw"
     drive = " with this motor" if most_excluding in MOTOR_BOUND else ""
     scope, values = asked_for(app)
     if not scope:

@@ -1,6 +1,7 @@
 """Remedies when nothing passes (app.core.remedy): 5 % past each limit, verified by
 screening again, spanning inputs and mounting; and why when nothing can."""
 
+import re
 from dataclasses import replace
 
 import numpy as np
@@ -15,6 +16,7 @@ from app.core.input_rules import inputs_hold
 from app.core.model import PASS_UTILIZATION, Application
 from app.core.remedy import MARGIN, impossible, part_way, past_limit
 from app.core.selection import screen, select
+from app.core.verdict import LEADSCREW_NUT_CHECKS
 from app.report.service import INPUT_RANGES
 from tests.leadscrews import leadscrew_families
 
@@ -215,3 +217,27 @@ def test_a_change_keeps_the_inputs_own_rules(change: dict[str, float], holds: bo
         bearing_to_nut_m=0.6, accel_m_s2=1.0, cycles_per_day=5000.0,
     )  # fmt: skip
     assert inputs_hold(replace(app, **change)) is holds
+
+
+def test_a_ball_screw_only_screening_is_not_told_to_consider_a_ball_screw(
+    catalog: Catalog,
+) -> None:
+    """20 kN at 250 mm/s over 800 mm on HIWIN's RSIT ball screws alone: no size reaches
+    the critical speed at any mounting. The advice read "consider a ball screw", the
+    leadscrews' words; a ball screw's drive past it is a rotating nut, a support or a belt.
+    Every check a ball screw runs that suggests one has its own words for a ball-only
+    screening (the sliding nut's checks never exclude a ball screw)."""
+    app = Application(
+        load_n=20_000.0, speed_m_s=0.25, length_m=0.8, stroke_m=0.5, moving_mass_kg=50.0,
+        families=("HIWIN-ROLLED-RSIT",), cycles_per_day=2000.0, required_life_years=5.0,
+    )  # fmt: skip
+    summary = select(app, catalog.index, INPUT_RANGES).summary
+    assert summary.impossible is not None
+    text = summary.impossible.template
+    assert "no ball screw of this length reaches" in text and "ball screw, a" not in text
+    for check in REGISTRY:
+        if (
+            re.search(r"\ba ball screw\b", check.why_none)
+            and check.name not in LEADSCREW_NUT_CHECKS
+        ):
+            assert check.why_none_ball and "consider a ball" not in check.why_none_ball

@@ -122,6 +122,9 @@ class Check:
     #: and what kind of drive could (lower case, no full stop); empty: the remedy says
     #: only that the check excludes every screw
     why_none: ClassVar[str] = ""
+    #: ``why_none`` where only ball screws were screened, for a check whose ``why_none``
+    #: suggests one (empty: ``why_none`` serves both)
+    why_none_ball: ClassVar[str] = ""
     #: whether the check judges the motor rather than the screw (another motor may
     #: still drive the screws it rejects)
     judges_motor: ClassVar[bool] = False

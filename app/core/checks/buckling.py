@@ -33,6 +33,10 @@ class ColumnBuckling(Check):
         "the thrust buckles every screw of this length: consider mounting it so that it pulls"
         " (tension), a screw support, or a ball screw"
     )
+    why_none_ball = (
+        "the thrust buckles every ball screw of this length: consider mounting it so that "
+        "it pulls (tension), a screw support, or a roller screw"
+    )
     label = "Column buckling"
     description = (
         "A screw pushed in compression buckles as a column. Slender screws follow Euler; "

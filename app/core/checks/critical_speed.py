@@ -38,6 +38,10 @@ class CriticalSpeed(Check):
         "the speed needs a critical-speed margin no screw of this length reaches, at any "
         "mounting: consider a ball screw, a rotating nut or an intermediate screw support"
     )
+    why_none_ball = (
+        "the speed needs a critical-speed margin no ball screw of this length reaches, at "
+        "any mounting: consider a rotating nut, an intermediate screw support or a belt"
+    )
     label = "Critical speed"
     description = (
         "A long thin screw whirls when it turns near its first bending frequency; the "

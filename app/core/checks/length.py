@@ -21,6 +21,7 @@ from app.core.phrase import Amount, Phrase
 class Length(Check):
     name = "length"
     why_none = "no screw in the catalog is made this long: consider a ball screw or a belt"
+    why_none_ball = "no ball screw in the catalog is made this long: consider a belt or a rack"
     label = "Length"
     description = (
         "The screw length between the supports against the longest screw made in this "

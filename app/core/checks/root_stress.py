@@ -26,6 +26,10 @@ from app.core.phrase import Amount, Phrase
 class RootStress(Check):
     name = "root_stress"
     why_none = "the thrust and the torque it takes yield every screw's root: consider a ball screw"
+    why_none_ball = (
+        "the thrust and the torque it takes yield every ball screw's root: consider a "
+        "roller screw or a hydraulic cylinder"
+    )
     label = "Root stress (yield)"
     description = (
         "The root section of the screw under the peak thrust, pushed or pulled, and the "

@@ -23,6 +23,10 @@ class Temperature(Check):
         "no nut in the catalog is rated for this temperature: consider a metal nut outside "
         "the catalog or a ball screw"
     )
+    why_none_ball = (
+        "no ball screw in the catalog is rated for this temperature: consider one its maker "
+        "rates for it outside the catalog"
+    )
     label = "Operating temperature"
     description = "The ambient temperature against the assembly's rated range."
     formula = "passes when T_min <= T_ambient <= T_max"
