@@ -27,8 +27,9 @@ from app.core.model import (
     Segment,
     SegmentName,
 )
-from app.core.phrase import Phrase, Quantity
+from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import PART_OF, PARTS, Quantities, quantity
+from app.core.reach import size_of
 from app.core.screening import Screening
 from app.core.table import Array
 
@@ -333,5 +334,26 @@ class Slot:
                 note = refused(app, read_inputs(app, check.input_limits(app, screw, row)))
             if fix is not None and note is not None:  # the fix's own fields kept as named
                 fix = Phrase(fix.template + " {refused}", {**fix.values, "refused": note})
+            lead = None if fix is None else fix.values.get("lead")
+            other = self._at_lead(lead.value) if isinstance(lead, Amount) else None
+            if fix is not None and other is not None:
+                fix = Phrase(fix.template + " {at_lead}", {**fix.values, "at_lead": other})
             self._fixes[check.name] = fix
         return self._fixes[check.name]
+
+    def _at_lead(self, lead_m: float) -> Phrase | None:
+        """How the screw of this size and nut at ``lead_m`` fares on the axis, where the
+        screening holds it (a lead offered by a fix turns the screw faster or needs more
+        torque, which other checks judge): the checks it fails, or that it passes them;
+        None where it was not screened (another lead asked for)."""
+        sc, size = self.screening, size_of(self.screw)
+        lead = sc.table.lead_m
+        for k in np.flatnonzero(lead == lead_m).tolist():
+            other = sc.table.screws[k]
+            if size_of(other) != size:
+                continue
+            failed = [BY_NAME[n].label for n, mask in sc.failed_by_check.items() if mask[k]]
+            if not failed:
+                return Phrase("{other} passes every check of this axis.", {"other": other.id})
+            return Phrase(f"{{other}} fails {', '.join(failed)} on this axis.", {"other": other.id})
+        return None

@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 
 from app.catalog import Catalog
 from app.catalog.axis_motor import with_motor
+from app.contract.units import DEFAULT_UNITS, render
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.input_rules import inputs_hold
 from app.core.model import PASS_UTILIZATION, Application
@@ -241,3 +242,28 @@ def test_a_ball_screw_only_screening_is_not_told_to_consider_a_ball_screw(
             and check.name not in LEADSCREW_NUT_CHECKS
         ):
             assert check.why_none_ball and "consider a ball" not in check.why_none_ball
+
+
+def test_a_fix_that_offers_another_lead_says_how_that_screw_fares(catalog: Catalog) -> None:
+    """A fix may offer a lead of the same size; halving it doubles the screw's speed, which
+    other checks judge. 10 kg lifted 500 mm at 100 mm/s: Tr20x8(P4)-ptfe back-drives, and
+    its fix offers the 4 mm lead, which self-locks with margin but slides its nut at
+    1417 mm/s, over PTFE's 1000: the fix says so. 5 kg at 50 mm/s on 500 mm: B4000-L1-TFE
+    whirls, and its fix's 2 mm lead, B4000-L2-TFE, passes: the fix says that too."""
+    lift = Application(
+        load_n=0.0, moving_mass_kg=10.0, orientation="vertical", speed_m_s=0.1,
+        length_m=0.6, stroke_m=0.5, hold_power_off=True, limit=100,
+        families=("TR-C45",), cycles_per_day=100.0, required_life_years=3.0,
+    )  # fmt: skip
+    fix = _rejected_fix(select(lift, catalog.index), "Tr20x8(P4)-ptfe", "back_driving")
+    assert "use a lead of {" in fix.template
+    assert render(fix, DEFAULT_UNITS).endswith("Tr20x4-ptfe fails Nut sliding speed on this axis.")
+    slow = Application(load_n=0.0, moving_mass_kg=5.0, speed_m_s=0.05, length_m=0.5,
+                       stroke_m=0.3, limit=100)  # fmt: skip
+    fix = _rejected_fix(select(slow, catalog.index), "B4000-L1-TFE", "critical_speed")
+    assert render(fix, DEFAULT_UNITS).endswith("B4000-L2-TFE passes every check of this axis.")
+
+
+def _rejected_fix(sel, screw_id: str, check: str):  # type: ignore[no-untyped-def]
+    rejected = next(c for c in sel.rejected if c.screw.id == screw_id)
+    return next(c.fix for c in rejected.failed_checks if c.name == check)

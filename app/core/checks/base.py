@@ -165,7 +165,9 @@ class Check:
     def fix(
         self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach
     ) -> Phrase | None:
-        """What would make a failing candidate pass, within what the catalog offers."""
+        """What would make a failing candidate pass, within what the catalog offers. A fix
+        that offers another lead of the size names it ``{lead}``: the candidate's fix
+        then says how the screw of that lead fares on the axis (``batch.Slot.fix_of``)."""
         return None
 
     def input_limits(
