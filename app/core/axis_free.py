@@ -41,7 +41,9 @@ def friction_columns(
     flank half-angle ``cos_a``, the pitch diameter ``d_p`` [m]; ``ball``: a ball screw):
     the frictions themselves, the efficiencies driving
     and back-driven, running and from rest (the signed back-driven ones, negative where
-    the thread self-locks, at ``mu_d`` and ``mu_s``), and whether the thread self-locks
+    the thread self-locks, at ``mu_d``, at ``mu_s`` and where a load driving the screw is
+    at its worst: a ball screw's at the low end of its maker's equivalent friction, the
+    lower of ``mu_d`` and its holding friction), and whether the thread self-locks
     (``formulas.efficiency``, ``formulas.profile``; a ball screw drives at most at its
     maker's efficiency, ``ballscrew.forward_efficiency``), the longest self-locking
     lead, the lower of the two driving efficiencies (the root section's torque), 2 pi
@@ -73,6 +75,9 @@ def friction_columns(
         "backdrive_efficiency_signed": profile.signed_backdrive_efficiency(tan_l, mu_d, cos_a),
         "start_backdrive_efficiency_signed": profile.signed_backdrive_efficiency(
             tan_l, mu_s, cos_a
+        ),
+        "braking_backdrive_efficiency_signed": profile.signed_backdrive_efficiency(
+            tan_l, np.where(ball, np.minimum(hold, mu_d), mu_d), cos_a
         ),
         "max_self_locking_lead_m": efficiency.max_self_locking_lead(d_p, hold, cos_a),
         "root_efficiency": np.minimum(eta, eta_s),

@@ -56,8 +56,9 @@ def cycle_energy(
     energy braking gives back on decelerate and down segments (its work below 0, before
     the drive's own losses), the work done on the load (sum F x: its weight and external
     load; the moving mass's kinetic energy cancels over each move), the thread's friction
-    (``energy.thread_loss``) and the nut's drag, and a stepper's copper loss over the
-    whole cycle (``energy.stepper_copper_loss``, the drive holding its current at rest
+    (``energy.thread_loss``) and the nut's drag, each at the end of the friction and drag
+    its segment's torque is worked at (``Segment.braking_end``), and a stepper's copper
+    loss over the whole cycle (``energy.stepper_copper_loss``, the drive holding its current at rest
     too: NaN without its current and resistance). NaN without a profile. The balance:
     motor work - braking = load work + thread loss + drag loss."""
     nan = filled(len(t), np.nan)
@@ -65,7 +66,7 @@ def cycle_energy(
         return dict.fromkeys(ENERGY, nan)
     travels = [x for p in every for x in (*segment_travels(p), 0.0)]
     zero = np.zeros(len(t))
-    motor, regen, load, thread, size = zero, zero, zero, zero, zero
+    motor, regen, load, thread, drag, size = zero, zero, zero, zero, zero, zero
     for s, x in zip(parts, travels, strict=True):
         shaft = energy.shaft_energy(s.torque_nm, x, t.lead_m)
         motor = motor + np.maximum(shaft, 0.0)
@@ -73,9 +74,14 @@ def cycle_energy(
         work = s.thrust_n * x
         load = load + work
         size = size + np.abs(work)
-        thread = thread + energy.thread_loss(
-            s.thrust_n, x, t.efficiency, t.backdrive_efficiency_signed
+        # at the end of the friction and drag the segment's torque was worked at
+        braking = np.zeros(len(t), dtype=bool) if s.braking_end is None else s.braking_end
+        eta_b = np.where(
+            braking, t.braking_backdrive_efficiency_signed, t.backdrive_efficiency_signed
         )
+        thread = thread + energy.thread_loss(s.thrust_n, x, t.efficiency, eta_b)
+        drag_nm = np.where(braking, t.drag_min_nm, t.drag_max_nm)
+        drag = drag + np.asarray(energy.shaft_energy(drag_nm, x, t.lead_m), dtype=np.float64)
     current = copper_current_rms(app)
     copper = nan
     if current is not None:
@@ -88,8 +94,6 @@ def cycle_energy(
         "cycle_regen_j": regen,
         "cycle_load_work_j": np.where(np.abs(load) <= ROUNDING * size, 0.0, load),
         "cycle_thread_loss_j": thread,
-        "cycle_drag_loss_j": np.asarray(
-            energy.shaft_energy(t.drag_max_nm, sum(travels), t.lead_m), dtype=np.float64
-        ),
+        "cycle_drag_loss_j": drag,
         "cycle_copper_loss_j": copper,
     }

@@ -441,7 +441,9 @@ class Segment(Generic[V]):
     the stepper margin at the segment's speed, a ramp's lowest from standstill to its top
     speed: ``segments.segment_curve``; None without a curve) and whether the segment
     governs the motor: the one nearest its curve, or the largest torque without a curve
-    (``Quantities.motor.motor_worst_segment``)."""
+    (``Quantities.motor.motor_worst_segment``). A moving segment the load drives may be
+    worked at its braking end, the lowest friction and drag the nut is given
+    (``segments.moving_torques``): where, ``braking_end`` (None: nowhere, a dwell)."""
 
     name: SegmentName
     direction: Direction
@@ -451,6 +453,7 @@ class Segment(Generic[V]):
     torque_nm: V
     curve_nm: float | None = None
     governs: bool = False
+    braking_end: Any = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -27,11 +27,12 @@ from app.core.motion import (
     rest_loads,
     sense,
 )
-from app.core.table import Array, CandidateTable, filled
+from app.core.table import Array, CandidateTable, Mask, filled
 
 #: A moving segment for every candidate: its name and direction, the thrust against the
-#: motion [N] and the motor torque [N m] (``moving_torques``).
-Moving = tuple[SegmentName, Direction, float, Array]
+#: motion [N], the motor torque [N m] and where it is worked at the braking end
+#: (``moving_torques``).
+Moving = tuple[SegmentName, Direction, float, Array, Mask]
 
 
 def _move(
@@ -52,8 +53,9 @@ def _move(
             rpm=rpm,
             thrust_n=filled(len(t), thrust),
             torque_nm=torque_nm,
+            braking_end=braking,
         )
-        for (name, direction, thrust, torque_nm), duration in zip(rows, times, strict=True)
+        for (name, direction, thrust, torque_nm, braking), duration in zip(rows, times, strict=True)
     ]
 
 
@@ -91,7 +93,7 @@ def moving_torques(
     forces = iter(c.moving_n)
     out: list[Moving] = []
     running: dict[float, Array] = {}
-    worked: dict[tuple[float, float], Array] = {}
+    worked: dict[tuple[float, float], tuple[Array, Mask]] = {}
     for move in c.moves:
         v, word = sense(move), direction_word(app, move)
         rates = {"accelerate": move.accel_m_s2, "constant": 0.0, "decelerate": move.decel_m_s2}
@@ -100,18 +102,36 @@ def moving_torques(
             if thrust not in running:
                 running[thrust] = running_torque(t, thrust)
             if (thrust, accel) not in worked:
-                worked[thrust, accel] = plus_spin(t, running[thrust], accel, inertia)
-            out.append((name, word, thrust, worked[thrust, accel]))
+                worked[thrust, accel] = _worse_end(t, thrust, running, accel, inertia)
+            out.append((name, word, thrust, *worked[thrust, accel]))
     return out
 
 
-def running_torque(t: CandidateTable, thrust_n: float) -> Array:
+def _worse_end(
+    t: CandidateTable, thrust_n: float, running: dict[float, Array], accel: float, j: Array
+) -> tuple[Array, Mask]:
+    """A segment's motor torque at its worse end, and where that is the braking end: where
+    the load drives the screw (``thrust_n`` below 0), the larger in size of the torque at
+    the running friction and top drag and the torque at the braking end, the lowest
+    friction and drag the nut is given (the load drives the motor hardest there; a
+    self-locking thread needs the most torque at the first); else at the running
+    friction and top drag."""
+    torque_nm = plus_spin(t, running[thrust_n], accel, j)
+    if thrust_n >= 0.0:
+        return torque_nm, np.zeros(len(t), dtype=bool)
+    low = plus_spin(t, running_torque(t, thrust_n, braking=True), accel, j)
+    braking = np.abs(low) > np.abs(torque_nm)
+    return np.where(braking, low, torque_nm), braking
+
+
+def running_torque(t: CandidateTable, thrust_n: float, braking: bool = False) -> Array:
     """The motor torque that passes the thrust ``thrust_n`` through the thread
-    (``profile.thread_torque``) against the nut's drag, for every candidate [N m]."""
-    thread = profile.thread_torque(
-        thrust_n, t.lead_m, t.efficiency, t.backdrive_efficiency_signed, t.efficient_turn_rad
-    )
-    torque_nm: Array = thread + t.drag_max_nm
+    (``profile.thread_torque``) against the nut's drag, for every candidate [N m]: at the
+    running friction and the top of the drag range, or (``braking``) where the load
+    drives, at the lowest friction and the bottom of the drag range."""
+    eta_b = t.braking_backdrive_efficiency_signed if braking else t.backdrive_efficiency_signed
+    thread = profile.thread_torque(thrust_n, t.lead_m, t.efficiency, eta_b, t.efficient_turn_rad)
+    torque_nm: Array = thread + (t.drag_min_nm if braking else t.drag_max_nm)
     return torque_nm
 
 

@@ -179,6 +179,7 @@ COPIED = {
     "screw_expansion_per_k": "screw_expansion_per_k",
     "inertia_kg_m2_per_m": "inertia_kg_m2_per_m",
     "drag_max_nm": "drag_torque_max_nm",
+    "drag_min_nm": "drag_torque_min_nm",
     "pv_limit_pa_m_s": "pv_limit_pa_m_s",
     "design_load_n": "design_load_n",
     "max_length_m": "max_length_m",
@@ -217,6 +218,9 @@ class CandidateTable:
     screw_expansion_per_k: Array
     inertia_kg_m2_per_m: Array
     drag_max_nm: Array
+    #: the bottom of the nut's drag range [N m]: a segment the load drives is worked at it
+    #: too (``segments.moving_torques``), where the drag helps the motor brake
+    drag_min_nm: Array
     pv_limit_pa_m_s: Array
     design_load_n: Array
     max_length_m: Array
@@ -257,6 +261,11 @@ class CandidateTable:
     #: the same at static friction, for the start from rest of a move the load drives (a
     #: thread that self-locks at static friction needs the motor to start lowering)
     start_backdrive_efficiency_signed: Array
+    #: the same where the load drives a segment, at its unsafe end (the most the load
+    #: drives the motor): a ball screw's at the low end of its maker's equivalent
+    #: friction (HIWIN's 0.003 of 0.003 to 0.01, the friction it holds at), a sliding
+    #: nut's at its running friction (its range's ends are screened by robustness)
+    braking_backdrive_efficiency_signed: Array
     yield_strength_pa: Array
     thermal_conductivity_w_m_k: Array
     pitch_m: Array

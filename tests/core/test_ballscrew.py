@@ -277,3 +277,32 @@ def test_a_preloaded_nut_keeps_no_play_below_its_preload_release_force(
     # an axis that may have play does not ask
     free = evaluate(light_app(load_n=load_n), screw).checks
     assert "preload_release" not in {c.name for c in free}
+
+
+def test_a_segment_the_load_drives_is_worked_at_the_low_end_of_the_friction(
+    catalog: Catalog,
+) -> None:
+    """300 kg braked from 100 mm/s at 5 m/s² on R20-05K4-FSCDIN (horizontal, no load): the
+    mass drives the screw, 1500 N through the thread. HIWIN gives the ball track an
+    equivalent friction of 0.003 to 0.01: at 0.01 the back-driven efficiency is 0.874, at
+    0.003 0.962, where the mass drives the motor hardest. The braking torque was worked at
+    0.01, 7 % short: T = -1500 x 0.005 x eta_b / 2 pi - J_screw alpha, at eta_b(0.003)."""
+    screw = catalog.by_id["R20-05K4-FSCDIN"]
+    app = Application(
+        load_n=0.0, speed_m_s=0.1, length_m=0.6, stroke_m=0.4, moving_mass_kg=300.0,
+        accel_m_s2=0.5, decel_m_s2=5.0,
+    )  # fmt: skip
+    ev = evaluate(app, screw)
+    tan_l = screw.lead_m / (math.pi * (screw.pitch_circle_diameter_m or 0.0))
+
+    def eta_b(mu: float) -> float:  # HIWIN F 3.16, Shigley's lowering efficiency
+        return (tan_l - mu) / (tan_l * (1.0 + mu * tan_l))
+
+    assert (round(eta_b(0.01), 3), round(eta_b(0.003), 3)) == (0.874, 0.962)
+    # the screw's inertia torque at the 5 m/s² ramp, from the breakdown's at 0.5 m/s²
+    spin = ev.torque.inertia_screw_nm * 5.0 / 0.5
+    braking = -1500.0 * screw.lead_m * eta_b(0.003) / (2 * math.pi) - spin
+    decel = next(s for s in ev.segments if s.name == "decelerate" and s.direction == "out")
+    assert decel.torque_nm == pytest.approx(braking, rel=1e-9)
+    assert ev.quantities.torque.peak_torque_nm == pytest.approx(abs(braking), rel=1e-9)
+    assert abs(braking) == pytest.approx(1.574, abs=5e-4)

@@ -540,11 +540,13 @@ def test_the_move_chart_holds_a_weight_the_same_way_after_either_move(
 ) -> None:
     """A HIWIN rolled ball screw lifting 100 N and 10 kg (vertical, 1 s dwells, a brake
     for the power-off hold) on the Yaskawa SGM7J-01A. The ball screw does not self-lock,
-    so in each dwell the motor holds the 198 N on the nut up: the same torque turning
+    so in each dwell the motor holds the 198.07 N on the nut up: the same torque turning
     the shaft the up way at the top and at the bottom of the stroke (the results' two
-    dwells: +0.3133 N m each for R12-10K3-FSCDIN). The chart signs torque by the shaft's
-    direction (up positive), and drew the dwell after the down move at -0.3133 N m, as
-    if the motor pushed the weight down; now both dwells are +0.3133 N m."""
+    dwells, for R16-05T3-FSIDIN: 198.07 N x 5 mm x eta_b / 2 pi, eta_b 0.984773 back-
+    driven at half HIWIN's low friction 0.003 on its 16 mm ball circle, +0.155216 N m
+    each). The chart signs torque by the shaft's direction (up positive), and drew the
+    dwell after the down move negative, as if the motor pushed the weight down; now both
+    dwells are positive."""
     inputs = ApplicationIn.model_validate(
         {"load_n": 100, "moving_mass_kg": 10, "orientation": "vertical", "speed_mm_s": 250,
          "length_mm": 800, "accel_mm_s2": 5000, "stroke_mm": 600, "cycles_per_day": 5000,
@@ -561,7 +563,7 @@ def test_the_move_chart_holds_a_weight_the_same_way_after_either_move(
     torque = result_figures(result, METRIC, catalog)["move"]["data"][1]["y"]
     assert [torque[2 * i] for i in dwells] == [held[0], held[0]]
     assert [torque[2 * i + 1] for i in dwells] == [held[0], held[0]]
-    assert top.id == "R12-10K3-FSCDIN" and held[0] == pytest.approx(0.3133, abs=5e-5)
+    assert top.id == "R16-05T3-FSIDIN" and held[0] == pytest.approx(0.155216, abs=5e-7)
 
 
 def test_the_torque_limit_line_is_the_drive_over_the_safety_factor(catalog: Catalog) -> None:

@@ -97,7 +97,8 @@ ROWS: tuple[Reported, ...] = (
                 "Thread friction loss per cycle",
                 "Given a move: the energy the thread's friction turns into heat in one cycle, "
                 "F x (1/eta - 1) where the motor drives and |F| x (1 - eta_b) where the load "
-                "does.",
+                "does (at the friction the segment's torque is worked at: a ball screw's "
+                "low end where that brakes hardest).",
                 energy.thread_loss,
                 "",
                 "",
@@ -106,7 +107,8 @@ ROWS: tuple[Reported, ...] = (
                 "cycle_drag_loss_j",
                 "Drag loss per cycle",
                 "Given a move: the nut's drag torque times the turns of one cycle (the top of "
-                "the series' drag range).",
+                "the series' drag range; the bottom over a segment the load drives, where "
+                "that brakes hardest).",
                 energy.shaft_energy,
                 "E = T_drag 2 pi sum x_i / lead",
                 "work of a constant torque over the turns",
