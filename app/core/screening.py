@@ -87,15 +87,16 @@ def failing_beyond(s: Screening, cleared: Callable[[Check], bool]) -> Mask:
 
 #: What picks the eligible candidates of a table and their variant rows: (lead [m],
 #: coating, families, nut material, lubricated, life judged).
-Filters = tuple[float | None, str, tuple[str, ...], str | None, bool, bool]
+Filters = tuple[float | None, str, tuple[str, ...], str | None, str, bool]
 
 
 def filters(app: Application) -> Filters:
     """The values of ``app`` its eligible rows depend on: those ``eligible_mask`` reads,
-    whether the nut is lubricated (the friction the rows run at, ``dry_run.as_run``) and
-    whether a life is judged (the variant rows screened with them, ``index.Eligible``)."""
-    lubricated, judged = app.lubricated, motion.life_judged(app)
-    return (app.lead_m, app.coating, app.families, app.nut_material, lubricated, judged)
+    the nut's lubrication (the friction the rows run at, ``dry_run.as_run``: run dry, or
+    holding at a friction the lubricant eases by its own factor) and whether a life is
+    judged (the variant rows screened with them, ``index.Eligible``)."""
+    judged = motion.life_judged(app)
+    return (app.lead_m, app.coating, app.families, app.nut_material, app.lubrication, judged)
 
 
 def eligible_mask(app: Application, table: CandidateTable) -> Mask:

@@ -247,12 +247,15 @@ class CandidateTable:
     #: the thread's static and running friction, as the catalog gives them or as an axis
     #: runs the nut (``dry_run.as_run``), each column that follows from them formed by
     #: ``axis_free.friction_columns``; a nut rated lubricated's friction run dry (NaN:
-    #: none), and whether the row is at it (``dry_run.as_run``; False as catalogued)
+    #: none), and whether the row is at it (``dry_run.as_run``; False as catalogued);
+    #: whether a nut rated dry holds at its static friction eased by the axis's
+    #: lubricant (``dry_run.as_run``; False as catalogued)
     friction_static: Array
     friction_dynamic: Array
     dry_friction_static: Array
     dry_friction_dynamic: Array
     runs_dry: Mask
+    lubricant_eased: Mask
     cos_half_angle: Array
     backdrive_efficiency_running: Array
     #: running back-drive efficiency without the clip at 0 (negative: self-locking), for
@@ -411,6 +414,7 @@ class CandidateTable:
             oil_compatible=flag("oil_compatible"),
             lubricated_rating=flag("lubricated_rating"),
             runs_dry=np.zeros(len(screws), dtype=bool),
+            lubricant_eased=np.zeros(len(screws), dtype=bool),
             # the seed's rule of thumb is a sliding thread's: a ball screw always back-drives
             seed_rule_no_backdrive=efficiency.seed_backdrive_rule(lead, od) & ~ball,
             traverse_extrapolated=extrapolated,

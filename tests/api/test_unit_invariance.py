@@ -3,7 +3,8 @@ the API's mm and N gives the same numbers, to 1e-9, and both the core's in SI.
 
 A vertical Z axis with a library stepper, a stroke, a duty and a required life: 5 lbf
 down plus 2 lb moving, 2 in/s, a 24 in screw and a 16 in stroke, 40 in/s² with 0.5 s
-dwells, 500 cycles a day for 3 years at 95 °F, greased, fixed-fixed.
+dwells, 500 cycles a day for 3 years at 95 °F, greased, fixed-fixed, with a 1 lb in brake
+(greased, no polymer nut self-locks with margin: the brake holds the load).
 """
 
 import math
@@ -22,14 +23,14 @@ PAGE = {
     "load": "5", "moving_mass_kg": "2", "speed": "2", "length": "24", "stroke": "16",
     "accel": "40", "dwell": "0.5", "cycles_per_day": "500", "required_life_years": "3",
     "ambient_c": "95", "orientation": "vertical", "lubrication": "greased",
-    "end_fixity": "fixed-fixed", "motor": "17hs19-2004s1", "limit": "100",
+    "end_fixity": "fixed-fixed", "motor": "17hs19-2004s1", "limit": "100", "brake_torque": "1",
     "force_unit": "lbf", "length_unit": "in", "accel_unit": "in_s2", "torque_unit": "lb_in",
 }  # fmt: skip
 AXIS = Application(
     load_n=5 * LBF, moving_mass_kg=2 * LB, speed_m_s=2 * IN, length_m=24 * IN,
     stroke_m=16 * IN, accel_m_s2=40 * IN, dwell_s=0.5, cycles_per_day=500.0,
     required_life_years=3.0, ambient_c=35.0, orientation="vertical", lubrication="greased",
-    end_fixity="fixed-fixed", motor="17hs19-2004s1", limit=100,
+    end_fixity="fixed-fixed", motor="17hs19-2004s1", limit=100, brake_torque_nm=LBF * IN,
 )  # fmt: skip
 API = {
     "load_n": repr(AXIS.load_n), "moving_mass_kg": repr(AXIS.moving_mass_kg),
@@ -37,7 +38,7 @@ API = {
     "accel_mm_s2": repr(40 * 25.4), "dwell_s": "0.5", "cycles_per_day": "500",
     "required_life_years": "3", "ambient_c": "35", "orientation": "vertical",
     "lubrication": "greased", "end_fixity": "fixed-fixed", "motor": "17hs19-2004s1",
-    "limit": "100", "detail": "full",
+    "limit": "100", "detail": "full", "brake_torque_nm": repr(AXIS.brake_torque_nm),
 }  # fmt: skip
 
 

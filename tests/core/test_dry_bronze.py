@@ -20,7 +20,7 @@ from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.robustness import build_variants
 from app.core.screening import screen_table
-from app.core.selection import with_robustness
+from app.core.selection import select, with_robustness
 
 #: Tr20x4 (ISO 2904): lead 4 mm, pitch diameter d2 = d - 0.5 P = 18 mm, flank angle 30 deg
 LEAD, D2, HALF_ANGLE = 0.004, 0.018, math.radians(15.0)
@@ -146,3 +146,46 @@ def test_a_screw_of_ones_own_with_the_bronze_nut_runs_dry_alike(catalog: Catalog
     typed = evaluate(replace(AXIS, lubrication="greased"), mine)
     assert typed.quantities.torque.load_nm == pytest.approx(raise_torque(1000.0, 0.13), rel=1e-9)
     assert typed.provenance["friction_dynamic"].kind == "user"
+
+
+def test_a_lubricated_polymer_nut_holds_at_its_eased_friction(catalog: Catalog) -> None:
+    """Tr12x3-acetal lifting 20 kg: dry it holds at its static friction 0.2, half of it
+    counted (0.1 against cos 15 deg tan lambda = 0.0878): self-locking with margin.
+    Oiled, its PV is credited twice the dry rating because the oil takes the friction heat
+    away (pv_derating: BNB's "up to 100 %"); the friction falls as much, 0.1, and half of
+    it, 0.05, holds nothing: the screw back-drives. Greased, 0.2 / 1.3. It was held at its
+    dry friction whatever its lubrication, and passed without a brake."""
+    screw = catalog.by_id["Tr12x3-acetal"]
+    base = Application(
+        load_n=0.0, moving_mass_kg=20.0, orientation="vertical", speed_m_s=0.01,
+        length_m=0.5, stroke_m=0.3, dwell_s=30.0,
+    )  # fmt: skip
+    dry = evaluate(base, screw)
+    assert dry.screw.friction_static == 0.2 and dry.self_locking_with_margin and dry.passed
+    for lubrication, factor in (("oiled", 2.0), ("greased", 1.3)):
+        ev = evaluate(replace(base, lubrication=lubrication), screw)
+        assert ev.screw.friction_static == pytest.approx(0.2 / factor, rel=1e-12)
+        assert not ev.self_locking_with_margin
+        assert "back_driving" in {c.name for c in ev.failed_checks}
+        provenance = ev.value_provenance["friction_static"]
+        assert provenance.kind == "assumed" and "lowered by its lubricant" in provenance.source
+    # a bronze nut's friction is an oiled nut's already: oiling it changes nothing
+    bronze = catalog.by_id["Tr12x3-bronze"]
+    oiled = evaluate(replace(base, lubrication="oiled"), bronze)
+    assert oiled.screw.friction_static == bronze.friction_static
+
+
+def test_rows_kept_for_one_lubricant_are_not_read_for_another(catalog: Catalog) -> None:
+    """The index keeps each query's eligible rows as run (``index.EligibleCache``); oiled
+    and greased rows hold at different frictions, so an oiled query's rows must not
+    answer a greased one (they did while the key said only "lubricated")."""
+    app = Application(
+        load_n=0.0, moving_mass_kg=20.0, orientation="vertical", speed_m_s=0.01,
+        length_m=0.5, stroke_m=0.3, families=("TR-C45",), nut_material="acetal", limit=100,
+    )  # fmt: skip
+    held = {}
+    for lubrication in ("oiled", "greased"):
+        sel = select(replace(app, lubrication=lubrication), catalog.index)
+        record = next(c for c in (*sel.candidates, *sel.rejected) if c.screw.id == "Tr12x3-acetal")
+        held[lubrication] = record.screw.friction_static
+    assert held == {"oiled": pytest.approx(0.1), "greased": pytest.approx(0.2 / 1.3)}
