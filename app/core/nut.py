@@ -181,11 +181,15 @@ def wear_life(
     """Nut travel until its flanks have worn the allowed depth (Archard's law at the
     cycle's wear thrust ``force_n``, ``motion.wear_thrust``): over the engaged flanks and
     flank height of a standard thread, else over the seed's three threads and thread
-    depth; in years at ``cycles`` a day (``motion.cycles_per_day``)."""
+    depth; in years at ``cycles`` a day (``motion.cycles_per_day``). A nut typed longer
+    than the catalog's wears over the catalog nut's flanks at most, as its rating holds
+    it to the catalog nut's (``rating``: the turns of a longer nut do not share the
+    thrust evenly)."""
     if app.nut_length_m is None:  # the catalog's flanks, whose geometry the table holds
         area, depth, per_travel = t.wear_area_m2, t.wear_depth_m, t.wear_sliding_per_travel
     else:
-        area, depth, per_travel = wear_geometry(flank_area_m2, partial(getattr, t))
+        flanks = np.fmin(flank_area_m2, t.catalog_flank_area_m2)
+        area, depth, per_travel = wear_geometry(flanks, partial(getattr, t))
     # a vanishing thrust: an unbounded life (``operating_point`` silences the overflow),
     # NaN below
     sliding = wear.wear_life_sliding(depth, t.wear_rate_m2_n, pv.contact_pressure(force_n, area))
