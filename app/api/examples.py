@@ -40,6 +40,7 @@ Z_AXIS = _application(
         "Cycles per day": 40,
         "Required life": 5,  # years
         "Must hold with the power off": False,
+        "Nut lubrication": "greased",  # a bronze nut's wear is rated lubricated
     }
 )
 PICK_AND_PLACE = _application(
@@ -60,7 +61,7 @@ Z_SCREW, PICK_AND_PLACE_SCREW = "Tr8x8(P2)-bronze", "B4000-L25-TFE"
 Z_TEXT = (
     "Z axis of a 3D printer",
     "A 1 kg gantry lifted on an 8 mm lead at 12 mm/s (200 mm/s²), 200 mm strokes on a "
-    "350 mm screw, 40 a day for 5 years; the energised motor holds it.",
+    "350 mm screw, 40 a day for 5 years, the nut greased; the energised motor holds it.",
 )
 PICK_TEXT = (
     "Pick-and-place with a library motor",

@@ -1,18 +1,24 @@
 """A nut rated lubricated (a bronze nut) that the axis runs dry is worked at its friction
-run dry.
+run dry; a nut rated dry (a polymer nut) that the axis greases or oils holds at its
+friction eased by the lubricant.
 
 A bronze nut's catalog friction is an oiled nut's (steel on bronze with machine oil,
 Shigley Table 8-5); run dry it rubs harder, and the catalog gives that friction beside it
 (``ScrewSpec.dry_friction_dynamic``, ``dry_friction_static``, with their range and
-provenance). A polymer nut's catalog friction is a dry nut's: oiled or greased, it is
-credited more PV because the lubricant lowers its friction
-(``pv_derating.LUBRICATION_FACTORS``), and it holds a load at rest at its static friction
-lowered as much (``eased_hold``). ``as_run`` is the one place that decides which friction
-a candidate runs at (it starts at the dry static friction but holds at no more than the
-oiled one, as the nut may be oiled later):
-the screening reads its table through it, so the torque, efficiency, heat, root stress,
-holding, the motor, the charts and the robustness all follow, and a candidate's screw as
-shown (``screw_as_run``) carries the dry values and their provenance.
+provenance). Its wear rate is a lubricated nut's too, and none is given run dry: run dry,
+its wear is not rated (a dry steel-on-copper-alloy contact wears orders of magnitude
+faster: Archard's unlubricated coefficients), so a life required of it is not met.
+
+A polymer nut's catalog friction is a dry nut's: oiled or greased, it is credited more PV
+because the lubricant lowers its friction (``pv_derating.LUBRICATION_FACTORS``), and it
+holds a load at rest at its static friction lowered as much (``eased_hold``).
+
+``as_run`` is the one place that decides which friction a candidate runs at (run dry it
+starts at the dry static friction but holds at no more than the oiled one, as the nut may
+be oiled later): the screening reads its table through it, so the torque, efficiency,
+heat, root stress, holding, the motor, the charts and the robustness all follow, and a
+candidate's screw as shown (``screw_as_run``) carries the values it runs at and their
+provenance.
 """
 
 from dataclasses import replace
@@ -82,6 +88,9 @@ def as_run(app: Application, table: CandidateTable) -> CandidateTable:
     formed = friction_columns(
         tan_l, table.cos_half_angle[rows], d_p, mu_s, mu_d, table.ball[rows], hold
     )
+    # a nut rated lubricated has no wear rate run dry: its rate is a lubricated nut's
+    rated = column([s.wear_rate_m2_n for s in screws])
+    formed["wear_rate_m2_n"] = np.where(to_dry, np.nan, rated)
     changed = {}
     for name, values in formed.items():
         changed[name] = getattr(table, name).copy()

@@ -8,7 +8,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from app.catalog import Catalog
-from app.contract.units import to_si
+from app.contract.units import render, to_si
 from app.core.checks import BY_NAME
 from app.core.evaluate import evaluate
 from app.core.formulas import life, wear
@@ -143,10 +143,12 @@ def test_wear_life_of_a_tr14_acetal_nut_by_hand(catalog: Catalog) -> None:
 
 
 def test_bronze_outlasts_acetal_by_the_ratio_of_wear_rates(catalog: Catalog) -> None:
-    """Same screw, same thrust: life scales with 1 / k (catalog: acetal 1e-6, bronze
-    1e-8 mm^3/(N m)), so the bronze nut lasts 100 times longer and passes 5 years."""
+    """Same screw, same thrust, both greased (a bronze nut's wear rate is a lubricated
+    nut's): life scales with 1 / k (catalog: acetal 1e-6, bronze 1e-8 mm^3/(N m)), so the
+    bronze nut lasts 100 times longer and passes 5 years."""
+    greased = replace(TR14, lubrication="greased")
     results = {
-        nut: {c.name: c for c in evaluate(TR14, catalog.by_id[f"Tr14x3-{nut}"]).checks}
+        nut: {c.name: c for c in evaluate(greased, catalog.by_id[f"Tr14x3-{nut}"]).checks}
         for nut in ("acetal", "bronze")
     }
     acetal, bronze = results["acetal"]["wear_life"], results["bronze"]["wear_life"]
@@ -174,9 +176,29 @@ def test_the_life_band_spans_the_wear_rates_scatter(catalog: Catalog) -> None:
 def test_a_wear_rated_nut_is_no_longer_unrated_for_the_life_check(catalog: Catalog) -> None:
     """The seed's life check (rated travel) leaves a nut rated by its wear rate to the
     wear check; a nut with neither still fails it as unrated."""
-    by_name = {c.name: c for c in evaluate(TR14, catalog.by_id["Tr14x3-bronze"]).checks}
+    greased = replace(TR14, lubrication="greased")
+    by_name = {c.name: c for c in evaluate(greased, catalog.by_id["Tr14x3-bronze"]).checks}
     assert "life" not in by_name or by_name["life"].passed
     assert BY_NAME["wear_life"].kind == "limit"
+
+
+def test_a_bronze_nut_run_dry_has_no_rated_wear(catalog: Catalog) -> None:
+    """A bronze nut's wear rate is a lubricated nut's (Archard's mild-wear K of lubricated
+    metals, catalog/iso-trapezoidal/common.toml); run dry (the lubrication input's
+    default) none is given, and a dry copper alloy on steel wears orders of magnitude
+    faster. Its wear life was worked at the oiled rate whatever the lubrication (Tr22x10
+    bronze run dry under 1500 N passed a 5 year life with 399 years). Run dry, its wear
+    is not rated, and a life required of it is not met: grease or oil it."""
+    screw = catalog.by_id["Tr14x3-bronze"]
+    dry = evaluate(TR14, screw)
+    assert math.isnan(dry.quantities.life.wear_travel_m)
+    life_check = {c.name: c for c in dry.checks}["life"]
+    assert not life_check.passed
+    assert render(life_check.message).startswith("The nut's wear rate is a lubricated nut's")
+    assert render(life_check.fix).startswith("Grease or oil the nut")
+    greased = evaluate(replace(TR14, lubrication="greased"), screw)
+    checks = {c.name: c for c in greased.checks}
+    assert greased.quantities.life.wear_travel_m > 0.0 and checks["wear_life"].passed
 
 
 def test_no_thrust_no_wear_check(catalog: Catalog) -> None:

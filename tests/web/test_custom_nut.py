@@ -17,7 +17,7 @@ from app.web.screw_form import BY_NAME
 #: an axis with a duty, a motor torque and a temperature, so the nut checks all apply
 AXIS = (
     "load=500&speed=20&length=400&stroke=300&cycles_per_day=100&required_life_years=5"
-    "&max_torque=2&ambient_c=40"
+    "&max_torque=2&ambient_c=40&lubrication=greased"
 )
 #: Tr12x3 (ISO 2904 preferred size: d = 12 mm, P = 3 mm, d3 = 8.5 mm) in C45 steel
 TR12X3 = (
@@ -72,6 +72,7 @@ def _checks(client: TestClient, screw: dict[str, object]) -> dict[str, float | N
             "required_life_years": 5,
             "max_torque_nm": 2,
             "ambient_c": 40,
+            "lubrication": "greased",
         },
         "screw": screw,
     }

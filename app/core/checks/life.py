@@ -64,6 +64,11 @@ class Life(Check):
         }
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        if np.isnan(r.life.life_years_min) and _run_dry(app, s):
+            return Phrase(
+                "The nut's wear rate is a lubricated nut's, and it runs dry: its wear run "
+                "dry is not rated."
+            )
         if np.isnan(r.life.life_years_min):
             return Phrase("No life rating or nut wear rate is given for this screw's nut.")
         values = {
@@ -87,6 +92,8 @@ class Life(Check):
         return Phrase(verb + ", {required} required (the seed's {seed} of travel).", values)
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
+        if np.isnan(r.life.life_years_min) and _run_dry(app, s):
+            return Phrase("Grease or oil the nut (the nut lubrication input), whose wear is rated.")
         if np.isnan(r.life.life_years_min) and reach.families is None:  # a screw of one's own
             return Phrase(
                 "Give the nut a material whose wear is rated (a catalog nut material, with "
@@ -99,3 +106,8 @@ class Life(Check):
             "the duty; where the nut's wear cuts the rating, a lighter load or a gentler "
             "acceleration."
         )
+
+
+def _run_dry(app: Application, s: ScrewSpec) -> bool:
+    """Whether ``s`` is a nut rated lubricated that the axis runs dry (``dry_run``)."""
+    return s.lubricated_rating and not app.lubricated
