@@ -411,9 +411,9 @@ def test_the_nema_14_carries_its_cited_values() -> None:
 def test_the_17hs19_carries_its_cited_values() -> None:
     """STEPPERONLINE 17HS19-2004S1 as tabled in stepper-simulator's data/steppers.csv:
     1.8 deg, 2 A, 59 N cm, 3 mH, 1.4 ohm, 82 g cm2 (= 82 x 1e-3 kg x 1e-4 m2 = 8.2e-6
-    kg m2). Only the drive voltage (24 V) and the mass (a same-stack NEMA 17's, no maker
-    mass being read for it) are assumed; the inductance keeps its +-20 % range
-    (2.4-3.6 mH), as makers state inductance."""
+    kg m2), 390 g (its specification as a public copy keeps it). Only the drive voltage
+    (24 V) is assumed; the inductance keeps its +-20 % range (2.4-3.6 mH), as makers
+    state inductance."""
     motor = MOTORS["17hs19-2004s1"]
     assert motor.value("holding_torque_nm") == pytest.approx(59 / 100)
     assert motor.value("phase_current_a") == 2.0
@@ -421,7 +421,8 @@ def test_the_17hs19_carries_its_cited_values() -> None:
     assert motor.value("inductance_mh") == pytest.approx(3e-3)
     assert motor.value("rotor_inertia_g_cm2") == pytest.approx(82 * 1e-3 * 1e-4)
     kinds = {name: value.provenance.kind for name, value in motor.values.items()}
-    assumed = {"supply_v": "assumed", "mass_kg": "assumed"}
+    assert motor.value("mass_kg") == pytest.approx(0.39)
+    assumed = {"supply_v": "assumed"}
     assert kinds == {**dict.fromkeys(kinds, "vendor"), **assumed}
     for name in ("inductance_mh", "rotor_inertia_g_cm2"):
         assert "steppers.csv" in motor.values[name].provenance.source

@@ -25,6 +25,9 @@ from tests.motor_library import MOTORS
         ("qsh4218-51-10-049", 0.35, "vendor", "Table 1.1"),
         # Ametek Pittman 14204S004 data sheet: "Weight WM oz (g) 38 (1083)"
         ("pittman-14204s004", 1.083, "vendor", "38 oz (1083 g)"),
+        # STEPPERONLINE 17HS19-2004S1 specification: "Weight 390g" (the library had an
+        # assumed 0.365 kg, a similar motor's, and said the maker gave none)
+        ("17hs19-2004s1", 0.39, "vendor", "weight 390 g"),
     ],
 )
 def test_a_library_motor_carries_its_datasheet_mass(
@@ -40,8 +43,8 @@ def test_the_motor_list_shows_each_mass_with_its_provenance(client: TestClient) 
     mass = motors["sy35st36-1004a"]["values"]["mass_kg"]
     assert mass["value"] == pytest.approx(0.18) and mass["unit"] == "kg"
     assert mass["provenance"]["kind"] == "vendor" and "0.18 kg" in mass["provenance"]["source"]
-    assumed = motors["17hs19-2004s1"]["values"]["mass_kg"]["provenance"]
-    assert assumed["kind"] == "assumed" and "SY42STH47-1684B" in assumed["source"]
+    assumed = motors["23hs32-4004s"]["values"]["mass_kg"]["provenance"]
+    assert assumed["kind"] == "assumed" and "QSH5718-79-30-163" in assumed["source"]
 
 
 def _library_with_mass(tmp_path: Path, value: str) -> Path:
