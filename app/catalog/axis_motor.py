@@ -72,16 +72,17 @@ def curve_origin(
 ) -> CurveOrigin | None:
     """Where ``app``'s motor curve (``with_motor``'s) comes from: "entered" where the
     inputs ``entered`` (the axis before ``with_motor``) carry a curve of their own,
-    "published" where it is the library motor's published curve (``Motor.published_curve``),
-    "model" where it is drawn from datasheet values (the stepper or servo model), None
-    without a curve."""
+    "published" where it is the library motor's published curve (``Motor.published_curve``,
+    at the share of it the drive's current gives: ``Motor.curve``), "model" where it is
+    drawn from datasheet values (the stepper or servo model), None without a curve."""
     if not app.motor_curve:
         return None
     if entered.motor_curve:
         return "entered"
     motor = motors.get(app.motor or "")
-    published = None if motor is None else motor.published_curve()
-    return "published" if published == app.motor_curve else "model"
+    if motor is None or motor.published_curve() is None:
+        return "model"
+    return "published" if motor.curve(app.motor_current_rms) == app.motor_curve else "model"
 
 
 def with_motor(app: Application, motors: Mapping[str, Motor]) -> Application:

@@ -6,6 +6,7 @@ published one, or the stepper or servo model's), and the ids the inputs may name
 ``app.catalog.axis_motor`` puts a motor on the axis.
 """
 
+import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -52,7 +53,13 @@ PLAIN = frozenset({"name", "frame", "kind"})
 #: mass (``mass_kg``, what it adds to the moving mass of the axis that carries it) is
 #: optional for a user's library, and the built-in library gives it for every motor.
 OPTIONAL = {
-    "stepper": {"detent_torque_nm": "N m", "pull_out_curve": "", "max_rpm": "", "mass_kg": ""},
+    "stepper": {
+        "detent_torque_nm": "N m",
+        "pull_out_curve": "",
+        "curve_current_a": "",
+        "max_rpm": "",
+        "mass_kg": "",
+    },
     "servo": {"top_speed_continuous_nm": "N m", "mass_kg": ""},
 }
 #: The values each kind's model draws its curve from, in the order its model takes them
@@ -77,6 +84,8 @@ SI_UNITS = {
     "step_angle_deg": "deg",
     "holding_torque_nm": "N m",
     "phase_current_a": "A",
+    #: the phase current a published pull-out curve was drawn at, as its sine's peak
+    "curve_current_a": "A",
     "resistance_ohm": "ohm",
     "inductance_mh": "H",
     "rotor_inertia_g_cm2": "kg m²",
@@ -177,11 +186,25 @@ class Motor:
         the sine's peak), a servo's peak envelope from the servo model."""
         published = self.published_curve()
         if published is not None:
-            return published
+            share = self.curve_share(current_is_rms)
+            return tuple((rpm, torque * share) for rpm, torque in published)
         values = tuple(self.value(name) for name in MODEL_VALUES[self.kind])
         if self.kind == "servo":
             return servo.peak_curve(*values)
         return self.within_top_speed(model_curve(values, current_is_rms))
+
+    def curve_share(self, current_is_rms: bool) -> float:
+        """The share of a published curve's torque the drive gives at the library's phase
+        current (set as RMS where ``current_is_rms``, else as the sine's peak) where the
+        chart was drawn at another current (``curve_current_a``, its peak): the drive's
+        peak over the chart's, at most 1 (torque follows the current below saturation,
+        and a lower current costs as much or less of it at speed, where the winding's
+        back EMF limits it); 1 where the library does not say the chart's current."""
+        chart = self.values.get("curve_current_a")
+        if chart is None:
+            return 1.0
+        peak = self.value("phase_current_a") * (math.sqrt(2.0) if current_is_rms else 1.0)
+        return min(1.0, peak / float(chart.value))
 
     def within_top_speed(self, curve: Curve) -> Curve:
         """A stepper model's ``curve`` up to the top speed its maker publishes (its

@@ -145,7 +145,7 @@ def test_the_library_values_typed_back_keep_the_library_curve() -> None:
         "motor_inductance_mh": 3.2,
     }
     core = ApplicationIn.model_validate({**BASE, "motor": "23hs32-4004s", **typed}).to_core(MOTORS)
-    assert core.motor_curve == MOTORS["23hs32-4004s"].published_curve()
+    assert core.motor_curve == MOTORS["23hs32-4004s"].curve()
 
 
 def test_a_lower_phase_current_lowers_the_holding_torque_in_proportion() -> None:
@@ -174,7 +174,9 @@ def test_a_published_curve_holds_only_at_its_charts_drive() -> None:
     same = ApplicationIn.model_validate(
         {**BASE, "motor": "23hs32-4004s", "motor_supply_v": 48.0}
     ).to_core(MOTORS)
-    assert same.motor_curve == published
+    # the chart's drive gave 4.2 A peak, the library's rated 4.0 A gives 4.0 / 4.2 of it
+    assert same.motor_curve == MOTORS["23hs32-4004s"].curve()
+    assert same.motor_curve[0][1] == pytest.approx(published[0][1] * 4.0 / 4.2, rel=1e-12)
     assert same.motor_supply_v is None  # no model range applies to a maker's curve
     half = ApplicationIn.model_validate(
         {**BASE, "motor": "23hs32-4004s", "motor_supply_v": 24.0}
@@ -670,10 +672,11 @@ SO_23HS32_48V = list(SO_23HS32.points)
 
 def test_a_library_motor_with_its_makers_curve_is_driven_by_it(client: TestClient) -> None:
     """The 23HS32-4004S carries STEPPERONLINE's published 48 V curve: the motor list
-    gives it with its provenance, and the checks read it (its first torque, 1.841 N m,
-    held to standstill; its last speed, 600 rpm, the fastest the motor may run), with no
-    note of the model's range. The Z axis at 12 mm/s turns 90 rpm: usable 1.841 / 1.5 =
-    1.227 N m; at 100 mm/s, 750 rpm, past the curve's 600 rpm: the motor-speed check
+    gives it with its provenance, and the checks read it at the share the rated 4.0 A
+    gives of the chart's 4.2 A peak (its first torque, 1.841 x 4.0 / 4.2 = 1.753 N m, held
+    to standstill; its last speed, 600 rpm, the fastest the motor may run), with no note
+    of the model's range. The Z axis at 12 mm/s turns 90 rpm: usable 1.753 / 1.5 =
+    1.169 N m; at 100 mm/s, 750 rpm, past the curve's 600 rpm: the motor-speed check
     fails."""
     listed = {m["id"]: m for m in client.get("/api/v1/motors").json()["motors"]}
     motor = listed["23hs32-4004s"]
@@ -681,11 +684,14 @@ def test_a_library_motor_with_its_makers_curve_is_driven_by_it(client: TestClien
     assert [tuple(p) for p in curve["value"]] == SO_23HS32_48V
     assert curve["provenance"]["kind"] == "vendor"
     assert "23HS32-4004S" in curve["provenance"]["source"]
-    assert [tuple(p) for p in motor["curve"]] == [(0.0, 1.841), *SO_23HS32_48V]
+    share = 4.0 / 4.2
+    drawn = [(rpm, torque * share) for rpm, torque in [(0.0, 1.841), *SO_23HS32_48V]]
+    assert [p[0] for p in motor["curve"]] == [rpm for rpm, _ in drawn]
+    assert [p[1] for p in motor["curve"]] == pytest.approx([t for _, t in drawn], rel=1e-12)
     params = {**Z_AXIS, "motor": "23hs32-4004s", "detail": "full"}
     best = client.get("/api/v1/select", params=params).json()["candidates"][0]
     checks = _checks(best)
-    assert checks["motor_curve"]["limit"] == pytest.approx(1.841 / MARGIN, rel=1e-6)
+    assert checks["motor_curve"]["limit"] == pytest.approx(1.841 * share / MARGIN, rel=1e-6)
     assert "40 % of the supply" not in checks["motor_curve"]["message"]
     assert "below 4 times" not in checks["motor_curve"]["message"]
     fast = {**params, "speed_mm_s": 100.0}
@@ -736,3 +742,29 @@ def test_an_assumed_drive_voltage_is_the_lowest_usual_one() -> None:
     at_48 = replace(schneider.values["supply_v"], value=48.0)
     stronger = replace(schneider, values={**schneider.values, "supply_v": at_48})
     assert stronger.corner_rpm() == pytest.approx(2 * schneider.corner_rpm(), rel=0.15)
+
+
+def test_a_curve_drawn_at_another_current_gives_the_drives_share(client: TestClient) -> None:
+    """Trinamic drew the QSH4218-47-28-040's curve at 2.8 A RMS (manual V1.06, Fig. 5.4):
+    a 3.96 A peak. A drive set to the rated 2.8 A as its peak (the app's default, the
+    safe side) gives 2.8 / 3.96 = 1 / sqrt 2 of it, 0.281 N m at low speed, not 0.3975;
+    set as RMS, the whole curve. STEPPERONLINE drew the 23HS32-4004S's at a 4.2 A peak,
+    above its rated 4.0 A: 4.0 / 4.2 of it. B6000-L8-TFE lifting 130 N passed on the
+    chart's torque and fails at the drive's."""
+    qsh, big = MOTORS["qsh4218-47-28-040"], MOTORS["23hs32-4004s"]
+    chart = qsh.published_curve()
+    assert chart is not None and chart[0][1] == pytest.approx(0.3975)
+    assert qsh.curve(current_is_rms=False)[0][1] == pytest.approx(0.3975 / math.sqrt(2), rel=1e-3)
+    assert qsh.curve(current_is_rms=True) == chart
+    big_chart = big.published_curve()
+    assert big_chart is not None
+    assert big.curve()[0][1] == pytest.approx(big_chart[0][1] * 4.0 / 4.2, rel=1e-12)
+    query = {
+        "load_n": 130, "speed_mm_s": 20, "length_mm": 300, "stroke_mm": 200,
+        "accel_mm_s2": 500, "moving_mass_kg": 2, "motor": "qsh4218-47-28-040", "lead_mm": 8,
+        "catalog_id": "B6000-L8-TFE",
+    }  # fmt: skip
+    peak = client.get("/api/v1/evaluate", params=query).json()["candidate"]
+    rms = client.get("/api/v1/evaluate", params={**query, "motor_current_rms": "true"})
+    assert not peak["passed"] and "motor_curve" in {f["name"] for f in peak["failed"]}
+    assert rms.json()["candidate"]["passed"]

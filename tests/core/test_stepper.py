@@ -51,20 +51,24 @@ def test_above_the_corner_the_power_is_constant(rpm: float, corner: float) -> No
 def test_every_library_curve_is_a_valid_motor_curve(motor_id: str) -> None:
     """Each library motor draws a curve the motor_curve input accepts: from the
     microstepping torque T_h / sqrt 2 at standstill (the maker's first plotted torque
-    where the motor carries its published curve) to at most the model's last speed,
-    rpm ascending, torque falling."""
+    where the motor carries its published curve, at the share of it the library's drive
+    current gives: ``Motor.curve_share``) to at most the model's last speed, rpm
+    ascending, torque falling."""
     motor = MOTORS[motor_id]
     curve = motor.curve()
     assert _curve_points(list(curve)) == list(curve)
     published = motor.published_curve()
+    share = motor.curve_share(current_is_rms=False)
     first = motor.value("holding_torque_nm") / 2**0.5 if published is None else published[1][1]
+    first *= 1.0 if published is None else share
     assert curve[0] == (0.0, pytest.approx(first))
     assert curve[-1][0] <= MAX_STEPPER_RPM
     torques = [t for _, t in curve]
     if published is None:  # the model's never rises; a maker's may, out of a dip
         assert torques == sorted(torques, reverse=True)
     else:
-        assert curve[1:] == published[1:] and curve[1:] == motor.values["pull_out_curve"].value
+        assert published[1:] == motor.values["pull_out_curve"].value
+        assert curve[1:] == tuple((rpm, torque * share) for rpm, torque in published[1:])
 
 
 def test_the_17hs19_curve_at_24_v() -> None:

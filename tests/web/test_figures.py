@@ -378,8 +378,9 @@ def test_the_motor_chart_names_where_its_curve_comes_from(
     catalog: Catalog, extra: dict[str, object], name: str
 ) -> None:
     """The 23HS32-4004S carries STEPPERONLINE's published curve (catalog/motors.toml): the
-    chart names it the maker's, with its first point, 1.841 N m, held to standstill; a curve
-    typed in is named as entered, over a library motor's too."""
+    chart names it the maker's, with its first point held to standstill, 1.841 N m at the
+    chart's 4.2 A peak, 4.0 / 4.2 of it at the library's rated 4.0 A; a curve typed in is
+    named as entered, over a library motor's too."""
     inputs = ApplicationIn.model_validate(
         {"load_n": 50, "speed_mm_s": 50, "length_mm": 500, "lead_mm": 10, "stroke_mm": 200,
          **extra}
@@ -387,7 +388,7 @@ def test_the_motor_chart_names_where_its_curve_comes_from(
     curve = result_figures(run_selection(inputs, catalog), METRIC, catalog)["motor"]["data"][0]
     assert curve["name"] == name
     if "motor_curve" not in extra:
-        assert curve["y"][:2] == pytest.approx([1.841, 1.841])
+        assert curve["y"][:2] == pytest.approx([1.841 * 4.0 / 4.2] * 2)
 
 
 def test_a_library_motor_draws_its_model_curve(catalog: Catalog) -> None:
@@ -483,14 +484,15 @@ def test_the_motor_chart_draws_the_break_away_the_check_holds_to_the_curve(
 ) -> None:
     """A bronze ISO nut lifting 150 N and 10 kg at 20 mm/s on the STEPPERONLINE
     23HS32-4004S (its published 48 V curve: 1.841 N m held from standstill to 90 rpm,
-    1.729 N m at 390 and 1.498 N m at 510 rpm; usable over the 1.5 torque margin). The
-    top screw, Tr14x3-bronze, turns at 400 rpm: its largest moving segment, accelerating
-    up, needs 0.4044 N m against 1.709 / 1.5 = 1.1398 N m there (35.5 %), but starting
+    1.729 N m at 390 and 1.498 N m at 510 rpm, at the chart's 4.2 A peak: 4.0 / 4.2 of it
+    at the library's rated 4.0 A; usable over the 1.5 torque margin). The top screw,
+    Tr14x3-bronze, turns at 400 rpm: its largest moving segment, accelerating up, needs
+    0.4044 N m against 1.709 x 4.0 / 4.2 / 1.5 = 1.0851 N m there (37.3 %), but starting
     from rest the oiled bronze thread is at its static friction: 0.4550 N m against
-    1.841 / 1.5 = 1.2273 N m at standstill, 37.1 %, the motor-curve check's utilization
-    and the results' peak torque ('starting from rest'). The chart draws that point at
-    0 rpm, so its highest point against the usable line is the check's 37.1 %, not the
-    segments' 35.5 %."""
+    1.841 x 4.0 / 4.2 / 1.5 = 1.1689 N m at standstill, 38.9 %, the motor-curve check's
+    utilization and the results' peak torque ('starting from rest'). The chart draws
+    that point at 0 rpm, so its highest point against the usable line is the check's
+    38.9 %, not the segments' 37.3 %."""
     result = run_selection(breakaway_lift.INPUTS, catalog)
     data = result_figures(result, METRIC, catalog)["motor"]["data"]
     usable = next(t for t in data if t["name"].startswith("Usable"))
@@ -506,7 +508,7 @@ def test_the_motor_chart_draws_the_break_away_the_check_holds_to_the_curve(
     top = result.candidates[0]
     assert top.id == "Tr14x3-bronze" and top.torque.peak_segment == "starting from rest"
     assert top.torque.peak_motor_nm == pytest.approx(0.4550, abs=5e-5)
-    assert top.utilization["motor_curve"] == pytest.approx(0.3707, abs=5e-5)
+    assert top.utilization["motor_curve"] == pytest.approx(0.3892, abs=5e-5)
 
 
 def test_a_rated_nuts_life_line_stays_within_the_results_band(catalog: Catalog) -> None:
