@@ -170,7 +170,8 @@ def test_a_custom_screws_share_url_is_its_page_with_the_same_answer(client: Test
     assert page.status_code == 200
     verdict = body["candidate"]["verdict"]
     assert verdict["text"].startswith("Governed by Motor torque-speed curve at ")
-    assert verdict["summary"].startswith("Passes the 5 limits that ran")
+    # the five of the screw and the motor, and the stepper supply its model curve is in range at
+    assert verdict["summary"].startswith("Passes the 6 limits that ran")
     assert verdict["summary"] in html.unescape(page.text)
 
 

@@ -258,13 +258,14 @@ def test_a_fix_says_where_the_speed_it_names_is_one_the_inputs_refuse(
 
 
 def test_the_summary_counts_the_limits_and_the_advice_that_ran_apart(client: TestClient) -> None:
-    """R12-04B1-RSIT driven by the 17HS19-2004S1 stepper runs 9 limits (the stroke with its
-    nut on the screw among them) and two pieces of advice (the inertia ratio, the ball
-    nut's mean load), and its pass read "Passes the 8 checks that ran" over 9 checks."""
+    """R12-04B1-RSIT driven by the 17HS19-2004S1 stepper runs 10 limits (the stroke with its
+    nut on the screw and the stepper's supply among them) and two pieces of advice (the
+    inertia ratio, the ball nut's mean load), and its pass read "Passes the 8 checks that
+    ran" over 9 checks."""
     axis = {"load_n": 30, "speed_mm_s": 100, "length_mm": 300, "stroke_mm": 200}
     axis |= {"accel_mm_s2": 2000, "moving_mass_kg": 2, "motor": "17hs19-2004s1"}
     body = {"application": axis, "screw": {"catalog_id": "R12-04B1-RSIT"}}
     c = client.post("/api/v1/evaluate", json=body).json()["candidate"]
     kinds = [k["kind"] for k in c["checks"]]
-    assert c["passed"] and kinds.count("limit") == 9 and kinds.count("advice") == 2
-    assert c["verdict"]["summary"].startswith("Passes the 9 limits that ran, besides 2 pieces")
+    assert c["passed"] and kinds.count("limit") == 10 and kinds.count("advice") == 2
+    assert c["verdict"]["summary"].startswith("Passes the 10 limits that ran, besides 2 pieces")

@@ -40,6 +40,10 @@ APPS = {
         ambient_c=100.0,
         step_angle_deg=1.8,
         microsteps=4,
+        # a datasheet stepper on 12 V, below 4 x 0.64 A x 14.5 ohm = 37.1 V
+        motor_supply_v=12.0,
+        motor_phase_current_a=0.64,
+        motor_resistance_ohm=14.5,
     ),
     "long-fast-fixed-free": light_app(length_m=3.0, speed_m_s=0.4, end_fixity="fixed-free"),
     # short, heavily loaded columns (Johnson's branch) and a brake holding a vertical load
@@ -236,7 +240,7 @@ def test_a_limit_from_the_catalog_names_where_it_comes_from() -> None:
     whose capacity is a catalog value names it (among the fields it reads); only the
     checks whose capacity is the user's own input leave it empty."""
     user_limits = {c.name for c in REGISTRY if not c.capacity_sources}
-    motor = {"motor_curve", "motor_rms", "motor_speed", "inertia_ratio"}
+    motor = {"motor_curve", "motor_rms", "motor_speed", "inertia_ratio", "motor_supply"}
     controller = {"step_rate", "step_resolution"}
     holding = {"holding", "holding_power_off"}
     # the thrust bearing's ratings are inputs, typed or a library unit's (as a motor's)

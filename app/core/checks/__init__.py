@@ -26,6 +26,7 @@ from app.core.checks.max_sliding_speed import MaxSlidingSpeed
 from app.core.checks.motor_curve import MotorCurve
 from app.core.checks.motor_rms import MotorRms
 from app.core.checks.motor_speed import MotorSpeed
+from app.core.checks.motor_supply import MotorSupply
 from app.core.checks.nut_heat import NutHeat
 from app.core.checks.oil import OilCompatibility
 from app.core.checks.power_off import HoldingPowerOff
@@ -50,6 +51,7 @@ REGISTRY: tuple[Check, ...] = (
     MotorCurve(),
     MotorRms(),
     MotorSpeed(),
+    MotorSupply(),
     InertiaRatio(),
     StepRate(),
     CriticalSpeed(),
