@@ -774,3 +774,16 @@ def test_a_curve_drawn_at_another_current_gives_the_drives_share(client: TestCli
     rms = client.get("/api/v1/evaluate", params={**query, "motor_current_rms": "true"})
     assert not peak["passed"] and "motor_curve" in {f["name"] for f in peak["failed"]}
     assert rms.json()["candidate"]["passed"]
+
+
+def test_only_a_modelled_curve_is_called_the_models_estimate(client: TestClient) -> None:
+    """The QSH4218-47-28-040 carries Trinamic's own curve: its check does not call its
+    pull-out the microstepping model's estimate, which the 17HS19-2004S1's (drawn from
+    its datasheet values) is."""
+    axis = {"load_n": 10, "speed_mm_s": 20, "length_mm": 300, "stroke_mm": 200}
+    notes = {}
+    for motor in ("qsh4218-47-28-040", "17hs19-2004s1"):
+        params = {**axis, "motor": motor, "catalog_id": "B6000-L8-TFE"}
+        c = client.get("/api/v1/evaluate", params=params).json()["candidate"]
+        notes[motor] = "the microstepping model's estimate" in _checks(c)["motor_curve"]["message"]
+    assert notes == {"qsh4218-47-28-040": False, "17hs19-2004s1": True}

@@ -21,7 +21,8 @@ from app.core.checks.base import (
 from app.core.formulas import stepper
 from app.core.phrase import Amount, Phrase
 
-#: Said of every stepper: its curve may be the model's, drawn from datasheet values.
+#: Said of a stepper whose curve may be the model's, drawn from datasheet values (its
+#: drive's supply known: a maker's published curve, or one typed in, has none).
 DATASHEET_NOTE = (
     " Where the curve is drawn from datasheet values (the values typed in, or a library "
     "stepper without its maker's published curve or on a drive other than its chart's), "
@@ -158,9 +159,10 @@ class MotorCurve(Check):
         values["pull_out"] = Amount(r.motor.motor_curve_nm * margin, "torque")
         values["margin"] = f"{margin:g}"
         text += (
-            "usable {curve} there: its pull-out {pull_out} over the stepper torque margin "
-            "{margin}." + DATASHEET_NOTE
+            "usable {curve} there: its pull-out {pull_out} over the stepper torque margin {margin}."
         )
+        if app.motor_supply_v is not None:  # a curve the model draws (a maker's has none)
+            text += DATASHEET_NOTE
         limit = model_range_rpm(app)
         if limit is not None and r.motor.peak_rpm > limit:
             values["peak"] = Amount(r.motor.peak_rpm, "rpm")
