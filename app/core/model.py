@@ -442,8 +442,8 @@ class Segment(Generic[V]):
     speed: ``segments.segment_curve``; None without a curve) and whether the segment
     governs the motor: the one nearest its curve, or the largest torque without a curve
     (``Quantities.motor.motor_worst_segment``). A moving segment the load drives may be
-    worked at its braking end, the lowest friction and drag the nut is given
-    (``segments.moving_torques``): where, ``braking_end`` (None: nowhere, a dwell)."""
+    worked at its braking end (``segments.moving_torques``): where, ``braking_end``, a
+    mask of the candidates (None: nowhere, a dwell)."""
 
     name: SegmentName
     direction: Direction

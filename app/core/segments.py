@@ -112,10 +112,11 @@ def _worse_end(
 ) -> tuple[Array, Mask]:
     """A segment's motor torque at its worse end, and where that is the braking end: where
     the load drives the screw (``thrust_n`` below 0), the larger in size of the torque at
-    the running friction and top drag and the torque at the braking end, the lowest
-    friction and drag the nut is given (the load drives the motor hardest there; a
-    self-locking thread needs the most torque at the first); else at the running
-    friction and top drag."""
+    the running friction and top drag and the torque at the braking end
+    (``CandidateTable.braking_backdrive_efficiency_signed``: a ball screw's low
+    equivalent friction, a sliding nut's running one; the bottom of the drag range),
+    where the load drives the motor hardest (a self-locking thread needs the most torque
+    at the first); else at the running friction and top drag."""
     torque_nm = plus_spin(t, running[thrust_n], accel, j)
     if thrust_n >= 0.0:
         return torque_nm, np.zeros(len(t), dtype=bool)
@@ -127,8 +128,8 @@ def _worse_end(
 def running_torque(t: CandidateTable, thrust_n: float, braking: bool = False) -> Array:
     """The motor torque that passes the thrust ``thrust_n`` through the thread
     (``profile.thread_torque``) against the nut's drag, for every candidate [N m]: at the
-    running friction and the top of the drag range, or (``braking``) where the load
-    drives, at the lowest friction and the bottom of the drag range."""
+    running friction and the top of the drag range, or (``braking``) at the braking end
+    (``_worse_end``)."""
     eta_b = t.braking_backdrive_efficiency_signed if braking else t.backdrive_efficiency_signed
     thread = profile.thread_torque(thrust_n, t.lead_m, t.efficiency, eta_b, t.efficient_turn_rad)
     torque_nm: Array = thread + (t.drag_min_nm if braking else t.drag_max_nm)
