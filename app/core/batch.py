@@ -18,20 +18,13 @@ from app.core.checks.base import Check
 from app.core.dry_run import screw_as_run
 from app.core.duty import ball_life_revolutions, ball_load_factors, travel_thrusts
 from app.core.input_rules import read_inputs, refused
-from app.core.model import (
-    Application,
-    AxisProvenance,
-    Direction,
-    Motion,
-    ScrewSpec,
-    Segment,
-    SegmentName,
-)
+from app.core.model import Application, AxisProvenance, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
 from app.core.quantities import PART_OF, PARTS, Quantities, quantity
 from app.core.reach import size_of
 from app.core.screening import Screening
 from app.core.table import Array
+from app.core.timeline import Direction, Motion, Segment, SegmentName
 
 #: The screening's per-candidate verdicts a record reads as columns.
 VERDICTS = frozenset({"passed", "max_utilization"})

@@ -10,9 +10,10 @@ import math
 import numpy as np
 
 from app.core.formulas import energy
-from app.core.model import Application, Profile, Segment
+from app.core.model import Application
 from app.core.motion import segment_travels
 from app.core.table import Array, CandidateTable, filled
+from app.core.timeline import Profile, Segment
 
 #: A net work within this share of the sum of its terms' sizes is rounding, not work: a
 #: weight raised and lowered again does none (double precision keeps some 16 digits).

@@ -14,8 +14,9 @@ from app.core.formulas import (
     stepping,
     torque,
 )
-from app.core.model import FIX_MARGIN, Application, Move, Segment
+from app.core.model import FIX_MARGIN, Application, Move
 from app.core.table import Array, CandidateTable, filled
+from app.core.timeline import Segment
 
 
 def torques(

@@ -15,9 +15,10 @@ from app.core.formulas import (
     life,
     support,
 )
-from app.core.model import Application, Profile
+from app.core.model import Application
 from app.core.nut import nut_length
 from app.core.table import Array, CandidateTable, filled, finite
+from app.core.timeline import Profile
 
 #: Ambient temperature at which the screw's length is nominal [C].
 REFERENCE_TEMPERATURE_C = 20.0

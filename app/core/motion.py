@@ -16,15 +16,9 @@ from dataclasses import dataclass
 
 from app.core.formulas import life, profile, wear
 from app.core.formulas.declare import formula
-from app.core.model import (
-    STANDARD_GRAVITY_M_S2,
-    Application,
-    Direction,
-    Move,
-    Profile,
-    SegmentName,
-)
+from app.core.model import STANDARD_GRAVITY_M_S2, Application, Move
 from app.core.phrase import Amount, Phrase
+from app.core.timeline import Direction, Profile, SegmentName
 
 #: The moving segments and the sign of their acceleration along the motion.
 RAMPS: tuple[tuple[SegmentName, float], ...] = (

@@ -32,12 +32,9 @@ from app.core.model import (
     Buckling,
     J,
     Judged,
-    Motion,
-    Profile,
     Provenance,
     ProvenanceKind,
     ScrewSpec,
-    Segment,
     failed_advice,
     holds,
 )
@@ -46,6 +43,7 @@ from app.core.quantities import Quantities
 from app.core.robustness import Robustness
 from app.core.screening import Screening
 from app.core.sections import Column, CriticalSpeed, Life, Torque, number
+from app.core.timeline import Motion, Profile, Segment
 from app.core.verdict import Verdict, verdict
 
 #: Provenance kinds from the least to the most certain.

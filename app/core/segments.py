@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from app.core.formulas import geometry, profile, torque
-from app.core.model import Application, Direction, Move, Profile, Segment, SegmentName
+from app.core.model import Application, Move
 from app.core.motion import (
     RAMPS,
     Cycle,
@@ -28,6 +28,7 @@ from app.core.motion import (
     sense,
 )
 from app.core.table import Array, CandidateTable, Mask, filled
+from app.core.timeline import Direction, Profile, Segment, SegmentName
 
 #: A moving segment for every candidate: its name and direction, the thrust against the
 #: motion [N], the motor torque [N m] and where it is worked at the braking end

@@ -16,8 +16,8 @@ import pytest
 
 from app.core import motion, segments
 from app.core.formulas import torque
-from app.core.model import Segment
 from app.core.table import CandidateTable
+from app.core.timeline import Segment
 from app.report import maker_examples as examples
 
 #: Each published value, and the published rounding it is held to (1 %).
