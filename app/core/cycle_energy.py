@@ -76,12 +76,12 @@ def cycle_energy(
         load = load + work
         size = size + np.abs(work)
         # at the end of the friction and drag the segment's torque was worked at
-        braking = np.zeros(len(t), dtype=bool) if s.braking_end is None else s.braking_end
-        eta_b = np.where(
-            braking, t.braking_backdrive_efficiency_signed, t.backdrive_efficiency_signed
-        )
+        eta_b, drag_nm = t.backdrive_efficiency_signed, t.drag_max_nm
+        if s.braking_end is not None:
+            braking = s.braking_end
+            eta_b = np.where(braking, t.braking_backdrive_efficiency_signed, eta_b)
+            drag_nm = np.where(braking, t.drag_min_nm, drag_nm)
         thread = thread + energy.thread_loss(s.thrust_n, x, t.efficiency, eta_b)
-        drag_nm = np.where(braking, t.drag_min_nm, t.drag_max_nm)
         drag = drag + np.asarray(energy.shaft_energy(drag_nm, x, t.lead_m), dtype=np.float64)
     current = copper_current_rms(app)
     copper = nan

@@ -17,6 +17,7 @@ from app.core.checks.base import (
     ScrewSpec,
     everywhere,
 )
+from app.core.checks.motor_curve import supply_too_low
 from app.core.formulas import stepper
 from app.core.phrase import Phrase
 
@@ -47,8 +48,7 @@ class MotorSupply(Check):
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         # yes or no: a condition of the model's validity, not a margin of the axis
-        low = (app.motor_supply_v or 0.0) < _least_v(app)
-        return Measure(everywhere(t), flagged=np.full(len(t), low))
+        return Measure(everywhere(t), flagged=np.full(len(t), supply_too_low(app)))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]

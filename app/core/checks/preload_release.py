@@ -64,7 +64,7 @@ class PreloadRelease(Check):
             {
                 "f": Amount(r.axis.peak_force_n, "force"),
                 "fpr": Amount(s.preload_n or 0.0, "force"),
-                "flim": Amount(float(ballscrew.preload_release_force(s.preload_n or 0.0)), "force"),
+                "flim": Amount(_release_of(s), "force"),
             },
         )
 
