@@ -143,20 +143,25 @@ def motor_point(
     ``segments.moving_torques``), and the break-away that starts each move from rest
     (``torques["breakaway_nm"]``: the thread at static friction) against the curve at
     standstill (``worst_point``); the acceleration and top speed that would fit the
-    curve (``curve_fits``). Without a stroke there is no profile: the one point is
-    today's torque at the top speed, ``rpm``, the larger of the running torque and the
-    break-away."""
+    curve (``curve_fits``). Without a stroke there is no profile to time the segments:
+    each moving segment of both moves is judged at the top speed ``rpm``
+    (``segments.at_top_speed``: a ramp over the speeds up to it), beside the break-away,
+    and the top speed that fits is the one at which all of them do (``slower_fit``); no
+    acceleration to fit (NaN)."""
     p = c.fastest
     peak_rpm = worst_rpm = rpm
     nan = filled(len(t), np.nan)
     fits = (nan,) * 4
     parts: list[Segment[Array]] = []
     if p is None:
-        worst_nm = np.maximum(torques["total_nm"], torques["breakaway_nm"])
-        index, peak, rms = filled(len(t), -1.0), nan, nan
+        at_top = segments.at_top_speed(t, moving, rpm)
+        index, worst_nm, worst_rpm, starting, at_rest = worst_point(app, t, at_top, torques)
+        peak, rms = nan, nan
         referred = nan
         if app.motor_curve:
-            fits = point_fits(app, rpm, torques, c.reached_m_s)
+            fit_speed = slower_fit(app, starting, at_rest, c.reached_m_s)
+            fix_speed = slower_fit(app, starting, at_rest, c.reached_m_s, 1.0 + FIX_MARGIN)
+            fits = (nan, fit_speed, nan, fix_speed)
     else:
         peak_rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
         parts = segments.segments(app, t, hold_nm, moving, c)
@@ -244,23 +249,6 @@ def curve_fits(
     fitting_speed = slower_fit(app, starting, at_rest, peak_speed)
     fix_speed = slower_fit(app, starting, at_rest, peak_speed, 1.0 + FIX_MARGIN)
     return fitting, fitting_speed, fix_accel, fix_speed
-
-
-def point_fits(
-    app: Application, rpm: Array, torques: dict[str, Any], speed_m_s: float
-) -> tuple[Array, Array, Array, Array]:
-    """``curve_fits`` without a stroke: no acceleration to fit (NaN), and the top speed at
-    which the running torque at ``rpm`` and the break-away at standstill both fit the
-    curve (``slower_fit`` of the two), bare and with the fix's margin."""
-    load = np.vstack([np.abs(torques["total_nm"]), np.abs(torques["breakaway_nm"])])
-    speeds = np.vstack([rpm, np.zeros_like(rpm)])
-    nan = np.full(np.shape(rpm), np.nan)
-    return (
-        nan,
-        slower_fit(app, load, speeds, speed_m_s),
-        nan,
-        slower_fit(app, load, speeds, speed_m_s, 1.0 + FIX_MARGIN),
-    )
 
 
 def fitting_accel(

@@ -60,6 +60,26 @@ def _move(
     ]
 
 
+def at_top_speed(t: CandidateTable, rows: list[Moving], rpm: Array) -> list[Segment[Array]]:
+    """The moving segments of every move (``moving_torques`` rows) where no stroke times
+    them: each at the top speed ``rpm`` (a ramp runs from standstill to it, which
+    ``segment_curve`` reads), its duration unknown (NaN). The motor's curve judges them as
+    it judges a timed move's, the decelerate segment and a ramp's sweep through a dip in
+    the curve included."""
+    return [
+        Segment(
+            name=name,
+            direction=direction,
+            duration_s=float("nan"),
+            rpm=rpm,
+            thrust_n=filled(len(t), thrust),
+            torque_nm=torque_nm,
+            braking_end=braking,
+        )
+        for name, direction, thrust, torque_nm, braking in rows
+    ]
+
+
 def moving_segment_names(app: Application) -> list[tuple[SegmentName, Direction]]:
     """The moving segments of every move of the cycle (``motion.cycle``: out and back, or
     the user's own moves in their order), name and direction, in the order of

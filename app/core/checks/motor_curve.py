@@ -69,12 +69,13 @@ def supply_too_low(app: Application) -> bool:
 def worst_segment(app: Application, r: Quantities[float]) -> str:
     """The segment that uses the most of the curve, in words ("accelerate up"; "start
     from rest" where the break-away governs)."""
-    p = motion.move_profile(app)
-    if p is None:
-        return "move at the top speed"
     if r.motor.motor_worst_segment < 0:
         return "start from rest"
-    return motion.segment_labels(app)[int(r.motor.motor_worst_segment)]
+    index = int(r.motor.motor_worst_segment)
+    if motion.move_profile(app) is None:  # the moving segments alone, at the top speed
+        name, direction = segments.moving_segment_names(app)[index]
+        return f"{name} {direction}"
+    return motion.segment_labels(app)[index]
 
 
 def accel_that_fits(r: Quantities[float]) -> float | None:
