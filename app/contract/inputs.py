@@ -239,6 +239,28 @@ class ApplicationInputs(BaseModel):
         raise ValidationError.from_exception_data(type(self).__name__, [error])
 
     @model_validator(mode="after")
+    def _span_holds_the_travel(self) -> "ApplicationInputs":
+        """The span from the thrust bearing to the nut at the far end of its travel is at
+        least the travel: the stroke, or the span of a cycle of moves; refused on the
+        span (``input_rules.least_inputs``)."""
+        span = getattr(self, API_OF["bearing_to_nut_m"])
+        stroke = getattr(self, API_OF["stroke_m"])
+        travel = span_mm(self.moves) if self.moves else stroke
+        if span is None or travel is None or span >= travel:
+            return self
+        what = "the moves' span" if self.moves else "the stroke"
+        error = InitErrorDetails(
+            type=PydanticCustomError(
+                "span_holds_travel",
+                f"must be at least {what}, {travel:g} mm: the nut at the far end of its "
+                "travel is that far from the thrust bearing",
+            ),
+            loc=(API_OF["bearing_to_nut_m"],),
+            input=span,
+        )
+        raise ValidationError.from_exception_data(type(self).__name__, [error])
+
+    @model_validator(mode="after")
     def _cycles_fit_a_day(self) -> "ApplicationInputs":
         """The cycles per day fit in a day: at most 86,400 s over the cycle's time (out
         and back with the dwells, ``motion.move_profile``); refused on cycles_per_day."""

@@ -1,12 +1,14 @@
 """The inputs' own rules, which hold between inputs whatever the screw: the screw at least
-as long as the stroke, the nut and the span to the thrust bearing given, and the cycles a
-day within a day. The input model refuses an application that breaks one
-(``ApplicationInputs``); a change the app offers keeps them (``changes``, ``remedy``), and
-a check's fix says where the move it names breaks one (``refused``)."""
+as long as the stroke, the nut and the span to the thrust bearing given, that span at least
+the nut's travel, and the cycles a day within a day. The input model refuses an
+application that breaks one (``ApplicationInputs``); a change the app offers keeps them
+(``changes``, ``remedy``), and a check's fix says where the move it names breaks one
+(``refused``)."""
 
 import math
 from collections.abc import Mapping
 from dataclasses import replace
+from itertools import accumulate
 from typing import Any, cast
 
 from app.core import duty, motion
@@ -34,14 +36,30 @@ def read_inputs(app: Application, limits: Mapping[str, float] | None) -> dict[st
     }
 
 
+def travel_span_m(app: Application) -> float | None:
+    """The length of screw the nut's travel spans [m]: the stroke, else the span of the
+    positions a cycle of moves reaches from its start; None without either."""
+    if app.stroke_m is not None or not app.moves:
+        return app.stroke_m
+    ends = list(accumulate((m.distance_m for m in app.moves), initial=0.0))
+    return max(ends) - min(ends)
+
+
 def least_inputs(app: Application) -> dict[str, float]:
     """The least value of each input that the other inputs' rules set: the screw's
     length, at least the stroke and the nut length given (the input table's rule,
     ``ApplicationInputs._stroke_fits``), the nut length alone and the span from the thrust
-    bearing to the nut given (``ApplicationInputs._within_length``); ``inputs_hold``."""
+    bearing to the nut given (``ApplicationInputs._within_length``); and that span, given,
+    at least the nut's travel (``travel_span_m``: the nut at the far end of its travel is
+    that far from the bearing at least, ``ApplicationInputs._span_holds_the_travel``);
+    ``inputs_hold``."""
     least = [app.stroke_m + (app.nut_length_m or 0.0)] if app.stroke_m is not None else []
     least += [v for v in (app.nut_length_m, app.bearing_to_nut_m) if v is not None]
-    return {"length_m": max(least)} if least else {}
+    out = {"length_m": max(least)} if least else {}
+    travel = travel_span_m(app)
+    if app.bearing_to_nut_m is not None and travel:
+        out["bearing_to_nut_m"] = travel
+    return out
 
 
 def inputs_hold(app: Application) -> bool:

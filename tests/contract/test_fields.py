@@ -9,6 +9,7 @@ name is spelled in more than three files (issue 9).
 import csv
 import dataclasses
 import io
+import math
 import re
 from pathlib import Path
 from typing import Any, get_args
@@ -330,6 +331,8 @@ def valid_inputs(draw: st.DrawFn) -> ApplicationIn:
         data["required_life_years"] = None  # a required life needs a duty
     if (data["bearing_to_nut_mm"] or 0.0) > data["length_mm"]:
         data["bearing_to_nut_mm"] = None  # the span from the thrust bearing lies on the screw
+    if (data["bearing_to_nut_mm"] or math.inf) < (data["stroke_mm"] or 0.0):
+        data["bearing_to_nut_mm"] = None  # and is at least the nut's travel
     if data["step_angle_deg"] is None and data["motor"] is None:
         data["max_step_rate_hz"] = None  # a step rate limit needs a step angle
     if data["motor_holding_torque_nm"] is not None:

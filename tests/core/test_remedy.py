@@ -204,10 +204,18 @@ def test_a_check_without_its_own_text_is_named() -> None:
         ({"length_m": 0.8}, True),
         ({"length_m": 0.35}, False),  # the stroke 0.3 m and the nut 0.06 m need 0.36 m
         ({"length_m": 0.5}, False),  # shorter than the 0.6 m from the bearing to the nut
+        ({"bearing_to_nut_m": 0.25}, False),  # a span to the bearing below the 0.3 m stroke
         ({"speed_m_s": 0.05}, True),  # 0.3 m at 0.05 m/s: a cycle of 12.1 s, 7,140 a day
         ({"speed_m_s": 0.02}, False),  # 30.04 s: 2,876 a day, fewer than the 5,000 asked
     ],
-    ids=["longer", "below-the-stroke", "below-the-bearing-span", "slower", "too-slow"],
+    ids=[
+        "longer",
+        "below-the-stroke",
+        "below-the-bearing-span",
+        "span-below-the-stroke",
+        "slower",
+        "too-slow",
+    ],
 )
 def test_a_change_keeps_the_inputs_own_rules(change: dict[str, float], holds: bool) -> None:
     """The rules the input model refuses an application by (the stroke and the nut on

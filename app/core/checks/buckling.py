@@ -174,11 +174,12 @@ class ColumnBuckling(Check):
             options.append("reduce the load")
         else:
             shorter = f"{what} at most {{length}} with the ends {{fixity}}"
-            # a screw shorter than the stroke is no screw the inputs accept: a support then
-            too_short = length_m < least_inputs(app).get("length_m", 0.0)
+            # a screw shorter than the stroke is no screw the inputs accept: a support then;
+            # nor is a span to the thrust bearing shorter than the nut's travel
+            too_short = length_m < least_inputs(app).get(_column_input(app), 0.0)
             if (stiffer is None or too_short) and not spanned:
                 options.append(f"add an intermediate support ({shorter})")
-            else:
+            elif not too_short:
                 options.append(f"a {shorter.replace(' at most', ' of at most', 1)}")
         options.append("move the thrust bearing so that the load pulls the screw")
         return sentence(", or ".join(options) + "." + MARGIN_NOTE, values)
