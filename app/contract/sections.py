@@ -266,6 +266,15 @@ class AccuracyOut(BaseModel):
         Field(description="The nut's axial play, least and most (null: not given)"),
     ]
     thermal_growth_mm: Annotated[float | None, From("thermal_growth_m", "length")]
+    heat_growth_mm: Annotated[
+        float | None,
+        From("heat_growth_m", "length"),
+        Field(
+            description="The screw's growth from its nut's friction heat, between the "
+            "thrust bearing and the nut at the far end of the stroke (null: not counted: "
+            "no stroke, a ball nut, or a screw without the values its heat balance reads)"
+        ),
+    ]
 
 
 class OutgassingOut(BaseModel):

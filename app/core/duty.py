@@ -96,7 +96,32 @@ def heat_balance(app: Application, t: CandidateTable, c: motion.Cycle) -> dict[s
         "friction_power_w": friction,
         "drag_power_w": drag,
         "nut_temperature_rise_k": rise,
+        "heat_growth_m": heat_growth(app, t, rise, nut_m),
     }
+
+
+def heat_growth(app: Application, t: CandidateTable, rise_k: Array, nut_m: Array) -> Array:
+    """Each screw's growth from its nut's friction heat [m] (``heat.heated_growth``),
+    between the thrust bearing and the nut at the far end of its stroke, for the
+    positioning error; the nut's steady rise ``rise_k`` [K] (``heat_balance``), the nut
+    length ``nut_m`` [m].
+
+    The span is the heat balance's own (``screw_fins``): the nut at the end of a stroke
+    centred on the screw, where its heat balance is taken, the thrust bearing at the
+    screw's end beyond the stroke from it. The screw's temperature falls along it as the
+    long fin's profile, theta_b cosh(m (L_f - x)) / cosh(m L_f), L_f the screw's length
+    from the nut to that end (``heat.nut_sides_m``); the growth counts it to the nut's
+    middle. A bearing nearer the nut, or one drawing heat off, grows less: the safe side.
+
+    NaN where the heat balance does not judge the nut: without a stroke or moves (no
+    duty), a ball nut (it rolls: no sliding-friction model), or a screw without its
+    conductivity, nut length or expansion.
+    """
+    if not (app.stroke_m or app.moves):
+        return filled(len(t), np.nan)
+    far_m = heat.nut_sides_m(app.length_m, stroke_span_m(app), nut_m)[1]
+    growth = heat.heated_growth(t.screw_expansion_per_k, rise_k, t.fin_m_per_m, far_m, nut_m)
+    return np.where(t.ball, np.nan, growth).astype(np.float64)
 
 
 def duty(

@@ -411,6 +411,9 @@ class Accuracy:
     backlash_min_m: float | None
     backlash_max_m: float | None
     thermal_growth_m: float | None
+    #: the screw's growth from its nut's friction heat (``duty.heat_growth``; None: not
+    #: counted)
+    heat_growth_m: float | None
 
 
 @dataclass(frozen=True, slots=True)

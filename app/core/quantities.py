@@ -263,10 +263,14 @@ class NutHeat(Generic[V]):
 @dataclass(slots=True)
 class TravelError(Generic[V]):
     """The travel's positioning error [m] (``duty.duty``): the lead error accumulated
-    over the stroke and the screw's thermal growth."""
+    over the stroke and the screw's thermal growth over it at the ambient; and its growth
+    from the nut's friction heat between the thrust bearing and the nut
+    (``duty.heat_growth``, worked out with ``duty.heat_balance``; NaN where not counted:
+    no duty, a ball nut, a screw without the values its heat balance reads)."""
 
     lead_error_m: V
     thermal_growth_m: V
+    heat_growth_m: V
 
 
 @dataclass(slots=True)

@@ -376,6 +376,7 @@ class Candidate:
             backlash_min_m=s.backlash_min_m,
             backlash_max_m=s.backlash_max_m,
             thermal_growth_m=q.accuracy.thermal_growth_m,
+            heat_growth_m=number(q.accuracy.heat_growth_m),
         )
 
     @property

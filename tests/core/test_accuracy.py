@@ -143,8 +143,9 @@ def test_a_trapezoidal_screws_known_terms_alone_fail_a_tight_tolerance(catalog: 
     """Tr22x10(P5)-acetal over a 1500 mm stroke at 60 C, 0.1 mm tolerance: no lead
     accuracy is given for an ISO trapezoidal screw, but its C45 screw grows
     11.7e-6 x 1500 x 40 = 0.702 mm (ASM Metals Handbook) and its nut's play is up to
-    0.3 mm (catalog, assumed): 1.002 mm of known error, ten times the tolerance. The
-    check ran before only where a lead accuracy is given, so this screw passed."""
+    0.3 mm (catalog, assumed): 1.002 mm of known error, ten times the tolerance, and the
+    growth from its nut's friction heat on top. The check ran before only where a lead
+    accuracy is given, so this screw passed."""
     c = _accuracy(
         catalog,
         "Tr22x10(P5)-acetal",
@@ -153,7 +154,9 @@ def test_a_trapezoidal_screws_known_terms_alone_fail_a_tight_tolerance(catalog: 
         ambient_c=60.0,
         positioning_tolerance_m=0.1e-3,
     )
-    assert c.value == pytest.approx((11.7e-6 * 1500 * 40 + 0.3) * 1e-3, rel=1e-9)
+    heated_m = c.message.values["heat"].value
+    assert heated_m > 0.0
+    assert c.value == pytest.approx((11.7e-6 * 1500 * 40 + 0.3) * 1e-3 + heated_m, rel=1e-9)
     assert not c.passed
     text = render(c.message)
     assert "of the known terms" in text and "even without the lead error" in text
@@ -161,7 +164,8 @@ def test_a_trapezoidal_screws_known_terms_alone_fail_a_tight_tolerance(catalog: 
 
 
 def test_a_trapezoidal_screws_pass_says_it_leaves_the_lead_error_out(catalog: Catalog) -> None:
-    """The same screw against a 2 mm tolerance passes on its known 1.002 mm; its message
+    """The same screw against a 2 mm tolerance passes on its known 1.002 mm and the
+    growth from its nut's friction heat; its message
     and its verdict's summary say the lead error is left out, and the summary never says
     it passes every check."""
     ev = evaluate(
@@ -169,7 +173,9 @@ def test_a_trapezoidal_screws_pass_says_it_leaves_the_lead_error_out(catalog: Ca
         catalog.by_id["Tr22x10(P5)-acetal"],
     )
     c = next(c for c in ev.checks if c.name == "accuracy")
-    assert c.passed and c.value == pytest.approx(1.002e-3, rel=1e-9)
+    heated_m = ev.accuracy.heat_growth_m
+    assert heated_m is not None and heated_m > 0.0
+    assert c.passed and c.value == pytest.approx(1.002e-3 + heated_m, rel=1e-9)
     assert "leaving out the lead error" in render(c.message)
     summary = render(ev.verdict.summary)
     assert "Positioning accuracy (no lead accuracy)" in summary

@@ -3,7 +3,7 @@ profile and each segment's time, speed, thrust and torque."""
 
 from app.contract.reported.row import Formula, Reported
 from app.core import duty, motion, segments
-from app.core.formulas import accuracy, geometry, profile
+from app.core.formulas import accuracy, geometry, heat, profile
 from app.core.formulas.declare import formula_of
 
 ROWS: tuple[Reported, ...] = (
@@ -19,6 +19,7 @@ ROWS: tuple[Reported, ...] = (
         ),
     ),
     Reported("accuracy.thermal_growth_mm", formula=Formula(accuracy.thermal_growth)),
+    Reported("accuracy.heat_growth_mm", formula=Formula(heat.heated_growth)),
     Reported("profile.peak_speed_mm_s", formula=Formula(profile.peak_speed)),
     Reported("profile.accel_time_s", formula=Formula(profile.ramp_time)),
     Reported("profile.decel_time_s", formula=Formula(profile.ramp_time, "t_d = v_peak / d")),

@@ -27,6 +27,39 @@ def _known(value: float | None) -> bool:
     return value is not None and not math.isnan(value)
 
 
+#: The catalog values the growth from the friction heat reads beyond the thread's, in words.
+_HEAT_VALUES = (
+    ("nut_length_m", "nut length"),
+    ("thermal_conductivity_w_m_k", "screw's thermal conductivity"),
+    ("screw_expansion_per_k", "screw's thermal expansion"),
+)
+
+
+def _heat_words(app: Application, s: ScrewSpec, counted: bool) -> str:
+    """The accuracy sentence's words on the screw's growth from its nut's friction heat
+    (``duty.heat_growth``): the nut's rise and the span it is counted over with what that
+    assumes, else why it is not counted."""
+    if counted:
+        return (
+            "; the nut's friction heat (the nut {rise} above the ambient) grows it {heat} "
+            "more from the thrust bearing to the nut's middle at the far end of the stroke. "
+            "Assumed: the thrust bearing at the screw's end, the screw cooling from the nut "
+            "as the nut-heat check's fin, insulated at that end (a bearing nearer the nut, "
+            "or drawing heat off, grows it less)."
+        )
+    if s.screw_type == "ball":
+        why = "a ball nut rolls, and the heat model is a sliding nut's"
+    elif not (app.stroke_m or app.moves):
+        why = "without a stroke there is no duty to heat it"
+    else:
+        lacks = [words for attr, words in _HEAT_VALUES if getattr(s, attr) is None]
+        why = "the catalog does not give the " + (
+            " or the ".join(lacks) if lacks else "values its heat balance reads"
+        )
+        why += " for this screw"
+    return "; its own friction heat is not counted: " + why + "."
+
+
 class Accuracy(Check):
     name = "accuracy"
     label = "Positioning accuracy"
@@ -35,24 +68,39 @@ class Accuracy(Check):
         "leadscrew's lead accuracy times it; a ball screw's limit deviation e_p of its "
         "ISO 3408-3 tolerance class over it), "
         "plus the screw's thermal growth over the stroke (its material's expansion, the "
-        "screw taken at the ambient against the 20 °C reference; its own friction heat is "
-        "not counted), plus the largest backlash, plus repeatability, summed as a worst "
+        "screw taken at the ambient against the 20 °C reference), plus its growth from "
+        "the nut's friction heat (with a stroke, a sliding nut: the nut-heat check's "
+        "rise and its fin profile along the screw, integrated from the thrust bearing, "
+        "taken at the screw's end, to the nut's middle at the far end of the stroke; "
+        "not counted without a duty, on a ball nut or where the heat balance lacks a "
+        "value), plus the largest backlash, plus repeatability, summed as a worst "
         "case, against the tolerance. A term the catalog does not give for the screw (no "
         "lead accuracy, no backlash) is left out and the result says so: the known terms "
         "alone over the tolerance fail it."
     )
     quantity = "length"
-    formula = "e = e_lead + alpha * stroke * abs(T_ambient - T_ref) + b_max + r; e_allowed = tol"
+    formula = (
+        "e = e_lead + alpha * stroke * abs(T_ambient - T_ref) + dL_heat + b_max + r; "
+        "e_allowed = tol"
+    )
     source = (
         "seed catalog, Screw Accuracy; ISO 3408-3 and HIWIN BS-08-2-EN-1704-K sec. 3.5.3 "
         "(a ball screw's e_p by useful travel); thermal growth dL = alpha L dT (ASM "
         "Handbook expansion); THK Ball Screw, Point of Selection: Studying the Positioning "
         "Accuracy (thermal displacement a cause of error beside the lead accuracy and the "
-        "clearance)"
+        "clearance, dL = alpha times the integral of the screw's rise); Incropera sec. 3.6, "
+        "Table 3.4 case B (the fin's temperature profile)"
     )
     # a ball screw's lead accuracy is its class's v300p, with its maker's e_p table
     # (``travel_deviation``) where it is a positioning class
-    sources = ("lead_accuracy", "backlash", "repeatability", "screw_expansion")
+    sources = (
+        "lead_accuracy",
+        "backlash",
+        "repeatability",
+        "screw_expansion",
+        "thermal_conductivity",
+        "friction_dynamic",
+    )
 
     def applies(self, app: Application) -> bool:
         return app.positioning_tolerance_m is not None
@@ -65,6 +113,7 @@ class Accuracy(Check):
             q.accuracy.thermal_growth_m,
             np.nan_to_num(t.backlash_max_m),
             t.repeatability_m,
+            np.nan_to_num(q.accuracy.heat_growth_m),
         )
         return Measure(everywhere(t), np.asarray(error), same(t, app.positioning_tolerance_m))
 
@@ -77,6 +126,7 @@ class Accuracy(Check):
             "alpha": t.screw_expansion_per_k,
             "T_ambient": app.ambient_c,
             "T_ref": REFERENCE_TEMPERATURE_C,
+            "dL_heat": np.nan_to_num(q.accuracy.heat_growth_m),
             "b_max": np.nan_to_num(t.backlash_max_m),
             "r": t.repeatability_m,
             "tol": app.positioning_tolerance_m,
@@ -94,10 +144,12 @@ class Accuracy(Check):
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         repeatability = s.repeatability_m or 0.0
         lead, backlash = r.accuracy.lead_error_m, s.backlash_max_m
-        has_lead, has_play = _known(lead), backlash is not None
+        heated = r.accuracy.heat_growth_m
+        has_lead, has_play, has_heat = _known(lead), backlash is not None, _known(heated)
         terms = (
             ("lead error {lead}", has_lead),
             ("thermal growth {growth}", True),
+            ("friction-heat growth {heat}", has_heat),
             ("backlash {b}", has_play),
             ("repeatability {r}", True),
         )
@@ -105,7 +157,11 @@ class Accuracy(Check):
         gaps = (("lead error", has_lead), ("backlash", has_play))
         missing = " and ".join(words for words, given in gaps if not given)
         error = accuracy.worst_case_error(
-            lead if has_lead else 0.0, r.accuracy.thermal_growth_m, backlash or 0.0, repeatability
+            lead if has_lead else 0.0,
+            r.accuracy.thermal_growth_m,
+            backlash or 0.0,
+            repeatability,
+            heated if has_heat else 0.0,
         )
         verb = "is within" if passed else "exceeds"
         head = "Worst-case error {e} (" + known + ") " + verb + " the {tol} tolerance"
@@ -123,11 +179,13 @@ class Accuracy(Check):
             )
         return Phrase(
             head + ". The growth takes the screw at the {ambient} ambient, {dt} from the {ref} "
-            "reference; its own friction heat is not counted.",
+            "reference" + _heat_words(app, s, has_heat),
             {
                 "e": Amount(error, "length"),
                 "lead": Amount(lead if has_lead else 0.0, "length"),
                 "growth": Amount(abs(r.accuracy.thermal_growth_m), "length"),
+                "heat": Amount(heated if has_heat else 0.0, "length"),
+                "rise": Amount(r.heat.nut_temperature_rise_k, "temperature_rise"),
                 "b": Amount(backlash or 0.0, "length"),
                 "r": Amount(repeatability, "length"),
                 "tol": Amount(app.positioning_tolerance_m or 0.0, "length"),
@@ -143,9 +201,16 @@ class Accuracy(Check):
             if r.accuracy.thermal_growth_m
             else ""
         )
+        heated = r.accuracy.heat_growth_m
+        if _known(heated) and heated > 0.0:
+            thermal += (
+                " or run the nut cooler (its friction heat grows the screw {heat}: longer "
+                "dwells, a lower speed or a lower-friction nut)"
+            )
         values = {
             "ref": Amount(REFERENCE_TEMPERATURE_C, "temperature"),
             "growth": Amount(abs(r.accuracy.thermal_growth_m), "length"),
+            "heat": Amount(heated if _known(heated) else 0.0, "length"),
         }
         # a finer lead grade cannot help where the lead error is not counted at all
         grade = "a precision lead grade" if _known(r.accuracy.lead_error_m) else ""

@@ -108,25 +108,33 @@ def thermal_growth(expansion_per_k: float, length_m: float, delta_t_k: float) ->
 
 
 @formula(
-    "e = e_lead + |dL_thermal| + b_max + r, summed as a worst case",
+    "e = e_lead + |dL_thermal| + dL_heat + b_max + r, summed as a worst case",
     "THK Ball Screw, Point of Selection: Studying the Positioning Accuracy (lead accuracy, "
     "axial clearance and thermal displacement are each causes of error)",
 )
 def worst_case_error(
-    lead_error_m: float, thermal_growth_m: float, backlash_m: float, repeatability_m: float
+    lead_error_m: float,
+    thermal_growth_m: float,
+    backlash_m: float,
+    repeatability_m: float,
+    heat_growth_m: float = 0.0,
 ) -> float:
     """Worst-case positioning error over a stroke [m]: the cumulative lead error, the
-    screw's thermal growth over the stroke (either sign: a screw colder than the
-    reference shrinks), the largest backlash and the repeatability, summed as if each
-    were at its worst in the same direction.
+    screw's thermal growth over the stroke at the ambient (either sign: a screw colder
+    than the reference shrinks), its growth from its own friction heat (``heat_growth_m``,
+    ``heat.heated_growth``; 0: not counted), the largest backlash and the repeatability,
+    summed as if each were at its worst in the same direction.
 
     All arguments in metres. Source: THK [2] lists lead accuracy, axial clearance and
     thermal displacement as separate causes of positioning error; the sum is their
-    worst case (no cancellation assumed).
+    worst case (no cancellation assumed: a cold ambient's shrinking does not offset the
+    friction heat's growth).
 
     >>> round(worst_case_error(0.18e-3, 0.2076e-3, 0.0, 0.0013e-3) * 1e3, 4)
     0.3889
     >>> worst_case_error(0.18e-3, -0.2e-3, 0.0, 0.0) == worst_case_error(0.18e-3, 0.2e-3, 0.0, 0.0)
     True
+    >>> round(worst_case_error(0.0, -0.1e-3, 0.3e-3, 0.0, 0.35e-3) * 1e3, 4)
+    0.75
     """
-    return lead_error_m + abs(thermal_growth_m) + backlash_m + repeatability_m
+    return lead_error_m + abs(thermal_growth_m) + heat_growth_m + backlash_m + repeatability_m
