@@ -288,9 +288,7 @@ class CheckResult(NamedTuple):
     def input_limits(self) -> Mapping[str, float] | None:
         if self.passed:
             return None
-        at = self.slot
-        limits = read_inputs(at.app, self.check.input_limits(at.app, at.screw, at.row))
-        return limits or None
+        return dict(self.slot.limits_of(self.check)) or None
 
 
 class Slot:
@@ -299,13 +297,14 @@ class Slot:
     slot holds no reference to the record or its batch, so the batch keeps the slots
     and a record holds no reference cycle: it is freed as soon as it is dropped.)"""
 
-    __slots__ = ("_fixes", "_row", "app", "position", "screening", "screw")
+    __slots__ = ("_fixes", "_limits", "_row", "app", "position", "screening", "screw")
 
     def __init__(self, app: Application, sc: Screening, position: int) -> None:
         self.app, self.screening, self.position = app, sc, position
         self.screw: ScrewSpec = screw_as_run(sc.table, position)
         self._row: Quantities[float] | None = None
         self._fixes: dict[str, Phrase | None] = {}
+        self._limits: dict[str, dict[str, float]] = {}
 
     @property
     def row(self) -> Quantities[float]:
@@ -313,6 +312,14 @@ class Slot:
         if self._row is None:
             self._row = self.screening.quantities.at(self.position)
         return self._row
+
+    def limits_of(self, check: Check) -> dict[str, float]:
+        """The inputs of ``check``'s ``input_limits`` the application reads
+        (``read_inputs``), each worked out once (some search the model again)."""
+        if check.name not in self._limits:
+            limits = check.input_limits(self.app, self.screw, self.row)
+            self._limits[check.name] = read_inputs(self.app, limits)
+        return self._limits[check.name]
 
     def fix_of(self, check: Check) -> Phrase | None:
         """What would make ``check`` pass, within what the catalog offers, and where
@@ -324,7 +331,7 @@ class Slot:
             # only the cycles a day refuse a move: without them no check's limits are read
             note = None
             if fix is not None and app.cycles_per_day is not None:
-                note = refused(app, read_inputs(app, check.input_limits(app, screw, row)))
+                note = refused(app, self.limits_of(check))
             if fix is not None and note is not None:  # the fix's own fields kept as named
                 fix = Phrase(fix.template + " {refused}", {**fix.values, "refused": note})
             lead = None if fix is None else fix.values.get("lead")

@@ -12,7 +12,7 @@ input, the nearest candidate's inputs together, two inputs each moved part of th
 """
 
 import math
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import replace
 from itertools import combinations
 
@@ -40,6 +40,16 @@ MOTOR_BOUND = frozenset(c.name for c in REGISTRY if c.judges_motor)
 
 #: A change of the application: core input name -> SI value (or the end fixity).
 Inputs = Mapping[str, float | str]
+#: Each input a remedy may change, in the words and the order ``impossible`` names them.
+INPUT_NAMES = {
+    "load_n": "load",
+    "speed_m_s": "speed",
+    "length_m": "length",
+    "bearing_to_nut_m": "span from the thrust bearing to the nut",
+    "accel_m_s2": "acceleration",
+    "dwell_s": "dwell",
+    "end_fixity": "mounting",
+}
 
 
 def past_limit(current: float, limit: float) -> float:
@@ -146,22 +156,46 @@ def remedies(
     targets: Sequence[Mapping[str, float]],
     failed: set[str],
     ranges: Mapping[str, tuple[float, float]],
-) -> tuple[Remedy, ...]:
+) -> tuple[tuple[Remedy, ...], frozenset[str]]:
     """Verified remedies (at most OFFERED, each a distinct set of inputs), from the
-    input values that clear the nearest candidates' failed checks (``targets``)."""
+    input values that clear the nearest candidates' failed checks (``targets``), and the
+    inputs of every change screened (whether or not it let a screw pass)."""
     found: list[Remedy] = []
     seen: set[frozenset[str]] = set()
+    screened: set[str] = set()
     for tried, change in enumerate(proposals(app, targets, failed)):
         if tried == TRIED or len(found) == OFFERED:
             break
         keys = frozenset(change)
         if keys in seen or not within(change, ranges):
             continue
+        screened |= keys
         remedy = verify(app, sc, change)
         if remedy is not None:
             found.append(remedy)
             seen.add(keys)
-    return tuple(found)
+    return tuple(found), frozenset(screened)
+
+
+#: Said where no change was screened.
+NOTHING_TRIED = "no change was tried: the checks that fail name no input that would clear them"
+
+
+def tried_words(tried: Collection[str]) -> str:
+    """What no change tried achieved, naming the inputs changed (``INPUT_NAMES``; none:
+    that the failing checks name no input to change).
+
+    >>> tried_words({"end_fixity", "accel_m_s2"})
+    'no change of acceleration or mounting tried lets one pass with a 5 % margin'
+    >>> tried_words(()) == NOTHING_TRIED
+    True
+    """
+    if not tried:
+        return NOTHING_TRIED
+    names = [word for key, word in INPUT_NAMES.items() if key in tried]
+    names += sorted(key for key in tried if key not in INPUT_NAMES)
+    listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
+    return f"no change of {listed} tried lets one pass with a {MARGIN * 100:.0f} % margin"
 
 
 def impossible(
@@ -171,21 +205,20 @@ def impossible(
     excludes_all: bool,
     nearest_fails: Sequence[str],
     kind: str,
+    tried: Collection[str] = (),
 ) -> Phrase:
     """Why no change tried lets a screw pass. When the check that excludes the most
     excludes every screw, no screw of the ``kind`` screened ("leadscrew", "ball screw" or
     "screw" for both) can do it: say so, of the screws the application asks for
     (``asked_for``: a lead, families, a nut or a coating leave others unscreened), and what
     kind of drive could; otherwise name what the nearest screws fail on (``nearest_fails``,
-    check labels), whose fixes name the change that would clear them."""
-    tried = (
-        f"no change of load, speed, length, acceleration or mounting tried lets one pass "
-        f"with a {MARGIN * 100:.0f} % margin"
-    )
+    check labels), whose fixes name the change that would clear them. ``tried``: the
+    inputs of the changes screened (``remedies``), the only ones the sentence names."""
+    said = tried_words(tried)
     if not excludes_all:
         fails = ", ".join(nearest_fails) or label
         return Phrase(
-            f"{tried[0].upper()}{tried[1:]}. The nearest screws fail on {fails}: "
+            f"{said[0].upper()}{said[1:]}. The nearest screws fail on {fails}: "
             "their fixes name what would clear it (such as a larger motor, a brake or "
             "another nut)."
         )
@@ -197,10 +230,10 @@ def impossible(
     if not scope:
         return Phrase(
             f"No {kind} in the catalog can do this{drive} within the accepted inputs: "
-            f"{tried}. {why[0].upper()}{why[1:]}."
+            f"{said}. {why[0].upper()}{why[1:]}."
         )
     return Phrase(
-        f"No {kind} {scope} can do this{drive} within the accepted inputs: {tried}. "
+        f"No {kind} {scope} can do this{drive} within the accepted inputs: {said}. "
         f"{why[0].upper()}{why[1:]}. Only the screws asked for were screened: leave the "
         "choice open to screen the rest of the catalog.",
         values,

@@ -463,9 +463,10 @@ def _remedies(
     together = [*changes, *(input_change(c) for c in slower)]
     targets += [dict(change) for change in together if len(change) > 1]
     failed = {k.name for c in tried for k in c.failed_checks}
-    found = remedies(app, sc, targets, failed, ranges)
+    found, screened = remedies(app, sc, targets, failed, ranges)
     if found:
         return found, None
     worst, label, excludes_all = most
     fails = list(dict.fromkeys(k.label for c in near for k in c.failed_checks))
-    return found, impossible(app, worst, label, excludes_all, fails, kinds.screened(sc))
+    kind = kinds.screened(sc)
+    return found, impossible(app, worst, label, excludes_all, fails, kind, screened)

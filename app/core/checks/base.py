@@ -13,7 +13,7 @@ from typing import ClassVar, Literal
 
 import numpy as np
 
-from app.core import load_caps, motion
+from app.core import input_search, load_caps, motion
 from app.core.formulas import column_rules
 from app.core.model import FIX_MARGIN, FIXITY_ORDER, Application, EndFixity, ScrewSpec
 from app.core.phrase import Amount, Phrase, Quantity
@@ -44,8 +44,10 @@ __all__ = [
     "most",
     "run_at_most",
     "same",
+    "searched_limits",
     "sentence",
     "stiffer_fixity",
+    "value_alone",
 ]
 
 #: A limit rejects a candidate; advice is reported beside it.
@@ -290,3 +292,58 @@ def stiffer_fixity(app: Application, passes: Callable[[EndFixity], bool]) -> End
     with its fix margin), else None (an intermediate support is needed)."""
     stiffer = FIXITY_ORDER[FIXITY_ORDER.index(app.end_fixity) + 1 :]
     return next((f for f in stiffer if passes(f)), None)
+
+
+def searched_limits(
+    check: Check,
+    app: Application,
+    s: ScrewSpec,
+    lower: tuple[str, ...],
+    raise_: tuple[str, ...] = (),
+    share: float = 1.0,
+    convex: bool = False,
+) -> dict[str, float]:
+    """The value of each input of ``lower`` (below its own) and of ``raise_`` (above
+    it) at which ``check`` of ``s`` meets ``share`` of its limit, found by working the
+    check again (``input_search``: its own utilisation, demand / capacity, at each
+    trial); an input no value of which meets it is left out. ``share`` 1 is the limit
+    (``input_limits``), 1 / (1 + FIX_MARGIN) a fix's figure; ``convex``: the utilisation
+    is convex in the inputs of ``lower`` (``input_search.largest_below``)."""
+
+    def used(a: Application, t: CandidateTable, q: Quantities[Array]) -> float:
+        u = check.measure(a, t, q).utilization()
+        return math.nan if u is None else float(u[0])
+
+    found = {k: input_search.largest_below(app, s, k, used, share, convex) for k in lower}
+    found |= {k: input_search.smallest_above(app, s, k, used, share) for k in raise_}
+    return {k: v for k, v in found.items() if v is not None}
+
+
+#: The words and the quantity of each input a fix may name by its value alone.
+ALONE_WORDS: dict[str, tuple[str, Quantity]] = {
+    "dwell_s": ("a dwell", "time"),
+    "accel_m_s2": ("an acceleration", "accel"),
+    "load_n": ("a load", "force"),
+}
+
+
+def value_alone(app: Application, figures: Mapping[str, float]) -> tuple[str, dict[str, Amount]]:
+    """The sentence naming each input of ``figures`` (a fix's values, its margin kept
+    already: ``searched_limits``) that alone clears a check, "of at most" one below its
+    value in ``app``, "of at least" one above, with its values rounded away from the
+    limit; empty for none.
+
+    >>> app = Application(load_n=10.0, speed_m_s=0.1, length_m=0.5)
+    >>> value_alone(app, {"load_n": 5.0})[0]
+    ' Alone, a load of at most {load_n} would do.'
+    """
+    named = [(k, v) for k, v in figures.items() if k in ALONE_WORDS]
+    if not named:
+        return "", {}
+    parts, values = [], {}
+    for key, value in named:
+        word, quantity = ALONE_WORDS[key]
+        lower = value < float(getattr(app, key))
+        parts.append(f"{word} of at {'most' if lower else 'least'} {{{key}}}")
+        values[key] = Amount(value, quantity, "down" if lower else "up")
+    return " Alone, " + " or ".join(parts) + " would do.", values

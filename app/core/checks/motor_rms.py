@@ -19,8 +19,11 @@ from app.core.checks.base import (
     least,
     lighter,
     same,
+    searched_limits,
+    value_alone,
 )
 from app.core.dry_run import as_run
+from app.core.model import FIX_MARGIN
 from app.core.phrase import Amount, Phrase
 from app.core.quantities import operating_point
 from app.core.segments import continuous_rating
@@ -90,13 +93,36 @@ class MotorRms(Check):
         options = ["a longer dwell"] if dwell_helps(app, r) else []
         lower = (["acceleration"] if acceleration_helps(app, s) else []) + ([less] if less else [])
         options += ["lower " + " or ".join(lower)] if lower else []
+        alone, values = value_alone(app, self.limits(app, s, r, 1.0 / (1.0 + FIX_MARGIN)))
         return Phrase(
             "A motor rated for at least {need} continuous"
             + "".join((", or " if i == 0 else ", ") + o for i, o in enumerate(options))
             + "."
+            + alone
             + MARGIN_NOTE,
-            {"need": least(r.motor.motor_rms_needed_nm, "torque")},
+            {"need": least(r.motor.motor_rms_needed_nm, "torque"), **values},
         )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float] | None:
+        return self.limits(app, s, r) or None
+
+    def limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float], share: float = 1.0
+    ) -> dict[str, float]:
+        """The acceleration below the one given and the dwell above it at which the
+        cycle's RMS torque SF * T_rms_zone meets ``share`` of the rating T_c0 [m/s^2, s],
+        each found by working the cycle again (``searched_limits``: ``segments.rms``
+        sqrt(sum T_i^2 t_i / sum t_i) over ``segments.segments``, whose ramps lengthen as
+        the acceleration falls, so that the RMS need not fall with it: the nearest
+        acceleration that passes, stepping down from the one given); the dwell only where
+        it can help (``dwell_helps``). None in a cycle of moves, whose own accelerations
+        and dwells these inputs do not set."""
+        if app.moves:
+            return {}
+        longer = ("dwell_s",) if dwell_helps(app, r) else ()
+        return searched_limits(self, app, s, ("accel_m_s2",), longer, share)
 
 
 def dwell_helps(app: Application, r: Quantities[float]) -> bool:

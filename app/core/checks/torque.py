@@ -18,7 +18,10 @@ from app.core.checks.base import (
     least,
     lighter,
     same,
+    searched_limits,
+    value_alone,
 )
+from app.core.model import FIX_MARGIN
 from app.core.phrase import Amount, Phrase
 
 
@@ -69,10 +72,28 @@ class DriveTorque(Check):
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         less = lighter(app)
+        alone, values = value_alone(app, self.limits(app, s, 1.0 / (1.0 + FIX_MARGIN)))
         return Phrase(
             "A drive of at least {req}, or a shorter lead, lower "
             + (less + " or " if less else "")
             + "acceleration."
+            + alone
             + MARGIN_NOTE,
-            {"req": least(r.torque.required_nm, "torque")},
+            {"req": least(r.torque.required_nm, "torque"), **values},
         )
+
+    def input_limits(
+        self, app: Application, s: ScrewSpec, r: Quantities[float]
+    ) -> Mapping[str, float] | None:
+        return self.limits(app, s) or None
+
+    def limits(self, app: Application, s: ScrewSpec, share: float = 1.0) -> dict[str, float]:
+        """The largest acceleration and the largest load at which the required torque
+        SF * max(T_move, T_breakaway) meets ``share`` of T_drive [m/s^2, N], each found by
+        working the torque again (``searched_limits``: the thread, drag and inertia
+        torques of ``drive.torques`` and ``segments.moving_torques``, affine in each but
+        for the thread's change of direction); none in a cycle of moves, whose own
+        accelerations and loads these inputs do not set."""
+        if app.moves:
+            return {}
+        return searched_limits(self, app, s, ("accel_m_s2", "load_n"), share=share, convex=True)
