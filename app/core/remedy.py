@@ -18,7 +18,7 @@ from itertools import combinations
 
 import numpy as np
 
-from app.core.changes import within
+from app.core.changes import Words, input_words, within
 from app.core.checks import BY_NAME, REGISTRY
 from app.core.input_rules import inputs_hold
 from app.core.model import FIXITY_ORDER, PASS_UTILIZATION, Application, Remedy
@@ -40,16 +40,8 @@ MOTOR_BOUND = frozenset(c.name for c in REGISTRY if c.judges_motor)
 
 #: A change of the application: core input name -> SI value (or the end fixity).
 Inputs = Mapping[str, float | str]
-#: Each input a remedy may change, in the words and the order ``impossible`` names them.
-INPUT_NAMES = {
-    "load_n": "load",
-    "speed_m_s": "speed",
-    "length_m": "length",
-    "bearing_to_nut_m": "span from the thrust bearing to the nut",
-    "accel_m_s2": "acceleration",
-    "dwell_s": "dwell",
-    "end_fixity": "mounting",
-}
+#: The end fixity, the one input a remedy changes that is a word, as a change of it is named.
+MOUNTING = "mounting"
 
 
 def past_limit(current: float, limit: float) -> float:
@@ -181,19 +173,21 @@ def remedies(
 NOTHING_TRIED = "no change was tried: the checks that fail name no input that would clear them"
 
 
-def tried_words(tried: Collection[str]) -> str:
-    """What no change tried achieved, naming the inputs changed (``INPUT_NAMES``; none:
-    that the failing checks name no input to change).
+def tried_words(tried: Collection[str], words: Words | None = None) -> str:
+    """What no change tried achieved, naming the inputs changed (each by ``words``, in its
+    order, the end fixity as ``MOUNTING``; none: that the failing checks name no input to
+    change).
 
-    >>> tried_words({"end_fixity", "accel_m_s2"})
+    >>> tried_words({"end_fixity", "accel_m_s2"}, {"accel_m_s2": ("acceleration", "accel")})
     'no change of acceleration or mounting tried lets one pass with a 5 % margin'
     >>> tried_words(()) == NOTHING_TRIED
     True
     """
     if not tried:
         return NOTHING_TRIED
-    names = [word for key, word in INPUT_NAMES.items() if key in tried]
-    names += sorted(key for key in tried if key not in INPUT_NAMES)
+    known = words or {}
+    order = [k for k in known if k in tried] + sorted(k for k in tried if k not in known)
+    names = [MOUNTING if k == "end_fixity" else input_words(k, known)[0] for k in order]
     listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
     return f"no change of {listed} tried lets one pass with a {MARGIN * 100:.0f} % margin"
 
@@ -206,6 +200,7 @@ def impossible(
     nearest_fails: Sequence[str],
     kind: str,
     tried: Collection[str] = (),
+    words: Words | None = None,
 ) -> Phrase:
     """Why no change tried lets a screw pass. When the check that excludes the most
     excludes every screw, no screw of the ``kind`` screened ("leadscrew", "ball screw" or
@@ -213,8 +208,9 @@ def impossible(
     (``asked_for``: a lead, families, a nut or a coating leave others unscreened), and what
     kind of drive could; otherwise name what the nearest screws fail on (``nearest_fails``,
     check labels), whose fixes name the change that would clear them. ``tried``: the
-    inputs of the changes screened (``remedies``), the only ones the sentence names."""
-    said = tried_words(tried)
+    inputs of the changes screened (``remedies``), the only ones the sentence names, by
+    ``words``."""
+    said = tried_words(tried, words)
     if not excludes_all:
         fails = ", ".join(nearest_fails) or label
         return Phrase(
@@ -223,8 +219,8 @@ def impossible(
             "another nut)."
         )
     check = BY_NAME.get(most_excluding or "")
-    words = check and ((kind == "ball screw" and check.why_none_ball) or check.why_none)
-    why = words or f"{label} excludes every screw"
+    none = check and ((kind == "ball screw" and check.why_none_ball) or check.why_none)
+    why = none or f"{label} excludes every screw"
     drive = " with this motor" if most_excluding in MOTOR_BOUND else ""
     scope, values = asked_for(app)
     if not scope:

@@ -362,7 +362,7 @@ def summarize(
         change = {}
     most = (worst, label, worst_count == evaluated)
     found, why, pool, known = _verified(
-        app, screening, (nearest, near_changes), fixable, most, ranges
+        app, screening, (nearest, near_changes), fixable, most, ranges, words
     )
     offer = _offered_change(app, found, why, change, words)
     return Summary(
@@ -404,17 +404,18 @@ def _verified(
     fixable: Sequence[Candidate],
     most: tuple[str | None, str, bool],
     ranges: Ranges,
+    words: Words | None = None,
 ) -> tuple[tuple[Remedy, ...], Phrase | None, Sequence[Candidate], Sequence[Mapping[str, float]]]:
     """The remedies (``_remedies``) from the nearest candidates and their input changes
     (``near``), else, where none is verified and the nearest fail on the screw itself,
     from those of ``fixable``; with the candidates and changes the feasible changes are
     read from."""
     nearest, changes = near
-    found, why = _remedies(app, sc, nearest, changes, most, ranges)
+    found, why = _remedies(app, sc, nearest, changes, most, ranges, words)
     if found or not fixable:
         return found, why, nearest, changes
     fixes = [input_change(c) for c in fixable]
-    behind = _remedies(app, sc, fixable, fixes, most, ranges)[0]
+    behind = _remedies(app, sc, fixable, fixes, most, ranges, words)[0]
     if not behind:
         return found, why, nearest, changes
     return behind, None, fixable, fixes
@@ -447,6 +448,7 @@ def _remedies(
     changes: Sequence[Mapping[str, float]],
     most: tuple[str | None, str, bool],
     ranges: Ranges,
+    words: Words | None = None,
 ) -> tuple[tuple[Remedy, ...], Phrase | None]:
     """The verified remedies from the nearest candidates' input changes (``changes``: the
     first ``REMEDY_FROM`` candidates' ``input_change``) and those of the screws a slower
@@ -469,4 +471,4 @@ def _remedies(
     worst, label, excludes_all = most
     fails = list(dict.fromkeys(k.label for c in near for k in c.failed_checks))
     kind = kinds.screened(sc)
-    return found, impossible(app, worst, label, excludes_all, fails, kind, screened)
+    return found, impossible(app, worst, label, excludes_all, fails, kind, screened, words)

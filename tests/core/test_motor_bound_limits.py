@@ -14,6 +14,7 @@ from app.core.evaluate import evaluate
 from app.core.model import Application
 from app.core.phrase import Amount
 from app.core.remedy import NOTHING_TRIED, impossible, tried_words
+from app.report.service import INPUT_WORDS
 
 TORQUE = Application(
     load_n=200.0, moving_mass_kg=30.0, speed_m_s=0.15, length_m=0.7, stroke_m=0.5,
@@ -62,10 +63,11 @@ def test_the_fix_names_each_value_with_its_margin(
 
 
 def test_the_no_pass_sentence_names_only_the_inputs_tried() -> None:
-    assert tried_words({"accel_m_s2"}) == (
+    """Each input by the field table's label, in its order (the words the edge passes)."""
+    assert tried_words({"accel_m_s2"}, INPUT_WORDS) == (
         "no change of acceleration tried lets one pass with a 5 % margin"
     )
-    said = tried_words({"dwell_s", "accel_m_s2", "load_n"})
-    assert "load, acceleration or dwell" in said and "speed" not in said
+    said = tried_words({"dwell_s", "accel_m_s2", "load_n", "end_fixity"}, INPUT_WORDS)
+    assert "axial load, acceleration, dwell or mounting" in said and "speed" not in said
     text = impossible(TORQUE, "temperature", "Temperature", True, (), "screw").template
     assert NOTHING_TRIED in text and "speed" not in text
