@@ -154,11 +154,14 @@ def motor_point(
     fits = (nan,) * 4
     parts: list[Segment[Array]] = []
     if p is None:
-        at_top = segments.at_top_speed(t, moving, rpm)
-        index, worst_nm, worst_rpm, starting, at_rest = worst_point(app, t, at_top, torques)
-        peak, rms = nan, nan
-        referred = nan
+        peak, rms, referred = nan, nan, nan
+        # without a curve the worst point is the largest torque: the peak of the moving
+        # segments and the start (``torques``), the same rows ``worst_point`` reads
+        index, worst_nm = torques["peak_torque_segment"], torques["peak_torque_nm"]
+        worst_rpm = np.where(index < 0, 0.0, rpm)
         if app.motor_curve:
+            at_top = segments.at_top_speed(t, moving, rpm)
+            index, worst_nm, worst_rpm, starting, at_rest = worst_point(app, t, at_top, torques)
             fit_speed = slower_fit(app, starting, at_rest, c.reached_m_s)
             fix_speed = slower_fit(app, starting, at_rest, c.reached_m_s, 1.0 + FIX_MARGIN)
             fits = (nan, fit_speed, nan, fix_speed)
