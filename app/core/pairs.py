@@ -35,7 +35,7 @@ PairRank = Literal["motor_margin", "motor_size", "torque"]
 class Pair:
     """One passing screw + motor pair: the share of the motor it uses (0-1), the peak
     drive torque [N m] with the motor's rotor (the results table's, ``shown_torque``:
-    under a move the largest of any segment and of starting from rest), the screw's top
+    the largest of any moving segment and of starting from rest), the screw's top
     speed [rpm] and the motor's standstill torque [N m] (its size)."""
 
     screw: ScrewSpec

@@ -67,11 +67,11 @@ def motor_limit(s: Screening) -> NDArray[np.intp]:
 
 
 def shown_torque(s: Screening) -> np.ndarray:
-    """The torque the results show for each candidate: under a move (a stroke given) the
-    peak motor torque of either move or of starting from rest, rotor included; otherwise
-    the drive torque at the top speed while accelerating."""
-    q = s.quantities
-    return np.where(np.isnan(q.motor.motor_rms_nm), q.torque.total_nm, q.torque.peak_torque_nm)
+    """The torque the results show for each candidate: the peak motor torque of either
+    move's segments (braking included; without a stroke each at the top speed) or of
+    starting from rest, rotor included: the torque the drive-torque check judges."""
+    peak: np.ndarray = s.quantities.torque.peak_torque_nm
+    return peak
 
 
 def shown_rms(s: Screening) -> np.ndarray:
@@ -103,7 +103,7 @@ def shown_life_min(app: Application, s: Screening, pos: np.ndarray) -> np.ndarra
 def _rank_order(app: Application, s: Screening) -> np.ndarray:
     """Positions of passing candidates (in ``s``) in rank order, stable.
 
-    torque: lowest torque shown (``shown_torque``: the peak motor torque under a move);
+    torque: lowest torque shown (``shown_torque``: the peak motor torque);
     rms: lowest RMS motor torque (``shown_rms``); margin: lowest worst utilisation; life:
     longest life at the low end of the band shown (``shown_life_min``: rated, wear or L10;
     neither last); size: smallest outer diameter; motor_margin: the

@@ -22,8 +22,8 @@ from app.core.table import Array
 @dataclass(frozen=True, slots=True)
 class LeadPoint:
     """One lead of a size and nut for an application: the drive torque the results show
-    [N m] (``selection.shown_torque``: with a move, the peak of its segments and of the
-    break-away; without, the torque while accelerating), the screw speed as a share of
+    [N m] (``selection.shown_torque``: the peak of the moving segments and of the
+    break-away), the screw speed as a share of
     the allowed speed, the PV as a share of its limit (None: no PV limit) and an ISO
     nut's flank pressure as a share of the pressure its material allows at the sliding
     speed (None: no flank data)."""

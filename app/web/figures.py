@@ -134,9 +134,9 @@ def torque_figure(
 ) -> dict[str, Any]:
     """Stacked bars of the motor torque while accelerating per candidate: inertia + drag
     + load (``torque.total_nm``, before the torque safety factor), and a diamond at the
-    peak torque the torque check judges (``torque.peak_motor_nm``: under a move the peak
-    of its segments or of the start from rest; without, the break-away where that is
-    larger), which the bars may sit under.
+    peak torque the torque check judges (``torque.peak_motor_nm``: the peak of the moving
+    segments, braking included, or of the start from rest), which the bars may sit
+    under.
 
     A dashed line marks ``line_nm`` when the user gave a drive's maximum torque: that
     maximum over the torque safety factor, the most the peak, before that factor, may

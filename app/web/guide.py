@@ -30,10 +30,10 @@ COLUMNS = tuple(r for r in REPORTED if r.column)
 PROVENANCE = tuple(PROVENANCE_MEANINGS.items())
 
 RANKING = {
-    "torque": "lowest torque first, the torque the table shows: under a move (a stroke "
-    "given) the peak motor torque of either move or of starting from rest, rotor "
-    "included; otherwise the drive torque while accelerating. Equal torques: the larger "
-    "margin first.",
+    "torque": "lowest torque first, the peak torque the table shows: the largest motor "
+    "torque of any moving segment of either move (without a stroke, each at the top "
+    "speed) or of starting from rest, rotor included. Equal torques: the larger margin "
+    "first.",
     "rms": "lowest RMS motor torque over the cycle first (the motor's continuous duty); "
     "without a move, as the lowest torque. Equal torques: the lower peak torque first.",
     "margin": "the screw furthest from every limit first (lowest worst utilization); "

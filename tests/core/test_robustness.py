@@ -54,7 +54,12 @@ friction, 0.30 and 0.20): on the vertical axis the Tr16x4, Tr18x4 and Tr22x5 PTF
 Tr20x8(P4) and Tr24x10(P5) acetal nuts no longer hold with the power off by their thread,
 and larger, flatter leads (Tr36x6 to Tr44x7) take their places, each hinging on its static
 friction; where a stroke ranks by the peak torque ("motion-motor", "life-advice-reject")
-the PTFE nuts' start from rest costs less and they rank ahead. Every path
+the PTFE nuts' start from rest costs less and they rank ahead. "nut-bronze" and
+"heavy-any-lead" were recorded again when the torque shown and ranked without a stroke
+became the one the drive-torque check judges, the peak of the moving segments and the
+start from rest (it was the accelerating torque): the start at static friction costs
+Tr12x3 more than Tr10x4(P2), which now ranks first, and in "heavy-any-lead" the Tr12x6(P3)
+bronze nuts take the last two places from the Tr16x4 ones. Every path
 must still give them: select, a catalog screw evaluated alone, and a screw outside the
 catalog with the same values (its variant rows built on the fly).
 """

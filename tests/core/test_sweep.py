@@ -13,6 +13,8 @@ from app.core.model import Application
 from app.core.sweep import lead_sweep
 
 APP = Application(load_n=100.0, speed_m_s=0.05, length_m=0.5, lead_m=0.01)
+#: the torque the results show (and the drive-torque check judges) before the safety factor
+SF = APP.torque_safety_factor
 B8000 = ("B8000", "polyacetal", False, False)
 
 
@@ -26,7 +28,8 @@ def test_every_lead_of_the_size_in_order(catalog: Catalog) -> None:
 
 
 def test_each_point_equals_the_evaluation_of_its_screw(catalog: Catalog) -> None:
-    """Drive torque, speed share (n / n_allowed) and PV share (the PV check's
+    """Drive torque (the peak of the moving segments and the start, which the check judges
+    times the safety factor), speed share (n / n_allowed) and PV share (the PV check's
     utilisation) of every lead equal ``evaluate`` of that screw."""
     screws = [s for s in catalog.series["B8000"].screws if not s.coated]
     by_lead = {s.lead_m: s for s in screws}
@@ -34,7 +37,7 @@ def test_each_point_equals_the_evaluation_of_its_screw(catalog: Catalog) -> None
     assert len(sweep) == len(screws)
     for point in sweep:
         ev = evaluate(APP, by_lead[point.lead_m])
-        assert point.torque_nm == pytest.approx(ev.torque.total_nm, rel=1e-12)
+        assert point.torque_nm == pytest.approx(ev.torque.required_nm / SF, rel=1e-12)
         allowed = ev.critical_speed.allowed_rpm
         assert point.speed_share == pytest.approx(ev.rpm / allowed, rel=1e-12)
         pv = next(c for c in ev.checks if c.name == "pv")
@@ -73,7 +76,7 @@ def test_a_trapezoidal_size_sweeps_its_own_nut_material(catalog: Catalog) -> Non
     assert [round(p.lead_m * 1e3, 6) for p in sweep] == [3.0, 6.0]
     for point, sid in zip(sweep, ("Tr12x3-bronze", "Tr12x6(P3)-bronze"), strict=True):
         ev = evaluate(APP, catalog.by_id[sid])
-        assert point.torque_nm == pytest.approx(ev.torque.total_nm, rel=1e-12)
+        assert point.torque_nm == pytest.approx(ev.torque.required_nm / SF, rel=1e-12)
 
 
 def test_with_a_move_each_point_is_the_torque_the_results_show(catalog: Catalog) -> None:

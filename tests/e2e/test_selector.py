@@ -102,7 +102,7 @@ def test_switching_units_converts_form_table_and_charts(
 ) -> None:
     open_results(page, live_server, LEAD_AXIS)
     before = ids(page)
-    torque_nm = float(page.inner_text("tbody.candidate .torque-total"))
+    torque_nm = float(page.inner_text("tbody.candidate .torque-peak"))
     page.focus("#f-force_unit")
     page.select_option("#f-force_unit", "lbf")
     page.wait_for_function("() => document.querySelector('#f-load').value === '22.48'")
@@ -113,7 +113,7 @@ def test_switching_units_converts_form_table_and_charts(
     page.wait_for_function(
         "() => document.querySelector('table.candidates thead').textContent.includes('oz in')"
     )
-    torque_oz_in = float(page.inner_text("tbody.candidate .torque-total"))
+    torque_oz_in = float(page.inner_text("tbody.candidate .torque-peak"))
     assert abs(torque_oz_in - torque_nm / OZ_IN) / torque_oz_in < 2e-3
     page.select_option("#f-length_unit", "in")
     page.wait_for_function("() => document.querySelector('#f-length').value === '19.69'")

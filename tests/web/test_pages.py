@@ -230,8 +230,8 @@ def test_table_values_follow_the_display_units(client: TestClient, lead: str) ->
     head = page.select_one("table.candidates thead").text
     assert "oz in" in head and "in" in head and "mm" not in head
     row = page.select_one("tbody.candidate")
-    torque = float(row.select_one(".torque-total").text)
-    assert math.isclose(torque, api["torque"]["total_nm"] / OZ_IN, rel_tol=1e-3)
+    torque = float(row.select_one(".torque-peak").text)
+    assert math.isclose(torque, api["torque"]["peak_motor_nm"] / OZ_IN, rel_tol=1e-3)
     assert math.isclose(float(row.select_one(".lead").text), 10 / INCH, rel_tol=1e-3)
     detail = soup(client.get("/detail", params={**params, "id": api["id"]}, headers=HX))
     detail_values = [dd.text for dd in detail.select("li.check[data-check=length] .check-value")]

@@ -45,15 +45,16 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "torque.peak_motor_nm",
         "Peak torque",
-        "Given a move: the largest motor torque of any moving segment (accelerating, "
-        "running, braking, either way) or of starting from rest, the rotor's inertia "
-        "included, before the torque safety factor; below it, the segment it occurs in "
-        "(and the torque while accelerating when that is another).",
+        "The largest motor torque of any moving segment (accelerating, running, braking, "
+        "either way; without a stroke each at the top speed) or of starting from rest, "
+        "the rotor's inertia included, before the torque safety factor: the torque the "
+        "drive-torque check judges; below it, the segment it occurs in (and the torque "
+        "while accelerating when that is another).",
         quantity="torque",
         better="lower",
         cell="peak",
         column=True,
-        shown="move",
+        shown="always",
         ranks=("torque",),
         csv=True,
         compare=True,
@@ -70,10 +71,7 @@ ROWS: tuple[Reported, ...] = (
         "Motor torque while accelerating: inertia + drag + load, before the torque safety factor.",
         quantity="torque",
         better="lower",
-        column=True,
-        shown="no_move",
         css="torque-total",
-        ranks=("torque", "rms"),
         csv=True,
         compare=True,
         formula=Formula(torque.total_torque),
