@@ -170,7 +170,10 @@ def remedies(
 
 
 #: Said where no change was screened.
-NOTHING_TRIED = "no change was tried: the checks that fail name no input that would clear them"
+NOTHING_TRIED = (
+    "no change of the inputs was tried: a check the nearest screws fail names no input that "
+    "would clear it"
+)
 
 
 def tried_words(tried: Collection[str], words: Words | None = None) -> str:
