@@ -37,6 +37,7 @@ from app.catalog.motors import Motor, UndrivableMotor, check_motor, undrivable_m
 from app.catalog.supports import SupportUnit, check_support, with_support
 from app.contract.cycle import MAX_MOVES, MoveIn, closing_error_mm, parse_moves_text, span_mm
 from app.contract.fields import BY_API, FIELDS
+from app.contract.figures import bound_sig
 from app.contract.input_types import api_type
 from app.core import duty, motion
 from app.core.formulas import life
@@ -272,10 +273,11 @@ class ApplicationInputs(BaseModel):
         if p is None or duty.cycles_fit_a_day(cycles, p):
             return self
         cycle = "its moves" if self.moves else "out and back"
+        # the bound written down, so that the figure named is one the rule accepts
+        most = bound_sig(duty.most_cycles_per_day(p) or 0.0, False, 6)  # p is a move
         message = (
-            f"must be at most {duty.most_cycles_per_day(p):.6g}: one cycle ({cycle}, "
-            f"with the dwells) takes {p.cycle_time_s:.6g} s, and a day has "
-            f"{life.SECONDS_PER_DAY:.0f} s"
+            f"must be at most {most}: one cycle ({cycle}, with the dwells) takes "
+            f"{p.cycle_time_s:.6g} s, and a day has {life.SECONDS_PER_DAY:.0f} s"
         )
         error = InitErrorDetails(
             type=PydanticCustomError("cycles_per_day", message),
