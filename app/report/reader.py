@@ -153,11 +153,13 @@ def _number(value: Any) -> Any:
 
 
 def _figures(value: float | None) -> float | None:
-    """A number in the compact form: to ``COMPACT_FIGURES`` significant figures; None
-    (left out) for None or a non-finite number."""
+    """A number in the compact form: to ``COMPACT_FIGURES`` significant figures, but whole
+    where that would make it exactly 1 (a utilisation a hair past its limit must not read
+    as at it, nor one a hair short); None (left out) for None or a non-finite number."""
     if value is None or not -INF < value < INF:  # NaN compares false
         return None
-    return float(FIGURES % value)
+    rounded = float(FIGURES % value)
+    return value if rounded == 1.0 and value != 1.0 else rounded
 
 
 def _scaled_figures(value: Any, scale: float) -> Any:
