@@ -267,8 +267,8 @@ def _nut(geometry: OwnGeometry, nut: NutMaterial | None) -> dict[str, object]:
     values: dict[str, object] = {**nut.limits, "nut_material": nut.name}
     values["oil_compatible"] = nut.oil_compatible
     values["lubricated_rating"] = nut.lubricated_rating
-    values["dry_friction_dynamic"] = nut.dry_friction_dynamic
-    values["dry_friction_static"] = nut.dry_friction_static
+    values["dry_friction_dynamic"] = _dry(nut.dry_friction_dynamic, geometry.friction_dynamic)
+    values["dry_friction_static"] = _dry(nut.dry_friction_static, geometry.friction_static)
     if nut.backlash_m is not None:
         values["backlash_min_m"], values["backlash_max_m"] = nut.backlash_m
     if nut.temperature_c is not None:
@@ -311,7 +311,7 @@ def own_screw(
         "density": material.density_kg_m3.provenance,
         "screw_expansion": material.expansion_per_k.provenance,
         **_conductivity_provenance(material),
-        **({} if nut is None else _nut_provenance(nut)),
+        **({} if nut is None else _nut_provenance(nut, geometry)),
         **thread_provenance,
         **({} if rated is None else {"dynamic_pressure": rated[1]}),
     }
@@ -405,8 +405,29 @@ def _conductivity(material: Material) -> float | None:
     return None if k is None else k.value
 
 
-def _nut_provenance(nut: NutMaterial) -> dict[str, Provenance]:
-    """The provenance of the values a nut material sets, under the catalog's keys."""
+def _dry(run_dry: float | None, given: float) -> float | None:
+    """The friction a nut the user describes rubs at run dry: its material's friction run
+    dry, but never below the friction given for it (a nut whose friction the user measured
+    higher keeps it); None where the material gives none."""
+    return None if run_dry is None else max(run_dry, given)
+
+
+#: The provenance of a friction run dry that is the one the user gave (``_dry``).
+GIVEN_RUN_DRY = Provenance(
+    "user", "given in the request; above the nut material's friction run dry, so kept run dry"
+)
+
+
+def _nut_provenance(nut: NutMaterial, geometry: OwnGeometry) -> dict[str, Provenance]:
+    """The provenance of the values a nut material sets, under the catalog's keys; a
+    friction run dry that is the one given, the user's (``_dry``)."""
     prov = {k: p for k, p in nut.provenance.items() if not k.startswith("friction")}
     prov["nut_material"] = Provenance("user", f"the catalog's {nut.key} nut ({nut.family})")
+    for key, given in (
+        ("dry_friction_dynamic", geometry.friction_dynamic),
+        ("dry_friction_static", geometry.friction_static),
+    ):
+        run_dry = getattr(nut, key)
+        if run_dry is not None and given > run_dry:
+            prov[key] = GIVEN_RUN_DRY
     return prov

@@ -95,3 +95,23 @@ def test_a_screw_of_ones_own_with_a_bronze_nut_runs_dry_as_the_catalog_s(
 
 def _approx(value: float) -> object:
     return pytest.approx(value, rel=1e-9)
+
+
+def test_a_screw_of_ones_own_run_dry_keeps_a_higher_friction_given(client: TestClient) -> None:
+    """A bronze nut given a measured 0.30 running and 0.40 static friction, run dry: the
+    bronze nut's friction run dry (0.19, 0.24) is lower, and replaced the one given, so a
+    0.40 N m drive passed a vertical 100 N lift whose start, at the friction given, needs
+    0.487 N m. Run dry it rubs at no less than the friction given, whose provenance stays
+    the user's; given the oiled 0.13 it still runs at the dry 0.19."""
+    screw = {
+        "outer_diameter_mm": 20, "root_diameter_mm": 15.5, "lead_mm": 4, "pitch_mm": 4,
+        "thread_half_angle_deg": 15, "friction_dynamic": 0.30, "friction_static": 0.40,
+        "nut_material": "bronze",
+    }  # fmt: skip
+    axis = {**AXIS, "load_n": 100, "orientation": "vertical", "max_torque_nm": 0.40}
+    r = client.post("/api/v1/evaluate", json={"application": axis, "screw": screw})
+    candidate = r.json()["candidate"]
+    assert candidate["torque"]["load_nm"] == _approx(_raise_torque(100.0, 0.30))
+    (torque,) = [c for c in candidate["checks"] if c["name"] == "torque"]
+    assert not torque["passed"]
+    assert candidate["provenance"]["friction_dynamic"]["kind"] == "user"
