@@ -200,7 +200,7 @@ def test_under_a_move_the_torque_rankings_order_the_column_they_mark(
     assert ranked.select_one(".rank-mark").get_text() == mark
     caption = page.select_one("table.candidates caption").get_text()
     assert caption.startswith(
-        "Ranked by lowest " + ("torque (the peak" if rank_by == "torque" else "RMS torque.")
+        "Ranked by lowest " + ("torque." if rank_by == "torque" else "RMS torque.")
     )
     order = [
         (row.select_one("span.mark.warned") is not None, float(row.select_one(cell).text))

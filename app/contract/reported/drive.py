@@ -45,11 +45,9 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "torque.peak_motor_nm",
         "Peak torque",
-        "The largest motor torque of any moving segment (accelerating, running, braking, "
-        "either way; without a stroke each at the top speed) or of starting from rest, "
-        "the rotor's inertia included, before the torque safety factor: the torque the "
-        "drive-torque check judges; below it, the segment it occurs in (and the torque "
-        "while accelerating when that is another).",
+        "The largest motor torque of the move, either way, braking included (without a "
+        "stroke at the top speed), or of the start from rest; rotor included, before the "
+        "safety factor. Below it, where it occurs.",
         quantity="torque",
         better="lower",
         cell="peak",
@@ -126,8 +124,7 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "screw_inertia_kg_m2",
         "Screw inertia",
-        "The screw's rotary inertia over its length: the catalog's inertia per length × "
-        "the screw length. The motor accelerates it with the moving mass and its rotor.",
+        "The screw's rotary inertia: the catalog's inertia per length × the screw length.",
         quantity="inertia",
         better="lower",
         column=True,

@@ -48,10 +48,9 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "holding_torque.brake_to_fit_nm",
         "Holds the load?",
-        "Whether the load alone can turn the screw with the motor off. “Self-locking” "
-        "holds it, at the friction a hold may count on (the self-locking friction "
-        "factor times the static friction); “back-drives”, or self-locking only at the "
-        "full static friction, needs a brake of at least the torque shown.",
+        "Whether the load alone turns the screw with the motor off: “self-locking” holds "
+        "at the static friction times the self-locking factor; otherwise a brake of at "
+        "least the torque shown is needed.",
         quantity="torque",
         better="lower",
         cell="holding",

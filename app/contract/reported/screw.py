@@ -9,9 +9,8 @@ NUT: tuple[Reported, ...] = (
     Reported(
         "id",
         "Screw",
-        "Catalog id of the screw and nut; the tags say whether the screw is TFE coated and "
-        "whether the nut takes up the play (anti-backlash), or that it is a ball screw "
-        "(preloaded or not).",
+        "Catalog id; the tags say whether the screw is TFE coated and the nut takes up the "
+        "play (anti-backlash), or that it is a ball screw (preloaded or not).",
         cell="screw",
         column=True,
         csv=True,
@@ -21,9 +20,8 @@ NUT: tuple[Reported, ...] = (
     Reported(
         "screw_type",
         "Type",
-        "The kind of screw: 'lead' (a sliding nut, rated by PV, flank pressure and wear) "
-        "or 'ball' (a rolling ball nut, rated by its L10 life, static load rating and DN "
-        "speed; it always back-drives).",
+        "'lead': a sliding nut (PV, flank pressure, wear); 'ball': a rolling ball nut "
+        "(L10 life, static load, DN speed; it always back-drives).",
         cell="text",
         column=True,
         csv=True,

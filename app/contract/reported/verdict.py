@@ -21,7 +21,9 @@ ROWS: tuple[Reported, ...] = (
     Reported(
         "governing_check",
         "Governing",
-        "The check closest to its limit for this screw.",
+        "The check closest to its limit for this screw; “robust”: it passes at both ends "
+        "of each assumed value's range; “limit assumed”: that limit rests on an assumed "
+        "value (the catalog's or a library motor's).",
         cell="governing",
         column=True,
         ranks=("margin",),
