@@ -17,8 +17,13 @@ from app.core.formulas import life
 from app.core.model import Application
 from app.core.phrase import Amount, Phrase
 
-#: The inputs a check's fix may name that set how long a cycle takes.
-MOVE_INPUTS = ("speed_m_s", "accel_m_s2")
+#: The inputs a check's fix may name that set how long a cycle takes, each with the
+#: words for a value of it that makes the cycle too long.
+MOVE_INPUTS = {
+    "speed_m_s": "a move that slow",
+    "accel_m_s2": "a move that slow",
+    "dwell_s": "a dwell that long",
+}
 #: The scalar inputs of the move that a cycle of the user's own moves replaces (each of
 #: its moves gives its own): a change of one moves nothing there.
 REPLACED_BY_MOVES = frozenset(
@@ -87,7 +92,8 @@ def lowers(app: Application, key: str, limit: float) -> bool:
 def refused(app: Application, limits: Mapping[str, float] | None) -> Phrase | None:
     """Why the inputs refuse a move the values of a check's fix name (its
     ``input_limits``, each ``FIX_MARGIN`` inside its limit, as the fix writes it): a
-    speed or an acceleration so low that the cycles a day no longer fit in a day; None
+    speed or an acceleration so low, or a dwell so long, that the cycles a day no longer
+    fit in a day; None
     where none does. The fix names what the screw needs; this says that the application
     cannot give it that way (the load, or another input the fix names, may still do).
     A length a fix names needs no such word: the checks that name one say how to keep
@@ -101,7 +107,7 @@ def refused(app: Application, limits: Mapping[str, float] | None) -> Phrase | No
         p = motion.move_profile(replace(app, **cast(dict[str, Any], {key: value})))
         if p is not None and not duty.cycles_fit_a_day(app.cycles_per_day, p):
             return Phrase(
-                "The inputs refuse a move that slow: a cycle would take {cycle}, and "
+                f"The inputs refuse {MOVE_INPUTS[key]}: a cycle would take {{cycle}}, and "
                 "{cycles} cycles a day leave {each} for each.",
                 {
                     "cycle": Amount(p.cycle_time_s, "time"),

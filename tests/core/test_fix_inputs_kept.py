@@ -179,3 +179,22 @@ def test_a_gentler_ramp_also_starts_the_move(catalog: Catalog) -> None:
     assert utilization(replace(app, accel_m_s2=accel), screw, "motor_curve") <= PROMISED, render(
         fix
     )
+
+
+def test_a_motor_rms_fix_says_when_the_cycles_refuse_its_dwell(catalog: Catalog) -> None:
+    """50 kg over 1000 mm at 200 mm/s on B14000-L60-TFE with a 0.05 N m continuous
+    rating: the RMS fix names a dwell of at least 173.8 s, which 2,000 cycles a day
+    (43.2 s each) cannot hold; the fix now says so, as a fix naming a slower move does."""
+    app = axis(
+        catalog,
+        load_n=20,
+        speed_mm_s=200,
+        length_mm=1500,
+        stroke_mm=1000,
+        moving_mass_kg=50,
+        motor_rms_torque_nm=0.05,
+        cycles_per_day=2000,
+    )
+    text = render(fix_of(catalog, app, catalog.by_id["B14000-L60-TFE"], "motor_rms"))
+    assert "a dwell of at least" in text
+    assert "The inputs refuse a dwell that long" in text, text
