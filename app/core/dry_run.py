@@ -36,8 +36,9 @@ DRY = {"friction_dynamic": "dry_friction_dynamic", "friction_static": "dry_frict
 
 def runs_dry(app: Application, table: CandidateTable) -> Mask:
     """The rows ``app`` runs at their friction run dry: a nut rated lubricated that the
-    axis runs dry (not ``Application.lubricated``), given a friction run dry."""
-    if app.lubricated:
+    axis runs dry (``Application.lubrication_counted``: dry, or greased or oiled in a
+    vacuum, where oil and grease evaporate), given a friction run dry."""
+    if app.lubrication_counted != "dry":
         return np.zeros(len(table), dtype=bool)
     given = ~np.isnan(table.dry_friction_dynamic) & ~np.isnan(table.dry_friction_static)
     return table.lubricated_rating & given

@@ -115,3 +115,23 @@ def test_a_screw_of_ones_own_run_dry_keeps_a_higher_friction_given(client: TestC
     (torque,) = [c for c in candidate["checks"] if c["name"] == "torque"]
     assert not torque["passed"]
     assert candidate["provenance"]["friction_dynamic"]["kind"] == "user"
+
+
+def test_a_bronze_nut_oiled_in_a_vacuum_runs_dry(client: TestClient) -> None:
+    """Oil and grease evaporate in a vacuum (``lubrication_counted``): the PV check
+    already counted none, but the friction stayed the oiled one. Tr16x4 bronze (d2 14 mm,
+    tan(lambda) = 4 / (pi 14) = 0.09095) oiled in a vacuum ran at 0.3983 efficiency (mu
+    0.13); it runs dry now, 0.3105 at mu 0.19, (cos 15 - mu tan) / (cos 15 + mu / tan),
+    and the advice says why."""
+    query = {"catalog_id": "Tr16x4-bronze", "stroke_mm": 300, "vacuum": "true"}
+    tan_l, cos_a = 0.004 / (math.pi * 0.014), math.cos(math.radians(15.0))
+    for lubrication in ("oiled", "greased", "dry"):
+        candidate = _evaluate(client, **query, lubrication=lubrication)
+        assert candidate["efficiency"] == pytest.approx(
+            (cos_a - 0.19 * tan_l) / (cos_a + 0.19 / tan_l), rel=1e-9
+        )
+        (check,) = [c for c in candidate["checks"] if c["name"] == "lubrication"]
+        assert not check["passed"]
+        assert ("In a vacuum oil and grease evaporate" in check["message"]) == (
+            lubrication != "dry"
+        )

@@ -109,5 +109,6 @@ class Life(Check):
 
 
 def _run_dry(app: Application, s: ScrewSpec) -> bool:
-    """Whether ``s`` is a nut rated lubricated that the axis runs dry (``dry_run``)."""
-    return s.lubricated_rating and not app.lubricated
+    """Whether ``s`` is a nut rated lubricated that the axis runs dry (``dry_run``: none
+    given, or oil or grease in a vacuum)."""
+    return s.lubricated_rating and app.lubrication_counted == "dry"

@@ -39,7 +39,9 @@ class Lubrication(Check):
     capacity_sources = ("lubricated_rating",)
 
     def applies(self, app: Application) -> bool:
-        return not app.lubricated
+        """The nut runs dry: none given, or oil or grease in a vacuum, where they
+        evaporate (``Application.lubrication_counted``)."""
+        return app.lubrication_counted == "dry"
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         return Measure(t.lubricated_rating.copy(), flagged=t.lubricated_rating.copy())
@@ -47,11 +49,16 @@ class Lubrication(Check):
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"lubricated_rating": t.lubricated_rating, "dry": not app.lubricated}
+        return {"lubricated_rating": t.lubricated_rating, "dry": self.applies(app)}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
+        head = (
+            "In a vacuum oil and grease evaporate, so the nut runs dry"
+            if app.lubricated
+            else "The nut is to run dry"
+        )
         return Phrase(
-            "The nut is to run dry: its numbers here are at its dry friction, running "
+            head + ": its numbers here are at its dry friction, running "
             "{mu_d} and static {mu_s} (steel on bronze dry rubs at 0.15 to 0.23, oiled 0.10 "
             "to 0.16), its holding at no more than its oiled static friction (it may be "
             "oiled later), but its pressure and wear ratings are still a lubricated nut's.",
