@@ -20,6 +20,7 @@ from pydantic_core import PydanticCustomError
 
 from app.contract.fields import BY_API, FIELDS
 from app.contract.input_field import InputField
+from app.core import motion
 from app.core.model import LoadDirection, Move
 
 #: The most moves a cycle may have (every result stays quick).
@@ -208,12 +209,8 @@ def moves_text(moves: list[MoveIn]) -> str:
 
 def span_mm(moves: list[MoveIn]) -> float:
     """The nut's travel range over the cycle [mm]: the highest position less the lowest,
-    from the start at 0."""
-    position, low, high = 0.0, 0.0, 0.0
-    for move in moves:
-        position += move.distance_mm
-        low, high = min(low, position), max(high, position)
-    return high - low
+    from the start at 0 (``motion.position_span``)."""
+    return motion.position_span(move.distance_mm for move in moves)
 
 
 def closing_error_mm(moves: list[MoveIn]) -> float:

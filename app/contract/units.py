@@ -283,6 +283,7 @@ TEXT_FORMATS: dict[Quantity, str] = {
     "temperature_rise": ".3g",
     "factor": "g",
     "frequency": ".6g",
+    "voltage": ".3g",
 }
 
 

@@ -12,6 +12,7 @@ import numpy as np
 from app.core.formulas import energy
 from app.core.model import Application
 from app.core.motion import segment_travels
+from app.core.segments import worked_end
 from app.core.table import Array, CandidateTable, filled
 from app.core.timeline import Profile, Segment
 
@@ -76,11 +77,7 @@ def cycle_energy(
         load = load + work
         size = size + np.abs(work)
         # at the end of the friction and drag the segment's torque was worked at
-        eta_b, drag_nm = t.backdrive_efficiency_signed, t.drag_max_nm
-        if s.braking_end is not None:
-            braking = s.braking_end
-            eta_b = np.where(braking, t.braking_backdrive_efficiency_signed, eta_b)
-            drag_nm = np.where(braking, t.drag_min_nm, drag_nm)
+        eta_b, drag_nm = worked_end(t, False if s.braking_end is None else s.braking_end)
         thread = thread + energy.thread_loss(s.thrust_n, x, t.efficiency, eta_b)
         drag = drag + np.asarray(energy.shaft_energy(drag_nm, x, t.lead_m), dtype=np.float64)
     current = copper_current_rms(app)

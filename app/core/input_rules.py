@@ -8,7 +8,6 @@ application that breaks one (``ApplicationInputs``); a change the app offers kee
 import math
 from collections.abc import Mapping
 from dataclasses import replace
-from itertools import accumulate
 from typing import Any, cast
 
 from app.core import duty, motion
@@ -43,11 +42,11 @@ def read_inputs(app: Application, limits: Mapping[str, float] | None) -> dict[st
 
 def travel_span_m(app: Application) -> float | None:
     """The length of screw the nut's travel spans [m]: the stroke, else the span of the
-    positions a cycle of moves reaches from its start; None without either."""
+    positions a cycle of moves reaches from its start (``motion.position_span``); None
+    without either."""
     if app.stroke_m is not None or not app.moves:
         return app.stroke_m
-    ends = list(accumulate((m.distance_m for m in app.moves), initial=0.0))
-    return max(ends) - min(ends)
+    return motion.position_span(m.distance_m for m in app.moves)
 
 
 def least_inputs(app: Application) -> dict[str, float]:
@@ -93,11 +92,11 @@ def refused(app: Application, limits: Mapping[str, float] | None) -> Phrase | No
     """Why the inputs refuse a move the values of a check's fix name (its
     ``input_limits``, each ``FIX_MARGIN`` inside its limit, as the fix writes it): a
     speed or an acceleration so low, or a dwell so long, that the cycles a day no longer
-    fit in a day; None
-    where none does. The fix names what the screw needs; this says that the application
-    cannot give it that way (the load, or another input the fix names, may still do).
-    A length a fix names needs no such word: the checks that name one say how to keep
-    the stroke (an intermediate support, a shorter span to the thrust bearing)."""
+    fit in a day; None where none does. The fix names what the screw needs; this says
+    that the application cannot give it that way (the load, or another input the fix
+    names, may still do). A length a fix names needs no such word: the checks that name
+    one say how to keep the stroke (an intermediate support, a shorter span to the thrust
+    bearing)."""
     if app.cycles_per_day is None:
         return None  # no cycles a day to fit
     for key, limit in (limits or {}).items():

@@ -12,7 +12,9 @@ torque in each segment, for every candidate, is ``segments``'; the cycle's energ
 """
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass
+from itertools import accumulate
 
 from app.core.formulas import life, profile, wear
 from app.core.formulas.declare import formula
@@ -204,6 +206,17 @@ def load_sense(app: Application, move: Move | None = None) -> tuple[float, float
     if direction == "auto":
         direction = "fixed" if app.orientation == "vertical" else "opposes"
     return (1.0, 0.0) if direction == "fixed" else (0.0, 1.0)
+
+
+def position_span(distances: Iterable[float]) -> float:
+    """The range of positions a cycle of moves of ``distances`` reaches, from its start
+    at 0: the highest less the lowest (in the distances' unit).
+
+    >>> position_span([300.0, -500.0, 200.0])
+    500.0
+    """
+    ends = list(accumulate(distances, initial=0.0))
+    return max(ends) - min(ends)
 
 
 def equivalent_stroke(app: Application) -> float | None:

@@ -35,6 +35,7 @@ Quantity = Literal[
     "factor",  # dimensionless
     "frequency",  # 1/s (step pulses per second)
     "inductance",  # H
+    "voltage",  # V
     "power",  # W
     "energy",  # J
     "conductivity",  # W/(m K)

@@ -11,6 +11,7 @@ load of fixed direction) and does not self-lock, else nothing. ``curve_torque`` 
 the motor's curve at a segment's speed.
 """
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -45,7 +46,23 @@ def _move(
     """The three moving segments of one move (its ``moving_torques`` rows), for every
     candidate."""
     rpm = geometry.screw_speed_rpm(p.peak_speed_m_s, t.lead_m)
-    times = (p.accel_time_s, p.constant_time_s, p.decel_time_s)
+    return _timed(t, rows, rpm, (p.accel_time_s, p.constant_time_s, p.decel_time_s))
+
+
+def at_top_speed(t: CandidateTable, rows: list[Moving], rpm: Array) -> list[Segment[Array]]:
+    """The moving segments of every move (``moving_torques`` rows) where no stroke times
+    them: each at the top speed ``rpm`` (a ramp runs from standstill to it, which
+    ``segment_curve`` reads), its duration unknown (NaN). The motor's curve judges them as
+    it judges a timed move's, the decelerate segment and a ramp's sweep through a dip in
+    the curve included."""
+    return _timed(t, rows, rpm, [float("nan")] * len(rows))
+
+
+def _timed(
+    t: CandidateTable, rows: list[Moving], rpm: Array, durations: Sequence[float]
+) -> list[Segment[Array]]:
+    """The segments of ``moving_torques`` rows at the top speed ``rpm``, each lasting its
+    duration [s] of ``durations``."""
     return [
         Segment(
             name=name,
@@ -56,27 +73,9 @@ def _move(
             torque_nm=torque_nm,
             braking_end=braking,
         )
-        for (name, direction, thrust, torque_nm, braking), duration in zip(rows, times, strict=True)
-    ]
-
-
-def at_top_speed(t: CandidateTable, rows: list[Moving], rpm: Array) -> list[Segment[Array]]:
-    """The moving segments of every move (``moving_torques`` rows) where no stroke times
-    them: each at the top speed ``rpm`` (a ramp runs from standstill to it, which
-    ``segment_curve`` reads), its duration unknown (NaN). The motor's curve judges them as
-    it judges a timed move's, the decelerate segment and a ramp's sweep through a dip in
-    the curve included."""
-    return [
-        Segment(
-            name=name,
-            direction=direction,
-            duration_s=float("nan"),
-            rpm=rpm,
-            thrust_n=filled(len(t), thrust),
-            torque_nm=torque_nm,
-            braking_end=braking,
+        for (name, direction, thrust, torque_nm, braking), duration in zip(
+            rows, durations, strict=True
         )
-        for name, direction, thrust, torque_nm, braking in rows
     ]
 
 
@@ -151,10 +150,19 @@ def running_torque(t: CandidateTable, thrust_n: float, braking: bool = False) ->
     (``profile.thread_torque``) against the nut's drag, for every candidate [N m]: at the
     running friction and the top of the drag range, or (``braking``) at the braking end
     (``_worse_end``)."""
-    eta_b = t.braking_backdrive_efficiency_signed if braking else t.backdrive_efficiency_signed
+    eta_b, drag_nm = worked_end(t, braking)
     thread = profile.thread_torque(thrust_n, t.lead_m, t.efficiency, eta_b, t.efficient_turn_rad)
-    torque_nm: Array = thread + (t.drag_min_nm if braking else t.drag_max_nm)
+    torque_nm: Array = thread + drag_nm
     return torque_nm
+
+
+def worked_end(t: CandidateTable, braking: Mask | bool) -> tuple[Array, Array]:
+    """The signed back-driven efficiency and the drag torque [N m] a segment is worked at:
+    the braking end's (``CandidateTable.braking_backdrive_efficiency_signed``, the bottom
+    of the drag range) where ``braking`` (a mask of the candidates, or one for all), else
+    the running friction's and the top of the drag range."""
+    eta_b = np.where(braking, t.braking_backdrive_efficiency_signed, t.backdrive_efficiency_signed)
+    return eta_b, np.where(braking, t.drag_min_nm, t.drag_max_nm)
 
 
 def plus_spin(

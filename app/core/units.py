@@ -130,6 +130,7 @@ UNITS: dict[str, Unit] = {
         _unit("", "factor", 1),
         _unit("Hz", "frequency", 1),
         _unit("H", "inductance", 1),
+        _unit("V", "voltage", 1),
         _unit("W", "power", 1),
         _unit("J", "energy", 1),
         _unit("W/(m K)", "conductivity", 1),

@@ -48,6 +48,7 @@ VALUE_LABELS: Mapping[str, str] = {
     "pitch": "pitch",
     "pv_limit": "PV limit",
     "repeatability": "repeatability",
+    "screw_expansion": "screw thermal expansion",
     "root_diameter": "root diameter",
     "root_diameter_ratio": "root diameter",
     "specific_wear_rate": "specific wear rate",

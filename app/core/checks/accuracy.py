@@ -20,6 +20,7 @@ from app.core.checks.base import (
 from app.core.duty import REFERENCE_TEMPERATURE_C
 from app.core.formulas import accuracy
 from app.core.phrase import Amount, Phrase
+from app.core.wording import value_label
 
 
 def _known(value: float | None) -> bool:
@@ -27,11 +28,12 @@ def _known(value: float | None) -> bool:
     return value is not None and not math.isnan(value)
 
 
-#: The catalog values the growth from the friction heat reads beyond the thread's, in words.
+#: The catalog values the growth from the friction heat reads beyond the thread's: the
+#: screw's field and its catalog key (named by ``wording.value_label``).
 _HEAT_VALUES = (
-    ("nut_length_m", "nut length"),
-    ("thermal_conductivity_w_m_k", "screw's thermal conductivity"),
-    ("screw_expansion_per_k", "screw's thermal expansion"),
+    ("nut_length_m", "nut_length"),
+    ("thermal_conductivity_w_m_k", "thermal_conductivity"),
+    ("screw_expansion_per_k", "screw_expansion"),
 )
 
 
@@ -52,7 +54,7 @@ def _heat_words(app: Application, s: ScrewSpec, counted: bool) -> str:
     elif not (app.stroke_m or app.moves):
         why = "without a stroke there is no duty to heat it"
     else:
-        lacks = [words for attr, words in _HEAT_VALUES if getattr(s, attr) is None]
+        lacks = [value_label(key) for attr, key in _HEAT_VALUES if getattr(s, attr) is None]
         why = "the catalog does not give the " + (
             " or the ".join(lacks) if lacks else "values its heat balance reads"
         )

@@ -57,13 +57,21 @@ def model_range_rpm(app: Application) -> float | None:
     return stepper.confirmed_range_rpm(supply, current, holding, app.motor_current_rms)
 
 
+def supply_known(app: Application) -> bool:
+    """A stepper's supply, phase current and winding resistance are all given."""
+    values = (app.motor_supply_v, app.motor_phase_current_a, app.motor_resistance_ohm)
+    return app.step_angle_deg is not None and all(v is not None for v in values)
+
+
 def supply_too_low(app: Application) -> bool:
     """The model's stepper runs on a supply below its range (``stepper.supply_in_range``:
-    4 times its winding's rated voltage I R); False where those values are not known."""
-    supply, current, ohm = app.motor_supply_v, app.motor_phase_current_a, app.motor_resistance_ohm
-    if app.step_angle_deg is None or supply is None or current is None or ohm is None:
+    4 times its winding's rated voltage I R); False where those values are not known
+    (``supply_known``)."""
+    if not supply_known(app):
         return False
-    return not stepper.supply_in_range(supply, current, ohm)
+    return not stepper.supply_in_range(
+        app.motor_supply_v or 0.0, app.motor_phase_current_a or 0.0, app.motor_resistance_ohm or 0.0
+    )
 
 
 def worst_segment(app: Application, r: Quantities[float]) -> str:

@@ -1,8 +1,6 @@
 """A stepper whose curve the microstepping model draws: its supply within the model's
 range, at least 4 times its winding's rated voltage I R."""
 
-import math
-
 import numpy as np
 
 from app.core.checks.base import (
@@ -17,9 +15,9 @@ from app.core.checks.base import (
     ScrewSpec,
     everywhere,
 )
-from app.core.checks.motor_curve import supply_too_low
+from app.core.checks.motor_curve import supply_known, supply_too_low
 from app.core.formulas import stepper
-from app.core.phrase import Phrase
+from app.core.phrase import Amount, Phrase
 
 
 class MotorSupply(Check):
@@ -43,8 +41,7 @@ class MotorSupply(Check):
     sources = ()
 
     def applies(self, app: Application) -> bool:
-        values = (app.motor_supply_v, app.motor_phase_current_a, app.motor_resistance_ohm)
-        return app.step_angle_deg is not None and all(v is not None for v in values)
+        return supply_known(app)
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
         # yes or no: a condition of the model's validity, not a margin of the axis
@@ -65,27 +62,21 @@ class MotorSupply(Check):
         end = "." if passed else ": outside the model's range, its curve is not known."
         return Phrase(
             "The supply {v} " + verb + " 4 times the winding's rated voltage I R, {least}" + end,
-            {"v": _volts(app.motor_supply_v or 0.0), "least": _volts(_least_v(app))},
+            {
+                "v": Amount(app.motor_supply_v or 0.0, "voltage"),
+                "least": Amount(_least_v(app), "voltage"),
+            },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
         return Phrase(
             "A supply of at least {least}, or the maker's pull-out curve at this supply "
             "(the motor curve input).",
-            {"least": _volts(_least_v(app), up=True)},
+            # a least supply written rounded up: the figure read is enough
+            {"least": Amount(_least_v(app), "voltage", "up")},
         )
 
 
-def _volts(value: float, up: bool = False) -> str:
-    """A voltage as text, to 3 significant figures (rounded up where ``up``: a least
-    supply written is one that is enough) [V]."""
-    if up and value > 0.0:
-        step = 10.0 ** (math.floor(math.log10(value)) - 2)
-        value = math.ceil(round(value / step, 9)) * step
-    return f"{value:.3g} V"
-
-
 def _least_v(app: Application) -> float:
-    """The least supply of the model's range [V]: 4 times I R."""
-    current, ohm = app.motor_phase_current_a or 0.0, app.motor_resistance_ohm or 0.0
-    return stepper.LEAST_SUPPLY_PER_IR * current * ohm
+    """The least supply of the model's range [V] (``stepper.least_supply_v``)."""
+    return stepper.least_supply_v(app.motor_phase_current_a or 0.0, app.motor_resistance_ohm or 0.0)

@@ -42,14 +42,14 @@ class StrokeTravel(Check):
         return app.stroke_m is not None
 
     def measure(self, app: Application, t: CandidateTable, q: Quantities[Array]) -> Measure:
-        nut_m = nut_lengths(app, t)
+        nut_m = _whole_nuts(app, t)
         total = (app.stroke_m or 0.0) + nut_m
         return Measure(where_given(nut_m), total, same(t, app.length_m))
 
     def symbols(
         self, app: Application, t: CandidateTable, q: Quantities[Array]
     ) -> Mapping[str, object]:
-        return {"stroke": app.stroke_m, "L_nut": nut_lengths(app, t), "L_screw": app.length_m}
+        return {"stroke": app.stroke_m, "L_nut": _whole_nuts(app, t), "L_screw": app.length_m}
 
     def explain(self, app: Application, s: ScrewSpec, r: Quantities[float], passed: bool) -> Phrase:
         verb = "fit within" if passed else "exceed"
@@ -57,13 +57,13 @@ class StrokeTravel(Check):
             "The stroke {s} and the nut {nut} " + verb + " the screw length {L}.",
             {
                 "s": Amount(app.stroke_m or 0.0, "length"),
-                "nut": Amount(nut_length(app, s), "length"),
+                "nut": Amount(_whole_nut(app, s), "length"),
                 "L": Amount(app.length_m, "length"),
             },
         )
 
     def fix(self, app: Application, s: ScrewSpec, r: Quantities[float], reach: Reach) -> Phrase:
-        nut_m = nut_length(app, s)
+        nut_m = _whole_nut(app, s)
         longer = {"L": least((app.stroke_m or 0.0) + nut_m, "length")}
         # the stroke plus the nut kept FIX_MARGIN inside the screw length, as promised
         room = at_most(app.length_m) - nut_m
@@ -78,16 +78,16 @@ class StrokeTravel(Check):
     def input_limits(
         self, app: Application, s: ScrewSpec, r: Quantities[float]
     ) -> Mapping[str, float]:
-        return {"length_m": (app.stroke_m or 0.0) + nut_length(app, s)}
+        return {"length_m": (app.stroke_m or 0.0) + _whole_nut(app, s)}
 
 
-def nut_lengths(app: Application, t: CandidateTable) -> Array:
+def _whole_nuts(app: Application, t: CandidateTable) -> Array:
     """Each candidate's nut length [m]: the one typed, else the catalog's (NaN: none), the
     whole nut, whether or not its turns' share of the load is rated (a ball nut's)."""
     return t.nut_length_m if app.nut_length_m is None else same(t, app.nut_length_m)
 
 
-def nut_length(app: Application, s: ScrewSpec) -> float:
-    """``nut_lengths`` of one screw [m] (NaN: none)."""
+def _whole_nut(app: Application, s: ScrewSpec) -> float:
+    """``_whole_nuts`` of one screw [m] (NaN: none)."""
     length = app.nut_length_m if app.nut_length_m is not None else s.nut_length_m
     return float("nan") if length is None else length

@@ -109,14 +109,23 @@ CONFIRMED_BACK_EMF_SHARE = 0.4
 LEAST_SUPPLY_PER_IR = 4.0
 
 
+def least_supply_v(current_a: float, resistance_ohm: float) -> float:
+    """The least supply of the model's range [V]: ``LEAST_SUPPLY_PER_IR`` times the
+    winding's rated voltage I R (``current_a`` [A], ``resistance_ohm`` [ohm]).
+
+    >>> round(least_supply_v(0.64, 14.5), 6)
+    37.12
+    """
+    return LEAST_SUPPLY_PER_IR * current_a * resistance_ohm
+
+
 def supply_in_range(supply_v: float, current_a: float, resistance_ohm: float) -> bool:
-    """The supply [V] is at least ``LEAST_SUPPLY_PER_IR`` times the winding's rated
-    voltage I R (``current_a`` [A], ``resistance_ohm`` [ohm]): the model's range.
+    """The supply [V] is at least ``least_supply_v``: the model's range.
 
     >>> supply_in_range(24.0, 0.64, 14.5), supply_in_range(48.0, 0.64, 14.5)
     (False, True)
     """
-    return supply_v >= LEAST_SUPPLY_PER_IR * current_a * resistance_ohm
+    return supply_v >= least_supply_v(current_a, resistance_ohm)
 
 
 @formula(
